@@ -1,0 +1,92 @@
+# recstab -- exact and certified stability of time-stepping schemes.
+# Targets: deps all check demo install clean (see README.md).
+
+CC      ?= cc
+PREFIX  ?= /usr/local
+BUILD   ?= build
+CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
+WARN    := -Wall -Wextra -Werror
+OPT     ?= -O2 -g
+SAN     ?=
+CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -Iinclude -I/usr/include/flint $(CFLAGS)
+LIBS    := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+VERSION := 0.1.0
+
+DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
+            libjansson-dev libcmocka-dev gnuplot-nox
+
+LIB_SRC  := $(sort $(wildcard src/*.c))
+CLI_SRC  := $(sort $(wildcard src/cli/*.c))
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+HDRS     := $(wildcard include/recstab/*.h)
+
+LIB_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
+CLI_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(CLI_SRC))
+TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+
+LIBRS  := $(BUILD)/librecstab.a
+BIN    := $(BUILD)/recstab
+
+.PHONY: all deps check test demo install clean check-sanitize bench
+
+all: $(LIBRS) $(BIN)
+
+# Install only the Debian packages that are missing (apt-get update first).
+deps:
+	@missing=""; for p in $(DEB_PKGS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
+	    || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing$$missing"; \
+	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null \
+	    || { echo "make deps: apt-get failed for$$missing" >&2; exit 1; }; \
+	else echo "make deps: all Debian packages present"; fi
+
+$(BUILD)/obj/%.o: src/%.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -DRS_VERSION='"$(VERSION)"' -c $< -o $@
+
+$(LIBRS): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BIN): $(CLI_OBJ) $(LIBRS)
+	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) $(LIBS)
+
+$(BUILD)/tests/%: tests/%.c tests/testutil.h $(LIBRS) $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -Itests -DRS_SOURCE_DIR='"$(CURDIR)"' -o $@ $< $(LIBRS) -lcmocka $(LIBS)
+
+test: $(TEST_BIN) $(BIN)
+	@BUILD=$(BUILD) sh tests/run.sh
+
+check: deps
+	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory test
+
+# Sanitizer build in its own tree; runs the whole suite and every case.
+check-sanitize: deps
+	@$(MAKE) --no-print-directory BUILD=build-san OPT="-O1 -g" \
+	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" test
+
+demo: deps
+	@$(MAKE) --no-print-directory all
+	$(BIN) cases/park-staggered.case
+
+bench: all
+	sh bench/run.sh
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
+	  $(DESTDIR)$(PREFIX)/include/recstab $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/recstab
+	install -m 644 $(LIBRS) $(DESTDIR)$(PREFIX)/lib/librecstab.a
+	install -m 644 include/recstab/*.h $(DESTDIR)$(PREFIX)/include/recstab/
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' recstab.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/recstab.pc
+
+clean:
+	rm -rf build build-san

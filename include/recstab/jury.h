@@ -1,0 +1,42 @@
+/* jury.h -- unit-circle root location directly on p(lambda): the
+ * Schur-Cohn test, exact, with every singular case.
+ *
+ * Independent of the bilinear/Routh route, so the two can cross-check each
+ * other.  Method: g = gcd(p, p*) (p* the reciprocal polynomial) carries every
+ * root on the circle and every pair (r, 1/conj r); its circle roots are counted
+ * exactly through x = lambda + 1/lambda and Sturm sequences on [-2, 2]; the
+ * rest of g splits evenly.  h = p / g has gcd(h, h*) = 1, so its Schur-Cohn
+ * (Fujiwara) Hermitian matrix is non-singular and its inertia, computed
+ * exactly from the sign pattern of its characteristic polynomial (all roots
+ * real: Descartes' rule is exact), gives the roots inside and outside.  When
+ * the classical Schur-Cohn/Jury table of p is regular its rows are kept
+ * for reports. */
+#ifndef RECSTAB_JURY_H
+#define RECSTAB_JURY_H
+
+#include <flint/flint.h>
+#include <flint/fmpz_poly.h>
+#include "recstab/error.h"
+#include "recstab/rootcount.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    rs_rootcount_t count;
+    int table_regular;       /* 1 if the classical Jury table had no singular step */
+    slong nrows;             /* rows of the Schur-Cohn table (when regular) */
+    fmpz_poly_struct *rows;  /* successive reduced polynomials (fraction-free) */
+    slong gcd_degree;        /* degree of gcd(p, p*) split off */
+} rs_jury_struct;
+typedef rs_jury_struct rs_jury_t[1];
+
+void rs_jury_init(rs_jury_t j);
+void rs_jury_clear(rs_jury_t j);
+int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,78 @@
+/* routh.h -- exact Routh arrays of the bilinear polynomial q(z).
+ *
+ * Numeric coefficients: rows of rationals, every singular case handled
+ * exactly (no epsilon evaluated in floating point) and recorded as an event
+ * so reports can explain it.  Symbolic coefficients: fraction-free rows of
+ * polynomials in the parameters (generic case, valid where the pivots do not
+ * vanish). */
+#ifndef RECSTAB_ROUTH_H
+#define RECSTAB_ROUTH_H
+
+#include <flint/flint.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpq.h>
+#include <flint/fmpz_mpoly.h>
+#include "recstab/error.h"
+#include "recstab/rootcount.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    RS_ROUTH_EVENT_DEGREE_DROP = 0, /* deg q < deg p: roots at lambda = -1 */
+    RS_ROUTH_EVENT_ZERO_AT_ORIGIN,  /* q(0) = 0: roots at lambda = 1 (z^k removed) */
+    RS_ROUTH_EVENT_ZERO_PIVOT,      /* zero first-column entry, row not all zero */
+    RS_ROUTH_EVENT_ZERO_ROW         /* whole row zero: auxiliary polynomial */
+} rs_routh_event_kind_t;
+
+typedef struct {
+    rs_routh_event_kind_t kind;
+    slong row;        /* index of the row concerned (0 = first row) */
+    slong count;      /* degree drop / multiplicity / aux-poly degree */
+    char *text;       /* one-sentence explanation for reports (malloc'd) */
+} rs_routh_event_struct;
+
+/* Numeric Routh array of q(z). */
+typedef struct {
+    slong nrows;
+    slong *rowlen;          /* entries in each row */
+    fmpq **rows;            /* rows[i][0..rowlen[i]-1] */
+    slong nevents;
+    rs_routh_event_struct *events;
+    rs_rootcount_t count;   /* translated back to lambda: inside/on/outside */
+    slong sign_changes;     /* sign changes in the final first column */
+} rs_routh_struct;
+
+typedef rs_routh_struct rs_routh_t[1];
+
+void rs_routh_init(rs_routh_t r);
+void rs_routh_clear(rs_routh_t r);
+
+/* Build the Routh array of q = bilinear(p) and count the roots of p inside,
+ * on and outside the unit circle (with multiplicities of circle roots).
+ * p is the characteristic polynomial in lambda (not q); p != 0. */
+int rs_routh_fmpz_poly(rs_routh_t r, const fmpz_poly_t p, rs_error_t err);
+
+/* Generic fraction-free Routh array of a multivariate q (variable `var` is z).
+ * rows[i] has rowlen[i] entries, polynomials in the parameters (z absent).
+ * Each row after the second is exactly divisible by the pivot two rows up,
+ * which is divided out (Bareiss-like), so no nested fractions appear.
+ * Returns RS_ERR_MATH if a pivot is identically zero (singular for all
+ * parameter values; the caller should then specialise). */
+typedef struct {
+    slong nrows;
+    slong *rowlen;
+    fmpz_mpoly_struct **rows;
+} rs_routh_mpoly_struct;
+typedef rs_routh_mpoly_struct rs_routh_mpoly_t[1];
+
+void rs_routh_mpoly_init(rs_routh_mpoly_t r);
+void rs_routh_mpoly_clear(rs_routh_mpoly_t r, const fmpz_mpoly_ctx_t ctx);
+int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
+                   const fmpz_mpoly_ctx_t ctx, rs_error_t err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
