@@ -1,0 +1,77 @@
+/* hurwitz.h -- Hurwitz minors and Lienard-Chipart conditions of the
+ * bilinear polynomial q(z; params), exactly, factored over Q.
+ *
+ * With q = a_n z^n + ... + a_0 and a_n > 0, all roots of q have Re z < 0 iff
+ * (Lienard-Chipart) a_0, a_1, ..., a_n > 0 (it suffices: a_n, a_{n-2}, ...) and
+ * D_{n-1}, D_{n-3}, ... > 0.  The minors D_1..D_n are the Bareiss pivots of
+ * the Hurwitz matrix, computed fraction-free over Z[params].  Each condition
+ * is factored (fmpz_mpoly_factor); factors that are positive under the
+ * case's sign assumptions are dropped and listed as such. */
+#ifndef RECSTAB_HURWITZ_H
+#define RECSTAB_HURWITZ_H
+
+#include <flint/flint.h>
+#include <flint/fmpz_mpoly.h>
+#include <flint/fmpz_mpoly_factor.h>
+#include "recstab/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What is known of the sign of each variable (from `assume` lines). */
+typedef enum {
+    RS_SIGN_UNKNOWN = 0,
+    RS_SIGN_POSITIVE = 1,    /* v > 0 */
+    RS_SIGN_NONNEGATIVE = 2  /* v >= 0 */
+} rs_sign_t;
+
+/* One condition "poly > 0" (or ">= 0" for the non-strict variants), with its
+ * factorisation: constant * prod factor[i]^exp[i]. */
+typedef struct {
+    fmpz_mpoly_t poly;             /* the condition polynomial */
+    char *origin;                  /* e.g. "a_0", "D_3" (malloc'd) */
+    fmpz_mpoly_factor_t factors;   /* factorisation over Z */
+    int *dropped;                  /* per factor: 1 if positive under assumptions */
+    int *even;                     /* per factor: 1 if its exponent is even */
+    fmpz_mpoly_t reduced;          /* product of the kept factors (sign fixed) */
+    int trivially_true;            /* every factor positive: condition always holds */
+    int trivially_false;           /* reduced is a non-positive constant */
+} rs_hurwitz_cond_struct;
+
+typedef struct {
+    slong n;                       /* degree of q in z */
+    fmpz_mpoly_struct *coeffs;     /* a_0 .. a_n (length n+1), params only */
+    fmpz_mpoly_struct *minors;     /* D_1 .. D_n stored at [0 .. n-1] */
+    slong ncond;
+    rs_hurwitz_cond_struct *cond;  /* Lienard-Chipart conditions, in order */
+} rs_hurwitz_struct;
+typedef rs_hurwitz_struct rs_hurwitz_t[1];
+
+void rs_hurwitz_init(rs_hurwitz_t h);
+void rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx);
+
+/* q: polynomial in ctx whose variable `zvar` is z; the other variables are
+ * parameters with sign information sign[v] (length ctx nvars; entry for zvar
+ * ignored).  If the leading coefficient a_n is not positive under the
+ * assumptions, q is negated when a_n is provably negative; otherwise the
+ * condition a_n > 0 is kept as a condition.  Returns RS_OK or an error. */
+int rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                       const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                       rs_error_t err);
+
+/* 1 if poly is provably > 0 for all variable values allowed by sign[]
+ * (sufficient test: every monomial's coefficient positive, every variable in
+ * it non-negative, and some term provably positive), -1 if provably < 0 (same for -poly),
+ * 0 otherwise.  Even powers of arbitrary-sign factors are also handled at
+ * the factor level in rs_hurwitz_compute. */
+int rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                    const fmpz_mpoly_ctx_t ctx);
+
+/* Hurwitz matrix entry convention and minors for display: D_k as strings
+ * are produced by the report module with fmpz_mpoly_get_str_pretty. */
+
+#ifdef __cplusplus
+}
+#endif
+#endif
