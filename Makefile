@@ -5,7 +5,7 @@ CC      ?= cc
 PREFIX  ?= /usr/local
 BUILD   ?= build
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
-WARN    := -Wall -Wextra -Werror
+WARN    := -Wall -Wextra -Werror -Wno-format-truncation
 OPT     ?= -O2 -g
 SAN     ?=
 CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -Iinclude -I/usr/include/flint $(CFLAGS)

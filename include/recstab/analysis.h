@@ -1,0 +1,45 @@
+/* analysis.h -- running the analyses a case asks for.
+ *
+ * Only the analyses listed by the case (or --analyse) are computed
+ * ("laziness"); each adds one JSON object to "results", in order.  The
+ * characteristic polynomial is computed once per set of substituted values
+ * and shared.  The library returns JSON (jansson); rendering to text,
+ * Markdown or LaTeX is the report module's job. */
+#ifndef RECSTAB_ANALYSIS_H
+#define RECSTAB_ANALYSIS_H
+
+#include <jansson.h>
+#include "recstab/error.h"
+#include "recstab/casefile.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Outcome flags of a run (besides hard errors), or-ed together. */
+enum {
+    RS_OUTCOME_OK = 0,
+    RS_OUTCOME_FAILED = 1,       /* an expectation or claim failed (exit 1) */
+    RS_OUTCOME_INCONSISTENT = 2  /* two independent methods disagreed (exit 3) */
+};
+
+typedef struct {
+    slong max_prec;        /* ceiling for certified numerics (bits) */
+    slong default_digits;  /* radius digits when not given */
+} rs_options_t;
+
+void rs_options_default(rs_options_t *opt);
+
+/* Runs every request of c.  On success *doc is the case's JSON document
+ * {"case", "title", "params", "unknowns", "results": [...]} and *outcome
+ * is RS_OUTCOME_*.  On error *doc is NULL. */
+int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
+                    const rs_options_t *opt, rs_error_t err);
+
+/* Names of the analyses recstab knows (NULL-terminated), for --help. */
+extern const char *const rs_analysis_names[];
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,64 @@
+/* analysis_impl.h -- internals shared by the analysis implementation files
+ * (src/analysis*.c).  Not installed for library users' code to rely on. */
+#ifndef RECSTAB_ANALYSIS_IMPL_H
+#define RECSTAB_ANALYSIS_IMPL_H
+
+#include <jansson.h>
+#include <flint/fmpq.h>
+#include "recstab/analysis.h"
+#include "recstab/scheme.h"
+#include "recstab/charpoly.h"
+
+typedef struct {
+    char *key;            /* "name=value;..." of the substituted values */
+    json_t *assigned;     /* the same as a JSON object */
+    rs_scheme_t s;        /* scheme with those values substituted */
+    rs_charpoly_t cp;
+    int have_cp;
+    int status;           /* RS_OK or the error building it */
+} rs_variant_t;
+
+typedef struct {
+    const char *name;
+    slong var;
+    fmpq_t value;
+} rs_assign_t;
+
+typedef struct {
+    const rs_case_struct *c;
+    const rs_options_t *opt;
+    rs_variant_t **variants;
+    slong nvariants;
+    json_t *results;
+    int outcome;
+    rs_error_struct *err;
+} rs_run_t;
+
+/* The case's set values except the parameters in keep[], overridden and
+ * extended by extra[]. Free with rs_assign_free. */
+int rs_run_assignments(rs_run_t *run, rs_assign_t **out, slong *nout,
+                       const char *const *keep, slong nkeep,
+                       const rs_assign_t *extra, slong nextra);
+void rs_assign_free(rs_assign_t *a, slong n);
+/* Cached: scheme + charpoly with the assignments substituted. */
+int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n);
+
+json_t *rs_json_fmpq(const fmpq_t q);
+json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
+json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s);
+json_t *rs_json_nonzero(const rs_scheme_t s);
+json_t *rs_charpoly_json(const rs_variant_t *v);
+void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t derived,
+                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s);
+
+const char *rs_req_skip_word(const char *t);
+int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
+                 const char *fmt, const char *a);
+void rs_req_src(rs_src_t *src, const rs_request_t *q);
+
+typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
+typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
+/* analyses implemented in other files (src/analysis_exact.c, ...) */
+extern const rs_analysis_entry_t rs_analysis_extra[];
+
+#endif

@@ -1,0 +1,77 @@
+/* expr.h -- expressions of the case-file language.
+ *
+ * EXPR: integers, decimals (exact: 0.1 = 1/10), rationals via '/', names,
+ * shifted sequences NAME[n], NAME[n+K], NAME[n-K], + - * / ^ (integer
+ * powers), parentheses, unary minus, and 10^-40 style powers.  Parsing builds
+ * a tree whose nodes keep their source line and column for error messages;
+ * meaning (parameter, unknown, let) is assigned later by the scheme module. */
+#ifndef RECSTAB_EXPR_H
+#define RECSTAB_EXPR_H
+
+#include <flint/flint.h>
+#include <flint/fmpq.h>
+#include "recstab/error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    RS_EXPR_NUM,   /* exact rational */
+    RS_EXPR_NAME,  /* identifier, optionally shifted */
+    RS_EXPR_ADD, RS_EXPR_SUB, RS_EXPR_MUL, RS_EXPR_DIV, RS_EXPR_POW,
+    RS_EXPR_NEG
+} rs_expr_kind_t;
+
+typedef struct rs_expr_struct {
+    rs_expr_kind_t kind;
+    int line, col;                   /* source position of the node */
+    fmpq_t num;                      /* RS_EXPR_NUM */
+    char *name;                      /* RS_EXPR_NAME */
+    int shifted;                     /* NAME[n+K] written */
+    slong shift;                     /* K */
+    struct rs_expr_struct *a, *b;    /* operands */
+} rs_expr_struct;
+typedef rs_expr_struct rs_expr_t;
+
+/* Source text being parsed: where errors point. */
+typedef struct {
+    const char *file;   /* file name for messages */
+    const char *text;   /* the statement text (continuations joined) */
+    int line;           /* line of text[0] */
+    int col;            /* column of text[0] */
+    const int *linemap; /* optional: for joined continuation lines, linemap[i]
+                           and colmap[i] give the source position of text[i] */
+    const int *colmap;
+} rs_src_t;
+
+/* Parse text[*pos ..] as one expression; stops at end, ',', '=', ';' or a
+ * comparison operator at depth 0 and leaves *pos there.  *out is NULL on
+ * error.  Limits: nesting depth RS_EXPR_MAX_DEPTH, exponents |k| <= RS_EXPR_MAX_POW. */
+#define RS_EXPR_MAX_DEPTH 200
+#define RS_EXPR_MAX_POW 100000
+int rs_expr_parse(rs_expr_t **out, const rs_src_t *src, size_t *pos,
+                  rs_error_t err);
+
+/* Parse a whole string as one expression (nothing may follow). */
+int rs_expr_parse_all(rs_expr_t **out, const rs_src_t *src, rs_error_t err);
+
+/* Parse an exact number "12", "0.1", "3/2", "-2.5e-3", "10^-40" (used by
+ * `set` and --set).  Returns RS_OK or RS_ERR_INPUT. */
+int rs_expr_parse_number(fmpq_t q, const char *s, rs_error_t err);
+
+/* Evaluate a tree made only of numbers and + - * / ^ (errors name the node;
+ * src->file is used for messages). */
+int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src,
+                       rs_error_t err);
+
+void rs_expr_free(rs_expr_t *e);
+rs_expr_t *rs_expr_copy(const rs_expr_t *e);
+
+/* Source position of text[i] in src. */
+void rs_src_pos(const rs_src_t *src, size_t i, int *line, int *col);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

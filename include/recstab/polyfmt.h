@@ -1,0 +1,30 @@
+/* polyfmt.h -- polynomials as strings for people and for JSON. */
+#ifndef RECSTAB_POLYFMT_H
+#define RECSTAB_POLYFMT_H
+
+#include <flint/flint.h>
+#include <flint/fmpz_mpoly.h>
+#include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_poly.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* FLINT's pretty string with spaces around top-level + and -, e.g.
+ * "2*m^2*muh + 3/2*lambda - 5".  Returned strings are malloc'd: free(). */
+char *rs_polyfmt_spaced(const char *flint_str);
+char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars,
+                            const fmpz_mpoly_ctx_t ctx);
+char *rs_polyfmt_fmpq_mpoly(const fmpq_mpoly_t p, const char **vars,
+                            const fmpq_mpoly_ctx_t ctx);
+/* p collected by powers of `var`, highest first:
+ * "(2*m + 3)*lambda^4 - 4*lambda^3 + ... " */
+char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
+                           const fmpz_mpoly_ctx_t ctx);
+char *rs_polyfmt_fmpz_poly(const fmpz_poly_t p, const char *var);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

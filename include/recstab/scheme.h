@@ -1,0 +1,68 @@
+/* scheme.h -- from a parsed case to the lambda-matrix.
+ *
+ * Each equation (lhs - rhs = 0) is evaluated exactly as a linear form in the
+ * shifted unknowns with coefficients in Q[params]; x[n+k] becomes lambda^k
+ * times the column of x.  Divisions by parameter expressions are multiplied
+ * through and recorded as non-zero assumptions.  Rows are normalised so that
+ * their lowest power of lambda is lambda^0.  Variables of the polynomial
+ * context: the parameters in declaration order, then lambda. */
+#ifndef RECSTAB_SCHEME_H
+#define RECSTAB_SCHEME_H
+
+#include <flint/flint.h>
+#include <flint/fmpq.h>
+#include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_mpoly.h>
+#include "recstab/error.h"
+#include "recstab/casefile.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RS_SCHEME_MAX_DEGREE 4096   /* degree in lambda or in any parameter */
+#define RS_SCHEME_MAX_UNKNOWNS 64
+
+typedef struct {
+    fmpq_mpoly_ctx_t ctx;       /* params..., lambda */
+    fmpz_mpoly_ctx_t zctx;      /* same variables, integer coefficients */
+    slong nvars;
+    slong lambda_var;           /* == nparams */
+    char **vars;                /* variable names, "lambda" last */
+    slong n;                    /* unknowns (0 for a `char` case) */
+    fmpq_mpoly_struct *M;       /* n*n row-major lambda-matrix */
+    slong *row_shift;           /* lowest shift of each row before normalising */
+    int from_char;              /* p given directly by `char` */
+    fmpq_mpoly_t charpoly;      /* the `char` polynomial when from_char */
+    slong nnonzero;             /* assumptions made by multiplying through */
+    fmpq_mpoly_struct *nonzero; /* each must be != 0 */
+    char **nonzero_text;        /* "m != 0" */
+} rs_scheme_struct;
+typedef rs_scheme_struct rs_scheme_t[1];
+
+void rs_scheme_init(rs_scheme_t s);
+void rs_scheme_clear(rs_scheme_t s);
+
+/* Builds the lambda-matrix (or the char polynomial) of a case, all
+ * parameters symbolic.  Errors name file:line:col. */
+int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err);
+
+/* Evaluates an expression with lambda allowed and no unknowns (used for
+ * `char`, `expect charpoly`, conditions): result num/den with den a
+ * polynomial in the parameters only, den != 0. */
+int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
+                        const rs_case_t c, const rs_expr_t *e, int allow_lambda,
+                        rs_error_t err);
+
+/* Substitutes the rational value for variable var in every entry. */
+void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value);
+
+/* The polynomial as a string in the scheme's variable names (malloc'd with
+ * flint_malloc; free with flint_free). */
+char *rs_scheme_poly_str(const fmpq_mpoly_t p, const rs_scheme_t s);
+char *rs_scheme_zpoly_str(const fmpz_mpoly_t p, const rs_scheme_t s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,431 @@
+/* analysis.c -- dispatching the analyses a case asks for. */
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "recstab/analysis.h"
+#include "recstab/analysis_impl.h"
+#include "recstab/polyfmt.h"
+
+const char *const rs_analysis_names[] = {
+    "charpoly", "expect", NULL
+};
+
+void rs_options_default(rs_options_t *opt)
+{
+    opt->max_prec = 65536;
+    opt->default_digits = 30;
+}
+
+/* ---- variants: the scheme with some parameters substituted ------------- */
+
+static void variant_free(rs_variant_t *v)
+{
+    if (v->have_cp) rs_charpoly_clear(v->cp, v->s);
+    rs_scheme_clear(v->s);
+    free(v->key);
+    json_decref(v->assigned);
+    free(v);
+}
+
+/* Builds the key "name=value;..." of an assignment list. */
+static char *assign_key(const rs_assign_t *a, slong n)
+{
+    size_t cap = 16, len = 0;
+    char *k = malloc(cap);
+    slong i;
+    k[0] = '\0';
+    for (i = 0; i < n; i++) {
+        char *v = fmpq_get_str(NULL, 10, a[i].value);
+        size_t need = strlen(a[i].name) + strlen(v) + 3;
+        if (len + need + 1 > cap) { cap = 2 * (len + need + 1); k = realloc(k, cap); }
+        len += (size_t) sprintf(k + len, "%s=%s;", a[i].name, v);
+        flint_free(v);
+    }
+    return k;
+}
+
+int rs_run_assignments(rs_run_t *run, rs_assign_t **out, slong *nout,
+                       const char *const *keep, slong nkeep,
+                       const rs_assign_t *extra, slong nextra)
+{
+    /* the case's set values, minus `keep`, overridden/extended by `extra`,
+     * ordered by parameter index so the key is canonical */
+    const rs_case_struct *c = run->c;
+    slong i, j, n = 0;
+    rs_assign_t *a = calloc((size_t) (c->nparams + 1), sizeof(rs_assign_t));
+    for (i = 0; i < c->nparams; i++) {
+        const char *name = c->params[i].name;
+        const fmpq *val = NULL;
+        int kept = 0;
+        for (j = 0; j < nkeep; j++)
+            if (strcmp(keep[j], name) == 0) kept = 1;
+        for (j = 0; j < c->nsets; j++)
+            if (strcmp(c->sets[j].name, name) == 0) val = c->sets[j].value;
+        for (j = 0; j < nextra; j++)
+            if (strcmp(extra[j].name, name) == 0) { val = extra[j].value; kept = 0; }
+        if (val == NULL || kept) continue;
+        a[n].name = name;
+        a[n].var = i;
+        fmpq_init(a[n].value);
+        fmpq_set(a[n].value, val);
+        n++;
+    }
+    *out = a;
+    *nout = n;
+    return RS_OK;
+}
+
+void rs_assign_free(rs_assign_t *a, slong n)
+{
+    slong i;
+    for (i = 0; i < n; i++) fmpq_clear(a[i].value);
+    free(a);
+}
+
+int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n)
+{
+    char *key = assign_key(a, n);
+    rs_variant_t *v;
+    slong i;
+    int r;
+    for (i = 0; i < run->nvariants; i++)
+        if (strcmp(run->variants[i]->key, key) == 0) {
+            free(key);
+            *out = run->variants[i];
+            return run->variants[i]->status;
+        }
+    v = calloc(1, sizeof(rs_variant_t));
+    v->key = key;
+    rs_scheme_init(v->s);
+    r = rs_scheme_build(v->s, run->c, run->err);
+    v->assigned = json_object();
+    if (r == RS_OK) {
+        for (i = 0; i < n; i++) {
+            char *val = fmpq_get_str(NULL, 10, a[i].value);
+            rs_scheme_substitute(v->s, a[i].var, a[i].value);
+            json_object_set_new(v->assigned, a[i].name, json_string(val));
+            flint_free(val);
+        }
+        rs_charpoly_init(v->cp, v->s);
+        v->have_cp = 1;
+        r = rs_charpoly_compute(v->cp, v->s, run->err);
+        if (r != RS_OK && run->err->file[0] == '\0') {
+            /* point determinant failures at the equations */
+            const rs_loc_t *l = run->c->neqs > 0 ? &run->c->eqs[0].loc : &run->c->charloc;
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s%s%s", run->err->msg, n > 0 ? " at " : "", n > 0 ? key : "");
+            rs_error_set_at(run->err, r, l->file ? l->file : run->c->path, l->line, l->col, "%s", msg);
+        }
+    }
+    v->status = r;
+    run->variants = realloc(run->variants, (size_t) (run->nvariants + 1) * sizeof(rs_variant_t *));
+    run->variants[run->nvariants++] = v;
+    *out = v;
+    return r;
+}
+
+/* ---- JSON helpers -------------------------------------------------------- */
+
+json_t *rs_json_fmpq(const fmpq_t q)
+{
+    char *s = fmpq_get_str(NULL, 10, q);
+    json_t *j = json_string(s);
+    flint_free(s);
+    return j;
+}
+
+json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
+{
+    char *str = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);
+    json_t *j = json_string(str);
+    free(str);
+    return j;
+}
+
+json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s)
+{
+    json_t *arr = json_array();
+    slong d = fmpz_mpoly_degree_si(p, var, s->zctx), k;
+    fmpz_mpoly_t c;
+    fmpz_mpoly_init(c, s->zctx);
+    for (k = 0; k <= d; k++) {
+        rs_charpoly_coeff(c, p, k, var, s->zctx);
+        json_array_append_new(arr, rs_json_zpoly(c, s));
+    }
+    fmpz_mpoly_clear(c, s->zctx);
+    return arr;
+}
+
+json_t *rs_json_nonzero(const rs_scheme_t s)
+{
+    json_t *arr = json_array();
+    slong i;
+    for (i = 0; i < s->nnonzero; i++) {
+        char *t = rs_polyfmt_spaced(s->nonzero_text[i]);
+        json_array_append_new(arr, json_string(t));
+        free(t);
+    }
+    return arr;
+}
+
+/* Request text helpers */
+const char *rs_req_skip_word(const char *t)
+{
+    while (*t == ' ' || *t == '\t') t++;
+    while (*t && !isspace((unsigned char) *t)) t++;
+    while (*t == ' ' || *t == '\t') t++;
+    return t;
+}
+
+int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code, const char *fmt, const char *a)
+{
+    int col = q->loc.col + (int) (at - q->text);
+    return rs_error_set_at(run->err, code, q->loc.file, q->loc.line, col > 0 ? col : 1, fmt, a);
+}
+
+void rs_req_src(rs_src_t *src, const rs_request_t *q)
+{
+    memset(src, 0, sizeof *src);
+    src->file = q->loc.file;
+    src->text = q->text;
+    src->line = q->loc.line;
+    src->col = q->loc.col;
+}
+
+/* ---- charpoly ------------------------------------------------------------ */
+
+json_t *rs_charpoly_json(const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    json_t *o = json_object();
+    char *str;
+    json_object_set_new(o, "analysis", json_string("charpoly"));
+    json_object_set_new(o, "var", json_string("lambda"));
+    json_object_set_new(o, "degree", json_integer(v->cp->degree));
+    json_object_set_new(o, "coeffs", rs_json_coeffs(v->cp->p, s->lambda_var, s));
+    json_object_set_new(o, "removed_lambda_power", json_integer(v->cp->removed_lambda_power));
+    json_object_set_new(o, "content", rs_json_fmpq(v->cp->content));
+    str = rs_polyfmt_collected(v->cp->p, s->lambda_var, (const char **) s->vars, s->zctx);
+    json_object_set_new(o, "poly", json_string(str));
+    free(str);
+    if (!fmpz_mpoly_is_fmpz(v->cp->param_content, s->zctx))
+        json_object_set_new(o, "param_content", rs_json_zpoly(v->cp->param_content, s));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "nonzero_assumptions", rs_json_nonzero(s));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    return o;
+}
+
+static int an_charpoly(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_assign_t *a;
+    slong n;
+    rs_variant_t *v;
+    int r;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after charpoly, found '%s'", rest);
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    r = rs_run_variant(&v, run, a, n);
+    rs_assign_free(a, n);
+    if (r != RS_OK) return r;
+    json_array_append_new(run->results, rs_charpoly_json(v));
+    return RS_OK;
+}
+
+/* ---- expect charpoly ----------------------------------------------------- */
+
+/* Compare an expected polynomial (fmpq, in the variant's variables, values
+ * substituted) with the derived one; fills status/difference into o. */
+void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t derived,
+                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s)
+{
+    fmpz_mpoly_t e, d;
+    fmpq_t scale;
+    const char *status;
+    fmpz_mpoly_init(e, s->zctx);
+    fmpz_mpoly_init(d, s->zctx);
+    fmpq_init(scale);
+    rs_charpoly_fmpq_to_fmpz(e, scale, expected, s->ctx);
+    if (fmpq_is_one(scale) && fmpz_mpoly_equal(e, derived_raw, s->zctx))
+        status = "equal";
+    else if (fmpq_is_one(scale) && fmpz_mpoly_equal(e, derived, s->zctx))
+        status = "equal";
+    else {
+        fmpq_t g;
+        fmpq_init(g);
+        rs_charpoly_normalise(e, g, var, s->zctx);
+        fmpq_clear(g);
+        status = fmpz_mpoly_equal(e, derived, s->zctx) ? "proportional" : "different";
+    }
+    json_object_set_new(o, "status", json_string(status));
+    if (strcmp(status, "different") == 0) {
+        fmpz_mpoly_sub(d, e, derived, s->zctx);
+        json_object_set_new(o, "difference", rs_json_zpoly(d, s));
+        json_object_set_new(o, "expected_normalised", rs_json_zpoly(e, s));
+        json_object_set_new(o, "derived", rs_json_zpoly(derived, s));
+        {
+            /* is the printed one a multiple of ours by a parameter factor? */
+            fmpz_mpoly_t qt;
+            fmpz_mpoly_init(qt, s->zctx);
+            if (fmpz_mpoly_divides(qt, e, derived, s->zctx) && fmpz_mpoly_degree_si(qt, var, s->zctx) == 0)
+                json_object_set_new(o, "ratio", rs_json_zpoly(qt, s));
+            fmpz_mpoly_clear(qt, s->zctx);
+        }
+    } else {
+        json_object_set_new(o, "difference", json_string("0"));
+    }
+    fmpz_mpoly_clear(e, s->zctx);
+    fmpz_mpoly_clear(d, s->zctx);
+    fmpq_clear(scale);
+}
+
+static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    const char *what = rest;
+    const char *exprtext;
+    rs_assign_t *a;
+    slong n, i;
+    rs_variant_t *v;
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t num, den;
+    json_t *o;
+    int r;
+    if (strncmp(what, "charpoly", 8) != 0 || !(what[8] == ' ' || what[8] == '\t'))
+        return rs_req_error(run, q, what, RS_ERR_INPUT,
+                            "expected 'charpoly' or 'bilinear' followed by a polynomial, found '%s'", what);
+    exprtext = rs_req_skip_word(what);
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    r = rs_run_variant(&v, run, a, n);
+    if (r != RS_OK) { rs_assign_free(a, n); return r; }
+    rs_req_src(&src, q);
+    {
+        size_t pos = (size_t) (exprtext - q->text);
+        r = rs_expr_parse(&e, &src, &pos, run->err);
+        if (r == RS_OK && q->text[pos] != '\0') {
+            rs_expr_free(e);
+            rs_assign_free(a, n);
+            return rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
+                                "expected an operator or end of line, found '%s'", q->text + pos);
+        }
+    }
+    if (r != RS_OK) { rs_assign_free(a, n); return r; }
+    fmpq_mpoly_init(num, v->s->ctx);
+    fmpq_mpoly_init(den, v->s->ctx);
+    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 1, run->err);
+    rs_expr_free(e);
+    if (r == RS_OK) {
+        fmpz_mpoly_t raw, lam;
+        for (i = 0; i < n; i++)
+            fmpq_mpoly_evaluate_one_fmpq(num, num, a[i].var, a[i].value, v->s->ctx);
+        /* the raw determinant content * lambda^k * p, for "equal" */
+        fmpz_mpoly_init(raw, v->s->zctx);
+        fmpz_mpoly_init(lam, v->s->zctx);
+        fmpz_mpoly_gen(lam, v->s->lambda_var, v->s->zctx);
+        fmpz_mpoly_pow_ui(lam, lam, (ulong) v->cp->removed_lambda_power, v->s->zctx);
+        fmpz_mpoly_mul(raw, v->cp->p, lam, v->s->zctx);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("expect"));
+        json_object_set_new(o, "of", json_string("charpoly"));
+        json_object_set_new(o, "text", json_string(q->text));
+        if (fmpq_mpoly_is_zero(num, v->s->ctx)) {
+            json_object_set_new(o, "status", json_string("different"));
+            json_object_set_new(o, "difference", rs_json_zpoly(v->cp->p, v->s));
+        } else {
+            rs_compare_poly(o, num, v->cp->p, raw, v->s->lambda_var, v->s);
+        }
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        if (strcmp(json_string_value(json_object_get(o, "status")), "different") == 0)
+            run->outcome |= RS_OUTCOME_FAILED;
+        json_array_append_new(run->results, o);
+        fmpz_mpoly_clear(raw, v->s->zctx);
+        fmpz_mpoly_clear(lam, v->s->zctx);
+    }
+    fmpq_mpoly_clear(num, v->s->ctx);
+    fmpq_mpoly_clear(den, v->s->ctx);
+    rs_assign_free(a, n);
+    return r;
+}
+
+/* ---- dispatch ------------------------------------------------------------ */
+
+typedef int (*an_fn)(rs_run_t *, const rs_request_t *, const char *);
+typedef struct { const char *name; an_fn fn; } an_entry_t;
+
+static const an_entry_t table[] = {
+    {"charpoly", an_charpoly},
+    {"expect", an_expect},
+    {NULL, NULL}
+};
+
+static int dispatch(rs_run_t *run, const rs_request_t *q)
+{
+    const char *t = q->text;
+    size_t n = 0;
+    slong i;
+    while (t[n] && !isspace((unsigned char) t[n])) n++;
+    for (i = 0; table[i].name != NULL; i++)
+        if (strlen(table[i].name) == n && strncmp(table[i].name, t, n) == 0)
+            return table[i].fn(run, q, rs_req_skip_word(t));
+    for (i = 0; rs_analysis_extra[i].name != NULL; i++)
+        if (strlen(rs_analysis_extra[i].name) == n && strncmp(rs_analysis_extra[i].name, t, n) == 0)
+            return rs_analysis_extra[i].fn(run, q, rs_req_skip_word(t));
+    {
+        char word[80];
+        snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);
+        return rs_req_error(run, q, t, RS_ERR_INPUT,
+                            "expected an analysis (charpoly, bilinear, routh, hurwitz, jury, stability, "
+                            "region, limit, claim, radius, modes, simulate, expect), found '%s'", word);
+    }
+}
+
+int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
+                    const rs_options_t *opt, rs_error_t err)
+{
+    rs_run_t run;
+    json_t *d, *arr;
+    slong i;
+    int r = RS_OK;
+    memset(&run, 0, sizeof run);
+    run.c = c;
+    run.opt = opt;
+    run.err = err;
+    run.results = json_array();
+    *doc = NULL;
+    *outcome = RS_OUTCOME_OK;
+    /* an error in the equations must surface even when no analysis asks */
+    {
+        rs_scheme_t s;
+        rs_scheme_init(s);
+        r = rs_scheme_build(s, c, err);
+        rs_scheme_clear(s);
+    }
+    for (i = 0; i < c->nrequests && r == RS_OK; i++)
+        r = dispatch(&run, &c->requests[i]);
+    for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
+    free(run.variants);
+    if (r != RS_OK) {
+        json_decref(run.results);
+        return r;
+    }
+    d = json_object();
+    json_object_set_new(d, "case", json_string(c->path));
+    json_object_set_new(d, "title", c->title ? json_string(c->title) : json_null());
+    arr = json_array();
+    for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));
+    json_object_set_new(d, "params", arr);
+    arr = json_array();
+    for (i = 0; i < c->nunknowns; i++) json_array_append_new(arr, json_string(c->unknowns[i].name));
+    json_object_set_new(d, "unknowns", arr);
+    {
+        json_t *sets = json_object();
+        for (i = 0; i < c->nsets; i++)
+            json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
+        json_object_set_new(d, "set", sets);
+    }
+    json_object_set_new(d, "results", run.results);
+    *doc = d;
+    *outcome = run.outcome;
+    return RS_OK;
+}

@@ -1,0 +1,216 @@
+/* charpoly.c -- fraction-free determinant and normalisation. */
+#include <string.h>
+#include <flint/fmpz_vec.h>
+#include "recstab/charpoly.h"
+
+void rs_charpoly_init(rs_charpoly_t cp, const rs_scheme_t s)
+{
+    fmpz_mpoly_init(cp->p, s->zctx);
+    fmpz_mpoly_init(cp->param_content, s->zctx);
+    fmpq_init(cp->content);
+    cp->degree = 0;
+    cp->removed_lambda_power = 0;
+}
+
+void rs_charpoly_clear(rs_charpoly_t cp, const rs_scheme_t s)
+{
+    fmpz_mpoly_clear(cp->p, s->zctx);
+    fmpz_mpoly_clear(cp->param_content, s->zctx);
+    fmpq_clear(cp->content);
+}
+
+void rs_charpoly_fmpq_to_fmpz(fmpz_mpoly_t out, fmpq_t scale, const fmpq_mpoly_t q,
+                              const fmpq_mpoly_ctx_t ctx)
+{
+    /* q = content * zpoly with zpoly primitive */
+    fmpz_mpoly_set(out, q->zpoly, ctx->zctx);
+    if (fmpq_is_zero(q->content))
+        fmpq_one(scale);
+    else
+        fmpq_inv(scale, q->content);
+}
+
+static slong min_exp(const fmpz_mpoly_t p, slong v, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, best = WORD_MAX, n = fmpz_mpoly_length(p, ctx);
+    slong *e = flint_malloc(ctx->minfo->nvars * sizeof(slong));
+    for (i = 0; i < n; i++) {
+        fmpz_mpoly_get_term_exp_si(e, p, i, ctx);
+        if (e[v] < best) best = e[v];
+    }
+    flint_free(e);
+    return n == 0 ? 0 : best;
+}
+
+void rs_charpoly_coeff(fmpz_mpoly_t c, const fmpz_mpoly_t p, slong k,
+                       slong lambda_var, const fmpz_mpoly_ctx_t ctx)
+{
+    ulong kk = (ulong) k;
+    fmpz_mpoly_get_coeff_vars_ui(c, p, &lambda_var, &kk, 1, ctx);
+}
+
+slong rs_charpoly_normalise(fmpz_mpoly_t q, fmpq_t scale, slong lambda_var,
+                            const fmpz_mpoly_ctx_t ctx)
+{
+    slong k, d;
+    fmpz_t g;
+    fmpz_mpoly_t lc, m;
+    if (fmpz_mpoly_is_zero(q, ctx))
+        return 0;
+    k = min_exp(q, lambda_var, ctx);
+    if (k > 0) {
+        fmpz_mpoly_init(m, ctx);
+        fmpz_mpoly_gen(m, lambda_var, ctx);
+        fmpz_mpoly_pow_ui(m, m, (ulong) k, ctx);
+        fmpz_mpoly_divexact(q, q, m, ctx);
+        fmpz_mpoly_clear(m, ctx);
+    }
+    fmpz_init(g);
+    _fmpz_vec_content(g, q->coeffs, q->length);
+    d = fmpz_mpoly_degree_si(q, lambda_var, ctx);
+    fmpz_mpoly_init(lc, ctx);
+    rs_charpoly_coeff(lc, q, d, lambda_var, ctx);
+    if (fmpz_sgn(lc->coeffs + 0) < 0)
+        fmpz_neg(g, g);
+    if (!fmpz_is_one(g))
+        fmpz_mpoly_scalar_divexact_fmpz(q, q, g, ctx);
+    if (scale != NULL)
+        fmpq_mul_fmpz(scale, scale, g);
+    fmpz_mpoly_clear(lc, ctx);
+    fmpz_clear(g);
+    return k;
+}
+
+int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
+                    slong max_terms, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong i, j, k;
+    int sign = 1;
+    fmpz_mpoly_t prev, t;
+    if (n == 0) {
+        fmpz_mpoly_one(det, ctx);
+        return RS_OK;
+    }
+    fmpz_mpoly_init(prev, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_one(prev, ctx);
+    for (k = 0; k < n - 1; k++) {
+        /* pivot: the non-zero entry in column k with the fewest terms */
+        slong best = -1;
+        for (i = k; i < n; i++) {
+            if (fmpz_mpoly_is_zero(A + i * n + k, ctx)) continue;
+            if (best < 0 || fmpz_mpoly_length(A + i * n + k, ctx) < fmpz_mpoly_length(A + best * n + k, ctx))
+                best = i;
+        }
+        if (best < 0) {
+            fmpz_mpoly_zero(det, ctx);
+            goto done;
+        }
+        if (best != k) {
+            for (j = 0; j < n; j++)
+                fmpz_mpoly_swap(A + k * n + j, A + best * n + j, ctx);
+            sign = -sign;
+        }
+        for (i = k + 1; i < n; i++) {
+            for (j = k + 1; j < n; j++) {
+                fmpz_mpoly_struct *aij = A + i * n + j;
+                fmpz_mpoly_mul(t, A + k * n + k, aij, ctx);
+                fmpz_mpoly_mul(aij, A + i * n + k, A + k * n + j, ctx);
+                fmpz_mpoly_sub(aij, t, aij, ctx);
+                if (!fmpz_mpoly_divides(aij, aij, prev, ctx)) {
+                    fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
+                    return rs_error_set(err, RS_ERR_INTERNAL, "Bareiss division not exact");
+                }
+                if (fmpz_mpoly_length(aij, ctx) > max_terms) {
+                    fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
+                    return rs_error_set(err, RS_ERR_LIMIT,
+                                        "term limit exceeded: an intermediate determinant has %ld terms "
+                                        "(limit %ld); set more parameters to numbers", 
+                                        (long) fmpz_mpoly_length(aij, ctx), (long) max_terms);
+                }
+            }
+            fmpz_mpoly_zero(A + i * n + k, ctx);
+        }
+        fmpz_mpoly_set(prev, A + k * n + k, ctx);
+    }
+    fmpz_mpoly_set(det, A + (n - 1) * n + (n - 1), ctx);
+    if (sign < 0) fmpz_mpoly_neg(det, det, ctx);
+done:
+    fmpz_mpoly_clear(prev, ctx);
+    fmpz_mpoly_clear(t, ctx);
+    return RS_OK;
+}
+
+int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
+{
+    const fmpz_mpoly_ctx_struct *zctx = s->zctx;
+    fmpq_t scale;   /* det(M) = raw / scale */
+    int r = RS_OK;
+    fmpq_init(scale);
+    fmpq_one(scale);
+    if (s->from_char) {
+        rs_charpoly_fmpq_to_fmpz(cp->p, scale, s->charpoly, s->ctx);
+    } else {
+        slong i, n = s->n;
+        fmpz_mpoly_struct *A = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
+        for (i = 0; i < n * n; i++) fmpz_mpoly_init(A + i, zctx);
+        for (i = 0; i < n; i++) {
+            /* scale row i to integers: multiply by the lcm of denominators */
+            fmpz_t L;
+            slong j;
+            fmpz_init(L);
+            fmpz_one(L);
+            for (j = 0; j < n; j++)
+                fmpz_lcm(L, L, fmpq_denref(s->M[i * n + j].content));
+            for (j = 0; j < n; j++) {
+                const fmpq_mpoly_struct *e = s->M + i * n + j;
+                fmpz_t c;
+                fmpz_init(c);
+                fmpz_divexact(c, L, fmpq_denref(e->content));
+                fmpz_mul(c, c, fmpq_numref(e->content));
+                fmpz_mpoly_scalar_mul_fmpz(A + i * n + j, e->zpoly, c, zctx);
+                fmpz_clear(c);
+            }
+            fmpq_mul_fmpz(scale, scale, L);
+            fmpz_clear(L);
+        }
+        r = rs_charpoly_det(cp->p, A, n, RS_CHARPOLY_MAX_TERMS, zctx, err);
+        for (i = 0; i < n * n; i++) fmpz_mpoly_clear(A + i, zctx);
+        flint_free(A);
+    }
+    if (r == RS_OK && fmpz_mpoly_is_zero(cp->p, zctx))
+        r = rs_error_set(err, RS_ERR_MATH,
+                         "the determinant of the lambda-matrix is identically zero: the equations "
+                         "are dependent (singular scheme)");
+    if (r == RS_OK) {
+        fmpq_t g;
+        fmpq_init(g);
+        fmpq_one(g);
+        cp->removed_lambda_power = rs_charpoly_normalise(cp->p, g, s->lambda_var, zctx);
+        /* raw = g * p * lambda^k ; det = raw / scale */
+        fmpq_div(cp->content, g, scale);
+        cp->degree = fmpz_mpoly_degree_si(cp->p, s->lambda_var, zctx);
+        {
+            slong v = s->lambda_var;
+            if (!fmpz_mpoly_content_vars(cp->param_content, cp->p, &v, 1, zctx))
+                fmpz_mpoly_one(cp->param_content, zctx);
+        }
+        fmpq_clear(g);
+        if (cp->degree < 1)
+            r = rs_error_set(err, RS_ERR_MATH,
+                             "the characteristic polynomial has no root (degree 0 in lambda): "
+                             "the scheme has no dynamics");
+    }
+    fmpq_clear(scale);
+    return r;
+}
+
+int rs_charpoly_get_fmpz_poly(fmpz_poly_t out, const fmpz_mpoly_t p, slong lambda_var,
+                              const fmpz_mpoly_ctx_t ctx)
+{
+    slong v;
+    for (v = 0; v < ctx->minfo->nvars; v++)
+        if (v != lambda_var && fmpz_mpoly_degree_si(p, v, ctx) > 0)
+            return 0;
+    return fmpz_mpoly_get_fmpz_poly(out, p, lambda_var, ctx);
+}

@@ -1,0 +1,150 @@
+/* main.c -- the recstab command.  All output is buffered and written only
+ * when every case succeeded, so a failing run leaves no partial output. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <jansson.h>
+#include "recstab/analysis.h"
+#include "recstab/casefile.h"
+#include "recstab/report.h"
+
+#ifndef RS_VERSION
+#define RS_VERSION "0.0.0"
+#endif
+
+static void usage(FILE *f)
+{
+    fputs("usage: recstab [OPTIONS] CASE...      run the analyses each case lists (\"-\" reads stdin)\n"
+          "  --json                         one JSON document on stdout\n"
+          "  --set NAME=VALUE               add or override a set value (repeatable)\n"
+          "  --analyse \"ANALYSIS [OPTIONS]\" replace the case's analyses (repeatable; also\n"
+          "                                 accepts \"expect ...\" and \"claim ...\" lines)\n"
+          "  --max-prec BITS                ceiling for certified numerics (default 65536)\n"
+          "  --help, --version\n"
+          "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
+          "             3 internal inconsistency (two independent methods disagree)\n", f);
+}
+
+static int exit_code_for(int code)
+{
+    return code == RS_ERR_INCONSISTENT ? 3 : 2;
+}
+
+int main(int argc, char **argv)
+{
+    int json = 0, i, worst = 0;
+    const char **sets = calloc((size_t) argc, sizeof(char *));
+    const char **analyses = calloc((size_t) argc, sizeof(char *));
+    const char **cases = calloc((size_t) argc, sizeof(char *));
+    int nsets = 0, nanalyses = 0, ncases = 0, rc = 0;
+    rs_options_t opt;
+    json_t *docs = json_array();
+    char *outbuf = NULL;
+    size_t outlen = 0;
+    FILE *out;
+
+    rs_options_default(&opt);
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--json") == 0) json = 1;
+        else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
+        else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
+        else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
+                 || strcmp(a, "--max-prec") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "recstab: %s needs a value\n", a);
+                usage(stderr);
+                rc = 2;
+                goto end;
+            }
+            if (strcmp(a, "--set") == 0) sets[nsets++] = argv[++i];
+            else if (strcmp(a, "--max-prec") == 0) {
+                char *endp;
+                long v = strtol(argv[++i], &endp, 10);
+                if (*endp != '\0' || v < 16 || v > 10000000) {
+                    fprintf(stderr, "recstab: --max-prec expects bits between 16 and 10000000, found '%s'\n", argv[i]);
+                    rc = 2;
+                    goto end;
+                }
+                opt.max_prec = v;
+            } else analyses[nanalyses++] = argv[++i];
+        } else if (strncmp(a, "--set=", 6) == 0) sets[nsets++] = a + 6;
+        else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)
+            analyses[nanalyses++] = a + 10;
+        else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "recstab: unknown option '%s'\n", a);
+            usage(stderr);
+            rc = 2;
+            goto end;
+        } else cases[ncases++] = a;
+    }
+    if (ncases == 0) {
+        fprintf(stderr, "recstab: expected a case file (or - for stdin)\n");
+        usage(stderr);
+        rc = 2;
+        goto end;
+    }
+    for (i = 0; i < ncases; i++) {
+        rs_case_t c;
+        rs_error_t err;
+        json_t *doc = NULL;
+        int outcome = 0, r, k;
+        rs_case_init(c);
+        rs_error_init(err);
+        r = rs_case_parse_file(c, cases[i], err);
+        for (k = 0; r == RS_OK && k < nsets; k++)
+            r = rs_case_set_value(c, sets[k], err);
+        if (r == RS_OK && nanalyses > 0) {
+            rs_case_clear_requests(c);
+            for (k = 0; k < nanalyses; k++) {
+                const char *t = analyses[k];
+                char *line;
+                while (*t == ' ') t++;
+                line = malloc(strlen(t) + 1);
+                strcpy(line, t);
+                if (strncmp(line, "analyse ", 8) == 0 || strncmp(line, "analyze ", 8) == 0)
+                    memmove(line, line + 8, strlen(line + 8) + 1);
+                rs_case_add_request(c, line, "--analyse", 0, 0);
+                free(line);
+            }
+        }
+        if (r == RS_OK)
+            r = rs_analysis_run(&doc, &outcome, c, &opt, err);
+        if (r != RS_OK) {
+            char msg[2 * RS_ERROR_MSG_LEN];
+            rs_error_format(msg, sizeof msg, err);
+            fprintf(stderr, "recstab: %s\n", msg);
+            rs_case_clear(c);
+            rc = exit_code_for(r);
+            goto end;
+        }
+        if (outcome & RS_OUTCOME_INCONSISTENT) worst = 3;
+        else if ((outcome & RS_OUTCOME_FAILED) && worst == 0) worst = 1;
+        json_array_append_new(docs, doc);
+        rs_case_clear(c);
+    }
+    out = open_memstream(&outbuf, &outlen);
+    if (json) {
+        json_t *top = (ncases == 1) ? json_incref(json_array_get(docs, 0))
+                                    : json_pack("{s:O}", "cases", docs);
+        json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
+        fputc('\n', out);
+        json_decref(top);
+    } else {
+        size_t k;
+        for (k = 0; k < json_array_size(docs); k++) {
+            if (k > 0) fputc('\n', out);
+            rs_report_text(out, json_array_get(docs, k));
+        }
+    }
+    fclose(out);
+    if (fwrite(outbuf, 1, outlen, stdout) != outlen || fflush(stdout) != 0) {
+        fprintf(stderr, "recstab: cannot write output\n");
+        rc = 2;
+    } else rc = worst;
+    free(outbuf);
+end:
+    json_decref(docs);
+    free(sets); free(analyses); free(cases);
+    return rc;
+}

@@ -1,0 +1,478 @@
+/* expr.c -- recursive-descent parser for case-file expressions. */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpz.h>
+#include "recstab/expr.h"
+
+typedef struct {
+    const rs_src_t *src;
+    size_t pos;
+    int depth;
+    rs_error_struct *err;
+} parser_t;
+
+void rs_src_pos(const rs_src_t *src, size_t i, int *line, int *col)
+{
+    if (src->linemap != NULL) {
+        size_t n = strlen(src->text);
+        if (i > n) i = n;
+        *line = src->linemap[i];
+        *col = src->colmap[i];
+    } else {
+        *line = src->line;
+        *col = src->col + (int) i;
+    }
+}
+
+static void skip_ws(parser_t *p)
+{
+    const char *t = p->src->text;
+    while (t[p->pos] == ' ' || t[p->pos] == '\t' || t[p->pos] == '\r')
+        p->pos++;
+}
+
+/* A short printable description of what stands at position i. */
+static void describe(char *buf, size_t len, const char *t, size_t i)
+{
+    unsigned char c = (unsigned char) t[i];
+    if (c == '\0') {
+        snprintf(buf, len, "end of line");
+    } else if (isalpha(c) || c == '_') {
+        size_t j = i;
+        while (isalnum((unsigned char) t[j]) || t[j] == '_') j++;
+        snprintf(buf, len, "'%.*s'", (int) (j - i > 40 ? 40 : j - i), t + i);
+    } else if (isdigit(c)) {
+        size_t j = i;
+        while (isdigit((unsigned char) t[j]) || t[j] == '.') j++;
+        snprintf(buf, len, "'%.*s'", (int) (j - i > 40 ? 40 : j - i), t + i);
+    } else if (c < 32 || c >= 127) {
+        snprintf(buf, len, "byte 0x%02x", c);
+    } else {
+        snprintf(buf, len, "'%c'", c);
+    }
+}
+
+static int perr(parser_t *p, size_t at, const char *expected)
+{
+    int line, col;
+    char found[64];
+    describe(found, sizeof found, p->src->text, at);
+    rs_src_pos(p->src, at, &line, &col);
+    return rs_error_set_at(p->err, RS_ERR_INPUT, p->src->file, line, col,
+                           "expected %s, found %s", expected, found);
+}
+
+static rs_expr_t *node_new(parser_t *p, rs_expr_kind_t kind, size_t at)
+{
+    rs_expr_t *e = flint_calloc(1, sizeof(rs_expr_t));
+    e->kind = kind;
+    fmpq_init(e->num);
+    rs_src_pos(p->src, at, &e->line, &e->col);
+    return e;
+}
+
+void rs_expr_free(rs_expr_t *e)
+{
+    if (e == NULL)
+        return;
+    rs_expr_free(e->a);
+    rs_expr_free(e->b);
+    fmpq_clear(e->num);
+    flint_free(e->name);
+    flint_free(e);
+}
+
+rs_expr_t *rs_expr_copy(const rs_expr_t *e)
+{
+    rs_expr_t *c;
+    if (e == NULL)
+        return NULL;
+    c = flint_calloc(1, sizeof(rs_expr_t));
+    *c = *e;
+    fmpq_init(c->num);
+    fmpq_set(c->num, e->num);
+    if (e->name != NULL) {
+        c->name = flint_malloc(strlen(e->name) + 1);
+        strcpy(c->name, e->name);
+    }
+    c->a = rs_expr_copy(e->a);
+    c->b = rs_expr_copy(e->b);
+    return c;
+}
+
+/* Exact decimal: digits[.digits][e[+-]digits].  Scans at t+*i. */
+static int scan_decimal(fmpq_t q, const char *t, size_t *i)
+{
+    size_t j = *i, k;
+    fmpz_t num, den, tmp;
+    slong exp10 = 0, frac = 0;
+    if (!isdigit((unsigned char) t[j]) && !(t[j] == '.' && isdigit((unsigned char) t[j + 1])))
+        return 0;
+    fmpz_init(num); fmpz_init(den); fmpz_init(tmp);
+    for (; isdigit((unsigned char) t[j]); j++) {
+        fmpz_mul_ui(num, num, 10);
+        fmpz_add_ui(num, num, (ulong) (t[j] - '0'));
+    }
+    if (t[j] == '.') {
+        j++;
+        for (; isdigit((unsigned char) t[j]); j++, frac++) {
+            fmpz_mul_ui(num, num, 10);
+            fmpz_add_ui(num, num, (ulong) (t[j] - '0'));
+        }
+    }
+    k = j;
+    if ((t[k] == 'e' || t[k] == 'E') &&
+        (isdigit((unsigned char) t[k + 1]) ||
+         ((t[k + 1] == '+' || t[k + 1] == '-') && isdigit((unsigned char) t[k + 2])))) {
+        int neg = 0;
+        k++;
+        if (t[k] == '+' || t[k] == '-') { neg = (t[k] == '-'); k++; }
+        for (; isdigit((unsigned char) t[k]); k++) {
+            if (exp10 < 1000000) exp10 = exp10 * 10 + (t[k] - '0');
+        }
+        if (neg) exp10 = -exp10;
+        j = k;
+    }
+    exp10 -= frac;
+    if (exp10 > RS_EXPR_MAX_POW || exp10 < -RS_EXPR_MAX_POW) {
+        fmpz_clear(num); fmpz_clear(den); fmpz_clear(tmp);
+        return -1;
+    }
+    fmpz_one(den);
+    fmpz_set_ui(tmp, 10);
+    if (exp10 >= 0) {
+        fmpz_pow_ui(tmp, tmp, (ulong) exp10);
+        fmpz_mul(num, num, tmp);
+    } else {
+        fmpz_pow_ui(den, tmp, (ulong) (-exp10));
+    }
+    fmpq_set_fmpz_frac(q, num, den);
+    fmpz_clear(num); fmpz_clear(den); fmpz_clear(tmp);
+    *i = j;
+    return 1;
+}
+
+static rs_expr_t *parse_expr(parser_t *p);
+static rs_expr_t *parse_unary(parser_t *p);
+
+static rs_expr_t *parse_primary(parser_t *p)
+{
+    const char *t = p->src->text;
+    size_t start;
+    rs_expr_t *e;
+    skip_ws(p);
+    start = p->pos;
+    if (t[p->pos] == '(') {
+        p->pos++;
+        e = parse_expr(p);
+        if (e == NULL)
+            return NULL;
+        skip_ws(p);
+        if (t[p->pos] != ')') {
+            perr(p, p->pos, "')' to close the '(' opened before");
+            rs_expr_free(e);
+            return NULL;
+        }
+        p->pos++;
+        return e;
+    }
+    if (isdigit((unsigned char) t[p->pos]) || (t[p->pos] == '.' && isdigit((unsigned char) t[p->pos + 1]))) {
+        fmpq_t q;
+        size_t i = p->pos;
+        int r;
+        fmpq_init(q);
+        r = scan_decimal(q, t, &i);
+        if (r < 0) {
+            int line, col;
+            rs_src_pos(p->src, start, &line, &col);
+            rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
+                            "decimal exponent out of range (limit |e| <= %d)", RS_EXPR_MAX_POW);
+            fmpq_clear(q);
+            return NULL;
+        }
+        e = node_new(p, RS_EXPR_NUM, start);
+        fmpq_swap(e->num, q);
+        fmpq_clear(q);
+        p->pos = i;
+        if (isalpha((unsigned char) t[p->pos]) || t[p->pos] == '_') {
+            perr(p, p->pos, "an operator after a number (write 2*h, not 2h)");
+            rs_expr_free(e);
+            return NULL;
+        }
+        return e;
+    }
+    if (isalpha((unsigned char) t[p->pos]) || t[p->pos] == '_') {
+        size_t j = p->pos;
+        while (isalnum((unsigned char) t[j]) || t[j] == '_') j++;
+        if (j - p->pos > 64) {
+            perr(p, p->pos, "a name of at most 64 characters");
+            return NULL;
+        }
+        e = node_new(p, RS_EXPR_NAME, start);
+        e->name = flint_malloc(j - p->pos + 1);
+        memcpy(e->name, t + p->pos, j - p->pos);
+        e->name[j - p->pos] = '\0';
+        p->pos = j;
+        skip_ws(p);
+        if (t[p->pos] == '[') {
+            slong k = 0, sign = 1;
+            size_t lb = p->pos;
+            p->pos++;
+            skip_ws(p);
+            if (t[p->pos] != 'n' || isalnum((unsigned char) t[p->pos + 1]) || t[p->pos + 1] == '_') {
+                perr(p, p->pos, "'n' in a shift such as x[n+1]");
+                rs_expr_free(e);
+                return NULL;
+            }
+            p->pos++;
+            skip_ws(p);
+            if (t[p->pos] == '+' || t[p->pos] == '-') {
+                sign = (t[p->pos] == '-') ? -1 : 1;
+                p->pos++;
+                skip_ws(p);
+                if (!isdigit((unsigned char) t[p->pos])) {
+                    perr(p, p->pos, "an integer shift such as x[n+1]");
+                    rs_expr_free(e);
+                    return NULL;
+                }
+                while (isdigit((unsigned char) t[p->pos])) {
+                    if (k > 100000) {
+                        int line, col;
+                        rs_src_pos(p->src, lb, &line, &col);
+                        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
+                                        "shift too large (limit 100000)");
+                        rs_expr_free(e);
+                        return NULL;
+                    }
+                    k = 10 * k + (t[p->pos] - '0');
+                    p->pos++;
+                }
+                skip_ws(p);
+            }
+            if (t[p->pos] != ']') {
+                perr(p, p->pos, "']' to close the shift");
+                rs_expr_free(e);
+                return NULL;
+            }
+            p->pos++;
+            e->shifted = 1;
+            e->shift = sign * k;
+        }
+        return e;
+    }
+    perr(p, p->pos, "an expression (number, name or '(')");
+    return NULL;
+}
+
+static rs_expr_t *binary(parser_t *p, rs_expr_kind_t k, size_t at, rs_expr_t *a, rs_expr_t *b)
+{
+    rs_expr_t *e = node_new(p, k, at);
+    e->a = a;
+    e->b = b;
+    return e;
+}
+
+/* power := primary ('^' unary)?   (right associative through unary) */
+static rs_expr_t *parse_power(parser_t *p)
+{
+    rs_expr_t *a, *b;
+    size_t at;
+    a = parse_primary(p);
+    if (a == NULL)
+        return NULL;
+    skip_ws(p);
+    if (p->src->text[p->pos] != '^')
+        return a;
+    at = p->pos;
+    p->pos++;
+    b = parse_unary(p);
+    if (b == NULL) {
+        rs_expr_free(a);
+        return NULL;
+    }
+    return binary(p, RS_EXPR_POW, at, a, b);
+}
+
+static rs_expr_t *parse_unary(parser_t *p)
+{
+    const char *t = p->src->text;
+    skip_ws(p);
+    if (++p->depth > RS_EXPR_MAX_DEPTH) {
+        int line, col;
+        rs_src_pos(p->src, p->pos, &line, &col);
+        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
+                        "expression nested too deeply (limit %d)", RS_EXPR_MAX_DEPTH);
+        return NULL;
+    }
+    if (t[p->pos] == '-' || t[p->pos] == '+') {
+        size_t at = p->pos;
+        int neg = (t[p->pos] == '-');
+        rs_expr_t *a;
+        p->pos++;
+        a = parse_unary(p);
+        p->depth--;
+        if (a == NULL || !neg)
+            return a;
+        return binary(p, RS_EXPR_NEG, at, a, NULL);
+    } else {
+        rs_expr_t *a = parse_power(p);
+        p->depth--;
+        return a;
+    }
+}
+
+static rs_expr_t *parse_term(parser_t *p)
+{
+    const char *t = p->src->text;
+    rs_expr_t *a = parse_unary(p), *b;
+    while (a != NULL) {
+        size_t at;
+        rs_expr_kind_t k;
+        skip_ws(p);
+        if (t[p->pos] != '*' && t[p->pos] != '/')
+            break;
+        at = p->pos;
+        k = (t[p->pos] == '*') ? RS_EXPR_MUL : RS_EXPR_DIV;
+        p->pos++;
+        b = parse_unary(p);
+        if (b == NULL) {
+            rs_expr_free(a);
+            return NULL;
+        }
+        a = binary(p, k, at, a, b);
+    }
+    return a;
+}
+
+static rs_expr_t *parse_expr(parser_t *p)
+{
+    const char *t = p->src->text;
+    rs_expr_t *a, *b;
+    if (++p->depth > RS_EXPR_MAX_DEPTH) {
+        int line, col;
+        rs_src_pos(p->src, p->pos, &line, &col);
+        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
+                        "expression nested too deeply (limit %d)", RS_EXPR_MAX_DEPTH);
+        return NULL;
+    }
+    a = parse_term(p);
+    while (a != NULL) {
+        size_t at;
+        rs_expr_kind_t k;
+        skip_ws(p);
+        if (t[p->pos] != '+' && t[p->pos] != '-')
+            break;
+        at = p->pos;
+        k = (t[p->pos] == '+') ? RS_EXPR_ADD : RS_EXPR_SUB;
+        p->pos++;
+        b = parse_term(p);
+        if (b == NULL) {
+            rs_expr_free(a);
+            a = NULL;
+            break;
+        }
+        a = binary(p, k, at, a, b);
+    }
+    p->depth--;
+    return a;
+}
+
+int rs_expr_parse(rs_expr_t **out, const rs_src_t *src, size_t *pos, rs_error_t err)
+{
+    parser_t p;
+    p.src = src;
+    p.pos = *pos;
+    p.depth = 0;
+    p.err = err;
+    *out = parse_expr(&p);
+    *pos = p.pos;
+    if (*out == NULL)
+        return err->code ? err->code : RS_ERR_INPUT;
+    return RS_OK;
+}
+
+int rs_expr_parse_all(rs_expr_t **out, const rs_src_t *src, rs_error_t err)
+{
+    size_t pos = 0;
+    int r = rs_expr_parse(out, src, &pos, err);
+    if (r != RS_OK)
+        return r;
+    while (src->text[pos] == ' ' || src->text[pos] == '\t' || src->text[pos] == '\r')
+        pos++;
+    if (src->text[pos] != '\0') {
+        parser_t p;
+        p.src = src; p.pos = pos; p.depth = 0; p.err = err;
+        rs_expr_free(*out);
+        *out = NULL;
+        return perr(&p, pos, "an operator or end of expression");
+    }
+    return RS_OK;
+}
+
+/* Evaluate a constant expression tree to a rational (numbers, + - * / ^). */
+int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src, rs_error_t err)
+{
+    fmpq_t a, b;
+    int r = RS_OK;
+    if (e->kind == RS_EXPR_NUM) {
+        fmpq_set(q, e->num);
+        return RS_OK;
+    }
+    if (e->kind == RS_EXPR_NAME)
+        return rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                               "expected a number, found the name '%s'", e->name);
+    fmpq_init(a); fmpq_init(b);
+    r = rs_expr_eval_const(a, e->a, src, err);
+    if (r == RS_OK && e->b != NULL)
+        r = rs_expr_eval_const(b, e->b, src, err);
+    if (r == RS_OK) {
+        switch (e->kind) {
+        case RS_EXPR_ADD: fmpq_add(q, a, b); break;
+        case RS_EXPR_SUB: fmpq_sub(q, a, b); break;
+        case RS_EXPR_MUL: fmpq_mul(q, a, b); break;
+        case RS_EXPR_NEG: fmpq_neg(q, a); break;
+        case RS_EXPR_DIV:
+            if (fmpq_is_zero(b))
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                                    "division by zero");
+            else
+                fmpq_div(q, a, b);
+            break;
+        case RS_EXPR_POW:
+            if (!fmpz_is_one(fmpq_denref(b)))
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->b->line, e->b->col,
+                                    "expected an integer power, found a fraction");
+            else if (fmpz_bits(fmpq_numref(b)) > 20 || fmpz_get_si(fmpq_numref(b)) > RS_EXPR_MAX_POW || fmpz_get_si(fmpq_numref(b)) < -RS_EXPR_MAX_POW)
+                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->b->line, e->b->col,
+                                    "power too large (limit %d)", RS_EXPR_MAX_POW);
+            else if (fmpq_is_zero(a) && fmpz_sgn(fmpq_numref(b)) < 0)
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                                    "division by zero (0 to a negative power)");
+            else
+                fmpq_pow_si(q, a, fmpz_get_si(fmpq_numref(b)));
+            break;
+        default:
+            r = rs_error_set(err, RS_ERR_INTERNAL, "bad node");
+        }
+    }
+    fmpq_clear(a); fmpq_clear(b);
+    return r;
+}
+
+int rs_expr_parse_number(fmpq_t q, const char *s, rs_error_t err)
+{
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    int r;
+    memset(&src, 0, sizeof src);
+    src.file = "";
+    src.text = s;
+    src.line = 1;
+    src.col = 1;
+    r = rs_expr_parse_all(&e, &src, err);
+    if (r == RS_OK)
+        r = rs_expr_eval_const(q, e, &src, err);
+    rs_expr_free(e);
+    return r;
+}

@@ -1,0 +1,578 @@
+/* scheme.c -- exact evaluation of equations into the lambda-matrix. */
+#include <stdlib.h>
+#include <string.h>
+#include "recstab/scheme.h"
+
+/* A value during evaluation: (c[0] + sum_u c[1+u] lambda^low x_u) / den.
+ * c[0] is the part without unknowns; den is in the parameters only. */
+typedef struct {
+    slong ns;                /* 1 + number of unknowns */
+    fmpq_mpoly_struct *c;
+    slong low;
+    fmpq_mpoly_t den;
+} lin_t;
+
+typedef struct {
+    const rs_scheme_struct *s;
+    const rs_case_struct *c;
+    int allow_lambda;        /* char / expect mode */
+    int *visiting;           /* per let: cycle detection */
+    rs_error_struct *err;
+    /* non-zero assumptions collected (points into the scheme being built) */
+    rs_scheme_struct *collect;
+} ev_t;
+
+static void lin_init(lin_t *v, slong ns, const fmpq_mpoly_ctx_t ctx)
+{
+    slong i;
+    v->ns = ns;
+    v->c = flint_malloc(ns * sizeof(fmpq_mpoly_struct));
+    for (i = 0; i < ns; i++) fmpq_mpoly_init(v->c + i, ctx);
+    v->low = 0;
+    fmpq_mpoly_init(v->den, ctx);
+    fmpq_mpoly_one(v->den, ctx);
+}
+
+static void lin_clear(lin_t *v, const fmpq_mpoly_ctx_t ctx)
+{
+    slong i;
+    for (i = 0; i < v->ns; i++) fmpq_mpoly_clear(v->c + i, ctx);
+    flint_free(v->c);
+    fmpq_mpoly_clear(v->den, ctx);
+}
+
+static int lin_has_unknowns(const lin_t *v, const fmpq_mpoly_ctx_t ctx)
+{
+    slong i;
+    for (i = 1; i < v->ns; i++)
+        if (!fmpq_mpoly_is_zero(v->c + i, ctx)) return 1;
+    return 0;
+}
+
+static int err_at(ev_t *x, const rs_expr_t *e, int code, const char *fmt, const char *a)
+{
+    return rs_error_set_at(x->err, code, x->c->path, e->line, e->col, fmt, a);
+}
+
+static void mul_lambda_pow(fmpq_mpoly_t p, slong k, const rs_scheme_struct *s)
+{
+    fmpq_mpoly_t g;
+    if (k == 0 || fmpq_mpoly_is_zero(p, s->ctx)) return;
+    fmpq_mpoly_init(g, s->ctx);
+    fmpq_mpoly_gen(g, s->lambda_var, s->ctx);
+    fmpq_mpoly_pow_ui(g, g, (ulong) k, s->ctx);
+    fmpq_mpoly_mul(p, p, g, s->ctx);
+    fmpq_mpoly_clear(g, s->ctx);
+}
+
+/* bring both to the same low (the smaller one) */
+static void align_low(lin_t *a, lin_t *b, const rs_scheme_struct *s)
+{
+    slong i;
+    if (a->low > b->low) { lin_t *t = a; a = b; b = t; }
+    /* now a->low <= b->low: raise b's unknown slots */
+    if (b->low != a->low) {
+        for (i = 1; i < b->ns; i++) mul_lambda_pow(b->c + i, b->low - a->low, s);
+        b->low = a->low;
+    }
+}
+
+/* r = a +- b (r may not alias) */
+static void lin_addsub(lin_t *r, lin_t *a, lin_t *b, int sub, const rs_scheme_struct *s)
+{
+    slong i;
+    const fmpq_mpoly_ctx_struct *ctx = s->ctx;
+    int a_unk = lin_has_unknowns(a, ctx), b_unk = lin_has_unknowns(b, ctx);
+    if (a_unk && b_unk) align_low(a, b, s);
+    r->low = a_unk ? a->low : b->low;
+    if (fmpq_mpoly_equal(a->den, b->den, ctx)) {
+        for (i = 0; i < r->ns; i++) {
+            if (sub) fmpq_mpoly_sub(r->c + i, a->c + i, b->c + i, ctx);
+            else fmpq_mpoly_add(r->c + i, a->c + i, b->c + i, ctx);
+        }
+        fmpq_mpoly_set(r->den, a->den, ctx);
+    } else {
+        fmpq_mpoly_t g, fa, fb, t;
+        fmpq_mpoly_init(g, ctx); fmpq_mpoly_init(fa, ctx); fmpq_mpoly_init(fb, ctx);
+        fmpq_mpoly_init(t, ctx);
+        if (!fmpq_mpoly_gcd(g, a->den, b->den, ctx) || fmpq_mpoly_is_zero(g, ctx))
+            fmpq_mpoly_one(g, ctx);
+        fmpq_mpoly_divides(fa, b->den, g, ctx);   /* multiplier for a */
+        fmpq_mpoly_divides(fb, a->den, g, ctx);   /* multiplier for b */
+        for (i = 0; i < r->ns; i++) {
+            fmpq_mpoly_mul(t, a->c + i, fa, ctx);
+            fmpq_mpoly_mul(r->c + i, b->c + i, fb, ctx);
+            if (sub) fmpq_mpoly_sub(r->c + i, t, r->c + i, ctx);
+            else fmpq_mpoly_add(r->c + i, t, r->c + i, ctx);
+        }
+        fmpq_mpoly_mul(r->den, a->den, fa, ctx);
+        fmpq_mpoly_clear(g, ctx); fmpq_mpoly_clear(fa, ctx); fmpq_mpoly_clear(fb, ctx);
+        fmpq_mpoly_clear(t, ctx);
+    }
+}
+
+static int degree_ok(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t p)
+{
+    slong v;
+    for (v = 0; v < x->s->nvars; v++) {
+        slong d = fmpq_mpoly_degree_si(p, v, x->s->ctx);
+        if (d > RS_SCHEME_MAX_DEGREE) {
+            char msg[128];
+            snprintf(msg, sizeof msg, "%ld in %s", (long) d, x->s->vars[v]);
+            return err_at(x, e, RS_ERR_LIMIT,
+                          "degree limit exceeded (%s; limit 4096 per variable)", msg);
+        }
+    }
+    return RS_OK;
+}
+
+static void record_nonzero(ev_t *x, const fmpq_mpoly_t d)
+{
+    rs_scheme_struct *s = x->collect;
+    slong i;
+    char *str, *txt;
+    if (s == NULL || fmpq_mpoly_is_fmpq(d, s->ctx))
+        return;
+    for (i = 0; i < s->nnonzero; i++)
+        if (fmpq_mpoly_equal(s->nonzero + i, d, s->ctx)) return;
+    s->nonzero = flint_realloc(s->nonzero, (s->nnonzero + 1) * sizeof(fmpq_mpoly_struct));
+    s->nonzero_text = flint_realloc(s->nonzero_text, (s->nnonzero + 1) * sizeof(char *));
+    fmpq_mpoly_init(s->nonzero + s->nnonzero, s->ctx);
+    fmpq_mpoly_set(s->nonzero + s->nnonzero, d, s->ctx);
+    str = fmpq_mpoly_get_str_pretty(d, (const char **) s->vars, s->ctx);
+    txt = flint_malloc(strlen(str) + 8);
+    sprintf(txt, "%s != 0", str);
+    flint_free(str);
+    s->nonzero_text[s->nnonzero] = txt;
+    s->nnonzero++;
+}
+
+static int eval(lin_t *out, const rs_expr_t *e, ev_t *x);
+
+static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
+{
+    const rs_scheme_struct *s = x->s;
+    slong k;
+    if ((k = rs_case_param_index(x->c, e->name)) >= 0) {
+        if (e->shifted)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "shift on the parameter '%s': parameters are constant in n (only unknowns take [n+K])", e->name);
+        fmpq_mpoly_gen(out->c + 0, k, s->ctx);
+        return RS_OK;
+    }
+    if ((k = rs_case_unknown_index(x->c, e->name)) >= 0) {
+        if (x->allow_lambda)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "the unknown '%s' cannot appear here (only parameters and lambda)", e->name);
+        if (!e->shifted)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "expected a shift after the unknown '%s', as in %s[n] or %s[n+1]", e->name);
+        fmpq_mpoly_one(out->c + 1 + k, s->ctx);
+        out->low = e->shift;
+        return RS_OK;
+    }
+    if ((k = rs_case_let_index(x->c, e->name)) >= 0) {
+        const rs_let_t *l = &x->c->lets[k];
+        int r;
+        if (l->shifted && !e->shifted)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "'%s' is a derived sequence: expected a shift, as in %s[n+1]", e->name);
+        if (!l->shifted && e->shifted)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "shift on '%s', which is a named expression (let NAME = ...), not a sequence", e->name);
+        if (x->visiting[k])
+            return err_at(x, e, RS_ERR_INPUT, "'%s' is defined in terms of itself", e->name);
+        x->visiting[k] = 1;
+        r = eval(out, l->e, x);
+        x->visiting[k] = 0;
+        if (r != RS_OK) return r;
+        if (l->shifted && lin_has_unknowns(out, s->ctx))
+            out->low += e->shift - l->shift;
+        return RS_OK;
+    }
+    if (strcmp(e->name, "lambda") == 0) {
+        if (!x->allow_lambda)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "'%s' is reserved: it appears only in char and expect lines (write x[n+1] for a shift)", e->name);
+        if (e->shifted)
+            return err_at(x, e, RS_ERR_INPUT, "shift on '%s'", e->name);
+        fmpq_mpoly_gen(out->c + 0, s->lambda_var, s->ctx);
+        return RS_OK;
+    }
+    if (rs_name_is_reserved(e->name))
+        return err_at(x, e, RS_ERR_INPUT, "'%s' is reserved and has no value here", e->name);
+    return err_at(x, e, RS_ERR_INPUT,
+                  "unknown name '%s' (expected a declared param, unknown or let)", e->name);
+}
+
+static int const_integer(slong *k, const lin_t *v, const rs_expr_t *e, ev_t *x)
+{
+    fmpq_t q;
+    const fmpq_mpoly_ctx_struct *ctx = x->s->ctx;
+    if (lin_has_unknowns(v, ctx) || !fmpq_mpoly_is_fmpq(v->c + 0, ctx) || !fmpq_mpoly_is_fmpq(v->den, ctx))
+        return err_at(x, e, RS_ERR_INPUT, "expected a constant integer power, found %s",
+                      "an expression with names");
+    fmpq_init(q);
+    if (!fmpq_mpoly_is_zero(v->c + 0, ctx)) {
+        fmpq_t d;
+        fmpq_init(d);
+        fmpq_mpoly_get_fmpq(q, v->c + 0, ctx);
+        fmpq_mpoly_get_fmpq(d, v->den, ctx);
+        fmpq_div(q, q, d);
+        fmpq_clear(d);
+    }
+    if (!fmpz_is_one(fmpq_denref(q))) {
+        fmpq_clear(q);
+        return err_at(x, e, RS_ERR_INPUT, "expected an integer power, found %s", "a fraction");
+    }
+    if (fmpz_bits(fmpq_numref(q)) > 20 || fmpz_get_si(fmpq_numref(q)) > RS_EXPR_MAX_POW
+        || fmpz_get_si(fmpq_numref(q)) < -RS_EXPR_MAX_POW) {
+        fmpq_clear(q);
+        return err_at(x, e, RS_ERR_LIMIT, "power too large (limit |k| <= %s)", "100000");
+    }
+    *k = fmpz_get_si(fmpq_numref(q));
+    fmpq_clear(q);
+    return RS_OK;
+}
+
+/* out = a / b with b free of unknowns (and of lambda). */
+static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
+{
+    const rs_scheme_struct *s = x->s;
+    slong i;
+    if (lin_has_unknowns(b, s->ctx))
+        return err_at(x, e, RS_ERR_INPUT, "division by an expression with unknowns%s (the scheme must be linear)", "");
+    if (fmpq_mpoly_degree_si(b->c + 0, s->lambda_var, s->ctx) > 0)
+        return err_at(x, e, RS_ERR_INPUT, "division by an expression in lambda%s; multiply through instead", "");
+    if (fmpq_mpoly_is_zero(b->c + 0, s->ctx))
+        return err_at(x, e, RS_ERR_INPUT, "division by zero%s", "");
+    /* (a/da) / (b0/db) = (a*db) / (da*b0) */
+    for (i = 0; i < out->ns; i++)
+        fmpq_mpoly_mul(out->c + i, a->c + i, b->den, s->ctx);
+    out->low = a->low;
+    fmpq_mpoly_mul(out->den, a->den, b->c + 0, s->ctx);
+    record_nonzero(x, b->c + 0);
+    return RS_OK;
+}
+
+static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
+{
+    const rs_scheme_struct *s = x->s;
+    const fmpq_mpoly_ctx_struct *ctx = s->ctx;
+    lin_t a, b;
+    int r = RS_OK;
+    slong i;
+    switch (e->kind) {
+    case RS_EXPR_NUM:
+        fmpq_mpoly_set_fmpq(out->c + 0, e->num, ctx);
+        return RS_OK;
+    case RS_EXPR_NAME:
+        return eval_name(out, e, x);
+    default:
+        break;
+    }
+    lin_init(&a, out->ns, ctx);
+    lin_init(&b, out->ns, ctx);
+    r = eval(&a, e->a, x);
+    if (r == RS_OK && e->b != NULL)
+        r = eval(&b, e->b, x);
+    if (r != RS_OK) goto done;
+    switch (e->kind) {
+    case RS_EXPR_NEG:
+        for (i = 0; i < out->ns; i++) fmpq_mpoly_neg(out->c + i, a.c + i, ctx);
+        fmpq_mpoly_set(out->den, a.den, ctx);
+        out->low = a.low;
+        break;
+    case RS_EXPR_ADD:
+    case RS_EXPR_SUB:
+        lin_addsub(out, &a, &b, e->kind == RS_EXPR_SUB, s);
+        break;
+    case RS_EXPR_MUL: {
+        int au = lin_has_unknowns(&a, ctx), bu = lin_has_unknowns(&b, ctx);
+        lin_t *u, *k;
+        if (au && bu) {
+            r = err_at(x, e, RS_ERR_INPUT, "product of two unknowns%s: the scheme must be linear", "");
+            break;
+        }
+        u = au ? &a : &b;   /* the factor that may carry unknowns */
+        k = au ? &b : &a;   /* the factor without unknowns */
+        for (i = 0; i < out->ns; i++)
+            fmpq_mpoly_mul(out->c + i, u->c + i, k->c + 0, ctx);
+        fmpq_mpoly_mul(out->den, a.den, b.den, ctx);
+        out->low = u->low;
+        r = degree_ok(x, e, out->c + 0);
+        break;
+    }
+    case RS_EXPR_DIV:
+        r = lin_div(out, &a, &b, e, x);
+        break;
+    case RS_EXPR_POW: {
+        slong k = 0;
+        r = const_integer(&k, &b, e->b, x);
+        if (r != RS_OK) break;
+        if (lin_has_unknowns(&a, ctx)) {
+            if (k != 1) {
+                r = err_at(x, e, RS_ERR_INPUT, "power of an unknown%s: the scheme must be linear", "");
+                break;
+            }
+            for (i = 0; i < out->ns; i++) fmpq_mpoly_set(out->c + i, a.c + i, ctx);
+            fmpq_mpoly_set(out->den, a.den, ctx);
+            out->low = a.low;
+            break;
+        }
+        {
+            slong v, kk = k < 0 ? -k : k;
+            for (v = 0; v < s->nvars; v++) {
+                slong d = fmpq_mpoly_degree_si(a.c + 0, v, ctx);
+                slong dd = fmpq_mpoly_degree_si(a.den, v, ctx);
+                if (dd > d) d = dd;
+                if (d > 0 && kk > RS_SCHEME_MAX_DEGREE / d) {
+                    r = err_at(x, e, RS_ERR_LIMIT,
+                               "degree limit exceeded: this power has degree over 4096 in '%s'", s->vars[v]);
+                    break;
+                }
+            }
+            if (r != RS_OK) break;
+            if (k < 0 && fmpq_mpoly_is_zero(a.c + 0, ctx)) {
+                r = err_at(x, e, RS_ERR_INPUT, "division by zero (0 to a negative power)%s", "");
+                break;
+            }
+            if (k >= 0) {
+                fmpq_mpoly_pow_ui(out->c + 0, a.c + 0, (ulong) k, ctx);
+                fmpq_mpoly_pow_ui(out->den, a.den, (ulong) k, ctx);
+            } else {
+                if (fmpq_mpoly_degree_si(a.c + 0, s->lambda_var, ctx) > 0) {
+                    r = err_at(x, e, RS_ERR_INPUT, "negative power of an expression in lambda%s", "");
+                    break;
+                }
+                fmpq_mpoly_pow_ui(out->c + 0, a.den, (ulong) kk, ctx);
+                fmpq_mpoly_pow_ui(out->den, a.c + 0, (ulong) kk, ctx);
+                record_nonzero(x, a.c + 0);
+            }
+        }
+        break;
+    }
+    default:
+        r = rs_error_set(x->err, RS_ERR_INTERNAL, "bad expression node");
+    }
+done:
+    lin_clear(&a, ctx);
+    lin_clear(&b, ctx);
+    return r;
+}
+
+void rs_scheme_init(rs_scheme_t s)
+{
+    memset(s, 0, sizeof(rs_scheme_struct));
+}
+
+void rs_scheme_clear(rs_scheme_t s)
+{
+    slong i;
+    if (s->vars == NULL)
+        return;
+    for (i = 0; i < s->n * s->n; i++) fmpq_mpoly_clear(s->M + i, s->ctx);
+    flint_free(s->M);
+    flint_free(s->row_shift);
+    fmpq_mpoly_clear(s->charpoly, s->ctx);
+    for (i = 0; i < s->nnonzero; i++) {
+        fmpq_mpoly_clear(s->nonzero + i, s->ctx);
+        flint_free(s->nonzero_text[i]);
+    }
+    flint_free(s->nonzero);
+    flint_free(s->nonzero_text);
+    fmpq_mpoly_ctx_clear(s->ctx);
+    fmpz_mpoly_ctx_clear(s->zctx);
+    for (i = 0; i < s->nvars; i++) flint_free(s->vars[i]);
+    flint_free(s->vars);
+    memset(s, 0, sizeof(rs_scheme_struct));
+}
+
+static void setup_ctx(rs_scheme_t s, const rs_case_t c)
+{
+    slong i;
+    s->nvars = c->nparams + 1;
+    s->lambda_var = c->nparams;
+    s->vars = flint_malloc(s->nvars * sizeof(char *));
+    for (i = 0; i < c->nparams; i++) {
+        s->vars[i] = flint_malloc(strlen(c->params[i].name) + 1);
+        strcpy(s->vars[i], c->params[i].name);
+    }
+    s->vars[s->lambda_var] = flint_malloc(7);
+    strcpy(s->vars[s->lambda_var], "lambda");
+    fmpq_mpoly_ctx_init(s->ctx, s->nvars, ORD_LEX);
+    fmpz_mpoly_ctx_init(s->zctx, s->nvars, ORD_LEX);
+    fmpq_mpoly_init(s->charpoly, s->ctx);
+}
+
+/* lowest exponent of variable v in p (p != 0) */
+static slong min_degree(const fmpq_mpoly_t p, slong v, const fmpq_mpoly_ctx_t ctx)
+{
+    slong i, n = fmpq_mpoly_length(p, ctx), best = WORD_MAX;
+    slong *exp = flint_malloc(ctx->zctx->minfo->nvars * sizeof(slong));
+    for (i = 0; i < n; i++) {
+        fmpq_mpoly_get_term_exp_si(exp, p, i, ctx);
+        if (exp[v] < best) best = exp[v];
+    }
+    flint_free(exp);
+    return best;
+}
+
+static void ev_setup(ev_t *x, const rs_scheme_struct *s, const rs_case_struct *c, int allow_lambda,
+                     rs_scheme_struct *collect, rs_error_struct *err)
+{
+    x->s = s;
+    x->c = c;
+    x->allow_lambda = allow_lambda;
+    x->visiting = flint_calloc(c->nlets + 1, sizeof(int));
+    x->err = err;
+    x->collect = collect;
+}
+
+int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
+                        const rs_case_t c, const rs_expr_t *e, int allow_lambda, rs_error_t err)
+{
+    ev_t x;
+    lin_t v;
+    int r;
+    ev_setup(&x, s, c, allow_lambda, NULL, err);
+    lin_init(&v, c->nunknowns + 1, s->ctx);
+    r = eval(&v, e, &x);
+    if (r == RS_OK && lin_has_unknowns(&v, s->ctx))
+        r = rs_error_set_at(err, RS_ERR_INPUT, c->path, e->line, e->col,
+                            "expected an expression without unknowns");
+    if (r == RS_OK) {
+        fmpq_mpoly_set(num, v.c + 0, s->ctx);
+        fmpq_mpoly_set(den, v.den, s->ctx);
+    }
+    lin_clear(&v, s->ctx);
+    flint_free(x.visiting);
+    return r;
+}
+
+static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
+{
+    ev_t x;
+    lin_t v;
+    int r;
+    if (c->neqs > 0 || c->nunknowns > 0)
+        return rs_error_set_at(err, RS_ERR_INPUT, c->path, c->charloc.line, c->charloc.col,
+                               "a case gives either `char` or `unknown`/`eq` lines, not both");
+    ev_setup(&x, s, c, 1, s, err);
+    lin_init(&v, 1, s->ctx);
+    r = eval(&v, c->charexpr, &x);
+    if (r == RS_OK) {
+        record_nonzero(&x, v.den);
+        fmpq_mpoly_set(s->charpoly, v.c + 0, s->ctx);
+        if (fmpq_mpoly_is_zero(s->charpoly, s->ctx))
+            r = rs_error_set_at(err, RS_ERR_MATH, c->path, c->charloc.line, c->charloc.col,
+                                "the characteristic polynomial is identically zero");
+        else if (fmpq_mpoly_degree_si(s->charpoly, s->lambda_var, s->ctx) < 1)
+            r = rs_error_set_at(err, RS_ERR_INPUT, c->path, c->charloc.line, c->charloc.col,
+                                "expected a polynomial in lambda, found one without lambda");
+    }
+    s->from_char = 1;
+    lin_clear(&v, s->ctx);
+    flint_free(x.visiting);
+    return r;
+}
+
+int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
+{
+    ev_t x;
+    slong i, j, n = c->nunknowns;
+    int r = RS_OK;
+    rs_scheme_clear(s);
+    setup_ctx(s, c);
+    if (c->charexpr != NULL)
+        return build_char(s, c, err);
+    if (n == 0)
+        return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
+                               "expected `unknown` and `eq` lines (or a `char` line), found none");
+    if (n > RS_SCHEME_MAX_UNKNOWNS)
+        return rs_error_set_at(err, RS_ERR_LIMIT, c->path, c->unknown_loc.line, c->unknown_loc.col,
+                               "too many unknowns (%ld; limit %d)", (long) n, RS_SCHEME_MAX_UNKNOWNS);
+    if (c->neqs != n) {
+        const rs_loc_t *l = c->neqs > n ? &c->eqs[n].loc : &c->unknown_loc;
+        return rs_error_set_at(err, RS_ERR_INPUT, l->file, l->line, l->col,
+                               "expected as many equations as unknowns (%ld unknowns), found %ld equations",
+                               (long) n, (long) c->neqs);
+    }
+    s->n = n;
+    s->M = flint_malloc(n * n * sizeof(fmpq_mpoly_struct));
+    for (i = 0; i < n * n; i++) fmpq_mpoly_init(s->M + i, s->ctx);
+    s->row_shift = flint_calloc(n, sizeof(slong));
+    ev_setup(&x, s, c, 0, s, err);
+    for (i = 0; i < n && r == RS_OK; i++) {
+        lin_t lhs, rhs, v;
+        const rs_eq_t *q = &c->eqs[i];
+        slong rowmin = WORD_MAX;
+        lin_init(&lhs, n + 1, s->ctx);
+        lin_init(&rhs, n + 1, s->ctx);
+        lin_init(&v, n + 1, s->ctx);
+        r = eval(&lhs, q->lhs, &x);
+        if (r == RS_OK) r = eval(&rhs, q->rhs, &x);
+        if (r == RS_OK) lin_addsub(&v, &lhs, &rhs, 1, s);
+        if (r == RS_OK && !lin_has_unknowns(&v, s->ctx))
+            r = rs_error_set_at(err, RS_ERR_INPUT, q->loc.file, q->loc.line, q->loc.col,
+                                "expected an equation involving an unknown, found one without any "
+                                "(after simplification)");
+        if (r == RS_OK && !fmpq_mpoly_is_zero(v.c + 0, s->ctx))
+            r = rs_error_set_at(err, RS_ERR_INPUT, q->loc.file, q->loc.line, q->loc.col,
+                                "expected a homogeneous equation, found a term without unknowns "
+                                "(stability concerns the homogeneous recurrence: drop forcing terms)");
+        if (r == RS_OK) {
+            record_nonzero(&x, v.den);
+            for (j = 0; j < n; j++)
+                if (!fmpq_mpoly_is_zero(v.c + 1 + j, s->ctx)) {
+                    slong m = v.low + min_degree(v.c + 1 + j, s->lambda_var, s->ctx);
+                    if (m < rowmin) rowmin = m;
+                }
+            s->row_shift[i] = rowmin;
+            for (j = 0; j < n; j++) {
+                fmpq_mpoly_struct *M = s->M + i * n + j;
+                slong d = v.low - rowmin;
+                fmpq_mpoly_set(M, v.c + 1 + j, s->ctx);
+                if (fmpq_mpoly_is_zero(M, s->ctx)) continue;
+                if (d >= 0) {
+                    mul_lambda_pow(M, d, s);
+                } else {
+                    fmpq_mpoly_t g;
+                    fmpq_mpoly_init(g, s->ctx);
+                    fmpq_mpoly_gen(g, s->lambda_var, s->ctx);
+                    fmpq_mpoly_pow_ui(g, g, (ulong) (-d), s->ctx);
+                    fmpq_mpoly_divides(M, M, g, s->ctx);
+                    fmpq_mpoly_clear(g, s->ctx);
+                }
+                if (fmpq_mpoly_degree_si(M, s->lambda_var, s->ctx) > RS_SCHEME_MAX_DEGREE)
+                    r = rs_error_set_at(err, RS_ERR_LIMIT, q->loc.file, q->loc.line, q->loc.col,
+                                        "degree limit exceeded: shifts span more than %d steps",
+                                        RS_SCHEME_MAX_DEGREE);
+            }
+        }
+        lin_clear(&lhs, s->ctx);
+        lin_clear(&rhs, s->ctx);
+        lin_clear(&v, s->ctx);
+    }
+    flint_free(x.visiting);
+    return r;
+}
+
+void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value)
+{
+    slong i;
+    for (i = 0; i < s->n * s->n; i++)
+        fmpq_mpoly_evaluate_one_fmpq(s->M + i, s->M + i, var, value, s->ctx);
+    if (s->from_char)
+        fmpq_mpoly_evaluate_one_fmpq(s->charpoly, s->charpoly, var, value, s->ctx);
+}
+
+char *rs_scheme_poly_str(const fmpq_mpoly_t p, const rs_scheme_t s)
+{
+    return fmpq_mpoly_get_str_pretty(p, (const char **) s->vars, s->ctx);
+}
+
+char *rs_scheme_zpoly_str(const fmpz_mpoly_t p, const rs_scheme_t s)
+{
+    return fmpz_mpoly_get_str_pretty(p, (const char **) s->vars, s->zctx);
+}
