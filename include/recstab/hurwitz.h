@@ -2,9 +2,14 @@
  * bilinear polynomial q(z; params), exactly, factored over Q.
  *
  * With q = a_n z^n + ... + a_0 and a_n > 0, all roots of q have Re z < 0 iff
- * (Lienard-Chipart) a_0, a_1, ..., a_n > 0 (it suffices: a_n, a_{n-2}, ...) and
- * D_{n-1}, D_{n-3}, ... > 0.  The minors D_1..D_n are the Bareiss pivots of
- * the Hurwitz matrix, computed fraction-free over Z[params].  Each condition
+ * (Lienard-Chipart) a_0, a_2, a_4, ... > 0 (constant term and every other
+ * coefficient from it) and D_{n-1}, D_{n-3}, ... > 0.  The Hurwitz matrix has
+ * entry a_{n-(2j-i)} in row i, column j (1-based; 0 outside 0..n), so
+ * D_1 = a_{n-1}, D_2 = a_{n-1} a_{n-2} - a_n a_{n-3}.  The minors D_1..D_n
+ * are the Bareiss pivots of the Hurwitz matrix, computed fraction-free over
+ * Z[params] by the equivalent fraction-free Routh scheme; past an
+ * identically-zero pivot each further D_k is a determinant computed by
+ * Bareiss with row pivoting.  Each condition
  * is factored (fmpz_mpoly_factor); factors that are positive under the
  * case's sign assumptions are dropped and listed as such. */
 #ifndef RECSTAB_HURWITZ_H
@@ -32,10 +37,17 @@ typedef struct {
     fmpz_mpoly_t poly;             /* the condition polynomial */
     char *origin;                  /* e.g. "a_0", "D_3" (malloc'd) */
     fmpz_mpoly_factor_t factors;   /* factorisation over Z */
-    int *dropped;                  /* per factor: 1 if positive under assumptions */
-    int *even;                     /* per factor: 1 if its exponent is even */
-    fmpz_mpoly_t reduced;          /* product of the kept factors (sign fixed) */
-    int trivially_true;            /* every factor positive: condition always holds */
+    int *dropped;                  /* per factor: 1 if positive under assumptions
+                                      (or provably negative: its sign is then
+                                      folded into reduced) */
+    int *even;                     /* per factor: 1 if its exponent is even; a
+                                      kept even factor must only be non-zero */
+    fmpz_mpoly_t reduced;          /* +-(product of the kept odd-exponent factors,
+                                      each to the first power): where the kept
+                                      even factors are non-zero, poly > 0 iff
+                                      reduced > 0; +-1 or 0 when none is kept */
+    int trivially_true;            /* every factor dropped, sign positive:
+                                      condition always holds */
     int trivially_false;           /* reduced is a non-positive constant */
 } rs_hurwitz_cond_struct;
 
@@ -44,7 +56,11 @@ typedef struct {
     fmpz_mpoly_struct *coeffs;     /* a_0 .. a_n (length n+1), params only */
     fmpz_mpoly_struct *minors;     /* D_1 .. D_n stored at [0 .. n-1] */
     slong ncond;
-    rs_hurwitz_cond_struct *cond;  /* Lienard-Chipart conditions, in order */
+    rs_hurwitz_cond_struct *cond;  /* Lienard-Chipart conditions, in order:
+                                      a_n, a_0, a_2, ..., D_{n-1}, D_{n-3}, ... */
+    int negated;                   /* 1 if q was negated (a_n provably < 0
+                                      wherever non-zero); coeffs, minors and
+                                      conditions are those of -q then */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 
@@ -53,18 +69,24 @@ void rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx);
 
 /* q: polynomial in ctx whose variable `zvar` is z; the other variables are
  * parameters with sign information sign[v] (length ctx nvars; entry for zvar
- * ignored).  If the leading coefficient a_n is not positive under the
- * assumptions, q is negated when a_n is provably negative; otherwise the
- * condition a_n > 0 is kept as a condition.  Returns RS_OK or an error. */
+ * ignored; sign may be NULL: all unknown).  If the leading coefficient a_n
+ * is provably negative wherever it is non-zero, q is negated (h->negated);
+ * in any case "a_n > 0" is the first condition (trivially true when a_n is
+ * provably positive).  h must be initialised; previous contents are cleared
+ * (same ctx).  Errors: RS_ERR_INPUT (zvar out of range, q = 0, degree 0 in
+ * z), RS_ERR_LIMIT (degree > 256, factoring failed); h is then empty.
+ * Returns RS_OK or the error code. */
 int rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
                        const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
                        rs_error_t err);
 
 /* 1 if poly is provably > 0 for all variable values allowed by sign[]
  * (sufficient test: every monomial's coefficient positive, every variable in
- * it non-negative, and some term provably positive), -1 if provably < 0 (same for -poly),
- * 0 otherwise.  Even powers of arbitrary-sign factors are also handled at
- * the factor level in rs_hurwitz_compute. */
+ * it non-negative or of unknown sign in an even power, and some term
+ * provably positive: all its variables > 0), -1 if provably < 0 (same for
+ * -poly), 0 otherwise (also for poly = 0; sign may be NULL).  Even powers
+ * of arbitrary-sign factors are also handled at the factor level in
+ * rs_hurwitz_compute. */
 int rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                     const fmpz_mpoly_ctx_t ctx);
 

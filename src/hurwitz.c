@@ -1,0 +1,570 @@
+/* hurwitz.c -- Hurwitz minors and Lienard-Chipart conditions, exactly.
+ * See include/recstab/hurwitz.h.
+ *
+ * Conventions.  q = a_n z^n + ... + a_0.  The Hurwitz matrix H (n x n) has,
+ * in row i and column j (1-based), the entry a_{n - (2j - i)} (zero outside
+ * 0..n); so row 1 is a_{n-1}, a_{n-3}, ... and row 2 is a_n, a_{n-2}, ...
+ * D_k is the leading principal k x k minor of H: D_1 = a_{n-1},
+ * D_2 = a_{n-1} a_{n-2} - a_n a_{n-3}, ..., D_n = a_0 D_{n-1}.
+ *
+ * Lienard-Chipart (1914; Gantmacher, Theory of Matrices II, ch. XV sec. 13,
+ * whose polynomial is written with the constant term last): with a_n > 0, all
+ * roots have Re z < 0 iff
+ *     a_0 > 0, a_2 > 0, a_4 > 0, ...     (constant term and every other one)
+ *     D_{n-1} > 0, D_{n-3} > 0, ...      (down to D_1 or D_2; D_0 = 1)
+ * (Any parity of minors may be paired with this set of coefficients; we use
+ * the one that contains D_{n-1}.)  The conditions are produced in the order
+ * a_n, a_0, a_2, ..., D_{n-1}, D_{n-3}, ...; a_n is listed once even when it
+ * also belongs to the even-index coefficient list.
+ *
+ * Sign of a_n.  a_n is factored; if it is provably negative wherever it is
+ * non-zero (every odd-exponent factor of provable sign, product negative),
+ * q is negated (h->negated = 1) and the condition "a_n > 0" then only asks
+ * for the even-exponent factors to be non-zero.  Otherwise a_n > 0 stays a
+ * condition.
+ *
+ * Factor handling.  Each condition poly > 0 is factored as
+ * c * prod f_i^{e_i}.  A factor f_i of provable sign s_i (rs_hurwitz_sign)
+ * is dropped (dropped[i] = 1) and contributes s_i^{e_i} to the sign; by the
+ * normalisation of FLINT's factors (positive leading coefficient) s_i is in
+ * practice always +1.  A kept factor with even exponent (even[i] = 1) is >= 0
+ * and only has to be non-zero.  A kept factor with odd exponent enters
+ * `reduced` to the first power.  reduced = sgn(c) * prod s_i^{e_i} *
+ * prod_{kept, odd} f_i, so that, wherever the kept even factors are
+ * non-zero, poly > 0 iff reduced > 0. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "recstab/hurwitz.h"
+
+/* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
+ * not be computable anyway. */
+#define RS_HURWITZ_MAX_DEGREE 256
+
+/* ------------------------------------------------------------------ */
+/* sign test                                                           */
+
+static rs_sign_t
+_sign_of_var(const rs_sign_t *sign, slong v)
+{
+    if (sign == NULL)
+        return RS_SIGN_UNKNOWN;
+    return sign[v];
+}
+
+/* Classify one term of poly with its coefficient sign replaced by +1:
+ * returns 2 if the monomial is provably > 0, 1 if provably >= 0, 0 if
+ * neither.  A variable of unknown sign is harmless in an even power. */
+static int
+_monomial_class(const fmpz_mpoly_t poly, slong i, const rs_sign_t *sign,
+                const fmpz_mpoly_ctx_t ctx)
+{
+    slong v, nvars = fmpz_mpoly_ctx_nvars(ctx);
+    int cls = 2;
+
+    for (v = 0; v < nvars; v++) {
+        ulong e = fmpz_mpoly_get_term_var_exp_ui(poly, i, v, ctx);
+        rs_sign_t s;
+        if (e == 0)
+            continue;
+        s = _sign_of_var(sign, v);
+        if (s == RS_SIGN_POSITIVE)
+            continue;
+        if (s == RS_SIGN_NONNEGATIVE || (e % 2) == 0)
+            cls = 1;    /* >= 0, but may vanish */
+        else
+            return 0;   /* odd power of a variable of unknown sign */
+    }
+    return cls;
+}
+
+int
+rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, len = fmpz_mpoly_length(poly, ctx);
+    int csign = 0, strict = 0;
+
+    if (len == 0 || !fmpz_mpoly_degrees_fit_si(poly, ctx))
+        return 0;
+
+    for (i = 0; i < len; i++) {
+        int s = fmpz_sgn(fmpz_mpoly_term_coeff_ref((fmpz_mpoly_struct *) poly,
+                                                   i, ctx));
+        int cls;
+        if (i == 0)
+            csign = s;
+        else if (s != csign)
+            return 0;
+        cls = _monomial_class(poly, i, sign, ctx);
+        if (cls == 0)
+            return 0;
+        if (cls == 2)
+            strict = 1;
+    }
+    return strict ? csign : 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* init / clear                                                        */
+
+void
+rs_hurwitz_init(rs_hurwitz_t h)
+{
+    h->n = 0;
+    h->coeffs = NULL;
+    h->minors = NULL;
+    h->ncond = 0;
+    h->cond = NULL;
+    h->negated = 0;
+}
+
+static void
+_cond_clear(rs_hurwitz_cond_struct *c, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_clear(c->poly, ctx);
+    fmpz_mpoly_clear(c->reduced, ctx);
+    fmpz_mpoly_factor_clear(c->factors, ctx);
+    free(c->origin);
+    free(c->dropped);
+    free(c->even);
+}
+
+void
+rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+
+    if (h->coeffs != NULL) {
+        for (i = 0; i <= h->n; i++)
+            fmpz_mpoly_clear(h->coeffs + i, ctx);
+        flint_free(h->coeffs);
+    }
+    if (h->minors != NULL) {
+        for (i = 0; i < h->n; i++)
+            fmpz_mpoly_clear(h->minors + i, ctx);
+        flint_free(h->minors);
+    }
+    for (i = 0; i < h->ncond; i++)
+        _cond_clear(h->cond + i, ctx);
+    flint_free(h->cond);
+    rs_hurwitz_init(h);
+}
+
+/* ------------------------------------------------------------------ */
+/* determinants                                                        */
+
+/* Entry (i, j), 0-based, of the Hurwitz matrix: a_{n - (2(j+1) - (i+1))}. */
+static const fmpz_mpoly_struct *
+_hurwitz_entry(const fmpz_mpoly_struct *a, slong n, slong i, slong j)
+{
+    slong idx = n - (2 * (j + 1) - (i + 1));
+    if (idx < 0 || idx > n)
+        return NULL;
+    return a + idx;
+}
+
+static fmpz_mpoly_struct *
+_mat_init(slong m, const fmpz_mpoly_struct *a, slong n,
+          const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_struct *M = flint_malloc(m * m * sizeof(fmpz_mpoly_struct));
+    slong i, j;
+
+    for (i = 0; i < m; i++)
+        for (j = 0; j < m; j++) {
+            const fmpz_mpoly_struct *e = _hurwitz_entry(a, n, i, j);
+            fmpz_mpoly_init(M + i * m + j, ctx);
+            if (e != NULL)
+                fmpz_mpoly_set(M + i * m + j, e, ctx);
+        }
+    return M;
+}
+
+static void
+_mat_clear(fmpz_mpoly_struct *M, slong m, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    for (i = 0; i < m * m; i++)
+        fmpz_mpoly_clear(M + i, ctx);
+    flint_free(M);
+}
+
+/* One Bareiss step on the m x m matrix M at pivot k with previous pivot
+ * prev (NULL for 1): M[i][j] = (M[i][j] M[k][k] - M[i][k] M[k][j]) / prev
+ * for i, j > k.  Returns 0 if an exact division fails (cannot happen for a
+ * correct elimination). */
+static int
+_bareiss_step(fmpz_mpoly_struct *M, slong m, slong k,
+              const fmpz_mpoly_struct *prev, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t t, u;
+    slong i, j;
+    int ok = 1;
+
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_init(u, ctx);
+    for (i = k + 1; i < m && ok; i++) {
+        for (j = k + 1; j < m && ok; j++) {
+            fmpz_mpoly_mul(t, M + i * m + j, M + k * m + k, ctx);
+            fmpz_mpoly_mul(u, M + i * m + k, M + k * m + j, ctx);
+            fmpz_mpoly_sub(t, t, u, ctx);
+            if (prev == NULL)
+                fmpz_mpoly_swap(M + i * m + j, t, ctx);
+            else
+                ok = fmpz_mpoly_divides(M + i * m + j, t, prev, ctx);
+        }
+        fmpz_mpoly_zero(M + i * m + k, ctx);
+    }
+    fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_clear(u, ctx);
+    return ok;
+}
+
+/* det of the leading m x m submatrix of the Hurwitz matrix, by Bareiss with
+ * row pivoting (rows exchanged only below the current pivot, which is the
+ * same as permuting the rows at the start; the sign is tracked).  The pivot
+ * chosen is the non-zero candidate with the fewest terms. */
+static int
+_leading_minor_pivoting(fmpz_mpoly_t det, const fmpz_mpoly_struct *a,
+                        slong n, slong m, const fmpz_mpoly_ctx_t ctx,
+                        rs_error_t err)
+{
+    fmpz_mpoly_struct *M = _mat_init(m, a, n, ctx);
+    slong i, j, k;
+    int neg = 0, ok = 1, zero = 0;
+
+    for (k = 0; k < m - 1 && ok && !zero; k++) {
+        slong best = -1;
+        for (i = k; i < m; i++) {
+            slong len = fmpz_mpoly_length(M + i * m + k, ctx);
+            if (len > 0 && (best < 0
+                    || len < fmpz_mpoly_length(M + best * m + k, ctx)))
+                best = i;
+        }
+        if (best < 0) {
+            zero = 1;
+            break;
+        }
+        if (best != k) {
+            for (j = 0; j < m; j++)
+                fmpz_mpoly_swap(M + k * m + j, M + best * m + j, ctx);
+            neg ^= 1;
+        }
+        ok = _bareiss_step(M, m, k, k == 0 ? NULL : M + (k - 1) * m + k - 1,
+                           ctx);
+    }
+
+    if (!ok) {
+        _mat_clear(M, m, ctx);
+        return rs_error_set(err, RS_ERR_INTERNAL,
+                            "hurwitz: inexact Bareiss division in D_%ld",
+                            (long) m);
+    }
+    if (zero)
+        fmpz_mpoly_zero(det, ctx);
+    else if (neg)
+        fmpz_mpoly_neg(det, M + (m - 1) * m + (m - 1), ctx);
+    else
+        fmpz_mpoly_set(det, M + (m - 1) * m + (m - 1), ctx);
+    _mat_clear(M, m, ctx);
+    return RS_OK;
+}
+
+/* Fraction-free Routh scheme (the Hurwitz-structured form of Bareiss's
+ * elimination).  Rows R_0 = (a_n, a_{n-2}, ...), R_1 = (a_{n-1}, a_{n-3},
+ * ...), and for m >= 2
+ *     R_m[j] = (R_{m-1}[0] R_{m-2}[j+1] - R_{m-2}[0] R_{m-1}[j+1]) / d_m,
+ * d_m = D_{m-3} for m >= 4, d_2 = d_3 = 1.  Then R_m[0] = D_m.  (R_m is the
+ * classical Routh row m scaled by D_{m-1}; its entries are bordered minors
+ * of H, so the division is exact as an identity between polynomials in
+ * independent a_i, and it stays exact after specialisation as long as the
+ * divisor is not identically zero.)  Computes D_1..D_m into D and returns m:
+ * it stops before a division by an identically-zero D_{m-3}, or (which
+ * should not happen) at an inexact division. */
+static slong
+_hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
+                      slong n, const fmpz_mpoly_ctx_t ctx)
+{
+    slong len = n / 2 + 2, m, j, done;
+    fmpz_mpoly_struct *R = flint_malloc(3 * len * sizeof(fmpz_mpoly_struct));
+    fmpz_mpoly_struct *r0 = R, *r1 = R + len, *r2 = R + 2 * len, *tmp;
+    fmpz_mpoly_t t, u;
+    int ok = 1;
+
+    for (j = 0; j < 3 * len; j++)
+        fmpz_mpoly_init(R + j, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_init(u, ctx);
+    for (j = 0; 2 * j <= n; j++)
+        fmpz_mpoly_set(r0 + j, a + n - 2 * j, ctx);
+    for (j = 0; 2 * j + 1 <= n; j++)
+        fmpz_mpoly_set(r1 + j, a + n - 2 * j - 1, ctx);
+    fmpz_mpoly_set(D + 0, r1 + 0, ctx);
+    done = 1;
+
+    for (m = 2; m <= n; m++) {
+        /* r0 = R_{m-2}, r1 = R_{m-1}; row m into r2 */
+        const fmpz_mpoly_struct *d = (m >= 4) ? D + (m - 4) : NULL;
+        if (d != NULL && fmpz_mpoly_is_zero(d, ctx))
+            break;
+        for (j = 0; j + 1 < len && ok; j++) {
+            fmpz_mpoly_mul(t, r1 + 0, r0 + j + 1, ctx);
+            fmpz_mpoly_mul(u, r0 + 0, r1 + j + 1, ctx);
+            fmpz_mpoly_sub(t, t, u, ctx);
+            if (d == NULL)
+                fmpz_mpoly_swap(r2 + j, t, ctx);
+            else
+                ok = fmpz_mpoly_divides(r2 + j, t, d, ctx);
+        }
+        if (!ok)
+            break;
+        fmpz_mpoly_zero(r2 + len - 1, ctx);
+        fmpz_mpoly_set(D + m - 1, r2 + 0, ctx);
+        done = m;
+        tmp = r0; r0 = r1; r1 = r2; r2 = tmp;
+    }
+
+    fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_clear(u, ctx);
+    for (j = 0; j < 3 * len; j++)
+        fmpz_mpoly_clear(R + j, ctx);
+    flint_free(R);
+    return done;
+}
+
+/* All leading principal minors D_1..D_n into D[0..n-1]: the fraction-free
+ * Routh scheme as far as it goes, then every further D_k (k < n) as its own
+ * determinant with pivoting, and D_n = a_0 D_{n-1} (the last column of H is
+ * (0, ..., 0, a_0)). */
+static int
+_hurwitz_minors(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a, slong n,
+                const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong k = _hurwitz_minors_routh(D, a, n, ctx);
+
+    for (; k < n - 1; k++) {
+        int r = _leading_minor_pivoting(D + k, a, n, k + 1, ctx, err);
+        if (r != RS_OK)
+            return r;
+    }
+    if (k == n - 1 && n >= 2)
+        fmpz_mpoly_mul(D + n - 1, a + 0, D + n - 2, ctx);
+    return RS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* conditions                                                          */
+
+/* Sign of poly wherever its even-exponent factors of unknown sign are
+ * non-zero, read off a factorisation: +1/-1 if every odd-exponent factor has
+ * a provable sign, 0 otherwise (or if poly = 0). */
+static int
+_factored_sign(const fmpz_mpoly_factor_t f, const rs_sign_t *sign,
+               const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    int s = fmpz_sgn(f->constant);
+
+    for (i = 0; i < f->num && s != 0; i++) {
+        if (fmpz_is_even(f->exp + i))
+            continue;
+        s *= rs_hurwitz_sign(f->poly + i, sign, ctx);
+    }
+    return s;
+}
+
+static int
+_cond_set(rs_hurwitz_cond_struct *c, const fmpz_mpoly_t poly,
+          const char *origin, const rs_sign_t *sign,
+          const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong i, num, kept = 0, kept_odd = 0;
+    int s;
+
+    fmpz_mpoly_set(c->poly, poly, ctx);
+    c->origin = malloc(strlen(origin) + 1);
+    if (c->origin == NULL)
+        return rs_error_set(err, RS_ERR_LIMIT, "hurwitz: out of memory");
+    strcpy(c->origin, origin);
+
+    if (!fmpz_mpoly_factor(c->factors, poly, ctx))
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "hurwitz: could not factor condition %s", origin);
+    if (!fmpz_is_one(c->factors->constant_den))
+        return rs_error_set(err, RS_ERR_INTERNAL,
+                            "hurwitz: factorisation of %s has a denominator",
+                            origin);
+
+    num = c->factors->num;
+    c->dropped = calloc(num > 0 ? num : 1, sizeof(int));
+    c->even = calloc(num > 0 ? num : 1, sizeof(int));
+    if (c->dropped == NULL || c->even == NULL)
+        return rs_error_set(err, RS_ERR_LIMIT, "hurwitz: out of memory");
+
+    s = fmpz_sgn(c->factors->constant);
+    fmpz_mpoly_one(c->reduced, ctx);
+    for (i = 0; i < num; i++) {
+        const fmpz_mpoly_struct *f = c->factors->poly + i;
+        int even = fmpz_is_even(c->factors->exp + i);
+        int fs = rs_hurwitz_sign(f, sign, ctx);
+
+        c->even[i] = even;
+        if (fs != 0) {
+            c->dropped[i] = 1;
+            if (!even && fs < 0)
+                s = -s;
+            continue;
+        }
+        kept++;
+        if (!even) {
+            kept_odd++;
+            fmpz_mpoly_mul(c->reduced, c->reduced, f, ctx);
+        }
+    }
+    if (s < 0)
+        fmpz_mpoly_neg(c->reduced, c->reduced, ctx);
+    else if (s == 0)
+        fmpz_mpoly_zero(c->reduced, ctx);
+
+    c->trivially_true = (kept == 0 && s > 0);
+    c->trivially_false = (kept_odd == 0 && s <= 0);
+    return RS_OK;
+}
+
+static int
+_add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
+          const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    rs_hurwitz_cond_struct *c = h->cond + h->ncond;
+    char origin[32];
+
+    fmpz_mpoly_init(c->poly, ctx);
+    fmpz_mpoly_init(c->reduced, ctx);
+    fmpz_mpoly_factor_init(c->factors, ctx);
+    c->origin = NULL;
+    c->dropped = NULL;
+    c->even = NULL;
+    c->trivially_true = c->trivially_false = 0;
+    h->ncond++;
+
+    snprintf(origin, sizeof(origin), "%c_%ld", letter, (long) idx);
+    return _cond_set(c, poly, origin, sign, ctx, err);
+}
+
+/* Coefficients a_0..a_n of q in z, negated when a_n is provably negative
+ * (wherever non-zero). */
+static int
+_hurwitz_coeffs(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                rs_error_t err)
+{
+    slong i, n = h->n;
+    fmpz_mpoly_factor_t f;
+    int s;
+
+    h->coeffs = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i <= n; i++) {
+        ulong e = i;
+        fmpz_mpoly_init(h->coeffs + i, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(h->coeffs + i, q, &zvar, &e, 1, ctx);
+    }
+
+    fmpz_mpoly_factor_init(f, ctx);
+    if (!fmpz_mpoly_factor(f, h->coeffs + n, ctx)) {
+        fmpz_mpoly_factor_clear(f, ctx);
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "hurwitz: could not factor the leading coefficient");
+    }
+    s = _factored_sign(f, sign, ctx);
+    fmpz_mpoly_factor_clear(f, ctx);
+
+    if (s < 0) {
+        h->negated = 1;
+        for (i = 0; i <= n; i++)
+            fmpz_mpoly_neg(h->coeffs + i, h->coeffs + i, ctx);
+    }
+    return RS_OK;
+}
+
+static int
+_hurwitz_conditions(rs_hurwitz_t h, const rs_sign_t *sign,
+                    const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong n = h->n, k, maxc = n + 2;
+    int r;
+
+    h->cond = flint_malloc(maxc * sizeof(rs_hurwitz_cond_struct));
+
+    r = _add_cond(h, h->coeffs + n, 'a', n, sign, ctx, err);
+    for (k = 0; k < n && r == RS_OK; k += 2)
+        r = _add_cond(h, h->coeffs + k, 'a', k, sign, ctx, err);
+    for (k = n - 1; k >= 1 && r == RS_OK; k -= 2)
+        r = _add_cond(h, h->minors + (k - 1), 'D', k, sign, ctx, err);
+    return r;
+}
+
+/* Validate q and zvar; the degree of q in z into *n.  (The degree is taken
+ * term by term: after reading the number of variables, the inline
+ * fmpz_mpoly_degree_si makes GCC 12 with -fsanitize=undefined report a
+ * spurious -Wstringop-overread.) */
+static int
+_hurwitz_degree(slong *n, const fmpz_mpoly_t q, slong zvar,
+                const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong i, nvars;
+
+    if (fmpz_mpoly_is_zero(q, ctx))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "hurwitz: the polynomial is zero");
+    if (!fmpz_mpoly_degrees_fit_si(q, ctx))
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "hurwitz: exponents too large");
+    nvars = fmpz_mpoly_ctx_nvars(ctx);
+    if (zvar < 0 || zvar >= nvars)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "hurwitz: variable index %ld out of range 0..%ld",
+                            (long) zvar, (long) nvars - 1);
+    *n = 0;
+    for (i = 0; i < fmpz_mpoly_length(q, ctx); i++) {
+        slong e = fmpz_mpoly_get_term_var_exp_si(q, i, zvar, ctx);
+        if (e > *n)
+            *n = e;
+    }
+    if (*n < 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "hurwitz: the polynomial has degree 0 in z");
+    if (*n > RS_HURWITZ_MAX_DEGREE)
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "hurwitz: degree %ld exceeds the limit %d",
+                            (long) *n, RS_HURWITZ_MAX_DEGREE);
+    return RS_OK;
+}
+
+int
+rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                   const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                   rs_error_t err)
+{
+    slong i, n = 0;
+    int r;
+
+    rs_hurwitz_clear(h, ctx);
+    r = _hurwitz_degree(&n, q, zvar, ctx, err);
+    if (r != RS_OK)
+        return r;
+
+    h->n = n;
+    r = _hurwitz_coeffs(h, q, zvar, sign, ctx, err);
+    if (r == RS_OK) {
+        h->minors = flint_malloc(n * sizeof(fmpz_mpoly_struct));
+        for (i = 0; i < n; i++)
+            fmpz_mpoly_init(h->minors + i, ctx);
+        r = _hurwitz_minors(h->minors, h->coeffs, n, ctx, err);
+    }
+    if (r == RS_OK)
+        r = _hurwitz_conditions(h, sign, ctx, err);
+    if (r != RS_OK)
+        rs_hurwitz_clear(h, ctx);
+    return r;
+}
