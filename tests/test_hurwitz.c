@@ -1,0 +1,1126 @@
+/* test_hurwitz.c -- cmocka tests for the hurwitz module.
+ *
+ * Expected values come from independent derivations stated in the comments:
+ * hand expansions of small Hurwitz determinants, a Laplace (cofactor)
+ * expansion computed here, and certified complex roots from Arb for the
+ * numeric equivalence "all Lienard-Chipart conditions hold" <=> "all roots
+ * in Re z < 0". */
+#include "testutil.h"
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpz_mat.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
+#include "recstab/hurwitz.h"
+
+/* ------------------------------------------------------------------ */
+/* helpers                                                             */
+
+typedef struct {
+    fmpz_mpoly_ctx_t ctx;
+    const char **vars;
+    slong nvars;
+} tctx_struct;
+
+static void
+tctx_init(tctx_struct *t, const char **vars, slong nvars)
+{
+    fmpz_mpoly_ctx_init(t->ctx, nvars, ORD_LEX);
+    t->vars = vars;
+    t->nvars = nvars;
+}
+
+static void
+tctx_clear(tctx_struct *t)
+{
+    fmpz_mpoly_ctx_clear(t->ctx);
+}
+
+static void
+set_str(fmpz_mpoly_t p, const char *s, const tctx_struct *t)
+{
+    int r = fmpz_mpoly_set_str_pretty(p, s, t->vars, t->ctx);
+    assert_int_equal(r, 0);
+}
+
+/* assert p == the polynomial written s */
+static void
+assert_poly_str(const fmpz_mpoly_t p, const char *s, const tctx_struct *t)
+{
+    fmpz_mpoly_t e;
+    int eq;
+    fmpz_mpoly_init(e, t->ctx);
+    set_str(e, s, t);
+    eq = fmpz_mpoly_equal(p, e, t->ctx);
+    if (!eq) {
+        char *got = fmpz_mpoly_get_str_pretty(p, t->vars, t->ctx);
+        print_error("expected %s, got %s\n", s, got);
+        flint_free(got);
+    }
+    fmpz_mpoly_clear(e, t->ctx);
+    assert_true(eq);
+}
+
+static const rs_hurwitz_cond_struct *
+find_cond(const rs_hurwitz_t h, const char *origin)
+{
+    slong i;
+    for (i = 0; i < h->ncond; i++)
+        if (strcmp(h->cond[i].origin, origin) == 0)
+            return h->cond + i;
+    return NULL;
+}
+
+/* index of the factor equal to +-s in c, or -1 */
+static slong
+find_factor(const rs_hurwitz_cond_struct *c, const char *s,
+            const tctx_struct *t)
+{
+    fmpz_mpoly_t e, ne;
+    slong i, r = -1;
+    fmpz_mpoly_init(e, t->ctx);
+    fmpz_mpoly_init(ne, t->ctx);
+    set_str(e, s, t);
+    fmpz_mpoly_neg(ne, e, t->ctx);
+    for (i = 0; i < c->factors->num; i++)
+        if (fmpz_mpoly_equal(c->factors->poly + i, e, t->ctx)
+            || fmpz_mpoly_equal(c->factors->poly + i, ne, t->ctx))
+            r = i;
+    fmpz_mpoly_clear(e, t->ctx);
+    fmpz_mpoly_clear(ne, t->ctx);
+    return r;
+}
+
+/* Entry (i, j) (0-based) of the Hurwitz matrix, written independently of the
+ * library: row i holds a_{n-1+i}, a_{n-3+i}, ... i.e. index n - 2j - 1 + i. */
+static const fmpz_mpoly_struct *
+hentry(const fmpz_mpoly_struct *a, slong n, slong i, slong j)
+{
+    slong idx = n - 2 * j - 1 + i;
+    return (idx < 0 || idx > n) ? NULL : a + idx;
+}
+
+/* Laplace expansion along the first of the rows rows[0..m-1] restricted to
+ * the columns cols[0..m-1]: an independent determinant. */
+static void
+laplace(fmpz_mpoly_t det, const fmpz_mpoly_struct *a, slong n,
+        const slong *rows, const slong *cols, slong m,
+        const fmpz_mpoly_ctx_t ctx)
+{
+    slong c, j, k;
+    slong sub[16];
+    fmpz_mpoly_t minor, t;
+
+    if (m == 0) {
+        fmpz_mpoly_one(det, ctx);
+        return;
+    }
+    fmpz_mpoly_init(minor, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_zero(det, ctx);
+    for (c = 0; c < m; c++) {
+        const fmpz_mpoly_struct *e = hentry(a, n, rows[0], cols[c]);
+        if (e == NULL || fmpz_mpoly_is_zero(e, ctx))
+            continue;
+        for (j = 0, k = 0; j < m; j++)
+            if (j != c)
+                sub[k++] = cols[j];
+        laplace(minor, a, n, rows + 1, sub, m - 1, ctx);
+        fmpz_mpoly_mul(t, e, minor, ctx);
+        if (c % 2)
+            fmpz_mpoly_sub(det, det, t, ctx);
+        else
+            fmpz_mpoly_add(det, det, t, ctx);
+    }
+    fmpz_mpoly_clear(minor, ctx);
+    fmpz_mpoly_clear(t, ctx);
+}
+
+static void
+laplace_leading(fmpz_mpoly_t det, const fmpz_mpoly_struct *a, slong n,
+                slong k, const fmpz_mpoly_ctx_t ctx)
+{
+    slong idx[16], i;
+    for (i = 0; i < k; i++)
+        idx[i] = i;
+    laplace(det, a, n, idx, idx, k, ctx);
+}
+
+/* All minors of h against the Laplace expansion of its own coefficients. */
+static void
+check_minors_laplace(const rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t d;
+    slong k;
+    fmpz_mpoly_init(d, ctx);
+    for (k = 1; k <= h->n; k++) {
+        laplace_leading(d, h->coeffs, h->n, k, ctx);
+        assert_true(fmpz_mpoly_equal(d, h->minors + k - 1, ctx));
+    }
+    /* D_n = a_0 D_{n-1} (last column of H is (0, ..., 0, a_0)) */
+    if (h->n >= 2) {
+        fmpz_mpoly_mul(d, h->coeffs + 0, h->minors + h->n - 2, ctx);
+        assert_true(fmpz_mpoly_equal(d, h->minors + h->n - 1, ctx));
+    }
+    fmpz_mpoly_clear(d, ctx);
+}
+
+/* Specialise the parameters at vals and compare every D_k of h with the
+ * determinant of the numeric leading k x k Hurwitz submatrix (fmpz_mat_det,
+ * independent of the module). */
+static void
+check_minors_at(const rs_hurwitz_t h, const slong *vals,
+                const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = fmpz_mpoly_ctx_nvars(ctx), n = h->n, i, j, k;
+    fmpz *v = _fmpz_vec_init(nv);
+    fmpz *c = _fmpz_vec_init(n + 1);
+    fmpz **vp = flint_malloc(nv * sizeof(fmpz *));
+    fmpz_t d, e;
+    fmpz_mat_t H;
+
+    fmpz_init(d);
+    fmpz_init(e);
+    for (i = 0; i < nv; i++) {
+        fmpz_set_si(v + i, vals[i]);
+        vp[i] = v + i;
+    }
+    for (i = 0; i <= n; i++)
+        assert_true(fmpz_mpoly_evaluate_all_fmpz(c + i, h->coeffs + i, vp,
+                                                 ctx));
+    for (k = 1; k <= n; k++) {
+        fmpz_mat_init(H, k, k);
+        for (i = 0; i < k; i++)
+            for (j = 0; j < k; j++) {
+                slong idx = n - 2 * j - 1 + i;
+                if (idx >= 0 && idx <= n)
+                    fmpz_set(fmpz_mat_entry(H, i, j), c + idx);
+            }
+        fmpz_mat_det(d, H);
+        assert_true(fmpz_mpoly_evaluate_all_fmpz(e, h->minors + k - 1, vp,
+                                                 ctx));
+        assert_true(fmpz_equal(d, e));
+        fmpz_mat_clear(H);
+    }
+    fmpz_clear(d);
+    fmpz_clear(e);
+    flint_free(vp);
+    _fmpz_vec_clear(v, nv);
+    _fmpz_vec_clear(c, n + 1);
+}
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
+
+static uint64_t
+rng_next(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return rng_state;
+}
+
+static slong
+rng_range(slong lo, slong hi)
+{
+    return lo + (slong) (rng_next() % (uint64_t) (hi - lo + 1));
+}
+
+/* ------------------------------------------------------------------ */
+/* sign test                                                           */
+
+static void
+test_sign(void **state)
+{
+    /* variables: m > 0, k >= 0, w unknown */
+    const char *vars[] = {"m", "k", "w"};
+    rs_sign_t sign[] = {RS_SIGN_POSITIVE, RS_SIGN_NONNEGATIVE,
+                        RS_SIGN_UNKNOWN};
+    struct { const char *p; int s; } cases[] = {
+        {"3", 1}, {"-2", -1}, {"0", 0},
+        {"m", 1}, {"m + 1", 1}, {"k", 0}, {"k + 1", 1}, {"m*k", 0},
+        {"m + k", 1}, {"m*k + m", 1}, {"w^2", 0}, {"w^2 + 1", 1},
+        {"w^2*m + m", 1}, {"w^2*m", 0}, {"-w^2 - 1", -1}, {"-m - k", -1},
+        {"w", 0}, {"w^3 + 1", 0}, {"m - 1", 0}, {"w*m + 1", 0},
+        {"k^3 + 2*m^2", 1}, {"-k^2*w^4", 0},
+    };
+    tctx_struct t;
+    fmpz_mpoly_t p;
+    size_t i;
+    (void) state;
+
+    tctx_init(&t, vars, 3);
+    fmpz_mpoly_init(p, t.ctx);
+    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+        set_str(p, cases[i].p, &t);
+        if (rs_hurwitz_sign(p, sign, t.ctx) != cases[i].s)
+            print_error("sign(%s) != %d\n", cases[i].p, cases[i].s);
+        assert_int_equal(rs_hurwitz_sign(p, sign, t.ctx), cases[i].s);
+    }
+    /* NULL sign array: every variable of unknown sign */
+    set_str(p, "m + 1", &t);
+    assert_int_equal(rs_hurwitz_sign(p, NULL, t.ctx), 0);
+    set_str(p, "m^2 + 1", &t);
+    assert_int_equal(rs_hurwitz_sign(p, NULL, t.ctx), 1);
+    fmpz_mpoly_clear(p, t.ctx);
+    tctx_clear(&t);
+}
+
+/* ------------------------------------------------------------------ */
+/* symbolic coefficients                                               */
+
+/* q = a2 z^2 + a1 z + a0, z in the middle of the variable list.
+ * Hand: H = [[a1, 0], [a2, a0]], D_1 = a1, D_2 = a1 a0.
+ * Textbook (a2 > 0): stable iff a1 > 0 and a0 > 0.  LC gives a_2, a_0, D_1. */
+static void
+test_degree2_symbolic(void **state)
+{
+    const char *vars[] = {"a0", "a1", "z", "a2"};
+    rs_sign_t sign[] = {RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN,
+                        RS_SIGN_UNKNOWN};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong i;
+    (void) state;
+
+    tctx_init(&t, vars, 4);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    set_str(q, "a2*z^2 + a1*z + a0", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 2, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->n, 2);
+    assert_int_equal(h->negated, 0);
+    assert_poly_str(h->coeffs + 0, "a0", &t);
+    assert_poly_str(h->coeffs + 1, "a1", &t);
+    assert_poly_str(h->coeffs + 2, "a2", &t);
+    assert_poly_str(h->minors + 0, "a1", &t);
+    assert_poly_str(h->minors + 1, "a1*a0", &t);
+    check_minors_laplace(h, t.ctx);
+
+    assert_int_equal(h->ncond, 3);
+    assert_string_equal(h->cond[0].origin, "a_2");
+    assert_string_equal(h->cond[1].origin, "a_0");
+    assert_string_equal(h->cond[2].origin, "D_1");
+    assert_poly_str(h->cond[0].reduced, "a2", &t);
+    assert_poly_str(h->cond[1].reduced, "a0", &t);
+    assert_poly_str(h->cond[2].reduced, "a1", &t);
+    for (i = 0; i < h->ncond; i++) {
+        assert_int_equal(h->cond[i].trivially_true, 0);
+        assert_int_equal(h->cond[i].trivially_false, 0);
+        assert_int_equal(h->cond[i].factors->num, 1);
+        assert_int_equal(h->cond[i].dropped[0], 0);
+        assert_int_equal(h->cond[i].even[0], 0);
+    }
+
+    /* all coefficients positive by assumption: every condition holds */
+    for (i = 0; i < 4; i++)
+        sign[i] = RS_SIGN_POSITIVE;
+    assert_int_equal(rs_hurwitz_compute(h, q, 2, sign, t.ctx, err), RS_OK);
+    for (i = 0; i < h->ncond; i++) {
+        assert_int_equal(h->cond[i].trivially_true, 1);
+        assert_int_equal(h->cond[i].dropped[0], 1);
+        assert_poly_str(h->cond[i].reduced, "1", &t);
+    }
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* q = a3 z^3 + a2 z^2 + a1 z + a0.  H = [[a2, a0, 0], [a3, a1, 0],
+ * [0, a2, a0]].  Hand: D_2 = a2 a1 - a3 a0, D_3 = a0 D_2; the classical
+ * cubic criterion is a_i > 0 and a2 a1 > a3 a0.  LC: a_3, a_0, a_2, D_2. */
+static void
+test_degree3_symbolic(void **state)
+{
+    const char *vars[] = {"z", "a0", "a1", "a2", "a3"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    (void) state;
+
+    tctx_init(&t, vars, 5);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    set_str(q, "a3*z^3 + a2*z^2 + a1*z + a0", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(h->n, 3);
+    assert_poly_str(h->minors + 0, "a2", &t);
+    assert_poly_str(h->minors + 1, "a2*a1 - a3*a0", &t);
+    assert_poly_str(h->minors + 2, "a0*a2*a1 - a3*a0^2", &t);
+    check_minors_laplace(h, t.ctx);
+
+    assert_int_equal(h->ncond, 4);
+    assert_string_equal(h->cond[0].origin, "a_3");
+    assert_string_equal(h->cond[1].origin, "a_0");
+    assert_string_equal(h->cond[2].origin, "a_2");
+    assert_string_equal(h->cond[3].origin, "D_2");
+    assert_poly_str(h->cond[3].poly, "a2*a1 - a3*a0", &t);
+    assert_poly_str(h->cond[3].reduced, "a2*a1 - a3*a0", &t);
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* q = a4 z^4 + ... + a0.  H_3 = [[a3, a1, 0], [a4, a2, a0], [0, a3, a1]].
+ * Hand (first row): a3 (a2 a1 - a0 a3) - a1 (a4 a1 - 0) = a3 a2 a1 - a3^2 a0
+ * - a4 a1^2.  D_1 = a3, D_2 = a3 a2 - a4 a1.  LC: a_4, a_0, a_2, D_3, D_1. */
+static void
+test_degree4_symbolic(void **state)
+{
+    const char *vars[] = {"a0", "a1", "a2", "a3", "a4", "z"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    (void) state;
+
+    tctx_init(&t, vars, 6);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    set_str(q, "a4*z^4 + a3*z^3 + a2*z^2 + a1*z + a0", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 5, NULL, t.ctx, err), RS_OK);
+    assert_poly_str(h->minors + 0, "a3", &t);
+    assert_poly_str(h->minors + 1, "a3*a2 - a4*a1", &t);
+    assert_poly_str(h->minors + 2, "a3*a2*a1 - a3^2*a0 - a4*a1^2", &t);
+    check_minors_laplace(h, t.ctx);
+
+    assert_int_equal(h->ncond, 5);
+    assert_string_equal(h->cond[0].origin, "a_4");
+    assert_string_equal(h->cond[1].origin, "a_0");
+    assert_string_equal(h->cond[2].origin, "a_2");
+    assert_string_equal(h->cond[3].origin, "D_3");
+    assert_string_equal(h->cond[4].origin, "D_1");
+    assert_poly_str(h->cond[3].poly, "a3*a2*a1 - a3^2*a0 - a4*a1^2", &t);
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* Generic symbolic q of degree 1..7, with random subsets of coefficients set
+ * to zero (forcing identically-zero pivots), z at a varying position: every
+ * minor against the Laplace expansion. */
+static void
+test_minors_vs_laplace(void **state)
+{
+    const char *vars[] = {"c0", "c1", "c2", "c3", "c4", "c5", "c6", "c7",
+                          "z"};
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t q, mono, g;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong n, trial, i, zvar, nvars = 9;
+    (void) state;
+    (void) vars;
+
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    rng_state = 12345;
+    fmpz_mpoly_ctx_init(ctx, nvars, ORD_DEGREVLEX);
+    fmpz_mpoly_init(q, ctx);
+    fmpz_mpoly_init(mono, ctx);
+    fmpz_mpoly_init(g, ctx);
+    for (n = 1; n <= 7; n++) {
+        for (trial = 0; trial < (n <= 5 ? 12 : 4); trial++) {
+            /* z is variable zvar; coefficient a_i is the generator i (or
+             * i+1 after zvar) or zero */
+            zvar = rng_range(0, nvars - 1 - (8 - n));
+            fmpz_mpoly_zero(q, ctx);
+            for (i = 0; i <= n; i++) {
+                slong v = i < zvar ? i : i + 1;
+                if (trial > 0 && i < n && rng_range(0, 2) == 0)
+                    continue;                       /* a_i = 0 */
+                fmpz_mpoly_gen(mono, v, ctx);
+                fmpz_mpoly_gen(g, zvar, ctx);
+                fmpz_mpoly_pow_ui(g, g, i, ctx);
+                fmpz_mpoly_mul(mono, mono, g, ctx);
+                if (rng_range(0, 1))
+                    fmpz_mpoly_scalar_mul_si(mono, mono, rng_range(-3, 3) | 1,
+                                             ctx);
+                fmpz_mpoly_add(q, q, mono, ctx);
+            }
+            assert_int_equal(rs_hurwitz_compute(h, q, zvar, NULL, ctx, err),
+                             RS_OK);
+            assert_int_equal(h->n, n);
+            check_minors_laplace(h, ctx);
+        }
+    }
+    rs_hurwitz_clear(h, ctx);
+    fmpz_mpoly_clear(q, ctx);
+    fmpz_mpoly_clear(mono, ctx);
+    fmpz_mpoly_clear(g, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+/* Degree 8..12 with two parameters and random zero coefficients (so that
+ * the fraction-free Routh scheme stops early and the pivoting path takes
+ * over): every minor at several integer points against fmpz_mat_det. */
+static void
+test_minors_large_sparse(void **state)
+{
+    const char *vars[] = {"x", "z", "y"};
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t q, mono;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong n, trial, i, p;
+    ulong e[3];
+    (void) state;
+    (void) vars;
+
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    rng_state = 777;
+    fmpz_mpoly_ctx_init(ctx, 3, ORD_DEGREVLEX);
+    fmpz_mpoly_init(q, ctx);
+    fmpz_mpoly_init(mono, ctx);
+    for (n = 8; n <= 12; n++) {
+        for (trial = 0; trial < 4; trial++) {
+            fmpz_mpoly_zero(q, ctx);
+            for (i = 0; i <= n; i++) {
+                if (i < n && i > 0 && rng_range(0, 3) == 0)
+                    continue;
+                /* a_i = c1 x^e1 y^f1 + c2 x^e2 y^f2 (small) */
+                for (p = 0; p < 2; p++) {
+                    fmpz_t c;
+                    fmpz_init_set_si(c, rng_range(-3, 3));
+                    e[0] = rng_range(0, 1);
+                    e[1] = i;
+                    e[2] = rng_range(0, 1);
+                    fmpz_mpoly_zero(mono, ctx);
+                    fmpz_mpoly_set_coeff_fmpz_ui(mono, c, e, ctx);
+                    fmpz_mpoly_add(q, q, mono, ctx);
+                    fmpz_clear(c);
+                }
+            }
+            if (fmpz_mpoly_degree_si(q, 1, ctx) < 1)
+                continue;
+            assert_int_equal(rs_hurwitz_compute(h, q, 1, NULL, ctx, err),
+                             RS_OK);
+            for (p = 0; p < 3; p++) {
+                slong vals[3];
+                vals[0] = rng_range(-4, 4);
+                vals[1] = 0;
+                vals[2] = rng_range(-4, 4);
+                check_minors_at(h, vals, ctx);
+            }
+        }
+    }
+    rs_hurwitz_clear(h, ctx);
+    fmpz_mpoly_clear(q, ctx);
+    fmpz_mpoly_clear(mono, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+/* Identically-zero pivots.
+ * (a) q = z^4 + b z^2 + d z + c: a_3 = 0 so D_1 = 0.  H_3 = [[0, d, 0],
+ *     [1, b, c], [0, 0, d]]; cofactor along row 1: -d (1*d - c*0) = -d^2;
+ *     D_2 = 0*b - 1*d = -d; D_4 = c D_3 = -c d^2.
+ * (b) q = z^4 + z^3 + x z^2 + x z + c: D_2 = 1*x - 1*x = 0, D_1 = 1,
+ *     D_3 = a3 a2 a1 - a3^2 a0 - a4 a1^2 = x^2 - c - x^2 = -c, D_4 = -c^2.
+ * (c) q = z^4 + b z^2 + c: rows 1 and 3 of H vanish, every minor is 0. */
+static void
+test_zero_pivot(void **state)
+{
+    const char *vars[] = {"b", "z", "c", "d", "x"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong k;
+    (void) state;
+
+    tctx_init(&t, vars, 5);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+
+    set_str(q, "z^4 + b*z^2 + d*z + c", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 1, NULL, t.ctx, err), RS_OK);
+    assert_poly_str(h->minors + 0, "0", &t);
+    assert_poly_str(h->minors + 1, "-d", &t);
+    assert_poly_str(h->minors + 2, "-d^2", &t);
+    assert_poly_str(h->minors + 3, "-c*d^2", &t);
+    check_minors_laplace(h, t.ctx);
+    /* D_3 = -d^2 > 0 is impossible; D_1 = 0 > 0 too */
+    assert_int_equal(find_cond(h, "D_3")->trivially_false, 1);
+    assert_int_equal(find_cond(h, "D_1")->trivially_false, 1);
+    assert_poly_str(find_cond(h, "D_1")->reduced, "0", &t);
+    assert_int_equal(find_cond(h, "D_3")->even[0], 1);
+    assert_poly_str(find_cond(h, "D_3")->reduced, "-1", &t);
+
+    set_str(q, "z^4 + z^3 + x*z^2 + x*z + c", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 1, NULL, t.ctx, err), RS_OK);
+    assert_poly_str(h->minors + 0, "1", &t);
+    assert_poly_str(h->minors + 1, "0", &t);
+    assert_poly_str(h->minors + 2, "-c", &t);
+    assert_poly_str(h->minors + 3, "-c^2", &t);
+    check_minors_laplace(h, t.ctx);
+
+    set_str(q, "z^4 + b*z^2 + c", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 1, NULL, t.ctx, err), RS_OK);
+    for (k = 0; k < 4; k++)
+        assert_true(fmpz_mpoly_is_zero(h->minors + k, t.ctx));
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* ------------------------------------------------------------------ */
+/* parameters with sign assumptions                                    */
+
+/* q = (m+1) z^3 + 2(m+1) z^2 + w^2 z + k w^2, m > 0, k >= 0, w unknown.
+ * a_3 = m+1 > 0, a_2 = 2(m+1) > 0: dropped, trivially true.
+ * a_0 = k w^2: k kept (only k >= 0 known), w even (must be non-zero).
+ * D_2 = a2 a1 - a3 a0 = 2(m+1) w^2 - (m+1) k w^2 = (m+1) w^2 (2 - k):
+ * m+1 dropped, w even, reduced = 2 - k.  So: stable iff k > 0, w != 0,
+ * k < 2 -- the expected region. */
+static void
+test_assumptions(void **state)
+{
+    const char *vars[] = {"m", "w", "z", "k"};
+    rs_sign_t sign[] = {RS_SIGN_POSITIVE, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN,
+                        RS_SIGN_NONNEGATIVE};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    const rs_hurwitz_cond_struct *c;
+    slong i;
+    (void) state;
+
+    tctx_init(&t, vars, 4);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+    set_str(q, "(m+1)*z^3 + 2*(m+1)*z^2 + w^2*z + k*w^2", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 2, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->negated, 0);
+    assert_int_equal(h->ncond, 4);
+
+    c = find_cond(h, "a_3");
+    assert_non_null(c);
+    assert_int_equal(c->trivially_true, 1);
+    i = find_factor(c, "m + 1", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->dropped[i], 1);
+
+    c = find_cond(h, "a_2");
+    assert_int_equal(c->trivially_true, 1);
+
+    c = find_cond(h, "a_0");
+    assert_int_equal(c->trivially_true, 0);
+    assert_int_equal(c->trivially_false, 0);
+    assert_int_equal(c->factors->num, 2);
+    i = find_factor(c, "w", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->even[i], 1);
+    assert_int_equal(c->dropped[i], 0);
+    i = find_factor(c, "k", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->even[i], 0);
+    assert_int_equal(c->dropped[i], 0);
+    assert_poly_str(c->reduced, "k", &t);
+
+    c = find_cond(h, "D_2");
+    assert_poly_str(c->poly, "(m+1)*w^2*(2-k)", &t);
+    assert_int_equal(c->factors->num, 3);
+    i = find_factor(c, "m + 1", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->dropped[i], 1);
+    assert_int_equal(c->even[i], 0);
+    i = find_factor(c, "w", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->dropped[i], 0);
+    assert_int_equal(c->even[i], 1);
+    i = find_factor(c, "k - 2", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->dropped[i], 0);
+    assert_poly_str(c->reduced, "2 - k", &t);
+    assert_int_equal(c->trivially_true, 0);
+    assert_int_equal(c->trivially_false, 0);
+
+    /* with w > 0 too, the w factors are dropped as well */
+    sign[1] = RS_SIGN_POSITIVE;
+    assert_int_equal(rs_hurwitz_compute(h, q, 2, sign, t.ctx, err), RS_OK);
+    c = find_cond(h, "a_0");
+    assert_int_equal(c->dropped[find_factor(c, "w", &t)], 1);
+    assert_poly_str(c->reduced, "k", &t);
+    c = find_cond(h, "D_2");
+    assert_int_equal(c->dropped[find_factor(c, "w", &t)], 1);
+    assert_poly_str(c->reduced, "2 - k", &t);
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* Leading coefficient signs.
+ * q = -(m+1) z^2 - z - 1, m > 0: a_2 provably negative, q is negated; then
+ *   every condition is trivially true (a_2 = m+1, a_0 = 1, D_1 = 1).
+ * q = -w^2 z^2 - 3 z - 2: a_2 = -w^2 < 0 wherever non-zero: negated, the a_2
+ *   condition keeps the even factor w (non-zero).
+ * q = x z + 1 (x unknown): not negated; conditions a_1: x > 0, a_0: 1 > 0. */
+static void
+test_leading_sign(void **state)
+{
+    const char *vars[] = {"z", "m", "w", "x"};
+    rs_sign_t sign[] = {RS_SIGN_UNKNOWN, RS_SIGN_POSITIVE, RS_SIGN_UNKNOWN,
+                        RS_SIGN_UNKNOWN};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    const rs_hurwitz_cond_struct *c;
+    slong i;
+    (void) state;
+
+    tctx_init(&t, vars, 4);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+
+    set_str(q, "-(m+1)*z^2 - z - 1", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->negated, 1);
+    assert_poly_str(h->coeffs + 2, "m + 1", &t);
+    for (i = 0; i < h->ncond; i++)
+        assert_int_equal(h->cond[i].trivially_true, 1);
+
+    set_str(q, "-w^2*z^2 - 3*z - 2", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->negated, 1);
+    c = find_cond(h, "a_2");
+    assert_int_equal(c->trivially_true, 0);
+    assert_int_equal(c->trivially_false, 0);
+    i = find_factor(c, "w", &t);
+    assert_true(i >= 0);
+    assert_int_equal(c->even[i], 1);
+    assert_poly_str(c->reduced, "1", &t);
+    assert_int_equal(find_cond(h, "a_0")->trivially_true, 1);
+    assert_int_equal(find_cond(h, "D_1")->trivially_true, 1);
+
+    set_str(q, "x*z + 1", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->negated, 0);
+    assert_int_equal(h->ncond, 2);
+    assert_poly_str(find_cond(h, "a_1")->reduced, "x", &t);
+    assert_int_equal(find_cond(h, "a_0")->trivially_true, 1);
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* Numeric conditions: a negative constant, a zero condition, positive ones.
+ * q = z^2 - z + 1: D_1 = -1 -> trivially false, reduced -1.
+ * q = z^2 + z: a_0 = 0 -> trivially false, reduced 0 (root at z = 0).
+ * q = 2 z^2 + 4 z + 6: all trivially true. */
+static void
+test_constants(void **state)
+{
+    const char *vars[] = {"z"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong i;
+    (void) state;
+
+    tctx_init(&t, vars, 1);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+
+    set_str(q, "z^2 - z + 1", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(find_cond(h, "D_1")->trivially_false, 1);
+    assert_int_equal(find_cond(h, "D_1")->trivially_true, 0);
+    assert_poly_str(find_cond(h, "D_1")->reduced, "-1", &t);
+    assert_int_equal(find_cond(h, "a_0")->trivially_true, 1);
+
+    set_str(q, "z^2 + z", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(find_cond(h, "a_0")->trivially_false, 1);
+    assert_poly_str(find_cond(h, "a_0")->reduced, "0", &t);
+
+    set_str(q, "2*z^2 + 4*z + 6", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+    for (i = 0; i < h->ncond; i++) {
+        assert_int_equal(h->cond[i].trivially_true, 1);
+        assert_int_equal(h->cond[i].trivially_false, 0);
+    }
+
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+static void
+test_errors(void **state)
+{
+    const char *vars[] = {"z", "x"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    (void) state;
+
+    tctx_init(&t, vars, 2);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    rs_hurwitz_init(h);
+
+    set_str(q, "z + x", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 2, NULL, t.ctx, err),
+                     RS_ERR_INPUT);
+    assert_int_equal(err->code, RS_ERR_INPUT);
+    assert_int_equal(rs_hurwitz_compute(h, q, -1, NULL, t.ctx, err),
+                     RS_ERR_INPUT);
+    set_str(q, "x^2 + 1", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err),
+                     RS_ERR_INPUT);
+    assert_int_equal(h->ncond, 0);
+    assert_null(h->coeffs);
+    fmpz_mpoly_zero(q, t.ctx);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err),
+                     RS_ERR_INPUT);
+    /* a valid call after errors, then clear twice */
+    set_str(q, "z + x", &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(h->ncond, 2);
+    rs_hurwitz_clear(h, t.ctx);
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* ------------------------------------------------------------------ */
+/* numeric equivalence with certified roots                            */
+
+/* Exact: 1 if p has a root on the imaginary axis, i.e. Re p(iy) and
+ * Im p(iy) have a common real root y (Sturm count of their gcd). */
+static int
+exact_axis_root(const fmpz_poly_t p)
+{
+    fmpz_poly_t re, im, g;
+    slong i;
+    int res;
+
+    fmpz_poly_init(re);
+    fmpz_poly_init(im);
+    fmpz_poly_init(g);
+    for (i = 0; i <= fmpz_poly_degree(p); i++) {
+        /* a_i (iy)^i = a_i i^i y^i, i^i = 1, i, -1, -i */
+        fmpz_t c;
+        fmpz_init_set(c, p->coeffs + i);
+        if ((i % 4) >= 2)
+            fmpz_neg(c, c);
+        if (i % 2 == 0)
+            fmpz_poly_set_coeff_fmpz(re, i, c);
+        else
+            fmpz_poly_set_coeff_fmpz(im, i, c);
+        fmpz_clear(c);
+    }
+    fmpz_poly_gcd(g, re, im);
+    /* squarefree part of g (num_real_roots needs it) */
+    fmpz_poly_derivative(re, g);
+    fmpz_poly_gcd(im, g, re);
+    fmpz_poly_div(g, g, im);
+    res = fmpz_poly_degree(g) >= 1 && fmpz_poly_num_real_roots(g) > 0;
+    fmpz_poly_clear(re);
+    fmpz_poly_clear(im);
+    fmpz_poly_clear(g);
+    return res;
+}
+
+/* Certified: 1 if all roots have Re z < 0, 0 if not, -1 if undecided.
+ * Roots on the axis are found exactly; the others are decided by Arb's
+ * certified root isolation on the squarefree part, with rising precision. */
+static int
+arb_all_left(const fmpz_poly_t p)
+{
+    fmpz_poly_t g, d, s;
+    acb_ptr roots;
+    slong i, deg, prec;
+    int res = -1;
+
+    if (exact_axis_root(p))
+        return 0;
+    fmpz_poly_init(g);
+    fmpz_poly_init(d);
+    fmpz_poly_init(s);
+    fmpz_poly_derivative(d, p);
+    fmpz_poly_gcd(g, p, d);
+    fmpz_poly_div(s, p, g);          /* squarefree part, same roots */
+    deg = fmpz_poly_degree(s);
+    roots = _acb_vec_init(deg);
+    for (prec = 64; prec <= 4096 && res < 0; prec *= 4) {
+        arb_fmpz_poly_complex_roots(roots, s, 0, prec);
+        res = 1;
+        for (i = 0; i < deg; i++) {
+            if (arb_is_positive(acb_realref(roots + i))) {
+                res = 0;
+                break;
+            }
+            if (!arb_is_negative(acb_realref(roots + i)))
+                res = -1;
+        }
+    }
+    _acb_vec_clear(roots, deg);
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(d);
+    fmpz_poly_clear(s);
+    return res;
+}
+
+static void
+mpoly_from_poly(fmpz_mpoly_t q, const fmpz_poly_t p, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    fmpz_mpoly_zero(q, ctx);
+    for (i = 0; i <= fmpz_poly_degree(p); i++) {
+        ulong e = i;
+        fmpz_mpoly_set_coeff_fmpz_ui(q, p->coeffs + i, &e, ctx);
+    }
+}
+
+/* Lienard-Chipart verdict of a numeric polynomial: all conditions are
+ * constants, so each one is trivially true or trivially false. */
+static int
+lc_all_hold(const fmpz_poly_t p, const fmpz_mpoly_ctx_t ctx, int *rh_all)
+{
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    slong i;
+    int all = 1;
+
+    fmpz_mpoly_init(q, ctx);
+    rs_hurwitz_init(h);
+    rs_error_init(err);
+    mpoly_from_poly(q, p, ctx);
+    assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, ctx, err), RS_OK);
+    for (i = 0; i < h->ncond; i++) {
+        assert_int_equal(h->cond[i].trivially_true,
+                         !h->cond[i].trivially_false);
+        all &= h->cond[i].trivially_true;
+    }
+    /* Routh-Hurwitz (a_n > 0 and all D_k > 0) must agree with LC */
+    *rh_all = 1;
+    for (i = 0; i < h->n; i++)
+        if (fmpz_mpoly_is_zero(h->minors + i, ctx)
+            || fmpz_sgn(fmpz_mpoly_term_coeff_ref(h->minors + i, 0, ctx)) <= 0)
+            *rh_all = 0;
+    check_minors_laplace(h, ctx);
+    rs_hurwitz_clear(h, ctx);
+    fmpz_mpoly_clear(q, ctx);
+    return all;
+}
+
+static void
+random_poly(fmpz_poly_t p, slong n)
+{
+    slong i, kind = rng_range(0, 2);
+
+    fmpz_poly_zero(p);
+    if (kind == 0) {
+        /* plain random coefficients, mostly positive */
+        for (i = 0; i <= n; i++)
+            fmpz_poly_set_coeff_si(p, i, rng_range(-1, 9));
+        if (fmpz_is_zero(p->coeffs + 0) && n > 0)
+            fmpz_poly_set_coeff_si(p, 0, 1);
+        fmpz_poly_set_coeff_si(p, n, rng_range(1, 4) * (rng_range(0, 3) ? 1 : -1));
+    } else {
+        /* product of linear and quadratic factors, mostly stable ones,
+         * sometimes with roots on the imaginary axis or repeated */
+        fmpz_poly_t f;
+        slong d = 0;
+        fmpz_poly_init(f);
+        fmpz_poly_one(p);
+        while (d < n) {
+            fmpz_poly_zero(f);
+            if (n - d >= 2 && rng_range(0, 1)) {
+                fmpz_poly_set_coeff_si(f, 2, 1);
+                fmpz_poly_set_coeff_si(f, 1, rng_range(kind == 1 ? -1 : 0, 4));
+                fmpz_poly_set_coeff_si(f, 0, rng_range(kind == 1 ? -1 : 1, 6));
+                d += 2;
+            } else {
+                fmpz_poly_set_coeff_si(f, 1, 1);
+                fmpz_poly_set_coeff_si(f, 0, rng_range(kind == 1 ? -2 : 0, 5));
+                d += 1;
+            }
+            fmpz_poly_mul(p, p, f);
+        }
+        if (rng_range(0, 3) == 0)
+            fmpz_poly_neg(p, p);
+        fmpz_poly_clear(f);
+    }
+}
+
+static void
+test_numeric_vs_roots(void **state)
+{
+    const char *vars[] = {"z"};
+    tctx_struct t;
+    fmpz_poly_t p;
+    slong n, trial, stable = 0, unstable = 0, undecided = 0, wrong = 0;
+    slong axis = 0;
+    (void) state;
+
+    rng_state = 20240601;
+    tctx_init(&t, vars, 1);
+    fmpz_poly_init(p);
+    for (n = 1; n <= 8; n++) {
+        for (trial = 0; trial < 150; trial++) {
+            int lc, rh, roots;
+            random_poly(p, n);
+            assert_int_equal(fmpz_poly_degree(p), n);
+            lc = lc_all_hold(p, t.ctx, &rh);
+            assert_int_equal(lc, rh);
+            roots = arb_all_left(p);
+            axis += exact_axis_root(p);
+            if (roots < 0) {
+                undecided++;
+                continue;
+            }
+            if (lc != roots) {
+                char *s = fmpz_poly_get_str_pretty(p, "z");
+                print_error("LC %d vs roots %d for %s\n", lc, roots, s);
+                flint_free(s);
+                wrong++;
+            }
+            if (roots)
+                stable++;
+            else
+                unstable++;
+        }
+    }
+    print_message("numeric: %ld stable, %ld unstable (%ld with axis roots), "
+                  "%ld undecided\n", (long) stable, (long) unstable,
+                  (long) axis, (long) undecided);
+    assert_int_equal(wrong, 0);
+    /* the sample must exercise both verdicts */
+    assert_true(stable >= 200);
+    assert_true(unstable >= 200);
+    assert_int_equal(undecided, 0);
+    assert_true(axis >= 50);
+    fmpz_poly_clear(p);
+    tctx_clear(&t);
+}
+
+/* Roots exactly on the imaginary axis (Arb cannot decide these; the exact
+ * conditions must fail): z (z+2); (z^2+1)(z+1); (z^2+4)(z^2+z+1);
+ * (z^2+1)^2 (z+3); z^3 + z. */
+static void
+test_numeric_axis_roots(void **state)
+{
+    const char *vars[] = {"z"};
+    const char *polys[] = {"z^2 + 2*z", "z^3 + z^2 + z + 1",
+                           "z^4 + z^3 + 5*z^2 + 4*z + 4",
+                           "(z^2+1)^2*(z+3)", "z^3 + z"};
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    size_t j;
+    slong i;
+    (void) state;
+
+    tctx_init(&t, vars, 1);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_hurwitz_init(h);
+    rs_error_init(err);
+    for (j = 0; j < sizeof(polys) / sizeof(polys[0]); j++) {
+        int all = 1;
+        set_str(q, polys[j], &t);
+        assert_int_equal(rs_hurwitz_compute(h, q, 0, NULL, t.ctx, err), RS_OK);
+        for (i = 0; i < h->ncond; i++)
+            all &= h->cond[i].trivially_true;
+        assert_int_equal(all, 0);
+    }
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
+/* A degree-12 symbolic case for speed and consistency: q = product of
+ * (z^2 + b z + c) and (z + d) factors; D_12 = a_0 D_11, and every minor
+ * specialised at integer points equals the numeric determinant (Laplace of
+ * size 12 being too slow). */
+static void
+test_degree12(void **state)
+{
+    const char *vars[] = {"b", "c", "d", "z"};
+    rs_sign_t sign[] = {RS_SIGN_POSITIVE, RS_SIGN_POSITIVE, RS_SIGN_POSITIVE,
+                        RS_SIGN_UNKNOWN};
+    tctx_struct t;
+    fmpz_mpoly_t q, d;
+    rs_hurwitz_t h;
+    rs_error_t err;
+    (void) state;
+
+    tctx_init(&t, vars, 4);
+    fmpz_mpoly_init(q, t.ctx);
+    fmpz_mpoly_init(d, t.ctx);
+    rs_hurwitz_init(h);
+    rs_error_init(err);
+    set_str(q, "(z^2 + b*z + c)^3*(z + d)^2*(z^2 + z + 2)*(z^2 + 3*z + 1)",
+            &t);
+    assert_int_equal(rs_hurwitz_compute(h, q, 3, sign, t.ctx, err), RS_OK);
+    assert_int_equal(h->n, 12);
+    fmpz_mpoly_mul(d, h->coeffs + 0, h->minors + 10, t.ctx);
+    assert_true(fmpz_mpoly_equal(d, h->minors + 11, t.ctx));
+    {
+        slong vals[][4] = {{1, 2, 3, 0}, {-2, 5, 1, 0}, {3, -1, -4, 0},
+                           {0, 0, 7, 0}, {2, 1, 0, 0}};
+        slong i;
+        for (i = 0; i < 5; i++)
+            check_minors_at(h, vals[i], t.ctx);
+    }
+    /* all coefficients are sums of positive terms: trivially true */
+    assert_int_equal(find_cond(h, "a_0")->trivially_true, 1);
+    assert_int_equal(find_cond(h, "a_12")->trivially_true, 1);
+    /* (z + d)^2 (z^2+bz+c)^3 ... is stable for b, c, d > 0, so D_11 > 0
+     * must hold on the whole positive orthant; in particular it is not
+     * trivially false */
+    assert_int_equal(find_cond(h, "D_11")->trivially_false, 0);
+    rs_hurwitz_clear(h, t.ctx);
+    fmpz_mpoly_clear(q, t.ctx);
+    fmpz_mpoly_clear(d, t.ctx);
+    tctx_clear(&t);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sign),
+        cmocka_unit_test(test_degree2_symbolic),
+        cmocka_unit_test(test_degree3_symbolic),
+        cmocka_unit_test(test_degree4_symbolic),
+        cmocka_unit_test(test_minors_vs_laplace),
+        cmocka_unit_test(test_minors_large_sparse),
+        cmocka_unit_test(test_zero_pivot),
+        cmocka_unit_test(test_assumptions),
+        cmocka_unit_test(test_leading_sign),
+        cmocka_unit_test(test_constants),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_numeric_vs_roots),
+        cmocka_unit_test(test_numeric_axis_roots),
+        cmocka_unit_test(test_degree12),
+    };
+    int r = cmocka_run_group_tests(tests, NULL, NULL);
+    flint_cleanup_master();
+    return r;
+}
