@@ -57,6 +57,20 @@ const char *rs_status_name(rs_status_t s); /* "stable", "marginal", "unstable" *
  * p must be non-zero.  Returns RS_OK or an error code. */
 int rs_rootcount_factor(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err);
 
+/* Helpers shared by the exact counting modules (rootcount, jury). */
+
+/* Record nroots distinct unit-circle roots of multiplicity mult: adds to
+ * on and on_mult (not to at_one / at_minus_one). */
+void rs_rootcount_add_on(rs_rootcount_t rc, slong mult, slong nroots);
+
+/* g palindromic of even degree 2m (g = lambda^(2m) g(1/lambda)):
+ * sets F of degree m with g(lambda) = lambda^m F(lambda + 1/lambda). */
+void rs_rootcount_reciprocal_to_x(fmpz_poly_t F, const fmpz_poly_t g);
+
+/* Number of distinct real roots of f != 0 in the open interval (a, b), by a
+ * Sturm sequence over Q.  Requires f(a) != 0 and f(b) != 0. */
+slong rs_rootcount_real_roots_open(const fmpz_poly_t f, slong a, slong b);
+
 #ifdef __cplusplus
 }
 #endif
