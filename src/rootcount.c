@@ -68,7 +68,7 @@ const char *rs_status_name(rs_status_t s)
     }
 }
 
-void rs_rootcount_add_on(rs_rootcount_t rc, slong mult, slong nroots)
+void rs_rootcount_add_on(rs_rootcount_struct *rc, slong mult, slong nroots)
 {
     slong slot = FLINT_MIN(mult, RS_ROOTCOUNT_MAXMULT - 1);
     if (nroots <= 0 || mult <= 0)

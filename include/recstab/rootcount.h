@@ -61,7 +61,7 @@ int rs_rootcount_factor(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err);
 
 /* Record nroots distinct unit-circle roots of multiplicity mult: adds to
  * on and on_mult (not to at_one / at_minus_one). */
-void rs_rootcount_add_on(rs_rootcount_t rc, slong mult, slong nroots);
+void rs_rootcount_add_on(rs_rootcount_struct *rc, slong mult, slong nroots);
 
 /* g palindromic of even degree 2m (g = lambda^(2m) g(1/lambda)):
  * sets F of degree m with g(lambda) = lambda^m F(lambda + 1/lambda). */

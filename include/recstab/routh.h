@@ -41,7 +41,10 @@ typedef struct {
     slong nevents;
     rs_routh_event_struct *events;
     rs_rootcount_t count;   /* translated back to lambda: inside/on/outside */
-    slong sign_changes;     /* sign changes in the final first column */
+    slong sign_changes;     /* roots of q with Re z > 0 (z^k removed): the
+                               sign changes of the first column in the
+                               regular case, and what an epsilon-completed
+                               first column would show in singular ones */
 } rs_routh_struct;
 
 typedef rs_routh_struct rs_routh_t[1];
@@ -56,8 +59,10 @@ int rs_routh_fmpz_poly(rs_routh_t r, const fmpz_poly_t p, rs_error_t err);
 
 /* Generic fraction-free Routh array of a multivariate q (variable `var` is z).
  * rows[i] has rowlen[i] entries, polynomials in the parameters (z absent).
- * Each row after the second is exactly divisible by the pivot two rows up,
- * which is divided out (Bareiss-like), so no nested fractions appear.
+ * Row i >= 2 is T_i[j] = (T_{i-1}[0] T_{i-2}[j+1] - T_{i-2}[0] T_{i-1}[j+1])
+ * divided exactly by the pivot T_{i-3}[0] (i >= 4; no division for i = 2, 3),
+ * Bareiss-like, so no nested fractions appear: T_i = Delta_{i-1} r_i with r_i
+ * the rational Routh row and Delta_k the Hurwitz minors (T_i[0] = Delta_i).
  * Returns RS_ERR_MATH if a pivot is identically zero (singular for all
  * parameter values; the caller should then specialise). */
 typedef struct {

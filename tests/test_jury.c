@@ -1,0 +1,205 @@
+/* test_jury.c -- exact Schur-Cohn test on p itself. */
+#include "testutil.h"
+#include <flint/fmpz_poly.h>
+#include "recstab/jury.h"
+#include "recstab/rootcount.h"
+
+static void poly_set(fmpz_poly_t p, slong deg, const long *c)
+{
+    slong i;
+    fmpz_poly_zero(p);
+    for (i = 0; i <= deg; i++)
+        fmpz_poly_set_coeff_si(p, deg - i, c[i]);
+}
+
+/* Same closed forms as test_rootcount.c (roots worked out there):
+ * {deg, coefficients highest first, in, on, out, at1, atm1, #simple circle
+ * roots, #double circle roots, status}. */
+typedef struct {
+    slong deg; long c[6]; slong in, on, out, at1, atm1, m1, m2;
+    rs_status_t st;
+} closed_case;
+
+static const closed_case cases[] = {
+    {1, {2, -1}, 1, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},          /* l-1/2 */
+    {1, {1, -2}, 0, 0, 1, 0, 0, 0, 0, RS_STATUS_UNSTABLE},        /* l-2 */
+    {2, {1, 0, 1}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},      /* l^2+1 */
+    {2, {1, -2, 1}, 0, 2, 0, 2, 0, 0, 1, RS_STATUS_UNSTABLE},     /* (l-1)^2 */
+    {2, {3, 2, -1}, 1, 1, 0, 0, 1, 1, 0, RS_STATUS_MARGINAL},     /* (l+1)(3l-1) */
+    {2, {1, -1, 1}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},     /* l^2-l+1, cd w=1 */
+    {4, {1, 0, 2, 0, 1}, 0, 4, 0, 0, 0, 0, 2, RS_STATUS_UNSTABLE},/* (l^2+1)^2 */
+    {3, {1, 0, 0, 0}, 3, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},     /* l^3 */
+    {2, {4, -8, 5}, 0, 0, 2, 0, 0, 0, 0, RS_STATUS_UNSTABLE},     /* FE w=1/2 */
+    {2, {5, -8, 4}, 2, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},       /* BE w=1/2 */
+    {2, {17, -30, 17}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},  /* trap w=1/2 */
+    {2, {1, 2, 1}, 0, 2, 0, 0, 2, 0, 1, RS_STATUS_UNSTABLE},      /* cd w=2 */
+    {4, {1, 0, 0, 0, -1}, 0, 4, 0, 1, 1, 4, 0, RS_STATUS_MARGINAL},/* l^4-1 */
+    {2, {2, -5, 2}, 1, 0, 1, 0, 0, 0, 0, RS_STATUS_UNSTABLE},     /* (l-2)(2l-1) */
+    {0, {7}, 0, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},              /* 7 */
+};
+
+static void test_closed_forms(void **state)
+{
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+        const closed_case *c = cases + i;
+        fmpz_poly_t p;
+        rs_jury_t j;
+        rs_error_t err;
+        fmpz_poly_init(p);
+        rs_jury_init(j);
+        rs_error_init(err);
+        poly_set(p, c->deg, c->c);
+        assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+        assert_int_equal(j->count->degree, c->deg);
+        assert_int_equal(j->count->inside, c->in);
+        assert_int_equal(j->count->on, c->on);
+        assert_int_equal(j->count->outside, c->out);
+        assert_int_equal(j->count->at_one, c->at1);
+        assert_int_equal(j->count->at_minus_one, c->atm1);
+        assert_int_equal(j->count->on_mult[1], c->m1);
+        assert_int_equal(j->count->on_mult[2], c->m2);
+        assert_int_equal(rs_rootcount_status(j->count), c->st);
+        rs_jury_clear(j);
+        fmpz_poly_clear(p);
+    }
+}
+
+/* Sign convention of the Schur-Cohn matrix, degree 2 (degree 1 is covered
+ * by l - 1/2 and l - 2 above): (l - 1/2)^2 = (4l^2 - 4l + 1)/4 gives
+ * S = [[15, -12], [-12, 15]], eigenvalues 3 and 27: two positive, two
+ * inside.  (l - 1/2)(l - 3) -> 2l^2 - 7l + 3 gives S = [[-5, 7], [7, -5]],
+ * eigenvalues 2 and -12: one inside, one outside.  (Hand computation.) */
+static void test_sign_convention(void **state)
+{
+    static const long a[] = {4, -4, 1}, b[] = {2, -7, 3};
+    fmpz_poly_t p;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    rs_jury_init(j);
+    poly_set(p, 2, a);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 2);
+    assert_int_equal(j->gcd_degree, 0);
+    poly_set(p, 2, b);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 1);
+    assert_int_equal(j->count->outside, 1);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+}
+
+/* Classical table by hand.  f0 = 2l - 1: a0 = -1, a1 = 2,
+ * f1 = a0 f0 - a1 f0* = -(2l - 1) - 2(2 - l) = -3, primitive -1;
+ * delta = -3 < 0, so in(f0) = 1 - in(f1) = 1.
+ * f0 = 2l^2 - l (root 0 and 1/2): f0* = 2 - l, f1 = 0 - 2(2 - l) =
+ * 2l - 4 -> l - 2; f2 = -2(l - 2) - (1 - 2l) = 3 -> 1; in(f1) = 0 (delta > 0),
+ * in(f0) = 2 - 0 = 2 (delta -4 < 0). */
+static void test_table(void **state)
+{
+    static const long a[] = {2, -1}, b[] = {2, -1, 0}, b1[] = {1, -2};
+    fmpz_poly_t p, w;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(w);
+    rs_jury_init(j);
+    poly_set(p, 1, a);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->table_regular, 1);
+    assert_int_equal(j->nrows, 2);
+    assert_true(fmpz_poly_equal(j->rows + 0, p));
+    fmpz_poly_set_si(w, -1);
+    assert_true(fmpz_poly_equal(j->rows + 1, w));
+
+    poly_set(p, 2, b);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->table_regular, 1);
+    assert_int_equal(j->nrows, 3);
+    poly_set(w, 1, b1);
+    assert_true(fmpz_poly_equal(j->rows + 1, w));
+    fmpz_poly_set_si(w, 1);
+    assert_true(fmpz_poly_equal(j->rows + 2, w));
+    assert_int_equal(j->count->inside, 2);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(w);
+}
+
+/* Singular tables.  l^2 + 1: a0 = a2 -> delta = 0 at once; gcd(p, p*) = p.
+ * (l - 2)^2 (2l - 1): gcd = (l - 2)(2l - 1) (degree 2), h = l - 2; the
+ * construction gives 1 inside, 2 outside.
+ * (l^2 + 1)^2 (l - 3)(2l - 1): repeated circle roots plus a non-reciprocal
+ * part; +-i double, 1/2 inside, 3 outside (construction). */
+static void test_singular(void **state)
+{
+    static const long a[] = {1, 0, 1}, b[] = {2, -9, 12, -4};
+    fmpz_poly_t p, t;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(t);
+    rs_jury_init(j);
+    poly_set(p, 2, a);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->table_regular, 0);
+    assert_int_equal(j->gcd_degree, 2);
+
+    poly_set(p, 3, b);          /* (l^2 - 4l + 4)(2l - 1) */
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->gcd_degree, 2);
+    assert_int_equal(j->count->inside, 1);
+    assert_int_equal(j->count->outside, 2);
+    assert_int_equal(j->count->on, 0);
+
+    poly_set(p, 2, a);
+    fmpz_poly_pow(p, p, 2);
+    fmpz_poly_set_coeff_si(t, 1, 1);
+    fmpz_poly_set_coeff_si(t, 0, -3);
+    fmpz_poly_mul(p, p, t);
+    fmpz_poly_set_coeff_si(t, 1, 2);
+    fmpz_poly_set_coeff_si(t, 0, -1);
+    fmpz_poly_mul(p, p, t);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 1);
+    assert_int_equal(j->count->outside, 1);
+    assert_int_equal(j->count->on, 4);
+    assert_int_equal(j->count->on_mult[2], 2);
+    assert_int_equal(rs_rootcount_status(j->count), RS_STATUS_UNSTABLE);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(t);
+}
+
+static void test_zero_input(void **state)
+{
+    fmpz_poly_t p;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    rs_jury_init(j);
+    rs_error_init(err);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_ERR_INPUT);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_closed_forms),
+        cmocka_unit_test(test_sign_convention),
+        cmocka_unit_test(test_table),
+        cmocka_unit_test(test_singular),
+        cmocka_unit_test(test_zero_input),
+    };
+    int rc = cmocka_run_group_tests(tests, NULL, NULL);
+    flint_cleanup();
+    return rc;
+}
