@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""sympy_park.py -- the SymPy peer of `recstab cases/park-staggered.case`.
+
+Does by hand in SymPy what recstab does for the Park (2005) staggered scheme
+(cases/park-staggered.case) and times each stage with time.perf_counter:
+
+  matrix    the 4x4 lambda-matrix of the case (unknowns y, x, v, a; params
+            m, muh, wh, alpha; yp[n+1] = (1+alpha) y[n] - alpha y[n-1];
+            x[n+k] -> lambda^k, every row multiplied by the power of lambda
+            that makes its lowest power lambda^0)
+  det       Matrix.det(method='bareiss'), then expand; the power of lambda
+            that divides it is removed (recstab reports it as
+            removed_lambda_power) -> p(lambda)
+  bilinear  q(z) = (1-z)^4 p((1+z)/(1-z)), expanded
+  hurwitz   the Hurwitz matrix of q and its leading principal minors D1..D4,
+            each det(method='bareiss') and expand
+  factor    factor() of D1..D4 (skip with --no-factor)
+
+Then, outside the timed total, it checks that SymPy's p equals recstab's up to
+a constant factor: it runs `build/recstab --json --analyse charpoly
+cases/park-staggered.case` (if the binary exists), parses "coeffs" (lowest
+power first, strings in m, muh, wh, alpha) and prints "agree" when
+simplify(p_sympy / p_recstab) is a constant, "DISAGREE" (exit 1) otherwise.
+
+Without SymPy it prints why and "skipped", and exits 0.
+
+Output ends with machine-readable lines for bench/run.sh:
+  sympy_total_s: <sum of the timed stages>
+  sympy_charpoly_s: <matrix + det>
+  check: agree|DISAGREE|skipped (<reason>)
+"""
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+CASE = os.path.join("cases", "park-staggered.case")
+
+t_start = time.perf_counter()
+try:
+    import sympy as sp
+except ImportError as e:  # pragma: no cover - depends on the machine
+    print("sympy_park.py: SymPy is not importable (%s);" % e)
+    print("  install it with: apt-get install python3-sympy")
+    print("skipped")
+    print("check: skipped (no sympy)")
+    sys.exit(0)
+t_import = time.perf_counter() - t_start
+
+
+def build_matrix():
+    """The lambda-matrix, built from the case's equations term by term."""
+    m, muh, wh, alpha, lam = sp.symbols("m muh wh alpha lambda")
+    unknowns = ["y", "x", "v", "a"]
+
+    def sh(name, k):
+        # x[n+k] -> lambda^k times the unknown's indicator symbol
+        return sp.Symbol("U_" + name) * lam**k
+
+    y = lambda k: sh("y", k)
+    x = lambda k: sh("x", k)
+    v = lambda k: sh("v", k)
+    a = lambda k: sh("a", k)
+    yp1 = (1 + alpha) * y(0) - alpha * y(-1)  # let yp[n+1] = ...
+    eqs = [  # lhs - rhs
+        3*y(1) - 4*y(0) + y(-1) + 2*(1 + m)*muh*y(1) + 2*wh**2*x(1),
+        x(1) - x(0) - (v(1) + v(0)) / 2,
+        v(1) - v(0) - (a(1) + a(0)) / 2,
+        a(1) + wh**2*x(1) + m*muh*yp1,
+    ]
+    rows = []
+    for e in eqs:
+        e = sp.expand(e)
+        row = [e.coeff(sp.Symbol("U_" + u)) for u in unknowns]
+        # lowest power of lambda in the row -> multiply it up to lambda^0
+        low = min(min(sp.Poly(sp.expand(c * lam**8), lam).monoms())[0] - 8
+                  for c in row if c != 0)
+        rows.append([sp.expand(c * lam**(-low)) for c in row])
+    return sp.Matrix(rows), (m, muh, wh, alpha, lam)
+
+
+def main():
+    do_factor = "--no-factor" not in sys.argv[1:]
+    stages = []
+
+    def stage(name, fn):
+        t0 = time.perf_counter()
+        r = fn()
+        stages.append((name, time.perf_counter() - t0))
+        return r
+
+    M, (m, muh, wh, alpha, lam) = stage("matrix", build_matrix)
+
+    def det():
+        d = sp.expand(M.det(method="bareiss"))
+        P = sp.Poly(d, lam)
+        low = min(mon[0] for mon in P.monoms())
+        return sp.expand(sp.cancel(d / lam**low)), low
+    p, removed = stage("det", det)
+
+    z = sp.Symbol("z")
+
+    def bilinear():
+        n = sp.degree(p, lam)
+        return sp.expand(sp.cancel((1 - z)**n * p.subs(lam, (1 + z) / (1 - z))))
+    q = stage("bilinear", bilinear)
+
+    def hurwitz():
+        c = sp.Poly(q, z).all_coeffs()  # a0 (leading) .. an
+        n = len(c) - 1
+        coef = lambda k: c[k] if 0 <= k <= n else 0
+        H = sp.Matrix(n, n, lambda i, j: coef(2*(j + 1) - (i + 1)))
+        return H, [sp.expand(H[:k, :k].det(method="bareiss"))
+                   for k in range(1, n + 1)]
+    H, minors = stage("hurwitz", hurwitz)
+
+    if do_factor:
+        factored = stage("factor", lambda: [sp.factor(D) for D in minors])
+    total = sum(t for _, t in stages)
+
+    print("SymPy %s, Python %s" % (sp.__version__, sys.version.split()[0]))
+    print("lambda-matrix (rows normalised to lowest power lambda^0):")
+    for i in range(M.rows):
+        print("  [" + ", ".join(str(M[i, j]) for j in range(M.cols)) + "]")
+    print("removed_lambda_power: %d" % removed)
+    print("p(lambda) =", sp.collect(p, lam))
+    print("q(z) =", sp.collect(q, z))
+    for k, D in enumerate(minors, 1):
+        print("D%d = %s" % (k, D))
+        if do_factor:
+            print("   = %s" % factored[k - 1])
+    print()
+    print("%-10s %12s" % ("stage", "seconds"))
+    print("%-10s %12.6f   (not in total)" % ("import", t_import))
+    for name, t in stages:
+        print("%-10s %12.6f" % (name, t))
+    print("%-10s %12.6f" % ("total", total))
+    print()
+
+    verdict = check_against_recstab(p, (m, muh, wh, alpha, lam))
+    print("sympy_total_s: %.6f" % total)
+    print("sympy_charpoly_s: %.6f" % sum(t for n, t in stages
+                                         if n in ("matrix", "det")))
+    print("check: %s" % verdict)
+    return 1 if verdict.startswith("DISAGREE") else 0
+
+
+def check_against_recstab(p, syms):
+    m, muh, wh, alpha, lam = syms
+    exe = os.environ.get("RECSTAB", os.path.join(ROOT, "build", "recstab"))
+    if not os.access(exe, os.X_OK):
+        print("recstab comparison skipped: no executable %s (run make all)" % exe)
+        return "skipped (no %s)" % exe
+    cmd = [exe, "--json", "--analyse", "charpoly", CASE]
+    r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+    try:
+        doc = json.loads(r.stdout)
+        res = [x for x in doc["results"] if x.get("analysis") == "charpoly"][0]
+        coeffs = res["coeffs"]
+    except (ValueError, KeyError, IndexError) as e:
+        print("recstab output not understood (%s); exit %d; stderr:\n%s"
+              % (e, r.returncode, r.stderr))
+        return "DISAGREE (unreadable recstab output)"
+    loc = {"m": m, "muh": muh, "wh": wh, "alpha": alpha}
+    pr = sp.expand(sum(sp.sympify(c.replace("^", "**"), locals=loc) * lam**k
+                       for k, c in enumerate(coeffs)))
+    print("recstab p(lambda) =", sp.collect(pr, lam))
+    if pr == 0:
+        return "DISAGREE (recstab p = 0)"
+    ratio = sp.simplify(sp.cancel(p / pr))
+    const = not ratio.free_symbols
+    print("p_sympy / p_recstab = %s -> %s" % (ratio, "agree" if const else "DISAGREE"))
+    return "agree (ratio %s)" % ratio if const else "DISAGREE (ratio %s)" % ratio
+
+
+if __name__ == "__main__":
+    sys.exit(main())
