@@ -1,0 +1,153 @@
+#!/bin/sh
+# run.sh -- recstab's benchmarks, peers side by side (`make bench` runs this).
+#
+#   (a) whole-process time of  build/recstab --analyse charpoly cases/park-staggered.case
+#       (target: median under 5 ms)
+#   (b) whole-process time of  build/recstab cases/park-staggered.case
+#       (every analysis the case lists)
+#   (c) build/recstab --analyse charpoly --analyse bilinear --analyse hurwitz
+#       on the same case -- the work SymPy does in (d) -- when this build of
+#       recstab knows those analyses (skipped otherwise)
+#   (d) bench/sympy_park.py, the SymPy peer, SYMPY_RUNS fresh processes
+#   (e) build/bench_radius (compiled from bench/bench_radius.c when present)
+#   and a summary line: recstab median ms vs SymPy total seconds, ratio.
+#
+# Environment: BENCH_N (runs per command line, default 200), SYMPY_RUNS
+# (default 3; the median total is used), BENCH_RADIUS=0 skips (e),
+# CC (default cc), PYTHON (default python3).
+set -u
+cd "$(dirname "$0")/.." || exit 2
+
+N=${BENCH_N:-200}
+SYMPY_RUNS=${SYMPY_RUNS:-3}
+PY=${PYTHON:-python3}
+CASE=cases/park-staggered.case
+BIN=build/recstab
+
+if [ ! -x "$BIN" ]; then
+    echo "run.sh: $BIN not found; run 'make all' first" >&2
+    exit 2
+fi
+
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [ -n "$(git status --porcelain --untracked-files=no 2>/dev/null)" ]; then
+    commit="$commit (working tree has uncommitted changes)"
+fi
+echo "== recstab benchmarks"
+echo "date:    $(date -u '+%Y-%m-%d %H:%M UTC')"
+echo "commit:  $commit"
+echo "machine: $(uname -sm), $(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?') cores," \
+     "load average $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
+echo
+
+median_of() { sed -n 's/^median_ms: *//p'; }
+
+echo "== (a) charpoly only (target: median < 5 ms)"
+out_a=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --analyse charpoly "$CASE")
+echo "$out_a"
+med_a=$(echo "$out_a" | median_of)
+echo
+
+echo "== (b) every analysis the case lists"
+out_b=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" "$CASE")
+echo "$out_b"
+med_b=$(echo "$out_b" | median_of)
+echo
+
+echo "== (c) charpoly + bilinear + hurwitz (what the SymPy peer computes)"
+med_c=""
+if "$BIN" --analyse charpoly --analyse bilinear --analyse hurwitz "$CASE" \
+        >/dev/null 2>&1; then
+    out_c=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --analyse charpoly \
+            --analyse bilinear --analyse hurwitz "$CASE")
+    echo "$out_c"
+    med_c=$(echo "$out_c" | median_of)
+else
+    echo "skipped: this build of recstab does not run those analyses on $CASE"
+fi
+echo
+
+echo "== (d) SymPy peer: bench/sympy_park.py ($SYMPY_RUNS fresh processes)"
+sym_tot=""; sym_cp=""; sym_wall=""; sym_check=""
+if ! command -v "$PY" >/dev/null 2>&1; then
+    echo "skipped: $PY not found"
+else
+    i=1
+    runs=$(mktemp "${TMPDIR:-/tmp}/sympy_runs.XXXXXX") || exit 2
+    while [ "$i" -le "$SYMPY_RUNS" ]; do
+        t0=$(date +%s%N)
+        out_d=$("$PY" bench/sympy_park.py)
+        rc=$?
+        t1=$(date +%s%N)
+        [ "$i" -eq 1 ] && echo "$out_d"
+        tot=$(echo "$out_d" | sed -n 's/^sympy_total_s: *//p')
+        cp=$(echo "$out_d" | sed -n 's/^sympy_charpoly_s: *//p')
+        sym_check=$(echo "$out_d" | sed -n 's/^check: *//p')
+        [ $rc -eq 0 ] || echo "sympy_park.py exited $rc"
+        [ -n "$tot" ] || break
+        echo "$tot $cp $(( (t1 - t0) / 1000000 ))" >>"$runs"
+        i=$((i + 1))
+    done
+    if [ -s "$runs" ]; then
+        # median of each column
+        col_median() {
+            cut -d' ' -f"$1" "$runs" | sort -g | awk '
+                { v[NR] = $1 }
+                END { if (NR % 2) print v[(NR + 1) / 2];
+                      else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+        }
+        sym_tot=$(col_median 1); sym_cp=$(col_median 2); sym_wall=$(col_median 3)
+        echo
+        echo "SymPy over $(wc -l <"$runs" | tr -d ' ') runs (median):" \
+             "timed stages ${sym_tot} s, matrix+det ${sym_cp} s," \
+             "whole process (with import) ${sym_wall} ms"
+    fi
+    rm -f "$runs"
+fi
+echo
+
+echo "== (e) bench_radius"
+if [ "${BENCH_RADIUS:-1}" = 0 ]; then
+    echo "skipped (BENCH_RADIUS=0)"
+else
+    radius_ok=1
+    if [ -f bench/bench_radius.c ]; then
+        if ! ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -O2 -Iinclude \
+                -I/usr/include/flint bench/bench_radius.c build/librecstab.a \
+                -o build/bench_radius -lflint-arb -lflint -lgsl -lgslcblas \
+                -ljansson -lmpfr -lgmp -lm; then
+            echo "bench_radius.c did not compile; skipping it (not running a stale build/bench_radius)"
+            radius_ok=0
+        fi
+    fi
+    if [ $radius_ok -eq 1 ] && [ -x build/bench_radius ]; then
+        build/bench_radius || echo "build/bench_radius exited $?"
+    elif [ $radius_ok -eq 1 ]; then
+        echo "skipped: no bench/bench_radius.c and no build/bench_radius"
+    fi
+fi
+echo
+
+echo "== summary (park-staggered, whole-process medians)"
+ratio() { awk -v s="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.0f", s * 1000 / r; else print "?" }'; }
+[ -n "$med_a" ] && echo "recstab charpoly only:        ${med_a} ms (target < 5 ms:" \
+    "$(awk -v m="$med_a" 'BEGIN { print (m < 5) ? "met" : "NOT met" }'))"
+[ -n "$med_b" ] && echo "recstab case's analyses:      ${med_b} ms"
+[ -n "$med_c" ] && echo "recstab charpoly+bilinear+hurwitz: ${med_c} ms"
+if [ -n "$sym_tot" ]; then
+    echo "SymPy charpoly (matrix+det):  ${sym_cp} s   -> recstab (a) is $(ratio "$sym_cp" "$med_a")x faster"
+    if [ -n "$med_c" ]; then
+        echo "SymPy total (det, bilinear, Hurwitz minors, factor): ${sym_tot} s" \
+             "-> recstab (c) is $(ratio "$sym_tot" "$med_c")x faster"
+    else
+        echo "SymPy total (det, bilinear, Hurwitz minors, factor): ${sym_tot} s" \
+             "vs recstab (b) ${med_b} ms: ratio $(ratio "$sym_tot" "$med_b")x" \
+             "(recstab (b) does less work: no bilinear/Hurwitz yet)"
+    fi
+    echo "SymPy process wall time incl. Python start-up and import: ${sym_wall} ms"
+    echo "SymPy vs recstab p(lambda): ${sym_check}"
+else
+    echo "SymPy: skipped"
+fi
+case $sym_check in DISAGREE*) exit 1 ;; esac
+exit 0
