@@ -6,6 +6,8 @@
 #include "recstab/analysis.h"
 #include "recstab/analysis_impl.h"
 #include "recstab/polyfmt.h"
+#include "recstab/bilinear.h"
+#include "recstab/cond.h"
 
 const char *const rs_analysis_names[] = {
     "charpoly", "expect", NULL
@@ -143,6 +145,21 @@ json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
     return j;
 }
 
+json_t *rs_json_collected(const fmpz_mpoly_t p, slong var, const rs_scheme_t s, const char *varname)
+{
+    const char **vars = malloc((size_t) s->nvars * sizeof(char *));
+    slong i;
+    char *str;
+    json_t *j;
+    for (i = 0; i < s->nvars; i++) vars[i] = s->vars[i];
+    vars[var] = varname;
+    str = rs_polyfmt_collected(p, var, vars, s->zctx);
+    j = json_string(str);
+    free(str);
+    free(vars);
+    return j;
+}
+
 json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s)
 {
     json_t *arr = json_array();
@@ -167,6 +184,21 @@ json_t *rs_json_nonzero(const rs_scheme_t s)
         free(t);
     }
     return arr;
+}
+
+int *rs_run_signs(rs_run_t *run, const rs_scheme_t s)
+{
+    const rs_case_struct *c = run->c;
+    rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
+    int *sign = flint_calloc(s->nvars, sizeof(int));
+    slong i;
+    rs_bounds_init(b, c->nparams);
+    for (i = 0; i < c->nassume; i++)
+        rs_bounds_add(b, &c->assume[i], c, run->err);
+    rs_bounds_signs(sign, b, c->nparams);
+    rs_bounds_clear(b, c->nparams);
+    flint_free(b);
+    return sign;
 }
 
 /* Request text helpers */
@@ -238,7 +270,8 @@ static int an_charpoly(rs_run_t *run, const rs_request_t *q, const char *rest)
 /* Compare an expected polynomial (fmpq, in the variant's variables, values
  * substituted) with the derived one; fills status/difference into o. */
 void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t derived,
-                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s)
+                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s,
+                     const char *varname)
 {
     fmpz_mpoly_t e, d;
     fmpq_t scale;
@@ -261,9 +294,9 @@ void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t 
     json_object_set_new(o, "status", json_string(status));
     if (strcmp(status, "different") == 0) {
         fmpz_mpoly_sub(d, e, derived, s->zctx);
-        json_object_set_new(o, "difference", rs_json_zpoly(d, s));
-        json_object_set_new(o, "expected_normalised", rs_json_zpoly(e, s));
-        json_object_set_new(o, "derived", rs_json_zpoly(derived, s));
+        json_object_set_new(o, "difference", rs_json_collected(d, var, s, varname));
+        json_object_set_new(o, "expected_normalised", rs_json_collected(e, var, s, varname));
+        json_object_set_new(o, "derived", rs_json_collected(derived, var, s, varname));
         {
             /* is the printed one a multiple of ours by a parameter factor? */
             fmpz_mpoly_t qt;
@@ -291,8 +324,12 @@ static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
     rs_expr_t *e = NULL;
     fmpq_mpoly_t num, den;
     json_t *o;
-    int r;
-    if (strncmp(what, "charpoly", 8) != 0 || !(what[8] == ' ' || what[8] == '\t'))
+    int r, bil;
+    if (strncmp(what, "charpoly", 8) == 0 && (what[8] == ' ' || what[8] == '\t'))
+        bil = 0;
+    else if (strncmp(what, "bilinear", 8) == 0 && (what[8] == ' ' || what[8] == '\t'))
+        bil = 1;
+    else
         return rs_req_error(run, q, what, RS_ERR_INPUT,
                             "expected 'charpoly' or 'bilinear' followed by a polynomial, found '%s'", what);
     exprtext = rs_req_skip_word(what);
@@ -313,34 +350,43 @@ static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (r != RS_OK) { rs_assign_free(a, n); return r; }
     fmpq_mpoly_init(num, v->s->ctx);
     fmpq_mpoly_init(den, v->s->ctx);
-    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 1, run->err);
+    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, bil ? 2 : 1, run->err);
     rs_expr_free(e);
     if (r == RS_OK) {
-        fmpz_mpoly_t raw, lam;
+        const fmpz_mpoly_ctx_struct *zctx = v->s->zctx;
+        fmpz_mpoly_t raw, norm;
         for (i = 0; i < n; i++)
             fmpq_mpoly_evaluate_one_fmpq(num, num, a[i].var, a[i].value, v->s->ctx);
-        /* the raw determinant content * lambda^k * p, for "equal" */
-        fmpz_mpoly_init(raw, v->s->zctx);
-        fmpz_mpoly_init(lam, v->s->zctx);
-        fmpz_mpoly_gen(lam, v->s->lambda_var, v->s->zctx);
-        fmpz_mpoly_pow_ui(lam, lam, (ulong) v->cp->removed_lambda_power, v->s->zctx);
-        fmpz_mpoly_mul(raw, v->cp->p, lam, v->s->zctx);
+        fmpz_mpoly_init(raw, zctx);
+        fmpz_mpoly_init(norm, zctx);
+        if (bil) {
+            /* q itself is "equal"; its normalised form for "proportional" */
+            rs_bilinear_fmpz_mpoly(raw, v->cp->p, v->s->lambda_var, zctx);
+            fmpz_mpoly_set(norm, raw, zctx);
+            rs_charpoly_normalise(norm, NULL, v->s->lambda_var, zctx);
+        } else {
+            /* the raw determinant lambda^k * p, for "equal" */
+            fmpz_mpoly_gen(raw, v->s->lambda_var, zctx);
+            fmpz_mpoly_pow_ui(raw, raw, (ulong) v->cp->removed_lambda_power, zctx);
+            fmpz_mpoly_mul(raw, v->cp->p, raw, zctx);
+            fmpz_mpoly_set(norm, v->cp->p, zctx);
+        }
         o = json_object();
         json_object_set_new(o, "analysis", json_string("expect"));
-        json_object_set_new(o, "of", json_string("charpoly"));
+        json_object_set_new(o, "of", json_string(bil ? "bilinear" : "charpoly"));
         json_object_set_new(o, "text", json_string(q->text));
         if (fmpq_mpoly_is_zero(num, v->s->ctx)) {
             json_object_set_new(o, "status", json_string("different"));
-            json_object_set_new(o, "difference", rs_json_zpoly(v->cp->p, v->s));
+            json_object_set_new(o, "difference", rs_json_zpoly(norm, v->s));
         } else {
-            rs_compare_poly(o, num, v->cp->p, raw, v->s->lambda_var, v->s);
+            rs_compare_poly(o, num, norm, raw, v->s->lambda_var, v->s, bil ? "z" : "lambda");
         }
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
         if (strcmp(json_string_value(json_object_get(o, "status")), "different") == 0)
             run->outcome |= RS_OUTCOME_FAILED;
         json_array_append_new(run->results, o);
-        fmpz_mpoly_clear(raw, v->s->zctx);
-        fmpz_mpoly_clear(lam, v->s->zctx);
+        fmpz_mpoly_clear(raw, zctx);
+        fmpz_mpoly_clear(norm, zctx);
     }
     fmpq_mpoly_clear(num, v->s->ctx);
     fmpq_mpoly_clear(den, v->s->ctx);
@@ -371,6 +417,9 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     for (i = 0; rs_analysis_extra[i].name != NULL; i++)
         if (strlen(rs_analysis_extra[i].name) == n && strncmp(rs_analysis_extra[i].name, t, n) == 0)
             return rs_analysis_extra[i].fn(run, q, rs_req_skip_word(t));
+    for (i = 0; rs_analysis_numeric[i].name != NULL; i++)
+        if (strlen(rs_analysis_numeric[i].name) == n && strncmp(rs_analysis_numeric[i].name, t, n) == 0)
+            return rs_analysis_numeric[i].fn(run, q, rs_req_skip_word(t));
     {
         char word[80];
         snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);

@@ -1,8 +1,476 @@
-/* analysis_exact.c -- exact stability analyses (bilinear, routh, hurwitz,
- * jury, stability, region, limit, claim). */
+/* analysis_exact.c -- exact stability analyses: bilinear, routh, hurwitz,
+ * jury, stability (this file), region, limit and claim (analysis_region.c). */
+#include <stdlib.h>
 #include <string.h>
 #include "recstab/analysis_impl.h"
+#include "recstab/bilinear.h"
+#include "recstab/routh.h"
+#include "recstab/jury.h"
+#include "recstab/hurwitz.h"
+#include "recstab/rootcount.h"
+#include "recstab/polyfmt.h"
+
+/* The variant with the case's set values substituted. */
+int rs_run_default_variant(rs_run_t *run, rs_variant_t **v)
+{
+    rs_assign_t *a;
+    slong n;
+    int r;
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    r = rs_run_variant(v, run, a, n);
+    rs_assign_free(a, n);
+    return r;
+}
+
+/* Comma-separated parameters still symbolic in p (malloc'd, "" if none). */
+char *rs_run_free_params(const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    size_t cap = 16, len = 0;
+    char *out = malloc(cap);
+    slong i;
+    out[0] = '\0';
+    for (i = 0; i < s->nvars; i++) {
+        size_t need;
+        if (i == s->lambda_var || fmpz_mpoly_degree_si(v->cp->p, i, s->zctx) <= 0) continue;
+        need = strlen(s->vars[i]) + 3;
+        if (len + need + 1 > cap) { cap = 2 * (len + need + 1); out = realloc(out, cap); }
+        len += (size_t) sprintf(out + len, "%s%s", len ? ", " : "", s->vars[i]);
+    }
+    return out;
+}
+
+/* p as a univariate integer polynomial; error naming the free parameters
+ * when some are still symbolic. */
+int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q,
+                        const rs_variant_t *v, const char *what)
+{
+    if (!rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx)) {
+        char *fp = rs_run_free_params(v);
+        char msg[512];
+        snprintf(msg, sizeof msg, "%s needs every parameter set to a number; still symbolic: %s "
+                 "(use set, --set, or region/claim for symbolic parameters)", what, fp);
+        free(fp);
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    return RS_OK;
+}
+
+void rs_json_add_count(json_t *o, const rs_rootcount_t rc)
+{
+    json_t *m = json_array();
+    slong k;
+    json_object_set_new(o, "status", json_string(rs_status_name(rs_rootcount_status(rc))));
+    json_object_set_new(o, "degree", json_integer(rc->degree));
+    json_object_set_new(o, "inside", json_integer(rc->inside));
+    json_object_set_new(o, "on", json_integer(rc->on));
+    json_object_set_new(o, "outside", json_integer(rc->outside));
+    json_object_set_new(o, "at_one", json_integer(rc->at_one));
+    json_object_set_new(o, "at_minus_one", json_integer(rc->at_minus_one));
+    for (k = 1; k < RS_ROOTCOUNT_MAXMULT; k++)
+        if (rc->on_mult[k] > 0)
+            json_array_append_new(m, json_pack("{s:I,s:I}", "multiplicity", (json_int_t) k,
+                                               "roots", (json_int_t) rc->on_mult[k]));
+    json_object_set_new(o, "on_multiplicities", m);
+}
+
+/* The exact count of p by Routh (bilinear) and Schur-Cohn, which must agree:
+ * a disagreement sets the inconsistency flag and says so in o. */
+int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o)
+{
+    rs_routh_t ro;
+    rs_jury_t ju;
+    int r, agree = 1;
+    rs_routh_init(ro);
+    rs_jury_init(ju);
+    r = rs_routh_fmpz_poly(ro, p, run->err);
+    if (r == RS_OK) r = rs_jury_fmpz_poly(ju, p, run->err);
+    if (r == RS_OK) {
+        agree = rs_rootcount_equal(ro->count, ju->count);
+        *rc = *ro->count;
+        if (!agree) {
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+            if (o != NULL) {
+                json_t *d = json_object();
+                rs_json_add_count(d, ju->count);
+                json_object_set_new(o, "schur_cohn_count", d);
+            }
+        }
+        if (o != NULL) {
+            json_object_set_new(o, "methods", json_pack("[ss]", "routh (bilinear)", "schur-cohn"));
+            json_object_set_new(o, "agree", json_boolean(agree));
+        }
+    }
+    rs_routh_clear(ro);
+    rs_jury_clear(ju);
+    return r;
+}
+
+/* ---- bilinear ------------------------------------------------------------- */
+
+static slong min_exp_var(const fmpz_mpoly_t p, slong v, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, best = WORD_MAX, n = fmpz_mpoly_length(p, ctx);
+    slong *e = flint_malloc(ctx->minfo->nvars * sizeof(slong));
+    for (i = 0; i < n; i++) {
+        fmpz_mpoly_get_term_exp_si(e, p, i, ctx);
+        if (e[v] < best) best = e[v];
+    }
+    flint_free(e);
+    return n ? best : 0;
+}
+
+static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t qz, t;
+    json_t *o;
+    slong d, lv;
+    int r;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after bilinear, found '%s'", rest);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    lv = s->lambda_var;
+    fmpz_mpoly_init(qz, s->zctx);
+    fmpz_mpoly_init(t, s->zctx);
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+    d = fmpz_mpoly_degree_si(qz, lv, s->zctx);
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("bilinear"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "degree", json_integer(d));
+    json_object_set_new(o, "coeffs", rs_json_coeffs(qz, lv, s));
+    json_object_set_new(o, "poly", rs_json_collected(qz, lv, s, "z"));
+    json_object_set_new(o, "degree_drop", json_integer(v->cp->degree - d));
+    json_object_set_new(o, "zero_mult", json_integer(min_exp_var(qz, lv, s->zctx)));
+    /* where lambda = -1 / lambda = 1 become roots: p(-1) = 0 / p(1) = 0 */
+    {
+        fmpz_t one;
+        fmpz_init(one);
+        fmpz_set_si(one, 1);
+        fmpz_mpoly_evaluate_one_fmpz(t, v->cp->p, lv, one, s->zctx);
+        json_object_set_new(o, "p_at_1", rs_json_zpoly(t, s));
+        fmpz_set_si(one, -1);
+        fmpz_mpoly_evaluate_one_fmpz(t, v->cp->p, lv, one, s->zctx);
+        json_object_set_new(o, "p_at_minus_1", rs_json_zpoly(t, s));
+        fmpz_clear(one);
+    }
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    fmpz_mpoly_clear(qz, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
+    return RS_OK;
+}
+
+/* ---- routh ---------------------------------------------------------------- */
+
+static const char *event_name(rs_routh_event_kind_t k)
+{
+    switch (k) {
+    case RS_ROUTH_EVENT_DEGREE_DROP: return "degree_drop";
+    case RS_ROUTH_EVENT_ZERO_AT_ORIGIN: return "zero_at_origin";
+    case RS_ROUTH_EVENT_ZERO_PIVOT: return "zero_pivot";
+    case RS_ROUTH_EVENT_ZERO_ROW: return "zero_row";
+    }
+    return "?";
+}
+
+static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_poly_t p;
+    json_t *o, *rows;
+    slong i, j;
+    int r;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after routh, found '%s'", rest);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("routh"));
+    json_object_set_new(o, "var", json_string("z"));
+    rows = json_array();
+    fmpz_poly_init(p);
+    if (rs_charpoly_get_fmpz_poly(p, v->cp->p, s->lambda_var, s->zctx)) {
+        rs_routh_t ro;
+        json_t *ev = json_array();
+        rs_routh_init(ro);
+        r = rs_routh_fmpz_poly(ro, p, run->err);
+        if (r == RS_OK) {
+            for (i = 0; i < ro->nrows; i++) {
+                json_t *row = json_array();
+                for (j = 0; j < ro->rowlen[i]; j++)
+                    json_array_append_new(row, rs_json_fmpq(ro->rows[i] + j));
+                json_array_append_new(rows, row);
+            }
+            for (i = 0; i < ro->nevents; i++)
+                json_array_append_new(ev, json_pack("{s:s,s:I,s:I,s:s}", "kind",
+                                      event_name(ro->events[i].kind), "row", (json_int_t) ro->events[i].row,
+                                      "count", (json_int_t) ro->events[i].count, "text",
+                                      ro->events[i].text ? ro->events[i].text : ""));
+            json_object_set_new(o, "symbolic", json_false());
+            json_object_set_new(o, "rows", rows);
+            json_object_set_new(o, "events", ev);
+            json_object_set_new(o, "sign_changes", json_integer(ro->sign_changes));
+            rs_json_add_count(o, ro->count);
+            rows = NULL;
+        } else {
+            json_decref(ev);
+        }
+        rs_routh_clear(ro);
+    } else {
+        rs_routh_mpoly_t rm;
+        fmpz_mpoly_t qz;
+        fmpz_mpoly_init(qz, s->zctx);
+        rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+        rs_routh_mpoly_init(rm);
+        r = rs_routh_mpoly(rm, qz, s->lambda_var, s->zctx, run->err);
+        if (r == RS_OK) {
+            for (i = 0; i < rm->nrows; i++) {
+                json_t *row = json_array();
+                for (j = 0; j < rm->rowlen[i]; j++)
+                    json_array_append_new(row, rs_json_zpoly(rm->rows[i] + j, s));
+                json_array_append_new(rows, row);
+            }
+            json_object_set_new(o, "symbolic", json_true());
+            json_object_set_new(o, "rows", rows);
+            json_object_set_new(o, "note", json_string(
+                "fraction-free rows (each divided exactly by the pivot three rows up); valid where the "
+                "first-column entries do not vanish: all roots have Re z < 0 iff the first column has one sign"));
+            rows = NULL;
+        } else if (r == RS_ERR_MATH) {
+            /* a pivot vanishes identically: say so and point to the exact tools */
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s", run->err->msg);
+            r = rs_req_error(run, q, q->text, RS_ERR_MATH,
+                             "symbolic Routh array is singular for every parameter value (%s); set the "
+                             "parameters (set/--set) for the exact singular-case treatment, or use hurwitz", msg);
+        }
+        rs_routh_mpoly_clear(rm, s->zctx);
+        fmpz_mpoly_clear(qz, s->zctx);
+    }
+    fmpz_poly_clear(p);
+    json_decref(rows);
+    if (r != RS_OK) { json_decref(o); return r; }
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    return RS_OK;
+}
+
+/* ---- hurwitz -------------------------------------------------------------- */
+
+static json_t *factor_str(const fmpz_mpoly_t f, const rs_scheme_t s)
+{
+    return rs_json_zpoly(f, s);
+}
+
+int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
+{
+    const rs_scheme_struct *s = v->s;
+    int *sign = rs_run_signs(run, s);
+    int r;
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+    r = rs_hurwitz_compute(h, qz, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err);
+    flint_free(sign);
+    return r;
+}
+
+static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_hurwitz_t h;
+    fmpz_mpoly_t qz;
+    json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
+    slong i, k;
+    int r, all_true = 1, some_false = 0;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after hurwitz, found '%s'", rest);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_init(h);
+    r = rs_run_hurwitz(h, run, v, qz);
+    if (r != RS_OK) {
+        rs_hurwitz_clear(h, s->zctx);
+        fmpz_mpoly_clear(qz, s->zctx);
+        return r;
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("hurwitz"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "degree", json_integer(h->n));
+    json_object_set_new(o, "negated", json_boolean(h->negated));
+    minors = json_array();
+    for (i = 0; i < h->n; i++) json_array_append_new(minors, rs_json_zpoly(h->minors + i, s));
+    json_object_set_new(o, "minors", minors);
+    conds = json_array();
+    nonzero = json_array();
+    dropped = json_array();
+    always = json_array();
+    details = json_array();
+    for (i = 0; i < h->ncond; i++) {
+        const rs_hurwitz_cond_struct *c = h->cond + i;
+        json_t *d = json_object(), *fl = json_array();
+        json_object_set_new(d, "origin", json_string(c->origin));
+        json_object_set_new(d, "poly", rs_json_zpoly(c->poly, s));
+        for (k = 0; k < c->factors->num; k++) {
+            json_t *f = json_object();
+            json_object_set_new(f, "factor", factor_str(c->factors->poly + k, s));
+            json_object_set_new(f, "exponent", json_integer(fmpz_get_si(c->factors->exp + k)));
+            json_object_set_new(f, "dropped", json_boolean(c->dropped[k]));
+            json_array_append_new(fl, f);
+            if (c->dropped[k]) {
+                json_t *dd = json_object();
+                json_object_set_new(dd, "factor", factor_str(c->factors->poly + k, s));
+                json_object_set_new(dd, "from", json_string(c->origin));
+                json_object_set_new(dd, "reason", json_string("of one sign under the assumptions"));
+                json_array_append_new(dropped, dd);
+            } else if (c->even[k]) {
+                char *fs = rs_polyfmt_fmpz_mpoly(c->factors->poly + k, (const char **) s->vars, s->zctx);
+                char *line = malloc(strlen(fs) + 16);
+                sprintf(line, "%s != 0", fs);
+                json_array_append_new(nonzero, json_string(line));
+                free(line);
+                free(fs);
+            }
+        }
+        json_object_set_new(d, "factors", fl);
+        json_object_set_new(d, "reduced", rs_json_zpoly(c->reduced, s));
+        json_object_set_new(d, "trivially_true", json_boolean(c->trivially_true));
+        json_object_set_new(d, "trivially_false", json_boolean(c->trivially_false));
+        json_array_append_new(details, d);
+        if (c->trivially_true) {
+            json_array_append_new(always, json_string(c->origin));
+        } else {
+            char *rs = rs_polyfmt_fmpz_mpoly(c->reduced, (const char **) s->vars, s->zctx);
+            char *line = malloc(strlen(rs) + 8);
+            sprintf(line, "%s > 0", rs);
+            json_array_append_new(conds, json_string(line));
+            free(line);
+            free(rs);
+            all_true = 0;
+            if (c->trivially_false) some_false = 1;
+        }
+    }
+    json_object_set_new(o, "conditions", conds);
+    json_object_set_new(o, "nonzero", nonzero);
+    json_object_set_new(o, "dropped", dropped);
+    json_object_set_new(o, "always_true", always);
+    json_object_set_new(o, "details", details);
+    json_object_set_new(o, "verdict", json_string(all_true ? "stable under the assumptions"
+                                                  : some_false ? "never stable"
+                                                  : "stable iff the conditions hold"));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    rs_hurwitz_clear(h, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    return RS_OK;
+}
+
+/* ---- jury / stability ----------------------------------------------------- */
+
+static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_jury_t ju;
+    rs_routh_t ro;
+    json_t *o, *rows;
+    slong i;
+    int r;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after jury, found '%s'", rest);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "jury");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    rs_jury_init(ju);
+    rs_routh_init(ro);
+    r = rs_jury_fmpz_poly(ju, p, run->err);
+    if (r == RS_OK) r = rs_routh_fmpz_poly(ro, p, run->err);
+    if (r == RS_OK) {
+        int agree = rs_rootcount_equal(ro->count, ju->count);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("jury"));
+        json_object_set_new(o, "method", json_string("Schur-Cohn (gcd with the reciprocal polynomial, "
+                                                     "Schur-Cohn-Fujiwara inertia)"));
+        json_object_set_new(o, "table_regular", json_boolean(ju->table_regular));
+        rows = json_array();
+        for (i = 0; i < ju->nrows; i++) {
+            char *str = rs_polyfmt_fmpz_poly(ju->rows + i, "lambda");
+            json_array_append_new(rows, json_string(str));
+            free(str);
+        }
+        json_object_set_new(o, "rows", rows);
+        json_object_set_new(o, "gcd_degree", json_integer(ju->gcd_degree));
+        rs_json_add_count(o, ju->count);
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:b}", "with", "routh (bilinear)", "agree", agree));
+        if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+    }
+    rs_jury_clear(ju);
+    rs_routh_clear(ro);
+    fmpz_poly_clear(p);
+    return r;
+}
+
+static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_rootcount_t rc;
+    json_t *o;
+    int r;
+    if (*rest != '\0')
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after stability, found '%s'", rest);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "stability");
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("stability"));
+        rs_rootcount_init(rc);
+        r = rs_run_exact_count(rc, run, p, o);
+        if (r == RS_OK) {
+            rs_json_add_count(o, rc);
+            json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+            json_object_set_new(o, "decided_by", json_string("exact"));
+            json_array_append_new(run->results, o);
+        } else {
+            json_decref(o);
+        }
+        rs_rootcount_clear(rc);
+    }
+    fmpz_poly_clear(p);
+    return r;
+}
+
+int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest);
+int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest);
+int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest);
 
 const rs_analysis_entry_t rs_analysis_extra[] = {
+    {"bilinear", an_bilinear},
+    {"routh", an_routh},
+    {"hurwitz", an_hurwitz},
+    {"jury", an_jury},
+    {"stability", an_stability},
+    {"region", rs_an_region},
+    {"limit", rs_an_limit},
+    {"claim", rs_an_claim},
     {NULL, NULL}
 };

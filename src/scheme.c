@@ -190,6 +190,15 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
             out->low += e->shift - l->shift;
         return RS_OK;
     }
+    if (x->allow_lambda == 2 && strcmp(e->name, "z") == 0) {
+        /* `expect bilinear`: z takes the place of lambda */
+        if (e->shifted)
+            return err_at(x, e, RS_ERR_INPUT, "shift on '%s'", e->name);
+        fmpq_mpoly_gen(out->c + 0, s->lambda_var, s->ctx);
+        return RS_OK;
+    }
+    if (x->allow_lambda == 2 && strcmp(e->name, "lambda") == 0)
+        return err_at(x, e, RS_ERR_INPUT, "expected a polynomial in z here, found '%s'", e->name);
     if (strcmp(e->name, "lambda") == 0) {
         if (!x->allow_lambda)
             return err_at(x, e, RS_ERR_INPUT,
@@ -308,7 +317,7 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
         break;
     case RS_EXPR_POW: {
         slong k = 0;
-        r = const_integer(&k, &b, e->b, x);
+        r = const_integer(&k, &b, e, x);
         if (r != RS_OK) break;
         if (lin_has_unknowns(&a, ctx)) {
             if (k != 1) {

@@ -49,7 +49,11 @@ json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s);
 json_t *rs_json_nonzero(const rs_scheme_t s);
 json_t *rs_charpoly_json(const rs_variant_t *v);
 void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t derived,
-                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s);
+                     const fmpz_mpoly_t derived_raw, slong var, const rs_scheme_t s,
+                     const char *varname);
+/* p collected in powers of variable var, printed with the name varname. */
+json_t *rs_json_collected(const fmpz_mpoly_t p, slong var, const rs_scheme_t s,
+                          const char *varname);
 
 const char *rs_req_skip_word(const char *t);
 int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
@@ -58,7 +62,14 @@ void rs_req_src(rs_src_t *src, const rs_request_t *q);
 
 typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
 typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
-/* analyses implemented in other files (src/analysis_exact.c, ...) */
+/* analyses implemented in other files, NULL-terminated tables:
+ * src/analysis_exact.c (bilinear, routh, hurwitz, jury, stability, region,
+ * limit, claim) and src/analysis_numeric.c (radius, modes, simulate). */
 extern const rs_analysis_entry_t rs_analysis_extra[];
+extern const rs_analysis_entry_t rs_analysis_numeric[];
+
+/* Sign information for the parameters from the case's `assume` lines
+ * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */
+int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
 
 #endif

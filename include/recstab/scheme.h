@@ -47,9 +47,10 @@ void rs_scheme_clear(rs_scheme_t s);
  * parameters symbolic.  Errors name file:line:col. */
 int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err);
 
-/* Evaluates an expression with lambda allowed and no unknowns (used for
- * `char`, `expect charpoly`, conditions): result num/den with den a
- * polynomial in the parameters only, den != 0. */
+/* Evaluates an expression without unknowns (used for `char`, `expect`,
+ * conditions): result num/den with den a polynomial in the parameters only,
+ * den != 0.  allow_lambda: 0 parameters only, 1 lambda allowed, 2 z allowed
+ * (stored in lambda's variable slot, for `expect bilinear`). */
 int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
                         const rs_case_t c, const rs_expr_t *e, int allow_lambda,
                         rs_error_t err);

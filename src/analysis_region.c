@@ -1,0 +1,1378 @@
+/* analysis_region.c -- exact stability regions in one parameter, root limits
+ * as a parameter tends to 0 or infinity, and claims (proved with a
+ * re-checked certificate, refuted with an exact counterexample). */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <arb.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
+#include "recstab/analysis_impl.h"
+#include "recstab/bilinear.h"
+#include "recstab/hurwitz.h"
+#include "recstab/rootcount.h"
+#include "recstab/cond.h"
+#include "recstab/polyfmt.h"
+
+int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
+char *rs_run_free_params(const rs_variant_t *v);
+void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
+int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
+int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
+
+/* ---- parsing helpers -------------------------------------------------------- */
+
+static const char *skip_ws(const char *t)
+{
+    while (*t == ' ' || *t == '\t') t++;
+    return t;
+}
+
+/* reads an identifier into buf (<= 64 chars); returns pointer after it or NULL */
+static const char *read_word(const char *t, char *buf)
+{
+    size_t n = 0;
+    t = skip_ws(t);
+    if (!((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') || *t == '_'))
+        return NULL;
+    while (((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') || (*t >= '0' && *t <= '9') || *t == '_')
+           && n < 64)
+        buf[n++] = *t++;
+    buf[n] = '\0';
+    return t;
+}
+
+/* "NAME=VALUE, NAME=VALUE" into assignments; *end is where parsing stopped */
+static int parse_assignments(rs_run_t *run, const rs_request_t *q, const char *t, rs_assign_t **out,
+                             slong *nout)
+{
+    rs_assign_t *a = NULL;
+    slong n = 0;
+    *out = NULL;
+    *nout = 0;
+    for (;;) {
+        char name[80];
+        const char *u = read_word(t, name), *v;
+        char *num;
+        size_t len;
+        slong idx;
+        rs_error_t e2;
+        int r;
+        if (u == NULL)
+            return rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "expected NAME=VALUE after 'at', found '%s'", skip_ws(t));
+        idx = rs_case_param_index(run->c, name);
+        if (idx < 0)
+            return rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "'%s' is not a parameter", name);
+        u = skip_ws(u);
+        if (*u != '=')
+            return rs_req_error(run, q, u, RS_ERR_INPUT, "expected '=' after the name, found '%s'", u);
+        v = u + 1;
+        len = strcspn(v, ",");
+        num = malloc(len + 1);
+        memcpy(num, v, len);
+        num[len] = '\0';
+        a = realloc(a, (size_t) (n + 1) * sizeof(rs_assign_t));
+        a[n].name = run->c->params[idx].name;
+        a[n].var = idx;
+        fmpq_init(a[n].value);
+        rs_error_init(e2);
+        r = rs_expr_parse_number(a[n].value, num, e2);
+        free(num);
+        n++;
+        if (r != RS_OK) {
+            rs_assign_free(a, n);
+            return rs_req_error(run, q, v, RS_ERR_INPUT, "expected a number: %s", e2->msg);
+        }
+        t = v + len;
+        if (*t == ',') { t++; continue; }
+        break;
+    }
+    *out = a;
+    *nout = n;
+    return RS_OK;
+}
+
+/* variables of p other than lambda that still occur */
+static slong count_free(const fmpz_mpoly_t p, const rs_scheme_t s, slong except)
+{
+    slong v, n = 0;
+    for (v = 0; v < s->nvars; v++)
+        if (v != s->lambda_var && v != except && fmpz_mpoly_degree_si(p, v, s->zctx) > 0) n++;
+    return n;
+}
+
+/* c_j(lambda): coefficient of t^j of p (no other free variable), as a
+ * univariate polynomial in lambda. */
+static void coeff_t(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, slong j, const rs_scheme_t s)
+{
+    fmpz_mpoly_t c;
+    ulong jj = (ulong) j;
+    fmpz_mpoly_init(c, s->zctx);
+    fmpz_mpoly_get_coeff_vars_ui(c, p, &tv, &jj, 1, s->zctx);
+    if (!fmpz_mpoly_get_fmpz_poly(out, c, s->lambda_var, s->zctx))
+        fmpz_poly_zero(out);
+    fmpz_mpoly_clear(c, s->zctx);
+}
+
+/* b^d p(lambda; a/b), d = deg_t p: an integer polynomial in lambda with the
+ * same roots as p(lambda; t) at t = a/b. */
+static void eval_at(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, const fmpq_t t, const rs_scheme_t s)
+{
+    slong d = fmpz_mpoly_degree_si(p, tv, s->zctx), j;
+    fmpz_poly_t c;
+    fmpz_t w, aj, bj;
+    fmpz_poly_init(c);
+    fmpz_init(w); fmpz_init(aj); fmpz_init(bj);
+    fmpz_poly_zero(out);
+    for (j = 0; j <= d; j++) {
+        coeff_t(c, p, tv, j, s);
+        fmpz_pow_ui(aj, fmpq_numref(t), (ulong) j);
+        fmpz_pow_ui(bj, fmpq_denref(t), (ulong) (d - j));
+        fmpz_mul(w, aj, bj);
+        fmpz_poly_scalar_mul_fmpz(c, c, w);
+        fmpz_poly_add(out, out, c);
+    }
+    fmpz_poly_clear(c);
+    fmpz_clear(w); fmpz_clear(aj); fmpz_clear(bj);
+}
+
+/* ---- real algebraic numbers ------------------------------------------------ */
+
+#define CRIT_LC 1     /* leading coefficient in lambda: degree drop */
+#define CRIT_PM1 2    /* p(1) or p(-1): a root at lambda = +-1 */
+#define CRIT_D 4      /* D_{n-1} of q: a pair z, -z (circle pair or real pair) */
+#define CRIT_DISC 8   /* discriminant: a repeated root */
+#define CRIT_TOUCH (CRIT_LC | CRIT_PM1 | CRIT_D)
+
+/* A real root of an irreducible integer polynomial: the root number idx (in
+ * increasing order) of minpoly; rational when deg minpoly == 1. */
+typedef struct {
+    fmpz_poly_t minpoly;
+    slong idx;
+    int rational;
+    fmpq_t q;            /* the value when rational */
+    arb_t x;             /* enclosure */
+    slong prec;
+    int boundary;        /* which critical polynomials vanish here: CRIT_* */
+} alg_t;
+
+static void alg_init(alg_t *a)
+{
+    fmpz_poly_init(a->minpoly);
+    fmpq_init(a->q);
+    arb_init(a->x);
+    a->idx = 0;
+    a->rational = 0;
+    a->prec = 0;
+    a->boundary = 1;
+}
+
+static void alg_clear(alg_t *a)
+{
+    fmpz_poly_clear(a->minpoly);
+    fmpq_clear(a->q);
+    arb_clear(a->x);
+}
+
+/* recompute the enclosure to at least prec bits */
+static void alg_refine(alg_t *a, slong prec)
+{
+    if (a->rational) {
+        arb_set_fmpq(a->x, a->q, prec + 10);
+        a->prec = prec;
+        return;
+    }
+    if (a->prec >= prec) return;
+    {
+        slong d = fmpz_poly_degree(a->minpoly);
+        acb_ptr r = _acb_vec_init(d);
+        arb_fmpz_poly_complex_roots(r, a->minpoly, 0, prec);
+        arb_set(a->x, acb_realref(r + a->idx));
+        _acb_vec_clear(r, d);
+        a->prec = prec;
+    }
+}
+
+/* -1, 0, 1 (a and b are distinct unless they are the same root) */
+static int alg_cmp(alg_t *a, alg_t *b)
+{
+    slong prec = 64;
+    if (a->rational && b->rational) return fmpq_cmp(a->q, b->q);
+    if (fmpz_poly_equal(a->minpoly, b->minpoly) && a->idx == b->idx) return 0;
+    for (;;) {
+        alg_refine(a, prec);
+        alg_refine(b, prec);
+        if (arb_lt(a->x, b->x)) return -1;
+        if (arb_gt(a->x, b->x)) return 1;
+        prec *= 2;
+        if (prec > 1 << 20) return 0; /* cannot happen for distinct algebraic numbers */
+    }
+}
+
+/* appends the real roots of f (any non-zero polynomial) as alg_t */
+static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int boundary)
+{
+    fmpz_poly_factor_t fac;
+    slong i, k, n0 = *n;
+    if (fmpz_poly_degree(f) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, f);
+    for (i = 0; i < fac->num; i++) {
+        const fmpz_poly_struct *g = fac->p + i;
+        slong d = fmpz_poly_degree(g), nreal;
+        if (d < 1) continue;
+        if (d == 1) {
+            *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
+            alg_init(*list + *n);
+            fmpz_poly_set((*list)[*n].minpoly, g);
+            (*list)[*n].rational = 1;
+            fmpq_set_fmpz_frac((*list)[*n].q, g->coeffs + 0, g->coeffs + 1);
+            fmpq_neg((*list)[*n].q, (*list)[*n].q);
+            alg_refine(*list + *n, 128);
+            (*n)++;
+            continue;
+        }
+        nreal = fmpz_poly_num_real_roots(g);
+        for (k = 0; k < nreal; k++) {
+            *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
+            alg_init(*list + *n);
+            fmpz_poly_set((*list)[*n].minpoly, g);
+            (*list)[*n].idx = k;
+            alg_refine(*list + *n, 128);
+            (*n)++;
+        }
+    }
+    for (i = n0; i < *n; i++) (*list)[i].boundary = boundary;
+    fmpz_poly_factor_clear(fac);
+}
+
+/* JSON form of an endpoint: "p/q" for rationals; for algebraic numbers an
+ * object with the minimal polynomial, an isolating interval and 30 digits. */
+static json_t *alg_json(alg_t *a, const char *var)
+{
+    char *mp, *s;
+    json_t *o;
+    arf_t lo, hi;
+    fmpq_t ql, qh;
+    if (a->rational) return rs_json_fmpq(a->q);
+    alg_refine(a, 128);
+    o = json_object();
+    mp = rs_polyfmt_fmpz_poly(a->minpoly, var);
+    json_object_set_new(o, "minpoly", json_string(mp));
+    free(mp);
+    json_object_set_new(o, "root_index", json_integer(a->idx));
+    arf_init(lo); arf_init(hi);
+    fmpq_init(ql); fmpq_init(qh);
+    arb_get_lbound_arf(lo, a->x, 128);
+    arb_get_ubound_arf(hi, a->x, 128);
+    arf_get_fmpq(ql, lo);
+    arf_get_fmpq(qh, hi);
+    json_object_set_new(o, "interval", json_pack("[o,o]", rs_json_fmpq(ql), rs_json_fmpq(qh)));
+    s = arb_get_str(a->x, 30, ARB_STR_NO_RADIUS);
+    json_object_set_new(o, "approx", json_string(s));
+    flint_free(s);
+    arf_clear(lo); arf_clear(hi);
+    fmpq_clear(ql); fmpq_clear(qh);
+    return o;
+}
+
+static double alg_double(alg_t *a)
+{
+    alg_refine(a, 64);
+    return arf_get_d(arb_midref(a->x), ARF_RND_NEAR);
+}
+
+/* a rational strictly between a and b (a < b); NULL ends are infinite */
+static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
+{
+    if (a == NULL && b == NULL) { fmpq_zero(out); return; }
+    if (b == NULL || a == NULL) {
+        alg_t *e = a ? a : b;
+        fmpz_t f;
+        fmpz_init(f);
+        alg_refine(e, 64);
+        if (a) { arf_get_fmpz(f, arb_midref(e->x), ARF_RND_CEIL); fmpz_add_ui(f, f, 1); }
+        else { arf_get_fmpz(f, arb_midref(e->x), ARF_RND_FLOOR); fmpz_sub_ui(f, f, 1); }
+        fmpz_set(fmpq_numref(out), f);
+        fmpz_one(fmpq_denref(out));
+        fmpz_clear(f);
+        return;
+    }
+    {
+        slong prec = 64;
+        arf_t u, l, m;
+        arf_init(u); arf_init(l); arf_init(m);
+        for (;;) {
+            alg_refine(a, prec);
+            alg_refine(b, prec);
+            arb_get_ubound_arf(u, a->x, prec);
+            arb_get_lbound_arf(l, b->x, prec);
+            if (arf_cmp(u, l) < 0) break;
+            prec *= 2;
+        }
+        /* the simplest rational in (u, l): try small denominators first */
+        {
+            fmpq_t qu, ql, t;
+            fmpz_t den;
+            int found = 0;
+            fmpq_init(qu); fmpq_init(ql); fmpq_init(t);
+            fmpz_init(den);
+            arf_get_fmpq(qu, u);
+            arf_get_fmpq(ql, l);
+            for (fmpz_one(den); !found && fmpz_cmp_ui(den, 1024) <= 0; fmpz_mul_ui(den, den, 2)) {
+                fmpz_t k;
+                fmpz_init(k);
+                /* k = floor(qu * den) + 1 */
+                fmpz_mul(k, fmpq_numref(qu), den);
+                fmpz_fdiv_q(k, k, fmpq_denref(qu));
+                fmpz_add_ui(k, k, 1);
+                fmpq_set_fmpz_frac(t, k, den);
+                if (fmpq_cmp(t, qu) > 0 && fmpq_cmp(t, ql) < 0) { fmpq_set(out, t); found = 1; }
+                fmpz_clear(k);
+            }
+            if (!found) {
+                fmpq_add(out, qu, ql);
+                fmpq_div_2exp(out, out, 1);
+            }
+            fmpq_clear(qu); fmpq_clear(ql); fmpq_clear(t);
+            fmpz_clear(den);
+        }
+        arf_clear(u); arf_clear(l); arf_clear(m);
+    }
+}
+
+/* ---- region ------------------------------------------------------------------ */
+
+/* univariate polynomial in variable tv from an mpoly in t only (else 0) */
+static int to_upoly(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, const rs_scheme_t s)
+{
+    return fmpz_mpoly_get_fmpz_poly(out, p, tv, s->zctx);
+}
+
+typedef struct {
+    int is_point;        /* a single value, or the open interval between */
+    alg_t *lo, *hi;      /* NULL = infinite (intervals); for points lo == hi */
+    int decided;         /* status known exactly */
+    rs_status_t status;
+} piece_t;
+
+static int status_at(rs_status_t *st, rs_run_t *run, const fmpz_mpoly_t p, slong tv,
+                     const fmpq_t t, const rs_scheme_t s)
+{
+    fmpz_poly_t u;
+    rs_rootcount_t rc;
+    int r;
+    fmpz_poly_init(u);
+    eval_at(u, p, tv, t, s);
+    if (fmpz_poly_degree(u) < 1) {
+        /* the polynomial degenerates to a constant: no dynamics left */
+        fmpz_poly_clear(u);
+        *st = RS_STATUS_STABLE;
+        return fmpz_poly_is_zero(u) ? RS_ERR_MATH : RS_OK;
+    }
+    rs_rootcount_init(rc);
+    r = rs_run_exact_count(rc, run, u, NULL);
+    *st = rs_rootcount_status(rc);
+    rs_rootcount_clear(rc);
+    fmpz_poly_clear(u);
+    return r;
+}
+
+static int alg_sort_cmp_dummy;
+
+static void sort_algs(alg_t *a, slong n)
+{
+    slong i, j;
+    (void) alg_sort_cmp_dummy;
+    for (i = 1; i < n; i++)       /* insertion sort: n is small */
+        for (j = i; j > 0 && alg_cmp(a + j - 1, a + j) > 0; j--) {
+            alg_t t = a[j - 1];
+            a[j - 1] = a[j];
+            a[j] = t;
+        }
+}
+
+/* region in one parameter when other parameters are still symbolic: the
+ * conditions as functions of them (Hurwitz/Lienard-Chipart, factored). */
+static int region_symbolic(rs_run_t *run, rs_variant_t *v, const char *name, json_t *o)
+{
+    rs_hurwitz_t h;
+    fmpz_mpoly_t qz;
+    const rs_scheme_struct *s = v->s;
+    json_t *conds = json_array();
+    slong i;
+    int r;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_init(h);
+    r = rs_run_hurwitz(h, run, v, qz);
+    if (r == RS_OK) {
+        for (i = 0; i < h->ncond; i++) {
+            char *str, *line;
+            if (h->cond[i].trivially_true) continue;
+            str = rs_polyfmt_fmpz_mpoly(h->cond[i].reduced, (const char **) s->vars, s->zctx);
+            line = malloc(strlen(str) + 8);
+            sprintf(line, "%s > 0", str);
+            json_array_append_new(conds, json_string(line));
+            free(line);
+            free(str);
+        }
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "conditions", conds);
+        json_object_set_new(o, "note", json_string(
+            "other parameters are symbolic: stable iff every condition holds (Lienard-Chipart on the "
+            "bilinear polynomial, factors positive under the assumptions dropped); a region valid for all "
+            "admissible values is what `claim stable when ...` proves or refutes"));
+        (void) name;
+    } else {
+        json_decref(conds);
+    }
+    rs_hurwitz_clear(h, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    return r;
+}
+
+int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    char name[80];
+    const char *t;
+    rs_assign_t *at = NULL, *a = NULL;
+    slong nat = 0, na = 0, tv, i, ncrit = 0, npieces = 0;
+    const char *keep[1];
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_bound_t *bounds;
+    alg_t *crit = NULL, lo_end, hi_end;
+    piece_t *pieces = NULL;
+    fmpz_mpoly_t pt, g, tmp;
+    json_t *o, *ivs, *pts;
+    int r = RS_OK, have_lo, have_hi, repeated_always = 0;
+
+    t = read_word(rest, name);
+    if (t == NULL)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after region, found '%s'", rest);
+    tv = rs_case_param_index(run->c, name);
+    if (tv < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    t = skip_ws(t);
+    if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
+        r = parse_assignments(run, q, t + 2, &at, &nat);
+        if (r != RS_OK) return r;
+    } else if (*t != '\0') {
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
+    }
+    keep[0] = name;
+    rs_run_assignments(run, &a, &na, keep, 1, at, nat);
+    for (i = 0; i < na; i++)
+        if (a[i].var == tv) {
+            rs_assign_free(a, na);
+            rs_assign_free(at, nat);
+            return rs_req_error(run, q, rest, RS_ERR_INPUT, "the region parameter '%s' is also given a value", name);
+        }
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    rs_assign_free(at, nat);
+    if (r != RS_OK) return r;
+    s = v->s;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "param", json_string(name));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    if (count_free(v->cp->p, s, tv) > 0) {
+        r = region_symbolic(run, v, name, o);
+        if (r != RS_OK) { json_decref(o); return r; }
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+        return RS_OK;
+    }
+    /* domain of the parameter from the assume lines */
+    bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(bounds, run->c->nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(bounds, &run->c->assume[i], run->c, run->err);
+    alg_init(&lo_end);
+    alg_init(&hi_end);
+    have_lo = bounds[tv].has_lo;
+    have_hi = bounds[tv].has_hi;
+    if (have_lo) { lo_end.rational = 1; fmpq_set(lo_end.q, bounds[tv].lo); alg_refine(&lo_end, 128); }
+    if (have_hi) { hi_end.rational = 1; fmpq_set(hi_end.q, bounds[tv].hi); alg_refine(&hi_end, 128); }
+
+    /* the part of p that depends on t, and its critical values */
+    fmpz_mpoly_init(pt, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpz_mpoly_init(tmp, s->zctx);
+    if (!fmpz_mpoly_content_vars(g, v->cp->p, &tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
+        fmpz_mpoly_one(g, s->zctx);
+    fmpz_mpoly_divexact(pt, v->cp->p, g, s->zctx);
+    if (fmpz_mpoly_degree_si(pt, tv, s->zctx) > 0) {
+        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(pt, lv, s->zctx);
+        fmpz_poly_t u;
+        fmpz_t pm;
+        fmpz_poly_init(u);
+        fmpz_init(pm);
+        /* leading coefficient in lambda */
+        {
+            ulong nn = (ulong) n;
+            fmpz_mpoly_get_coeff_vars_ui(tmp, pt, &lv, &nn, 1, s->zctx);
+            if (to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_LC);
+        }
+        /* roots at lambda = 1 and lambda = -1 */
+        fmpz_set_si(pm, 1);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, pt, lv, pm, s->zctx);
+        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
+        fmpz_set_si(pm, -1);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, pt, lv, pm, s->zctx);
+        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
+        /* a pair of roots crossing the circle elsewhere: D_{n-1} of q */
+        if (n >= 2) {
+            rs_hurwitz_t h;
+            fmpz_mpoly_t qz;
+            int *sign = flint_calloc(s->nvars, sizeof(int));
+            fmpz_mpoly_init(qz, s->zctx);
+            rs_hurwitz_init(h);
+            rs_bilinear_fmpz_mpoly(qz, pt, lv, s->zctx);
+            if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
+                && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, run->err) == RS_OK
+                && h->n >= 2 && !fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx)
+                && to_upoly(u, h->minors + h->n - 2, tv, s))
+                alg_roots_append(&crit, &ncrit, u, CRIT_D);
+            rs_hurwitz_clear(h, s->zctx);
+            fmpz_mpoly_clear(qz, s->zctx);
+            flint_free(sign);
+        }
+        /* collisions (roots leaving the circle through a double root) */
+        if (n >= 2) {
+            if (!fmpz_mpoly_discriminant(tmp, pt, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
+                repeated_always = 1;
+            else if (to_upoly(u, tmp, tv, s))
+                alg_roots_append(&crit, &ncrit, u, CRIT_DISC);
+        }
+        fmpz_poly_clear(u);
+        fmpz_clear(pm);
+    }
+    rs_error_init(run->err);
+    /* sort, drop duplicates and values outside the open domain */
+    sort_algs(crit, ncrit);
+    {
+        slong k = 0;
+        for (i = 0; i < ncrit; i++) {
+            int keepit = 1;
+            if (k > 0 && alg_cmp(crit + k - 1, crit + i) == 0) {
+                keepit = 0;
+                crit[k - 1].boundary |= crit[i].boundary;
+            }
+            if (keepit && have_lo && alg_cmp(crit + i, &lo_end) <= 0) keepit = 0;
+            if (keepit && have_hi && alg_cmp(crit + i, &hi_end) >= 0) keepit = 0;
+            if (keepit) {
+                if (k != i) { alg_t tt = crit[k]; crit[k] = crit[i]; crit[i] = tt; }
+                k++;
+            }
+        }
+        for (i = k; i < ncrit; i++) alg_clear(crit + i);
+        ncrit = k;
+    }
+    /* pieces: [lo], (lo, c1), c1, ..., (ck, hi), [hi] */
+    pieces = calloc((size_t) (2 * ncrit + 4), sizeof(piece_t));
+    if (have_lo && bounds[tv].lo_closed) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &lo_end; npieces++;
+    }
+    for (i = 0; i <= ncrit; i++) {
+        pieces[npieces].is_point = 0;
+        pieces[npieces].lo = (i == 0) ? (have_lo ? &lo_end : NULL) : crit + i - 1;
+        pieces[npieces].hi = (i == ncrit) ? (have_hi ? &hi_end : NULL) : crit + i;
+        npieces++;
+        if (i < ncrit) {
+            pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = crit + i; npieces++;
+        }
+    }
+    if (have_hi && bounds[tv].hi_closed && !(have_lo && fmpq_equal(bounds[tv].lo, bounds[tv].hi))) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &hi_end; npieces++;
+    }
+    /* decide each piece exactly at a rational point */
+    for (i = 0; i < npieces && r == RS_OK; i++) {
+        piece_t *pc = pieces + i;
+        fmpq_t x;
+        fmpq_init(x);
+        if (pc->is_point && !pc->lo->rational) {
+            pc->decided = 0;
+        } else {
+            if (pc->is_point) fmpq_set(x, pc->lo->q);
+            else rational_between(x, pc->lo, pc->hi);
+            r = status_at(&pc->status, run, v->cp->p, tv, x, s);
+            if (r == RS_ERR_MATH) {
+                char *xs = fmpq_get_str(NULL, 10, x);
+                r = rs_req_error(run, q, rest, RS_ERR_MATH,
+                                 "the characteristic polynomial vanishes identically at %s", xs);
+                flint_free(xs);
+            }
+            pc->decided = 1;
+        }
+        fmpq_clear(x);
+    }
+    /* Irrational critical values, decided exactly from what vanishes there:
+     * - none of lc, p(+-1), D_{n-1}: no root on the circle (Orlando: a circle
+     *   root other than +-1 makes D_{n-1} vanish) and no degree drop, so the
+     *   status is that of both neighbours, which must agree;
+     * - a stable neighbour, lc != 0, and p(+-1) = 0 or D_{n-1} = 0 but no
+     *   repeated root (discriminant != 0): the limit of roots inside the disc
+     *   leaves none outside, a pair z, -z of q cannot be real (one would be
+     *   outside), so a root is on the circle and all are simple: marginal. */
+    for (i = 1; i + 1 < npieces && r == RS_OK; i++) {
+        piece_t *pc = pieces + i;
+        int fl;
+        if (!pc->is_point || pc->decided) continue;
+        fl = pc->lo->boundary;
+        if (!(fl & CRIT_TOUCH)) {
+            if (!pieces[i - 1].decided || !pieces[i + 1].decided
+                || pieces[i - 1].status != pieces[i + 1].status) {
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
+                continue;
+            }
+            pc->status = pieces[i - 1].status;
+            pc->decided = 1;
+        } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !repeated_always
+                   && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
+                       || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
+            pc->status = RS_STATUS_MARGINAL;
+            pc->decided = 1;
+        }
+    }
+    if (r == RS_OK) {
+        /* merge runs of decided pieces with equal status into intervals */
+        ivs = json_array();
+        pts = json_array();
+        i = 0;
+        while (i < npieces) {
+            slong j = i;
+            json_t *iv;
+            if (!pieces[i].decided) {
+                json_t *pj = json_object();
+                json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
+                json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
+                json_object_set_new(pj, "status", json_string("undecided"));
+                json_object_set_new(pj, "note", json_string(
+                    "irrational algebraic boundary point: the status at the point itself is not decided "
+                    "(it is not stable if a root lies on the circle there); the intervals beside it are exact"));
+                json_array_append_new(pts, pj);
+                i++;
+                continue;
+            }
+            while (j + 1 < npieces && pieces[j + 1].decided && pieces[j + 1].status == pieces[i].status) j++;
+            iv = json_object();
+            {
+                alg_t *lo = pieces[i].lo, *hi = pieces[j].hi;
+                json_object_set_new(iv, "lo", lo ? alg_json(lo, name) : json_null());
+                json_object_set_new(iv, "hi", hi ? alg_json(hi, name) : json_null());
+                json_object_set_new(iv, "lo_closed", json_boolean(pieces[i].is_point));
+                json_object_set_new(iv, "hi_closed", json_boolean(pieces[j].is_point));
+                json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
+                json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
+                json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
+            }
+            json_array_append_new(ivs, iv);
+            i = j + 1;
+        }
+        json_object_set_new(o, "symbolic", json_false());
+        json_object_set_new(o, "intervals", ivs);
+        json_object_set_new(o, "undecided_points", pts);
+        json_object_set_new(o, "critical_values", json_integer(ncrit));
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+    }
+    for (i = 0; i < ncrit; i++) alg_clear(crit + i);
+    free(crit);
+    free(pieces);
+    alg_clear(&lo_end);
+    alg_clear(&hi_end);
+    rs_bounds_clear(bounds, run->c->nparams);
+    flint_free(bounds);
+    fmpz_mpoly_clear(pt, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpz_mpoly_clear(tmp, s->zctx);
+    return r;
+}
+
+/* ---- limit ------------------------------------------------------------------- */
+
+/* the roots of f (with multiplicity) as JSON: rationals exactly, other
+ * algebraic roots by minimal polynomial and a 20-digit value */
+static void roots_json(json_t *arr, const fmpz_poly_t f)
+{
+    fmpz_poly_factor_t fac;
+    slong i, k;
+    if (fmpz_poly_degree(f) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, f);
+    for (i = 0; i < fac->num; i++) {
+        const fmpz_poly_struct *g = fac->p + i;
+        slong d = fmpz_poly_degree(g), e = fac->exp[i];
+        if (d < 1) continue;
+        if (d == 1) {
+            fmpq_t x;
+            fmpq_init(x);
+            fmpq_set_fmpz_frac(x, g->coeffs + 0, g->coeffs + 1);
+            fmpq_neg(x, x);
+            json_array_append_new(arr, json_pack("{s:o,s:I,s:f}", "value", rs_json_fmpq(x),
+                                                 "multiplicity", (json_int_t) e, "abs", fabs(fmpq_get_d(x))));
+            fmpq_clear(x);
+        } else {
+            acb_ptr r = _acb_vec_init(d);
+            char *mp = rs_polyfmt_fmpz_poly(g, "lambda");
+            arb_fmpz_poly_complex_roots(r, g, 0, 96);
+            for (k = 0; k < d; k++) {
+                char *re = arb_get_str(acb_realref(r + k), 20, ARB_STR_NO_RADIUS);
+                char *im = arb_get_str(acb_imagref(r + k), 20, ARB_STR_NO_RADIUS);
+                char *val = malloc(strlen(re) + strlen(im) + 8);
+                arb_t ab;
+                arb_init(ab);
+                acb_abs(ab, r + k, 96);
+                if (arb_is_zero(acb_imagref(r + k))) sprintf(val, "%s", re);
+                else sprintf(val, "%s %s %si", re, im[0] == '-' ? "-" : "+", im[0] == '-' ? im + 1 : im);
+                json_array_append_new(arr, json_pack("{s:s,s:s,s:I,s:I,s:f}", "value", val, "minpoly", mp,
+                                                     "root_index", (json_int_t) k, "multiplicity", (json_int_t) e,
+                                                     "abs", arf_get_d(arb_midref(ab), ARF_RND_NEAR)));
+                arb_clear(ab);
+                free(val);
+                flint_free(re);
+                flint_free(im);
+            }
+            free(mp);
+            _acb_vec_clear(r, d);
+        }
+    }
+    fmpz_poly_factor_clear(fac);
+}
+
+int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    char name[80];
+    const char *t;
+    const char *keep[1];
+    rs_assign_t *a;
+    slong na, tv, d, k, j, dl;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    int to_inf, r;
+    fmpz_poly_t c;
+    json_t *o, *roots;
+    t = read_word(rest, name);
+    if (t == NULL)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after limit, found '%s'", rest);
+    tv = rs_case_param_index(run->c, name);
+    if (tv < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    t = skip_ws(t);
+    if (strncmp(t, "->", 2) != 0)
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '-> 0' or '-> inf' after the name, found '%s'", t);
+    t = skip_ws(t + 2);
+    if (strcmp(t, "0") == 0) to_inf = 0;
+    else if (strcmp(t, "inf") == 0 || strcmp(t, "infinity") == 0 || strcmp(t, "oo") == 0) to_inf = 1;
+    else return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 0 or inf, found '%s'", t);
+    keep[0] = name;
+    rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    s = v->s;
+    if (count_free(v->cp->p, s, tv) > 0) {
+        char *fp = rs_run_free_params(v);
+        char msg[400];
+        snprintf(msg, sizeof msg, "limit needs the other parameters set to numbers; still symbolic: %s", fp);
+        free(fp);
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "%s", msg);
+    }
+    d = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
+    dl = v->cp->degree;
+    fmpz_poly_init(c);
+    /* t -> 0: the lowest non-zero coefficient in t; t -> inf: the highest */
+    if (to_inf) {
+        coeff_t(c, v->cp->p, tv, d < 0 ? 0 : d, s);
+    } else {
+        for (j = 0; j <= d; j++) {
+            coeff_t(c, v->cp->p, tv, j, s);
+            if (!fmpz_poly_is_zero(c)) break;
+        }
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("limit"));
+    json_object_set_new(o, "param", json_string(name));
+    json_object_set_new(o, "to", json_string(to_inf ? "inf" : "0"));
+    {
+        char *lp = rs_polyfmt_fmpz_poly(c, "lambda");
+        json_object_set_new(o, "limit_poly", json_string(lp));
+        free(lp);
+    }
+    roots = json_array();
+    roots_json(roots, c);
+    k = dl - fmpz_poly_degree(c);
+    if (k > 0)
+        json_array_append_new(roots, json_pack("{s:s,s:I}", "value", "inf", "multiplicity", (json_int_t) k));
+    json_object_set_new(o, "roots", roots);
+    {
+        /* summary: every finite limit root at 0 (stiff decay), and the largest modulus */
+        size_t i;
+        int all_zero = (k == 0);
+        double maxabs = 0;
+        for (i = 0; i < json_array_size(roots); i++) {
+            json_t *rt = json_array_get(roots, i);
+            json_t *ab = json_object_get(rt, "abs");
+            if (ab == NULL) { all_zero = 0; continue; }
+            if (json_real_value(ab) != 0.0) all_zero = 0;
+            if (json_real_value(ab) > maxabs) maxabs = json_real_value(ab);
+        }
+        json_object_set_new(o, "all_roots_to_zero", json_boolean(all_zero));
+        json_object_set_new(o, "roots_to_infinity", json_integer(k));
+        json_object_set_new(o, "max_abs", json_real(maxabs));
+    }
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    fmpz_poly_clear(c);
+    return RS_OK;
+}
+
+/* ---- claim ------------------------------------------------------------------- */
+
+static void z2q(fmpq_mpoly_t out, const fmpz_mpoly_t p, const rs_scheme_t s)
+{
+    slong i, len = fmpz_mpoly_length(p, s->zctx);
+    ulong *e = flint_malloc(s->nvars * sizeof(ulong));
+    fmpq_t c;
+    fmpq_init(c);
+    fmpq_mpoly_zero(out, s->ctx);
+    for (i = 0; i < len; i++) {
+        fmpz_mpoly_get_term_exp_ui(e, p, i, s->zctx);
+        fmpz_set(fmpq_numref(c), p->coeffs + i);
+        fmpz_one(fmpq_denref(c));
+        fmpq_mpoly_push_term_fmpq_ui(out, c, e, s->ctx);
+    }
+    fmpq_mpoly_sort_terms(out, s->ctx);
+    fmpq_mpoly_combine_like_terms(out, s->ctx);
+    fmpq_clear(c);
+    flint_free(e);
+}
+
+/* the substitution that maps s in [0, inf) onto the parameter's interval */
+static void subst_poly(fmpq_mpoly_t out, const fmpq_mpoly_t P, slong v, const rs_bound_t *b,
+                       const rs_scheme_t s)
+{
+    slong d = fmpq_mpoly_degree_si(P, v, s->ctx), k;
+    fmpq_mpoly_t c, num, one_s, tmp, acc;
+    fmpq_mpoly_init(c, s->ctx); fmpq_mpoly_init(num, s->ctx);
+    fmpq_mpoly_init(one_s, s->ctx); fmpq_mpoly_init(tmp, s->ctx);
+    fmpq_mpoly_init(acc, s->ctx);
+    /* num = image of v times (1+s) for two-sided intervals */
+    fmpq_mpoly_gen(num, v, s->ctx);
+    if (b->has_lo && b->has_hi) {
+        fmpq_mpoly_scalar_mul_fmpq(num, num, b->hi, s->ctx);
+        fmpq_mpoly_add_fmpq(num, num, b->lo, s->ctx);            /* lo + hi s */
+        fmpq_mpoly_gen(one_s, v, s->ctx);
+        fmpq_mpoly_add_si(one_s, one_s, 1, s->ctx);              /* 1 + s */
+    } else if (b->has_lo) {
+        fmpq_mpoly_add_fmpq(num, num, b->lo, s->ctx);            /* lo + s */
+        fmpq_mpoly_one(one_s, s->ctx);
+    } else {
+        fmpq_mpoly_neg(num, num, s->ctx);
+        fmpq_mpoly_add_fmpq(num, num, b->hi, s->ctx);            /* hi - s */
+        fmpq_mpoly_one(one_s, s->ctx);
+    }
+    fmpq_mpoly_zero(acc, s->ctx);
+    for (k = 0; k <= d; k++) {
+        ulong kk = (ulong) k;
+        fmpq_mpoly_t pw;
+        fmpq_mpoly_get_coeff_vars_ui(c, P, &v, &kk, 1, s->ctx);
+        if (fmpq_mpoly_is_zero(c, s->ctx)) continue;
+        fmpq_mpoly_init(pw, s->ctx);
+        fmpq_mpoly_pow_ui(tmp, num, kk, s->ctx);
+        fmpq_mpoly_pow_ui(pw, one_s, (ulong) (d - k), s->ctx);
+        fmpq_mpoly_mul(tmp, tmp, pw, s->ctx);
+        fmpq_mpoly_mul(tmp, tmp, c, s->ctx);
+        fmpq_mpoly_add(acc, acc, tmp, s->ctx);
+        fmpq_mpoly_clear(pw, s->ctx);
+    }
+    fmpq_mpoly_swap(out, acc, s->ctx);
+    fmpq_mpoly_clear(c, s->ctx); fmpq_mpoly_clear(num, s->ctx);
+    fmpq_mpoly_clear(one_s, s->ctx); fmpq_mpoly_clear(tmp, s->ctx);
+    fmpq_mpoly_clear(acc, s->ctx);
+}
+
+/* every coefficient >= 0 and some positive term non-zero on the whole
+ * domain (its variables all strictly positive there) */
+static int coeffs_certify(const fmpq_mpoly_t P, const int *strict, const rs_scheme_t s)
+{
+    slong i, len = fmpq_mpoly_length(P, s->ctx), v;
+    slong *e = flint_malloc(s->nvars * sizeof(slong));
+    int ok = len > 0, witness = 0;
+    fmpq_t c;
+    fmpq_init(c);
+    for (i = 0; i < len && ok; i++) {
+        fmpq_mpoly_get_term_coeff_fmpq(c, P, i, s->ctx);
+        if (fmpq_sgn(c) < 0) { ok = 0; break; }
+        if (fmpq_sgn(c) > 0 && !witness) {
+            int w = 1;
+            fmpq_mpoly_get_term_exp_si(e, P, i, s->ctx);
+            for (v = 0; v < s->nvars; v++)
+                if (e[v] > 0 && !strict[v]) w = 0;
+            witness = w;
+        }
+    }
+    fmpq_clear(c);
+    flint_free(e);
+    return ok && witness;
+}
+
+/* Proves c > 0 on the box given by b (vars with no bound make it fail).
+ * Appends the certificate to cert.  Returns 1 proved, 0 not. */
+static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
+                          int depth)
+{
+    fmpq_mpoly_t P;
+    int *strict = flint_calloc(s->nvars, sizeof(int));
+    json_t *sub = json_object();
+    slong v;
+    int ok = 1;
+    char buf[512];
+    if (depth > 8) { flint_free(strict); json_decref(sub); return 0; }
+    fmpq_mpoly_init(P, s->ctx);
+    fmpq_mpoly_set(P, c, s->ctx);
+    for (v = 0; v < s->nvars && ok; v++) {
+        char *lo = NULL, *hi = NULL;
+        if (v == s->lambda_var || fmpq_mpoly_degree_si(P, v, s->ctx) <= 0) continue;
+        if (!b[v].has_lo && !b[v].has_hi) { ok = 0; break; }
+        if (b[v].has_lo) lo = fmpq_get_str(NULL, 10, b[v].lo);
+        if (b[v].has_hi) hi = fmpq_get_str(NULL, 10, b[v].hi);
+        if (b[v].has_lo && b[v].has_hi) {
+            snprintf(buf, sizeof buf, "(%s + %s*s)/(1 + s)", lo, hi);
+            strict[v] = !b[v].lo_closed;
+        } else if (b[v].has_lo) {
+            snprintf(buf, sizeof buf, "%s + s", lo);
+            strict[v] = !b[v].lo_closed;
+        } else {
+            snprintf(buf, sizeof buf, "%s - s", hi);
+            strict[v] = !b[v].hi_closed;
+        }
+        json_object_set_new(sub, s->vars[v], json_string(buf));
+        flint_free(lo);
+        flint_free(hi);
+        subst_poly(P, P, v, b + v, s);
+    }
+    if (ok) ok = coeffs_certify(P, strict, s);
+    if (ok) {
+        json_t *e = json_object();
+        char *cs = rs_polyfmt_fmpq_mpoly(c, (const char **) s->vars, s->ctx);
+        json_object_set_new(e, "condition", json_string(cs));
+        json_object_set_new(e, "substitution", sub);
+        json_object_set_new(e, "transformed_terms", json_integer(fmpq_mpoly_length(P, s->ctx)));
+        json_object_set_new(e, "all_coefficients_nonnegative", json_true());
+        json_array_append_new(cert, e);
+        free(cs);
+        sub = NULL;
+        /* a closed upper end of a two-sided interval is s = inf: check it too */
+        for (v = 0; v < s->nvars && ok; v++) {
+            if (v == s->lambda_var || fmpq_mpoly_degree_si(c, v, s->ctx) <= 0) continue;
+            if (b[v].has_lo && b[v].has_hi && b[v].hi_closed) {
+                fmpq_mpoly_t cv;
+                fmpq_mpoly_init(cv, s->ctx);
+                fmpq_mpoly_evaluate_one_fmpq(cv, c, v, b[v].hi, s->ctx);
+                if (fmpq_mpoly_is_fmpq(cv, s->ctx)) {
+                    fmpq_t k;
+                    fmpq_init(k);
+                    fmpq_mpoly_get_fmpq(k, cv, s->ctx);
+                    ok = fmpq_sgn(k) > 0;
+                    fmpq_clear(k);
+                } else {
+                    ok = prove_positive(cv, b, s, cert, depth + 1);
+                }
+                fmpq_mpoly_clear(cv, s->ctx);
+            }
+        }
+    }
+    json_decref(sub);
+    flint_free(strict);
+    fmpq_mpoly_clear(P, s->ctx);
+    return ok;
+}
+
+/* Independent re-check of a certificate entry: the transformed polynomial
+ * is recomputed here by evaluating c at the image of random positive s
+ * and comparing the sign (> 0) -- a separate code path from the symbolic
+ * substitution. Returns 1 if every sample is positive. */
+static int recheck_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_scheme_t s, flint_rand_t st)
+{
+    slong k, v;
+    int ok = 1;
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    fmpq_t sv, val, one;
+    fmpq_init(sv); fmpq_init(val); fmpq_init(one);
+    fmpq_one(one);
+    for (v = 0; v < s->nvars; v++) pp[v] = pt + v;
+    for (k = 0; k < 16 && ok; k++) {
+        for (v = 0; v < s->nvars; v++) {
+            fmpq_set_si(sv, 1 + (slong) n_randint(st, 1000), 1 + n_randint(st, 50));
+            if (b[v].has_lo && b[v].has_hi) {
+                fmpq_t t;
+                fmpq_init(t);
+                fmpq_mul(t, b[v].hi, sv);
+                fmpq_add(t, t, b[v].lo);
+                fmpq_add(sv, sv, one);
+                fmpq_div(pt + v, t, sv);
+                fmpq_clear(t);
+            } else if (b[v].has_lo) fmpq_add(pt + v, b[v].lo, sv);
+            else if (b[v].has_hi) fmpq_sub(pt + v, b[v].hi, sv);
+            else fmpq_set(pt + v, sv);
+        }
+        fmpq_mpoly_evaluate_all_fmpq(val, c, pp, s->ctx);
+        if (fmpq_sgn(val) <= 0) ok = 0;
+    }
+    fmpq_clear(sv); fmpq_clear(val); fmpq_clear(one);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    return ok;
+}
+
+typedef enum { CLAIM_STABLE, CLAIM_BOUNDED, CLAIM_UNSTABLE } claim_kind_t;
+
+static int violates(claim_kind_t k, rs_status_t st)
+{
+    switch (k) {
+    case CLAIM_STABLE: return st != RS_STATUS_STABLE;
+    case CLAIM_BOUNDED: return st == RS_STATUS_UNSTABLE;
+    case CLAIM_UNSTABLE: return st != RS_STATUS_UNSTABLE;
+    }
+    return 0;
+}
+
+/* candidate values of a parameter inside its bounds, simplest first */
+static slong candidates(fmpq **out, const rs_bound_t *b)
+{
+    static const slong num[] = {1, 1, 1, 1, 1, 2, 5, 10, 100, 1000, 3, 1};
+    static const slong den[] = {1000, 100, 10, 2, 1, 1, 1, 1, 1, 1, 2, 3};
+    slong n = 0, i, cap = 40;
+    fmpq *c = _fmpq_vec_init(cap);
+    fmpq_t w, t;
+    fmpq_init(w); fmpq_init(t);
+    if (b->fixed) {
+        fmpq_set(c + n++, b->lo);
+    } else if (b->has_lo && b->has_hi) {
+        fmpq_sub(w, b->hi, b->lo);
+        if (b->lo_closed) fmpq_set(c + n++, b->lo);
+        if (b->hi_closed) fmpq_set(c + n++, b->hi);
+        for (i = 1; i < 8; i++) {
+            fmpq_mul_si(t, w, i);
+            fmpq_div_2exp(t, t, 3);
+            fmpq_add(c + n++, b->lo, t);
+        }
+        {
+            fmpz_t k;
+            fmpz_init_set_ui(k, 1000);
+            fmpq_div_fmpz(t, w, k);
+            fmpz_clear(k);
+        }
+        fmpq_add(c + n++, b->lo, t);
+        fmpq_sub(c + n++, b->hi, t);
+    } else {
+        if (b->has_lo && b->lo_closed) fmpq_set(c + n++, b->lo);
+        if (b->has_hi && b->hi_closed) fmpq_set(c + n++, b->hi);
+        for (i = 0; i < 12; i++) {
+            fmpq_set_si(t, num[i], (ulong) den[i]);
+            if (b->has_lo) fmpq_add(c + n++, b->lo, t);
+            else if (b->has_hi) fmpq_sub(c + n++, b->hi, t);
+            else { fmpq_set(c + n++, t); fmpq_neg(c + n++, t); }
+        }
+        if (!b->has_lo && !b->has_hi) fmpq_zero(c + n++);
+    }
+    fmpq_clear(w); fmpq_clear(t);
+    *out = c;
+    return n;
+}
+
+#define CLAIM_MAX_POINTS 2000
+
+int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    char kindw[80];
+    const char *t;
+    claim_kind_t kind;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_cond_t *conds = NULL;
+    slong nconds = 0, i, j, nparams = run->c->nparams, ntried = 0, ncand_total = 1;
+    rs_condpoly_t *cps = NULL;
+    slong ncps = 0;
+    rs_bound_t *b;
+    fmpq **cand;
+    slong *ncand;
+    fmpq *pt;
+    fmpq **pp;
+    json_t *o, *counter = NULL, *cert;
+    int r = RS_OK, refuted = 0, proved = 0;
+    rs_status_t cstatus = RS_STATUS_STABLE;
+    rs_rootcount_t crc;
+    flint_rand_t st;
+    const char *tried;
+    slong ncoef = 0;
+    fmpq_mpoly_struct *coefq = NULL;
+
+    t = read_word(rest, kindw);
+    if (t == NULL || !(strcmp(kindw, "stable") == 0 || strcmp(kindw, "bounded") == 0
+                       || strcmp(kindw, "unstable") == 0))
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected stable, bounded or unstable after claim, found '%s'", rest);
+    kind = strcmp(kindw, "stable") == 0 ? CLAIM_STABLE : strcmp(kindw, "bounded") == 0 ? CLAIM_BOUNDED
+                                                                                    : CLAIM_UNSTABLE;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    t = skip_ws(t);
+    if (*t != '\0') {
+        rs_src_t src;
+        size_t pos;
+        if (strncmp(t, "when", 4) != 0 || !(t[4] == ' ' || t[4] == '\t'))
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'when CONDITION' or end of line, found '%s'", t);
+        rs_req_src(&src, q);
+        pos = (size_t) (t + 4 - q->text);
+        for (;;) {
+            rs_cond_t cd;
+            r = rs_cond_parse(&cd, &src, &pos, run->err);
+            if (r != RS_OK) break;
+            conds = realloc(conds, (size_t) (nconds + 1) * sizeof(rs_cond_t));
+            conds[nconds++] = cd;
+            while (q->text[pos] == ' ' || q->text[pos] == '\t') pos++;
+            if (q->text[pos] == '\0') break;
+            if ((strncmp(q->text + pos, "and", 3) == 0 && (q->text[pos + 3] == ' ' || q->text[pos + 3] == '\t'))) {
+                pos += 3;
+                continue;
+            }
+            if (q->text[pos] == ',') { pos++; continue; }
+            r = rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
+                             "expected 'and', ',' or end of line after a condition, found '%s'", q->text + pos);
+            break;
+        }
+        if (r != RS_OK) {
+            for (i = 0; i < nconds; i++) rs_cond_clear(conds + i);
+            free(conds);
+            return r;
+        }
+    }
+    /* compile every condition (assumptions and the claim's own) */
+    cps = calloc((size_t) (run->c->nassume + nconds + 1), sizeof(rs_condpoly_t));
+    for (i = 0; i < run->c->nassume && r == RS_OK; i++)
+        r = rs_condpoly_compile(cps + ncps++, &run->c->assume[i], s, run->c, run->err);
+    for (i = 0; i < nconds && r == RS_OK; i++)
+        r = rs_condpoly_compile(cps + ncps++, conds + i, s, run->c, run->err);
+    b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(b, nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(b, &run->c->assume[i], run->c, run->err);
+    for (i = 0; i < nconds; i++) rs_bounds_add(b, conds + i, run->c, run->err);
+    for (i = 0; i < run->c->nsets; i++) {
+        slong k = rs_case_param_index(run->c, run->c->sets[i].name);
+        b[k].has_lo = b[k].has_hi = b[k].lo_closed = b[k].hi_closed = b[k].fixed = 1;
+        fmpq_set(b[k].lo, run->c->sets[i].value);
+        fmpq_set(b[k].hi, run->c->sets[i].value);
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("claim"));
+    json_object_set_new(o, "text", json_string(q->text));
+    json_object_set_new(o, "claim", json_string(kindw));
+    rs_rootcount_init(crc);
+
+    /* 1. search for a counterexample, exactly, on a deterministic set of points */
+    cand = calloc((size_t) nparams + 1, sizeof(fmpq *));
+    ncand = calloc((size_t) nparams + 1, sizeof(slong));
+    for (i = 0; i < nparams; i++) {
+        ncand[i] = candidates(cand + i, b + i);
+        if (ncand_total < CLAIM_MAX_POINTS) ncand_total *= ncand[i] > 0 ? ncand[i] : 1;
+    }
+    pt = _fmpq_vec_init(s->nvars);
+    pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
+    flint_randinit(st);
+    ncoef = v->cp->degree + 1;
+    coefq = flint_malloc(ncoef * sizeof(fmpq_mpoly_struct));
+    {
+        fmpz_mpoly_t cz;
+        fmpz_mpoly_init(cz, s->zctx);
+        for (i = 0; i < ncoef; i++) {
+            fmpq_mpoly_init(coefq + i, s->ctx);
+            rs_charpoly_coeff(cz, v->cp->p, i, s->lambda_var, s->zctx);
+            z2q(coefq + i, cz, s);
+        }
+        fmpz_mpoly_clear(cz, s->zctx);
+    }
+    for (j = 0; r == RS_OK && !refuted && j < CLAIM_MAX_POINTS && j < ncand_total; j++) {
+        slong k, rem = j;
+        int ok = 1;
+        fmpz_poly_t u;
+        fmpq_t sc;
+        for (k = 0; k < nparams; k++) {
+            slong pick;
+            if (ncand[k] == 0) { ok = 0; break; }
+            if (ncand_total < CLAIM_MAX_POINTS) { pick = rem % ncand[k]; rem /= ncand[k]; }
+            else pick = j < 1 ? 0 : (slong) n_randint(st, (ulong) ncand[k]);
+            fmpq_set(pt + k, cand[k] + pick);
+        }
+        if (!ok) break;
+        for (k = 0; k < ncps && ok; k++) ok = rs_condpoly_holds(cps + k, pp, s) == 1;
+        for (k = 0; k < s->nnonzero && ok; k++) {
+            fmpq_t z;
+            fmpq_init(z);
+            fmpq_mpoly_evaluate_all_fmpq(z, s->nonzero + k, pp, s->ctx);
+            ok = !fmpq_is_zero(z);
+            fmpq_clear(z);
+        }
+        if (!ok) continue;
+        /* p at the point: each lambda-coefficient evaluated exactly */
+        fmpz_poly_init(u);
+        fmpq_init(sc);
+        {
+            slong m;
+            fmpz_t L;
+            fmpq *cv = _fmpq_vec_init(ncoef);
+            fmpz_init(L);
+            fmpz_one(L);
+            for (m = 0; m < ncoef; m++) {
+                fmpq_mpoly_evaluate_all_fmpq(cv + m, coefq + m, pp, s->ctx);
+                fmpz_lcm(L, L, fmpq_denref(cv + m));
+            }
+            fmpz_poly_fit_length(u, ncoef);
+            for (m = 0; m < ncoef; m++) {
+                fmpz_divexact(fmpq_denref(sc), L, fmpq_denref(cv + m));
+                fmpz_mul(u->coeffs + m, fmpq_numref(cv + m), fmpq_denref(sc));
+            }
+            _fmpz_poly_set_length(u, ncoef);
+            _fmpz_poly_normalise(u);
+            _fmpq_vec_clear(cv, ncoef);
+            fmpz_clear(L);
+        }
+        if (fmpz_poly_degree(u) >= 1) {
+            rs_rootcount_t rc;
+            rs_rootcount_init(rc);
+            ntried++;
+            r = rs_run_exact_count(rc, run, u, NULL);
+            if (r == RS_OK && violates(kind, rs_rootcount_status(rc))) {
+                refuted = 1;
+                cstatus = rs_rootcount_status(rc);
+                *crc = *rc;
+                counter = json_object();
+                for (k = 0; k < nparams; k++)
+                    if (!b[k].fixed) json_object_set_new(counter, run->c->params[k].name, rs_json_fmpq(pt + k));
+            }
+            rs_rootcount_clear(rc);
+        }
+        fmpz_poly_clear(u);
+        fmpq_clear(sc);
+    }
+
+    /* 2. try to prove it with a certificate */
+    cert = json_array();
+    if (r == RS_OK) {
+        rs_hurwitz_t h;
+        fmpz_mpoly_t qz;
+        fmpq_mpoly_t c;
+        fmpz_mpoly_init(qz, s->zctx);
+        fmpq_mpoly_init(c, s->ctx);
+        rs_hurwitz_init(h);
+        if (rs_run_hurwitz(h, run, v, qz) == RS_OK) {
+            if (kind != CLAIM_UNSTABLE) {
+                /* stable (hence bounded): every Lienard-Chipart condition > 0 */
+                proved = 1;
+                for (i = 0; i < h->ncond && proved; i++) {
+                    const rs_hurwitz_cond_struct *hc = h->cond + i;
+                    slong k;
+                    if (hc->trivially_true) continue;
+                    if (hc->trivially_false) { proved = 0; break; }
+                    z2q(c, hc->reduced, s);
+                    proved = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+                    for (k = 0; k < hc->factors->num && proved; k++) {
+                        if (hc->dropped[k] || !hc->even[k]) continue;
+                        z2q(c, hc->factors->poly + k, s);       /* even factor: != 0 */
+                        if (!(prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st))) {
+                            fmpq_mpoly_neg(c, c, s->ctx);
+                            proved = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+                        }
+                    }
+                }
+                tried = "Lienard-Chipart conditions on the bilinear polynomial, each proved positive by "
+                        "mapping every parameter interval onto [0, inf) and checking coefficient signs";
+            } else {
+                /* unstable: q has coefficients of both signs (a root with Re z > 0) */
+                slong k;
+                fmpq_mpoly_t an, ak;
+                fmpq_mpoly_init(an, s->ctx);
+                fmpq_mpoly_init(ak, s->ctx);
+                z2q(an, h->coeffs + h->n, s);
+                for (k = 0; k < h->n && !proved; k++) {
+                    json_t *c1 = json_array();
+                    z2q(ak, h->coeffs + k, s);
+                    fmpq_mpoly_neg(ak, ak, s->ctx);
+                    if (prove_positive(an, b, s, c1, 0) && prove_positive(ak, b, s, c1, 0)
+                        && recheck_positive(an, b, s, st) && recheck_positive(ak, b, s, st)) {
+                        proved = 1;
+                        json_array_extend(cert, c1);
+                    }
+                    json_decref(c1);
+                }
+                fmpq_mpoly_clear(an, s->ctx);
+                fmpq_mpoly_clear(ak, s->ctx);
+                tried = "a coefficient of the bilinear polynomial of sign opposite to its leading one on the "
+                        "whole region (then a root has Re z > 0, |lambda| > 1)";
+            }
+        } else {
+            rs_error_init(run->err);
+            tried = "Hurwitz conditions could not be formed";
+        }
+        rs_hurwitz_clear(h, s->zctx);
+        fmpz_mpoly_clear(qz, s->zctx);
+        fmpq_mpoly_clear(c, s->ctx);
+    }
+    if (r == RS_OK) {
+        if (refuted && proved) {
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+            json_object_set_new(o, "status", json_string("inconsistent"));
+        } else if (refuted) {
+            json_t *at = json_object();
+            json_object_set_new(o, "status", json_string("refuted"));
+            json_object_set_new(o, "counterexample", counter);
+            counter = NULL;
+            rs_json_add_count(at, crc);
+            json_object_set_new(at, "decided_by", json_string("exact"));
+            json_object_set_new(o, "at_counterexample", at);
+            (void) cstatus;
+            run->outcome |= RS_OUTCOME_FAILED;
+        } else if (proved) {
+            json_object_set_new(o, "status", json_string("proved"));
+            json_object_set_new(o, "certificate", cert);
+            cert = NULL;
+            json_object_set_new(o, "certificate_rechecked", json_true());
+        } else {
+            json_object_set_new(o, "status", json_string("undecided"));
+        }
+        json_object_set_new(o, "points_checked", json_integer(ntried));
+        json_object_set_new(o, "tried", json_string(tried));
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+    }
+    json_decref(cert);
+    json_decref(counter);
+    rs_rootcount_clear(crc);
+    flint_randclear(st);
+    for (i = 0; i < ncoef; i++) fmpq_mpoly_clear(coefq + i, s->ctx);
+    flint_free(coefq);
+    for (i = 0; i < nparams; i++) _fmpq_vec_clear(cand[i], 40);
+    free(cand);
+    free(ncand);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    for (i = 0; i < ncps; i++) rs_condpoly_clear(cps + i, s);
+    free(cps);
+    for (i = 0; i < nconds; i++) rs_cond_clear(conds + i);
+    free(conds);
+    rs_bounds_clear(b, nparams);
+    flint_free(b);
+    return r;
+}
