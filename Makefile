@@ -74,9 +74,11 @@ check-sanitize: deps
 	@$(MAKE) --no-print-directory BUILD=build-san OPT="-O1 -g" \
 	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" test
 
+# The Park case's printed claims are refuted, so recstab exits 1 there by
+# design (an expectation failed); only 2 and 3 make the demo fail.
 demo: deps
 	@$(MAKE) --no-print-directory all
-	$(BIN) cases/park-staggered.case
+	@$(BIN) cases/park-staggered.case; rc=$$?; [ $$rc -le 1 ] || exit $$rc
 
 bench: all
 	sh bench/run.sh

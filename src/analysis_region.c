@@ -942,15 +942,21 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         if (!b[v].has_lo && !b[v].has_hi) { ok = 0; break; }
         if (b[v].has_lo) lo = fmpq_get_str(NULL, 10, b[v].lo);
         if (b[v].has_hi) hi = fmpq_get_str(NULL, 10, b[v].hi);
-        if (b[v].has_lo && b[v].has_hi) {
-            snprintf(buf, sizeof buf, "(%s + %s*s)/(1 + s)", lo, hi);
-            strict[v] = !b[v].lo_closed;
-        } else if (b[v].has_lo) {
-            snprintf(buf, sizeof buf, "%s + s", lo);
-            strict[v] = !b[v].lo_closed;
-        } else {
-            snprintf(buf, sizeof buf, "%s - s", hi);
-            strict[v] = !b[v].hi_closed;
+        {
+            const char *sv = s->vars[v];
+            int lo0 = lo != NULL && strcmp(lo, "0") == 0;
+            if (b[v].has_lo && b[v].has_hi) {
+                if (lo0) snprintf(buf, sizeof buf, "%s*s_%s/(1 + s_%s)", hi, sv, sv);
+                else snprintf(buf, sizeof buf, "(%s + %s*s_%s)/(1 + s_%s)", lo, hi, sv, sv);
+                strict[v] = !b[v].lo_closed;
+            } else if (b[v].has_lo) {
+                if (lo0) snprintf(buf, sizeof buf, "s_%s", sv);
+                else snprintf(buf, sizeof buf, "%s + s_%s", lo, sv);
+                strict[v] = !b[v].lo_closed;
+            } else {
+                snprintf(buf, sizeof buf, "%s - s_%s", hi, sv);
+                strict[v] = !b[v].hi_closed;
+            }
         }
         json_object_set_new(sub, s->vars[v], json_string(buf));
         flint_free(lo);

@@ -14,7 +14,7 @@ char *rs_polyfmt_spaced(const char *s)
         if (ch == '(') depth++;
         if (ch == ')') depth--;
         if ((ch == '+' || ch == '-') && i > 0 && depth == 0 && s[i - 1] != '^' && s[i - 1] != '('
-            && s[i - 1] != '*' && s[i - 1] != '/') {
+            && s[i - 1] != '*' && s[i - 1] != '/' && s[i - 1] != ' ') {
             out[j++] = ' ';
             out[j++] = ch;
             out[j++] = ' ';

@@ -1,5 +1,6 @@
 /* report.c -- text rendering of result documents. */
 #include <string.h>
+#include <flint/flint.h>
 #include "recstab/report.h"
 
 #define LABEL_W 12
@@ -71,7 +72,7 @@ static void r_charpoly(FILE *out, const json_t *o)
 static void r_expect(FILE *out, const json_t *o)
 {
     const char *st = jstr(o, "status");
-    line(out, "claim", "%s", jstr(o, "text"));
+    line(out, "checks", "%s", jstr(o, "text"));
     line(out, "status", "%s", st);
     if (st && strcmp(st, "different") == 0) {
         if (jstr(o, "derived")) line(out, "derived", "%s", jstr(o, "derived"));
@@ -79,6 +80,252 @@ static void r_expect(FILE *out, const json_t *o)
         line(out, "difference", "%s", jstr(o, "difference"));
         if (jstr(o, "ratio")) line(out, "ratio", "printed = (%s) * derived", jstr(o, "ratio"));
     }
+    print_assigned(out, o);
+}
+
+
+static long long jint(const json_t *o, const char *key)
+{
+    return (long long) json_integer_value(json_object_get(o, key));
+}
+
+static void print_count(FILE *out, const json_t *o)
+{
+    const json_t *m = json_object_get(o, "on_multiplicities");
+    size_t i;
+    fprintf(out, "  %-*s %s: %lld inside, %lld on, %lld outside the unit circle", LABEL_W, "verdict",
+            jstr(o, "status"), jint(o, "inside"), jint(o, "on"), jint(o, "outside"));
+    if (jint(o, "at_one") > 0) fprintf(out, "; lambda = 1 (x%lld)", jint(o, "at_one"));
+    if (jint(o, "at_minus_one") > 0) fprintf(out, "; lambda = -1 (x%lld)", jint(o, "at_minus_one"));
+    for (i = 0; i < json_array_size(m); i++) {
+        const json_t *e = json_array_get(m, i);
+        fprintf(out, "%s%lld circle root%s of multiplicity %lld", i == 0 ? "; " : ", ",
+                jint(e, "roots"), jint(e, "roots") == 1 ? "" : "s", jint(e, "multiplicity"));
+    }
+    fputc('\n', out);
+}
+
+static void print_decided(FILE *out, const json_t *o)
+{
+    const json_t *agree = json_object_get(o, "agree");
+    if (json_is_boolean(agree))
+        fprintf(out, "  %-*s %s (%s)\n", LABEL_W, "decided by", jstr(o, "decided_by"),
+                json_is_true(agree) ? "Routh on q(z) and Schur-Cohn on p(lambda) agree"
+                                    : "DISAGREEMENT between Routh and Schur-Cohn: internal inconsistency");
+    else if (jstr(o, "decided_by"))
+        line(out, "decided by", "%s", jstr(o, "decided_by"));
+}
+
+static void r_bilinear(FILE *out, const json_t *o)
+{
+    char buf[200];
+    line(out, "q(z)", "%s", jstr(o, "poly"));
+    line(out, "", "%s", "q(z) = (1-z)^n p((1+z)/(1-z)): |lambda| < 1 <=> Re z < 0");
+    snprintf(buf, sizeof buf, "%lld (degree drop %lld = roots at lambda = -1; z = 0 of multiplicity %lld = roots at lambda = 1)",
+             jint(o, "degree"), jint(o, "degree_drop"), jint(o, "zero_mult"));
+    line(out, "degree", "%s", buf);
+    line(out, "p(1)", "%s (lambda = 1 is a root where this vanishes)", jstr(o, "p_at_1"));
+    line(out, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", jstr(o, "p_at_minus_1"));
+    print_assigned(out, o);
+}
+
+static void print_rows(FILE *out, const json_t *rows, slong deg)
+{
+    size_t i, j;
+    for (i = 0; i < json_array_size(rows); i++) {
+        const json_t *row = json_array_get(rows, i);
+        char lab[32];
+        snprintf(lab, sizeof lab, "z^%ld", (long) (deg - (slong) i));
+        fprintf(out, "  %-*s ", LABEL_W, lab);
+        for (j = 0; j < json_array_size(row); j++)
+            fprintf(out, "%s%s", j ? "   " : "", json_string_value(json_array_get(row, j)));
+        fputc('\n', out);
+    }
+}
+
+static void r_routh(FILE *out, const json_t *o)
+{
+    const json_t *rows = json_object_get(o, "rows");
+    const json_t *ev = json_object_get(o, "events");
+    size_t i;
+    slong deg = (slong) json_array_size(rows) - 1;
+    if (json_is_true(json_object_get(o, "symbolic"))) {
+        line(out, "array", "%s", "fraction-free, symbolic");
+        print_rows(out, rows, deg);
+        line(out, "note", "%s", jstr(o, "note"));
+        print_assigned(out, o);
+        return;
+    }
+    print_rows(out, rows, deg);
+    for (i = 0; i < json_array_size(ev); i++) {
+        const json_t *e = json_array_get(ev, i);
+        char lab[40];
+        snprintf(lab, sizeof lab, "%s", jstr(e, "kind"));
+        line(out, lab, "%s", jstr(e, "text"));
+    }
+    print_count(out, o);
+    print_assigned(out, o);
+}
+
+static void r_hurwitz(FILE *out, const json_t *o)
+{
+    const json_t *minors = json_object_get(o, "minors");
+    const json_t *conds = json_object_get(o, "conditions");
+    const json_t *dropped = json_object_get(o, "dropped");
+    size_t i;
+    for (i = 0; i < json_array_size(minors); i++) {
+        char lab[16];
+        snprintf(lab, sizeof lab, "D_%zu", i + 1);
+        line(out, lab, "%s", json_string_value(json_array_get(minors, i)));
+    }
+    if (json_array_size(conds) == 0)
+        line(out, "conditions", "%s", "none left: every Lienard-Chipart condition holds under the assumptions");
+    for (i = 0; i < json_array_size(conds); i++)
+        line(out, i == 0 ? "conditions" : "", "%s", json_string_value(json_array_get(conds, i)));
+    print_string_list(out, "and", json_object_get(o, "nonzero"), ", ");
+    for (i = 0; i < json_array_size(dropped); i++) {
+        const json_t *d = json_array_get(dropped, i);
+        char buf[512];
+        snprintf(buf, sizeof buf, "%s (in %s): %s", jstr(d, "factor"), jstr(d, "from"), jstr(d, "reason"));
+        line(out, i == 0 ? "dropped" : "", "%s", buf);
+    }
+    print_string_list(out, "always true", json_object_get(o, "always_true"), ", ");
+    line(out, "verdict", "%s", jstr(o, "verdict"));
+    print_assigned(out, o);
+}
+
+static void r_jury(FILE *out, const json_t *o)
+{
+    const json_t *cc = json_object_get(o, "cross_check");
+    line(out, "method", "%s", jstr(o, "method"));
+    if (json_is_true(json_object_get(o, "table_regular")))
+        print_string_list(out, "table rows", json_object_get(o, "rows"), "\n               ");
+    else
+        line(out, "table", "%s", "singular Jury table: decided through gcd(p, p*) and the Schur-Cohn form");
+    print_count(out, o);
+    line(out, "cross-check", "%s", json_is_true(json_object_get(cc, "agree")) ? "Routh (bilinear) agrees"
+                                                                            : "DISAGREES with Routh (bilinear)");
+    print_assigned(out, o);
+}
+
+static void r_stability(FILE *out, const json_t *o)
+{
+    print_count(out, o);
+    print_decided(out, o);
+    print_assigned(out, o);
+}
+
+static const char *endpoint(char *buf, size_t len, const json_t *e, int hi)
+{
+    if (json_is_null(e) || e == NULL) snprintf(buf, len, "%s", hi ? "inf" : "-inf");
+    else if (json_is_string(e)) snprintf(buf, len, "%s", json_string_value(e));
+    else snprintf(buf, len, "%s", jstr(e, "approx"));
+    return buf;
+}
+
+static void r_region(FILE *out, const json_t *o)
+{
+    const json_t *ivs = json_object_get(o, "intervals");
+    const json_t *pts = json_object_get(o, "undecided_points");
+    size_t i;
+    if (json_is_true(json_object_get(o, "symbolic"))) {
+        const json_t *c = json_object_get(o, "conditions");
+        for (i = 0; i < json_array_size(c); i++)
+            line(out, i == 0 ? "stable iff" : "and", "%s", json_string_value(json_array_get(c, i)));
+        line(out, "note", "%s", jstr(o, "note"));
+        print_assigned(out, o);
+        return;
+    }
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *iv = json_array_get(ivs, i);
+        char a[128], b[128], lab[160];
+        endpoint(a, sizeof a, json_object_get(iv, "lo"), 0);
+        endpoint(b, sizeof b, json_object_get(iv, "hi"), 1);
+        if (strcmp(a, b) == 0) snprintf(lab, sizeof lab, "%s = %s", jstr(o, "param"), a);
+        else snprintf(lab, sizeof lab, "%s in %s%s, %s%s", jstr(o, "param"),
+                      json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", a, b,
+                      json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")");
+        fprintf(out, "  %-10s %s\n", jstr(iv, "status"), lab);
+    }
+    /* algebraic endpoints in exact form */
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *hi = json_object_get(json_array_get(ivs, i), "hi");
+        if (json_is_object(hi) && (i + 1 == json_array_size(ivs) ||
+            !json_equal(hi, json_object_get(json_array_get(ivs, i + 1), "hi")))) {
+            char buf[600];
+            snprintf(buf, sizeof buf, "%s is root %lld (from below, 0-based) of %s", jstr(hi, "approx"),
+                     jint(hi, "root_index"), jstr(hi, "minpoly"));
+            line(out, "where", "%s", buf);
+        }
+    }
+    for (i = 0; i < json_array_size(pts); i++) {
+        const json_t *p = json_array_get(pts, i);
+        char buf[128];
+        endpoint(buf, sizeof buf, json_object_get(p, "value"), 0);
+        line(out, "undecided", "%s (status at this point itself not decided exactly)", buf);
+    }
+    print_assigned(out, o);
+}
+
+static void r_limit(FILE *out, const json_t *o)
+{
+    const json_t *roots = json_object_get(o, "roots");
+    size_t i;
+    char lab[80];
+    snprintf(lab, sizeof lab, "%s -> %s", jstr(o, "param"), jstr(o, "to"));
+    line(out, lab, "roots tend to the roots of %s", jstr(o, "limit_poly"));
+    for (i = 0; i < json_array_size(roots); i++) {
+        const json_t *r = json_array_get(roots, i);
+        char buf[300];
+        snprintf(buf, sizeof buf, "%s (multiplicity %lld)%s%s", jstr(r, "value"), jint(r, "multiplicity"),
+                 jstr(r, "minpoly") ? ", root of " : "", jstr(r, "minpoly") ? jstr(r, "minpoly") : "");
+        line(out, "", "%s", buf);
+    }
+    if (json_is_true(json_object_get(o, "all_roots_to_zero")))
+        line(out, "", "%s", "every root tends to 0 (strong decay)");
+    print_assigned(out, o);
+}
+
+static void r_claim(FILE *out, const json_t *o)
+{
+    const char *st = jstr(o, "status");
+    char buf[128];
+    line(out, "claim", "%s", jstr(o, "text"));
+    line(out, "status", "%s", st);
+    if (st && strcmp(st, "refuted") == 0) {
+        const json_t *ce = json_object_get(o, "counterexample"), *at = json_object_get(o, "at_counterexample");
+        const char *key;
+        json_t *val;
+        int first = 1;
+        fprintf(out, "  %-*s ", LABEL_W, "counterexample");
+        json_object_foreach((json_t *) ce, key, val) {
+            fprintf(out, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
+            first = 0;
+        }
+        fputc('\n', out);
+        print_count(out, at);
+    } else if (st && strcmp(st, "proved") == 0) {
+        const json_t *c = json_object_get(o, "certificate");
+        size_t i;
+        for (i = 0; i < json_array_size(c); i++) {
+            const json_t *e = json_array_get(c, i);
+            const char *key;
+            json_t *val;
+            int first = 1;
+            fprintf(out, "  %-*s %s > 0 since with ", LABEL_W, i == 0 ? "certificate" : "", jstr(e, "condition"));
+            json_object_foreach(json_object_get(e, "substitution"), key, val) {
+                fprintf(out, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
+                first = 0;
+            }
+            fprintf(out, " (every s >= 0) the numerator's %lld coefficients are all >= 0\n",
+                    jint(e, "transformed_terms"));
+        }
+        line(out, "re-checked", "%s", "yes (independent evaluation at random points of the region)");
+    } else {
+        line(out, "tried", "%s", jstr(o, "tried"));
+    }
+    snprintf(buf, sizeof buf, "%lld points checked exactly", jint(o, "points_checked"));
+    line(out, "search", "%s", buf);
     print_assigned(out, o);
 }
 
@@ -106,6 +353,14 @@ typedef struct { const char *name; render_fn fn; } renderer_t;
 static const renderer_t renderers[] = {
     {"charpoly", r_charpoly},
     {"expect", r_expect},
+    {"bilinear", r_bilinear},
+    {"routh", r_routh},
+    {"hurwitz", r_hurwitz},
+    {"jury", r_jury},
+    {"stability", r_stability},
+    {"region", r_region},
+    {"limit", r_limit},
+    {"claim", r_claim},
     {NULL, NULL}
 };
 
