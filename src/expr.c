@@ -441,10 +441,10 @@ int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src, rs_err
             break;
         case RS_EXPR_POW:
             if (!fmpz_is_one(fmpq_denref(b)))
-                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->b->line, e->b->col,
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
                                     "expected an integer power, found a fraction");
             else if (fmpz_bits(fmpq_numref(b)) > 20 || fmpz_get_si(fmpq_numref(b)) > RS_EXPR_MAX_POW || fmpz_get_si(fmpq_numref(b)) < -RS_EXPR_MAX_POW)
-                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->b->line, e->b->col,
+                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col,
                                     "power too large (limit %d)", RS_EXPR_MAX_POW);
             else if (fmpq_is_zero(a) && fmpz_sgn(fmpq_numref(b)) < 0)
                 r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
