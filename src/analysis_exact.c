@@ -240,7 +240,19 @@ static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
             }
             json_object_set_new(o, "symbolic", json_true());
             json_object_set_new(o, "rows", rows);
-            json_object_set_new(o, "note", json_string(
+            if (rm->zero_row >= 0) {
+                char txt[300];
+                snprintf(txt, sizeof txt, "row %ld vanished identically (roots symmetric about the origin for "
+                         "every parameter value: on the imaginary axis, i.e. on the unit circle, or in pairs "
+                         "+-z); replaced by the derivative of the auxiliary polynomial of row %ld",
+                         (long) rm->zero_row, (long) rm->zero_row - 1);
+                json_object_set_new(o, "events", json_pack("[{s:s,s:I,s:s}]", "kind", "zero_row", "row",
+                                                           (json_int_t) rm->zero_row, "text", txt));
+            }
+            json_object_set_new(o, "note", json_string(rm->zero_row >= 0 ?
+                "fraction-free rows; valid where the first-column entries do not vanish: a sign change in the "
+                "first column is a root with Re z > 0 (|lambda| > 1); the auxiliary polynomial's roots that lie "
+                "on the imaginary axis are on the unit circle" :
                 "fraction-free rows (each divided exactly by the pivot three rows up); valid where the "
                 "first-column entries do not vanish: all roots have Re z < 0 iff the first column has one sign"));
             rows = NULL;

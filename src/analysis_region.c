@@ -1038,6 +1038,177 @@ static int recheck_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_
     return ok;
 }
 
+/* Proves c != 0 on the box (c > 0 or -c > 0); appends the certificate. */
+static int prove_nonzero(const fmpz_mpoly_t cz, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
+                         flint_rand_t st)
+{
+    fmpq_mpoly_t c;
+    int ok;
+    fmpq_mpoly_init(c, s->ctx);
+    z2q(c, cz, s);
+    if (fmpq_mpoly_is_fmpq(c, s->ctx)) {
+        ok = !fmpq_mpoly_is_zero(c, s->ctx);
+    } else {
+        ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+        if (!ok) {
+            fmpq_mpoly_neg(c, c, s->ctx);
+            ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+        }
+    }
+    fmpq_mpoly_clear(c, s->ctx);
+    return ok;
+}
+
+/* Proves cz > 0 (sg = 1) or cz < 0 (sg = -1) on the box. */
+static int prove_sign(const fmpz_mpoly_t cz, int sg, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
+                      flint_rand_t st)
+{
+    fmpq_mpoly_t c;
+    int ok;
+    fmpq_mpoly_init(c, s->ctx);
+    z2q(c, cz, s);
+    if (sg < 0) fmpq_mpoly_neg(c, c, s->ctx);
+    if (fmpq_mpoly_is_fmpq(c, s->ctx)) {
+        fmpq_t k;
+        fmpq_init(k);
+        fmpq_mpoly_get_fmpq(k, c, s->ctx);
+        ok = fmpq_sgn(k) > 0;
+        fmpq_clear(k);
+    } else {
+        ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+    }
+    fmpq_mpoly_clear(c, s->ctx);
+    return ok;
+}
+
+/* Every Lienard-Chipart condition of h (z = variable zv) positive on the box. */
+static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bound_t *b, const rs_scheme_t s,
+                                json_t *cert, flint_rand_t st)
+{
+    rs_hurwitz_t hw;
+    int *sign = rs_run_signs(run, s);
+    int ok = 1;
+    slong i, k;
+    if (fmpz_mpoly_degree_si(h, s->lambda_var, s->zctx) < 1) {
+        flint_free(sign);
+        return prove_nonzero(h, b, s, cert, st);
+    }
+    rs_hurwitz_init(hw);
+    if (rs_hurwitz_compute(hw, h, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err) != RS_OK) {
+        rs_error_init(run->err);
+        ok = 0;
+    }
+    for (i = 0; ok && i < hw->ncond; i++) {
+        const rs_hurwitz_cond_struct *hc = hw->cond + i;
+        if (hc->trivially_true) continue;
+        if (hc->trivially_false) { ok = 0; break; }
+        ok = prove_sign(hc->reduced, 1, b, s, cert, st);
+        for (k = 0; k < hc->factors->num && ok; k++)
+            if (!hc->dropped[k] && hc->even[k]) ok = prove_nonzero(hc->factors->poly + k, b, s, cert, st);
+    }
+    rs_hurwitz_clear(hw, s->zctx);
+    flint_free(sign);
+    return ok;
+}
+
+/* Bounded (stable or marginal) on the whole box: q = G H with
+ * G = gcd(q(z), q(-z)) (the roots symmetric about the origin, among them
+ * every root on the imaginary axis), H Hurwitz-stable, and G = z^k g(z^2)
+ * with k <= 1 and g of degree <= 2 in u = z^2 having simple negative roots
+ * (so G's roots are simple and on the axis). */
+static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, json_t *cert,
+                         flint_rand_t st)
+{
+    const rs_scheme_struct *s = v->s;
+    slong lv = s->lambda_var, i, len, k, dg;
+    fmpz_mpoly_t q, qm, G, H, g, t;
+    ulong *e = flint_malloc(s->nvars * sizeof(ulong));
+    int ok = 1;
+    fmpz_mpoly_init(q, s->zctx); fmpz_mpoly_init(qm, s->zctx);
+    fmpz_mpoly_init(G, s->zctx); fmpz_mpoly_init(H, s->zctx);
+    fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(t, s->zctx);
+    rs_bilinear_fmpz_mpoly(q, v->cp->p, lv, s->zctx);
+    if (fmpz_mpoly_degree_si(q, lv, s->zctx) != v->cp->degree) ok = 0;   /* lambda = -1 always a root */
+    /* q(-z) */
+    len = fmpz_mpoly_length(q, s->zctx);
+    for (i = 0; ok && i < len; i++) {
+        fmpz_t c;
+        fmpz_init(c);
+        fmpz_mpoly_get_term_exp_ui(e, q, i, s->zctx);
+        fmpz_set(c, q->coeffs + i);
+        if (e[lv] & 1) fmpz_neg(c, c);
+        fmpz_mpoly_push_term_fmpz_ui(qm, c, e, s->zctx);
+        fmpz_clear(c);
+    }
+    fmpz_mpoly_sort_terms(qm, s->zctx);
+    if (ok && !fmpz_mpoly_gcd(G, q, qm, s->zctx)) ok = 0;
+    if (ok && fmpz_mpoly_degree_si(G, lv, s->zctx) < 1) ok = 0;   /* nothing on the axis: use `stable` */
+    if (ok) ok = fmpz_mpoly_divides(H, q, G, s->zctx);
+    if (ok) ok = prove_hurwitz_stable(run, H, b, s, cert, st);
+    if (ok) {
+        /* G = z^k G1, G1 even */
+        k = WORD_MAX;
+        len = fmpz_mpoly_length(G, s->zctx);
+        for (i = 0; i < len; i++) {
+            fmpz_mpoly_get_term_exp_ui(e, G, i, s->zctx);
+            if ((slong) e[lv] < k) k = (slong) e[lv];
+        }
+        if (k > 1) ok = 0;                                          /* repeated lambda = 1 */
+        for (i = 0; ok && i < len; i++) {
+            fmpz_mpoly_get_term_exp_ui(e, G, i, s->zctx);
+            if (((slong) e[lv] - k) & 1) ok = 0;
+            e[lv] = (e[lv] - (ulong) k) / 2;
+            fmpz_mpoly_push_term_fmpz_ui(g, G->coeffs + i, e, s->zctx);
+        }
+        fmpz_mpoly_sort_terms(g, s->zctx);
+        fmpz_mpoly_combine_like_terms(g, s->zctx);
+    }
+    dg = fmpz_mpoly_degree_si(g, lv, s->zctx);
+    if (ok && k == 1) {                                             /* simple root at lambda = 1 */
+        fmpz_t zero;
+        fmpz_init(zero);
+        fmpz_mpoly_evaluate_one_fmpz(t, g, lv, zero, s->zctx);
+        ok = prove_nonzero(t, b, s, cert, st);
+        fmpz_clear(zero);
+    }
+    if (ok && dg == 1) {
+        fmpz_mpoly_t a1, a0;
+        fmpz_mpoly_init(a1, s->zctx); fmpz_mpoly_init(a0, s->zctx);
+        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
+        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
+        /* root u = -a0/a1 < 0: a0, a1 of one sign */
+        ok = (prove_sign(a1, 1, b, s, cert, st) && prove_sign(a0, 1, b, s, cert, st))
+             || (prove_sign(a1, -1, b, s, cert, st) && prove_sign(a0, -1, b, s, cert, st));
+        fmpz_mpoly_clear(a1, s->zctx); fmpz_mpoly_clear(a0, s->zctx);
+    } else if (ok && dg == 2) {
+        fmpz_mpoly_t a2, a1, a0, d;
+        fmpz_mpoly_init(a2, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+        fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(d, s->zctx);
+        rs_charpoly_coeff(a2, g, 2, lv, s->zctx);
+        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
+        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
+        /* two simple negative roots in u: one sign for a2, a1, a0 and a1^2 - 4 a2 a0 > 0 */
+        fmpz_mpoly_mul(d, a1, a1, s->zctx);
+        fmpz_mpoly_mul(t, a2, a0, s->zctx);
+        fmpz_mpoly_scalar_mul_si(t, t, 4, s->zctx);
+        fmpz_mpoly_sub(d, d, t, s->zctx);
+        ok = ((prove_sign(a2, 1, b, s, cert, st) && prove_sign(a1, 1, b, s, cert, st)
+               && prove_sign(a0, 1, b, s, cert, st))
+              || (prove_sign(a2, -1, b, s, cert, st) && prove_sign(a1, -1, b, s, cert, st)
+                  && prove_sign(a0, -1, b, s, cert, st)))
+             && prove_sign(d, 1, b, s, cert, st);
+        fmpz_mpoly_clear(a2, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+        fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(d, s->zctx);
+    } else if (ok && dg > 2) {
+        ok = 0;
+    }
+    fmpz_mpoly_clear(q, s->zctx); fmpz_mpoly_clear(qm, s->zctx);
+    fmpz_mpoly_clear(G, s->zctx); fmpz_mpoly_clear(H, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(t, s->zctx);
+    flint_free(e);
+    return ok;
+}
+
 typedef enum { CLAIM_STABLE, CLAIM_BOUNDED, CLAIM_UNSTABLE } claim_kind_t;
 
 static int violates(claim_kind_t k, rs_status_t st)
@@ -1283,25 +1454,16 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
         if (rs_run_hurwitz(h, run, v, qz) == RS_OK) {
             if (kind != CLAIM_UNSTABLE) {
                 /* stable (hence bounded): every Lienard-Chipart condition > 0 */
-                proved = 1;
-                for (i = 0; i < h->ncond && proved; i++) {
-                    const rs_hurwitz_cond_struct *hc = h->cond + i;
-                    slong k;
-                    if (hc->trivially_true) continue;
-                    if (hc->trivially_false) { proved = 0; break; }
-                    z2q(c, hc->reduced, s);
-                    proved = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
-                    for (k = 0; k < hc->factors->num && proved; k++) {
-                        if (hc->dropped[k] || !hc->even[k]) continue;
-                        z2q(c, hc->factors->poly + k, s);       /* even factor: != 0 */
-                        if (!(prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st))) {
-                            fmpq_mpoly_neg(c, c, s->ctx);
-                            proved = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
-                        }
-                    }
-                }
+                proved = prove_hurwitz_stable(run, qz, b, s, cert, st);
                 tried = "Lienard-Chipart conditions on the bilinear polynomial, each proved positive by "
                         "mapping every parameter interval onto [0, inf) and checking coefficient signs";
+                if (!proved && kind == CLAIM_BOUNDED) {
+                    json_decref(cert);
+                    cert = json_array();
+                    proved = prove_bounded(run, v, b, cert, st);
+                    tried = "stability by Lienard-Chipart; then q = G H with G = gcd(q(z), q(-z)): H "
+                            "Hurwitz-stable and G's roots simple on the imaginary axis (degree <= 2 in z^2)";
+                }
             } else {
                 /* unstable: q has coefficients of both signs (a root with Re z > 0) */
                 slong k;

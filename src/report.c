@@ -152,6 +152,8 @@ static void r_routh(FILE *out, const json_t *o)
     if (json_is_true(json_object_get(o, "symbolic"))) {
         line(out, "array", "%s", "fraction-free, symbolic");
         print_rows(out, rows, deg);
+        for (i = 0; i < json_array_size(ev); i++)
+            line(out, jstr(json_array_get(ev, i), "kind"), "%s", jstr(json_array_get(ev, i), "text"));
         line(out, "note", "%s", jstr(o, "note"));
         print_assigned(out, o);
         return;

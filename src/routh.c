@@ -336,11 +336,12 @@ void rs_routh_mpoly_clear(rs_routh_mpoly_t r, const fmpz_mpoly_ctx_t ctx)
 int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
                    const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
-    slong m, i, j;
+    slong m, i, j, nodiv = 0;
     fmpz_mpoly_t t, u;
     int status = RS_OK;
 
     rs_routh_mpoly_clear(r, ctx);
+    r->zero_row = -1;
     m = fmpz_mpoly_degree_si(q, var, ctx);
     if (m < 0)
         return rs_error_set(err, RS_ERR_INPUT,
@@ -365,6 +366,22 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
     for (i = 2; i <= m && status == RS_OK; i++) {
         const fmpz_mpoly_struct *piv = r->rows[i - 1], *up = r->rows[i - 2];
         if (fmpz_mpoly_is_zero(piv, ctx)) {
+            /* a whole row identically zero: roots symmetric about the origin
+             * for every parameter value; continue with the derivative of the
+             * auxiliary polynomial of the row above (textbook rule, exact) */
+            int allzero = 1;
+            for (j = 0; j < r->rowlen[i - 1]; j++)
+                if (!fmpz_mpoly_is_zero(r->rows[i - 1] + j, ctx)) allzero = 0;
+            if (allzero && r->zero_row < 0) {
+                slong deg = m - (i - 2);
+                for (j = 0; j < r->rowlen[i - 1] && deg - 2 * j > 0; j++)
+                    fmpz_mpoly_scalar_mul_si(r->rows[i - 1] + j, up + j, deg - 2 * j, ctx);
+                r->zero_row = i - 1;
+                nodiv = i;   /* the Bareiss-type divisions no longer apply */
+                if (!fmpz_mpoly_is_zero(piv, ctx)) { i--; continue; }
+            }
+        }
+        if (fmpz_mpoly_is_zero(piv, ctx)) {
             status = rs_error_set(err, RS_ERR_MATH,
                 "Routh pivot of row %ld is identically zero; specialise the "
                 "parameters and use the exact numeric array", i - 1);
@@ -378,7 +395,7 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
                 fmpz_mpoly_mul(u, up, r->rows[i - 1] + j + 1, ctx);
                 fmpz_mpoly_sub(t, t, u, ctx);
             }
-            if (i >= 4) {
+            if (i >= 4 && i - 3 >= nodiv) {
                 if (!fmpz_mpoly_divides(out, t, r->rows[i - 3], ctx))
                     status = rs_error_set(err, RS_ERR_INTERNAL,
                         "fraction-free Routh row %ld not divisible by the "

@@ -69,6 +69,9 @@ typedef struct {
     slong nrows;
     slong *rowlen;
     fmpz_mpoly_struct **rows;
+    slong zero_row;   /* row that vanished identically and was replaced by the
+                         derivative of the auxiliary polynomial above it (-1: none);
+                         rows after it are cross-multiplied without division */
 } rs_routh_mpoly_struct;
 typedef rs_routh_mpoly_struct rs_routh_mpoly_t[1];
 
