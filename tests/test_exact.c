@@ -1,0 +1,274 @@
+/* test_exact.c -- the exact analyses on the bundled cases, each expected
+ * value from an independent derivation:
+ *   - textbook regions from the closed forms of the moduli (forward Euler
+ *     |lambda|^2 = 1 + w^2, backward Euler 1/(1 + w^2), trapezoid 1,
+ *     central difference: roots e^{+-i theta}, 2 cos theta = 2 - w^2),
+ *   - BDF2 spurious roots: rho(lambda) = (3 lambda - 1)(lambda - 1) at w = 0,
+ *   - the Park counterexample: roots of the hand-derived polynomial isolated
+ *     with Arb (arb_fmpz_poly_complex_roots), not with recstab's counters. */
+#include "testutil.h"
+#include <string.h>
+#include <math.h>
+#include <flint/fmpq_poly.h>
+#include <arb_fmpz_poly.h>
+#include "recstab/casefile.h"
+#include "recstab/analysis.h"
+
+static json_t *run_case(const char *rel, const char *const *req, int nreq, int *outcome)
+{
+    char path[1024];
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t opt;
+    json_t *doc = NULL;
+    int i;
+    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
+    rs_case_init(c);
+    rs_error_init(err);
+    rs_options_default(&opt);
+    if (rs_case_parse_file(c, path, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
+    rs_case_clear_requests(c);
+    for (i = 0; i < nreq; i++) rs_case_add_request(c, req[i], "test", 1, 1);
+    if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
+    rs_case_clear(c);
+    return doc;
+}
+
+static const json_t *result(const json_t *doc, size_t i)
+{
+    return json_array_get(json_object_get(doc, "results"), i);
+}
+
+static const char *str(const json_t *o, const char *k)
+{
+    return json_string_value(json_object_get(o, k));
+}
+
+/* one interval (lo, inf) with the given status */
+static void expect_single_interval(const char *rel, const char *status)
+{
+    const char *req[] = {"region w"};
+    int outcome;
+    json_t *doc = run_case(rel, req, 1, &outcome);
+    const json_t *ivs = json_object_get(result(doc, 0), "intervals");
+    assert_int_equal(json_array_size(ivs), 1);
+    assert_string_equal(str(json_array_get(ivs, 0), "lo"), "0");
+    assert_true(json_is_null(json_object_get(json_array_get(ivs, 0), "hi")));
+    assert_false(json_is_true(json_object_get(json_array_get(ivs, 0), "lo_closed")));
+    assert_string_equal(str(json_array_get(ivs, 0), "status"), status);
+    json_decref(doc);
+}
+
+static void test_regions_textbook(void **state)
+{
+    (void) state;
+    expect_single_interval("cases/textbook/forward-euler.case", "unstable");   /* 1 + w^2 > 1 */
+    expect_single_interval("cases/textbook/backward-euler.case", "stable");    /* 1/(1 + w^2) < 1 */
+    expect_single_interval("cases/textbook/trapezoidal.case", "marginal");     /* |lambda| = 1, simple */
+    expect_single_interval("cases/textbook/bdf2.case", "stable");
+}
+
+/* central difference: 2 cos theta = 2 - w^2 has a solution iff 0 < w <= 2;
+ * w = 2 gives theta = pi twice (double root -1), w > 2 a real root < -1. */
+static void test_region_central_difference(void **state)
+{
+    const char *req[] = {"region w"};
+    int outcome;
+    json_t *doc;
+    const json_t *ivs, *a, *b;
+    (void) state;
+    doc = run_case("cases/textbook/central-difference.case", req, 1, &outcome);
+    ivs = json_object_get(result(doc, 0), "intervals");
+    assert_int_equal(json_array_size(ivs), 2);
+    a = json_array_get(ivs, 0);
+    b = json_array_get(ivs, 1);
+    assert_string_equal(str(a, "lo"), "0");
+    assert_string_equal(str(a, "hi"), "2");
+    assert_false(json_is_true(json_object_get(a, "hi_closed")));
+    assert_string_equal(str(a, "status"), "marginal");
+    assert_string_equal(str(b, "lo"), "2");
+    assert_true(json_is_true(json_object_get(b, "lo_closed")));
+    assert_string_equal(str(b, "status"), "unstable");
+    json_decref(doc);
+}
+
+/* BDF2 at w = 0: (3l^2 - 4l + 1)^2 = (3l - 1)^2 (l - 1)^2 -> 1 (x2), 1/3 (x2);
+ * w -> inf: 4 w^2 l^4 dominates -> 0 (x4). */
+static void test_limits_bdf2(void **state)
+{
+    const char *req[] = {"limit w -> 0", "limit w -> inf"};
+    int outcome;
+    json_t *doc;
+    const json_t *r0, *r1;
+    size_t i;
+    int seen_third = 0, seen_one = 0;
+    (void) state;
+    doc = run_case("cases/textbook/bdf2.case", req, 2, &outcome);
+    r0 = json_object_get(result(doc, 0), "roots");
+    for (i = 0; i < json_array_size(r0); i++) {
+        const json_t *r = json_array_get(r0, i);
+        if (strcmp(str(r, "value"), "1/3") == 0 && json_integer_value(json_object_get(r, "multiplicity")) == 2)
+            seen_third = 1;
+        if (strcmp(str(r, "value"), "1") == 0 && json_integer_value(json_object_get(r, "multiplicity")) == 2)
+            seen_one = 1;
+    }
+    assert_true(seen_third && seen_one);
+    r1 = result(doc, 1);
+    assert_true(json_is_true(json_object_get(r1, "all_roots_to_zero")));
+    json_decref(doc);
+}
+
+static void test_claims_textbook(void **state)
+{
+    struct { const char *file, *claim, *status; } t[] = {
+        {"cases/textbook/forward-euler.case", "claim unstable when w > 0", "proved"},
+        {"cases/textbook/forward-euler.case", "claim bounded when w > 0", "refuted"},
+        {"cases/textbook/backward-euler.case", "claim stable when w > 0", "proved"},
+        {"cases/textbook/trapezoidal.case", "claim bounded when w > 0", "proved"},
+        {"cases/textbook/trapezoidal.case", "claim stable when w > 0", "refuted"},
+        {"cases/textbook/central-difference.case", "claim bounded when w < 2", "proved"},
+        {"cases/textbook/central-difference.case", "claim bounded when w <= 2", "refuted"},
+        {"cases/textbook/bdf2.case", "claim stable when w > 0", "proved"},
+    };
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        int outcome;
+        json_t *doc = run_case(t[i].file, &t[i].claim, 1, &outcome);
+        const char *got = str(result(doc, 0), "status");
+        if (strcmp(got, t[i].status) != 0)
+            fail_msg("%s / %s: %s, expected %s", t[i].file, t[i].claim, got, t[i].status);
+        assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+        assert_int_equal(outcome & RS_OUTCOME_FAILED, strcmp(t[i].status, "refuted") == 0);
+        json_decref(doc);
+    }
+}
+
+/* The Park lecture's "alpha <= 2": recstab's counterexample, checked here by
+ * certified root isolation of the hand-derived polynomial (test_golden.c). */
+static void test_park_counterexample(void **state)
+{
+    const char *req[] = {"claim stable when alpha <= 2"};
+    int outcome;
+    json_t *doc;
+    const json_t *ce;
+    fmpq_t m, muh, wh, al;
+    (void) state;
+    doc = run_case("cases/park-staggered.case", req, 1, &outcome);
+    assert_string_equal(str(result(doc, 0), "status"), "refuted");
+    assert_true(outcome & RS_OUTCOME_FAILED);
+    ce = json_object_get(result(doc, 0), "counterexample");
+    fmpq_init(m); fmpq_init(muh); fmpq_init(wh); fmpq_init(al);
+    fmpq_set_str(m, str(ce, "m"), 10);
+    fmpq_set_str(muh, str(ce, "muh"), 10);
+    fmpq_set_str(wh, str(ce, "wh"), 10);
+    fmpq_set_str(al, str(ce, "alpha"), 10);
+    assert_true(fmpq_cmp_si(al, 2) <= 0 && fmpq_sgn(al) >= 0 && fmpq_sgn(m) > 0);
+    {
+        /* p = A (4(l-1)^2 + wh^2 (l+1)^2) - 2 m muh wh^2 ((1+al) l - al)(l+1)^2,
+         * A = (3 + 2(1+m) muh) l^2 - 4 l + 1, built with fmpq_poly */
+        fmpq_poly_t A, B, C, t, p;
+        fmpq_t c;
+        fmpz_poly_t pz;
+        acb_ptr roots;
+        slong i, outside = 0, d;
+        arb_t ab;
+        fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(C); fmpq_poly_init(t); fmpq_poly_init(p);
+        fmpq_init(c);
+        fmpq_add_si(c, m, 1); fmpq_mul(c, c, muh); fmpq_mul_si(c, c, 2); fmpq_add_si(c, c, 3);
+        fmpq_poly_set_coeff_fmpq(A, 2, c); fmpq_poly_set_coeff_si(A, 1, -4); fmpq_poly_set_coeff_si(A, 0, 1);
+        fmpq_poly_set_str(t, "3  1 -2 1");                     /* (l-1)^2 */
+        fmpq_poly_scalar_mul_si(B, t, 4);
+        fmpq_poly_set_str(t, "3  1 2 1");                      /* (l+1)^2 */
+        fmpq_mul(c, wh, wh);
+        fmpq_poly_scalar_mul_fmpq(C, t, c);
+        fmpq_poly_add(B, B, C);
+        fmpq_poly_mul(p, A, B);
+        fmpq_add_si(c, al, 1);
+        fmpq_poly_zero(C);
+        fmpq_poly_set_coeff_fmpq(C, 1, c);
+        fmpq_neg(c, al);
+        fmpq_poly_set_coeff_fmpq(C, 0, c);
+        fmpq_poly_mul(C, C, t);
+        fmpq_mul(c, m, muh); fmpq_mul(c, c, wh); fmpq_mul(c, c, wh); fmpq_mul_si(c, c, 2);
+        fmpq_poly_scalar_mul_fmpq(C, C, c);
+        fmpq_poly_sub(p, p, C);
+        fmpz_poly_init(pz);
+        fmpq_poly_get_numerator(pz, p);
+        d = fmpz_poly_degree(pz);
+        roots = _acb_vec_init(d);
+        arb_fmpz_poly_complex_roots(roots, pz, 0, 128);
+        arb_init(ab);
+        for (i = 0; i < d; i++) {
+            acb_abs(ab, roots + i, 128);
+            {
+                arb_t one;
+                arb_init(one);
+                arb_one(one);
+                if (arb_gt(ab, one)) outside++;
+                arb_clear(one);
+            }
+        }
+        assert_true(outside >= 1);     /* certified: a root strictly outside the circle */
+        arb_clear(ab);
+        _acb_vec_clear(roots, d);
+        fmpz_poly_clear(pz);
+        fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(C); fmpq_poly_clear(t); fmpq_poly_clear(p);
+        fmpq_clear(c);
+    }
+    fmpq_clear(m); fmpq_clear(muh); fmpq_clear(wh); fmpq_clear(al);
+    json_decref(doc);
+}
+
+/* alpha <= 1 is proved; the region at m = 10 ends near 1.1474 (a root of
+ * 13 alpha^2 + 6 alpha - 24, checked by substitution here). */
+static void test_park_proof_and_region(void **state)
+{
+    const char *req[] = {"claim stable when alpha <= 1", "region alpha at m=10, muh=1, wh=1"};
+    int outcome;
+    json_t *doc;
+    const json_t *ivs, *hi;
+    double x;
+    (void) state;
+    doc = run_case("cases/park-staggered.case", req, 2, &outcome);
+    assert_string_equal(str(result(doc, 0), "status"), "proved");
+    assert_true(json_is_true(json_object_get(result(doc, 0), "certificate_rechecked")));
+    ivs = json_object_get(result(doc, 1), "intervals");
+    assert_string_equal(str(json_array_get(ivs, 0), "status"), "stable");
+    hi = json_object_get(json_array_get(ivs, 0), "hi");
+    assert_string_equal(str(hi, "minpoly"), "13*alpha^2 + 6*alpha - 24");
+    x = json_real_value(json_object_get(json_array_get(ivs, 0), "hi_approx"));
+    assert_true(fabs(13 * x * x + 6 * x - 24) < 1e-9);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+/* Printed eq. (23)/(24) differ from the scheme's bilinear polynomial. */
+static void test_park_printed_bilinear(void **state)
+{
+    int outcome;
+    json_t *doc;
+    const char *req[] = {
+        "expect bilinear 16*(2 + (1 + m)*muh)*z^4 + 16*(1 + 2*(1 + m)*muh)*z^3 + (wh^2*(8 + (4 + (6 + 2*alpha)*m)*muh) + 16*muh*(1 + m))*z^2 + 2*wh^2*(4 + (8 + 8*m - 4*alpha*m)*muh)*z + (4 + 2*m)*wh^2*muh",
+        /* independent: q = (1-z)^4 p((1+z)/(1-z)) expanded by hand / SymPy, divided by 8 */
+        "expect bilinear muh*wh^2 + z^4*(4*m*muh + 4*muh + 16) + z^3*(8*m*muh + 8*muh + 8) + z^2*(2*alpha*m*muh*wh^2 + 2*m*muh*wh^2 + 4*m*muh + muh*wh^2 + 4*muh + 4*wh^2) + z*(-2*alpha*m*muh*wh^2 + 2*m*muh*wh^2 + 2*muh*wh^2 + 2*wh^2)"};
+    (void) state;
+    doc = run_case("cases/park-staggered.case", req, 2, &outcome);
+    assert_string_equal(str(result(doc, 0), "status"), "different");
+    assert_string_equal(str(result(doc, 1), "status"), "equal");  /* q/8 is q normalised */
+    json_decref(doc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_regions_textbook),
+        cmocka_unit_test(test_region_central_difference),
+        cmocka_unit_test(test_limits_bdf2),
+        cmocka_unit_test(test_claims_textbook),
+        cmocka_unit_test(test_park_counterexample),
+        cmocka_unit_test(test_park_proof_and_region),
+        cmocka_unit_test(test_park_printed_bilinear),
+    };
+    return cmocka_run_group_tests_name("exact", tests, NULL, NULL);
+}
