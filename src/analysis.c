@@ -17,6 +17,7 @@ void rs_options_default(rs_options_t *opt)
 {
     opt->max_prec = 65536;
     opt->default_digits = 30;
+    opt->with_scheme = 0;
 }
 
 /* ---- variants: the scheme with some parameters substituted ------------- */
@@ -429,6 +430,50 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     }
 }
 
+/* The equations as written and the lambda-matrix (set values substituted),
+ * for derivations. */
+static json_t *scheme_json(rs_run_t *run)
+{
+    const rs_case_struct *c = run->c;
+    rs_assign_t *a;
+    slong n, i, j;
+    rs_variant_t *v;
+    json_t *o = json_object(), *eqs = json_array(), *lets = json_array(), *M = json_array();
+    if (rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0), rs_run_variant(&v, run, a, n) != RS_OK) {
+        rs_assign_free(a, n);
+        json_decref(o); json_decref(eqs); json_decref(lets); json_decref(M);
+        return NULL;
+    }
+    rs_assign_free(a, n);
+    for (i = 0; i < c->neqs; i++) json_array_append_new(eqs, json_string(c->eqs[i].text ? c->eqs[i].text : ""));
+    for (i = 0; i < c->nlets; i++) json_array_append_new(lets, json_string(c->lets[i].text ? c->lets[i].text : ""));
+    for (i = 0; i < v->s->n; i++) {
+        json_t *row = json_array();
+        for (j = 0; j < v->s->n; j++) {
+            char *str = rs_polyfmt_fmpq_mpoly(v->s->M + i * v->s->n + j, (const char **) v->s->vars, v->s->ctx);
+            json_array_append_new(row, json_string(str));
+            free(str);
+        }
+        json_array_append_new(M, row);
+    }
+    json_object_set_new(o, "equations", eqs);
+    json_object_set_new(o, "lets", lets);
+    json_object_set_new(o, "matrix", M);
+    if (v->s->from_char) {
+        char *str = rs_polyfmt_fmpq_mpoly(v->s->charpoly, (const char **) v->s->vars, v->s->ctx);
+        json_object_set_new(o, "char", json_string(str));
+        free(str);
+    }
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "nonzero_assumptions", rs_json_nonzero(v->s));
+    {
+        json_t *as = json_array();
+        for (i = 0; i < c->nassume; i++) json_array_append_new(as, json_string(c->assume[i].text));
+        json_object_set_new(o, "assume", as);
+    }
+    return o;
+}
+
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
                     const rs_options_t *opt, rs_error_t err)
 {
@@ -452,9 +497,9 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     }
     for (i = 0; i < c->nrequests && r == RS_OK; i++)
         r = dispatch(&run, &c->requests[i]);
-    for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
-    free(run.variants);
     if (r != RS_OK) {
+        for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
+        free(run.variants);
         json_decref(run.results);
         return r;
     }
@@ -473,7 +518,20 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
             json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
         json_object_set_new(d, "set", sets);
     }
+    if (opt->with_scheme) {
+        json_t *sc = scheme_json(&run);
+        if (sc == NULL) {
+            json_decref(d);
+            json_decref(run.results);
+            for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
+            free(run.variants);
+            return err->code ? err->code : RS_ERR_INTERNAL;
+        }
+        json_object_set_new(d, "scheme", sc);
+    }
     json_object_set_new(d, "results", run.results);
+    for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
+    free(run.variants);
     *doc = d;
     *outcome = run.outcome;
     return RS_OK;

@@ -70,10 +70,12 @@ void rs_case_clear(rs_case_t c)
     flint_free(c->assume);
     for (i = 0; i < c->nlets; i++) {
         flint_free(c->lets[i].name); rs_expr_free(c->lets[i].e); loc_clear(&c->lets[i].loc);
+        flint_free(c->lets[i].text);
     }
     flint_free(c->lets);
     for (i = 0; i < c->neqs; i++) {
         rs_expr_free(c->eqs[i].lhs); rs_expr_free(c->eqs[i].rhs); loc_clear(&c->eqs[i].loc);
+        flint_free(c->eqs[i].text);
     }
     flint_free(c->eqs);
     rs_expr_free(c->charexpr);
@@ -351,6 +353,7 @@ static int st_let(ctx_t *x, size_t i)
     l->shift = lhs->shift;
     l->e = e;
     set_loc(x, &l->loc, at);
+    l->text = dupstr(t + at);
     rs_expr_free(lhs);
     return RS_OK;
 }
@@ -377,6 +380,7 @@ static int st_eq(ctx_t *x, size_t i)
     q = &x->c->eqs[x->c->neqs++];
     q->lhs = lhs; q->rhs = rhs;
     set_loc(x, &q->loc, at);
+    q->text = dupstr(t + at);
     return RS_OK;
 }
 

@@ -26,6 +26,7 @@ enum {
 typedef struct {
     slong max_prec;        /* ceiling for certified numerics (bits) */
     slong default_digits;  /* radius digits when not given */
+    int with_scheme;       /* add "scheme": equations and lambda-matrix (for derivations) */
 } rs_options_t;
 
 void rs_options_default(rs_options_t *opt);

@@ -47,11 +47,13 @@ typedef struct {
     slong shift;           /* K */
     rs_expr_t *e;
     rs_loc_t loc;
+    char *text;            /* source text after `let` */
 } rs_let_t;
 
 typedef struct {
     rs_expr_t *lhs, *rhs;
     rs_loc_t loc;
+    char *text;            /* source text "lhs = rhs" */
 } rs_eq_t;
 
 typedef struct {

@@ -7,6 +7,7 @@
 #include "recstab/analysis.h"
 #include "recstab/casefile.h"
 #include "recstab/report.h"
+#include "recstab/derivation.h"
 
 #ifndef RS_VERSION
 #define RS_VERSION "0.0.0"
@@ -20,6 +21,7 @@ static void usage(FILE *f)
           "  --analyse \"ANALYSIS [OPTIONS]\" replace the case's analyses (repeatable; also\n"
           "                                 accepts \"expect ...\" and \"claim ...\" lines)\n"
           "  --max-prec BITS                ceiling for certified numerics (default 65536)\n"
+          "  --markdown, --latex            print the whole derivation (Markdown / a LaTeX document)\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
           "             3 internal inconsistency (two independent methods disagree)\n", f);
@@ -32,7 +34,7 @@ static int exit_code_for(int code)
 
 int main(int argc, char **argv)
 {
-    int json = 0, i, worst = 0;
+    int json = 0, markdown = 0, latex = 0, i, worst = 0;
     const char **sets = calloc((size_t) argc, sizeof(char *));
     const char **analyses = calloc((size_t) argc, sizeof(char *));
     const char **cases = calloc((size_t) argc, sizeof(char *));
@@ -47,6 +49,8 @@ int main(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--json") == 0) json = 1;
+        else if (strcmp(a, "--markdown") == 0) markdown = 1;
+        else if (strcmp(a, "--latex") == 0) latex = 1;
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
         else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
         else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
@@ -78,6 +82,12 @@ int main(int argc, char **argv)
             goto end;
         } else cases[ncases++] = a;
     }
+    if (json + markdown + latex > 1) {
+        fprintf(stderr, "recstab: choose one of --json, --markdown, --latex\n");
+        rc = 2;
+        goto end;
+    }
+    opt.with_scheme = markdown || latex;
     if (ncases == 0) {
         fprintf(stderr, "recstab: expected a case file (or - for stdin)\n");
         usage(stderr);
@@ -130,6 +140,14 @@ int main(int argc, char **argv)
         json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
         fputc('\n', out);
         json_decref(top);
+    } else if (markdown) {
+        size_t k;
+        for (k = 0; k < json_array_size(docs); k++) rs_derivation_markdown(out, json_array_get(docs, k));
+    } else if (latex) {
+        size_t k;
+        rs_derivation_latex_begin(out);
+        for (k = 0; k < json_array_size(docs); k++) rs_derivation_latex(out, json_array_get(docs, k), 0);
+        rs_derivation_latex_end(out);
     } else {
         size_t k;
         for (k = 0; k < json_array_size(docs); k++) {
