@@ -448,8 +448,13 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f, slong prec)
     acb_poly_set_fmpz_poly(P, f, prec);
     /* from good seeds Durand-Kerner converges quadratically: a few dozen
      * iterations suffice; bad seeds (e.g. Wilkinson-like clusters of real
-     * roots, where GSL has no correct digit) go to complex_roots instead */
+     * roots, where GSL has no correct digit) or ill-conditioned roots (less
+     * than prec - 40 accurate bits) go to complex_roots, which reaches the
+     * target accuracy by raising its own working precision */
     n = acb_poly_find_roots(E, P, init, 32, prec);
+    for (i = 0; i < d && n == d; i++)   /* isolated but not yet converged */
+        if (acb_rel_accuracy_bits(E + i) < prec - 40)
+            n = 0;
     if (n != d) {
         arb_fmpz_poly_complex_roots(E, f, 0, prec);
         n = d;

@@ -3,7 +3,17 @@
  * Exact-coefficient input is first made squarefree (FLINT), so every root of
  * each factor is simple and acb_mat_eig_simple can certify it; precision is
  * doubled from a cheap start until the radius interval is narrower than
- * 10^-digits relatively, up to a ceiling (RS_RADIUS_MAX_PREC_DEFAULT bits). */
+ * 10^-digits relatively, up to a ceiling (RS_RADIUS_MAX_PREC_DEFAULT bits).
+ *
+ * Accuracy goal ("digits"): 2*rad(rho) <= 10^-digits * (lower bound of rho).
+ * For exact (fmpz) input every root is nonzero after removing the lambda^k
+ * factor, so the goal is always relative (rho == 0 exactly when p = c*lambda^k).
+ * For ball input (acb_poly, matrix polynomials) a radius ball that still
+ * contains 0 is accepted once 2*rad(rho) <= 10^-digits absolutely.
+ *
+ * Every function leaves r in a consistent state; on failure `partial` says
+ * whether lower/upper/rho still hold a certified (but too wide) enclosure.
+ * max_prec <= 0 means RS_RADIUS_MAX_PREC_DEFAULT; digits must be >= 1. */
 #ifndef RECSTAB_RADIUS_H
 #define RECSTAB_RADIUS_H
 
@@ -12,6 +22,7 @@
 #include <arb.h>
 #include <acb.h>
 #include <acb_poly.h>
+#include <acb_mat.h>
 #include "recstab/error.h"
 
 #ifdef __cplusplus
@@ -31,8 +42,27 @@ typedef struct {
     slong *mult;          /* multiplicity of each root entry (1 if squarefree) */
     int method_double;    /* 1 if computed by the uncertified GSL path */
     double rho_double;    /* the double-precision value (GSL path) */
+    /* additions */
+    int method;           /* RS_RADIUS_METHOD_* that produced the result */
+    int isolated;         /* 1: every roots[] ball is a certified isolating
+                             enclosure of one distinct root (of its squarefree
+                             factor); 0: some balls are cluster enclosures
+                             (acb_mat_eig_multiple: a ball repeated k times
+                             contains exactly k roots) or a mere bound */
+    int partial;          /* 1 after an error return when lower/upper/rho still
+                             hold a certified enclosure, only wider than
+                             requested (nroots is then 0) */
 } rs_radius_struct;
 typedef rs_radius_struct rs_radius_t[1];
+
+enum {
+    RS_RADIUS_METHOD_NONE = 0,
+    RS_RADIUS_METHOD_COMPANION = 1, /* companion matrix + eig_simple/multiple */
+    RS_RADIUS_METHOD_COMPLEX_ROOTS = 2, /* arb_fmpz_poly_complex_roots */
+    RS_RADIUS_METHOD_DOUBLE = 3,    /* GSL, uncertified */
+    RS_RADIUS_METHOD_BOUND = 4,     /* only a global enclosure / norm bound */
+    RS_RADIUS_METHOD_FIND_ROOTS = 5 /* GSL-seeded acb_poly_find_roots */
+};
 
 void rs_radius_init(rs_radius_t r);
 void rs_radius_clear(rs_radius_t r);
@@ -43,18 +73,79 @@ void rs_radius_clear(rs_radius_t r);
 int rs_radius_fmpz_poly(rs_radius_t r, const fmpz_poly_t p, slong digits,
                         slong max_prec, rs_error_t err);
 
+/* Three certified routes for exact input (same contract as
+ * rs_radius_fmpz_poly).  All split off lambda^k exactly, factor the rest
+ * squarefree (fmpz_poly_factor_squarefree), enclose the simple roots of each
+ * factor (linear factors: -f0/f1 directly), list every root e times for a
+ * factor of exponent e, and double the precision until the goal is met:
+ * _find_roots: acb_poly_find_roots seeded with the GSL double roots; certified
+ *   when all deg f output balls are isolated (Arb validates each ball with a
+ *   root-inclusion test, disjoint balls => exactly one root each), at most
+ *   32 iterations; when that does not isolate all roots (bad seeds) or
+ *   leaves one with fewer than prec - 40 accurate bits (ill-conditioned), the
+ *   factor goes to arb_fmpz_poly_complex_roots.  Start at
+ *   ceil(digits*log2(10)) + 32 bits.  The default route (fastest).
+ * _companion: companion matrix (acb_mat_companion), acb_mat_approx_eig_qr,
+ *   acb_mat_eig_simple (fallback acb_mat_eig_multiple_rump: cluster balls,
+ *   isolated = 0), same start precision.  Slowest (the QR step dominates).
+ * _complex_roots: arb_fmpz_poly_complex_roots with a target accuracy of
+ *   ceil(digits*log2(10)) + 8 bits; max_prec caps that target (Arb raises its
+ *   internal working precision itself, which terminates for squarefree
+ *   input).  Independent cross-check.
+ * Timings: bench/bench_radius.c. */
+int rs_radius_fmpz_poly_find_roots(rs_radius_t r, const fmpz_poly_t p,
+                                   slong digits, slong max_prec,
+                                   rs_error_t err);
+int rs_radius_fmpz_poly_companion(rs_radius_t r, const fmpz_poly_t p,
+                                  slong digits, slong max_prec,
+                                  rs_error_t err);
+int rs_radius_fmpz_poly_complex_roots(rs_radius_t r, const fmpz_poly_t p,
+                                      slong digits, slong max_prec,
+                                      rs_error_t err);
+
 /* Same for a polynomial with ball coefficients (from non-polynomial schemes,
  * e.g. matrix exponentials): certification needs simple roots; returns
  * RS_ERR_UNDECIDED if they cannot be isolated at max_prec. */
 int rs_radius_acb_poly(rs_radius_t r, const acb_poly_t p, slong digits,
                        slong max_prec, rs_error_t err);
+/* Details: exactly-zero low coefficients give exact zero roots; the rest goes
+ * through companion matrix + acb_mat_approx_eig_qr + acb_mat_eig_simple.  If
+ * that fails, acb_mat_eig_multiple_rump is tried: its cluster enclosures still
+ * certify rho (each ball holds >= 1 root, their union holds all), so RS_OK is
+ * returned with isolated = 0 when they meet the goal.  Otherwise precision is
+ * doubled, up to max_prec or, for inexact coefficients accurate to A bits, up
+ * to 2A + 128 bits (more cannot help), or until a doubling fails to halve the
+ * width.  Then RS_ERR_UNDECIDED is returned and, when possible, partial = 1
+ * with the best certified enclosure: from eig_multiple, else
+ * upper = max|E_i| + eps (acb_mat_eig_global_enclosure), else Fujiwara's
+ * bound, with lower = |p_0/p_d|^(1/d) (the geometric mean of the |roots|).
+ * A multiple root of a ball polynomial can never be certified as simple. */
+
+/* Spectral radius of the matrix recurrence
+ *     A[k] z[n+k] + A[k-1] z[n+k-1] + ... + A[0] z[n] = 0
+ * with A[0..k] square m x m ball matrices (k >= 1), i.e. of the roots of
+ * det(sum_j A[j] lambda^j): eigenvalues of the (k*m) x (k*m) block companion
+ * matrix [0 I 0 ..; ..; -A[k]^-1 A[0] ... -A[k]^-1 A[k-1]], certified as in
+ * rs_radius_acb_poly (roots[] has k*m entries, mult[] counts identical cluster
+ * balls).  A[k] must be invertible: RS_ERR_MATH if its determinant is exactly
+ * zero or it cannot be inverted even at max_prec. */
+int rs_radius_matrix_poly(rs_radius_t r, const acb_mat_struct *A, slong k,
+                          slong digits, slong max_prec, rs_error_t err);
 
 /* Uncertified double-precision baseline (GSL gsl_poly_complex_solve on the
  * coefficients rounded to double); fills rho_double and roots as exact
- * doubles (radius 0) and sets method_double. */
+ * doubles (radius 0) and sets method_double.  Zero roots (lambda^k factor)
+ * are split off exactly first.  Coefficients are scaled by a common power of
+ * two when they would overflow; RS_ERR_LIMIT if a nonzero coefficient would
+ * then underflow to 0.  rho is set to the point rho_double but is NOT
+ * certified: lower = 0 and upper = +inf.  The GSL error handler is switched
+ * off during the call and restored (not thread-safe). */
 int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
 
-/* Decimal string of an arb to n digits (malloc'd, caller frees with flint_free). */
+/* Decimal string of an arb to n digits (malloc'd, caller frees with flint_free).
+ * arb_get_str(x, n, ARB_STR_NO_RADIUS): at most n significant digits, the
+ * last shown digit correct to +-1 unit; fewer digits when x is wider; a bare
+ * "1e+k" / "0e+k" style value when nothing is certain (see Arb docs). */
 char *rs_radius_arb_str(const arb_t x, slong n);
 
 #ifdef __cplusplus
