@@ -1,8 +1,641 @@
-/* analysis_numeric.c -- certified numeric analyses (radius, modes,
- * simulate). */
+/* analysis_numeric.c -- certified numeric analyses: radius (Arb, with the
+ * GSL double baseline on request), modes (equivalent continuous
+ * eigenvalues, damping, frequency error) and simulate (the scheme's own
+ * equations stepped in ball arithmetic). */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
+#include <arb.h>
+#include <acb.h>
+#include <arb_mat.h>
 #include "recstab/analysis_impl.h"
+#include "recstab/radius.h"
+#include "recstab/rootcount.h"
+#include "recstab/polyfmt.h"
+
+int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
+int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
+                        const char *what);
+int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
+
+#define RS_SIMULATE_MAX_STEPS 10000000
+#define RS_DIGITS_MAX 20000
+
+/* ---- options "key=value" ------------------------------------------------------ */
+
+/* finds key=value in the option text; copies the value (up to space) */
+static int opt_get(char *val, size_t len, const char *text, const char *key)
+{
+    size_t kl = strlen(key);
+    const char *t = text;
+    while ((t = strstr(t, key)) != NULL) {
+        if ((t == text || t[-1] == ' ' || t[-1] == '\t' || t[-1] == ',') && t[kl] == '=') {
+            size_t n = strcspn(t + kl + 1, " \t");
+            if (n >= len) n = len - 1;
+            memcpy(val, t + kl + 1, n);
+            val[n] = '\0';
+            return 1;
+        }
+        t += kl;
+    }
+    return 0;
+}
+
+/* every word of the text must be one of the known keys */
+static int opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys)
+{
+    const char *t = text;
+    while (*t) {
+        size_t n, k;
+        int ok = 0;
+        while (*t == ' ' || *t == '\t') t++;
+        if (!*t) break;
+        n = strcspn(t, "= \t");
+        for (k = 0; keys[k]; k++)
+            if (strlen(keys[k]) == n && strncmp(keys[k], t, n) == 0 && t[n] == '=') ok = 1;
+        if (!ok) {
+            char list[256] = "";
+            for (k = 0; keys[k]; k++) {
+                strcat(list, k ? ", " : "");
+                strcat(list, keys[k]);
+                strcat(list, "=");
+            }
+            {
+                char msg[400];
+                snprintf(msg, sizeof msg, "expected an option (%s), found '%%s'", list);
+                return rs_req_error(run, q, t, RS_ERR_INPUT, msg, t);
+            }
+        }
+        t += strcspn(t, " \t");
+    }
+    return RS_OK;
+}
+
+static int opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
+                    slong lo, slong hi)
+{
+    char val[64], *end;
+    long x;
+    if (!opt_get(val, sizeof val, text, key)) return RS_OK;
+    x = strtol(val, &end, 10);
+    if (*end != '\0' || x < lo || x > hi) {
+        char msg[200];
+        snprintf(msg, sizeof msg, "%s= expects an integer from %ld to %ld (limit), found '%%s'", key, (long) lo,
+                 (long) hi);
+        return rs_req_error(run, q, strstr(text, key), hi >= RS_SIMULATE_MAX_STEPS || hi >= RS_DIGITS_MAX
+                                                           ? RS_ERR_LIMIT : RS_ERR_INPUT, msg, val);
+    }
+    *out = x;
+    return RS_OK;
+}
+
+static json_t *arb_json(const arb_t x, slong digits)
+{
+    char *s = arb_get_str(x, digits < 1 ? 1 : digits, ARB_STR_NO_RADIUS);
+    json_t *j = json_string(s);
+    flint_free(s);
+    return j;
+}
+
+static json_t *acb_json(const acb_t z, slong digits)
+{
+    json_t *o = json_object();
+    mag_t m;
+    arf_t a;
+    mag_init(m);
+    arf_init(a);
+    json_object_set_new(o, "re", arb_json(acb_realref(z), digits));
+    json_object_set_new(o, "im", arb_json(acb_imagref(z), digits));
+    /* radius of the ball (max of the two) */
+    mag_max(m, arb_radref(acb_realref(z)), arb_radref(acb_imagref(z)));
+    arf_set_mag(a, m);
+    json_object_set_new(o, "radius", json_real(arf_get_d(a, ARF_RND_UP)));
+    mag_clear(m);
+    arf_clear(a);
+    return o;
+}
+
+/* ---- radius ---------------------------------------------------------------------- */
+
+static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    static const char *const keys[] = {"digits", "method", NULL};
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_radius_t rr;
+    rs_rootcount_t rc;
+    char method[32] = "certified";
+    slong digits = run->opt->default_digits, i;
+    json_t *o, *roots;
+    int r;
+    r = opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
+    if (r != RS_OK) return r;
+    opt_get(method, sizeof method, rest, "method");
+    if (strcmp(method, "certified") != 0 && strcmp(method, "double") != 0 && strcmp(method, "companion") != 0)
+        return rs_req_error(run, q, strstr(rest, "method"), RS_ERR_INPUT,
+                            "method= expects certified, companion or double, found '%s'", method);
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "radius");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    rs_radius_init(rr);
+    rs_rootcount_init(rc);
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("radius"));
+    if (strcmp(method, "double") == 0) {
+        r = rs_radius_double(rr, p, run->err);
+        if (r == RS_OK) {
+            json_object_set_new(o, "method", json_string("double (GSL gsl_poly_complex_solve, uncertified)"));
+            json_object_set_new(o, "certified", json_false());
+            json_object_set_new(o, "rho", json_real(rr->rho_double));
+            roots = json_array();
+            for (i = 0; i < rr->nroots; i++)
+                json_array_append_new(roots, json_pack("{s:f,s:f}", "re",
+                    arf_get_d(arb_midref(acb_realref(rr->roots + i)), ARF_RND_NEAR), "im",
+                    arf_get_d(arb_midref(acb_imagref(rr->roots + i)), ARF_RND_NEAR)));
+            json_object_set_new(o, "roots", roots);
+        }
+    } else {
+        if (strcmp(method, "companion") == 0)
+            r = rs_radius_fmpz_poly_companion(rr, p, digits, run->opt->max_prec, run->err);
+        else
+            r = rs_radius_fmpz_poly(rr, p, digits, run->opt->max_prec, run->err);
+        if (r == RS_OK) {
+            json_object_set_new(o, "method", json_string(
+                rr->method == RS_RADIUS_METHOD_COMPANION ? "companion matrix, acb_mat_eig_simple/multiple (certified)"
+                : rr->method == RS_RADIUS_METHOD_COMPLEX_ROOTS ? "arb_fmpz_poly_complex_roots on squarefree factors (certified)"
+                : rr->method == RS_RADIUS_METHOD_FIND_ROOTS ? "acb_poly_find_roots + validation on squarefree factors (certified)"
+                : "certified enclosure"));
+            json_object_set_new(o, "certified", json_true());
+            json_object_set_new(o, "lower", arb_json(rr->lower, digits + 5));
+            json_object_set_new(o, "upper", arb_json(rr->upper, digits + 5));
+            json_object_set_new(o, "rho", arb_json(rr->rho, digits));
+            json_object_set_new(o, "digits", json_integer(digits));
+            json_object_set_new(o, "precision_bits", json_integer(rr->prec));
+            roots = json_array();
+            for (i = 0; i < rr->nroots; i++) {
+                json_t *z = acb_json(rr->roots + i, digits);
+                arb_t ab;
+                arb_init(ab);
+                acb_abs(ab, rr->roots + i, rr->prec);
+                json_object_set_new(z, "abs", arb_json(ab, digits));
+                json_object_set_new(z, "multiplicity", json_integer(rr->mult ? rr->mult[i] : 1));
+                arb_clear(ab);
+                json_array_append_new(roots, z);
+            }
+            json_object_set_new(o, "roots", roots);
+        }
+    }
+    if (r == RS_OK) {
+        /* the exact verdict at the same point decides; the radius must agree */
+        r = rs_run_exact_count(rc, run, p, NULL);
+    }
+    if (r == RS_OK) {
+        rs_status_t st = rs_rootcount_status(rc);
+        int consistent = 1;
+        json_object_set_new(o, "exact_status", json_string(rs_status_name(st)));
+        if (strcmp(method, "double") != 0) {
+            arb_t one;
+            arb_init(one);
+            arb_one(one);
+            if (st == RS_STATUS_STABLE && !arb_lt(rr->upper, one)) consistent = 0;
+            if (rc->outside > 0 && !arb_gt(rr->lower, one)) consistent = 0;
+            if (rc->outside == 0 && rc->on > 0 && !arb_contains(rr->rho, one)) consistent = 0;
+            if (arb_lt(rr->upper, one)) json_object_set_new(o, "verdict_from_radius", json_string("stable"));
+            else if (arb_gt(rr->lower, one)) json_object_set_new(o, "verdict_from_radius", json_string("unstable"));
+            else json_object_set_new(o, "verdict_from_radius", json_string(
+                "undecided numerically (the interval contains 1): the exact side decides"));
+            arb_clear(one);
+            json_object_set_new(o, "consistent", json_boolean(consistent));
+            if (!consistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
+        }
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+        if (run->err->file[0] == '\0') {
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s", run->err->msg);
+            r = rs_req_error(run, q, q->text, r, "radius: %s", msg);
+        }
+    }
+    rs_rootcount_clear(rc);
+    rs_radius_clear(rr);
+    fmpz_poly_clear(p);
+    return r;
+}
+
+/* ---- modes ------------------------------------------------------------------------ */
+
+/* Evaluates a numeric expression (parameters allowed, at their set values). */
+static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v, const char *text,
+                       slong prec)
+{
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t num, den;
+    size_t pos = (size_t) (text - q->text);
+    int r;
+    rs_req_src(&src, q);
+    r = rs_expr_parse(&e, &src, &pos, run->err);
+    if (r != RS_OK) return r;
+    fmpq_mpoly_init(num, v->s->ctx);
+    fmpq_mpoly_init(den, v->s->ctx);
+    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 0, run->err);
+    rs_expr_free(e);
+    if (r == RS_OK) {
+        slong i;
+        /* substitute every set value */
+        for (i = 0; i < run->c->nsets; i++) {
+            slong k = rs_case_param_index(run->c, run->c->sets[i].name);
+            fmpq_mpoly_evaluate_one_fmpq(num, num, k, run->c->sets[i].value, v->s->ctx);
+            fmpq_mpoly_evaluate_one_fmpq(den, den, k, run->c->sets[i].value, v->s->ctx);
+        }
+        if (!fmpq_mpoly_is_fmpq(num, v->s->ctx) || !fmpq_mpoly_is_fmpq(den, v->s->ctx)) {
+            r = rs_req_error(run, q, text, RS_ERR_INPUT, "expected a value of set parameters, found '%s'", text);
+        } else {
+            fmpq_t a, b;
+            fmpq_init(a); fmpq_init(b);
+            fmpq_mpoly_get_fmpq(a, num, v->s->ctx);
+            fmpq_mpoly_get_fmpq(b, den, v->s->ctx);
+            fmpq_div(a, a, b);
+            arb_set_fmpq(out, a, prec);
+            fmpq_clear(a); fmpq_clear(b);
+        }
+    }
+    fmpq_mpoly_clear(num, v->s->ctx);
+    fmpq_mpoly_clear(den, v->s->ctx);
+    return r;
+}
+
+static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_radius_t rr;
+    const char *ref, *hs;
+    arb_t h, *refs = NULL;
+    slong nref = 0, i, k, prec = 128, digits = 15;
+    int *principal;
+    json_t *o, *modes, *spur;
+    int r;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "modes");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    arb_init(h);
+    arb_one(h);
+    /* options: h=EXPR (time step; default 1 for schemes scaled by h), reference=EXPR[,EXPR...] */
+    hs = strstr(rest, "h=");
+    if (hs != NULL && (hs == rest || hs[-1] == ' ')) {
+        char buf[256];
+        size_t n = strcspn(hs + 2, " \t");
+        (void) buf;
+        r = eval_number(h, run, q, v, hs + 2, prec);
+        (void) n;
+    }
+    ref = strstr(rest, "reference=");
+    if (r == RS_OK && ref != NULL) {
+        const char *t = ref + 10;
+        for (;;) {
+            size_t n = strcspn(t, ", \t");
+            char *tmp = malloc(n + 1);
+            rs_request_t sub = *q;
+            memcpy(tmp, t, n);
+            tmp[n] = '\0';
+            refs = realloc(refs, (size_t) (nref + 1) * sizeof(arb_t));
+            arb_init(refs[nref]);
+            r = eval_number(refs[nref], run, q, v, t, prec);
+            (void) sub;
+            free(tmp);
+            nref++;
+            if (r != RS_OK) break;
+            t += n;
+            if (*t != ',') break;
+            t++;
+        }
+    }
+    if (r != RS_OK) {
+        for (i = 0; i < nref; i++) arb_clear(refs[i]);
+        free(refs);
+        arb_clear(h);
+        fmpz_poly_clear(p);
+        return r;
+    }
+    rs_radius_init(rr);
+    r = rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
+    if (r != RS_OK) {
+        for (i = 0; i < nref; i++) arb_clear(refs[i]);
+        free(refs);
+        arb_clear(h);
+        rs_radius_clear(rr);
+        fmpz_poly_clear(p);
+        return r;
+    }
+    /* principal roots: for each reference w0, the root with Im >= 0 closest to
+     * exp(i w0 h) and its conjugate; every other root is spurious */
+    principal = calloc((size_t) rr->nroots + 1, sizeof(int));
+    for (k = 0; k < nref; k++) {
+        acb_t target, d;
+        arb_t best, dist;
+        slong bi = -1;
+        acb_init(target); acb_init(d);
+        arb_init(best); arb_init(dist);
+        arb_mul(acb_imagref(target), refs[k], h, prec);
+        acb_exp(target, target, prec);      /* exp(i w0 h) */
+        for (i = 0; i < rr->nroots; i++) {
+            if (principal[i] || arf_sgn(arb_midref(acb_imagref(rr->roots + i))) < 0) continue;
+            acb_sub(d, rr->roots + i, target, prec);
+            acb_abs(dist, d, prec);
+            if (bi < 0 || arf_cmp(arb_midref(dist), arb_midref(best)) < 0) { bi = i; arb_set(best, dist); }
+        }
+        if (bi >= 0) {
+            principal[bi] = (int) (k + 1);
+            /* its conjugate (for a complex root) */
+            for (i = 0; i < rr->nroots; i++) {
+                acb_t cj;
+                acb_init(cj);
+                acb_conj(cj, rr->roots + bi);
+                if (i != bi && !principal[i] && acb_overlaps(cj, rr->roots + i)
+                    && !arb_is_zero(acb_imagref(rr->roots + bi))) {
+                    principal[i] = (int) (k + 1);
+                    acb_clear(cj);
+                    break;
+                }
+                acb_clear(cj);
+            }
+        }
+        acb_clear(target); acb_clear(d);
+        arb_clear(best); arb_clear(dist);
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("modes"));
+    json_object_set_new(o, "h", arb_json(h, digits));
+    modes = json_array();
+    spur = json_array();
+    for (i = 0; i < rr->nroots; i++) {
+        json_t *m = json_object();
+        acb_t c;
+        arb_t sig, om, mag, xi, err;
+        acb_init(c);
+        arb_init(sig); arb_init(om); arb_init(mag); arb_init(xi); arb_init(err);
+        json_object_set_new(m, "root", acb_json(rr->roots + i, digits));
+        if (acb_is_zero(rr->roots + i)) {
+            json_object_set_new(m, "note", json_string("root at 0: no continuous equivalent"));
+        } else {
+            acb_log(c, rr->roots + i, prec);
+            acb_div_arb(c, c, h, prec);
+            arb_set(sig, acb_realref(c));
+            arb_set(om, acb_imagref(c));
+            arb_hypot(mag, sig, om, prec);
+            arb_div(xi, sig, mag, prec);
+            arb_neg(xi, xi);
+            json_object_set_new(m, "sigma", arb_json(sig, digits));
+            json_object_set_new(m, "omega", arb_json(om, digits));
+            json_object_set_new(m, "damping_ratio", arb_json(xi, digits));
+            if (principal[i]) {
+                arb_sub(err, mag, refs[principal[i] - 1], prec);
+                arb_div(err, err, refs[principal[i] - 1], prec);
+                json_object_set_new(m, "reference", arb_json(refs[principal[i] - 1], digits));
+                json_object_set_new(m, "frequency_error", arb_json(err, digits));
+            }
+        }
+        json_array_append_new((principal[i] || nref == 0) ? modes : spur, m);
+        acb_clear(c);
+        arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(xi); arb_clear(err);
+    }
+    json_object_set_new(o, "modes", modes);
+    json_object_set_new(o, "spurious", spur);
+    json_object_set_new(o, "note", json_string(
+        "lambda_c = ln(lambda)/h = sigma +- i omega (principal logarithm); damping ratio = -sigma/|lambda_c|; "
+        "frequency error = (|lambda_c| - omega0)/omega0 for the principal roots of each reference omega0"));
+    json_object_set_new(o, "decided_by", json_string("certified"));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_array_append_new(run->results, o);
+    free(principal);
+    for (i = 0; i < nref; i++) arb_clear(refs[i]);
+    free(refs);
+    arb_clear(h);
+    rs_radius_clear(rr);
+    fmpz_poly_clear(p);
+    return RS_OK;
+}
+
+/* ---- simulate ------------------------------------------------------------------------ */
+
+/* coefficient of lambda^k of a (numeric) entry */
+static void entry_coeff(fmpq_t c, const fmpq_mpoly_t e, slong k, const rs_scheme_t s)
+{
+    fmpq_mpoly_t t;
+    ulong kk;
+    slong lv = s->lambda_var;
+    if (k < 0) { fmpq_zero(c); return; }
+    kk = (ulong) k;
+    fmpq_mpoly_init(t, s->ctx);
+    fmpq_mpoly_get_coeff_vars_ui(t, e, &lv, &kk, 1, s->ctx);
+    if (fmpq_mpoly_is_zero(t, s->ctx)) fmpq_zero(c);
+    else fmpq_mpoly_get_fmpq(c, t, s->ctx);
+    fmpq_mpoly_clear(t, s->ctx);
+}
+
+static slong entry_lowdeg(const fmpq_mpoly_t e, const rs_scheme_t s)
+{
+    slong i, best = WORD_MAX, len = fmpq_mpoly_length(e, s->ctx);
+    slong *ex = flint_malloc(s->nvars * sizeof(slong));
+    for (i = 0; i < len; i++) {
+        fmpq_mpoly_get_term_exp_si(ex, e, i, s->ctx);
+        if (ex[s->lambda_var] < best) best = ex[s->lambda_var];
+    }
+    flint_free(ex);
+    return best;
+}
+
+static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    static const char *const keys[] = {"steps", "seed", "prec", NULL};
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_poly_t p;
+    slong steps = 1000, seed = 1, prec = 128, n, i, u, step;
+    slong *Mu = NULL, *mu = NULL;
+    int r, scalar = 0;
+    json_t *o;
+    arb_mat_t L, Linv;
+    arb_ptr *hist = NULL;      /* per unknown: values at n+m_u .. n+M_u (newest last) */
+    arb_ptr rhs, znew;
+    arb_t norm, lognorm_mid, lognorm_end, t1, t2;
+    fmpq_t c;
+    flint_rand_t st;
+    r = opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = opt_long(run, q, rest, "steps", &steps, 1, RS_SIMULATE_MAX_STEPS);
+    if (r == RS_OK) r = opt_long(run, q, rest, "seed", &seed, 0, 1000000000);
+    if (r == RS_OK) r = opt_long(run, q, rest, "prec", &prec, 32, 65536);
+    if (r != RS_OK) return r;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "simulate");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    fmpq_init(c);
+    flint_randinit(st);
+    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+    /* the recurrence of the equations as written: for each unknown u its
+     * largest shift M_u; the coefficients of u[n+M_u] form L */
+    n = s->from_char ? 1 : s->n;
+    Mu = flint_calloc(n, sizeof(slong));
+    mu = flint_calloc(n, sizeof(slong));
+    arb_mat_init(L, n, n);
+    arb_mat_init(Linv, n, n);
+    if (s->from_char) {
+        scalar = 1;
+    } else {
+        for (u = 0; u < n; u++) {
+            Mu[u] = WORD_MIN;
+            mu[u] = WORD_MAX;
+            for (i = 0; i < n; i++) {
+                const fmpq_mpoly_struct *e = s->M + i * n + u;
+                if (fmpq_mpoly_is_zero(e, s->ctx)) continue;
+                if (fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i] > Mu[u])
+                    Mu[u] = fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i];
+                if (entry_lowdeg(e, s) + s->row_shift[i] < mu[u]) mu[u] = entry_lowdeg(e, s) + s->row_shift[i];
+            }
+            if (Mu[u] == WORD_MIN) { scalar = 1; break; }
+        }
+        for (i = 0; i < n && !scalar; i++)
+            for (u = 0; u < n; u++) {
+                entry_coeff(c, s->M + i * n + u, Mu[u] - s->row_shift[i], s);
+                arb_set_fmpq(arb_mat_entry(L, i, u), c, prec);
+            }
+        if (!scalar && !arb_mat_inv(Linv, L, prec)) scalar = 1;
+    }
+    if (scalar) {
+        /* the scalar recurrence of p: c_N x[n+N] = -sum c_i x[n+i] */
+        slong N = fmpz_poly_degree(p);
+        arb_mat_clear(L);
+        arb_mat_clear(Linv);
+        n = 1;
+        arb_mat_init(L, 1, 1);
+        arb_mat_init(Linv, 1, 1);
+        arb_set_fmpz(arb_mat_entry(L, 0, 0), p->coeffs + N);
+        arb_inv(arb_mat_entry(Linv, 0, 0), arb_mat_entry(L, 0, 0), prec);
+        Mu[0] = N;
+        mu[0] = 0;
+    }
+    hist = flint_malloc(n * sizeof(arb_ptr));
+    for (u = 0; u < n; u++) {
+        slong len = Mu[u] - mu[u] + 1, j;
+        hist[u] = _arb_vec_init(len);
+        for (j = 0; j < len - 1; j++) {       /* seeded random start in [-1, 1] */
+            fmpq_set_si(c, (slong) n_randint(st, 2001) - 1000, 1000);
+            arb_set_fmpq(hist[u] + j, c, prec);
+        }
+    }
+    rhs = _arb_vec_init(n);
+    znew = _arb_vec_init(n);
+    arb_init(norm); arb_init(lognorm_mid); arb_init(lognorm_end); arb_init(t1); arb_init(t2);
+    for (step = 1; step <= steps; step++) {
+        for (i = 0; i < n; i++) {
+            arb_zero(rhs + i);
+            for (u = 0; u < n; u++) {
+                slong sft;
+                for (sft = mu[u]; sft < Mu[u]; sft++) {
+                    if (scalar) {
+                        fmpz_set(fmpq_numref(c), p->coeffs + sft);
+                        fmpz_one(fmpq_denref(c));
+                    } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
+                    if (fmpq_is_zero(c)) continue;
+                    arb_set_fmpq(t1, c, prec);
+                    arb_addmul(rhs + i, t1, hist[u] + (sft - mu[u]), prec);
+                }
+            }
+            arb_neg(rhs + i, rhs + i);
+        }
+        for (u = 0; u < n; u++) {
+            arb_zero(znew + u);
+            for (i = 0; i < n; i++) arb_addmul(znew + u, arb_mat_entry(Linv, u, i), rhs + i, prec);
+            /* midpoint arithmetic at the working precision: propagated ball
+             * radii grow like the sum of |coefficients|^n, not like rho^n, and
+             * would swamp the measurement; the growth is a measurement */
+            mag_zero(arb_radref(znew + u));
+        }
+        /* shift histories, newest value last */
+        arb_zero(norm);
+        for (u = 0; u < n; u++) {
+            slong len = Mu[u] - mu[u] + 1, j;
+            arb_set(hist[u] + len - 1, znew + u);
+            for (j = 0; j < len; j++) {
+                arb_abs(t1, hist[u] + j);
+                arb_max(norm, norm, t1, prec);
+            }
+            /* the known values for the next step move one place down */
+            for (j = 0; j + 1 < len; j++) arb_swap(hist[u] + j, hist[u] + j + 1);
+        }
+        /* window averages of log |z| over [N/4, N/2) and [3N/4, N): the
+         * oscillation of complex modes averages out */
+        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lognorm_mid, lognorm_mid, t2, 64); }
+        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(lognorm_end, lognorm_end, t2, 64); }
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("simulate"));
+    json_object_set_new(o, "steps", json_integer(steps));
+    json_object_set_new(o, "seed", json_integer(seed));
+    json_object_set_new(o, "precision_bits", json_integer(prec));
+    json_object_set_new(o, "recurrence", json_string(scalar ? "scalar recurrence of p(lambda) (the equations' "
+                                                              "leading matrix is singular or absent)"
+                                                            : "the case's equations as written, solved for the "
+                                                              "newest value of every unknown at each step"));
+    json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision"));
+    /* growth per step over the second half: (|z_N| / |z_{N/2}|)^(1/(N - N/2)) */
+    if (steps >= 8 && arb_is_finite(lognorm_end) && arb_is_finite(lognorm_mid)) {
+        slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
+        /* averages over [a1, b1] and [a2, b2]; centres (a+b)/2 */
+        arb_div_si(lognorm_mid, lognorm_mid, b1 - a1 + 1, prec);
+        arb_div_si(lognorm_end, lognorm_end, b2 - a2 + 1, prec);
+        arb_sub(t1, lognorm_end, lognorm_mid, prec);
+        arb_mul_si(t1, t1, 2, prec);
+        arb_div_si(t1, t1, (a2 + b2) - (a1 + b1), prec);
+        arb_exp(t2, t1, prec);
+        json_object_set_new(o, "growth", arb_json(t2, 15));
+        json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
+    } else {
+        json_object_set_new(o, "growth", json_null());
+        json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
+    }
+    {
+        rs_radius_t rr;
+        rs_radius_init(rr);
+        if (rs_radius_fmpz_poly(rr, p, 15, run->opt->max_prec, run->err) == RS_OK)
+            json_object_set_new(o, "radius", arb_json(rr->rho, 15));
+        else
+            rs_error_init(run->err);
+        rs_radius_clear(rr);
+    }
+    json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_array_append_new(run->results, o);
+    for (u = 0; u < n; u++) _arb_vec_clear(hist[u], Mu[u] - mu[u] + 1);
+    flint_free(hist);
+    _arb_vec_clear(rhs, n);
+    _arb_vec_clear(znew, n);
+    arb_clear(norm); arb_clear(lognorm_mid); arb_clear(lognorm_end); arb_clear(t1); arb_clear(t2);
+    arb_mat_clear(L);
+    arb_mat_clear(Linv);
+    flint_free(Mu);
+    flint_free(mu);
+    fmpq_clear(c);
+    flint_randclear(st);
+    fmpz_poly_clear(p);
+    return RS_OK;
+}
 
 const rs_analysis_entry_t rs_analysis_numeric[] = {
+    {"radius", an_radius},
+    {"modes", an_modes},
+    {"simulate", an_simulate},
     {NULL, NULL}
 };

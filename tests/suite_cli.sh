@@ -65,3 +65,23 @@ check_exit "stdin" 0 "$rc"
 "$RS" --help >"$T/out" 2>&1; rc=$?;         check_exit "--help" 0 "$rc"
 "$RS" --version >"$T/out" 2>&1; rc=$?;      check_exit "--version" 0 "$rc"
 "$RS" /nonexistent.case >"$T/out" 2>"$T/err"; rc=$?; check_exit "missing file" 2 "$rc"
+
+# derivations: Markdown always; LaTeX compiled when pdflatex is installed
+# (Debian: apt-get install texlive-latex-base)
+"$RS" --markdown cases/park-staggered.case >"$T/d.md" 2>"$T/err"; rc=$?
+check_exit "--markdown" 1 "$rc"
+if grep -q "### Routh array\|### Hurwitz minors" "$T/d.md" && grep -q "### The lambda-matrix" "$T/d.md"; then
+    ok "markdown derivation sections"; else fail "markdown derivation sections"; fi
+"$RS" --latex cases/park-staggered.case cases/textbook/central-difference.case cases/textbook/trapezoidal.case >"$T/d.tex" 2>"$T/err"; rc=$?
+check_exit "--latex" 1 "$rc"
+if command -v pdflatex >/dev/null 2>&1; then
+    if (cd "$T" && timeout 120 pdflatex -interaction=nonstopmode -halt-on-error d.tex >/dev/null 2>&1) && [ -s "$T/d.pdf" ]; then
+        ok "latex derivation compiles with pdflatex"
+    else
+        fail "latex derivation does not compile: $(grep '^!' "$T/d.log" | head -3)"
+    fi
+else
+    echo "skip latex compile (pdflatex not installed)"
+fi
+"$RS" --json --latex cases/textbook/trapezoidal.case >"$T/out" 2>&1; rc=$?
+check_exit "--json with --latex is a usage error" 2 "$rc"
