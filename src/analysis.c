@@ -421,6 +421,9 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     for (i = 0; rs_analysis_numeric[i].name != NULL; i++)
         if (strlen(rs_analysis_numeric[i].name) == n && strncmp(rs_analysis_numeric[i].name, t, n) == 0)
             return rs_analysis_numeric[i].fn(run, q, rs_req_skip_word(t));
+    for (i = 0; rs_analysis_sweep[i].name != NULL; i++)
+        if (strlen(rs_analysis_sweep[i].name) == n && strncmp(rs_analysis_sweep[i].name, t, n) == 0)
+            return rs_analysis_sweep[i].fn(run, q, rs_req_skip_word(t));
     {
         char word[80];
         snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);
