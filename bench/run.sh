@@ -1,6 +1,8 @@
 #!/bin/sh
 # run.sh -- recstab's benchmarks, peers side by side (`make bench` runs this).
 #
+#   (0) whole-process time of  build/recstab --version  (the start-up floor:
+#       exec, dynamic linking of FLINT/Arb/GSL/jansson, no case read)
 #   (a) whole-process time of  build/recstab --analyse charpoly cases/park-staggered.case
 #       (target: median under 5 ms)
 #   (b) whole-process time of  build/recstab cases/park-staggered.case
@@ -14,6 +16,7 @@
 #
 # Environment: BENCH_N (runs per command line, default 200), SYMPY_RUNS
 # (default 3; the median total is used), BENCH_RADIUS=0 skips (e),
+# BENCH_RADIUS_TIMEOUT (seconds, default 120, 0 = none) bounds (e),
 # CC (default cc), PYTHON (default python3).
 set -u
 cd "$(dirname "$0")/.." || exit 2
@@ -41,6 +44,12 @@ echo "machine: $(uname -sm), $(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?'
 echo
 
 median_of() { sed -n 's/^median_ms: *//p'; }
+
+echo "== (0) start-up floor: recstab --version"
+out_0=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --version)
+echo "$out_0"
+med_0=$(echo "$out_0" | median_of)
+echo
 
 echo "== (a) charpoly only (target: median < 5 ms)"
 out_a=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --analyse charpoly "$CASE")
@@ -82,7 +91,12 @@ else
         [ "$i" -eq 1 ] && echo "$out_d"
         tot=$(echo "$out_d" | sed -n 's/^sympy_total_s: *//p')
         cp=$(echo "$out_d" | sed -n 's/^sympy_charpoly_s: *//p')
-        sym_check=$(echo "$out_d" | sed -n 's/^check: *//p')
+        c=$(echo "$out_d" | sed -n 's/^check: *//p')
+        # keep the most telling verdict over the runs: DISAGREE > agree > skipped
+        case $sym_check:$c in
+            DISAGREE*:*) ;;
+            *:DISAGREE*|:*|skipped*:agree*) sym_check=$c ;;
+        esac
         [ $rc -eq 0 ] || echo "sympy_park.py exited $rc"
         [ -n "$tot" ] || break
         echo "$tot $cp $(( (t1 - t0) / 1000000 ))" >>"$runs"
@@ -121,7 +135,19 @@ else
         fi
     fi
     if [ $radius_ok -eq 1 ] && [ -x build/bench_radius ]; then
-        build/bench_radius || echo "build/bench_radius exited $?"
+        rt=${BENCH_RADIUS_TIMEOUT:-120}
+        if command -v timeout >/dev/null 2>&1 && [ "$rt" != 0 ]; then
+            timeout "$rt" build/bench_radius
+            rc=$?
+            if [ $rc -eq 124 ]; then
+                echo
+                echo "build/bench_radius stopped after ${rt} s (BENCH_RADIUS_TIMEOUT=$rt; 0 = no limit)"
+            elif [ $rc -ne 0 ]; then
+                echo "build/bench_radius exited $rc"
+            fi
+        else
+            build/bench_radius || echo "build/bench_radius exited $?"
+        fi
     elif [ $radius_ok -eq 1 ]; then
         echo "skipped: no bench/bench_radius.c and no build/bench_radius"
     fi
@@ -130,6 +156,7 @@ echo
 
 echo "== summary (park-staggered, whole-process medians)"
 ratio() { awk -v s="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.0f", s * 1000 / r; else print "?" }'; }
+[ -n "$med_0" ] && echo "recstab --version (start-up):  ${med_0} ms"
 [ -n "$med_a" ] && echo "recstab charpoly only:        ${med_a} ms (target < 5 ms:" \
     "$(awk -v m="$med_a" 'BEGIN { print (m < 5) ? "met" : "NOT met" }'))"
 [ -n "$med_b" ] && echo "recstab case's analyses:      ${med_b} ms"

@@ -18,9 +18,12 @@ Does by hand in SymPy what recstab does for the Park (2005) staggered scheme
 
 Then, outside the timed total, it checks that SymPy's p equals recstab's up to
 a constant factor: it runs `build/recstab --json --analyse charpoly
-cases/park-staggered.case` (if the binary exists), parses "coeffs" (lowest
+cases/park-staggered.case` (if the binary exists; with --analyse bilinear
+--analyse hurwitz added when that recstab knows them), parses "coeffs" (lowest
 power first, strings in m, muh, wh, alpha) and prints "agree" when
 simplify(p_sympy / p_recstab) is a constant, "DISAGREE" (exit 1) otherwise.
+When recstab also gave q(z) and the Hurwitz minors, they are compared the
+same way (each up to a constant factor).
 
 Without SymPy it prints why and "skipped", and exits 0.
 
@@ -140,7 +143,7 @@ def main():
     print("%-10s %12.6f" % ("total", total))
     print()
 
-    verdict = check_against_recstab(p, (m, muh, wh, alpha, lam))
+    verdict = check_against_recstab(p, q, minors, (m, muh, wh, alpha, lam))
     print("sympy_total_s: %.6f" % total)
     print("sympy_charpoly_s: %.6f" % sum(t for n, t in stages
                                          if n in ("matrix", "det")))
@@ -148,32 +151,53 @@ def main():
     return 1 if verdict.startswith("DISAGREE") else 0
 
 
-def check_against_recstab(p, syms):
+def check_against_recstab(p, q, minors, syms):
+    """Compare p (and q, D1..Dn when this recstab has bilinear/hurwitz) with
+    recstab's, each up to a constant factor."""
     m, muh, wh, alpha, lam = syms
+    z = sp.Symbol("z")
     exe = os.environ.get("RECSTAB", os.path.join(ROOT, "build", "recstab"))
     if not os.access(exe, os.X_OK):
         print("recstab comparison skipped: no executable %s (run make all)" % exe)
         return "skipped (no %s)" % exe
-    cmd = [exe, "--json", "--analyse", "charpoly", CASE]
-    r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
-    try:
-        doc = json.loads(r.stdout)
-        res = [x for x in doc["results"] if x.get("analysis") == "charpoly"][0]
-        coeffs = res["coeffs"]
-    except (ValueError, KeyError, IndexError) as e:
-        print("recstab output not understood (%s); exit %d; stderr:\n%s"
-              % (e, r.returncode, r.stderr))
+    doc = None
+    for extra in (["bilinear", "hurwitz"], []):
+        cmd = [exe, "--json", "--analyse", "charpoly"]
+        for a in extra:
+            cmd += ["--analyse", a]
+        r = subprocess.run(cmd + [CASE], cwd=ROOT, capture_output=True, text=True)
+        try:
+            doc = json.loads(r.stdout)
+            results = {x.get("analysis"): x for x in doc["results"]}
+            coeffs = results["charpoly"]["coeffs"]
+            break
+        except (ValueError, KeyError, TypeError):
+            doc = None
+    if doc is None:
+        print("recstab output not understood; exit %d; stderr:\n%s"
+              % (r.returncode, r.stderr))
         return "DISAGREE (unreadable recstab output)"
     loc = {"m": m, "muh": muh, "wh": wh, "alpha": alpha}
-    pr = sp.expand(sum(sp.sympify(c.replace("^", "**"), locals=loc) * lam**k
-                       for k, c in enumerate(coeffs)))
-    print("recstab p(lambda) =", sp.collect(pr, lam))
-    if pr == 0:
-        return "DISAGREE (recstab p = 0)"
-    ratio = sp.simplify(sp.cancel(p / pr))
-    const = not ratio.free_symbols
-    print("p_sympy / p_recstab = %s -> %s" % (ratio, "agree" if const else "DISAGREE"))
-    return "agree (ratio %s)" % ratio if const else "DISAGREE (ratio %s)" % ratio
+    parse = lambda t: sp.sympify(t.replace("^", "**"), locals=loc)
+    pairs = [("p", p, sum(parse(c) * lam**k for k, c in enumerate(coeffs)))]
+    if "bilinear" in results:
+        pairs.append(("q", q, sum(parse(c) * z**k for k, c in
+                                  enumerate(results["bilinear"]["coeffs"]))))
+    if "hurwitz" in results and len(results["hurwitz"].get("minors", [])) == len(minors):
+        for k, (mine, theirs) in enumerate(zip(minors, results["hurwitz"]["minors"]), 1):
+            pairs.append(("D%d" % k, mine, parse(theirs)))
+    bad, ratios = [], []
+    for name, mine, theirs in pairs:
+        theirs = sp.expand(theirs)
+        ratio = sp.simplify(sp.cancel(mine / theirs)) if theirs != 0 else sp.nan
+        ok = theirs != 0 and not ratio.free_symbols
+        print("%-3s sympy / recstab = %s -> %s" % (name, ratio, "agree" if ok else "DISAGREE"))
+        ratios.append("%s %s" % (name, ratio))
+        if not ok:
+            bad.append(name)
+    if bad:
+        return "DISAGREE (%s)" % ", ".join(bad)
+    return "agree (constant ratios: %s)" % ", ".join(ratios)
 
 
 if __name__ == "__main__":
