@@ -1,7 +1,16 @@
 /* scheme.c -- exact evaluation of equations into the lambda-matrix. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "recstab/scheme.h"
+
+/* Evaluation limits (lets are expanded where they are used, so a few short
+ * lines can describe a huge tree): recursion depth, total nodes evaluated,
+ * terms of any polynomial, total coefficient size of a product or power. */
+#define RS_SCHEME_MAX_DEPTH 4000
+#define RS_SCHEME_MAX_STEPS 1000000
+#define RS_SCHEME_MAX_TERMS 100000
+#define RS_SCHEME_MAX_BITS 134217728.0   /* 16 MB of coefficients */
 
 /* A value during evaluation: (c[0] + sum_u c[1+u] lambda^low x_u) / den.
  * c[0] is the part without unknowns; den is in the parameters only. */
@@ -20,6 +29,7 @@ typedef struct {
     rs_error_struct *err;
     /* non-zero assumptions collected (points into the scheme being built) */
     rs_scheme_struct *collect;
+    slong depth, steps;      /* evaluation limits */
 } ev_t;
 
 static void lin_init(lin_t *v, slong ns, const fmpq_mpoly_ctx_t ctx)
@@ -50,6 +60,8 @@ static int lin_has_unknowns(const lin_t *v, const fmpq_mpoly_ctx_t ctx)
 }
 
 static int err_at(ev_t *x, const rs_expr_t *e, int code, const char *fmt, const char *a)
+    __attribute__((format(printf, 4, 0)));
+static int err_at(ev_t *x, const rs_expr_t *e, int code, const char *fmt, const char *a)
 {
     return rs_error_set_at(x->err, code, x->c->path, e->line, e->col, fmt, a);
 }
@@ -77,9 +89,13 @@ static void align_low(lin_t *a, lin_t *b, const rs_scheme_struct *s)
     }
 }
 
+static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
+                      const fmpq_mpoly_t b, ulong k);
+
 /* r = a +- b (r may not alias) */
-static void lin_addsub(lin_t *r, lin_t *a, lin_t *b, int sub, const rs_scheme_struct *s)
+static int lin_addsub(lin_t *r, lin_t *a, lin_t *b, int sub, ev_t *x, const rs_expr_t *e)
 {
+    const rs_scheme_struct *s = x->s;
     slong i;
     const fmpq_mpoly_ctx_struct *ctx = s->ctx;
     int a_unk = lin_has_unknowns(a, ctx), b_unk = lin_has_unknowns(b, ctx);
@@ -100,6 +116,12 @@ static void lin_addsub(lin_t *r, lin_t *a, lin_t *b, int sub, const rs_scheme_st
         fmpq_mpoly_divides(fa, b->den, g, ctx);   /* multiplier for a */
         fmpq_mpoly_divides(fb, a->den, g, ctx);   /* multiplier for b */
         for (i = 0; i < r->ns; i++) {
+            if (prod_check(x, e, a->c + i, fa, 0) != RS_OK || prod_check(x, e, b->c + i, fb, 0) != RS_OK
+                || prod_check(x, e, a->den, fa, 0) != RS_OK) {
+                fmpq_mpoly_clear(g, ctx); fmpq_mpoly_clear(fa, ctx); fmpq_mpoly_clear(fb, ctx);
+                fmpq_mpoly_clear(t, ctx);
+                return x->err->code;
+            }
             fmpq_mpoly_mul(t, a->c + i, fa, ctx);
             fmpq_mpoly_mul(r->c + i, b->c + i, fb, ctx);
             if (sub) fmpq_mpoly_sub(r->c + i, t, r->c + i, ctx);
@@ -109,6 +131,57 @@ static void lin_addsub(lin_t *r, lin_t *a, lin_t *b, int sub, const rs_scheme_st
         fmpq_mpoly_clear(g, ctx); fmpq_mpoly_clear(fa, ctx); fmpq_mpoly_clear(fb, ctx);
         fmpq_mpoly_clear(t, ctx);
     }
+    return RS_OK;
+}
+
+/* bits of the largest coefficient of p (numerator and denominator) */
+static double coeff_bits(const fmpq_mpoly_t p)
+{
+    slong zb = fmpz_mpoly_max_bits(p->zpoly);
+    return (double) FLINT_ABS(zb) + (double) fmpz_bits(fmpq_numref(p->content))
+           + (double) fmpz_bits(fmpq_denref(p->content));
+}
+
+/* Checks, before computing it, that a*b (k == 0) or a^k (k > 0) stays
+ * within the degree, term and size limits; bounds are upper bounds. */
+static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
+                      const fmpq_mpoly_t b, ulong k)
+{
+    const rs_scheme_struct *s = x->s;
+    double la = (double) fmpq_mpoly_length(a, s->ctx), terms, dterms = 1.0, bits;
+    slong v;
+    if (la == 0.0 || (k == 0 && fmpq_mpoly_is_zero(b, s->ctx)) || k == 1)
+        return RS_OK;
+    for (v = 0; v < s->nvars; v++) {
+        slong d = fmpq_mpoly_degree_si(a, v, s->ctx);
+        double dd = k == 0 ? (double) d + (double) fmpq_mpoly_degree_si(b, v, s->ctx) : (double) d * (double) k;
+        if (dd > RS_SCHEME_MAX_DEGREE)
+            return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                                   "degree limit exceeded: degree %.0f in %s (limit %d per variable)",
+                                   dd, s->vars[v], RS_SCHEME_MAX_DEGREE);
+        dterms *= dd + 1.0;
+    }
+    if (k == 0) {
+        terms = la * (double) fmpq_mpoly_length(b, s->ctx);
+        bits = coeff_bits(a) + coeff_bits(b) + log2(la + 1.0);
+    } else {
+        /* terms of a^k: at most C(la - 1 + k, la - 1) */
+        double c = 1.0, i;
+        for (i = 1.0; i < la && c <= 1e30; i += 1.0)
+            c = c * ((double) k + i) / i;
+        terms = c;
+        bits = (double) k * (coeff_bits(a) + log2(la + 1.0));
+    }
+    if (dterms < terms) terms = dterms;
+    if (terms > RS_SCHEME_MAX_TERMS)
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                               "term limit exceeded: this %s could have %.0f terms (limit %d terms per polynomial)",
+                               k == 0 ? "product" : "power", terms, RS_SCHEME_MAX_TERMS);
+    if (terms * bits > RS_SCHEME_MAX_BITS)
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                               "size limit exceeded: this %s could need %.0f bits of coefficients (limit %.0f bits)",
+                               k == 0 ? "product" : "power", terms * bits, RS_SCHEME_MAX_BITS);
+    return RS_OK;
 }
 
 static int degree_ok(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t p)
@@ -165,8 +238,9 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
             return err_at(x, e, RS_ERR_INPUT,
                           "the unknown '%s' cannot appear here (only parameters and lambda)", e->name);
         if (!e->shifted)
-            return err_at(x, e, RS_ERR_INPUT,
-                          "expected a shift after the unknown '%s', as in %s[n] or %s[n+1]", e->name);
+            return rs_error_set_at(x->err, RS_ERR_INPUT, x->c->path, e->line, e->col,
+                                   "expected a shift after the unknown '%s', as in %s[n] or %s[n+1]",
+                                   e->name, e->name, e->name);
         fmpq_mpoly_one(out->c + 1 + k, s->ctx);
         out->low = e->shift;
         return RS_OK;
@@ -175,8 +249,9 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
         const rs_let_t *l = &x->c->lets[k];
         int r;
         if (l->shifted && !e->shifted)
-            return err_at(x, e, RS_ERR_INPUT,
-                          "'%s' is a derived sequence: expected a shift, as in %s[n+1]", e->name);
+            return rs_error_set_at(x->err, RS_ERR_INPUT, x->c->path, e->line, e->col,
+                                   "'%s' is a derived sequence: expected a shift, as in %s[n+1]",
+                                   e->name, e->name);
         if (!l->shifted && e->shifted)
             return err_at(x, e, RS_ERR_INPUT,
                           "shift on '%s', which is a named expression (let NAME = ...), not a sequence", e->name);
@@ -255,6 +330,9 @@ static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
         return err_at(x, e, RS_ERR_INPUT, "division by an expression in lambda%s; multiply through instead", "");
     if (fmpq_mpoly_is_zero(b->c + 0, s->ctx))
         return err_at(x, e, RS_ERR_INPUT, "division by zero%s", "");
+    for (i = 0; i < out->ns; i++)
+        if (prod_check(x, e, a->c + i, b->den, 0) != RS_OK) return x->err->code;
+    if (prod_check(x, e, a->den, b->c + 0, 0) != RS_OK) return x->err->code;
     /* (a/da) / (b0/db) = (a*db) / (da*b0) */
     for (i = 0; i < out->ns; i++)
         fmpq_mpoly_mul(out->c + i, a->c + i, b->den, s->ctx);
@@ -264,7 +342,34 @@ static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
     return RS_OK;
 }
 
+static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x);
+
 static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
+{
+    int r;
+    slong i;
+    if (++x->steps > RS_SCHEME_MAX_STEPS)
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                               "expression too large after expanding lets (limit %d operations)",
+                               RS_SCHEME_MAX_STEPS);
+    if (x->depth >= RS_SCHEME_MAX_DEPTH)
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                               "expression too deep after expanding lets (limit %d levels)",
+                               RS_SCHEME_MAX_DEPTH);
+    x->depth++;
+    r = eval_node(out, e, x);
+    x->depth--;
+    for (i = 0; r == RS_OK && i <= out->ns; i++) {
+        const fmpq_mpoly_struct *p = i < out->ns ? out->c + i : out->den;
+        if (fmpq_mpoly_length(p, x->s->ctx) > RS_SCHEME_MAX_TERMS)
+            r = rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+                                "term limit exceeded: %ld terms (limit %d terms per polynomial)",
+                                (long) fmpq_mpoly_length(p, x->s->ctx), RS_SCHEME_MAX_TERMS);
+    }
+    return r;
+}
+
+static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
 {
     const rs_scheme_struct *s = x->s;
     const fmpq_mpoly_ctx_struct *ctx = s->ctx;
@@ -294,7 +399,7 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
         break;
     case RS_EXPR_ADD:
     case RS_EXPR_SUB:
-        lin_addsub(out, &a, &b, e->kind == RS_EXPR_SUB, s);
+        r = lin_addsub(out, &a, &b, e->kind == RS_EXPR_SUB, x, e);
         break;
     case RS_EXPR_MUL: {
         int au = lin_has_unknowns(&a, ctx), bu = lin_has_unknowns(&b, ctx);
@@ -305,6 +410,10 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
         }
         u = au ? &a : &b;   /* the factor that may carry unknowns */
         k = au ? &b : &a;   /* the factor without unknowns */
+        for (i = 0; i < out->ns && r == RS_OK; i++)
+            r = prod_check(x, e, u->c + i, k->c + 0, 0);
+        if (r == RS_OK) r = prod_check(x, e, a.den, b.den, 0);
+        if (r != RS_OK) break;
         for (i = 0; i < out->ns; i++)
             fmpq_mpoly_mul(out->c + i, u->c + i, k->c + 0, ctx);
         fmpq_mpoly_mul(out->den, a.den, b.den, ctx);
@@ -337,10 +446,12 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
                 if (dd > d) d = dd;
                 if (d > 0 && kk > RS_SCHEME_MAX_DEGREE / d) {
                     r = err_at(x, e, RS_ERR_LIMIT,
-                               "degree limit exceeded: this power has degree over 4096 in '%s'", s->vars[v]);
+                               "degree limit exceeded: this power has degree over 4096 in '%s' (limit 4096 per variable)", s->vars[v]);
                     break;
                 }
             }
+            if (r == RS_OK && kk > 1) r = prod_check(x, e, a.c + 0, NULL, (ulong) kk);
+            if (r == RS_OK && kk > 1) r = prod_check(x, e, a.den, NULL, (ulong) kk);
             if (r != RS_OK) break;
             if (k < 0 && fmpq_mpoly_is_zero(a.c + 0, ctx)) {
                 r = err_at(x, e, RS_ERR_INPUT, "division by zero (0 to a negative power)%s", "");
@@ -436,6 +547,8 @@ static void ev_setup(ev_t *x, const rs_scheme_struct *s, const rs_case_struct *c
     x->visiting = flint_calloc(c->nlets + 1, sizeof(int));
     x->err = err;
     x->collect = collect;
+    x->depth = 0;
+    x->steps = 0;
 }
 
 int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
@@ -496,7 +609,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     if (c->charexpr != NULL)
         return build_char(s, c, err);
     if (n == 0)
-        return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
+        return rs_error_set_at(err, RS_ERR_INPUT, c->path, 1, 1,
                                "expected `unknown` and `eq` lines (or a `char` line), found none");
     if (n > RS_SCHEME_MAX_UNKNOWNS)
         return rs_error_set_at(err, RS_ERR_LIMIT, c->path, c->unknown_loc.line, c->unknown_loc.col,
@@ -521,7 +634,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
         lin_init(&v, n + 1, s->ctx);
         r = eval(&lhs, q->lhs, &x);
         if (r == RS_OK) r = eval(&rhs, q->rhs, &x);
-        if (r == RS_OK) lin_addsub(&v, &lhs, &rhs, 1, s);
+        if (r == RS_OK) r = lin_addsub(&v, &lhs, &rhs, 1, &x, q->lhs);
         if (r == RS_OK && !lin_has_unknowns(&v, s->ctx))
             r = rs_error_set_at(err, RS_ERR_INPUT, q->loc.file, q->loc.line, q->loc.col,
                                 "expected an equation involving an unknown, found one without any "
@@ -555,8 +668,8 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
                 }
                 if (fmpq_mpoly_degree_si(M, s->lambda_var, s->ctx) > RS_SCHEME_MAX_DEGREE)
                     r = rs_error_set_at(err, RS_ERR_LIMIT, q->loc.file, q->loc.line, q->loc.col,
-                                        "degree limit exceeded: shifts span more than %d steps",
-                                        RS_SCHEME_MAX_DEGREE);
+                                        "degree limit exceeded: shifts span %ld steps (limit %d)",
+                                        (long) fmpq_mpoly_degree_si(M, s->lambda_var, s->ctx), RS_SCHEME_MAX_DEGREE);
             }
         }
         lin_clear(&lhs, s->ctx);
