@@ -9,8 +9,16 @@ typedef struct {
     const rs_src_t *src;
     size_t pos;
     int depth;
+    int height;            /* height of the tree the last parse_* returned */
     rs_error_struct *err;
 } parser_t;
+
+/* Tree height limit: long chains (a+b+c+...) are as deep as nesting for the
+ * recursive walkers (free, copy, evaluation), so they are bounded too. */
+#define RS_EXPR_MAX_HEIGHT 2000
+/* Size limit of a constant computed by rs_expr_eval_const (numerator plus
+ * denominator bits), checked before powers and after every operation. */
+#define RS_EXPR_MAX_BITS 1000000
 
 void rs_src_pos(const rs_src_t *src, size_t i, int *line, int *col)
 {
@@ -192,6 +200,7 @@ static rs_expr_t *parse_primary(parser_t *p)
             return NULL;
         }
         e = node_new(p, RS_EXPR_NUM, start);
+        p->height = 1;
         fmpq_swap(e->num, q);
         fmpq_clear(q);
         p->pos = i;
@@ -210,6 +219,7 @@ static rs_expr_t *parse_primary(parser_t *p)
             return NULL;
         }
         e = node_new(p, RS_EXPR_NAME, start);
+        p->height = 1;
         e->name = flint_malloc(j - p->pos + 1);
         memcpy(e->name, t + p->pos, j - p->pos);
         e->name[j - p->pos] = '\0';
@@ -237,6 +247,8 @@ static rs_expr_t *parse_primary(parser_t *p)
                     return NULL;
                 }
                 while (isdigit((unsigned char) t[p->pos])) {
+                    k = 10 * k + (t[p->pos] - '0');
+                    p->pos++;
                     if (k > 100000) {
                         int line, col;
                         rs_src_pos(p->src, lb, &line, &col);
@@ -245,8 +257,6 @@ static rs_expr_t *parse_primary(parser_t *p)
                         rs_expr_free(e);
                         return NULL;
                     }
-                    k = 10 * k + (t[p->pos] - '0');
-                    p->pos++;
                 }
                 skip_ws(p);
             }
@@ -265,11 +275,26 @@ static rs_expr_t *parse_primary(parser_t *p)
     return NULL;
 }
 
-static rs_expr_t *binary(parser_t *p, rs_expr_kind_t k, size_t at, rs_expr_t *a, rs_expr_t *b)
+/* Joins a (height ha) and b (height p->height, or none) under a new node;
+ * frees both and returns NULL when the tree gets too high. */
+static rs_expr_t *binary_h(parser_t *p, rs_expr_kind_t k, size_t at, rs_expr_t *a, int ha, rs_expr_t *b)
 {
-    rs_expr_t *e = node_new(p, k, at);
+    rs_expr_t *e;
+    int h = (b != NULL && p->height > ha) ? p->height : ha;
+    if (h + 1 > RS_EXPR_MAX_HEIGHT) {
+        int line, col;
+        rs_src_pos(p->src, at, &line, &col);
+        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
+                        "expression too deep: over %d levels of operators (limit %d; split long sums with let)",
+                        RS_EXPR_MAX_HEIGHT, RS_EXPR_MAX_HEIGHT);
+        rs_expr_free(a);
+        rs_expr_free(b);
+        return NULL;
+    }
+    e = node_new(p, k, at);
     e->a = a;
     e->b = b;
+    p->height = h + 1;
     return e;
 }
 
@@ -278,9 +303,11 @@ static rs_expr_t *parse_power(parser_t *p)
 {
     rs_expr_t *a, *b;
     size_t at;
+    int ha;
     a = parse_primary(p);
     if (a == NULL)
         return NULL;
+    ha = p->height;
     skip_ws(p);
     if (p->src->text[p->pos] != '^')
         return a;
@@ -291,7 +318,7 @@ static rs_expr_t *parse_power(parser_t *p)
         rs_expr_free(a);
         return NULL;
     }
-    return binary(p, RS_EXPR_POW, at, a, b);
+    return binary_h(p, RS_EXPR_POW, at, a, ha, b);
 }
 
 static rs_expr_t *parse_unary(parser_t *p)
@@ -314,7 +341,7 @@ static rs_expr_t *parse_unary(parser_t *p)
         p->depth--;
         if (a == NULL || !neg)
             return a;
-        return binary(p, RS_EXPR_NEG, at, a, NULL);
+        return binary_h(p, RS_EXPR_NEG, at, a, p->height, NULL);
     } else {
         rs_expr_t *a = parse_power(p);
         p->depth--;
@@ -329,6 +356,7 @@ static rs_expr_t *parse_term(parser_t *p)
     while (a != NULL) {
         size_t at;
         rs_expr_kind_t k;
+        int ha = p->height;
         skip_ws(p);
         if (t[p->pos] != '*' && t[p->pos] != '/')
             break;
@@ -340,7 +368,7 @@ static rs_expr_t *parse_term(parser_t *p)
             rs_expr_free(a);
             return NULL;
         }
-        a = binary(p, k, at, a, b);
+        a = binary_h(p, k, at, a, ha, b);
     }
     return a;
 }
@@ -360,6 +388,7 @@ static rs_expr_t *parse_expr(parser_t *p)
     while (a != NULL) {
         size_t at;
         rs_expr_kind_t k;
+        int ha = p->height;
         skip_ws(p);
         if (t[p->pos] != '+' && t[p->pos] != '-')
             break;
@@ -372,7 +401,7 @@ static rs_expr_t *parse_expr(parser_t *p)
             a = NULL;
             break;
         }
-        a = binary(p, k, at, a, b);
+        a = binary_h(p, k, at, a, ha, b);
     }
     p->depth--;
     return a;
@@ -384,6 +413,7 @@ int rs_expr_parse(rs_expr_t **out, const rs_src_t *src, size_t *pos, rs_error_t 
     p.src = src;
     p.pos = *pos;
     p.depth = 0;
+    p.height = 0;
     p.err = err;
     *out = parse_expr(&p);
     *pos = p.pos;
@@ -402,7 +432,7 @@ int rs_expr_parse_all(rs_expr_t **out, const rs_src_t *src, rs_error_t err)
         pos++;
     if (src->text[pos] != '\0') {
         parser_t p;
-        p.src = src; p.pos = pos; p.depth = 0; p.err = err;
+        p.src = src; p.pos = pos; p.depth = 0; p.height = 0; p.err = err;
         rs_expr_free(*out);
         *out = NULL;
         return perr(&p, pos, "an operator or end of expression");
@@ -449,12 +479,23 @@ int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src, rs_err
             else if (fmpq_is_zero(a) && fmpz_sgn(fmpq_numref(b)) < 0)
                 r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
                                     "division by zero (0 to a negative power)");
+            else if ((double) (fmpz_bits(fmpq_numref(a)) + fmpz_bits(fmpq_denref(a)))
+                     * (double) FLINT_ABS(fmpz_get_si(fmpq_numref(b))) > RS_EXPR_MAX_BITS)
+                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col,
+                                    "number too large: about %.0f bits (limit %d bits)",
+                                    (double) (fmpz_bits(fmpq_numref(a)) + fmpz_bits(fmpq_denref(a)))
+                                    * (double) FLINT_ABS(fmpz_get_si(fmpq_numref(b))), RS_EXPR_MAX_BITS);
             else
                 fmpq_pow_si(q, a, fmpz_get_si(fmpq_numref(b)));
             break;
         default:
             r = rs_error_set(err, RS_ERR_INTERNAL, "bad node");
         }
+        if (r == RS_OK && fmpz_bits(fmpq_numref(q)) + fmpz_bits(fmpq_denref(q)) > RS_EXPR_MAX_BITS)
+            r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col,
+                                "number too large: %lu bits (limit %d bits)",
+                                (unsigned long) (fmpz_bits(fmpq_numref(q)) + fmpz_bits(fmpq_denref(q))),
+                                RS_EXPR_MAX_BITS);
     }
     fmpq_clear(a); fmpq_clear(b);
     return r;
