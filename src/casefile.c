@@ -194,6 +194,21 @@ static char *read_ident(const char *t, size_t *i)
     }
 }
 
+/* A name was expected at i: says so, or that the name there is too long. */
+static int name_err(ctx_t *x, size_t i, const char *expected)
+{
+    const char *t = x->src.text;
+    if (isalpha((unsigned char) t[i]) || t[i] == '_') {
+        size_t j = i;
+        int line, col;
+        while (isalnum((unsigned char) t[j]) || t[j] == '_') j++;
+        rs_src_pos(&x->src, i, &line, &col);
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->src.file, line, col,
+                               "name too long: %zu characters (limit 64)", j - i);
+    }
+    return expect_err(x, i, expected);
+}
+
 static int name_taken(const rs_case_struct *c, const char *name)
 {
     return rs_case_param_index(c, name) >= 0 || rs_case_unknown_index(c, name) >= 0
@@ -226,7 +241,7 @@ static int st_names(ctx_t *x, size_t i, int unknowns)
         at = i;
         name = read_ident(t, &i);
         if (name == NULL)
-            return expect_err(x, at, unknowns ? "an unknown's name" : "a parameter name");
+            return name_err(x, at, unknowns ? "an unknown's name" : "a parameter name");
         if (check_new_name(x, at, name) != RS_OK) { flint_free(name); return x->err->code; }
         if (unknowns) {
             GROW(x->c->unknowns, x->c->nunknowns);
@@ -370,7 +385,11 @@ static int st_eq(ctx_t *x, size_t i)
     r = rs_expr_parse(&lhs, &x->src, &i, x->err);
     if (r != RS_OK) return r;
     skip_ws(t, &i);
-    if (t[i] != '=' || t[i + 1] == '=') { rs_expr_free(lhs); return expect_err(x, i, "'=' in the equation (eq EXPR = EXPR)"); }
+    if (t[i] == '=' && t[i + 1] == '=') {
+        rs_expr_free(lhs);
+        return at_err(x, i, RS_ERR_INPUT, "expected a single '=' in the equation (eq EXPR = EXPR), found %s", "'=='");
+    }
+    if (t[i] != '=') { rs_expr_free(lhs); return expect_err(x, i, "'=' in the equation (eq EXPR = EXPR)"); }
     i++;
     r = rs_expr_parse(&rhs, &x->src, &i, x->err);
     if (r != RS_OK) { rs_expr_free(lhs); return r; }
@@ -444,7 +463,7 @@ static int st_set(ctx_t *x, size_t i)
         skip_ws(t, &i);
         at = i;
         name = read_ident(t, &i);
-        if (name == NULL) return expect_err(x, at, "a parameter name (set NAME = NUMBER)");
+        if (name == NULL) return name_err(x, at, "a parameter name (set NAME = NUMBER)");
         if (rs_case_param_index(x->c, name) < 0) {
             at_err(x, at, RS_ERR_INPUT, "'%s' is not a parameter (declare it with `param` first)", name);
             flint_free(name);
@@ -621,6 +640,9 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
             blen++;
             if (i < len)
                 continue;
+            r = rs_error_set_at(err, RS_ERR_INPUT, path, lineno, (int) (cend - ls) + 1,
+                                "expected a line after the continuation '\\', found end of file");
+            break;
         }
         buf[blen] = '\0';
         lmap[blen] = lineno;
@@ -666,7 +688,7 @@ int rs_case_parse_file(rs_case_t c, const char *path, rs_error_t err)
             if (!is_stdin) fclose(f);
             flint_free(text);
             return rs_error_set_at(err, RS_ERR_LIMIT, path, 0, 0,
-                                   "file too large (over %ld bytes)", RS_CASE_MAX_BYTES);
+                                   "file too large (over the limit of %ld bytes)", RS_CASE_MAX_BYTES);
         }
         if (got == 0) break;
     }
