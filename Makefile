@@ -15,7 +15,7 @@ LIBS    := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
 VERSION := 0.1.0
 
 DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
-            libjansson-dev libcmocka-dev gnuplot-nox
+            libjansson-dev libcmocka-dev gnuplot-nox libclang-rt-14-dev valgrind
 
 LIB_SRC  := $(sort $(wildcard src/*.c))
 CLI_SRC  := $(sort $(wildcard src/cli/*.c))
@@ -94,3 +94,41 @@ install: all
 
 clean:
 	rm -rf build build-san
+
+# ---- robustness: fuzzing, valgrind, the long property run -----------------
+# make fuzz [FUZZ_SECONDS=60]: libFuzzer (clang, ASan+UBSan) over the case
+# parser, expression engine and a charpoly run, one job; seeds are every file
+# in cases/, tests/bad/ and tests/fuzz/regress/; the corpus grows in
+# build/fuzz-corpus/, crashes/leaks/timeouts land in build/fuzz-artifacts/.
+FUZZ_SECONDS ?= 60
+FUZZ_CC      ?= clang
+FUZZ_BIN     := build/fuzz_case
+
+.PHONY: fuzz check-valgrind check-long
+
+$(FUZZ_BIN): tests/fuzz/fuzz_case.c $(LIB_SRC) $(HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined -std=c11 -D_POSIX_C_SOURCE=200809L \
+	  -Iinclude -I/usr/include/flint tests/fuzz/fuzz_case.c $(LIB_SRC) -o $@ $(LIBS)
+
+fuzz: deps $(FUZZ_BIN)
+	@mkdir -p build/fuzz-corpus build/fuzz-artifacts
+	@for f in $$(find cases tests/bad tests/fuzz/regress -type f 2>/dev/null); do \
+	  cp "$$f" "build/fuzz-corpus/seed-$$(echo "$$f" | tr / _)"; done
+	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 $(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) \
+	  -max_len=4096 -timeout=10 -artifact_prefix=build/fuzz-artifacts/ build/fuzz-corpus
+
+# Every case under valgrind (definite leaks and memory errors fail, exit 99);
+# each case must still end with its "# expect-exit: N" status (default 0).
+check-valgrind: deps
+	@$(MAKE) --no-print-directory all
+	@fail=0; for f in $$(find cases -name '*.case' | sort); do \
+	  want=$$(sed -n 's/^# expect-exit: *\([0-9]\).*/\1/p' "$$f" | head -1); want=$${want:-0}; \
+	  valgrind -q --leak-check=full --errors-for-leak-kinds=definite --error-exitcode=99 \
+	    $(BIN) "$$f" >/dev/null 2>$(BUILD)/valgrind.log; rc=$$?; \
+	  if [ $$rc = $$want ]; then echo "valgrind ok $$f"; \
+	  else echo "valgrind FAIL $$f: exit $$rc (expected $$want)"; cat $(BUILD)/valgrind.log; fail=1; fi; \
+	done; exit $$fail
+
+check-long: $(BUILD)/tests/test_property
+	RS_PROPERTY_N=100000 $(BUILD)/tests/test_property
