@@ -14,13 +14,16 @@
 #   median_ms: 2.911
 #   p10_ms:    2.803
 #   p90_ms:    3.120
+#   cpu_ms:    2.650 (mean user+system per run)
 #
 # Timer: hyperfine when installed (Debian package hyperfine), started with
 # --shell=none so no shell start-up is counted.  Without it (or with
 # --no-hyperfine) a plain sh loop around GNU `date +%s%N`; the time between
 # two `date` calls also contains one `date` start-up, so the loop measures
 # that overhead first (N back-to-back pairs, median) and subtracts it; it is
-# printed as overhead_ms.  Percentiles are nearest-rank; the median of an
+# printed as overhead_ms.  With hyperfine, cpu_ms is the mean user+system
+# CPU time per run (hyperfine's rusage), which other load on the machine
+# disturbs less than wall time.  Percentiles are nearest-rank; the median of an
 # even count is the mean of the two middle values.
 #
 # A command that exits non-zero is still timed (its status is printed as
@@ -87,6 +90,7 @@ quote_all() {
 }
 
 overhead=""
+cpu=""
 if [ $use_hf -eq 1 ] && command -v hyperfine >/dev/null 2>&1; then
     timer="$(hyperfine --version 2>/dev/null) (--shell=none)"
     cmdline=$(quote_all "$@")
@@ -101,6 +105,10 @@ if [ $use_hf -eq 1 ] && command -v hyperfine >/dev/null 2>&1; then
     tr -d ' \n\t' <"$tmp/hf.json" |
         sed -n 's/.*"times":\[\([^]]*\)\].*/\1/p' | tr ',' '\n' |
         awk 'NF { printf "%.6f\n", $1 * 1000 }' >"$tmp/ms"
+    # mean CPU time (user + system) per run: less sensitive to other load
+    cpu=$(tr -d ' \n\t' <"$tmp/hf.json" | sed -n \
+        's/.*"user":\([-0-9.eE+]*\),"system":\([-0-9.eE+]*\).*/\1 \2/p' |
+        awk 'NF == 2 { printf "%.3f", ($1 + $2) * 1000 }')
 else
     t=$(date +%s%N)
     case $t in
@@ -140,3 +148,5 @@ printf 'runs:      %s\n' "$n"
 printf 'exit:      %s\n' "$status"
 [ -n "$overhead" ] && printf 'overhead_ms: %s\n' "$overhead"
 stats "$tmp/ms" | awk '{ printf "median_ms: %s\np10_ms:    %s\np90_ms:    %s\n", $1, $2, $3 }'
+[ -n "$cpu" ] && printf 'cpu_ms:    %s (mean user+system per run)\n' "$cpu"
+exit 0

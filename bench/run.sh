@@ -44,33 +44,38 @@ echo "machine: $(uname -sm), $(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?'
 echo
 
 median_of() { sed -n 's/^median_ms: *//p'; }
+cpu_of() { sed -n 's/^cpu_ms: *\([^ ]*\).*/, cpu \1 ms/p'; }
 
 echo "== (0) start-up floor: recstab --version"
 out_0=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --version)
 echo "$out_0"
 med_0=$(echo "$out_0" | median_of)
+cpu_0=$(echo "$out_0" | cpu_of)
 echo
 
 echo "== (a) charpoly only (target: median < 5 ms)"
 out_a=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --analyse charpoly "$CASE")
 echo "$out_a"
 med_a=$(echo "$out_a" | median_of)
+cpu_a=$(echo "$out_a" | cpu_of)
 echo
 
 echo "== (b) every analysis the case lists"
 out_b=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" "$CASE")
 echo "$out_b"
 med_b=$(echo "$out_b" | median_of)
+cpu_b=$(echo "$out_b" | cpu_of)
 echo
 
 echo "== (c) charpoly + bilinear + hurwitz (what the SymPy peer computes)"
-med_c=""
+med_c=""; cpu_c=""
 if "$BIN" --analyse charpoly --analyse bilinear --analyse hurwitz "$CASE" \
         >/dev/null 2>&1; then
     out_c=$(sh bench/bench_cli.sh -n "$N" -- "$BIN" --analyse charpoly \
             --analyse bilinear --analyse hurwitz "$CASE")
     echo "$out_c"
     med_c=$(echo "$out_c" | median_of)
+cpu_c=$(echo "$out_c" | cpu_of)
 else
     echo "skipped: this build of recstab does not run those analyses on $CASE"
 fi
@@ -156,11 +161,11 @@ echo
 
 echo "== summary (park-staggered, whole-process medians)"
 ratio() { awk -v s="$1" -v r="$2" 'BEGIN { if (r > 0) printf "%.0f", s * 1000 / r; else print "?" }'; }
-[ -n "$med_0" ] && echo "recstab --version (start-up):  ${med_0} ms"
-[ -n "$med_a" ] && echo "recstab charpoly only:        ${med_a} ms (target < 5 ms:" \
+[ -n "$med_0" ] && echo "recstab --version (start-up):  ${med_0} ms${cpu_0}"
+[ -n "$med_a" ] && echo "recstab charpoly only:        ${med_a} ms${cpu_a} (target < 5 ms:" \
     "$(awk -v m="$med_a" 'BEGIN { print (m < 5) ? "met" : "NOT met" }'))"
-[ -n "$med_b" ] && echo "recstab case's analyses:      ${med_b} ms"
-[ -n "$med_c" ] && echo "recstab charpoly+bilinear+hurwitz: ${med_c} ms"
+[ -n "$med_b" ] && echo "recstab case's analyses:      ${med_b} ms${cpu_b}"
+[ -n "$med_c" ] && echo "recstab charpoly+bilinear+hurwitz: ${med_c} ms${cpu_c}"
 if [ -n "$sym_tot" ]; then
     echo "SymPy charpoly (matrix+det):  ${sym_cp} s   -> recstab (a) is $(ratio "$sym_cp" "$med_a")x faster"
     if [ -n "$med_c" ]; then
