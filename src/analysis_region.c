@@ -446,7 +446,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     piece_t *pieces = NULL;
     fmpz_mpoly_t pt, g, tmp;
     json_t *o, *ivs, *pts;
-    int r = RS_OK, have_lo, have_hi, repeated_always = 0;
+    int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0;
 
     t = read_word(rest, name);
     if (t == NULL)
@@ -532,9 +532,12 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
             rs_bilinear_fmpz_mpoly(qz, pt, lv, s->zctx);
             if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
                 && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, run->err) == RS_OK
-                && h->n >= 2 && !fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx)
-                && to_upoly(u, h->minors + h->n - 2, tv, s))
-                alg_roots_append(&crit, &ncrit, u, CRIT_D);
+                && h->n >= 2) {
+                if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
+                    d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
+                else if (to_upoly(u, h->minors + h->n - 2, tv, s))
+                    alg_roots_append(&crit, &ncrit, u, CRIT_D);
+            }
             rs_hurwitz_clear(h, s->zctx);
             fmpz_mpoly_clear(qz, s->zctx);
             flint_free(sign);
@@ -544,7 +547,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
             if (!fmpz_mpoly_discriminant(tmp, pt, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
                 repeated_always = 1;
             else if (to_upoly(u, tmp, tv, s))
-                alg_roots_append(&crit, &ncrit, u, CRIT_DISC);
+                alg_roots_append(&crit, &ncrit, u, d_always ? (CRIT_DISC | CRIT_D) : CRIT_DISC);
         }
         fmpz_poly_clear(u);
         fmpz_clear(pm);

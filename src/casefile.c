@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "recstab/casefile.h"
+#include "recstab/builder.h"
 
 static char *dupstr(const char *s)
 {
@@ -27,6 +28,7 @@ static char *dupn(const char *s, size_t n)
 void rs_case_init(rs_case_t c)
 {
     memset(c, 0, sizeof(rs_case_struct));
+    c->extrapolate = -1;
 }
 
 static void loc_clear(rs_loc_t *l)
@@ -86,6 +88,26 @@ void rs_case_clear(rs_case_t c)
     flint_free(c->sets);
     rs_case_clear_requests(c);
     loc_clear(&c->unknown_loc);
+    for (i = 0; i < c->nsubs; i++) {
+        rs_subsystem_t *b = &c->subs[i];
+        slong k;
+        flint_free(b->name);
+        for (k = 0; k < b->nstates; k++) flint_free(b->states[k]);
+        flint_free(b->states);
+        for (k = 0; k < b->ndeqs; k++) {
+            flint_free(b->deqs[k].state); flint_free(b->deqs[k].rhs); loc_clear(&b->deqs[k].loc);
+        }
+        flint_free(b->deqs);
+        loc_clear(&b->loc);
+        flint_free(b->method); flint_free(b->arg1); flint_free(b->arg2); flint_free(b->step);
+        loc_clear(&b->intloc);
+    }
+    flint_free(c->subs);
+    flint_free(c->couple); flint_free(c->couple_first); flint_free(c->couple_second);
+    loc_clear(&c->couple_loc);
+    flint_free(c->force_name); flint_free(c->force_expr);
+    loc_clear(&c->force_loc);
+    flint_free(c->emitted);
     memset(c, 0, sizeof(rs_case_struct));
 }
 
@@ -502,6 +524,49 @@ static void add_request_at(ctx_t *x, size_t i)
     flint_free(txt);
 }
 
+static int read_whole(char **out, size_t *outlen, const char *path, rs_error_t err);
+static int parse_text(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err);
+
+/* include FILE: relative to the including file's folder */
+static int st_include(ctx_t *x, size_t i)
+{
+    const char *t = x->src.text;
+    const char *slash;
+    char *path, *text = NULL;
+    size_t len = 0, end;
+    int r;
+    skip_ws(t, &i);
+    end = strlen(t);
+    while (end > i && (t[end - 1] == ' ' || t[end - 1] == '\t')) end--;
+    if (end == i) return expect_err(x, i, "a file name after include");
+    if (x->c->include_depth >= 16)
+        return at_err(x, i, RS_ERR_LIMIT, "includes nested too deeply (limit 16)%s", "");
+    slash = strrchr(x->src.file, '/');
+    if (t[i] == '/' || slash == NULL) {
+        path = dupn(t + i, end - i);
+    } else {
+        size_t d = (size_t) (slash - x->src.file) + 1;
+        path = flint_malloc(d + (end - i) + 1);
+        memcpy(path, x->src.file, d);
+        memcpy(path + d, t + i, end - i);
+        path[d + end - i] = '\0';
+    }
+    r = read_whole(&text, &len, path, x->err);
+    if (r != RS_OK) {
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "%s", x->err->msg);
+        at_err(x, i, RS_ERR_INPUT, "cannot include: %s", msg);
+        flint_free(path);
+        return x->err->code;
+    }
+    x->c->include_depth++;
+    r = parse_text(x->c, path, text, len, x->err);
+    x->c->include_depth--;
+    flint_free(text);
+    flint_free(path);
+    return r;
+}
+
 static int statement(ctx_t *x)
 {
     const char *t = x->src.text;
@@ -515,6 +580,12 @@ static int statement(ctx_t *x)
     word = read_ident(t, &i);
     if (word == NULL)
         return expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, analyse, expect, claim)");
+    if (t[i] == '\'') {
+        /* a state equation NAME' = EXPR of the current subsystem */
+        r = rs_builder_statement(x->c, word, &x->src, i, x->err);
+        flint_free(word);
+        return r;
+    }
     if (t[i] != '\0' && t[i] != ' ' && t[i] != '\t') {
         flint_free(word);
         return expect_err(x, i, "a space after the statement keyword");
@@ -547,6 +618,10 @@ static int statement(ctx_t *x)
             add_request_at(x, i);
     } else if (strcmp(word, "expect") == 0 || strcmp(word, "claim") == 0) {
         add_request_at(x, kw);
+    } else if (rs_builder_is_keyword(word)) {
+        r = rs_builder_statement(x->c, word, &x->src, i, x->err);
+    } else if (strcmp(word, "include") == 0) {
+        r = st_include(x, i);
     } else {
         r = expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, analyse, expect, claim)");
     }
@@ -582,7 +657,7 @@ static int check_bytes(const char *path, const char *text, size_t len, rs_error_
     return RS_OK;
 }
 
-int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
+static int parse_text(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
 {
     size_t i = 0;
     int lineno = 0, r = RS_OK;
@@ -591,8 +666,6 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
     size_t blen = 0;
     int stmt_line = 0;
 
-    flint_free(c->path);
-    c->path = dupstr(path);
     if (len > (size_t) RS_CASE_MAX_BYTES)
         return rs_error_set_at(err, RS_ERR_LIMIT, path, 0, 0,
                                "file too large (%zu bytes; limit %ld bytes)", len, RS_CASE_MAX_BYTES);
@@ -667,12 +740,29 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
     return r;
 }
 
-int rs_case_parse_file(rs_case_t c, const char *path, rs_error_t err)
+int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
+{
+    int r;
+    flint_free(c->path);
+    c->path = dupstr(path);
+    r = parse_text(c, path, text, len, err);
+    if (r == RS_OK && c->include_depth == 0)
+        r = rs_builder_expand(c, err);
+    return r;
+}
+
+int rs_case_parse_append(rs_case_t c, const char *label, const char *text, rs_error_t err)
+{
+    return parse_text(c, label, text, strlen(text), err);
+}
+
+static int read_whole(char **out, size_t *outlen, const char *path, rs_error_t err)
 {
     FILE *f;
     char *text = NULL;
     size_t len = 0, cap = 0;
-    int r, is_stdin = (strcmp(path, "-") == 0);
+    int is_stdin = (strcmp(path, "-") == 0);
+    *out = NULL;
     f = is_stdin ? stdin : fopen(path, "rb");
     if (f == NULL)
         return rs_error_set_at(err, RS_ERR_IO, path, 0, 0, "cannot open: %s", strerror(errno));
@@ -699,6 +789,17 @@ int rs_case_parse_file(rs_case_t c, const char *path, rs_error_t err)
     }
     if (!is_stdin) fclose(f);
     text[len] = '\0';
+    *out = text;
+    *outlen = len;
+    return RS_OK;
+}
+
+int rs_case_parse_file(rs_case_t c, const char *path, rs_error_t err)
+{
+    char *text;
+    size_t len;
+    int r = read_whole(&text, &len, path, err);
+    if (r != RS_OK) return r;
     r = rs_case_parse_string(c, path, text, len, err);
     flint_free(text);
     return r;

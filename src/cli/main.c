@@ -22,6 +22,7 @@ static void usage(FILE *f)
           "                                 accepts \"expect ...\" and \"claim ...\" lines)\n"
           "  --max-prec BITS                ceiling for certified numerics (default 65536)\n"
           "  --markdown, --latex            print the whole derivation (Markdown / a LaTeX document)\n"
+          "  --emit equations               print the unknowns and equations the builders generated\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
           "             3 internal inconsistency (two independent methods disagree)\n", f);
@@ -34,7 +35,7 @@ static int exit_code_for(int code)
 
 int main(int argc, char **argv)
 {
-    int json = 0, markdown = 0, latex = 0, i, worst = 0;
+    int json = 0, markdown = 0, latex = 0, emit = 0, i, worst = 0;
     const char **sets = calloc((size_t) argc, sizeof(char *));
     const char **analyses = calloc((size_t) argc, sizeof(char *));
     const char **cases = calloc((size_t) argc, sizeof(char *));
@@ -50,6 +51,17 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         if (strcmp(a, "--json") == 0) json = 1;
         else if (strcmp(a, "--markdown") == 0) markdown = 1;
+        else if (strcmp(a, "--emit") == 0 || strcmp(a, "--emit=equations") == 0) {
+            if (strcmp(a, "--emit") == 0) {
+                if (i + 1 >= argc || strcmp(argv[i + 1], "equations") != 0) {
+                    fprintf(stderr, "recstab: --emit expects 'equations'\n");
+                    rc = 2;
+                    goto end;
+                }
+                i++;
+            }
+            emit = 1;
+        }
         else if (strcmp(a, "--latex") == 0) latex = 1;
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
         else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
@@ -118,6 +130,15 @@ int main(int argc, char **argv)
                 free(line);
             }
         }
+        if (r == RS_OK && emit) {
+            json_t *e = json_object();
+            json_object_set_new(e, "case", json_string(cases[i]));
+            json_object_set_new(e, "equations", json_string(c->emitted ? c->emitted
+                                                                       : "# no builder statements: the case's own equations\n"));
+            json_array_append_new(docs, e);
+            rs_case_clear(c);
+            continue;
+        }
         if (r == RS_OK)
             r = rs_analysis_run(&doc, &outcome, c, &opt, err);
         if (r != RS_OK) {
@@ -134,7 +155,14 @@ int main(int argc, char **argv)
         rs_case_clear(c);
     }
     out = open_memstream(&outbuf, &outlen);
-    if (json) {
+    if (emit) {
+        size_t k;
+        for (k = 0; k < json_array_size(docs); k++) {
+            json_t *e = json_array_get(docs, k);
+            fprintf(out, "# %s\n%s", json_string_value(json_object_get(e, "case")),
+                    json_string_value(json_object_get(e, "equations")));
+        }
+    } else if (json) {
         json_t *top = (ncases == 1) ? json_incref(json_array_get(docs, 0))
                                     : json_pack("{s:O}", "cases", docs);
         json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
