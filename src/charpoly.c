@@ -81,6 +81,25 @@ slong rs_charpoly_normalise(fmpz_mpoly_t q, fmpq_t scale, slong lambda_var,
     return k;
 }
 
+/* Upper bound on the terms of a*b: the smallest of len(a)*len(b), the number
+ * of monomials in the box of the summed degrees and the number of monomials
+ * of at most the summed total degree. */
+static double prod_terms_bound(const fmpz_mpoly_t a, const fmpz_mpoly_t b, const fmpz_mpoly_ctx_t ctx)
+{
+    double box = 1.0, pairs = (double) fmpz_mpoly_length(a, ctx) * (double) fmpz_mpoly_length(b, ctx);
+    slong v;
+    if (pairs == 0.0)
+        return 0.0;
+    double simplex = 1.0, D = (double) fmpz_mpoly_total_degree_si(a, ctx)
+                              + (double) fmpz_mpoly_total_degree_si(b, ctx);
+    for (v = 0; v < ctx->minfo->nvars; v++) {
+        box *= (double) fmpz_mpoly_degree_si(a, v, ctx) + (double) fmpz_mpoly_degree_si(b, v, ctx) + 1.0;
+        simplex = simplex * (D + (double) (v + 1)) / (double) (v + 1);   /* C(D + nvars, nvars) */
+    }
+    if (simplex < box) box = simplex;
+    return box < pairs ? box : pairs;
+}
+
 int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
                     slong max_terms, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
@@ -114,6 +133,17 @@ int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
         for (i = k + 1; i < n; i++) {
             for (j = k + 1; j < n; j++) {
                 fmpz_mpoly_struct *aij = A + i * n + j;
+                double b1 = prod_terms_bound(A + k * n + k, aij, ctx);
+                double b2 = prod_terms_bound(A + i * n + k, A + k * n + j, ctx);
+                /* the products are divided by prev afterwards, so only refuse
+                 * products far beyond the limit (they would exhaust memory) */
+                if (b1 > 50.0 * (double) max_terms || b2 > 50.0 * (double) max_terms) {
+                    fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
+                    return rs_error_set(err, RS_ERR_LIMIT,
+                                        "term limit exceeded: an intermediate product of the determinant could "
+                                        "have %.0f terms (limit %ld); set more parameters to numbers",
+                                        b1 > b2 ? b1 : b2, (long) (50 * max_terms));
+                }
                 fmpz_mpoly_mul(t, A + k * n + k, aij, ctx);
                 fmpz_mpoly_mul(aij, A + i * n + k, A + k * n + j, ctx);
                 fmpz_mpoly_sub(aij, t, aij, ctx);

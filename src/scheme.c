@@ -173,6 +173,14 @@ static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
         bits = (double) k * (coeff_bits(a) + log2(la + 1.0));
     }
     if (dterms < terms) terms = dterms;
+    {
+        /* monomials of at most the total degree of the result: C(D + nvars, nvars) */
+        double D = (double) fmpq_mpoly_total_degree_si(a, s->ctx), simplex = 1.0;
+        D = k == 0 ? D + (double) fmpq_mpoly_total_degree_si(b, s->ctx) : D * (double) k;
+        for (v = 0; v < s->nvars; v++)
+            simplex = simplex * (D + (double) (v + 1)) / (double) (v + 1);
+        if (simplex < terms) terms = simplex;
+    }
     if (terms > RS_SCHEME_MAX_TERMS)
         return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
                                "term limit exceeded: this %s could have %.0f terms (limit %d terms per polynomial)",
