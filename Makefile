@@ -116,7 +116,7 @@ fuzz: deps $(FUZZ_BIN)
 	@for f in $$(find cases tests/bad tests/fuzz/regress -type f 2>/dev/null); do \
 	  cp "$$f" "build/fuzz-corpus/seed-$$(echo "$$f" | tr / _)"; done
 	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 $(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) \
-	  -max_len=4096 -timeout=10 -artifact_prefix=build/fuzz-artifacts/ build/fuzz-corpus
+	  -max_len=4096 -timeout=10 -print_final_stats=1 -artifact_prefix=build/fuzz-artifacts/ build/fuzz-corpus
 
 # Every case under valgrind (definite leaks and memory errors fail, exit 99);
 # each case must still end with its "# expect-exit: N" status (default 0).
