@@ -10,7 +10,7 @@
 #define RS_SCHEME_MAX_DEPTH 4000
 #define RS_SCHEME_MAX_STEPS 1000000
 #define RS_SCHEME_MAX_TERMS 100000
-#define RS_SCHEME_MAX_BITS 134217728.0   /* 16 MB of coefficients */
+#define RS_SCHEME_MAX_BITS 536870912.0   /* 64 MB of coefficients (an upper bound is checked) */
 
 /* A value during evaluation: (c[0] + sum_u c[1+u] lambda^low x_u) / den.
  * c[0] is the part without unknowns; den is in the parameters only. */
@@ -181,7 +181,9 @@ static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
             simplex = simplex * (D + (double) (v + 1)) / (double) (v + 1);
         if (simplex < terms) terms = simplex;
     }
-    if (terms > RS_SCHEME_MAX_TERMS)
+    /* the bound can be loose (the result is checked again once computed):
+     * refuse only what is far beyond the limit */
+    if (terms > 20.0 * RS_SCHEME_MAX_TERMS)
         return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
                                "term limit exceeded: this %s could have %.0f terms (limit %d terms per polynomial)",
                                k == 0 ? "product" : "power", terms, RS_SCHEME_MAX_TERMS);
