@@ -331,6 +331,69 @@ static void r_claim(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
+static void r_radius(FILE *out, const json_t *o)
+{
+    const json_t *roots = json_object_get(o, "roots");
+    size_t i;
+    line(out, "method", "%s", jstr(o, "method"));
+    if (json_is_true(json_object_get(o, "certified"))) {
+        char buf[160];
+        line(out, "rho", "%s", jstr(o, "rho"));
+        line(out, "certified", "[%s,", jstr(o, "lower"));
+        line(out, "", " %s]", jstr(o, "upper"));
+        snprintf(buf, sizeof buf, "%lld digits asked, %lld bits used", jint(o, "digits"), jint(o, "precision_bits"));
+        line(out, "precision", "%s", buf);
+        for (i = 0; i < json_array_size(roots); i++) {
+            const json_t *z = json_array_get(roots, i);
+            char rb[200];
+            snprintf(rb, sizeof rb, "%.22s %s %.22si  |.| = %.22s", jstr(z, "re"),
+                     jstr(z, "im")[0] == '-' ? "-" : "+", jstr(z, "im")[0] == '-' ? jstr(z, "im") + 1 : jstr(z, "im"),
+                     jstr(z, "abs"));
+            line(out, i == 0 ? "roots" : "", "%s", rb);
+        }
+        line(out, "from radius", "%s", jstr(o, "verdict_from_radius"));
+        line(out, "exact", "%s (consistent with the radius)", jstr(o, "exact_status"));
+    } else {
+        char buf[64];
+        snprintf(buf, sizeof buf, "%.17g (double precision, NOT certified)", json_real_value(json_object_get(o, "rho")));
+        line(out, "rho", "%s", buf);
+        line(out, "exact", "%s", jstr(o, "exact_status"));
+    }
+    print_assigned(out, o);
+}
+
+static void r_modes(FILE *out, const json_t *o)
+{
+    const char *groups[] = {"modes", "spurious"};
+    size_t g, i;
+    line(out, "h", "%s", jstr(o, "h"));
+    for (g = 0; g < 2; g++) {
+        const json_t *m = json_object_get(o, groups[g]);
+        for (i = 0; i < json_array_size(m); i++) {
+            const json_t *e = json_array_get(m, i);
+            char buf[400];
+            if (jstr(e, "sigma") == NULL) continue;
+            snprintf(buf, sizeof buf, "sigma %.12s omega %.12s damping %.12s%s%.12s", jstr(e, "sigma"),
+                     jstr(e, "omega"), jstr(e, "damping_ratio"), jstr(e, "frequency_error") ? " freq.error " : "",
+                     jstr(e, "frequency_error") ? jstr(e, "frequency_error") : "");
+            line(out, i == 0 ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
+        }
+    }
+    print_assigned(out, o);
+}
+
+static void r_simulate(FILE *out, const json_t *o)
+{
+    char buf[200];
+    snprintf(buf, sizeof buf, "%lld steps from a seeded random start (seed %lld), %lld bits", jint(o, "steps"),
+             jint(o, "seed"), jint(o, "precision_bits"));
+    line(out, "run", "%s", buf);
+    line(out, "recurrence", "%s", jstr(o, "recurrence"));
+    line(out, "growth", "%s per step (measured)", jstr(o, "growth") ? jstr(o, "growth") : "undefined");
+    if (jstr(o, "radius")) line(out, "radius", "%s (certified)", jstr(o, "radius"));
+    print_assigned(out, o);
+}
+
 /* Fallback: every member except "analysis" as key: value. */
 static void r_generic(FILE *out, const json_t *o)
 {
@@ -363,6 +426,9 @@ static const renderer_t renderers[] = {
     {"region", r_region},
     {"limit", r_limit},
     {"claim", r_claim},
+    {"radius", r_radius},
+    {"modes", r_modes},
+    {"simulate", r_simulate},
     {NULL, NULL}
 };
 
