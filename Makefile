@@ -10,8 +10,8 @@ WARN    := -Wall -Wextra -Werror -Wno-format-truncation
 WARN    += $(if $(findstring clang,$(CC)),,-Wno-stringop-overread)
 OPT     ?= -O2 -g
 SAN     ?=
-CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -Iinclude -I/usr/include/flint $(CFLAGS)
-LIBS    := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fopenmp -Iinclude -I/usr/include/flint $(CFLAGS)
+LIBS    := -fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
 VERSION := 0.1.0
 
 DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
