@@ -13,6 +13,7 @@ static const char *jstr(const json_t *o, const char *key)
 
 static void line(FILE *out, const char *label, const char *fmt, const char *a)
 {
+    if (a == NULL) return;   /* a member this result does not have */
     fprintf(out, "  %-*s ", LABEL_W, label ? label : "");
     fprintf(out, fmt, a);
     fputc('\n', out);
@@ -210,8 +211,11 @@ static void r_jury(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
+static void r_radius(FILE *out, const json_t *o);
+
 static void r_stability(FILE *out, const json_t *o)
 {
+    if (json_object_get(o, "inside") == NULL) { r_radius(out, o); return; }
     print_count(out, o);
     print_decided(out, o);
     print_assigned(out, o);
@@ -353,6 +357,8 @@ static void r_radius(FILE *out, const json_t *o)
         }
         line(out, "from radius", "%s", jstr(o, "verdict_from_radius"));
         line(out, "exact", "%s (consistent with the radius)", jstr(o, "exact_status"));
+        line(out, "verdict", "%s (certified by the radius interval)", jstr(o, "status"));
+        line(out, "monolithic", "%s (exact integration of the coupled system: the reference)", jstr(o, "monolithic_rho"));
     } else {
         char buf[64];
         snprintf(buf, sizeof buf, "%.17g (double precision, NOT certified)", json_real_value(json_object_get(o, "rho")));
