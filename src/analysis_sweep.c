@@ -1276,7 +1276,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
             _fmpz_vec_clear(g, T.d1 + 1);
         }
         /* rows: fixed n2, crossings in n1 */
-        for (j = 0; j < K2; j++)
+        for (j = 0; j < K2 && g_opt.shard_index == 1; j++)
             for (i = 0; i < K1; i++) {
                 slong a = j * K1 + i;
                 double xa = fmpq_get_d(x1 + i), y = fmpq_get_d(x2 + j);
@@ -1291,7 +1291,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
                 }
             }
         /* columns: fixed n1, crossings in n2 */
-        for (i = 0; i < K1; i++)
+        for (i = 0; i < K1 && g_opt.shard_index == 1; i++)
             for (j = 0; j + 1 < K2; j++) {
                 slong a = j * K1 + i, bidx = (j + 1) * K1 + i;
                 if (sg[a] * sg[bidx] < 0) {
@@ -1474,8 +1474,10 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "text", json_string(q->text));
         json_object_set_new(o, "table", json_string(buf));
         free(buf);
-        /* the exact boundary where p is symbolic in both parameters (shard 1 only) */
-        if (g_opt.shard_index == 1 && fmpz_mpoly_degree_si(v->cp->p, idx[0], v->s->zctx) > 0
+        /* the exact boundary where p is symbolic in both parameters (its rows
+         * in shard 1 only, the header in every shard, so shards merge by
+         * concatenation) */
+        if (fmpz_mpoly_degree_si(v->cp->p, idx[0], v->s->zctx) > 0
             && fmpz_mpoly_degree_si(v->cp->p, idx[1], v->s->zctx) > 0)
             map_boundary(o, run, v, idx[0], idx[1], name[0], name[1], xs[0], K[0], xs[1], K[1]);
         json_object_set_new(o, "seconds", json_real(floor((now_seconds() - t0) * 1e4 + 0.5) / 1e4));

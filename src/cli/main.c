@@ -3,8 +3,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <jansson.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#ifdef RS_MPI
+#include <mpi.h>
+#endif
 #include "recstab/analysis.h"
+#include "recstab/sweep.h"
+#include "plot.h"
 #include "recstab/casefile.h"
 #include "recstab/report.h"
 #include "recstab/derivation.h"
@@ -22,10 +31,34 @@ static void usage(FILE *f)
           "                                 accepts \"expect ...\" and \"claim ...\" lines)\n"
           "  --max-prec BITS                ceiling for certified numerics (default 65536)\n"
           "  --markdown, --latex            print the whole derivation (Markdown / a LaTeX document)\n"
+          "  --csv FILE                     write the tables of the run's sweeps and maps (atomically)\n"
+          "  --plot FILE.png|FILE.svg       plot them with gnuplot (sweeps of several cases overlaid)\n"
+          "  --shard I/N                    compute only shard I of N of every sweep and map\n"
+          "  --threads N                    OpenMP threads for sweeps and maps (default: all cores)\n"
+          "  --max-points N                 limit of points per sweep or map (default 4000000)\n"
           "  --emit equations               print the unknowns and equations the builders generated\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
           "             3 internal inconsistency (two independent methods disagree)\n", f);
+}
+
+/* progress of long sweeps and maps, only when stderr is a terminal */
+static void progress(void *arg, const char *what, slong done, slong total)
+{
+    (void) arg;
+    if (done >= total) fputs("\r\033[K", stderr);
+    else fprintf(stderr, "\rrecstab: %s: %ld/%ld points (%ld%%)", what, (long) done, (long) total,
+                 (long) (100 * done / (total > 0 ? total : 1)));
+    fflush(stderr);
+}
+
+static int parse_long(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (*s == '\0' || *end != '\0' || v < lo || v > hi) return 0;
+    *out = v;
+    return 1;
 }
 
 static int exit_code_for(int code)
@@ -45,7 +78,20 @@ int main(int argc, char **argv)
     char *outbuf = NULL;
     size_t outlen = 0;
     FILE *out;
+    const char *csv_path = NULL, *plot_path = NULL;
+    char *csv_tmp = NULL, *plot_tmp = NULL;
+    long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
+    int rank = 0;
+    rs_sweep_options_t swopt;
 
+#ifdef RS_MPI
+    MPI_Init(&argc, &argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank != 0) {
+        /* every rank runs the same analyses; only rank 0 writes anything */
+        if (freopen("/dev/null", "w", stdout) == NULL || freopen("/dev/null", "w", stderr) == NULL) return 2;
+    }
+#endif
     rs_options_default(&opt);
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -65,7 +111,49 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--latex") == 0) latex = 1;
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
         else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
-        else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
+        else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
+                 || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0) {
+            const char *val;
+            if (i + 1 >= argc) {
+                fprintf(stderr, "recstab: %s needs a value\n", a);
+                usage(stderr);
+                rc = 2;
+                goto end;
+            }
+            val = argv[++i];
+            if (strcmp(a, "--csv") == 0) csv_path = val;
+            else if (strcmp(a, "--plot") == 0) plot_path = val;
+            else if (strcmp(a, "--threads") == 0) {
+                if (!parse_long(val, 1, 4096, &threads)) {
+                    fprintf(stderr, "recstab: --threads expects a number of threads from 1 to 4096, found '%s'\n", val);
+                    rc = 2;
+                    goto end;
+                }
+            } else if (strcmp(a, "--max-points") == 0) {
+                if (!parse_long(val, 1, 1000000000000L, &max_points)) {
+                    fprintf(stderr, "recstab: --max-points expects a positive number of points, found '%s'\n", val);
+                    rc = 2;
+                    goto end;
+                }
+            } else {
+                char *slash;
+                const char *bad = NULL;
+                char tmp[64];
+                snprintf(tmp, sizeof tmp, "%s", val);
+                slash = strchr(tmp, '/');
+                if (slash == NULL) bad = val;
+                else {
+                    *slash = '\0';
+                    if (!parse_long(tmp, 1, 1000000000L, &shard_i) || !parse_long(slash + 1, 1, 1000000000L, &shard_n)
+                        || shard_i > shard_n) bad = val;
+                }
+                if (bad) {
+                    fprintf(stderr, "recstab: --shard expects I/N with 1 <= I <= N (e.g. 2/4), found '%s'\n", val);
+                    rc = 2;
+                    goto end;
+                }
+            }
+        } else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
                  || strcmp(a, "--max-prec") == 0) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "recstab: %s needs a value\n", a);
@@ -100,6 +188,15 @@ int main(int argc, char **argv)
         goto end;
     }
     opt.with_scheme = markdown || latex;
+#ifdef _OPENMP
+    if (threads > 0) omp_set_num_threads((int) threads);
+#endif
+    rs_sweep_options_default(&swopt);
+    swopt.shard_index = shard_i;
+    swopt.shard_count = shard_n;
+    swopt.max_points = max_points;
+    if (rank == 0 && isatty(2)) swopt.progress = progress;
+    rs_sweep_set_options(&swopt);
     if (ncases == 0) {
         fprintf(stderr, "recstab: expected a case file (or - for stdin)\n");
         usage(stderr);
@@ -154,6 +251,22 @@ int main(int argc, char **argv)
         json_array_append_new(docs, doc);
         rs_case_clear(c);
     }
+    /* sweep/map files: staged beside their targets, renamed only once
+     * everything succeeded */
+    if (rank == 0 && (csv_path != NULL || plot_path != NULL)) {
+        char msg[1200];
+        if (plot_path != NULL && rs_cli_plot_stage(plot_path, docs, &plot_tmp, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            rc = 2;
+            goto end;
+        }
+        if (csv_path != NULL && rs_cli_csv_stage(csv_path, docs, shard_i, shard_n, &csv_tmp, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            rc = 2;
+            goto end;
+        }
+    }
+    rs_cli_trim_tables(docs, csv_path != NULL, 200);
     out = open_memstream(&outbuf, &outlen);
     if (emit) {
         size_t k;
@@ -184,13 +297,38 @@ int main(int argc, char **argv)
         }
     }
     fclose(out);
+    {
+        char msg[1200];
+        if (csv_tmp != NULL && rs_cli_commit(csv_tmp, csv_path, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            free(outbuf);
+            rc = 2;
+            goto end;
+        }
+        free(csv_tmp);
+        csv_tmp = NULL;
+        if (plot_tmp != NULL && rs_cli_commit(plot_tmp, plot_path, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            free(outbuf);
+            rc = 2;
+            goto end;
+        }
+        free(plot_tmp);
+        plot_tmp = NULL;
+    }
+    if (rank != 0) outlen = 0;
     if (fwrite(outbuf, 1, outlen, stdout) != outlen || fflush(stdout) != 0) {
         fprintf(stderr, "recstab: cannot write output\n");
         rc = 2;
     } else rc = worst;
     free(outbuf);
 end:
+    if (csv_tmp != NULL) { unlink(csv_tmp); free(csv_tmp); }
+    if (plot_tmp != NULL) { unlink(plot_tmp); free(plot_tmp); }
     json_decref(docs);
     free(sets); free(analyses); free(cases);
+#ifdef RS_MPI
+    MPI_Finalize();
+#endif
     return rc;
 }

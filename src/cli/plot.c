@@ -1,0 +1,414 @@
+/* plot.c -- CSV files and gnuplot plots of the sweeps and maps of a run.
+ * The library computes the tables (CSV text in the JSON elements); this file
+ * only writes them and calls gnuplot (Debian gnuplot-nox). */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <fcntl.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <sys/stat.h>
+#include <jansson.h>
+#include "plot.h"
+
+typedef struct {
+    const char *case_path;
+    const char *title;
+    json_t *el;
+} tab_t;
+
+static const char *jstr(const json_t *o, const char *k)
+{
+    const json_t *v = json_object_get(o, k);
+    return json_is_string(v) ? json_string_value(v) : NULL;
+}
+
+static size_t collect(json_t *docs, tab_t *out)
+{
+    size_t n = 0, i, k;
+    for (i = 0; i < json_array_size(docs); i++) {
+        json_t *d = json_array_get(docs, i), *res = json_object_get(d, "results");
+        for (k = 0; k < json_array_size(res); k++) {
+            json_t *o = json_array_get(res, k);
+            const char *a = jstr(o, "analysis");
+            if (a == NULL || (strcmp(a, "sweep") != 0 && strcmp(a, "map") != 0) || jstr(o, "table") == NULL)
+                continue;
+            if (out) {
+                out[n].case_path = jstr(d, "case");
+                out[n].title = jstr(d, "title");
+                out[n].el = o;
+            }
+            n++;
+        }
+    }
+    return n;
+}
+
+size_t rs_cli_count_tables(json_t *docs) { return collect(docs, NULL); }
+
+static size_t count_rows(const char *t)
+{
+    size_t n = 0;
+    for (; *t; t++) if (*t == '\n') n++;
+    return n > 0 ? n - 1 : 0;   /* minus the column header */
+}
+
+/* mkstemp beside path; returns fd, *tmp malloc'd */
+static int stage_open(const char *path, char **tmp, char *err, size_t errlen)
+{
+    size_t n = strlen(path);
+    int fd;
+    *tmp = malloc(n + 16);
+    snprintf(*tmp, n + 16, "%s.tmp.XXXXXX", path);
+    fd = mkstemp(*tmp);
+    if (fd >= 0) {
+        mode_t m = umask(0);
+        umask(m);
+        fchmod(fd, 0666 & ~m);   /* mkstemp's 0600 would survive the rename */
+    }
+    if (fd < 0) {
+        snprintf(err, errlen, "cannot create a temporary file beside '%s': %s", path, strerror(errno));
+        free(*tmp);
+        *tmp = NULL;
+    }
+    return fd;
+}
+
+int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shard_count, char **tmp,
+                     char *err, size_t errlen)
+{
+    size_t n = collect(docs, NULL), i, t = 0;
+    tab_t *tabs = calloc(n + 1, sizeof(tab_t));
+    FILE *f;
+    int fd, bad = 0;
+    collect(docs, tabs);
+    fd = stage_open(path, tmp, err, errlen);
+    if (fd < 0) { free(tabs); return -1; }
+    f = fdopen(fd, "w");
+    if (n == 0) fputs("# recstab: no sweep or map in this run\n", f);
+    for (i = 0; i < n; i++) {
+        json_t *o = tabs[i].el;
+        const char *bt = jstr(o, "boundary_table");
+        t++;
+        fprintf(f, "# recstab table %zu: case=%s; title=%s; analysis=%s; points=%lld\n", t,
+                tabs[i].case_path ? tabs[i].case_path : "", tabs[i].title ? tabs[i].title : "",
+                jstr(o, "text") ? jstr(o, "text") : "", (long long) json_integer_value(json_object_get(o, "points")));
+        if (shard_count > 1) {
+            json_t *rows = json_object_get(o, "rows");
+            fprintf(f, "# shard %ld/%ld: rows %lld-%lld of table %zu\n", shard_index, shard_count,
+                    (long long) json_integer_value(json_array_get(rows, 0)),
+                    (long long) json_integer_value(json_array_get(rows, 1)) - 1, t);
+        }
+        fputs(jstr(o, "table"), f);
+        json_object_set_new(o, "csv", json_string(path));
+        if (bt != NULL) {
+            json_t *conds = json_object_get(json_object_get(o, "boundary"), "conditions");
+            size_t k;
+            t++;
+            fprintf(f, "# recstab table %zu: boundary of table %zu; case=%s; conditions:", t, t - 1,
+                    tabs[i].case_path ? tabs[i].case_path : "");
+            for (k = 0; k < json_array_size(conds); k++) {
+                json_t *c = json_array_get(conds, k);
+                fprintf(f, "%s %lld (%s) %s > 0", k ? ";" : "",
+                        (long long) json_integer_value(json_object_get(c, "index")), jstr(c, "origin"), jstr(c, "poly"));
+            }
+            fputc('\n', f);
+            if (shard_count > 1)
+                fprintf(f, "# shard %ld/%ld: boundary rows only in shard 1\n", shard_index, shard_count);
+            fputs(bt, f);
+        }
+    }
+    if (fflush(f) != 0 || ferror(f)) bad = 1;
+    if (fclose(f) != 0) bad = 1;
+    free(tabs);
+    if (bad) {
+        snprintf(err, errlen, "cannot write '%s': %s", *tmp, strerror(errno));
+        unlink(*tmp);
+        free(*tmp);
+        *tmp = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+int rs_cli_commit(const char *tmp, const char *path, char *err, size_t errlen)
+{
+    if (rename(tmp, path) != 0) {
+        snprintf(err, errlen, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+void rs_cli_trim_tables(json_t *docs, int have_csv, size_t max_rows)
+{
+    size_t n = collect(docs, NULL), i;
+    tab_t *tabs = calloc(n + 1, sizeof(tab_t));
+    collect(docs, tabs);
+    for (i = 0; i < n; i++) {
+        json_t *o = tabs[i].el;
+        size_t rows = count_rows(jstr(o, "table"));
+        const char *bt = jstr(o, "boundary_table");
+        if (have_csv || rows > max_rows || (bt && count_rows(bt) > max_rows)) {
+            if (!have_csv) {
+                char note[160];
+                snprintf(note, sizeof note, "%zu rows: write the table with --csv FILE", rows);
+                json_object_set_new(o, "table_note", json_string(note));
+            }
+            json_object_del(o, "table");
+            json_object_del(o, "boundary_table");
+        }
+    }
+    free(tabs);
+}
+
+/* ---- gnuplot ---------------------------------------------------------------------- */
+
+/* gnuplot single-quoted string: ' doubled */
+static void put_q(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; s && *s; s++) {
+        if (*s == '\'') fputc('\'', f);
+        fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+static const char *ext_of(const char *path)
+{
+    const char *d = strrchr(path, '.');
+    return d ? d + 1 : "";
+}
+
+static int write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    int ok;
+    if (!f) return -1;
+    ok = fputs(text, f) >= 0;
+    if (fclose(f) != 0) ok = 0;
+    return ok ? 0 : -1;
+}
+
+static const char *legend(const tab_t *t)
+{
+    return t->title ? t->title : t->case_path;
+}
+
+static int col_index(const json_t *o, const char *name)
+{
+    const json_t *cols = json_object_get(o, "columns");
+    size_t k;
+    for (k = 0; k < json_array_size(cols); k++)
+        if (strcmp(json_string_value(json_array_get(cols, k)), name) == 0) return (int) k + 1;
+    return 0;
+}
+
+static void rm_dir(const char *dir, size_t nfiles)
+{
+    char p[4096];
+    size_t i;
+    for (i = 0; i < nfiles; i++) {
+        snprintf(p, sizeof p, "%s/t%zu.csv", dir, i);
+        unlink(p);
+        snprintf(p, sizeof p, "%s/b%zu.csv", dir, i);
+        unlink(p);
+    }
+    snprintf(p, sizeof p, "%s/plot.gp", dir);
+    unlink(p);
+    snprintf(p, sizeof p, "%s/gnuplot.log", dir);
+    unlink(p);
+    rmdir(dir);
+}
+
+int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, size_t errlen)
+{
+    size_t n = collect(docs, NULL), i, npanels = 0, nmaps = 0;
+    tab_t *tabs;
+    const char *ext = ext_of(path), *tdir = getenv("TMPDIR");
+    char dir[4096], p[4096 + 64];
+    const char *kinds[3] = {"radius", "stability", "modes"};
+    int has_kind[3] = {0, 0, 0}, k, fd, status = 0, cols, rows;
+    FILE *g;
+    pid_t pid;
+    if (n == 0) {
+        snprintf(err, errlen, "--plot: the run has no sweep or map to plot");
+        return -1;
+    }
+    if (strcmp(ext, "png") != 0 && strcmp(ext, "svg") != 0) {
+        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", path);
+        return -1;
+    }
+    tabs = calloc(n + 1, sizeof(tab_t));
+    collect(docs, tabs);
+    snprintf(dir, sizeof dir, "%s/recstab-plot.XXXXXX", tdir && *tdir ? tdir : "/tmp");
+    if (mkdtemp(dir) == NULL) {
+        snprintf(err, errlen, "--plot: cannot create a temporary directory: %s", strerror(errno));
+        free(tabs);
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        const char *a = jstr(tabs[i].el, "analysis"), *of = jstr(tabs[i].el, "of");
+        snprintf(p, sizeof p, "%s/t%zu.csv", dir, i);
+        write_file(p, jstr(tabs[i].el, "table"));
+        if (jstr(tabs[i].el, "boundary_table")) {
+            snprintf(p, sizeof p, "%s/b%zu.csv", dir, i);
+            write_file(p, jstr(tabs[i].el, "boundary_table"));
+        }
+        if (strcmp(a, "map") == 0) nmaps++;
+        else for (k = 0; k < 3; k++) if (of && strcmp(of, kinds[k]) == 0) has_kind[k] = 1;
+    }
+    npanels = nmaps + (size_t) (has_kind[0] + has_kind[1] + has_kind[2]);
+    cols = npanels > 1 ? 2 : 1;
+    rows = (int) ((npanels + (size_t) cols - 1) / (size_t) cols);
+    fd = stage_open(path, tmp, err, errlen);
+    if (fd < 0) { rm_dir(dir, n); free(tabs); return -1; }
+    close(fd);
+    snprintf(p, sizeof p, "%s/plot.gp", dir);
+    g = fopen(p, "w");
+    if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %d,%d noenhanced\n", 800 * cols, 600 * rows);
+    else fprintf(g, "set terminal svg size %d,%d noenhanced\n", 800 * cols, 600 * rows);
+    fputs("set output ", g);
+    put_q(g, *tmp);
+    fputs("\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
+    if (npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
+    /* maps: one panel each */
+    for (i = 0; i < n; i++) {
+        json_t *o = tabs[i].el, *params = json_object_get(o, "params"), *grid = json_object_get(o, "grid");
+        int radius = strcmp(jstr(o, "of"), "radius") == 0;
+        int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
+        if (strcmp(jstr(o, "analysis"), "map") != 0) continue;
+        fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\n", g);
+        fputs("set title ", g);
+        put_q(g, legend(tabs + i));
+        fputs("\nset xlabel ", g);
+        put_q(g, json_string_value(json_array_get(params, 0)));
+        fputs("\nset ylabel ", g);
+        put_q(g, json_string_value(json_array_get(params, 1)));
+        fputs("\nset autoscale fix\n", g);
+        if (radius)
+            fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
+                  "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
+        else
+            fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
+                  "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
+                  "1.5 '#d73027', 2.5 '#d73027')\n", g);
+        fprintf(g, "plot '%s/t%zu.csv' skip 1 using %d:%d:(", dir, i, col_index(o, json_string_value(json_array_get(params, 0))),
+                col_index(o, json_string_value(json_array_get(params, 1))));
+        if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(o, "radius"), col_index(o, "radius"));
+        else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(o, "code"), col_index(o, "code"));
+        fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
+        if (jstr(o, "boundary_table"))
+            fprintf(g, ", '%s/b%zu.csv' skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
+                    "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", dir, i);
+        fputc('\n', g);
+    }
+    /* sweeps: one panel per kind, every case overlaid */
+    for (k = 0; k < 3; k++) {
+        int first = 1, logx = 0;
+        char xl[512] = "";
+        if (!has_kind[k]) continue;
+        for (i = 0; i < n; i++) {
+            json_t *o = tabs[i].el;
+            const char *prm = jstr(o, "param");
+            if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kinds[k]) != 0) continue;
+            if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
+            if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
+                if (xl[0]) strcat(xl, ", ");
+                strcat(xl, prm);
+            }
+        }
+        fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
+        fputs("set xlabel ", g);
+        put_q(g, xl);
+        fputc('\n', g);
+        if (logx) fputs("set logscale x\n", g);
+        if (k == 0) fputs("set ylabel 'spectral radius'\nset title 'certified spectral radius'\n", g);
+        if (k == 1) fputs("set ylabel 'verdict'\nset yrange [-0.5:2.5]\nset ytics ('stable' 0, 'marginal' 1, "
+                          "'unstable' 2)\nset title 'exact verdict'\n", g);
+        if (k == 2) fputs("set ylabel 'damping ratio, frequency error'\nset title 'principal mode'\n", g);
+        fputs("plot ", g);
+        for (i = 0; i < n; i++) {
+            json_t *o = tabs[i].el;
+            const char *prm = jstr(o, "param");
+            int x = col_index(o, prm);
+            if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kinds[k]) != 0) continue;
+            if (!first) fputs(", ", g);
+            first = 0;
+            if (k == 0) {
+                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", dir, i, x,
+                        col_index(o, "radius"));
+                put_q(g, legend(tabs + i));
+            } else if (k == 1) {
+                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", dir, i, x,
+                        col_index(o, "code"), col_index(o, "code"));
+                put_q(g, legend(tabs + i));
+            } else {
+                char t2[600];
+                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", dir, i, x,
+                        col_index(o, "damping_ratio_1"));
+                snprintf(t2, sizeof t2, "%s: damping ratio", legend(tabs + i));
+                put_q(g, t2);
+                fprintf(g, ", '%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", dir, i, x,
+                        col_index(o, "frequency_error_1"));
+                snprintf(t2, sizeof t2, "%s: frequency error", legend(tabs + i));
+                put_q(g, t2);
+            }
+        }
+        if (k == 0) fputs(", 1 with lines dt 2 lc rgb 'gray' title 'unit circle'", g);
+        fputc('\n', g);
+    }
+    if (npanels > 1) fputs("unset multiplot\n", g);
+    fputs("set output\n", g);
+    fclose(g);
+    fflush(stdout);
+    pid = fork();
+    if (pid == 0) {
+        int lf;
+        snprintf(p, sizeof p, "%s/gnuplot.log", dir);
+        lf = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (lf >= 0) { dup2(lf, 1); dup2(lf, 2); close(lf); }
+        snprintf(p, sizeof p, "%s/plot.gp", dir);
+        execlp("gnuplot", "gnuplot", p, (char *) NULL);
+        _exit(127);
+    }
+    if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        char msg[300] = "";
+        FILE *lf;
+        snprintf(p, sizeof p, "%s/gnuplot.log", dir);
+        lf = fopen(p, "r");
+        if (lf) {
+            size_t m = fread(msg, 1, sizeof msg - 1, lf);
+            msg[m] = '\0';
+            fclose(lf);
+        }
+        if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127)
+            snprintf(err, errlen, "--plot: gnuplot not found (Debian: apt-get install gnuplot-nox)");
+        else
+            snprintf(err, errlen, "--plot: gnuplot failed: %s", msg);
+        unlink(*tmp);
+        free(*tmp);
+        *tmp = NULL;
+        rm_dir(dir, n);
+        free(tabs);
+        return -1;
+    }
+    {
+        struct stat st;
+        if (stat(*tmp, &st) != 0 || st.st_size == 0) {
+            snprintf(err, errlen, "--plot: gnuplot wrote nothing");
+            unlink(*tmp);
+            free(*tmp);
+            *tmp = NULL;
+            rm_dir(dir, n);
+            free(tabs);
+            return -1;
+        }
+    }
+    rm_dir(dir, n);
+    free(tabs);
+    return 0;
+}
