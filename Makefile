@@ -103,13 +103,14 @@ clean:
 FUZZ_SECONDS ?= 60
 FUZZ_CC      ?= clang
 FUZZ_BIN     := build/fuzz_case
+FUZZ_LIBS    := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
 
 .PHONY: fuzz check-valgrind check-long
 
 $(FUZZ_BIN): tests/fuzz/fuzz_case.c $(LIB_SRC) $(HDRS)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined -std=c11 -D_POSIX_C_SOURCE=200809L \
-	  -Iinclude -I/usr/include/flint tests/fuzz/fuzz_case.c $(LIB_SRC) -o $@ $(LIBS)
+	  -Iinclude -I/usr/include/flint tests/fuzz/fuzz_case.c $(LIB_SRC) -o $@ $(FUZZ_LIBS)
 
 fuzz: deps $(FUZZ_BIN)
 	@mkdir -p build/fuzz-corpus build/fuzz-artifacts
