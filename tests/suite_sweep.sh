@@ -1,0 +1,126 @@
+#!/bin/sh
+# suite_sweep.sh -- sweeps and maps through the recstab command: --csv is
+# written atomically (a failing run leaves neither the file nor a temporary),
+# --plot renders a PNG/SVG with gnuplot (skipped without gnuplot), --shard
+# I/N outputs merge (by concatenation, README "Sweeps and maps") into the
+# full run's CSV byte for byte, --threads does not change the CSV, the point
+# limit exits 2 naming --max-points, and, when mpirun and build/recstab-mpi
+# exist, 2 and 3 MPI ranks write the same CSV as one process.
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$BUILD/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+check_exit() { if [ "$2" = "$3" ]; then ok "$1"; else fail "$1: exit $3, expected $2"; fi; }
+
+# the merge recipe documented in README.md (shard files in shard order)
+merge() {
+    awk '/^# shard /{next}
+         /^# recstab table /{t=$4; sub(":", "", t); hdr=1;
+             if (!(t in seen)) {seen[t]=1; order[++n]=t; head[t]=$0}; next}
+         hdr {hdr=0; if (!(t in colh)) colh[t]=$0; next}
+         {rows[t]=rows[t] $0 "\n"}
+         END {for (k=1; k<=n; k++) {t=order[k]; print head[t]; print colh[t]; printf "%s", rows[t]}}' "$@"
+}
+
+PARK=cases/park-staggered.case
+MAP="map alpha 0 3 30, m 1/10 20 25"
+SW="sweep w from 0 to 4 steps 40"
+
+# --csv: a map and a sweep of two cases in one file
+"$RS" --csv "$T/run.csv" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "--csv map exit" 0 "$rc"
+n=$(grep -c '^# recstab table ' "$T/run.csv" 2>/dev/null)
+if [ "$n" = 2 ]; then ok "--csv: map table and its boundary table"; else fail "--csv tables: $n"; fi
+rows=$(grep -v '^#' "$T/run.csv" | grep -c ',fast$\|,prec128$\|,prec256$\|,exact$')
+if [ "$rows" = 750 ]; then ok "--csv: 750 map rows"; else fail "--csv map rows: $rows"; fi
+if grep -q '^index,i,j,alpha,m,alpha_exact,m_exact,verdict,code,radius,radius_lower,radius_upper,decided_by$' "$T/run.csv"; then
+    ok "--csv: map columns"; else fail "--csv: map columns"; fi
+if grep -q "csv  *$T/run.csv" "$T/out"; then ok "--csv: report names the file"; else fail "--csv: report: $(grep csv "$T/out")"; fi
+
+"$RS" --json --csv "$T/two.csv" --analyse "$SW" cases/textbook/central-difference.case cases/textbook/trapezoidal.case >"$T/out.json" 2>"$T/err"; rc=$?
+check_exit "--csv two cases exit" 0 "$rc"
+n=$(grep -c '^# recstab table ' "$T/two.csv")
+if [ "$n" = 2 ]; then ok "--csv: one table per case"; else fail "--csv two cases: $n tables"; fi
+if grep -q '"table"' "$T/out.json"; then fail "--json with --csv still carries the table"; else ok "--json with --csv: table only in the file"; fi
+if grep -q '"points": 41' "$T/out.json" && grep -q '"decided_by": {' "$T/out.json"; then ok "--json sweep element"; else fail "--json sweep element"; fi
+
+# atomic: a run that fails (second case bad) leaves nothing behind
+printf 'param w\nunknown x\neq x[n+1] = w*y[n]\n' >"$T/bad.case"
+"$RS" --csv "$T/fail.csv" --analyse "$SW" cases/textbook/central-difference.case "$T/bad.case" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "--csv failing run exit" 2 "$rc"
+if [ ! -e "$T/fail.csv" ] && [ -z "$(ls "$T" | grep 'fail.csv.tmp')" ]; then ok "--csv failing run leaves no file"; else fail "--csv failing run left $(ls "$T")"; fi
+# an existing file survives a failing run unchanged
+echo keep >"$T/keep.csv"
+"$RS" --csv "$T/keep.csv" --analyse "sweep w from 0 to 1 steps 2" "$T/bad.case" >/dev/null 2>&1
+if [ "$(cat "$T/keep.csv")" = keep ]; then ok "--csv failing run keeps the old file"; else fail "--csv failing run replaced the old file"; fi
+# a failing run (point limit) inside the analysis
+"$RS" --csv "$T/lim.csv" --max-points 100 --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "--max-points limit exit" 2 "$rc"
+if grep -q 'more than the limit of 100 points' "$T/err" && grep -q -- '--max-points' "$T/err"; then ok "limit message names --max-points"; else fail "limit message: $(cat "$T/err")"; fi
+if [ ! -e "$T/lim.csv" ]; then ok "limit: no csv"; else fail "limit left a csv"; fi
+"$RS" --shard 3/2 "$PARK" >/dev/null 2>&1; rc=$?; check_exit "--shard 3/2 is a usage error" 2 "$rc"
+"$RS" --threads 0 "$PARK" >/dev/null 2>&1; rc=$?; check_exit "--threads 0 is a usage error" 2 "$rc"
+
+# --threads: the CSV does not depend on the thread count
+"$RS" --threads 1 --csv "$T/t1.csv" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >/dev/null 2>&1
+"$RS" --threads 2 --csv "$T/t2.csv" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >/dev/null 2>&1
+if cmp -s "$T/t1.csv" "$T/t2.csv" && cmp -s "$T/t1.csv" "$T/run.csv"; then ok "--threads 1 and 2: same CSV"; else fail "--threads changes the CSV"; fi
+OMP_NUM_THREADS=1 "$RS" --csv "$T/t3.csv" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >/dev/null 2>&1
+if cmp -s "$T/t1.csv" "$T/t3.csv"; then ok "OMP_NUM_THREADS=1: same CSV"; else fail "OMP_NUM_THREADS changes the CSV"; fi
+
+# --shard: the merged shards are the full run, byte for byte
+for N in 2 3; do
+    files=""
+    I=1
+    while [ $I -le $N ]; do
+        "$RS" --shard $I/$N --csv "$T/s$I-$N.csv" --set muh=1 --set wh=1 --analyse "$MAP" --analyse "sweep alpha from 0 to 3 steps 17" --set m=10 "$PARK" >/dev/null 2>"$T/err" \
+            || fail "--shard $I/$N: $(cat "$T/err")"
+        files="$files $T/s$I-$N.csv"
+        I=$((I + 1))
+    done
+    "$RS" --csv "$T/full.csv" --set muh=1 --set wh=1 --analyse "$MAP" --analyse "sweep alpha from 0 to 3 steps 17" --set m=10 "$PARK" >/dev/null 2>&1
+    # shellcheck disable=SC2086
+    merge $files >"$T/merged-$N.csv"
+    if cmp -s "$T/merged-$N.csv" "$T/full.csv"; then ok "--shard x/$N merge equals the full run"; else fail "--shard x/$N merge differs: $(diff "$T/merged-$N.csv" "$T/full.csv" | head -5)"; fi
+    if grep -q "^# shard 2/$N: rows" "$T/s2-$N.csv"; then ok "--shard x/$N header line"; else fail "--shard x/$N header"; fi
+done
+
+# --plot (gnuplot): map heatmap + boundary; several cases overlaid
+if command -v gnuplot >/dev/null 2>&1; then
+    "$RS" --plot "$T/map.png" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >/dev/null 2>"$T/err"; rc=$?
+    check_exit "--plot map exit" 0 "$rc"
+    if [ -s "$T/map.png" ] && head -c 8 "$T/map.png" | od -c | grep -q 'P   N   G'; then ok "--plot writes a PNG"; else fail "--plot PNG: $(cat "$T/err")"; fi
+    "$RS" --plot "$T/sw.svg" --analyse "$SW" cases/textbook/central-difference.case cases/textbook/forward-euler.case >/dev/null 2>"$T/err"; rc=$?
+    check_exit "--plot overlay exit" 0 "$rc"
+    if grep -q '<svg' "$T/sw.svg" && grep -q 'Central difference' "$T/sw.svg" && grep -q 'Forward Euler' "$T/sw.svg"; then
+        ok "--plot overlays the cases with their titles"; else fail "--plot overlay legends"; fi
+    if grep -q '>w<' "$T/sw.svg"; then ok "--plot axis label names the parameter"; else fail "--plot axis label"; fi
+    "$RS" --plot "$T/x.pdf" --analyse "$SW" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
+    check_exit "--plot unknown extension" 2 "$rc"
+    "$RS" --plot "$T/none.png" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
+    check_exit "--plot without sweep or map" 2 "$rc"
+    if [ -z "$(ls "$T" | grep '\.tmp\.')" ]; then ok "--plot leaves no temporary file"; else fail "temporaries left: $(ls "$T")"; fi
+else
+    echo "skip --plot (gnuplot not installed; Debian: apt-get install gnuplot-nox)"
+fi
+
+# MPI: same CSV with 2 and 3 ranks (make mpi builds $BUILD/recstab-mpi)
+if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
+    MPIOPT="--oversubscribe"
+    [ "$(id -u)" = 0 ] && MPIOPT="$MPIOPT --allow-run-as-root"
+    for K in 2 3; do
+        # shellcheck disable=SC2086
+        OMP_NUM_THREADS=1 mpirun $MPIOPT -n $K "$BUILD/recstab-mpi" --csv "$T/mpi$K.csv" --set muh=1 --set wh=1 \
+            --analyse "$MAP" --analyse "sweep alpha from 0 to 3 steps 17" --set m=10 "$PARK" >"$T/mpi.out" 2>"$T/mpi.err"; rc=$?
+        check_exit "mpirun -n $K exit" 0 "$rc"
+        if cmp -s "$T/mpi$K.csv" "$T/full.csv"; then ok "mpirun -n $K: CSV identical to one process"; else fail "mpirun -n $K CSV differs"; fi
+        n=$(grep -c '^map$' "$T/mpi.out")
+        if [ "$n" = 1 ]; then ok "mpirun -n $K: one report (rank 0)"; else fail "mpirun -n $K: $n reports"; fi
+    done
+else
+    echo "skip MPI (needs mpirun and $BUILD/recstab-mpi: make mpi)"
+fi
