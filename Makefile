@@ -17,6 +17,9 @@ VERSION := 0.1.0
 DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
             libjansson-dev libcmocka-dev gnuplot-nox libclang-rt-14-dev valgrind
 
+# MPI build (make mpi): installed by `make mpi` only, not by `make deps`
+MPI_PKGS := libopenmpi-dev openmpi-bin
+
 LIB_SRC  := $(sort $(wildcard src/*.c))
 CLI_SRC  := $(sort $(wildcard src/cli/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
@@ -29,7 +32,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 LIBRS  := $(BUILD)/librecstab.a
 BIN    := $(BUILD)/recstab
 
-.PHONY: all deps check test demo install clean check-sanitize bench
+.PHONY: all deps check test demo install clean check-sanitize bench mpi
 
 all: $(LIBRS) $(BIN)
 
@@ -91,6 +94,29 @@ install: all
 	install -m 644 include/recstab/*.h $(DESTDIR)$(PREFIX)/include/recstab/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' recstab.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/recstab.pc
+
+# build/recstab-mpi: the same sources with -DRS_MPI (mpicc); sweeps and maps
+# are split over the ranks of `mpirun -n K build/recstab-mpi ...`.
+MPI_OBJ := $(patsubst src/%.c,$(BUILD)/mpi-obj/%.o,$(LIB_SRC) $(CLI_SRC))
+
+mpi:
+	@missing=""; for p in $(MPI_PKGS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
+	    || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "make mpi: installing$$missing"; \
+	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null \
+	    || { echo "make mpi: apt-get failed for$$missing" >&2; exit 1; }; fi
+	@$(MAKE) --no-print-directory $(BUILD)/recstab-mpi
+
+$(BUILD)/mpi-obj/%.o: src/%.c $(HDRS)
+	@mkdir -p $(dir $@)
+	mpicc $(CFLAGS_ALL) -DRS_MPI -DRS_VERSION='"$(VERSION)"' -c $< -o $@
+
+$(BUILD)/recstab-mpi: $(MPI_OBJ)
+	mpicc $(CFLAGS_ALL) -o $@ $(MPI_OBJ) $(LIBS)
 
 clean:
 	rm -rf build build-san
