@@ -1019,6 +1019,7 @@ static int recheck_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_
     for (v = 0; v < s->nvars; v++) pp[v] = pt + v;
     for (k = 0; k < 16 && ok; k++) {
         for (v = 0; v < s->nvars; v++) {
+            if (v == s->lambda_var) { fmpq_zero(pt + v); continue; }   /* no bounds entry for lambda */
             fmpq_set_si(sv, 1 + (slong) n_randint(st, 1000), 1 + n_randint(st, 50));
             if (b[v].has_lo && b[v].has_hi) {
                 fmpq_t t;

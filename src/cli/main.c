@@ -36,6 +36,8 @@ static void usage(FILE *f)
           "  --shard I/N                    compute only shard I of N of every sweep and map\n"
           "  --threads N                    OpenMP threads for sweeps and maps (default: all cores)\n"
           "  --max-points N                 limit of points per sweep or map (default 4000000)\n"
+          "  --sweep-level LEVEL            benchmarking: start the verdict ladder at fast, prec128,\n"
+          "                                 prec256 or exact; double = uncertified GSL roots only\n"
           "  --emit equations               print the unknowns and equations the builders generated\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
@@ -63,7 +65,8 @@ static int parse_long(const char *s, long lo, long hi, long *out)
 
 static int exit_code_for(int code)
 {
-    return code == RS_ERR_INCONSISTENT ? 3 : 2;
+    /* an internal error is a bug, like two methods disagreeing */
+    return (code == RS_ERR_INCONSISTENT || code == RS_ERR_INTERNAL) ? 3 : 2;
 }
 
 int main(int argc, char **argv)
@@ -81,7 +84,7 @@ int main(int argc, char **argv)
     const char *csv_path = NULL, *plot_path = NULL;
     char *csv_tmp = NULL, *plot_tmp = NULL;
     long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
-    int rank = 0;
+    int rank = 0, first_level = RS_LEVEL_FAST;
     rs_sweep_options_t swopt;
 
 #ifdef RS_MPI
@@ -112,7 +115,8 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
         else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
         else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
-                 || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0) {
+                 || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0
+                 || strcmp(a, "--sweep-level") == 0) {
             const char *val;
             if (i + 1 >= argc) {
                 fprintf(stderr, "recstab: %s needs a value\n", a);
@@ -126,6 +130,16 @@ int main(int argc, char **argv)
             else if (strcmp(a, "--threads") == 0) {
                 if (!parse_long(val, 1, 4096, &threads)) {
                     fprintf(stderr, "recstab: --threads expects a number of threads from 1 to 4096, found '%s'\n", val);
+                    rc = 2;
+                    goto end;
+                }
+            } else if (strcmp(a, "--sweep-level") == 0) {
+                static const char *const lv[] = {"fast", "prec128", "prec256", "exact", "double"};
+                int k2;
+                first_level = -1;
+                for (k2 = 0; k2 < 5; k2++) if (strcmp(val, lv[k2]) == 0) first_level = k2;
+                if (first_level < 0) {
+                    fprintf(stderr, "recstab: --sweep-level expects fast, prec128, prec256, exact or double, found '%s'\n", val);
                     rc = 2;
                     goto end;
                 }
@@ -195,6 +209,7 @@ int main(int argc, char **argv)
     swopt.shard_index = shard_i;
     swopt.shard_count = shard_n;
     swopt.max_points = max_points;
+    swopt.first_level = first_level;
     if (rank == 0 && isatty(2)) swopt.progress = progress;
     rs_sweep_set_options(&swopt);
     if (ncases == 0) {
