@@ -43,11 +43,11 @@ void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb
 #define SW_MAX_TOKENS 32
 #define SW_TEXT_ROWS_MAX 200
 
-const char *const rs_sweep_level_names[4] = {"fast", "prec128", "prec256", "exact"};
+const char *const rs_sweep_level_names[5] = {"fast", "prec128", "prec256", "exact", "double"};
 
 /* ---- process-wide options ------------------------------------------------------ */
 
-static rs_sweep_options_t g_opt = {1, 1, RS_SWEEP_MAX_POINTS_DEFAULT, NULL, NULL};
+static rs_sweep_options_t g_opt = {1, 1, RS_SWEEP_MAX_POINTS_DEFAULT, NULL, NULL, RS_LEVEL_FAST};
 
 void rs_sweep_options_default(rs_sweep_options_t *o)
 {
@@ -56,6 +56,7 @@ void rs_sweep_options_default(rs_sweep_options_t *o)
     o->max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
     o->progress = NULL;
     o->progress_arg = NULL;
+    o->first_level = RS_LEVEL_FAST;
 }
 
 void rs_sweep_set_options(const rs_sweep_options_t *o) { g_opt = *o; }
@@ -133,6 +134,68 @@ static int judge_discs(rs_sweep_point_t *pt, acb_srcptr roots, slong n, slong ni
     }
     if (any_out) return RS_STATUS_UNSTABLE;
     if (all_in) return RS_STATUS_STABLE;
+    return -1;
+}
+
+/* The same Newton inclusion (disc n|p(z)|/|p'(z)| around z holds a root) in
+ * plain double arithmetic with a priori rounding-error bounds (IEEE binary64,
+ * round to nearest; u = 2^-53): the computed Horner values of p and p' are
+ * within (10n + 12) u S and (20n + 24) u S' of the exact ones, S = sum |a_k||z|^k,
+ * S' = sum k|a_k||z|^(k-1) (Higham, ASNA 2nd ed., 5.1 and 3.6, with the
+ * coefficient rounding 2u S included and a factor >= 2 of slack); every other
+ * operation is given a relative 8u margin.  Any non-finite or subnormal
+ * quantity returns -1 (undecided: the Arb check runs).  a[0..n] approximate
+ * the exact coefficients 2^-shift q_k to 2u relative each. */
+static int judge_double(rs_sweep_point_t *pt, const double *a, const double *z, slong n)
+{
+    const double u = 0x1p-53;
+    double r[64], m[64], lo = 0, hi = 0;
+    slong i, j, k;
+    int all_in = 1, any_out = 0;
+    if (n > 64) return -1;
+    for (i = 0; i < n; i++) {
+        double x = z[2 * i], y = z[2 * i + 1], pr = a[n], pi = 0, dr = 0, di = 0, az, S, Sd = 0, P, D, t;
+        az = hypot(x, y);
+        S = fabs(a[n]);
+        for (k = n - 1; k >= 0; k--) {
+            /* derivative first: d = d z + p */
+            t = dr * x - di * y + pr;
+            di = dr * y + di * x + pi;
+            dr = t;
+            t = pr * x - pi * y + a[k];
+            pi = pr * y + pi * x;
+            pr = t;
+            Sd = Sd * az + S;
+            S = S * az + fabs(a[k]);
+        }
+        if (!isfinite(pr) || !isfinite(pi) || !isfinite(dr) || !isfinite(di) || !isfinite(S) || !isfinite(Sd)
+            || !(S > 0x1p-900) || !(az > 0x1p-400)) return -1;
+        P = hypot(pr, pi) * (1 + 8 * u) + (10.0 * (double) n + 12) * u * S * (1 + 8 * u);
+        D = hypot(dr, di) * (1 - 8 * u) - (20.0 * (double) n + 24) * u * Sd * (1 + 8 * u);
+        if (!(D > 0x1p-900) || !isfinite(P)) return -1;
+        r[i] = (double) n * P / D * (1 + 16 * u);
+        m[i] = az;
+        if (!isfinite(r[i])) return -1;
+    }
+    for (i = 0; i < n; i++)
+        for (j = i + 1; j < n; j++)
+            if (!(hypot(z[2 * i] - z[2 * j], z[2 * i + 1] - z[2 * j + 1]) * (1 - 16 * u) > (r[i] + r[j]) * (1 + 8 * u)))
+                return -1;                      /* not isolated: let Arb try */
+    for (i = 0; i < n; i++) {
+        double up = (m[i] * (1 + 8 * u) + r[i]) * (1 + 8 * u), dn = (m[i] * (1 - 8 * u) - r[i]) * (1 - 8 * u);
+        if (!(up < 1)) all_in = 0;
+        if (dn > 1) any_out = 1;
+        if (dn > lo) lo = dn;
+        if (up > hi) hi = up;
+    }
+    pt->isolated = 1;
+    pt->rho_lower = lo;
+    pt->rho_upper = hi;
+    if (any_out) return RS_STATUS_UNSTABLE;
+    if (all_in) return RS_STATUS_STABLE;
+    pt->isolated = 0;
+    pt->rho_lower = 0;
+    pt->rho_upper = INFINITY;
     return -1;
 }
 
@@ -253,10 +316,34 @@ int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
         w = (a[n] != 0) ? gsl_poly_complex_workspace_alloc((size_t) n + 1) : NULL;
         st = (w == NULL) ? GSL_EFAILED : gsl_poly_complex_solve(a, (size_t) n + 1, w, z);
         if (w) gsl_poly_complex_workspace_free(w);
-        if (st == GSL_SUCCESS) {
+        if (st == GSL_SUCCESS && g_opt.first_level == RS_LEVEL_DOUBLE) {
+            /* benchmark baseline: no certificate at all */
+            double rho = 0;
+            for (i = 0; i < n; i++) {
+                double m = hypot(z[2 * i], z[2 * i + 1]);
+                if (m > rho) rho = m;
+            }
+            pt->verdict = rho < 1 - 1e-9 ? RS_STATUS_STABLE : rho > 1 + 1e-9 ? RS_STATUS_UNSTABLE : RS_STATUS_MARGINAL;
+            pt->level = RS_LEVEL_DOUBLE;
+            pt->rho_lower = pt->rho_upper = rho;
+            pt->isolated = 1;
+            _acb_vec_clear(roots, n);
+            _acb_vec_clear(seeds, n);
+            acb_poly_clear(P);
+            free(a);
+            free(z);
+            goto done;
+        }
+        if (st == GSL_SUCCESS && g_opt.first_level > RS_LEVEL_FAST) {
+            for (i = 0; i < n; i++) acb_set_d_d(seeds + i, z[2 * i], z[2 * i + 1]);
+        } else if (st == GSL_SUCCESS) {
             int finite = 1;
             for (i = 0; i < 2 * n; i++) if (!isfinite(z[i])) finite = 0;
-            if (finite) {
+            for (i = 0; i <= n && finite; i++)      /* a coefficient lost to underflow: no a priori bound */
+                if (!fmpz_is_zero(q->coeffs + i) && !(fabs(a[i]) > 0x1p-1000)) finite = 0;
+            if (finite && (verdict = judge_double(pt, a, z, n)) >= 0) {
+                pt->level = RS_LEVEL_FAST;
+            } else if (finite) {
                 for (i = 0; i < n; i++) {
                     acb_set_d_d(roots + i, z[2 * i], z[2 * i + 1]);
                     acb_set(seeds + i, roots + i);
@@ -275,6 +362,8 @@ int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
     }
     /* levels prec128, prec256: Arb's root finder seeded with the doubles */
     for (prec = 128; verdict < 0 && prec <= 256; prec *= 2) {
+        if ((prec == 128 && g_opt.first_level > RS_LEVEL_PREC128) || (prec == 256 && g_opt.first_level > RS_LEVEL_PREC256))
+            continue;
         slong iso, allzero = 1;
         for (i = 0; i < n; i++) if (!acb_is_zero(seeds + i)) allzero = 0;
         acb_poly_set_fmpz_poly(P, q, prec);
@@ -698,7 +787,7 @@ static void put_double_of(FILE *f, const fmpq_t x)
 /* counts, seconds, etc. common to sweep and map elements */
 static void add_summary(json_t *o, const pt_t *pts, slong n, double seconds)
 {
-    slong i, ver[4] = {0, 0, 0, 0}, lev[4] = {0, 0, 0, 0};
+    slong i, ver[4] = {0, 0, 0, 0}, lev[5] = {0, 0, 0, 0, 0};
     json_t *v, *d;
     for (i = 0; i < n; i++) {
         if (pts[i].d.verdict < 0) ver[3]++;
@@ -708,8 +797,10 @@ static void add_summary(json_t *o, const pt_t *pts, slong n, double seconds)
     v = json_pack("{s:I,s:I,s:I}", "stable", (json_int_t) ver[0], "marginal", (json_int_t) ver[1],
                   "unstable", (json_int_t) ver[2]);
     if (ver[3] > 0) json_object_set_new(v, "undefined", json_integer(ver[3]));
+    if (lev[4] > 0) json_object_set_new(o, "uncertified", json_integer(lev[4]));
     d = json_pack("{s:I,s:I,s:I,s:I}", "fast", (json_int_t) lev[0], "prec128", (json_int_t) lev[1],
                   "prec256", (json_int_t) lev[2], "exact", (json_int_t) lev[3]);
+    if (lev[4] > 0) json_object_set_new(d, "double", json_integer(lev[4]));
     json_object_set_new(o, "verdicts", v);
     json_object_set_new(o, "decided_by", d);
     json_object_set_new(o, "seconds", json_real(floor(seconds * 1e4 + 0.5) / 1e4));
@@ -1341,7 +1432,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
     job_t J;
     fmpq *xs[2];
     pt_t *pts;
-    double t0 = now_seconds();
+    double t0 = now_seconds(), t_points = 0;
     if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
     if (opts != NULL) return rs_req_error(run, q, opts, RS_ERR_INPUT, "unexpected option '%s' for map", opts);
     if (nt < 9 || !tok_is(t + 4, ","))
@@ -1409,6 +1500,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
         snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) K[0], name[0], name[1]);
         r = point_errors(run, q, &J, pts, lo, hi - lo, desc);
     }
+    t_points = now_seconds() - t0;
     if (r == RS_OK) {
         json_t *o = json_object(), *cols = json_array();
         FILE *f;
@@ -1481,6 +1573,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
             && fmpz_mpoly_degree_si(v->cp->p, idx[1], v->s->zctx) > 0)
             map_boundary(o, run, v, idx[0], idx[1], name[0], name[1], xs[0], K[0], xs[1], K[1]);
         json_object_set_new(o, "seconds", json_real(floor((now_seconds() - t0) * 1e4 + 0.5) / 1e4));
+        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
         json_array_append_new(run->results, o);
     }
     free(pts);

@@ -48,6 +48,10 @@ typedef struct {
      * done == total at the end; NULL for none.  what: "sweep w", "map x,y". */
     void (*progress)(void *arg, const char *what, slong done, slong total);
     void *progress_arg;
+    /* benchmarking: the ladder starts at this level (RS_LEVEL_*; default
+     * RS_LEVEL_FAST), or RS_LEVEL_DOUBLE: GSL double roots only, verdict
+     * from max |root| vs 1 with no certificate (decided_by "double") */
+    int first_level;
 } rs_sweep_options_t;
 
 void rs_sweep_options_default(rs_sweep_options_t *o);
@@ -60,8 +64,9 @@ void rs_sweep_get_options(rs_sweep_options_t *o);
 void rs_sweep_shard_range(slong *lo, slong *hi, slong npoints, slong I, slong N);
 
 /* Certified verdict levels. */
-enum { RS_LEVEL_FAST = 0, RS_LEVEL_PREC128 = 1, RS_LEVEL_PREC256 = 2, RS_LEVEL_EXACT = 3 };
-extern const char *const rs_sweep_level_names[4]; /* "fast", "prec128", "prec256", "exact" */
+enum { RS_LEVEL_FAST = 0, RS_LEVEL_PREC128 = 1, RS_LEVEL_PREC256 = 2, RS_LEVEL_EXACT = 3,
+       RS_LEVEL_DOUBLE = 4 /* uncertified, benchmarking only */ };
+extern const char *const rs_sweep_level_names[5]; /* "fast", "prec128", "prec256", "exact", "double" */
 
 typedef struct {
     int status;          /* RS_OK, or the error code of this point */
