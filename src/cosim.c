@@ -1,0 +1,766 @@
+/* cosim.c -- see include/recstab/cosim.h.
+ *
+ * Derivation of the recurrences (checked against the seed, sect. 3.1).
+ *
+ * Exact integration of z' = A z + B lambda(t) over [T_N, T_N + H] with
+ * lambda(T_N + s) = sum_j lambda_j L_j(s/H), L_j(tau) = sum_m l_{j,m} tau^m:
+ *     z_{N+1} = E z_N + sum_j G_j lambda_j,  G_j = sum_m l_{j,m} Phi_m.
+ * A and B are block structured (subsystem i sees only A_i, B_i), so E and
+ * Phi are computed per subsystem and stacked.
+ *
+ * Explicit (step 1 only, eq. 10 and 16): nodes tau_j = -j carrying
+ * lambda_{N-j} = C z_{N-j}, j = 0..K.  Degree K + 1 in the shift; for K = 2
+ * that is the paper's four-term eq. (16).
+ *
+ * Implicit (steps 1-3, eq. 10-15):
+ *   step 1 gives z^p_{N+1} and lambda^p = P^p(T_{N+1}) from the degree-K
+ *     extrapolant P^p through (T_{N-j}, lambda_{N-j}), j = 0..K;
+ *   step 2: z*_{N+1}(lambda*) uses the degree-K interpolant through
+ *     (T_{N+1}, lambda*) and (T_{N+1-j}, lambda_{N+1-j}), j = 1..K:
+ *         z* = E z_N + G*_0 lambda* + sum_{j>=1} G*_j lambda_{N+1-j},
+ *     affine in lambda*, so g(lambda*) = lambda* - C z*(lambda*) (eq. 12 with
+ *     the brief's C; the printed eq. 12 has the same sign: lambda* - acc1 c1
+ *     (x2 - x1) - adc1 d1 (v2 - v1)) is affine with slope J = 1 - C G*_0.
+ *     The paper's g^p is g at the predictor.  The interpolant through
+ *     (T_{N+1}, lambda^p), (T_N, lambda_N), ..., (T_{N-K+1}, ...) passes
+ *     through K + 1 points of the degree-K polynomial P^p, hence IS P^p, so
+ *     z^p_{N+1} = z*(lambda^p) and g^p = g(lambda^p) exactly.  The linearised
+ *     equation (13) g^p + J (lambda_{N+1} - lambda^p) = 0 is then the affine
+ *     g itself: its solution is the exact root, g(lambda_{N+1}) = 0, and the
+ *     predictor drops out of the recurrence;
+ *   step 3 (eq. 14): z_{N+1} = z*(lambda_{N+1}), so lambda_{N+1} = C z_{N+1}:
+ *     (I - G_0 C) z_{N+1} - (E + G_1 C) z_N - sum_{j>=2} G_j C z_{N+1-j} = 0,
+ *     degree max(K, 1); for K = 2 the paper's three-term eq. (15).
+ * The time-domain oracle in tests/test_cosim.c runs steps 1-3 literally
+ * (predictor, finite-difference Jacobian, Newton, corrector) and agrees.
+ *
+ * Radius: the minimal one-step map (rs_cosim_transition) rather than the
+ * block companion of the recurrence, whose extra eigenvalue 0 is defective
+ * (Jordan chains through the delayed z_{N-j} that only enter via C z_{N-j}),
+ * which forces the slower cluster route of rs_radius.  Both are exposed. */
+#include <string.h>
+#include <flint/fmpq_poly.h>
+#include <acb_mat.h>
+#include "recstab/cosim.h"
+
+/* ------------------------------------------------------------------ */
+/* model                                                               */
+
+static void _alloc_mats(rs_cosim_t cs, slong n1, slong n2)
+{
+    if (n1 < 0)
+        n1 = 0;
+    if (n2 < 0)
+        n2 = 0;
+    cs->n1 = n1;
+    cs->n2 = n2;
+    fmpq_mat_init(cs->A1, n1, n1);
+    fmpq_mat_init(cs->A2, n2, n2);
+    fmpq_mat_init(cs->B1, n1, 1);
+    fmpq_mat_init(cs->B2, n2, 1);
+    fmpq_mat_init(cs->C, 1, n1 + n2);
+}
+
+static void _free_mats(rs_cosim_t cs)
+{
+    fmpq_mat_clear(cs->A1);
+    fmpq_mat_clear(cs->A2);
+    fmpq_mat_clear(cs->B1);
+    fmpq_mat_clear(cs->B2);
+    fmpq_mat_clear(cs->C);
+}
+
+void rs_cosim_init(rs_cosim_t cs, slong n1, slong n2)
+{
+    _alloc_mats(cs, n1, n2);
+    fmpq_init(cs->H);
+    fmpq_one(cs->H);
+    cs->method = RS_COSIM_EXPLICIT;
+    cs->order = 0;
+}
+
+void rs_cosim_clear(rs_cosim_t cs)
+{
+    _free_mats(cs);
+    fmpq_clear(cs->H);
+}
+
+void rs_cosim_set_dims(rs_cosim_t cs, slong n1, slong n2)
+{
+    _free_mats(cs);
+    _alloc_mats(cs, n1, n2);
+}
+
+static int _shape_ok(const fmpq_mat_t M, slong r, slong c)
+{
+    return fmpq_mat_nrows(M) == r && fmpq_mat_ncols(M) == c;
+}
+
+int rs_cosim_check(const rs_cosim_t cs, rs_error_t err)
+{
+    slong n1 = cs->n1, n2 = cs->n2;
+    if (n1 < 1 || n2 < 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: subsystem dimensions must be >= 1 (got "
+                            "n1 = %ld, n2 = %ld)", (long) n1, (long) n2);
+    if (n1 + n2 > RS_COSIM_MAX_DIM)
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "cosim: n1 + n2 = %ld exceeds the limit %d",
+                            (long) (n1 + n2), RS_COSIM_MAX_DIM);
+    if (!_shape_ok(cs->A1, n1, n1) || !_shape_ok(cs->A2, n2, n2)
+        || !_shape_ok(cs->B1, n1, 1) || !_shape_ok(cs->B2, n2, 1)
+        || !_shape_ok(cs->C, 1, n1 + n2))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: matrix shapes do not match n1 = %ld, "
+                            "n2 = %ld (A_i n_i x n_i, B_i n_i x 1, C 1 x n)",
+                            (long) n1, (long) n2);
+    if (fmpq_sgn(cs->H) <= 0)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: macro step H must be > 0");
+    if (cs->method != RS_COSIM_EXPLICIT && cs->method != RS_COSIM_IMPLICIT)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: unknown method %d (explicit = %d, "
+                            "implicit = %d)", cs->method, RS_COSIM_EXPLICIT,
+                            RS_COSIM_IMPLICIT);
+    if (cs->order < 0 || cs->order > RS_COSIM_MAX_ORDER)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: approximation order K = %ld outside "
+                            "0..%d", (long) cs->order, RS_COSIM_MAX_ORDER);
+    return RS_OK;
+}
+
+/* Signs follow the printed equations of motion (2)/(4): the coupling force
+ * lambda_c = cc (x2 - x1) + dc (v2 - v1) pulls mass 1 (+lambda_c/m1) towards
+ * mass 2 and mass 2 (-lambda_c/m2) towards mass 1, so with positive
+ * parameters the coupled oscillator is mechanically stable.  Against eq. (4):
+ *   eq. (5): consistent (A_mono = A + B C reproduces it entry by entry; the
+ *     extracted first row "0 1 0 0 0" has a stray fifth entry);
+ *   eq. (7): B_FF consistent; C_FF = (acc1 c1, adc1 d1, -acc1 c1, -adc1 d1)
+ *     is the negative of our C, consistent because g = C_FF z + D_FF u = 0
+ *     means lambda_c = -C_FF z; D_FF is printed with 4 entries (0 0 0 1)
+ *     although u has 5 (should be (0 0 0 0 1));
+ *   eq. (8): consistent (B_FD row 4 = +acc1/am21 c1, +adc1/am21 d1 and the
+ *     (alpha_c21 + alpha_cc1) diagonal match eq. 4); D_FD row 2 again has 4
+ *     entries instead of 5;
+ *   eq. (9): consistent in sign; A_DD rows 1/3 are printed 5 wide and B_DD
+ *     row 1 6 wide (shape slips only);
+ *   eq. (12): g = lambda* - acc1 c1 (x2* - x1*) - adc1 d1 (v2* - v1*),
+ *     consistent with eq. (4) and with g = lambda - C z here.
+ * No sign slip was found; only the shape slips above. */
+int rs_cosim_li_ff(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
+                   const fmpq_t am21, const fmpq_t ac21, const fmpq_t ad21,
+                   const fmpq_t acc1, const fmpq_t adc1, rs_error_t err)
+{
+    fmpq_t t;
+    if (fmpq_is_zero(am21))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: Li model needs alpha_m21 = m2/m1 != 0");
+    if (cs->n1 != 2 || cs->n2 != 2)
+        rs_cosim_set_dims(cs, 2, 2);
+    else {
+        fmpq_mat_zero(cs->A1);
+        fmpq_mat_zero(cs->A2);
+        fmpq_mat_zero(cs->B1);
+        fmpq_mat_zero(cs->B2);
+        fmpq_mat_zero(cs->C);
+    }
+    fmpq_init(t);
+    /* subsystem 1: x1' = v1, v1' = -c1 x1 - d1 v1 + lambda_c */
+    fmpq_one(fmpq_mat_entry(cs->A1, 0, 1));
+    fmpq_neg(fmpq_mat_entry(cs->A1, 1, 0), c1);
+    fmpq_neg(fmpq_mat_entry(cs->A1, 1, 1), d1);
+    fmpq_one(fmpq_mat_entry(cs->B1, 1, 0));
+    /* subsystem 2: v2' = -(ac21/am21) c1 x2 - (ad21/am21) d1 v2
+     *                    - lambda_c / am21 */
+    fmpq_one(fmpq_mat_entry(cs->A2, 0, 1));
+    fmpq_div(t, ac21, am21);
+    fmpq_mul(t, t, c1);
+    fmpq_neg(fmpq_mat_entry(cs->A2, 1, 0), t);
+    fmpq_div(t, ad21, am21);
+    fmpq_mul(t, t, d1);
+    fmpq_neg(fmpq_mat_entry(cs->A2, 1, 1), t);
+    fmpq_inv(t, am21);
+    fmpq_neg(fmpq_mat_entry(cs->B2, 1, 0), t);
+    /* lambda_c = acc1 c1 (x2 - x1) + adc1 d1 (v2 - v1) */
+    fmpq_mul(t, acc1, c1);
+    fmpq_neg(fmpq_mat_entry(cs->C, 0, 0), t);
+    fmpq_set(fmpq_mat_entry(cs->C, 0, 2), t);
+    fmpq_mul(t, adc1, d1);
+    fmpq_neg(fmpq_mat_entry(cs->C, 0, 1), t);
+    fmpq_set(fmpq_mat_entry(cs->C, 0, 3), t);
+    fmpq_clear(t);
+    return RS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Lagrange coefficients                                               */
+
+int rs_cosim_lagrange(fmpq_mat_t L, int method, slong order, rs_error_t err)
+{
+    slong K = order, j, i, m;
+    fmpq_poly_t num, lin;
+    fmpq_t den, d, tj, ti;
+
+    if (K < 0 || K > RS_COSIM_MAX_ORDER)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: approximation order K = %ld outside 0..%d",
+                            (long) K, RS_COSIM_MAX_ORDER);
+    if (method != RS_COSIM_EXPLICIT && method != RS_COSIM_IMPLICIT)
+        return rs_error_set(err, RS_ERR_INPUT, "cosim: unknown method %d",
+                            method);
+    if (fmpq_mat_nrows(L) != K + 1 || fmpq_mat_ncols(L) != K + 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: Lagrange matrix must be %ldx%ld",
+                            (long) (K + 1), (long) (K + 1));
+    fmpq_poly_init(num);
+    fmpq_poly_init(lin);
+    fmpq_init(den);
+    fmpq_init(d);
+    fmpq_init(tj);
+    fmpq_init(ti);
+    for (j = 0; j <= K; j++) {
+        /* node tau_j = -j (explicit) or 1 - j (implicit) */
+        fmpq_set_si(tj, (method == RS_COSIM_IMPLICIT ? 1 : 0) - j, 1);
+        fmpq_poly_one(num);
+        fmpq_one(den);
+        for (i = 0; i <= K; i++) {
+            if (i == j)
+                continue;
+            fmpq_set_si(ti, (method == RS_COSIM_IMPLICIT ? 1 : 0) - i, 1);
+            /* lin = tau - tau_i */
+            fmpq_poly_zero(lin);
+            fmpq_poly_set_coeff_si(lin, 1, 1);
+            fmpq_neg(d, ti);
+            fmpq_poly_set_coeff_fmpq(lin, 0, d);
+            fmpq_poly_mul(num, num, lin);
+            fmpq_sub(d, tj, ti);
+            fmpq_mul(den, den, d);
+        }
+        fmpq_poly_scalar_div_fmpq(num, num, den);
+        for (m = 0; m <= K; m++)
+            fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(L, j, m), num, m);
+    }
+    fmpq_poly_clear(num);
+    fmpq_poly_clear(lin);
+    fmpq_clear(den);
+    fmpq_clear(d);
+    fmpq_clear(tj);
+    fmpq_clear(ti);
+    return RS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* exponentials (Van Loan)                                              */
+
+/* One subsystem: E_i into E at offset off, Phi_m^{(i)} into Phi rows
+ * off..off+ni-1. */
+static void _exp_phi_sub(arb_mat_t E, arb_mat_t Phi, slong off,
+                         const fmpq_mat_t Ai, const fmpq_mat_t Bi,
+                         const fmpq_t H, slong K, slong prec)
+{
+    slong ni = fmpq_mat_nrows(Ai), sz = ni + K + 1, r, c, m;
+    fmpq_mat_t M;
+    arb_mat_t Ma, X;
+    arb_t fact;
+
+    fmpq_mat_init(M, sz, sz);
+    for (r = 0; r < ni; r++) {
+        for (c = 0; c < ni; c++)
+            fmpq_mul(fmpq_mat_entry(M, r, c), fmpq_mat_entry(Ai, r, c), H);
+        fmpq_mul(fmpq_mat_entry(M, r, ni), fmpq_mat_entry(Bi, r, 0), H);
+    }
+    for (r = 0; r < K; r++)
+        fmpq_one(fmpq_mat_entry(M, ni + r, ni + r + 1));
+    arb_mat_init(Ma, sz, sz);
+    arb_mat_init(X, sz, sz);
+    arb_mat_set_fmpq_mat(Ma, M, prec);
+    arb_mat_exp(X, Ma, prec);
+    for (r = 0; r < ni; r++)
+        for (c = 0; c < ni; c++)
+            arb_set(arb_mat_entry(E, off + r, off + c), arb_mat_entry(X, r, c));
+    arb_init(fact);
+    arb_one(fact);
+    for (m = 0; m <= K; m++) {
+        if (m > 1)
+            arb_mul_ui(fact, fact, (ulong) m, prec);
+        for (r = 0; r < ni; r++)
+            arb_mul(arb_mat_entry(Phi, off + r, m), arb_mat_entry(X, r, ni + m),
+                    fact, prec);
+    }
+    arb_clear(fact);
+    arb_mat_clear(X);
+    arb_mat_clear(Ma);
+    fmpq_mat_clear(M);
+}
+
+int rs_cosim_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
+                     slong prec, rs_error_t err)
+{
+    slong n, K;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    K = cs->order;
+    if (arb_mat_nrows(E) != n || arb_mat_ncols(E) != n
+        || arb_mat_nrows(Phi) != n || arb_mat_ncols(Phi) != K + 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: E must be %ldx%ld and Phi %ldx%ld",
+                            (long) n, (long) n, (long) n, (long) (K + 1));
+    arb_mat_zero(E);
+    _exp_phi_sub(E, Phi, 0, cs->A1, cs->B1, cs->H, K, prec);
+    _exp_phi_sub(E, Phi, cs->n1, cs->A2, cs->B2, cs->H, K, prec);
+    return RS_OK;
+}
+
+int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
+                   rs_error_t err)
+{
+    slong n, K, j, m, r;
+    fmpq_mat_t L;
+    arb_mat_t Phi;
+    arb_t t;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    K = cs->order;
+    if (arb_mat_nrows(G) != n || arb_mat_ncols(G) != K + 1)
+        return rs_error_set(err, RS_ERR_INPUT, "cosim: G must be %ldx%ld",
+                            (long) n, (long) (K + 1));
+    fmpq_mat_init(L, K + 1, K + 1);
+    arb_mat_init(Phi, n, K + 1);
+    arb_init(t);
+    rc = rs_cosim_lagrange(L, cs->method, K, err);
+    if (rc == RS_OK)
+        rc = rs_cosim_exp_phi(E, Phi, cs, prec, err);
+    if (rc == RS_OK) {
+        arb_mat_zero(G);
+        for (j = 0; j <= K; j++)
+            for (m = 0; m <= K; m++) {
+                const fmpq *l = fmpq_mat_entry(L, j, m);
+                if (fmpq_is_zero(l))
+                    continue;
+                for (r = 0; r < n; r++) {
+                    arb_mul_fmpz(t, arb_mat_entry(Phi, r, m), fmpq_numref(l),
+                                 prec);
+                    arb_div_fmpz(t, t, fmpq_denref(l), prec);
+                    arb_add(arb_mat_entry(G, r, j), arb_mat_entry(G, r, j), t,
+                            prec);
+                }
+            }
+    }
+    arb_clear(t);
+    arb_mat_clear(Phi);
+    fmpq_mat_clear(L);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* recurrence and one-step map                                         */
+
+/* Out = column g (of G, index j) times row C: rank one n x n. */
+static void _outer(arb_mat_t Out, const arb_mat_t G, slong j,
+                   const arb_mat_t Cb, slong prec)
+{
+    slong r, c, n = arb_mat_nrows(Out);
+    for (r = 0; r < n; r++)
+        for (c = 0; c < n; c++)
+            arb_mul(arb_mat_entry(Out, r, c), arb_mat_entry(G, r, j),
+                    arb_mat_entry(Cb, 0, c), prec);
+}
+
+/* J = 1 - C G_0 */
+static void _jacobian(arb_t J, const arb_mat_t G, const arb_mat_t Cb,
+                      slong prec)
+{
+    slong r, n = arb_mat_nrows(G);
+    arb_t t;
+    arb_init(t);
+    arb_one(J);
+    for (r = 0; r < n; r++) {
+        arb_mul(t, arb_mat_entry(Cb, 0, r), arb_mat_entry(G, r, 0), prec);
+        arb_sub(J, J, t, prec);
+    }
+    arb_clear(t);
+}
+
+void rs_cosim_rec_init(rs_cosim_rec_t rec)
+{
+    rec->n = 0;
+    rec->k = -1;
+    rec->A = NULL;
+    arb_init(rec->jac);
+    rec->prec = 0;
+}
+
+static void _rec_free(rs_cosim_rec_t rec)
+{
+    slong j;
+    if (rec->A != NULL) {
+        for (j = 0; j <= rec->k; j++)
+            arb_mat_clear(rec->A + j);
+        flint_free(rec->A);
+    }
+    rec->A = NULL;
+    rec->k = -1;
+    rec->n = 0;
+}
+
+void rs_cosim_rec_clear(rs_cosim_rec_t rec)
+{
+    _rec_free(rec);
+    arb_clear(rec->jac);
+}
+
+int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
+                        rs_error_t err)
+{
+    slong n, K, k, j;
+    arb_mat_t E, G, Cb, T;
+    int rc = rs_cosim_check(cs, err), impl;
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    K = cs->order;
+    impl = (cs->method == RS_COSIM_IMPLICIT);
+    k = impl ? (K > 1 ? K : 1) : K + 1;
+    _rec_free(rec);
+    rec->n = n;
+    rec->k = k;
+    rec->prec = prec;
+    rec->A = flint_malloc((k + 1) * sizeof(arb_mat_struct));
+    for (j = 0; j <= k; j++) {
+        arb_mat_init(rec->A + j, n, n);
+    }
+    arb_mat_init(E, n, n);
+    arb_mat_init(G, n, K + 1);
+    arb_mat_init(Cb, 1, n);
+    arb_mat_init(T, n, n);
+    rc = rs_cosim_gains(E, G, cs, prec, err);
+    if (rc != RS_OK)
+        goto cleanup;
+    arb_mat_set_fmpq_mat(Cb, cs->C, prec);
+    if (!impl) {
+        /* z_{N+1} - (E + G_0 C) z_N - sum_{j>=1} G_j C z_{N-j} = 0;
+         * z_{N-j} sits at shift offset K - j. */
+        arb_mat_one(rec->A + k);
+        for (j = 0; j <= K; j++) {
+            _outer(T, G, j, Cb, prec);
+            if (j == 0)
+                arb_mat_add(T, T, E, prec);
+            arb_mat_neg(rec->A + (K - j), T);
+        }
+        arb_one(rec->jac);
+    } else {
+        /* (I - G_0 C) z_{N+1} - (E + G_1 C) z_N - sum_{j>=2} G_j C z_{N+1-j};
+         * z_{N+1-j} sits at offset k - j. */
+        _outer(T, G, 0, Cb, prec);
+        arb_mat_one(rec->A + k);
+        arb_mat_sub(rec->A + k, rec->A + k, T, prec);
+        arb_mat_neg(rec->A + (k - 1), E);
+        for (j = 1; j <= K; j++) {
+            _outer(T, G, j, Cb, prec);
+            arb_mat_sub(rec->A + (k - j), rec->A + (k - j), T, prec);
+        }
+        _jacobian(rec->jac, G, Cb, prec);
+    }
+cleanup:
+    arb_mat_clear(E);
+    arb_mat_clear(G);
+    arb_mat_clear(Cb);
+    arb_mat_clear(T);
+    return rc;
+}
+
+int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
+                        rs_error_t err)
+{
+    slong n, K, h, dim, a, j, r, c;
+    arb_mat_t E, G, Cb, Top, CX;
+    arb_t J, t;
+    int rc = rs_cosim_check(cs, err), impl;
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    K = cs->order;
+    impl = (cs->method == RS_COSIM_IMPLICIT);
+    a = impl ? 1 : 0;              /* first gain acting on z_N */
+    h = impl ? (K > 1 ? K - 1 : 0) : K;   /* lambda history length */
+    dim = n + h;
+    if (arb_mat_nrows(M) != dim || arb_mat_ncols(M) != dim)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: transition matrix must be %ldx%ld",
+                            (long) dim, (long) dim);
+    arb_mat_init(E, n, n);
+    arb_mat_init(G, n, K + 1);
+    arb_mat_init(Cb, 1, n);
+    arb_mat_init(Top, n, dim);
+    arb_mat_init(CX, 1, dim);
+    arb_init(J);
+    arb_init(t);
+    rc = rs_cosim_gains(E, G, cs, prec, err);
+    if (rc != RS_OK)
+        goto cleanup;
+    arb_mat_set_fmpq_mat(Cb, cs->C, prec);
+    /* Top = [E + G_a C | G_{a+1} ... G_K]  (G_1 := 0 for implicit K = 0) */
+    for (r = 0; r < n; r++) {
+        for (c = 0; c < n; c++) {
+            if (a <= K)
+                arb_mul(arb_mat_entry(Top, r, c), arb_mat_entry(G, r, a),
+                        arb_mat_entry(Cb, 0, c), prec);
+            else
+                arb_zero(arb_mat_entry(Top, r, c));
+            arb_add(arb_mat_entry(Top, r, c), arb_mat_entry(Top, r, c),
+                    arb_mat_entry(E, r, c), prec);
+        }
+        for (j = a + 1; j <= K; j++)
+            arb_set(arb_mat_entry(Top, r, n + j - a - 1),
+                    arb_mat_entry(G, r, j));
+    }
+    if (impl) {
+        /* Top <- (I - G_0 C)^{-1} Top = Top + G_0 (C Top) / J
+         * (Sherman-Morrison), J = 1 - C G_0 the Newton Jacobian. */
+        _jacobian(J, G, Cb, prec);
+        if (arb_contains_zero(J)) {
+            if (arb_is_zero(J))
+                rc = rs_error_set(err, RS_ERR_MATH,
+                                  "cosim: implicit coupling Jacobian "
+                                  "J = 1 - C G_0 is exactly 0: the corrector "
+                                  "is undefined");
+            else
+                rc = rs_error_set(err, RS_ERR_UNDECIDED,
+                                  "cosim: implicit coupling Jacobian "
+                                  "J = 1 - C G_0 not certified nonzero at "
+                                  "%ld bits", (long) prec);
+            goto cleanup;
+        }
+        for (c = 0; c < dim; c++) {
+            arb_zero(arb_mat_entry(CX, 0, c));
+            for (r = 0; r < n; r++)
+                arb_addmul(arb_mat_entry(CX, 0, c), arb_mat_entry(Cb, 0, r),
+                           arb_mat_entry(Top, r, c), prec);
+            arb_div(arb_mat_entry(CX, 0, c), arb_mat_entry(CX, 0, c), J,
+                    prec);
+        }
+        for (r = 0; r < n; r++)
+            for (c = 0; c < dim; c++)
+                arb_addmul(arb_mat_entry(Top, r, c), arb_mat_entry(G, r, 0),
+                           arb_mat_entry(CX, 0, c), prec);
+    }
+    arb_mat_zero(M);
+    for (r = 0; r < n; r++)
+        for (c = 0; c < dim; c++)
+            arb_set(arb_mat_entry(M, r, c), arb_mat_entry(Top, r, c));
+    if (h > 0) {
+        /* new lambda_N = C z_N, older lambdas shift down one slot */
+        for (c = 0; c < n; c++)
+            arb_set(arb_mat_entry(M, n, c), arb_mat_entry(Cb, 0, c));
+        for (j = 1; j < h; j++)
+            arb_one(arb_mat_entry(M, n + j, n + j - 1));
+    }
+cleanup:
+    arb_clear(J);
+    arb_clear(t);
+    arb_mat_clear(E);
+    arb_mat_clear(G);
+    arb_mat_clear(Cb);
+    arb_mat_clear(Top);
+    arb_mat_clear(CX);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* monolithic reference                                                */
+
+int rs_cosim_monolithic_matrix(fmpq_mat_t Amono, const rs_cosim_t cs,
+                               rs_error_t err)
+{
+    slong n1, n, r, c;
+    fmpq_t t;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n1 = cs->n1;
+    n = n1 + cs->n2;
+    if (fmpq_mat_nrows(Amono) != n || fmpq_mat_ncols(Amono) != n)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: A_mono must be %ldx%ld", (long) n,
+                            (long) n);
+    fmpq_init(t);
+    fmpq_mat_zero(Amono);
+    for (r = 0; r < n; r++) {
+        const fmpq *b = (r < n1) ? fmpq_mat_entry(cs->B1, r, 0)
+                                 : fmpq_mat_entry(cs->B2, r - n1, 0);
+        for (c = 0; c < n; c++) {
+            fmpq_mul(t, b, fmpq_mat_entry(cs->C, 0, c));
+            if (r < n1 && c < n1)
+                fmpq_add(t, t, fmpq_mat_entry(cs->A1, r, c));
+            else if (r >= n1 && c >= n1)
+                fmpq_add(t, t, fmpq_mat_entry(cs->A2, r - n1, c - n1));
+            fmpq_set(fmpq_mat_entry(Amono, r, c), t);
+        }
+    }
+    fmpq_clear(t);
+    return RS_OK;
+}
+
+int rs_cosim_monolithic(arb_mat_t Emono, const rs_cosim_t cs, slong prec,
+                        rs_error_t err)
+{
+    slong n;
+    fmpq_mat_t Am;
+    arb_mat_t Ab;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    if (arb_mat_nrows(Emono) != n || arb_mat_ncols(Emono) != n)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: e^{A_mono H} must be %ldx%ld", (long) n,
+                            (long) n);
+    fmpq_mat_init(Am, n, n);
+    arb_mat_init(Ab, n, n);
+    rc = rs_cosim_monolithic_matrix(Am, cs, err);
+    if (rc == RS_OK) {
+        fmpq_mat_scalar_mul_fmpq(Am, Am, cs->H);
+        arb_mat_set_fmpq_mat(Ab, Am, prec);
+        arb_mat_exp(Emono, Ab, prec);
+    }
+    arb_mat_clear(Ab);
+    fmpq_mat_clear(Am);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* certified radius with adaptive precision                            */
+
+enum { _ROUTE_TRANSITION, _ROUTE_RECURRENCE, _ROUTE_MONO };
+
+/* Build the acb matrix polynomial A[0..*k] for the route at prec.
+ * *A is (re)allocated; *k and *cnt updated. */
+static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
+                  const rs_cosim_t cs, slong prec, rs_error_t err)
+{
+    slong j, dim, n = cs->n1 + cs->n2, K = cs->order;
+    int rc = RS_OK;
+
+    for (j = 0; j < *cnt; j++)
+        acb_mat_clear(*A + j);
+    flint_free(*A);
+    *A = NULL;
+    *cnt = 0;
+    if (route == _ROUTE_RECURRENCE) {
+        rs_cosim_rec_t rec;
+        rs_cosim_rec_init(rec);
+        rc = rs_cosim_recurrence(rec, cs, prec, err);
+        if (rc == RS_OK && cs->method == RS_COSIM_IMPLICIT
+            && arb_contains_zero(rec->jac))
+            rc = arb_is_zero(rec->jac)
+                     ? rs_error_set(err, RS_ERR_MATH,
+                                    "cosim: implicit coupling Jacobian "
+                                    "J = 1 - C G_0 is exactly 0")
+                     : rs_error_set(err, RS_ERR_UNDECIDED,
+                                    "cosim: implicit coupling Jacobian not "
+                                    "certified nonzero at %ld bits",
+                                    (long) prec);
+        if (rc == RS_OK) {
+            *A = flint_malloc((rec->k + 1) * sizeof(acb_mat_struct));
+            for (j = 0; j <= rec->k; j++) {
+                acb_mat_init(*A + j, n, n);
+                acb_mat_set_arb_mat(*A + j, rec->A + j);
+            }
+            *k = rec->k;
+            *cnt = rec->k + 1;
+        }
+        rs_cosim_rec_clear(rec);
+        return rc;
+    }
+    if (route == _ROUTE_TRANSITION) {
+        slong h = (cs->method == RS_COSIM_IMPLICIT) ? (K > 1 ? K - 1 : 0) : K;
+        dim = n + h;
+    } else {
+        dim = n;
+    }
+    {
+        arb_mat_t M;
+        arb_mat_init(M, dim, dim);
+        rc = (route == _ROUTE_TRANSITION)
+                 ? rs_cosim_transition(M, cs, prec, err)
+                 : rs_cosim_monolithic(M, cs, prec, err);
+        if (rc == RS_OK) {
+            arb_mat_neg(M, M);
+            *A = flint_malloc(2 * sizeof(acb_mat_struct));
+            acb_mat_init(*A, dim, dim);
+            acb_mat_init(*A + 1, dim, dim);
+            acb_mat_set_arb_mat(*A, M);
+            acb_mat_one(*A + 1);
+            *k = 1;
+            *cnt = 2;
+        }
+        arb_mat_clear(M);
+    }
+    return rc;
+}
+
+static int _radius(rs_radius_t r, const rs_cosim_t cs, int route,
+                   slong digits, slong max_prec, rs_error_t err)
+{
+    acb_mat_struct *A = NULL;
+    slong k = 0, cnt = 0, prec, j;
+    int rc = rs_cosim_check(cs, err);
+
+    if (rc != RS_OK)
+        return rc;
+    if (digits < 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: digits must be >= 1 (got %ld)",
+                            (long) digits);
+    if (max_prec <= 0)
+        max_prec = RS_RADIUS_MAX_PREC_DEFAULT;
+    /* input accuracy: the requested digits plus a margin for the loss in
+     * the exponential and the eigenvalue condition; doubled on demand */
+    prec = (slong) (digits * 3.3219280948873623) + 64;
+    if (prec > max_prec)
+        prec = max_prec;
+    for (;;) {
+        int retry;
+        rc = _build(&A, &k, &cnt, route, cs, prec, err);
+        if (rc == RS_OK) {
+            rc = rs_radius_matrix_poly(r, A, k, digits, max_prec, err);
+            /* RS_ERR_MATH there: leading matrix (I - G_0 C) not certified
+             * invertible at this input accuracy; exact singularity was
+             * already excluded through J, so sharper input can help */
+            retry = (rc == RS_ERR_UNDECIDED || rc == RS_ERR_MATH);
+        } else {
+            /* J not certified nonzero at this precision: retry; J == 0
+             * exactly or bad input: final */
+            retry = (rc == RS_ERR_UNDECIDED);
+        }
+        if (!retry || prec >= max_prec)
+            break;
+        prec = (prec > max_prec / 2) ? max_prec : 2 * prec;
+    }
+    for (j = 0; j < cnt; j++)
+        acb_mat_clear(A + j);
+    flint_free(A);
+    return rc;
+}
+
+int rs_cosim_radius(rs_radius_t r, const rs_cosim_t cs, slong digits,
+                    slong max_prec, rs_error_t err)
+{
+    return _radius(r, cs, _ROUTE_TRANSITION, digits, max_prec, err);
+}
+
+int rs_cosim_radius_recurrence(rs_radius_t r, const rs_cosim_t cs,
+                               slong digits, slong max_prec, rs_error_t err)
+{
+    return _radius(r, cs, _ROUTE_RECURRENCE, digits, max_prec, err);
+}
+
+int rs_cosim_monolithic_radius(rs_radius_t r, const rs_cosim_t cs,
+                               slong digits, slong max_prec, rs_error_t err)
+{
+    return _radius(r, cs, _ROUTE_MONO, digits, max_prec, err);
+}
