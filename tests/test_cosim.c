@@ -1,0 +1,823 @@
+/* test_cosim.c -- cmocka tests of the force/force co-simulation recurrence
+ * (Li, Meyer, Lu, Schweizer) and its certified spectral radius.
+ *
+ * Independent references only:
+ *   - eq. (5) of the seed typed in entry by entry (exact fmpq);
+ *   - closed forms for Phi_0, Phi_1 of a scalar subsystem and for the
+ *     exponential radii e^{Re eig} of 2x2 oscillators;
+ *   - GSL eigenvalues of A_mono in double (max Re eig);
+ *   - a time-domain oracle that runs the co-simulation literally in double
+ *     (classical RK4 on a fine grid inside each macro step, Lagrange
+ *     extrapolation/interpolation by the product formula, and for the
+ *     implicit method predictor, finite-difference Jacobian, Newton step
+ *     (eq. 13) and corrector) and measures the growth per macro step from
+ *     window-averaged log norms.
+ */
+#include "testutil.h"
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_complex_math.h>
+#include "recstab/cosim.h"
+
+/* ------------------------------------------------------------------ */
+/* helpers                                                             */
+
+typedef struct {
+    const char *c1, *d1, *am21, *ac21, *ad21, *acc1, *adc1;
+} li_params;
+
+static void set_li(rs_cosim_t cs, const li_params *p)
+{
+    fmpq_t v[7];
+    const char *s[7] = { p->c1, p->d1, p->am21, p->ac21, p->ad21, p->acc1,
+                         p->adc1 };
+    rs_error_t err;
+    int i;
+    for (i = 0; i < 7; i++) {
+        fmpq_init(v[i]);
+        assert_int_equal(fmpq_set_str(v[i], s[i], 10), 0);
+    }
+    assert_int_equal(rs_cosim_li_ff(cs, v[0], v[1], v[2], v[3], v[4], v[5],
+                                    v[6], err), RS_OK);
+    for (i = 0; i < 7; i++)
+        fmpq_clear(v[i]);
+}
+
+static double qd(const char *s)
+{
+    fmpq_t q;
+    double d;
+    fmpq_init(q);
+    fmpq_set_str(q, s, 10);
+    d = fmpz_get_d(fmpq_numref(q)) / fmpz_get_d(fmpq_denref(q));
+    fmpq_clear(q);
+    return d;
+}
+
+static double radius_d(const rs_cosim_t cs, int method, slong K,
+                       slong digits, rs_radius_t r)
+{
+    rs_cosim_t c;
+    rs_error_t err;
+    int rc;
+    memcpy(c, cs, sizeof(rs_cosim_t));   /* shallow: only method/order set */
+    c->method = method;
+    c->order = K;
+    rc = rs_cosim_radius(r, c, digits, 0, err);
+    if (rc != RS_OK)
+        print_message("radius failed: %s\n", err->msg);
+    assert_int_equal(rc, RS_OK);
+    return arf_get_d(arb_midref(r->rho), ARF_RND_NEAR);
+}
+
+/* ------------------------------------------------------------------ */
+/* (1) A_mono equals the printed eq. (5) exactly                        */
+
+static void test_mono_eq5(void **state)
+{
+    static const li_params P = { "3/2", "1/3", "5/2", "7/3", "2/5", "3/4",
+                                 "9/7" };
+    rs_cosim_t cs;
+    rs_error_t err;
+    fmpq_mat_t Am, E5;
+    fmpq_t c1, d1, am, ac, ad, acc, adc, t;
+    (void) state;
+
+    rs_cosim_init(cs, 2, 2);
+    set_li(cs, &P);
+    fmpq_mat_init(Am, 4, 4);
+    fmpq_mat_init(E5, 4, 4);
+    assert_int_equal(rs_cosim_monolithic_matrix(Am, cs, err), RS_OK);
+
+    fmpq_init(c1); fmpq_init(d1); fmpq_init(am); fmpq_init(ac);
+    fmpq_init(ad); fmpq_init(acc); fmpq_init(adc); fmpq_init(t);
+    fmpq_set_str(c1, P.c1, 10); fmpq_set_str(d1, P.d1, 10);
+    fmpq_set_str(am, P.am21, 10); fmpq_set_str(ac, P.ac21, 10);
+    fmpq_set_str(ad, P.ad21, 10); fmpq_set_str(acc, P.acc1, 10);
+    fmpq_set_str(adc, P.adc1, 10);
+    /* row 1: 0 1 0 0 */
+    fmpq_one(fmpq_mat_entry(E5, 0, 1));
+    /* row 2: -(1+acc) c1, -(1+adc) d1, acc c1, adc d1 */
+    fmpq_add_si(t, acc, 1); fmpq_mul(t, t, c1);
+    fmpq_neg(fmpq_mat_entry(E5, 1, 0), t);
+    fmpq_add_si(t, adc, 1); fmpq_mul(t, t, d1);
+    fmpq_neg(fmpq_mat_entry(E5, 1, 1), t);
+    fmpq_mul(fmpq_mat_entry(E5, 1, 2), acc, c1);
+    fmpq_mul(fmpq_mat_entry(E5, 1, 3), adc, d1);
+    /* row 3: 0 0 0 1 */
+    fmpq_one(fmpq_mat_entry(E5, 2, 3));
+    /* row 4: acc/am c1, adc/am d1, -(ac+acc)/am c1, -(ad+adc)/am d1 */
+    fmpq_div(t, acc, am); fmpq_mul(fmpq_mat_entry(E5, 3, 0), t, c1);
+    fmpq_div(t, adc, am); fmpq_mul(fmpq_mat_entry(E5, 3, 1), t, d1);
+    fmpq_add(t, ac, acc); fmpq_div(t, t, am); fmpq_mul(t, t, c1);
+    fmpq_neg(fmpq_mat_entry(E5, 3, 2), t);
+    fmpq_add(t, ad, adc); fmpq_div(t, t, am); fmpq_mul(t, t, d1);
+    fmpq_neg(fmpq_mat_entry(E5, 3, 3), t);
+    assert_true(fmpq_mat_equal(Am, E5));
+
+    /* the modular form of eq. (6)/(7): B_FF picks +lambda on v1 and
+     * -lambda/am21 on v2; our C is minus the printed C_FF */
+    assert_true(fmpq_is_one(fmpq_mat_entry(cs->B1, 1, 0)));
+    fmpq_inv(t, am); fmpq_neg(t, t);
+    assert_true(fmpq_equal(fmpq_mat_entry(cs->B2, 1, 0), t));
+    fmpq_mul(t, acc, c1); fmpq_neg(t, t);
+    assert_true(fmpq_equal(fmpq_mat_entry(cs->C, 0, 0), t));
+
+    fmpq_clear(c1); fmpq_clear(d1); fmpq_clear(am); fmpq_clear(ac);
+    fmpq_clear(ad); fmpq_clear(acc); fmpq_clear(adc); fmpq_clear(t);
+    fmpq_mat_clear(Am);
+    fmpq_mat_clear(E5);
+    rs_cosim_clear(cs);
+}
+
+/* ------------------------------------------------------------------ */
+/* Lagrange coefficients and Van Loan integrals vs closed forms         */
+
+static void test_lagrange(void **state)
+{
+    fmpq_mat_t L;
+    rs_error_t err;
+    fmpq_t q;
+    (void) state;
+    fmpq_mat_init(L, 3, 3);
+    fmpq_init(q);
+    /* explicit K = 2, nodes 0, -1, -2:
+     * L0 = (t+1)(t+2)/2, L1 = -t(t+2), L2 = t(t+1)/2 */
+    assert_int_equal(rs_cosim_lagrange(L, RS_COSIM_EXPLICIT, 2, err), RS_OK);
+    fmpq_set_si(q, 1, 1); assert_true(fmpq_equal(fmpq_mat_entry(L, 0, 0), q));
+    fmpq_set_si(q, 3, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 0, 1), q));
+    fmpq_set_si(q, 1, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 0, 2), q));
+    assert_true(fmpq_is_zero(fmpq_mat_entry(L, 1, 0)));
+    fmpq_set_si(q, -2, 1); assert_true(fmpq_equal(fmpq_mat_entry(L, 1, 1), q));
+    fmpq_set_si(q, -1, 1); assert_true(fmpq_equal(fmpq_mat_entry(L, 1, 2), q));
+    assert_true(fmpq_is_zero(fmpq_mat_entry(L, 2, 0)));
+    fmpq_set_si(q, 1, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 2, 1), q));
+    fmpq_set_si(q, 1, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 2, 2), q));
+    /* implicit K = 2, nodes 1, 0, -1: L0 = t(t+1)/2, L1 = 1 - t^2,
+     * L2 = t(t-1)/2 */
+    assert_int_equal(rs_cosim_lagrange(L, RS_COSIM_IMPLICIT, 2, err), RS_OK);
+    fmpq_set_si(q, 1, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 0, 1), q));
+    assert_true(fmpq_equal(fmpq_mat_entry(L, 0, 2), q));
+    assert_true(fmpq_is_one(fmpq_mat_entry(L, 1, 0)));
+    fmpq_set_si(q, -1, 1); assert_true(fmpq_equal(fmpq_mat_entry(L, 1, 2), q));
+    fmpq_set_si(q, -1, 2); assert_true(fmpq_equal(fmpq_mat_entry(L, 2, 1), q));
+    /* wrong shape */
+    assert_int_equal(rs_cosim_lagrange(L, RS_COSIM_IMPLICIT, 1, err),
+                     RS_ERR_INPUT);
+    fmpq_clear(q);
+    fmpq_mat_clear(L);
+}
+
+/* scalar subsystems z' = a z + lambda: Phi_0 = (e^{aH} - 1)/a,
+ * Phi_1 = (e^{aH} - 1 - aH)/(a^2 H), Phi_2 = 2 (e^{aH} - 1 - aH -
+ * (aH)^2/2)/(a^3 H^2). */
+static void test_van_loan_scalar(void **state)
+{
+    rs_cosim_t cs;
+    rs_error_t err;
+    arb_mat_t E, Phi;
+    arb_t a, h, ah, ex, t, u;
+    slong prec = 256, i;
+    const slong anum[2] = { -3, 5 }, aden[2] = { 2, 7 };
+    (void) state;
+
+    rs_cosim_init(cs, 1, 1);
+    fmpq_set_si(cs->H, 3, 4);
+    cs->order = 2;
+    fmpq_set_si(fmpq_mat_entry(cs->A1, 0, 0), anum[0], aden[0]);
+    fmpq_set_si(fmpq_mat_entry(cs->A2, 0, 0), anum[1], aden[1]);
+    fmpq_one(fmpq_mat_entry(cs->B1, 0, 0));
+    fmpq_one(fmpq_mat_entry(cs->B2, 0, 0));
+    arb_mat_init(E, 2, 2);
+    arb_mat_init(Phi, 2, 3);
+    arb_init(a); arb_init(h); arb_init(ah); arb_init(ex); arb_init(t);
+    arb_init(u);
+    assert_int_equal(rs_cosim_exp_phi(E, Phi, cs, prec, err), RS_OK);
+    arb_set_si(h, 3);
+    arb_div_si(h, h, 4, prec);
+    for (i = 0; i < 2; i++) {
+        arb_set_si(a, anum[i]);
+        arb_div_si(a, a, aden[i], prec);
+        arb_mul(ah, a, h, prec);
+        arb_exp(ex, ah, prec);
+        assert_true(arb_overlaps(arb_mat_entry(E, i, i), ex));
+        assert_true(arb_is_zero(arb_mat_entry(E, i, 1 - i)));
+        arb_sub_ui(t, ex, 1, prec);                 /* e - 1 */
+        arb_div(u, t, a, prec);
+        assert_true(arb_overlaps(arb_mat_entry(Phi, i, 0), u));
+        arb_sub(t, t, ah, prec);                    /* e - 1 - ah */
+        arb_mul(u, a, ah, prec);
+        arb_div(u, t, u, prec);
+        assert_true(arb_overlaps(arb_mat_entry(Phi, i, 1), u));
+        arb_mul(u, ah, ah, prec);
+        arb_mul_2exp_si(u, u, -1);
+        arb_sub(t, t, u, prec);                     /* ... - (ah)^2/2 */
+        arb_mul(u, ah, ah, prec);
+        arb_mul(u, u, a, prec);
+        arb_div(u, t, u, prec);
+        arb_mul_2exp_si(u, u, 1);
+        assert_true(arb_overlaps(arb_mat_entry(Phi, i, 2), u));
+        assert_true(arb_rel_accuracy_bits(arb_mat_entry(Phi, i, 2))
+                    > prec - 30);
+    }
+    arb_clear(a); arb_clear(h); arb_clear(ah); arb_clear(ex); arb_clear(t);
+    arb_clear(u);
+    arb_mat_clear(E);
+    arb_mat_clear(Phi);
+    rs_cosim_clear(cs);
+}
+
+/* ------------------------------------------------------------------ */
+/* recurrence matrices vs the one-step map: a trajectory of the minimal  */
+/* state satisfies sum_j A_j z_{N+j} = 0 (balls contain 0, tiny).       */
+
+static void test_recurrence_consistency(void **state)
+{
+    static const li_params P = { "2", "1/2", "10", "10", "10", "10", "10" };
+    rs_cosim_t cs;
+    rs_error_t err;
+    slong prec = 200, K, steps = 8, N, j, i, c, dim, n = 4;
+    int method;
+    flint_rand_t st;
+    (void) state;
+
+    flint_randinit(st);
+    rs_cosim_init(cs, 2, 2);
+    set_li(cs, &P);
+    for (method = 0; method < 2; method++)
+        for (K = 0; K <= 3; K++) {
+            rs_cosim_rec_t rec;
+            arb_mat_t M, S, traj, sum, zc;
+            cs->method = method;
+            cs->order = K;
+            dim = n + (method ? (K > 1 ? K - 1 : 0) : K);
+            rs_cosim_rec_init(rec);
+            assert_int_equal(rs_cosim_recurrence(rec, cs, prec, err), RS_OK);
+            assert_int_equal(rec->k, method ? (K > 1 ? K : 1) : K + 1);
+            arb_mat_init(M, dim, dim);
+            arb_mat_init(S, dim, 1);
+            arb_mat_init(traj, n, steps + rec->k + 1);
+            arb_mat_init(sum, n, 1);
+            arb_mat_init(zc, n, 1);
+            assert_int_equal(rs_cosim_transition(M, cs, prec, err), RS_OK);
+            /* a consistent start: the lambda history must be C z of
+             * earlier states, so start from random s and run dim steps
+             * first (any s is a valid state of the minimal realisation) */
+            for (i = 0; i < dim; i++)
+                arb_set_si(arb_mat_entry(S, i, 0),
+                           (slong) n_randint(st, 2001) - 1000);
+            for (N = 0; N < steps + rec->k + 1; N++) {
+                arb_mat_mul(S, M, S, prec);
+                for (i = 0; i < n; i++)
+                    arb_set(arb_mat_entry(traj, i, N), arb_mat_entry(S, i, 0));
+            }
+            /* the minimal state's history is lambda = C z only after the
+             * first K steps; check the relation from N = K on */
+            for (N = K; N + rec->k < steps + rec->k + 1; N++) {
+                arb_mat_zero(sum);
+                for (j = 0; j <= rec->k; j++) {
+                    for (i = 0; i < n; i++)
+                        arb_set(arb_mat_entry(zc, i, 0),
+                                arb_mat_entry(traj, i, N + j));
+                    arb_mat_mul(zc, rec->A + j, zc, prec);
+                    arb_mat_add(sum, sum, zc, prec);
+                }
+                for (c = 0; c < n; c++) {
+                    double m = fabs(arf_get_d(arb_midref(
+                        arb_mat_entry(traj, c, N + rec->k)), ARF_RND_NEAR));
+                    assert_true(arb_contains_zero(arb_mat_entry(sum, c, 0)));
+                    assert_true(mag_cmp_2exp_si(
+                        arb_radref(arb_mat_entry(sum, c, 0)),
+                        (slong) log2(m + 1.0) - 120) < 0);
+                }
+            }
+            if (method == RS_COSIM_IMPLICIT) {
+                assert_false(arb_contains_zero(rec->jac));
+            }
+            arb_mat_clear(M);
+            arb_mat_clear(S);
+            arb_mat_clear(traj);
+            arb_mat_clear(sum);
+            arb_mat_clear(zc);
+            rs_cosim_rec_clear(rec);
+        }
+    rs_cosim_clear(cs);
+    flint_randclear(st);
+}
+
+/* ------------------------------------------------------------------ */
+/* (2) H -> 0: radii approach the monolithic exact radius                */
+
+/* max Re eig of the double matrix (GSL, independent of Arb) */
+static double max_re_eig(const fmpq_mat_t A)
+{
+    slong n = fmpq_mat_nrows(A), i, j;
+    gsl_matrix *m = gsl_matrix_alloc(n, n);
+    gsl_vector_complex *ev = gsl_vector_complex_alloc(n);
+    gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc(n);
+    double mx = -HUGE_VAL;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++)
+            gsl_matrix_set(m, i, j, fmpq_get_d(fmpq_mat_entry(A, i, j)));
+    assert_int_equal(gsl_eigen_nonsymm(m, ev, w), 0);
+    for (i = 0; i < n; i++) {
+        double re = GSL_REAL(gsl_vector_complex_get(ev, i));
+        if (re > mx)
+            mx = re;
+    }
+    gsl_eigen_nonsymm_free(w);
+    gsl_vector_complex_free(ev);
+    gsl_matrix_free(m);
+    return mx;
+}
+
+static void test_small_step_limit(void **state)
+{
+    /* generic (not all-alphas-equal) model, so that the coupling acts on
+     * the dominant mode: c1 = c h^2, d1 = d h is the dimensionless form of
+     * macro step h with fixed physical c = 1, d = 1/5 */
+    rs_cosim_t cs, cp;
+    rs_radius_t r;
+    rs_error_t err;
+    fmpq_mat_t Am;
+    const slong hden[3] = { 10, 100, 1000 };
+    double mono[3], dif[2][3][3];
+    int hi, method, K;
+    (void) state;
+
+    rs_cosim_init(cs, 2, 2);
+    rs_cosim_init(cp, 2, 2);
+    rs_radius_init(r);
+    fmpq_mat_init(Am, 4, 4);
+    for (hi = 0; hi < 3; hi++) {
+        char c1[64], d1[64];
+        li_params P = { c1, d1, "2", "3", "1/2", "1", "1" };
+        li_params Q = { "1", "1/5", "2", "3", "1/2", "1", "1" };
+        double mre;
+        snprintf(c1, sizeof c1, "1/%ld", (long) (hden[hi] * hden[hi]));
+        snprintf(d1, sizeof d1, "1/%ld", (long) (5 * hden[hi]));
+        set_li(cs, &P);
+        assert_int_equal(rs_cosim_monolithic_matrix(Am, cs, err), RS_OK);
+        mre = max_re_eig(Am);
+        assert_int_equal(rs_cosim_monolithic_radius(r, cs, 30, 0, err), RS_OK);
+        mono[hi] = arf_get_d(arb_midref(r->rho), ARF_RND_NEAR);
+        assert_true(mono[hi] < 1.0);
+        assert_true(fabs(mono[hi] - exp(mre)) < 1e-13);
+        /* the same with physical parameters and H = 1/hden: identical radii
+         * (diag(1, H) similarity) */
+        set_li(cp, &Q);
+        fmpq_set_si(cp->H, 1, hden[hi]);
+        for (method = 0; method < 2; method++)
+            for (K = 0; K <= 2; K++) {
+                arb_t a;
+                double x = radius_d(cs, method, K, 30, r);
+                arb_init(a);
+                arb_set(a, r->rho);
+                radius_d(cp, method, K, 30, r);
+                assert_true(arb_overlaps(a, r->rho));
+                arb_clear(a);
+                dif[method][K][hi] = fabs(x - mono[hi]);
+            }
+    }
+    /* the monolithic radius -> 1 from below */
+    assert_true(mono[0] < mono[1] && mono[1] < mono[2] && mono[2] < 1.0);
+    /* co-simulation radius -> monolithic radius, faster than 1 - mono ~ h */
+    for (method = 0; method < 2; method++)
+        for (K = 0; K <= 2; K++) {
+            print_message("method %d K %d: |rho - rho_mono| = %.3e %.3e %.3e "
+                          "(1 - rho_mono = %.3e %.3e %.3e)\n", method, K,
+                          dif[method][K][0], dif[method][K][1],
+                          dif[method][K][2], 1 - mono[0], 1 - mono[1],
+                          1 - mono[2]);
+            /* the polynomial coupling error is O(h^{K+1}) over a step of
+             * length h, so the radius error per step is O(h^{K+2}) (the
+             * implicit K = 0 step is also first order in lambda): each
+             * decade of h must gain about K + 2 decades */
+            for (hi = 0; hi < 2; hi++) {
+                assert_true(dif[method][K][hi + 1] > 0.0);
+                assert_true(dif[method][K][hi + 1]
+                            <= 3.0 * pow(10.0, -(K + 2)) * dif[method][K][hi]);
+            }
+            assert_true(dif[method][K][2] < 1e-3 * (1 - mono[2]));
+        }
+    fmpq_mat_clear(Am);
+    rs_radius_clear(r);
+    rs_cosim_clear(cs);
+    rs_cosim_clear(cp);
+}
+
+/* ------------------------------------------------------------------ */
+/* (3) time-domain oracle                                               */
+
+#define ORC_SUB 500          /* RK4 substeps per macro step */
+#define ORC_MAXK 3
+
+typedef struct {
+    double c1, d1, am, ac, ad, acc, adc;
+} orc_model;
+
+static double orc_coupling(const orc_model *m, const double *z)
+{
+    return m->acc * m->c1 * (z[2] - z[0]) + m->adc * m->d1 * (z[3] - z[1]);
+}
+
+/* eq. (4) with lambda_c given: the two subsystems only see lambda */
+static void orc_rhs(const orc_model *m, const double *z, double lam,
+                    double *dz)
+{
+    dz[0] = z[1];
+    dz[1] = -m->c1 * z[0] - m->d1 * z[1] + lam;
+    dz[2] = z[3];
+    dz[3] = -(m->ac / m->am) * m->c1 * z[2] - (m->ad / m->am) * m->d1 * z[3]
+            - lam / m->am;
+}
+
+/* Lagrange basis value of node j among nodes[0..K] at t (product form) */
+static double orc_basis(const double *nodes, int K, int j, double t)
+{
+    double v = 1.0;
+    int i;
+    for (i = 0; i <= K; i++)
+        if (i != j)
+            v *= (t - nodes[i]) / (nodes[j] - nodes[i]);
+    return v;
+}
+
+typedef struct {
+    int K;
+    double tab[ORC_MAXK + 1][2 * ORC_SUB + 1]; /* basis at t = i/(2 SUB) */
+} orc_table;
+
+static void orc_table_fill(orc_table *T, const double *nodes, int K)
+{
+    int i, j;
+    T->K = K;
+    for (j = 0; j <= K; j++)
+        for (i = 0; i <= 2 * ORC_SUB; i++)
+            T->tab[j][i] = orc_basis(nodes, K, j, i / (2.0 * ORC_SUB));
+}
+
+/* z <- state at tau = 1 with lambda(tau) = sum_j vals[j] L_j(tau) */
+static void orc_integrate(const orc_model *m, double *z, const orc_table *T,
+                          const double *vals)
+{
+    double h = 1.0 / ORC_SUB, lam[3], k1[4], k2[4], k3[4], k4[4], y[4];
+    int s, i, j, q;
+    for (s = 0; s < ORC_SUB; s++) {
+        for (q = 0; q < 3; q++) {
+            lam[q] = 0.0;
+            for (j = 0; j <= T->K; j++)
+                lam[q] += vals[j] * T->tab[j][2 * s + q];
+        }
+        orc_rhs(m, z, lam[0], k1);
+        for (i = 0; i < 4; i++) y[i] = z[i] + 0.5 * h * k1[i];
+        orc_rhs(m, y, lam[1], k2);
+        for (i = 0; i < 4; i++) y[i] = z[i] + 0.5 * h * k2[i];
+        orc_rhs(m, y, lam[1], k3);
+        for (i = 0; i < 4; i++) y[i] = z[i] + h * k3[i];
+        orc_rhs(m, y, lam[2], k4);
+        for (i = 0; i < 4; i++)
+            z[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    }
+}
+
+/* Runs `steps` macro steps from a pseudo-random start; returns the growth
+ * per step estimated from the least-squares slope of window log-norms. */
+static double orc_growth(const orc_model *m, int method, int K, int steps,
+                         int burn, int W, unsigned seed)
+{
+    static orc_table Text, Tint;
+    double next[ORC_MAXK + 1], nint[ORC_MAXK + 1];
+    double z[4], lam[ORC_MAXK + 2], logscale = 0.0;
+    double *wv = malloc(sizeof(double) * (size_t) (steps / W + 1));
+    double acc = 0.0, ref = 0.0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int N, i, j, nw = 0, inw = 0;
+    unsigned s = seed;
+
+    for (j = 0; j <= K; j++) {
+        next[j] = -j;       /* T_N, T_{N-1}, ... */
+        nint[j] = 1 - j;    /* T_{N+1}, T_N, ... */
+    }
+    orc_table_fill(&Text, next, K);
+    orc_table_fill(&Tint, nint, K);
+    for (i = 0; i < 4; i++) {
+        s = s * 1103515245u + 12345u;
+        z[i] = ((s >> 8) % 2001) / 1000.0 - 1.0;
+    }
+    for (j = 0; j <= K; j++) {
+        s = s * 1103515245u + 12345u;
+        lam[j] = ((s >> 8) % 2001) / 1000.0 - 1.0;
+    }
+    lam[0] = orc_coupling(m, z);
+    for (N = 0; N < steps; N++) {
+        double zn[4], nrm = 0.0, ln;
+        if (method == RS_COSIM_EXPLICIT) {
+            memcpy(zn, z, sizeof zn);
+            orc_integrate(m, zn, &Text, lam);
+            for (j = K; j > 0; j--)
+                lam[j] = lam[j - 1];
+            lam[0] = orc_coupling(m, zn);
+        } else {
+            /* step 1: predictor (extrapolation through lam[0..K]) */
+            double zp[4], zs[4], vals[ORC_MAXK + 1], lp = 0.0, gp, gs, J,
+                   delta, lnew;
+            for (j = 0; j <= K; j++)
+                lp += lam[j] * orc_basis(next, K, j, 1.0);
+            memcpy(zp, z, sizeof zp);
+            orc_integrate(m, zp, &Text, lam);
+            gp = lp - orc_coupling(m, zp);
+            /* step 2: interpolation with lambda* = lp + delta, Jacobian by
+             * finite differences, linearised coupling equation (13) */
+            delta = 1e-2 * (fabs(lp) + fabs(z[0]) + fabs(z[1]) + fabs(z[2])
+                            + fabs(z[3])) + 1e-300;
+            vals[0] = lp + delta;
+            for (j = 1; j <= K; j++)
+                vals[j] = lam[j - 1];
+            memcpy(zs, z, sizeof zs);
+            orc_integrate(m, zs, &Tint, vals);
+            gs = vals[0] - orc_coupling(m, zs);
+            J = (gs - gp) / delta;
+            lnew = lp - gp / J;
+            /* step 3: corrector with the corrected coupling force */
+            vals[0] = lnew;
+            memcpy(zn, z, sizeof zn);
+            orc_integrate(m, zn, &Tint, vals);
+            for (j = K; j > 0; j--)
+                lam[j] = lam[j - 1];
+            lam[0] = lnew;
+        }
+        memcpy(z, zn, sizeof z);
+        for (i = 0; i < 4; i++)
+            nrm += z[i] * z[i];
+        for (j = 1; j <= K; j++)
+            nrm += lam[j] * lam[j];
+        nrm = sqrt(nrm);
+        ln = log(nrm) + logscale;
+        if (nrm > 1e50 || nrm < 1e-50) {
+            for (i = 0; i < 4; i++)
+                z[i] /= nrm;
+            for (j = 0; j <= K; j++)
+                lam[j] /= nrm;
+            logscale += log(nrm);
+        }
+        /* windows of W steps: 0.5 log sum ||s_N||^2 */
+        if (N >= burn) {
+            if (inw == 0)
+                ref = ln;
+            acc += exp(2 * (ln - ref));
+            if (++inw == W) {
+                wv[nw++] = ref + 0.5 * log(acc);
+                acc = 0.0;
+                inw = 0;
+            }
+        }
+    }
+    /* Hann-weighted least squares: the taper vanishes smoothly at both
+     * ends, so the residual oscillation of the window values (a complex
+     * dominant pair makes ||z_N|| quasi-periodic) leaks into the slope far
+     * less than with uniform weights */
+    {
+        double sw = 0.0;
+        for (i = 0; i < nw; i++) {
+            double w = sin(M_PI * (i + 0.5) / nw);
+            w *= w;
+            sw += w;
+            sx += w * i;
+            sy += w * wv[i];
+            sxx += w * (double) i * i;
+            sxy += w * i * wv[i];
+        }
+        free(wv);
+        return exp((sw * sxy - sx * sy) / (sw * sxx - sx * sx) / W);
+    }
+}
+
+typedef struct {
+    li_params p;
+    int method, K;
+    int steps, burn;
+} orc_case;
+
+static void test_time_domain_oracle(void **state)
+{
+    /* symmetric (all alphas 1) and unsymmetric (all alphas 10) models, a
+     * few (c1, d1), radius above and below 1; with all alphas equal the
+     * in-phase mode (x1 = x2) is untouched by the coupling and has radius
+     * e^{-d1/2}, so the points below 1 are chosen where the coupled mode
+     * dominates (or the generic model is used). */
+    static const orc_case cases[] = {
+        { { "4", "1", "1", "1", "1", "1", "1" }, 0, 0, 300, 60 },
+        { { "4", "1", "1", "1", "1", "1", "1" }, 1, 1, 400, 150 },
+        { { "4", "1", "1", "1", "1", "1", "1" }, 1, 2, 300, 60 },
+        { { "1/10", "1/10", "10", "10", "10", "10", "10" }, 0, 1, 600, 200 },
+        { { "1/10", "1/10", "10", "10", "10", "10", "10" }, 0, 2, 300, 60 },
+        { { "1", "1/2", "10", "10", "10", "10", "10" }, 1, 1, 500, 250 },
+        { { "1", "1/2", "10", "10", "10", "10", "10" }, 1, 3, 300, 60 },
+        /* subdominant pair at 0.9075 vs 0.9687: long burn-in */
+        { { "1/4", "1/10", "2", "3", "1/2", "1", "1" }, 0, 1, 1600, 600 },
+    };
+    rs_cosim_t cs;
+    rs_radius_t r;
+    size_t i;
+    (void) state;
+
+    rs_cosim_init(cs, 2, 2);
+    rs_radius_init(r);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const orc_case *c = cases + i;
+        orc_model m = { qd(c->p.c1), qd(c->p.d1), qd(c->p.am21),
+                        qd(c->p.ac21), qd(c->p.ad21), qd(c->p.acc1),
+                        qd(c->p.adc1) };
+        double rho, g, rel;
+        set_li(cs, &c->p);
+        rho = radius_d(cs, c->method, c->K, 20, r);
+        g = orc_growth(&m, c->method, c->K, c->steps, c->burn, 10, 12345u + i);
+        rel = fabs(g - rho) / rho;
+        print_message("oracle %zu (%s, K=%d, c1=%s d1=%s alpha_m=%s): "
+                      "certified %.12f, time domain %.12f, rel %.2e\n", i,
+                      c->method ? "implicit" : "explicit", c->K, c->p.c1,
+                      c->p.d1, c->p.am21, rho, g, rel);
+        assert_true(rel < 1e-6);
+    }
+    rs_radius_clear(r);
+    rs_cosim_clear(cs);
+}
+
+/* ------------------------------------------------------------------ */
+/* (4) 128 digits                                                      */
+
+static void test_128_digits(void **state)
+{
+    static const li_params P = { "1", "1/2", "10", "10", "10", "10", "10" };
+    rs_cosim_t cs;
+    rs_radius_t r;
+    rs_error_t err;
+    arb_t w, tol;
+    int method, K;
+    (void) state;
+
+    rs_cosim_init(cs, 2, 2);
+    rs_radius_init(r);
+    arb_init(w);
+    arb_init(tol);
+    set_li(cs, &P);
+    for (method = 0; method < 2; method++)
+        for (K = 0; K <= 2; K++) {
+            cs->method = method;
+            cs->order = K;
+            assert_int_equal(rs_cosim_radius(r, cs, 128, 0, err), RS_OK);
+            /* upper - lower < 10^-128 * rho */
+            arb_sub(w, r->upper, r->lower, 2048);
+            arb_set_ui(tol, 10);
+            arb_pow_ui(tol, tol, 128, 2048);
+            arb_div(tol, r->lower, tol, 2048);
+            assert_true(arb_lt(w, tol));
+            assert_true(arb_le(r->lower, r->upper));
+            assert_true(arb_contains(r->rho, r->lower)
+                        || arb_overlaps(r->rho, r->lower));
+        }
+    /* implicit K = 0 at this point: the in-phase mode, rho = e^{-d1/2} */
+    cs->method = RS_COSIM_IMPLICIT;
+    cs->order = 0;
+    assert_int_equal(rs_cosim_radius(r, cs, 128, 0, err), RS_OK);
+    arb_set_si(w, -1);
+    arb_mul_2exp_si(w, w, -2);
+    arb_exp(w, w, 1024);
+    assert_true(arb_overlaps(w, r->rho));
+    arb_clear(w);
+    arb_clear(tol);
+    rs_radius_clear(r);
+    rs_cosim_clear(cs);
+}
+
+/* ------------------------------------------------------------------ */
+/* (5) no coupling: max of the subsystems' exact radii                  */
+
+static void test_uncoupled(void **state)
+{
+    /* sub 1: x'' + x'/2 + x = 0, Re = -1/4; sub 2 (am 2, ac 1, ad 1/2):
+     * x'' + x'/8 + x/2 = 0, Re = -1/16 (both underdamped) */
+    static const li_params P = { "1", "1/2", "2", "1", "1/2", "0", "0" };
+    rs_cosim_t cs;
+    rs_radius_t r;
+    rs_error_t err;
+    arb_t t;
+    (void) state;
+
+    rs_cosim_init(cs, 2, 2);
+    rs_radius_init(r);
+    arb_init(t);
+    set_li(cs, &P);
+    cs->method = RS_COSIM_EXPLICIT;
+    cs->order = 0;
+    assert_int_equal(rs_cosim_radius(r, cs, 50, 0, err), RS_OK);
+    arb_set_si(t, -1);
+    arb_mul_2exp_si(t, t, -4);
+    arb_exp(t, t, 512);
+    assert_true(arb_overlaps(t, r->rho));
+    /* the recurrence route agrees here (k = 1, no spurious zero roots) */
+    assert_int_equal(rs_cosim_radius_recurrence(r, cs, 50, 0, err), RS_OK);
+    assert_true(arb_overlaps(t, r->rho));
+    /* swap dominance: sub 2 more damped (ad21 = 3: Re = -3/8) */
+    {
+        static const li_params Q = { "1", "1/2", "2", "1", "3", "0", "0" };
+        set_li(cs, &Q);
+        assert_int_equal(rs_cosim_radius(r, cs, 50, 0, err), RS_OK);
+        arb_set_si(t, -1);
+        arb_mul_2exp_si(t, t, -2);
+        arb_exp(t, t, 512);
+        assert_true(arb_overlaps(t, r->rho));
+    }
+    arb_clear(t);
+    rs_radius_clear(r);
+    rs_cosim_clear(cs);
+}
+
+/* the recurrence (block companion) route agrees with the minimal map where
+ * it certifies (k = 1 cases), and both agree with the monolithic radius
+ * where the in-phase mode dominates */
+static void test_routes_agree(void **state)
+{
+    static const li_params P = { "2", "1/2", "10", "10", "10", "10", "10" };
+    rs_cosim_t cs;
+    rs_radius_t r1, r2;
+    rs_error_t err;
+    int K;
+    (void) state;
+    rs_cosim_init(cs, 2, 2);
+    rs_radius_init(r1);
+    rs_radius_init(r2);
+    set_li(cs, &P);
+    cs->method = RS_COSIM_IMPLICIT;
+    for (K = 0; K <= 1; K++) {
+        cs->order = K;
+        assert_int_equal(rs_cosim_radius(r1, cs, 60, 0, err), RS_OK);
+        assert_int_equal(rs_cosim_radius_recurrence(r2, cs, 60, 0, err),
+                         RS_OK);
+        assert_true(arb_overlaps(r1->rho, r2->rho));
+    }
+    cs->method = RS_COSIM_EXPLICIT;
+    cs->order = 0;
+    assert_int_equal(rs_cosim_radius(r1, cs, 60, 0, err), RS_OK);
+    assert_int_equal(rs_cosim_radius_recurrence(r2, cs, 60, 0, err), RS_OK);
+    assert_true(arb_overlaps(r1->rho, r2->rho));
+    rs_radius_clear(r1);
+    rs_radius_clear(r2);
+    rs_cosim_clear(cs);
+}
+
+static void test_errors(void **state)
+{
+    rs_cosim_t cs;
+    rs_radius_t r;
+    rs_error_t err;
+    fmpq_t one, zero;
+    (void) state;
+    rs_cosim_init(cs, 2, 2);
+    rs_radius_init(r);
+    fmpq_init(one);
+    fmpq_init(zero);
+    fmpq_one(one);
+    assert_int_equal(rs_cosim_li_ff(cs, one, one, zero, one, one, one, one,
+                                    err), RS_ERR_INPUT);
+    assert_int_equal(rs_cosim_li_ff(cs, one, one, one, one, one, one, one,
+                                    err), RS_OK);
+    cs->order = 4;
+    assert_int_equal(rs_cosim_radius(r, cs, 10, 0, err), RS_ERR_INPUT);
+    cs->order = 2;
+    cs->method = 7;
+    assert_int_equal(rs_cosim_radius(r, cs, 10, 0, err), RS_ERR_INPUT);
+    cs->method = RS_COSIM_IMPLICIT;
+    fmpq_zero(cs->H);
+    assert_int_equal(rs_cosim_radius(r, cs, 10, 0, err), RS_ERR_INPUT);
+    fmpq_one(cs->H);
+    assert_int_equal(rs_cosim_radius(r, cs, 0, 0, err), RS_ERR_INPUT);
+    rs_cosim_set_dims(cs, 0, 2);
+    assert_int_equal(rs_cosim_radius(r, cs, 10, 0, err), RS_ERR_INPUT);
+    fmpq_clear(one);
+    fmpq_clear(zero);
+    rs_radius_clear(r);
+    rs_cosim_clear(cs);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_mono_eq5),
+        cmocka_unit_test(test_lagrange),
+        cmocka_unit_test(test_van_loan_scalar),
+        cmocka_unit_test(test_recurrence_consistency),
+        cmocka_unit_test(test_small_step_limit),
+        cmocka_unit_test(test_time_domain_oracle),
+        cmocka_unit_test(test_128_digits),
+        cmocka_unit_test(test_uncoupled),
+        cmocka_unit_test(test_routes_agree),
+        cmocka_unit_test(test_errors),
+    };
+    int rc = cmocka_run_group_tests(tests, NULL, NULL);
+    flint_cleanup();
+    return rc;
+}
