@@ -8,6 +8,7 @@
 #include "recstab/polyfmt.h"
 #include "recstab/bilinear.h"
 #include "recstab/cond.h"
+#include "recstab/builder.h"
 
 const char *const rs_analysis_names[] = {
     "charpoly", "expect", NULL
@@ -412,6 +413,15 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     size_t n = 0;
     slong i;
     while (t[n] && !isspace((unsigned char) t[n])) n++;
+    if (rs_builder_is_exact(run->c)) {
+        /* matrix-exponential entries: only certified numerics apply */
+        for (i = 0; rs_analysis_cosim[i].name != NULL; i++)
+            if (strlen(rs_analysis_cosim[i].name) == n && strncmp(rs_analysis_cosim[i].name, t, n) == 0)
+                return rs_analysis_cosim[i].fn(run, q, rs_req_skip_word(t));
+        return rs_req_error(run, q, t, RS_ERR_INPUT,
+                            "exact (analytic) subsystem integration gives a recurrence with matrix-exponential "
+                            "entries: only radius and stability apply, found '%s'", t);
+    }
     for (i = 0; table[i].name != NULL; i++)
         if (strlen(table[i].name) == n && strncmp(table[i].name, t, n) == 0)
             return table[i].fn(run, q, rs_req_skip_word(t));
@@ -492,7 +502,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
     /* an error in the equations must surface even when no analysis asks */
-    {
+    if (!rs_builder_is_exact(c)) {
         rs_scheme_t s;
         rs_scheme_init(s);
         r = rs_scheme_build(s, c, err);
@@ -521,7 +531,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
             json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
         json_object_set_new(d, "set", sets);
     }
-    if (opt->with_scheme) {
+    if (opt->with_scheme && !rs_builder_is_exact(c)) {
         json_t *sc = scheme_json(&run);
         if (sc == NULL) {
             json_decref(d);

@@ -68,6 +68,7 @@ typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
 extern const rs_analysis_entry_t rs_analysis_extra[];
 extern const rs_analysis_entry_t rs_analysis_numeric[];
 extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis_sweep.c: sweep, map */
+extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis_cosim.c: exact integration */
 
 /* Sign information for the parameters from the case's `assume` lines
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */

@@ -1,0 +1,470 @@
+/* analysis_cosim.c -- schemes whose subsystems are integrated exactly
+ * (`integrate S exact H`, applied-force coupling): the recurrence has
+ * matrix-exponential entries, so only the certified numeric analyses apply
+ * (radius, and the verdict the radius certifies). */
+#include <stdlib.h>
+#include <string.h>
+#include "recstab/analysis_impl.h"
+#include "recstab/builder.h"
+#include "recstab/cosim.h"
+#include "recstab/radius.h"
+
+static char *dupcat(const char *a, const char *b)
+{
+    char *s = malloc(strlen(a) + strlen(b) + 1);
+    strcpy(s, a);
+    strcat(s, b);
+    return s;
+}
+
+/* num/den of an expression of the synthetic evaluation case at the set values */
+typedef struct { const char *name; const fmpq *value; } val_t;
+typedef struct { slong n; val_t *v; } vals_t;
+
+static int eval_linear(fmpq_mpoly_t out, const rs_case_struct *c, const vals_t *vals, const rs_case_struct *tc,
+                       const rs_scheme_struct *ts, const char *text, const rs_loc_t *loc, rs_error_t err)
+{
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t den;
+    slong i;
+    int r;
+    memset(&src, 0, sizeof src);
+    src.file = loc->file;
+    src.text = text;
+    src.line = loc->line;
+    src.col = loc->col;
+    r = rs_expr_parse_all(&e, &src, err);
+    if (r != RS_OK) return r;
+    fmpq_mpoly_init(den, ts->ctx);
+    r = rs_scheme_eval_poly(out, den, ts, tc, e, 0, err);
+    rs_expr_free(e);
+    if (r == RS_OK) {
+        for (i = 0; i < vals->n; i++) {
+            slong k = rs_case_param_index(tc, vals->v[i].name);
+            fmpq_mpoly_evaluate_one_fmpq(out, out, k, vals->v[i].value, ts->ctx);
+            fmpq_mpoly_evaluate_one_fmpq(den, den, k, vals->v[i].value, ts->ctx);
+        }
+        for (i = 0; i < c->nparams; i++)
+            if (fmpq_mpoly_degree_si(out, i, ts->ctx) > 0 || fmpq_mpoly_degree_si(den, i, ts->ctx) > 0)
+                r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
+                                    "exact integration is numeric: set every parameter (still symbolic: %s)",
+                                    c->params[i].name);
+        if (r == RS_OK) {
+            fmpq_t d;
+            fmpq_init(d);
+            fmpq_mpoly_get_fmpq(d, den, ts->ctx);
+            if (fmpq_is_zero(d))
+                r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col, "division by zero%s", "");
+            else
+                fmpq_mpoly_scalar_div_fmpq(out, out, d, ts->ctx);
+            fmpq_clear(d);
+        }
+    }
+    fmpq_mpoly_clear(den, ts->ctx);
+    return r;
+}
+
+/* coefficient of variable v (degree <= 1 checked by the caller) */
+static void lin_coeff(fmpq_t q, const fmpq_mpoly_t p, slong v, const rs_scheme_struct *ts)
+{
+    fmpq_mpoly_t t;
+    ulong one = 1;
+    fmpq_mpoly_init(t, ts->ctx);
+    fmpq_mpoly_get_coeff_vars_ui(t, p, &v, &one, 1, ts->ctx);
+    if (fmpq_mpoly_is_fmpq(t, ts->ctx) && !fmpq_mpoly_is_zero(t, ts->ctx)) fmpq_mpoly_get_fmpq(q, t, ts->ctx);
+    else fmpq_zero(q);
+    fmpq_mpoly_clear(t, ts->ctx);
+}
+
+/* every term of degree exactly 1, in the allowed variables [lo, hi) or `extra` */
+static int check_linear(const fmpq_mpoly_t p, slong lo, slong hi, slong extra, const rs_scheme_struct *ts,
+                        const rs_loc_t *loc, const char *what, rs_error_t err)
+{
+    slong i, v, len = fmpq_mpoly_length(p, ts->ctx);
+    slong *e = flint_malloc(ts->nvars * sizeof(slong));
+    int r = RS_OK;
+    for (i = 0; i < len && r == RS_OK; i++) {
+        slong deg = 0, var = -1;
+        fmpq_mpoly_get_term_exp_si(e, p, i, ts->ctx);
+        for (v = 0; v < ts->nvars; v++) if (e[v]) { deg += e[v]; var = v; }
+        if (deg != 1)
+            r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
+                                "expected %s linear and homogeneous in the states (and the coupling force)", what);
+        else if (!((var >= lo && var < hi) || var == extra))
+            r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
+                                "applied-force coupling: %s may use the other subsystem only through the coupling "
+                                "force", what);
+    }
+    flint_free(e);
+    return r;
+}
+
+static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *vals, rs_error_t err)
+{
+    char *text = dupcat("param", ""), *tmp;
+    rs_case_t tc;
+    rs_scheme_t ts;
+    slong i, j, a, nstate[2], base[2], force;
+    int r = RS_OK;
+    fmpq_mpoly_t p;
+    fmpq_t q, h0;
+    if (c->nsubs != 2)
+        return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
+                               "exact integration with applied-force coupling needs two subsystems (found %ld)",
+                               (long) c->nsubs);
+    /* a synthetic case whose parameters are the parameters, the states and the force */
+    for (i = 0; i < c->nparams; i++) { tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->params[i].name); free(tmp); }
+    for (a = 0; a < 2; a++)
+        for (j = 0; j < c->subs[a].nstates; j++) {
+            tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->subs[a].states[j]); free(tmp);
+        }
+    tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->force_name); free(tmp);
+    tmp = dupcat(text, "\nchar lambda\n"); free(text); text = tmp;
+    /* the case's named expressions (e.g. c1 = lr1^2 + li1^2 for maps over eigenvalues) */
+    for (i = 0; i < c->nlets; i++) {
+        if (c->lets[i].shifted) continue;
+        tmp = dupcat(text, "let "); free(text); text = dupcat(tmp, c->lets[i].text); free(tmp);
+        tmp = dupcat(text, "\n"); free(text); text = tmp;
+    }
+    rs_case_init(tc);
+    rs_scheme_init(ts);
+    r = rs_case_parse_string(tc, c->path, text, strlen(text), err);
+    free(text);
+    if (r != RS_OK) { rs_case_clear(tc); return r; }
+    /* copy the lets so that state equations may use them */
+    r = rs_scheme_build(ts, tc, err);
+    if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
+    nstate[0] = c->subs[0].nstates;
+    nstate[1] = c->subs[1].nstates;
+    base[0] = c->nparams;
+    base[1] = c->nparams + nstate[0];
+    force = c->nparams + nstate[0] + nstate[1];
+    rs_cosim_set_dims(cs, nstate[0], nstate[1]);
+    fmpq_mpoly_init(p, ts->ctx);
+    fmpq_init(q);
+    fmpq_init(h0);
+    for (a = 0; a < 2 && r == RS_OK; a++) {
+        const rs_subsystem_t *s = &c->subs[a];
+        fmpq_mat_struct *A = a == 0 ? cs->A1 : cs->A2, *B = a == 0 ? cs->B1 : cs->B2;
+        for (j = 0; j < s->nstates && r == RS_OK; j++) {
+            const rs_deq_t *d = NULL;
+            slong k, q2;
+            int second = 0;
+            for (k = 0; k < s->ndeqs; k++)
+                if (strcmp(s->deqs[k].state, s->states[j]) == 0 && s->deqs[k].order == 1) d = &s->deqs[k];
+            /* X'' = f: X' is the next state; that state's derivative is f */
+            for (k = 0; k < s->ndeqs && d == NULL; k++)
+                if (s->deqs[k].order == 2 && j > 0 && strcmp(s->deqs[k].state, s->states[j - 1]) == 0) d = &s->deqs[k];
+            for (k = 0; k < s->ndeqs; k++)
+                if (s->deqs[k].order == 2 && strcmp(s->deqs[k].state, s->states[j]) == 0) second = 1;
+            if (second) {
+                if (j + 1 >= s->nstates) {
+                    r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
+                                        "declare the velocity state after %s", s->states[j]);
+                    break;
+                }
+                fmpq_one(fmpq_mat_entry(A, j, j + 1));
+                continue;
+            }
+            if (d == NULL) {
+                r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
+                                    "expected an equation %s' = ...", s->states[j]);
+                break;
+            }
+            r = eval_linear(p, c, vals, tc, ts, d->rhs, &d->loc, err);
+            if (r == RS_OK) r = check_linear(p, base[a], base[a] + nstate[a], force, ts, &d->loc, "a state equation", err);
+            for (q2 = 0; q2 < nstate[a] && r == RS_OK; q2++) {
+                lin_coeff(q, p, base[a] + q2, ts);
+                fmpq_set(fmpq_mat_entry(A, j, q2), q);
+            }
+            if (r == RS_OK) {
+                lin_coeff(q, p, force, ts);
+                fmpq_set(fmpq_mat_entry(B, j, 0), q);
+            }
+        }
+        /* the macro step */
+        if (r == RS_OK) {
+            r = eval_linear(p, c, vals, tc, ts, s->step, &s->intloc, err);
+            if (r == RS_OK) {
+                if (!fmpq_mpoly_is_fmpq(p, ts->ctx) || fmpq_mpoly_is_zero(p, ts->ctx))
+                    r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
+                                        "expected a positive number as the macro step%s", "");
+                else {
+                    fmpq_mpoly_get_fmpq(q, p, ts->ctx);
+                    if (a == 1 && !fmpq_equal(q, h0))
+                        r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
+                                            "both subsystems must use the same macro step%s", "");
+                    fmpq_set(h0, q);
+                }
+            }
+        }
+    }
+    if (r == RS_OK) {
+        r = eval_linear(p, c, vals, tc, ts, c->force_expr, &c->force_loc, err);
+        if (r == RS_OK) r = check_linear(p, base[0], force, -1, ts, &c->force_loc, "the coupling force", err);
+        for (j = 0; j < nstate[0] + nstate[1] && r == RS_OK; j++) {
+            lin_coeff(q, p, base[0] + j, ts);
+            fmpq_set(fmpq_mat_entry(cs->C, 0, j), q);
+        }
+    }
+    if (r == RS_OK) {
+        fmpq_set(cs->H, h0);
+        cs->method = strcmp(c->couple, "implicit") == 0 ? RS_COSIM_IMPLICIT : RS_COSIM_EXPLICIT;
+        cs->order = c->couple_order;
+        r = rs_cosim_check(cs, err);
+    }
+    fmpq_mpoly_clear(p, ts->ctx);
+    fmpq_clear(q);
+    fmpq_clear(h0);
+    rs_scheme_clear(ts);
+    rs_case_clear(tc);
+    return r;
+}
+
+/* the case's set values, overridden by (names, values) */
+static void vals_make(vals_t *vals, const rs_case_struct *c, const char *const *names, const fmpq *values, slong n)
+{
+    slong i, k;
+    vals->v = flint_malloc((c->nsets + n + 1) * sizeof(val_t));
+    vals->n = 0;
+    for (i = 0; i < c->nsets; i++) {
+        int over = 0;
+        for (k = 0; k < n; k++) if (strcmp(names[k], c->sets[i].name) == 0) over = 1;
+        if (over) continue;
+        vals->v[vals->n].name = c->sets[i].name;
+        vals->v[vals->n].value = c->sets[i].value;
+        vals->n++;
+    }
+    for (k = 0; k < n; k++) {
+        vals->v[vals->n].name = names[k];
+        vals->v[vals->n].value = values + k;
+        vals->n++;
+    }
+}
+
+int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
+{
+    vals_t vals;
+    int r;
+    vals_make(&vals, c, NULL, NULL, 0);
+    r = cosim_build(cs, c, &vals, err);
+    flint_free(vals.v);
+    return r;
+}
+
+static json_t *arb_str_json(const arb_t x, slong d)
+{
+    char *s = arb_get_str(x, d, ARB_STR_NO_RADIUS);
+    json_t *j = json_string(s);
+    flint_free(s);
+    return j;
+}
+
+static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
+{
+    rs_cosim_t cs;
+    rs_radius_t rr, rm;
+    slong digits = run->opt->default_digits;
+    json_t *o;
+    int r;
+    const char *d = strstr(rest, "digits=");
+    if (d != NULL) digits = atol(d + 7);
+    if (digits < 1 || digits > 20000)
+        return rs_req_error(run, q, rest, RS_ERR_LIMIT, "digits= expects 1 to 20000 (limit), found '%s'", rest);
+    rs_cosim_init(cs, 1, 1);
+    r = rs_cosim_from_case(cs, run->c, run->err);
+    if (r != RS_OK) { rs_cosim_clear(cs); return r; }
+    rs_radius_init(rr);
+    rs_radius_init(rm);
+    r = rs_cosim_radius(rr, cs, digits, run->opt->max_prec, run->err);
+    if (r == RS_OK) r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
+    if (r == RS_OK) {
+        arb_t one;
+        arb_init(one);
+        arb_one(one);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
+        json_object_set_new(o, "method", json_string("exact subsystem integration (matrix exponentials, Arb), "
+                                                     "certified eigenvalues of the one-step map"));
+        json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
+                                                     "order", (json_int_t) cs->order));
+        json_object_set_new(o, "certified", json_true());
+        json_object_set_new(o, "lower", arb_str_json(rr->lower, digits + 5));
+        json_object_set_new(o, "upper", arb_str_json(rr->upper, digits + 5));
+        json_object_set_new(o, "rho", arb_str_json(rr->rho, digits));
+        json_object_set_new(o, "digits", json_integer(digits));
+        json_object_set_new(o, "precision_bits", json_integer(rr->prec));
+        json_object_set_new(o, "monolithic_rho", arb_str_json(rm->rho, digits));
+        if (arb_lt(rr->upper, one)) json_object_set_new(o, "status", json_string("stable"));
+        else if (arb_gt(rr->lower, one)) json_object_set_new(o, "status", json_string("unstable"));
+        else json_object_set_new(o, "status", json_string("undecided"));
+        json_object_set_new(o, "decided_by", json_string("certified"));
+        {
+            json_t *sets = json_object();
+            slong i;
+            for (i = 0; i < run->c->nsets; i++)
+                json_object_set_new(sets, run->c->sets[i].name, rs_json_fmpq(run->c->sets[i].value));
+            json_object_set_new(o, "substituted", sets);
+        }
+        json_array_append_new(run->results, o);
+        arb_clear(one);
+    } else if (run->err->file[0] == '\0') {
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "%s", run->err->msg);
+        r = rs_req_error(run, q, q->text, r, "radius: %s", msg);
+    }
+    rs_radius_clear(rr);
+    rs_radius_clear(rm);
+    rs_cosim_clear(cs);
+    return r;
+}
+
+static int an_cosim_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    return an_cosim(run, q, rest, 0);
+}
+
+static int an_cosim_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    return an_cosim(run, q, rest, 1);
+}
+
+/* map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]: certified radius on a grid
+ * (same table layout as the polynomial maps of analysis_sweep.c) */
+static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    char n1[80], n2[80], a1[64], b1[64], a2[64], b2[64], of[32] = "radius";
+    long K1, K2;
+    fmpq_t A[2], B[2];
+    rs_error_t e2;
+    slong i, j, idx, counts[3] = {0, 0, 0};
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f;
+    json_t *o, *cols;
+    int r = RS_OK, nf;
+    const char *cn[] = {"index", "i", "j", NULL, NULL, NULL, NULL, "verdict", "code", "radius", "radius_lower",
+                        "radius_upper", "decided_by"};
+    char e1n[96], e2n[96];
+    nf = sscanf(rest, "%79s %63s %63s %ld , %79s %63s %63s %ld of %31s", n1, a1, b1, &K1, n2, a2, b2, &K2, of);
+    if (nf < 8)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected 'map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]', found '%s'", rest);
+    if (strcmp(of, "radius") != 0 && strcmp(of, "stability") != 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected 'of radius' or 'of stability', found '%s'", of);
+    if (rs_case_param_index(run->c, n1) < 0 || rs_case_param_index(run->c, n2) < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected two parameters of the case, found '%s'", rest);
+    if (K1 < 2 || K2 < 2 || K1 * K2 > 1000000)
+        return rs_req_error(run, q, rest, RS_ERR_LIMIT,
+                            "map size: 2 to 1000 points per axis and at most 1000000 points in all, found '%s'", rest);
+    for (i = 0; i < 2; i++) { fmpq_init(A[i]); fmpq_init(B[i]); }
+    rs_error_init(e2);
+    if (rs_expr_parse_number(A[0], a1, e2) || rs_expr_parse_number(B[0], b1, e2)
+        || rs_expr_parse_number(A[1], a2, e2) || rs_expr_parse_number(B[1], b2, e2)) {
+        for (i = 0; i < 2; i++) { fmpq_clear(A[i]); fmpq_clear(B[i]); }
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected numbers for the map ranges: %s", e2->msg);
+    }
+    snprintf(e1n, sizeof e1n, "%s_exact", n1);
+    snprintf(e2n, sizeof e2n, "%s_exact", n2);
+    cn[3] = n1; cn[4] = n2; cn[5] = e1n; cn[6] = e2n;
+    cols = json_array();
+    f = open_memstream(&buf, &len);
+    for (i = 0; i < 13; i++) {
+        json_array_append_new(cols, json_string(cn[i]));
+        fprintf(f, "%s%s", i ? "," : "", cn[i]);
+    }
+    fputc('\n', f);
+    idx = 0;
+    for (j = 0; j < K2 && r == RS_OK; j++)
+        for (i = 0; i < K1 && r == RS_OK; i++, idx++) {
+            fmpq vv[2];
+            const char *names[2];
+            vals_t vals;
+            rs_cosim_t cs;
+            rs_radius_t rr;
+            fmpq_t t;
+            char *x1, *x2;
+            int verdict = -1;
+            fmpq_init(vv + 0); fmpq_init(vv + 1); fmpq_init(t);
+            /* x = A + (B - A) i / (K - 1) */
+            fmpq_sub(t, B[0], A[0]); fmpq_mul_si(t, t, i); {
+                fmpz_t d;
+                fmpz_init_set_si(d, K1 - 1);
+                fmpq_div_fmpz(t, t, d);
+                fmpz_clear(d);
+            }
+            fmpq_add(vv + 0, A[0], t);
+            fmpq_sub(t, B[1], A[1]); fmpq_mul_si(t, t, j); {
+                fmpz_t d;
+                fmpz_init_set_si(d, K2 - 1);
+                fmpq_div_fmpz(t, t, d);
+                fmpz_clear(d);
+            }
+            fmpq_add(vv + 1, A[1], t);
+            names[0] = n1; names[1] = n2;
+            vals_make(&vals, run->c, names, vv, 2);
+            rs_cosim_init(cs, 1, 1);
+            rs_radius_init(rr);
+            r = cosim_build(cs, run->c, &vals, run->err);
+            x1 = fmpq_get_str(NULL, 10, vv + 0);
+            x2 = fmpq_get_str(NULL, 10, vv + 1);
+            fprintf(f, "%ld,%ld,%ld,%.17g,%.17g,%s,%s,", (long) idx, (long) i, (long) j, fmpq_get_d(vv + 0),
+                    fmpq_get_d(vv + 1), x1, x2);
+            if (r == RS_OK) {
+                int rr_ok = rs_cosim_radius(rr, cs, 6, run->opt->max_prec < 1024 ? run->opt->max_prec : 1024, run->err);
+                if (rr_ok == RS_OK) {
+                    arb_t one;
+                    arb_init(one);
+                    arb_one(one);
+                    verdict = arb_lt(rr->upper, one) ? 0 : arb_gt(rr->lower, one) ? 2 : 1;
+                    counts[verdict]++;
+                    fprintf(f, "%s,%d,%.17g,%.17g,%.17g,certified\n",
+                            verdict == 0 ? "stable" : verdict == 2 ? "unstable" : "undecided", verdict,
+                            arf_get_d(arb_midref(rr->rho), ARF_RND_NEAR), arf_get_d(arb_midref(rr->lower), ARF_RND_DOWN),
+                            arf_get_d(arb_midref(rr->upper), ARF_RND_UP));
+                    arb_clear(one);
+                } else {
+                    rs_error_init(run->err);
+                    fprintf(f, "undefined,-1,,,,\n");
+                }
+            }
+            flint_free(x1); flint_free(x2);
+            rs_radius_clear(rr);
+            rs_cosim_clear(cs);
+            flint_free(vals.v);
+            fmpq_clear(vv + 0); fmpq_clear(vv + 1); fmpq_clear(t);
+        }
+    fclose(f);
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("map"));
+        json_object_set_new(o, "params", json_pack("[s,s]", n1, n2));
+        json_object_set_new(o, "ranges", json_pack("[[o,o,I],[o,o,I]]", rs_json_fmpq(A[0]), rs_json_fmpq(B[0]),
+                                                   (json_int_t) K1, rs_json_fmpq(A[1]), rs_json_fmpq(B[1]), (json_int_t) K2));
+        json_object_set_new(o, "grid", json_pack("[I,I]", (json_int_t) K1, (json_int_t) K2));
+        json_object_set_new(o, "of", json_string("radius"));
+        json_object_set_new(o, "points", json_integer(K1 * K2));
+        json_object_set_new(o, "computed", json_integer(K1 * K2));
+        json_object_set_new(o, "verdicts", json_pack("{s:I,s:I,s:I}", "stable", (json_int_t) counts[0], "undecided",
+                                                     (json_int_t) counts[1], "unstable", (json_int_t) counts[2]));
+        json_object_set_new(o, "decided_by", json_pack("{s:I}", "certified", (json_int_t) (counts[0] + counts[1] + counts[2])));
+        json_object_set_new(o, "columns", cols);
+        json_object_set_new(o, "text", json_string(q->text));
+        json_object_set_new(o, "table", json_string(buf));
+        json_object_set_new(o, "csv", json_null());
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(cols);
+    }
+    free(buf);
+    for (i = 0; i < 2; i++) { fmpq_clear(A[i]); fmpq_clear(B[i]); }
+    return r;
+}
+
+const rs_analysis_entry_t rs_analysis_cosim[] = {
+    {"map", an_cosim_map},
+    {"radius", an_cosim_radius},
+    {"stability", an_cosim_stability},
+    {NULL, NULL}
+};
