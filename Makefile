@@ -32,7 +32,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 LIBRS  := $(BUILD)/librecstab.a
 BIN    := $(BUILD)/recstab
 
-.PHONY: all deps check test demo install clean check-sanitize bench mpi
+.PHONY: all deps check test demo install clean check-sanitize bench figures mpi
 
 all: $(LIBRS) $(BIN)
 
@@ -159,3 +159,8 @@ check-valgrind: deps
 
 check-long: $(BUILD)/tests/test_property
 	RS_PROPERTY_N=100000 $(BUILD)/tests/test_property
+
+# recstab's versions of the source documents' figures (docs/figures/)
+figures: deps
+	@$(MAKE) --no-print-directory all
+	sh docs/make-figures.sh
