@@ -24,7 +24,7 @@ done
 # omega2 = sqrt(21) for kc/k1 = 10), mixed schemes (backward Euler on subsystem 2)
 # against GS12 with forward / backward Euler on both; dc = 0.2.
 $RS --plot "$OUT/olivier-fig12-4.png" --set kc=10 --set dc=1/5 \
-    --analyse "sweep h from 1/1000 to 1/5 steps 120 log of modes reference=1,4.58257569495584" \
+    --analyse "sweep h from 1/1000 to 1/5 steps 120 log of modes h=h reference=1,4.58257569495584" \
     $O-GS12-ee-ei.case $O-J-ee-ei.case $O-GS12-ee-ee.case $O-GS12-ei-ei.case > /dev/null || [ $? -le 1 ]
 
 # Fig. 12.5: stability over (h, dc) with kc/k1 = 10: GS12 (a, b) and J (c, d),

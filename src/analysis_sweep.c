@@ -994,6 +994,9 @@ static int parse_modes_opts(job_t *J, rs_run_t *run, const rs_request_t *q, cons
             return rs_req_error(run, q, t, RS_ERR_INPUT, "expected an option (h=, reference=), found '%s'", t);
         }
         if (r != RS_OK) return r;
+        /* the expression parser stops after trailing blanks: the next option
+         * may already start here */
+        if (end > t && (end[-1] == ' ' || end[-1] == '\t')) end--;
         if (*end != '\0' && *end != ' ' && *end != '\t')
             return rs_req_error(run, q, end, RS_ERR_INPUT, "expected a space or the end after the value, found '%s'",
                                 end);

@@ -379,7 +379,7 @@ static void r_modes(FILE *out, const json_t *o)
             const json_t *e = json_array_get(m, i);
             char buf[400];
             if (jstr(e, "sigma") == NULL) continue;
-            snprintf(buf, sizeof buf, "sigma %.12s omega %.12s damping %.12s%s%.12s", jstr(e, "sigma"),
+            snprintf(buf, sizeof buf, "sigma %s omega %s damping %s%s%s", jstr(e, "sigma"),
                      jstr(e, "omega"), jstr(e, "damping_ratio"), jstr(e, "frequency_error") ? " freq.error " : "",
                      jstr(e, "frequency_error") ? jstr(e, "frequency_error") : "");
             line(out, i == 0 ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
