@@ -413,6 +413,14 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     size_t n = 0;
     slong i;
     while (t[n] && !isspace((unsigned char) t[n])) n++;
+    if (run->c->numeric_recurrence) {
+        for (i = 0; rs_analysis_recurrence[i].name != NULL; i++)
+            if (strlen(rs_analysis_recurrence[i].name) == n && strncmp(rs_analysis_recurrence[i].name, t, n) == 0)
+                return rs_analysis_recurrence[i].fn(run, q, rs_req_skip_word(t));
+        return rs_req_error(run, q, t, RS_ERR_INPUT,
+                            "a recurrence with non-polynomial entries (exp, sin, ...) is numeric: only radius and "
+                            "stability apply, found '%s'", t);
+    }
     if (rs_builder_is_exact(run->c)) {
         /* matrix-exponential entries: only certified numerics apply */
         for (i = 0; rs_analysis_cosim[i].name != NULL; i++)
@@ -502,7 +510,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
     /* an error in the equations must surface even when no analysis asks */
-    if (!rs_builder_is_exact(c)) {
+    if (!rs_builder_is_exact(c) && !c->numeric_recurrence) {
         rs_scheme_t s;
         rs_scheme_init(s);
         r = rs_scheme_build(s, c, err);
@@ -531,7 +539,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
             json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
         json_object_set_new(d, "set", sets);
     }
-    if (opt->with_scheme && !rs_builder_is_exact(c)) {
+    if (opt->with_scheme && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
         json_t *sc = scheme_json(&run);
         if (sc == NULL) {
             json_decref(d);

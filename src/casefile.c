@@ -6,6 +6,7 @@
 #include <string.h>
 #include "recstab/casefile.h"
 #include "recstab/builder.h"
+#include "recstab/recurrence.h"
 
 static char *dupstr(const char *s)
 {
@@ -108,6 +109,17 @@ void rs_case_clear(rs_case_t c)
     flint_free(c->force_name); flint_free(c->force_expr);
     loc_clear(&c->force_loc);
     flint_free(c->emitted);
+    for (i = 0; i < c->nrec; i++) {
+        slong k;
+        for (k = 0; k < c->rec[i].rows * c->rec[i].cols; k++) {
+            rs_expr_free(c->rec[i].entries[k]);
+            flint_free(c->rec[i].texts[k]);
+        }
+        flint_free(c->rec[i].entries);
+        flint_free(c->rec[i].texts);
+        loc_clear(&c->rec[i].loc);
+    }
+    flint_free(c->rec);
     memset(c, 0, sizeof(rs_case_struct));
 }
 
@@ -622,6 +634,8 @@ static int statement(ctx_t *x)
         r = rs_builder_statement(x->c, word, &x->src, i, x->err);
     } else if (strcmp(word, "include") == 0) {
         r = st_include(x, i);
+    } else if (strcmp(word, "recurrence") == 0) {
+        r = rs_recurrence_statement(x->c, &x->src, i, x->err);
     } else {
         r = expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, analyse, expect, claim)");
     }
@@ -748,6 +762,8 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
     r = parse_text(c, path, text, len, err);
     if (r == RS_OK && c->include_depth == 0)
         r = rs_builder_expand(c, err);
+    if (r == RS_OK && c->include_depth == 0)
+        r = rs_recurrence_expand(c, err);
     return r;
 }
 

@@ -225,6 +225,27 @@ static rs_expr_t *parse_primary(parser_t *p)
         e->name[j - p->pos] = '\0';
         p->pos = j;
         skip_ws(p);
+        if (t[p->pos] == '(') {
+            /* a function call NAME(EXPR); meaning is checked by the evaluators */
+            rs_expr_t *arg;
+            size_t lp = p->pos;
+            p->pos++;
+            arg = parse_expr(p);
+            if (arg == NULL) { rs_expr_free(e); return NULL; }
+            skip_ws(p);
+            if (t[p->pos] != ')') {
+                perr(p, p->pos, "')' to close the function call");
+                rs_expr_free(arg);
+                rs_expr_free(e);
+                return NULL;
+            }
+            p->pos++;
+            (void) lp;
+            e->kind = RS_EXPR_CALL;
+            e->a = arg;
+            p->height = p->height + 1;
+            return e;
+        }
         if (t[p->pos] == '[') {
             slong k = 0, sign = 1;
             size_t lb = p->pos;
@@ -452,6 +473,9 @@ int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src, rs_err
     if (e->kind == RS_EXPR_NAME)
         return rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
                                "expected a number, found the name '%s'", e->name);
+    if (e->kind == RS_EXPR_CALL)
+        return rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                               "expected an exact number, found the function call %s(...)", e->name);
     fmpq_init(a); fmpq_init(b);
     r = rs_expr_eval_const(a, e->a, src, err);
     if (r == RS_OK && e->b != NULL)

@@ -392,6 +392,10 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
         return RS_OK;
     case RS_EXPR_NAME:
         return eval_name(out, e, x);
+    case RS_EXPR_CALL:
+        return err_at(x, e, RS_ERR_INPUT,
+                      "the function %s(...) is not polynomial: exact analyses need polynomial entries "
+                      "(a numeric `recurrence` case allows it for radius)", e->name);
     default:
         break;
     }

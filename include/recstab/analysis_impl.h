@@ -69,6 +69,7 @@ extern const rs_analysis_entry_t rs_analysis_extra[];
 extern const rs_analysis_entry_t rs_analysis_numeric[];
 extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis_sweep.c: sweep, map */
 extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis_cosim.c: exact integration */
+extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis_recurrence.c: numeric recurrences */
 
 /* Sign information for the parameters from the case's `assume` lines
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */

@@ -20,7 +20,8 @@ typedef enum {
     RS_EXPR_NUM,   /* exact rational */
     RS_EXPR_NAME,  /* identifier, optionally shifted */
     RS_EXPR_ADD, RS_EXPR_SUB, RS_EXPR_MUL, RS_EXPR_DIV, RS_EXPR_POW,
-    RS_EXPR_NEG
+    RS_EXPR_NEG,
+    RS_EXPR_CALL   /* NAME(EXPR): exp, log, sqrt, sin, cos, ... (numeric only) */
 } rs_expr_kind_t;
 
 typedef struct rs_expr_struct {

@@ -1,0 +1,43 @@
+/* recurrence.h -- matrix recurrences A_K z[n+K] + ... + A_0 z[n] = 0 given
+ * directly in a case file:
+ *
+ *     recurrence 1 = [1, 0; 0, 1]
+ *     recurrence 0 = [-exp(-a*h), 0; -h*sin(w), -1/2]
+ *
+ * With polynomial entries the terms become ordinary equations (every exact
+ * analysis applies).  Entries with functions (exp, log, sqrt, sin, cos, tan,
+ * atan, sinh, cosh, tanh) or the constant pi are evaluated in Arb at the set
+ * values, and only the certified numerics apply (block companion matrix). */
+#ifndef RECSTAB_RECURRENCE_H
+#define RECSTAB_RECURRENCE_H
+
+#include <arb.h>
+#include <acb_mat.h>
+#include "recstab/error.h"
+#include "recstab/casefile.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Parses `recurrence K = [e11, e12; e21, e22]` (src->text, i after the
+ * keyword) into c->rec. */
+int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error_t err);
+
+/* After parsing: checks the terms, and either appends the equivalent unknowns
+ * and equations (polynomial entries) or marks the case numeric. */
+int rs_recurrence_expand(rs_case_t c, rs_error_t err);
+
+/* The matrices A[0..K] (K = largest shift; acb_mat initialised here, n x n)
+ * at precision prec with the case's set values (and extra values, may be
+ * NULL).  Returns RS_OK or an error naming an unset parameter. */
+int rs_recurrence_matrices(acb_mat_struct **A, slong *K, const rs_case_t c, slong prec, rs_error_t err);
+
+/* Evaluates an expression in ball arithmetic; names are looked up among the
+ * case's parameters with set values (pi is the constant). */
+int rs_recurrence_eval(arb_t out, const rs_expr_t *e, const rs_case_t c, slong prec, rs_error_t err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

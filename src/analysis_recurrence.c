@@ -1,0 +1,82 @@
+/* analysis_recurrence.c -- numeric matrix recurrences (entries with exp,
+ * sin, ...): certified spectral radius from the block companion matrix, the
+ * entries re-evaluated at doubled precision until it certifies. */
+#include <stdlib.h>
+#include <string.h>
+#include "recstab/analysis_impl.h"
+#include "recstab/recurrence.h"
+#include "recstab/radius.h"
+
+static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
+{
+    slong digits = run->opt->default_digits, prec, K = 0, i;
+    const char *d = strstr(rest, "digits=");
+    rs_radius_t rr;
+    json_t *o;
+    int r = RS_ERR_UNDECIDED;
+    if (d != NULL) digits = atol(d + 7);
+    if (digits < 1 || digits > 20000)
+        return rs_req_error(run, q, rest, RS_ERR_LIMIT, "digits= expects 1 to 20000 (limit), found '%s'", rest);
+    rs_radius_init(rr);
+    for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec; prec *= 2) {
+        acb_mat_struct *A = NULL;
+        r = rs_recurrence_matrices(&A, &K, run->c, prec, run->err);
+        if (r == RS_OK) r = rs_radius_matrix_poly(rr, A, K, digits, run->opt->max_prec, run->err);
+        for (i = 0; A && i <= K; i++) acb_mat_clear(A + i);
+        flint_free(A);
+        if (r != RS_ERR_UNDECIDED && r != RS_ERR_LIMIT) break;
+        rs_error_init(run->err);
+    }
+    if (r != RS_OK) {
+        rs_radius_clear(rr);
+        if (run->err->file[0] == '\0') {
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s", run->err->msg[0] ? run->err->msg : "not certified within the precision limit");
+            return rs_req_error(run, q, q->text, r == RS_ERR_UNDECIDED ? RS_ERR_LIMIT : r, "radius: %s", msg);
+        }
+        return r;
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
+    json_object_set_new(o, "method", json_string("block companion matrix of the recurrence, entries in Arb "
+                                                 "(certified eigenvalue enclosures)"));
+    json_object_set_new(o, "certified", json_true());
+    {
+        char *s1 = arb_get_str(rr->lower, digits + 5, ARB_STR_NO_RADIUS);
+        char *s2 = arb_get_str(rr->upper, digits + 5, ARB_STR_NO_RADIUS);
+        char *s3 = arb_get_str(rr->rho, digits, ARB_STR_NO_RADIUS);
+        json_object_set_new(o, "lower", json_string(s1));
+        json_object_set_new(o, "upper", json_string(s2));
+        json_object_set_new(o, "rho", json_string(s3));
+        flint_free(s1); flint_free(s2); flint_free(s3);
+    }
+    json_object_set_new(o, "digits", json_integer(digits));
+    json_object_set_new(o, "precision_bits", json_integer(rr->prec));
+    {
+        arb_t one;
+        arb_init(one);
+        arb_one(one);
+        json_object_set_new(o, "status", json_string(arb_lt(rr->upper, one) ? "stable"
+                                                      : arb_gt(rr->lower, one) ? "unstable" : "undecided"));
+        arb_clear(one);
+    }
+    json_object_set_new(o, "decided_by", json_string("certified"));
+    {
+        json_t *sets = json_object();
+        for (i = 0; i < run->c->nsets; i++)
+            json_object_set_new(sets, run->c->sets[i].name, rs_json_fmpq(run->c->sets[i].value));
+        json_object_set_new(o, "substituted", sets);
+    }
+    json_array_append_new(run->results, o);
+    rs_radius_clear(rr);
+    return RS_OK;
+}
+
+static int an_rec_radius(rs_run_t *run, const rs_request_t *q, const char *rest) { return an_rec(run, q, rest, 0); }
+static int an_rec_stability(rs_run_t *run, const rs_request_t *q, const char *rest) { return an_rec(run, q, rest, 1); }
+
+const rs_analysis_entry_t rs_analysis_recurrence[] = {
+    {"radius", an_rec_radius},
+    {"stability", an_rec_stability},
+    {NULL, NULL}
+};
