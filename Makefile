@@ -15,7 +15,7 @@ LIBS    := -fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp 
 VERSION := 0.1.0
 
 DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
-            libjansson-dev libcmocka-dev gnuplot-nox libclang-rt-14-dev valgrind
+            libjansson-dev libcmocka-dev gnuplot-nox libclang-rt-14-dev clang valgrind
 
 # MPI build (make mpi): installed by `make mpi` only, not by `make deps`
 MPI_PKGS := libopenmpi-dev openmpi-bin
