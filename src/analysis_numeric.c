@@ -271,6 +271,9 @@ static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs
     return r;
 }
 
+void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
+                        slong nref, slong prec);
+
 static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     rs_variant_t *v;
@@ -278,7 +281,7 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     rs_radius_t rr;
     const char *ref, *hs;
     arb_t h, *refs = NULL;
-    slong nref = 0, i, k, prec = 128, digits = 15;
+    slong nref = 0, i, prec = 128, digits = 15;
     int *principal;
     json_t *o, *modes, *spur;
     int r;
@@ -339,39 +342,7 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     /* principal roots: for each reference w0, the root with Im >= 0 closest to
      * exp(i w0 h) and its conjugate; every other root is spurious */
     principal = calloc((size_t) rr->nroots + 1, sizeof(int));
-    for (k = 0; k < nref; k++) {
-        acb_t target, d;
-        arb_t best, dist;
-        slong bi = -1;
-        acb_init(target); acb_init(d);
-        arb_init(best); arb_init(dist);
-        arb_mul(acb_imagref(target), refs[k], h, prec);
-        acb_exp(target, target, prec);      /* exp(i w0 h) */
-        for (i = 0; i < rr->nroots; i++) {
-            if (principal[i] || arf_sgn(arb_midref(acb_imagref(rr->roots + i))) < 0) continue;
-            acb_sub(d, rr->roots + i, target, prec);
-            acb_abs(dist, d, prec);
-            if (bi < 0 || arf_cmp(arb_midref(dist), arb_midref(best)) < 0) { bi = i; arb_set(best, dist); }
-        }
-        if (bi >= 0) {
-            principal[bi] = (int) (k + 1);
-            /* its conjugate (for a complex root) */
-            for (i = 0; i < rr->nroots; i++) {
-                acb_t cj;
-                acb_init(cj);
-                acb_conj(cj, rr->roots + bi);
-                if (i != bi && !principal[i] && acb_overlaps(cj, rr->roots + i)
-                    && !arb_is_zero(acb_imagref(rr->roots + bi))) {
-                    principal[i] = (int) (k + 1);
-                    acb_clear(cj);
-                    break;
-                }
-                acb_clear(cj);
-            }
-        }
-        acb_clear(target); acb_clear(d);
-        arb_clear(best); arb_clear(dist);
-    }
+    rs_modes_principal(principal, rr, h, (arb_srcptr) refs, nref, prec);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("modes"));
     json_object_set_new(o, "h", arb_json(h, digits));
