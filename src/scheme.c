@@ -393,6 +393,10 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
     case RS_EXPR_NAME:
         return eval_name(out, e, x);
     case RS_EXPR_CALL:
+        if (rs_case_unknown_index(x->c, e->name) >= 0 || rs_case_let_index(x->c, e->name) >= 0
+            || rs_case_param_index(x->c, e->name) >= 0)
+            return err_at(x, e, RS_ERR_INPUT,
+                          "expected a shift in square brackets after '%s', as in x[n+1], found '('", e->name);
         return err_at(x, e, RS_ERR_INPUT,
                       "the function %s(...) is not polynomial: exact analyses need polynomial entries "
                       "(a numeric `recurrence` case allows it for radius)", e->name);

@@ -163,7 +163,7 @@ static void test_syntax(void **state)
     expect_error("param w\nunknown x\neq x[n+1] = (w*x[n]\n", 3, 20, "expected ')'");
     expect_error("frobnicate w\n", 1, 1, "statement keyword");
     expect_error("unknown x\neq x[n+1] x[n]\n", 2, 11, "'='");
-    expect_error("unknown x\neq x(n+1) = x[n]\n", 2, 5, "expected '='");
+    expect_error("unknown x\neq x(n+1) = x[n]\n", 2, 4, "square brackets");
     expect_error("unknown x\neq x[n+1] = x\n", 2, 13, "expected a shift");
 }
 
