@@ -23,7 +23,7 @@ int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error
 {
     const char *t = src->text;
     rs_recterm_t term;
-    slong k = 0, ncols = -1, col = 0, cap = 0;
+    slong k = 0, ncols = -1, col = 0, cap = 0, nent = 0;
     size_t p0;
     int r = RS_OK;
     memset(&term, 0, sizeof term);
@@ -52,23 +52,22 @@ int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error
     }
     for (;;) {
         rs_expr_t *e = NULL;
-        size_t s0;
+        size_t s0, e1;
         while (t[i] == ' ' || t[i] == '\t') i++;
         s0 = i;
         r = rs_expr_parse(&e, src, &i, err);
         if (r != RS_OK) break;
-        if (term.rows * 1 + col >= 0 && (term.rows - 1) * (ncols < 0 ? 0 : ncols) + col + 1 > cap) {
+        /* entries arrive in row-major order: append */
+        if (nent + 1 > cap) {
             cap = 2 * cap + 4;
             term.entries = flint_realloc(term.entries, cap * sizeof(rs_expr_t *));
             term.texts = flint_realloc(term.texts, cap * sizeof(char *));
         }
-        {
-            slong idx = (term.rows - 1) * (ncols < 0 ? 0 : ncols) + col;
-            size_t e1 = i;
-            while (e1 > s0 && (t[e1 - 1] == ' ' || t[e1 - 1] == '\t')) e1--;
-            term.entries[idx] = e;
-            term.texts[idx] = dupn(t + s0, e1 - s0);
-        }
+        e1 = i;
+        while (e1 > s0 && (t[e1 - 1] == ' ' || t[e1 - 1] == '\t')) e1--;
+        term.entries[nent] = e;
+        term.texts[nent] = dupn(t + s0, e1 - s0);
+        nent++;
         col++;
         while (t[i] == ' ' || t[i] == '\t') i++;
         if (t[i] == ',') { i++; continue; }
@@ -89,12 +88,13 @@ int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error
         if (t[i] != '\0') r = at(err, src, i, "expected end of line after the matrix, found '%s'", t + i);
     }
     term.cols = ncols < 0 ? 0 : ncols;
-    if (r == RS_OK && term.rows != term.cols)
+    if (r == RS_OK && (term.rows != term.cols || term.rows * term.cols != nent))
         r = at(err, src, p0, "expected a square matrix%s", "");
+    if (r == RS_OK && term.rows > 256)
+        r = at(err, src, p0, "matrix too large (limit 256 x 256)%s", "");
     if (r != RS_OK) {
-        slong j, nent = (term.rows - 1) * (ncols < 0 ? 0 : ncols) + col;
-        if (ncols >= 0) nent = (term.rows - 1) * ncols + col;
-        for (j = 0; j < nent && j < cap; j++) { rs_expr_free(term.entries[j]); flint_free(term.texts[j]); }
+        slong j;
+        for (j = 0; j < nent; j++) { rs_expr_free(term.entries[j]); flint_free(term.texts[j]); }
         flint_free(term.entries);
         flint_free(term.texts);
         flint_free(term.loc.file);
