@@ -272,6 +272,8 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
             return at(err, src, i, "expected 'coupling force NAME = EXPR'%s", "");
         }
         flint_free(w);
+        if (c->force_name != NULL)
+            return at(err, src, 0, "a case has one coupling force; '%s' is already defined", c->force_name);
         skip_ws(t, &i);
         p0 = i;
         while (isalnum((unsigned char) t[i]) || t[i] == '_') i++;
