@@ -231,7 +231,7 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     const char *ext = ext_of(path), *tdir = getenv("TMPDIR");
     char dir[4096], p[4096 + 64];
     const char *kinds[3] = {"radius", "stability", "modes"};
-    int has_kind[3] = {0, 0, 0}, k, fd, status = 0, cols, rows;
+    int has_kind[3] = {0, 0, 0}, k, fd, status = 0, cols, rows, nmodes = 0;
     FILE *g;
     pid_t pid;
     if (n == 0) {
@@ -261,7 +261,19 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
         if (strcmp(a, "map") == 0) nmaps++;
         else for (k = 0; k < 3; k++) if (of && strcmp(of, kinds[k]) == 0) has_kind[k] = 1;
     }
-    npanels = nmaps + (size_t) (has_kind[0] + has_kind[1] + has_kind[2]);
+    /* modes sweeps: one panel per quantity and reference frequency (as the
+     * frequency-error / damping-ratio panels of Olivier et al.'s Fig. 12.4) */
+    for (i = 0; i < n; i++) {
+        const json_t *o = tabs[i].el;
+        int m;
+        if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
+        for (m = 1; m <= 8; m++) {
+            char cname[32];
+            snprintf(cname, sizeof cname, "damping_ratio_%d", m);
+            if (col_index(o, cname) > 0 && m > nmodes) nmodes = m;
+        }
+    }
+    npanels = nmaps + (size_t) (has_kind[0] + has_kind[1]) + (size_t) (has_kind[2] ? 2 * (nmodes > 0 ? nmodes : 1) : 0);
     cols = npanels > 1 ? 2 : 1;
     rows = (int) ((npanels + (size_t) cols - 1) / (size_t) cols);
     fd = stage_open(path, tmp, err, errlen);
@@ -310,7 +322,7 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     for (k = 0; k < 3; k++) {
         int first = 1, logx = 0;
         char xl[512] = "";
-        if (!has_kind[k]) continue;
+        if (!has_kind[k] || (k == 2 && nmodes > 0)) continue;
         for (i = 0; i < n; i++) {
             json_t *o = tabs[i].el;
             const char *prm = jstr(o, "param");
@@ -360,6 +372,50 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
         }
         if (k == 0) fputs(", 1 with lines dt 2 lc rgb 'gray' title 'unit circle'", g);
         fputc('\n', g);
+    }
+    {
+        int qn, m;
+        const char *qcol[2] = {"frequency_error", "damping_ratio"};
+        const char *qlab[2] = {"relative frequency error", "damping ratio"};
+        for (qn = 0; qn < 2 && nmodes > 0; qn++)
+            for (m = 1; m <= nmodes; m++) {
+                int first = 1, logx = 0;
+                char xl[512] = "", cname[48], ttl[128];
+                for (i = 0; i < n; i++) {
+                    json_t *o = tabs[i].el;
+                    const char *prm = jstr(o, "param");
+                    if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
+                    if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
+                    if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
+                        if (xl[0]) strcat(xl, ", ");
+                        strcat(xl, prm);
+                    }
+                }
+                fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
+                fputs("set xlabel ", g);
+                put_q(g, xl);
+                fputc('\n', g);
+                if (logx) fputs("set logscale x\n", g);
+                snprintf(ttl, sizeof ttl, "%s, mode %d", qlab[qn], m);
+                fputs("set title ", g);
+                put_q(g, ttl);
+                fputs("\nset ylabel ", g);
+                put_q(g, qlab[qn]);
+                fputs("\nplot ", g);
+                snprintf(cname, sizeof cname, "%s_%d", qcol[qn], m);
+                for (i = 0; i < n; i++) {
+                    json_t *o = tabs[i].el;
+                    if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
+                    if (col_index(o, cname) <= 0) continue;
+                    if (!first) fputs(", ", g);
+                    first = 0;
+                    fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ", dir, i,
+                            col_index(o, jstr(o, "param")), col_index(o, cname));
+                    put_q(g, legend(tabs + i));
+                }
+                if (first) fputs("0 notitle", g);
+                fputc('\n', g);
+            }
     }
     if (npanels > 1) fputs("unset multiplot\n", g);
     fputs("set output\n", g);
