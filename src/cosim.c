@@ -46,19 +46,22 @@
 /* ------------------------------------------------------------------ */
 /* model                                                               */
 
-static void _alloc_mats(rs_cosim_t cs, slong n1, slong n2)
+static void _alloc_mats(rs_cosim_t cs, slong n1, slong n2, slong m)
 {
     if (n1 < 0)
         n1 = 0;
     if (n2 < 0)
         n2 = 0;
+    if (m < 1)
+        m = 1;
     cs->n1 = n1;
     cs->n2 = n2;
+    cs->m = m;
     fmpq_mat_init(cs->A1, n1, n1);
     fmpq_mat_init(cs->A2, n2, n2);
-    fmpq_mat_init(cs->B1, n1, 1);
-    fmpq_mat_init(cs->B2, n2, 1);
-    fmpq_mat_init(cs->C, 1, n1 + n2);
+    fmpq_mat_init(cs->B1, n1, m);
+    fmpq_mat_init(cs->B2, n2, m);
+    fmpq_mat_init(cs->C, m, n1 + n2);
 }
 
 static void _free_mats(rs_cosim_t cs)
@@ -72,7 +75,12 @@ static void _free_mats(rs_cosim_t cs)
 
 void rs_cosim_init(rs_cosim_t cs, slong n1, slong n2)
 {
-    _alloc_mats(cs, n1, n2);
+    rs_cosim_init_m(cs, n1, n2, 1);
+}
+
+void rs_cosim_init_m(rs_cosim_t cs, slong n1, slong n2, slong m)
+{
+    _alloc_mats(cs, n1, n2, m);
     fmpq_init(cs->H);
     fmpq_one(cs->H);
     cs->method = RS_COSIM_EXPLICIT;
@@ -87,8 +95,13 @@ void rs_cosim_clear(rs_cosim_t cs)
 
 void rs_cosim_set_dims(rs_cosim_t cs, slong n1, slong n2)
 {
+    rs_cosim_set_dims_m(cs, n1, n2, 1);
+}
+
+void rs_cosim_set_dims_m(rs_cosim_t cs, slong n1, slong n2, slong m)
+{
     _free_mats(cs);
-    _alloc_mats(cs, n1, n2);
+    _alloc_mats(cs, n1, n2, m);
 }
 
 static int _shape_ok(const fmpq_mat_t M, slong r, slong c)
@@ -98,7 +111,7 @@ static int _shape_ok(const fmpq_mat_t M, slong r, slong c)
 
 int rs_cosim_check(const rs_cosim_t cs, rs_error_t err)
 {
-    slong n1 = cs->n1, n2 = cs->n2;
+    slong n1 = cs->n1, n2 = cs->n2, m = cs->m;
     if (n1 < 1 || n2 < 1)
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: subsystem dimensions must be >= 1 (got "
@@ -107,13 +120,21 @@ int rs_cosim_check(const rs_cosim_t cs, rs_error_t err)
         return rs_error_set(err, RS_ERR_LIMIT,
                             "cosim: n1 + n2 = %ld exceeds the limit %d",
                             (long) (n1 + n2), RS_COSIM_MAX_DIM);
+    if (m < 1)
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: need at least one coupling variable "
+                            "(m = %ld)", (long) m);
+    if (m > RS_COSIM_MAX_INPUTS)
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "cosim: m = %ld coupling variables exceed the "
+                            "limit %d", (long) m, RS_COSIM_MAX_INPUTS);
     if (!_shape_ok(cs->A1, n1, n1) || !_shape_ok(cs->A2, n2, n2)
-        || !_shape_ok(cs->B1, n1, 1) || !_shape_ok(cs->B2, n2, 1)
-        || !_shape_ok(cs->C, 1, n1 + n2))
+        || !_shape_ok(cs->B1, n1, m) || !_shape_ok(cs->B2, n2, m)
+        || !_shape_ok(cs->C, m, n1 + n2))
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: matrix shapes do not match n1 = %ld, "
-                            "n2 = %ld (A_i n_i x n_i, B_i n_i x 1, C 1 x n)",
-                            (long) n1, (long) n2);
+                            "n2 = %ld, m = %ld (A_i n_i x n_i, B_i n_i x m, "
+                            "C m x n)", (long) n1, (long) n2, (long) m);
     if (fmpq_sgn(cs->H) <= 0)
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: macro step H must be > 0");
@@ -155,7 +176,7 @@ int rs_cosim_li_ff(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
     if (fmpq_is_zero(am21))
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: Li model needs alpha_m21 = m2/m1 != 0");
-    if (cs->n1 != 2 || cs->n2 != 2)
+    if (cs->n1 != 2 || cs->n2 != 2 || cs->m != 1)
         rs_cosim_set_dims(cs, 2, 2);
     else {
         fmpq_mat_zero(cs->A1);
@@ -189,6 +210,120 @@ int rs_cosim_li_ff(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
     fmpq_neg(fmpq_mat_entry(cs->C, 0, 1), t);
     fmpq_set(fmpq_mat_entry(cs->C, 0, 3), t);
     fmpq_clear(t);
+    return RS_OK;
+}
+
+/* Force/displacement and displacement/displacement models (eq. 8, 9).
+ * Followed: the printed A_FD, B_FD, C_FD (with D_FD) and A_DD, B_DD, C_DD
+ * (with D_DD), restricted to the components of the paper's u =
+ * (x1~, v1~, x2~, v2~, lambda_c) that each decomposition uses (B_FD's
+ * columns 3, 4 and B_DD's column 5 are zero), in the paper's order; our
+ * C = -(C_P rows) since D_P picks each used u component with +1.
+ * Signs against the physics (eq. 2/4): the coupling spring/damper pulls
+ * mass 1 towards mass 2, so the own-state part of the coupling term enters
+ * v1' as -acc1 c1 x1 - adc1 d1 v1 (A_DD row 2: -(1 + acc1) c1,
+ * -(1 + adc1) d1) and the partner's part as +acc1 c1 x2~ + adc1 d1 v2~
+ * (B_DD row 2); for mass 2 likewise with 1/am21 (A_FD = A_DD row 4,
+ * B_FD = B_DD row 4: +acc1/am21 c1 x1~ + adc1/am21 d1 v1~).  Every printed
+ * sign agrees; A + B C reproduces eq. (5) exactly for FF, FD and DD
+ * (tests/test_cosim.c), and eq. (5) is mechanically stable (its eigenvalues
+ * have negative real parts at positive parameters; tested with GSL).
+ * Slips found (shape only): D_FD row 2 has 4 entries (should be
+ * (1 0 0 0 0)); A_DD rows 1 and 3 are printed 5 wide (the 4 x 4 rows are
+ * (0 1 0 0) and (0 0 0 1)); B_DD rows 1 and 3 are printed 6 wide (zero rows
+ * of length 5); also D_FF (eq. 7) has 4 entries instead of 5 (noted
+ * above). */
+static void _li_common(rs_cosim_t cs, slong m, const fmpq_t c1,
+                       const fmpq_t d1, const fmpq_t am21, const fmpq_t ac21,
+                       const fmpq_t ad21, const fmpq_t acc1,
+                       const fmpq_t adc1, int dd)
+{
+    fmpq_t t, u;
+    if (cs->n1 != 2 || cs->n2 != 2 || cs->m != m)
+        rs_cosim_set_dims_m(cs, 2, 2, m);
+    else {
+        fmpq_mat_zero(cs->A1);
+        fmpq_mat_zero(cs->A2);
+        fmpq_mat_zero(cs->B1);
+        fmpq_mat_zero(cs->B2);
+        fmpq_mat_zero(cs->C);
+    }
+    fmpq_init(t);
+    fmpq_init(u);
+    /* subsystem 1: x1' = v1; v1' = -c1 x1 - d1 v1 (FD, + lambda_c) or
+     * -(1 + acc1) c1 x1 - (1 + adc1) d1 v1 + acc1 c1 x2~ + adc1 d1 v2~ (DD) */
+    fmpq_one(fmpq_mat_entry(cs->A1, 0, 1));
+    fmpq_set(t, c1);
+    if (dd) {
+        fmpq_mul(u, acc1, c1);
+        fmpq_add(t, t, u);
+    }
+    fmpq_neg(fmpq_mat_entry(cs->A1, 1, 0), t);
+    fmpq_set(t, d1);
+    if (dd) {
+        fmpq_mul(u, adc1, d1);
+        fmpq_add(t, t, u);
+    }
+    fmpq_neg(fmpq_mat_entry(cs->A1, 1, 1), t);
+    /* subsystem 2 (FD and DD): x2' = v2;
+     * v2' = -(ac21 + acc1)/am21 c1 x2 - (ad21 + adc1)/am21 d1 v2
+     *       + acc1/am21 c1 x1~ + adc1/am21 d1 v1~ */
+    fmpq_one(fmpq_mat_entry(cs->A2, 0, 1));
+    fmpq_add(t, ac21, acc1);
+    fmpq_div(t, t, am21);
+    fmpq_mul(t, t, c1);
+    fmpq_neg(fmpq_mat_entry(cs->A2, 1, 0), t);
+    fmpq_add(t, ad21, adc1);
+    fmpq_div(t, t, am21);
+    fmpq_mul(t, t, d1);
+    fmpq_neg(fmpq_mat_entry(cs->A2, 1, 1), t);
+    /* u_0 = x1~, u_1 = v1~ (both models) */
+    fmpq_div(t, acc1, am21);
+    fmpq_mul(fmpq_mat_entry(cs->B2, 1, 0), t, c1);
+    fmpq_div(t, adc1, am21);
+    fmpq_mul(fmpq_mat_entry(cs->B2, 1, 1), t, d1);
+    fmpq_one(fmpq_mat_entry(cs->C, 0, 0));
+    fmpq_one(fmpq_mat_entry(cs->C, 1, 1));
+    if (dd) {
+        /* u_2 = x2~, u_3 = v2~ drive subsystem 1 */
+        fmpq_mul(fmpq_mat_entry(cs->B1, 1, 2), acc1, c1);
+        fmpq_mul(fmpq_mat_entry(cs->B1, 1, 3), adc1, d1);
+        fmpq_one(fmpq_mat_entry(cs->C, 2, 2));
+        fmpq_one(fmpq_mat_entry(cs->C, 3, 3));
+    } else {
+        /* u_2 = lambda_c = acc1 c1 (x2 - x1) + adc1 d1 (v2 - v1) drives
+         * subsystem 1 with +1 (B_FD row 2) */
+        fmpq_one(fmpq_mat_entry(cs->B1, 1, 2));
+        fmpq_mul(t, acc1, c1);
+        fmpq_neg(fmpq_mat_entry(cs->C, 2, 0), t);
+        fmpq_set(fmpq_mat_entry(cs->C, 2, 2), t);
+        fmpq_mul(t, adc1, d1);
+        fmpq_neg(fmpq_mat_entry(cs->C, 2, 1), t);
+        fmpq_set(fmpq_mat_entry(cs->C, 2, 3), t);
+    }
+    fmpq_clear(t);
+    fmpq_clear(u);
+}
+
+int rs_cosim_li_fd(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
+                   const fmpq_t am21, const fmpq_t ac21, const fmpq_t ad21,
+                   const fmpq_t acc1, const fmpq_t adc1, rs_error_t err)
+{
+    if (fmpq_is_zero(am21))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: Li model needs alpha_m21 = m2/m1 != 0");
+    _li_common(cs, 3, c1, d1, am21, ac21, ad21, acc1, adc1, 0);
+    return RS_OK;
+}
+
+int rs_cosim_li_dd(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
+                   const fmpq_t am21, const fmpq_t ac21, const fmpq_t ad21,
+                   const fmpq_t acc1, const fmpq_t adc1, rs_error_t err)
+{
+    if (fmpq_is_zero(am21))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: Li model needs alpha_m21 = m2/m1 != 0");
+    _li_common(cs, 4, c1, d1, am21, ac21, ad21, acc1, adc1, 1);
     return RS_OK;
 }
 
@@ -252,25 +387,57 @@ int rs_cosim_lagrange(fmpq_mat_t L, int method, slong order, rs_error_t err)
 /* ------------------------------------------------------------------ */
 /* exponentials (Van Loan)                                              */
 
-/* One subsystem: E_i into E at offset off, Phi_m^{(i)} into Phi rows
- * off..off+ni-1. */
+/* A coupling realisation: (B_1, B_2, C) with m coupling variables; either
+ * the model's own or the reduced one of rs_cosim_reduce. */
+typedef struct {
+    slong m;
+    const fmpq_mat_struct *B1, *B2, *C;
+} _real_t;
+
+static void _real_own(_real_t *re, const rs_cosim_t cs)
+{
+    re->m = cs->m;
+    re->B1 = cs->B1;
+    re->B2 = cs->B2;
+    re->C = cs->C;
+}
+
+/* One subsystem: E_i into E at offset off, Phi_k e_c of subsystem i into
+ * Phi rows off..off+ni-1, column k m + c (m = columns of Bi).  Only the
+ * nonzero columns of Bi get a chain in the Van Loan matrix; the others
+ * leave Phi zero (Phi must be zeroed by the caller). */
 static void _exp_phi_sub(arb_mat_t E, arb_mat_t Phi, slong off,
                          const fmpq_mat_t Ai, const fmpq_mat_t Bi,
                          const fmpq_t H, slong K, slong prec)
 {
-    slong ni = fmpq_mat_nrows(Ai), sz = ni + K + 1, r, c, m;
+    slong ni = fmpq_mat_nrows(Ai), m = fmpq_mat_ncols(Bi), q = 0, sz, r, c,
+          k, ch;
+    slong *cols = flint_malloc((m + 1) * sizeof(slong));
     fmpq_mat_t M;
     arb_mat_t Ma, X;
     arb_t fact;
 
+    for (c = 0; c < m; c++) {
+        int nz = 0;
+        for (r = 0; r < ni; r++)
+            if (!fmpq_is_zero(fmpq_mat_entry(Bi, r, c)))
+                nz = 1;
+        if (nz)
+            cols[q++] = c;
+    }
+    sz = ni + q * (K + 1);
     fmpq_mat_init(M, sz, sz);
     for (r = 0; r < ni; r++) {
         for (c = 0; c < ni; c++)
             fmpq_mul(fmpq_mat_entry(M, r, c), fmpq_mat_entry(Ai, r, c), H);
-        fmpq_mul(fmpq_mat_entry(M, r, ni), fmpq_mat_entry(Bi, r, 0), H);
+        for (ch = 0; ch < q; ch++)
+            fmpq_mul(fmpq_mat_entry(M, r, ni + ch * (K + 1)),
+                     fmpq_mat_entry(Bi, r, cols[ch]), H);
     }
-    for (r = 0; r < K; r++)
-        fmpq_one(fmpq_mat_entry(M, ni + r, ni + r + 1));
+    for (ch = 0; ch < q; ch++)
+        for (r = 0; r < K; r++)
+            fmpq_one(fmpq_mat_entry(M, ni + ch * (K + 1) + r,
+                                    ni + ch * (K + 1) + r + 1));
     arb_mat_init(Ma, sz, sz);
     arb_mat_init(X, sz, sz);
     arb_mat_set_fmpq_mat(Ma, M, prec);
@@ -280,74 +447,82 @@ static void _exp_phi_sub(arb_mat_t E, arb_mat_t Phi, slong off,
             arb_set(arb_mat_entry(E, off + r, off + c), arb_mat_entry(X, r, c));
     arb_init(fact);
     arb_one(fact);
-    for (m = 0; m <= K; m++) {
-        if (m > 1)
-            arb_mul_ui(fact, fact, (ulong) m, prec);
-        for (r = 0; r < ni; r++)
-            arb_mul(arb_mat_entry(Phi, off + r, m), arb_mat_entry(X, r, ni + m),
-                    fact, prec);
+    for (k = 0; k <= K; k++) {
+        if (k > 1)
+            arb_mul_ui(fact, fact, (ulong) k, prec);
+        for (ch = 0; ch < q; ch++)
+            for (r = 0; r < ni; r++)
+                arb_mul(arb_mat_entry(Phi, off + r, k * m + cols[ch]),
+                        arb_mat_entry(X, r, ni + ch * (K + 1) + k), fact,
+                        prec);
     }
     arb_clear(fact);
     arb_mat_clear(X);
     arb_mat_clear(Ma);
     fmpq_mat_clear(M);
+    flint_free(cols);
+}
+
+static void _exp_phi_r(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
+                       const _real_t *re, slong prec)
+{
+    arb_mat_zero(E);
+    arb_mat_zero(Phi);
+    _exp_phi_sub(E, Phi, 0, cs->A1, re->B1, cs->H, cs->order, prec);
+    _exp_phi_sub(E, Phi, cs->n1, cs->A2, re->B2, cs->H, cs->order, prec);
 }
 
 int rs_cosim_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
                      slong prec, rs_error_t err)
 {
-    slong n, K;
+    slong n, K, m;
+    _real_t re;
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK)
         return rc;
     n = cs->n1 + cs->n2;
     K = cs->order;
+    m = cs->m;
     if (arb_mat_nrows(E) != n || arb_mat_ncols(E) != n
-        || arb_mat_nrows(Phi) != n || arb_mat_ncols(Phi) != K + 1)
+        || arb_mat_nrows(Phi) != n || arb_mat_ncols(Phi) != m * (K + 1))
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: E must be %ldx%ld and Phi %ldx%ld",
-                            (long) n, (long) n, (long) n, (long) (K + 1));
-    arb_mat_zero(E);
-    _exp_phi_sub(E, Phi, 0, cs->A1, cs->B1, cs->H, K, prec);
-    _exp_phi_sub(E, Phi, cs->n1, cs->A2, cs->B2, cs->H, K, prec);
+                            (long) n, (long) n, (long) n,
+                            (long) (m * (K + 1)));
+    _real_own(&re, cs);
+    _exp_phi_r(E, Phi, cs, &re, prec);
     return RS_OK;
 }
 
-int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
-                   rs_error_t err)
+/* G_j = sum_k l_{j,k} Phi_k, blocks of m columns */
+static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs,
+                    const _real_t *re, slong prec, rs_error_t err)
 {
-    slong n, K, j, m, r;
+    slong n = cs->n1 + cs->n2, K = cs->order, m = re->m, j, k, r, c;
     fmpq_mat_t L;
     arb_mat_t Phi;
     arb_t t;
-    int rc = rs_cosim_check(cs, err);
-    if (rc != RS_OK)
-        return rc;
-    n = cs->n1 + cs->n2;
-    K = cs->order;
-    if (arb_mat_nrows(G) != n || arb_mat_ncols(G) != K + 1)
-        return rs_error_set(err, RS_ERR_INPUT, "cosim: G must be %ldx%ld",
-                            (long) n, (long) (K + 1));
+    int rc;
     fmpq_mat_init(L, K + 1, K + 1);
-    arb_mat_init(Phi, n, K + 1);
+    arb_mat_init(Phi, n, m * (K + 1));
     arb_init(t);
     rc = rs_cosim_lagrange(L, cs->method, K, err);
-    if (rc == RS_OK)
-        rc = rs_cosim_exp_phi(E, Phi, cs, prec, err);
     if (rc == RS_OK) {
+        _exp_phi_r(E, Phi, cs, re, prec);
         arb_mat_zero(G);
         for (j = 0; j <= K; j++)
-            for (m = 0; m <= K; m++) {
-                const fmpq *l = fmpq_mat_entry(L, j, m);
+            for (k = 0; k <= K; k++) {
+                const fmpq *l = fmpq_mat_entry(L, j, k);
                 if (fmpq_is_zero(l))
                     continue;
-                for (r = 0; r < n; r++) {
-                    arb_mul_fmpz(t, arb_mat_entry(Phi, r, m), fmpq_numref(l),
-                                 prec);
-                    arb_div_fmpz(t, t, fmpq_denref(l), prec);
-                    arb_add(arb_mat_entry(G, r, j), arb_mat_entry(G, r, j), t,
-                            prec);
-                }
+                for (c = 0; c < m; c++)
+                    for (r = 0; r < n; r++) {
+                        arb_mul_fmpz(t, arb_mat_entry(Phi, r, k * m + c),
+                                     fmpq_numref(l), prec);
+                        arb_div_fmpz(t, t, fmpq_denref(l), prec);
+                        arb_add(arb_mat_entry(G, r, j * m + c),
+                                arb_mat_entry(G, r, j * m + c), t, prec);
+                    }
             }
     }
     arb_clear(t);
@@ -356,33 +531,60 @@ int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
     return rc;
 }
 
+int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
+                   rs_error_t err)
+{
+    slong n, K, m;
+    _real_t re;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n = cs->n1 + cs->n2;
+    K = cs->order;
+    m = cs->m;
+    if (arb_mat_nrows(E) != n || arb_mat_ncols(E) != n
+        || arb_mat_nrows(G) != n || arb_mat_ncols(G) != m * (K + 1))
+        return rs_error_set(err, RS_ERR_INPUT,
+                            "cosim: E must be %ldx%ld and G %ldx%ld",
+                            (long) n, (long) n, (long) n,
+                            (long) (m * (K + 1)));
+    _real_own(&re, cs);
+    return _gains_r(E, G, cs, &re, prec, err);
+}
+
 /* ------------------------------------------------------------------ */
 /* recurrence and one-step map                                         */
 
-/* Out = column g (of G, index j) times row C: rank one n x n. */
+/* Out = G_j C (n x m times m x n) */
 static void _outer(arb_mat_t Out, const arb_mat_t G, slong j,
                    const arb_mat_t Cb, slong prec)
 {
-    slong r, c, n = arb_mat_nrows(Out);
+    slong r, c, i, n = arb_mat_nrows(Out), m = arb_mat_nrows(Cb);
     for (r = 0; r < n; r++)
-        for (c = 0; c < n; c++)
-            arb_mul(arb_mat_entry(Out, r, c), arb_mat_entry(G, r, j),
-                    arb_mat_entry(Cb, 0, c), prec);
+        for (c = 0; c < n; c++) {
+            arb_zero(arb_mat_entry(Out, r, c));
+            for (i = 0; i < m; i++)
+                arb_addmul(arb_mat_entry(Out, r, c),
+                           arb_mat_entry(G, r, j * m + i),
+                           arb_mat_entry(Cb, i, c), prec);
+        }
 }
 
-/* J = 1 - C G_0 */
-static void _jacobian(arb_t J, const arb_mat_t G, const arb_mat_t Cb,
+/* J = I_m - C G_0 (m x m) */
+static void _jacobian(arb_mat_t J, const arb_mat_t G, const arb_mat_t Cb,
                       slong prec)
 {
-    slong r, n = arb_mat_nrows(G);
-    arb_t t;
-    arb_init(t);
-    arb_one(J);
-    for (r = 0; r < n; r++) {
-        arb_mul(t, arb_mat_entry(Cb, 0, r), arb_mat_entry(G, r, 0), prec);
-        arb_sub(J, J, t, prec);
-    }
-    arb_clear(t);
+    slong r, c, i, n = arb_mat_nrows(G), m = arb_mat_nrows(Cb);
+    for (r = 0; r < m; r++)
+        for (c = 0; c < m; c++) {
+            if (r == c)
+                arb_one(arb_mat_entry(J, r, c));
+            else
+                arb_zero(arb_mat_entry(J, r, c));
+            for (i = 0; i < n; i++)
+                arb_submul(arb_mat_entry(J, r, c), arb_mat_entry(Cb, r, i),
+                           arb_mat_entry(G, i, c), prec);
+        }
 }
 
 void rs_cosim_rec_init(rs_cosim_rec_t rec)
@@ -391,6 +593,7 @@ void rs_cosim_rec_init(rs_cosim_rec_t rec)
     rec->k = -1;
     rec->A = NULL;
     arb_init(rec->jac);
+    arb_mat_init(rec->jacm, 0, 0);
     rec->prec = 0;
 }
 
@@ -411,18 +614,21 @@ void rs_cosim_rec_clear(rs_cosim_rec_t rec)
 {
     _rec_free(rec);
     arb_clear(rec->jac);
+    arb_mat_clear(rec->jacm);
 }
 
 int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
                         rs_error_t err)
 {
-    slong n, K, k, j;
+    slong n, K, k, j, m;
     arb_mat_t E, G, Cb, T;
+    _real_t re;
     int rc = rs_cosim_check(cs, err), impl;
     if (rc != RS_OK)
         return rc;
     n = cs->n1 + cs->n2;
     K = cs->order;
+    m = cs->m;
     impl = (cs->method == RS_COSIM_IMPLICIT);
     k = impl ? (K > 1 ? K : 1) : K + 1;
     _rec_free(rec);
@@ -433,11 +639,14 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
     for (j = 0; j <= k; j++) {
         arb_mat_init(rec->A + j, n, n);
     }
+    arb_mat_clear(rec->jacm);
+    arb_mat_init(rec->jacm, m, m);
     arb_mat_init(E, n, n);
-    arb_mat_init(G, n, K + 1);
-    arb_mat_init(Cb, 1, n);
+    arb_mat_init(G, n, m * (K + 1));
+    arb_mat_init(Cb, m, n);
     arb_mat_init(T, n, n);
-    rc = rs_cosim_gains(E, G, cs, prec, err);
+    _real_own(&re, cs);
+    rc = _gains_r(E, G, cs, &re, prec, err);
     if (rc != RS_OK)
         goto cleanup;
     arb_mat_set_fmpq_mat(Cb, cs->C, prec);
@@ -452,6 +661,7 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
             arb_mat_neg(rec->A + (K - j), T);
         }
         arb_one(rec->jac);
+        arb_mat_one(rec->jacm);
     } else {
         /* (I - G_0 C) z_{N+1} - (E + G_1 C) z_N - sum_{j>=2} G_j C z_{N+1-j};
          * z_{N+1-j} sits at offset k - j. */
@@ -463,7 +673,8 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
             _outer(T, G, j, Cb, prec);
             arb_mat_sub(rec->A + (k - j), rec->A + (k - j), T, prec);
         }
-        _jacobian(rec->jac, G, Cb, prec);
+        _jacobian(rec->jacm, G, Cb, prec);
+        arb_mat_det(rec->jac, rec->jacm, prec);
     }
 cleanup:
     arb_mat_clear(E);
@@ -473,101 +684,183 @@ cleanup:
     return rc;
 }
 
-int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
-                        rs_error_t err)
+static slong _hist(const rs_cosim_t cs)
 {
-    slong n, K, h, dim, a, j, r, c;
-    arb_mat_t E, G, Cb, Top, CX;
-    arb_t J, t;
-    int rc = rs_cosim_check(cs, err), impl;
-    if (rc != RS_OK)
-        return rc;
+    slong K = cs->order;
+    return cs->method == RS_COSIM_IMPLICIT ? (K > 1 ? K - 1 : 0) : K;
+}
+
+slong rs_cosim_transition_dim(const rs_cosim_t cs)
+{
+    return cs->n1 + cs->n2 + _hist(cs) * cs->m;
+}
+
+/* The one-step map of (z_N, u_{N-1}, ..., u_{N-h}) for the realisation re
+ * (m = re->m >= 0; m = 0: M = E). */
+static int _transition_r(arb_mat_t M, const rs_cosim_t cs, const _real_t *re,
+                         slong prec, rs_error_t err)
+{
+    slong n, K, h, dim, a, j, r, c, m = re->m;
+    arb_mat_t E, G, Cb, Top, CX, J, Y;
+    int rc = RS_OK, impl;
     n = cs->n1 + cs->n2;
     K = cs->order;
     impl = (cs->method == RS_COSIM_IMPLICIT);
     a = impl ? 1 : 0;              /* first gain acting on z_N */
-    h = impl ? (K > 1 ? K - 1 : 0) : K;   /* lambda history length */
-    dim = n + h;
+    h = _hist(cs);                 /* u history length */
+    dim = n + h * m;
     if (arb_mat_nrows(M) != dim || arb_mat_ncols(M) != dim)
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: transition matrix must be %ldx%ld",
                             (long) dim, (long) dim);
     arb_mat_init(E, n, n);
-    arb_mat_init(G, n, K + 1);
-    arb_mat_init(Cb, 1, n);
+    arb_mat_init(G, n, m * (K + 1));
+    arb_mat_init(Cb, m, n);
     arb_mat_init(Top, n, dim);
-    arb_mat_init(CX, 1, dim);
-    arb_init(J);
-    arb_init(t);
-    rc = rs_cosim_gains(E, G, cs, prec, err);
+    arb_mat_init(CX, m, dim);
+    arb_mat_init(J, m, m);
+    arb_mat_init(Y, m, dim);
+    rc = _gains_r(E, G, cs, re, prec, err);
     if (rc != RS_OK)
         goto cleanup;
-    arb_mat_set_fmpq_mat(Cb, cs->C, prec);
+    arb_mat_set_fmpq_mat(Cb, re->C, prec);
     /* Top = [E + G_a C | G_{a+1} ... G_K]  (G_1 := 0 for implicit K = 0) */
     for (r = 0; r < n; r++) {
         for (c = 0; c < n; c++) {
+            arb_zero(arb_mat_entry(Top, r, c));
             if (a <= K)
-                arb_mul(arb_mat_entry(Top, r, c), arb_mat_entry(G, r, a),
-                        arb_mat_entry(Cb, 0, c), prec);
-            else
-                arb_zero(arb_mat_entry(Top, r, c));
+                for (j = 0; j < m; j++)
+                    arb_addmul(arb_mat_entry(Top, r, c),
+                               arb_mat_entry(G, r, a * m + j),
+                               arb_mat_entry(Cb, j, c), prec);
             arb_add(arb_mat_entry(Top, r, c), arb_mat_entry(Top, r, c),
                     arb_mat_entry(E, r, c), prec);
         }
         for (j = a + 1; j <= K; j++)
-            arb_set(arb_mat_entry(Top, r, n + j - a - 1),
-                    arb_mat_entry(G, r, j));
+            for (c = 0; c < m; c++)
+                arb_set(arb_mat_entry(Top, r, n + (j - a - 1) * m + c),
+                        arb_mat_entry(G, r, j * m + c));
     }
-    if (impl) {
-        /* Top <- (I - G_0 C)^{-1} Top = Top + G_0 (C Top) / J
-         * (Sherman-Morrison), J = 1 - C G_0 the Newton Jacobian. */
+    if (impl && m > 0) {
+        /* Top <- (I_n - G_0 C)^{-1} Top = Top + G_0 J^{-1} (C Top)
+         * (Woodbury), J = I_m - C G_0 the Newton Jacobian matrix. */
         _jacobian(J, G, Cb, prec);
-        if (arb_contains_zero(J)) {
-            if (arb_is_zero(J))
+        arb_mat_mul(CX, Cb, Top, prec);
+        if (!arb_mat_solve(Y, J, CX, prec)) {
+            arb_t det;
+            arb_init(det);
+            arb_mat_det(det, J, prec);
+            if (arb_is_zero(det))
                 rc = rs_error_set(err, RS_ERR_MATH,
                                   "cosim: implicit coupling Jacobian "
-                                  "J = 1 - C G_0 is exactly 0: the corrector "
-                                  "is undefined");
+                                  "J = I - C G_0 is exactly singular: the "
+                                  "corrector is undefined");
             else
                 rc = rs_error_set(err, RS_ERR_UNDECIDED,
                                   "cosim: implicit coupling Jacobian "
-                                  "J = 1 - C G_0 not certified nonzero at "
+                                  "J = I - C G_0 not certified invertible at "
                                   "%ld bits", (long) prec);
+            arb_clear(det);
             goto cleanup;
-        }
-        for (c = 0; c < dim; c++) {
-            arb_zero(arb_mat_entry(CX, 0, c));
-            for (r = 0; r < n; r++)
-                arb_addmul(arb_mat_entry(CX, 0, c), arb_mat_entry(Cb, 0, r),
-                           arb_mat_entry(Top, r, c), prec);
-            arb_div(arb_mat_entry(CX, 0, c), arb_mat_entry(CX, 0, c), J,
-                    prec);
         }
         for (r = 0; r < n; r++)
             for (c = 0; c < dim; c++)
-                arb_addmul(arb_mat_entry(Top, r, c), arb_mat_entry(G, r, 0),
-                           arb_mat_entry(CX, 0, c), prec);
+                for (j = 0; j < m; j++)
+                    arb_addmul(arb_mat_entry(Top, r, c),
+                               arb_mat_entry(G, r, j),
+                               arb_mat_entry(Y, j, c), prec);
     }
     arb_mat_zero(M);
     for (r = 0; r < n; r++)
         for (c = 0; c < dim; c++)
             arb_set(arb_mat_entry(M, r, c), arb_mat_entry(Top, r, c));
-    if (h > 0) {
-        /* new lambda_N = C z_N, older lambdas shift down one slot */
-        for (c = 0; c < n; c++)
-            arb_set(arb_mat_entry(M, n, c), arb_mat_entry(Cb, 0, c));
+    if (h > 0 && m > 0) {
+        /* new u_N = C z_N, older u's shift down one slot */
+        for (r = 0; r < m; r++)
+            for (c = 0; c < n; c++)
+                arb_set(arb_mat_entry(M, n + r, c), arb_mat_entry(Cb, r, c));
         for (j = 1; j < h; j++)
-            arb_one(arb_mat_entry(M, n + j, n + j - 1));
+            for (r = 0; r < m; r++)
+                arb_one(arb_mat_entry(M, n + j * m + r, n + (j - 1) * m + r));
     }
 cleanup:
-    arb_clear(J);
-    arb_clear(t);
     arb_mat_clear(E);
     arb_mat_clear(G);
     arb_mat_clear(Cb);
     arb_mat_clear(Top);
     arb_mat_clear(CX);
+    arb_mat_clear(J);
+    arb_mat_clear(Y);
     return rc;
+}
+
+int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
+                        rs_error_t err)
+{
+    _real_t re;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    _real_own(&re, cs);
+    return _transition_r(M, cs, &re, prec, err);
+}
+
+int rs_cosim_reduce(fmpq_mat_t P1, fmpq_mat_t P2, fmpq_mat_t Q, slong *rank,
+                    const rs_cosim_t cs, rs_error_t err)
+{
+    slong n1, n, m, r, c, i, rk, *piv;
+    fmpq_mat_t B, BC, R;
+    int rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK)
+        return rc;
+    n1 = cs->n1;
+    n = n1 + cs->n2;
+    m = cs->m;
+    fmpq_mat_init(B, n, m);
+    fmpq_mat_init(BC, n, n);
+    fmpq_mat_init(R, n, n);
+    for (r = 0; r < n; r++)
+        for (c = 0; c < m; c++)
+            fmpq_set(fmpq_mat_entry(B, r, c),
+                     r < n1 ? fmpq_mat_entry(cs->B1, r, c)
+                            : fmpq_mat_entry(cs->B2, r - n1, c));
+    fmpq_mat_mul(BC, B, cs->C);
+    rk = fmpq_mat_rref(R, BC);
+    fmpq_mat_clear(P1);
+    fmpq_mat_clear(P2);
+    fmpq_mat_clear(Q);
+    fmpq_mat_init(P1, n1, rk);
+    fmpq_mat_init(P2, n - n1, rk);
+    fmpq_mat_init(Q, rk, n);
+    if (rk == m) {
+        /* rank(B C) = m forces rank B = rank C = m: (B, C) is already a
+         * rank factorisation */
+        fmpq_mat_set(P1, cs->B1);
+        fmpq_mat_set(P2, cs->B2);
+        fmpq_mat_set(Q, cs->C);
+    } else {
+        /* B C = (B C)[:, pivots] R[0..rk-1, :] */
+        piv = flint_malloc((rk + 1) * sizeof(slong));
+        for (i = 0, c = 0; i < rk; i++) {
+            while (fmpq_is_zero(fmpq_mat_entry(R, i, c)))
+                c++;
+            piv[i] = c;
+        }
+        for (i = 0; i < rk; i++) {
+            for (r = 0; r < n; r++)
+                fmpq_set(r < n1 ? fmpq_mat_entry(P1, r, i)
+                                : fmpq_mat_entry(P2, r - n1, i),
+                         fmpq_mat_entry(BC, r, piv[i]));
+            for (c = 0; c < n; c++)
+                fmpq_set(fmpq_mat_entry(Q, i, c), fmpq_mat_entry(R, i, c));
+        }
+        flint_free(piv);
+    }
+    *rank = rk;
+    fmpq_mat_clear(B);
+    fmpq_mat_clear(BC);
+    fmpq_mat_clear(R);
+    return RS_OK;
 }
 
 /* ------------------------------------------------------------------ */
@@ -576,7 +869,7 @@ cleanup:
 int rs_cosim_monolithic_matrix(fmpq_mat_t Amono, const rs_cosim_t cs,
                                rs_error_t err)
 {
-    slong n1, n, r, c;
+    slong n1, n, r, c, i;
     fmpq_t t;
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK)
@@ -590,15 +883,18 @@ int rs_cosim_monolithic_matrix(fmpq_mat_t Amono, const rs_cosim_t cs,
     fmpq_init(t);
     fmpq_mat_zero(Amono);
     for (r = 0; r < n; r++) {
-        const fmpq *b = (r < n1) ? fmpq_mat_entry(cs->B1, r, 0)
-                                 : fmpq_mat_entry(cs->B2, r - n1, 0);
         for (c = 0; c < n; c++) {
-            fmpq_mul(t, b, fmpq_mat_entry(cs->C, 0, c));
+            fmpq *e = fmpq_mat_entry(Amono, r, c);
+            for (i = 0; i < cs->m; i++) {
+                const fmpq *b = (r < n1) ? fmpq_mat_entry(cs->B1, r, i)
+                                         : fmpq_mat_entry(cs->B2, r - n1, i);
+                fmpq_mul(t, b, fmpq_mat_entry(cs->C, i, c));
+                fmpq_add(e, e, t);
+            }
             if (r < n1 && c < n1)
-                fmpq_add(t, t, fmpq_mat_entry(cs->A1, r, c));
+                fmpq_add(e, e, fmpq_mat_entry(cs->A1, r, c));
             else if (r >= n1 && c >= n1)
-                fmpq_add(t, t, fmpq_mat_entry(cs->A2, r - n1, c - n1));
-            fmpq_set(fmpq_mat_entry(Amono, r, c), t);
+                fmpq_add(e, e, fmpq_mat_entry(cs->A2, r - n1, c - n1));
         }
     }
     fmpq_clear(t);
@@ -637,12 +933,26 @@ int rs_cosim_monolithic(arb_mat_t Emono, const rs_cosim_t cs, slong prec,
 
 enum { _ROUTE_TRANSITION, _ROUTE_RECURRENCE, _ROUTE_MONO };
 
+/* A[0] = -M, A[1] = I (M is negated in place) */
+static void _set_poly(acb_mat_struct **A, slong *k, slong *cnt, arb_mat_t M)
+{
+    slong dim = arb_mat_nrows(M);
+    arb_mat_neg(M, M);
+    *A = flint_malloc(2 * sizeof(acb_mat_struct));
+    acb_mat_init(*A, dim, dim);
+    acb_mat_init(*A + 1, dim, dim);
+    acb_mat_set_arb_mat(*A, M);
+    acb_mat_one(*A + 1);
+    *k = 1;
+    *cnt = 2;
+}
+
 /* Build the acb matrix polynomial A[0..*k] for the route at prec.
  * *A is (re)allocated; *k and *cnt updated. */
 static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
                   const rs_cosim_t cs, slong prec, rs_error_t err)
 {
-    slong j, dim, n = cs->n1 + cs->n2, K = cs->order;
+    slong j, dim, n = cs->n1 + cs->n2;
     int rc = RS_OK;
 
     for (j = 0; j < *cnt; j++)
@@ -659,7 +969,7 @@ static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
             rc = arb_is_zero(rec->jac)
                      ? rs_error_set(err, RS_ERR_MATH,
                                     "cosim: implicit coupling Jacobian "
-                                    "J = 1 - C G_0 is exactly 0")
+                                    "det(I - C G_0) is exactly 0")
                      : rs_error_set(err, RS_ERR_UNDECIDED,
                                     "cosim: implicit coupling Jacobian not "
                                     "certified nonzero at %ld bits",
@@ -677,27 +987,39 @@ static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
         return rc;
     }
     if (route == _ROUTE_TRANSITION) {
-        slong h = (cs->method == RS_COSIM_IMPLICIT) ? (K > 1 ? K - 1 : 0) : K;
-        dim = n + h;
-    } else {
-        dim = n;
+        /* the reduced realisation (rs_cosim_reduce) */
+        fmpq_mat_t P1, P2, Q;
+        _real_t re;
+        arb_mat_t M;
+        slong rk = 0;
+        fmpq_mat_init(P1, 0, 0);
+        fmpq_mat_init(P2, 0, 0);
+        fmpq_mat_init(Q, 0, 0);
+        rc = rs_cosim_reduce(P1, P2, Q, &rk, cs, err);
+        if (rc == RS_OK) {
+            re.m = rk;
+            re.B1 = P1;
+            re.B2 = P2;
+            re.C = Q;
+            dim = n + _hist(cs) * rk;
+            arb_mat_init(M, dim, dim);
+            rc = _transition_r(M, cs, &re, prec, err);
+            if (rc == RS_OK)
+                _set_poly(A, k, cnt, M);
+            arb_mat_clear(M);
+        }
+        fmpq_mat_clear(P1);
+        fmpq_mat_clear(P2);
+        fmpq_mat_clear(Q);
+        return rc;
     }
     {
         arb_mat_t M;
+        dim = n;
         arb_mat_init(M, dim, dim);
-        rc = (route == _ROUTE_TRANSITION)
-                 ? rs_cosim_transition(M, cs, prec, err)
-                 : rs_cosim_monolithic(M, cs, prec, err);
-        if (rc == RS_OK) {
-            arb_mat_neg(M, M);
-            *A = flint_malloc(2 * sizeof(acb_mat_struct));
-            acb_mat_init(*A, dim, dim);
-            acb_mat_init(*A + 1, dim, dim);
-            acb_mat_set_arb_mat(*A, M);
-            acb_mat_one(*A + 1);
-            *k = 1;
-            *cnt = 2;
-        }
+        rc = rs_cosim_monolithic(M, cs, prec, err);
+        if (rc == RS_OK)
+            _set_poly(A, k, cnt, M);
         arb_mat_clear(M);
     }
     return rc;
