@@ -1,43 +1,59 @@
 /* cosim.c -- see include/recstab/cosim.h.
  *
- * Derivation of the recurrences (checked against the seed, sect. 3.1).
+ * Derivation of the recurrences (checked against the seed, sect. 3.1),
+ * for m coupling variables u (m = 1: the scalar force lambda_c).
  *
- * Exact integration of z' = A z + B lambda(t) over [T_N, T_N + H] with
- * lambda(T_N + s) = sum_j lambda_j L_j(s/H), L_j(tau) = sum_m l_{j,m} tau^m:
- *     z_{N+1} = E z_N + sum_j G_j lambda_j,  G_j = sum_m l_{j,m} Phi_m.
- * A and B are block structured (subsystem i sees only A_i, B_i), so E and
- * Phi are computed per subsystem and stacked.
+ * Exact integration of z' = A z + B u(t) over [T_N, T_N + H] with each
+ * component u_c(T_N + s) = sum_j u_{j,c} L_j(s/H), L_j(tau) = sum_k l_{j,k}
+ * tau^k, i.e. u(T_N + s) = sum_j L_j(s/H) u_j (u_j in R^m):
+ *     z_{N+1} = E z_N + sum_j G_j u_j,  G_j = sum_k l_{j,k} Phi_k  (n x m).
+ * A and B are block structured (subsystem i sees only A_i and its rows
+ * B_i), so E and Phi are computed per subsystem and stacked.
  *
  * Explicit (step 1 only, eq. 10 and 16): nodes tau_j = -j carrying
- * lambda_{N-j} = C z_{N-j}, j = 0..K.  Degree K + 1 in the shift; for K = 2
+ * u_{N-j} = C z_{N-j}, j = 0..K.  Degree K + 1 in the shift; for K = 2
  * that is the paper's four-term eq. (16).
  *
  * Implicit (steps 1-3, eq. 10-15):
- *   step 1 gives z^p_{N+1} and lambda^p = P^p(T_{N+1}) from the degree-K
- *     extrapolant P^p through (T_{N-j}, lambda_{N-j}), j = 0..K;
- *   step 2: z*_{N+1}(lambda*) uses the degree-K interpolant through
- *     (T_{N+1}, lambda*) and (T_{N+1-j}, lambda_{N+1-j}), j = 1..K:
- *         z* = E z_N + G*_0 lambda* + sum_{j>=1} G*_j lambda_{N+1-j},
- *     affine in lambda*, so g(lambda*) = lambda* - C z*(lambda*) (eq. 12 with
- *     the brief's C; the printed eq. 12 has the same sign: lambda* - acc1 c1
- *     (x2 - x1) - adc1 d1 (v2 - v1)) is affine with slope J = 1 - C G*_0.
- *     The paper's g^p is g at the predictor.  The interpolant through
- *     (T_{N+1}, lambda^p), (T_N, lambda_N), ..., (T_{N-K+1}, ...) passes
- *     through K + 1 points of the degree-K polynomial P^p, hence IS P^p, so
- *     z^p_{N+1} = z*(lambda^p) and g^p = g(lambda^p) exactly.  The linearised
- *     equation (13) g^p + J (lambda_{N+1} - lambda^p) = 0 is then the affine
- *     g itself: its solution is the exact root, g(lambda_{N+1}) = 0, and the
+ *   step 1 gives z^p_{N+1} and u^p = P^p(T_{N+1}) (componentwise) from the
+ *     degree-K extrapolants P^p through (T_{N-j}, u_{N-j}), j = 0..K;
+ *   step 2: z*_{N+1}(u*) uses the degree-K interpolants through
+ *     (T_{N+1}, u*) and (T_{N+1-j}, u_{N+1-j}), j = 1..K:
+ *         z* = E z_N + G*_0 u* + sum_{j>=1} G*_j u_{N+1-j},
+ *     affine in u*, so the coupling conditions g(u*) = u* - C z*(u*) (eq. 12
+ *     with this C; the printed eq. 12 has the same sign: lambda* - acc1 c1
+ *     (x2 - x1) - adc1 d1 (v2 - v1); for the displacement variables of eq.
+ *     8/9, g = x1~* - x1* etc., i.e. C_P z + D_P u with C_P = -C) are affine
+ *     with the constant m x m Jacobian MATRIX J = dg/du* = I_m - C G*_0 (the
+ *     paper's J_c, a scalar only for force/force).  The paper's g^p is g at
+ *     the predictor.  The interpolant through (T_{N+1}, u^p), (T_N, u_N), ...,
+ *     (T_{N-K+1}, ...) passes through K + 1 points of the degree-K
+ *     polynomial P^p, hence IS P^p (componentwise), so z^p_{N+1} = z*(u^p)
+ *     and g^p = g(u^p) exactly.  The linearised equations (13)
+ *     g^p + J (u_{N+1} - u^p) = 0 are then the affine g itself: their
+ *     solution (J invertible) is the exact root, g(u_{N+1}) = 0, and the
  *     predictor drops out of the recurrence;
- *   step 3 (eq. 14): z_{N+1} = z*(lambda_{N+1}), so lambda_{N+1} = C z_{N+1}:
+ *   step 3 (eq. 14): z_{N+1} = z*(u_{N+1}), so u_{N+1} = C z_{N+1}:
  *     (I - G_0 C) z_{N+1} - (E + G_1 C) z_N - sum_{j>=2} G_j C z_{N+1-j} = 0,
  *     degree max(K, 1); for K = 2 the paper's three-term eq. (15).
+ *   Solving for z_{N+1}: with J = I_m - C G_0, (I_n - G_0 C)^{-1} =
+ *     I_n + G_0 J^{-1} C (Woodbury; det(I_n - G_0 C) = det J), so the
+ *     one-step map is Top + G_0 J^{-1} (C Top), Top = [E + G_1 C | G_2 ...]:
+ *     exactly "u_{N+1} = J^{-1} C (E z_N + sum_{j>=1} G_j u_{N+1-j})",
+ *     the solution of the linear coupling conditions (I - C G_0) u_{N+1} =
+ *     C (E z_N + ...), then z_{N+1} = E z_N + G_0 u_{N+1} + ....
  * The time-domain oracle in tests/test_cosim.c runs steps 1-3 literally
- * (predictor, finite-difference Jacobian, Newton, corrector) and agrees.
+ * (predictor, finite-difference Jacobian matrix column by column, Newton
+ * step solving J delta = -g^p, corrector) for FF, FD and DD and agrees; it
+ * also checks its finite-difference J against rs_cosim_recurrence's jacm.
  *
- * Radius: the minimal one-step map (rs_cosim_transition) rather than the
- * block companion of the recurrence, whose extra eigenvalue 0 is defective
+ * Radius: the one-step map (rs_cosim_transition) rather than the block
+ * companion of the recurrence, whose extra eigenvalue 0 is defective
  * (Jordan chains through the delayed z_{N-j} that only enter via C z_{N-j}),
- * which forces the slower cluster route of rs_radius.  Both are exposed. */
+ * which forces the slower cluster route of rs_radius; and the map of the
+ * reduced realisation (rs_cosim_reduce), for the same reason: DD's four
+ * displacement inputs enter through a rank-2 B, and their histories would
+ * add defective zero eigenvalues.  Both routes are exposed. */
 #include <string.h>
 #include <flint/fmpq_poly.h>
 #include <acb_mat.h>

@@ -203,9 +203,10 @@ int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
 /* The coupling realisation actually needed: the recurrence depends on
  * (B, C) only through Phi_k(B) C (Phi_k is linear in B), so any exact rank
  * factorisation B C = P Q (P n x r, Q r x n, r = rank(B C)) gives the same
- * recurrence with r coupling variables w = Q z: P u_extrap(t) = B C-weighted
- * extrapolants = P w_extrap(t), and for the implicit step det(I_r - Q G'_0)
- * = det(I_n - G'_0 Q) = det(I_n - G_0 C).  With r = m (B full column rank and
+ * recurrence with r coupling variables w = Q z: B u_extrap(t) =
+ * sum_j L_j(t) B C z_{N-j} = P w_extrap(t) (the polynomials are linear in
+ * the node values), G'_0 Q = G_0 C, and for the implicit step
+ * det(I_r - Q G'_0) = det(I_n - G'_0 Q) = det(I_n - G_0 C).  With r = m (B full column rank and
  * C full row rank, e.g. every m = 1 coupling) P = B, Q = C themselves;
  * otherwise P = the pivot columns of B C, Q = the nonzero rows of its
  * reduced row echelon form.  Sets *r and (re-dimensioned) P1 (n1 x r),
