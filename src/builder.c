@@ -272,20 +272,40 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
             return at(err, src, i, "expected 'coupling force NAME = EXPR'%s", "");
         }
         flint_free(w);
-        if (c->force_name != NULL)
-            return at(err, src, 0, "a case has one coupling force; '%s' is already defined", c->force_name);
         skip_ws(t, &i);
         p0 = i;
         while (isalnum((unsigned char) t[i]) || t[i] == '_') i++;
         if (i == p0) return at(err, src, p0, "expected the force's name, found '%s'", t + p0);
         name = dupn(t + p0, i - p0);
+        {
+            /* several coupling forces (vector coupling, src/analysis_cosim.c): the first in
+             * force_name/force_expr/force_loc, the others in more_forces */
+            slong k;
+            int dup = c->force_name != NULL && strcmp(c->force_name, name) == 0;
+            for (k = 0; k < c->nmore_forces; k++)
+                if (strcmp(c->more_forces[k].name, name) == 0) dup = 1;
+            if (dup) {
+                int r = at(err, src, p0, "the coupling force '%s' is already defined", name);
+                flint_free(name);
+                return r;
+            }
+        }
         skip_ws(t, &i);
         if (t[i] != '=') { flint_free(name); return at(err, src, i, "expected '=' after the force's name%s", ""); }
         i++;
         skip_ws(t, &i);
-        c->force_name = name;
-        c->force_expr = dupstr(t + i);
-        set_loc(&c->force_loc, src, p0);
+        if (c->force_name == NULL) {
+            c->force_name = name;
+            c->force_expr = dupstr(t + i);
+            set_loc(&c->force_loc, src, p0);
+        } else {
+            rs_force_t *f;
+            c->more_forces = flint_realloc(c->more_forces, (c->nmore_forces + 1) * sizeof(rs_force_t));
+            f = &c->more_forces[c->nmore_forces++];
+            f->name = name;
+            f->expr = dupstr(t + i);
+            set_loc(&f->loc, src, p0);
+        }
         return RS_OK;
     }
     return at(err, src, 0, "unknown builder statement '%s'", kw);
@@ -462,11 +482,11 @@ int rs_builder_expand(rs_case_t c, rs_error_t err)
                                        c->subs[a].intloc.col,
                                        "exact integration is supported when every subsystem uses it (found %s)",
                                        c->subs[a].method);
-        if (c->force_name == NULL || c->couple == NULL
-            || !(strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
+        /* coupling forces are optional: displacement coupling uses the partner's states */
+        if (c->couple == NULL || !(strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
             return rs_error_set_at(err, RS_ERR_INPUT, c->subs[0].loc.file, c->subs[0].loc.line, 1,
-                                   "exact integration needs `coupling force NAME = EXPR` and `couple explicit|implicit "
-                                   "order K`%s", "");
+                                   "exact integration needs `couple explicit|implicit order K` (and the coupling: "
+                                   "`coupling force NAME = EXPR` lines and/or the partner's states)%s", "");
         c->emitted = dupstr("# exact (analytic) subsystem integration: a numeric matrix recurrence, built at "
                             "set values; only numeric analyses (radius) apply\n");
         return RS_OK;

@@ -108,6 +108,11 @@ void rs_case_clear(rs_case_t c)
     loc_clear(&c->couple_loc);
     flint_free(c->force_name); flint_free(c->force_expr);
     loc_clear(&c->force_loc);
+    for (i = 0; i < c->nmore_forces; i++) {
+        flint_free(c->more_forces[i].name); flint_free(c->more_forces[i].expr);
+        loc_clear(&c->more_forces[i].loc);
+    }
+    flint_free(c->more_forces);
     flint_free(c->emitted);
     for (i = 0; i < c->nrec; i++) {
         slong k;
