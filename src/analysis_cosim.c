@@ -1,5 +1,6 @@
 /* analysis_cosim.c -- schemes whose subsystems are integrated exactly
- * (`integrate S exact H`, applied-force coupling): the recurrence has
+ * (`integrate S exact H`, co-simulation coupling through coupling forces
+ * and/or the partner's states, explicit or implicit order K): the recurrence has
  * matrix-exponential entries, so only the certified numeric analyses apply
  * (radius, and the verdict the radius certifies). */
 #include <stdlib.h>
@@ -77,9 +78,9 @@ static void lin_coeff(fmpq_t q, const fmpq_mpoly_t p, slong v, const rs_scheme_s
     fmpq_mpoly_clear(t, ts->ctx);
 }
 
-/* every term of degree exactly 1, in the allowed variables [lo, hi) or `extra` */
-static int check_linear(const fmpq_mpoly_t p, slong lo, slong hi, slong extra, const rs_scheme_struct *ts,
-                        const rs_loc_t *loc, const char *what, rs_error_t err)
+/* every term of degree exactly 1, in the allowed variables [lo, hi) */
+static int check_linear(const fmpq_mpoly_t p, slong lo, slong hi, const rs_scheme_struct *ts, const rs_loc_t *loc,
+                        const char *what, const char *allowed, rs_error_t err)
 {
     slong i, v, len = fmpq_mpoly_length(p, ts->ctx);
     slong *e = flint_malloc(ts->nvars * sizeof(slong));
@@ -88,38 +89,62 @@ static int check_linear(const fmpq_mpoly_t p, slong lo, slong hi, slong extra, c
         slong deg = 0, var = -1;
         fmpq_mpoly_get_term_exp_si(e, p, i, ts->ctx);
         for (v = 0; v < ts->nvars; v++) if (e[v]) { deg += e[v]; var = v; }
-        if (deg != 1)
+        if (deg != 1 || var < lo || var >= hi)
             r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
-                                "expected %s linear and homogeneous in the states (and the coupling force)", what);
-        else if (!((var >= lo && var < hi) || var == extra))
-            r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
-                                "applied-force coupling: %s may use the other subsystem only through the coupling "
-                                "force", what);
+                                "expected %s linear and homogeneous in %s", what, allowed);
     }
     flint_free(e);
     return r;
 }
 
+/* The coupling forces of the case: the first in force_*, the others in more_forces. */
+static slong nforces(const rs_case_struct *c)
+{
+    return (c->force_name != NULL ? 1 : 0) + c->nmore_forces;
+}
+
+static void force_get(const rs_case_struct *c, slong f, const char **name, const char **expr, const rs_loc_t **loc)
+{
+    if (c->force_name != NULL) {
+        if (f == 0) { *name = c->force_name; *expr = c->force_expr; *loc = &c->force_loc; return; }
+        f--;
+    }
+    *name = c->more_forces[f].name;
+    *expr = c->more_forces[f].expr;
+    *loc = &c->more_forces[f].loc;
+}
+
+/* Two subsystems integrated exactly, coupled through u = C z (rs_cosim_from_case in cosim.h):
+ * a subsystem's equations are linear in its own states (-> A_i), in the coupling forces and in
+ * the partner's states (-> B_i; each partner state used is one coupling variable, displacement
+ * coupling / base-point excitation, with C row e_state; each force one, C row = the coefficients of
+ * its expression in the states).  u = (partner states used, in state order; then the forces). */
 static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *vals, rs_error_t err)
 {
     char *text = dupcat("param", ""), *tmp;
     rs_case_t tc;
     rs_scheme_t ts;
-    slong i, j, a, nstate[2], base[2], force;
+    slong i, j, a, nstate[2], base[2], fbase, n, nf = nforces(c), m, *in_var = NULL;
     int r = RS_OK;
     fmpq_mpoly_t p;
     fmpq_t q, h0;
+    fmpq_mat_t W;      /* row = state equation (global), columns = states then forces */
     if (c->nsubs != 2)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
-                               "exact integration with applied-force coupling needs two subsystems (found %ld)",
+                               "exact integration with co-simulation coupling needs two subsystems (found %ld)",
                                (long) c->nsubs);
-    /* a synthetic case whose parameters are the parameters, the states and the force */
+    /* a synthetic case whose parameters are the parameters, the states and the forces */
     for (i = 0; i < c->nparams; i++) { tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->params[i].name); free(tmp); }
     for (a = 0; a < 2; a++)
         for (j = 0; j < c->subs[a].nstates; j++) {
             tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->subs[a].states[j]); free(tmp);
         }
-    tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->force_name); free(tmp);
+    for (i = 0; i < nf; i++) {
+        const char *fn, *fe;
+        const rs_loc_t *fl;
+        force_get(c, i, &fn, &fe, &fl);
+        tmp = dupcat(text, " "); free(text); text = dupcat(tmp, fn); free(tmp);
+    }
     tmp = dupcat(text, "\nchar lambda\n"); free(text); text = tmp;
     /* the case's named expressions (e.g. c1 = lr1^2 + li1^2 for maps over eigenvalues) */
     for (i = 0; i < c->nlets; i++) {
@@ -137,16 +162,17 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
     if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
     nstate[0] = c->subs[0].nstates;
     nstate[1] = c->subs[1].nstates;
+    n = nstate[0] + nstate[1];
     base[0] = c->nparams;
     base[1] = c->nparams + nstate[0];
-    force = c->nparams + nstate[0] + nstate[1];
-    rs_cosim_set_dims(cs, nstate[0], nstate[1]);
+    fbase = c->nparams + n;
     fmpq_mpoly_init(p, ts->ctx);
     fmpq_init(q);
     fmpq_init(h0);
+    fmpq_mat_init(W, n, n + nf);
     for (a = 0; a < 2 && r == RS_OK; a++) {
         const rs_subsystem_t *s = &c->subs[a];
-        fmpq_mat_struct *A = a == 0 ? cs->A1 : cs->A2, *B = a == 0 ? cs->B1 : cs->B2;
+        slong row0 = base[a] - base[0];
         for (j = 0; j < s->nstates && r == RS_OK; j++) {
             const rs_deq_t *d = NULL;
             slong k, q2;
@@ -164,7 +190,7 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
                                         "declare the velocity state after %s", s->states[j]);
                     break;
                 }
-                fmpq_one(fmpq_mat_entry(A, j, j + 1));
+                fmpq_one(fmpq_mat_entry(W, row0 + j, row0 + j + 1));
                 continue;
             }
             if (d == NULL) {
@@ -173,14 +199,12 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
                 break;
             }
             r = eval_linear(p, c, vals, tc, ts, d->rhs, &d->loc, err);
-            if (r == RS_OK) r = check_linear(p, base[a], base[a] + nstate[a], force, ts, &d->loc, "a state equation", err);
-            for (q2 = 0; q2 < nstate[a] && r == RS_OK; q2++) {
-                lin_coeff(q, p, base[a] + q2, ts);
-                fmpq_set(fmpq_mat_entry(A, j, q2), q);
-            }
-            if (r == RS_OK) {
-                lin_coeff(q, p, force, ts);
-                fmpq_set(fmpq_mat_entry(B, j, 0), q);
+            if (r == RS_OK)
+                r = check_linear(p, base[0], fbase + nf, ts, &d->loc, "a state equation",
+                                 "the states (its own; the partner's are coupling inputs) and the coupling forces", err);
+            for (q2 = 0; q2 < n + nf && r == RS_OK; q2++) {
+                lin_coeff(q, p, base[0] + q2, ts);
+                fmpq_set(fmpq_mat_entry(W, row0 + j, q2), q);
             }
         }
         /* the macro step */
@@ -200,12 +224,49 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
             }
         }
     }
+    /* the coupling variables: W column of each (a partner state used, then every force) */
+    m = 0;
+    in_var = flint_malloc((n + nf + 1) * sizeof(slong));
     if (r == RS_OK) {
-        r = eval_linear(p, c, vals, tc, ts, c->force_expr, &c->force_loc, err);
-        if (r == RS_OK) r = check_linear(p, base[0], force, -1, ts, &c->force_loc, "the coupling force", err);
-        for (j = 0; j < nstate[0] + nstate[1] && r == RS_OK; j++) {
-            lin_coeff(q, p, base[0] + j, ts);
-            fmpq_set(fmpq_mat_entry(cs->C, 0, j), q);
+        for (j = 0; j < n; j++) {
+            int own = j < nstate[0] ? 0 : 1, used = 0;
+            slong row;
+            for (row = 0; row < n; row++)
+                if ((row < nstate[0] ? 0 : 1) != own && !fmpq_is_zero(fmpq_mat_entry(W, row, j))) used = 1;
+            if (used) in_var[m++] = j;
+        }
+        for (i = 0; i < nf; i++) in_var[m++] = n + i;
+    }
+    if (r == RS_OK) {
+        slong mm = m > 0 ? m : 1;   /* uncoupled: one zero coupling variable */
+        rs_cosim_set_dims_m(cs, nstate[0], nstate[1], mm);
+        for (j = 0; j < n; j++) {
+            slong ja = j < nstate[0] ? 0 : 1, jl = j - (ja ? nstate[0] : 0), k;
+            fmpq_mat_struct *A = ja == 0 ? cs->A1 : cs->A2, *B = ja == 0 ? cs->B1 : cs->B2;
+            for (k = 0; k < nstate[ja]; k++)
+                fmpq_set(fmpq_mat_entry(A, jl, k), fmpq_mat_entry(W, j, (ja ? nstate[0] : 0) + k));
+            for (k = 0; k < m; k++) {
+                slong v = in_var[k];
+                /* own states are in A, not inputs */
+                if (v < n && (v < nstate[0] ? 0 : 1) == ja) continue;
+                fmpq_set(fmpq_mat_entry(B, jl, k), fmpq_mat_entry(W, j, v));
+            }
+        }
+        for (i = 0; i < m && r == RS_OK; i++) {
+            slong v = in_var[i];
+            if (v < n) {
+                fmpq_one(fmpq_mat_entry(cs->C, i, v));
+            } else {
+                const char *fn, *fe;
+                const rs_loc_t *fl;
+                force_get(c, v - n, &fn, &fe, &fl);
+                r = eval_linear(p, c, vals, tc, ts, fe, fl, err);
+                if (r == RS_OK) r = check_linear(p, base[0], fbase, ts, fl, "a coupling force", "the states", err);
+                for (j = 0; j < n && r == RS_OK; j++) {
+                    lin_coeff(q, p, base[0] + j, ts);
+                    fmpq_set(fmpq_mat_entry(cs->C, i, j), q);
+                }
+            }
         }
     }
     if (r == RS_OK) {
@@ -214,6 +275,8 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
         cs->order = c->couple_order;
         r = rs_cosim_check(cs, err);
     }
+    flint_free(in_var);
+    fmpq_mat_clear(W);
     fmpq_mpoly_clear(p, ts->ctx);
     fmpq_clear(q);
     fmpq_clear(h0);
