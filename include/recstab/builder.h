@@ -11,7 +11,8 @@
  *     couple jacobi | couple gauss-seidel S1 S2 | couple monolithic
  *     iterations K                      # re-integrate with the previous iterate's inputs
  *     extrapolate order K               # inputs at t+h from the last K+1 macro values
- *     coupling force lc = EXPR          # applied-force coupling (exact integration)
+ *     coupling force lc = EXPR          # applied-force coupling (exact integration; several allowed;
+ *                                       # other subsystems' states may also be inputs: FD, DD)
  *     couple explicit order K | couple implicit order K
  *
  * Following Olivier et al. (2019), each subsystem state holds x and its
