@@ -400,6 +400,55 @@ static void r_simulate(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
+static void r_sweep(FILE *out, const json_t *o)
+{
+    const char *tab = jstr(o, "table");
+    const json_t *v = json_object_get(o, "verdicts"), *d = json_object_get(o, "decided_by");
+    const char *key;
+    json_t *val;
+    char buf[512];
+    size_t off = 0;
+    line(out, "request", "%s", jstr(o, "text"));
+    buf[0] = '\0';
+    json_object_foreach((json_t *) v, key, val)
+        off += (size_t) snprintf(buf + off, off < sizeof buf ? sizeof buf - off : 0, "%s%s %lld", off ? ", " : "",
+                                 key, (long long) json_integer_value(val));
+    line(out, "verdicts", "%s", buf);
+    off = 0;
+    buf[0] = '\0';
+    json_object_foreach((json_t *) d, key, val)
+        off += (size_t) snprintf(buf + off, off < sizeof buf ? sizeof buf - off : 0, "%s%s %lld", off ? ", " : "",
+                                 key, (long long) json_integer_value(val));
+    line(out, "decided by", "%s", buf);
+    snprintf(buf, sizeof buf, "%lld points in %.3f s", (long long) json_integer_value(json_object_get(o, "points")),
+             json_real_value(json_object_get(o, "seconds")));
+    line(out, "computed", "%s", buf);
+    line(out, "csv", "%s", jstr(o, "csv"));
+    line(out, "note", "%s", jstr(o, "table_note"));
+    if (tab != NULL) {
+        /* the table, columns aligned */
+        const char *p = tab;
+        int rowsn = 0;
+        while (*p && rowsn < 60) {
+            const char *nl = strchr(p, '\n');
+            size_t len = nl ? (size_t) (nl - p) : strlen(p);
+            size_t i = 0;
+            fputs("    ", out);
+            while (i < len) {
+                size_t j = i;
+                while (j < len && p[j] != ',') j++;
+                fprintf(out, "%-18.*s", (int) (j - i > 17 ? 17 : j - i), p + i);
+                i = j + 1;
+            }
+            fputc('\n', out);
+            rowsn++;
+            p += len + (nl ? 1 : 0);
+        }
+        if (*p) fputs("    ... (all rows: --csv FILE)\n", out);
+    }
+    print_assigned(out, o);
+}
+
 /* Fallback: every member except "analysis" as key: value. */
 static void r_generic(FILE *out, const json_t *o)
 {
@@ -435,6 +484,8 @@ static const renderer_t renderers[] = {
     {"radius", r_radius},
     {"modes", r_modes},
     {"simulate", r_simulate},
+    {"sweep", r_sweep},
+    {"map", r_sweep},
     {NULL, NULL}
 };
 
