@@ -391,6 +391,143 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
 
 /* ---- jury / stability ----------------------------------------------------- */
 
+/* Symbolic Schur-Cohn (Jury) conditions: with p_n = p and
+ * p_{k-1} = (lead(p_k) p_k - p_k(0) p_k^*)/lambda (p^* the reciprocal), all
+ * roots lie inside the circle iff delta_k = lead(p_k)^2 - p_k(0)^2 > 0 for
+ * k = n..1 (Schur 1917; Jury's table).  Each reduced polynomial is divided by
+ * the content of its coefficients (a non-zero factor of the parameters does
+ * not move roots and enters delta squared).  Generic: where a delta vanishes
+ * the exact numeric test decides. */
+static void append_unique(json_t *arr, const char *str)
+{
+    size_t i;
+    for (i = 0; i < json_array_size(arr); i++)
+        if (strcmp(json_string_value(json_array_get(arr, i)), str) == 0) return;
+    json_array_append_new(arr, json_string(str));
+}
+
+static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
+{
+    const rs_scheme_struct *s = v->s;
+    slong lv = s->lambda_var, n = v->cp->degree, k, j;
+    fmpz_mpoly_struct *a = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    fmpz_mpoly_t t, u, g, delta;
+    json_t *rows = json_array(), *conds = json_array(), *dropped = json_array();
+    int *sign = rs_run_signs(run, s);
+    int r = RS_OK;
+    for (j = 0; j <= n; j++) {
+        fmpz_mpoly_init(a + j, s->zctx);
+        rs_charpoly_coeff(a + j, v->cp->p, j, lv, s->zctx);
+    }
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
+    fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(delta, s->zctx);
+    for (k = n; k >= 1 && r == RS_OK; k--) {
+        json_t *row = json_array();
+        fmpz_mpoly_factor_t f;
+        slong i;
+        char *str;
+        for (j = 0; j <= k; j++) json_array_append_new(row, rs_json_zpoly(a + j, s));
+        json_array_append_new(rows, row);
+        /* delta_k = a_k^2 - a_0^2 = (a_k - a_0)(a_k + a_0) */
+        fmpz_mpoly_mul(t, a + k, a + k, s->zctx);
+        fmpz_mpoly_mul(u, a + 0, a + 0, s->zctx);
+        fmpz_mpoly_sub(delta, t, u, s->zctx);
+        if (fmpz_mpoly_length(delta, s->zctx) > RS_CHARPOLY_MAX_TERMS) {
+            r = rs_error_set(run->err, RS_ERR_LIMIT, "symbolic Schur-Cohn table: a condition has over %ld terms (limit)",
+                             (long) RS_CHARPOLY_MAX_TERMS);
+            json_decref(row);
+            break;
+        }
+        fmpz_mpoly_factor_init(f, s->zctx);
+        if (fmpz_mpoly_is_zero(delta, s->zctx)) {
+            /* |p_k(0)| = |lead| for every value: the table is singular (e.g. a
+             * self-reciprocal p, roots symmetric about the circle): never
+             * asymptotically stable; the exact numeric test counts the roots */
+            append_unique(conds, "0 > 0");
+            json_object_set_new(o, "singular_row", json_integer(n - k));
+            fmpz_mpoly_factor_clear(f, s->zctx);
+            break;
+        } else if (fmpz_mpoly_factor(f, delta, s->zctx)) {
+            /* keep the factors whose sign is not settled by the assumptions */
+            fmpz_mpoly_t kept;
+            int neg = fmpz_sgn(f->constant) < 0;
+            fmpz_mpoly_init(kept, s->zctx);
+            fmpz_mpoly_one(kept, s->zctx);
+            for (i = 0; i < f->num; i++) {
+                int sg = rs_hurwitz_sign(f->poly + i, (const rs_sign_t *) sign, s->zctx);
+                slong e = fmpz_get_si(f->exp + i);
+                if (sg != 0) {
+                    if (sg < 0 && (e & 1)) neg = !neg;
+                    json_array_append_new(dropped, json_pack("{s:o,s:I}", "factor", rs_json_zpoly(f->poly + i, s),
+                                                             "row", (json_int_t) (n - k)));
+                    continue;
+                }
+                if (e & 1) fmpz_mpoly_mul(kept, kept, f->poly + i, s->zctx);
+                else {
+                    char *fs = rs_polyfmt_fmpz_mpoly(f->poly + i, (const char **) s->vars, s->zctx);
+                    char *line = malloc(strlen(fs) + 16);
+                    sprintf(line, "%s != 0", fs);
+                    append_unique(conds, line);
+                    free(line);
+                    free(fs);
+                }
+            }
+            if (neg) fmpz_mpoly_neg(kept, kept, s->zctx);
+            if (!fmpz_mpoly_is_one(kept, s->zctx)) {
+                char *line;
+                str = rs_polyfmt_fmpz_mpoly(kept, (const char **) s->vars, s->zctx);
+                line = malloc(strlen(str) + 8);
+                sprintf(line, "%s > 0", str);
+                append_unique(conds, line);
+                free(line);
+                free(str);
+            }
+            fmpz_mpoly_clear(kept, s->zctx);
+        }
+        fmpz_mpoly_factor_clear(f, s->zctx);
+        /* p_{k-1}: coefficient j = a_k a_{j+1} - a_0 a_{k-1-j}, j = 0..k-1 */
+        {
+            fmpz_mpoly_struct *b = flint_malloc(k * sizeof(fmpz_mpoly_struct));
+            for (j = 0; j < k; j++) {
+                fmpz_mpoly_init(b + j, s->zctx);
+                fmpz_mpoly_mul(t, a + k, a + j + 1, s->zctx);
+                fmpz_mpoly_mul(u, a + 0, a + k - 1 - j, s->zctx);
+                fmpz_mpoly_sub(b + j, t, u, s->zctx);
+            }
+            /* divide by the content of the row */
+            fmpz_mpoly_zero(g, s->zctx);
+            for (j = 0; j < k; j++) {
+                if (!fmpz_mpoly_gcd(g, g, b + j, s->zctx)) { fmpz_mpoly_one(g, s->zctx); break; }
+            }
+            if (!fmpz_mpoly_is_zero(g, s->zctx) && !fmpz_mpoly_is_one(g, s->zctx))
+                for (j = 0; j < k; j++) fmpz_mpoly_divexact(b + j, b + j, g, s->zctx);
+            for (j = 0; j <= k; j++) fmpz_mpoly_clear(a + j, s->zctx);
+            for (j = 0; j < k; j++) a[j] = b[j];
+            flint_free(b);
+        }
+    }
+    for (j = 0; j <= k && j <= n; j++) fmpz_mpoly_clear(a + j, s->zctx);
+    flint_free(a);
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
+    flint_free(sign);
+    if (r == RS_OK) {
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "rows", rows);
+        json_object_set_new(o, "conditions", conds);
+        json_object_set_new(o, "dropped", dropped);
+        json_object_set_new(o, "note", json_string(
+            "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
+            "all |lambda| < 1 iff every lead^2 - const^2 > 0 (generic: where a condition vanishes, set the parameters "
+            "for the exact singular-case treatment)"));
+    } else {
+        json_decref(rows);
+        json_decref(conds);
+        json_decref(dropped);
+    }
+    return r;
+}
+
 static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     rs_variant_t *v;
@@ -405,8 +542,18 @@ static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
-    r = rs_run_numeric_poly(p, run, q, v, "jury");
-    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    if (!rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx)) {
+        fmpz_poly_clear(p);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("jury"));
+        json_object_set_new(o, "method", json_string("Schur-Cohn (Jury) table, symbolic"));
+        r = jury_symbolic(run, v, o);
+        if (r != RS_OK) { json_decref(o); return r; }
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+        return RS_OK;
+    }
     rs_jury_init(ju);
     rs_routh_init(ro);
     r = rs_jury_fmpz_poly(ju, p, run->err);

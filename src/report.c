@@ -200,6 +200,18 @@ static void r_hurwitz(FILE *out, const json_t *o)
 static void r_jury(FILE *out, const json_t *o)
 {
     const json_t *cc = json_object_get(o, "cross_check");
+    if (json_is_true(json_object_get(o, "symbolic"))) {
+        const json_t *c = json_object_get(o, "conditions");
+        size_t i;
+        line(out, "method", "%s", jstr(o, "method"));
+        if (json_array_size(c) == 0)
+            line(out, "conditions", "%s", "none left: every Schur-Cohn condition holds under the assumptions");
+        for (i = 0; i < json_array_size(c); i++)
+            line(out, i == 0 ? "stable iff" : "and", "%s", json_string_value(json_array_get(c, i)));
+        line(out, "note", "%s", jstr(o, "note"));
+        print_assigned(out, o);
+        return;
+    }
     line(out, "method", "%s", jstr(o, "method"));
     if (json_is_true(json_object_get(o, "table_regular")))
         print_string_list(out, "table rows", json_object_get(o, "rows"), "\n               ");

@@ -259,6 +259,96 @@ static void test_park_printed_bilinear(void **state)
     json_decref(doc);
 }
 
+/* Symbolic Schur-Cohn conditions on Park: at random rational points, "every
+ * condition holds" must equal the exact verdict "stable" computed there by the
+ * `stability` analysis (Routh and numeric Schur-Cohn), an independent path. */
+static void test_park_symbolic_jury(void **state)
+{
+    const char *req[] = {"jury"};
+    int outcome, k, agree = 0;
+    json_t *doc;
+    const json_t *conds;
+    const char *vars[] = {"m", "muh", "wh", "alpha", "lambda"};
+    fmpz_mpoly_ctx_t ctx;
+    flint_rand_t st;
+    (void) state;
+    doc = run_case("cases/park-staggered.case", req, 1, &outcome);
+    conds = json_object_get(result(doc, 0), "conditions");
+    assert_true(json_array_size(conds) >= 1);
+    fmpz_mpoly_ctx_init(ctx, 5, ORD_LEX);
+    flint_randinit(st);
+    for (k = 0; k < 40; k++) {
+        char sets[4][64];
+        fmpq pt[5];
+        fmpq *pp[5];
+        size_t i;
+        int all = 1, v;
+        const char *names[4] = {"m", "muh", "wh", "alpha"};
+        const char *sreq[1];
+        json_t *d2;
+        char text[400];
+        for (v = 0; v < 5; v++) { fmpq_init(pt + v); pp[v] = pt + v; }
+        for (v = 0; v < 4; v++) {
+            slong num = 1 + (slong) n_randint(st, 40), den = 1 + (slong) n_randint(st, 8);
+            if (v == 3) { num = (slong) n_randint(st, 25); den = 8; }
+            fmpq_set_si(pt + v, num, (ulong) den);
+            snprintf(sets[v], sizeof sets[v], "%s=%ld/%ld", names[v], (long) num, (long) den);
+        }
+        for (i = 0; i < json_array_size(conds); i++) {
+            const char *c = json_string_value(json_array_get(conds, i));
+            fmpz_mpoly_t pc;
+            fmpq_t val;
+            size_t len = strlen(c);
+            int strict = strstr(c, " > 0") != NULL;
+            char *cb = malloc(len + 1);
+            {
+                size_t q, w = 0, stop = len - (strict ? 4 : 5);
+                for (q = 0; q < stop; q++)
+                    if (c[q] != ' ') cb[w++] = c[q];
+                cb[w] = '\0';
+            }
+            fmpz_mpoly_init(pc, ctx);
+            fmpq_init(val);
+            assert_int_equal(fmpz_mpoly_set_str_pretty(pc, cb, vars, ctx), 0);
+            free(cb);
+            tu_eval_fmpz_mpoly(val, pc, pp, ctx);
+            if (strict ? fmpq_sgn(val) <= 0 : fmpq_is_zero(val)) all = 0;
+            fmpz_mpoly_clear(pc, ctx);
+            fmpq_clear(val);
+        }
+        snprintf(text, sizeof text, "param m muh wh alpha\nchar 0\n");
+        (void) text;
+        /* the exact verdict at the point */
+        {
+            char path[1024];
+            rs_case_t c;
+            rs_error_t err;
+            rs_options_t opt;
+            int oc, v2;
+            snprintf(path, sizeof path, "%s/cases/park-staggered.case", RS_SOURCE_DIR);
+            rs_case_init(c);
+            rs_error_init(err);
+            rs_options_default(&opt);
+            assert_int_equal(rs_case_parse_file(c, path, err), RS_OK);
+            for (v2 = 0; v2 < 4; v2++) assert_int_equal(rs_case_set_value(c, sets[v2], err), RS_OK);
+            rs_case_clear_requests(c);
+            sreq[0] = "stability";
+            rs_case_add_request(c, sreq[0], "test", 1, 1);
+            assert_int_equal(rs_analysis_run(&d2, &oc, c, &opt, err), RS_OK);
+            if ((strcmp(str(result(d2, 0), "status"), "stable") == 0) == all) agree++;
+            else fail_msg("point %s %s %s %s: conditions %d, exact %s", sets[0], sets[1], sets[2], sets[3], all,
+                          str(result(d2, 0), "status"));
+            json_decref(d2);
+            rs_case_clear(c);
+        }
+        for (v = 0; v < 5; v++) fmpq_clear(pt + v);
+    }
+    assert_int_equal(agree, 40);
+    flint_randclear(st);
+    fmpz_mpoly_ctx_clear(ctx);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -269,6 +359,7 @@ int main(void)
         cmocka_unit_test(test_park_counterexample),
         cmocka_unit_test(test_park_proof_and_region),
         cmocka_unit_test(test_park_printed_bilinear),
+        cmocka_unit_test(test_park_symbolic_jury),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);
 }
