@@ -294,27 +294,16 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     arb_one(h);
     /* options: h=EXPR (time step; default 1 for schemes scaled by h), reference=EXPR[,EXPR...] */
     hs = strstr(rest, "h=");
-    if (hs != NULL && (hs == rest || hs[-1] == ' ')) {
-        char buf[256];
-        size_t n = strcspn(hs + 2, " \t");
-        (void) buf;
+    if (hs != NULL && (hs == rest || hs[-1] == ' '))
         r = eval_number(h, run, q, v, hs + 2, prec);
-        (void) n;
-    }
     ref = strstr(rest, "reference=");
     if (r == RS_OK && ref != NULL) {
         const char *t = ref + 10;
         for (;;) {
             size_t n = strcspn(t, ", \t");
-            char *tmp = malloc(n + 1);
-            rs_request_t sub = *q;
-            memcpy(tmp, t, n);
-            tmp[n] = '\0';
             refs = realloc(refs, (size_t) (nref + 1) * sizeof(arb_t));
             arb_init(refs[nref]);
             r = eval_number(refs[nref], run, q, v, t, prec);
-            (void) sub;
-            free(tmp);
             nref++;
             if (r != RS_OK) break;
             t += n;

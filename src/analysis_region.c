@@ -301,8 +301,8 @@ static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
     }
     {
         slong prec = 64;
-        arf_t u, l, m;
-        arf_init(u); arf_init(l); arf_init(m);
+        arf_t u, l;
+        arf_init(u); arf_init(l);
         for (;;) {
             alg_refine(a, prec);
             alg_refine(b, prec);
@@ -338,7 +338,7 @@ static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
             fmpq_clear(qu); fmpq_clear(ql); fmpq_clear(t);
             fmpz_clear(den);
         }
-        arf_clear(u); arf_clear(l); arf_clear(m);
+        arf_clear(u); arf_clear(l);
     }
 }
 
@@ -379,12 +379,9 @@ static int status_at(rs_status_t *st, rs_run_t *run, const fmpz_mpoly_t p, slong
     return r;
 }
 
-static int alg_sort_cmp_dummy;
-
 static void sort_algs(alg_t *a, slong n)
 {
     slong i, j;
-    (void) alg_sort_cmp_dummy;
     for (i = 1; i < n; i++)       /* insertion sort: n is small */
         for (j = i; j > 0 && alg_cmp(a + j - 1, a + j) > 0; j--) {
             alg_t t = a[j - 1];
@@ -395,7 +392,7 @@ static void sort_algs(alg_t *a, slong n)
 
 /* region in one parameter when other parameters are still symbolic: the
  * conditions as functions of them (Hurwitz/Lienard-Chipart, factored). */
-static int region_symbolic(rs_run_t *run, rs_variant_t *v, const char *name, json_t *o)
+static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
 {
     rs_hurwitz_t h;
     fmpz_mpoly_t qz;
@@ -423,7 +420,6 @@ static int region_symbolic(rs_run_t *run, rs_variant_t *v, const char *name, jso
             "other parameters are symbolic: stable iff every condition holds (Lienard-Chipart on the "
             "bilinear polynomial, factors positive under the assumptions dropped); a region valid for all "
             "admissible values is what `claim stable when ...` proves or refutes"));
-        (void) name;
     } else {
         json_decref(conds);
     }
@@ -479,7 +475,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_object_set_new(o, "param", json_string(name));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
     if (count_free(v->cp->p, s, tv) > 0) {
-        r = region_symbolic(run, v, name, o);
+        r = region_symbolic(run, v, o);
         if (r != RS_OK) { json_decref(o); return r; }
         json_object_set_new(o, "decided_by", json_string("exact"));
         json_array_append_new(run->results, o);
@@ -1289,7 +1285,6 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     fmpq **pp;
     json_t *o, *counter = NULL, *cert;
     int r = RS_OK, refuted = 0, proved = 0;
-    rs_status_t cstatus = RS_STATUS_STABLE;
     rs_rootcount_t crc;
     flint_rand_t st;
     const char *tried;
@@ -1434,7 +1429,6 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             r = rs_run_exact_count(rc, run, u, NULL);
             if (r == RS_OK && violates(kind, rs_rootcount_status(rc))) {
                 refuted = 1;
-                cstatus = rs_rootcount_status(rc);
                 *crc = *rc;
                 counter = json_object();
                 for (k = 0; k < nparams; k++)
@@ -1511,7 +1505,6 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             rs_json_add_count(at, crc);
             json_object_set_new(at, "decided_by", json_string("exact"));
             json_object_set_new(o, "at_counterexample", at);
-            (void) cstatus;
             run->outcome |= RS_OUTCOME_FAILED;
         } else if (proved) {
             json_object_set_new(o, "status", json_string("proved"));

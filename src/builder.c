@@ -374,12 +374,11 @@ static slong extrap_coeff(slong K, slong i)
     return (i % 2) ? -r : r;
 }
 
-/* partner state p (subsystem b) as seen by subsystem a in iterate j */
-static void partner(sb_t *b, const gen_t *g, const char *p, slong a, slong bb, slong j)
+/* partner state p as seen by subsystem a in iterate j */
+static void partner(sb_t *b, const gen_t *g, const char *p, slong a, slong j)
 {
     int delayed;
     const rs_case_struct *c = g->c;
-    (void) bb;
     if (g->kind == 0) { var(b, p, j, g->K); sb_add(b, "[n+1]"); return; }
     delayed = (g->kind == 1) || (g->kind == 2 && a == g->first);
     if (j == 0 && delayed) {
@@ -421,7 +420,7 @@ static int subst(sb_t *b, const gen_t *g, slong a, slong j, const rs_deq_t *d, r
             }
             if (find_state(c, name, &sa, &sk)) {
                 if (sa == a) { var(b, name, j, g->K); sb_add(b, "[n+1]"); }
-                else partner(b, g, name, a, sa, j);
+                else partner(b, g, name, a, j);
             } else if ((li = rs_case_let_index(c, name)) >= 0) {
                 if (c->lets[li].shifted) sb_add(b, "%s[n+1]", name);
                 else sb_add(b, "%s", name);

@@ -228,7 +228,6 @@ static rs_expr_t *parse_primary(parser_t *p)
         if (t[p->pos] == '(') {
             /* a function call NAME(EXPR); meaning is checked by the evaluators */
             rs_expr_t *arg;
-            size_t lp = p->pos;
             p->pos++;
             arg = parse_expr(p);
             if (arg == NULL) { rs_expr_free(e); return NULL; }
@@ -240,7 +239,6 @@ static rs_expr_t *parse_primary(parser_t *p)
                 return NULL;
             }
             p->pos++;
-            (void) lp;
             e->kind = RS_EXPR_CALL;
             e->a = arg;
             p->height = p->height + 1;
