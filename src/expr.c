@@ -340,17 +340,27 @@ static rs_expr_t *parse_power(parser_t *p)
     return binary_h(p, RS_EXPR_POW, at, a, ha, b);
 }
 
-static rs_expr_t *parse_unary(parser_t *p)
+/* One more level of nesting; an error past RS_EXPR_MAX_DEPTH (the parser is
+ * recursive, so depth is bounded before the stack is). */
+static int depth_enter(parser_t *p)
 {
-    const char *t = p->src->text;
-    skip_ws(p);
-    if (++p->depth > RS_EXPR_MAX_DEPTH) {
+    if (++p->depth <= RS_EXPR_MAX_DEPTH)
+        return 1;
+    {
         int line, col;
         rs_src_pos(p->src, p->pos, &line, &col);
         rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
                         "expression nested too deeply (limit %d)", RS_EXPR_MAX_DEPTH);
-        return NULL;
     }
+    return 0;
+}
+
+static rs_expr_t *parse_unary(parser_t *p)
+{
+    const char *t = p->src->text;
+    skip_ws(p);
+    if (!depth_enter(p))
+        return NULL;
     if (t[p->pos] == '-' || t[p->pos] == '+') {
         size_t at = p->pos;
         int neg = (t[p->pos] == '-');
@@ -368,21 +378,23 @@ static rs_expr_t *parse_unary(parser_t *p)
     }
 }
 
-static rs_expr_t *parse_term(parser_t *p)
+/* operand (op operand)*, left associative, for one precedence level */
+static rs_expr_t *parse_chain(parser_t *p, rs_expr_t *(*operand)(parser_t *), char op1, rs_expr_kind_t k1,
+                              char op2, rs_expr_kind_t k2)
 {
     const char *t = p->src->text;
-    rs_expr_t *a = parse_unary(p), *b;
+    rs_expr_t *a = operand(p), *b;
     while (a != NULL) {
         size_t at;
         rs_expr_kind_t k;
         int ha = p->height;
         skip_ws(p);
-        if (t[p->pos] != '*' && t[p->pos] != '/')
+        if (t[p->pos] != op1 && t[p->pos] != op2)
             break;
         at = p->pos;
-        k = (t[p->pos] == '*') ? RS_EXPR_MUL : RS_EXPR_DIV;
+        k = (t[p->pos] == op1) ? k1 : k2;
         p->pos++;
-        b = parse_unary(p);
+        b = operand(p);
         if (b == NULL) {
             rs_expr_free(a);
             return NULL;
@@ -392,36 +404,17 @@ static rs_expr_t *parse_term(parser_t *p)
     return a;
 }
 
+static rs_expr_t *parse_term(parser_t *p)
+{
+    return parse_chain(p, parse_unary, '*', RS_EXPR_MUL, '/', RS_EXPR_DIV);
+}
+
 static rs_expr_t *parse_expr(parser_t *p)
 {
-    const char *t = p->src->text;
-    rs_expr_t *a, *b;
-    if (++p->depth > RS_EXPR_MAX_DEPTH) {
-        int line, col;
-        rs_src_pos(p->src, p->pos, &line, &col);
-        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
-                        "expression nested too deeply (limit %d)", RS_EXPR_MAX_DEPTH);
+    rs_expr_t *a;
+    if (!depth_enter(p))
         return NULL;
-    }
-    a = parse_term(p);
-    while (a != NULL) {
-        size_t at;
-        rs_expr_kind_t k;
-        int ha = p->height;
-        skip_ws(p);
-        if (t[p->pos] != '+' && t[p->pos] != '-')
-            break;
-        at = p->pos;
-        k = (t[p->pos] == '+') ? RS_EXPR_ADD : RS_EXPR_SUB;
-        p->pos++;
-        b = parse_term(p);
-        if (b == NULL) {
-            rs_expr_free(a);
-            a = NULL;
-            break;
-        }
-        a = binary_h(p, k, at, a, ha, b);
-    }
+    a = parse_chain(p, parse_term, '+', RS_EXPR_ADD, '-', RS_EXPR_SUB);
     p->depth--;
     return a;
 }
