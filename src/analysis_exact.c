@@ -108,18 +108,6 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
 
 /* ---- bilinear ------------------------------------------------------------- */
 
-static slong min_exp_var(const fmpz_mpoly_t p, slong v, const fmpz_mpoly_ctx_t ctx)
-{
-    slong i, best = WORD_MAX, n = fmpz_mpoly_length(p, ctx);
-    slong *e = flint_malloc(ctx->minfo->nvars * sizeof(slong));
-    for (i = 0; i < n; i++) {
-        fmpz_mpoly_get_term_exp_si(e, p, i, ctx);
-        if (e[v] < best) best = e[v];
-    }
-    flint_free(e);
-    return n ? best : 0;
-}
-
 static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     rs_variant_t *v;
@@ -145,7 +133,7 @@ static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_object_set_new(o, "coeffs", rs_json_coeffs(qz, lv, s));
     json_object_set_new(o, "poly", rs_json_collected(qz, lv, s, "z"));
     json_object_set_new(o, "degree_drop", json_integer(v->cp->degree - d));
-    json_object_set_new(o, "zero_mult", json_integer(min_exp_var(qz, lv, s->zctx)));
+    json_object_set_new(o, "zero_mult", json_integer(rs_scheme_min_degree(qz, lv, s->zctx)));
     /* where lambda = -1 / lambda = 1 become roots: p(-1) = 0 / p(1) = 0 */
     {
         fmpz_t one;

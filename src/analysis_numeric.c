@@ -402,18 +402,6 @@ static void entry_coeff(fmpq_t c, const fmpq_mpoly_t e, slong k, const rs_scheme
     fmpq_mpoly_clear(t, s->ctx);
 }
 
-static slong entry_lowdeg(const fmpq_mpoly_t e, const rs_scheme_t s)
-{
-    slong i, best = WORD_MAX, len = fmpq_mpoly_length(e, s->ctx);
-    slong *ex = flint_malloc(s->nvars * sizeof(slong));
-    for (i = 0; i < len; i++) {
-        fmpq_mpoly_get_term_exp_si(ex, e, i, s->ctx);
-        if (ex[s->lambda_var] < best) best = ex[s->lambda_var];
-    }
-    flint_free(ex);
-    return best;
-}
-
 static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     static const char *const keys[] = {"steps", "seed", "prec", NULL};
@@ -462,7 +450,10 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
                 if (fmpq_mpoly_is_zero(e, s->ctx)) continue;
                 if (fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i] > Mu[u])
                     Mu[u] = fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i];
-                if (entry_lowdeg(e, s) + s->row_shift[i] < mu[u]) mu[u] = entry_lowdeg(e, s) + s->row_shift[i];
+                {
+                    slong lo = rs_scheme_min_degree(e->zpoly, s->lambda_var, s->ctx->zctx) + s->row_shift[i];
+                    if (lo < mu[u]) mu[u] = lo;
+                }
             }
             if (Mu[u] == WORD_MIN) { scalar = 1; break; }
         }

@@ -1147,12 +1147,8 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
     if (ok) ok = prove_hurwitz_stable(run, H, b, s, cert, st);
     if (ok) {
         /* G = z^k G1, G1 even */
-        k = WORD_MAX;
+        k = rs_scheme_min_degree(G, lv, s->zctx);
         len = fmpz_mpoly_length(G, s->zctx);
-        for (i = 0; i < len; i++) {
-            fmpz_mpoly_get_term_exp_ui(e, G, i, s->zctx);
-            if ((slong) e[lv] < k) k = (slong) e[lv];
-        }
         if (k > 1) ok = 0;                                          /* repeated lambda = 1 */
         for (i = 0; ok && i < len; i++) {
             fmpz_mpoly_get_term_exp_ui(e, G, i, s->zctx);

@@ -30,18 +30,6 @@ void rs_charpoly_fmpq_to_fmpz(fmpz_mpoly_t out, fmpq_t scale, const fmpq_mpoly_t
         fmpq_inv(scale, q->content);
 }
 
-static slong min_exp(const fmpz_mpoly_t p, slong v, const fmpz_mpoly_ctx_t ctx)
-{
-    slong i, best = WORD_MAX, n = fmpz_mpoly_length(p, ctx);
-    slong *e = flint_malloc(ctx->minfo->nvars * sizeof(slong));
-    for (i = 0; i < n; i++) {
-        fmpz_mpoly_get_term_exp_si(e, p, i, ctx);
-        if (e[v] < best) best = e[v];
-    }
-    flint_free(e);
-    return n == 0 ? 0 : best;
-}
-
 void rs_charpoly_coeff(fmpz_mpoly_t c, const fmpz_mpoly_t p, slong k,
                        slong lambda_var, const fmpz_mpoly_ctx_t ctx)
 {
@@ -57,7 +45,7 @@ slong rs_charpoly_normalise(fmpz_mpoly_t q, fmpq_t scale, slong lambda_var,
     fmpz_mpoly_t lc, m;
     if (fmpz_mpoly_is_zero(q, ctx))
         return 0;
-    k = min_exp(q, lambda_var, ctx);
+    k = rs_scheme_min_degree(q, lambda_var, ctx);
     if (k > 0) {
         fmpz_mpoly_init(m, ctx);
         fmpz_mpoly_gen(m, lambda_var, ctx);

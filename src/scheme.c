@@ -543,17 +543,16 @@ static void setup_ctx(rs_scheme_t s, const rs_case_t c)
     fmpq_mpoly_init(s->charpoly, s->ctx);
 }
 
-/* lowest exponent of variable v in p (p != 0) */
-static slong min_degree(const fmpq_mpoly_t p, slong v, const fmpq_mpoly_ctx_t ctx)
+slong rs_scheme_min_degree(const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx_t ctx)
 {
-    slong i, n = fmpq_mpoly_length(p, ctx), best = WORD_MAX;
-    slong *exp = flint_malloc(ctx->zctx->minfo->nvars * sizeof(slong));
+    slong i, n = fmpz_mpoly_length(p, ctx), best = WORD_MAX;
+    slong *exp = flint_malloc(ctx->minfo->nvars * sizeof(slong));
     for (i = 0; i < n; i++) {
-        fmpq_mpoly_get_term_exp_si(exp, p, i, ctx);
-        if (exp[v] < best) best = exp[v];
+        fmpz_mpoly_get_term_exp_si(exp, p, i, ctx);
+        if (exp[var] < best) best = exp[var];
     }
     flint_free(exp);
-    return best;
+    return n == 0 ? 0 : best;
 }
 
 static void ev_setup(ev_t *x, const rs_scheme_struct *s, const rs_case_struct *c, int allow_lambda,
@@ -665,7 +664,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
             record_nonzero(&x, v.den);
             for (j = 0; j < n; j++)
                 if (!fmpq_mpoly_is_zero(v.c + 1 + j, s->ctx)) {
-                    slong m = v.low + min_degree(v.c + 1 + j, s->lambda_var, s->ctx);
+                    slong m = v.low + rs_scheme_min_degree(v.c[1 + j].zpoly, s->lambda_var, s->ctx->zctx);
                     if (m < rowmin) rowmin = m;
                 }
             s->row_shift[i] = rowmin;

@@ -55,6 +55,11 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
                         const rs_case_t c, const rs_expr_t *e, int allow_lambda,
                         rs_error_t err);
 
+/* Lowest exponent of variable var in p (0 for p = 0): the power of lambda a
+ * row or a polynomial can be divided by.  For an fmpq_mpoly pass its zpoly
+ * and ctx->zctx (same monomials). */
+slong rs_scheme_min_degree(const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx_t ctx);
+
 /* Substitutes the rational value for variable var in every entry. */
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value);
 
