@@ -9,6 +9,7 @@
 #include "recstab/bilinear.h"
 #include "recstab/cond.h"
 #include "recstab/builder.h"
+#include "recstab/radius.h"
 
 const char *const rs_analysis_names[] = {
     "charpoly", "expect", NULL
@@ -139,6 +140,44 @@ json_t *rs_json_fmpq(const fmpq_t q)
     return j;
 }
 
+json_t *rs_json_arb(const arb_t x, slong digits)
+{
+    char *s = arb_get_str(x, digits < 1 ? 1 : digits, ARB_STR_NO_RADIUS);
+    json_t *j = json_string(s);
+    flint_free(s);
+    return j;
+}
+
+json_t *rs_json_sets(const rs_case_t c)
+{
+    json_t *sets = json_object();
+    slong i;
+    for (i = 0; i < c->nsets; i++)
+        json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
+    return sets;
+}
+
+const char *rs_radius_verdict(const rs_radius_t rr)
+{
+    arb_t one;
+    const char *v;
+    arb_init(one);
+    arb_one(one);
+    v = arb_lt(rr->upper, one) ? "stable" : arb_gt(rr->lower, one) ? "unstable" : "undecided";
+    arb_clear(one);
+    return v;
+}
+
+void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
+{
+    json_object_set_new(o, "certified", json_true());
+    json_object_set_new(o, "lower", rs_json_arb(rr->lower, digits + 5));
+    json_object_set_new(o, "upper", rs_json_arb(rr->upper, digits + 5));
+    json_object_set_new(o, "rho", rs_json_arb(rr->rho, digits));
+    json_object_set_new(o, "digits", json_integer(digits));
+    json_object_set_new(o, "precision_bits", json_integer(rr->prec));
+}
+
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
 {
     char *str = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);
@@ -201,6 +240,66 @@ int *rs_run_signs(rs_run_t *run, const rs_scheme_t s)
     rs_bounds_clear(b, c->nparams);
     flint_free(b);
     return sign;
+}
+
+/* ---- request options "key=value" ----------------------------------------- */
+
+int rs_req_opt_get(char *val, size_t len, const char *text, const char *key)
+{
+    size_t kl = strlen(key);
+    const char *t = text;
+    while ((t = strstr(t, key)) != NULL) {
+        if ((t == text || t[-1] == ' ' || t[-1] == '\t' || t[-1] == ',') && t[kl] == '=') {
+            size_t n = strcspn(t + kl + 1, " \t");
+            if (n >= len) n = len - 1;
+            memcpy(val, t + kl + 1, n);
+            val[n] = '\0';
+            return 1;
+        }
+        t += kl;
+    }
+    return 0;
+}
+
+int rs_req_opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys)
+{
+    const char *t = text;
+    while (*t) {
+        size_t n, k;
+        int ok = 0;
+        while (*t == ' ' || *t == '\t') t++;
+        if (!*t) break;
+        n = strcspn(t, "= \t");
+        for (k = 0; keys[k]; k++)
+            if (strlen(keys[k]) == n && strncmp(keys[k], t, n) == 0 && t[n] == '=') ok = 1;
+        if (!ok) {
+            char list[256] = "", msg[400];
+            for (k = 0; keys[k]; k++) {
+                strcat(list, k ? ", " : "");
+                strcat(list, keys[k]);
+                strcat(list, "=");
+            }
+            snprintf(msg, sizeof msg, "expected an option (%s), found '%%s'", list);
+            return rs_req_error(run, q, t, RS_ERR_INPUT, msg, t);
+        }
+        t += strcspn(t, " \t");
+    }
+    return RS_OK;
+}
+
+int rs_req_opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
+                    slong lo, slong hi)
+{
+    char val[64], *end, msg[200];
+    long x;
+    if (!rs_req_opt_get(val, sizeof val, text, key)) return RS_OK;
+    x = strtol(val, &end, 10);
+    if (*end == '\0' && x >= lo && x <= hi) {
+        *out = x;
+        return RS_OK;
+    }
+    snprintf(msg, sizeof msg, "%s= expects an integer from %ld to %ld (limit), found '%%s'", key, (long) lo, (long) hi);
+    return rs_req_error(run, q, strstr(text, key), (*end == '\0' && x > hi) ? RS_ERR_LIMIT : RS_ERR_INPUT, msg, val);
 }
 
 /* Request text helpers */
@@ -533,12 +632,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     arr = json_array();
     for (i = 0; i < c->nunknowns; i++) json_array_append_new(arr, json_string(c->unknowns[i].name));
     json_object_set_new(d, "unknowns", arr);
-    {
-        json_t *sets = json_object();
-        for (i = 0; i < c->nsets; i++)
-            json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
-        json_object_set_new(d, "set", sets);
-    }
+    json_object_set_new(d, "set", rs_json_sets(c));
     if (opt->with_scheme && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
         json_t *sc = scheme_json(&run);
         if (sc == NULL) {

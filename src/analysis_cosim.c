@@ -316,14 +316,6 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
     return r;
 }
 
-static json_t *arb_str_json(const arb_t x, slong d)
-{
-    char *s = arb_get_str(x, d, ARB_STR_NO_RADIUS);
-    json_t *j = json_string(s);
-    flint_free(s);
-    return j;
-}
-
 static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
 {
     rs_cosim_t cs;
@@ -331,10 +323,10 @@ static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int 
     slong digits = run->opt->default_digits;
     json_t *o;
     int r;
-    const char *d = strstr(rest, "digits=");
-    if (d != NULL) digits = atol(d + 7);
-    if (digits < 1 || digits > 20000)
-        return rs_req_error(run, q, rest, RS_ERR_LIMIT, "digits= expects 1 to 20000 (limit), found '%s'", rest);
+    static const char *const keys[] = {"digits", NULL};
+    r = rs_req_opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
+    if (r != RS_OK) return r;
     rs_cosim_init(cs, 1, 1);
     r = rs_cosim_from_case(cs, run->c, run->err);
     if (r != RS_OK) { rs_cosim_clear(cs); return r; }
@@ -343,35 +335,18 @@ static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int 
     r = rs_cosim_radius(rr, cs, digits, run->opt->max_prec, run->err);
     if (r == RS_OK) r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
     if (r == RS_OK) {
-        arb_t one;
-        arb_init(one);
-        arb_one(one);
         o = json_object();
         json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
         json_object_set_new(o, "method", json_string("exact subsystem integration (matrix exponentials, Arb), "
                                                      "certified eigenvalues of the one-step map"));
         json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
                                                      "order", (json_int_t) cs->order));
-        json_object_set_new(o, "certified", json_true());
-        json_object_set_new(o, "lower", arb_str_json(rr->lower, digits + 5));
-        json_object_set_new(o, "upper", arb_str_json(rr->upper, digits + 5));
-        json_object_set_new(o, "rho", arb_str_json(rr->rho, digits));
-        json_object_set_new(o, "digits", json_integer(digits));
-        json_object_set_new(o, "precision_bits", json_integer(rr->prec));
-        json_object_set_new(o, "monolithic_rho", arb_str_json(rm->rho, digits));
-        if (arb_lt(rr->upper, one)) json_object_set_new(o, "status", json_string("stable"));
-        else if (arb_gt(rr->lower, one)) json_object_set_new(o, "status", json_string("unstable"));
-        else json_object_set_new(o, "status", json_string("undecided"));
+        rs_json_radius(o, rr, digits);
+        json_object_set_new(o, "monolithic_rho", rs_json_arb(rm->rho, digits));
+        json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
         json_object_set_new(o, "decided_by", json_string("certified"));
-        {
-            json_t *sets = json_object();
-            slong i;
-            for (i = 0; i < run->c->nsets; i++)
-                json_object_set_new(sets, run->c->sets[i].name, rs_json_fmpq(run->c->sets[i].value));
-            json_object_set_new(o, "substituted", sets);
-        }
+        json_object_set_new(o, "substituted", rs_json_sets(run->c));
         json_array_append_new(run->results, o);
-        arb_clear(one);
     } else if (run->err->file[0] == '\0') {
         char msg[RS_ERROR_MSG_LEN];
         snprintf(msg, sizeof msg, "%s", run->err->msg);

@@ -19,83 +19,6 @@ int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, con
 int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
 
 #define RS_SIMULATE_MAX_STEPS 10000000
-#define RS_DIGITS_MAX 20000
-
-/* ---- options "key=value" ------------------------------------------------------ */
-
-/* finds key=value in the option text; copies the value (up to space) */
-static int opt_get(char *val, size_t len, const char *text, const char *key)
-{
-    size_t kl = strlen(key);
-    const char *t = text;
-    while ((t = strstr(t, key)) != NULL) {
-        if ((t == text || t[-1] == ' ' || t[-1] == '\t' || t[-1] == ',') && t[kl] == '=') {
-            size_t n = strcspn(t + kl + 1, " \t");
-            if (n >= len) n = len - 1;
-            memcpy(val, t + kl + 1, n);
-            val[n] = '\0';
-            return 1;
-        }
-        t += kl;
-    }
-    return 0;
-}
-
-/* every word of the text must be one of the known keys */
-static int opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys)
-{
-    const char *t = text;
-    while (*t) {
-        size_t n, k;
-        int ok = 0;
-        while (*t == ' ' || *t == '\t') t++;
-        if (!*t) break;
-        n = strcspn(t, "= \t");
-        for (k = 0; keys[k]; k++)
-            if (strlen(keys[k]) == n && strncmp(keys[k], t, n) == 0 && t[n] == '=') ok = 1;
-        if (!ok) {
-            char list[256] = "";
-            for (k = 0; keys[k]; k++) {
-                strcat(list, k ? ", " : "");
-                strcat(list, keys[k]);
-                strcat(list, "=");
-            }
-            {
-                char msg[400];
-                snprintf(msg, sizeof msg, "expected an option (%s), found '%%s'", list);
-                return rs_req_error(run, q, t, RS_ERR_INPUT, msg, t);
-            }
-        }
-        t += strcspn(t, " \t");
-    }
-    return RS_OK;
-}
-
-static int opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
-                    slong lo, slong hi)
-{
-    char val[64], *end;
-    long x;
-    if (!opt_get(val, sizeof val, text, key)) return RS_OK;
-    x = strtol(val, &end, 10);
-    if (*end != '\0' || x < lo || x > hi) {
-        char msg[200];
-        snprintf(msg, sizeof msg, "%s= expects an integer from %ld to %ld (limit), found '%%s'", key, (long) lo,
-                 (long) hi);
-        return rs_req_error(run, q, strstr(text, key), hi >= RS_SIMULATE_MAX_STEPS || hi >= RS_DIGITS_MAX
-                                                           ? RS_ERR_LIMIT : RS_ERR_INPUT, msg, val);
-    }
-    *out = x;
-    return RS_OK;
-}
-
-static json_t *arb_json(const arb_t x, slong digits)
-{
-    char *s = arb_get_str(x, digits < 1 ? 1 : digits, ARB_STR_NO_RADIUS);
-    json_t *j = json_string(s);
-    flint_free(s);
-    return j;
-}
 
 static json_t *acb_json(const acb_t z, slong digits)
 {
@@ -104,8 +27,8 @@ static json_t *acb_json(const acb_t z, slong digits)
     arf_t a;
     mag_init(m);
     arf_init(a);
-    json_object_set_new(o, "re", arb_json(acb_realref(z), digits));
-    json_object_set_new(o, "im", arb_json(acb_imagref(z), digits));
+    json_object_set_new(o, "re", rs_json_arb(acb_realref(z), digits));
+    json_object_set_new(o, "im", rs_json_arb(acb_imagref(z), digits));
     /* radius of the ball (max of the two) */
     mag_max(m, arb_radref(acb_realref(z)), arb_radref(acb_imagref(z)));
     arf_set_mag(a, m);
@@ -128,10 +51,10 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
     slong digits = run->opt->default_digits, i;
     json_t *o, *roots;
     int r;
-    r = opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
+    r = rs_req_opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
     if (r != RS_OK) return r;
-    opt_get(method, sizeof method, rest, "method");
+    rs_req_opt_get(method, sizeof method, rest, "method");
     if (strcmp(method, "certified") != 0 && strcmp(method, "double") != 0 && strcmp(method, "companion") != 0)
         return rs_req_error(run, q, strstr(rest, "method"), RS_ERR_INPUT,
                             "method= expects certified, companion or double, found '%s'", method);
@@ -168,19 +91,14 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
                 : rr->method == RS_RADIUS_METHOD_COMPLEX_ROOTS ? "arb_fmpz_poly_complex_roots on squarefree factors (certified)"
                 : rr->method == RS_RADIUS_METHOD_FIND_ROOTS ? "acb_poly_find_roots + validation on squarefree factors (certified)"
                 : "certified enclosure"));
-            json_object_set_new(o, "certified", json_true());
-            json_object_set_new(o, "lower", arb_json(rr->lower, digits + 5));
-            json_object_set_new(o, "upper", arb_json(rr->upper, digits + 5));
-            json_object_set_new(o, "rho", arb_json(rr->rho, digits));
-            json_object_set_new(o, "digits", json_integer(digits));
-            json_object_set_new(o, "precision_bits", json_integer(rr->prec));
+            rs_json_radius(o, rr, digits);
             roots = json_array();
             for (i = 0; i < rr->nroots; i++) {
                 json_t *z = acb_json(rr->roots + i, digits);
                 arb_t ab;
                 arb_init(ab);
                 acb_abs(ab, rr->roots + i, rr->prec);
-                json_object_set_new(z, "abs", arb_json(ab, digits));
+                json_object_set_new(z, "abs", rs_json_arb(ab, digits));
                 json_object_set_new(z, "multiplicity", json_integer(rr->mult ? rr->mult[i] : 1));
                 arb_clear(ab);
                 json_array_append_new(roots, z);
@@ -334,7 +252,7 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     rs_modes_principal(principal, rr, h, (arb_srcptr) refs, nref, prec);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("modes"));
-    json_object_set_new(o, "h", arb_json(h, digits));
+    json_object_set_new(o, "h", rs_json_arb(h, digits));
     modes = json_array();
     spur = json_array();
     for (i = 0; i < rr->nroots; i++) {
@@ -354,14 +272,14 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
             arb_hypot(mag, sig, om, prec);
             arb_div(xi, sig, mag, prec);
             arb_neg(xi, xi);
-            json_object_set_new(m, "sigma", arb_json(sig, digits));
-            json_object_set_new(m, "omega", arb_json(om, digits));
-            json_object_set_new(m, "damping_ratio", arb_json(xi, digits));
+            json_object_set_new(m, "sigma", rs_json_arb(sig, digits));
+            json_object_set_new(m, "omega", rs_json_arb(om, digits));
+            json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
             if (principal[i]) {
                 arb_sub(err, mag, refs[principal[i] - 1], prec);
                 arb_div(err, err, refs[principal[i] - 1], prec);
-                json_object_set_new(m, "reference", arb_json(refs[principal[i] - 1], digits));
-                json_object_set_new(m, "frequency_error", arb_json(err, digits));
+                json_object_set_new(m, "reference", rs_json_arb(refs[principal[i] - 1], digits));
+                json_object_set_new(m, "frequency_error", rs_json_arb(err, digits));
             }
         }
         json_array_append_new((principal[i] || nref == 0) ? modes : spur, m);
@@ -418,10 +336,10 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     arb_t norm, lognorm_mid, lognorm_end, t1, t2;
     fmpq_t c;
     flint_rand_t st;
-    r = opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = opt_long(run, q, rest, "steps", &steps, 1, RS_SIMULATE_MAX_STEPS);
-    if (r == RS_OK) r = opt_long(run, q, rest, "seed", &seed, 0, 1000000000);
-    if (r == RS_OK) r = opt_long(run, q, rest, "prec", &prec, 32, 65536);
+    r = rs_req_opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "steps", &steps, 1, RS_SIMULATE_MAX_STEPS);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "seed", &seed, 0, 1000000000);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "prec", &prec, 32, 65536);
     if (r != RS_OK) return r;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
@@ -551,7 +469,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
         arb_mul_si(t1, t1, 2, prec);
         arb_div_si(t1, t1, (a2 + b2) - (a1 + b1), prec);
         arb_exp(t2, t1, prec);
-        json_object_set_new(o, "growth", arb_json(t2, 15));
+        json_object_set_new(o, "growth", rs_json_arb(t2, 15));
         json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
     } else {
         json_object_set_new(o, "growth", json_null());
@@ -561,7 +479,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_radius_t rr;
         rs_radius_init(rr);
         if (rs_radius_fmpz_poly(rr, p, 15, run->opt->max_prec, run->err) == RS_OK)
-            json_object_set_new(o, "radius", arb_json(rr->rho, 15));
+            json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
         else
             rs_error_init(run->err);
         rs_radius_clear(rr);

@@ -9,14 +9,14 @@
 
 static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
 {
+    static const char *const keys[] = {"digits", NULL};
     slong digits = run->opt->default_digits, prec, K = 0, i;
-    const char *d = strstr(rest, "digits=");
     rs_radius_t rr;
     json_t *o;
-    int r = RS_ERR_UNDECIDED;
-    if (d != NULL) digits = atol(d + 7);
-    if (digits < 1 || digits > 20000)
-        return rs_req_error(run, q, rest, RS_ERR_LIMIT, "digits= expects 1 to 20000 (limit), found '%s'", rest);
+    int r = rs_req_opt_check(run, q, rest, keys);
+    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
+    if (r != RS_OK) return r;
+    r = RS_ERR_UNDECIDED;
     rs_radius_init(rr);
     for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec; prec *= 2) {
         acb_mat_struct *A = NULL;
@@ -40,33 +40,10 @@ static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int st
     json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
     json_object_set_new(o, "method", json_string("block companion matrix of the recurrence, entries in Arb "
                                                  "(certified eigenvalue enclosures)"));
-    json_object_set_new(o, "certified", json_true());
-    {
-        char *s1 = arb_get_str(rr->lower, digits + 5, ARB_STR_NO_RADIUS);
-        char *s2 = arb_get_str(rr->upper, digits + 5, ARB_STR_NO_RADIUS);
-        char *s3 = arb_get_str(rr->rho, digits, ARB_STR_NO_RADIUS);
-        json_object_set_new(o, "lower", json_string(s1));
-        json_object_set_new(o, "upper", json_string(s2));
-        json_object_set_new(o, "rho", json_string(s3));
-        flint_free(s1); flint_free(s2); flint_free(s3);
-    }
-    json_object_set_new(o, "digits", json_integer(digits));
-    json_object_set_new(o, "precision_bits", json_integer(rr->prec));
-    {
-        arb_t one;
-        arb_init(one);
-        arb_one(one);
-        json_object_set_new(o, "status", json_string(arb_lt(rr->upper, one) ? "stable"
-                                                      : arb_gt(rr->lower, one) ? "unstable" : "undecided"));
-        arb_clear(one);
-    }
+    rs_json_radius(o, rr, digits);
+    json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
     json_object_set_new(o, "decided_by", json_string("certified"));
-    {
-        json_t *sets = json_object();
-        for (i = 0; i < run->c->nsets; i++)
-            json_object_set_new(sets, run->c->sets[i].name, rs_json_fmpq(run->c->sets[i].value));
-        json_object_set_new(o, "substituted", sets);
-    }
+    json_object_set_new(o, "substituted", rs_json_sets(run->c));
     json_array_append_new(run->results, o);
     rs_radius_clear(rr);
     return RS_OK;

@@ -8,6 +8,7 @@
 #include "recstab/analysis.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
+#include "recstab/radius.h"
 
 typedef struct {
     char *key;            /* "name=value;..." of the substituted values */
@@ -54,6 +55,25 @@ void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t 
 /* p collected in powers of variable var, printed with the name varname. */
 json_t *rs_json_collected(const fmpz_mpoly_t p, slong var, const rs_scheme_t s,
                           const char *varname);
+
+#define RS_DIGITS_MAX 20000   /* digits= of radius requests */
+
+/* The case's set values as {NAME: "p/q"}. */
+json_t *rs_json_sets(const rs_case_t c);
+/* A ball's midpoint as a decimal string of `digits` digits. */
+json_t *rs_json_arb(const arb_t x, slong digits);
+/* certified, lower, upper, rho, digits, precision_bits of a radius. */
+void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits);
+/* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
+const char *rs_radius_verdict(const rs_radius_t rr);
+
+/* Options "key=value" of a request: the value of key (1 if present);
+ * every word a known key (else an error naming them); an integer in
+ * [lo, hi] (unchanged *out when absent). */
+int rs_req_opt_get(char *val, size_t len, const char *text, const char *key);
+int rs_req_opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys);
+int rs_req_opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
+                    slong lo, slong hi);
 
 const char *rs_req_skip_word(const char *t);
 int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
