@@ -7,22 +7,6 @@
 #include <string.h>
 #include "recstab/builder.h"
 
-static char *dupstr(const char *s)
-{
-    size_t n = strlen(s);
-    char *d = flint_malloc(n + 1);
-    memcpy(d, s, n + 1);
-    return d;
-}
-
-static char *dupn(const char *s, size_t n)
-{
-    char *d = flint_malloc(n + 1);
-    memcpy(d, s, n);
-    d[n] = '\0';
-    return d;
-}
-
 static void skip_ws(const char *t, size_t *i)
 {
     while (t[*i] == ' ' || t[*i] == '\t') (*i)++;
@@ -37,7 +21,7 @@ static char *read_token(const char *t, size_t *i)
     while (t[j] && t[j] != ' ' && t[j] != '\t' && t[j] != ',') j++;
     if (j == *i) return NULL;
     {
-        char *s = dupn(t + *i, j - *i);
+        char *s = rs_strndup(t + *i, j - *i);
         *i = j;
         return s;
     }
@@ -52,7 +36,7 @@ static int at(rs_error_t err, const rs_src_t *src, size_t i, const char *fmt, co
 
 static void set_loc(rs_loc_t *l, const rs_src_t *src, size_t i)
 {
-    l->file = dupstr(src->file);
+    l->file = rs_strdup(src->file);
     rs_src_pos(src, i, &l->line, &l->col);
 }
 
@@ -109,9 +93,9 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
         s->deqs = flint_realloc(s->deqs, (s->ndeqs + 1) * sizeof(rs_deq_t));
         d = &s->deqs[s->ndeqs++];
         memset(d, 0, sizeof *d);
-        d->state = dupstr(kw);
+        d->state = rs_strdup(kw);
         d->order = order;
-        d->rhs = dupstr(t + start);
+        d->rhs = rs_strdup(t + start);
         set_loc(&d->loc, src, 0);
         return RS_OK;
     }
@@ -186,7 +170,7 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
         if ((strcmp(m, "theta") == 0 && s->arg1 == NULL) || (strcmp(m, "newmark") == 0 && s->arg2 == NULL))
             return at(err, src, i, "expected the method's parameters, then the step, found '%s'", t + i);
         if (t[i] == '\0') return at(err, src, i, "expected the step (an expression such as h) after the method%s", "");
-        s->step = dupstr(t + i);
+        s->step = rs_strdup(t + i);
         {
             /* the step must be an expression */
             rs_expr_t *e = NULL;
@@ -276,7 +260,7 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
         p0 = i;
         while (isalnum((unsigned char) t[i]) || t[i] == '_') i++;
         if (i == p0) return at(err, src, p0, "expected the force's name, found '%s'", t + p0);
-        name = dupn(t + p0, i - p0);
+        name = rs_strndup(t + p0, i - p0);
         {
             /* several coupling forces (vector coupling, src/analysis_cosim.c): the first in
              * force_name/force_expr/force_loc, the others in more_forces */
@@ -296,14 +280,14 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
         skip_ws(t, &i);
         if (c->force_name == NULL) {
             c->force_name = name;
-            c->force_expr = dupstr(t + i);
+            c->force_expr = rs_strdup(t + i);
             set_loc(&c->force_loc, src, p0);
         } else {
             rs_force_t *f;
             c->more_forces = flint_realloc(c->more_forces, (c->nmore_forces + 1) * sizeof(rs_force_t));
             f = &c->more_forces[c->nmore_forces++];
             f->name = name;
-            f->expr = dupstr(t + i);
+            f->expr = rs_strdup(t + i);
             set_loc(&f->loc, src, p0);
         }
         return RS_OK;
@@ -486,7 +470,7 @@ int rs_builder_expand(rs_case_t c, rs_error_t err)
             return rs_error_set_at(err, RS_ERR_INPUT, c->subs[0].loc.file, c->subs[0].loc.line, 1,
                                    "exact integration needs `couple explicit|implicit order K` (and the coupling: "
                                    "`coupling force NAME = EXPR` lines and/or the partner's states)%s", "");
-        c->emitted = dupstr("# exact (analytic) subsystem integration: a numeric matrix recurrence, built at "
+        c->emitted = rs_strdup("# exact (analytic) subsystem integration: a numeric matrix recurrence, built at "
                             "set values; only numeric analyses (radius) apply\n");
         return RS_OK;
     }

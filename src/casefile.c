@@ -8,7 +8,7 @@
 #include "recstab/builder.h"
 #include "recstab/recurrence.h"
 
-static char *dupstr(const char *s)
+char *rs_strdup(const char *s)
 {
     size_t n = strlen(s);
     char *d = flint_malloc(n + 1);
@@ -16,7 +16,7 @@ static char *dupstr(const char *s)
     return d;
 }
 
-static char *dupn(const char *s, size_t n)
+char *rs_strndup(const char *s, size_t n)
 {
     char *d = flint_malloc(n + 1);
     memcpy(d, s, n);
@@ -160,8 +160,8 @@ int rs_name_is_reserved(const char *name)
 void rs_case_add_request(rs_case_t c, const char *text, const char *file, int line, int col)
 {
     GROW(c->requests, c->nrequests);
-    c->requests[c->nrequests].text = dupstr(text);
-    c->requests[c->nrequests].loc.file = dupstr(file);
+    c->requests[c->nrequests].text = rs_strdup(text);
+    c->requests[c->nrequests].loc.file = rs_strdup(file);
     c->requests[c->nrequests].loc.line = line;
     c->requests[c->nrequests].loc.col = col;
     c->nrequests++;
@@ -213,7 +213,7 @@ static int expect_err(ctx_t *x, size_t i, const char *expected)
 
 static void set_loc(ctx_t *x, rs_loc_t *l, size_t i)
 {
-    l->file = dupstr(x->src.file);
+    l->file = rs_strdup(x->src.file);
     rs_src_pos(&x->src, i, &l->line, &l->col);
 }
 
@@ -227,7 +227,7 @@ static char *read_ident(const char *t, size_t *i)
     if (j - *i > 64)
         return NULL;
     {
-        char *s = dupn(t + *i, j - *i);
+        char *s = rs_strndup(t + *i, j - *i);
         *i = j;
         return s;
     }
@@ -321,7 +321,7 @@ int rs_cond_parse(rs_cond_t *cond, const rs_src_t *src, size_t *pos, rs_error_t 
     memset(cond, 0, sizeof(rs_cond_t));
     skip_ws(t, &i);
     start = i;
-    cond->loc.file = dupstr(src->file ? src->file : "");
+    cond->loc.file = rs_strdup(src->file ? src->file : "");
     rs_src_pos(src, i, &cond->loc.line, &cond->loc.col);
     r = rs_expr_parse(&cond->e[0], src, &i, err);
     if (r != RS_OK) { rs_cond_clear(cond); return r; }
@@ -348,7 +348,7 @@ int rs_cond_parse(rs_cond_t *cond, const rs_src_t *src, size_t *pos, rs_error_t 
     {
         size_t end = i;
         while (end > start && (t[end - 1] == ' ' || t[end - 1] == '\t')) end--;
-        cond->text = dupn(t + start, end - start);
+        cond->text = rs_strndup(t + start, end - start);
     }
     *pos = i;
     return RS_OK;
@@ -407,7 +407,7 @@ static int st_let(ctx_t *x, size_t i)
     l->shift = lhs->shift;
     l->e = e;
     set_loc(x, &l->loc, at);
-    l->text = dupstr(t + at);
+    l->text = rs_strdup(t + at);
     rs_expr_free(lhs);
     return RS_OK;
 }
@@ -438,7 +438,7 @@ static int st_eq(ctx_t *x, size_t i)
     q = &x->c->eqs[x->c->neqs++];
     q->lhs = lhs; q->rhs = rhs;
     set_loc(x, &q->loc, at);
-    q->text = dupstr(t + at);
+    q->text = rs_strdup(t + at);
     return RS_OK;
 }
 
@@ -480,10 +480,10 @@ static int set_one(rs_case_struct *c, const char *name, const fmpq_t v, const ch
             return RS_OK;
         }
     GROW(c->sets, c->nsets);
-    c->sets[c->nsets].name = dupstr(name);
+    c->sets[c->nsets].name = rs_strdup(name);
     fmpq_init(c->sets[c->nsets].value);
     fmpq_set(c->sets[c->nsets].value, v);
-    c->sets[c->nsets].loc.file = dupstr(file);
+    c->sets[c->nsets].loc.file = rs_strdup(file);
     c->sets[c->nsets].loc.line = line;
     c->sets[c->nsets].loc.col = col;
     c->nsets++;
@@ -535,7 +535,7 @@ static void add_request_at(ctx_t *x, size_t i)
     size_t end = strlen(x->src.text);
     char *txt;
     while (end > i && (x->src.text[end - 1] == ' ' || x->src.text[end - 1] == '\t')) end--;
-    txt = dupn(x->src.text + i, end - i);
+    txt = rs_strndup(x->src.text + i, end - i);
     rs_src_pos(&x->src, i, &line, &col);
     rs_case_add_request(x->c, txt, x->src.file, line, col);
     flint_free(txt);
@@ -560,7 +560,7 @@ static int st_include(ctx_t *x, size_t i)
         return at_err(x, i, RS_ERR_LIMIT, "includes nested too deeply (limit 16)%s", "");
     slash = strrchr(x->src.file, '/');
     if (t[i] == '/' || slash == NULL) {
-        path = dupn(t + i, end - i);
+        path = rs_strndup(t + i, end - i);
     } else {
         size_t d = (size_t) (slash - x->src.file) + 1;
         path = flint_malloc(d + (end - i) + 1);
@@ -612,7 +612,7 @@ static int statement(ctx_t *x)
         skip_ws(t, &i);
         while (end > i && (t[end - 1] == ' ' || t[end - 1] == '\t')) end--;
         flint_free(x->c->title);
-        x->c->title = dupn(t + i, end - i);
+        x->c->title = rs_strndup(t + i, end - i);
     } else if (strcmp(word, "param") == 0 || strcmp(word, "params") == 0) {
         r = st_names(x, i, 0);
     } else if (strcmp(word, "unknown") == 0 || strcmp(word, "unknowns") == 0) {
@@ -763,7 +763,7 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
 {
     int r;
     flint_free(c->path);
-    c->path = dupstr(path);
+    c->path = rs_strdup(path);
     r = parse_text(c, path, text, len, err);
     if (r == RS_OK && c->include_depth == 0)
         r = rs_builder_expand(c, err);
@@ -837,7 +837,7 @@ int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err)
         return rs_error_set(err, RS_ERR_INPUT, "--set %s: expected NAME=VALUE", assignment);
     n = (size_t) (eq - assignment);
     while (n > 0 && assignment[n - 1] == ' ') n--;
-    name = dupn(assignment, n);
+    name = rs_strndup(assignment, n);
     if (rs_case_param_index(c, name) < 0) {
         r = rs_error_set(err, RS_ERR_INPUT, "--set %s: '%s' is not a parameter of %s", assignment, name, c->path);
         flint_free(name);

@@ -4,14 +4,6 @@
 #include <string.h>
 #include "recstab/recurrence.h"
 
-static char *dupn(const char *s, size_t n)
-{
-    char *d = flint_malloc(n + 1);
-    memcpy(d, s, n);
-    d[n] = '\0';
-    return d;
-}
-
 static int at(rs_error_t err, const rs_src_t *src, size_t i, const char *fmt, const char *a)
 {
     int line, col;
@@ -46,7 +38,7 @@ int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error
     {
         int line, cl;
         rs_src_pos(src, p0, &line, &cl);
-        term.loc.file = dupn(src->file, strlen(src->file));
+        term.loc.file = rs_strndup(src->file, strlen(src->file));
         term.loc.line = line;
         term.loc.col = cl;
     }
@@ -66,7 +58,7 @@ int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error
         e1 = i;
         while (e1 > s0 && (t[e1 - 1] == ' ' || t[e1 - 1] == '\t')) e1--;
         term.entries[nent] = e;
-        term.texts[nent] = dupn(t + s0, e1 - s0);
+        term.texts[nent] = rs_strndup(t + s0, e1 - s0);
         nent++;
         col++;
         while (t[i] == ' ' || t[i] == '\t') i++;

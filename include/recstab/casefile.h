@@ -168,6 +168,10 @@ int rs_cond_parse(rs_cond_t *cond, const rs_src_t *src, size_t *pos,
                   rs_error_t err);
 void rs_cond_clear(rs_cond_t *cond);
 
+/* Copies of strings (flint_malloc'd; free with flint_free). */
+char *rs_strdup(const char *s);
+char *rs_strndup(const char *s, size_t n);
+
 /* Name validity helpers. */
 int rs_name_is_reserved(const char *name); /* lambda, z, n */
 
