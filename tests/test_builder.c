@@ -210,11 +210,10 @@ typedef struct { long double m1, m2, k1, k2, kc, dc, h; } sys_t;
 /* one subsystem step in Olivier's formulation: state (y, v, yd, vd) where
  * yd, vd are the derivatives imposed at the new time with the inputs (uy, uv) */
 static void sub_step(long double *z, const long double *zold, int implicit, long double m, long double k,
-                     long double kc, long double dc, long double h, long double uy, long double uv, int sign)
+                     long double kc, long double dc, long double h, long double uy, long double uv)
 {
-    /* F = -k y + kc (uy - y) + dc (uv - v) for sign = +1 (subsystem 1: the
-     * partner is subsystem 2; force kc (y2 - y1)); same form for subsystem 2 */
-    (void) sign;
+    /* F = -k y + kc (uy - y) + dc (uv - v): the same form for both subsystems
+     * (uy, uv the partner's position and velocity) */
     if (!implicit) {
         z[0] = zold[0] + h * zold[2];
         z[1] = zold[1] + h * zold[3];
@@ -251,27 +250,27 @@ static long double oracle_growth(const sys_t *S, int impl1, int impl2, int coupl
         long double nrm = 0;
         /* base step */
         if (coupling == 0) {
-            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, z2[0], z2[1], 1);
-            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, z1[0], z1[1], -1);
+            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, z2[0], z2[1]);
+            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, z1[0], z1[1]);
         } else if (coupling == 1) {
-            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, z2[0], z2[1], 1);
-            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, n1[0], n1[1], -1);
+            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, z2[0], z2[1]);
+            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, n1[0], n1[1]);
         } else {
-            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, z1[0], z1[1], -1);
-            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, n2[0], n2[1], 1);
+            sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, z1[0], z1[1]);
+            sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, n2[0], n2[1]);
         }
         for (it = 0; it < iters; it++) {
             memcpy(p1, n1, sizeof p1);
             memcpy(p2, n2, sizeof p2);
             if (coupling == 0) {
-                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, p2[0], p2[1], 1);
-                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, p1[0], p1[1], -1);
+                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, p2[0], p2[1]);
+                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, p1[0], p1[1]);
             } else if (coupling == 1) {
-                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, p2[0], p2[1], 1);
-                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, n1[0], n1[1], -1);
+                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, p2[0], p2[1]);
+                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, n1[0], n1[1]);
             } else {
-                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, p1[0], p1[1], -1);
-                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, n2[0], n2[1], 1);
+                sub_step(n2, z2, impl2, S->m2, S->k2, S->kc, S->dc, S->h, p1[0], p1[1]);
+                sub_step(n1, z1, impl1, S->m1, S->k1, S->kc, S->dc, S->h, n2[0], n2[1]);
             }
         }
         memcpy(z1, n1, sizeof z1);

@@ -14,26 +14,6 @@
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
-static json_t *run_case(const char *rel, const char *const *req, int nreq, int *outcome)
-{
-    char path[1024];
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    int i;
-    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    if (rs_case_parse_file(c, path, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear_requests(c);
-    for (i = 0; i < nreq; i++) rs_case_add_request(c, req[i], "test", 1, 1);
-    if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear(c);
-    return doc;
-}
-
 static const json_t *result(const json_t *doc, size_t i)
 {
     return json_array_get(json_object_get(doc, "results"), i);
@@ -49,7 +29,7 @@ static void expect_single_interval(const char *rel, const char *status)
 {
     const char *req[] = {"region w"};
     int outcome;
-    json_t *doc = run_case(rel, req, 1, &outcome);
+    json_t *doc = tu_run_case(rel, req, 1, &outcome);
     const json_t *ivs = json_object_get(result(doc, 0), "intervals");
     assert_int_equal(json_array_size(ivs), 1);
     assert_string_equal(str(json_array_get(ivs, 0), "lo"), "0");
@@ -77,7 +57,7 @@ static void test_region_central_difference(void **state)
     json_t *doc;
     const json_t *ivs, *a, *b;
     (void) state;
-    doc = run_case("cases/textbook/central-difference.case", req, 1, &outcome);
+    doc = tu_run_case("cases/textbook/central-difference.case", req, 1, &outcome);
     ivs = json_object_get(result(doc, 0), "intervals");
     assert_int_equal(json_array_size(ivs), 2);
     a = json_array_get(ivs, 0);
@@ -103,7 +83,7 @@ static void test_limits_bdf2(void **state)
     size_t i;
     int seen_third = 0, seen_one = 0;
     (void) state;
-    doc = run_case("cases/textbook/bdf2.case", req, 2, &outcome);
+    doc = tu_run_case("cases/textbook/bdf2.case", req, 2, &outcome);
     r0 = json_object_get(result(doc, 0), "roots");
     for (i = 0; i < json_array_size(r0); i++) {
         const json_t *r = json_array_get(r0, i);
@@ -134,7 +114,7 @@ static void test_claims_textbook(void **state)
     (void) state;
     for (i = 0; i < sizeof t / sizeof t[0]; i++) {
         int outcome;
-        json_t *doc = run_case(t[i].file, &t[i].claim, 1, &outcome);
+        json_t *doc = tu_run_case(t[i].file, &t[i].claim, 1, &outcome);
         const char *got = str(result(doc, 0), "status");
         if (strcmp(got, t[i].status) != 0)
             fail_msg("%s / %s: %s, expected %s", t[i].file, t[i].claim, got, t[i].status);
@@ -144,8 +124,64 @@ static void test_claims_textbook(void **state)
     }
 }
 
-/* The Park lecture's "alpha <= 2": recstab's counterexample, checked here by
- * certified root isolation of the hand-derived polynomial (test_golden.c). */
+/* Roots of the hand-derived Park polynomial (test_golden.c, case comment)
+ *   p = A (4(l-1)^2 + wh^2 (l+1)^2) - 2 m muh wh^2 ((1+al) l - al)(l+1)^2,
+ *   A = (3 + 2(1+m) muh) l^2 - 4 l + 1,
+ * isolated by Arb (arb_fmpz_poly_complex_roots), independently of recstab's
+ * counters: how many are certified strictly outside and strictly inside. */
+static void park_roots(slong *outside, slong *inside, const fmpq_t m, const fmpq_t muh, const fmpq_t wh,
+                       const fmpq_t al)
+{
+    fmpq_poly_t A, B, C, t, p;
+    fmpq_t c;
+    fmpz_poly_t pz;
+    acb_ptr roots;
+    slong i, d;
+    arb_t ab, one;
+    fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(C); fmpq_poly_init(t); fmpq_poly_init(p);
+    fmpq_init(c);
+    fmpq_add_si(c, m, 1); fmpq_mul(c, c, muh); fmpq_mul_si(c, c, 2); fmpq_add_si(c, c, 3);
+    fmpq_poly_set_coeff_fmpq(A, 2, c); fmpq_poly_set_coeff_si(A, 1, -4); fmpq_poly_set_coeff_si(A, 0, 1);
+    fmpq_poly_set_str(t, "3  1 -2 1");                     /* (l-1)^2 */
+    fmpq_poly_scalar_mul_si(B, t, 4);
+    fmpq_poly_set_str(t, "3  1 2 1");                      /* (l+1)^2 */
+    fmpq_mul(c, wh, wh);
+    fmpq_poly_scalar_mul_fmpq(C, t, c);
+    fmpq_poly_add(B, B, C);
+    fmpq_poly_mul(p, A, B);
+    fmpq_add_si(c, al, 1);
+    fmpq_poly_zero(C);
+    fmpq_poly_set_coeff_fmpq(C, 1, c);
+    fmpq_neg(c, al);
+    fmpq_poly_set_coeff_fmpq(C, 0, c);
+    fmpq_poly_mul(C, C, t);
+    fmpq_mul(c, m, muh); fmpq_mul(c, c, wh); fmpq_mul(c, c, wh); fmpq_mul_si(c, c, 2);
+    fmpq_poly_scalar_mul_fmpq(C, C, c);
+    fmpq_poly_sub(p, p, C);
+    fmpz_poly_init(pz);
+    fmpq_poly_get_numerator(pz, p);
+    d = fmpz_poly_degree(pz);
+    roots = _acb_vec_init(d);
+    arb_fmpz_poly_complex_roots(roots, pz, 0, 128);
+    arb_init(ab);
+    arb_init(one);
+    arb_one(one);
+    *outside = *inside = 0;
+    for (i = 0; i < d; i++) {
+        acb_abs(ab, roots + i, 128);
+        if (arb_gt(ab, one)) (*outside)++;
+        if (arb_lt(ab, one)) (*inside)++;
+    }
+    arb_clear(ab);
+    arb_clear(one);
+    _acb_vec_clear(roots, d);
+    fmpz_poly_clear(pz);
+    fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(C); fmpq_poly_clear(t); fmpq_poly_clear(p);
+    fmpq_clear(c);
+}
+
+/* The Park lecture's "alpha <= 2": recstab's counterexample, checked by
+ * certified root isolation of the hand-derived polynomial. */
 static void test_park_counterexample(void **state)
 {
     const char *req[] = {"claim stable when alpha <= 2"};
@@ -153,8 +189,9 @@ static void test_park_counterexample(void **state)
     json_t *doc;
     const json_t *ce;
     fmpq_t m, muh, wh, al;
+    slong out, in;
     (void) state;
-    doc = run_case("cases/park-staggered.case", req, 1, &outcome);
+    doc = tu_run_case("cases/park-staggered.case", req, 1, &outcome);
     assert_string_equal(str(result(doc, 0), "status"), "refuted");
     assert_true(outcome & RS_OUTCOME_FAILED);
     ce = json_object_get(result(doc, 0), "counterexample");
@@ -164,64 +201,16 @@ static void test_park_counterexample(void **state)
     fmpq_set_str(wh, str(ce, "wh"), 10);
     fmpq_set_str(al, str(ce, "alpha"), 10);
     assert_true(fmpq_cmp_si(al, 2) <= 0 && fmpq_sgn(al) >= 0 && fmpq_sgn(m) > 0);
-    {
-        /* p = A (4(l-1)^2 + wh^2 (l+1)^2) - 2 m muh wh^2 ((1+al) l - al)(l+1)^2,
-         * A = (3 + 2(1+m) muh) l^2 - 4 l + 1, built with fmpq_poly */
-        fmpq_poly_t A, B, C, t, p;
-        fmpq_t c;
-        fmpz_poly_t pz;
-        acb_ptr roots;
-        slong i, outside = 0, d;
-        arb_t ab;
-        fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(C); fmpq_poly_init(t); fmpq_poly_init(p);
-        fmpq_init(c);
-        fmpq_add_si(c, m, 1); fmpq_mul(c, c, muh); fmpq_mul_si(c, c, 2); fmpq_add_si(c, c, 3);
-        fmpq_poly_set_coeff_fmpq(A, 2, c); fmpq_poly_set_coeff_si(A, 1, -4); fmpq_poly_set_coeff_si(A, 0, 1);
-        fmpq_poly_set_str(t, "3  1 -2 1");                     /* (l-1)^2 */
-        fmpq_poly_scalar_mul_si(B, t, 4);
-        fmpq_poly_set_str(t, "3  1 2 1");                      /* (l+1)^2 */
-        fmpq_mul(c, wh, wh);
-        fmpq_poly_scalar_mul_fmpq(C, t, c);
-        fmpq_poly_add(B, B, C);
-        fmpq_poly_mul(p, A, B);
-        fmpq_add_si(c, al, 1);
-        fmpq_poly_zero(C);
-        fmpq_poly_set_coeff_fmpq(C, 1, c);
-        fmpq_neg(c, al);
-        fmpq_poly_set_coeff_fmpq(C, 0, c);
-        fmpq_poly_mul(C, C, t);
-        fmpq_mul(c, m, muh); fmpq_mul(c, c, wh); fmpq_mul(c, c, wh); fmpq_mul_si(c, c, 2);
-        fmpq_poly_scalar_mul_fmpq(C, C, c);
-        fmpq_poly_sub(p, p, C);
-        fmpz_poly_init(pz);
-        fmpq_poly_get_numerator(pz, p);
-        d = fmpz_poly_degree(pz);
-        roots = _acb_vec_init(d);
-        arb_fmpz_poly_complex_roots(roots, pz, 0, 128);
-        arb_init(ab);
-        for (i = 0; i < d; i++) {
-            acb_abs(ab, roots + i, 128);
-            {
-                arb_t one;
-                arb_init(one);
-                arb_one(one);
-                if (arb_gt(ab, one)) outside++;
-                arb_clear(one);
-            }
-        }
-        assert_true(outside >= 1);     /* certified: a root strictly outside the circle */
-        arb_clear(ab);
-        _acb_vec_clear(roots, d);
-        fmpz_poly_clear(pz);
-        fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(C); fmpq_poly_clear(t); fmpq_poly_clear(p);
-        fmpq_clear(c);
-    }
+    park_roots(&out, &in, m, muh, wh, al);
+    assert_true(out >= 1);     /* certified: a root strictly outside the circle */
     fmpq_clear(m); fmpq_clear(muh); fmpq_clear(wh); fmpq_clear(al);
     json_decref(doc);
 }
 
-/* alpha <= 1 is proved; the region at m = 10 ends near 1.1474 (a root of
- * 13 alpha^2 + 6 alpha - 24, checked by substitution here). */
+/* alpha <= 1 is proved; the region at m = 10 ends at a root of the reported
+ * minimal polynomial 13 alpha^2 + 6 alpha - 24 (about 1.1474): the
+ * hand-derived polynomial has every root inside just below it and a root
+ * outside just above it (Arb root isolation, independent of recstab). */
 static void test_park_proof_and_region(void **state)
 {
     const char *req[] = {"claim stable when alpha <= 1", "region alpha at m=10, muh=1, wh=1"};
@@ -229,8 +218,10 @@ static void test_park_proof_and_region(void **state)
     json_t *doc;
     const json_t *ivs, *hi;
     double x;
+    fmpq_t m, one, al, eps;
+    slong out, in;
     (void) state;
-    doc = run_case("cases/park-staggered.case", req, 2, &outcome);
+    doc = tu_run_case("cases/park-staggered.case", req, 2, &outcome);
     assert_string_equal(str(result(doc, 0), "status"), "proved");
     assert_true(json_is_true(json_object_get(result(doc, 0), "certificate_rechecked")));
     ivs = json_object_get(result(doc, 1), "intervals");
@@ -239,6 +230,20 @@ static void test_park_proof_and_region(void **state)
     assert_string_equal(str(hi, "minpoly"), "13*alpha^2 + 6*alpha - 24");
     x = json_real_value(json_object_get(json_array_get(ivs, 0), "hi_approx"));
     assert_true(fabs(13 * x * x + 6 * x - 24) < 1e-9);
+    fmpq_init(m); fmpq_init(one); fmpq_init(al); fmpq_init(eps);
+    fmpq_set_si(m, 10, 1);
+    fmpq_one(one);
+    fmpq_set_si(eps, 1, 1000000);
+    /* just outside the reported isolating interval on either side */
+    fmpq_set_str(al, json_string_value(json_array_get(json_object_get(hi, "interval"), 0)), 10);
+    fmpq_sub(al, al, eps);
+    park_roots(&out, &in, m, one, one, al);
+    assert_int_equal(in, 4);
+    fmpq_set_str(al, json_string_value(json_array_get(json_object_get(hi, "interval"), 1)), 10);
+    fmpq_add(al, al, eps);
+    park_roots(&out, &in, m, one, one, al);
+    assert_true(out >= 1);
+    fmpq_clear(m); fmpq_clear(one); fmpq_clear(al); fmpq_clear(eps);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -253,7 +258,7 @@ static void test_park_printed_bilinear(void **state)
         /* independent: q = (1-z)^4 p((1+z)/(1-z)) expanded by hand / SymPy, divided by 8 */
         "expect bilinear muh*wh^2 + z^4*(4*m*muh + 4*muh + 16) + z^3*(8*m*muh + 8*muh + 8) + z^2*(2*alpha*m*muh*wh^2 + 2*m*muh*wh^2 + 4*m*muh + muh*wh^2 + 4*muh + 4*wh^2) + z*(-2*alpha*m*muh*wh^2 + 2*m*muh*wh^2 + 2*muh*wh^2 + 2*wh^2)"};
     (void) state;
-    doc = run_case("cases/park-staggered.case", req, 2, &outcome);
+    doc = tu_run_case("cases/park-staggered.case", req, 2, &outcome);
     assert_string_equal(str(result(doc, 0), "status"), "different");
     assert_string_equal(str(result(doc, 1), "status"), "equal");  /* q/8 is q normalised */
     json_decref(doc);
@@ -272,7 +277,7 @@ static void test_park_symbolic_jury(void **state)
     fmpz_mpoly_ctx_t ctx;
     flint_rand_t st;
     (void) state;
-    doc = run_case("cases/park-staggered.case", req, 1, &outcome);
+    doc = tu_run_case("cases/park-staggered.case", req, 1, &outcome);
     conds = json_object_get(result(doc, 0), "conditions");
     assert_true(json_array_size(conds) >= 1);
     fmpz_mpoly_ctx_init(ctx, 5, ORD_LEX);
@@ -286,7 +291,6 @@ static void test_park_symbolic_jury(void **state)
         const char *names[4] = {"m", "muh", "wh", "alpha"};
         const char *sreq[1];
         json_t *d2;
-        char text[400];
         for (v = 0; v < 5; v++) { fmpq_init(pt + v); pp[v] = pt + v; }
         for (v = 0; v < 4; v++) {
             slong num = 1 + (slong) n_randint(st, 40), den = 1 + (slong) n_randint(st, 8);
@@ -316,8 +320,6 @@ static void test_park_symbolic_jury(void **state)
             fmpz_mpoly_clear(pc, ctx);
             fmpq_clear(val);
         }
-        snprintf(text, sizeof text, "param m muh wh alpha\nchar 0\n");
-        (void) text;
         /* the exact verdict at the point */
         {
             char path[1024];

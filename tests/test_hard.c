@@ -8,28 +8,11 @@
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
-static json_t *run(const char *rel, int *outcome)
-{
-    char path[1024];
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    if (rs_case_parse_file(c, path, err) != RS_OK || rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK)
-        fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear(c);
-    return doc;
-}
-
 /* lower <= expected <= upper, upper - lower < 10^-28 * expected */
 static void check(const char *rel, const char *expected, const char *status)
 {
     int outcome;
-    json_t *doc = run(rel, &outcome), *res = json_object_get(doc, "results");
+    json_t *doc = tu_run_case(rel, NULL, -1, &outcome), *res = json_object_get(doc, "results");
     size_t i;
     int seen = 0;
     arb_t lo, hi, e, w;
@@ -74,7 +57,7 @@ static void test_deg44(void **s) { (void) s; check("cases/hard/degree44.case", "
 static void test_double_baseline_error(void **s)
 {
     int outcome;
-    json_t *doc = run("cases/hard/cluster6.case", &outcome), *res = json_object_get(doc, "results");
+    json_t *doc = tu_run_case("cases/hard/cluster6.case", NULL, -1, &outcome), *res = json_object_get(doc, "results");
     size_t i;
     (void) s;
     for (i = 0; i < json_array_size(res); i++) {

@@ -783,33 +783,23 @@ static void test_matrix_second_order(void **state)
     rs_radius_clear(r);
 }
 
-/* Performance target: degree 12 to 30 digits in well under 1 ms
- * (measured ~0.25 ms; assert < 5 ms to stay robust on loaded machines). */
-static void test_performance_degree12(void **state)
+/* A dense degree-12 integer polynomial to 30 digits: the size the
+ * performance target names.  Its time is measured in bench/ (bench_radius,
+ * bench_accuracy.sh), not asserted here. */
+static void test_dense_degree12(void **state)
 {
     static const slong c[13] = { 3, -7, 11, 2, -5, 13, -1, 4, 9, -6, 8, -2, 17 };
     fmpz_poly_t p;
     rs_radius_t r;
     rs_error_t err;
-    struct timespec t0, t1;
-    double best = 1e9, dt;
-    int i, k;
+    int i;
     (void) state;
     fmpz_poly_init(p);
     rs_radius_init(r);
     rs_error_init(err);
     for (i = 0; i < 13; i++)
         fmpz_poly_set_coeff_si(p, i, c[i]);
-    for (k = 0; k < 20; k++) {
-        clock_gettime(CLOCK_MONOTONIC, &t0);
-        assert_int_equal(rs_radius_fmpz_poly(r, p, 30, 0, err), RS_OK);
-        clock_gettime(CLOCK_MONOTONIC, &t1);
-        dt = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
-        if (dt < best)
-            best = dt;
-    }
-    print_message("degree 12, 30 digits: best of 20 = %.0f us\n", best * 1e6);
-    assert_true(best < 5e-3);
+    assert_int_equal(rs_radius_fmpz_poly(r, p, 30, 0, err), RS_OK);
     rs_radius_clear(r);
     fmpz_poly_clear(p);
 }
@@ -837,7 +827,7 @@ int main(void)
         cmocka_unit_test(test_acb_poly_exact_double_root),
         cmocka_unit_test(test_matrix_first_order),
         cmocka_unit_test(test_matrix_second_order),
-        cmocka_unit_test(test_performance_degree12),
+        cmocka_unit_test(test_dense_degree12),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();

@@ -9,29 +9,11 @@
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
-static json_t *run(const char *rel, const char *req)
-{
-    char path[1024];
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    int outcome;
-    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    if (rs_case_parse_file(c, path, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear_requests(c);
-    rs_case_add_request(c, req, "test", 1, 1);
-    if (rs_analysis_run(&doc, &outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear(c);
-    return doc;
-}
-
 static void test_polynomial_entries(void **state)
 {
-    json_t *doc = run("cases/recurrence-forward-euler.case", "charpoly");
+    const char *req[] = {"charpoly"};
+    int outcome;
+    json_t *doc = tu_run_case("cases/recurrence-forward-euler.case", req, 1, &outcome);
     json_t *r = json_array_get(json_object_get(doc, "results"), 0);
     (void) state;
     /* 4 l^2 - 8 l + 5 = 4 ((l - 1)^2 + 1/4) at w = 1/2 */
@@ -43,7 +25,9 @@ static void test_polynomial_entries(void **state)
 
 static void test_numeric_entries(void **state)
 {
-    json_t *doc = run("cases/recurrence-exact-oscillator.case", "radius digits=40");
+    const char *req[] = {"radius digits=40"};
+    int outcome;
+    json_t *doc = tu_run_case("cases/recurrence-exact-oscillator.case", req, 1, &outcome);
     json_t *r = json_array_get(json_object_get(doc, "results"), 0);
     arb_t lo, hi, e;
     (void) state;
