@@ -332,7 +332,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o;
     arb_mat_t L, Linv;
     arb_ptr *hist = NULL;      /* per unknown: values at n+m_u .. n+M_u (newest last) */
-    arb_ptr rhs, znew;
+    arb_ptr rhs, znew, *cf;
     arb_t norm, lognorm_mid, lognorm_end, t1, t2;
     fmpq_t c;
     flint_rand_t st;
@@ -407,20 +407,29 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     rhs = _arb_vec_init(n);
     znew = _arb_vec_init(n);
     arb_init(norm); arb_init(lognorm_mid); arb_init(lognorm_end); arb_init(t1); arb_init(t2);
+    /* the coefficient of u[n+sft] in equation i, once, as balls */
+    cf = flint_malloc(n * n * sizeof(arb_ptr));
+    for (i = 0; i < n; i++)
+        for (u = 0; u < n; u++) {
+            slong sft, len = Mu[u] - mu[u];
+            arb_ptr v = _arb_vec_init(len > 0 ? len : 1);
+            for (sft = mu[u]; sft < Mu[u]; sft++) {
+                if (scalar) {
+                    fmpz_set(fmpq_numref(c), p->coeffs + sft);
+                    fmpz_one(fmpq_denref(c));
+                } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
+                arb_set_fmpq(v + (sft - mu[u]), c, prec);
+            }
+            cf[i * n + u] = v;
+        }
     for (step = 1; step <= steps; step++) {
         for (i = 0; i < n; i++) {
             arb_zero(rhs + i);
             for (u = 0; u < n; u++) {
-                slong sft;
-                for (sft = mu[u]; sft < Mu[u]; sft++) {
-                    if (scalar) {
-                        fmpz_set(fmpq_numref(c), p->coeffs + sft);
-                        fmpz_one(fmpq_denref(c));
-                    } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
-                    if (fmpq_is_zero(c)) continue;
-                    arb_set_fmpq(t1, c, prec);
-                    arb_addmul(rhs + i, t1, hist[u] + (sft - mu[u]), prec);
-                }
+                slong k2, len = Mu[u] - mu[u];
+                for (k2 = 0; k2 < len; k2++)
+                    if (!arb_is_zero(cf[i * n + u] + k2))
+                        arb_addmul(rhs + i, cf[i * n + u] + k2, hist[u] + k2, prec);
             }
             arb_neg(rhs + i, rhs + i);
         }
@@ -489,6 +498,8 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_array_append_new(run->results, o);
     for (u = 0; u < n; u++) _arb_vec_clear(hist[u], Mu[u] - mu[u] + 1);
     flint_free(hist);
+    for (i = 0; i < n * n; i++) _arb_vec_clear(cf[i], Mu[i % n] - mu[i % n] > 0 ? Mu[i % n] - mu[i % n] : 1);
+    flint_free(cf);
     _arb_vec_clear(rhs, n);
     _arb_vec_clear(znew, n);
     arb_clear(norm); arb_clear(lognorm_mid); arb_clear(lognorm_end); arb_clear(t1); arb_clear(t2);
