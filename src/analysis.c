@@ -103,7 +103,13 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
     v = calloc(1, sizeof(rs_variant_t));
     v->key = key;
     rs_scheme_init(v->s);
-    r = rs_scheme_build(v->s, run->c, run->err);
+    /* every variant starts from the symbolic scheme built once per run */
+    if (run->have_sym) {
+        rs_scheme_copy(v->s, run->sym);
+        r = RS_OK;
+    } else {
+        r = rs_scheme_build(v->s, run->c, run->err);
+    }
     v->assigned = json_object();
     if (r == RS_OK) {
         for (i = 0; i < n; i++) {
@@ -609,17 +615,17 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
     /* an error in the equations must surface even when no analysis asks */
+    rs_scheme_init(run.sym);
     if (!rs_builder_is_exact(c) && !c->numeric_recurrence) {
-        rs_scheme_t s;
-        rs_scheme_init(s);
-        r = rs_scheme_build(s, c, err);
-        rs_scheme_clear(s);
+        r = rs_scheme_build(run.sym, c, err);
+        run.have_sym = (r == RS_OK);
     }
     for (i = 0; i < c->nrequests && r == RS_OK; i++)
         r = dispatch(&run, &c->requests[i]);
     if (r != RS_OK) {
         for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
         free(run.variants);
+        rs_scheme_clear(run.sym);
         json_decref(run.results);
         return r;
     }
@@ -640,6 +646,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
             json_decref(run.results);
             for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
             free(run.variants);
+            rs_scheme_clear(run.sym);
             return err->code ? err->code : RS_ERR_INTERNAL;
         }
         json_object_set_new(d, "scheme", sc);
@@ -647,6 +654,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     json_object_set_new(d, "results", run.results);
     for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
     free(run.variants);
+    rs_scheme_clear(run.sym);
     *doc = d;
     *outcome = run.outcome;
     return RS_OK;

@@ -697,6 +697,45 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     return r;
 }
 
+void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
+{
+    slong i;
+    rs_scheme_clear(dst);
+    dst->nvars = src->nvars;
+    dst->lambda_var = src->lambda_var;
+    dst->vars = flint_malloc(src->nvars * sizeof(char *));
+    for (i = 0; i < src->nvars; i++) {
+        dst->vars[i] = flint_malloc(strlen(src->vars[i]) + 1);
+        strcpy(dst->vars[i], src->vars[i]);
+    }
+    fmpq_mpoly_ctx_init(dst->ctx, src->nvars, ORD_LEX);
+    fmpz_mpoly_ctx_init(dst->zctx, src->nvars, ORD_LEX);
+    fmpq_mpoly_init(dst->charpoly, dst->ctx);
+    fmpq_mpoly_set(dst->charpoly, src->charpoly, dst->ctx);   /* equal contexts */
+    dst->from_char = src->from_char;
+    dst->n = src->n;
+    if (src->n > 0) {
+        dst->M = flint_malloc(src->n * src->n * sizeof(fmpq_mpoly_struct));
+        for (i = 0; i < src->n * src->n; i++) {
+            fmpq_mpoly_init(dst->M + i, dst->ctx);
+            fmpq_mpoly_set(dst->M + i, src->M + i, dst->ctx);
+        }
+        dst->row_shift = flint_malloc(src->n * sizeof(slong));
+        memcpy(dst->row_shift, src->row_shift, src->n * sizeof(slong));
+    }
+    dst->nnonzero = src->nnonzero;
+    if (src->nnonzero > 0) {
+        dst->nonzero = flint_malloc(src->nnonzero * sizeof(fmpq_mpoly_struct));
+        dst->nonzero_text = flint_malloc(src->nnonzero * sizeof(char *));
+        for (i = 0; i < src->nnonzero; i++) {
+            fmpq_mpoly_init(dst->nonzero + i, dst->ctx);
+            fmpq_mpoly_set(dst->nonzero + i, src->nonzero + i, dst->ctx);
+            dst->nonzero_text[i] = flint_malloc(strlen(src->nonzero_text[i]) + 1);
+            strcpy(dst->nonzero_text[i], src->nonzero_text[i]);
+        }
+    }
+}
+
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value)
 {
     slong i;

@@ -33,6 +33,8 @@ typedef struct {
     json_t *results;
     int outcome;
     rs_error_struct *err;
+    rs_scheme_t sym;      /* the case's scheme, all parameters symbolic */
+    int have_sym;
 } rs_run_t;
 
 /* The case's set values except the parameters in keep[], overridden and

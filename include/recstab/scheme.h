@@ -60,6 +60,9 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
  * and ctx->zctx (same monomials). */
 slong rs_scheme_min_degree(const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx_t ctx);
 
+/* dst = a copy of src (dst initialised; its old contents are cleared). */
+void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src);
+
 /* Substitutes the rational value for variable var in every entry. */
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value);
 
