@@ -503,50 +503,48 @@ static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
 
 /* ---- dispatch ------------------------------------------------------------ */
 
-typedef int (*an_fn)(rs_run_t *, const rs_request_t *, const char *);
-typedef struct { const char *name; an_fn fn; } an_entry_t;
-
-static const an_entry_t table[] = {
+static const rs_analysis_entry_t table[] = {
     {"charpoly", an_charpoly},
     {"expect", an_expect},
     {NULL, NULL}
 };
 
+/* the entry named by the first n characters of t in one of the tables */
+static const rs_analysis_entry_t *lookup(const rs_analysis_entry_t *const *tables, const char *t, size_t n)
+{
+    slong k, i;
+    for (k = 0; tables[k] != NULL; k++)
+        for (i = 0; tables[k][i].name != NULL; i++)
+            if (strlen(tables[k][i].name) == n && strncmp(tables[k][i].name, t, n) == 0)
+                return tables[k] + i;
+    return NULL;
+}
+
 static int dispatch(rs_run_t *run, const rs_request_t *q)
 {
+    static const rs_analysis_entry_t *const general[] = {table, rs_analysis_extra, rs_analysis_numeric,
+                                                         rs_analysis_sweep, NULL};
+    static const rs_analysis_entry_t *const recurrence[] = {rs_analysis_recurrence, NULL};
+    static const rs_analysis_entry_t *const cosim[] = {rs_analysis_cosim, NULL};
     const char *t = q->text;
+    const rs_analysis_entry_t *e;
     size_t n = 0;
-    slong i;
     while (t[n] && !isspace((unsigned char) t[n])) n++;
+    /* the kind of case decides which analyses exist: a recurrence with
+     * exp/sin entries or exactly integrated subsystems is numeric only */
     if (run->c->numeric_recurrence) {
-        for (i = 0; rs_analysis_recurrence[i].name != NULL; i++)
-            if (strlen(rs_analysis_recurrence[i].name) == n && strncmp(rs_analysis_recurrence[i].name, t, n) == 0)
-                return rs_analysis_recurrence[i].fn(run, q, rs_req_skip_word(t));
+        if ((e = lookup(recurrence, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
         return rs_req_error(run, q, t, RS_ERR_INPUT,
                             "a recurrence with non-polynomial entries (exp, sin, ...) is numeric: only radius and "
                             "stability apply, found '%s'", t);
     }
     if (rs_builder_is_exact(run->c)) {
-        /* matrix-exponential entries: only certified numerics apply */
-        for (i = 0; rs_analysis_cosim[i].name != NULL; i++)
-            if (strlen(rs_analysis_cosim[i].name) == n && strncmp(rs_analysis_cosim[i].name, t, n) == 0)
-                return rs_analysis_cosim[i].fn(run, q, rs_req_skip_word(t));
+        if ((e = lookup(cosim, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
         return rs_req_error(run, q, t, RS_ERR_INPUT,
                             "exact (analytic) subsystem integration gives a recurrence with matrix-exponential "
                             "entries: only radius and stability apply, found '%s'", t);
     }
-    for (i = 0; table[i].name != NULL; i++)
-        if (strlen(table[i].name) == n && strncmp(table[i].name, t, n) == 0)
-            return table[i].fn(run, q, rs_req_skip_word(t));
-    for (i = 0; rs_analysis_extra[i].name != NULL; i++)
-        if (strlen(rs_analysis_extra[i].name) == n && strncmp(rs_analysis_extra[i].name, t, n) == 0)
-            return rs_analysis_extra[i].fn(run, q, rs_req_skip_word(t));
-    for (i = 0; rs_analysis_numeric[i].name != NULL; i++)
-        if (strlen(rs_analysis_numeric[i].name) == n && strncmp(rs_analysis_numeric[i].name, t, n) == 0)
-            return rs_analysis_numeric[i].fn(run, q, rs_req_skip_word(t));
-    for (i = 0; rs_analysis_sweep[i].name != NULL; i++)
-        if (strlen(rs_analysis_sweep[i].name) == n && strncmp(rs_analysis_sweep[i].name, t, n) == 0)
-            return rs_analysis_sweep[i].fn(run, q, rs_req_skip_word(t));
+    if ((e = lookup(general, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
     {
         char word[80];
         snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);
