@@ -61,7 +61,7 @@ $(LIBRS): $(LIB_OBJ)
 $(BIN): $(CLI_OBJ) $(LIBRS)
 	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) $(LIBS)
 
-$(BUILD)/tests/%: tests/%.c tests/testutil.h $(LIBRS) $(HDRS)
+$(BUILD)/tests/%: tests/%.c tests/testutil.h tests/closed_forms.h $(LIBRS) $(HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -Itests -DRS_SOURCE_DIR='"$(CURDIR)"' -o $@ $< $(LIBRS) -lcmocka $(LIBS)
 

@@ -3,6 +3,7 @@
  * symbolic array. */
 #include <string.h>
 #include "testutil.h"
+#include "closed_forms.h"
 #include <flint/fmpz_poly.h>
 #include <flint/fmpq.h>
 #include <flint/fmpz_mpoly.h>
@@ -10,13 +11,6 @@
 #include "recstab/bilinear.h"
 #include "recstab/rootcount.h"
 
-static void poly_set(fmpz_poly_t p, slong deg, const long *c)
-{
-    slong i;
-    fmpz_poly_zero(p);
-    for (i = 0; i <= deg; i++)
-        fmpz_poly_set_coeff_si(p, deg - i, c[i]);
-}
 
 /* p whose bilinear transform is q up to a constant factor:
  * p(l) = B(q(-z))(-l), since B(B(f))(l) = (-2l)^n f(-1/l). */
@@ -68,27 +62,6 @@ static void run(rs_routh_t r, const fmpz_poly_t p, slong in, slong on,
 /* Same closed forms as test_rootcount.c, roots worked out there:
  * {deg, coefficients highest first, in, on, out, at1, atm1, #mult-1 circle
  * roots, #mult-2 circle roots, status}. */
-typedef struct {
-    slong deg; long c[6]; slong in, on, out, at1, atm1, m1, m2;
-    rs_status_t st;
-} closed_case;
-
-static const closed_case cases[] = {
-    {1, {2, -1}, 1, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},          /* l-1/2 */
-    {1, {1, -2}, 0, 0, 1, 0, 0, 0, 0, RS_STATUS_UNSTABLE},        /* l-2 */
-    {2, {1, 0, 1}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},      /* l^2+1 */
-    {2, {1, -2, 1}, 0, 2, 0, 2, 0, 0, 1, RS_STATUS_UNSTABLE},     /* (l-1)^2 */
-    {2, {3, 2, -1}, 1, 1, 0, 0, 1, 1, 0, RS_STATUS_MARGINAL},     /* (l+1)(3l-1) */
-    {2, {1, -1, 1}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},     /* l^2-l+1, cd w=1 */
-    {4, {1, 0, 2, 0, 1}, 0, 4, 0, 0, 0, 0, 2, RS_STATUS_UNSTABLE},/* (l^2+1)^2 */
-    {3, {1, 0, 0, 0}, 3, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},     /* l^3 */
-    {2, {4, -8, 5}, 0, 0, 2, 0, 0, 0, 0, RS_STATUS_UNSTABLE},     /* FE w=1/2 */
-    {2, {5, -8, 4}, 2, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},       /* BE w=1/2 */
-    {2, {17, -30, 17}, 0, 2, 0, 0, 0, 2, 0, RS_STATUS_MARGINAL},  /* trap w=1/2 */
-    {2, {1, 2, 1}, 0, 2, 0, 0, 2, 0, 1, RS_STATUS_UNSTABLE},      /* cd w=2 */
-    {4, {1, 0, 0, 0, -1}, 0, 4, 0, 1, 1, 4, 0, RS_STATUS_MARGINAL},/* l^4-1 */
-    {0, {7}, 0, 0, 0, 0, 0, 0, 0, RS_STATUS_STABLE},              /* 7 */
-};
 
 static void test_closed_forms(void **state)
 {
@@ -101,12 +74,12 @@ static void test_closed_forms(void **state)
         fmpz_poly_init(p);
         rs_routh_init(r);
         poly_set(p, c->deg, c->c);
-        run(r, p, c->in, c->on, c->out, c->m2 ? 2 : (c->m1 ? 1 : 0), c->st);
+        run(r, p, c->in, c->on, c->out, c->mult2 ? 2 : (c->mult1 ? 1 : 0), c->status);
         assert_int_equal(r->count->degree, c->deg);
         assert_int_equal(r->count->at_one, c->at1);
         assert_int_equal(r->count->at_minus_one, c->atm1);
-        assert_int_equal(r->count->on_mult[1], c->m1);
-        assert_int_equal(r->count->on_mult[2], c->m2);
+        assert_int_equal(r->count->on_mult[1], c->mult1);
+        assert_int_equal(r->count->on_mult[2], c->mult2);
         rs_routh_clear(r);
         fmpz_poly_clear(p);
     }

@@ -14,29 +14,6 @@
 
 #ifndef RS_SOURCE_DIR
 #define RS_SOURCE_DIR "."
-/* Runs a bundled case (path relative to the source tree) with the given
- * analysis requests (nreq < 0: the case's own); fails the test on an error. */
-static inline json_t *tu_run_case(const char *rel, const char *const *req, int nreq, int *outcome)
-{
-    char path[1024];
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    int i;
-    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    if (rs_case_parse_file(c, path, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    if (nreq >= 0) {
-        rs_case_clear_requests(c);
-        for (i = 0; i < nreq; i++) rs_case_add_request(c, req[i], "test", 1, 1);
-    }
-    if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
-    rs_case_clear(c);
-    return doc;
-}
 #endif
 
 /* Evaluates an integer multivariate polynomial at a rational point, term by
