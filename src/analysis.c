@@ -184,6 +184,15 @@ void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
     json_object_set_new(o, "precision_bits", json_integer(rr->prec));
 }
 
+char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel)
+{
+    char *ps = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);
+    char *line = malloc(strlen(ps) + strlen(rel) + 2);
+    sprintf(line, "%s %s", ps, rel);
+    free(ps);
+    return line;
+}
+
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
 {
     char *str = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);

@@ -335,12 +335,9 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
                 json_object_set_new(dd, "reason", json_string("of one sign under the assumptions"));
                 json_array_append_new(dropped, dd);
             } else if (c->even[k]) {
-                char *fs = rs_polyfmt_fmpz_mpoly(c->factors->poly + k, (const char **) s->vars, s->zctx);
-                char *line = malloc(strlen(fs) + 16);
-                sprintf(line, "%s != 0", fs);
+                char *line = rs_cond_string(c->factors->poly + k, s, "!= 0");
                 json_array_append_new(nonzero, json_string(line));
                 free(line);
-                free(fs);
             }
         }
         json_object_set_new(d, "factors", fl);
@@ -351,12 +348,9 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
         if (c->trivially_true) {
             json_array_append_new(always, json_string(c->origin));
         } else {
-            char *rs = rs_polyfmt_fmpz_mpoly(c->reduced, (const char **) s->vars, s->zctx);
-            char *line = malloc(strlen(rs) + 8);
-            sprintf(line, "%s > 0", rs);
+            char *line = rs_cond_string(c->reduced, s, "> 0");
             json_array_append_new(conds, json_string(line));
             free(line);
-            free(rs);
             all_true = 0;
             if (c->trivially_false) some_false = 1;
         }
@@ -413,7 +407,6 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
         json_t *row = json_array();
         fmpz_mpoly_factor_t f;
         slong i;
-        char *str;
         for (j = 0; j <= k; j++) json_array_append_new(row, rs_json_zpoly(a + j, s));
         json_array_append_new(rows, row);
         /* delta_k = a_k^2 - a_0^2 = (a_k - a_0)(a_k + a_0) */
@@ -452,23 +445,16 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
                 }
                 if (e & 1) fmpz_mpoly_mul(kept, kept, f->poly + i, s->zctx);
                 else {
-                    char *fs = rs_polyfmt_fmpz_mpoly(f->poly + i, (const char **) s->vars, s->zctx);
-                    char *line = malloc(strlen(fs) + 16);
-                    sprintf(line, "%s != 0", fs);
+                    char *line = rs_cond_string(f->poly + i, s, "!= 0");
                     append_unique(conds, line);
                     free(line);
-                    free(fs);
                 }
             }
             if (neg) fmpz_mpoly_neg(kept, kept, s->zctx);
             if (!fmpz_mpoly_is_one(kept, s->zctx)) {
-                char *line;
-                str = rs_polyfmt_fmpz_mpoly(kept, (const char **) s->vars, s->zctx);
-                line = malloc(strlen(str) + 8);
-                sprintf(line, "%s > 0", str);
+                char *line = rs_cond_string(kept, s, "> 0");
                 append_unique(conds, line);
                 free(line);
-                free(str);
             }
             fmpz_mpoly_clear(kept, s->zctx);
         }

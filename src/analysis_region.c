@@ -405,14 +405,11 @@ static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
     r = rs_run_hurwitz(h, run, v, qz);
     if (r == RS_OK) {
         for (i = 0; i < h->ncond; i++) {
-            char *str, *line;
+            char *line;
             if (h->cond[i].trivially_true) continue;
-            str = rs_polyfmt_fmpz_mpoly(h->cond[i].reduced, (const char **) s->vars, s->zctx);
-            line = malloc(strlen(str) + 8);
-            sprintf(line, "%s > 0", str);
+            line = rs_cond_string(h->cond[i].reduced, s, "> 0");
             json_array_append_new(conds, json_string(line));
             free(line);
-            free(str);
         }
         json_object_set_new(o, "symbolic", json_true());
         json_object_set_new(o, "conditions", conds);

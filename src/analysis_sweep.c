@@ -1335,10 +1335,8 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
         fmpz *U1, *U2, *g;
         double *val, *bx1, *bx2;
         signed char *sg;
-        char *str = rs_polyfmt_fmpz_mpoly(bc[c].f, (const char **) s->vars, s->zctx);
-        json_array_append_new(conds, json_pack("{s:I,s:s,s:s}", "index", (json_int_t) c + 1, "origin",
-                                               bc[c].origin, "poly", str));
-        free(str);
+        json_array_append_new(conds, json_pack("{s:I,s:s,s:o}", "index", (json_int_t) c + 1, "origin",
+                                               bc[c].origin, "poly", rs_json_zpoly(bc[c].f, s)));
         terms_init(&T, bc[c].f, -1, v1, v2, s->zctx);
         U1 = powers_table(x1, K1, T.d1);
         U2 = powers_table(x2, K2, T.d2);

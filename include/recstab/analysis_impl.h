@@ -48,6 +48,8 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
+/* "poly REL" for a condition (REL "> 0", "!= 0"); malloc'd, free(). */
+char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel);
 json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s);
 json_t *rs_json_nonzero(const rs_scheme_t s);
 json_t *rs_charpoly_json(const rs_variant_t *v);
