@@ -184,6 +184,13 @@ void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
     json_object_set_new(o, "precision_bits", json_integer(rr->prec));
 }
 
+void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o)
+{
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+}
+
 char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel)
 {
     char *ps = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);

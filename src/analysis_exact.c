@@ -146,9 +146,7 @@ static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "p_at_minus_1", rs_json_zpoly(t, s));
         fmpz_clear(one);
     }
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_object_set_new(o, "decided_by", json_string("exact"));
-    json_array_append_new(run->results, o);
+    rs_run_emit_exact(run, v, o);
     fmpz_mpoly_clear(qz, s->zctx);
     fmpz_mpoly_clear(t, s->zctx);
     return RS_OK;
@@ -258,9 +256,7 @@ static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
     fmpz_poly_clear(p);
     json_decref(rows);
     if (r != RS_OK) { json_decref(o); return r; }
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_object_set_new(o, "decided_by", json_string("exact"));
-    json_array_append_new(run->results, o);
+    rs_run_emit_exact(run, v, o);
     return RS_OK;
 }
 
@@ -363,9 +359,7 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_object_set_new(o, "verdict", json_string(all_true ? "stable under the assumptions"
                                                   : some_false ? "never stable"
                                                   : "stable iff the conditions hold"));
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_object_set_new(o, "decided_by", json_string("exact"));
-    json_array_append_new(run->results, o);
+    rs_run_emit_exact(run, v, o);
     rs_hurwitz_clear(h, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
     return RS_OK;
@@ -523,9 +517,7 @@ static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "method", json_string("Schur-Cohn (Jury) table, symbolic"));
         r = jury_symbolic(run, v, o);
         if (r != RS_OK) { json_decref(o); return r; }
-        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-        json_object_set_new(o, "decided_by", json_string("exact"));
-        json_array_append_new(run->results, o);
+        rs_run_emit_exact(run, v, o);
         return RS_OK;
     }
     rs_jury_init(ju);
@@ -550,9 +542,7 @@ static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_json_add_count(o, ju->count);
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:b}", "with", "routh (bilinear)", "agree", agree));
         if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
-        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-        json_object_set_new(o, "decided_by", json_string("exact"));
-        json_array_append_new(run->results, o);
+        rs_run_emit_exact(run, v, o);
     }
     rs_jury_clear(ju);
     rs_routh_clear(ro);
@@ -580,9 +570,7 @@ static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
         r = rs_run_exact_count(rc, run, p, o);
         if (r == RS_OK) {
             rs_json_add_count(o, rc);
-            json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-            json_object_set_new(o, "decided_by", json_string("exact"));
-            json_array_append_new(run->results, o);
+            rs_run_emit_exact(run, v, o);
         } else {
             json_decref(o);
         }

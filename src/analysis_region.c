@@ -821,9 +821,7 @@ int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "roots_to_infinity", json_integer(k));
         json_object_set_new(o, "max_abs", json_real(maxabs));
     }
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_object_set_new(o, "decided_by", json_string("exact"));
-    json_array_append_new(run->results, o);
+    rs_run_emit_exact(run, v, o);
     fmpz_poly_clear(c);
     return RS_OK;
 }
@@ -1509,9 +1507,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
         }
         json_object_set_new(o, "points_checked", json_integer(ntried));
         json_object_set_new(o, "tried", json_string(tried));
-        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-        json_object_set_new(o, "decided_by", json_string("exact"));
-        json_array_append_new(run->results, o);
+        rs_run_emit_exact(run, v, o);
     } else {
         json_decref(o);
     }

@@ -488,23 +488,32 @@ static void _exp_phi_r(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
     _exp_phi_sub(E, Phi, cs->n1, cs->A2, re->B2, cs->H, cs->order, prec);
 }
 
-int rs_cosim_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
-                     slong prec, rs_error_t err)
+/* The checks of the public E/Phi and E/G entry points: a valid cosim
+ * and an n x n E beside an n x m(K+1) second matrix named xname. */
+static int _check_out(const arb_mat_t E, const arb_mat_t X, const char *xname,
+                      const rs_cosim_t cs, rs_error_t err)
 {
-    slong n, K, m;
-    _real_t re;
+    slong n, w;
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK)
         return rc;
     n = cs->n1 + cs->n2;
-    K = cs->order;
-    m = cs->m;
+    w = cs->m * (cs->order + 1);
     if (arb_mat_nrows(E) != n || arb_mat_ncols(E) != n
-        || arb_mat_nrows(Phi) != n || arb_mat_ncols(Phi) != m * (K + 1))
+        || arb_mat_nrows(X) != n || arb_mat_ncols(X) != w)
         return rs_error_set(err, RS_ERR_INPUT,
-                            "cosim: E must be %ldx%ld and Phi %ldx%ld",
-                            (long) n, (long) n, (long) n,
-                            (long) (m * (K + 1)));
+                            "cosim: E must be %ldx%ld and %s %ldx%ld",
+                            (long) n, (long) n, xname, (long) n, (long) w);
+    return RS_OK;
+}
+
+int rs_cosim_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
+                     slong prec, rs_error_t err)
+{
+    _real_t re;
+    int rc = _check_out(E, Phi, "Phi", cs, err);
+    if (rc != RS_OK)
+        return rc;
     _real_own(&re, cs);
     _exp_phi_r(E, Phi, cs, &re, prec);
     return RS_OK;
@@ -550,20 +559,10 @@ static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs,
 int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
                    rs_error_t err)
 {
-    slong n, K, m;
     _real_t re;
-    int rc = rs_cosim_check(cs, err);
+    int rc = _check_out(E, G, "G", cs, err);
     if (rc != RS_OK)
         return rc;
-    n = cs->n1 + cs->n2;
-    K = cs->order;
-    m = cs->m;
-    if (arb_mat_nrows(E) != n || arb_mat_ncols(E) != n
-        || arb_mat_nrows(G) != n || arb_mat_ncols(G) != m * (K + 1))
-        return rs_error_set(err, RS_ERR_INPUT,
-                            "cosim: E must be %ldx%ld and G %ldx%ld",
-                            (long) n, (long) n, (long) n,
-                            (long) (m * (K + 1)));
     _real_own(&re, cs);
     return _gains_r(E, G, cs, &re, prec, err);
 }

@@ -45,6 +45,9 @@ int rs_run_assignments(rs_run_t *run, rs_assign_t **out, slong *nout,
 void rs_assign_free(rs_assign_t *a, slong n);
 /* Cached: scheme + charpoly with the assignments substituted. */
 int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n);
+/* Close an exact result o of variant v ("substituted", "decided_by":
+ * "exact") and append it to the run's results (takes o). */
+void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
