@@ -348,6 +348,66 @@ void rs_req_src(rs_src_t *src, const rs_request_t *q)
     src->col = q->loc.col;
 }
 
+int rs_req_eval_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
+                       const char *text, slong var, const fmpq *vals, slong npoints, const char **end)
+{
+    const fmpq_mpoly_ctx_struct *ctx = v->s->ctx;
+    const char *what = var < 0 ? "expected a value of set parameters, found '%s'"
+                               : "expected a value of set parameters and the swept one, found '%s'";
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t num, den, tn, td;
+    rs_assign_t *a;
+    size_t pos = (size_t) (text - q->text);
+    slong i, n;
+    fmpq_t b;
+    int r;
+    rs_req_src(&src, q);
+    r = rs_expr_parse(&e, &src, &pos, run->err);
+    if (r != RS_OK) return r;
+    if (end != NULL) *end = q->text + pos;
+    fmpq_mpoly_init(num, ctx);
+    fmpq_mpoly_init(den, ctx);
+    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 0, run->err);
+    rs_expr_free(e);
+    if (r != RS_OK) goto done;
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    for (i = 0; i < n; i++) {
+        if (a[i].var == var) continue;
+        fmpq_mpoly_evaluate_one_fmpq(num, num, a[i].var, a[i].value, ctx);
+        fmpq_mpoly_evaluate_one_fmpq(den, den, a[i].var, a[i].value, ctx);
+    }
+    rs_assign_free(a, n);
+    fmpq_mpoly_init(tn, ctx);
+    fmpq_mpoly_init(td, ctx);
+    fmpq_init(b);
+    for (i = 0; i < npoints && r == RS_OK; i++) {
+        if (var >= 0) {
+            fmpq_mpoly_evaluate_one_fmpq(tn, num, var, vals + i, ctx);
+            fmpq_mpoly_evaluate_one_fmpq(td, den, var, vals + i, ctx);
+        } else {
+            fmpq_mpoly_set(tn, num, ctx);
+            fmpq_mpoly_set(td, den, ctx);
+        }
+        if (!fmpq_mpoly_is_fmpq(tn, ctx) || !fmpq_mpoly_is_fmpq(td, ctx)) {
+            r = rs_req_error(run, q, text, RS_ERR_INPUT, what, text);
+        } else {
+            fmpq_mpoly_get_fmpq(out + i * stride, tn, ctx);
+            fmpq_mpoly_get_fmpq(b, td, ctx);
+            if (fmpq_is_zero(b))
+                r = rs_req_error(run, q, text, RS_ERR_MATH, "division by zero in '%s'", text);
+            else fmpq_div(out + i * stride, out + i * stride, b);
+        }
+    }
+    fmpq_clear(b);
+    fmpq_mpoly_clear(tn, ctx);
+    fmpq_mpoly_clear(td, ctx);
+done:
+    fmpq_mpoly_clear(num, ctx);
+    fmpq_mpoly_clear(den, ctx);
+    return r;
+}
+
 /* ---- charpoly ------------------------------------------------------------ */
 
 json_t *rs_charpoly_json(const rs_variant_t *v)

@@ -148,44 +148,16 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
 
 /* ---- modes ------------------------------------------------------------------------ */
 
-/* Evaluates a numeric expression (parameters allowed, at their set values). */
+/* A numeric request expression (parameters allowed, at their set values). */
 static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v, const char *text,
                        slong prec)
 {
-    rs_src_t src;
-    rs_expr_t *e = NULL;
-    fmpq_mpoly_t num, den;
-    size_t pos = (size_t) (text - q->text);
+    fmpq_t a;
     int r;
-    rs_req_src(&src, q);
-    r = rs_expr_parse(&e, &src, &pos, run->err);
-    if (r != RS_OK) return r;
-    fmpq_mpoly_init(num, v->s->ctx);
-    fmpq_mpoly_init(den, v->s->ctx);
-    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 0, run->err);
-    rs_expr_free(e);
-    if (r == RS_OK) {
-        slong i;
-        /* substitute every set value */
-        for (i = 0; i < run->c->nsets; i++) {
-            slong k = rs_case_param_index(run->c, run->c->sets[i].name);
-            fmpq_mpoly_evaluate_one_fmpq(num, num, k, run->c->sets[i].value, v->s->ctx);
-            fmpq_mpoly_evaluate_one_fmpq(den, den, k, run->c->sets[i].value, v->s->ctx);
-        }
-        if (!fmpq_mpoly_is_fmpq(num, v->s->ctx) || !fmpq_mpoly_is_fmpq(den, v->s->ctx)) {
-            r = rs_req_error(run, q, text, RS_ERR_INPUT, "expected a value of set parameters, found '%s'", text);
-        } else {
-            fmpq_t a, b;
-            fmpq_init(a); fmpq_init(b);
-            fmpq_mpoly_get_fmpq(a, num, v->s->ctx);
-            fmpq_mpoly_get_fmpq(b, den, v->s->ctx);
-            fmpq_div(a, a, b);
-            arb_set_fmpq(out, a, prec);
-            fmpq_clear(a); fmpq_clear(b);
-        }
-    }
-    fmpq_mpoly_clear(num, v->s->ctx);
-    fmpq_mpoly_clear(den, v->s->ctx);
+    fmpq_init(a);
+    r = rs_req_eval_points(a, 1, run, q, v, text, -1, NULL, 1, NULL);
+    if (r == RS_OK) arb_set_fmpq(out, a, prec);
+    fmpq_clear(a);
     return r;
 }
 

@@ -892,61 +892,6 @@ static json_t *set_values_json(rs_run_t *run, const char *const *keep, slong nke
 
 /* ---- modes options: h=EXPR reference=EXPR[,EXPR...] evaluated per point ------------------- */
 
-static int eval_expr_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
-                            const char *text, slong var, const fmpq *vals, slong npoints, const char **end)
-{
-    rs_src_t src;
-    rs_expr_t *e = NULL;
-    fmpq_mpoly_t num, den;
-    size_t pos = (size_t) (text - q->text);
-    slong i;
-    int r;
-    rs_req_src(&src, q);
-    r = rs_expr_parse(&e, &src, &pos, run->err);
-    if (r != RS_OK) return r;
-    *end = q->text + pos;
-    fmpq_mpoly_init(num, v->s->ctx);
-    fmpq_mpoly_init(den, v->s->ctx);
-    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, 0, run->err);
-    rs_expr_free(e);
-    if (r == RS_OK) {
-        rs_assign_t *a;
-        slong n;
-        rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
-        for (i = 0; i < n; i++) {
-            if (a[i].var == var) continue;
-            fmpq_mpoly_evaluate_one_fmpq(num, num, a[i].var, a[i].value, v->s->ctx);
-            fmpq_mpoly_evaluate_one_fmpq(den, den, a[i].var, a[i].value, v->s->ctx);
-        }
-        rs_assign_free(a, n);
-        for (i = 0; i < npoints && r == RS_OK; i++) {
-            fmpq_mpoly_t tn, td;
-            fmpq_t b;
-            fmpq_mpoly_init(tn, v->s->ctx);
-            fmpq_mpoly_init(td, v->s->ctx);
-            fmpq_init(b);
-            fmpq_mpoly_evaluate_one_fmpq(tn, num, var, vals + i, v->s->ctx);
-            fmpq_mpoly_evaluate_one_fmpq(td, den, var, vals + i, v->s->ctx);
-            if (!fmpq_mpoly_is_fmpq(tn, v->s->ctx) || !fmpq_mpoly_is_fmpq(td, v->s->ctx)) {
-                r = rs_req_error(run, q, text, RS_ERR_INPUT,
-                                 "expected a value of set parameters and the swept one, found '%s'", text);
-            } else {
-                fmpq_mpoly_get_fmpq(out + i * stride, tn, v->s->ctx);
-                fmpq_mpoly_get_fmpq(b, td, v->s->ctx);
-                if (fmpq_is_zero(b))
-                    r = rs_req_error(run, q, text, RS_ERR_MATH, "division by zero in '%s'", text);
-                else fmpq_div(out + i * stride, out + i * stride, b);
-            }
-            fmpq_mpoly_clear(tn, v->s->ctx);
-            fmpq_mpoly_clear(td, v->s->ctx);
-            fmpq_clear(b);
-        }
-    }
-    fmpq_mpoly_clear(num, v->s->ctx);
-    fmpq_mpoly_clear(den, v->s->ctx);
-    return r;
-}
-
 static int parse_modes_opts(job_t *J, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
                             const char *opts, slong var, const fmpq *vals)
 {
@@ -962,7 +907,7 @@ static int parse_modes_opts(job_t *J, rs_run_t *run, const rs_request_t *q, cons
         while (*t == ' ' || *t == '\t') t++;
         if (*t == '\0') break;
         if (strncmp(t, "h=", 2) == 0) {
-            r = eval_expr_points(J->hval, 1, run, q, v, t + 2, var, vals, J->npoints, &end);
+            r = rs_req_eval_points(J->hval, 1, run, q, v, t + 2, var, vals, J->npoints, &end);
         } else if (strncmp(t, "reference=", 10) == 0) {
             fmpq *tmp = _fmpq_vec_init(J->npoints);
             const char *u = t + 10;
@@ -972,7 +917,7 @@ static int parse_modes_opts(job_t *J, rs_run_t *run, const rs_request_t *q, cons
                     _fmpq_vec_clear(tmp, J->npoints);
                     return rs_req_error(run, q, u, RS_ERR_LIMIT, "at most 4 references, found more at '%s'", u);
                 }
-                r = eval_expr_points(tmp, 1, run, q, v, u, var, vals, J->npoints, &end);
+                r = rs_req_eval_points(tmp, 1, run, q, v, u, var, vals, J->npoints, &end);
                 if (r != RS_OK) break;
                 {
                     fmpq *nr = _fmpq_vec_init(J->npoints * (J->nref + 1));

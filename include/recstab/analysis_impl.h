@@ -86,6 +86,12 @@ const char *rs_req_skip_word(const char *t);
 int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
                  const char *fmt, const char *a);
 void rs_req_src(rs_src_t *src, const rs_request_t *q);
+/* The request's expression at text, at the case's set values and, when
+ * var >= 0, at var = vals[i]: out[i * stride] for i < npoints (var < 0:
+ * one value).  *end (unless NULL) is set past the expression.  A value
+ * that still has a parameter or divides by zero is an error at text. */
+int rs_req_eval_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
+                       const char *text, slong var, const fmpq *vals, slong npoints, const char **end);
 
 typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
 typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
