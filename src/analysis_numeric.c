@@ -185,7 +185,12 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     /* options: h=EXPR (time step; default 1 for schemes scaled by h), reference=EXPR[,EXPR...] */
     hs = strstr(rest, "h=");
     if (hs != NULL && (hs == rest || hs[-1] == ' '))
+    {
         r = eval_number(h, run, q, v, hs + 2, prec);
+        /* ln(lambda)/h: a step must be positive */
+        if (r == RS_OK && !arb_is_positive(h))
+            r = rs_req_error(run, q, hs + 2, RS_ERR_INPUT, "expected a time step h > 0, found '%s'", hs + 2);
+    }
     ref = strstr(rest, "reference=");
     if (r == RS_OK && ref != NULL) {
         const char *t = ref + 10;

@@ -908,6 +908,10 @@ static int parse_modes_opts(job_t *J, rs_run_t *run, const rs_request_t *q, cons
         if (*t == '\0') break;
         if (strncmp(t, "h=", 2) == 0) {
             r = rs_req_eval_points(J->hval, 1, run, q, v, t + 2, var, vals, J->npoints, &end);
+            for (i = 0; i < J->npoints && r == RS_OK; i++)
+                if (fmpq_sgn(J->hval + i) <= 0)
+                    r = rs_req_error(run, q, t + 2, RS_ERR_INPUT,
+                                     "expected a time step h > 0 at every point, found '%s'", t + 2);
         } else if (strncmp(t, "reference=", 10) == 0) {
             fmpq *tmp = _fmpq_vec_init(J->npoints);
             const char *u = t + 10;
