@@ -207,6 +207,30 @@ static int col_index(const json_t *o, const char *name)
     return 0;
 }
 
+/* The common head of a sweep panel: the x label lists the swept parameters
+ * of every sweep `of` kind, log scale when any of them is log-spaced. */
+static void sweep_panel_start(FILE *g, const tab_t *tabs, size_t n, const char *kind)
+{
+    char xl[512] = "";
+    int logx = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        const json_t *o = tabs[i].el;
+        const char *prm = jstr(o, "param");
+        if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kind) != 0) continue;
+        if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
+        if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
+            if (xl[0]) strcat(xl, ", ");
+            strcat(xl, prm);
+        }
+    }
+    fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
+    fputs("set xlabel ", g);
+    put_q(g, xl);
+    fputc('\n', g);
+    if (logx) fputs("set logscale x\n", g);
+}
+
 static void rm_dir(const char *dir, size_t nfiles)
 {
     char p[4096];
@@ -320,24 +344,9 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     }
     /* sweeps: one panel per kind, every case overlaid */
     for (k = 0; k < 3; k++) {
-        int first = 1, logx = 0;
-        char xl[512] = "";
+        int first = 1;
         if (!has_kind[k] || (k == 2 && nmodes > 0)) continue;
-        for (i = 0; i < n; i++) {
-            json_t *o = tabs[i].el;
-            const char *prm = jstr(o, "param");
-            if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kinds[k]) != 0) continue;
-            if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
-            if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
-                if (xl[0]) strcat(xl, ", ");
-                strcat(xl, prm);
-            }
-        }
-        fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
-        fputs("set xlabel ", g);
-        put_q(g, xl);
-        fputc('\n', g);
-        if (logx) fputs("set logscale x\n", g);
+        sweep_panel_start(g, tabs, n, kinds[k]);
         if (k == 0) fputs("set ylabel 'spectral radius'\nset title 'certified spectral radius'\n", g);
         if (k == 1) fputs("set ylabel 'verdict'\nset yrange [-0.5:2.5]\nset ytics ('stable' 0, 'marginal' 1, "
                           "'unstable' 2)\nset title 'exact verdict'\n", g);
@@ -379,23 +388,9 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
         const char *qlab[2] = {"relative frequency error", "damping ratio"};
         for (qn = 0; qn < 2 && nmodes > 0; qn++)
             for (m = 1; m <= nmodes; m++) {
-                int first = 1, logx = 0;
-                char xl[512] = "", cname[48], ttl[128];
-                for (i = 0; i < n; i++) {
-                    json_t *o = tabs[i].el;
-                    const char *prm = jstr(o, "param");
-                    if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
-                    if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
-                    if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
-                        if (xl[0]) strcat(xl, ", ");
-                        strcat(xl, prm);
-                    }
-                }
-                fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
-                fputs("set xlabel ", g);
-                put_q(g, xl);
-                fputc('\n', g);
-                if (logx) fputs("set logscale x\n", g);
+                int first = 1;
+                char cname[48], ttl[128];
+                sweep_panel_start(g, tabs, n, "modes");
                 snprintf(ttl, sizeof ttl, "%s, mode %d", qlab[qn], m);
                 fputs("set title ", g);
                 put_q(g, ttl);
