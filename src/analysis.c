@@ -339,6 +339,15 @@ int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
     return rs_error_set_at(run->err, code, q->loc.file, q->loc.line, col > 0 ? col : 1, fmt, a);
 }
 
+int rs_req_relocate(rs_run_t *run, const rs_request_t *q, int code, const char *what)
+{
+    char msg[RS_ERROR_MSG_LEN + 64];
+    if (run->err->file[0] != '\0') return code;
+    snprintf(msg, sizeof msg, "%s: %s", what,
+             run->err->msg[0] ? run->err->msg : "not certified within the precision limit");
+    return rs_req_error(run, q, q->text, code, "%s", msg);
+}
+
 void rs_req_src(rs_src_t *src, const rs_request_t *q)
 {
     memset(src, 0, sizeof *src);

@@ -347,10 +347,8 @@ static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int 
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_object_set_new(o, "substituted", rs_json_sets(run->c));
         json_array_append_new(run->results, o);
-    } else if (run->err->file[0] == '\0') {
-        char msg[RS_ERROR_MSG_LEN];
-        snprintf(msg, sizeof msg, "%s", run->err->msg);
-        r = rs_req_error(run, q, q->text, r, "radius: %s", msg);
+    } else {
+        r = rs_req_relocate(run, q, r, "radius");
     }
     rs_radius_clear(rr);
     rs_radius_clear(rm);
@@ -421,25 +419,11 @@ static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
             vals_t vals;
             rs_cosim_t cs;
             rs_radius_t rr;
-            fmpq_t t;
             char *x1, *x2;
             int verdict = -1;
-            fmpq_init(vv + 0); fmpq_init(vv + 1); fmpq_init(t);
-            /* x = A + (B - A) i / (K - 1) */
-            fmpq_sub(t, B[0], A[0]); fmpq_mul_si(t, t, i); {
-                fmpz_t d;
-                fmpz_init_set_si(d, K1 - 1);
-                fmpq_div_fmpz(t, t, d);
-                fmpz_clear(d);
-            }
-            fmpq_add(vv + 0, A[0], t);
-            fmpq_sub(t, B[1], A[1]); fmpq_mul_si(t, t, j); {
-                fmpz_t d;
-                fmpz_init_set_si(d, K2 - 1);
-                fmpq_div_fmpz(t, t, d);
-                fmpz_clear(d);
-            }
-            fmpq_add(vv + 1, A[1], t);
+            fmpq_init(vv + 0); fmpq_init(vv + 1);
+            rs_grid_value(vv + 0, A[0], B[0], i, K1 - 1, 0);
+            rs_grid_value(vv + 1, A[1], B[1], j, K2 - 1, 0);
             names[0] = n1; names[1] = n2;
             vals_make(&vals, run->c, names, vv, 2);
             rs_cosim_init(cs, 1, 1);
@@ -471,7 +455,7 @@ static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
             rs_radius_clear(rr);
             rs_cosim_clear(cs);
             flint_free(vals.v);
-            fmpq_clear(vv + 0); fmpq_clear(vv + 1); fmpq_clear(t);
+            fmpq_clear(vv + 0); fmpq_clear(vv + 1);
         }
     fclose(f);
     if (r == RS_OK) {

@@ -134,11 +134,7 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_array_append_new(run->results, o);
     } else {
         json_decref(o);
-        if (run->err->file[0] == '\0') {
-            char msg[RS_ERROR_MSG_LEN];
-            snprintf(msg, sizeof msg, "%s", run->err->msg);
-            r = rs_req_error(run, q, q->text, r, "radius: %s", msg);
-        }
+        r = rs_req_relocate(run, q, r, "radius");
     }
     rs_rootcount_clear(rc);
     rs_radius_clear(rr);

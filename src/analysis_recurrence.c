@@ -29,12 +29,9 @@ static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int st
     }
     if (r != RS_OK) {
         rs_radius_clear(rr);
-        if (run->err->file[0] == '\0') {
-            char msg[RS_ERROR_MSG_LEN];
-            snprintf(msg, sizeof msg, "%s", run->err->msg[0] ? run->err->msg : "not certified within the precision limit");
-            return rs_req_error(run, q, q->text, r == RS_ERR_UNDECIDED ? RS_ERR_LIMIT : r, "radius: %s", msg);
-        }
-        return r;
+        /* out of precision is a resource limit of the request */
+        if (run->err->file[0] == '\0' && r == RS_ERR_UNDECIDED) r = RS_ERR_LIMIT;
+        return rs_req_relocate(run, q, r, "radius");
     }
     o = json_object();
     json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));

@@ -975,9 +975,7 @@ static char *memstream_done(FILE *f, char **buf)
 
 /* ---- sweep ------------------------------------------------------------------------------------------- */
 
-/* grid value i of K+1 points from A to B; log spacing: the simplest rational
- * within 1e-13 relative of A*(B/A)^(i/K) (endpoints exact) */
-static void grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, int logsp)
+void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, int logsp)
 {
     if (K == 0 || i == 0) { fmpq_set(x, A); return; }
     if (i == K) { fmpq_set(x, B); return; }
@@ -1082,7 +1080,7 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
     J.max_prec = run->opt->max_prec;
     terms_init(&J.T, v->cp->p, v->s->lambda_var, idx, -1, v->s->zctx);
     vals = _fmpq_vec_init(J.npoints);
-    for (i = 0; i < J.npoints; i++) grid_value(vals + i, A, B, i, K, logsp);
+    for (i = 0; i < J.npoints; i++) rs_grid_value(vals + i, A, B, i, K, logsp);
     J.U1 = powers_table(vals, J.npoints, J.T.d1);
     if (kind == OF_MODES) {
         r = parse_modes_opts(&J, run, q, v, opts, idx, vals);
@@ -1211,7 +1209,7 @@ static fmpq *axis_values(const fmpq_t A, const fmpq_t B, slong K)
 {
     fmpq *x = _fmpq_vec_init(K);
     slong i;
-    for (i = 0; i < K; i++) grid_value(x + i, A, B, i, K - 1, 0);
+    for (i = 0; i < K; i++) rs_grid_value(x + i, A, B, i, K - 1, 0);
     return x;
 }
 

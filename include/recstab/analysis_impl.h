@@ -86,6 +86,9 @@ const char *rs_req_skip_word(const char *t);
 int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
                  const char *fmt, const char *a);
 void rs_req_src(rs_src_t *src, const rs_request_t *q);
+/* An error from a library call that carries no place of its own: put at
+ * the request, the message prefixed "what: ".  Returns code. */
+int rs_req_relocate(rs_run_t *run, const rs_request_t *q, int code, const char *what);
 /* The request's expression at text, at the case's set values and, when
  * var >= 0, at var = vals[i]: out[i * stride] for i < npoints (var < 0:
  * one value).  *end (unless NULL) is set past the expression.  A value
@@ -103,6 +106,11 @@ extern const rs_analysis_entry_t rs_analysis_numeric[];
 extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis_sweep.c: sweep, map */
 extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis_cosim.c: exact integration */
 extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis_recurrence.c: numeric recurrences */
+
+/* Grid value i of K+1 points from A to B (src/analysis_sweep.c); log
+ * spacing: the simplest rational within 1e-13 relative of A*(B/A)^(i/K)
+ * (endpoints exact). */
+void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, int logsp);
 
 /* Sign information for the parameters from the case's `assume` lines
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */
