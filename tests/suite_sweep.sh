@@ -4,8 +4,9 @@
 # --plot renders a PNG/SVG with gnuplot (skipped without gnuplot), --shard
 # I/N outputs merge (by concatenation, README "Sweeps and maps") into the
 # full run's CSV byte for byte, --threads does not change the CSV, the point
-# limit exits 2 naming --max-points, and, when mpirun and build/recstab-mpi
-# exist, 2 and 3 MPI ranks write the same CSV as one process.
+# limit exits 2 naming --max-points, the exact-integration map agrees with
+# the single-point radius, and, when mpirun and build/recstab-mpi exist, 2
+# and 3 MPI ranks write the same CSV as one process.
 # Prints "ok ..." or "FAIL ..." per check.
 BUILD=${BUILD:-build}
 RS="$BUILD/recstab"
@@ -107,6 +108,23 @@ if command -v gnuplot >/dev/null 2>&1; then
 else
     echo "skip --plot (gnuplot not installed; Debian: apt-get install gnuplot-nox)"
 fi
+
+# exact-integration (co-simulation) map: every grid point is the point the
+# single-point `radius` analysis gives when the two values are set by --set
+# (its radius inside the map row's certified interval, the same verdict)
+LI=cases/li-explicit-k1.case
+"$RS" --csv "$T/li.csv" --analyse "map acc1 0 3 4, c1 1/2 2 3" "$LI" >/dev/null 2>"$T/err"; rc=$?
+check_exit "cosim map exit" 0 "$rc"
+rows=$(grep -vc '^#\|^index' "$T/li.csv")
+if [ "$rows" = 12 ]; then ok "cosim map: 12 rows"; else fail "cosim map rows: $rows"; fi
+grep -v '^#\|^index' "$T/li.csv" | while IFS=, read -r idx i j x y xe ye verdict code rad lo hi by; do
+    "$RS" --json --set "acc1=$xe" --set "c1=$ye" --analyse radius "$LI" >"$T/pt.json" 2>>"$T/err"
+    rho=$(sed -n 's/.*"rho": "\(.*\)".*/\1/p' "$T/pt.json" | head -1)
+    st=$(sed -n 's/.*"status": "\(.*\)".*/\1/p' "$T/pt.json" | head -1)
+    if awk -v r="$rho" -v l="$lo" -v h="$hi" 'BEGIN { exit !(r + 0 >= l * (1 - 1e-15) && r + 0 <= h * (1 + 1e-15)) }' \
+        && [ "$st" = "$verdict" ]; then :; else echo "row $idx: map $verdict [$lo, $hi], point $st $rho"; fi
+done >"$T/li.diff"
+if [ ! -s "$T/li.diff" ]; then ok "cosim map: every point agrees with the single-point radius"; else fail "cosim map: $(cat "$T/li.diff")"; fi
 
 # MPI: same CSV with 2 and 3 ranks (make mpi builds $BUILD/recstab-mpi)
 if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
