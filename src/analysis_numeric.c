@@ -157,9 +157,6 @@ static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs
     return r;
 }
 
-void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
-                        slong nref, slong prec);
-
 static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     rs_variant_t *v;
@@ -230,21 +227,13 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     spur = json_array();
     for (i = 0; i < rr->nroots; i++) {
         json_t *m = json_object();
-        acb_t c;
         arb_t sig, om, mag, xi, err;
-        acb_init(c);
         arb_init(sig); arb_init(om); arb_init(mag); arb_init(xi); arb_init(err);
         json_object_set_new(m, "root", acb_json(rr->roots + i, digits));
         if (acb_is_zero(rr->roots + i)) {
             json_object_set_new(m, "note", json_string("root at 0: no continuous equivalent"));
         } else {
-            acb_log(c, rr->roots + i, prec);
-            acb_div_arb(c, c, h, prec);
-            arb_set(sig, acb_realref(c));
-            arb_set(om, acb_imagref(c));
-            arb_hypot(mag, sig, om, prec);
-            arb_div(xi, sig, mag, prec);
-            arb_neg(xi, xi);
+            rs_modes_continuous(sig, om, mag, xi, rr->roots + i, h, prec);
             json_object_set_new(m, "sigma", rs_json_arb(sig, digits));
             json_object_set_new(m, "omega", rs_json_arb(om, digits));
             json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
@@ -256,7 +245,6 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
             }
         }
         json_array_append_new((principal[i] || nref == 0) ? modes : spur, m);
-        acb_clear(c);
         arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(xi); arb_clear(err);
     }
     json_object_set_new(o, "modes", modes);
@@ -495,10 +483,21 @@ const rs_analysis_entry_t rs_analysis_numeric[] = {
 
 /* ---- shared with analysis_sweep.c (sweep ... of modes) ------------------------------ */
 
-/* The principal roots of the certified roots of rr, as in `modes`: for each
- * reference frequency refs[k] (time step h) the root with Im >= 0 closest to
- * exp(i refs[k] h) and its conjugate get principal[i] = k + 1; every other
- * root gets 0 (spurious).  principal has rr->nroots entries. */
+void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const acb_t root, const arb_t h,
+                         slong prec)
+{
+    acb_t c;
+    acb_init(c);
+    acb_log(c, root, prec);
+    acb_div_arb(c, c, h, prec);
+    arb_set(sigma, acb_realref(c));
+    arb_set(omega, acb_imagref(c));
+    arb_hypot(mag, sigma, omega, prec);
+    arb_div(zeta, sigma, mag, prec);
+    arb_neg(zeta, zeta);
+    acb_clear(c);
+}
+
 void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
                         slong nref, slong prec)
 {

@@ -36,8 +36,6 @@
 
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 char *rs_run_free_params(const rs_variant_t *v);
-void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
-                        slong nref, slong prec);
 
 #define SW_MAX_REFS 4
 #define SW_MAX_TOKENS 32
@@ -581,6 +579,38 @@ static void point_poly(fmpz_poly_t P, const job_t *J, slong idx)
     eval_point(P, &J->T, J->U1 + i * (J->T.d1 + 1), J->is_map ? J->U2 + j * (J->T.d2 + 1) : NULL);
 }
 
+/* Damping ratio, frequency error and omega of the principal root (Im >= 0)
+ * of each reference at point idx, as `modes` reports them. */
+static void point_modes(pt_t *pt, const job_t *J, slong idx, const rs_radius_t rr)
+{
+    slong prec = 128, k, i;
+    arb_t h, sig, om, mag, zeta;
+    arb_ptr refs = _arb_vec_init(J->nref);
+    int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
+    arb_init(h); arb_init(sig); arb_init(om); arb_init(mag); arb_init(zeta);
+    arb_set_fmpq(h, J->hval + idx, prec);
+    for (k = 0; k < J->nref; k++) arb_set_fmpq(refs + k, J->refval + idx * J->nref + k, prec);
+    rs_modes_principal(principal, rr, h, refs, J->nref, prec);
+    for (k = 0; k < 3 * SW_MAX_REFS; k++) pt->mode[k] = NAN;
+    for (k = 0; k < J->nref; k++)
+        for (i = 0; i < rr->nroots; i++) {
+            const acb_struct *z = rr->roots + i;
+            if (principal[i] != k + 1 || acb_is_zero(z)) continue;
+            if (arf_sgn(arb_midref(acb_imagref(z))) < 0 && !arb_is_zero(acb_imagref(z))) continue;
+            rs_modes_continuous(sig, om, mag, zeta, z, h, prec);
+            pt->mode[3 * k] = arf_get_d(arb_midref(zeta), ARF_RND_NEAR);
+            arb_sub(mag, mag, refs + k, prec);
+            arb_div(mag, mag, refs + k, prec);
+            pt->mode[3 * k + 1] = arf_get_d(arb_midref(mag), ARF_RND_NEAR);
+            pt->mode[3 * k + 2] = arf_get_d(arb_midref(om), ARF_RND_NEAR);
+            pt->nmodes++;
+            break;
+        }
+    free(principal);
+    _arb_vec_clear(refs, J->nref);
+    arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(zeta);
+}
+
 static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
 {
     fmpz_poly_t P;
@@ -633,43 +663,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
                     pt->d.rho_lower = lo;
                     pt->d.rho_upper = hi;
                 }
-                if (J->kind == OF_MODES) {
-                    slong prec = 128, k, i;
-                    arb_t h, sig, om, mag;
-                    arb_ptr refs = _arb_vec_init(J->nref);
-                    int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
-                    acb_t c;
-                    arb_init(h); arb_init(sig); arb_init(om); arb_init(mag);
-                    acb_init(c);
-                    arb_set_fmpq(h, J->hval + idx, prec);
-                    for (k = 0; k < J->nref; k++) arb_set_fmpq(refs + k, J->refval + idx * J->nref + k, prec);
-                    rs_modes_principal(principal, rr, h, refs, J->nref, prec);
-                    for (k = 0; k < 3 * SW_MAX_REFS; k++) pt->mode[k] = NAN;
-                    for (k = 0; k < J->nref; k++)
-                        for (i = 0; i < rr->nroots; i++) {
-                            if (principal[i] != k + 1 || acb_is_zero(rr->roots + i)) continue;
-                            if (arf_sgn(arb_midref(acb_imagref(rr->roots + i))) < 0
-                                && !arb_is_zero(acb_imagref(rr->roots + i))) continue;
-                            acb_log(c, rr->roots + i, prec);
-                            acb_div_arb(c, c, h, prec);
-                            arb_set(sig, acb_realref(c));
-                            arb_set(om, acb_imagref(c));
-                            arb_hypot(mag, sig, om, prec);
-                            arb_div(sig, sig, mag, prec);
-                            arb_neg(sig, sig);
-                            pt->mode[3 * k] = arf_get_d(arb_midref(sig), ARF_RND_NEAR);
-                            arb_sub(mag, mag, refs + k, prec);
-                            arb_div(mag, mag, refs + k, prec);
-                            pt->mode[3 * k + 1] = arf_get_d(arb_midref(mag), ARF_RND_NEAR);
-                            pt->mode[3 * k + 2] = arf_get_d(arb_midref(om), ARF_RND_NEAR);
-                            pt->nmodes++;
-                            break;
-                        }
-                    free(principal);
-                    _arb_vec_clear(refs, J->nref);
-                    arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag);
-                    acb_clear(c);
-                }
+                if (J->kind == OF_MODES) point_modes(pt, J, idx, rr);
             }
         }
         rs_radius_clear(rr);
