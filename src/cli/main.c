@@ -69,6 +69,21 @@ static int exit_code_for(int code)
     return (code == RS_ERR_INCONSISTENT || code == RS_ERR_INTERNAL) ? 3 : 2;
 }
 
+/* Moves a finished temporary output (--csv, --plot) onto its path; on
+ * failure the temporary stays for the cleanup at the end of main. */
+static int commit_output(char **tmp, const char *path)
+{
+    char msg[1200];
+    if (*tmp == NULL) return 0;
+    if (rs_cli_commit(*tmp, path, msg, sizeof msg) != 0) {
+        fprintf(stderr, "recstab: %s\n", msg);
+        return -1;
+    }
+    free(*tmp);
+    *tmp = NULL;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int json = 0, markdown = 0, latex = 0, emit = 0, i, worst = 0;
@@ -312,24 +327,10 @@ int main(int argc, char **argv)
         }
     }
     fclose(out);
-    {
-        char msg[1200];
-        if (csv_tmp != NULL && rs_cli_commit(csv_tmp, csv_path, msg, sizeof msg) != 0) {
-            fprintf(stderr, "recstab: %s\n", msg);
-            free(outbuf);
-            rc = 2;
-            goto end;
-        }
-        free(csv_tmp);
-        csv_tmp = NULL;
-        if (plot_tmp != NULL && rs_cli_commit(plot_tmp, plot_path, msg, sizeof msg) != 0) {
-            fprintf(stderr, "recstab: %s\n", msg);
-            free(outbuf);
-            rc = 2;
-            goto end;
-        }
-        free(plot_tmp);
-        plot_tmp = NULL;
+    if (commit_output(&csv_tmp, csv_path) != 0 || commit_output(&plot_tmp, plot_path) != 0) {
+        free(outbuf);
+        rc = 2;
+        goto end;
     }
     if (rank != 0) outlen = 0;
     if (fwrite(outbuf, 1, outlen, stdout) != outlen || fflush(stdout) != 0) {
