@@ -49,9 +49,10 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* median seconds of fn(r, p, digits); *rc = last status */
+/* median seconds of fn(r, p, digits), repeated for about `budget` seconds
+ * (3 to 1000 runs); *rc = last status */
 static double time_fn(radius_fn fn, rs_radius_t r, const fmpz_poly_t p,
-                      slong digits, int *rc)
+                      slong digits, double budget, int *rc)
 {
     double t[1000], start = now(), t0;
     int n = 0;
@@ -61,24 +62,17 @@ static double time_fn(radius_fn fn, rs_radius_t r, const fmpz_poly_t p,
         t0 = now();
         *rc = fn(r, p, digits, 0, err);
         t[n++] = now() - t0;
-    } while (n < 1000 && (n < 3 || now() - start < 0.2));
+    } while (n < 1000 && (n < 3 || now() - start < budget));
     qsort(t, n, sizeof(double), cmp_double);
     return t[n / 2];
 }
 
-static double time_double(rs_radius_t r, const fmpz_poly_t p, int *rc)
+/* rs_radius_double in the shape of the certified routes */
+static int radius_double(rs_radius_t r, const fmpz_poly_t p, slong digits, slong max_prec, rs_error_t err)
 {
-    double t[1000], start = now(), t0;
-    int n = 0;
-    rs_error_t err;
-    rs_error_init(err);
-    do {
-        t0 = now();
-        *rc = rs_radius_double(r, p, err);
-        t[n++] = now() - t0;
-    } while (n < 1000 && (n < 3 || now() - start < 0.1));
-    qsort(t, n, sizeof(double), cmp_double);
-    return t[n / 2];
+    (void) digits;
+    (void) max_prec;
+    return rs_radius_double(r, p, err);
 }
 
 static void fmt_time(char *buf, size_t len, double s)
@@ -219,11 +213,10 @@ static int classic_main(void)
             slong digits = (slong) floor((double) bits[b] * 0.30102999566398120);
             double ta, tb, tc = -1.0;
             int rcb, rcc = 0;
-            ta = time_fn(rs_radius_fmpz_poly, r, p, digits, &rc);
-            tb = time_fn(rs_radius_fmpz_poly_complex_roots, ref, p, digits, &rcb);
+            ta = time_fn(rs_radius_fmpz_poly, r, p, digits, 0.2, &rc);
+            tb = time_fn(rs_radius_fmpz_poly_complex_roots, ref, p, digits, 0.2, &rcb);
             if (bits[b] <= 1024 && (deg <= 12 || bits[b] <= 128))
-                tc = time_fn(rs_radius_fmpz_poly_companion, ref, p, digits,
-                             &rcc);
+                tc = time_fn(rs_radius_fmpz_poly_companion, ref, p, digits, 0.2, &rcc);
             fmt_time(t1, sizeof t1, ta);
             fmt_time(t2, sizeof t2, tb);
             if (tc >= 0)
@@ -240,7 +233,7 @@ static int classic_main(void)
         rs_error_init(err);
         rs_radius_fmpz_poly(ref, p, 30, 0, err);
         rho_ref = arf_get_d(arb_midref(ref->rho), ARF_RND_NEAR);
-        td = time_double(r, p, &rc);
+        td = time_fn(radius_double, r, p, 0, 0.1, &rc);
         err_d = fabs(r->rho_double - rho_ref) / rho_ref;
         fmt_time(t1, sizeof t1, td);
         printf("%-20s %5s %6s | %10s  GSL double: rho %.17g, correct digits "
