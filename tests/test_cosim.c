@@ -492,6 +492,65 @@ static void orc_integrate(const orc_model *m, double *z, const orc_table *T,
     }
 }
 
+/* uniform in [-1, 1] on a grid of 1/1000 (reproducible LCG) */
+static double lcg_unit(unsigned *s)
+{
+    *s = *s * 1103515245u + 12345u;
+    return ((*s >> 8) % 2001) / 1000.0 - 1.0;
+}
+
+/* Growth per step from the log-norms ln_N of a run: after `burn` steps,
+ * windows of W steps give 0.5 log sum ||s_N||^2 (relative to the window's
+ * first value, so no overflow); growth_rate fits their slope. */
+typedef struct {
+    double *wv, acc, ref;
+    int nw, inw, W, burn;
+} growth_t;
+
+static void growth_init(growth_t *g, int steps, int burn, int W)
+{
+    g->wv = malloc(sizeof(double) * (size_t) (steps / W + 1));
+    g->acc = g->ref = 0.0;
+    g->nw = g->inw = 0;
+    g->W = W;
+    g->burn = burn;
+}
+
+static void growth_add(growth_t *g, int N, double ln)
+{
+    if (N < g->burn)
+        return;
+    if (g->inw == 0)
+        g->ref = ln;
+    g->acc += exp(2 * (ln - g->ref));
+    if (++g->inw == g->W) {
+        g->wv[g->nw++] = g->ref + 0.5 * log(g->acc);
+        g->acc = 0.0;
+        g->inw = 0;
+    }
+}
+
+/* Hann-weighted least squares: the taper vanishes smoothly at both ends,
+ * so the residual oscillation of the window values (a complex dominant
+ * pair makes ||z_N|| quasi-periodic) leaks into the slope far less than
+ * with uniform weights.  Frees g. */
+static double growth_rate(growth_t *g)
+{
+    double sw = 0.0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int i, nw = g->nw;
+    for (i = 0; i < nw; i++) {
+        double w = sin(M_PI * (i + 0.5) / nw);
+        w *= w;
+        sw += w;
+        sx += w * i;
+        sy += w * g->wv[i];
+        sxx += w * (double) i * i;
+        sxy += w * i * g->wv[i];
+    }
+    free(g->wv);
+    return exp((sw * sxy - sx * sy) / (sw * sxx - sx * sx) / g->W);
+}
+
 /* Runs `steps` macro steps from a pseudo-random start; returns the growth
  * per step estimated from the least-squares slope of window log-norms. */
 static double orc_growth(const orc_model *m, int method, int K, int steps,
@@ -500,9 +559,8 @@ static double orc_growth(const orc_model *m, int method, int K, int steps,
     static orc_table Text, Tint;
     double next[ORC_MAXK + 1], nint[ORC_MAXK + 1];
     double z[4], lam[ORC_MAXK + 2], logscale = 0.0;
-    double *wv = malloc(sizeof(double) * (size_t) (steps / W + 1));
-    double acc = 0.0, ref = 0.0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int N, i, j, nw = 0, inw = 0;
+    growth_t g;
+    int N, i, j;
     unsigned s = seed;
 
     for (j = 0; j <= K; j++) {
@@ -511,14 +569,11 @@ static double orc_growth(const orc_model *m, int method, int K, int steps,
     }
     orc_table_fill(&Text, next, K);
     orc_table_fill(&Tint, nint, K);
-    for (i = 0; i < 4; i++) {
-        s = s * 1103515245u + 12345u;
-        z[i] = ((s >> 8) % 2001) / 1000.0 - 1.0;
-    }
-    for (j = 0; j <= K; j++) {
-        s = s * 1103515245u + 12345u;
-        lam[j] = ((s >> 8) % 2001) / 1000.0 - 1.0;
-    }
+    growth_init(&g, steps, burn, W);
+    for (i = 0; i < 4; i++)
+        z[i] = lcg_unit(&s);
+    for (j = 0; j <= K; j++)
+        lam[j] = lcg_unit(&s);
     lam[0] = orc_coupling(m, z);
     for (N = 0; N < steps; N++) {
         double zn[4], nrm = 0.0, ln;
@@ -571,36 +626,9 @@ static double orc_growth(const orc_model *m, int method, int K, int steps,
                 lam[j] /= nrm;
             logscale += log(nrm);
         }
-        /* windows of W steps: 0.5 log sum ||s_N||^2 */
-        if (N >= burn) {
-            if (inw == 0)
-                ref = ln;
-            acc += exp(2 * (ln - ref));
-            if (++inw == W) {
-                wv[nw++] = ref + 0.5 * log(acc);
-                acc = 0.0;
-                inw = 0;
-            }
-        }
+        growth_add(&g, N, ln);
     }
-    /* Hann-weighted least squares: the taper vanishes smoothly at both
-     * ends, so the residual oscillation of the window values (a complex
-     * dominant pair makes ||z_N|| quasi-periodic) leaks into the slope far
-     * less than with uniform weights */
-    {
-        double sw = 0.0;
-        for (i = 0; i < nw; i++) {
-            double w = sin(M_PI * (i + 0.5) / nw);
-            w *= w;
-            sw += w;
-            sx += w * i;
-            sy += w * wv[i];
-            sxx += w * (double) i * i;
-            sxy += w * i * wv[i];
-        }
-        free(wv);
-        return exp((sw * sxy - sx * sy) / (sw * sxx - sx * sx) / W);
-    }
+    return growth_rate(&g);
 }
 
 typedef struct {
@@ -1109,9 +1137,8 @@ static double vorc_growth(const vorc_model *v, int method, int K, int steps,
     static orc_table Text, Tint;
     double next[ORC_MAXK + 1], nint[ORC_MAXK + 1];
     double z[4], lam[ORC_MAXK + 2][VORC_MAXM], logscale = 0.0;
-    double *wv = malloc(sizeof(double) * (size_t) (steps / W + 1));
-    double acc = 0.0, ref = 0.0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int N, i, j, c, nw = 0, inw = 0, mm = vorc_m(v->dec);
+    growth_t g;
+    int N, i, j, c, mm = vorc_m(v->dec);
     unsigned s = seed;
 
     for (j = 0; j <= K; j++) {
@@ -1120,15 +1147,12 @@ static double vorc_growth(const vorc_model *v, int method, int K, int steps,
     }
     orc_table_fill(&Text, next, K);
     orc_table_fill(&Tint, nint, K);
-    for (i = 0; i < 4; i++) {
-        s = s * 1103515245u + 12345u;
-        z[i] = ((s >> 8) % 2001) / 1000.0 - 1.0;
-    }
+    growth_init(&g, steps, burn, W);
+    for (i = 0; i < 4; i++)
+        z[i] = lcg_unit(&s);
     for (j = 0; j <= K; j++)
-        for (c = 0; c < mm; c++) {
-            s = s * 1103515245u + 12345u;
-            lam[j][c] = ((s >> 8) % 2001) / 1000.0 - 1.0;
-        }
+        for (c = 0; c < mm; c++)
+            lam[j][c] = lcg_unit(&s);
     vorc_coupling(v, z, lam[0]);
     for (N = 0; N < steps; N++) {
         double zn[4], nrm = 0.0, ln;
@@ -1206,31 +1230,9 @@ static double vorc_growth(const vorc_model *v, int method, int K, int steps,
                     lam[j][c] /= nrm;
             logscale += log(nrm);
         }
-        if (N >= burn) {
-            if (inw == 0)
-                ref = ln;
-            acc += exp(2 * (ln - ref));
-            if (++inw == W) {
-                wv[nw++] = ref + 0.5 * log(acc);
-                acc = 0.0;
-                inw = 0;
-            }
-        }
+        growth_add(&g, N, ln);
     }
-    {
-        double sw = 0.0;
-        for (i = 0; i < nw; i++) {
-            double w = sin(M_PI * (i + 0.5) / nw);
-            w *= w;
-            sw += w;
-            sx += w * i;
-            sy += w * wv[i];
-            sxx += w * (double) i * i;
-            sxy += w * i * wv[i];
-        }
-        free(wv);
-        return exp((sw * sxy - sx * sy) / (sw * sxx - sx * sx) / W);
-    }
+    return growth_rate(&g);
 }
 
 typedef struct {
