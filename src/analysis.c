@@ -627,7 +627,7 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
         if ((e = lookup(cosim, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
         return rs_req_error(run, q, t, RS_ERR_INPUT,
                             "exact (analytic) subsystem integration gives a recurrence with matrix-exponential "
-                            "entries: only radius and stability apply, found '%s'", t);
+                            "entries: only radius, stability and map apply, found '%s'", t);
     }
     if ((e = lookup(general, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
     {
@@ -635,7 +635,7 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
         snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);
         return rs_req_error(run, q, t, RS_ERR_INPUT,
                             "expected an analysis (charpoly, bilinear, routh, hurwitz, jury, stability, "
-                            "region, limit, claim, radius, modes, simulate, expect), found '%s'", word);
+                            "region, limit, claim, radius, modes, simulate, sweep, map, expect), found '%s'", word);
     }
 }
 
