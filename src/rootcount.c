@@ -64,6 +64,7 @@ const char *rs_status_name(rs_status_t s)
     case RS_STATUS_STABLE: return "stable";
     case RS_STATUS_MARGINAL: return "marginal";
     case RS_STATUS_UNSTABLE: return "unstable";
+    case RS_STATUS_SINGULAR: return "singular";
     default: return "unknown";
     }
 }

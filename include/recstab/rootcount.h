@@ -19,7 +19,9 @@ extern "C" {
 typedef enum {
     RS_STATUS_STABLE = 0,   /* every root |lambda| < 1 */
     RS_STATUS_MARGINAL = 1, /* none outside, every root on the circle simple */
-    RS_STATUS_UNSTABLE = 2  /* a root outside, or a repeated root on the circle */
+    RS_STATUS_UNSTABLE = 2, /* a root outside, or a defective root on the circle */
+    RS_STATUS_SINGULAR = 3  /* the step cannot be solved: the leading coefficient
+                               of det A(lambda) vanishes at this point (degree drop) */
 } rs_status_t;
 
 #define RS_ROOTCOUNT_MAXMULT 64
