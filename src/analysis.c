@@ -88,6 +88,89 @@ void rs_assign_free(rs_assign_t *a, slong n)
     free(a);
 }
 
+/* A value that makes a divisor of the equations zero is bad input: the
+ * equations were multiplied through by it under the assumption that it is
+ * not zero. */
+static int check_divisors(rs_run_t *run, const rs_scheme_t s, const rs_assign_t *a, slong n)
+{
+    fmpq_mpoly_t d;
+    slong i, k;
+    int r = RS_OK;
+    if (n == 0) return RS_OK;
+    fmpq_mpoly_init(d, s->ctx);
+    for (i = 0; i < s->nnonzero && r == RS_OK; i++) {
+        fmpq_mpoly_set(d, s->nonzero + i, s->ctx);
+        for (k = 0; k < n; k++)
+            fmpq_mpoly_evaluate_one_fmpq(d, d, a[k].var, a[k].value, s->ctx);
+        if (fmpq_mpoly_is_zero(d, s->ctx)) {
+            const rs_loc_t *l = s->nonzero_loc + i;
+            char vals[512] = "";
+            size_t len = 0;
+            for (k = 0; k < n && len + 1 < sizeof vals; k++) {
+                char *str;
+                if (fmpq_mpoly_degree_si(s->nonzero + i, a[k].var, s->ctx) <= 0) continue;
+                str = fmpq_get_str(NULL, 10, a[k].value);
+                len += (size_t) snprintf(vals + len, sizeof vals - len, "%s%s = %s", len ? ", " : "",
+                                         a[k].name, str);
+                flint_free(str);
+            }
+            r = rs_error_set_at(run->err, RS_ERR_INPUT, l->file ? l->file : run->c->path, l->line, l->col,
+                                "expected values that keep every divisor non-zero, found %s, where the "
+                                "equations were multiplied through assuming %s", vals, s->nonzero_text[i]);
+        }
+    }
+    fmpq_mpoly_clear(d, s->ctx);
+    return r;
+}
+
+slong rs_charpoly_top_degree(const rs_charpoly_t cp)
+{
+    return cp->degree + cp->removed_lambda_power;
+}
+
+/* An upper bound on the degree in lambda of det M: no term of the Leibniz
+ * expansion exceeds the sum of the row maxima, nor that of the columns. */
+static slong det_degree_bound(const rs_scheme_t s)
+{
+    slong i, j, rows = 0, cols = 0, n = s->n;
+    for (i = 0; i < n; i++) {
+        slong rm = 0, cm = 0;
+        for (j = 0; j < n; j++) {
+            rm = FLINT_MAX(rm, fmpq_mpoly_degree_si(s->M + i * n + j, s->lambda_var, s->ctx));
+            cm = FLINT_MAX(cm, fmpq_mpoly_degree_si(s->M + j * n + i, s->lambda_var, s->ctx));
+        }
+        rows += rm;
+        cols += cm;
+    }
+    return FLINT_MIN(rows, cols);
+}
+
+/* The step is singular where substituted values make the leading coefficient
+ * of det A in lambda vanish: the top degree falls below the degree over
+ * Q(params).  Every substituted degree bounds that degree from below and the
+ * row/column maxima from above; only when neither settles it is the
+ * symbolic determinant computed (once per run). */
+int rs_run_is_singular(int *singular, rs_run_t *run, slong top)
+{
+    *singular = 0;
+    if (!run->have_sym) return RS_OK;
+    if (top > run->deg_lower) run->deg_lower = top;
+    if (top < run->deg_lower) { *singular = 1; return RS_OK; }
+    if (run->deg_exact < 0) {
+        if (run->sym->from_char) {
+            run->deg_exact = fmpq_mpoly_degree_si(run->sym->charpoly, run->sym->lambda_var, run->sym->ctx);
+        } else if (top >= det_degree_bound(run->sym)) {
+            run->deg_exact = top;
+        } else {
+            rs_variant_t *g;
+            int r = rs_run_variant(&g, run, NULL, 0);   /* sets deg_exact */
+            if (r != RS_OK) return r;
+        }
+    }
+    *singular = (top < run->deg_exact);
+    return RS_OK;
+}
+
 int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n)
 {
     char *key = assign_key(a, n);
@@ -118,9 +201,16 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
             json_object_set_new(v->assigned, a[i].name, json_string(val));
             flint_free(val);
         }
+        r = check_divisors(run, v->s, a, n);
         rs_charpoly_init(v->cp, v->s);
         v->have_cp = 1;
-        r = rs_charpoly_compute(v->cp, v->s, run->err);
+        if (r == RS_OK) r = rs_charpoly_compute(v->cp, v->s, run->err);
+        if (r == RS_OK && n == 0 && run->have_sym && run->deg_exact < 0)
+            run->deg_exact = rs_charpoly_top_degree(v->cp);   /* nothing substituted: generic */
+        if (r == RS_OK) r = rs_run_is_singular(&v->singular, run, rs_charpoly_top_degree(v->cp));
+        if (r == RS_OK && !v->singular && rs_charpoly_top_degree(v->cp) < 1)
+            r = rs_error_set(run->err, RS_ERR_MATH, "the characteristic polynomial has no root (degree 0 "
+                             "in lambda): the scheme has no dynamics");
         if (r != RS_OK && run->err->file[0] == '\0') {
             /* point determinant failures at the equations */
             const rs_loc_t *l = run->c->neqs > 0 ? &run->c->eqs[0].loc : &run->c->charloc;
@@ -695,6 +785,8 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     run.opt = opt;
     run.err = err;
     run.results = json_array();
+    run.deg_lower = -1;
+    run.deg_exact = -1;
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
     /* an error in the equations must surface even when no analysis asks */

@@ -9,6 +9,7 @@
 #include "recstab/hurwitz.h"
 #include "recstab/rootcount.h"
 #include "recstab/polyfmt.h"
+#include "recstab/semisimple.h"
 
 /* The variant with the case's set values substituted. */
 int rs_run_default_variant(rs_run_t *run, rs_variant_t **v)
@@ -81,6 +82,15 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
     rs_routh_t ro;
     rs_jury_t ju;
     int r, agree = 1;
+    if (fmpz_poly_degree(p) < 1) {
+        /* det = c lambda^k: every root at 0 (dead-beat), nothing to count */
+        rs_rootcount_init(rc);
+        rc->degree = 0;
+        if (o != NULL)
+            json_object_set_new(o, "dead_beat", json_string(
+                "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0"));
+        return RS_OK;
+    }
     rs_routh_init(ro);
     rs_jury_init(ju);
     r = rs_routh_fmpz_poly(ro, p, run->err);
@@ -103,6 +113,88 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
     }
     rs_routh_clear(ro);
     rs_jury_clear(ju);
+    return r;
+}
+
+static json_t *circle_roots_json(const rs_semisimple_t ss)
+{
+    json_t *arr = json_array();
+    slong i;
+    for (i = 0; i < ss->nfactors; i++) {
+        const rs_circle_factor_struct *f = ss->f + i;
+        char *str = rs_polyfmt_fmpz_poly(f->factor, "lambda");
+        json_array_append_new(arr, json_pack("{s:s,s:I,s:I,s:I,s:b}", "factor", str,
+                                             "multiplicity", (json_int_t) f->mult,
+                                             "roots", (json_int_t) f->on,
+                                             "kernel_dim", (json_int_t) f->kernel,
+                                             "semisimple", f->semisimple));
+        free(str);
+    }
+    return arr;
+}
+
+int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const slong *vars,
+                   const fmpq *vals, slong nv, const fmpz_poly_t p, const rs_rootcount_t rc,
+                   int singular, json_t *o)
+{
+    rs_semisimple_t ss;
+    int r = RS_OK;
+    if (singular) {
+        *st = RS_STATUS_SINGULAR;
+        if (o != NULL) {
+            json_object_set_new(o, "status", json_string(rs_status_name(*st)));
+            json_object_set_new(o, "singular", json_string(
+                "the leading coefficient of det A(lambda) vanishes here: the implicit step cannot be solved "
+                "(the counts are those of the reduced polynomial)"));
+        }
+        return RS_OK;
+    }
+    rs_semisimple_init(ss);
+    r = rs_semisimple_verdict(st, ss, s, vars, vals, nv, p, rc, run->err);
+    if (r == RS_OK && o != NULL && rc->on > 0) {
+        json_object_set_new(o, "circle_roots", circle_roots_json(ss));
+        json_object_set_new(o, "rule", json_string(ss->system ?
+            "system: a circle root is bounded iff semisimple (dim ker A(lambda0) = its multiplicity in det A)" :
+            "scalar recurrence: a repeated circle root is unstable"));
+    }
+    rs_semisimple_clear(ss);
+    if (o != NULL && r == RS_OK)
+        json_object_set_new(o, "status", json_string(rs_status_name(*st)));
+    return r;
+}
+
+int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
+                        const slong *vars, const fmpq *vals, slong nv)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpq_mpoly_t q;
+    fmpq_poly_t w;
+    fmpz_poly_t u;
+    slong k;
+    int r = RS_OK;
+    fmpq_mpoly_init(q, s->ctx);
+    fmpq_poly_init(w);
+    fmpz_poly_init(u);
+    fmpq_one(q->content);
+    fmpz_mpoly_set(q->zpoly, v->cp->p, s->zctx);
+    fmpq_mpoly_reduce(q, s->ctx);
+    for (k = 0; k < nv; k++)
+        fmpq_mpoly_evaluate_one_fmpq(q, q, vars[k], vals + k, s->ctx);
+    rs_rootcount_init(rc);
+    if (!fmpq_mpoly_get_fmpq_poly(w, q, s->lambda_var, s->ctx)) {
+        r = rs_error_set(run->err, RS_ERR_INTERNAL, "point verdict: a parameter is still symbolic");
+    } else if (v->singular || fmpq_poly_is_zero(w) || fmpq_poly_degree(w) < v->cp->degree) {
+        /* the leading coefficient of det A vanishes here: no step can be solved */
+        *st = RS_STATUS_SINGULAR;
+    } else {
+        fmpq_poly_get_numerator(u, w);
+        fmpz_poly_primitive_part(u, u);
+        r = rs_run_exact_count(rc, run, u, NULL);
+        if (r == RS_OK) r = rs_run_verdict(st, run, s, vars, vals, nv, u, rc, 0, NULL);
+    }
+    fmpz_poly_clear(u);
+    fmpq_poly_clear(w);
+    fmpq_mpoly_clear(q, s->ctx);
     return r;
 }
 
@@ -569,7 +661,11 @@ static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_rootcount_init(rc);
         r = rs_run_exact_count(rc, run, p, o);
         if (r == RS_OK) {
+            rs_status_t st;
             rs_json_add_count(o, rc);
+            r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, o);
+        }
+        if (r == RS_OK) {
             rs_run_emit_exact(run, v, o);
         } else {
             json_decref(o);

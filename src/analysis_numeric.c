@@ -67,7 +67,18 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
     rs_rootcount_init(rc);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("radius"));
-    if (strcmp(method, "double") == 0) {
+    if (fmpz_poly_degree(p) < 1) {
+        /* det A = c*lambda^k: every root is 0 (dead-beat), radius exactly 0 */
+        json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
+        json_object_set_new(o, "certified", json_true());
+        json_object_set_new(o, "lower", json_string("0"));
+        json_object_set_new(o, "upper", json_string("0"));
+        json_object_set_new(o, "rho", json_string("0"));
+        json_object_set_new(o, "roots", json_array());
+        arb_zero(rr->lower);
+        arb_zero(rr->upper);
+        arb_zero(rr->rho);
+    } else if (strcmp(method, "double") == 0) {
         r = rs_radius_double(rr, p, run->err);
         if (r == RS_OK) {
             json_object_set_new(o, "method", json_string("double (GSL gsl_poly_complex_solve, uncertified)"));
@@ -111,10 +122,14 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
         r = rs_run_exact_count(rc, run, p, NULL);
     }
     if (r == RS_OK) {
-        rs_status_t st = rs_rootcount_status(rc);
+        rs_status_t st;
         int consistent = 1;
+        r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, NULL);
         json_object_set_new(o, "exact_status", json_string(rs_status_name(st)));
-        if (strcmp(method, "double") != 0) {
+        if (v->singular)
+            json_object_set_new(o, "singular", json_string("the leading coefficient of det A(lambda) vanishes "
+                                "here: the step cannot be solved; the radius is that of the reduced polynomial"));
+        if (strcmp(method, "double") != 0 && !v->singular) {
             arb_t one;
             arb_init(one);
             arb_one(one);

@@ -12,6 +12,7 @@
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
 #include "recstab/rootcount.h"
+#include "recstab/semisimple.h"
 #include "recstab/cond.h"
 #include "recstab/polyfmt.h"
 
@@ -357,25 +358,20 @@ typedef struct {
     rs_status_t status;
 } piece_t;
 
-static int status_at(rs_status_t *st, rs_run_t *run, const fmpz_mpoly_t p, slong tv,
-                     const fmpq_t t, const rs_scheme_t s)
+/* The exact verdict of v at t (system-aware; "singular" where the degree in
+ * lambda drops); RS_ERR_MATH when p vanishes identically at t. */
+static int status_at(rs_status_t *st, rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t)
 {
-    fmpz_poly_t u;
     rs_rootcount_t rc;
+    fmpz_poly_t u;
     int r;
     fmpz_poly_init(u);
-    eval_at(u, p, tv, t, s);
-    if (fmpz_poly_degree(u) < 1) {
-        /* the polynomial degenerates to a constant: no dynamics left */
-        fmpz_poly_clear(u);
-        *st = RS_STATUS_STABLE;
-        return fmpz_poly_is_zero(u) ? RS_ERR_MATH : RS_OK;
-    }
-    rs_rootcount_init(rc);
-    r = rs_run_exact_count(rc, run, u, NULL);
-    *st = rs_rootcount_status(rc);
-    rs_rootcount_clear(rc);
+    eval_at(u, v->cp->p, tv, t, v->s);
+    r = fmpz_poly_is_zero(u) ? RS_ERR_MATH : RS_OK;
     fmpz_poly_clear(u);
+    if (r != RS_OK) return r;
+    r = rs_run_point_status(st, rc, run, v, &tv, t, 1);
+    rs_rootcount_clear(rc);
     return r;
 }
 
@@ -437,7 +433,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     rs_bound_t *bounds;
     alg_t *crit = NULL, lo_end, hi_end;
     piece_t *pieces = NULL;
-    fmpz_mpoly_t pt, g, tmp;
+    fmpz_mpoly_t pt, g, tmp, sqf, sqf_t;
     json_t *o, *ivs, *pts;
     int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0;
 
@@ -496,6 +492,38 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (!fmpz_mpoly_content_vars(g, v->cp->p, &tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
         fmpz_mpoly_one(g, s->zctx);
     fmpz_mpoly_divexact(pt, v->cp->p, g, s->zctx);
+    /* A system keeps repeated factors (identical modes): roots cross or
+     * collide where the squarefree part says, and a repeated factor changes
+     * its Jordan structure only where the rank of A modulo it can drop. */
+    fmpz_mpoly_init(sqf, s->zctx);
+    fmpz_mpoly_init(sqf_t, s->zctx);
+    fmpz_mpoly_one(sqf, s->zctx);
+    fmpz_mpoly_one(sqf_t, s->zctx);
+    {
+        fmpz_mpoly_factor_t fac;
+        fmpz_poly_struct *drops = NULL;
+        slong ndrops = 0, k;
+        fmpz_mpoly_factor_init(fac, s->zctx);
+        if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
+            for (k = 0; k < fac->num; k++) {
+                fmpz_mpoly_struct *f = fac->poly + k;
+                int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
+                if (has_l) fmpz_mpoly_mul(sqf, sqf, f, s->zctx);
+                if (fmpz_mpoly_degree_si(f, tv, s->zctx) > 0) fmpz_mpoly_mul(sqf_t, sqf_t, f, s->zctx);
+                if (has_l && fmpz_cmp_ui(fac->exp + k, 2) >= 0)
+                    rs_semisimple_rank_drops(&drops, &ndrops, s, tv, f);
+            }
+        } else {
+            fmpz_mpoly_set(sqf, pt, s->zctx);
+            fmpz_mpoly_set(sqf_t, pt, s->zctx);
+        }
+        for (k = 0; k < ndrops; k++) {
+            alg_roots_append(&crit, &ncrit, drops + k, CRIT_LC | CRIT_DISC);
+            fmpz_poly_clear(drops + k);
+        }
+        flint_free(drops);
+        fmpz_mpoly_factor_clear(fac, s->zctx);
+    }
     if (fmpz_mpoly_degree_si(pt, tv, s->zctx) > 0) {
         slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(pt, lv, s->zctx);
         fmpz_poly_t u;
@@ -510,10 +538,10 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
         }
         /* roots at lambda = 1 and lambda = -1 */
         fmpz_set_si(pm, 1);
-        fmpz_mpoly_evaluate_one_fmpz(tmp, pt, lv, pm, s->zctx);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
         if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
         fmpz_set_si(pm, -1);
-        fmpz_mpoly_evaluate_one_fmpz(tmp, pt, lv, pm, s->zctx);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
         if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
         /* a pair of roots crossing the circle elsewhere: D_{n-1} of q */
         if (n >= 2) {
@@ -522,7 +550,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
             int *sign = flint_calloc(s->nvars, sizeof(int));
             fmpz_mpoly_init(qz, s->zctx);
             rs_hurwitz_init(h);
-            rs_bilinear_fmpz_mpoly(qz, pt, lv, s->zctx);
+            rs_bilinear_fmpz_mpoly(qz, sqf_t, lv, s->zctx);
             if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
                 && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, run->err) == RS_OK
                 && h->n >= 2) {
@@ -536,8 +564,8 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
             flint_free(sign);
         }
         /* collisions (roots leaving the circle through a double root) */
-        if (n >= 2) {
-            if (!fmpz_mpoly_discriminant(tmp, pt, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
+        if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2) {
+            if (!fmpz_mpoly_discriminant(tmp, sqf, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
                 repeated_always = 1;
             else if (to_upoly(u, tmp, tv, s))
                 alg_roots_append(&crit, &ncrit, u, d_always ? (CRIT_DISC | CRIT_D) : CRIT_DISC);
@@ -593,7 +621,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
-            r = status_at(&pc->status, run, v->cp->p, tv, x, s);
+            r = status_at(&pc->status, run, v, tv, x);
             if (r == RS_ERR_MATH) {
                 char *xs = fmpq_get_str(NULL, 10, x);
                 r = rs_req_error(run, q, rest, RS_ERR_MATH,
@@ -686,6 +714,8 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     fmpz_mpoly_clear(pt, s->zctx);
     fmpz_mpoly_clear(g, s->zctx);
     fmpz_mpoly_clear(tmp, s->zctx);
+    fmpz_mpoly_clear(sqf, s->zctx);
+    fmpz_mpoly_clear(sqf_t, s->zctx);
     return r;
 }
 
@@ -1204,6 +1234,7 @@ typedef enum { CLAIM_STABLE, CLAIM_BOUNDED, CLAIM_UNSTABLE } claim_kind_t;
 
 static int violates(claim_kind_t k, rs_status_t st)
 {
+    if (st == RS_STATUS_SINGULAR) return 1;   /* no scheme to speak of there */
     switch (k) {
     case CLAIM_STABLE: return st != RS_STATUS_STABLE;
     case CLAIM_BOUNDED: return st == RS_STATUS_UNSTABLE;
@@ -1277,6 +1308,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o, *counter = NULL, *cert;
     int r = RS_OK, refuted = 0, proved = 0;
     rs_rootcount_t crc;
+    rs_status_t cst = RS_STATUS_STABLE;   /* the verdict at the counterexample */
     flint_rand_t st;
     const char *tried;
     slong ncoef = 0;
@@ -1413,14 +1445,19 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             _fmpq_vec_clear(cv, ncoef);
             fmpz_clear(L);
         }
-        if (fmpz_poly_degree(u) >= 1) {
+        if (!fmpz_poly_is_zero(u)) {
             rs_rootcount_t rc;
-            rs_rootcount_init(rc);
+            rs_status_t stp;
+            slong *vars = flint_malloc((nparams + 1) * sizeof(slong));
+            for (k = 0; k < nparams; k++) vars[k] = k;
             ntried++;
-            r = rs_run_exact_count(rc, run, u, NULL);
-            if (r == RS_OK && violates(kind, rs_rootcount_status(rc))) {
+            /* system-aware, and "singular" where the step cannot be solved */
+            r = rs_run_point_status(&stp, rc, run, v, vars, pt, nparams);
+            flint_free(vars);
+            if (r == RS_OK && violates(kind, stp)) {
                 refuted = 1;
                 *crc = *rc;
+                cst = stp;
                 counter = json_object();
                 for (k = 0; k < nparams; k++)
                     if (!b[k].fixed) json_object_set_new(counter, run->c->params[k].name, rs_json_fmpq(pt + k));
@@ -1494,6 +1531,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             json_object_set_new(o, "counterexample", counter);
             counter = NULL;
             rs_json_add_count(at, crc);
+            json_object_set_new(at, "status", json_string(rs_status_name(cst)));
             json_object_set_new(at, "decided_by", json_string("exact"));
             json_object_set_new(o, "at_counterexample", at);
             run->outcome |= RS_OUTCOME_FAILED;

@@ -29,6 +29,7 @@
 #include "recstab/sweep.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
+#include "recstab/semisimple.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
 #include "recstab/hurwitz.h"
@@ -228,6 +229,7 @@ static int decide_exact(rs_sweep_point_t *pt, rs_rootcount_t rc, const fmpz_poly
     fmpz_poly_clear(pp);
     if (r != RS_OK) return r;
     pt->verdict = (int) rs_rootcount_status(rc);
+    pt->repeated_on = (rc->outside == 0 && rs_rootcount_max_on_mult(rc) > 1);
     pt->level = RS_LEVEL_EXACT;
     if (rc->outside == 0 && rc->on > 0) {
         pt->rho_lower = pt->rho_upper = 1.0;   /* exactly: the largest roots are on the circle */
@@ -571,6 +573,10 @@ typedef struct {
     fmpq *refval;                       /* npoints * nref reference values */
     fmpq *hval;                         /* npoints time steps */
     slong max_prec;
+    /* the point verdict of systems: the variant and the swept parameters */
+    const rs_variant_t *v;
+    slong var[2];
+    const fmpq *x[2];                   /* axis values (x[1] NULL for sweeps) */
 } job_t;
 
 static void point_poly(fmpz_poly_t P, const job_t *J, slong idx)
@@ -611,6 +617,43 @@ static void point_modes(pt_t *pt, const job_t *J, slong idx, const rs_radius_t r
     arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(zeta);
 }
 
+/* What the polynomial alone cannot say: the step is singular where the
+ * degree in lambda drops, and a repeated circle root of a system is bounded
+ * when semisimple (rs_semisimple_verdict on the lambda-matrix there). */
+static int point_system(pt_t *pt, const job_t *J, slong idx, const fmpz_poly_t P, rs_error_t err)
+{
+    slong i = idx % J->K1, j = idx / J->K1;
+    fmpq vals[2];
+    rs_rootcount_t rc;
+    rs_semisimple_t ss;
+    rs_status_t st;
+    fmpz_poly_t pp;
+    int r;
+    if (fmpz_poly_is_zero(P)) return RS_OK;
+    if (J->v->singular || fmpz_poly_degree(P) < J->T.dl) {
+        pt->d.verdict = RS_STATUS_SINGULAR;
+        pt->d.level = RS_LEVEL_EXACT;
+        pt->d.rho_lower = 0;
+        pt->d.rho_upper = INFINITY;
+        return RS_OK;
+    }
+    if (!(pt->d.repeated_on && pt->d.verdict == RS_STATUS_UNSTABLE) || J->v->s->from_char) return RS_OK;
+    vals[0] = J->x[0][i];
+    if (J->is_map) vals[1] = J->x[1][j];
+    fmpz_poly_init(pp);
+    fmpz_poly_primitive_part(pp, P);
+    rs_rootcount_init(rc);
+    rs_semisimple_init(ss);
+    r = exact_count(rc, pp, err);
+    if (r == RS_OK)
+        r = rs_semisimple_verdict(&st, ss, J->v->s, J->var, vals, J->is_map ? 2 : 1, pp, rc, err);
+    if (r == RS_OK) pt->d.verdict = (int) st;
+    rs_semisimple_clear(ss);
+    rs_rootcount_clear(rc);
+    fmpz_poly_clear(pp);
+    return r;
+}
+
 static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
 {
     fmpz_poly_t P;
@@ -638,6 +681,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
                 pt->on = (int) rc->on;
                 pt->outside = (int) rc->outside;
             }
+            if (r == RS_OK) r = point_system(pt, J, idx, P, err);
         }
         rs_rootcount_clear(rc);
         pt->d.status = r;
@@ -645,7 +689,8 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
         return;
     }
     r = rs_sweep_decide(&pt->d, P, err);
-    if (r == RS_OK && pt->d.verdict >= 0 && fmpz_poly_degree(P) >= 1
+    if (r == RS_OK) r = point_system(pt, J, idx, P, err);
+    if (r == RS_OK && pt->d.verdict >= 0 && pt->d.verdict != RS_STATUS_SINGULAR && fmpz_poly_degree(P) >= 1
         && (J->kind == OF_MODES || (!pt->d.isolated && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0))
             || (J->kind == OF_RADIUS && !J->is_map))) {
         /* the certified radius to 15 digits (and the roots, for modes) */
@@ -781,16 +826,18 @@ static void put_double_of(FILE *f, const fmpq_t x)
 /* counts, seconds, etc. common to sweep and map elements */
 static void add_summary(json_t *o, const pt_t *pts, slong n, double seconds)
 {
-    slong i, ver[4] = {0, 0, 0, 0}, lev[5] = {0, 0, 0, 0, 0};
+    slong i, ver[5] = {0, 0, 0, 0, 0}, lev[5] = {0, 0, 0, 0, 0};
     json_t *v, *d;
     for (i = 0; i < n; i++) {
         if (pts[i].d.verdict < 0) ver[3]++;
+        else if (pts[i].d.verdict == RS_STATUS_SINGULAR) ver[4]++;
         else ver[pts[i].d.verdict]++;
         if (pts[i].d.verdict >= 0) lev[pts[i].d.level]++;
     }
     v = json_pack("{s:I,s:I,s:I}", "stable", (json_int_t) ver[0], "marginal", (json_int_t) ver[1],
                   "unstable", (json_int_t) ver[2]);
     if (ver[3] > 0) json_object_set_new(v, "undefined", json_integer(ver[3]));
+    if (ver[4] > 0) json_object_set_new(v, "singular", json_integer(ver[4]));
     if (lev[4] > 0) json_object_set_new(o, "uncertified", json_integer(lev[4]));
     d = json_pack("{s:I,s:I,s:I,s:I}", "fast", (json_int_t) lev[0], "prec128", (json_int_t) lev[1],
                   "prec256", (json_int_t) lev[2], "exact", (json_int_t) lev[3]);
@@ -1075,6 +1122,9 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
     terms_init(&J.T, v->cp->p, v->s->lambda_var, idx, -1, v->s->zctx);
     vals = _fmpq_vec_init(J.npoints);
     for (i = 0; i < J.npoints; i++) rs_grid_value(vals + i, A, B, i, K, logsp);
+    J.v = v;
+    J.var[0] = idx;
+    J.x[0] = vals;
     J.U1 = powers_table(vals, J.npoints, J.T.d1);
     if (kind == OF_MODES) {
         r = parse_modes_opts(&J, run, q, v, opts, idx, vals);
@@ -1428,6 +1478,11 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
     terms_init(&J.T, v->cp->p, v->s->lambda_var, idx[0], idx[1], v->s->zctx);
     xs[0] = axis_values(A[0], B[0], K[0]);
     xs[1] = axis_values(A[1], B[1], K[1]);
+    J.v = v;
+    J.var[0] = idx[0];
+    J.var[1] = idx[1];
+    J.x[0] = xs[0];
+    J.x[1] = xs[1];
     J.U1 = powers_table(xs[0], K[0], J.T.d1);
     J.U2 = powers_table(xs[1], K[1], J.T.d2);
     rs_sweep_shard_range(&lo, &hi, J.npoints, g_opt.shard_index, g_opt.shard_count);

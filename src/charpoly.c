@@ -214,10 +214,6 @@ int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
                 fmpz_mpoly_one(cp->param_content, zctx);
         }
         fmpq_clear(g);
-        if (cp->degree < 1)
-            r = rs_error_set(err, RS_ERR_MATH,
-                             "the characteristic polynomial has no root (degree 0 in lambda): "
-                             "the scheme has no dynamics");
     }
     fmpq_clear(scale);
     return r;

@@ -90,6 +90,27 @@ static long long jint(const json_t *o, const char *key)
     return (long long) json_integer_value(json_object_get(o, key));
 }
 
+/* Repeated circle roots: semisimple or a Jordan block, and which rule. */
+static void print_circle_roots(FILE *out, const json_t *o)
+{
+    const json_t *cr = json_object_get(o, "circle_roots");
+    size_t i;
+    int any = 0;
+    line(out, "singular", "%s", jstr(o, "singular"));
+    line(out, "note", "%s", jstr(o, "dead_beat"));
+    for (i = 0; i < json_array_size(cr); i++) {
+        const json_t *e = json_array_get(cr, i);
+        char buf[1024];
+        if (jint(e, "multiplicity") < 2) continue;
+        snprintf(buf, sizeof buf, "%s (x%lld): %s (dim ker A = %lld)", jstr(e, "factor"),
+                 jint(e, "multiplicity"), json_is_true(json_object_get(e, "semisimple")) ? "semisimple"
+                 : "Jordan block", jint(e, "kernel_dim"));
+        line(out, any ? "" : "circle roots", "%s", buf);
+        any = 1;
+    }
+    if (any) line(out, "rule", "%s", jstr(o, "rule"));
+}
+
 static void print_count(FILE *out, const json_t *o)
 {
     const json_t *m = json_object_get(o, "on_multiplicities");
@@ -104,6 +125,7 @@ static void print_count(FILE *out, const json_t *o)
                 jint(e, "roots"), jint(e, "roots") == 1 ? "" : "s", jint(e, "multiplicity"));
     }
     fputc('\n', out);
+    print_circle_roots(out, o);
 }
 
 static void print_decided(FILE *out, const json_t *o)

@@ -209,7 +209,7 @@ static int degree_ok(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t p)
     return RS_OK;
 }
 
-static void record_nonzero(ev_t *x, const fmpq_mpoly_t d)
+static void record_nonzero(ev_t *x, const fmpq_mpoly_t d, const char *file, int line, int col)
 {
     rs_scheme_struct *s = x->collect;
     slong i;
@@ -220,6 +220,10 @@ static void record_nonzero(ev_t *x, const fmpq_mpoly_t d)
         if (fmpq_mpoly_equal(s->nonzero + i, d, s->ctx)) return;
     s->nonzero = flint_realloc(s->nonzero, (s->nnonzero + 1) * sizeof(fmpq_mpoly_struct));
     s->nonzero_text = flint_realloc(s->nonzero_text, (s->nnonzero + 1) * sizeof(char *));
+    s->nonzero_loc = flint_realloc(s->nonzero_loc, (s->nnonzero + 1) * sizeof(rs_loc_t));
+    s->nonzero_loc[s->nnonzero].file = (char *) file;
+    s->nonzero_loc[s->nnonzero].line = line;
+    s->nonzero_loc[s->nnonzero].col = col;
     fmpq_mpoly_init(s->nonzero + s->nnonzero, s->ctx);
     fmpq_mpoly_set(s->nonzero + s->nnonzero, d, s->ctx);
     str = fmpq_mpoly_get_str_pretty(d, (const char **) s->vars, s->ctx);
@@ -348,7 +352,7 @@ static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
         fmpq_mpoly_mul(out->c + i, a->c + i, b->den, s->ctx);
     out->low = a->low;
     fmpq_mpoly_mul(out->den, a->den, b->c + 0, s->ctx);
-    record_nonzero(x, b->c + 0);
+    record_nonzero(x, b->c + 0, x->c->path, e->line, e->col);
     return RS_OK;
 }
 
@@ -485,7 +489,7 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
                 }
                 fmpq_mpoly_pow_ui(out->c + 0, a.den, (ulong) kk, ctx);
                 fmpq_mpoly_pow_ui(out->den, a.c + 0, (ulong) kk, ctx);
-                record_nonzero(x, a.c + 0);
+                record_nonzero(x, a.c + 0, x->c->path, e->line, e->col);
             }
         }
         break;
@@ -519,6 +523,7 @@ void rs_scheme_clear(rs_scheme_t s)
     }
     flint_free(s->nonzero);
     flint_free(s->nonzero_text);
+    flint_free(s->nonzero_loc);
     fmpq_mpoly_ctx_clear(s->ctx);
     fmpz_mpoly_ctx_clear(s->zctx);
     for (i = 0; i < s->nvars; i++) flint_free(s->vars[i]);
@@ -601,7 +606,7 @@ static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     lin_init(&v, 1, s->ctx);
     r = eval(&v, c->charexpr, &x);
     if (r == RS_OK) {
-        record_nonzero(&x, v.den);
+        record_nonzero(&x, v.den, c->path, c->charloc.line, c->charloc.col);
         fmpq_mpoly_set(s->charpoly, v.c + 0, s->ctx);
         if (fmpq_mpoly_is_zero(s->charpoly, s->ctx))
             r = rs_error_set_at(err, RS_ERR_MATH, c->path, c->charloc.line, c->charloc.col,
@@ -661,7 +666,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
                                 "expected a homogeneous equation, found a term without unknowns "
                                 "(stability concerns the homogeneous recurrence: drop forcing terms)");
         if (r == RS_OK) {
-            record_nonzero(&x, v.den);
+            record_nonzero(&x, v.den, q->loc.file ? q->loc.file : c->path, q->loc.line, q->loc.col);
             for (j = 0; j < n; j++)
                 if (!fmpq_mpoly_is_zero(v.c + 1 + j, s->ctx)) {
                     slong m = v.low + rs_scheme_min_degree(v.c[1 + j].zpoly, s->lambda_var, s->ctx->zctx);
@@ -727,6 +732,8 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
     if (src->nnonzero > 0) {
         dst->nonzero = flint_malloc(src->nnonzero * sizeof(fmpq_mpoly_struct));
         dst->nonzero_text = flint_malloc(src->nnonzero * sizeof(char *));
+        dst->nonzero_loc = flint_malloc(src->nnonzero * sizeof(rs_loc_t));
+        memcpy(dst->nonzero_loc, src->nonzero_loc, src->nnonzero * sizeof(rs_loc_t));
         for (i = 0; i < src->nnonzero; i++) {
             fmpq_mpoly_init(dst->nonzero + i, dst->ctx);
             fmpq_mpoly_set(dst->nonzero + i, src->nonzero + i, dst->ctx);

@@ -9,6 +9,7 @@
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
 #include "recstab/radius.h"
+#include "recstab/rootcount.h"
 
 typedef struct {
     char *key;            /* "name=value;..." of the substituted values */
@@ -17,6 +18,8 @@ typedef struct {
     rs_charpoly_t cp;
     int have_cp;
     int status;           /* RS_OK or the error building it */
+    int singular;         /* the values drop the degree of det A in lambda:
+                             the implicit step cannot be solved there */
 } rs_variant_t;
 
 typedef struct {
@@ -35,6 +38,8 @@ typedef struct {
     rs_error_struct *err;
     rs_scheme_t sym;      /* the case's scheme, all parameters symbolic */
     int have_sym;
+    slong deg_lower;      /* degree of det A over Q(params) is >= this (-1: none known) */
+    slong deg_exact;      /* ... and equals this (-1: not computed yet) */
 } rs_run_t;
 
 /* The case's set values except the parameters in keep[], overridden and
@@ -45,6 +50,29 @@ int rs_run_assignments(rs_run_t *run, rs_assign_t **out, slong *nout,
 void rs_assign_free(rs_assign_t *a, slong n);
 /* Cached: scheme + charpoly with the assignments substituted. */
 int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n);
+/* Top degree in lambda of det A (the degree of p plus the power of lambda
+ * split off). */
+slong rs_charpoly_top_degree(const rs_charpoly_t cp);
+/* *singular = 1 when a polynomial whose det has top degree `top` (after
+ * substituting values) lost degree against det A over Q(params). */
+int rs_run_is_singular(int *singular, rs_run_t *run, slong top);
+/* The verdict at a point where every parameter is a number: the exact counts
+ * rc of p, made "singular" when the step cannot be solved, and for a system
+ * with a repeated circle root decided by the semisimplicity of the
+ * lambda-matrix of v->s with vars[i] = vals[i] (i < nv) substituted.  Writes
+ * "status" (and "singular", "circle_roots", "rule") into o when o != NULL. */
+int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const slong *vars,
+                   const fmpq *vals, slong nv, const fmpz_poly_t p, const rs_rootcount_t rc,
+                   int singular, json_t *o);
+
+/* The exact verdict of variant v at vars[i] = vals[i] (i < nv), which set
+ * every parameter still symbolic in v: p evaluated exactly (into u when
+ * u != NULL), "singular" where its degree in lambda drops or it vanishes
+ * identically, else the counts rc (Routh and Schur-Cohn, which must agree)
+ * judged by rs_run_verdict. */
+int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
+                        const slong *vars, const fmpq *vals, slong nv);
+
 /* Close an exact result o of variant v ("substituted", "decided_by":
  * "exact") and append it to the run's results (takes o). */
 void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);

@@ -70,11 +70,13 @@ extern const char *const rs_sweep_level_names[5]; /* "fast", "prec128", "prec256
 
 typedef struct {
     int status;          /* RS_OK, or the error code of this point */
-    int verdict;         /* rs_status_t (0 stable, 1 marginal, 2 unstable); -1: p == 0 here */
+    int verdict;         /* rs_status_t (0 stable, 1 marginal, 2 unstable, 3 singular); -1: p == 0 here */
     int level;           /* RS_LEVEL_* that decided */
     int isolated;        /* 1 when [rho_lower, rho_upper] came from isolating enclosures */
     double rho_lower;    /* certified: rho >= rho_lower (rounded down) */
     double rho_upper;    /* certified: rho <= rho_upper (rounded up; +inf unknown) */
+    int repeated_on;     /* exact level: none outside, a repeated circle root (unstable
+                            for a scalar recurrence; a system decides by semisimplicity) */
 } rs_sweep_point_t;
 
 /* The certified verdict (and radius bounds when the deciding level isolated

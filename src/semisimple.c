@@ -1,0 +1,281 @@
+/* semisimple.c -- exact semisimplicity of unit-circle eigenvalues (see
+ * semisimple.h for the theorem). */
+#include <stdlib.h>
+#include <flint/fmpz_poly_factor.h>
+#include <flint/fmpq_mpoly.h>
+#include "recstab/semisimple.h"
+#include "recstab/rootcount.h"
+
+void rs_semisimple_init(rs_semisimple_t ss)
+{
+    ss->nfactors = 0;
+    ss->f = NULL;
+    ss->system = 0;
+    ss->all_semisimple = 1;
+}
+
+void rs_semisimple_clear(rs_semisimple_t ss)
+{
+    slong i;
+    for (i = 0; i < ss->nfactors; i++)
+        fmpz_poly_clear(ss->f[i].factor);
+    flint_free(ss->f);
+    rs_semisimple_init(ss);
+}
+
+/* Gaussian elimination over K = Q[lambda]/(f): f irreducible makes K a field,
+ * so a non-zero residue is invertible (extended gcd with f). */
+slong rs_semisimple_rank_mod(const fmpq_poly_struct *A, slong n, const fmpz_poly_t f)
+{
+    fmpq_poly_struct *a;
+    fmpq_poly_t F, g, s, t, inv, c;
+    slong i, j, col, rank = 0;
+    if (n <= 0) return 0;
+    a = flint_malloc(n * n * sizeof(fmpq_poly_struct));
+    fmpq_poly_init(F); fmpq_poly_init(g); fmpq_poly_init(s); fmpq_poly_init(t);
+    fmpq_poly_init(inv); fmpq_poly_init(c);
+    fmpq_poly_set_fmpz_poly(F, f);
+    for (i = 0; i < n * n; i++) {
+        fmpq_poly_init(a + i);
+        fmpq_poly_rem(a + i, A + i, F);
+    }
+    for (col = 0; col < n && rank < n; col++) {
+        slong piv = -1;
+        for (i = rank; i < n; i++)
+            if (!fmpq_poly_is_zero(a + i * n + col)) { piv = i; break; }
+        if (piv < 0) continue;
+        if (piv != rank)
+            for (j = 0; j < n; j++)
+                fmpq_poly_swap(a + piv * n + j, a + rank * n + j);
+        fmpq_poly_xgcd(g, s, t, a + rank * n + col, F);   /* g = 1 */
+        fmpq_poly_div(inv, s, g);
+        for (i = rank + 1; i < n; i++) {
+            if (fmpq_poly_is_zero(a + i * n + col)) continue;
+            fmpq_poly_mul(c, a + i * n + col, inv);
+            fmpq_poly_rem(c, c, F);
+            for (j = col; j < n; j++) {
+                fmpq_poly_mul(t, c, a + rank * n + j);
+                fmpq_poly_sub(a + i * n + j, a + i * n + j, t);
+                fmpq_poly_rem(a + i * n + j, a + i * n + j, F);
+            }
+        }
+        rank++;
+    }
+    for (i = 0; i < n * n; i++) fmpq_poly_clear(a + i);
+    flint_free(a);
+    fmpq_poly_clear(F); fmpq_poly_clear(g); fmpq_poly_clear(s); fmpq_poly_clear(t);
+    fmpq_poly_clear(inv); fmpq_poly_clear(c);
+    return rank;
+}
+
+int rs_semisimple_circle(rs_semisimple_t ss, const fmpq_poly_struct *A, slong n,
+                         const fmpz_poly_t p, rs_error_t err)
+{
+    fmpz_poly_factor_t fac;
+    slong i;
+    int r = RS_OK;
+    rs_semisimple_clear(ss);
+    ss->system = (A != NULL && n >= 1);
+    if (fmpz_poly_degree(p) < 1) return RS_OK;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, p);
+    for (i = 0; i < fac->num && r == RS_OK; i++) {
+        rs_rootcount_t rc;
+        rs_circle_factor_struct *cf;
+        rs_rootcount_init(rc);
+        r = rs_rootcount_factor(rc, fac->p + i, err);
+        if (r == RS_OK && rc->on > 0) {
+            ss->f = flint_realloc(ss->f, (ss->nfactors + 1) * sizeof(rs_circle_factor_struct));
+            cf = ss->f + ss->nfactors++;
+            fmpz_poly_init(cf->factor);
+            fmpz_poly_set(cf->factor, fac->p + i);
+            cf->mult = fac->exp[i];
+            cf->on = rc->on;
+            if (cf->mult == 1)
+                cf->kernel = 1;   /* 1 <= dim ker <= multiplicity */
+            else if (ss->system)
+                cf->kernel = n - rs_semisimple_rank_mod(A, n, cf->factor);
+            else
+                cf->kernel = 1;   /* scalar recurrence: one solution per root */
+            cf->semisimple = (cf->kernel == cf->mult);
+            if (!cf->semisimple) ss->all_semisimple = 0;
+        }
+        rs_rootcount_clear(rc);
+    }
+    fmpz_poly_factor_clear(fac);
+    return r;
+}
+
+int rs_semisimple_matrix(fmpq_poly_struct *A, const rs_scheme_t s, const slong *vars,
+                         const fmpq *vals, slong nv)
+{
+    fmpq_mpoly_t e;
+    slong i, k;
+    int ok = 1;
+    fmpq_mpoly_init(e, s->ctx);
+    for (i = 0; i < s->n * s->n && ok; i++) {
+        fmpq_mpoly_set(e, s->M + i, s->ctx);
+        for (k = 0; k < nv; k++)
+            fmpq_mpoly_evaluate_one_fmpq(e, e, vars[k], vals + k, s->ctx);
+        ok = fmpq_mpoly_get_fmpq_poly(A + i, e, s->lambda_var, s->ctx);
+    }
+    fmpq_mpoly_clear(e, s->ctx);
+    return ok;
+}
+
+int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_struct *s,
+                          const slong *vars, const fmpq *vals, slong nv, const fmpz_poly_t p,
+                          const rs_rootcount_struct *rc, rs_error_t err)
+{
+    int r = RS_OK;
+    *st = rs_rootcount_status(rc);
+    rs_semisimple_clear(ss);
+    if (rc->on == 0) return RS_OK;
+    if (s == NULL || s->from_char || s->n < 1) {
+        r = rs_semisimple_circle(ss, NULL, 0, p, err);
+    } else {
+        slong i, n = s->n;
+        fmpq_poly_struct *A = flint_malloc(n * n * sizeof(fmpq_poly_struct));
+        for (i = 0; i < n * n; i++) fmpq_poly_init(A + i);
+        if (rs_semisimple_matrix(A, s, vars, vals, nv))
+            r = rs_semisimple_circle(ss, A, n, p, err);
+        else
+            r = rs_error_set(err, RS_ERR_INTERNAL, "semisimplicity test: a parameter is still symbolic");
+        for (i = 0; i < n * n; i++) fmpq_poly_clear(A + i);
+        flint_free(A);
+    }
+    if (r == RS_OK && rc->outside == 0 && rs_rootcount_max_on_mult(rc) > 1)
+        *st = ss->all_semisimple ? RS_STATUS_MARGINAL : RS_STATUS_UNSTABLE;
+    return r;
+}
+
+/* a = prem(a, f) in lambda: lc(f)^k a reduced below deg_lambda f (f's leading
+ * coefficient is a polynomial in the other variables). */
+static void prem_lambda(fmpz_mpoly_t a, const fmpz_mpoly_t f, slong lv, const fmpz_mpoly_ctx_t ctx)
+{
+    slong df = fmpz_mpoly_degree_si(f, lv, ctx), da;
+    fmpz_mpoly_t lf, la, t;
+    ulong e;
+    fmpz_mpoly_init(lf, ctx); fmpz_mpoly_init(la, ctx); fmpz_mpoly_init(t, ctx);
+    e = (ulong) df;
+    fmpz_mpoly_get_coeff_vars_ui(lf, f, &lv, &e, 1, ctx);
+    while (!fmpz_mpoly_is_zero(a, ctx) && (da = fmpz_mpoly_degree_si(a, lv, ctx)) >= df) {
+        ulong *ex = flint_calloc(ctx->minfo->nvars, sizeof(ulong));
+        e = (ulong) da;
+        fmpz_mpoly_get_coeff_vars_ui(la, a, &lv, &e, 1, ctx);
+        ex[lv] = (ulong) (da - df);
+        fmpz_mpoly_mul(a, a, lf, ctx);
+        fmpz_mpoly_mul(t, la, f, ctx);
+        {
+            fmpz_mpoly_t m;
+            fmpz_t one;
+            fmpz_mpoly_init(m, ctx);
+            fmpz_init_set_ui(one, 1);
+            fmpz_mpoly_set_coeff_fmpz_ui(m, one, ex, ctx);   /* lambda^(da-df) */
+            fmpz_mpoly_mul(t, t, m, ctx);
+            fmpz_mpoly_clear(m, ctx);
+            fmpz_clear(one);
+        }
+        fmpz_mpoly_sub(a, a, t, ctx);
+        flint_free(ex);
+    }
+    fmpz_mpoly_clear(lf, ctx); fmpz_mpoly_clear(la, ctx); fmpz_mpoly_clear(t, ctx);
+}
+
+/* Appends R (a polynomial in tv only, if non-zero and non-constant) to the
+ * list of univariate polynomials. */
+static void push_tpoly(fmpz_poly_struct **out, slong *nout, const fmpz_mpoly_t R, slong tv,
+                       const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_poly_t u;
+    fmpz_poly_init(u);
+    if (!fmpz_mpoly_is_zero(R, ctx) && fmpz_mpoly_get_fmpz_poly(u, R, tv, ctx) && fmpz_poly_degree(u) >= 1) {
+        *out = flint_realloc(*out, (*nout + 1) * sizeof(fmpz_poly_struct));
+        fmpz_poly_init(*out + *nout);
+        fmpz_poly_swap(*out + *nout, u);
+        (*nout)++;
+    }
+    fmpz_poly_clear(u);
+}
+
+/* The elimination multiplier m vanishes at a root of f for t where
+ * Res_lambda(m, f)(t) = 0 (or lc(f)(t) = 0, recorded separately). */
+static void push_multiplier(fmpz_poly_struct **out, slong *nout, const fmpz_mpoly_t m,
+                            const fmpz_mpoly_t f, slong tv, slong lv, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t R;
+    fmpz_mpoly_init(R, ctx);
+    if (fmpz_mpoly_degree_si(m, lv, ctx) <= 0)
+        fmpz_mpoly_set(R, m, ctx);
+    else if (!fmpz_mpoly_resultant(R, m, f, lv, ctx))
+        fmpz_mpoly_zero(R, ctx);
+    push_tpoly(out, nout, R, tv, ctx);
+    fmpz_mpoly_clear(R, ctx);
+}
+
+int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
+                             const fmpz_mpoly_t f)
+{
+    const fmpz_mpoly_ctx_struct *ctx = s->zctx;
+    slong n = s->n, lv = s->lambda_var, i, j, col, rank = 0;
+    fmpz_mpoly_struct *a;
+    fmpz_mpoly_t t, g, lf;
+    ulong e;
+    if (n < 1 || s->from_char) return RS_OK;
+    a = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
+    fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(g, ctx); fmpz_mpoly_init(lf, ctx);
+    e = (ulong) fmpz_mpoly_degree_si(f, lv, ctx);
+    fmpz_mpoly_get_coeff_vars_ui(lf, f, &lv, &e, 1, ctx);
+    push_tpoly(out, nout, lf, tv, ctx);
+    for (i = 0; i < n; i++) {
+        /* row i over Z: scale by the lcm of its denominators (a unit) */
+        fmpz_t L;
+        fmpz_init(L);
+        fmpz_one(L);
+        for (j = 0; j < n; j++) fmpz_lcm(L, L, fmpq_denref(s->M[i * n + j].content));
+        for (j = 0; j < n; j++) {
+            const fmpq_mpoly_struct *x = s->M + i * n + j;
+            fmpz_t c;
+            fmpz_init(c);
+            fmpz_divexact(c, L, fmpq_denref(x->content));
+            fmpz_mul(c, c, fmpq_numref(x->content));
+            fmpz_mpoly_init(a + i * n + j, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(a + i * n + j, x->zpoly, c, ctx);
+            prem_lambda(a + i * n + j, f, lv, ctx);
+            fmpz_clear(c);
+        }
+        fmpz_clear(L);
+    }
+    for (col = 0; col < n && rank < n; col++) {
+        slong piv = -1;
+        for (i = rank; i < n; i++)
+            if (!fmpz_mpoly_is_zero(a + i * n + col, ctx)) { piv = i; break; }
+        if (piv < 0) continue;
+        if (piv != rank)
+            for (j = 0; j < n; j++) fmpz_mpoly_swap(a + piv * n + j, a + rank * n + j, ctx);
+        push_multiplier(out, nout, a + rank * n + col, f, tv, lv, ctx);
+        for (i = rank + 1; i < n; i++) {
+            if (fmpz_mpoly_is_zero(a + i * n + col, ctx)) continue;
+            fmpz_mpoly_set(g, a + i * n + col, ctx);
+            for (j = col; j < n; j++) {
+                fmpz_mpoly_mul(a + i * n + j, a + i * n + j, a + rank * n + col, ctx);
+                fmpz_mpoly_mul(t, g, a + rank * n + j, ctx);
+                fmpz_mpoly_sub(a + i * n + j, a + i * n + j, t, ctx);
+                prem_lambda(a + i * n + j, f, lv, ctx);
+            }
+            /* keep sizes down: divide the row by the gcd of its entries,
+             * recorded as a multiplier (it may vanish at special t) */
+            fmpz_mpoly_zero(g, ctx);
+            for (j = col; j < n; j++) fmpz_mpoly_gcd(g, g, a + i * n + j, ctx);
+            if (!fmpz_mpoly_is_zero(g, ctx) && !fmpz_mpoly_is_fmpz(g, ctx)) {
+                for (j = col; j < n; j++) fmpz_mpoly_divexact(a + i * n + j, a + i * n + j, g, ctx);
+                push_multiplier(out, nout, g, f, tv, lv, ctx);
+            }
+        }
+        rank++;
+    }
+    for (i = 0; i < n * n; i++) fmpz_mpoly_clear(a + i, ctx);
+    flint_free(a);
+    fmpz_mpoly_clear(t, ctx); fmpz_mpoly_clear(g, ctx); fmpz_mpoly_clear(lf, ctx);
+    return RS_OK;
+}
