@@ -238,7 +238,7 @@ json_t *rs_json_fmpq(const fmpq_t q)
 
 json_t *rs_json_arb(const arb_t x, slong digits)
 {
-    char *s = arb_get_str(x, digits < 1 ? 1 : digits, ARB_STR_NO_RADIUS);
+    char *s = rs_radius_arb_str(x, digits);
     json_t *j = json_string(s);
     flint_free(s);
     return j;
@@ -264,11 +264,38 @@ const char *rs_radius_verdict(const rs_radius_t rr)
     return v;
 }
 
+/* Digits for printing the bounds: digits + 5, or more when a bound is
+ * certified on one side of 1 but that many digits would round it onto 1
+ * (upper = 1 - 1e-40 prints as 1.0000 rounded up).  A bound b in (0.1, 10)
+ * at n digits moves by < 10^(1-n) <= |b - 1| once n >= 2 - log10|b - 1|. */
+static slong rs_radius_print_digits(const rs_radius_t rr, slong digits)
+{
+    slong n = digits + 5, k;
+    arf_t d;
+    arf_init(d);
+    if (arb_is_finite(rr->upper) && arf_cmp_si(arb_midref(rr->upper), 1) < 0)
+        arf_sub_ui(d, arb_midref(rr->upper), 1, ARF_PREC_EXACT, ARF_RND_DOWN);
+    else if (arb_is_finite(rr->lower) && arf_cmp_si(arb_midref(rr->lower), 1) > 0)
+        arf_sub_ui(d, arb_midref(rr->lower), 1, ARF_PREC_EXACT, ARF_RND_DOWN);
+    if (!arf_is_zero(d)) {
+        /* |d| >= 2^(E-1) with E = arf_abs_bound_lt_2exp_si(d) */
+        k = (slong) ((double) (1 - arf_abs_bound_lt_2exp_si(d)) * 0.30103) + 3;
+        if (k > n)
+            n = FLINT_MIN(k, 4 * RS_DIGITS_MAX);
+    }
+    arf_clear(d);
+    return n;
+}
+
 void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
 {
+    slong n = rs_radius_print_digits(rr, digits);
+    char *lo = rs_radius_str_lower(rr->lower, n), *hi = rs_radius_str_upper(rr->upper, n);
     json_object_set_new(o, "certified", json_true());
-    json_object_set_new(o, "lower", rs_json_arb(rr->lower, digits + 5));
-    json_object_set_new(o, "upper", rs_json_arb(rr->upper, digits + 5));
+    json_object_set_new(o, "lower", json_string(lo));
+    json_object_set_new(o, "upper", json_string(hi));
+    flint_free(lo);
+    flint_free(hi);
     json_object_set_new(o, "rho", rs_json_arb(rr->rho, digits));
     json_object_set_new(o, "digits", json_integer(digits));
     json_object_set_new(o, "precision_bits", json_integer(rr->prec));

@@ -20,25 +20,64 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
 
 #define RS_SIMULATE_MAX_STEPS 10000000
 
+/* A root enclosure as midpoint strings re, im and one radius covering the
+ * ball and the rounding of both printed midpoints (rounded up to double). */
 static json_t *acb_json(const acb_t z, slong digits)
 {
     json_t *o = json_object();
-    mag_t m;
+    mag_t mr, mi;
     arf_t a;
-    mag_init(m);
+    char *re, *im;
+    mag_init(mr);
+    mag_init(mi);
     arf_init(a);
-    json_object_set_new(o, "re", rs_json_arb(acb_realref(z), digits));
-    json_object_set_new(o, "im", rs_json_arb(acb_imagref(z), digits));
-    /* radius of the ball (max of the two) */
-    mag_max(m, arb_radref(acb_realref(z)), arb_radref(acb_imagref(z)));
-    arf_set_mag(a, m);
+    re = rs_radius_str_ball(mr, acb_realref(z), digits);
+    im = rs_radius_str_ball(mi, acb_imagref(z), digits);
+    json_object_set_new(o, "re", json_string(re));
+    json_object_set_new(o, "im", json_string(im));
+    mag_max(mr, mr, mi);
+    arf_set_mag(a, mr);
     json_object_set_new(o, "radius", json_real(arf_get_d(a, ARF_RND_UP)));
-    mag_clear(m);
+    flint_free(re);
+    flint_free(im);
+    mag_clear(mr);
+    mag_clear(mi);
     arf_clear(a);
     return o;
 }
 
 /* ---- radius ---------------------------------------------------------------------- */
+
+/* When the radius interval contains 1 but no root lies on the circle (so
+ * rho != 1), more digits separate it from 1: raise them (x4 per round, while
+ * the precision stays within --max-prec) until upper < 1 or lower > 1.  rr
+ * keeps the most precise result; returns the digits it was computed with
+ * (digits when no refinement ran or none helped). */
+static slong rs_radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc,
+                              const char *method, slong digits)
+{
+    slong cap = (slong) ((double) (run->opt->max_prec > 0 ? run->opt->max_prec : RS_RADIUS_MAX_PREC_DEFAULT)
+                         / 3.33) - 12, d = digits, got = digits;
+    rs_radius_t r2;
+    int r;
+    if (rc->on > 0 || strcmp(rs_radius_verdict(rr), "undecided") != 0) return digits;
+    rs_radius_init(r2);
+    while (d < cap && strcmp(rs_radius_verdict(rr), "undecided") == 0) {
+        d = FLINT_MIN(4 * d, cap);
+        if (strcmp(method, "companion") == 0)
+            r = rs_radius_fmpz_poly_companion(r2, p, d, run->opt->max_prec, run->err);
+        else
+            r = rs_radius_fmpz_poly(r2, p, d, run->opt->max_prec, run->err);
+        if (r != RS_OK) {                 /* out of precision: stays undecided */
+            rs_error_init(run->err);
+            break;
+        }
+        rs_radius_swap(rr, r2);
+        got = d;
+    }
+    rs_radius_clear(r2);
+    return got;
+}
 
 static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
@@ -130,17 +169,20 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
             json_object_set_new(o, "singular", json_string("the leading coefficient of det A(lambda) vanishes "
                                 "here: the step cannot be solved; the radius is that of the reduced polynomial"));
         if (strcmp(method, "double") != 0 && !v->singular) {
-            arb_t one;
-            arb_init(one);
-            arb_one(one);
-            if (st == RS_STATUS_STABLE && !arb_lt(rr->upper, one)) consistent = 0;
-            if (rc->outside > 0 && !arb_gt(rr->lower, one)) consistent = 0;
-            if (rc->outside == 0 && rc->on > 0 && !arb_contains(rr->rho, one)) consistent = 0;
-            if (arb_lt(rr->upper, one)) json_object_set_new(o, "verdict_from_radius", json_string("stable"));
-            else if (arb_gt(rr->lower, one)) json_object_set_new(o, "verdict_from_radius", json_string("unstable"));
-            else json_object_set_new(o, "verdict_from_radius", json_string(
+            const char *nv;
+            slong got = rs_radius_refine(rr, run, p, rc, method, digits);
+            if (got > digits) {
+                /* the printed bounds came from the refined run: reprint */
+                rs_json_radius(o, rr, digits);
+                json_object_set_new(o, "verdict_digits", json_integer(got));
+            }
+            /* only certified comparisons: a radius interval that contains 1
+             * decides nothing, so it cannot contradict the exact count */
+            nv = rs_radius_verdict(rr);
+            if (strcmp(nv, "stable") == 0 && (rc->on > 0 || rc->outside > 0)) consistent = 0;
+            if (strcmp(nv, "unstable") == 0 && rc->outside == 0) consistent = 0;
+            json_object_set_new(o, "verdict_from_radius", json_string(strcmp(nv, "undecided") != 0 ? nv :
                 "undecided numerically (the interval contains 1): the exact side decides"));
-            arb_clear(one);
             json_object_set_new(o, "consistent", json_boolean(consistent));
             if (!consistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
         }

@@ -9,6 +9,8 @@
 #include <flint/fmpz_poly_factor.h>
 #include <arb_fmpz_poly.h>
 #include <acb_mat.h>
+#include <stdio.h>
+#include <mpfr.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
 #include "recstab/radius.h"
@@ -53,6 +55,13 @@ void rs_radius_clear(rs_radius_t r)
     arb_clear(r->lower);
     arb_clear(r->upper);
     arb_clear(r->rho);
+}
+
+void rs_radius_swap(rs_radius_t r, rs_radius_t s)
+{
+    rs_radius_struct t = *r;
+    *r = *s;
+    *s = t;
 }
 
 /* Forget any previous result: trivially true bounds 0 <= rho <= +inf. */
@@ -1066,7 +1075,269 @@ cleanup:
     return rc;
 }
 
+/* ------------------------------------------------------------------ */
+/* printing certified numbers: directed decimal conversion             */
+
+/* Exponents beyond this (in bits) are not handed to MPFR, whose default
+ * exponent range is about 2^30 (the range is global state: left alone). */
+#define RS_STR_MAX_EXP (WORD(1) << 26)
+
+/* Decimal text of sign * 0.D * 10^e (D = the digits, k of them).  Fixed
+ * notation when -4 <= e <= k, else d.ddde+X; trim drops trailing zeros
+ * (only when the decimal is exact, so that no shown zero is a claim). */
+static char *_rs_str_format(int neg, const char *D, slong e, int trim)
+{
+    slong k = (slong) strlen(D), i, len = 0;
+    char *out;
+    if (trim)
+        while (k > 1 && D[k - 1] == '0')
+            k--;
+    out = flint_malloc(k + 48 + (e < 0 ? -e : 0));
+    if (neg)
+        out[len++] = '-';
+    if (e >= -4 && e <= k) {
+        if (e <= 0) {
+            out[len++] = '0';
+            out[len++] = '.';
+            for (i = 0; i < -e; i++)
+                out[len++] = '0';
+            for (i = 0; i < k; i++)
+                out[len++] = D[i];
+        } else {
+            for (i = 0; i < k; i++) {
+                if (i == e)
+                    out[len++] = '.';
+                out[len++] = D[i];
+            }
+        }
+        out[len] = '\0';
+    } else {
+        out[len++] = D[0];
+        if (k > 1)
+            out[len++] = '.';
+        for (i = 1; i < k; i++)
+            out[len++] = D[i];
+        sprintf(out + len, "e%+ld", (long) (e - 1));
+    }
+    return out;
+}
+
+/* x rounded to n significant decimal digits in direction rnd (MPFR_RNDD,
+ * RNDU, RNDN, RNDZ) as digits D (malloc'd, no sign) and exponent e:
+ * |x| ~ 0.D * 10^e.  x must be finite, nonzero and of moderate exponent. */
+static char *_rs_str_digits(slong *e, int *neg, const arf_t x, slong n,
+                            mpfr_rnd_t rnd)
+{
+    mpfr_t m;
+    mpfr_exp_t ex;
+    char *s, *D;
+    mpfr_init2(m, FLINT_MAX(arf_bits(x), 2));
+    arf_get_mpfr(m, x, MPFR_RNDN);           /* exact: enough bits */
+    s = mpfr_get_str(NULL, &ex, 10, (size_t) n, m, rnd);
+    *neg = (s[0] == '-');
+    D = flint_malloc(strlen(s) + 1);
+    strcpy(D, s + *neg);
+    mpfr_free_str(s);
+    mpfr_clear(m);
+    *e = (slong) ex;
+    return D;
+}
+
+static int _rs_str_in_range(const arf_t x)
+{
+    return arf_cmpabs_2exp_si(x, RS_STR_MAX_EXP) < 0 &&
+           arf_cmpabs_2exp_si(x, -RS_STR_MAX_EXP) > 0;
+}
+
+static char *_rs_str_dup(const char *s)
+{
+    char *t = flint_malloc(strlen(s) + 1);
+    strcpy(t, s);
+    return t;
+}
+
+char *rs_radius_arf_str(const arf_t x, slong n, arf_rnd_t rnd)
+{
+    mpfr_rnd_t m = rnd == ARF_RND_FLOOR ? MPFR_RNDD : rnd == ARF_RND_CEIL ? MPFR_RNDU
+                 : rnd == ARF_RND_DOWN ? MPFR_RNDZ : rnd == ARF_RND_UP ? MPFR_RNDA
+                 : MPFR_RNDN;
+    slong e, ed;
+    int neg, negd, exact;
+    char *D, *Dd, *s;
+
+    n = n < 1 ? 1 : n;
+    if (arf_is_zero(x))
+        return _rs_str_dup("0");
+    if (arf_is_nan(x))
+        return _rs_str_dup("nan");
+    if (arf_is_pos_inf(x))
+        return _rs_str_dup("inf");
+    if (arf_is_neg_inf(x))
+        return _rs_str_dup("-inf");
+    if (!_rs_str_in_range(x)) {
+        /* weak but true directed bounds; no nearest value is offered */
+        int big = arf_cmpabs_2exp_si(x, 0) > 0, pos = arf_sgn(x) > 0;
+        if (m == MPFR_RNDD)
+            return _rs_str_dup(pos ? (big ? "1" : "0") : "-inf");
+        if (m == MPFR_RNDU)
+            return _rs_str_dup(pos ? "inf" : (big ? "-1" : "0"));
+        {
+            arb_t b;
+            arb_init(b);
+            arb_set_arf(b, x);
+            s = arb_get_str(b, n, 0);
+            arb_clear(b);
+            return s;
+        }
+    }
+    /* the n-digit decimal is exact iff rounding down and up agree */
+    D = _rs_str_digits(&e, &neg, x, n, MPFR_RNDD);
+    Dd = _rs_str_digits(&ed, &negd, x, n, MPFR_RNDU);
+    exact = (e == ed && strcmp(D, Dd) == 0);
+    if (!exact && m != MPFR_RNDD) {
+        flint_free(D);
+        D = (m == MPFR_RNDU) ? Dd : _rs_str_digits(&e, &neg, x, n, m);
+        if (m == MPFR_RNDU) {
+            e = ed;
+            Dd = NULL;
+        }
+    }
+    s = _rs_str_format(neg, D, e, exact);
+    flint_free(D);
+    flint_free(Dd);
+    return s;
+}
+
+char *rs_radius_str_lower(const arb_t x, slong n)
+{
+    arf_t t;
+    char *s;
+    arf_init(t);
+    arb_get_lbound_arf(t, x, ARF_PREC_EXACT);
+    s = rs_radius_arf_str(t, n, ARF_RND_FLOOR);
+    arf_clear(t);
+    return s;
+}
+
+char *rs_radius_str_upper(const arb_t x, slong n)
+{
+    arf_t t;
+    char *s;
+    arf_init(t);
+    arb_get_ubound_arf(t, x, ARF_PREC_EXACT);
+    s = rs_radius_arf_str(t, n, ARF_RND_CEIL);
+    arf_clear(t);
+    return s;
+}
+
+/* Largest k <= n with lo and hi rounding to the same k-digit decimal (then,
+ * rounding being monotone, so does every point between), else 0. */
+static slong _rs_str_agree(const arf_t lo, const arf_t hi, slong n)
+{
+    arf_t w;
+    slong k, k0, e1, e2;
+    int n1, n2, same = 0;
+    char *D1, *D2;
+
+    /* the width w = hi - lo decides k within a digit or two:
+     * start at ~ log10(|lo| / w) + 2 */
+    arf_init(w);
+    arf_sub(w, hi, lo, ARF_PREC_EXACT, ARF_RND_DOWN);
+    if (arf_is_zero(w))
+        k0 = n;
+    else
+        k0 = (slong) ((double) (arf_abs_bound_lt_2exp_si(lo) -
+                                arf_abs_bound_lt_2exp_si(w)) * 0.30103) + 3;
+    arf_clear(w);
+    k0 = FLINT_MIN(FLINT_MAX(k0, 1), n);
+    for (k = k0; k >= 1 && !same; k--) {
+        D1 = _rs_str_digits(&e1, &n1, lo, k, MPFR_RNDN);
+        D2 = _rs_str_digits(&e2, &n2, hi, k, MPFR_RNDN);
+        same = (e1 == e2 && n1 == n2 && strcmp(D1, D2) == 0);
+        flint_free(D1);
+        flint_free(D2);
+    }
+    return same ? k + 1 : 0;
+}
+
+char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n)
+{
+    slong k;
+    n = n < 1 ? 1 : n;
+    if (arf_is_nan(lo) || arf_is_nan(hi) || arf_cmp(lo, hi) > 0)
+        return _rs_str_dup("nan");
+    if (arf_equal(lo, hi) && (arf_is_zero(lo) || arf_is_inf(lo)))
+        return rs_radius_arf_str(lo, n, ARF_RND_NEAR);
+    if (arf_sgn(lo) * arf_sgn(hi) > 0 && !arf_is_inf(lo) && !arf_is_inf(hi) &&
+        _rs_str_in_range(lo) && _rs_str_in_range(hi)) {
+        k = _rs_str_agree(lo, hi, n);
+        if (k > 0)   /* exact when lo == hi is a k-digit decimal */
+            return rs_radius_arf_str(arf_cmpabs(lo, hi) <= 0 ? lo : hi, k,
+                                     ARF_RND_NEAR);
+    }
+    {   /* not one digit is certain: Arb's own [mid +/- rad], which parses
+         * back (arb_set_str) to a ball containing the interval */
+        arb_t b;
+        char *s;
+        arb_init(b);
+        arb_set_interval_arf(b, lo, hi, ARF_PREC_EXACT);
+        s = arb_get_str(b, 5, 0);
+        arb_clear(b);
+        return s;
+    }
+}
+
 char *rs_radius_arb_str(const arb_t x, slong n)
 {
-    return arb_get_str(x, n < 1 ? 1 : n, ARB_STR_NO_RADIUS);
+    arf_t lo, hi;
+    char *s;
+    arf_init(lo);
+    arf_init(hi);
+    arb_get_lbound_arf(lo, x, ARF_PREC_EXACT);
+    arb_get_ubound_arf(hi, x, ARF_PREC_EXACT);
+    s = rs_radius_interval_str(lo, hi, n);
+    arf_clear(lo);
+    arf_clear(hi);
+    return s;
+}
+
+char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n)
+{
+    slong e;
+    int neg;
+    char *D, *s;
+    mag_t u;
+    n = n < 1 ? 1 : n;
+    mag_set(rad, arb_radref(x));
+    if (arf_is_zero(arb_midref(x)) || !arf_is_finite(arb_midref(x)) ||
+        !_rs_str_in_range(arb_midref(x))) {
+        if (arf_is_finite(arb_midref(x)) && !arf_is_zero(arb_midref(x))) {
+            /* printed as 0: the whole midpoint joins the radius */
+            mag_init(u);
+            arf_get_mag(u, arb_midref(x));
+            mag_add(rad, rad, u);
+            mag_clear(u);
+            return _rs_str_dup("0");
+        }
+        return rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
+    }
+    s = rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
+    /* |mid - printed| <= 10^(e - n), one unit of the last digit */
+    D = _rs_str_digits(&e, &neg, arb_midref(x), n, MPFR_RNDN);
+    mag_init(u);
+    mag_set_ui(u, 10);
+    mag_pow_ui(u, u, (ulong) FLINT_ABS(e - n));
+    if (e - n < 0) {
+        mag_t t;
+        mag_init(t);
+        mag_set_ui_lower(t, 10);
+        mag_pow_ui_lower(t, t, (ulong) (n - e));
+        mag_one(u);
+        mag_div(u, u, t);
+        mag_clear(t);
+    }
+    mag_add(rad, rad, u);
+    mag_clear(u);
+    flint_free(D);
+    return s;
 }

@@ -1,7 +1,9 @@
 /* report.c -- text rendering of result documents. */
+#include <stdlib.h>
 #include <string.h>
 #include <flint/flint.h>
 #include "recstab/report.h"
+#include "recstab/radius.h"
 
 #define LABEL_W 12
 
@@ -369,6 +371,18 @@ static void r_claim(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
+/* A root's radius (a double from the JSON) to 2 digits, rounded up. */
+static char *radius_up(double r)
+{
+    arf_t a;
+    char *s;
+    arf_init(a);
+    arf_set_d(a, r);
+    s = rs_radius_arf_str(a, 2, ARF_RND_CEIL);
+    arf_clear(a);
+    return s;
+}
+
 static void r_radius(FILE *out, const json_t *o)
 {
     const json_t *roots = json_object_get(o, "roots");
@@ -382,12 +396,21 @@ static void r_radius(FILE *out, const json_t *o)
         snprintf(buf, sizeof buf, "%lld digits asked, %lld bits used", jint(o, "digits"), jint(o, "precision_bits"));
         line(out, "precision", "%s", buf);
         for (i = 0; i < json_array_size(roots); i++) {
+            /* whole strings: cutting a printed decimal short is not a rounding */
             const json_t *z = json_array_get(roots, i);
-            char rb[200];
-            snprintf(rb, sizeof rb, "%.22s %s %.22si  |.| = %.22s", jstr(z, "re"),
-                     jstr(z, "im")[0] == '-' ? "-" : "+", jstr(z, "im")[0] == '-' ? jstr(z, "im") + 1 : jstr(z, "im"),
-                     jstr(z, "abs"));
+            const char *re = jstr(z, "re"), *im = jstr(z, "im"), *ab = jstr(z, "abs");
+            char *rad = radius_up(json_real_value(json_object_get(z, "radius")));
+            size_t len = strlen(re) + strlen(im) + strlen(ab) + strlen(rad) + 32;
+            char *rb = malloc(len);
+            snprintf(rb, len, "%s %s %si +- %s  |.| = %s", re, im[0] == '-' ? "-" : "+", im[0] == '-' ? im + 1 : im,
+                     rad, ab);
             line(out, i == 0 ? "roots" : "", "%s", rb);
+            free(rb);
+            flint_free(rad);
+        }
+        if (json_object_get(o, "verdict_digits") != NULL) {
+            snprintf(buf, sizeof buf, "raised to %lld digits to separate the interval from 1", jint(o, "verdict_digits"));
+            line(out, "refined", "%s", buf);
         }
         line(out, "from radius", "%s", jstr(o, "verdict_from_radius"));
         line(out, "exact", "%s (consistent with the radius)", jstr(o, "exact_status"));

@@ -66,6 +66,7 @@ enum {
 
 void rs_radius_init(rs_radius_t r);
 void rs_radius_clear(rs_radius_t r);
+void rs_radius_swap(rs_radius_t r, rs_radius_t s);
 
 /* Certified spectral radius of the roots of p (deg p >= 1) to `digits`
  * relative digits, precision never above max_prec bits (RS_ERR_LIMIT with a
@@ -142,11 +143,33 @@ int rs_radius_matrix_poly(rs_radius_t r, const acb_mat_struct *A, slong k,
  * off during the call and restored (not thread-safe). */
 int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
 
-/* Decimal string of an arb to n digits (malloc'd, caller frees with flint_free).
- * arb_get_str(x, n, ARB_STR_NO_RADIUS): at most n significant digits, the
- * last shown digit correct to +-1 unit; fewer digits when x is wider; a bare
- * "1e+k" / "0e+k" style value when nothing is certain (see Arb docs). */
+/* Printing certified numbers.  Every function returns a decimal string
+ * (malloc'd; free with flint_free) of at most n >= 1 significant digits
+ * ("0", "inf", "-inf", "nan" for those values), fixed notation or d.ddde+X;
+ * trailing zeros are dropped only when the decimal is exact.  The decimal
+ * conversion itself is directed (mpfr_get_str), so a printed bound holds.
+ *
+ * rs_radius_str_lower: a decimal <= every point of x (lower bound rounded
+ *   down); rs_radius_str_upper: >= every point (upper bound rounded up).
+ * rs_radius_arf_str: x itself rounded in direction rnd (ARF_RND_FLOOR,
+ *   CEIL, DOWN = toward 0, UP = away from 0, NEAR).
+ * rs_radius_arb_str: the point estimate with only certified digits: the
+ *   longest k <= n such that every point of x rounds (to nearest) to the
+ *   same k-digit decimal, which is printed; so |true - printed| <= half a
+ *   unit of its last digit.  (arb_get_str with ARB_STR_NO_RADIUS only
+ *   promises the midpoint to +-1 unit of the last digit, which can put
+ *   the true value outside.)  When not even one digit is certain (x contains
+ *   0, or is wider than its magnitude), Arb's "[m +/- r]" (arb_get_str), whose
+ *   ball contains x.
+ * rs_radius_interval_str: the same for the interval [lo, hi].
+ * rs_radius_str_ball: the midpoint rounded to n digits, and in rad the
+ *   radius of x plus a bound on that rounding: printed +- rad contains x. */
+char *rs_radius_str_lower(const arb_t x, slong n);
+char *rs_radius_str_upper(const arb_t x, slong n);
+char *rs_radius_arf_str(const arf_t x, slong n, arf_rnd_t rnd);
 char *rs_radius_arb_str(const arb_t x, slong n);
+char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n);
+char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
 
 #ifdef __cplusplus
 }
