@@ -441,10 +441,15 @@ static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
                     arb_one(one);
                     verdict = arb_lt(rr->upper, one) ? 0 : arb_gt(rr->lower, one) ? 2 : 1;
                     counts[verdict]++;
-                    fprintf(f, "%s,%d,%.17g,%.17g,%.17g,certified\n",
+                    /* bounds rounded outward, the radius with its certified digits */
+                    char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
+                         *hi = rs_radius_str_upper(rr->upper, 17);
+                    fprintf(f, "%s,%d,%s,%s,%s,certified\n",
                             verdict == 0 ? "stable" : verdict == 2 ? "unstable" : "undecided", verdict,
-                            arf_get_d(arb_midref(rr->rho), ARF_RND_NEAR), arf_get_d(arb_midref(rr->lower), ARF_RND_DOWN),
-                            arf_get_d(arb_midref(rr->upper), ARF_RND_UP));
+                            rho[0] == '[' ? "" : rho, lo, hi);
+                    flint_free(rho);
+                    flint_free(lo);
+                    flint_free(hi);
                     arb_clear(one);
                 } else {
                     rs_error_init(run->err);

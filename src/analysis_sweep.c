@@ -556,7 +556,9 @@ typedef struct {
     rs_sweep_point_t d;
     int inside, on, outside;            /* exact counts (of stability sweeps), else -1 */
     int nmodes;                         /* references found */
-    double mode[3 * SW_MAX_REFS];       /* damping ratio, frequency error, omega per reference */
+    /* damping ratio, frequency error, omega per reference: certified
+     * [mode_lo, mode_hi] (doubles rounded outward); NAN when not found */
+    double mode_lo[3 * SW_MAX_REFS], mode_hi[3 * SW_MAX_REFS];
 } pt_t;
 
 typedef struct {
@@ -585,6 +587,18 @@ static void point_poly(fmpz_poly_t P, const job_t *J, slong idx)
     eval_point(P, &J->T, J->U1 + i * (J->T.d1 + 1), J->is_map ? J->U2 + j * (J->T.d2 + 1) : NULL);
 }
 
+/* [*lo, *hi] contains x (doubles rounded outward; +-inf when x is not finite). */
+static void arb_bounds_d(double *lo, double *hi, const arb_t x)
+{
+    arf_t t;
+    arf_init(t);
+    arb_get_lbound_arf(t, x, 64);
+    *lo = arf_is_nan(t) ? -INFINITY : arf_get_d(t, ARF_RND_FLOOR);
+    arb_get_ubound_arf(t, x, 64);
+    *hi = arf_is_nan(t) ? INFINITY : arf_get_d(t, ARF_RND_CEIL);
+    arf_clear(t);
+}
+
 /* Damping ratio, frequency error and omega of the principal root (Im >= 0)
  * of each reference at point idx, as `modes` reports them. */
 static void point_modes(pt_t *pt, const job_t *J, slong idx, const rs_radius_t rr)
@@ -597,18 +611,18 @@ static void point_modes(pt_t *pt, const job_t *J, slong idx, const rs_radius_t r
     arb_set_fmpq(h, J->hval + idx, prec);
     for (k = 0; k < J->nref; k++) arb_set_fmpq(refs + k, J->refval + idx * J->nref + k, prec);
     rs_modes_principal(principal, rr, h, refs, J->nref, prec);
-    for (k = 0; k < 3 * SW_MAX_REFS; k++) pt->mode[k] = NAN;
+    for (k = 0; k < 3 * SW_MAX_REFS; k++) pt->mode_lo[k] = pt->mode_hi[k] = NAN;
     for (k = 0; k < J->nref; k++)
         for (i = 0; i < rr->nroots; i++) {
             const acb_struct *z = rr->roots + i;
             if (principal[i] != k + 1 || acb_is_zero(z)) continue;
             if (arf_sgn(arb_midref(acb_imagref(z))) < 0 && !arb_is_zero(acb_imagref(z))) continue;
             rs_modes_continuous(sig, om, mag, zeta, z, h, prec);
-            pt->mode[3 * k] = arf_get_d(arb_midref(zeta), ARF_RND_NEAR);
+            arb_bounds_d(pt->mode_lo + 3 * k, pt->mode_hi + 3 * k, zeta);
             arb_sub(mag, mag, refs + k, prec);
             arb_div(mag, mag, refs + k, prec);
-            pt->mode[3 * k + 1] = arf_get_d(arb_midref(mag), ARF_RND_NEAR);
-            pt->mode[3 * k + 2] = arf_get_d(arb_midref(om), ARF_RND_NEAR);
+            arb_bounds_d(pt->mode_lo + 3 * k + 1, pt->mode_hi + 3 * k + 1, mag);
+            arb_bounds_d(pt->mode_lo + 3 * k + 2, pt->mode_hi + 3 * k + 2, om);
             pt->nmodes++;
             break;
         }
@@ -796,11 +810,33 @@ static void put_upper(FILE *f, double x)
     else fprintf(f, "%.17g", nextafter(x, INFINITY));
 }
 
+/* A point estimate in [lo, hi] with only its certified digits (every value
+ * of [lo, hi] rounds to it, at most 15 digits); empty when no digit is. */
+static void put_certified(FILE *f, double lo, double hi)
+{
+    arf_t a, b;
+    char *s;
+    arf_init(a);
+    arf_init(b);
+    arf_set_d(a, lo);
+    arf_set_d(b, hi);
+    s = rs_radius_interval_str(a, b, 15);
+    if (s[0] != '[' && strcmp(s, "nan") != 0) fputs(s, f);
+    flint_free(s);
+    arf_clear(a);
+    arf_clear(b);
+}
+
 static void put_radius(FILE *f, const rs_sweep_point_t *d)
 {
     if (d->verdict < 0) { fputs(",,", f); return; }
-    if (isinf(d->rho_upper)) fprintf(f, "%.15g,", d->rho_lower);
-    else fprintf(f, "%.15g,", 0.5 * (d->rho_lower + d->rho_upper));
+    if (d->level == RS_LEVEL_DOUBLE) {
+        /* benchmark baseline: an estimate, and no certified bound at all */
+        fprintf(f, "%.15g,0,inf", d->rho_lower);
+        return;
+    }
+    put_certified(f, d->rho_lower, d->rho_upper);
+    fputc(',', f);
     put_lower(f, d->rho_lower);
     fputc(',', f);
     put_upper(f, d->rho_upper);
@@ -1219,9 +1255,11 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
                         p->d.verdict < 0 ? "" : rs_sweep_level_names[p->d.level]);
                 if (kind == OF_MODES)
                     for (k = 0; k < J.nref; k++) {
-                        if (isnan(p->mode[3 * k])) fputs(",,,", f);
-                        else fprintf(f, ",%.15g,%.15g,%.15g", p->mode[3 * k], p->mode[3 * k + 1],
-                                     p->mode[3 * k + 2]);
+                        if (isnan(p->mode_lo[3 * k])) fputs(",,,", f);
+                        else for (int c = 0; c < 3; c++) {
+                            fputc(',', f);
+                            put_certified(f, p->mode_lo[3 * k + c], p->mode_hi[3 * k + c]);
+                        }
                     }
                 fputc('\n', f);
             }
