@@ -270,7 +270,7 @@ static json_t *alg_json(alg_t *a, const char *var)
     arf_get_fmpq(ql, lo);
     arf_get_fmpq(qh, hi);
     json_object_set_new(o, "interval", json_pack("[o,o]", rs_json_fmpq(ql), rs_json_fmpq(qh)));
-    s = arb_get_str(a->x, 30, ARB_STR_NO_RADIUS);
+    s = rs_radius_arb_str(a->x, 30);   /* certified digits only */
     json_object_set_new(o, "approx", json_string(s));
     flint_free(s);
     arf_clear(lo); arf_clear(hi);

@@ -764,8 +764,8 @@ static int _rs_radius_ball_engine(rs_radius_t r, slong n, slong nzero,
             "digits requested (stopped at %ld bits)",
             (long) _rs_radius_digits_got(r->rho), (long) digits, (long) prec);
     } else {
-        char *lo = arb_get_str(r->lower, 10, ARB_STR_NO_RADIUS);
-        char *hi = arb_get_str(r->upper, 10, ARB_STR_NO_RADIUS);
+        char *lo = rs_radius_str_lower(r->lower, 10);
+        char *hi = rs_radius_str_upper(r->upper, 10);
         rc = rs_error_set(err, RS_ERR_UNDECIDED,
             "radius: eigenvalues could not be isolated at %ld bits (multiple "
             "root or cluster within the coefficient balls%s); only "
