@@ -1274,6 +1274,22 @@ char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n)
         if (k > 0)   /* exact when lo == hi is a k-digit decimal */
             return rs_radius_arf_str(arf_cmpabs(lo, hi) <= 0 ? lo : hi, k,
                                      ARF_RND_NEAR);
+    } else if (arf_sgn(lo) <= 0 && arf_sgn(hi) >= 0 && arf_is_finite(lo) &&
+               arf_is_finite(hi) && _rs_str_in_range(arf_cmpabs(lo, hi) >= 0 ? lo : hi)) {
+        /* around 0: "0eX" with max(|lo|, |hi|) <= 10^X / 2, i.e. every value
+         * rounds to 0 at the digit 10^X (Arb prints such balls alike) */
+        arf_t m;
+        slong e;
+        int neg;
+        char *D, buf[48];
+        arf_init(m);
+        arf_abs(m, arf_cmpabs(lo, hi) >= 0 ? lo : hi);
+        arf_mul_2exp_si(m, m, 1);
+        D = _rs_str_digits(&e, &neg, m, 1, MPFR_RNDU);   /* 2m <= 10^e */
+        snprintf(buf, sizeof buf, "0e%+ld", (long) e);
+        flint_free(D);
+        arf_clear(m);
+        return _rs_str_dup(buf);
     }
     {   /* not one digit is certain: Arb's own [mid +/- rad], which parses
          * back (arb_set_str) to a ball containing the interval */

@@ -10,7 +10,8 @@
  * A bound L is honest iff L^m <= rho^m (m = 1, 2, k; L >= 0), U iff
  * rho^m <= U^m; a point estimate R with k certified digits iff
  * (R - h)^m <= rho^m <= (R + h)^m, h = half a unit of its last digit.
- * The same for the text report, the CSV columns of a sweep, root enclosures
+ * The same for the text report, the CSV columns of radius and modes sweeps
+ * (modes of the trapezoidal rule: closed forms below), root enclosures
  * (midpoint +- radius), and the verdict of roots within 1e-40 of the circle
  * (10^40*l - (10^40 -+ 1): stable / unstable by hand, rho = 1 -+ 10^-40). */
 #include "testutil.h"
@@ -272,6 +273,7 @@ static void test_random_families(void **state)
         check_radius_doc(doc, t, m, text, it % 10 == 0);
         json_decref(doc);
     }
+    assert_int_equal(it, 1000);
     fmpq_clear(t);
     fmpq_clear(u);
     flint_randclear(st);
@@ -368,6 +370,76 @@ static void test_sweep_csv(void **state)
     json_decref(doc);
 }
 
+/* printed - h <= T <= printed + h for a ball T known to 256 bits */
+static void check_point_arb(const char *s, const arb_t T, const char *what)
+{
+    fmpq_t R, h, a;
+    arb_t b;
+    fmpq_init(R); fmpq_init(h); fmpq_init(a);
+    arb_init(b);
+    if (dec_parse(R, h, s)) fail_msg("%s: %s is not a decimal", what, s);
+    fmpq_sub(a, R, h);
+    arb_set_fmpq(b, a, 256);
+    if (!arb_le(b, T)) fail_msg("%s: %s is above the true value by more than half a unit", what, s);
+    fmpq_add(a, R, h);
+    arb_set_fmpq(b, a, 256);
+    if (!arb_le(T, b)) fail_msg("%s: %s is below the true value by more than half a unit", what, s);
+    fmpq_clear(R); fmpq_clear(h); fmpq_clear(a);
+    arb_clear(b);
+}
+
+/* A modes sweep of the trapezoidal rule on x'' = -w^2 x (h = 1): p =
+ * (l - 1)^2 + (w^2/4)(l + 1)^2, roots (1 +- i w/2)/(1 -+ i w/2) on the
+ * circle, so ln(lambda) = +-2i atan(w/2): damping ratio 0, omega =
+ * 2 atan(w/2), frequency error (omega - w)/w (Arb at 256 bits from the
+ * exact w of each row). */
+static void test_modes_csv(void **state)
+{
+    static const char *const text =
+        "param w\nassume w > 0\nunknown x V\neq x[n+1] - x[n] = (V[n+1] + V[n])/2\n"
+        "eq V[n+1] - V[n] = -w^2*(x[n+1] + x[n])/2\n"
+        "analyse sweep w from 1/10 to 2 steps 19 of modes reference=w\n";
+    int outcome, rows = 0;
+    json_t *doc = run_case(text, 0, &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    char *tab = strdup(jget(o, "table")), *line, *save = NULL;
+    fmpq_t w;
+    arb_t om, fe, zero;
+    (void) state;
+    fmpq_init(w);
+    arb_init(om); arb_init(fe); arb_init(zero);
+    assert_int_equal(outcome, RS_OUTCOME_OK);
+    line = strtok_r(tab, "\n", &save);
+    assert_string_equal(line, "index,w,w_exact,radius,radius_lower,radius_upper,verdict,code,decided_by,"
+                              "damping_ratio_1,frequency_error_1,omega_1");
+    while ((line = strtok_r(NULL, "\n", &save)) != NULL) {
+        char f[12][128];
+        int n = sscanf(line, "%127[^,],%127[^,],%127[^,],%127[^,],%127[^,],%127[^,],%127[^,],%127[^,],"
+                       "%127[^,],%127[^,],%127[^,],%127s", f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8],
+                       f[9], f[10], f[11]);
+        assert_int_equal(n, 12);
+        assert_int_equal(fmpq_set_str(w, f[2], 10), 0);
+        fmpq_canonicalise(w);
+        arb_set_fmpq(om, w, 256);
+        arb_mul_2exp_si(om, om, -1);
+        arb_atan(om, om, 256);
+        arb_mul_2exp_si(om, om, 1);               /* 2 atan(w/2) */
+        arb_set_fmpq(fe, w, 256);
+        arb_sub(fe, om, fe, 256);
+        arb_div_fmpz(fe, fe, fmpq_numref(w), 256);
+        arb_mul_fmpz(fe, fe, fmpq_denref(w), 256);  /* (omega - w)/w */
+        check_point_arb(f[9], zero, line);
+        check_point_arb(f[10], fe, line);
+        check_point_arb(f[11], om, line);
+        rows++;
+    }
+    assert_int_equal(rows, 20);
+    free(tab);
+    fmpq_clear(w);
+    arb_clear(om); arb_clear(fe); arb_clear(zero);
+    json_decref(doc);
+}
+
 /* The printing helpers on values whose decimals are known by hand. */
 static void test_helpers(void **state)
 {
@@ -395,6 +467,10 @@ static void test_helpers(void **state)
     s = rs_radius_interval_str(lo, hi, 15); assert_string_equal(s, "0.145"); flint_free(s);
     arf_set_d(hi, 0.1551);
     s = rs_radius_interval_str(lo, hi, 15); assert_int_equal(s[0], '['); flint_free(s);
+    /* around 0: [-3e-20, 1e-20] is within 10^-19 / 2 of 0 (and 6e-20 needs
+     * 10^-19: 2 * 3e-20 <= 10^-19) */
+    arf_set_d(lo, -3e-20); arf_set_d(hi, 1e-20);
+    s = rs_radius_interval_str(lo, hi, 15); assert_string_equal(s, "0e-19"); flint_free(s);
     /* 1e-50 and 1e50 in scientific notation, directed */
     arb_set_ui(x, 10);
     arb_pow_ui(x, x, 50, 256);
@@ -413,6 +489,7 @@ int main(void)
         cmocka_unit_test(test_sqrt_3_10),
         cmocka_unit_test(test_near_circle),
         cmocka_unit_test(test_sweep_csv),
+        cmocka_unit_test(test_modes_csv),
         cmocka_unit_test(test_random_families),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -158,8 +158,9 @@ int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
  *   same k-digit decimal, which is printed; so |true - printed| <= half a
  *   unit of its last digit.  (arb_get_str with ARB_STR_NO_RADIUS only
  *   promises the midpoint to +-1 unit of the last digit, which can put
- *   the true value outside.)  When not even one digit is certain (x contains
- *   0, or is wider than its magnitude), Arb's "[m +/- r]" (arb_get_str), whose
+ *   the true value outside.)  A ball around 0 prints as "0eX": every point
+ *   is within 10^X / 2 of 0.  When not even one digit is certain otherwise
+ *   (x wider than its magnitude), Arb's "[m +/- r]" (arb_get_str), whose
  *   ball contains x.
  * rs_radius_interval_str: the same for the interval [lo, hi].
  * rs_radius_str_ball: the midpoint rounded to n digits, and in rad the
