@@ -268,7 +268,7 @@ const char *rs_radius_verdict(const rs_radius_t rr)
  * certified on one side of 1 but that many digits would round it onto 1
  * (upper = 1 - 1e-40 prints as 1.0000 rounded up).  A bound b in (0.1, 10)
  * at n digits moves by < 10^(1-n) <= |b - 1| once n >= 2 - log10|b - 1|. */
-static slong rs_radius_print_digits(const rs_radius_t rr, slong digits)
+static slong radius_print_digits(const rs_radius_t rr, slong digits)
 {
     slong n = digits + 5, k;
     arf_t d;
@@ -289,7 +289,7 @@ static slong rs_radius_print_digits(const rs_radius_t rr, slong digits)
 
 void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
 {
-    slong n = rs_radius_print_digits(rr, digits);
+    slong n = radius_print_digits(rr, digits);
     char *lo = rs_radius_str_lower(rr->lower, n), *hi = rs_radius_str_upper(rr->upper, n);
     json_object_set_new(o, "certified", json_true());
     json_object_set_new(o, "lower", json_string(lo));

@@ -53,7 +53,7 @@ static json_t *acb_json(const acb_t z, slong digits)
  * the precision stays within --max-prec) until upper < 1 or lower > 1.  rr
  * keeps the most precise result; returns the digits it was computed with
  * (digits when no refinement ran or none helped). */
-static slong rs_radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc,
+static slong radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc,
                               const char *method, slong digits)
 {
     slong cap = (slong) ((double) (run->opt->max_prec > 0 ? run->opt->max_prec : RS_RADIUS_MAX_PREC_DEFAULT)
@@ -170,7 +170,7 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
                                 "here: the step cannot be solved; the radius is that of the reduced polynomial"));
         if (strcmp(method, "double") != 0 && !v->singular) {
             const char *nv;
-            slong got = rs_radius_refine(rr, run, p, rc, method, digits);
+            slong got = radius_refine(rr, run, p, rc, method, digits);
             if (got > digits) {
                 /* the printed bounds came from the refined run: reprint */
                 rs_json_radius(o, rr, digits);

@@ -1321,39 +1321,36 @@ char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n)
 {
     slong e;
     int neg;
-    char *D, *s;
+    char *D;
     mag_t u;
     n = n < 1 ? 1 : n;
     mag_set(rad, arb_radref(x));
-    if (arf_is_zero(arb_midref(x)) || !arf_is_finite(arb_midref(x)) ||
-        !_rs_str_in_range(arb_midref(x))) {
-        if (arf_is_finite(arb_midref(x)) && !arf_is_zero(arb_midref(x))) {
-            /* printed as 0: the whole midpoint joins the radius */
-            mag_init(u);
-            arf_get_mag(u, arb_midref(x));
-            mag_add(rad, rad, u);
-            mag_clear(u);
-            return _rs_str_dup("0");
-        }
+    if (arf_is_zero(arb_midref(x)) || !arf_is_finite(arb_midref(x)))
         return rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
+    mag_init(u);
+    if (!_rs_str_in_range(arb_midref(x))) {
+        /* printed as 0: the whole midpoint joins the radius */
+        arf_get_mag(u, arb_midref(x));
+        mag_add(rad, rad, u);
+        mag_clear(u);
+        return _rs_str_dup("0");
     }
-    s = rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
     /* |mid - printed| <= 10^(e - n), one unit of the last digit */
     D = _rs_str_digits(&e, &neg, arb_midref(x), n, MPFR_RNDN);
-    mag_init(u);
-    mag_set_ui(u, 10);
-    mag_pow_ui(u, u, (ulong) FLINT_ABS(e - n));
-    if (e - n < 0) {
+    flint_free(D);
+    if (e >= n) {
+        mag_set_ui(u, 10);
+        mag_pow_ui(u, u, (ulong) (e - n));
+    } else {
         mag_t t;
         mag_init(t);
         mag_set_ui_lower(t, 10);
         mag_pow_ui_lower(t, t, (ulong) (n - e));
         mag_one(u);
-        mag_div(u, u, t);
+        mag_div(u, u, t);       /* rounded up */
         mag_clear(t);
     }
     mag_add(rad, rad, u);
     mag_clear(u);
-    flint_free(D);
-    return s;
+    return rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
 }

@@ -95,7 +95,7 @@ json_t *rs_json_collected(const fmpz_mpoly_t p, slong var, const rs_scheme_t s,
 
 /* The case's set values as {NAME: "p/q"}. */
 json_t *rs_json_sets(const rs_case_t c);
-/* A ball's midpoint as a decimal string of `digits` digits. */
+/* A ball as a decimal string with only its certified digits (at most `digits`). */
 json_t *rs_json_arb(const arb_t x, slong digits);
 /* certified, lower, upper, rho, digits, precision_bits of a radius. */
 void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits);
