@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <flint/fmpz_poly_factor.h>
 #include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_mpoly_factor.h>
 #include "recstab/semisimple.h"
 #include "recstab/rootcount.h"
 
@@ -213,20 +214,25 @@ static void push_multiplier(fmpz_poly_struct **out, slong *nout, const fmpz_mpol
     fmpz_mpoly_clear(R, ctx);
 }
 
-int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
-                             const fmpz_mpoly_t f)
+/* Fraction-free elimination of A modulo f (irreducible in Z[params, lambda],
+ * positive degree in lambda) over the domain Z[params, lambda]/(f): a reduced
+ * non-zero entry is non-zero in the fraction field Q(params)[lambda]/(f), so
+ * the number of pivots is the rank over that field.  With out != NULL the
+ * multipliers used (pivots, row contents, lc(f)) are turned into polynomials
+ * in tv whose roots hold every value where the rank at a point can drop. */
+static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
+                          const fmpz_mpoly_t f)
 {
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
     slong n = s->n, lv = s->lambda_var, i, j, col, rank = 0;
     fmpz_mpoly_struct *a;
     fmpz_mpoly_t t, g, lf;
     ulong e;
-    if (n < 1 || s->from_char) return RS_OK;
     a = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(g, ctx); fmpz_mpoly_init(lf, ctx);
     e = (ulong) fmpz_mpoly_degree_si(f, lv, ctx);
     fmpz_mpoly_get_coeff_vars_ui(lf, f, &lv, &e, 1, ctx);
-    push_tpoly(out, nout, lf, tv, ctx);
+    if (out != NULL) push_tpoly(out, nout, lf, tv, ctx);
     for (i = 0; i < n; i++) {
         /* row i over Z: scale by the lcm of its denominators (a unit) */
         fmpz_t L;
@@ -253,7 +259,7 @@ int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_schem
         if (piv < 0) continue;
         if (piv != rank)
             for (j = 0; j < n; j++) fmpz_mpoly_swap(a + piv * n + j, a + rank * n + j, ctx);
-        push_multiplier(out, nout, a + rank * n + col, f, tv, lv, ctx);
+        if (out != NULL) push_multiplier(out, nout, a + rank * n + col, f, tv, lv, ctx);
         for (i = rank + 1; i < n; i++) {
             if (fmpz_mpoly_is_zero(a + i * n + col, ctx)) continue;
             fmpz_mpoly_set(g, a + i * n + col, ctx);
@@ -263,13 +269,13 @@ int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_schem
                 fmpz_mpoly_sub(a + i * n + j, a + i * n + j, t, ctx);
                 prem_lambda(a + i * n + j, f, lv, ctx);
             }
-            /* keep sizes down: divide the row by the gcd of its entries,
-             * recorded as a multiplier (it may vanish at special t) */
+            /* keep sizes down: divide the row by the gcd of its entries
+             * (a multiplier too: it may vanish at special values) */
             fmpz_mpoly_zero(g, ctx);
             for (j = col; j < n; j++) fmpz_mpoly_gcd(g, g, a + i * n + j, ctx);
             if (!fmpz_mpoly_is_zero(g, ctx) && !fmpz_mpoly_is_fmpz(g, ctx)) {
                 for (j = col; j < n; j++) fmpz_mpoly_divexact(a + i * n + j, a + i * n + j, g, ctx);
-                push_multiplier(out, nout, g, f, tv, lv, ctx);
+                if (out != NULL) push_multiplier(out, nout, g, f, tv, lv, ctx);
             }
         }
         rank++;
@@ -277,5 +283,34 @@ int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_schem
     for (i = 0; i < n * n; i++) fmpz_mpoly_clear(a + i, ctx);
     flint_free(a);
     fmpz_mpoly_clear(t, ctx); fmpz_mpoly_clear(g, ctx); fmpz_mpoly_clear(lf, ctx);
+    return rank;
+}
+
+int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
+                             const fmpz_mpoly_t f)
+{
+    if (s->n < 1 || s->from_char) return RS_OK;
+    rank_generic(out, nout, s, tv, f);
+    return RS_OK;
+}
+
+int rs_semisimple_generic(int *all, const rs_scheme_t s, const fmpz_mpoly_t p)
+{
+    fmpz_mpoly_factor_t fac;
+    slong k;
+    *all = 1;
+    fmpz_mpoly_factor_init(fac, s->zctx);
+    if (!fmpz_mpoly_factor(fac, p, s->zctx)) {
+        fmpz_mpoly_factor_clear(fac, s->zctx);
+        return RS_ERR_LIMIT;
+    }
+    for (k = 0; k < fac->num && *all; k++) {
+        fmpz_mpoly_struct *f = fac->poly + k;
+        slong e;
+        if (fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) < 1 || fmpz_cmp_ui(fac->exp + k, 2) < 0) continue;
+        e = fmpz_get_si(fac->exp + k);
+        if (s->from_char || s->n < 1 || s->n - rank_generic(NULL, NULL, s, -1, f) != e) *all = 0;
+    }
+    fmpz_mpoly_factor_clear(fac, s->zctx);
     return RS_OK;
 }

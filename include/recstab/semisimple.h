@@ -85,6 +85,14 @@ int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_s
 int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
                              const fmpz_mpoly_t f);
 
+/* Over Q(params): every repeated factor f^e of p (det A, the parameters of s
+ * symbolic) has dim ker A = e over Q(params)[lambda]/(f).  Then at every
+ * parameter value where f's roots stay simple and apart from the other
+ * factors' roots (1 <= dim ker <= multiplicity, and the rank only drops at
+ * special values) each root of f is semisimple.  *all = 0 for a `char`
+ * scheme with a repeated factor. */
+int rs_semisimple_generic(int *all, const rs_scheme_t s, const fmpz_mpoly_t p);
+
 #ifdef __cplusplus
 }
 #endif
