@@ -10,6 +10,7 @@
 #include "recstab/rootcount.h"
 #include "recstab/polyfmt.h"
 #include "recstab/semisimple.h"
+#include "recstab/cond.h"
 
 /* The variant with the case's set values substituted. */
 int rs_run_default_variant(rs_run_t *run, rs_variant_t **v)
@@ -198,6 +199,190 @@ int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const
     return r;
 }
 
+/* ---- conditions checked at sample points ----------------------------------- */
+
+/* Candidate values of one parameter inside its assumed interval b: both
+ * signs when the sign is free (a free-sign leading coefficient must meet
+ * both branches), spread over bounded intervals. */
+static slong sample_candidates(fmpq *c, const rs_bound_t *b)
+{
+    static const slong num[] = {1, 3, 1, 7, 2, 5, 1, 11, 9, 4};
+    static const slong den[] = {2, 1, 3, 2, 1, 3, 1, 4, 7, 1};
+    slong n = 0, i;
+    fmpq_t t, w;
+    fmpq_init(t);
+    fmpq_init(w);
+    if (b->fixed) {
+        fmpq_set(c + n++, b->lo);
+    } else if (b->has_lo && b->has_hi) {
+        fmpq_sub(w, b->hi, b->lo);
+        for (i = 1; i < 10; i++) {       /* lo + w*i/10, never an end */
+            fmpq_mul_si(t, w, i);
+            fmpz_mul_ui(fmpq_denref(t), fmpq_denref(t), 10);
+            fmpq_canonicalise(t);
+            fmpq_add(c + n++, b->lo, t);
+        }
+    } else {
+        for (i = 0; i < 10; i++) {
+            fmpq_set_si(t, num[i], (ulong) den[i]);
+            if (b->has_lo) fmpq_add(c + n++, b->lo, t);
+            else if (b->has_hi) fmpq_sub(c + n++, b->hi, t);
+            else { if (i % 2) fmpq_neg(t, t); fmpq_set(c + n++, t); }
+        }
+    }
+    fmpq_clear(t);
+    fmpq_clear(w);
+    return n;
+}
+
+/* p(lambda) at the rational point pp as an integer polynomial (denominators
+ * cleared: same roots). */
+static void p_at_point(fmpz_poly_t u, const rs_variant_t *v, fmpq *const *pp)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t c;
+    fmpq_poly_t f;
+    fmpq_t x;
+    slong j;
+    fmpz_mpoly_init(c, s->zctx);
+    fmpq_poly_init(f);
+    fmpq_init(x);
+    for (j = 0; j <= v->cp->degree; j++) {
+        rs_charpoly_coeff(c, v->cp->p, j, s->lambda_var, s->zctx);
+        rs_hurwitz_eval(x, c, pp, s->zctx);
+        fmpq_poly_set_coeff_fmpq(f, j, x);
+    }
+    fmpq_poly_get_numerator(u, f);
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpq_poly_clear(f);
+    fmpq_clear(x);
+}
+
+#define SAMPLE_POINTS 12
+#define SAMPLE_TRIES 80
+
+/* Checks conditions (holds(data, point) = 1 stable, 0 not, -1 on a boundary)
+ * against the exact verdict (Routh and Schur-Cohn on p at the point) at a
+ * few deterministic rational points that satisfy the assume lines and the
+ * non-zero assumptions; points where p loses degree are skipped.  Adds
+ * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
+int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o)
+{
+    const rs_scheme_struct *s = v->s;
+    slong np = run->c->nparams, i, j, k, ncp = 0, nok = 0, maxpts = SAMPLE_POINTS;
+    rs_bound_t *b = flint_malloc((np + 1) * sizeof(rs_bound_t));
+    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
+    fmpq *cand = _fmpq_vec_init(10 * (np + 1)), *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    slong *ncand = flint_calloc(np + 1, sizeof(slong));
+    json_t *chk = json_object(), *bad = NULL;
+    rs_error_t e2;
+    const char *key;
+    json_t *val;
+    int r = RS_OK;
+
+    rs_error_init(e2);
+    rs_bounds_init(b, np);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(b, &run->c->assume[i], run->c, e2);
+    json_object_foreach(v->assigned, key, val) {      /* set values and `at` values */
+        slong idx = rs_case_param_index(run->c, key);
+        if (idx < 0 || fmpq_set_str(b[idx].lo, json_string_value(val), 10) != 0) continue;
+        fmpq_canonicalise(b[idx].lo);
+        fmpq_set(b[idx].hi, b[idx].lo);
+        b[idx].fixed = b[idx].has_lo = b[idx].has_hi = b[idx].lo_closed = b[idx].hi_closed = 1;
+    }
+    for (i = 0; i < run->c->nassume; i++) {
+        if (rs_condpoly_compile(cps + ncp, &run->c->assume[i], s, run->c, e2) != RS_OK) break;
+        ncp++;
+    }
+    for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
+    for (k = 0; k < np; k++) ncand[k] = rs_bound_empty(b + k) ? 0 : sample_candidates(cand + 10 * k, b + k);
+    {
+        char *fp = rs_run_free_params(v);
+        if (*fp == '\0') maxpts = 1;   /* nothing varies */
+        free(fp);
+    }
+    for (j = 0; j < SAMPLE_TRIES && nok < maxpts && r == RS_OK && bad == NULL; j++) {
+        int ok = 1, says;
+        fmpz_poly_t u;
+        for (k = 0; k < np && ok; k++) {
+            if (ncand[k] == 0) { ok = 0; break; }
+            /* a different stride per parameter: the points mix the candidates */
+            fmpq_set(pt + k, cand + 10 * k + (j * (2 * k + 1) + j / ncand[k] + k) % ncand[k]);
+        }
+        for (k = 0; k < ncp && ok; k++) ok = rs_condpoly_holds(cps + k, pp, s) == 1;
+        for (k = 0; k < s->nnonzero && ok; k++) {
+            fmpq_t z;
+            fmpq_init(z);
+            fmpq_mpoly_evaluate_all_fmpq(z, s->nonzero + k, pp, s->ctx);
+            ok = !fmpq_is_zero(z);
+            fmpq_clear(z);
+        }
+        if (!ok) continue;
+        fmpz_poly_init(u);
+        p_at_point(u, v, pp);
+        says = holds(data, pp, s);
+        if (fmpz_poly_degree(u) == v->cp->degree && says >= 0) {
+            rs_rootcount_t rc;
+            rs_status_t st;
+            rs_rootcount_init(rc);
+            r = rs_run_exact_count(rc, run, u, NULL);
+            st = rs_rootcount_status(rc);
+            nok++;
+            if (r == RS_OK && (st == RS_STATUS_STABLE) != (says == 1)) {
+                bad = json_object();
+                for (k = 0; k < np; k++)
+                    if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
+                        json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
+                json_object_set_new(chk, "point", bad);
+                json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
+                json_object_set_new(chk, "exact_verdict", json_string(rs_status_name(st)));
+                rs_json_add_count(chk, rc);
+            }
+            rs_rootcount_clear(rc);
+        }
+        fmpz_poly_clear(u);
+    }
+    json_object_set_new(chk, "points", json_integer(nok));
+    json_object_set_new(chk, "agree", json_boolean(bad == NULL));
+    json_object_set_new(chk, "against", json_string("exact verdict (Routh and Schur-Cohn) at rational points "
+                                                    "satisfying the assumptions"));
+    json_object_set_new(o, "sample_check", chk);
+    if (bad != NULL) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    for (i = 0; i < ncp; i++) rs_condpoly_clear(cps + i, s);
+    free(cps);
+    rs_bounds_clear(b, np);
+    flint_free(b);
+    _fmpq_vec_clear(cand, 10 * (np + 1));
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    flint_free(ncand);
+    return r;
+}
+
+/* p(x) of the polynomial as stated, det = content * lambda^k * p: the
+ * normalisation (content, its sign) undone. */
+static json_t *p_at_stated(const rs_variant_t *v, slong x)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpq_mpoly_t t;
+    fmpz_t xx;
+    char *str;
+    json_t *j;
+    fmpq_mpoly_init(t, s->ctx);
+    fmpz_init_set_si(xx, x);
+    fmpz_mpoly_evaluate_one_fmpz(t->zpoly, v->cp->p, s->lambda_var, xx, s->zctx);
+    fmpq_set(t->content, v->cp->content);
+    if (x < 0 && (v->cp->removed_lambda_power & 1)) fmpq_neg(t->content, t->content);
+    fmpq_mpoly_reduce(t, s->ctx);
+    str = rs_polyfmt_fmpq_mpoly(t, (const char **) s->vars, s->ctx);
+    j = json_string(str);
+    free(str);
+    fmpz_clear(xx);
+    fmpq_mpoly_clear(t, s->ctx);
+    return j;
+}
+
 /* ---- bilinear ------------------------------------------------------------- */
 
 static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
@@ -227,17 +412,8 @@ static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_object_set_new(o, "degree_drop", json_integer(v->cp->degree - d));
     json_object_set_new(o, "zero_mult", json_integer(rs_scheme_min_degree(qz, lv, s->zctx)));
     /* where lambda = -1 / lambda = 1 become roots: p(-1) = 0 / p(1) = 0 */
-    {
-        fmpz_t one;
-        fmpz_init(one);
-        fmpz_set_si(one, 1);
-        fmpz_mpoly_evaluate_one_fmpz(t, v->cp->p, lv, one, s->zctx);
-        json_object_set_new(o, "p_at_1", rs_json_zpoly(t, s));
-        fmpz_set_si(one, -1);
-        fmpz_mpoly_evaluate_one_fmpz(t, v->cp->p, lv, one, s->zctx);
-        json_object_set_new(o, "p_at_minus_1", rs_json_zpoly(t, s));
-        fmpz_clear(one);
-    }
+    json_object_set_new(o, "p_at_1", p_at_stated(v, 1));
+    json_object_set_new(o, "p_at_minus_1", p_at_stated(v, -1));
     rs_run_emit_exact(run, v, o);
     fmpz_mpoly_clear(qz, s->zctx);
     fmpz_mpoly_clear(t, s->zctx);
@@ -354,6 +530,14 @@ static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
 
 /* ---- hurwitz -------------------------------------------------------------- */
 
+static void append_unique(json_t *arr, const char *str)
+{
+    size_t i;
+    for (i = 0; i < json_array_size(arr); i++)
+        if (strcmp(json_string_value(json_array_get(arr, i)), str) == 0) return;
+    json_array_append_new(arr, json_string(str));
+}
+
 static json_t *factor_str(const fmpz_mpoly_t f, const rs_scheme_t s)
 {
     return rs_json_zpoly(f, s);
@@ -370,33 +554,144 @@ int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mp
     return r;
 }
 
+/* The conditions of q(z) for every admissible sign of its leading
+ * coefficient (an OR of branches), q(z) into qz. */
+int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
+{
+    const rs_scheme_struct *s = v->s;
+    int *sign = rs_run_signs(run, s);
+    int r;
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+    r = rs_hurwitz_or_compute(hb, qz, s->lambda_var, v->cp->degree, (const rs_sign_t *) sign, s->zctx, run->err);
+    flint_free(sign);
+    return r;
+}
+
+static int hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    return rs_hurwitz_or_holds((const rs_hurwitz_or_struct *) data, pt, s->zctx);
+}
+
+/* Every stated condition of one branch: "reduced > 0" and "factor != 0". */
+static json_t *branch_json(const rs_hurwitz_t h, const rs_scheme_t s)
+{
+    json_t *a = json_array();
+    slong i, k;
+    for (i = 0; i < h->ncond; i++) {
+        char *line;
+        if (h->cond[i].trivially_true) continue;
+        line = rs_cond_string(h->cond[i].reduced, s, "> 0");
+        append_unique(a, line);
+        free(line);
+    }
+    for (i = 0; i < h->ncond; i++)
+        for (k = 0; k < h->cond[i].factors->num; k++)
+            if (!h->cond[i].dropped[k] && h->cond[i].even[k]) {
+                char *line = rs_cond_string(h->cond[i].factors->poly + k, s, "!= 0");
+                append_unique(a, line);
+                free(line);
+            }
+    return a;
+}
+
+/* Why no branch exists (lambda = -1 or 1 a root for every value), or NULL. */
+static const char *hurwitz_never_reason(const rs_hurwitz_or_t hb, char *buf, size_t len)
+{
+    if (hb->degree_drop > 0)
+        snprintf(buf, len, "p(-1) = 0 for every parameter value: lambda = -1 is a root (multiplicity %ld: q(z) "
+                 "has degree %ld less); never asymptotically stable", (long) hb->degree_drop, (long) hb->degree_drop);
+    else if (hb->zero_mult > 0)
+        snprintf(buf, len, "p(1) = 0 for every parameter value: lambda = 1 is a root (multiplicity %ld: z^%ld "
+                 "divides q(z)); never asymptotically stable", (long) hb->zero_mult, (long) hb->zero_mult);
+    else
+        return NULL;
+    return buf;
+}
+
+/* "conditions" (one branch) or "branches" (an OR of two), "never" when
+ * no branch can hold; returns 1 if every condition of a branch holds under
+ * the assumptions, -1 if no branch can hold, 0 otherwise. */
+int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
+{
+    char buf[300];
+    const char *why = hurwitz_never_reason(hb, buf, sizeof buf);
+    slong i;
+    if (why != NULL) {
+        json_object_set_new(o, "conditions", json_pack("[s]", "0 > 0"));
+        json_object_set_new(o, "never", json_string(why));
+        return -1;
+    }
+    if (hb->nbranch == 2) {
+        json_t *br = json_array();
+        for (i = 0; i < 2; i++) json_array_append_new(br, branch_json(hb->branch + i, s));
+        json_object_set_new(o, "branches", br);
+        json_object_set_new(o, "branches_note", json_string(
+            "stable iff every condition of one branch holds (the sign of the leading coefficient of q(z) is "
+            "not fixed by the assumptions; Lienard-Chipart applies to q or -q, whichever has it positive)"));
+        return 0;
+    }
+    for (i = 0; i < hb->branch[0].ncond; i++)
+        if (hb->branch[0].cond[i].trivially_false) return -1;
+    for (i = 0; i < hb->branch[0].ncond; i++)
+        if (!hb->branch[0].cond[i].trivially_true) return 0;
+    return 1;
+}
+
+/* Conditions equivalent to stability for every admissible value into o:
+ * "conditions" (one branch: every stated condition, non-zero ones
+ * included), "branches" (an OR) or "never"; checked at sample points.
+ * Returns as rs_json_hurwitz_or through *verdict, or an error code. */
+int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict)
+{
+    const rs_scheme_struct *s = v->s;
+    rs_hurwitz_or_t hb;
+    fmpz_mpoly_t qz;
+    int r;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_or_init(hb);
+    r = rs_run_hurwitz_or(hb, run, v, qz);
+    if (r == RS_OK) {
+        *verdict = rs_json_hurwitz_or(o, hb, s);
+        if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
+            json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
+        r = rs_run_sample_check(run, v, hurwitz_or_holds, hb, o);
+    }
+    rs_hurwitz_or_clear(hb, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    return r;
+}
+
 static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
-    rs_hurwitz_t h;
+    rs_hurwitz_or_t hb;
+    const rs_hurwitz_struct *h;
     fmpz_mpoly_t qz;
     json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
     slong i, k;
-    int r, all_true = 1, some_false = 0;
+    int r, verdict;
     if (*rest != '\0')
         return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after hurwitz, found '%s'", rest);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
     fmpz_mpoly_init(qz, s->zctx);
-    rs_hurwitz_init(h);
-    r = rs_run_hurwitz(h, run, v, qz);
+    rs_hurwitz_or_init(hb);
+    r = rs_run_hurwitz_or(hb, run, v, qz);
     if (r != RS_OK) {
-        rs_hurwitz_clear(h, s->zctx);
+        rs_hurwitz_or_clear(hb, s->zctx);
         fmpz_mpoly_clear(qz, s->zctx);
         return r;
     }
+    h = hb->branch + 0;
     o = json_object();
     json_object_set_new(o, "analysis", json_string("hurwitz"));
     json_object_set_new(o, "var", json_string("z"));
-    json_object_set_new(o, "degree", json_integer(h->n));
+    json_object_set_new(o, "degree", json_integer(hb->nbranch > 0 ? h->n : v->cp->degree));
     json_object_set_new(o, "negated", json_boolean(h->negated));
+    json_object_set_new(o, "p_at_1", p_at_stated(v, 1));
+    json_object_set_new(o, "p_at_minus_1", p_at_stated(v, -1));
     minors = json_array();
     for (i = 0; i < h->n; i++) json_array_append_new(minors, rs_json_zpoly(h->minors + i, s));
     json_object_set_new(o, "minors", minors);
@@ -439,22 +734,29 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
             char *line = rs_cond_string(c->reduced, s, "> 0");
             json_array_append_new(conds, json_string(line));
             free(line);
-            all_true = 0;
-            if (c->trivially_false) some_false = 1;
         }
     }
-    json_object_set_new(o, "conditions", conds);
-    json_object_set_new(o, "nonzero", nonzero);
+    if (hb->nbranch == 1) {
+        json_object_set_new(o, "conditions", conds);
+        json_object_set_new(o, "nonzero", nonzero);
+    } else {
+        json_decref(conds);
+        json_decref(nonzero);
+    }
+    verdict = rs_json_hurwitz_or(o, hb, s);
     json_object_set_new(o, "dropped", dropped);
     json_object_set_new(o, "always_true", always);
     json_object_set_new(o, "details", details);
-    json_object_set_new(o, "verdict", json_string(all_true ? "stable under the assumptions"
-                                                  : some_false ? "never stable"
+    json_object_set_new(o, "verdict", json_string(verdict > 0 ? "stable under the assumptions"
+                                                  : verdict < 0 ? "never stable"
+                                                  : hb->nbranch == 2 ? "stable iff one branch holds"
                                                   : "stable iff the conditions hold"));
-    rs_run_emit_exact(run, v, o);
-    rs_hurwitz_clear(h, s->zctx);
+    r = rs_run_sample_check(run, v, hurwitz_or_holds, hb, o);
+    if (r == RS_OK) rs_run_emit_exact(run, v, o);
+    else json_decref(o);
+    rs_hurwitz_or_clear(hb, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
-    return RS_OK;
+    return r;
 }
 
 /* ---- jury / stability ----------------------------------------------------- */
@@ -466,14 +768,6 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
  * the content of its coefficients (a non-zero factor of the parameters does
  * not move roots and enters delta squared).  Generic: where a delta vanishes
  * the exact numeric test decides. */
-static void append_unique(json_t *arr, const char *str)
-{
-    size_t i;
-    for (i = 0; i < json_array_size(arr); i++)
-        if (strcmp(json_string_value(json_array_get(arr, i)), str) == 0) return;
-    json_array_append_new(arr, json_string(str));
-}
-
 static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
 {
     const rs_scheme_struct *s = v->s;

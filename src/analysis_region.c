@@ -21,6 +21,7 @@ char *rs_run_free_params(const rs_variant_t *v);
 void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
+int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
 
 /* ---- parsing helpers -------------------------------------------------------- */
 
@@ -390,34 +391,15 @@ static void sort_algs(alg_t *a, slong n)
  * conditions as functions of them (Hurwitz/Lienard-Chipart, factored). */
 static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
 {
-    rs_hurwitz_t h;
-    fmpz_mpoly_t qz;
-    const rs_scheme_struct *s = v->s;
-    json_t *conds = json_array();
-    slong i;
-    int r;
-    fmpz_mpoly_init(qz, s->zctx);
-    rs_hurwitz_init(h);
-    r = rs_run_hurwitz(h, run, v, qz);
+    int verdict, r = rs_run_symbolic_conditions(run, v, o, &verdict);
     if (r == RS_OK) {
-        for (i = 0; i < h->ncond; i++) {
-            char *line;
-            if (h->cond[i].trivially_true) continue;
-            line = rs_cond_string(h->cond[i].reduced, s, "> 0");
-            json_array_append_new(conds, json_string(line));
-            free(line);
-        }
         json_object_set_new(o, "symbolic", json_true());
-        json_object_set_new(o, "conditions", conds);
         json_object_set_new(o, "note", json_string(
             "other parameters are symbolic: stable iff every condition holds (Lienard-Chipart on the "
-            "bilinear polynomial, factors positive under the assumptions dropped); a region valid for all "
-            "admissible values is what `claim stable when ...` proves or refutes"));
-    } else {
-        json_decref(conds);
+            "bilinear polynomial, factors positive under the assumptions dropped; an OR of branches where the "
+            "sign of its leading coefficient is free); a region valid for all admissible values is what "
+            "`claim stable when ...` proves or refutes"));
     }
-    rs_hurwitz_clear(h, s->zctx);
-    fmpz_mpoly_clear(qz, s->zctx);
     return r;
 }
 

@@ -568,3 +568,184 @@ rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         rs_hurwitz_clear(h, ctx);
     return r;
 }
+
+/* ------------------------------------------------------------------ */
+/* branches: every sign of a_n                                         */
+
+void
+rs_hurwitz_or_init(rs_hurwitz_or_t hb)
+{
+    hb->nbranch = 0;
+    rs_hurwitz_init(hb->branch + 0);
+    rs_hurwitz_init(hb->branch + 1);
+    hb->alive[0] = hb->alive[1] = 0;
+    hb->degree_drop = 0;
+    hb->zero_mult = 0;
+}
+
+void
+rs_hurwitz_or_clear(rs_hurwitz_or_t hb, const fmpz_mpoly_ctx_t ctx)
+{
+    rs_hurwitz_clear(hb->branch + 0, ctx);
+    rs_hurwitz_clear(hb->branch + 1, ctx);
+    rs_hurwitz_or_init(hb);
+}
+
+static int
+_branch_alive(const rs_hurwitz_t h)
+{
+    slong i;
+    for (i = 0; i < h->ncond; i++)
+        if (h->cond[i].trivially_false)
+            return 0;
+    return 1;
+}
+
+int
+rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
+                      slong degree, const rs_sign_t *sign,
+                      const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    slong i, n = 0, lo = WORD_MAX;
+    int r;
+
+    rs_hurwitz_or_clear(hb, ctx);
+    if (!fmpz_mpoly_is_zero(q, ctx) && fmpz_mpoly_degrees_fit_si(q, ctx)
+        && zvar >= 0 && zvar < fmpz_mpoly_ctx_nvars(ctx)) {
+        for (i = 0; i < fmpz_mpoly_length(q, ctx); i++) {
+            slong e = fmpz_mpoly_get_term_var_exp_si(q, i, zvar, ctx);
+            n = FLINT_MAX(n, e);
+            lo = FLINT_MIN(lo, e);
+        }
+        /* q(z) = (1 - z)^degree p((1 + z)/(1 - z)) has degree < degree
+         * exactly when p(-1) = 0, and q(0) = p(1) */
+        if (n < degree) {
+            hb->degree_drop = degree - n;
+            return RS_OK;
+        }
+        if (lo > 0) {
+            hb->zero_mult = lo;
+            return RS_OK;
+        }
+    }
+    r = rs_hurwitz_compute(hb->branch + 0, q, zvar, sign, ctx, err);
+    if (r != RS_OK)
+        return r;
+    hb->nbranch = 1;
+    if (!hb->branch[0].negated && !hb->branch[0].cond[0].trivially_true) {
+        fmpz_mpoly_t mq;
+        fmpz_mpoly_init(mq, ctx);
+        fmpz_mpoly_neg(mq, q, ctx);
+        r = rs_hurwitz_compute(hb->branch + 1, mq, zvar, sign, ctx, err);
+        fmpz_mpoly_clear(mq, ctx);
+        if (r != RS_OK) {
+            rs_hurwitz_or_clear(hb, ctx);
+            return r;
+        }
+        hb->branch[1].negated = 1;
+        hb->nbranch = 2;
+    }
+    for (i = 0; i < hb->nbranch; i++)
+        hb->alive[i] = _branch_alive(hb->branch + i);
+    if (hb->nbranch == 2 && !hb->alive[1]) {
+        rs_hurwitz_clear(hb->branch + 1, ctx);
+        hb->nbranch = 1;
+    } else if (hb->nbranch == 2 && !hb->alive[0]) {
+        rs_hurwitz_struct t = hb->branch[0];
+        hb->branch[0] = hb->branch[1];
+        hb->branch[1] = t;
+        rs_hurwitz_clear(hb->branch + 1, ctx);
+        hb->alive[0] = 1;
+        hb->alive[1] = 0;
+        hb->nbranch = 1;
+    }
+    return RS_OK;
+}
+
+void
+rs_hurwitz_eval(fmpq_t out, const fmpz_mpoly_t poly, fmpq *const *vals,
+                const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, v, nvars = fmpz_mpoly_ctx_nvars(ctx);
+    ulong *e = flint_malloc(nvars * sizeof(ulong));
+    fmpq_t term, pw;
+
+    fmpq_init(term);
+    fmpq_init(pw);
+    fmpq_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(poly, ctx); i++) {
+        fmpz_mpoly_get_term_exp_ui(e, poly, i, ctx);
+        fmpz_set(fmpq_numref(term), poly->coeffs + i);
+        fmpz_one(fmpq_denref(term));
+        for (v = 0; v < nvars; v++) {
+            if (e[v] == 0)
+                continue;
+            fmpq_pow_si(pw, vals[v], (slong) e[v]);
+            fmpq_mul(term, term, pw);
+        }
+        fmpq_add(out, out, term);
+    }
+    fmpq_clear(term);
+    fmpq_clear(pw);
+    flint_free(e);
+}
+
+int
+rs_hurwitz_sign_at(const fmpz_mpoly_t poly, fmpq *const *vals,
+                   const fmpz_mpoly_ctx_t ctx)
+{
+    fmpq_t x;
+    int s;
+
+    fmpq_init(x);
+    rs_hurwitz_eval(x, poly, vals, ctx);
+    s = fmpq_sgn(x);
+    fmpq_clear(x);
+    return s;
+}
+
+/* 1 / 0 as the stated conditions of h hold at vals, -1 if one vanishes */
+static int
+_branch_holds(const rs_hurwitz_t h, fmpq *const *vals,
+              const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, k;
+    int ok = 1;
+
+    for (i = 0; i < h->ncond; i++) {
+        const rs_hurwitz_cond_struct *c = h->cond + i;
+        int s;
+        if (c->trivially_true)
+            continue;
+        s = rs_hurwitz_sign_at(c->reduced, vals, ctx);
+        if (s == 0)
+            return -1;
+        if (s < 0)
+            ok = 0;
+        for (k = 0; k < c->factors->num; k++)
+            if (!c->dropped[k] && c->even[k]
+                && rs_hurwitz_sign_at(c->factors->poly + k, vals, ctx) == 0)
+                return -1;
+    }
+    return ok;
+}
+
+int
+rs_hurwitz_or_holds(const rs_hurwitz_or_t hb, fmpq *const *vals,
+                    const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    int res = 0;
+
+    for (i = 0; i < hb->nbranch; i++) {
+        int b;
+        if (!hb->alive[i])
+            continue;
+        b = _branch_holds(hb->branch + i, vals, ctx);
+        if (b < 0)
+            return -1;
+        if (b > 0)
+            res = 1;
+    }
+    return res;
+}

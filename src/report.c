@@ -194,6 +194,43 @@ static void r_routh(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
+/* "branches" (an OR of condition lists) or the reason no branch exists;
+ * returns 1 if either was printed. */
+static int print_branches(FILE *out, const json_t *o)
+{
+    const json_t *br = json_object_get(o, "branches");
+    size_t i, j;
+    if (jstr(o, "never") != NULL) {
+        line(out, "never", "%s", jstr(o, "never"));
+        return 1;
+    }
+    if (!json_is_array(br)) return 0;
+    for (i = 0; i < json_array_size(br); i++) {
+        const json_t *b = json_array_get(br, i);
+        for (j = 0; j < json_array_size(b); j++)
+            line(out, j > 0 ? "and" : i == 0 ? "stable iff" : "or", "%s", json_string_value(json_array_get(b, j)));
+    }
+    return 1;
+}
+
+/* the conditions checked against exact point verdicts */
+static void print_sample_check(FILE *out, const json_t *o)
+{
+    const json_t *c = json_object_get(o, "sample_check");
+    char buf[300];
+    if (c == NULL) return;
+    if (json_is_true(json_object_get(c, "agree"))) {
+        snprintf(buf, sizeof buf, "conditions agree with the exact verdict at %lld admissible rational points",
+                 jint(c, "points"));
+    } else {
+        char *pt = json_dumps(json_object_get(c, "point"), JSON_COMPACT | JSON_SORT_KEYS);
+        snprintf(buf, sizeof buf, "DISAGREEMENT at %s: the conditions say %s, the exact verdict is %s", pt,
+                 jstr(c, "conditions_say"), jstr(c, "exact_verdict"));
+        free(pt);
+    }
+    line(out, "checked", "%s", buf);
+}
+
 static void r_hurwitz(FILE *out, const json_t *o)
 {
     const json_t *minors = json_object_get(o, "minors");
@@ -205,9 +242,12 @@ static void r_hurwitz(FILE *out, const json_t *o)
         snprintf(lab, sizeof lab, "D_%zu", i + 1);
         line(out, lab, "%s", json_string_value(json_array_get(minors, i)));
     }
-    if (json_array_size(conds) == 0)
+    if (print_branches(out, o)) {
+        /* an OR of condition sets: printed by print_branches */
+    } else if (json_array_size(conds) == 0) {
         line(out, "conditions", "%s", "none left: every Lienard-Chipart condition holds under the assumptions");
-    for (i = 0; i < json_array_size(conds); i++)
+    }
+    for (i = 0; i < json_array_size(conds) && jstr(o, "never") == NULL; i++)
         line(out, i == 0 ? "conditions" : "", "%s", json_string_value(json_array_get(conds, i)));
     print_string_list(out, "and", json_object_get(o, "nonzero"), ", ");
     for (i = 0; i < json_array_size(dropped); i++) {
@@ -217,7 +257,10 @@ static void r_hurwitz(FILE *out, const json_t *o)
         line(out, i == 0 ? "dropped" : "", "%s", buf);
     }
     print_string_list(out, "always true", json_object_get(o, "always_true"), ", ");
+    line(out, "p(1)", "%s (lambda = 1 is a root where this vanishes)", jstr(o, "p_at_1"));
+    line(out, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", jstr(o, "p_at_minus_1"));
     line(out, "verdict", "%s", jstr(o, "verdict"));
+    print_sample_check(out, o);
     print_assigned(out, o);
 }
 
@@ -272,9 +315,12 @@ static void r_region(FILE *out, const json_t *o)
     size_t i;
     if (json_is_true(json_object_get(o, "symbolic"))) {
         const json_t *c = json_object_get(o, "conditions");
-        for (i = 0; i < json_array_size(c); i++)
+        if (!print_branches(out, o) && json_array_size(c) == 0)
+            line(out, "stable iff", "%s", "true: every condition holds under the assumptions");
+        for (i = 0; i < json_array_size(c) && jstr(o, "never") == NULL; i++)
             line(out, i == 0 ? "stable iff" : "and", "%s", json_string_value(json_array_get(c, i)));
         line(out, "note", "%s", jstr(o, "note"));
+        print_sample_check(out, o);
         print_assigned(out, o);
         return;
     }

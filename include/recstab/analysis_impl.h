@@ -155,4 +155,10 @@ void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, i
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */
 int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
 
+/* Symbolic conditions checked against the exact point verdict
+ * (src/analysis_exact.c): holds(data, point, s) is 1 (stable), 0 (not) or
+ * -1 (a condition vanishes: skipped) at point[v] for every variable. */
+typedef int (*rs_holds_fn)(const void *data, fmpq *const *point, const rs_scheme_struct *s);
+int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o);
+
 #endif

@@ -18,6 +18,7 @@
 #include <flint/flint.h>
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_mpoly_factor.h>
+#include <flint/fmpq.h>
 #include "recstab/error.h"
 
 #ifdef __cplusplus
@@ -89,6 +90,49 @@ int rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
  * rs_hurwitz_compute. */
 int rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                     const fmpz_mpoly_ctx_t ctx);
+
+/* Stability conditions valid for every parameter value the signs allow: an
+ * OR of Lienard-Chipart condition sets.  Lienard-Chipart needs a_n > 0; where
+ * the assumptions do not fix the sign of a_n, the set of q (with "a_n > 0")
+ * and the set of -q (with "-a_n > 0") are both needed.  Either excludes
+ * a_n = 0 (p(-1) = 0, a root lambda = -1).  When q loses degree for every
+ * value (degree_drop > 0: lambda = -1 is always a root) or z divides q for
+ * every value (zero_mult > 0: lambda = 1 is always a root) there is no
+ * branch: never asymptotically stable. */
+typedef struct {
+    slong nbranch;                 /* 0, 1 or 2 */
+    rs_hurwitz_struct branch[2];   /* [0]: q (negated when a_n is provably
+                                      negative); [1]: -q (negated = 1) */
+    int alive[2];                  /* 0: a condition is trivially false */
+    slong degree_drop;             /* degree - deg_z q when > 0 */
+    slong zero_mult;               /* z^k | q for every value: k */
+} rs_hurwitz_or_struct;
+typedef rs_hurwitz_or_struct rs_hurwitz_or_t[1];
+
+void rs_hurwitz_or_init(rs_hurwitz_or_t hb);
+void rs_hurwitz_or_clear(rs_hurwitz_or_t hb, const fmpz_mpoly_ctx_t ctx);
+
+/* The branches for q, where `degree` is the degree q has for generic
+ * values (the degree of p in lambda).  A branch is kept when it can hold; if
+ * none can, branch 0 is kept (alive[0] = 0) to show why.  Errors as
+ * rs_hurwitz_compute (degree 0 in z is an error only when degree is 0). */
+int rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
+                          slong degree, const rs_sign_t *sign,
+                          const fmpz_mpoly_ctx_t ctx, rs_error_t err);
+
+/* The stated conditions (reduced > 0, kept even factors != 0, trivially
+ * true ones skipped) at a rational point vals[v] (all variables; z's entry
+ * ignored): 1 if every condition of some live branch holds, 0 if none,
+ * -1 if a condition of a live branch vanishes there (a boundary point). */
+int rs_hurwitz_or_holds(const rs_hurwitz_or_t hb, fmpq *const *vals,
+                        const fmpz_mpoly_ctx_t ctx);
+
+/* poly at the rational point vals[v] (all variables), exactly. */
+void rs_hurwitz_eval(fmpq_t out, const fmpz_mpoly_t poly, fmpq *const *vals,
+                     const fmpz_mpoly_ctx_t ctx);
+/* Sign (-1, 0, 1) of poly at the rational point vals[v] (all variables). */
+int rs_hurwitz_sign_at(const fmpz_mpoly_t poly, fmpq *const *vals,
+                       const fmpz_mpoly_ctx_t ctx);
 
 /* Hurwitz matrix entry convention and minors for display: D_k as strings
  * are produced by the report module with fmpz_mpoly_get_str_pretty. */
