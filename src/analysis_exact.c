@@ -768,6 +768,49 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
  * the content of its coefficients (a non-zero factor of the parameters does
  * not move roots and enters delta squared).  Generic: where a delta vanishes
  * the exact numeric test decides. */
+/* The symbolic Schur-Cohn conditions as polynomials: poly > 0, or
+ * poly != 0 when ne[i] (for the check at sample points). */
+typedef struct {
+    slong n;
+    fmpz_mpoly_struct *poly;
+    int *ne;
+    const fmpz_mpoly_ctx_struct *ctx;
+} jury_conds_t;
+
+static void jury_conds_add(jury_conds_t *c, const fmpz_mpoly_t p, int ne)
+{
+    c->poly = flint_realloc(c->poly, (c->n + 1) * sizeof(fmpz_mpoly_struct));
+    c->ne = flint_realloc(c->ne, (c->n + 1) * sizeof(int));
+    fmpz_mpoly_init(c->poly + c->n, c->ctx);
+    fmpz_mpoly_set(c->poly + c->n, p, c->ctx);
+    c->ne[c->n++] = ne;
+}
+
+static void jury_conds_clear(jury_conds_t *c)
+{
+    slong i;
+    for (i = 0; i < c->n; i++) fmpz_mpoly_clear(c->poly + i, c->ctx);
+    flint_free(c->poly);
+    flint_free(c->ne);
+}
+
+/* 1 if every condition holds, 0 if one fails, -1 if one vanishes (a
+ * condition identically 0 > 0 just fails) */
+static int jury_conds_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    const jury_conds_t *c = data;
+    slong i;
+    int ok = 1;
+    for (i = 0; i < c->n; i++) {
+        int sg;
+        if (fmpz_mpoly_is_zero(c->poly + i, s->zctx)) { ok = 0; continue; }
+        sg = rs_hurwitz_sign_at(c->poly + i, pt, s->zctx);
+        if (sg == 0) return -1;
+        if (!c->ne[i] && sg < 0) ok = 0;
+    }
+    return ok;
+}
+
 static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
 {
     const rs_scheme_struct *s = v->s;
@@ -777,6 +820,8 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     json_t *rows = json_array(), *conds = json_array(), *dropped = json_array();
     int *sign = rs_run_signs(run, s);
     int r = RS_OK;
+    jury_conds_t jc;
+    jc.n = 0; jc.poly = NULL; jc.ne = NULL; jc.ctx = s->zctx;
     for (j = 0; j <= n; j++) {
         fmpz_mpoly_init(a + j, s->zctx);
         rs_charpoly_coeff(a + j, v->cp->p, j, lv, s->zctx);
@@ -805,6 +850,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
              * self-reciprocal p, roots symmetric about the circle): never
              * asymptotically stable; the exact numeric test counts the roots */
             append_unique(conds, "0 > 0");
+            jury_conds_add(&jc, delta, 0);
             json_object_set_new(o, "singular_row", json_integer(n - k));
             fmpz_mpoly_factor_clear(f, s->zctx);
             break;
@@ -827,6 +873,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
                 else {
                     char *line = rs_cond_string(f->poly + i, s, "!= 0");
                     append_unique(conds, line);
+                    jury_conds_add(&jc, f->poly + i, 1);
                     free(line);
                 }
             }
@@ -834,6 +881,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             if (!fmpz_mpoly_is_one(kept, s->zctx)) {
                 char *line = rs_cond_string(kept, s, "> 0");
                 append_unique(conds, line);
+                jury_conds_add(&jc, kept, 0);
                 free(line);
             }
             fmpz_mpoly_clear(kept, s->zctx);
@@ -874,11 +922,13 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
             "all |lambda| < 1 iff every lead^2 - const^2 > 0 (generic: where a condition vanishes, set the parameters "
             "for the exact singular-case treatment)"));
+        r = rs_run_sample_check(run, v, jury_conds_holds, &jc, o);
     } else {
         json_decref(rows);
         json_decref(conds);
         json_decref(dropped);
     }
+    jury_conds_clear(&jc);
     return r;
 }
 

@@ -276,6 +276,7 @@ static void r_jury(FILE *out, const json_t *o)
         for (i = 0; i < json_array_size(c); i++)
             line(out, i == 0 ? "stable iff" : "and", "%s", json_string_value(json_array_get(c, i)));
         line(out, "note", "%s", jstr(o, "note"));
+        print_sample_check(out, o);
         print_assigned(out, o);
         return;
     }
