@@ -290,14 +290,25 @@ static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
 {
     if (a == NULL && b == NULL) { fmpq_zero(out); return; }
     if (b == NULL || a == NULL) {
+        /* an integer beyond the end: past the rational end itself, or past
+         * the far bound of the certified enclosure of an algebraic end (the
+         * midpoint of a 64-bit ball of 2*10^40 is off by about 10^21) */
         alg_t *e = a ? a : b;
         fmpz_t f;
+        arf_t bd;
         fmpz_init(f);
-        alg_refine(e, 64);
-        if (a) { arf_get_fmpz(f, arb_midref(e->x), ARF_RND_CEIL); fmpz_add_ui(f, f, 1); }
-        else { arf_get_fmpz(f, arb_midref(e->x), ARF_RND_FLOOR); fmpz_sub_ui(f, f, 1); }
+        arf_init(bd);
+        if (e->rational) {
+            if (a) { fmpz_fdiv_q(f, fmpq_numref(e->q), fmpq_denref(e->q)); fmpz_add_ui(f, f, 1); }
+            else { fmpz_cdiv_q(f, fmpq_numref(e->q), fmpq_denref(e->q)); fmpz_sub_ui(f, f, 1); }
+        } else {
+            alg_refine(e, 64);
+            if (a) { arb_get_ubound_arf(bd, e->x, 64); arf_get_fmpz(f, bd, ARF_RND_FLOOR); fmpz_add_ui(f, f, 1); }
+            else { arb_get_lbound_arf(bd, e->x, 64); arf_get_fmpz(f, bd, ARF_RND_CEIL); fmpz_sub_ui(f, f, 1); }
+        }
         fmpz_set(fmpq_numref(out), f);
         fmpz_one(fmpq_denref(out));
+        arf_clear(bd);
         fmpz_clear(f);
         return;
     }
