@@ -457,12 +457,40 @@ static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_routh_init(ro);
         r = rs_routh_fmpz_poly(ro, p, run->err);
         if (r == RS_OK) {
+            json_t *pw = json_array();
             for (i = 0; i < ro->nrows; i++) {
                 json_t *row = json_array();
                 for (j = 0; j < ro->rowlen[i]; j++)
                     json_array_append_new(row, rs_json_fmpq(ro->rows[i] + j));
                 json_array_append_new(rows, row);
+                json_array_append_new(pw, json_integer(ro->rowpow[i]));
             }
+            if (ro->neps > 0) {
+                /* zero pivot: the textbook rows (one per power) in Q(eps) for
+                 * display; the exact generalised rows are kept beside them */
+                json_t *er = json_array(), *ep = json_array(), *es = json_array();
+                for (i = 0; i < ro->neps; i++) {
+                    json_t *row = json_array();
+                    for (j = 0; j < ro->epslen[i]; j++) {
+                        char *str = fmpz_poly_q_get_str_pretty(ro->eps[i] + j, "eps");
+                        json_array_append_new(row, json_string(str));
+                        flint_free(str);
+                    }
+                    json_array_append_new(er, row);
+                    json_array_append_new(ep, json_integer(ro->neps - 1 - i));
+                    json_array_append_new(es, json_integer(ro->epssign[i]));
+                }
+                json_object_set_new(o, "generalised_rows", rows);
+                json_object_set_new(o, "generalised_powers", pw);
+                json_object_set_new(o, "epsilon_signs", es);
+                json_object_set_new(o, "epsilon_note", json_string(
+                    "rows: the textbook array computed exactly in Q(eps), each zero first entry replaced by eps; "
+                    "epsilon_signs: the first column as eps -> 0+; the count is decided by the exact generalised "
+                    "step (generalised_rows, remainders of the two rows above, powers in generalised_powers)"));
+                rows = er;
+                pw = ep;
+            }
+            json_object_set_new(o, "powers", pw);
             for (i = 0; i < ro->nevents; i++)
                 json_array_append_new(ev, json_pack("{s:s,s:I,s:I,s:s}", "kind",
                                       event_name(ro->events[i].kind), "row", (json_int_t) ro->events[i].row,

@@ -154,13 +154,15 @@ static void r_bilinear(FILE *out, const json_t *o)
     print_assigned(out, o);
 }
 
-static void print_rows(FILE *out, const json_t *rows, slong deg)
+static void print_rows(FILE *out, const json_t *rows, slong deg, const json_t *powers)
 {
     size_t i, j;
     for (i = 0; i < json_array_size(rows); i++) {
         const json_t *row = json_array_get(rows, i);
         char lab[32];
-        snprintf(lab, sizeof lab, "z^%ld", (long) (deg - (slong) i));
+        /* each row's own power: the generalised step may skip powers */
+        snprintf(lab, sizeof lab, "z^%ld", json_is_integer(json_array_get(powers, i))
+                 ? (long) json_integer_value(json_array_get(powers, i)) : (long) (deg - (slong) i));
         fprintf(out, "  %-*s ", LABEL_W, lab);
         for (j = 0; j < json_array_size(row); j++)
             fprintf(out, "%s%s", j ? "   " : "", json_string_value(json_array_get(row, j)));
@@ -176,14 +178,24 @@ static void r_routh(FILE *out, const json_t *o)
     slong deg = (slong) json_array_size(rows) - 1;
     if (json_is_true(json_object_get(o, "symbolic"))) {
         line(out, "array", "%s", "fraction-free, symbolic");
-        print_rows(out, rows, deg);
+        print_rows(out, rows, deg, NULL);
         for (i = 0; i < json_array_size(ev); i++)
             line(out, jstr(json_array_get(ev, i), "kind"), "%s", jstr(json_array_get(ev, i), "text"));
         line(out, "note", "%s", jstr(o, "note"));
         print_assigned(out, o);
         return;
     }
-    print_rows(out, rows, deg);
+    print_rows(out, rows, deg, json_object_get(o, "powers"));
+    if (json_object_get(o, "epsilon_signs") != NULL) {
+        const json_t *es = json_object_get(o, "epsilon_signs");
+        char buf[256];
+        size_t n = 0;
+        for (i = 0; i < json_array_size(es) && n + 4 < sizeof buf; i++) {
+            json_int_t sg = json_integer_value(json_array_get(es, i));
+            n += (size_t) snprintf(buf + n, sizeof buf - n, "%s%s", i ? " " : "", sg > 0 ? "+" : sg < 0 ? "-" : "0");
+        }
+        line(out, "eps -> 0+", "first column signs %s (zero first entries replaced by eps)", buf);
+    }
     for (i = 0; i < json_array_size(ev); i++) {
         const json_t *e = json_array_get(ev, i);
         char lab[40];

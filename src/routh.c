@@ -52,6 +52,15 @@ void rs_routh_clear(rs_routh_t r)
     }
     flint_free(r->rows);
     flint_free(r->rowlen);
+    flint_free(r->rowpow);
+    for (i = 0; i < r->neps; i++) {
+        for (j = 0; j < r->epslen[i]; j++)
+            fmpz_poly_q_clear(r->eps[i] + j);
+        flint_free(r->eps[i]);
+    }
+    flint_free(r->eps);
+    flint_free(r->epslen);
+    flint_free(r->epssign);
     for (i = 0; i < r->nevents; i++)
         free(r->events[i].text);
     free(r->events);
@@ -66,6 +75,8 @@ static slong routh_push_row(rs_routh_t r, const fmpq_poly_t R, slong nominal)
 
     r->rows = flint_realloc(r->rows, (i + 1) * sizeof(fmpq *));
     r->rowlen = flint_realloc(r->rowlen, (i + 1) * sizeof(slong));
+    r->rowpow = flint_realloc(r->rowpow, (i + 1) * sizeof(slong));
+    r->rowpow[i] = nominal;
     r->rows[i] = flint_malloc(len * sizeof(fmpq));
     for (l = 0; l < len; l++) {
         fmpq_init(r->rows[i] + l);
@@ -196,6 +207,79 @@ static int routh_segment(rs_routh_t r, fmpq_poly_t G, slong *rhp,
     return status;
 }
 
+/* Sign of a rational function of eps as eps -> 0+. */
+static int eps_sign(const fmpz_poly_q_t f)
+{
+    const fmpz_poly_struct *nu = fmpz_poly_q_numref(f), *de = fmpz_poly_q_denref(f);
+    slong i = 0, j = 0;
+    if (fmpz_poly_is_zero(nu))
+        return 0;
+    while (fmpz_is_zero(nu->coeffs + i)) i++;
+    while (fmpz_is_zero(de->coeffs + j)) j++;
+    return fmpz_sgn(nu->coeffs + i) * fmpz_sgn(de->coeffs + j);
+}
+
+/* The textbook array of q1 (degree m) in Q(eps), for display after a zero
+ * pivot: row i has the power m - i; a zero first entry of a non-zero row
+ * becomes eps, a zero row the derivative of the auxiliary polynomial of the
+ * row above (as in the exact array). */
+static void routh_epsilon_array(rs_routh_t r, const fmpz_poly_t q1)
+{
+    slong m = fmpz_poly_degree(q1), w = m / 2 + 1, i, j;
+    fmpz_poly_q_t t, u;
+
+    r->neps = m + 1;
+    r->epslen = flint_malloc((m + 1) * sizeof(slong));
+    r->eps = flint_malloc((m + 1) * sizeof(fmpz_poly_q_struct *));
+    r->epssign = flint_malloc((m + 1) * sizeof(int));
+    fmpz_poly_q_init(t);
+    fmpz_poly_q_init(u);
+    for (i = 0; i <= m; i++) {
+        r->epslen[i] = w;
+        r->eps[i] = flint_malloc(w * sizeof(fmpz_poly_q_struct));
+        for (j = 0; j < w; j++) {
+            fmpz_poly_q_init(r->eps[i] + j);
+            if (i < 2 && m - i - 2 * j >= 0)
+                fmpz_poly_set_fmpz(fmpz_poly_q_numref(r->eps[i] + j), q1->coeffs + m - i - 2 * j);
+        }
+    }
+    for (i = 1; i <= m; i++) {
+        fmpz_poly_q_struct *a = r->eps[i - 1], *b = r->eps[i];
+        int zero = 1;
+        if (i >= 2)
+            for (j = 0; j < w; j++) {
+                /* b[j] = (a'[0] b''[j+1] - b''[0] a'[j+1]) / a'[0], rows i-1, i-2 */
+                const fmpz_poly_q_struct *p1 = r->eps[i - 1], *p2 = r->eps[i - 2];
+                fmpz_poly_q_zero(b + j);
+                if (j + 1 >= w) continue;
+                fmpz_poly_q_mul(t, p1 + 0, p2 + j + 1);
+                fmpz_poly_q_mul(u, p2 + 0, p1 + j + 1);
+                fmpz_poly_q_sub(t, t, u);
+                fmpz_poly_q_div(b + j, t, p1 + 0);
+            }
+        for (j = 0; j < w; j++)
+            if (!fmpz_poly_q_is_zero(b + j)) zero = 0;
+        if (zero && i < m) {
+            /* derivative of the auxiliary polynomial of row i - 1 (power m-i+1) */
+            for (j = 0; j < w; j++)
+                fmpz_poly_q_scalar_mul_si(b + j, a + j, m - i + 1 - 2 * j > 0 ? m - i + 1 - 2 * j : 0);
+        }
+        if (fmpz_poly_q_is_zero(b + 0) && i < m) {
+            zero = 1;
+            for (j = 1; j < w; j++)
+                if (!fmpz_poly_q_is_zero(b + j)) zero = 0;
+            if (!zero) {
+                fmpz_poly_q_zero(b + 0);
+                fmpz_poly_set_coeff_si(fmpz_poly_q_numref(b + 0), 1, 1);
+            }
+        }
+    }
+    for (i = 0; i <= m; i++)
+        r->epssign[i] = eps_sign(r->eps[i] + 0);
+    fmpz_poly_q_clear(t);
+    fmpz_poly_q_clear(u);
+}
+
 /* Roots of q1 (q1(0) != 0) in lambda terms, added to r->count. */
 static int routh_count_reduced(rs_routh_t r, const fmpz_poly_t q1,
                                rs_error_t err)
@@ -231,6 +315,10 @@ static int routh_count_reduced(rs_routh_t r, const fmpz_poly_t q1,
         fmpq_poly_derivative(B, A);
         c = 1;
     }
+
+    for (j = 0; j < r->nevents && status == RS_OK && r->neps == 0; j++)
+        if (r->events[j].kind == RS_ROUTH_EVENT_ZERO_PIVOT)
+            routh_epsilon_array(r, q1);
 
     if (status == RS_OK) {
         /* I[j] = imaginary-axis roots of G_j (with multiplicity) where

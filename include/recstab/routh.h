@@ -12,6 +12,7 @@
 #include <flint/fmpz_poly.h>
 #include <flint/fmpq.h>
 #include <flint/fmpz_mpoly.h>
+#include <flint/fmpz_poly_q.h>
 #include "recstab/error.h"
 #include "recstab/rootcount.h"
 
@@ -45,6 +46,15 @@ typedef struct {
                                sign changes of the first column in the
                                regular case, and what an epsilon-completed
                                first column would show in singular ones */
+    slong *rowpow;          /* nominal power of z of each row */
+    /* After a zero pivot the generalised step skips powers; for display the
+     * textbook array is also built exactly in Q(eps), each zero first entry
+     * replaced by eps (a zero row by the derivative of the auxiliary
+     * polynomial): neps = deg + 1 rows, one per power, else 0. */
+    slong neps;
+    slong *epslen;
+    fmpz_poly_q_struct **eps;
+    int *epssign;           /* sign of each first entry as eps -> 0+ */
 } rs_routh_struct;
 
 typedef rs_routh_struct rs_routh_t[1];
