@@ -158,6 +158,32 @@ static void latex_count(FILE *out, const json_t *o)
     fputs(".\n\n", out);
 }
 
+/* "never" (no branch can hold) or "branches" (an OR of condition lists) of
+ * a hurwitz/region result; 1 if printed, 0 if the result has neither. */
+static int tex_branches(FILE *out, const json_t *o)
+{
+    const json_t *br = json_object_get(o, "branches");
+    size_t i, j;
+    if (js(o, "never") != NULL) {
+        tex_text(out, js(o, "never"));
+        fputs(".\n\n", out);
+        return 1;
+    }
+    if (!json_is_array(br)) return 0;
+    fputs("All $|\\lambda| < 1$ if and only if every condition of one branch holds (the sign of the leading "
+          "coefficient of $q$ is not fixed by the assumptions):\n\\begin{itemize}\n", out);
+    for (i = 0; i < json_array_size(br); i++) {
+        fprintf(out, "\\item %s: ", i == 0 ? "either" : "or");
+        for (j = 0; j < json_array_size(json_array_get(br, i)); j++) {
+            if (j) fputs(", ", out);
+            tex_math(out, json_string_value(json_array_get(json_array_get(br, i), j)));
+        }
+        fputc('\n', out);
+    }
+    fputs("\\end{itemize}\n", out);
+    return 1;
+}
+
 static void latex_rows(FILE *out, const json_t *rows)
 {
     size_t i, j, w = 0;
@@ -222,6 +248,7 @@ static void latex_result(FILE *out, const json_t *o)
             rs_derivation_tex_poly(out, json_string_value(json_array_get(m, i)));
             fputs("$\n\n", out);
         }
+        if (!tex_branches(out, o)) {
         fputs("All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n\\begin{itemize}\n", out);
         for (i = 0; i < json_array_size(c); i++) {
             fputs("\\item ", out);
@@ -230,6 +257,7 @@ static void latex_result(FILE *out, const json_t *o)
         }
         if (json_array_size(c) == 0) fputs("\\item (every condition holds under the assumptions)\n", out);
         fputs("\\end{itemize}\n", out);
+        }
         for (i = 0; i < json_array_size(d); i++) {
             const json_t *e = json_array_get(d, i);
             fputs("Factor ", out);
@@ -241,6 +269,17 @@ static void latex_result(FILE *out, const json_t *o)
     } else if (strcmp(a, "stability") == 0 || strcmp(a, "jury") == 0) {
         fprintf(out, "\\subsection*{%s}\n", strcmp(a, "jury") == 0 ? "Schur--Cohn test on $p(\\lambda)$"
                                                                      : "Stability at the given values");
+        if (json_is_true(json_object_get(o, "symbolic"))) {   /* symbolic Schur-Cohn conditions */
+            const json_t *c = json_object_get(o, "conditions");
+            fputs("All $|\\lambda| < 1$ if and only if:\n\\begin{itemize}\n", out);
+            for (i = 0; i < json_array_size(c); i++) {
+                fputs("\\item ", out);
+                tex_math(out, json_string_value(json_array_get(c, i)));
+                fputc('\n', out);
+            }
+            fputs("\\end{itemize}\n", out);
+            return;
+        }
         latex_count(out, o);
     } else if (strcmp(a, "region") == 0) {
         const json_t *iv = json_object_get(o, "intervals");
@@ -249,6 +288,7 @@ static void latex_result(FILE *out, const json_t *o)
         fputs("$}\n", out);
         if (json_is_true(json_object_get(o, "symbolic"))) {
             const json_t *c = json_object_get(o, "conditions");
+            if (tex_branches(out, o)) return;
             fputs("Stable if and only if:\n\\begin{itemize}\n", out);
             for (i = 0; i < json_array_size(c); i++) {
                 fputs("\\item ", out);
@@ -399,6 +439,30 @@ static void md_count(FILE *out, const json_t *o)
     fputs(".\n\n", out);
 }
 
+/* Markdown form of tex_branches. */
+static int md_branches(FILE *out, const json_t *o)
+{
+    const json_t *br = json_object_get(o, "branches");
+    size_t i, j;
+    if (js(o, "never") != NULL) {
+        fprintf(out, "%s.\n\n", js(o, "never"));
+        return 1;
+    }
+    if (!json_is_array(br)) return 0;
+    fputs("All |lambda| < 1 if and only if every condition of one branch holds (the sign of the leading "
+          "coefficient of q is not fixed by the assumptions):\n\n", out);
+    for (i = 0; i < json_array_size(br); i++) {
+        fputs(i == 0 ? "- either: " : "- or: ", out);
+        for (j = 0; j < json_array_size(json_array_get(br, i)); j++) {
+            if (j) fputs(", ", out);
+            md_code(out, json_string_value(json_array_get(json_array_get(br, i), j)));
+        }
+        fputc('\n', out);
+    }
+    fputc('\n', out);
+    return 1;
+}
+
 static void md_result(FILE *out, const json_t *o)
 {
     const char *a = js(o, "analysis");
@@ -456,7 +520,9 @@ static void md_result(FILE *out, const json_t *o)
             md_code(out, json_string_value(json_array_get(m, i)));
             fputc('\n', out);
         }
-        fputs("\nAll |lambda| < 1 if and only if:\n\n", out);
+        fputc('\n', out);
+        if (!md_branches(out, o)) {
+        fputs("All |lambda| < 1 if and only if:\n\n", out);
         for (i = 0; i < json_array_size(c); i++) {
             fputs("- ", out);
             md_code(out, json_string_value(json_array_get(c, i)));
@@ -464,6 +530,7 @@ static void md_result(FILE *out, const json_t *o)
         }
         if (json_array_size(c) == 0) fputs("- (every condition holds under the assumptions)\n", out);
         fputc('\n', out);
+        }
         for (i = 0; i < json_array_size(d); i++) {
             fputs("Dropped factor ", out);
             md_code(out, js(json_array_get(d, i), "factor"));
@@ -472,12 +539,24 @@ static void md_result(FILE *out, const json_t *o)
         fputc('\n', out);
     } else if (strcmp(a, "stability") == 0 || strcmp(a, "jury") == 0) {
         fprintf(out, "### %s\n\n", strcmp(a, "jury") == 0 ? "Schur-Cohn test on p(lambda)" : "Stability at the given values");
+        if (json_is_true(json_object_get(o, "symbolic"))) {   /* symbolic Schur-Cohn conditions */
+            const json_t *c = json_object_get(o, "conditions");
+            fputs("All |lambda| < 1 if and only if:\n\n", out);
+            for (i = 0; i < json_array_size(c); i++) {
+                fputs("- ", out);
+                md_code(out, json_string_value(json_array_get(c, i)));
+                fputc('\n', out);
+            }
+            fputc('\n', out);
+            return;
+        }
         md_count(out, o);
     } else if (strcmp(a, "region") == 0) {
         const json_t *iv = json_object_get(o, "intervals");
         fprintf(out, "### Stability region in %s\n\n", js(o, "param"));
         if (json_is_true(json_object_get(o, "symbolic"))) {
             const json_t *c = json_object_get(o, "conditions");
+            if (md_branches(out, o)) return;
             fputs("Stable if and only if:\n\n", out);
             for (i = 0; i < json_array_size(c); i++) {
                 fputs("- ", out);
