@@ -355,6 +355,221 @@ static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
     }
 }
 
+/* ---- status at an algebraic point, exactly ---------------------------------- */
+
+/* Arithmetic in K = Q[t]/(m), m the minimal polynomial of the real algebraic
+ * t0: an element is an fmpq_poly of degree < deg m; it is zero at t0 iff it
+ * is the zero polynomial, so its sign at t0 is decided by refining Arb
+ * enclosures of t0 until the value's ball excludes 0 (always terminates).
+ * Polynomials in lambda over K are arrays of such elements, c[0..deg]. */
+typedef struct {
+    slong deg;             /* -1 for the zero polynomial */
+    fmpq_poly_struct *c;   /* deg + 1 coefficients (capacity cap) */
+    slong cap;
+} kpoly_t;
+
+static void kp_init(kpoly_t *a, slong cap)
+{
+    slong i;
+    a->cap = cap > 0 ? cap : 1;
+    a->deg = -1;
+    a->c = flint_malloc(a->cap * sizeof(fmpq_poly_struct));
+    for (i = 0; i < a->cap; i++) fmpq_poly_init(a->c + i);
+}
+
+static void kp_clear(kpoly_t *a)
+{
+    slong i;
+    for (i = 0; i < a->cap; i++) fmpq_poly_clear(a->c + i);
+    flint_free(a->c);
+}
+
+static void kp_normalise(kpoly_t *a)
+{
+    while (a->deg >= 0 && fmpq_poly_is_zero(a->c + a->deg)) a->deg--;
+}
+
+static void kp_set(kpoly_t *a, const kpoly_t *b)
+{
+    slong i;
+    for (i = 0; i < a->cap; i++) {
+        if (i <= b->deg) fmpq_poly_set(a->c + i, b->c + i);
+        else fmpq_poly_zero(a->c + i);
+    }
+    a->deg = b->deg;
+}
+
+/* sign of x(t0), x reduced mod m */
+static int k_sign(const fmpq_poly_t x, alg_t *t0)
+{
+    slong prec = 64;
+    arb_poly_t ap;
+    arb_t y;
+    int s = 0;
+    if (fmpq_poly_is_zero(x)) return 0;
+    arb_poly_init(ap);
+    arb_init(y);
+    for (; s == 0; prec *= 2) {
+        alg_refine(t0, prec);
+        arb_poly_set_fmpq_poly(ap, x, prec);
+        arb_poly_evaluate(y, ap, t0->x, prec);
+        if (arb_is_positive(y)) s = 1;
+        else if (arb_is_negative(y)) s = -1;
+    }
+    arb_poly_clear(ap);
+    arb_clear(y);
+    return s;
+}
+
+static void k_mul(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b, const fmpq_poly_t m)
+{
+    fmpq_poly_mul(out, a, b);
+    fmpq_poly_rem(out, out, m);
+}
+
+/* 1/a in K (a != 0: gcd(a, m) = 1 as m is irreducible) */
+static void k_inv(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t m)
+{
+    fmpq_poly_t g, t;
+    fmpq_poly_init(g);
+    fmpq_poly_init(t);
+    fmpq_poly_xgcd(g, out, t, a, m);
+    fmpq_poly_clear(g);
+    fmpq_poly_clear(t);
+}
+
+/* a = q b + r in K[lambda] (b != 0); q may be NULL */
+static void kp_divrem(kpoly_t *q, kpoly_t *r, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    fmpq_poly_t inv, f, t;
+    slong i, d;
+    fmpq_poly_init(inv); fmpq_poly_init(f); fmpq_poly_init(t);
+    kp_set(r, a);
+    if (q != NULL) { for (i = 0; i < q->cap; i++) fmpq_poly_zero(q->c + i); q->deg = -1; }
+    k_inv(inv, b->c + b->deg, m);
+    while (r->deg >= b->deg) {
+        d = r->deg - b->deg;
+        k_mul(f, r->c + r->deg, inv, m);
+        if (q != NULL) { fmpq_poly_set(q->c + d, f); if (q->deg < d) q->deg = d; }
+        for (i = 0; i <= b->deg; i++) {
+            k_mul(t, f, b->c + i, m);
+            fmpq_poly_sub(r->c + i + d, r->c + i + d, t);
+        }
+        fmpq_poly_zero(r->c + r->deg);   /* exactly cancelled */
+        kp_normalise(r);
+    }
+    fmpq_poly_clear(inv); fmpq_poly_clear(f); fmpq_poly_clear(t);
+}
+
+/* g = gcd(a, b) (Euclid in K[lambda]; not both zero) */
+static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    slong cap = FLINT_MAX(a->cap, b->cap);
+    kpoly_t x, y, r;
+    kp_init(&x, cap); kp_init(&y, cap); kp_init(&r, cap);
+    kp_set(&x, a);
+    kp_set(&y, b);
+    while (y.deg >= 0) {
+        kp_divrem(NULL, &r, &x, &y, m);
+        kp_set(&x, &y);
+        kp_set(&y, &r);
+    }
+    kp_set(g, &x);
+    kp_clear(&x); kp_clear(&y); kp_clear(&r);
+}
+
+/* every root strictly inside the unit circle: the Schur-Cohn recursion
+ * p_{k-1} = (a_k p_k - a_0 p_k^*)/lambda with a_k^2 - a_0^2 > 0 at each
+ * step (Schur 1917), signs at t0 exact */
+static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
+{
+    kpoly_t a, b;
+    fmpq_poly_t d, t, u;
+    slong k, j;
+    int ok = 1;
+    kp_init(&a, p->deg + 1); kp_init(&b, p->deg + 1);
+    fmpq_poly_init(d); fmpq_poly_init(t); fmpq_poly_init(u);
+    kp_set(&a, p);
+    for (k = a.deg; k >= 1 && ok; k--) {
+        k_mul(t, a.c + k, a.c + k, m);
+        k_mul(u, a.c + 0, a.c + 0, m);
+        fmpq_poly_sub(d, t, u);
+        if (k_sign(d, t0) <= 0) { ok = 0; break; }
+        /* b_j = a_k a_{j+1} - a_0 a_{k-1-j}, j = 0..k-1 */
+        for (j = 0; j < k; j++) {
+            k_mul(t, a.c + k, a.c + j + 1, m);
+            k_mul(u, a.c + 0, a.c + k - 1 - j, m);
+            fmpq_poly_sub(b.c + j, t, u);
+        }
+        for (j = k; j < b.cap; j++) fmpq_poly_zero(b.c + j);
+        b.deg = k - 1;      /* lead b_{k-1} = a_k^2 - a_0^2 != 0 */
+        kp_set(&a, &b);
+    }
+    kp_clear(&a); kp_clear(&b);
+    fmpq_poly_clear(d); fmpq_poly_clear(t); fmpq_poly_clear(u);
+    return ok;
+}
+
+/* Status of p(lambda; t0), t0 an irrational real algebraic number, exactly:
+ * singular where the leading coefficient vanishes; else with
+ * g = gcd(p, p*) (every circle root, every pair r, 1/r; self-reciprocal):
+ * stable iff p has all roots inside; unstable if p/g (no circle roots) has
+ * a root outside or g is not squarefree (a repeated circle root or a
+ * repeated pair); otherwise g has all roots on the circle,
+ * simple, iff g' has all roots strictly inside (Cohn 1922 with
+ * Gauss-Lucas): marginal, else a pair off the circle: unstable. */
+static rs_status_t status_at_algebraic(const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
+{
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j;
+    fmpq_poly_t m;
+    fmpz_mpoly_t c;
+    fmpz_poly_t u;
+    kpoly_t P, R, G, H, D;
+    rs_status_t st;
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    fmpz_mpoly_init(c, s->zctx);
+    fmpz_poly_init(u);
+    kp_init(&P, n + 1); kp_init(&R, n + 1); kp_init(&G, n + 1); kp_init(&H, n + 1); kp_init(&D, n + 1);
+    for (j = 0; j <= n; j++) {
+        ulong e = (ulong) j;
+        fmpz_mpoly_get_coeff_vars_ui(c, p, &lv, &e, 1, s->zctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, c, tv, s->zctx)) fmpz_poly_zero(u);
+        fmpq_poly_set_fmpz_poly(P.c + j, u);
+        fmpq_poly_rem(P.c + j, P.c + j, m);
+    }
+    P.deg = n;
+    kp_normalise(&P);
+    if (P.deg < n) {
+        st = RS_STATUS_SINGULAR;     /* no step: the leading coefficient is 0 at t0 */
+    } else {
+        for (j = 0; j <= n; j++) fmpq_poly_set(R.c + j, P.c + n - j);
+        R.deg = n;
+        kp_normalise(&R);
+        kp_gcd(&G, &P, &R, m);
+        if (G.deg <= 0) {
+            st = kp_all_inside(&P, m, t0) ? RS_STATUS_STABLE : RS_STATUS_UNSTABLE;
+        } else {
+            kp_divrem(&H, &R, &P, &G, m);
+            st = RS_STATUS_UNSTABLE;
+            if (kp_all_inside(&H, m, t0)) {
+                for (j = 0; j < G.deg; j++) {             /* D = G' */
+                    fmpq_poly_scalar_mul_si(D.c + j, G.c + j + 1, j + 1);
+                }
+                D.deg = G.deg - 1;
+                kp_normalise(&D);
+                kp_gcd(&R, &G, &D, m);
+                if (R.deg == 0 && kp_all_inside(&D, m, t0)) st = RS_STATUS_MARGINAL;
+            }
+        }
+    }
+    kp_clear(&P); kp_clear(&R); kp_clear(&G); kp_clear(&H); kp_clear(&D);
+    fmpq_poly_clear(m);
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpz_poly_clear(u);
+    return st;
+}
+
 /* ---- region ------------------------------------------------------------------ */
 
 /* univariate polynomial in variable tv from an mpoly in t only (else 0) */
@@ -610,7 +825,8 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
         fmpq_t x;
         fmpq_init(x);
         if (pc->is_point && !pc->lo->rational) {
-            pc->decided = 0;
+            pc->status = status_at_algebraic(v->cp->p, tv, pc->lo, s);
+            pc->decided = 1;
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
@@ -633,24 +849,23 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
      *   repeated root (discriminant != 0): the limit of roots inside the disc
      *   leaves none outside, a pair z, -z of q cannot be real (one would be
      *   outside), so a root is on the circle and all are simple: marginal. */
+    /* (The exact status above is checked against this continuity argument
+     * wherever it applies: a disagreement is an inconsistency, exit 3.) */
     for (i = 1; i + 1 < npieces && r == RS_OK; i++) {
         piece_t *pc = pieces + i;
         int fl;
-        if (!pc->is_point || pc->decided) continue;
+        if (!pc->is_point || pc->lo->rational) continue;
         fl = pc->lo->boundary;
         if (!(fl & CRIT_TOUCH)) {
             if (!pieces[i - 1].decided || !pieces[i + 1].decided
-                || pieces[i - 1].status != pieces[i + 1].status) {
+                || pieces[i - 1].status != pieces[i + 1].status
+                || pc->status != pieces[i - 1].status)
                 run->outcome |= RS_OUTCOME_INCONSISTENT;
-                continue;
-            }
-            pc->status = pieces[i - 1].status;
-            pc->decided = 1;
         } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !repeated_always
                    && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
                        || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
-            pc->status = RS_STATUS_MARGINAL;
-            pc->decided = 1;
+            if (pc->status != RS_STATUS_MARGINAL)
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
         }
     }
     if (r == RS_OK) {

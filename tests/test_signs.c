@@ -355,6 +355,54 @@ static void test_cases(void **state)
     json_decref(doc);
 }
 
+/* Irrational region ends, decided exactly (closed forms in the case files):
+ * (a^2 - 3) lambda^2 + lambda + 1/2 is singular at +-sqrt(3), unstable at
+ * +-sqrt(7/2) (double root -1), marginal at +-sqrt(3/2) (roots 1, -1/3);
+ * lambda^2 - (a^2 - 1) lambda + 1 is marginal exactly on (-sqrt 3, sqrt 3)
+ * and unstable at the ends (double root 1). */
+static void test_algebraic_points(void **state)
+{
+    int outcome;
+    json_t *doc;
+    const json_t *o, *ivs, *iv;
+    size_t i;
+    int nsing = 0, nmarg_pt = 0;
+    (void) state;
+    doc = tu_run_case("cases/hard/algebraic-singular.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
+    o = result(doc, 0);
+    assert_int_equal(json_array_size(json_object_get(o, "undecided_points")), 0);
+    ivs = json_object_get(o, "intervals");
+    for (i = 0; i < json_array_size(ivs); i++) {
+        iv = json_array_get(ivs, i);
+        if (json_equal(json_object_get(iv, "lo"), json_object_get(iv, "hi"))) {
+            const json_t *e = json_object_get(iv, "lo");
+            const char *mp = json_string_value(json_object_get(e, "minpoly"));
+            if (strcmp(str(iv, "status"), "singular") == 0) { nsing++; assert_string_equal(mp, "a^2 - 3"); }
+            if (strcmp(str(iv, "status"), "marginal") == 0) { nmarg_pt++; assert_string_equal(mp, "2*a^2 - 3"); }
+        }
+        /* a^2 = 7/2 closes the unstable intervals: (-sqrt 3.5 .. -sqrt 3) */
+        if (json_is_object(json_object_get(iv, "lo"))
+            && strcmp(json_string_value(json_object_get(json_object_get(iv, "lo"), "minpoly")), "2*a^2 - 7") == 0)
+            assert_true(json_is_true(json_object_get(iv, "lo_closed")) == (strcmp(str(iv, "status"), "unstable") == 0));
+    }
+    assert_int_equal(nsing, 2);
+    assert_int_equal(nmarg_pt, 2);
+    json_decref(doc);
+
+    doc = tu_run_case("cases/hard/algebraic-double.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
+    ivs = json_object_get(result(doc, 0), "intervals");
+    assert_int_equal(json_array_size(ivs), 3);
+    assert_string_equal(str(json_array_get(ivs, 0), "status"), "unstable");
+    assert_true(json_is_true(json_object_get(json_array_get(ivs, 0), "hi_closed")));
+    assert_string_equal(str(json_array_get(ivs, 1), "status"), "marginal");
+    assert_false(json_is_true(json_object_get(json_array_get(ivs, 1), "lo_closed")));
+    assert_string_equal(str(json_array_get(ivs, 2), "status"), "unstable");
+    assert_true(json_is_true(json_object_get(json_array_get(ivs, 2), "lo_closed")));
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -363,6 +411,7 @@ int main(void)
         cmocka_unit_test(test_identically_on_circle),
         cmocka_unit_test(test_property_random),
         cmocka_unit_test(test_cases),
+        cmocka_unit_test(test_algebraic_points),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
