@@ -583,7 +583,10 @@ int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mp
 }
 
 /* The conditions of q(z) for every admissible sign of its leading
- * coefficient (an OR of branches), q(z) into qz. */
+ * coefficient (an OR of branches), q(z) into qz.  charpoly's normalisation
+ * makes the lex-leading term of p positive: that fixes no sign of a symbolic
+ * coefficient (and lc q = (-1)^n p(-1) is another coefficient anyway), so
+ * only the assumptions may drop a branch. */
 int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
 {
     const rs_scheme_struct *s = v->s;
