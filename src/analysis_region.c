@@ -510,6 +510,67 @@ static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
     return ok;
 }
 
+/* multiplicity of the root x0 = +-1 of a (non-zero) in K[lambda] */
+static slong kp_mult_pm1(const kpoly_t *a, slong x0, const fmpq_poly_t m)
+{
+    kpoly_t b, lin, r;
+    slong k = 0;
+    kp_init(&b, a->deg + 1); kp_init(&lin, 2); kp_init(&r, a->deg + 1);
+    fmpq_poly_set_si(lin.c + 0, -x0);
+    fmpq_poly_one(lin.c + 1);
+    lin.deg = 1;
+    kp_set(&b, a);
+    while (b.deg >= 1) {
+        kpoly_t q;
+        kp_init(&q, b.deg + 1);
+        kp_divrem(&q, &r, &b, &lin, m);
+        if (r.deg >= 0) { kp_clear(&q); break; }
+        kp_set(&b, &q);
+        kp_clear(&q);
+        k++;
+    }
+    kp_clear(&b); kp_clear(&lin); kp_clear(&r);
+    return k;
+}
+
+/* A system at t0 whose circle roots are all on the circle, R = the repeated
+ * part of gcd(p, p*): marginal iff each repeated root is semisimple.  Only
+ * +-1 are judged (dim ker A(+-1; t0) by the rank over Q[t]/(minpoly)); a
+ * repeated non-real circle root leaves *decided = 0. */
+static rs_status_t semisimple_pm1(int *decided, const kpoly_t *P, const kpoly_t *R, const fmpz_mpoly_t p,
+                                  slong tv, alg_t *t0, const fmpq_poly_t m, const rs_scheme_t s)
+{
+    slong x0, n = s->n, i, rest = R->deg;
+    rs_status_t st = RS_STATUS_MARGINAL;
+    fmpq_poly_struct *A = flint_malloc(n * n * sizeof(fmpq_poly_struct));
+    fmpq_mpoly_t e;
+    fmpq_t xv;
+    (void) p;
+    fmpq_mpoly_init(e, s->ctx);
+    fmpq_init(xv);
+    for (i = 0; i < n * n; i++) fmpq_poly_init(A + i);
+    for (x0 = -1; x0 <= 1; x0 += 2) {
+        slong k = kp_mult_pm1(R, x0, m), mult, rank;
+        if (k == 0) continue;
+        rest -= k;
+        mult = kp_mult_pm1(P, x0, m);
+        fmpq_set_si(xv, x0, 1);
+        for (i = 0; i < n * n; i++) {
+            fmpq_mpoly_evaluate_one_fmpq(e, s->M + i, s->lambda_var, xv, s->ctx);
+            if (!fmpq_mpoly_get_fmpq_poly(A + i, e, tv, s->ctx)) { *decided = 0; goto done; }
+        }
+        rank = rs_semisimple_rank_mod(A, n, t0->minpoly);
+        if (n - rank != mult) st = RS_STATUS_UNSTABLE;   /* a Jordan block at x0 */
+    }
+    if (rest > 0 && st != RS_STATUS_UNSTABLE) *decided = 0;   /* a repeated non-real circle root */
+done:
+    for (i = 0; i < n * n; i++) fmpq_poly_clear(A + i);
+    flint_free(A);
+    fmpq_mpoly_clear(e, s->ctx);
+    fmpq_clear(xv);
+    return st;
+}
+
 /* Status of p(lambda; t0), t0 an irrational real algebraic number, exactly:
  * singular where the leading coefficient vanishes; else with
  * g = gcd(p, p*) (every circle root, every pair r, 1/r; self-reciprocal):
@@ -517,9 +578,12 @@ static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
  * a root outside or g is not squarefree (a repeated circle root or a
  * repeated pair); otherwise g has all roots on the circle,
  * simple, iff g' has all roots strictly inside (Cohn 1922 with
- * Gauss-Lucas): marginal, else a pair off the circle: unstable. */
-static rs_status_t status_at_algebraic(const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
+ * Gauss-Lucas): marginal, else a pair off the circle: unstable.  A system
+ * with a repeated circle root: marginal iff semisimple (semisimple_pm1);
+ * returns 0 (undecided) only for a repeated non-real circle root there. */
+static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
 {
+    int decided = 1;
     slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j;
     fmpq_poly_t m;
     fmpz_mpoly_t c;
@@ -559,15 +623,30 @@ static rs_status_t status_at_algebraic(const fmpz_mpoly_t p, slong tv, alg_t *t0
                 D.deg = G.deg - 1;
                 kp_normalise(&D);
                 kp_gcd(&R, &G, &D, m);
-                if (R.deg == 0 && kp_all_inside(&D, m, t0)) st = RS_STATUS_MARGINAL;
+                if (R.deg == 0 && kp_all_inside(&D, m, t0)) {
+                    st = RS_STATUS_MARGINAL;
+                } else if (R.deg > 0 && s->n >= 2 && !s->from_char) {
+                    /* a repeated root of g: if every root of g is on the
+                     * circle (its squarefree part G/R passes Cohn's test) a
+                     * system may still be bounded: semisimple roots */
+                    kp_divrem(&H, &D, &G, &R, m);
+                    kp_set(&G, &H);
+                    for (j = 0; j < G.deg; j++) fmpq_poly_scalar_mul_si(D.c + j, G.c + j + 1, j + 1);
+                    for (j = G.deg; j < D.cap; j++) fmpq_poly_zero(D.c + j);
+                    D.deg = G.deg - 1;
+                    kp_normalise(&D);
+                    if (kp_all_inside(&D, m, t0))
+                        st = semisimple_pm1(&decided, &P, &R, p, tv, t0, m, s);
+                }
             }
         }
     }
+    *out = st;
     kp_clear(&P); kp_clear(&R); kp_clear(&G); kp_clear(&H); kp_clear(&D);
     fmpq_poly_clear(m);
     fmpz_mpoly_clear(c, s->zctx);
     fmpz_poly_clear(u);
-    return st;
+    return decided;
 }
 
 /* ---- region ------------------------------------------------------------------ */
@@ -825,8 +904,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
         fmpq_t x;
         fmpq_init(x);
         if (pc->is_point && !pc->lo->rational) {
-            pc->status = status_at_algebraic(v->cp->p, tv, pc->lo, s);
-            pc->decided = 1;
+            pc->decided = status_at_algebraic(&pc->status, v->cp->p, tv, pc->lo, s);
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
@@ -854,7 +932,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     for (i = 1; i + 1 < npieces && r == RS_OK; i++) {
         piece_t *pc = pieces + i;
         int fl;
-        if (!pc->is_point || pc->lo->rational) continue;
+        if (!pc->is_point || pc->lo->rational || !pc->decided) continue;
         fl = pc->lo->boundary;
         if (!(fl & CRIT_TOUCH)) {
             if (!pieces[i - 1].decided || !pieces[i + 1].decided
@@ -862,6 +940,9 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
                 || pc->status != pieces[i - 1].status)
                 run->outcome |= RS_OUTCOME_INCONSISTENT;
         } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !repeated_always
+                   /* a repeated factor (a system's identical modes) may be a Jordan block */
+                   && fmpz_mpoly_degree_si(sqf, s->lambda_var, s->zctx)
+                      == fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx)
                    && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
                        || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
             if (pc->status != RS_STATUS_MARGINAL)
@@ -882,8 +963,8 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
                 json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
                 json_object_set_new(pj, "status", json_string("undecided"));
                 json_object_set_new(pj, "note", json_string(
-                    "irrational algebraic boundary point: the status at the point itself is not decided "
-                    "(it is not stable if a root lies on the circle there); the intervals beside it are exact"));
+                    "irrational algebraic point where a system has a repeated circle root: its semisimplicity "
+                    "(the rank of A there) is not decided; not stable, the intervals beside it are exact"));
                 json_array_append_new(pts, pj);
                 i++;
                 continue;

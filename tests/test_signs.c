@@ -310,6 +310,7 @@ static void test_cases(void **state)
     /* (1 - q) lambda + (q + 1): stable iff q < 0; p(1) = 2, p(-1) = 2q as
      * written (the normalised polynomial has the opposite sign) */
     doc = tu_run_case("cases/hard/free-sign-lead.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
     o = result(doc, 0);
     assert_string_equal(json_string_value(json_array_get(json_object_get(o, "conditions"), 0)), "-q > 0");
     assert_string_equal(str(o, "p_at_1"), "2");
@@ -322,6 +323,7 @@ static void test_cases(void **state)
 
     /* (lambda + 1)^2 (2 lambda - 1 + a): lambda = -1 twice for every a */
     doc = tu_run_case("cases/hard/root-at-minus-one.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
     o = result(doc, 0);
     assert_string_equal(str(o, "verdict"), "never stable");
     assert_non_null(strstr(str(o, "never"), "lambda = -1"));
@@ -329,6 +331,7 @@ static void test_cases(void **state)
 
     /* roots 1 - a/10^40, -1/2: stable exactly on (0, 2*10^40), unstable past */
     doc = tu_run_case("cases/hard/far-endpoint.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
     ivs = json_object_get(result(doc, 0), "intervals");
     assert_int_equal(json_array_size(ivs), 5);
     assert_string_equal(str(json_array_get(ivs, 2), "status"), "stable");
@@ -339,6 +342,7 @@ static void test_cases(void **state)
     /* s^4 + s^3 + 3s^2 + 3s + 3: five rows z^4..z^0; eps column
      * 1, 1, eps, 3 - 3/eps, 3 (times 16): signs + + + - + */
     doc = tu_run_case("cases/hard/routh-zero-pivot.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
     o = result(doc, 0);
     assert_int_equal(json_array_size(json_object_get(o, "rows")), 5);
     {
@@ -403,6 +407,41 @@ static void test_algebraic_points(void **state)
     json_decref(doc);
 }
 
+/* Systems at an algebraic point (closed forms in the case files): the
+ * identity at lambda = 1 (a = +-sqrt 3) is marginal, a Jordan block there
+ * unstable. */
+static void test_algebraic_systems(void **state)
+{
+    int outcome;
+    json_t *doc;
+    const json_t *ivs;
+    size_t i;
+    int nmarg = 0;
+    (void) state;
+    doc = tu_run_case("cases/hard/algebraic-system-semisimple.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
+    ivs = json_object_get(result(doc, 0), "intervals");
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *iv = json_array_get(ivs, i), *lo = json_object_get(iv, "lo");
+        if (json_is_object(lo) && json_equal(lo, json_object_get(iv, "hi"))) {
+            assert_string_equal(json_string_value(json_object_get(lo, "minpoly")), "a^2 - 3");
+            assert_string_equal(str(iv, "status"), "marginal");
+            nmarg++;
+        }
+    }
+    assert_int_equal(nmarg, 2);
+    json_decref(doc);
+    doc = tu_run_case("cases/hard/algebraic-system-jordan.case", NULL, -1, &outcome);
+    assert_int_equal(outcome, 0);
+    ivs = json_object_get(result(doc, 0), "intervals");
+    assert_int_equal(json_array_size(ivs), 5);
+    assert_string_equal(str(json_array_get(ivs, 0), "status"), "unstable");
+    assert_true(json_is_true(json_object_get(json_array_get(ivs, 0), "hi_closed")));
+    assert_string_equal(str(json_array_get(ivs, 4), "status"), "unstable");
+    assert_true(json_is_true(json_object_get(json_array_get(ivs, 4), "lo_closed")));
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -412,6 +451,7 @@ int main(void)
         cmocka_unit_test(test_property_random),
         cmocka_unit_test(test_cases),
         cmocka_unit_test(test_algebraic_points),
+        cmocka_unit_test(test_algebraic_systems),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
