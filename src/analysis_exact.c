@@ -577,6 +577,14 @@ int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mp
     int *sign = rs_run_signs(run, s);
     int r;
     rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+    /* q losing degree for every value is a root lambda = -1 for every value:
+     * conditions of the lower-degree q would ignore it */
+    if (fmpz_mpoly_degree_si(qz, s->lambda_var, s->zctx) < v->cp->degree) {
+        flint_free(sign);
+        rs_hurwitz_clear(h, s->zctx);
+        return rs_error_set(run->err, RS_ERR_MATH, "hurwitz: p(-1) = 0 for every parameter value (lambda = -1 "
+                            "is a root): never asymptotically stable");
+    }
     r = rs_hurwitz_compute(h, qz, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err);
     flint_free(sign);
     return r;

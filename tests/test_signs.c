@@ -328,6 +328,15 @@ static void test_cases(void **state)
     assert_string_equal(str(o, "verdict"), "never stable");
     assert_non_null(strstr(str(o, "never"), "lambda = -1"));
     json_decref(doc);
+    /* a claim there is refuted (exit 1), not "proved" from the conditions of
+     * the lower-degree q and then inconsistent (exit 3) */
+    {
+        const char *req[] = {"claim stable"};
+        doc = tu_run_case("cases/hard/root-at-minus-one.case", req, 1, &outcome);
+        assert_int_equal(outcome, RS_OUTCOME_FAILED);
+        assert_string_equal(str(result(doc, 0), "status"), "refuted");
+        json_decref(doc);
+    }
 
     /* roots 1 - a/10^40, -1/2: stable exactly on (0, 2*10^40), unstable past */
     doc = tu_run_case("cases/hard/far-endpoint.case", NULL, -1, &outcome);
