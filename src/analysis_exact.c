@@ -520,17 +520,29 @@ static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
                     json_array_append_new(row, rs_json_zpoly(rm->rows[i] + j, s));
                 json_array_append_new(rows, row);
             }
+            slong drop = v->cp->degree - fmpz_mpoly_degree_si(qz, s->lambda_var, s->zctx);
+            json_t *ev = json_array();
             json_object_set_new(o, "symbolic", json_true());
             json_object_set_new(o, "rows", rows);
+            if (drop > 0) {
+                char txt[300];
+                snprintf(txt, sizeof txt, "deg q = %ld < deg p = %ld for every parameter value: lambda = -1 is a "
+                         "root of multiplicity %ld (z = infinity), on the unit circle; never asymptotically stable",
+                         (long) (v->cp->degree - drop), (long) v->cp->degree, (long) drop);
+                json_array_append_new(ev, json_pack("{s:s,s:I,s:I,s:s}", "kind", "degree_drop", "row",
+                                                    (json_int_t) 0, "count", (json_int_t) drop, "text", txt));
+            }
             if (rm->zero_row >= 0) {
                 char txt[300];
                 snprintf(txt, sizeof txt, "row %ld vanished identically (roots symmetric about the origin for "
                          "every parameter value: on the imaginary axis, i.e. on the unit circle, or in pairs "
                          "+-z); replaced by the derivative of the auxiliary polynomial of row %ld",
                          (long) rm->zero_row, (long) rm->zero_row - 1);
-                json_object_set_new(o, "events", json_pack("[{s:s,s:I,s:s}]", "kind", "zero_row", "row",
-                                                           (json_int_t) rm->zero_row, "text", txt));
+                json_array_append_new(ev, json_pack("{s:s,s:I,s:s}", "kind", "zero_row", "row",
+                                                    (json_int_t) rm->zero_row, "text", txt));
             }
+            if (json_array_size(ev) > 0) json_object_set_new(o, "events", ev);
+            else json_decref(ev);
             json_object_set_new(o, "note", json_string(rm->zero_row >= 0 ?
                 "fraction-free rows; valid where the first-column entries do not vanish: a sign change in the "
                 "first column is a root with Re z > 0 (|lambda| > 1); the auxiliary polynomial's roots that lie "
