@@ -971,8 +971,8 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
         json_object_set_new(o, "dropped", dropped);
         json_object_set_new(o, "note", json_string(
             "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
-            "all |lambda| < 1 iff every lead^2 - const^2 > 0 (generic: where a condition vanishes, set the parameters "
-            "for the exact singular-case treatment)"));
+            "all |lambda| < 1 iff every lead^2 - const^2 > 0 (Schur 1917, strict inequalities: exact for every "
+            "value; where the leading coefficient of p vanishes the first condition fails)"));
         r = rs_run_sample_check(run, v, jury_conds_holds, &jc, o);
     } else {
         json_decref(rows);
