@@ -20,6 +20,8 @@ void rs_options_default(rs_options_t *opt)
     opt->max_prec = 65536;
     opt->default_digits = 30;
     opt->with_scheme = 0;
+    opt->time_limit = RS_BUDGET_TIME_DEFAULT;
+    opt->memory_limit = rs_budget_memory_default();
 }
 
 /* ---- variants: the scheme with some parameters substituted ------------- */
@@ -816,6 +818,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     run.deg_exact = -1;
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
+    rs_budget_start(opt->time_limit, opt->memory_limit);
     /* an error in the equations must surface even when no analysis asks */
     rs_scheme_init(run.sym);
     if (!rs_builder_is_exact(c) && !c->numeric_recurrence) {
@@ -824,6 +827,10 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     }
     for (i = 0; i < c->nrequests && r == RS_OK; i++)
         r = dispatch(&run, &c->requests[i]);
+    /* a loop stopped by the budget may have ended in another error or in a
+     * partial result: the budget's message is the one to report */
+    if (rs_budget_exceeded()) r = rs_budget_error(err);
+    rs_budget_stop();
     if (r != RS_OK) {
         for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
         free(run.variants);

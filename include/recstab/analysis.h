@@ -11,6 +11,7 @@
 #include <jansson.h>
 #include "recstab/error.h"
 #include "recstab/casefile.h"
+#include "recstab/budget.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -27,6 +28,8 @@ typedef struct {
     slong max_prec;        /* ceiling for certified numerics (bits) */
     slong default_digits;  /* radius digits when not given */
     int with_scheme;       /* add "scheme": equations and lambda-matrix (for derivations) */
+    double time_limit;     /* seconds for the run (<= 0: none; budget.h) */
+    slong memory_limit;    /* MB of counted memory (<= 0: none; budget.h) */
 } rs_options_t;
 
 void rs_options_default(rs_options_t *opt);

@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <signal.h>
+#include <time.h>
 #include <jansson.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -39,6 +41,8 @@ static void usage(FILE *f)
           "  --sweep-level LEVEL            benchmarking: start the verdict ladder at fast, prec128,\n"
           "                                 prec256 or exact; double = uncertified GSL roots only\n"
           "  --emit equations               print the unknowns and equations the builders generated\n"
+          "  --time-limit SECONDS           wall time for the whole run (default 600; 0 = none)\n"
+          "  --memory-limit MB              memory for the computation (default half of the RAM; 0 = none)\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
           "             3 internal inconsistency (two independent methods disagree)\n", f);
@@ -61,6 +65,33 @@ static int parse_long(const char *s, long lo, long hi, long *out)
     if (*s == '\0' || *end != '\0' || v < lo || v > hi) return 0;
     *out = v;
     return 1;
+}
+
+/* The budget's backstops for work that cannot reach a cooperative check
+ * (one long FLINT call, one huge allocation): print and end at once, which
+ * is safe here as output is only written after every case succeeded. */
+static void budget_fatal(const char *msg)
+{
+    static const char pre[] = "recstab: ";
+    if (write(2, pre, sizeof pre - 1) < 0 || write(2, msg, strlen(msg)) < 0 || write(2, "\n", 1) < 0) _exit(2);
+    _exit(2);
+}
+
+static double budget_seconds;
+
+static double mono_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double) ts.tv_sec + 1e-9 * (double) ts.tv_nsec;
+}
+
+static void budget_alarm(int sig)
+{
+    char msg[200];
+    (void) sig;
+    snprintf(msg, sizeof msg, "time limit of %g s reached; raise it with --time-limit", budget_seconds);
+    budget_fatal(msg);
 }
 
 static int exit_code_for(int code)
@@ -101,6 +132,7 @@ int main(int argc, char **argv)
     long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
     int rank = 0, first_level = RS_LEVEL_FAST;
     rs_sweep_options_t swopt;
+    double budget_t0;
 
 #ifdef RS_MPI
     MPI_Init(&argc, &argv);
@@ -201,6 +233,17 @@ int main(int argc, char **argv)
                 }
                 opt.max_prec = v;
             } else analyses[nanalyses++] = argv[++i];
+        } else if (strcmp(a, "--time-limit") == 0 || strcmp(a, "--memory-limit") == 0) {
+            long v;
+            if (i + 1 >= argc || !parse_long(argv[i + 1], 0, 100000000L, &v)) {
+                fprintf(stderr, "recstab: %s expects a whole number (0 = no limit) up to 100000000, found '%s'\n",
+                        a, i + 1 < argc ? argv[i + 1] : "nothing");
+                rc = 2;
+                goto end;
+            }
+            if (a[2] == 't') opt.time_limit = (double) v;
+            else opt.memory_limit = v;
+            i++;
         } else if (strncmp(a, "--set=", 6) == 0) sets[nsets++] = a + 6;
         else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)
             analyses[nanalyses++] = a + 10;
@@ -232,6 +275,14 @@ int main(int argc, char **argv)
         usage(stderr);
         rc = 2;
         goto end;
+    }
+    budget_seconds = opt.time_limit;
+    budget_t0 = mono_seconds();
+    rs_budget_set_fatal(budget_fatal);
+    if (opt.time_limit > 0) {
+        /* backstop one second after the limit; the cases share the limit */
+        signal(SIGALRM, budget_alarm);
+        alarm((unsigned) opt.time_limit + 1);
     }
     for (i = 0; i < ncases; i++) {
         rs_case_t c;
@@ -266,8 +317,11 @@ int main(int argc, char **argv)
             rs_case_clear(c);
             continue;
         }
-        if (r == RS_OK)
-            r = rs_analysis_run(&doc, &outcome, c, &opt, err);
+        if (r == RS_OK) {
+            rs_options_t o = opt;
+            if (opt.time_limit > 0) o.time_limit = opt.time_limit - (mono_seconds() - budget_t0);
+            r = rs_analysis_run(&doc, &outcome, c, &o, err);
+        }
         if (r != RS_OK) {
             char msg[2 * RS_ERROR_MSG_LEN];
             rs_error_format(msg, sizeof msg, err);
@@ -281,6 +335,7 @@ int main(int argc, char **argv)
         json_array_append_new(docs, doc);
         rs_case_clear(c);
     }
+    alarm(0);   /* the analyses are done: no backstop while writing */
     /* sweep/map files: staged beside their targets, renamed only once
      * everything succeeded */
     if (rank == 0 && (csv_path != NULL || plot_path != NULL)) {

@@ -1,0 +1,197 @@
+/* budget.c -- wall-time and memory budget (see budget.h for the global state). */
+#define _GNU_SOURCE
+#include <malloc.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include <unistd.h>
+#include <gmp.h>
+#include "recstab/budget.h"
+
+static _Atomic double deadline_start;   /* monotonic seconds at the start */
+static _Atomic double time_limit;       /* seconds, <= 0 none */
+static _Atomic long memory_limit;       /* bytes, <= 0 none */
+static _Atomic long memory_used;        /* counted bytes (may dip below 0: blocks from before) */
+static _Atomic int exceeded;            /* 0, 1 time, 2 memory */
+static _Atomic int claimed;             /* the first hit writes exceeded_what */
+static _Atomic int installed;
+static void (*_Atomic fatal_hook)(const char *msg);
+static char exceeded_what[128];          /* written once, by the first to set exceeded */
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double) ts.tv_sec + 1e-9 * (double) ts.tv_nsec;
+}
+
+static void format_limit(char *buf, size_t len, int which, const char *what)
+{
+    if (which == 1)
+        snprintf(buf, len, "time limit of %g s reached during %s; raise it with --time-limit",
+                 atomic_load(&time_limit), what);
+    else
+        snprintf(buf, len, "memory limit of %ld MB reached during %s; raise it with --memory-limit",
+                 atomic_load(&memory_limit) >> 20, what);
+}
+
+/* ---- counting allocators ---------------------------------------------------- */
+
+/* An allocation of n more bytes past the limit: FLINT would abort on a
+ * failed malloc, so the command's hook ends the run with a message first. */
+static void count_alloc(long n, size_t request)
+{
+    long lim = atomic_load(&memory_limit);
+    long used = atomic_fetch_add(&memory_used, n) + n;
+    void (*hook)(const char *) = atomic_load(&fatal_hook);
+    if (lim > 0 && (used > lim || (long) (request >> 1) > lim) && hook != NULL) {
+        char msg[300];
+        format_limit(msg, sizeof msg, 2, "an allocation");
+        hook(msg);
+    }
+}
+
+static void *b_malloc(size_t n)
+{
+    void *p;
+    count_alloc((long) n, n);
+    p = malloc(n);
+    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) n);
+    return p;
+}
+
+static void *b_calloc(size_t k, size_t n)
+{
+    void *p;
+    size_t bytes = (n != 0 && k > ((size_t) -1) / n) ? (size_t) -1 : k * n;
+    count_alloc((long) (bytes >> 1), bytes);
+    p = calloc(k, n);
+    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) (bytes >> 1));
+    return p;
+}
+
+static void *b_realloc(void *q, size_t n)
+{
+    long old = (q != NULL) ? (long) malloc_usable_size(q) : 0;
+    void *p;
+    count_alloc((long) n - old, n);
+    p = realloc(q, n);
+    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) n);
+    else atomic_fetch_sub(&memory_used, (long) n - old);
+    return p;
+}
+
+static void b_free(void *p)
+{
+    if (p == NULL) return;
+    atomic_fetch_sub(&memory_used, (long) malloc_usable_size(p));
+    free(p);
+}
+
+static void *g_realloc(void *p, size_t old, size_t n) { (void) old; return b_realloc(p, n); }
+static void g_free(void *p, size_t n) { (void) n; b_free(p); }
+
+/* FLINT's and GMP's default allocators are malloc/realloc/free, so blocks
+ * from before the switch are freed correctly (only counted approximately). */
+static void install(void)
+{
+    int expect = 0;
+    if (!atomic_compare_exchange_strong(&installed, &expect, 1)) return;
+    __flint_set_memory_functions(b_malloc, b_calloc, b_realloc, b_free);
+    mp_set_memory_functions(b_malloc, g_realloc, g_free);
+}
+
+/* ---- the budget --------------------------------------------------------------- */
+
+slong rs_budget_memory_default(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || size <= 0) return 1024;
+    return (slong) (((double) pages * (double) size) / 2.0 / 1048576.0);
+}
+
+void rs_budget_start(double seconds, slong megabytes)
+{
+    install();
+    atomic_store(&exceeded, 0);
+    atomic_store(&claimed, 0);
+    atomic_store(&deadline_start, now());
+    atomic_store(&time_limit, seconds);
+    atomic_store(&memory_limit, megabytes > 0 ? (long) megabytes << 20 : 0);
+}
+
+void rs_budget_stop(void)
+{
+    atomic_store(&time_limit, 0.0);
+    atomic_store(&memory_limit, 0);
+}
+
+void rs_budget_set_fatal(void (*fatal)(const char *msg))
+{
+    atomic_store(&fatal_hook, fatal);
+}
+
+double rs_budget_elapsed(void)
+{
+    return now() - atomic_load(&deadline_start);
+}
+
+slong rs_budget_memory_used(void)
+{
+    long u = atomic_load(&memory_used);
+    return u > 0 ? u : 0;
+}
+
+int rs_budget_exceeded(void)
+{
+    return atomic_load(&exceeded) != 0;
+}
+
+int rs_budget_error(rs_error_t err)
+{
+    int which = atomic_load(&exceeded);
+    char msg[300];
+    if (which == 0) return RS_OK;
+    format_limit(msg, sizeof msg, which, exceeded_what);
+    return rs_error_set(err, RS_ERR_LIMIT, "%s", msg);
+}
+
+/* records the first limit hit and what was running */
+static int hit(rs_error_t err, int which, const char *what)
+{
+    int expect = 0;
+    if (atomic_compare_exchange_strong(&claimed, &expect, 1)) {
+        snprintf(exceeded_what, sizeof exceeded_what, "%s", what);
+        atomic_store(&exceeded, which);
+    }
+    while (atomic_load(&exceeded) == 0) ;   /* another thread is writing the message */
+    return rs_budget_error(err);
+}
+
+int rs_budget_check(rs_error_t err, const char *what)
+{
+    double tl = atomic_load(&time_limit);
+    long ml = atomic_load(&memory_limit);
+    if (atomic_load(&exceeded)) return rs_budget_error(err);
+    if (tl > 0 && now() - atomic_load(&deadline_start) >= tl) return hit(err, 1, what);
+    if (ml > 0 && atomic_load(&memory_used) > ml) return hit(err, 2, what);
+    return RS_OK;
+}
+
+int rs_budget_estimate(rs_error_t err, const char *what, double seconds, double bytes)
+{
+    double tl = atomic_load(&time_limit), left = tl - rs_budget_elapsed();
+    long ml = atomic_load(&memory_limit);
+    int r = rs_budget_check(err, what);
+    if (r != RS_OK) return r;
+    if (tl > 0 && seconds > left)
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "%s would take about %.3g s (estimated), more than the %.0f s left of the time "
+                            "limit of %g s; raise it with --time-limit", what, seconds, left > 0 ? left : 0.0, tl);
+    if (ml > 0 && bytes > (double) (ml - rs_budget_memory_used()))
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "%s would need about %.3g MB (estimated), more than the memory limit of %ld MB; "
+                            "raise it with --memory-limit", what, bytes / 1048576.0, ml >> 20);
+    return RS_OK;
+}
