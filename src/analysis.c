@@ -21,6 +21,7 @@ void rs_options_default(rs_options_t *opt)
     opt->default_digits = 30;
     opt->with_scheme = 0;
     opt->time_limit = RS_BUDGET_TIME_DEFAULT;
+    opt->time_spent = 0;
     opt->memory_limit = rs_budget_memory_default();
 }
 
@@ -818,7 +819,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     run.deg_exact = -1;
     *doc = NULL;
     *outcome = RS_OUTCOME_OK;
-    rs_budget_start(opt->time_limit, opt->memory_limit);
+    rs_budget_start(opt->time_limit, opt->time_spent, opt->memory_limit);
     /* an error in the equations must surface even when no analysis asks */
     rs_scheme_init(run.sym);
     if (!rs_builder_is_exact(c) && !c->numeric_recurrence) {

@@ -10,6 +10,7 @@
  * it, so the output is the same for every thread count.  See sweep.h for the
  * verdict ladder and README "Sweeps and maps" for the formats. */
 #include <math.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,7 @@
 #include <acb_poly.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
+#include "recstab/budget.h"
 #include "recstab/analysis_impl.h"
 #include "recstab/sweep.h"
 #include "recstab/radius.h"
@@ -445,8 +447,10 @@ static int tok_long(slong *out, const tok_t *t)
     if (t->n == 0 || t->n >= sizeof buf) return 0;
     memcpy(buf, t->s, t->n);
     buf[t->n] = '\0';
+    errno = 0;
     x = strtol(buf, &end, 10);
     if (*end != '\0') return 0;
+    if (errno == ERANGE) x = (x > 0) ? WORD_MAX : WORD_MIN;   /* clamped: a limit error, not a wrap */
     *out = x;
     return 1;
 }
@@ -756,6 +760,9 @@ static void compute_range(pt_t *pts, const job_t *J, slong lo, slong hi, const c
         for (k = mylo; k < myhi; k++) {
             rs_error_t e;
             rs_error_init(e);
+            /* once the budget is exceeded the remaining points are skipped;
+             * rs_analysis_run reports the limit */
+            if (rs_budget_check(NULL, what) != RS_OK) continue;
             compute_point(pts + (k - lo), J, k, e);
             if (g_opt.progress != NULL) {
                 slong d;
@@ -928,11 +935,26 @@ static int check_free(rs_run_t *run, const rs_request_t *q, const rs_variant_t *
     return RS_OK;
 }
 
-static int limit_error(rs_run_t *run, const rs_request_t *q, slong npoints, const char *desc)
+/* npoints as a double: K + 1 or K1 * K2 may not fit into a slong */
+static int limit_error(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
 {
     char msg[400];
-    snprintf(msg, sizeof msg, "%s has %ld points, more than the limit of %ld points per sweep or map "
-             "(raise it with --max-points N)", desc, (long) npoints, (long) g_opt.max_points);
+    snprintf(msg, sizeof msg, "%s has %.0f points, more than the limit of %ld points per sweep or map "
+             "(raise it with --max-points N)", desc, npoints, (long) g_opt.max_points);
+    return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
+}
+
+/* Before allocating: the points must fit into what is left of the budget.
+ * 1 us and sizeof(pt_t) + two rationals per point are lower bounds (the
+ * fastest sweep measured, degree 1 on one thread, takes about 4 us). */
+static int estimate_points(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
+{
+    char msg[RS_ERROR_MSG_LEN];
+    rs_error_t e;
+    rs_error_init(e);
+    if (rs_budget_estimate(e, desc, npoints * 1e-6, npoints * (double) (sizeof(pt_t) + 2 * sizeof(fmpq))) == RS_OK)
+        return RS_OK;
+    snprintf(msg, sizeof msg, "%s", e->msg);
     return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
 }
 
@@ -1132,7 +1154,8 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
         r = rs_req_error(run, q, opts, RS_ERR_INPUT, "options are only for 'of modes', found '%s'", opts);
     if (r == RS_OK && logsp && (fmpq_sgn(A) <= 0 || fmpq_sgn(B) <= 0))
         r = rs_req_error(run, q, t[2].s, RS_ERR_INPUT, "log spacing needs A > 0 and B > 0, found '%s'", t[2].s);
-    if (r == RS_OK && K >= g_opt.max_points) r = limit_error(run, q, K + 1, "the sweep");
+    if (r == RS_OK && K >= g_opt.max_points) r = limit_error(run, q, (double) K + 1.0, "the sweep");
+    if (r == RS_OK) r = estimate_points(run, q, (double) K + 1.0, "the sweep");
     if (r != RS_OK) { fmpq_clear(A); fmpq_clear(B); return r; }
     {
         rs_assign_t *a;
@@ -1380,6 +1403,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
         for (j = 0; j < K2; j++) {
             slong k;
             fmpz_t w;
+            if (rs_budget_check(NULL, "the map's boundary") != RS_OK) continue;
             g = _fmpz_vec_init(T.d1 + 1);
             fmpz_init(w);
             for (k = 0; k < T.n; k++)
@@ -1484,11 +1508,13 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (r == RS_OK && idx[0] == idx[1]) r = tok_error(run, q, t + 5, "map needs two different parameters, found '%s' twice");
     pos = 9;
     if (r == RS_OK) r = parse_of(run, q, t, nt, &pos, &kind, 0);
-    if (r == RS_OK && (K[0] > g_opt.max_points || K[1] > g_opt.max_points || K[0] * K[1] > g_opt.max_points)) {
+    /* K[0] * K[1] compared by division: the product may overflow */
+    if (r == RS_OK && (K[0] > g_opt.max_points || K[1] > g_opt.max_points || K[0] > g_opt.max_points / K[1])) {
         char desc[200];
         snprintf(desc, sizeof desc, "the map (%ld x %ld)", (long) K[0], (long) K[1]);
-        r = limit_error(run, q, K[0] * K[1], desc);
+        r = limit_error(run, q, (double) K[0] * (double) K[1], desc);
     }
+    if (r == RS_OK) r = estimate_points(run, q, (double) K[0] * (double) K[1], "the map");
     if (r == RS_OK) {
         rs_assign_t *a;
         slong n;

@@ -111,12 +111,12 @@ slong rs_budget_memory_default(void)
     return (slong) (((double) pages * (double) size) / 2.0 / 1048576.0);
 }
 
-void rs_budget_start(double seconds, slong megabytes)
+void rs_budget_start(double seconds, double spent, slong megabytes)
 {
     install();
     atomic_store(&exceeded, 0);
     atomic_store(&claimed, 0);
-    atomic_store(&deadline_start, now());
+    atomic_store(&deadline_start, now() - spent);
     atomic_store(&time_limit, seconds);
     atomic_store(&memory_limit, megabytes > 0 ? (long) megabytes << 20 : 0);
 }

@@ -1,6 +1,7 @@
 /* charpoly.c -- fraction-free determinant and normalisation. */
 #include <string.h>
 #include <flint/fmpz_vec.h>
+#include "recstab/budget.h"
 #include "recstab/charpoly.h"
 
 void rs_charpoly_init(rs_charpoly_t cp, const rs_scheme_t s)
@@ -119,6 +120,11 @@ int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
             sign = -sign;
         }
         for (i = k + 1; i < n; i++) {
+            int rb = rs_budget_check(err, "the determinant");
+            if (rb != RS_OK) {
+                fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
+                return rb;
+            }
             for (j = k + 1; j < n; j++) {
                 fmpz_mpoly_struct *aij = A + i * n + j;
                 double b1 = prod_terms_bound(A + k * n + k, aij, ctx);

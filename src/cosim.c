@@ -57,6 +57,7 @@
 #include <string.h>
 #include <flint/fmpq_poly.h>
 #include <acb_mat.h>
+#include "recstab/budget.h"
 #include "recstab/cosim.h"
 
 /* ------------------------------------------------------------------ */
@@ -1062,6 +1063,7 @@ static int _radius(rs_radius_t r, const rs_cosim_t cs, int route,
         prec = max_prec;
     for (;;) {
         int retry;
+        if ((rc = rs_budget_check(err, "the co-simulation radius")) != RS_OK) break;
         rc = _build(&A, &k, &cnt, route, cs, prec, err);
         if (rc == RS_OK) {
             rc = rs_radius_matrix_poly(r, A, k, digits, max_prec, err);

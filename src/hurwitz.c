@@ -35,6 +35,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 
 /* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
@@ -253,6 +254,10 @@ _leading_minor_pivoting(fmpz_mpoly_t det, const fmpz_mpoly_struct *a,
         }
         ok = _bareiss_step(M, m, k, k == 0 ? NULL : M + (k - 1) * m + k - 1,
                            ctx);
+        if (ok && rs_budget_check(err, "the Hurwitz minors") != RS_OK) {
+            _mat_clear(M, m, ctx);
+            return RS_ERR_LIMIT;
+        }
     }
 
     if (!ok) {

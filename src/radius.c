@@ -13,6 +13,7 @@
 #include <mpfr.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
+#include "recstab/budget.h"
 #include "recstab/radius.h"
 
 #define RS_LOG2_10 3.32192809488736234787
@@ -538,6 +539,7 @@ static int _rs_radius_fmpz_loop(rs_radius_t r, const fmpz_poly_t p,
     prec = prec0 > max_prec ? max_prec : prec0;
     for (;;) {
         r->prec = prec;
+        if ((rc = rs_budget_check(err, "the root refinement")) != RS_OK) break;
         status = _rs_sqf_roots(r, &s, fn, prec);
         if (status != RS_EIG_FAIL) {
             _rs_radius_rho_from_roots(r, prec);
@@ -713,6 +715,7 @@ static int _rs_radius_ball_engine(rs_radius_t r, slong n, slong nzero,
     for (;;) {
         last = (prec >= stop);
         r->prec = prec;
+        if ((rc = rs_budget_check(err, "the eigenvalue refinement")) != RS_OK) goto cleanup;
         rc = build(C, data, prec, last, err);
         if (rc == RS_ERR_UNDECIDED && !last) {
             prec = (prec > stop / 2) ? stop : 2 * prec;

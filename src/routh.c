@@ -33,6 +33,7 @@
 #include <string.h>
 #include <stdarg.h>
 #include <flint/fmpq_poly.h>
+#include "recstab/budget.h"
 #include "recstab/routh.h"
 #include "recstab/bilinear.h"
 
@@ -155,6 +156,7 @@ static int routh_segment(rs_routh_t r, fmpq_poly_t G, slong *rhp,
     len = 1;
     while (!fmpq_poly_is_zero(cur)) {
         slong nominal = D[len - 1] - 1, row, zeros;
+        if (rs_budget_check(err, "the Routh array") != RS_OK) break;
         row = routh_push_row(r, cur, nominal);
         zeros = (nominal - fmpq_poly_degree(cur)) / 2;
         if (zeros > 0)

@@ -29,6 +29,7 @@ typedef struct {
     slong default_digits;  /* radius digits when not given */
     int with_scheme;       /* add "scheme": equations and lambda-matrix (for derivations) */
     double time_limit;     /* seconds for the run (<= 0: none; budget.h) */
+    double time_spent;     /* of which already used (e.g. by earlier cases) */
     slong memory_limit;    /* MB of counted memory (<= 0: none; budget.h) */
 } rs_options_t;
 

@@ -28,9 +28,10 @@ extern "C" {
 /* half of the machine's RAM in MB (1024 if unknown) */
 slong rs_budget_memory_default(void);
 
-/* Starts a budget: time_limit seconds from now and memory_limit MB of
- * counted memory (<= 0: no limit). */
-void rs_budget_start(double time_limit, slong memory_limit);
+/* Starts a budget: time_limit seconds of which spent are already used (by
+ * the caller's earlier work) and memory_limit MB of counted memory (<= 0:
+ * no limit). */
+void rs_budget_start(double time_limit, double spent, slong memory_limit);
 /* Ends the budget (no limits until the next start). */
 void rs_budget_stop(void);
 

@@ -319,7 +319,7 @@ int main(int argc, char **argv)
         }
         if (r == RS_OK) {
             rs_options_t o = opt;
-            if (opt.time_limit > 0) o.time_limit = opt.time_limit - (mono_seconds() - budget_t0);
+            o.time_spent = mono_seconds() - budget_t0;
             r = rs_analysis_run(&doc, &outcome, c, &o, err);
         }
         if (r != RS_OK) {
