@@ -803,6 +803,34 @@ static json_t *scheme_json(rs_run_t *run)
     return o;
 }
 
+/* the first name of e that the case does not declare (a typo in an
+ * assume line would otherwise silently drop the assumption), or NULL */
+static const rs_expr_t *undeclared_name(const rs_expr_t *e, const rs_case_t c)
+{
+    const rs_expr_t *u;
+    if (e == NULL) return NULL;
+    if (e->kind == RS_EXPR_NAME)
+        return (rs_case_param_index(c, e->name) < 0 && rs_case_unknown_index(c, e->name) < 0
+                && rs_case_let_index(c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
+    if ((u = undeclared_name(e->a, c)) != NULL) return u;
+    return undeclared_name(e->b, c);
+}
+
+static int check_assumptions(const rs_case_t c, rs_error_t err)
+{
+    slong i, k;
+    for (i = 0; i < c->nassume; i++)
+        for (k = 0; k < c->assume[i].n; k++) {
+            const rs_expr_t *u = undeclared_name(c->assume[i].e[k], c);
+            if (u != NULL)
+                return rs_error_set_at(err, RS_ERR_INPUT, c->assume[i].loc.file ? c->assume[i].loc.file : c->path,
+                                       u->line, u->col,
+                                       "unknown name '%s' in an assume line (expected a declared param, unknown or let)",
+                                       u->name);
+        }
+    return RS_OK;
+}
+
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
                     const rs_options_t *opt, rs_error_t err)
 {
@@ -822,7 +850,8 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     rs_budget_start(opt->time_limit, opt->time_spent, opt->memory_limit);
     /* an error in the equations must surface even when no analysis asks */
     rs_scheme_init(run.sym);
-    if (!rs_builder_is_exact(c) && !c->numeric_recurrence) {
+    r = check_assumptions(c, err);
+    if (r == RS_OK && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
         r = rs_scheme_build(run.sym, c, err);
         run.have_sym = (r == RS_OK);
     }

@@ -8,6 +8,7 @@
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>
+#include "recstab/budget.h"
 #include "recstab/analysis_impl.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
@@ -61,14 +62,24 @@ static int parse_assignments(rs_run_t *run, const rs_request_t *q, const char *t
         slong idx;
         rs_error_t e2;
         int r;
-        if (u == NULL)
-            return rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "expected NAME=VALUE after 'at', found '%s'", skip_ws(t));
+        if (u == NULL) {
+            /* the values parsed so far are freed too */
+            r = rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "expected NAME=VALUE after 'at', found '%s'", skip_ws(t));
+            rs_assign_free(a, n);
+            return r;
+        }
         idx = rs_case_param_index(run->c, name);
-        if (idx < 0)
-            return rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "'%s' is not a parameter", name);
+        if (idx < 0) {
+            r = rs_req_error(run, q, skip_ws(t), RS_ERR_INPUT, "'%s' is not a parameter", name);
+            rs_assign_free(a, n);
+            return r;
+        }
         u = skip_ws(u);
-        if (*u != '=')
-            return rs_req_error(run, q, u, RS_ERR_INPUT, "expected '=' after the name, found '%s'", u);
+        if (*u != '=') {
+            r = rs_req_error(run, q, u, RS_ERR_INPUT, "expected '=' after the name, found '%s'", u);
+            rs_assign_free(a, n);
+            return r;
+        }
         v = u + 1;
         len = strcspn(v, ",");
         num = malloc(len + 1);
@@ -317,6 +328,8 @@ static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
         arf_t u, l;
         arf_init(u); arf_init(l);
         for (;;) {
+            /* a < b are distinct, so this ends; the check bounds the cost */
+            if (rs_budget_check(NULL, "the region") != RS_OK) break;
             alg_refine(a, prec);
             alg_refine(b, prec);
             arb_get_ubound_arf(u, a->x, prec);
@@ -722,7 +735,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     piece_t *pieces = NULL;
     fmpz_mpoly_t pt, g, tmp, sqf, sqf_t;
     json_t *o, *ivs, *pts;
-    int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0;
+    int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0, single;
 
     t = read_word(rest, name);
     if (t == NULL)
@@ -765,6 +778,15 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
     rs_bounds_init(bounds, run->c->nparams);
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(bounds, &run->c->assume[i], run->c, run->err);
+    if (rs_bound_empty(bounds + tv)) {
+        rs_bounds_clear(bounds, run->c->nparams);
+        flint_free(bounds);
+        json_decref(o);
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "the assumptions are contradictory: no value of '%s' satisfies them", name);
+    }
+    /* assume NAME = c: the region is that one point, no interval */
+    single = bounds[tv].has_lo && bounds[tv].has_hi && fmpq_equal(bounds[tv].lo, bounds[tv].hi);
     alg_init(&lo_end);
     alg_init(&hi_end);
     have_lo = bounds[tv].has_lo;
@@ -886,7 +908,7 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (have_lo && bounds[tv].lo_closed) {
         pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &lo_end; npieces++;
     }
-    for (i = 0; i <= ncrit; i++) {
+    for (i = 0; i <= ncrit && !single; i++) {
         pieces[npieces].is_point = 0;
         pieces[npieces].lo = (i == 0) ? (have_lo ? &lo_end : NULL) : crit + i - 1;
         pieces[npieces].hi = (i == ncrit) ? (have_hi ? &hi_end : NULL) : crit + i;
