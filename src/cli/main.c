@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include <signal.h>
 #include <time.h>
+#include <sys/resource.h>
 #include <jansson.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -94,6 +95,19 @@ static void budget_alarm(int sig)
     budget_fatal(msg);
 }
 
+/* GMP and MPFR put their temporaries on the stack: a square root at the
+ * default precision ceiling (65536 bits) needs 12-16 MB (--set c1=0 on the
+ * Li cases overflowed the usual 8 MB).  The main thread's stack grows up to
+ * the soft limit read at fault time, so raising it here is enough. */
+static void raise_stack_limit(void)
+{
+    struct rlimit rl;
+    rlim_t want = (rlim_t) 256 << 20;
+    if (getrlimit(RLIMIT_STACK, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY || rl.rlim_cur >= want) return;
+    rl.rlim_cur = (rl.rlim_max == RLIM_INFINITY || rl.rlim_max > want) ? want : rl.rlim_max;
+    setrlimit(RLIMIT_STACK, &rl);
+}
+
 static int exit_code_for(int code)
 {
     /* an internal error is a bug, like two methods disagreeing */
@@ -143,6 +157,7 @@ int main(int argc, char **argv)
     }
 #endif
     rs_options_default(&opt);
+    raise_stack_limit();
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--json") == 0) json = 1;
