@@ -855,11 +855,19 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
         r = rs_scheme_build(run.sym, c, err);
         run.have_sym = (r == RS_OK);
     }
-    for (i = 0; i < c->nrequests && r == RS_OK; i++)
+    for (i = 0; i < c->nrequests && r == RS_OK; i++) {
         r = dispatch(&run, &c->requests[i]);
-    /* a loop stopped by the budget may have ended in another error or in a
-     * partial result: the budget's message is the one to report */
-    if (rs_budget_exceeded()) r = rs_budget_error(err);
+        /* a loop stopped by the budget may have ended in another error or in
+         * a partial result: the budget's message is the one to report, at
+         * the request that ran out */
+        if (rs_budget_exceeded()) r = rs_budget_error(err);
+        if (r == RS_ERR_LIMIT && err->line == 0) {
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s", err->msg);
+            r = rs_req_error(&run, &c->requests[i], c->requests[i].text, r, "%s", msg);
+        }
+    }
+    if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(err);
     rs_budget_stop();
     if (r != RS_OK) {
         for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);

@@ -901,6 +901,8 @@ static int point_errors(rs_run_t *run, const rs_request_t *q, const job_t *J, co
                         slong n, const char *param_desc)
 {
     slong i;
+    /* points skipped after the budget ran out: no table from them */
+    if (rs_budget_exceeded()) return rs_budget_error(run->err);
     for (i = 0; i < n; i++)
         if (pts[i].d.status != RS_OK) {
             pt_t tmp;
@@ -939,8 +941,10 @@ static int check_free(rs_run_t *run, const rs_request_t *q, const rs_variant_t *
 static int limit_error(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
 {
     char msg[400];
-    snprintf(msg, sizeof msg, "%s has %.0f points, more than the limit of %ld points per sweep or map "
-             "(raise it with --max-points N)", desc, npoints, (long) g_opt.max_points);
+    /* exact below 2^53, rounded (and said so) above */
+    snprintf(msg, sizeof msg, npoints < 9007199254740992.0 ? "%s has %.0f points, more than the limit of %ld points "
+             "per sweep or map (raise it with --max-points N)" : "%s has about %.4g points, more than the limit of "
+             "%ld points per sweep or map (raise it with --max-points N)", desc, npoints, (long) g_opt.max_points);
     return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
 }
 

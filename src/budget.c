@@ -185,13 +185,15 @@ int rs_budget_estimate(rs_error_t err, const char *what, double seconds, double 
     long ml = atomic_load(&memory_limit);
     int r = rs_budget_check(err, what);
     if (r != RS_OK) return r;
+    /* compared with what is left, reported against the limit (the message
+     * must not depend on how long parsing took) */
     if (tl > 0 && seconds > left)
         return rs_error_set(err, RS_ERR_LIMIT,
-                            "%s would take about %.3g s (estimated), more than the %.0f s left of the time "
-                            "limit of %g s; raise it with --time-limit", what, seconds, left > 0 ? left : 0.0, tl);
+                            "%s would take about %.3g s (estimated), more than the time limit of %g s allows; "
+                            "raise it with --time-limit", what, seconds, tl);
     if (ml > 0 && bytes > (double) (ml - rs_budget_memory_used()))
         return rs_error_set(err, RS_ERR_LIMIT,
-                            "%s would need about %.3g MB (estimated), more than the memory limit of %ld MB; "
+                            "%s would need about %.3g MB (estimated), more than the memory limit of %ld MB allows; "
                             "raise it with --memory-limit", what, bytes / 1048576.0, ml >> 20);
     return RS_OK;
 }

@@ -1,0 +1,65 @@
+#!/bin/sh
+# suite_budget.sh -- the resource budget of the command (issue 11): a run
+# that passes --time-limit stops within about a second of it with exit 2, a
+# message naming the limit and nothing on stdout; --memory-limit likewise;
+# bad values of the options are usage errors.  The exact messages of the
+# up-front estimates are pinned in tests/bad (sweep-huge, simulate-huge, ...).
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$(cd "$BUILD" 2>/dev/null && pwd)/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+
+now() { date +%s.%N; }
+
+# check LABEL MAX_SECONDS PATTERN -- ARGS: exit 2, no stdout, stderr matches
+# PATTERN (grep -E), done within MAX_SECONDS
+check() {
+    label=$1; max=$2; pat=$3; shift 4
+    t0=$(now)
+    timeout 60 "$RS" "$@" >"$T/out" 2>"$T/err"; rc=$?
+    t=$(awk -v a="$t0" -v b="$(now)" 'BEGIN { printf "%.2f", b - a }')
+    if [ "$rc" != 2 ]; then fail "$label: exit $rc, expected 2"; head -c 500 "$T/err"; return; fi
+    if [ -s "$T/out" ]; then fail "$label: printed on stdout"; return; fi
+    if ! grep -Eq "$pat" "$T/err"; then fail "$label: stderr '$(head -c 300 "$T/err")' does not match '$pat'"; return; fi
+    if awk -v t="$t" -v m="$max" 'BEGIN { exit !(t > m) }'; then fail "$label: took $t s, more than $max s"; return; fi
+    ok "$label ($t s)"
+}
+
+# A sweep estimated below the limit (1 us per point) that takes about 30 s:
+# stopped by the cooperative checks of the points (before the budget:
+# nothing stopped it).
+cat >"$T/sweep.case" <<'EOF'
+param h
+unknown x y
+eq x[n+1] = x[n] + h*y[n]
+eq y[n+1] = y[n] - h*x[n+1] - h*h*y[n]
+analyse sweep h from 0 to 3 steps 900000
+EOF
+check "time limit during a sweep" 3.5 '^recstab: .*sweep.case:5:9: time limit of 1 s reached during .*; raise it with --time-limit$' \
+    -- --time-limit 1 "$T/sweep.case"
+check "time limit during a sweep (json)" 3.5 'time limit of 1 s reached during .*; raise it with --time-limit$' \
+    -- --json --time-limit 1 --csv "$T/never.csv" "$T/sweep.case"
+[ -e "$T/never.csv" ] && fail "time limit: --csv file written" || ok "time limit: no --csv file written"
+check "memory limit estimated before a sweep" 1 'the sweep would need about 151 MB \(estimated\), more than the memory limit of 30 MB allows; raise it with --memory-limit$' \
+    -- --memory-limit 30 "$T/sweep.case"
+
+# --set c1=0 on a Li case: eigenvalues that cannot be isolated drive the
+# precision to the 65536-bit ceiling, where an MPFR square root needed more
+# than the usual 8 MB of stack (SIGSEGV after 0.5 s before the fix).  The
+# run is cut by the time limit (13 s otherwise).
+check "li --set c1=0 (stack at 65536 bits)" 4.5 'time limit of 2 s reached' \
+    -- --set c1=0 --time-limit 2 cases/li-explicit-k0.case
+
+# options
+for bad in "--time-limit" "--time-limit -1" "--time-limit 1.5" "--memory-limit x" "--memory-limit 100000000000"; do
+    # shellcheck disable=SC2086
+    check "usage: $bad" 1 "^recstab: --(time|memory)-limit expects a whole number" -- $bad cases/park-staggered.case
+done
+# 0 means no limit
+if "$RS" --time-limit 0 --memory-limit 0 cases/recurrence-forward-euler.case >/dev/null 2>&1; then
+    ok "--time-limit 0 --memory-limit 0 run"
+else fail "--time-limit 0 --memory-limit 0 run"; fi

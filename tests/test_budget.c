@@ -1,0 +1,208 @@
+/* test_budget.c -- the resource budget (budget.h), the up-front determinant
+ * estimate and the region's degenerate domains (issue 11). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <string.h>
+#include <time.h>
+#include <cmocka.h>
+#include <flint/fmpz_mpoly.h>
+#include "recstab/budget.h"
+#include "recstab/analysis.h"
+#include "recstab/charpoly.h"
+#include "testutil.h"
+
+static double mono(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double) ts.tv_sec + 1e-9 * (double) ts.tv_nsec;
+}
+
+/* a time limit is reported at the first check past it, sticky for every
+ * later check, with the message naming the limit and the option */
+static void test_time_limit(void **state)
+{
+    rs_error_t err;
+    double t0 = mono(), t;
+    int r = RS_OK;
+    (void) state;
+    rs_error_init(err);
+    rs_budget_start(0.05, 0, 0);
+    while (r == RS_OK && mono() - t0 < 5.0) r = rs_budget_check(err, "the test loop");
+    t = mono() - t0;
+    assert_int_equal(r, RS_ERR_LIMIT);
+    assert_true(t >= 0.05 && t < 1.05);
+    assert_string_equal(err->msg, "time limit of 0.05 s reached during the test loop; raise it with --time-limit");
+    assert_true(rs_budget_exceeded());
+    rs_error_init(err);
+    assert_int_equal(rs_budget_check(err, "another loop"), RS_ERR_LIMIT);
+    assert_string_equal(err->msg, "time limit of 0.05 s reached during the test loop; raise it with --time-limit");
+    /* a new start clears it; no limit means no error */
+    rs_budget_start(0, 0, 0);
+    assert_false(rs_budget_exceeded());
+    assert_int_equal(rs_budget_check(NULL, "x"), RS_OK);
+    rs_budget_stop();
+}
+
+/* FLINT and GMP allocations are counted: 32 MB against a limit of 8 MB */
+static void test_memory_limit(void **state)
+{
+    rs_error_t err;
+    slong before;
+    void *p;
+    mpz_t z;
+    (void) state;
+    rs_error_init(err);
+    rs_budget_start(0, 0, 8);
+    before = rs_budget_memory_used();
+    p = flint_malloc(32 << 20);
+    memset(p, 1, 32 << 20);
+    assert_true(rs_budget_memory_used() - before >= (32 << 20));
+    assert_int_equal(rs_budget_check(err, "the allocation test"), RS_ERR_LIMIT);
+    assert_string_equal(err->msg, "memory limit of 8 MB reached during the allocation test; raise it with --memory-limit");
+    flint_free(p);
+    assert_true(rs_budget_memory_used() - before < (1 << 20));
+    /* GMP's allocations (fmpz's big integers) go through the same count */
+    rs_budget_start(0, 0, 8);
+    mpz_init2(z, (mp_bitcnt_t) 1 << 28);   /* 32 MB */
+    assert_int_equal(rs_budget_check(NULL, "mpz"), RS_ERR_LIMIT);
+    mpz_clear(z);
+    rs_budget_start(0, 0, 8);
+    assert_int_equal(rs_budget_check(NULL, "after freeing"), RS_OK);
+    rs_budget_stop();
+}
+
+static void test_estimate(void **state)
+{
+    rs_error_t err;
+    (void) state;
+    rs_error_init(err);
+    rs_budget_start(10, 0, 100);
+    assert_int_equal(rs_budget_estimate(err, "the work", 1.0, 1e6), RS_OK);
+    assert_int_equal(rs_budget_estimate(err, "the work", 1000.0, 0), RS_ERR_LIMIT);
+    assert_string_equal(err->msg, "the work would take about 1e+03 s (estimated), more than the time limit of 10 s "
+                                  "allows; raise it with --time-limit");
+    assert_int_equal(rs_budget_estimate(err, "the work", 1.0, 1e9), RS_ERR_LIMIT);
+    assert_string_equal(err->msg, "the work would need about 954 MB (estimated), more than the memory limit of "
+                                  "100 MB allows; raise it with --memory-limit");
+    /* an estimate alone does not exceed the budget */
+    assert_false(rs_budget_exceeded());
+    rs_budget_stop();
+}
+
+/* det(lambda I - P) for a generic n x n matrix P of n^2 parameters */
+static int generic_det(fmpz_mpoly_t det, slong n, fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    fmpz_mpoly_struct *A = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
+    slong i;
+    int r;
+    for (i = 0; i < n * n; i++) {
+        fmpz_mpoly_init(A + i, ctx);
+        fmpz_mpoly_gen(A + i, i + 1, ctx);
+        fmpz_mpoly_neg(A + i, A + i, ctx);
+        if (i % (n + 1) == 0) {
+            fmpz_mpoly_t l;
+            fmpz_mpoly_init(l, ctx);
+            fmpz_mpoly_gen(l, 0, ctx);
+            fmpz_mpoly_add(A + i, A + i, l, ctx);
+            fmpz_mpoly_clear(l, ctx);
+        }
+    }
+    r = rs_charpoly_det(det, A, n, RS_CHARPOLY_MAX_TERMS, ctx, err);
+    for (i = 0; i < n * n; i++) fmpz_mpoly_clear(A + i, ctx);
+    flint_free(A);
+    return r;
+}
+
+/* det(lambda I - P) = sum_k (-1)^k lambda^(6-k) E_k(P), E_k the sum of the
+ * C(6,k) principal k-minors, each k! distinct monomials of distinct
+ * parameters: sum_k 6!/(6-k)! = 1957 terms, no cancellation.  Order 8 is
+ * refused before any elimination (before the estimate: after 12 s and
+ * 580 MB on this machine). */
+static void test_det_estimate(void **state)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t det;
+    rs_error_t err;
+    double t0;
+    (void) state;
+    rs_error_init(err);
+    fmpz_mpoly_ctx_init(ctx, 1 + 6 * 6, ORD_LEX);
+    fmpz_mpoly_init(det, ctx);
+    assert_int_equal(generic_det(det, 6, ctx, err), RS_OK);
+    assert_int_equal(fmpz_mpoly_length(det, ctx), 1957);
+    fmpz_mpoly_clear(det, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+
+    fmpz_mpoly_ctx_init(ctx, 1 + 8 * 8, ORD_LEX);
+    fmpz_mpoly_init(det, ctx);
+    t0 = mono();
+    assert_int_equal(generic_det(det, 8, ctx, err), RS_ERR_LIMIT);
+    assert_true(mono() - t0 < 2.0);
+    assert_non_null(strstr(err->msg, "estimated before the elimination"));
+    fmpz_mpoly_clear(det, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+static json_t *run_string(const char *text, int *code, rs_error_t err)
+{
+    rs_case_t c;
+    rs_options_t opt;
+    json_t *doc = NULL;
+    int outcome;
+    rs_case_init(c);
+    rs_options_default(&opt);
+    opt.time_limit = 20;   /* the endless loop this guards against ends here */
+    *code = rs_case_parse_string(c, "region.case", text, strlen(text), err);
+    if (*code == RS_OK) *code = rs_analysis_run(&doc, &outcome, c, &opt, err);
+    rs_case_clear(c);
+    return doc;
+}
+
+/* assume w = 1/2 leaves one value: x[n+1] = (1 - h w) x[n] at h = 1 has the
+ * root 1/2, so the region is the single stable point w = 1/2 (before: an
+ * endless refinement between the equal ends 1/2 and 1/2) */
+static void test_region_single_value(void **state)
+{
+    rs_error_t err;
+    int code;
+    json_t *doc, *o, *ivs, *iv;
+    (void) state;
+    rs_error_init(err);
+    doc = run_string("param h w\nassume w = 1/2\nunknown x\neq x[n+1] = x[n] - h*w*x[n]\n"
+                     "analyse region w at h=1\n", &code, err);
+    assert_int_equal(code, RS_OK);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    ivs = json_object_get(o, "intervals");
+    assert_int_equal(json_array_size(ivs), 1);
+    iv = json_array_get(ivs, 0);
+    assert_string_equal(json_string_value(json_object_get(iv, "status")), "stable");
+    assert_true(json_is_true(json_object_get(iv, "lo_closed")));
+    assert_true(json_is_true(json_object_get(iv, "hi_closed")));
+    assert_true(json_equal(json_object_get(iv, "lo"), json_object_get(iv, "hi")));
+    json_decref(doc);
+}
+
+/* w > 2, w < 1: no admissible value (before: SIGABRT in FLINT) */
+static void test_region_contradictory(void **state)
+{
+    rs_error_t err;
+    int code;
+    (void) state;
+    rs_error_init(err);
+    assert_null(run_string("param h w\nassume w > 2, w < 1\nunknown x\neq x[n+1] = x[n] - h*w*x[n]\n"
+                           "analyse region w at h=1\n", &code, err));
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_string_equal(err->msg, "the assumptions are contradictory: no value of 'w' satisfies them");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
+        cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_region_single_value),
+        cmocka_unit_test(test_region_contradictory),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
