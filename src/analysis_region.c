@@ -8,6 +8,7 @@
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>
+#include "recstab/radius.h"
 #include "recstab/budget.h"
 #include "recstab/analysis_impl.h"
 #include "recstab/bilinear.h"
@@ -200,7 +201,7 @@ static void alg_refine(alg_t *a, slong prec)
     {
         slong d = fmpz_poly_degree(a->minpoly);
         acb_ptr r = _acb_vec_init(d);
-        arb_fmpz_poly_complex_roots(r, a->minpoly, 0, prec);
+        rs_radius_complex_roots(r, a->minpoly, prec);
         arb_set(a->x, acb_realref(r + a->idx));
         _acb_vec_clear(r, d);
         a->prec = prec;
@@ -1056,7 +1057,7 @@ static void roots_json(json_t *arr, const fmpz_poly_t f)
         } else {
             acb_ptr r = _acb_vec_init(d);
             char *mp = rs_polyfmt_fmpz_poly(g, "lambda");
-            arb_fmpz_poly_complex_roots(r, g, 0, 96);
+            rs_radius_complex_roots(r, g, 96);
             for (k = 0; k < d; k++) {
                 char *re = arb_get_str(acb_realref(r + k), 20, ARB_STR_NO_RADIUS);
                 char *im = arb_get_str(acb_imagref(r + k), 20, ARB_STR_NO_RADIUS);

@@ -466,7 +466,7 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f, slong prec)
         if (acb_rel_accuracy_bits(E + i) < prec - 40)
             n = 0;
     if (n != d) {
-        arb_fmpz_poly_complex_roots(E, f, 0, prec);
+        rs_radius_complex_roots(E, f, prec);
         n = d;
     }
     acb_poly_clear(P);
@@ -479,7 +479,7 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f, slong prec)
 
 static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong prec)
 {
-    arb_fmpz_poly_complex_roots(E, f, 0, prec);
+    rs_radius_complex_roots(E, f, prec);
     return RS_EIG_SIMPLE;
 }
 
@@ -1356,4 +1356,32 @@ char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n)
     mag_add(rad, rad, u);
     mag_clear(u);
     return rs_radius_arf_str(arb_midref(x), n, ARF_RND_NEAR);
+}
+
+/* Root magnitudes far from 1 (w = 10^600: |lambda| ~ 10^-600) make
+ * Durand-Kerner, started on the unit circle, crawl for minutes to hours:
+ * solve g(mu) = f(2^s mu) instead, 2^s the geometric mean of the non-zero
+ * roots' magnitudes, and scale the roots back exactly.  Moderate scales
+ * (|s| < 32) are left alone so that ordinary results do not change. */
+void rs_radius_complex_roots(acb_ptr roots, const fmpz_poly_t f, slong prec)
+{
+    slong n = fmpz_poly_degree(f), k = 0, s, i;
+    fmpz_poly_t g;
+    if (n < 1) return;
+    while (fmpz_is_zero(f->coeffs + k)) k++;
+    s = k < n ? ((slong) fmpz_bits(f->coeffs + k) - (slong) fmpz_bits(f->coeffs + n)) / (n - k) : 0;
+    if (s > -32 && s < 32) {
+        arb_fmpz_poly_complex_roots(roots, f, 0, prec);
+        return;
+    }
+    fmpz_poly_init(g);
+    fmpz_poly_fit_length(g, n + 1);
+    /* s > 0: coefficient i times 2^(s i); s < 0: times 2^(-s (n - i)) */
+    for (i = 0; i <= n; i++)
+        fmpz_mul_2exp(g->coeffs + i, f->coeffs + i, (ulong) (s > 0 ? s * i : -s * (n - i)));
+    _fmpz_poly_set_length(g, n + 1);
+    arb_fmpz_poly_complex_roots(roots, g, 0, prec);
+    for (i = 0; i < n; i++)
+        acb_mul_2exp_si(roots + i, roots + i, s);
+    fmpz_poly_clear(g);
 }

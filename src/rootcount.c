@@ -13,6 +13,7 @@
 #include <arb.h>
 #include <acb.h>
 #include <arb_fmpz_poly.h>
+#include "recstab/radius.h"
 #include "recstab/budget.h"
 #include "recstab/rootcount.h"
 
@@ -217,7 +218,7 @@ static int count_isolated(rs_rootcount_t rc, const fmpz_poly_t f, slong e,
     arb_init(r);
     for (prec = 64; prec <= RS_ROOTCOUNT_MAX_PREC && !done; prec *= 2) {
         if (rs_budget_check(err, "the root isolation") != RS_OK) break;
-        arb_fmpz_poly_complex_roots(roots, f, 0, prec);
+        rs_radius_complex_roots(roots, f, prec);
         in = out = 0;
         for (i = 0; i < deg; i++) {
             acb_abs(r, roots + i, prec);

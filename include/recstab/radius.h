@@ -143,6 +143,11 @@ int rs_radius_matrix_poly(rs_radius_t r, const acb_mat_struct *A, slong k,
  * off during the call and restored (not thread-safe). */
 int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
 
+/* arb_fmpz_poly_complex_roots (f squarefree, same root order) solved on
+ * f(2^s mu) when the roots' magnitudes are far from 1 (2^s their geometric
+ * mean, |s| >= 32), which keeps extreme coefficients from taking hours. */
+void rs_radius_complex_roots(acb_ptr roots, const fmpz_poly_t f, slong prec);
+
 /* Printing certified numbers.  Every function returns a decimal string
  * (malloc'd; free with flint_free) of at most n >= 1 significant digits
  * ("0", "inf", "-inf", "nan" for those values), fixed notation or d.ddde+X;
