@@ -1717,6 +1717,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
         int ok = 1;
         fmpz_poly_t u;
         fmpq_t sc;
+        if ((r = rs_budget_check(run->err, "the claim's search for a counterexample")) != RS_OK) break;
         for (k = 0; k < nparams; k++) {
             slong pick;
             if (ncand[k] == 0) { ok = 0; break; }
