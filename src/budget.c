@@ -1,5 +1,6 @@
 /* budget.c -- wall-time and memory budget (see budget.h for the global state). */
 #define _GNU_SOURCE
+#include <limits.h>
 #include <malloc.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -38,48 +39,31 @@ static void format_limit(char *buf, size_t len, int which, const char *what)
 
 /* ---- counting allocators ---------------------------------------------------- */
 
-/* An allocation of n more bytes past the limit: FLINT would abort on a
- * failed malloc, so the command's hook ends the run with a message first. */
-static void count_alloc(long n, size_t request)
+/* bytes as a counter delta (requests past LONG_MAX / 2 fail anyway) */
+static long as_count(size_t n)
+{
+    return n > (size_t) LONG_MAX / 2 ? LONG_MAX / 2 : (long) n;
+}
+
+/* Counts n more bytes.  Past the limit, FLINT would abort on a failed
+ * malloc sooner or later, so the command's hook ends the run with a
+ * message first. */
+static void count_alloc(long n)
 {
     long lim = atomic_load(&memory_limit);
     long used = atomic_fetch_add(&memory_used, n) + n;
     void (*hook)(const char *) = atomic_load(&fatal_hook);
-    if (lim > 0 && (used > lim || (long) (request >> 1) > lim) && hook != NULL) {
+    if (lim > 0 && used > lim && hook != NULL) {
         char msg[300];
         format_limit(msg, sizeof msg, 2, "an allocation");
         hook(msg);
     }
 }
 
-static void *b_malloc(size_t n)
+/* after the call: the block's real size instead of the request */
+static void count_fix(void *p, long counted)
 {
-    void *p;
-    count_alloc((long) n, n);
-    p = malloc(n);
-    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) n);
-    return p;
-}
-
-static void *b_calloc(size_t k, size_t n)
-{
-    void *p;
-    size_t bytes = (n != 0 && k > ((size_t) -1) / n) ? (size_t) -1 : k * n;
-    count_alloc((long) (bytes >> 1), bytes);
-    p = calloc(k, n);
-    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) (bytes >> 1));
-    return p;
-}
-
-static void *b_realloc(void *q, size_t n)
-{
-    long old = (q != NULL) ? (long) malloc_usable_size(q) : 0;
-    void *p;
-    count_alloc((long) n - old, n);
-    p = realloc(q, n);
-    if (p != NULL) atomic_fetch_add(&memory_used, (long) malloc_usable_size(p) - (long) n);
-    else atomic_fetch_sub(&memory_used, (long) n - old);
-    return p;
+    atomic_fetch_add(&memory_used, (p != NULL ? (long) malloc_usable_size(p) : 0) - counted);
 }
 
 static void b_free(void *p)
@@ -88,6 +72,41 @@ static void b_free(void *p)
     atomic_fetch_sub(&memory_used, (long) malloc_usable_size(p));
     free(p);
 }
+
+static void *b_malloc(size_t n)
+{
+    void *p;
+    count_alloc(as_count(n));
+    p = malloc(n);
+    count_fix(p, as_count(n));
+    return p;
+}
+
+static void *b_calloc(size_t k, size_t n)
+{
+    long c = (n != 0 && k > ((size_t) -1) / n) ? LONG_MAX / 2 : as_count(k * n);
+    void *p;
+    count_alloc(c);
+    p = calloc(k, n);
+    count_fix(p, c);
+    return p;
+}
+
+static void *b_realloc(void *q, size_t n)
+{
+    long old = (q != NULL) ? (long) malloc_usable_size(q) : 0, c = as_count(n);
+    void *p;
+    if (n == 0 && q != NULL) {   /* glibc: frees q, returns NULL */
+        b_free(q);
+        return NULL;
+    }
+    count_alloc(c - old);
+    p = realloc(q, n);
+    if (p != NULL) count_fix(p, c);
+    else atomic_fetch_sub(&memory_used, c - old);   /* q is unchanged */
+    return p;
+}
+
 
 static void *g_realloc(void *p, size_t old, size_t n) { (void) old; return b_realloc(p, n); }
 static void g_free(void *p, size_t n) { (void) n; b_free(p); }

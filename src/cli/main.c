@@ -74,11 +74,11 @@ static int parse_long(const char *s, long lo, long hi, long *out)
 static void budget_fatal(const char *msg)
 {
     static const char pre[] = "recstab: ";
-    if (write(2, pre, sizeof pre - 1) < 0 || write(2, msg, strlen(msg)) < 0 || write(2, "\n", 1) < 0) _exit(2);
+    if (write(2, pre, sizeof pre - 1) >= 0 && write(2, msg, strlen(msg)) >= 0) (void) !write(2, "\n", 1);
     _exit(2);
 }
 
-static double budget_seconds;
+static char budget_alarm_msg[200];   /* formatted before the alarm is armed */
 
 static double mono_seconds(void)
 {
@@ -89,10 +89,8 @@ static double mono_seconds(void)
 
 static void budget_alarm(int sig)
 {
-    char msg[200];
     (void) sig;
-    snprintf(msg, sizeof msg, "time limit of %g s reached; raise it with --time-limit", budget_seconds);
-    budget_fatal(msg);
+    budget_fatal(budget_alarm_msg);
 }
 
 /* GMP and MPFR put their temporaries on the stack: a square root at the
@@ -291,7 +289,8 @@ int main(int argc, char **argv)
         rc = 2;
         goto end;
     }
-    budget_seconds = opt.time_limit;
+    snprintf(budget_alarm_msg, sizeof budget_alarm_msg, "time limit of %g s reached; raise it with --time-limit",
+             opt.time_limit);
     budget_t0 = mono_seconds();
     rs_budget_set_fatal(budget_fatal);
     if (opt.time_limit > 0) {
