@@ -877,7 +877,11 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
         return r;
     }
     d = json_object();
-    json_object_set_new(d, "case", json_string(c->path));
+    {
+        char *shown = rs_utf8_escape(c->path);   /* json_string refuses invalid UTF-8 */
+        json_object_set_new(d, "case", json_string(shown));
+        flint_free(shown);
+    }
     json_object_set_new(d, "title", c->title ? json_string(c->title) : json_null());
     arr = json_array();
     for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));

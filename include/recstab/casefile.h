@@ -172,6 +172,14 @@ void rs_cond_clear(rs_cond_t *cond);
 char *rs_strdup(const char *s);
 char *rs_strndup(const char *s, size_t n);
 
+/* Length (1 to 4) of the valid UTF-8 sequence at s (n bytes readable), 0
+ * when the bytes there are none (overlong forms and surrogates included,
+ * as jansson judges them). */
+int rs_utf8_seq_len(const char *s, size_t n);
+/* Copy of s (flint_malloc'd) with every byte that is not part of valid
+ * UTF-8 written as \xNN: file names in text and JSON output. */
+char *rs_utf8_escape(const char *s);
+
 /* Name validity helpers. */
 int rs_name_is_reserved(const char *name); /* lambda, z, n */
 

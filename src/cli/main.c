@@ -324,7 +324,9 @@ int main(int argc, char **argv)
         }
         if (r == RS_OK && emit) {
             json_t *e = json_object();
-            json_object_set_new(e, "case", json_string(cases[i]));
+            char *shown = rs_utf8_escape(cases[i]);
+            json_object_set_new(e, "case", json_string(shown));
+            flint_free(shown);
             json_object_set_new(e, "equations", json_string(c->emitted ? c->emitted
                                                                        : "# no builder statements: the case's own equations\n"));
             json_array_append_new(docs, e);

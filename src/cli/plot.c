@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <jansson.h>
 #include "plot.h"
+#include "recstab/casefile.h"
 
 typedef struct {
     const char *case_path;
@@ -47,6 +48,13 @@ static size_t collect(json_t *docs, tab_t *out)
 }
 
 size_t rs_cli_count_tables(json_t *docs) { return collect(docs, NULL); }
+
+/* a user string inside a "# ..." line of the CSV: control characters
+ * (a newline in a file name) would start a line of their own */
+static void put_comment_text(FILE *f, const char *s)
+{
+    for (; s && *s; s++) fputc((unsigned char) *s < 0x20 || *s == 0x7f ? ' ' : *s, f);
+}
 
 static size_t count_rows(const char *t)
 {
@@ -92,9 +100,13 @@ int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shar
         json_t *o = tabs[i].el;
         const char *bt = jstr(o, "boundary_table");
         t++;
-        fprintf(f, "# recstab table %zu: case=%s; title=%s; analysis=%s; points=%lld\n", t,
-                tabs[i].case_path ? tabs[i].case_path : "", tabs[i].title ? tabs[i].title : "",
-                jstr(o, "text") ? jstr(o, "text") : "", (long long) json_integer_value(json_object_get(o, "points")));
+        fprintf(f, "# recstab table %zu: case=", t);
+        put_comment_text(f, tabs[i].case_path);
+        fputs("; title=", f);
+        put_comment_text(f, tabs[i].title);
+        fputs("; analysis=", f);
+        put_comment_text(f, jstr(o, "text"));
+        fprintf(f, "; points=%lld\n", (long long) json_integer_value(json_object_get(o, "points")));
         if (shard_count > 1) {
             json_t *rows = json_object_get(o, "rows");
             fprintf(f, "# shard %ld/%ld: rows %lld-%lld of table %zu\n", shard_index, shard_count,
@@ -107,8 +119,9 @@ int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shar
             json_t *conds = json_object_get(json_object_get(o, "boundary"), "conditions");
             size_t k;
             t++;
-            fprintf(f, "# recstab table %zu: boundary of table %zu; case=%s; conditions:", t, t - 1,
-                    tabs[i].case_path ? tabs[i].case_path : "");
+            fprintf(f, "# recstab table %zu: boundary of table %zu; case=", t, t - 1);
+            put_comment_text(f, tabs[i].case_path);
+            fputs("; conditions:", f);
             for (k = 0; k < json_array_size(conds); k++) {
                 json_t *c = json_array_get(conds, k);
                 fprintf(f, "%s %lld (%s) %s > 0", k ? ";" : "",
@@ -166,15 +179,34 @@ void rs_cli_trim_tables(json_t *docs, int have_csv, size_t max_rows)
 
 /* ---- gnuplot ---------------------------------------------------------------------- */
 
-/* gnuplot single-quoted string: ' doubled */
+/* User text (titles, file and parameter names, the output path) as a gnuplot
+ * double-quoted string that is data only: letters, digits, blanks and valid
+ * non-ASCII UTF-8 stay, other ASCII is written as an octal escape (so no
+ * quote, backquote, '@', backslash or newline reaches the script's command
+ * lines), control characters become blanks and invalid bytes U+FFFD. */
 static void put_q(FILE *f, const char *s)
 {
-    fputc('\'', f);
-    for (; s && *s; s++) {
-        if (*s == '\'') fputc('\'', f);
-        fputc(*s, f);
+    size_t n = s ? strlen(s) : 0, i = 0;
+    fputc('"', f);
+    while (i < n) {
+        unsigned char ch = (unsigned char) s[i];
+        int k = rs_utf8_seq_len(s + i, n - i);
+        if (k == 0) fputs("\357\277\275", f);
+        else if (k > 1) fwrite(s + i, 1, (size_t) k, f);
+        else if (ch < 0x20 || ch == 0x7f) fputc(' ', f);
+        else if ((ch >= '0' && ch <= '9') || ((ch | 0x20) >= 'a' && (ch | 0x20) <= 'z') || ch == ' ') fputc(ch, f);
+        else fprintf(f, "\\%03o", ch);
+        i += k > 0 ? (size_t) k : 1;
     }
-    fputc('\'', f);
+    fputc('"', f);
+}
+
+/* the quoted name of a table file in the plot's private folder */
+static void put_table(FILE *f, const char *dir, char kind, size_t i)
+{
+    char p[4096 + 64];
+    snprintf(p, sizeof p, "%s/%c%zu.csv", dir, kind, i);
+    put_q(f, p);
 }
 
 static const char *ext_of(const char *path)
@@ -332,14 +364,20 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
             fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
                   "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
                   "1.5 '#d73027', 2.5 '#d73027')\n", g);
-        fprintf(g, "plot '%s/t%zu.csv' skip 1 using %d:%d:(", dir, i, col_index(o, json_string_value(json_array_get(params, 0))),
+        fputs("plot ", g);
+        put_table(g, dir, 't', i);
+        fprintf(g, " skip 1 using %d:%d:(", col_index(o, json_string_value(json_array_get(params, 0))),
                 col_index(o, json_string_value(json_array_get(params, 1))));
         if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(o, "radius"), col_index(o, "radius"));
         else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(o, "code"), col_index(o, "code"));
         fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
         if (jstr(o, "boundary_table"))
-            fprintf(g, ", '%s/b%zu.csv' skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
-                    "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", dir, i);
+        {
+            fputs(", ", g);
+            put_table(g, dir, 'b', i);
+            fputs(" skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
+                  "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
+        }
         fputc('\n', g);
     }
     /* sweeps: one panel per kind, every case overlaid */
@@ -360,21 +398,23 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
             if (!first) fputs(", ", g);
             first = 0;
             if (k == 0) {
-                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", dir, i, x,
-                        col_index(o, "radius"));
+                put_table(g, dir, 't', i);
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(o, "radius"));
                 put_q(g, legend(tabs + i));
             } else if (k == 1) {
-                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", dir, i, x,
+                put_table(g, dir, 't', i);
+                fprintf(g, " skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
                         col_index(o, "code"), col_index(o, "code"));
                 put_q(g, legend(tabs + i));
             } else {
                 char t2[600];
-                fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", dir, i, x,
-                        col_index(o, "damping_ratio_1"));
+                put_table(g, dir, 't', i);
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(o, "damping_ratio_1"));
                 snprintf(t2, sizeof t2, "%s: damping ratio", legend(tabs + i));
                 put_q(g, t2);
-                fprintf(g, ", '%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", dir, i, x,
-                        col_index(o, "frequency_error_1"));
+                fputs(", ", g);
+                put_table(g, dir, 't', i);
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(o, "frequency_error_1"));
                 snprintf(t2, sizeof t2, "%s: frequency error", legend(tabs + i));
                 put_q(g, t2);
             }
@@ -404,7 +444,8 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
                     if (col_index(o, cname) <= 0) continue;
                     if (!first) fputs(", ", g);
                     first = 0;
-                    fprintf(g, "'%s/t%zu.csv' skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ", dir, i,
+                    put_table(g, dir, 't', i);
+                    fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ",
                             col_index(o, jstr(o, "param")), col_index(o, cname));
                     put_q(g, legend(tabs + i));
                 }
