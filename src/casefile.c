@@ -4,6 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <sys/stat.h>
 #include "recstab/casefile.h"
 #include "recstab/builder.h"
 #include "recstab/recurrence.h"
@@ -155,6 +158,7 @@ void rs_case_clear(rs_case_t c)
     }
     flint_free(c->more_forces);
     flint_free(c->emitted);
+    flint_free(c->includes);
     for (i = 0; i < c->nrec; i++) {
         slong k;
         for (k = 0; k < c->rec[i].rows * c->rec[i].cols; k++) {
@@ -582,16 +586,47 @@ static void add_request_at(ctx_t *x, size_t i)
     flint_free(txt);
 }
 
-static int read_whole(char **out, size_t *outlen, const char *path, rs_error_t err);
+#define RS_STR_(x) #x
+#define RS_STR(x) RS_STR_(x)
+
+struct rs_include_struct {
+    dev_t dev;
+    ino_t ino;
+    int open;   /* still being read: including it again is a cycle */
+};
+
+static int read_whole(char **out, size_t *outlen, const char *path, int regular_only, struct stat *st,
+                      rs_error_t err);
 static int parse_text(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err);
 
-/* include FILE: relative to the including file's folder */
+static slong include_find(const rs_case_t c, const struct stat *st)
+{
+    slong k;
+    for (k = 0; k < c->nincludes; k++)
+        if (c->includes[k].dev == st->st_dev && c->includes[k].ino == st->st_ino) return k;
+    return -1;
+}
+
+static void include_add(rs_case_t c, const struct stat *st)
+{
+    GROW(c->includes, c->nincludes);
+    c->includes[c->nincludes].dev = st->st_dev;
+    c->includes[c->nincludes].ino = st->st_ino;
+    c->includes[c->nincludes].open = 1;
+    c->nincludes++;
+}
+
+/* include FILE: relative to the including file's folder.  A file already
+ * read in this parse (the same device and inode, whatever the path) is not
+ * read again: its statements apply once, so mutual includes stay linear. */
 static int st_include(ctx_t *x, size_t i)
 {
     const char *t = x->src.text;
     const char *slash;
     char *path, *text = NULL;
     size_t len = 0, end;
+    struct stat st;
+    slong k;
     int r;
     skip_ws(t, &i);
     end = strlen(t);
@@ -609,17 +644,36 @@ static int st_include(ctx_t *x, size_t i)
         memcpy(path + d, t + i, end - i);
         path[d + end - i] = '\0';
     }
-    r = read_whole(&text, &len, path, x->err);
+    if (stat(path, &st) == 0 && (k = include_find(x->c, &st)) >= 0) {
+        r = x->c->includes[k].open ? at_err(x, i, RS_ERR_INPUT, "include cycle: '%s' is still being read", path)
+                                   : RS_OK;
+        flint_free(path);
+        return r;
+    }
+    if (x->c->nincludes > RS_CASE_MAX_INCLUDES) {
+        flint_free(path);
+        return at_err(x, i, RS_ERR_LIMIT, "more than " RS_STR(RS_CASE_MAX_INCLUDES) " files included%s", "");
+    }
+    r = read_whole(&text, &len, path, 1, &st, x->err);
+    if (r == RS_OK && x->c->include_bytes + (slong) len > RS_CASE_MAX_INCLUDE_BYTES) {
+        flint_free(text);
+        flint_free(path);
+        return at_err(x, i, RS_ERR_LIMIT, "included files over 16 MiB in all (the limit)%s", "");
+    }
     if (r != RS_OK) {
-        char msg[RS_ERROR_MSG_LEN];
-        snprintf(msg, sizeof msg, "%s", x->err->msg);
-        at_err(x, i, RS_ERR_INPUT, "cannot include: %s", msg);
+        char msg[2 * RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "cannot include '%s': %s", path, x->err->msg);
+        at_err(x, i, r == RS_ERR_LIMIT ? RS_ERR_LIMIT : RS_ERR_INPUT, "%s", msg);
         flint_free(path);
         return x->err->code;
     }
+    x->c->include_bytes += (slong) len;
+    include_add(x->c, &st);
+    k = x->c->nincludes - 1;
     x->c->include_depth++;
     r = parse_text(x->c, path, text, len, x->err);
     x->c->include_depth--;
+    x->c->includes[k].open = 0;
     flint_free(text);
     flint_free(path);
     return r;
@@ -800,7 +854,8 @@ static int parse_text(rs_case_t c, const char *path, const char *text, size_t le
     return r;
 }
 
-int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
+/* the top level: the case file's text, then the builders' expansion */
+static int parse_top(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
 {
     int r;
     flint_free(c->path);
@@ -813,21 +868,43 @@ int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t
     return r;
 }
 
+int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
+{
+    c->nincludes = 0;
+    c->include_bytes = 0;
+    return parse_top(c, path, text, len, err);
+}
+
 int rs_case_parse_append(rs_case_t c, const char *label, const char *text, rs_error_t err)
 {
     return parse_text(c, label, text, strlen(text), err);
 }
 
-static int read_whole(char **out, size_t *outlen, const char *path, rs_error_t err)
+/* Reads path ("-": stdin) whole into a NUL-terminated buffer; *st
+ * describes it.  regular_only (include): FIFOs, devices and folders are
+ * refused, opened without blocking so that a FIFO cannot hang the parse. */
+static int read_whole(char **out, size_t *outlen, const char *path, int regular_only, struct stat *st,
+                      rs_error_t err)
 {
     FILE *f;
     char *text = NULL;
     size_t len = 0, cap = 0;
-    int is_stdin = (strcmp(path, "-") == 0);
+    int is_stdin = (strcmp(path, "-") == 0) && !regular_only;
+    int fd = is_stdin ? 0 : open(path, O_RDONLY | (regular_only ? O_NONBLOCK : 0));
     *out = NULL;
-    f = is_stdin ? stdin : fopen(path, "rb");
-    if (f == NULL)
+    if (fd < 0)
         return rs_error_set_at(err, RS_ERR_IO, path, 0, 0, "cannot open: %s", strerror(errno));
+    if (fstat(fd, st) != 0 || (regular_only && !S_ISREG(st->st_mode))) {
+        const char *kind = S_ISDIR(st->st_mode) ? "a folder" : S_ISFIFO(st->st_mode) ? "a FIFO"
+                         : S_ISCHR(st->st_mode) || S_ISBLK(st->st_mode) ? "a device" : "not a regular file";
+        close(fd);
+        return rs_error_set_at(err, RS_ERR_INPUT, path, 0, 0, "expected a regular file, found %s", kind);
+    }
+    f = is_stdin ? stdin : fdopen(fd, "rb");
+    if (f == NULL) {
+        close(fd);
+        return rs_error_set_at(err, RS_ERR_IO, path, 0, 0, "cannot open: %s", strerror(errno));
+    }
     for (;;) {
         size_t got;
         if (len + 65536 + 1 > cap) {
@@ -860,9 +937,13 @@ int rs_case_parse_file(rs_case_t c, const char *path, rs_error_t err)
 {
     char *text;
     size_t len;
-    int r = read_whole(&text, &len, path, err);
+    struct stat st;
+    int r = read_whole(&text, &len, path, 0, &st, err);
     if (r != RS_OK) return r;
-    r = rs_case_parse_string(c, path, text, len, err);
+    c->nincludes = 0;
+    c->include_bytes = 0;
+    include_add(c, &st);   /* a fragment including the case file is a cycle */
+    r = parse_top(c, path, text, len, err);
     flint_free(text);
     return r;
 }

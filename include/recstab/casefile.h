@@ -18,6 +18,8 @@ extern "C" {
 
 #define RS_CASE_MAX_BYTES (16L * 1024 * 1024) /* whole file */
 #define RS_CASE_MAX_LINE 65536                /* one logical statement */
+#define RS_CASE_MAX_INCLUDES 256              /* distinct files read by include */
+#define RS_CASE_MAX_INCLUDE_BYTES (16L * 1024 * 1024) /* all of them together (16 MiB) */
 #define RS_CASE_MAX_NAMES 256                 /* params + unknowns + lets */
 
 typedef struct {
@@ -134,6 +136,10 @@ typedef struct {
     slong nrec;      rs_recterm_t *rec;    /* `recurrence K = [...]` terms */
     int numeric_recurrence; /* entries with functions (exp, sin, ...): numeric path only */
     int include_depth;
+    /* files read while parsing (the case file first), by device and inode:
+     * each is read once, and one still being read is an include cycle */
+    slong nincludes; struct rs_include_struct *includes;
+    slong include_bytes;   /* bytes read by include */
 } rs_case_struct;
 typedef rs_case_struct rs_case_t[1];
 
