@@ -1,5 +1,6 @@
 /* main.c -- the recstab command.  All output is buffered and written only
  * when every case succeeded, so a failing run leaves no partial output. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -112,19 +113,54 @@ static int exit_code_for(int code)
     return (code == RS_ERR_INCONSISTENT || code == RS_ERR_INTERNAL) ? 3 : 2;
 }
 
-/* Moves a finished temporary output (--csv, --plot) onto its path; on
- * failure the temporary stays for the cleanup at the end of main. */
-static int commit_output(char **tmp, const char *path)
+/* Checks the --csv / --plot targets before any work and starts the signal
+ * thread (before OpenMP starts threads: they inherit its signal mask). */
+static int outputs_init(rs_cli_out_t *csv, const char *csv_path, rs_cli_out_t *plot, const char *plot_path,
+                        rs_cli_out_t **outs, int *nouts)
 {
     char msg[1200];
-    if (*tmp == NULL) return 0;
-    if (rs_cli_commit(*tmp, path, msg, sizeof msg) != 0) {
-        fprintf(stderr, "recstab: %s\n", msg);
-        return -1;
+    *nouts = 0;
+    if (csv_path != NULL) {
+        if (rs_cli_out_init(csv, "--csv", csv_path, msg, sizeof msg) != 0) goto fail;
+        outs[(*nouts)++] = csv;
     }
-    free(*tmp);
-    *tmp = NULL;
+    if (plot_path != NULL) {
+        if (rs_cli_out_init(plot, "--plot", plot_path, msg, sizeof msg) != 0) goto fail;
+        outs[(*nouts)++] = plot;
+    }
+    if (rs_cli_signals_start() != 0) {
+        snprintf(msg, sizeof msg, "cannot install the SIGINT/SIGTERM cleanup");
+        goto fail;
+    }
     return 0;
+fail:
+    fprintf(stderr, "recstab: %s\n", msg);
+    return -1;
+}
+
+/* Commits the run: the staged files renamed onto their paths, devices,
+ * FIFOs and "-" written through, then the report; a failure at any step
+ * puts the replaced files back (exit 2).  The report goes to stderr when
+ * the CSV takes stdout. */
+static int outputs_commit(rs_cli_out_t **outs, int nouts, const char *report, size_t len, FILE *to)
+{
+    char msg[1200];
+    int k;
+    if (rs_cli_out_rename(outs, nouts, msg, sizeof msg) != 0) goto fail;
+    for (k = 0; k < nouts; k++)
+        if (rs_cli_out_write_through(outs[k], msg, sizeof msg) != 0) goto undo;
+    if (fwrite(report, 1, len, to) != len || fflush(to) != 0) {
+        snprintf(msg, sizeof msg, "cannot write output: %s%s", strerror(errno),
+                 nouts > 0 ? " (no --csv/--plot file written)" : "");
+        goto undo;
+    }
+    rs_cli_out_done(outs, nouts);
+    return 0;
+undo:
+    rs_cli_out_undo(outs, nouts);
+fail:
+    fprintf(stderr, "recstab: %s\n", msg);
+    return -1;
 }
 
 int main(int argc, char **argv)
@@ -140,7 +176,8 @@ int main(int argc, char **argv)
     size_t outlen = 0;
     FILE *out;
     const char *csv_path = NULL, *plot_path = NULL;
-    char *csv_tmp = NULL, *plot_tmp = NULL;
+    rs_cli_out_t csv_out, plot_out, *outs[2];
+    int nouts = 0;
     long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
     int rank = 0, first_level = RS_LEVEL_FAST;
     rs_sweep_options_t swopt;
@@ -273,6 +310,10 @@ int main(int argc, char **argv)
         goto end;
     }
     opt.with_scheme = markdown || latex;
+    if (outputs_init(&csv_out, csv_path, &plot_out, plot_path, outs, &nouts) != 0) {
+        rc = 2;
+        goto end;
+    }
 #ifdef _OPENMP
     if (threads > 0) omp_set_num_threads((int) threads);
 #endif
@@ -356,12 +397,12 @@ int main(int argc, char **argv)
      * everything succeeded */
     if (rank == 0 && (csv_path != NULL || plot_path != NULL)) {
         char msg[1200];
-        if (plot_path != NULL && rs_cli_plot_stage(plot_path, docs, &plot_tmp, msg, sizeof msg) != 0) {
+        if (plot_path != NULL && rs_cli_plot_stage(&plot_out, docs, msg, sizeof msg) != 0) {
             fprintf(stderr, "recstab: %s\n", msg);
             rc = 2;
             goto end;
         }
-        if (csv_path != NULL && rs_cli_csv_stage(csv_path, docs, shard_i, shard_n, &csv_tmp, msg, sizeof msg) != 0) {
+        if (csv_path != NULL && rs_cli_csv_stage(&csv_out, docs, shard_i, shard_n, msg, sizeof msg) != 0) {
             fprintf(stderr, "recstab: %s\n", msg);
             rc = 2;
             goto end;
@@ -398,20 +439,12 @@ int main(int argc, char **argv)
         }
     }
     fclose(out);
-    if (commit_output(&csv_tmp, csv_path) != 0 || commit_output(&plot_tmp, plot_path) != 0) {
-        free(outbuf);
-        rc = 2;
-        goto end;
-    }
     if (rank != 0) outlen = 0;
-    if (fwrite(outbuf, 1, outlen, stdout) != outlen || fflush(stdout) != 0) {
-        fprintf(stderr, "recstab: cannot write output\n");
-        rc = 2;
-    } else rc = worst;
+    rc = outputs_commit(outs, rank == 0 ? nouts : 0, outbuf, outlen,
+                        csv_path != NULL && strcmp(csv_path, "-") == 0 ? stderr : stdout) != 0 ? 2 : worst;
     free(outbuf);
 end:
-    if (csv_tmp != NULL) { unlink(csv_tmp); free(csv_tmp); }
-    if (plot_tmp != NULL) { unlink(plot_tmp); free(plot_tmp); }
+    for (i = 0; i < nouts; i++) rs_cli_out_clear(outs[i]);
     json_decref(docs);
     free(sets); free(analyses); free(cases);
 #ifdef RS_MPI

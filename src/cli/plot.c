@@ -2,6 +2,8 @@
  * The library computes the tables (CSV text in the JSON elements); this file
  * only writes them and calls gnuplot (Debian gnuplot-nox). */
 #include <errno.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -63,36 +65,264 @@ static size_t count_rows(const char *t)
     return n > 0 ? n - 1 : 0;   /* minus the column header */
 }
 
-/* mkstemp beside path; returns fd, *tmp malloc'd */
-static int stage_open(const char *path, char **tmp, char *err, size_t errlen)
+/* ---- output files and their cleanup -------------------------------------------------
+ * The outputs of the run and the plot's private folder are registered here;
+ * every change of their state happens under `tidy_lock`, which the signal
+ * thread takes before it removes temporaries, undoes renames and exits. */
+
+static pthread_mutex_t tidy_lock = PTHREAD_MUTEX_INITIALIZER;
+static rs_cli_out_t *tidy_outs[4];
+static int ntidy_outs;
+static char tidy_dir[4096];   /* the plot's private folder, "" when none */
+static size_t tidy_dir_files;
+static pid_t tidy_child;      /* gnuplot while it runs */
+
+static void rm_dir(const char *dir, size_t nfiles);
+static const char *ext_of(const char *path);
+
+int rs_cli_out_init(rs_cli_out_t *o, const char *option, const char *path, char *err, size_t errlen)
 {
-    size_t n = strlen(path);
+    struct stat st;
+    memset(o, 0, sizeof *o);
+    o->option = option;
+    o->path = path;
+    if (strcmp(option, "--plot") == 0 && strcmp(ext_of(path), "png") != 0 && strcmp(ext_of(path), "svg") != 0) {
+        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", path);
+        return -1;
+    }
+    if (strcmp(path, "-") == 0 && strcmp(option, "--csv") == 0) o->through = 1;
+    else if (lstat(path, &st) != 0) {
+        if (errno != ENOENT) {
+            snprintf(err, errlen, "%s: cannot use '%s': %s", option, path, strerror(errno));
+            return -1;
+        }
+    } else if (S_ISLNK(st.st_mode)) {
+        snprintf(err, errlen, "%s: '%s' is a symbolic link: give the path of the file itself "
+                 "(recstab replaces only regular files)", option, path);
+        return -1;
+    } else if (S_ISDIR(st.st_mode) || S_ISSOCK(st.st_mode)) {
+        snprintf(err, errlen, "%s: '%s' is a %s: expected a file name", option, path,
+                 S_ISDIR(st.st_mode) ? "folder" : "socket");
+        return -1;
+    } else if (S_ISREG(st.st_mode)) o->existed = 1;
+
+    else o->through = 1;   /* a device or FIFO: written through, never replaced */
+    pthread_mutex_lock(&tidy_lock);
+    if (ntidy_outs < 4) tidy_outs[ntidy_outs++] = o;
+    pthread_mutex_unlock(&tidy_lock);
+    return 0;
+}
+
+/* unlocked: removes the temporary, undoes a rename */
+static void out_undo(rs_cli_out_t *o)
+{
+    if (o->tmp != NULL) unlink(o->tmp);
+    if (o->renamed) {
+        if (o->backup != NULL) rename(o->backup, o->path);
+        else if (!o->existed) unlink(o->path);
+        o->renamed = 0;
+    }
+}
+
+static void out_forget(rs_cli_out_t *o)
+{
+    free(o->tmp);
+    free(o->backup);
+    o->tmp = o->backup = NULL;
+}
+
+void rs_cli_out_clear(rs_cli_out_t *o)
+{
+    int k;
+    pthread_mutex_lock(&tidy_lock);
+    out_undo(o);
+    out_forget(o);
+    for (k = 0; k < ntidy_outs; k++)
+        if (tidy_outs[k] == o) tidy_outs[k] = tidy_outs[--ntidy_outs];
+    pthread_mutex_unlock(&tidy_lock);
+}
+
+/* the stage: mkstemp beside the path (renamed onto it at the end), in
+ * TMPDIR for a device, FIFO or stdout; returns an fd, o->tmp set */
+static int stage_open(rs_cli_out_t *o, char *err, size_t errlen)
+{
+    const char *tdir = getenv("TMPDIR");
+    size_t n = strlen(o->path) + (tdir ? strlen(tdir) : 0) + 32;
+    char *tmp = malloc(n);
     int fd;
-    *tmp = malloc(n + 16);
-    snprintf(*tmp, n + 16, "%s.tmp.XXXXXX", path);
-    fd = mkstemp(*tmp);
+    if (o->through) snprintf(tmp, n, "%s/recstab-out.XXXXXX", tdir && *tdir ? tdir : "/tmp");
+    else snprintf(tmp, n, "%s.tmp.XXXXXX", o->path);
+    pthread_mutex_lock(&tidy_lock);
+    fd = mkstemp(tmp);
+    if (fd >= 0) o->tmp = tmp;
+    pthread_mutex_unlock(&tidy_lock);
     if (fd >= 0) {
         mode_t m = umask(0);
         umask(m);
         fchmod(fd, 0666 & ~m);   /* mkstemp's 0600 would survive the rename */
-    }
-    if (fd < 0) {
-        snprintf(err, errlen, "cannot create a temporary file beside '%s': %s", path, strerror(errno));
-        free(*tmp);
-        *tmp = NULL;
+    } else {
+        snprintf(err, errlen, "cannot create a temporary file %s '%s': %s", o->through ? "for" : "beside",
+                 o->path, strerror(errno));
+        free(tmp);
     }
     return fd;
 }
 
-int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shard_count, char **tmp,
-                     char *err, size_t errlen)
+/* drops a failed stage */
+static void stage_drop(rs_cli_out_t *o)
 {
+    pthread_mutex_lock(&tidy_lock);
+    if (o->tmp != NULL) unlink(o->tmp);
+    out_forget(o);
+    pthread_mutex_unlock(&tidy_lock);
+}
+
+int rs_cli_out_rename(rs_cli_out_t **outs, int n, char *err, size_t errlen)
+{
+    int k, bad = 0;
+    pthread_mutex_lock(&tidy_lock);
+    for (k = 0; k < n && !bad; k++) {
+        rs_cli_out_t *o = outs[k];
+        struct stat st;
+        if (o->through || o->tmp == NULL) continue;
+        /* the path may have changed since rs_cli_out_init */
+        if (lstat(o->path, &st) == 0 && !S_ISREG(st.st_mode)) {
+            snprintf(err, errlen, "%s: '%s' is no longer a regular file; nothing written", o->option, o->path);
+            bad = 1;
+            break;
+        }
+        o->existed = (lstat(o->path, &st) == 0);
+        if (o->existed) {
+            /* a hard link keeps the old file until the run is final */
+            size_t m = strlen(o->tmp) + 8;
+            o->backup = malloc(m);
+            snprintf(o->backup, m, "%s.old", o->tmp);
+            if (link(o->path, o->backup) != 0) {
+                snprintf(err, errlen, "%s: cannot keep the old '%s' while replacing it: %s", o->option, o->path,
+                         strerror(errno));
+                free(o->backup);
+                o->backup = NULL;
+                bad = 1;
+                break;
+            }
+        }
+        if (rename(o->tmp, o->path) != 0) {
+            snprintf(err, errlen, "%s: cannot rename '%s' to '%s': %s", o->option, o->tmp, o->path, strerror(errno));
+            if (o->backup != NULL) { unlink(o->backup); free(o->backup); o->backup = NULL; }
+            bad = 1;
+            break;
+        }
+        free(o->tmp);
+        o->tmp = NULL;
+        o->renamed = 1;
+    }
+    if (bad)
+        for (k = 0; k < n; k++) { out_undo(outs[k]); if (outs[k]->backup) unlink(outs[k]->backup); }
+    pthread_mutex_unlock(&tidy_lock);
+    return bad ? -1 : 0;
+}
+
+int rs_cli_out_write_through(rs_cli_out_t *o, char *err, size_t errlen)
+{
+    char buf[65536];
+    int in, outfd, bad = 0;
+    ssize_t got = 0;
+    if (!o->through || o->tmp == NULL) return 0;
+    in = open(o->tmp, O_RDONLY);
+    outfd = strcmp(o->path, "-") == 0 ? 1 : open(o->path, O_WRONLY | O_NOCTTY);  /* no O_CREAT, no O_TRUNC */
+    if (in < 0 || outfd < 0) bad = 1;
+    while (!bad && (got = read(in, buf, sizeof buf)) > 0) {
+        ssize_t off = 0;
+        while (off < got) {
+            ssize_t w = write(outfd, buf + off, (size_t) (got - off));
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0) { bad = 1; break; }
+            off += w;
+        }
+    }
+    if (got < 0) bad = 1;
+    if (bad) snprintf(err, errlen, "%s: cannot write '%s': %s", o->option, o->path, strerror(errno));
+    if (in >= 0) close(in);
+    if (outfd > 1 && close(outfd) != 0 && !bad) {
+        snprintf(err, errlen, "%s: cannot write '%s': %s", o->option, o->path, strerror(errno));
+        bad = 1;
+    }
+    stage_drop(o);
+    return bad ? -1 : 0;
+}
+
+void rs_cli_out_undo(rs_cli_out_t **outs, int n)
+{
+    int k;
+    pthread_mutex_lock(&tidy_lock);
+    for (k = 0; k < n; k++) {
+        out_undo(outs[k]);
+        if (outs[k]->backup != NULL) unlink(outs[k]->backup);
+        out_forget(outs[k]);
+    }
+    pthread_mutex_unlock(&tidy_lock);
+}
+
+void rs_cli_out_done(rs_cli_out_t **outs, int n)
+{
+    int k;
+    pthread_mutex_lock(&tidy_lock);
+    for (k = 0; k < n; k++) {
+        if (outs[k]->backup != NULL) unlink(outs[k]->backup);
+        outs[k]->renamed = 0;
+        out_forget(outs[k]);
+    }
+    pthread_mutex_unlock(&tidy_lock);
+}
+
+/* Waits for SIGINT/SIGTERM (blocked in every other thread); holds the lock
+ * until _exit so that main cannot commit or exit meanwhile. */
+static void *signal_thread(void *arg)
+{
+    sigset_t *set = arg;
+    int sig = 0, k;
+    static const char msg[] = "recstab: interrupted; temporaries removed\n";
+    if (sigwait(set, &sig) != 0) return NULL;
+    pthread_mutex_lock(&tidy_lock);
+    if (tidy_child > 0) {
+        kill(tidy_child, SIGKILL);
+        waitpid(tidy_child, NULL, 0);
+    }
+    for (k = 0; k < ntidy_outs; k++) {
+        out_undo(tidy_outs[k]);
+        if (tidy_outs[k]->backup != NULL) unlink(tidy_outs[k]->backup);
+    }
+    if (tidy_dir[0]) rm_dir(tidy_dir, tidy_dir_files);
+    if (write(2, msg, sizeof msg - 1) < 0) sig += 0;
+    _exit(128 + sig);
+}
+
+int rs_cli_signals_start(void)
+{
+    static sigset_t set;
+    pthread_t th;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    /* before any other thread exists: they inherit the mask */
+    if (pthread_sigmask(SIG_BLOCK, &set, NULL) != 0) return -1;
+    if (pthread_create(&th, NULL, signal_thread, &set) != 0) {
+        pthread_sigmask(SIG_UNBLOCK, &set, NULL);
+        return -1;
+    }
+    pthread_detach(th);
+    return 0;
+}
+
+int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard_count, char *err, size_t errlen)
+{
+    const char *path = o->path;
     size_t n = collect(docs, NULL), i, t = 0;
     tab_t *tabs = calloc(n + 1, sizeof(tab_t));
     FILE *f;
     int fd, bad = 0;
     collect(docs, tabs);
-    fd = stage_open(path, tmp, err, errlen);
+    fd = stage_open(o, err, errlen);
     if (fd < 0) { free(tabs); return -1; }
     f = fdopen(fd, "w");
     if (n == 0) fputs("# recstab: no sweep or map in this run\n", f);
@@ -137,19 +367,8 @@ int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shar
     if (fclose(f) != 0) bad = 1;
     free(tabs);
     if (bad) {
-        snprintf(err, errlen, "cannot write '%s': %s", *tmp, strerror(errno));
-        unlink(*tmp);
-        free(*tmp);
-        *tmp = NULL;
-        return -1;
-    }
-    return 0;
-}
-
-int rs_cli_commit(const char *tmp, const char *path, char *err, size_t errlen)
-{
-    if (rename(tmp, path) != 0) {
-        snprintf(err, errlen, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
+        snprintf(err, errlen, "cannot write '%s': %s", o->tmp, strerror(errno));
+        stage_drop(o);
         return -1;
     }
     return 0;
@@ -187,6 +406,7 @@ void rs_cli_trim_tables(json_t *docs, int have_csv, size_t max_rows)
 static void put_q(FILE *f, const char *s)
 {
     size_t n = s ? strlen(s) : 0, i = 0;
+    int esc = 0;   /* the last thing written was an octal escape */
     fputc('"', f);
     while (i < n) {
         unsigned char ch = (unsigned char) s[i];
@@ -194,8 +414,17 @@ static void put_q(FILE *f, const char *s)
         if (k == 0) fputs("\357\277\275", f);
         else if (k > 1) fwrite(s + i, 1, (size_t) k, f);
         else if (ch < 0x20 || ch == 0x7f) fputc(' ', f);
-        else if ((ch >= '0' && ch <= '9') || ((ch | 0x20) >= 'a' && (ch | 0x20) <= 'z') || ch == ' ') fputc(ch, f);
-        else fprintf(f, "\\%03o", ch);
+        /* a digit right after an escape is escaped too: gnuplot reads
+         * "\0567" as one number */
+        else if ((ch >= '0' && ch <= '9' && !esc) || ((ch | 0x20) >= 'a' && (ch | 0x20) <= 'z') || ch == ' ')
+            fputc(ch, f);
+        else {
+            fprintf(f, "\\%03o", ch);
+            esc = 1;
+            i++;
+            continue;
+        }
+        esc = 0;
         i += k > 0 ? (size_t) k : 1;
     }
     fputc('"', f);
@@ -280,8 +509,18 @@ static void rm_dir(const char *dir, size_t nfiles)
     rmdir(dir);
 }
 
-int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, size_t errlen)
+/* removes the plot's private folder */
+static void plot_dir_drop(const char *dir, size_t n)
 {
+    pthread_mutex_lock(&tidy_lock);
+    rm_dir(dir, n);
+    tidy_dir[0] = '\0';
+    pthread_mutex_unlock(&tidy_lock);
+}
+
+int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
+{
+    const char *path = o->path;
     size_t n = collect(docs, NULL), i, npanels = 0, nmaps = 0;
     tab_t *tabs;
     const char *ext = ext_of(path), *tdir = getenv("TMPDIR");
@@ -301,7 +540,13 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     tabs = calloc(n + 1, sizeof(tab_t));
     collect(docs, tabs);
     snprintf(dir, sizeof dir, "%s/recstab-plot.XXXXXX", tdir && *tdir ? tdir : "/tmp");
-    if (mkdtemp(dir) == NULL) {
+    pthread_mutex_lock(&tidy_lock);
+    if (mkdtemp(dir) != NULL) {
+        snprintf(tidy_dir, sizeof tidy_dir, "%s", dir);
+        tidy_dir_files = n;
+    }
+    pthread_mutex_unlock(&tidy_lock);
+    if (tidy_dir[0] == '\0') {
         snprintf(err, errlen, "--plot: cannot create a temporary directory: %s", strerror(errno));
         free(tabs);
         return -1;
@@ -332,15 +577,15 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     npanels = nmaps + (size_t) (has_kind[0] + has_kind[1]) + (size_t) (has_kind[2] ? 2 * (nmodes > 0 ? nmodes : 1) : 0);
     cols = npanels > 1 ? 2 : 1;
     rows = (int) ((npanels + (size_t) cols - 1) / (size_t) cols);
-    fd = stage_open(path, tmp, err, errlen);
-    if (fd < 0) { rm_dir(dir, n); free(tabs); return -1; }
+    fd = stage_open(o, err, errlen);
+    if (fd < 0) { plot_dir_drop(dir, n); free(tabs); return -1; }
     close(fd);
     snprintf(p, sizeof p, "%s/plot.gp", dir);
     g = fopen(p, "w");
     if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     else fprintf(g, "set terminal svg size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     fputs("set output ", g);
-    put_q(g, *tmp);
+    put_q(g, o->tmp);
     fputs("\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
     if (npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
     /* maps: one panel each */
@@ -457,9 +702,13 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
     fputs("set output\n", g);
     fclose(g);
     fflush(stdout);
+    pthread_mutex_lock(&tidy_lock);   /* a signal now finds gnuplot registered */
     pid = fork();
     if (pid == 0) {
         int lf;
+        sigset_t none;
+        sigemptyset(&none);
+        pthread_sigmask(SIG_SETMASK, &none, NULL);
         snprintf(p, sizeof p, "%s/gnuplot.log", dir);
         lf = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0600);
         if (lf >= 0) { dup2(lf, 1); dup2(lf, 2); close(lf); }
@@ -467,7 +716,13 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
         execlp("gnuplot", "gnuplot", p, (char *) NULL);
         _exit(127);
     }
-    if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    tidy_child = pid;
+    pthread_mutex_unlock(&tidy_lock);
+    if (pid > 0 && waitpid(pid, &status, 0) < 0) pid = -1;
+    pthread_mutex_lock(&tidy_lock);
+    tidy_child = 0;
+    pthread_mutex_unlock(&tidy_lock);
+    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         char msg[300] = "";
         FILE *lf;
         snprintf(p, sizeof p, "%s/gnuplot.log", dir);
@@ -481,26 +736,22 @@ int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, siz
             snprintf(err, errlen, "--plot: gnuplot not found (Debian: apt-get install gnuplot-nox)");
         else
             snprintf(err, errlen, "--plot: gnuplot failed: %s", msg);
-        unlink(*tmp);
-        free(*tmp);
-        *tmp = NULL;
-        rm_dir(dir, n);
+        stage_drop(o);
+        plot_dir_drop(dir, n);
         free(tabs);
         return -1;
     }
     {
         struct stat st;
-        if (stat(*tmp, &st) != 0 || st.st_size == 0) {
+        if (stat(o->tmp, &st) != 0 || st.st_size == 0) {
             snprintf(err, errlen, "--plot: gnuplot wrote nothing");
-            unlink(*tmp);
-            free(*tmp);
-            *tmp = NULL;
-            rm_dir(dir, n);
+            stage_drop(o);
+            plot_dir_drop(dir, n);
             free(tabs);
             return -1;
         }
     }
-    rm_dir(dir, n);
+    plot_dir_drop(dir, n);
     free(tabs);
     return 0;
 }

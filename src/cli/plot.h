@@ -11,19 +11,50 @@
  * documents). */
 size_t rs_cli_count_tables(json_t *docs);
 
-/* Writes every table of the run into a temporary file beside path; *tmp gets
- * its name (malloc'd).  shard_index/shard_count add the "# shard" lines.
- * Sets "csv": path in every element written.  0 on success, else -1 with a
- * message in err. */
-int rs_cli_csv_stage(const char *path, json_t *docs, long shard_index, long shard_count, char **tmp,
-                     char *err, size_t errlen);
+/* An output file of the run (--csv FILE, --plot FILE).  A regular file, or
+ * a new one, is staged beside its path (PATH.tmp.XXXXXX) and renamed onto
+ * it; a device, a FIFO or "-" (stdout, --csv only) is staged in TMPDIR and
+ * written through, never replaced; a symbolic link or a folder is refused.
+ * SIGINT/SIGTERM (rs_cli_signals_start) remove what is staged and undo
+ * renames not yet final. */
+typedef struct {
+    const char *path, *option;
+    int through;      /* device, FIFO or stdout: written through */
+    int existed;      /* a regular file was at path */
+    char *tmp;        /* the staged content (malloc'd name) */
+    char *backup;     /* hard link to the replaced file until the run is final */
+    int renamed;      /* tmp is at path; rs_cli_out_undo puts the old file back */
+} rs_cli_out_t;
+
+/* Checks what is at path (before any work: errors come early); 0, or -1
+ * with a message in err. */
+int rs_cli_out_init(rs_cli_out_t *o, const char *option, const char *path, char *err, size_t errlen);
+/* Removes a temporary or undoes a rename that rs_cli_out_done did not make final. */
+void rs_cli_out_clear(rs_cli_out_t *o);
+
+/* Writes every table of the run into o's stage.  shard_index/shard_count
+ * add the "# shard" lines.  Sets "csv": path in every element written.  0 on
+ * success, else -1 with a message in err. */
+int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard_count, char *err, size_t errlen);
 
 /* Renders the tables with gnuplot (terminal from the extension: .png
- * pngcairo, .svg svg) into a temporary file beside path. */
-int rs_cli_plot_stage(const char *path, json_t *docs, char **tmp, char *err, size_t errlen);
+ * pngcairo, .svg svg) into o's stage. */
+int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen);
 
-/* rename(tmp, path); 0 on success. */
-int rs_cli_commit(const char *tmp, const char *path, char *err, size_t errlen);
+/* The commit, all or nothing for the regular files: rs_cli_out_rename moves
+ * every stage onto its path (keeping the old files as hard links), undoing
+ * all of them when one fails; rs_cli_out_write_through then writes a device,
+ * FIFO or stdout; rs_cli_out_undo puts the old files back (a later failure),
+ * rs_cli_out_done makes the renames final. */
+int rs_cli_out_rename(rs_cli_out_t **outs, int n, char *err, size_t errlen);
+int rs_cli_out_write_through(rs_cli_out_t *o, char *err, size_t errlen);
+void rs_cli_out_undo(rs_cli_out_t **outs, int n);
+void rs_cli_out_done(rs_cli_out_t **outs, int n);
+
+/* Blocks SIGINT and SIGTERM in the calling thread (call it before any
+ * other thread starts) and hands them to a thread that stops gnuplot,
+ * removes the temporaries, undoes renames and exits 130 / 143. */
+int rs_cli_signals_start(void);
 
 /* After the files are written: drops the bulky "table"/"boundary_table"
  * members from the output documents when a CSV file holds them or when a
