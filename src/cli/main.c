@@ -35,7 +35,8 @@ static void usage(FILE *f)
           "                                 accepts \"expect ...\" and \"claim ...\" lines)\n"
           "  --max-prec BITS                ceiling for certified numerics (default 65536)\n"
           "  --markdown, --latex            print the whole derivation (Markdown / a LaTeX document)\n"
-          "  --csv FILE                     write the tables of the run's sweeps and maps (atomically)\n"
+          "  --csv FILE                     write the tables of the run's sweeps and maps (atomically;\n"
+          "                                 - = stdout, the report then goes to stderr)\n"
           "  --plot FILE.png|FILE.svg       plot them with gnuplot (sweeps of several cases overlaid)\n"
           "  --shard I/N                    compute only shard I of N of every sweep and map\n"
           "  --threads N                    OpenMP threads for sweeps and maps (default: all cores)\n"
@@ -445,6 +446,7 @@ int main(int argc, char **argv)
     free(outbuf);
 end:
     for (i = 0; i < nouts; i++) rs_cli_out_clear(outs[i]);
+    rs_cli_signals_stop();
     json_decref(docs);
     free(sets); free(analyses); free(cases);
 #ifdef RS_MPI

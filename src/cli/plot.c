@@ -283,6 +283,7 @@ static void *signal_thread(void *arg)
     int sig = 0, k;
     static const char msg[] = "recstab: interrupted; temporaries removed\n";
     if (sigwait(set, &sig) != 0) return NULL;
+    pthread_setcancelstate(PTHREAD_CANCEL_DISABLE, NULL);   /* waitpid is a cancellation point */
     pthread_mutex_lock(&tidy_lock);
     if (tidy_child > 0) {
         kill(tidy_child, SIGKILL);
@@ -297,21 +298,31 @@ static void *signal_thread(void *arg)
     _exit(128 + sig);
 }
 
+static pthread_t signal_th;
+static int signal_th_running;
+
 int rs_cli_signals_start(void)
 {
     static sigset_t set;
-    pthread_t th;
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
     /* before any other thread exists: they inherit the mask */
     if (pthread_sigmask(SIG_BLOCK, &set, NULL) != 0) return -1;
-    if (pthread_create(&th, NULL, signal_thread, &set) != 0) {
+    if (pthread_create(&signal_th, NULL, signal_thread, &set) != 0) {
         pthread_sigmask(SIG_UNBLOCK, &set, NULL);
         return -1;
     }
-    pthread_detach(th);
+    signal_th_running = 1;
     return 0;
+}
+
+void rs_cli_signals_stop(void)
+{
+    if (!signal_th_running) return;
+    pthread_cancel(signal_th);   /* acts in sigwait; a signal being handled ends in _exit */
+    pthread_join(signal_th, NULL);
+    signal_th_running = 0;
 }
 
 int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard_count, char *err, size_t errlen)

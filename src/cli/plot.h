@@ -55,6 +55,8 @@ void rs_cli_out_done(rs_cli_out_t **outs, int n);
  * other thread starts) and hands them to a thread that stops gnuplot,
  * removes the temporaries, undoes renames and exits 130 / 143. */
 int rs_cli_signals_start(void);
+/* Ends that thread (signals stay blocked: the process is about to exit). */
+void rs_cli_signals_stop(void);
 
 /* After the files are written: drops the bulky "table"/"boundary_table"
  * members from the output documents when a CSV file holds them or when a
