@@ -48,6 +48,18 @@ if [ $HAVE_GP = 1 ]; then
     check_exit "--plot hostile file name and title: exit" 0 $?
     (cd "$D" && "$RS" --plot "m'\`touch SENTINEL5\`\".7.svg" --analyse "map w 0 3 5, a 0 2 4" "$NAME") >"$T/out" 2>"$T/err"
     check_exit "--plot hostile map and output name: exit" 0 $?
+    # gnuplot runs "|cmd" given as an output file name
+    (cd "$D" && "$RS" --plot "|touch SENTINEL6.png" --analyse "$SW" "$CD") >"$T/out" 2>"$T/err"
+    check_exit "--plot '|command' output name: exit" 0 $?
+    if [ -s "$D/|touch SENTINEL6.png" ]; then ok "--plot '|command': a file of that name"
+    else fail "--plot '|command': $(ls "$D" | tr '\n' ' ')"; fi
+    # a relative TMPDIR that reads as a gnuplot option or an input pipe
+    for td in '-e system("touch SENTINEL7")' '<touch SENTINEL8'; do
+        mkdir -p "$D/$td"
+        (cd "$D" && TMPDIR="$td" "$RS" --plot t.png --analyse "$SW" "$CD") >"$T/out" 2>"$T/err"
+        check_exit "--plot TMPDIR='$td': exit" 0 $?
+        rmdir "$D/$td"
+    done
     if head -c 8 "$D/o.0.png" | od -c | grep -q 'P   N   G' && [ -s "$D/m'\`touch SENTINEL5\`\".7.svg" ]; then
         ok "--plot hostile names: the PNG and the SVG are written"
     else fail "--plot hostile names: no plot ($(ls "$D" | tr '\n' ' '))"; fi

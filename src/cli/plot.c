@@ -441,12 +441,22 @@ static void put_q(FILE *f, const char *s)
     fputc('"', f);
 }
 
+/* A file name for gnuplot: "|cmd" as an output and "<cmd" as a data file
+ * would run cmd, so a relative name gets "./" in front. */
+static void put_path(FILE *f, const char *path)
+{
+    char *p = malloc(strlen(path) + 3);
+    sprintf(p, "%s%s", path[0] == '/' ? "" : "./", path);
+    put_q(f, p);
+    free(p);
+}
+
 /* the quoted name of a table file in the plot's private folder */
 static void put_table(FILE *f, const char *dir, char kind, size_t i)
 {
     char p[4096 + 64];
     snprintf(p, sizeof p, "%s/%c%zu.csv", dir, kind, i);
-    put_q(f, p);
+    put_path(f, p);
 }
 
 static const char *ext_of(const char *path)
@@ -596,7 +606,7 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
     if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     else fprintf(g, "set terminal svg size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     fputs("set output ", g);
-    put_q(g, o->tmp);
+    put_path(g, o->tmp);
     fputs("\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
     if (npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
     /* maps: one panel each */
@@ -723,7 +733,8 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
         snprintf(p, sizeof p, "%s/gnuplot.log", dir);
         lf = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0600);
         if (lf >= 0) { dup2(lf, 1); dup2(lf, 2); close(lf); }
-        snprintf(p, sizeof p, "%s/plot.gp", dir);
+        /* "./" keeps a relative TMPDIR starting with '-' from being an option */
+        snprintf(p, sizeof p, "%s%s/plot.gp", dir[0] == '/' ? "" : "./", dir);
         execlp("gnuplot", "gnuplot", p, (char *) NULL);
         _exit(127);
     }
