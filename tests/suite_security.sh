@@ -121,6 +121,11 @@ if [ "$(cat "$D/keep.csv")" = keep ]; then ok "stdout /dev/full: the old CSV is 
 "$RS" --csv "$D/new.csv" --analyse "$SW" "$CD" >/dev/full 2>"$T/err"
 if [ ! -e "$D/new.csv" ]; then ok "stdout /dev/full: no new CSV"; else fail "stdout /dev/full: new.csv committed"; fi
 no_leftovers "stdout /dev/full" "$D"
+# stdout a pipe whose reader is gone: EPIPE, not a SIGPIPE death after the commit
+"$RS" --csv "$D/keep.csv" --analyse "$SW" "$CD" 2>"$T/err" | :
+if [ "$(cat "$D/keep.csv")" = keep ] && grep -q 'cannot write output' "$T/err"; then ok "stdout closed pipe: the old CSV is back"
+else fail "stdout closed pipe: $(cat "$T/err")"; fi
+no_leftovers "stdout closed pipe" "$D"
 if [ $HAVE_GP = 1 ]; then
     # a gnuplot that puts a folder where the plot goes, then plots: the plot
     # cannot be renamed, so the CSV renamed before it must be undone

@@ -1,6 +1,7 @@
 /* main.c -- the recstab command.  All output is buffered and written only
  * when every case succeeded, so a failing run leaves no partial output. */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,6 +129,13 @@ static int outputs_init(rs_cli_out_t *csv, const char *csv_path, rs_cli_out_t *p
     if (plot_path != NULL) {
         if (rs_cli_out_init(plot, "--plot", plot_path, msg, sizeof msg) != 0) goto fail;
         outs[(*nouts)++] = plot;
+    }
+    if (*nouts > 0) {
+        /* a closed stdout must fail the write (and undo the files), not kill us */
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = SIG_IGN;
+        sigaction(SIGPIPE, &sa, NULL);
     }
     if (rs_cli_signals_start() != 0) {
         snprintf(msg, sizeof msg, "cannot install the SIGINT/SIGTERM cleanup");
