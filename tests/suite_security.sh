@@ -214,3 +214,6 @@ else fail "non-UTF-8 path: $(head -1 "$T/out")"; fi
 (cd "$D" && "$RS" --json --analyse charpoly "$BAD") >"$T/out" 2>"$T/err"
 if grep -q '"case": "bad\\\\xffname.case"' "$T/out"; then ok "non-UTF-8 path: JSON escapes the byte"
 else fail "non-UTF-8 path JSON: $(grep case "$T/out" | head -2)"; fi
+(cd "$D" && "$RS" --csv "$(printf 'o\377.csv')" --analyse "$SW" "$BAD") >"$T/out" 2>"$T/err"
+if grep -q '^  csv          o\\xff\.csv$' "$T/out"; then ok "non-UTF-8 --csv path: the report names it escaped"
+else fail "non-UTF-8 --csv path: $(grep csv "$T/out")"; fi

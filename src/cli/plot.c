@@ -355,7 +355,11 @@ int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard
                     (long long) json_integer_value(json_array_get(rows, 1)) - 1, t);
         }
         fputs(jstr(o, "table"), f);
-        json_object_set_new(o, "csv", json_string(path));
+        {
+            char *shown = rs_utf8_escape(path);   /* json_string refuses invalid UTF-8 */
+            json_object_set_new(o, "csv", json_string(shown));
+            flint_free(shown);
+        }
         if (bt != NULL) {
             json_t *conds = json_object_get(json_object_get(o, "boundary"), "conditions");
             size_t k;
