@@ -170,16 +170,25 @@ no_leftovers "SIGINT during a map" "$D"
 
 # ---- 3. include ---------------------------------------------------------------
 D="$T/inc"; mkdir -p "$D/frag"
-# 16 files, each including the next twice: 2^15 reads before, 16 now
+# 16 files, each including the next three times: 3^15 reads before (days), 16 now
 k=0
-while [ $k -lt 15 ]; do printf 'include f%d.inc\ninclude f%d.inc\n' $((k + 1)) $((k + 1)) >"$D/frag/f$k.inc"; k=$((k + 1)); done
-printf 'param w\nassume w > 0\n' >"$D/frag/f15.inc"
-printf 'include frag/f0.inc\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\nanalyse charpoly\n' >"$D/double.case"
-timeout 10 "$RS" "$D/double.case" >"$T/out" 2>"$T/err"
-check_exit "include twice at depth 15: exit (within 10 s)" 0 $?
+while [ $k -lt 15 ]; do
+    n=$((k + 1)); printf 'include f%d.inc\ninclude f%d.inc\ninclude f%d.inc\n' $n $n $n >"$D/frag/f$k.inc"; k=$n
+done
+printf '# the leaf\n' >"$D/frag/f15.inc"
+printf 'param w\ninclude frag/f0.inc\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\nanalyse charpoly\n' >"$D/triple.case"
+timeout 2 "$RS" "$D/triple.case" >"$T/out" 2>"$T/err"
+check_exit "include three times at depth 15: exit (within 2 s)" 0 $?
+# the same fragment (a declaration) reached twice, as a diamond: applied once
+printf 'param w\nassume w > 0\n' >"$D/frag/common.inc"
+printf 'include common.inc\n' >"$D/frag/left.inc"
+printf 'include ../frag/common.inc\n' >"$D/frag/right.inc"
+printf 'include frag/left.inc\ninclude frag/right.inc\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\nanalyse charpoly\n' >"$D/diamond.case"
+"$RS" "$D/diamond.case" >"$T/out" 2>"$T/err"
+check_exit "include diamond: exit" 0 $?
 # the Hughes closed form of central-difference.case
-if grep -q 'p(lambda)    lambda^2 + (w^2 - 2)\*lambda + 1' "$T/out"; then ok "include twice: the statements apply once"
-else fail "include twice: $(grep 'p(lambda)' "$T/out")"; fi
+if grep -q 'p(lambda)    lambda^2 + (w^2 - 2)\*lambda + 1' "$T/out"; then ok "include diamond: the fragment applies once"
+else fail "include diamond: $(grep 'p(lambda)' "$T/out")"; fi
 # a FIFO is refused at once (it would block the parse), as /dev/zero and folders (tests/bad)
 mkfifo "$D/frag/pipe.inc"
 printf 'param w\ninclude frag/pipe.inc\n' >"$D/fifo.case"
