@@ -1233,6 +1233,36 @@ static void subst_poly(fmpq_mpoly_t out, const fmpq_mpoly_t P, slong v, const rs
     fmpq_mpoly_clear(acc, s->ctx);
 }
 
+/* State of one claim proof: the certificate so far, the random state of the
+ * independent re-checks, and the first place a certificate failed (said in
+ * the report of an undecided claim). */
+typedef struct {
+    json_t *cert;
+    flint_rand_t st;
+    char fail[640];
+} claim_cx_t;
+
+
+static void claim_fail(claim_cx_t *cx, const char *what, const fmpq_mpoly_t c, const rs_scheme_t s)
+{
+    char *cs;
+    if (cx->fail[0] != '\0') return;
+    cs = c != NULL ? rs_polyfmt_fmpq_mpoly(c, (const char **) s->vars, s->ctx) : NULL;
+    snprintf(cx->fail, sizeof cx->fail, "%s%s%s", cs != NULL ? cs : "", cs != NULL ? ": " : "", what);
+    free(cs);
+}
+
+/* drop the entries a failed attempt added */
+static void cert_truncate(claim_cx_t *cx, size_t n)
+{
+    while (json_array_size(cx->cert) > n) json_array_remove(cx->cert, json_array_size(cx->cert) - 1);
+}
+
+static void cert_note(claim_cx_t *cx, const char *text)
+{
+    json_array_append_new(cx->cert, json_pack("{s:s}", "text", text));
+}
+
 /* every coefficient >= 0 and some positive term non-zero on the whole
  * domain (its variables all strictly positive there) */
 static int coeffs_certify(const fmpq_mpoly_t P, const int *strict, const rs_scheme_t s)
@@ -1258,24 +1288,97 @@ static int coeffs_certify(const fmpq_mpoly_t P, const int *strict, const rs_sche
     return ok && witness;
 }
 
+#define CLAIM_POLYA_MAX 40        /* (1 + sum s)^N multipliers tried */
+#define CLAIM_POLYA_TERMS 20000   /* give up when the product grows beyond this */
+
+/* Certifies P > 0 for every s >= 0 (s_v > 0 where strict[v]).  A monomial
+ * factor in strictly positive variables is divided out first: a condition
+ * that vanishes at an open end of the interval (mapped to s_v = 0) has such
+ * a factor, and the rest must be positive up to that end.  Then Polya: P > 0
+ * if (1 + sum s_v)^N P has non-negative coefficients for some N (found for
+ * every P positive on the closed domain, ends at infinity included).
+ * *mono is the monomial divided out ("" if none), *polya the N used. */
+static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s, char **mono, slong *polya)
+{
+    fmpq_mpoly_t M, T;
+    slong v, k;
+    ulong *e = flint_malloc(s->nvars * sizeof(ulong));
+    int ok, any = 0;
+    fmpq_mpoly_init(M, s->ctx);
+    fmpq_mpoly_init(T, s->ctx);
+    *mono = NULL;
+    *polya = 0;
+    fmpq_mpoly_term_content(M, P, s->ctx);
+    if (!fmpq_mpoly_is_zero(M, s->ctx)) {
+        fmpq_t one;
+        fmpq_init(one);
+        fmpq_one(one);
+        fmpq_mpoly_get_term_exp_ui(e, M, 0, s->ctx);
+        for (v = 0; v < s->nvars; v++) {
+            if (!strict[v]) e[v] = 0;
+            any |= e[v] > 0;
+        }
+        if (any) {
+            fmpq_mpoly_zero(M, s->ctx);
+            fmpq_mpoly_push_term_fmpq_ui(M, one, e, s->ctx);
+            fmpq_mpoly_divides(P, P, M, s->ctx);
+            *mono = calloc(1, 1);
+            for (v = 0; v < s->nvars; v++) {
+                size_t len;
+                if (e[v] == 0) continue;
+                len = strlen(*mono);
+                *mono = realloc(*mono, len + strlen(s->vars[v]) + 32);
+                sprintf(*mono + len, "%ss_%s", len ? "*" : "", s->vars[v]);
+                if (e[v] > 1) sprintf(*mono + strlen(*mono), "^%lu", (unsigned long) e[v]);
+            }
+        }
+        fmpq_clear(one);
+    }
+    ok = coeffs_certify(P, strict, s);
+    if (!ok) {
+        /* T = 1 + sum of the variables of P */
+        fmpq_mpoly_one(T, s->ctx);
+        for (v = 0; v < s->nvars; v++)
+            if (fmpq_mpoly_degree_si(P, v, s->ctx) > 0) {
+                fmpq_mpoly_gen(M, v, s->ctx);
+                fmpq_mpoly_add(T, T, M, s->ctx);
+            }
+        fmpq_mpoly_set(M, P, s->ctx);
+        for (k = 1; k <= CLAIM_POLYA_MAX && !ok && fmpq_mpoly_length(M, s->ctx) < CLAIM_POLYA_TERMS; k++) {
+            fmpq_mpoly_mul(M, M, T, s->ctx);
+            ok = coeffs_certify(M, strict, s);
+            if (ok) *polya = k;
+        }
+    }
+    fmpq_mpoly_clear(M, s->ctx);
+    fmpq_mpoly_clear(T, s->ctx);
+    flint_free(e);
+    return ok;
+}
+
 /* Proves c > 0 on the box given by b (vars with no bound make it fail).
- * Appends the certificate to cert.  Returns 1 proved, 0 not. */
-static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
+ * Appends the certificate to cx->cert.  Returns 1 proved, 0 not. */
+static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_scheme_t s, claim_cx_t *cx,
                           int depth)
 {
     fmpq_mpoly_t P;
     int *strict = flint_calloc(s->nvars, sizeof(int));
     json_t *sub = json_object();
-    slong v;
+    slong v, polya = 0;
     int ok = 1;
-    char buf[512];
+    char buf[512], *mono = NULL;
     if (depth > 8) { flint_free(strict); json_decref(sub); return 0; }
     fmpq_mpoly_init(P, s->ctx);
     fmpq_mpoly_set(P, c, s->ctx);
     for (v = 0; v < s->nvars && ok; v++) {
         char *lo = NULL, *hi = NULL;
         if (v == s->lambda_var || fmpq_mpoly_degree_si(P, v, s->ctx) <= 0) continue;
-        if (!b[v].has_lo && !b[v].has_hi) { ok = 0; break; }
+        if (!b[v].has_lo && !b[v].has_hi) {
+            snprintf(buf, sizeof buf, "%s has no bound in the claim or the assumptions", s->vars[v]);
+            claim_fail(cx, buf, c, s);
+            ok = 0;
+            break;
+        }
         if (b[v].has_lo) lo = fmpq_get_str(NULL, 10, b[v].lo);
         if (b[v].has_hi) hi = fmpq_get_str(NULL, 10, b[v].hi);
         {
@@ -1299,7 +1402,15 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         flint_free(hi);
         subst_poly(P, P, v, b + v, s);
     }
-    if (ok) ok = coeffs_certify(P, strict, s);
+    if (ok) {
+        ok = certify_nonneg(P, strict, s, &mono, &polya);
+        if (!ok) {
+            snprintf(buf, sizeof buf, "after mapping the interval%s onto s >= 0 a coefficient stays negative "
+                     "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)",
+                     json_object_size(sub) > 1 ? "s" : "", CLAIM_POLYA_MAX);
+            claim_fail(cx, buf, c, s);
+        }
+    }
     if (ok) {
         json_t *e = json_object();
         char *cs = rs_polyfmt_fmpq_mpoly(c, (const char **) s->vars, s->ctx);
@@ -1307,7 +1418,9 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         json_object_set_new(e, "substitution", sub);
         json_object_set_new(e, "transformed_terms", json_integer(fmpq_mpoly_length(P, s->ctx)));
         json_object_set_new(e, "all_coefficients_nonnegative", json_true());
-        json_array_append_new(cert, e);
+        if (mono != NULL) json_object_set_new(e, "positive_factor", json_string(mono));
+        if (polya > 0) json_object_set_new(e, "polya_power", json_integer(polya));
+        json_array_append_new(cx->cert, e);
         free(cs);
         sub = NULL;
         /* a closed upper end of a two-sided interval is s = inf: check it too */
@@ -1323,19 +1436,20 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
                     fmpq_mpoly_get_fmpq(k, cv, s->ctx);
                     ok = fmpq_sgn(k) > 0;
                     fmpq_clear(k);
+                    if (!ok) claim_fail(cx, "not positive at the closed upper end", c, s);
                 } else {
-                    ok = prove_positive(cv, b, s, cert, depth + 1);
+                    ok = prove_positive(cv, b, s, cx, depth + 1);
                 }
                 fmpq_mpoly_clear(cv, s->ctx);
             }
         }
     }
+    free(mono);
     json_decref(sub);
     flint_free(strict);
     fmpq_mpoly_clear(P, s->ctx);
     return ok;
 }
-
 /* Independent re-check of a certificate entry: the transformed polynomial
  * is recomputed here by evaluating c at the image of random positive s
  * and comparing the sign (> 0) -- a separate code path from the symbolic
@@ -1375,75 +1489,77 @@ static int recheck_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_
     return ok;
 }
 
-/* Proves c != 0 on the box (c > 0 or -c > 0); appends the certificate. */
-static int prove_nonzero(const fmpz_mpoly_t cz, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
-                         flint_rand_t st)
+
+/* Proves cz > 0 (sg = 1), cz < 0 (sg = -1) or cz != 0 (sg = 0: either
+ * sign) on the box; appends the certificate. */
+static int prove_sign(const fmpz_mpoly_t cz, int sg, const rs_bound_t *b, const rs_scheme_t s, claim_cx_t *cx)
 {
     fmpq_mpoly_t c;
-    int ok;
+    int ok = 0, k;
     fmpq_mpoly_init(c, s->ctx);
     z2q(c, cz, s);
-    if (fmpq_mpoly_is_fmpq(c, s->ctx)) {
-        ok = !fmpq_mpoly_is_zero(c, s->ctx);
-    } else {
-        ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
-        if (!ok) {
-            fmpq_mpoly_neg(c, c, s->ctx);
-            ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
+    for (k = sg == 0 ? 0 : 1; k < 2 && !ok; k++) {
+        if (sg < 0 || (sg == 0 && k == 1)) fmpq_mpoly_neg(c, c, s->ctx);
+        if (fmpq_mpoly_is_fmpq(c, s->ctx)) {
+            fmpq_t q;
+            fmpq_init(q);
+            fmpq_mpoly_get_fmpq(q, c, s->ctx);
+            ok = sg == 0 ? !fmpq_is_zero(q) : fmpq_sgn(q) > 0;
+            fmpq_clear(q);
+            if (!ok && (sg != 0 || k == 1)) claim_fail(cx, "a constant of the wrong sign", c, s);
+        } else {
+            ok = prove_positive(c, b, s, cx, 0) && recheck_positive(c, b, s, cx->st);
         }
+        if (sg < 0 || (sg == 0 && k == 1)) fmpq_mpoly_neg(c, c, s->ctx);
     }
     fmpq_mpoly_clear(c, s->ctx);
     return ok;
 }
 
-/* Proves cz > 0 (sg = 1) or cz < 0 (sg = -1) on the box. */
-static int prove_sign(const fmpz_mpoly_t cz, int sg, const rs_bound_t *b, const rs_scheme_t s, json_t *cert,
-                      flint_rand_t st)
+static int prove_nonzero(const fmpz_mpoly_t cz, const rs_bound_t *b, const rs_scheme_t s, claim_cx_t *cx)
 {
-    fmpq_mpoly_t c;
-    int ok;
-    fmpq_mpoly_init(c, s->ctx);
-    z2q(c, cz, s);
-    if (sg < 0) fmpq_mpoly_neg(c, c, s->ctx);
-    if (fmpq_mpoly_is_fmpq(c, s->ctx)) {
-        fmpq_t k;
-        fmpq_init(k);
-        fmpq_mpoly_get_fmpq(k, c, s->ctx);
-        ok = fmpq_sgn(k) > 0;
-        fmpq_clear(k);
-    } else {
-        ok = prove_positive(c, b, s, cert, 0) && recheck_positive(c, b, s, st);
-    }
-    fmpq_mpoly_clear(c, s->ctx);
-    return ok;
+    return prove_sign(cz, 0, b, s, cx);
 }
 
-/* Every Lienard-Chipart condition of h (z = variable zv) positive on the box. */
+/* Every Lienard-Chipart condition of h or of -h (z = variable zv) positive
+ * on the box: h is Hurwitz-stable there.  Both signs are tried because the
+ * sign of h's leading coefficient is not fixed by the claim (BDF2 on
+ * y' = q y has q(z) = (2q - 8) z^2 + ..., negative for q < 0). */
 static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bound_t *b, const rs_scheme_t s,
-                                json_t *cert, flint_rand_t st)
+                                claim_cx_t *cx)
 {
-    rs_hurwitz_t hw;
     int *sign = rs_run_signs(run, s);
-    int ok = 1;
+    int ok = 0, sg;
     slong i, k;
+    size_t n0 = json_array_size(cx->cert);
+    fmpz_mpoly_t hs;
     if (fmpz_mpoly_degree_si(h, s->lambda_var, s->zctx) < 1) {
         flint_free(sign);
-        return prove_nonzero(h, b, s, cert, st);
+        return prove_nonzero(h, b, s, cx);
     }
-    rs_hurwitz_init(hw);
-    if (rs_hurwitz_compute(hw, h, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err) != RS_OK) {
-        rs_error_init(run->err);
-        ok = 0;
+    fmpz_mpoly_init(hs, s->zctx);
+    for (sg = 1; sg >= -1 && !ok; sg -= 2) {
+        rs_hurwitz_t hw;
+        if (sg > 0) fmpz_mpoly_set(hs, h, s->zctx);
+        else fmpz_mpoly_neg(hs, h, s->zctx);
+        rs_hurwitz_init(hw);
+        ok = 1;
+        if (rs_hurwitz_compute(hw, hs, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err) != RS_OK) {
+            rs_error_init(run->err);
+            ok = 0;
+        }
+        for (i = 0; ok && i < hw->ncond; i++) {
+            const rs_hurwitz_cond_struct *hc = hw->cond + i;
+            if (hc->trivially_true) continue;
+            if (hc->trivially_false) { ok = 0; break; }
+            ok = prove_sign(hc->reduced, 1, b, s, cx);
+            for (k = 0; k < hc->factors->num && ok; k++)
+                if (!hc->dropped[k] && hc->even[k]) ok = prove_nonzero(hc->factors->poly + k, b, s, cx);
+        }
+        rs_hurwitz_clear(hw, s->zctx);
+        if (!ok) cert_truncate(cx, n0);
     }
-    for (i = 0; ok && i < hw->ncond; i++) {
-        const rs_hurwitz_cond_struct *hc = hw->cond + i;
-        if (hc->trivially_true) continue;
-        if (hc->trivially_false) { ok = 0; break; }
-        ok = prove_sign(hc->reduced, 1, b, s, cert, st);
-        for (k = 0; k < hc->factors->num && ok; k++)
-            if (!hc->dropped[k] && hc->even[k]) ok = prove_nonzero(hc->factors->poly + k, b, s, cert, st);
-    }
-    rs_hurwitz_clear(hw, s->zctx);
+    fmpz_mpoly_clear(hs, s->zctx);
     flint_free(sign);
     return ok;
 }
@@ -1453,11 +1569,10 @@ static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bo
  * every root on the imaginary axis), H Hurwitz-stable, and G = z^k g(z^2)
  * with k <= 1 and g of degree <= 2 in u = z^2 having simple negative roots
  * (so G's roots are simple and on the axis). */
-static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, json_t *cert,
-                         flint_rand_t st)
+static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, claim_cx_t *cx)
 {
     const rs_scheme_struct *s = v->s;
-    slong lv = s->lambda_var, i, len, k, dg;
+    slong lv = s->lambda_var, i, len, k = 0, dg;
     fmpz_mpoly_t q, qm, G, H, g, t;
     ulong *e = flint_malloc(s->nvars * sizeof(ulong));
     int ok = 1;
@@ -1481,7 +1596,7 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
     if (ok && !fmpz_mpoly_gcd(G, q, qm, s->zctx)) ok = 0;
     if (ok && fmpz_mpoly_degree_si(G, lv, s->zctx) < 1) ok = 0;   /* nothing on the axis: use `stable` */
     if (ok) ok = fmpz_mpoly_divides(H, q, G, s->zctx);
-    if (ok) ok = prove_hurwitz_stable(run, H, b, s, cert, st);
+    if (ok) ok = prove_hurwitz_stable(run, H, b, s, cx);
     if (ok) {
         /* G = z^k G1, G1 even */
         k = rs_scheme_min_degree(G, lv, s->zctx);
@@ -1501,20 +1616,25 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
         fmpz_t zero;
         fmpz_init(zero);
         fmpz_mpoly_evaluate_one_fmpz(t, g, lv, zero, s->zctx);
-        ok = prove_nonzero(t, b, s, cert, st);
+        ok = prove_nonzero(t, b, s, cx);
         fmpz_clear(zero);
     }
     if (ok && dg == 1) {
         fmpz_mpoly_t a1, a0;
+        size_t n0 = json_array_size(cx->cert);
         fmpz_mpoly_init(a1, s->zctx); fmpz_mpoly_init(a0, s->zctx);
         rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
         rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
         /* root u = -a0/a1 < 0: a0, a1 of one sign */
-        ok = (prove_sign(a1, 1, b, s, cert, st) && prove_sign(a0, 1, b, s, cert, st))
-             || (prove_sign(a1, -1, b, s, cert, st) && prove_sign(a0, -1, b, s, cert, st));
+        ok = prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
+        if (!ok) {
+            cert_truncate(cx, n0);
+            ok = prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
+        }
         fmpz_mpoly_clear(a1, s->zctx); fmpz_mpoly_clear(a0, s->zctx);
     } else if (ok && dg == 2) {
         fmpz_mpoly_t a2, a1, a0, d;
+        size_t n0 = json_array_size(cx->cert);
         fmpz_mpoly_init(a2, s->zctx); fmpz_mpoly_init(a1, s->zctx);
         fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(d, s->zctx);
         rs_charpoly_coeff(a2, g, 2, lv, s->zctx);
@@ -1525,11 +1645,12 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
         fmpz_mpoly_mul(t, a2, a0, s->zctx);
         fmpz_mpoly_scalar_mul_si(t, t, 4, s->zctx);
         fmpz_mpoly_sub(d, d, t, s->zctx);
-        ok = ((prove_sign(a2, 1, b, s, cert, st) && prove_sign(a1, 1, b, s, cert, st)
-               && prove_sign(a0, 1, b, s, cert, st))
-              || (prove_sign(a2, -1, b, s, cert, st) && prove_sign(a1, -1, b, s, cert, st)
-                  && prove_sign(a0, -1, b, s, cert, st)))
-             && prove_sign(d, 1, b, s, cert, st);
+        ok = prove_sign(a2, 1, b, s, cx) && prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
+        if (!ok) {
+            cert_truncate(cx, n0);
+            ok = prove_sign(a2, -1, b, s, cx) && prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
+        }
+        ok = ok && prove_sign(d, 1, b, s, cx);
         fmpz_mpoly_clear(a2, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
         fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(d, s->zctx);
     } else if (ok && dg > 2) {
@@ -1544,15 +1665,193 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
 
 typedef enum { CLAIM_STABLE, CLAIM_BOUNDED, CLAIM_UNSTABLE } claim_kind_t;
 
+/* A singular point (the step cannot be solved) violates every kind of claim. */
 static int violates(claim_kind_t k, rs_status_t st)
 {
-    if (st == RS_STATUS_SINGULAR) return 1;   /* no scheme to speak of there */
+    if (st == RS_STATUS_SINGULAR) return 1;
     switch (k) {
     case CLAIM_STABLE: return st != RS_STATUS_STABLE;
     case CLAIM_BOUNDED: return st == RS_STATUS_UNSTABLE;
     case CLAIM_UNSTABLE: return st != RS_STATUS_UNSTABLE;
     }
     return 0;
+}
+
+/* The variant with every parameter the bounds fix (`set` values and claim
+ * conditions NAME = VALUE) substituted, so that the proof works on the
+ * polynomial of that subset (its factors, gcds and degree). */
+static int claim_variant(rs_variant_t **v, rs_run_t *run, const rs_bound_t *b)
+{
+    slong i, n = 0, na;
+    rs_assign_t *extra = calloc((size_t) run->c->nparams + 1, sizeof(rs_assign_t)), *a;
+    int r;
+    for (i = 0; i < run->c->nparams; i++)
+        if (b[i].fixed) {
+            extra[n].name = run->c->params[i].name;
+            extra[n].var = i;
+            fmpq_init(extra[n].value);
+            fmpq_set(extra[n].value, b[i].lo);
+            n++;
+        }
+    rs_run_assignments(run, &a, &na, NULL, 0, extra, n);
+    r = rs_run_variant(v, run, a, na);
+    rs_assign_free(a, na);
+    rs_assign_free(extra, n);
+    return r;
+}
+
+static void bounds_copy(rs_bound_t *dst, const rs_bound_t *src, slong n)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        dst[i].has_lo = src[i].has_lo; dst[i].has_hi = src[i].has_hi;
+        dst[i].lo_closed = src[i].lo_closed; dst[i].hi_closed = src[i].hi_closed;
+        dst[i].fixed = src[i].fixed;
+        fmpq_set(dst[i].lo, src[i].lo);
+        fmpq_set(dst[i].hi, src[i].hi);
+    }
+}
+
+static int param_is_set(const rs_run_t *run, slong k)
+{
+    slong i;
+    for (i = 0; i < run->c->nsets; i++)
+        if (strcmp(run->c->sets[i].name, run->c->params[k].name) == 0) return 1;
+    return 0;
+}
+
+/* One certificate on the box, no subdivision. */
+static int claim_prove_direct(rs_run_t *run, claim_kind_t kind, const rs_variant_t *v, const rs_bound_t *b,
+                              claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    slong lv = s->lambda_var, k;
+    fmpz_mpoly_t qz, t;
+    int ok = 0;
+    size_t n0 = json_array_size(cx->cert);
+    fmpz_mpoly_init(qz, s->zctx);
+    fmpz_mpoly_init(t, s->zctx);
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+    if (v->singular) {
+        claim_fail(cx, "the leading coefficient of det A(lambda) vanishes here (singular step)", NULL, s);
+    } else if (count_free(v->cp->p, s, lv) == 0) {
+        /* every parameter fixed on this part: the exact verdict is the certificate */
+        rs_rootcount_t rc;
+        rs_status_t stt;
+        if (rs_run_point_status(&stt, rc, run, v, NULL, NULL, 0) == RS_OK) {
+            char msg[300], pt[200] = "";
+            const char *key;
+            json_t *val;
+            ok = !violates(kind, stt);
+            json_object_foreach(v->assigned, key, val)
+                if (!param_is_set(run, rs_case_param_index(run->c, key)))
+                    snprintf(pt + strlen(pt), sizeof pt - strlen(pt), "%s%s = %s", pt[0] ? ", " : "", key,
+                             json_string_value(val));
+            snprintf(msg, sizeof msg, "at %s: %s (the exact point verdict)", pt, rs_status_name(stt));
+            if (ok) cert_note(cx, msg);
+            else claim_fail(cx, msg, NULL, s);
+        } else {
+            rs_error_init(run->err);
+        }
+        rs_rootcount_clear(rc);
+    } else if (kind != CLAIM_UNSTABLE) {
+        /* a degree drop of q(z) for every parameter value is a root at lambda = -1
+         * on the whole set: never stable */
+        if (fmpz_mpoly_degree_si(qz, lv, s->zctx) == v->cp->degree)
+            ok = prove_hurwitz_stable(run, qz, b, s, cx);
+        else
+            claim_fail(cx, "q(z) has lower degree than p for every value (a root at lambda = -1)", NULL, s);
+        if (!ok && kind == CLAIM_BOUNDED) {
+            cert_truncate(cx, n0);
+            ok = prove_bounded(run, v, b, cx);
+        }
+    } else {
+        /* unstable: q has a coefficient of sign opposite to its leading one
+         * (a root with Re z > 0, |lambda| > 1), and the step can be solved
+         * (p's leading coefficient != 0: else the root may be lambda = inf) */
+        fmpq_mpoly_t an, ak;
+        slong n = fmpz_mpoly_degree_si(qz, lv, s->zctx);
+        fmpq_mpoly_init(an, s->ctx);
+        fmpq_mpoly_init(ak, s->ctx);
+        rs_charpoly_coeff(t, qz, n, lv, s->zctx);
+        z2q(an, t, s);
+        for (k = 0; k < n && !ok; k++) {
+            int sg;
+            for (sg = 1; sg >= -1 && !ok; sg -= 2) {
+                rs_charpoly_coeff(t, qz, k, lv, s->zctx);
+                z2q(ak, t, s);
+                if (sg > 0) fmpq_mpoly_neg(ak, ak, s->ctx);
+                else fmpq_mpoly_neg(an, an, s->ctx);
+                ok = prove_positive(an, b, s, cx, 0) && prove_positive(ak, b, s, cx, 0)
+                     && recheck_positive(an, b, s, cx->st) && recheck_positive(ak, b, s, cx->st);
+                if (sg < 0) fmpq_mpoly_neg(an, an, s->ctx);
+                if (!ok) cert_truncate(cx, n0);
+            }
+        }
+        if (ok) {
+            rs_charpoly_coeff(t, v->cp->p, v->cp->degree, lv, s->zctx);
+            ok = prove_nonzero(t, b, s, cx);
+        }
+        fmpq_mpoly_clear(an, s->ctx);
+        fmpq_mpoly_clear(ak, s->ctx);
+    }
+    if (!ok) cert_truncate(cx, n0);
+    fmpz_mpoly_clear(qz, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
+    return ok;
+}
+
+#define CLAIM_SPLIT_DEPTH 2
+
+/* A certificate on the box, else the box split at a closed end of an
+ * interval: the end point substituted (the polynomial there may factor
+ * differently, e.g. HHT-alpha at alpha = 0 is the trapezoidal rule, marginal)
+ * and the rest with that end open.  Both parts must be proved. */
+static int claim_prove(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, claim_cx_t *cx, int depth,
+                       int *split)
+{
+    rs_variant_t *v;
+    slong i, np = run->c->nparams;
+    int ok, side;
+    size_t n0 = json_array_size(cx->cert);
+    if (claim_variant(&v, run, b) != RS_OK) {
+        rs_error_init(run->err);
+        claim_fail(cx, "the characteristic polynomial could not be formed on this part", NULL, NULL);
+        return 0;
+    }
+    ok = claim_prove_direct(run, kind, v, b, cx);
+    for (i = 0; i < np && !ok && depth < CLAIM_SPLIT_DEPTH; i++) {
+        if (b[i].fixed || fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) <= 0) continue;
+        for (side = 0; side < 2 && !ok; side++) {
+            rs_bound_t *bo, *bf;
+            char msg[256], *val;
+            if (side == 0 ? !(b[i].has_lo && b[i].lo_closed) : !(b[i].has_hi && b[i].hi_closed)) continue;
+            bo = flint_malloc(np * sizeof(rs_bound_t));
+            bf = flint_malloc(np * sizeof(rs_bound_t));
+            rs_bounds_init(bo, np);
+            rs_bounds_init(bf, np);
+            bounds_copy(bo, b, np);
+            bounds_copy(bf, b, np);
+            if (side == 0) bo[i].lo_closed = 0; else bo[i].hi_closed = 0;
+            fmpq_set(bf[i].lo, side == 0 ? b[i].lo : b[i].hi);
+            fmpq_set(bf[i].hi, bf[i].lo);
+            bf[i].has_lo = bf[i].has_hi = bf[i].lo_closed = bf[i].hi_closed = bf[i].fixed = 1;
+            val = fmpq_get_str(NULL, 10, bf[i].lo);
+            snprintf(msg, sizeof msg, "split: %s = %s on its own (substituted), the rest with that end open",
+                     run->c->params[i].name, val);
+            flint_free(val);
+            cert_note(cx, msg);
+            ok = !rs_bound_empty(bo + i) && claim_prove(run, kind, bo, cx, depth + 1, split)
+                 && claim_prove(run, kind, bf, cx, depth + 1, split);
+            if (ok) *split = 1;
+            else cert_truncate(cx, n0);
+            rs_bounds_clear(bo, np);
+            rs_bounds_clear(bf, np);
+            flint_free(bo);
+            flint_free(bf);
+        }
+    }
+    return ok;
 }
 
 /* candidate values of a parameter inside its bounds, simplest first */
@@ -1601,95 +1900,104 @@ static slong candidates(fmpq **out, const rs_bound_t *b)
 
 #define CLAIM_MAX_POINTS 2000
 
-int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    char kindw[80];
-    const char *t;
-    claim_kind_t kind;
-    rs_variant_t *v;
-    const rs_scheme_struct *s;
-    rs_cond_t *conds = NULL;
-    slong nconds = 0, i, j, nparams = run->c->nparams, ntried = 0, ncand_total = 1;
-    rs_condpoly_t *cps = NULL;
-    slong ncps = 0;
-    rs_bound_t *b;
-    fmpq **cand;
-    slong *ncand;
-    fmpq *pt;
-    fmpq **pp;
-    json_t *o, *counter = NULL, *cert;
-    int r = RS_OK, refuted = 0, proved = 0;
-    rs_rootcount_t crc;
-    rs_status_t cst = RS_STATUS_STABLE;   /* the verdict at the counterexample */
-    flint_rand_t st;
-    const char *tried;
-    slong ncoef = 0;
-    fmpq_mpoly_struct *coefq = NULL;
+/* A claim's condition in disjunctive normal form: parts joined by `or`,
+ * each a list of conditions joined by `and` or ','. */
+typedef struct {
+    slong nparts;
+    slong *n;             /* conditions per part */
+    rs_cond_t **conds;
+} claim_dnf_t;
 
-    t = read_word(rest, kindw);
-    if (t == NULL || !(strcmp(kindw, "stable") == 0 || strcmp(kindw, "bounded") == 0
-                       || strcmp(kindw, "unstable") == 0))
-        return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "expected stable, bounded or unstable after claim, found '%s'", rest);
-    kind = strcmp(kindw, "stable") == 0 ? CLAIM_STABLE : strcmp(kindw, "bounded") == 0 ? CLAIM_BOUNDED
-                                                                                    : CLAIM_UNSTABLE;
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
-    s = v->s;
-    t = skip_ws(t);
-    if (*t != '\0') {
-        rs_src_t src;
-        size_t pos;
-        if (strncmp(t, "when", 4) != 0 || !(t[4] == ' ' || t[4] == '\t'))
-            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'when CONDITION' or end of line, found '%s'", t);
-        rs_req_src(&src, q);
-        pos = (size_t) (t + 4 - q->text);
-        for (;;) {
-            rs_cond_t cd;
-            r = rs_cond_parse(&cd, &src, &pos, run->err);
-            if (r != RS_OK) break;
-            conds = realloc(conds, (size_t) (nconds + 1) * sizeof(rs_cond_t));
-            conds[nconds++] = cd;
-            while (q->text[pos] == ' ' || q->text[pos] == '\t') pos++;
-            if (q->text[pos] == '\0') break;
-            if ((strncmp(q->text + pos, "and", 3) == 0 && (q->text[pos + 3] == ' ' || q->text[pos + 3] == '\t'))) {
-                pos += 3;
-                continue;
-            }
-            if (q->text[pos] == ',') { pos++; continue; }
-            r = rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
-                             "expected 'and', ',' or end of line after a condition, found '%s'", q->text + pos);
-            break;
-        }
-        if (r != RS_OK) {
-            for (i = 0; i < nconds; i++) rs_cond_clear(conds + i);
-            free(conds);
-            return r;
-        }
+static void claim_dnf_clear(claim_dnf_t *d)
+{
+    slong i, j;
+    for (i = 0; i < d->nparts; i++) {
+        for (j = 0; j < d->n[i]; j++) rs_cond_clear(d->conds[i] + j);
+        free(d->conds[i]);
     }
-    /* compile every condition (assumptions and the claim's own) */
-    cps = calloc((size_t) (run->c->nassume + nconds + 1), sizeof(rs_condpoly_t));
-    for (i = 0; i < run->c->nassume && r == RS_OK; i++)
-        r = rs_condpoly_compile(cps + ncps++, &run->c->assume[i], s, run->c, run->err);
-    for (i = 0; i < nconds && r == RS_OK; i++)
-        r = rs_condpoly_compile(cps + ncps++, conds + i, s, run->c, run->err);
-    b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
-    rs_bounds_init(b, nparams);
+    free(d->conds);
+    free(d->n);
+    memset(d, 0, sizeof *d);
+}
+
+static int word_at(const char *t, const char *w)
+{
+    size_t n = strlen(w);
+    return strncmp(t, w, n) == 0 && (t[n] == ' ' || t[n] == '\t');
+}
+
+static int claim_dnf_parse(claim_dnf_t *d, rs_run_t *run, const rs_request_t *q, const char *t)
+{
+    rs_src_t src;
+    size_t pos;
+    int r = RS_OK;
+    memset(d, 0, sizeof *d);
+    rs_req_src(&src, q);
+    pos = (size_t) (t - q->text);
+    d->nparts = 1;
+    d->n = calloc(1, sizeof(slong));
+    d->conds = calloc(1, sizeof(rs_cond_t *));
+    for (;;) {
+        rs_cond_t cd;
+        slong p = d->nparts - 1;
+        r = rs_cond_parse(&cd, &src, &pos, run->err);
+        if (r != RS_OK) break;
+        d->conds[p] = realloc(d->conds[p], (size_t) (d->n[p] + 1) * sizeof(rs_cond_t));
+        d->conds[p][d->n[p]++] = cd;
+        while (q->text[pos] == ' ' || q->text[pos] == '\t') pos++;
+        if (q->text[pos] == '\0') break;
+        if (word_at(q->text + pos, "and")) { pos += 3; continue; }
+        if (q->text[pos] == ',') { pos++; continue; }
+        if (word_at(q->text + pos, "or")) {
+            pos += 2;
+            d->n = realloc(d->n, (size_t) (d->nparts + 1) * sizeof(slong));
+            d->conds = realloc(d->conds, (size_t) (d->nparts + 1) * sizeof(rs_cond_t *));
+            d->n[d->nparts] = 0;
+            d->conds[d->nparts++] = NULL;
+            continue;
+        }
+        r = rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
+                         "expected 'and', 'or', ',' or end of line after a condition, found '%s'", q->text + pos);
+        break;
+    }
+    if (r != RS_OK) claim_dnf_clear(d);
+    return r;
+}
+
+/* Bounds of one part: assumptions, the part's conditions, set values. */
+static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, slong n)
+{
+    slong i;
+    rs_bounds_init(b, run->c->nparams);
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(b, &run->c->assume[i], run->c, run->err);
-    for (i = 0; i < nconds; i++) rs_bounds_add(b, conds + i, run->c, run->err);
+    for (i = 0; i < n; i++) rs_bounds_add(b, conds + i, run->c, run->err);
     for (i = 0; i < run->c->nsets; i++) {
         slong k = rs_case_param_index(run->c, run->c->sets[i].name);
         b[k].has_lo = b[k].has_hi = b[k].lo_closed = b[k].hi_closed = b[k].fixed = 1;
         fmpq_set(b[k].lo, run->c->sets[i].value);
         fmpq_set(b[k].hi, run->c->sets[i].value);
     }
-    o = json_object();
-    json_object_set_new(o, "analysis", json_string("claim"));
-    json_object_set_new(o, "text", json_string(q->text));
-    json_object_set_new(o, "claim", json_string(kindw));
-    rs_rootcount_init(crc);
+}
 
-    /* 1. search for a counterexample, exactly, on a deterministic set of points */
+/* Searches one part for a counterexample, exactly, on a deterministic set of
+ * points.  On success *counter is {NAME: value} and *at the verdict there. */
+static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, const rs_cond_t *conds,
+                        slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    slong nparams = run->c->nparams, i, j, ncps = 0, ncand_total = 1;
+    rs_condpoly_t *cps;
+    fmpq **cand, *pt, **pp;
+    slong *ncand, *vars;
+    int r = claim_variant(&v, run, b);
+    if (r != RS_OK) return r;
+    s = v->s;
+    cps = calloc((size_t) (run->c->nassume + nconds + 1), sizeof(rs_condpoly_t));
+    for (i = 0; i < run->c->nassume && r == RS_OK; i++)
+        r = rs_condpoly_compile(cps + ncps++, &run->c->assume[i], s, run->c, run->err);
+    for (i = 0; i < nconds && r == RS_OK; i++)
+        r = rs_condpoly_compile(cps + ncps++, conds + i, s, run->c, run->err);
     cand = calloc((size_t) nparams + 1, sizeof(fmpq *));
     ncand = calloc((size_t) nparams + 1, sizeof(slong));
     for (i = 0; i < nparams; i++) {
@@ -1699,24 +2007,11 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     pt = _fmpq_vec_init(s->nvars);
     pp = flint_malloc(s->nvars * sizeof(fmpq *));
     for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
-    flint_randinit(st);
-    ncoef = v->cp->degree + 1;
-    coefq = flint_malloc(ncoef * sizeof(fmpq_mpoly_struct));
-    {
-        fmpz_mpoly_t cz;
-        fmpz_mpoly_init(cz, s->zctx);
-        for (i = 0; i < ncoef; i++) {
-            fmpq_mpoly_init(coefq + i, s->ctx);
-            rs_charpoly_coeff(cz, v->cp->p, i, s->lambda_var, s->zctx);
-            z2q(coefq + i, cz, s);
-        }
-        fmpz_mpoly_clear(cz, s->zctx);
-    }
-    for (j = 0; r == RS_OK && !refuted && j < CLAIM_MAX_POINTS && j < ncand_total; j++) {
+    vars = flint_malloc((nparams + 1) * sizeof(slong));
+    for (i = 0; i < nparams; i++) vars[i] = i;
+    for (j = 0; r == RS_OK && *counter == NULL && j < CLAIM_MAX_POINTS && j < ncand_total; j++) {
         slong k, rem = j;
         int ok = 1;
-        fmpz_poly_t u;
-        fmpq_t sc;
         if ((r = rs_budget_check(run->err, "the claim's search for a counterexample")) != RS_OK) break;
         for (k = 0; k < nparams; k++) {
             slong pick;
@@ -1735,139 +2030,32 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             fmpq_clear(z);
         }
         if (!ok) continue;
-        /* p at the point: each lambda-coefficient evaluated exactly */
-        fmpz_poly_init(u);
-        fmpq_init(sc);
         {
-            slong m;
-            fmpz_t L;
-            fmpq *cv = _fmpq_vec_init(ncoef);
-            fmpz_init(L);
-            fmpz_one(L);
-            for (m = 0; m < ncoef; m++) {
-                fmpq_mpoly_evaluate_all_fmpq(cv + m, coefq + m, pp, s->ctx);
-                fmpz_lcm(L, L, fmpq_denref(cv + m));
-            }
-            fmpz_poly_fit_length(u, ncoef);
-            for (m = 0; m < ncoef; m++) {
-                fmpz_divexact(fmpq_denref(sc), L, fmpq_denref(cv + m));
-                fmpz_mul(u->coeffs + m, fmpq_numref(cv + m), fmpq_denref(sc));
-            }
-            _fmpz_poly_set_length(u, ncoef);
-            _fmpz_poly_normalise(u);
-            _fmpq_vec_clear(cv, ncoef);
-            fmpz_clear(L);
-        }
-        if (!fmpz_poly_is_zero(u)) {
             rs_rootcount_t rc;
             rs_status_t stp;
-            slong *vars = flint_malloc((nparams + 1) * sizeof(slong));
-            for (k = 0; k < nparams; k++) vars[k] = k;
-            ntried++;
+            (*ntried)++;
             /* system-aware, and "singular" where the step cannot be solved */
             r = rs_run_point_status(&stp, rc, run, v, vars, pt, nparams);
-            flint_free(vars);
-            if (r == RS_OK && violates(kind, stp)) {
-                refuted = 1;
-                *crc = *rc;
-                cst = stp;
-                counter = json_object();
-                for (k = 0; k < nparams; k++)
-                    if (!b[k].fixed) json_object_set_new(counter, run->c->params[k].name, rs_json_fmpq(pt + k));
+            if (r == RS_OK && stp == RS_STATUS_SINGULAR) {
+                *at = json_pack("{s:s,s:s}", "status", rs_status_name(stp), "reason",
+                                "the leading coefficient of det A(lambda) vanishes: the implicit step cannot "
+                                "be solved");
+            } else if (r == RS_OK && violates(kind, stp)) {
+                *at = json_object();
+                rs_json_add_count(*at, rc);
+                json_object_set_new(*at, "status", json_string(rs_status_name(stp)));
             }
             rs_rootcount_clear(rc);
         }
-        fmpz_poly_clear(u);
-        fmpq_clear(sc);
-    }
-
-    /* 2. try to prove it with a certificate */
-    cert = json_array();
-    if (r == RS_OK) {
-        rs_hurwitz_t h;
-        fmpz_mpoly_t qz;
-        fmpq_mpoly_t c;
-        fmpz_mpoly_init(qz, s->zctx);
-        fmpq_mpoly_init(c, s->ctx);
-        rs_hurwitz_init(h);
-        if (rs_run_hurwitz(h, run, v, qz) == RS_OK) {
-            if (kind != CLAIM_UNSTABLE) {
-                /* stable (hence bounded): every Lienard-Chipart condition > 0 */
-                proved = prove_hurwitz_stable(run, qz, b, s, cert, st);
-                tried = "Lienard-Chipart conditions on the bilinear polynomial, each proved positive by "
-                        "mapping every parameter interval onto [0, inf) and checking coefficient signs";
-                if (!proved && kind == CLAIM_BOUNDED) {
-                    json_decref(cert);
-                    cert = json_array();
-                    proved = prove_bounded(run, v, b, cert, st);
-                    tried = "stability by Lienard-Chipart; then q = G H with G = gcd(q(z), q(-z)): H "
-                            "Hurwitz-stable and G's roots simple on the imaginary axis (degree <= 2 in z^2)";
-                }
-            } else {
-                /* unstable: q has coefficients of both signs (a root with Re z > 0) */
-                slong k;
-                fmpq_mpoly_t an, ak;
-                fmpq_mpoly_init(an, s->ctx);
-                fmpq_mpoly_init(ak, s->ctx);
-                z2q(an, h->coeffs + h->n, s);
-                for (k = 0; k < h->n && !proved; k++) {
-                    json_t *c1 = json_array();
-                    z2q(ak, h->coeffs + k, s);
-                    fmpq_mpoly_neg(ak, ak, s->ctx);
-                    if (prove_positive(an, b, s, c1, 0) && prove_positive(ak, b, s, c1, 0)
-                        && recheck_positive(an, b, s, st) && recheck_positive(ak, b, s, st)) {
-                        proved = 1;
-                        json_array_extend(cert, c1);
-                    }
-                    json_decref(c1);
-                }
-                fmpq_mpoly_clear(an, s->ctx);
-                fmpq_mpoly_clear(ak, s->ctx);
-                tried = "a coefficient of the bilinear polynomial of sign opposite to its leading one on the "
-                        "whole region (then a root has Re z > 0, |lambda| > 1)";
-            }
-        } else {
-            rs_error_init(run->err);
-            tried = "Hurwitz conditions could not be formed";
+        if (*at != NULL) {
+            *counter = json_object();
+            for (k = 0; k < nparams; k++)
+                if (!param_is_set(run, k))
+                    json_object_set_new(*counter, run->c->params[k].name, rs_json_fmpq(pt + k));
+            json_object_set_new(*at, "decided_by", json_string("exact"));
         }
-        rs_hurwitz_clear(h, s->zctx);
-        fmpz_mpoly_clear(qz, s->zctx);
-        fmpq_mpoly_clear(c, s->ctx);
     }
-    if (r == RS_OK) {
-        if (refuted && proved) {
-            run->outcome |= RS_OUTCOME_INCONSISTENT;
-            json_object_set_new(o, "status", json_string("inconsistent"));
-        } else if (refuted) {
-            json_t *at = json_object();
-            json_object_set_new(o, "status", json_string("refuted"));
-            json_object_set_new(o, "counterexample", counter);
-            counter = NULL;
-            rs_json_add_count(at, crc);
-            json_object_set_new(at, "status", json_string(rs_status_name(cst)));
-            json_object_set_new(at, "decided_by", json_string("exact"));
-            json_object_set_new(o, "at_counterexample", at);
-            run->outcome |= RS_OUTCOME_FAILED;
-        } else if (proved) {
-            json_object_set_new(o, "status", json_string("proved"));
-            json_object_set_new(o, "certificate", cert);
-            cert = NULL;
-            json_object_set_new(o, "certificate_rechecked", json_true());
-        } else {
-            json_object_set_new(o, "status", json_string("undecided"));
-        }
-        json_object_set_new(o, "points_checked", json_integer(ntried));
-        json_object_set_new(o, "tried", json_string(tried));
-        rs_run_emit_exact(run, v, o);
-    } else {
-        json_decref(o);
-    }
-    json_decref(cert);
-    json_decref(counter);
-    rs_rootcount_clear(crc);
-    flint_randclear(st);
-    for (i = 0; i < ncoef; i++) fmpq_mpoly_clear(coefq + i, s->ctx);
-    flint_free(coefq);
+    flint_free(vars);
     for (i = 0; i < nparams; i++) _fmpq_vec_clear(cand[i], 40);
     free(cand);
     free(ncand);
@@ -1875,9 +2063,124 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     flint_free(pp);
     for (i = 0; i < ncps; i++) rs_condpoly_clear(cps + i, s);
     free(cps);
-    for (i = 0; i < nconds; i++) rs_cond_clear(conds + i);
-    free(conds);
-    rs_bounds_clear(b, nparams);
-    flint_free(b);
+    return r;
+}
+
+int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    char kindw[80];
+    const char *t, *tried;
+    claim_kind_t kind;
+    rs_variant_t *v;
+    claim_dnf_t dnf;
+    slong i, nparams = run->c->nparams, ntried = 0;
+    json_t *o, *counter = NULL, *at = NULL;
+    int r = RS_OK, proved = 1, split = 0, inconsistent = 0;
+    claim_cx_t cx;
+
+    t = read_word(rest, kindw);
+    if (t == NULL || !(strcmp(kindw, "stable") == 0 || strcmp(kindw, "bounded") == 0
+                       || strcmp(kindw, "unstable") == 0))
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected stable, bounded or unstable after claim, found '%s'", rest);
+    kind = strcmp(kindw, "stable") == 0 ? CLAIM_STABLE : strcmp(kindw, "bounded") == 0 ? CLAIM_BOUNDED
+                                                                                    : CLAIM_UNSTABLE;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    t = skip_ws(t);
+    memset(&dnf, 0, sizeof dnf);
+    if (*t != '\0') {
+        if (strncmp(t, "when", 4) != 0 || !(t[4] == ' ' || t[4] == '\t'))
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'when CONDITION' or end of line, found '%s'", t);
+        r = claim_dnf_parse(&dnf, run, q, t + 4);
+        if (r != RS_OK) return r;
+    } else {
+        dnf.nparts = 1;
+        dnf.n = calloc(1, sizeof(slong));
+        dnf.conds = calloc(1, sizeof(rs_cond_t *));
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("claim"));
+    json_object_set_new(o, "text", json_string(q->text));
+    json_object_set_new(o, "claim", json_string(kindw));
+    memset(cx.fail, 0, sizeof cx.fail);
+    cx.cert = json_array();
+    flint_randinit(cx.st);
+
+    /* a union of sets: refuted by a point of any part, proved when every part is */
+    for (i = 0; i < dnf.nparts && r == RS_OK && counter == NULL; i++) {
+        rs_bound_t *b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
+        claim_bounds(b, run, dnf.conds[i], dnf.n[i]);
+        /* an empty part adds nothing to the union */
+        {
+            slong k;
+            int empty = 0;
+            for (k = 0; k < nparams; k++) empty |= rs_bound_empty(b + k);
+            if (!empty) {
+                r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at);
+                if (r == RS_OK && (counter != NULL || proved)) {
+                    int pr;
+                    if (dnf.nparts > 1) {
+                        char msg[300];
+                        snprintf(msg, sizeof msg, "part %ld of %ld (joined by or)", (long) i + 1,
+                                 (long) dnf.nparts);
+                        cert_note(&cx, msg);
+                    }
+                    /* proved on a part that has a counterexample: the certificate
+                     * and the exact point verdict disagree */
+                    pr = claim_prove(run, kind, b, &cx, 0, &split);
+                    if (counter != NULL && pr) inconsistent = 1;
+                    proved = proved && pr;
+                }
+            }
+        }
+        rs_bounds_clear(b, nparams);
+        flint_free(b);
+    }
+    tried = kind == CLAIM_UNSTABLE
+            ? "a coefficient of the bilinear polynomial q(z) of sign opposite to its leading one on the whole "
+              "set (then a root has Re z > 0, |lambda| > 1) and p's leading coefficient non-zero"
+            : kind == CLAIM_STABLE
+            ? "Lienard-Chipart conditions of q(z) or -q(z), each proved positive by mapping every parameter "
+              "interval onto [0, inf), dividing out monomials that vanish at open ends, and checking "
+              "coefficient signs (Polya multipliers (1 + sum s)^N); closed interval ends split off and "
+              "substituted"
+            : "stability as for `claim stable`; then q = G H with G = gcd(q(z), q(-z)): H Hurwitz-stable and "
+              "G's roots simple on the imaginary axis (degree <= 2 in z^2); closed interval ends split off "
+              "and substituted";
+    if (r == RS_OK) {
+        if (inconsistent) {
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+            json_object_set_new(o, "status", json_string("inconsistent"));
+            json_object_set_new(o, "counterexample", counter);
+            json_object_set_new(o, "at_counterexample", at);
+            counter = at = NULL;
+        } else if (counter != NULL) {
+            json_object_set_new(o, "status", json_string("refuted"));
+            json_object_set_new(o, "counterexample", counter);
+            json_object_set_new(o, "at_counterexample", at);
+            counter = at = NULL;
+            run->outcome |= RS_OUTCOME_FAILED;
+        } else if (proved) {
+            json_object_set_new(o, "status", json_string("proved"));
+            json_object_set_new(o, "certificate", cx.cert);
+            cx.cert = NULL;
+            json_object_set_new(o, "certificate_rechecked", json_true());
+            if (split) json_object_set_new(o, "split", json_true());
+        } else {
+            json_object_set_new(o, "status", json_string("undecided"));
+            if (cx.fail[0] != '\0') json_object_set_new(o, "failed_at", json_string(cx.fail));
+        }
+        json_object_set_new(o, "points_checked", json_integer(ntried));
+        json_object_set_new(o, "tried", json_string(tried));
+        rs_run_emit_exact(run, v, o);
+    } else {
+        json_decref(o);
+    }
+    json_decref(cx.cert);
+    json_decref(counter);
+    json_decref(at);
+    flint_randclear(cx.st);
+    claim_dnf_clear(&dnf);
     return r;
 }

@@ -404,7 +404,11 @@ static void r_claim(FILE *out, const json_t *o)
             first = 0;
         }
         fputc('\n', out);
-        print_count(out, at);
+        if (jstr(at, "reason")) {
+            fprintf(out, "  %-*s %s: %s\n", LABEL_W, "verdict", jstr(at, "status"), jstr(at, "reason"));
+        } else {
+            print_count(out, at);
+        }
     } else if (st && strcmp(st, "proved") == 0) {
         const json_t *c = json_object_get(o, "certificate");
         size_t i;
@@ -413,17 +417,25 @@ static void r_claim(FILE *out, const json_t *o)
             const char *key;
             json_t *val;
             int first = 1;
+            if (jstr(e, "text")) {
+                line(out, i == 0 ? "certificate" : "", "%s", jstr(e, "text"));
+                continue;
+            }
             fprintf(out, "  %-*s %s > 0 since with ", LABEL_W, i == 0 ? "certificate" : "", jstr(e, "condition"));
             json_object_foreach(json_object_get(e, "substitution"), key, val) {
                 fprintf(out, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
                 first = 0;
             }
-            fprintf(out, " (every s >= 0) the numerator's %lld coefficients are all >= 0\n",
+            fprintf(out, " (every s >= 0) the numerator's %lld coefficients are all >= 0",
                     jint(e, "transformed_terms"));
+            if (jstr(e, "positive_factor")) fprintf(out, " after dividing by %s > 0", jstr(e, "positive_factor"));
+            if (jint(e, "polya_power") > 0) fprintf(out, " times (1 + sum s)^%lld", jint(e, "polya_power"));
+            fputc('\n', out);
         }
         line(out, "re-checked", "%s", "yes (independent evaluation at random points of the region)");
     } else {
         line(out, "tried", "%s", jstr(o, "tried"));
+        if (jstr(o, "failed_at")) line(out, "failed at", "%s", jstr(o, "failed_at"));
     }
     snprintf(buf, sizeof buf, "%lld points checked exactly", jint(o, "points_checked"));
     line(out, "search", "%s", buf);
