@@ -33,6 +33,7 @@ static void variant_free(rs_variant_t *v)
     rs_scheme_clear(v->s);
     free(v->key);
     json_decref(v->assigned);
+    json_decref(v->not_in_p);
     free(v);
 }
 
@@ -304,8 +305,121 @@ void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits)
     json_object_set_new(o, "precision_bits", json_integer(rr->prec));
 }
 
+#define NOT_IN_P_KEY "|not_in_p"
+
+/* 1 if the integer placeholder values a[0..n-1] keep the parameter content
+ * and every non-zero assumption of s non-zero (other variables: 0; they do
+ * not occur there) */
+static int placeholders_ok(const rs_scheme_struct *s, const fmpz_mpoly_t content, const rs_assign_t *a, slong n)
+{
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    fmpz *zt = _fmpz_vec_init(s->nvars);
+    fmpz **zp = flint_malloc(s->nvars * sizeof(fmpz *));
+    fmpq_t val;
+    fmpz_t zv;
+    slong i;
+    int ok;
+    fmpq_init(val);
+    fmpz_init(zv);
+    for (i = 0; i < s->nvars; i++) { pp[i] = pt + i; zp[i] = zt + i; }
+    for (i = 0; i < n; i++) {
+        fmpq_set(pt + a[i].var, a[i].value);
+        fmpz_set(zt + a[i].var, fmpq_numref(a[i].value));
+    }
+    fmpz_mpoly_evaluate_all_fmpz(zv, content, zp, s->zctx);
+    ok = !fmpz_is_zero(zv);
+    for (i = 0; i < s->nnonzero && ok; i++) {
+        fmpq_mpoly_evaluate_all_fmpq(val, s->nonzero + i, pp, s->ctx);
+        ok = !fmpq_is_zero(val);
+    }
+    fmpq_clear(val);
+    fmpz_clear(zv);
+    _fmpq_vec_clear(pt, s->nvars);
+    _fmpz_vec_clear(zt, s->nvars);
+    flint_free(pp);
+    flint_free(zp);
+    return ok;
+}
+
+int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
+
+int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **out)
+{
+    const rs_case_struct *c = run->c;
+    rs_variant_t *v;
+    rs_assign_t *a, *extra;
+    slong i, n, nx = 0, j, lv;
+    fmpz_mpoly_t P;
+    const rs_scheme_struct *s;
+    char *key;
+    int r = rs_run_default_variant(run, &v), ok;
+    static const slong tries[] = {1, 2, 3, 5, 7, 11, 13, -1};
+    *out = v;
+    if (r != RS_OK) return r;
+    s = v->s;
+    lv = s->lambda_var;
+    fmpz_mpoly_init(P, s->zctx);
+    /* p over its parameter content must be free of parameters */
+    ok = fmpz_mpoly_divides(P, v->cp->p, v->cp->param_content, s->zctx);
+    for (i = 0; ok && i < s->nvars; i++)
+        if (i != lv && fmpz_mpoly_degree_si(P, i, s->zctx) > 0) ok = 0;
+    fmpz_mpoly_clear(P, s->zctx);
+    if (!ok) return RS_OK;
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    extra = calloc((size_t) c->nparams + 1, sizeof(rs_assign_t));
+    for (i = 0; i < c->nparams; i++) {
+        int set = 0;
+        for (j = 0; j < n; j++) set |= a[j].var == i;
+        if (set) continue;
+        extra[nx].name = c->params[i].name;
+        extra[nx].var = i;
+        fmpq_init(extra[nx].value);
+        nx++;
+    }
+    rs_assign_free(a, n);
+    if (nx == 0) { rs_assign_free(extra, nx); return RS_OK; }
+    /* one value for all of them: the first of a few small integers that keeps
+     * the content (p = content * p0) and the non-zero assumptions non-zero */
+    ok = 0;
+    for (j = 0; tries[j] > 0 && !ok; j++) {
+        for (i = 0; i < nx; i++) fmpq_set_si(extra[i].value, tries[j], 1);
+        ok = placeholders_ok(s, v->cp->param_content, extra, nx);
+    }
+    if (ok) {
+        rs_run_assignments(run, &a, &n, NULL, 0, extra, nx);
+        /* its own cache entry: the placeholders are not values the user gave */
+        char *k0 = assign_key(a, n);
+        key = malloc(strlen(k0) + sizeof NOT_IN_P_KEY);
+        sprintf(key, "%s%s", k0, NOT_IN_P_KEY);
+        free(k0);
+        for (i = 0; i < run->nvariants; i++)
+            if (strcmp(run->variants[i]->key, key) == 0) *out = run->variants[i];
+        if (*out == v) {
+            slong before = run->nvariants;
+            r = rs_run_variant(out, run, a, n);
+            if (run->nvariants > before) {
+                rs_variant_t *w = *out;
+                free(w->key);
+                w->key = key;
+                key = NULL;
+                w->not_in_p = json_array();
+                for (i = 0; i < nx; i++) {
+                    json_array_append_new(w->not_in_p, json_string(extra[i].name));
+                    json_object_del(w->assigned, extra[i].name);
+                }
+            }
+        }
+        free(key);
+        rs_assign_free(a, n);
+    }
+    rs_assign_free(extra, nx);
+    return r;
+}
+
 void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o)
 {
+    if (v->not_in_p != NULL) json_object_set_new(o, "not_in_p", json_deep_copy(v->not_in_p));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
     json_object_set_new(o, "decided_by", json_string("exact"));
     json_array_append_new(run->results, o);
@@ -749,7 +863,21 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
                             "exact (analytic) subsystem integration gives a recurrence with matrix-exponential "
                             "entries: only radius, stability and map apply, found '%s'", t);
     }
-    if ((e = lookup(general, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
+    if ((e = lookup(general, t, n)) != NULL) {
+        size_t before = json_array_size(run->results);
+        int r = e->fn(run, q, rs_req_skip_word(t));
+        /* numeric analyses that set their own "substituted": name the
+         * parameters p does not depend on (placeholders) */
+        if (r == RS_OK && (strcmp(e->name, "radius") == 0 || strcmp(e->name, "modes") == 0
+                           || strcmp(e->name, "simulate") == 0)) {
+            rs_variant_t *v;
+            size_t k;
+            if (rs_run_numeric_variant(run, &v) == RS_OK && v->not_in_p != NULL)
+                for (k = before; k < json_array_size(run->results); k++)
+                    json_object_set(json_array_get(run->results, k), "not_in_p", v->not_in_p);
+        }
+        return r;
+    }
     {
         char word[80];
         snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);

@@ -1046,7 +1046,7 @@ static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
     int r;
     if (*rest != '\0')
         return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after stability, found '%s'", rest);
-    r = rs_run_default_variant(run, &v);
+    r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "stability");

@@ -98,7 +98,7 @@ static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (strcmp(method, "certified") != 0 && strcmp(method, "double") != 0 && strcmp(method, "companion") != 0)
         return rs_req_error(run, q, strstr(rest, "method"), RS_ERR_INPUT,
                             "method= expects certified, companion or double, found '%s'", method);
-    r = rs_run_default_variant(run, &v);
+    r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "radius");
@@ -226,7 +226,7 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     int *principal;
     json_t *o, *modes, *spur;
     int r;
-    r = rs_run_default_variant(run, &v);
+    r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "modes");
@@ -360,7 +360,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "seed", &seed, 0, 1000000000);
     if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "prec", &prec, 32, 65536);
     if (r != RS_OK) return r;
-    r = rs_run_default_variant(run, &v);
+    r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
     fmpz_poly_init(p);

@@ -26,7 +26,12 @@ static void print_assigned(FILE *out, const json_t *o)
     const json_t *sub = json_object_get(o, "substituted");
     const char *key;
     json_t *val;
+    const json_t *nip = json_object_get(o, "not_in_p");
+    size_t i;
     int first = 1;
+    for (i = 0; i < json_array_size(nip); i++)
+        fprintf(out, "%s%s%s", i == 0 ? "  not in p     " : ", ", json_string_value(json_array_get(nip, i)),
+                i + 1 == json_array_size(nip) ? " (p does not depend on them: no value needed)\n" : "");
     if (!json_is_object(sub) || json_object_size(sub) == 0) return;
     fprintf(out, "  %-*s ", LABEL_W, "at");
     json_object_foreach((json_t *) sub, key, val) {

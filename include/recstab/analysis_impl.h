@@ -20,6 +20,8 @@ typedef struct {
     int status;           /* RS_OK or the error building it */
     int singular;         /* the values drop the degree of det A in lambda:
                              the implicit step cannot be solved there */
+    json_t *not_in_p;     /* parameters given a placeholder value because p does
+                             not depend on them (rs_run_numeric_variant), or NULL */
 } rs_variant_t;
 
 typedef struct {
@@ -73,6 +75,11 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
 int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                         const slong *vars, const fmpq *vals, slong nv);
 
+/* The variant for analyses that need every parameter set: the default one,
+ * except that parameters p does not depend on (they occur nowhere, or only in
+ * p's parameter content) get a placeholder value keeping that content and the
+ * non-zero assumptions non-zero; v->not_in_p names them. */
+int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **v);
 /* Close an exact result o of variant v ("substituted", "decided_by":
  * "exact") and append it to the run's results (takes o). */
 void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);
