@@ -959,12 +959,71 @@ static int check_assumptions(const rs_case_t c, rs_error_t err)
     return RS_OK;
 }
 
+static void free_requests(rs_request_t *q, slong n)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        flint_free(q[i].text);
+        flint_free(q[i].loc.file);
+    }
+    free(q);
+}
+
+/* The analyses of a case without `analyse`, `expect` or `claim` lines:
+ * charpoly and stability when p depends on no unset parameter; else
+ * charpoly, hurwitz and, with one free parameter, its region.  Numeric
+ * cases (exp/sin recurrences, exact integration): stability.  An
+ * identically zero determinant is the usual error. */
+static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
+{
+    const rs_case_struct *c = run->c;
+    const rs_loc_t *at = c->neqs > 0 ? &c->eqs[0].loc : c->charexpr != NULL ? &c->charloc : NULL;
+    const char *names[3];
+    char region[80 + RS_CASE_MAX_NAMES];
+    slong n = 0, i, nfree = 0, last = -1;
+    rs_variant_t *v;
+    int r;
+    *out = NULL;
+    *nout = 0;
+    if (c->numeric_recurrence || rs_builder_is_exact(c)) {
+        names[n++] = "stability";
+    } else {
+        r = rs_run_numeric_variant(run, &v);
+        if (r != RS_OK) return r;
+        for (i = 0; i < v->s->nvars; i++)
+            if (i != v->s->lambda_var && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0) {
+                nfree++;
+                last = i;
+            }
+        names[n++] = "charpoly";
+        if (nfree == 0) {
+            names[n++] = "stability";
+        } else {
+            names[n++] = "hurwitz";
+            if (nfree == 1) {
+                snprintf(region, sizeof region, "region %s", v->s->vars[last]);
+                names[n++] = region;
+            }
+        }
+    }
+    *out = calloc((size_t) n, sizeof(rs_request_t));
+    for (i = 0; i < n; i++) {
+        (*out)[i].text = rs_strdup(names[i]);
+        (*out)[i].loc.file = rs_strdup(at != NULL && at->file != NULL ? at->file : c->path);
+        (*out)[i].loc.line = at != NULL ? at->line : 1;
+        (*out)[i].loc.col = at != NULL ? at->col : 1;
+    }
+    *nout = n;
+    return RS_OK;
+}
+
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
                     const rs_options_t *opt, rs_error_t err)
 {
     rs_run_t run;
     json_t *d, *arr;
-    slong i;
+    slong i, ndefaults = 0;
+    rs_request_t *defaults = NULL;
     int r = RS_OK;
     memset(&run, 0, sizeof run);
     run.c = c;
@@ -983,6 +1042,13 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
         r = rs_scheme_build(run.sym, c, err);
         run.have_sym = (r == RS_OK);
     }
+    if (r == RS_OK && c->nrequests == 0) {
+        r = default_requests(&run, &defaults, &ndefaults);
+        for (i = 0; i < ndefaults && r == RS_OK; i++) {
+            r = dispatch(&run, defaults + i);
+            if (rs_budget_exceeded()) r = rs_budget_error(err);
+        }
+    }
     for (i = 0; i < c->nrequests && r == RS_OK; i++) {
         r = dispatch(&run, &c->requests[i]);
         /* a loop stopped by the budget may have ended in another error or in
@@ -998,6 +1064,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(err);
     rs_budget_stop();
     if (r != RS_OK) {
+        free_requests(defaults, ndefaults);
         for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
         free(run.variants);
         rs_scheme_clear(run.sym);
@@ -1018,6 +1085,12 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     for (i = 0; i < c->nunknowns; i++) json_array_append_new(arr, json_string(c->unknowns[i].name));
     json_object_set_new(d, "unknowns", arr);
     json_object_set_new(d, "set", rs_json_sets(c));
+    if (ndefaults > 0) {
+        arr = json_array();
+        for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
+        json_object_set_new(d, "default_analyses", arr);
+    }
+    free_requests(defaults, ndefaults);
     if (opt->with_scheme && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
         json_t *sc = scheme_json(&run);
         if (sc == NULL) {
