@@ -18,6 +18,7 @@ int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
 int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
                         const char *what);
 int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
+void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 
 #define RS_SIMULATE_MAX_STEPS 10000000
 
@@ -322,6 +323,69 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     return RS_OK;
 }
 
+/* ---- simulate: cross-check against the exact verdict ---------------------------- */
+
+#define SIM_CHECK_MIN_STEPS 64
+#define SIM_CHECK_SPREAD 1e6   /* norm ratio a bounded trajectory may show between the windows */
+
+/* The measured growth g (log g = loggr, from log-norm averages over windows
+ * centred near 3N/8 and 7N/8, N/2 apart) against the exact verdict at the
+ * same point.  Allowed without contradiction: polynomial growth n^m from
+ * defective circle roots (m < d = deg p; a Jordan block of a system is no
+ * longer than the root's multiplicity) shifts log g by about
+ * m ln(7/3) / (N/2); a bounded trajectory (semisimple circle roots, stable
+ * transients) by at most ln(SIM_CHECK_SPREAD) / (N/2).  Beyond their sum
+ * tau: growth clearly above 1 with a stable or marginal verdict, or clear
+ * decay with a root outside the circle, is an inconsistency (exit 3).
+ * Unstable only through a defective circle root (no root outside) grows
+ * polynomially: its g tends to 1 and is not checked for decay. */
+const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside, double log_growth, slong degree,
+                                     slong steps)
+{
+    *tau = ((double) degree * log(7.0 / 3.0) + log(SIM_CHECK_SPREAD)) / ((double) steps / 2);
+    if (steps < SIM_CHECK_MIN_STEPS) return NULL;
+    if (log_growth > *tau && (st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL))
+        return "the run grows clearly faster than polynomially while the exact verdict says bounded";
+    if (log_growth < -*tau && st == RS_STATUS_UNSTABLE && outside > 0)
+        return "the run decays clearly while the exact verdict has a root outside the unit circle";
+    return NULL;
+}
+
+static int simulate_check(rs_run_t *run, json_t *o, const fmpz_poly_t p, const arb_t loggr, slong steps)
+{
+    rs_rootcount_t rc;
+    json_t *chk, *vd;
+    double tau, lg;
+    const char *why = NULL;
+    rs_status_t st;
+    int r;
+    if (fmpz_poly_degree(p) < 1 || steps < SIM_CHECK_MIN_STEPS) return RS_OK;
+    rs_rootcount_init(rc);
+    r = rs_run_exact_count(rc, run, p, NULL);
+    if (r != RS_OK) { rs_rootcount_clear(rc); return r; }
+    st = rs_rootcount_status(rc);
+    lg = arf_get_d(arb_midref(loggr), ARF_RND_NEAR);
+    why = rs_simulate_disagreement(&tau, st, rc->outside, lg, fmpz_poly_degree(p), steps);
+    vd = json_object();
+    rs_json_add_count(vd, rc);
+    json_object_set_new(vd, "decided_by", json_string("exact"));
+    json_object_set_new(o, "verdict", vd);
+    chk = json_object();
+    json_object_set_new(chk, "log_growth", json_real(lg));
+    json_object_set_new(chk, "threshold", json_real(tau));
+    json_object_set_new(chk, "rule", json_string("|log growth| beyond (deg p * ln(7/3) + ln 1e6) / (steps/2): "
+                                                 "polynomial growth of defective circle roots and bounded "
+                                                 "oscillation stay below it"));
+    json_object_set_new(chk, "consistent", json_boolean(why == NULL));
+    if (why != NULL) {
+        json_object_set_new(chk, "disagreement", json_string(why));
+        run->outcome |= RS_OUTCOME_INCONSISTENT;
+    }
+    json_object_set_new(o, "check", chk);
+    rs_rootcount_clear(rc);
+    return RS_OK;
+}
+
 /* ---- simulate ------------------------------------------------------------------------ */
 
 /* coefficient of lambda^k of a (numeric) entry */
@@ -515,6 +579,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
         arb_exp(t2, t1, prec);
         json_object_set_new(o, "growth", rs_json_arb(t2, 15));
         json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
+        r = simulate_check(run, o, p, t1, steps);
     } else {
         json_object_set_new(o, "growth", json_null());
         json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
@@ -530,7 +595,8 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     }
     json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_array_append_new(run->results, o);
+    if (r == RS_OK) json_array_append_new(run->results, o);
+    else json_decref(o);
 done:
     for (u = 0; u < n; u++) _arb_vec_clear(hist[u], Mu[u] - mu[u] + 1);
     flint_free(hist);

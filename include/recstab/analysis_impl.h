@@ -153,6 +153,13 @@ void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb
 void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const acb_t root, const arb_t h,
                          slong prec);
 
+/* Simulate's cross-check (src/analysis_numeric.c): NULL when a measured
+ * log growth per step over `steps` steps is compatible with the exact verdict
+ * (status st, `outside` roots outside the circle, p of degree `degree`), else
+ * why not; *tau is the threshold on |log growth| (see the source for why). */
+const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside, double log_growth, slong degree,
+                                     slong steps);
+
 /* Grid value i of K+1 points from A to B (src/analysis_sweep.c); log
  * spacing: the simplest rational within 1e-13 relative of A*(B/A)^(i/K)
  * (endpoints exact). */
