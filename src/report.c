@@ -530,6 +530,13 @@ static void r_simulate(FILE *out, const json_t *o)
     line(out, "recurrence", "%s", jstr(o, "recurrence"));
     line(out, "growth", "%s per step (measured)", jstr(o, "growth") ? jstr(o, "growth") : "undefined");
     if (jstr(o, "radius")) line(out, "radius", "%s (certified)", jstr(o, "radius"));
+    if (json_object_get(o, "check")) {
+        const json_t *ck = json_object_get(o, "check");
+        snprintf(buf, sizeof buf, "%s (exact): %s", jstr(json_object_get(o, "verdict"), "status"),
+                 json_is_true(json_object_get(ck, "consistent")) ? "consistent with the run"
+                                                                : jstr(ck, "disagreement"));
+        line(out, "verdict", "%s", buf);
+    }
     print_assigned(out, o);
 }
 
