@@ -1240,13 +1240,16 @@ typedef struct {
     json_t *cert;
     flint_rand_t st;
     char fail[640];
+    size_t fail_progress; /* certificate entries when it failed */
 } claim_cx_t;
 
 
 static void claim_fail(claim_cx_t *cx, const char *what, const fmpq_mpoly_t c, const rs_scheme_t s)
 {
     char *cs;
-    if (cx->fail[0] != '\0') return;
+    /* keep the failure of the attempt that got furthest */
+    if (cx->fail[0] != '\0' && json_array_size(cx->cert) <= cx->fail_progress) return;
+    cx->fail_progress = json_array_size(cx->cert);
     cs = c != NULL ? rs_polyfmt_fmpq_mpoly(c, (const char **) s->vars, s->ctx) : NULL;
     snprintf(cx->fail, sizeof cx->fail, "%s%s%s", cs != NULL ? cs : "", cs != NULL ? ": " : "", what);
     free(cs);
@@ -1923,7 +1926,7 @@ static void claim_dnf_clear(claim_dnf_t *d)
 static int word_at(const char *t, const char *w)
 {
     size_t n = strlen(w);
-    return strncmp(t, w, n) == 0 && (t[n] == ' ' || t[n] == '\t');
+    return strncmp(t, w, n) == 0 && (t[n] == ' ' || t[n] == '\t' || t[n] == '\0');
 }
 
 static int claim_dnf_parse(claim_dnf_t *d, rs_run_t *run, const rs_request_t *q, const char *t)
@@ -2104,6 +2107,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "claim", json_string(kindw));
     memset(cx.fail, 0, sizeof cx.fail);
+    cx.fail_progress = 0;
     cx.cert = json_array();
     flint_randinit(cx.st);
 

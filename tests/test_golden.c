@@ -93,6 +93,26 @@ static void test_park(void **state)
                " - 2*m*muh*wh^2*((1+alpha)*lambda - alpha)*(lambda+1)^2", 4);
 }
 
+/* Dahlquist's test equation y' = q y (q = h lambda_0 real), p = rho - q sigma:
+ * BDF2 rho = 3l^2 - 4l + 1, sigma = 2l^2; two-step Adams-Moulton
+ * (Hairer, Norsett, Wanner I, III.1) rho = 12(l^2 - l), sigma = 5l^2 + 8l - 1. */
+static void test_dahlquist(void **state)
+{
+    (void) state;
+    check_case("cases/textbook/bdf2-dahlquist.case", "(3 - 2*q)*lambda^2 - 4*lambda + 1", 2);
+    check_case("cases/textbook/adams-moulton2.case", "(12 - 5*q)*lambda^2 - (12 + 8*q)*lambda + q", 2);
+}
+
+/* HHT-alpha, eliminated by hand in the case file's comment (times 4:
+ * 4(1 - gamma) = 2 + 4 alpha, 4 gamma = 2 - 4 alpha, 4 beta = (1 - alpha)^2). */
+static void test_hht(void **state)
+{
+    (void) state;
+    check_case("cases/textbook/hht-alpha.case",
+               "4*lambda*(lambda - 1)^2 + w^2*((1 + alpha)*lambda - alpha)*((2 + 4*alpha) + (2 - 4*alpha)*lambda"
+               " + (2 - (1 - alpha)^2 + (1 - alpha)^2*lambda)*(lambda - 1))", 3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -102,6 +122,8 @@ int main(void)
         cmocka_unit_test(test_bdf2),
         cmocka_unit_test(test_central_difference),
         cmocka_unit_test(test_park),
+        cmocka_unit_test(test_dahlquist),
+        cmocka_unit_test(test_hht),
     };
     return cmocka_run_group_tests_name("golden", tests, NULL, NULL);
 }
