@@ -2120,6 +2120,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
             slong k;
             int empty = 0;
             for (k = 0; k < nparams; k++) empty |= rs_bound_empty(b + k);
+            if (empty) cert_note(&cx, "an empty set (the bounds of a parameter exclude each other): nothing to prove");
             if (!empty) {
                 r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at);
                 if (r == RS_OK && (counter != NULL || proved)) {
