@@ -26,6 +26,8 @@
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 #include "recstab/analysis_impl.h"
+#include "recstab/rootcount.h"
+#include <flint/fmpq_poly.h>
 
 static const json_t *result(const json_t *doc, size_t i)
 {
@@ -264,6 +266,110 @@ static void test_simulate_check(void **state)
     assert_null(rs_simulate_disagreement(&tau, RS_STATUS_STABLE, 0, log(2.0), 2, 10));
 }
 
+/* exact verdict of p(lambda; q0) by factorisation (rs_rootcount_factor, not
+ * the Routh / Schur-Cohn pair the claim uses); c[k][j]: coefficient of
+ * q^j lambda^k; singular when the generic leading coefficient vanishes */
+static rs_status_t point_status(const slong c[3][2], slong deg, const fmpq_t q0)
+{
+    fmpq_poly_t p;
+    fmpz_poly_t z;
+    fmpq_t a, t;
+    rs_rootcount_t rc;
+    rs_error_t err;
+    rs_status_t st;
+    slong k;
+    fmpq_poly_init(p);
+    fmpz_poly_init(z);
+    fmpq_init(a);
+    fmpq_init(t);
+    for (k = 0; k <= deg; k++) {
+        fmpq_mul_si(t, q0, c[k][1]);
+        fmpq_add_si(a, t, c[k][0]);
+        fmpq_poly_set_coeff_fmpq(p, k, a);
+    }
+    if (fmpq_poly_degree(p) < deg) {
+        st = RS_STATUS_SINGULAR;
+    } else {
+        fmpq_poly_get_numerator(z, p);
+        rs_rootcount_init(rc);
+        rs_error_init(err);
+        assert_int_equal(rs_rootcount_factor(rc, z, err), RS_OK);
+        st = rs_rootcount_status(rc);
+        rs_rootcount_clear(rc);
+    }
+    fmpq_poly_clear(p);
+    fmpz_poly_clear(z);
+    fmpq_clear(a);
+    fmpq_clear(t);
+    return st;
+}
+
+static int kind_violated(int kind, rs_status_t st)
+{
+    if (st == RS_STATUS_SINGULAR) return 1;
+    return kind == 0 ? st != RS_STATUS_STABLE : kind == 1 ? st == RS_STATUS_UNSTABLE : st != RS_STATUS_UNSTABLE;
+}
+
+/* Property: random p = sum (c_k0 + c_k1 q) lambda^k (degree <= 2), random
+ * intervals and kinds.  A proved claim holds at 40 rational points of the set
+ * (ends included when closed); a refuted claim's counterexample lies in the
+ * set and violates it -- both by an independent exact count. */
+static void test_claim_property(void **state)
+{
+    static const char *const kinds[] = {"stable", "bounded", "unstable"};
+    flint_rand_t st;
+    slong iter, nproved = 0, nrefuted = 0;
+    (void) state;
+    flint_randinit(st);
+    for (iter = 0; iter < 300; iter++) {
+        slong c[3][2], k, j, deg = 1 + (slong) n_randint(st, 2), lo, hi, i;
+        int kind = (int) n_randint(st, 3), loc = (int) n_randint(st, 2), hic = (int) n_randint(st, 2);
+        int outcome, code;
+        char text[512];
+        json_t *doc;
+        const char *status;
+        fmpq_t q0, L, H;
+        for (k = 0; k <= 2; k++)
+            for (j = 0; j < 2; j++) c[k][j] = k <= deg ? (slong) n_randint(st, 7) - 3 : 0;
+        if (c[deg][0] == 0 && c[deg][1] == 0) continue;
+        lo = (slong) n_randint(st, 9) - 6;
+        hi = lo + 1 + (slong) n_randint(st, 5);
+        snprintf(text, sizeof text, "param q\nchar (%ld + %ld*q)*lambda^2 + (%ld + %ld*q)*lambda + (%ld + %ld*q)\n"
+                 "claim %s when %ld %s q %s %ld\n", c[2][0], c[2][1], c[1][0], c[1][1], c[0][0], c[0][1],
+                 kinds[kind], lo, loc ? "<=" : "<", hic ? "<=" : "<", hi);
+        doc = run_text(text, &outcome, &code);
+        if (doc == NULL) continue;   /* e.g. p without lambda */
+        status = str(result(doc, 0), "status");
+        assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+        fmpq_init(q0); fmpq_init(L); fmpq_init(H);
+        fmpq_set_si(L, lo, 1);
+        fmpq_set_si(H, hi, 1);
+        if (strcmp(status, "proved") == 0) {
+            nproved++;
+            for (i = 0; i < 40; i++) {
+                /* q0 = L + (H - L) i/39, ends only when closed */
+                fmpq_set_si(q0, lo * 39 + (hi - lo) * i, 39);
+                if ((i == 0 && !loc) || (i == 39 && !hic)) continue;
+                if (kind_violated(kind, point_status((const slong (*)[2]) c, deg, q0)))
+                    fail_msg("proved but violated at point %ld of 40: %s", i, text);
+            }
+        } else if (strcmp(status, "refuted") == 0) {
+            const char *cq = str(json_object_get(result(doc, 0), "counterexample"), "q");
+            nrefuted++;
+            assert_int_equal(fmpq_set_str(q0, cq, 10), 0);
+            assert_true(fmpq_cmp(q0, L) > 0 || (loc && fmpq_equal(q0, L)));
+            assert_true(fmpq_cmp(q0, H) < 0 || (hic && fmpq_equal(q0, H)));
+            if (!kind_violated(kind, point_status((const slong (*)[2]) c, deg, q0)))
+                fail_msg("refuted at q = %s but holds there: %s", cq, text);
+        }
+        fmpq_clear(q0); fmpq_clear(L); fmpq_clear(H);
+        json_decref(doc);
+    }
+    /* the sample exercises both outcomes */
+    assert_true(nproved > 20 && nrefuted > 20);
+    flint_randclear(st);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -274,6 +380,7 @@ int main(void)
         cmocka_unit_test(test_not_in_p),
         cmocka_unit_test(test_defaults),
         cmocka_unit_test(test_simulate_check),
+        cmocka_unit_test(test_claim_property),
     };
     return cmocka_run_group_tests_name("claim", tests, NULL, NULL);
 }
