@@ -1806,6 +1806,43 @@ static int claim_prove_direct(rs_run_t *run, claim_kind_t kind, const rs_variant
 
 #define CLAIM_SPLIT_DEPTH 2
 
+/* A rational value strictly inside b where p(1) or p(-1) vanishes as a
+ * polynomial in variable i alone (a root at lambda = 1 or -1 appears there:
+ * typically an isolated marginal point inside a stable interval).  Returns 1
+ * and sets r if there is one. */
+static int claim_inner_split(fmpq_t r, const rs_variant_t *v, slong i, const rs_bound_t *b)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t e;
+    fmpz_poly_t u;
+    fmpz_poly_factor_t f;
+    fmpz_t pm;
+    slong k, sg;
+    int found = 0;
+    fmpz_mpoly_init(e, s->zctx);
+    fmpz_poly_init(u);
+    fmpz_init(pm);
+    for (sg = 1; sg >= -1 && !found; sg -= 2) {
+        fmpz_set_si(pm, sg);
+        fmpz_mpoly_evaluate_one_fmpz(e, v->cp->p, s->lambda_var, pm, s->zctx);
+        if (fmpz_mpoly_is_zero(e, s->zctx) || !fmpz_mpoly_get_fmpz_poly(u, e, i, s->zctx)) continue;
+        fmpz_poly_factor_init(f);
+        fmpz_poly_factor(f, u);
+        for (k = 0; k < f->num && !found; k++) {
+            if (fmpz_poly_degree(f->p + k) != 1) continue;
+            fmpz_neg(fmpq_numref(r), f->p[k].coeffs);
+            fmpz_set(fmpq_denref(r), f->p[k].coeffs + 1);
+            fmpq_canonicalise(r);
+            found = (!b[i].has_lo || fmpq_cmp(r, b[i].lo) > 0) && (!b[i].has_hi || fmpq_cmp(r, b[i].hi) < 0);
+        }
+        fmpz_poly_factor_clear(f);
+    }
+    fmpz_mpoly_clear(e, s->zctx);
+    fmpz_poly_clear(u);
+    fmpz_clear(pm);
+    return found;
+}
+
 /* A certificate on the box, else the box split at a closed end of an
  * interval: the end point substituted (the polynomial there may factor
  * differently, e.g. HHT-alpha at alpha = 0 is the trapezoidal rule, marginal)
@@ -1853,6 +1890,36 @@ static int claim_prove(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, cl
             flint_free(bo);
             flint_free(bf);
         }
+    }
+    /* else split at an inner point where lambda = +-1 becomes a root */
+    for (i = 0; i < np && !ok && depth < CLAIM_SPLIT_DEPTH; i++) {
+        rs_bound_t *bl, *br, *bf;
+        fmpq_t rv;
+        char msg[256], *val;
+        if (b[i].fixed || fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) <= 0) continue;
+        fmpq_init(rv);
+        if (!claim_inner_split(rv, v, i, b)) { fmpq_clear(rv); continue; }
+        bl = flint_malloc(np * sizeof(rs_bound_t));
+        br = flint_malloc(np * sizeof(rs_bound_t));
+        bf = flint_malloc(np * sizeof(rs_bound_t));
+        rs_bounds_init(bl, np); rs_bounds_init(br, np); rs_bounds_init(bf, np);
+        bounds_copy(bl, b, np); bounds_copy(br, b, np); bounds_copy(bf, b, np);
+        fmpq_set(bl[i].hi, rv); bl[i].has_hi = 1; bl[i].hi_closed = 0;
+        fmpq_set(br[i].lo, rv); br[i].has_lo = 1; br[i].lo_closed = 0;
+        fmpq_set(bf[i].lo, rv); fmpq_set(bf[i].hi, rv);
+        bf[i].has_lo = bf[i].has_hi = bf[i].lo_closed = bf[i].hi_closed = bf[i].fixed = 1;
+        val = fmpq_get_str(NULL, 10, rv);
+        snprintf(msg, sizeof msg, "split: %s = %s (lambda = 1 or -1 a root there) on its own, below and above it",
+                 run->c->params[i].name, val);
+        flint_free(val);
+        cert_note(cx, msg);
+        ok = claim_prove(run, kind, bl, cx, depth + 1, split) && claim_prove(run, kind, bf, cx, depth + 1, split)
+             && claim_prove(run, kind, br, cx, depth + 1, split);
+        if (ok) *split = 1;
+        else cert_truncate(cx, n0);
+        rs_bounds_clear(bl, np); rs_bounds_clear(br, np); rs_bounds_clear(bf, np);
+        flint_free(bl); flint_free(br); flint_free(bf);
+        fmpq_clear(rv);
     }
     return ok;
 }

@@ -123,6 +123,9 @@ static void test_claim_sets(void **state)
         {NULL, AM2, "claim unstable when q < -6 or 0 < q < 12/5", "proved"},
         {NULL, BDF2, "claim stable when q < 0 or q > 4", "proved"},
         {NULL, BDF2, "claim stable when q = -1", "proved"},
+        /* root (1 - q^2)/(1 + q^2): |.| < 1 except lambda = 1 at q = 0 (inner split) */
+        {NULL, "param q\nchar (1 + q^2)*lambda - (1 - q^2)\n", "claim bounded when -1 <= q <= 1", "proved"},
+        {NULL, "param q\nchar (1 + q^2)*lambda - (1 - q^2)\n", "claim stable when -1 <= q <= 1", "refuted"},
     };
     (void) state;
     check_claims(t, sizeof t / sizeof t[0]);
