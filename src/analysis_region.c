@@ -1715,6 +1715,52 @@ static void bounds_copy(rs_bound_t *dst, const rs_bound_t *src, slong n)
     }
 }
 
+/* Rational values of variable i inside b (ends when closed) where p(1),
+ * p(-1) or p's leading coefficient vanishes, as polynomials in i alone:
+ * where roots reach lambda = +-1 or the step becomes singular.  Appended to
+ * c[*n ..] up to cap. */
+static void special_candidates(fmpq *c, slong *n, slong cap, const rs_variant_t *v, slong i, const rs_bound_t *b)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t e;
+    fmpz_poly_t u;
+    fmpz_poly_factor_t f;
+    fmpz_t pm;
+    fmpq_t r;
+    slong k, w;
+    fmpz_mpoly_init(e, s->zctx);
+    fmpz_poly_init(u);
+    fmpz_init(pm);
+    fmpq_init(r);
+    for (w = 0; w < 3; w++) {
+        if (w < 2) {
+            fmpz_set_si(pm, w == 0 ? 1 : -1);
+            fmpz_mpoly_evaluate_one_fmpz(e, v->cp->p, s->lambda_var, pm, s->zctx);
+        } else {
+            rs_charpoly_coeff(e, v->cp->p, v->cp->degree, s->lambda_var, s->zctx);
+        }
+        if (fmpz_mpoly_is_zero(e, s->zctx) || !fmpz_mpoly_get_fmpz_poly(u, e, i, s->zctx)) continue;
+        fmpz_poly_factor_init(f);
+        fmpz_poly_factor(f, u);
+        for (k = 0; k < f->num && *n < cap; k++) {
+            int cl, ch;
+            if (fmpz_poly_degree(f->p + k) != 1) continue;
+            fmpz_neg(fmpq_numref(r), f->p[k].coeffs);
+            fmpz_set(fmpq_denref(r), f->p[k].coeffs + 1);
+            fmpq_canonicalise(r);
+            cl = !b[i].has_lo ? 1 : fmpq_cmp(r, b[i].lo);
+            ch = !b[i].has_hi ? -1 : fmpq_cmp(r, b[i].hi);
+            if ((cl > 0 || (cl == 0 && b[i].lo_closed)) && (ch < 0 || (ch == 0 && b[i].hi_closed)))
+                fmpq_set(c + (*n)++, r);
+        }
+        fmpz_poly_factor_clear(f);
+    }
+    fmpz_mpoly_clear(e, s->zctx);
+    fmpz_poly_clear(u);
+    fmpz_clear(pm);
+    fmpq_clear(r);
+}
+
 static int param_is_set(const rs_run_t *run, slong k)
 {
     slong i;
@@ -2072,6 +2118,7 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
     ncand = calloc((size_t) nparams + 1, sizeof(slong));
     for (i = 0; i < nparams; i++) {
         ncand[i] = candidates(cand + i, b + i);
+        if (!b[i].fixed) special_candidates(cand[i], ncand + i, 40, v, i, b);
         if (ncand_total < CLAIM_MAX_POINTS) ncand_total *= ncand[i] > 0 ? ncand[i] : 1;
     }
     pt = _fmpq_vec_init(s->nvars);

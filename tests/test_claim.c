@@ -171,13 +171,22 @@ static void test_claim_certificates(void **state)
             polya = json_integer_value(json_object_get(json_array_get(cert, i), "polya_power"));
     assert_int_equal(polya, 1);
     json_decref(doc);
-    /* false (singular at 12/5, not among the sampled points) and not provable:
-     * undecided, saying where the certificate failed */
+    /* false at the singular point q = 12/5 (leading coefficient 12 - 5q):
+     * found among the special points (roots of p(1), p(-1), the leading
+     * coefficient) */
     doc = run_ok(AM2 "claim unstable when q > 0\n", &outcome);
+    o = result(doc, 0);
+    assert_string_equal(str(o, "status"), "refuted");
+    assert_string_equal(str(json_object_get(o, "counterexample"), "q"), "12/5");
+    json_decref(doc);
+    /* false only at the irrational singular point q = sqrt(2) (leading
+     * coefficient q^2 - 2): no rational counterexample, no certificate:
+     * undecided, saying where the certificate failed */
+    doc = run_ok("param q\nchar (q^2 - 2)*lambda + (q^2 + 3*q + 1)\nclaim unstable when 1 <= q <= 4\n", &outcome);
     o = result(doc, 0);
     assert_string_equal(str(o, "status"), "undecided");
     assert_non_null(str(o, "tried"));
-    assert_non_null(strstr(str(o, "failed_at"), "5*q - 12"));   /* p's leading coefficient, up to sign */
+    assert_non_null(strstr(str(o, "failed_at"), "q^2 - 2"));
     json_decref(doc);
 }
 
