@@ -2258,15 +2258,16 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     }
     tried = kind == CLAIM_UNSTABLE
             ? "a coefficient of the bilinear polynomial q(z) of sign opposite to its leading one on the whole "
-              "set (then a root has Re z > 0, |lambda| > 1) and p's leading coefficient non-zero"
+              "set (then a root has Re z > 0, |lambda| > 1) and p's leading coefficient non-zero; closed interval "
+              "ends and inner points with a root at lambda = +-1 split off and substituted"
             : kind == CLAIM_STABLE
             ? "Lienard-Chipart conditions of q(z) or -q(z), each proved positive by mapping every parameter "
               "interval onto [0, inf), dividing out monomials that vanish at open ends, and checking "
-              "coefficient signs (Polya multipliers (1 + sum s)^N); closed interval ends split off and "
-              "substituted"
+              "coefficient signs (Polya multipliers (1 + sum s)^N); closed interval ends and inner points "
+              "with a root at lambda = +-1 split off and substituted"
             : "stability as for `claim stable`; then q = G H with G = gcd(q(z), q(-z)): H Hurwitz-stable and "
-              "G's roots simple on the imaginary axis (degree <= 2 in z^2); closed interval ends split off "
-              "and substituted";
+              "G's roots simple on the imaginary axis (degree <= 2 in z^2); closed interval ends and inner "
+              "points with a root at lambda = +-1 split off and substituted";
     if (r == RS_OK) {
         if (inconsistent) {
             run->outcome |= RS_OUTCOME_INCONSISTENT;
