@@ -1572,18 +1572,33 @@ static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bo
  * every root on the imaginary axis), H Hurwitz-stable, and G = z^k g(z^2)
  * with k <= 1 and g of degree <= 2 in u = z^2 having simple negative roots
  * (so G's roots are simple and on the axis). */
-static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, claim_cx_t *cx)
+static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t s, const rs_bound_t *b,
+                         claim_cx_t *cx)
 {
-    const rs_scheme_struct *s = v->s;
     slong lv = s->lambda_var, i, len, k = 0, dg;
-    fmpz_mpoly_t q, qm, G, H, g, t;
+    fmpz_mpoly_t q, qm, G, H, g, t, R;
     ulong *e = flint_malloc(s->nvars * sizeof(ulong));
     int ok = 1;
+    fmpz_t m1;
     fmpz_mpoly_init(q, s->zctx); fmpz_mpoly_init(qm, s->zctx);
     fmpz_mpoly_init(G, s->zctx); fmpz_mpoly_init(H, s->zctx);
     fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(t, s->zctx);
-    rs_bilinear_fmpz_mpoly(q, v->cp->p, lv, s->zctx);
-    if (fmpz_mpoly_degree_si(q, lv, s->zctx) != v->cp->degree) ok = 0;   /* lambda = -1 always a root */
+    fmpz_mpoly_init(R, s->zctx);
+    fmpz_init_set_si(m1, -1);
+    /* lambda = -1 a root for every value (q(z) loses degree): simple in p, so
+     * p = (lambda + 1) R with R(-1) != 0 on the set */
+    fmpz_mpoly_set(R, p, s->zctx);
+    fmpz_mpoly_evaluate_one_fmpz(t, R, lv, m1, s->zctx);
+    if (fmpz_mpoly_is_zero(t, s->zctx)) {
+        fmpz_mpoly_gen(t, lv, s->zctx);
+        fmpz_mpoly_add_si(t, t, 1, s->zctx);
+        fmpz_mpoly_divides(R, R, t, s->zctx);
+        fmpz_mpoly_evaluate_one_fmpz(t, R, lv, m1, s->zctx);
+        ok = !fmpz_mpoly_is_zero(t, s->zctx) && prove_nonzero(t, b, s, cx);
+        if (!ok) claim_fail(cx, "lambda = -1 is a repeated root for every value", NULL, s);
+    }
+    rs_bilinear_fmpz_mpoly(q, R, lv, s->zctx);
+    if (ok && fmpz_mpoly_degree_si(q, lv, s->zctx) != fmpz_mpoly_degree_si(R, lv, s->zctx)) ok = 0;
     /* q(-z) */
     len = fmpz_mpoly_length(q, s->zctx);
     for (i = 0; ok && i < len; i++) {
@@ -1657,12 +1672,85 @@ static int prove_bounded(rs_run_t *run, const rs_variant_t *v, const rs_bound_t 
         fmpz_mpoly_clear(a2, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
         fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(d, s->zctx);
     } else if (ok && dg > 2) {
-        ok = 0;
+        /* g has only simple negative roots iff P(z) = g(z^2) + z g'(z^2) is
+         * Hurwitz-stable (Hermite-Biehler: the roots of g and g' are real,
+         * negative, simple and interlace, as Rolle gives for g') */
+        fmpz_mpoly_t P, gd;
+        slong n = fmpz_mpoly_length(g, s->zctx);
+        fmpz_mpoly_init(P, s->zctx);
+        fmpz_mpoly_init(gd, s->zctx);
+        fmpz_mpoly_derivative(gd, g, lv, s->zctx);
+        for (i = 0; i < n; i++) {                           /* g(z^2) */
+            fmpz_mpoly_get_term_exp_ui(e, g, i, s->zctx);
+            e[lv] *= 2;
+            fmpz_mpoly_push_term_fmpz_ui(P, g->coeffs + i, e, s->zctx);
+        }
+        n = fmpz_mpoly_length(gd, s->zctx);
+        for (i = 0; i < n; i++) {                           /* z g'(z^2) */
+            fmpz_mpoly_get_term_exp_ui(e, gd, i, s->zctx);
+            e[lv] = 2 * e[lv] + 1;
+            fmpz_mpoly_push_term_fmpz_ui(P, gd->coeffs + i, e, s->zctx);
+        }
+        fmpz_mpoly_sort_terms(P, s->zctx);
+        fmpz_mpoly_combine_like_terms(P, s->zctx);
+        cert_note(cx, "G = z^k g(z^2): g has simple negative roots because g(z^2) + z g'(z^2) is "
+                      "Hurwitz-stable (Hermite-Biehler)");
+        ok = prove_hurwitz_stable(run, P, b, s, cx);
+        fmpz_mpoly_clear(P, s->zctx);
+        fmpz_mpoly_clear(gd, s->zctx);
     }
     fmpz_mpoly_clear(q, s->zctx); fmpz_mpoly_clear(qm, s->zctx);
     fmpz_mpoly_clear(G, s->zctx); fmpz_mpoly_clear(H, s->zctx);
     fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(t, s->zctx);
+    fmpz_mpoly_clear(R, s->zctx);
+    fmpz_clear(m1);
     flint_free(e);
+    return ok;
+}
+
+/* Bounded for a system whose det p has repeated factors: when every repeated
+ * factor f^e has dim ker A = e over Q(params)[lambda]/(f)
+ * (rs_semisimple_generic), prove the squarefree part bounded (circle roots
+ * simple at every point of the set, so the roots of distinct factors stay
+ * apart and each circle root of f has multiplicity e in det) and the
+ * lambda-free factors non-zero.  At a point the rank of A modulo f can only
+ * drop, so dim ker >= e, and dim ker <= multiplicity = e: semisimple. */
+static int prove_bounded_system(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_factor_t fac;
+    fmpz_mpoly_t sqf, cont;
+    slong k;
+    int ok = 0, all = 0, repeated = 0;
+    if (s->from_char) return 0;
+    fmpz_mpoly_factor_init(fac, s->zctx);
+    fmpz_mpoly_init(sqf, s->zctx);
+    fmpz_mpoly_init(cont, s->zctx);
+    fmpz_mpoly_one(sqf, s->zctx);
+    fmpz_mpoly_one(cont, s->zctx);
+    if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
+        for (k = 0; k < fac->num; k++) {
+            if (fmpz_mpoly_degree_si(fac->poly + k, s->lambda_var, s->zctx) > 0) {
+                fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
+                repeated |= fmpz_cmp_ui(fac->exp + k, 1) > 0;
+            } else {
+                fmpz_mpoly_mul(cont, cont, fac->poly + k, s->zctx);
+            }
+        }
+        if (repeated && rs_semisimple_generic(&all, s, v->cp->p) != RS_OK) {
+            rs_error_init(run->err);
+            all = 0;
+        }
+        if (repeated && !all) claim_fail(cx, "a repeated factor of det A is not semisimple over Q(params)", NULL, s);
+        if (repeated && all) {
+            cert_note(cx, "every repeated factor f^e of det A has dim ker A = e over Q(params)[lambda]/(f) "
+                          "(semisimple): bounded where the squarefree part is, with simple circle roots");
+            ok = prove_bounded(run, sqf, s, b, cx) && prove_nonzero(cont, b, s, cx);
+        }
+    }
+    fmpz_mpoly_factor_clear(fac, s->zctx);
+    fmpz_mpoly_clear(sqf, s->zctx);
+    fmpz_mpoly_clear(cont, s->zctx);
     return ok;
 }
 
@@ -1812,7 +1900,11 @@ static int claim_prove_direct(rs_run_t *run, claim_kind_t kind, const rs_variant
             claim_fail(cx, "q(z) has lower degree than p for every value (a root at lambda = -1)", NULL, s);
         if (!ok && kind == CLAIM_BOUNDED) {
             cert_truncate(cx, n0);
-            ok = prove_bounded(run, v, b, cx);
+            ok = prove_bounded(run, v->cp->p, s, b, cx);
+            if (!ok) {
+                cert_truncate(cx, n0);
+                ok = prove_bounded_system(run, v, b, cx);
+            }
         }
     } else {
         /* unstable: q has a coefficient of sign opposite to its leading one

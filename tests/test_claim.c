@@ -65,6 +65,7 @@ static json_t *run_ok(const char *text, int *outcome)
 }
 
 #define BDF2 "param q\nunknown y\neq 3*y[n+2] - 4*y[n+1] + y[n] = 2*q*y[n+2]\n"
+#define CIRCLE3 "param q\nchar (lambda^2 + 1)*(lambda^2 + q*lambda + 1)*(lambda^2 - lambda + 1)\n"
 #define AM2 "param q\nunknown y\neq 12*(y[n+2] - y[n+1]) = q*(5*y[n+2] + 8*y[n+1] - y[n])\n"
 
 struct claim_case { const char *file, *text, *claim, *status; };
@@ -126,6 +127,17 @@ static void test_claim_sets(void **state)
         /* root (1 - q^2)/(1 + q^2): |.| < 1 except lambda = 1 at q = 0 (inner split) */
         {NULL, "param q\nchar (1 + q^2)*lambda - (1 - q^2)\n", "claim bounded when -1 <= q <= 1", "proved"},
         {NULL, "param q\nchar (1 + q^2)*lambda - (1 - q^2)\n", "claim stable when -1 <= q <= 1", "refuted"},
+        /* (l^2 + 1)(l^2 + q l + 1)(l^2 - l + 1): six circle roots for |q| < 2, the
+         * middle pair e^{+-i theta}, 2 cos theta = -q, meets +-i at q = 0 and
+         * e^{+-i pi/3} at q = -1 (double roots of a scalar recurrence) */
+        {NULL, CIRCLE3, "claim bounded when 0 < q < 2", "proved"},
+        {NULL, CIRCLE3, "claim bounded when -2 < q < -1", "proved"},
+        {NULL, CIRCLE3, "claim bounded when -1/2 < q < 1/2", "refuted"},
+        /* leapfrog on 8 points: modes l^2 + 2i nu sin(2 pi j/8) l - 1, all on the
+         * circle and semisimple for 0 < nu < 1 (repeated factors j, 8 - j),
+         * Jordan blocks at nu = 1 (test_semisimple) */
+        {"cases/textbook/leapfrog-periodic8.case", NULL, "claim bounded when nu < 1", "proved"},
+        {"cases/textbook/leapfrog-periodic8.case", NULL, "claim bounded when nu <= 1", "refuted"},
     };
     (void) state;
     check_claims(t, sizeof t / sizeof t[0]);
