@@ -277,6 +277,14 @@ static void test_simulate_check(void **state)
     assert_true(json_is_true(json_object_get(json_object_get(o, "check"), "consistent")));
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
+    /* the identity system: every state stays where it is, growth exactly 1;
+     * marginal (semisimple double root 1) and consistent */
+    doc = run_ok("unknown x y\neq x[n+1] = x[n]\neq y[n+1] = y[n]\nanalyse simulate steps=1000\n", &outcome);
+    o = result(doc, 0);
+    assert_true(fabs(json_real_value(json_object_get(json_object_get(o, "check"), "log_growth"))) < 1e-12);
+    assert_string_equal(str(json_object_get(o, "verdict"), "status"), "marginal");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
     /* the rule itself: tau = (d ln(7/3) + ln 1e6)/(N/2) */
     assert_null(rs_simulate_disagreement(&tau, RS_STATUS_MARGINAL, 0, want, 2, 1000));
     assert_true(fabs(tau - (2 * log(7.0 / 3.0) + log(1e6)) / 500.0) < 1e-15);
