@@ -1347,7 +1347,8 @@ static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s
                 fmpq_mpoly_add(T, T, M, s->ctx);
             }
         fmpq_mpoly_set(M, P, s->ctx);
-        for (k = 1; k <= CLAIM_POLYA_MAX && !ok && fmpq_mpoly_length(M, s->ctx) < CLAIM_POLYA_TERMS; k++) {
+        for (k = 1; k <= CLAIM_POLYA_MAX && !ok && fmpq_mpoly_length(M, s->ctx) < CLAIM_POLYA_TERMS
+                    && rs_budget_check(NULL, "the claim's certificate") == RS_OK; k++) {
             fmpq_mpoly_mul(M, M, T, s->ctx);
             ok = coeffs_certify(M, strict, s);
             if (ok) *polya = k;
@@ -1992,6 +1993,7 @@ static int claim_prove(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, cl
     slong i, np = run->c->nparams;
     int ok, side;
     size_t n0 = json_array_size(cx->cert);
+    if (rs_budget_exceeded()) return 0;   /* rs_an_claim reports it */
     if (claim_variant(&v, run, b) != RS_OK) {
         rs_error_init(run->err);
         claim_fail(cx, "the characteristic polynomial could not be formed on this part", NULL, NULL);
@@ -2348,6 +2350,7 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_bounds_clear(b, nparams);
         flint_free(b);
     }
+    if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
     tried = kind == CLAIM_UNSTABLE
             ? "a coefficient of the bilinear polynomial q(z) of sign opposite to its leading one on the whole "
               "set (then a root has Re z > 0, |lambda| > 1) and p's leading coefficient non-zero; closed interval "
