@@ -127,6 +127,35 @@ static void test_leapfrog_region(void **state)
     json_decref(doc);
 }
 
+/* The claims of the leapfrog case: bounded for nu < 1 (proved: the repeated
+ * factors are semisimple over Q(nu)), not for nu <= 1 (nu = 1 is a Jordan
+ * block), by the derivation in the case file. */
+static void test_leapfrog_claims(void **state)
+{
+    int outcome;
+    json_t *doc = tu_run_case("cases/textbook/leapfrog-periodic8.case", NULL, -1, &outcome);
+    (void) state;
+    assert_string_equal(str(result(doc, 1), "status"), "proved");
+    assert_string_equal(str(result(doc, 2), "status"), "refuted");
+    assert_string_equal(str(json_object_get(result(doc, 2), "counterexample"), "nu"), "1");
+    assert_int_equal(outcome, RS_OUTCOME_FAILED);
+    json_decref(doc);
+}
+
+/* Two identical trapezoidal oscillators coupled by kc >= 0: bounded for every
+ * kc (the case file derives it); at kc = 0 the double circle roots are
+ * semisimple. */
+static void test_identical_oscillators(void **state)
+{
+    int outcome;
+    json_t *doc = tu_run_case("cases/textbook/identical-oscillators-trapezoidal.case", NULL, -1, &outcome);
+    (void) state;
+    assert_string_equal(str(json_array_get(json_object_get(result(doc, 0), "intervals"), 0), "status"),
+                        "marginal");
+    assert_string_equal(str(result(doc, 1), "status"), "proved");
+    json_decref(doc);
+}
+
 /* Time-domain oracle: the leapfrog recurrence stepped in double precision.
  * Returns max |u| over the last steps divided by max |u| of the start. */
 static double leapfrog_growth(double nu, int steps)
@@ -365,6 +394,8 @@ int main(void)
         cmocka_unit_test(test_identity_and_jordan),
         cmocka_unit_test(test_leapfrog_region),
         cmocka_unit_test(test_leapfrog_time_domain),
+        cmocka_unit_test(test_leapfrog_claims),
+        cmocka_unit_test(test_identical_oscillators),
         cmocka_unit_test(test_singular),
         cmocka_unit_test(test_dead_beat),
         cmocka_unit_test(test_rank_drop_region),
