@@ -408,6 +408,7 @@ static void r_claim(FILE *out, const json_t *o)
             fprintf(out, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
             first = 0;
         }
+        if (first) fputs("the scheme as given (no free parameter)", out);
         fputc('\n', out);
         if (jstr(at, "reason")) {
             fprintf(out, "  %-*s %s: %s\n", LABEL_W, "verdict", jstr(at, "status"), jstr(at, "reason"));
