@@ -245,8 +245,26 @@ int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err)
     else
         status = jury_count_gcd(j->count, g, err);
     j->count->inside += z;
-    if (status == RS_OK)
-        status = jury_count_schur_cohn(j->count, h, err);
+    if (status == RS_OK && j->table_regular && j->gcd_degree == 0) {
+        /* no circle root and a regular table: Rouche's count is exact and
+         * the Schur-Cohn matrix (d^4 B word operations) adds nothing; the
+         * independent count is Routh's on the bilinear transform */
+        j->count->inside = tin;
+        j->count->outside = j->count->degree - tin;
+    } else if (status == RS_OK) {
+        /* the circle part is counted from g; h = p0/g has none, and when
+         * its own table is regular Rouche counts it without the matrix */
+        rs_jury_t th;
+        slong hin = 0;
+        rs_jury_init(th);
+        if (fmpz_poly_degree(h) >= 1 && jury_table(th, h, &hin)) {
+            j->count->inside += hin;
+            j->count->outside += fmpz_poly_degree(h) - hin;
+        } else {
+            status = jury_count_schur_cohn(j->count, h, err);
+        }
+        rs_jury_clear(th);
+    }
     if (status == RS_OK && j->table_regular && tin != j->count->inside)
         status = rs_error_set(err, RS_ERR_INCONSISTENT,
             "Schur-Cohn table gives %ld roots inside, the Schur-Cohn matrix "

@@ -148,6 +148,42 @@ static void test_singular(void **state)
     fmpz_poly_clear(t);
 }
 
+/* Extreme coefficients (issue 11: 440 s before): 10^1000 l^200 - 1 has all
+ * 200 roots of modulus 10^-5; (l^2 + 1)(10^1000 l^198 - 1) adds the circle
+ * pair +-i (by hand).  Both are counted by regular Jury tables (of p, and of
+ * h = p / gcd(p, p*)) without the Schur-Cohn matrix. */
+static void test_extreme_coefficients(void **state)
+{
+    fmpz_poly_t p, f;
+    fmpz_t big;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p); fmpz_poly_init(f);
+    fmpz_init(big);
+    fmpz_set_ui(big, 10);
+    fmpz_pow_ui(big, big, 1000);
+    rs_jury_init(j);
+    rs_error_init(err);
+    fmpz_poly_set_coeff_fmpz(p, 200, big);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 200);
+    assert_int_equal(j->count->on, 0);
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_fmpz(p, 198, big);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    fmpz_poly_set_str(f, "3  1 0 1");
+    fmpz_poly_mul(p, p, f);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 198);
+    assert_int_equal(j->count->on, 2);
+    assert_int_equal(j->count->outside, 0);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p); fmpz_poly_clear(f);
+    fmpz_clear(big);
+}
+
 static void test_zero_input(void **state)
 {
     fmpz_poly_t p;
@@ -169,6 +205,7 @@ int main(void)
         cmocka_unit_test(test_sign_convention),
         cmocka_unit_test(test_table),
         cmocka_unit_test(test_singular),
+        cmocka_unit_test(test_extreme_coefficients),
         cmocka_unit_test(test_zero_input),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
