@@ -437,15 +437,27 @@ static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong prec
  * coefficients fit in double and GSL converges); certified when all d
  * output balls are isolated (then each holds exactly one root); otherwise
  * arb_fmpz_poly_complex_roots (certified, always isolates) at target prec. */
-static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f, slong prec)
+static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
 {
-    slong d = fmpz_poly_degree(f), i, n;
+    slong d = fmpz_poly_degree(f0), i, n, k = 0, sc;
     acb_poly_t P;
     acb_ptr init = NULL;
     double *a, *z;
+    fmpz_poly_t f;
 
     if (d == 1)
-        return _rs_factor_roots_companion(E, f, prec);
+        return _rs_factor_roots_companion(E, f0, prec);
+    /* roots far from magnitude 1 (w = 10^600: |lambda| ~ 10^-600): iterate
+     * on f(2^sc mu), 2^sc the geometric mean of the root magnitudes, and
+     * scale the roots back exactly (rs_radius_complex_roots does the same) */
+    while (fmpz_is_zero(f0->coeffs + k)) k++;
+    sc = k < d ? ((slong) fmpz_bits(f0->coeffs + k) - (slong) fmpz_bits(f0->coeffs + d)) / (d - k) : 0;
+    if (sc > -32 && sc < 32) sc = 0;
+    fmpz_poly_init(f);
+    fmpz_poly_fit_length(f, d + 1);
+    for (i = 0; i <= d; i++)
+        fmpz_mul_2exp(f->coeffs + i, f0->coeffs + i, (ulong) (sc > 0 ? sc * i : -sc * (d - i)));
+    _fmpz_poly_set_length(f, d + 1);
     a = flint_malloc((d + 1) * sizeof(double));
     z = flint_malloc(2 * d * sizeof(double));
     if (_rs_radius_to_double(a, f, NULL) == RS_OK &&
@@ -458,18 +470,36 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f, slong prec)
     acb_poly_set_fmpz_poly(P, f, prec);
     /* from good seeds Durand-Kerner converges quadratically: a few dozen
      * iterations suffice; bad seeds (e.g. Wilkinson-like clusters of real
-     * roots, where GSL has no correct digit) or ill-conditioned roots (less
-     * than prec - 40 accurate bits) go to complex_roots, which reaches the
-     * target accuracy by raising its own working precision */
+     * roots, where GSL has no correct digit) get Arb's own start and more
+     * iterations at the same precision.  Balls that are isolated are
+     * certified whatever their width: the caller raises the precision (up
+     * to its ceiling, never beyond: arb_fmpz_poly_complex_roots would raise
+     * its own without bound on clusters like those at 10^-600 apart) until
+     * the radius is narrow enough. */
     n = acb_poly_find_roots(E, P, init, 32, prec);
-    for (i = 0; i < d && n == d; i++)   /* isolated but not yet converged */
-        if (acb_rel_accuracy_bits(E + i) < prec - 40)
-            n = 0;
     if (n != d) {
-        rs_radius_complex_roots(E, f, prec);
-        n = d;
+        /* near a cluster the iteration converges linearly (about a bit per
+         * step) until the precision resolves it: allow steps in proportion */
+        n = acb_poly_find_roots(E, P, NULL, 8 * d + 100 + 2 * prec, prec);
     }
+    {
+        /* isolated but not converged: restart from the midpoints, where
+         * the iteration converges quadratically */
+        int round;
+        for (round = 0; round < 4 && n == d; round++) {
+            int low = 0;
+            for (i = 0; i < d; i++)
+                if (acb_rel_accuracy_bits(E + i) < prec - 40) low = 1;
+            if (!low) break;
+            if (init == NULL) init = _acb_vec_init(d);
+            for (i = 0; i < d; i++) acb_get_mid(init + i, E + i);
+            n = acb_poly_find_roots(E, P, init, 64, prec);
+        }
+    }
+    if (sc != 0)
+        for (i = 0; i < d; i++) acb_mul_2exp_si(E + i, E + i, sc);
     acb_poly_clear(P);
+    fmpz_poly_clear(f);
     if (init != NULL)
         _acb_vec_clear(init, d);
     flint_free(a);
