@@ -164,6 +164,21 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
     return r;
 }
 
+int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *pp, const rs_scheme_t s)
+{
+    slong k;
+    int ok = 1;
+    for (k = 0; k < ncps && ok; k++) ok = rs_condpoly_holds(cps + k, pp, s) == 1;
+    for (k = 0; k < s->nnonzero && ok; k++) {
+        fmpq_t z;
+        fmpq_init(z);
+        fmpq_mpoly_evaluate_all_fmpq(z, s->nonzero + k, pp, s->ctx);
+        ok = !fmpq_is_zero(z);
+        fmpq_clear(z);
+    }
+    return ok;
+}
+
 int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                         const slong *vars, const fmpq *vals, slong nv)
 {
@@ -310,15 +325,7 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
             /* a different stride per parameter: the points mix the candidates */
             fmpq_set(pt + k, cand + 10 * k + (j * (2 * k + 1) + j / ncand[k] + k) % ncand[k]);
         }
-        for (k = 0; k < ncp && ok; k++) ok = rs_condpoly_holds(cps + k, pp, s) == 1;
-        for (k = 0; k < s->nnonzero && ok; k++) {
-            fmpq_t z;
-            fmpq_init(z);
-            fmpq_mpoly_evaluate_all_fmpq(z, s->nonzero + k, pp, s->ctx);
-            ok = !fmpq_is_zero(z);
-            fmpq_clear(z);
-        }
-        if (!ok) continue;
+        if (!ok || !rs_run_point_admissible(cps, ncp, pp, s)) continue;
         fmpz_poly_init(u);
         p_at_point(u, v, pp);
         says = holds(data, pp, s);

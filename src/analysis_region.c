@@ -2232,15 +2232,7 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
             fmpq_set(pt + k, cand[k] + pick);
         }
         if (!ok) break;
-        for (k = 0; k < ncps && ok; k++) ok = rs_condpoly_holds(cps + k, pp, s) == 1;
-        for (k = 0; k < s->nnonzero && ok; k++) {
-            fmpq_t z;
-            fmpq_init(z);
-            fmpq_mpoly_evaluate_all_fmpq(z, s->nonzero + k, pp, s->ctx);
-            ok = !fmpq_is_zero(z);
-            fmpq_clear(z);
-        }
-        if (!ok) continue;
+        if (!rs_run_point_admissible(cps, ncps, pp, s)) continue;
         {
             rs_rootcount_t rc;
             rs_status_t stp;

@@ -248,6 +248,23 @@ done:
     return RS_OK;
 }
 
+void rs_charpoly_row_to_fmpz(fmpz_mpoly_struct *out, fmpz_t L, const fmpq_mpoly_struct *row, slong n,
+                             const fmpq_mpoly_ctx_t ctx)
+{
+    slong j;
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_one(L);
+    for (j = 0; j < n; j++)
+        fmpz_lcm(L, L, fmpq_denref(row[j].content));
+    for (j = 0; j < n; j++) {
+        fmpz_divexact(c, L, fmpq_denref(row[j].content));
+        fmpz_mul(c, c, fmpq_numref(row[j].content));
+        fmpz_mpoly_scalar_mul_fmpz(out + j, row[j].zpoly, c, ctx->zctx);
+    }
+    fmpz_clear(c);
+}
+
 int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
 {
     const fmpz_mpoly_ctx_struct *zctx = s->zctx;
@@ -262,22 +279,9 @@ int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
         fmpz_mpoly_struct *A = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
         for (i = 0; i < n * n; i++) fmpz_mpoly_init(A + i, zctx);
         for (i = 0; i < n; i++) {
-            /* scale row i to integers: multiply by the lcm of denominators */
             fmpz_t L;
-            slong j;
             fmpz_init(L);
-            fmpz_one(L);
-            for (j = 0; j < n; j++)
-                fmpz_lcm(L, L, fmpq_denref(s->M[i * n + j].content));
-            for (j = 0; j < n; j++) {
-                const fmpq_mpoly_struct *e = s->M + i * n + j;
-                fmpz_t c;
-                fmpz_init(c);
-                fmpz_divexact(c, L, fmpq_denref(e->content));
-                fmpz_mul(c, c, fmpq_numref(e->content));
-                fmpz_mpoly_scalar_mul_fmpz(A + i * n + j, e->zpoly, c, zctx);
-                fmpz_clear(c);
-            }
+            rs_charpoly_row_to_fmpz(A + i * n, L, s->M + i * n, n, s->ctx);
             fmpq_mul_fmpz(scale, scale, L);
             fmpz_clear(L);
         }

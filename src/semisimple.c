@@ -6,6 +6,7 @@
 #include <flint/fmpz_mpoly_factor.h>
 #include "recstab/semisimple.h"
 #include "recstab/rootcount.h"
+#include "recstab/charpoly.h"
 
 void rs_semisimple_init(rs_semisimple_t ss)
 {
@@ -233,23 +234,13 @@ static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t
     e = (ulong) fmpz_mpoly_degree_si(f, lv, ctx);
     fmpz_mpoly_get_coeff_vars_ui(lf, f, &lv, &e, 1, ctx);
     if (out != NULL) push_tpoly(out, nout, lf, tv, ctx);
+    for (i = 0; i < n * n; i++) fmpz_mpoly_init(a + i, ctx);
     for (i = 0; i < n; i++) {
-        /* row i over Z: scale by the lcm of its denominators (a unit) */
+        /* row i over Z (scaled by a unit), reduced modulo f */
         fmpz_t L;
         fmpz_init(L);
-        fmpz_one(L);
-        for (j = 0; j < n; j++) fmpz_lcm(L, L, fmpq_denref(s->M[i * n + j].content));
-        for (j = 0; j < n; j++) {
-            const fmpq_mpoly_struct *x = s->M + i * n + j;
-            fmpz_t c;
-            fmpz_init(c);
-            fmpz_divexact(c, L, fmpq_denref(x->content));
-            fmpz_mul(c, c, fmpq_numref(x->content));
-            fmpz_mpoly_init(a + i * n + j, ctx);
-            fmpz_mpoly_scalar_mul_fmpz(a + i * n + j, x->zpoly, c, ctx);
-            prem_lambda(a + i * n + j, f, lv, ctx);
-            fmpz_clear(c);
-        }
+        rs_charpoly_row_to_fmpz(a + i * n, L, s->M + i * n, n, s->ctx);
+        for (j = 0; j < n; j++) prem_lambda(a + i * n + j, f, lv, ctx);
         fmpz_clear(L);
     }
     for (col = 0; col < n && rank < n; col++) {

@@ -43,17 +43,7 @@ static const char *str(const json_t *o, const char *k)
  * *code the error code). */
 static json_t *run_text(const char *text, int *outcome, int *code)
 {
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    *code = rs_case_parse_string(c, "test.case", text, strlen(text), err);
-    if (*code == RS_OK) *code = rs_analysis_run(&doc, outcome, c, &opt, err);
-    rs_case_clear(c);
-    return doc;
+    return tu_run_text(text, NULL, outcome, code);
 }
 
 static json_t *run_ok(const char *text, int *outcome)

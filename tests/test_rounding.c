@@ -108,18 +108,10 @@ static void check_point(const char *s, const fmpq_t t, ulong m, const char *what
 
 static json_t *run_case(const char *text, slong max_prec, int *outcome)
 {
-    rs_case_t c;
-    rs_error_t err;
     rs_options_t opt;
-    json_t *doc = NULL;
-    rs_case_init(c);
-    rs_error_init(err);
     rs_options_default(&opt);
     if (max_prec > 0) opt.max_prec = max_prec;
-    if (rs_case_parse_string(c, "test.case", text, strlen(text), err) != RS_OK) fail_msg("parse: %s", err->msg);
-    if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", text, err->msg);
-    rs_case_clear(c);
-    return doc;
+    return tu_run_text(text, &opt, outcome, NULL);
 }
 
 static const char *jget(const json_t *o, const char *k)

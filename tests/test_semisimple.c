@@ -25,20 +25,9 @@ static const char *str(const json_t *o, const char *k)
     return json_string_value(json_object_get(o, k));
 }
 
-/* Runs case text; the outcome flags go to *outcome. */
 static json_t *run_text(const char *text, int *outcome)
 {
-    rs_case_t c;
-    rs_error_t err;
-    rs_options_t opt;
-    json_t *doc = NULL;
-    rs_case_init(c);
-    rs_error_init(err);
-    rs_options_default(&opt);
-    if (rs_case_parse_string(c, "test.case", text, strlen(text), err) != RS_OK) fail_msg("parse: %s", err->msg);
-    if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("run: %s", err->msg);
-    rs_case_clear(c);
-    return doc;
+    return tu_run_text(text, NULL, outcome, NULL);
 }
 
 static const char *status_of(const char *text)

@@ -9,6 +9,7 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz_mpoly.h>
 #include <stdio.h>
+#include <string.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
@@ -62,6 +63,26 @@ static inline json_t *tu_run_case(const char *rel, const char *const *req, int n
     }
     if (rs_analysis_run(&doc, outcome, c, &opt, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
     rs_case_clear(c);
+    return doc;
+}
+/* Runs case text with options opt (NULL: the defaults).  With code == NULL
+ * an error fails the test; otherwise *code is the status and the document
+ * is NULL on an error. */
+static inline json_t *tu_run_text(const char *text, const rs_options_t *opt, int *outcome, int *code)
+{
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t def;
+    json_t *doc = NULL;
+    int r;
+    rs_case_init(c);
+    rs_error_init(err);
+    rs_options_default(&def);
+    r = rs_case_parse_string(c, "test.case", text, strlen(text), err);
+    if (r == RS_OK) r = rs_analysis_run(&doc, outcome, c, opt != NULL ? opt : &def, err);
+    rs_case_clear(c);
+    if (code != NULL) *code = r;
+    else if (r != RS_OK) fail_msg("%s: %s", text, err->msg);
     return doc;
 }
 #endif

@@ -10,6 +10,7 @@
 #include "recstab/charpoly.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
+#include "recstab/cond.h"
 
 typedef struct {
     char *key;            /* "name=value;..." of the substituted values */
@@ -66,6 +67,10 @@ int rs_run_is_singular(int *singular, rs_run_t *run, slong top);
 int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const slong *vars,
                    const fmpq *vals, slong nv, const fmpz_poly_t p, const rs_rootcount_t rc,
                    int singular, json_t *o);
+
+/* 1 when the point pp (every variable of s) satisfies the compiled
+ * conditions cps and keeps every divisor of the equations non-zero. */
+int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *pp, const rs_scheme_t s);
 
 /* The exact verdict of variant v at vars[i] = vals[i] (i < nv), which set
  * every parameter still symbolic in v: p evaluated exactly (into u when

@@ -59,6 +59,10 @@ void rs_charpoly_coeff(fmpz_mpoly_t c, const fmpz_mpoly_t p, slong k,
 int rs_charpoly_get_fmpz_poly(fmpz_poly_t out, const fmpz_mpoly_t p,
                               slong lambda_var, const fmpz_mpoly_ctx_t ctx);
 
+/* A row of n rational polynomials as integer ones: out[j] = L * row[j], L
+ * the lcm of their denominators (out initialised in ctx->zctx). */
+void rs_charpoly_row_to_fmpz(fmpz_mpoly_struct *out, fmpz_t L, const fmpq_mpoly_struct *row, slong n,
+                             const fmpq_mpoly_ctx_t ctx);
 /* Scales an fmpq_mpoly to a primitive fmpz_mpoly: q = a / scale. */
 void rs_charpoly_fmpq_to_fmpz(fmpz_mpoly_t out, fmpq_t scale, const fmpq_mpoly_t q,
                               const fmpq_mpoly_ctx_t ctx);
