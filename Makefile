@@ -122,28 +122,52 @@ clean:
 	rm -rf build build-san
 
 # ---- robustness: fuzzing, valgrind, the long property run -----------------
-# make fuzz [FUZZ_SECONDS=60]: libFuzzer (clang, ASan+UBSan) over the case
-# parser, expression engine and a charpoly run, one job; seeds are every file
-# in cases/, tests/bad/ and tests/fuzz/regress/; the corpus grows in
-# build/fuzz-corpus/, crashes/leaks/timeouts land in build/fuzz-artifacts/.
-FUZZ_SECONDS ?= 60
-FUZZ_CC      ?= clang
-FUZZ_BIN     := build/fuzz_case
-FUZZ_LIBS    := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+# make fuzz [FUZZ_SECONDS=60]: libFuzzer (clang, ASan+UBSan), one job, each
+# harness in turn for FUZZ_SECONDS seconds (so the whole run takes about
+# 3 x FUZZ_SECONDS plus the build):
+#   fuzz_case      the case parser, expression engine and a charpoly run
+#   fuzz_analyses  whole case files; their analyse/expect/claim lines pick the
+#                  analyses; text report, Markdown, LaTeX and JSON rendered
+#   fuzz_options   a bundled case + one analysis + fuzzed options (see the file)
+# Seeds are every file in cases/, tests/bad/, tests/fuzz/regress/ and
+# tests/fuzz/seeds/HARNESS/; each corpus grows in build/fuzz-corpus/HARNESS/;
+# crashes/leaks/timeouts land in build/fuzz-artifacts/ (named HARNESS-crash-...).
+# Every harness runs even when one fails; the target fails if any did.
+# FUZZ_HARNESSES="fuzz_options" runs a subset.
+FUZZ_SECONDS   ?= 60
+FUZZ_CC        ?= clang
+FUZZ_HARNESSES ?= fuzz_case fuzz_analyses fuzz_options
+FUZZ_FLAGS     := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -I/usr/include/flint \
+                  -DRS_SOURCE_DIR='"$(CURDIR)"' -DRS_VERSION='"$(VERSION)"'
+FUZZ_LIBS      := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+FUZZ_OBJ       := $(patsubst src/%.c,build/fuzz-obj/%.o,$(LIB_SRC))
+FUZZ_BINS      := $(addprefix build/,$(FUZZ_HARNESSES))
 
-.PHONY: fuzz check-valgrind check-long
+.PHONY: fuzz fuzz-build check-valgrind check-long
 
-$(FUZZ_BIN): tests/fuzz/fuzz_case.c $(LIB_SRC) $(HDRS)
+# the library once, instrumented for the fuzzers; each harness links it
+build/fuzz-obj/%.o: src/%.c $(HDRS)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined -std=c11 -D_POSIX_C_SOURCE=200809L \
-	  -Iinclude -I/usr/include/flint tests/fuzz/fuzz_case.c $(LIB_SRC) -o $@ $(FUZZ_LIBS)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
 
-fuzz: deps $(FUZZ_BIN)
-	@mkdir -p build/fuzz-corpus build/fuzz-artifacts
-	@for f in $$(find cases tests/bad tests/fuzz/regress -type f 2>/dev/null); do \
-	  cp "$$f" "build/fuzz-corpus/seed-$$(echo "$$f" | tr / _)"; done
-	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 $(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) \
-	  -max_len=4096 -timeout=10 -print_final_stats=1 -artifact_prefix=build/fuzz-artifacts/ build/fuzz-corpus
+build/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(FUZZ_OBJ) $(HDRS)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -Wall -Wextra -Werror -fsanitize=fuzzer,address,undefined $< $(FUZZ_OBJ) -o $@ $(FUZZ_LIBS)
+
+fuzz-build: $(FUZZ_BINS)
+.SECONDARY: $(FUZZ_OBJ)
+
+fuzz: deps fuzz-build
+	@mkdir -p build/fuzz-artifacts
+	@fail=""; for h in $(FUZZ_HARNESSES); do \
+	  mkdir -p build/fuzz-corpus/$$h; \
+	  for f in $$(find cases tests/bad tests/fuzz/regress tests/fuzz/seeds/$$h -type f 2>/dev/null); do \
+	    cp "$$f" "build/fuzz-corpus/$$h/seed-$$(echo "$$f" | tr / _)"; done; \
+	  echo "== $$h: $(FUZZ_SECONDS) s"; \
+	  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 build/$$h -max_total_time=$(FUZZ_SECONDS) \
+	    -max_len=4096 -timeout=10 -rss_limit_mb=2048 -dict=tests/fuzz/case.dict -print_final_stats=1 \
+	    -artifact_prefix=build/fuzz-artifacts/$$h- build/fuzz-corpus/$$h || fail="$$fail $$h"; \
+	done; \
+	if [ -n "$$fail" ]; then echo "make fuzz: findings in$$fail (see build/fuzz-artifacts/)"; exit 1; fi
 
 # Every case under valgrind (definite leaks and memory errors fail, exit 99);
 # each case must still end with its "# expect-exit: N" status (default 0).

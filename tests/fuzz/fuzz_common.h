@@ -1,0 +1,165 @@
+/* fuzz_common.h -- shared pieces of the libFuzzer harnesses: the caps that
+ * keep one input from running for minutes, the run through the analyses and
+ * every renderer, and the invariants checked on every input.
+ *
+ * Caps (the resource budget of issue 11 is not the harnesses' job; these
+ * only keep known-big computations out so that the fuzzer looks for bugs):
+ *   - at most FUZZ_MAX_UNKNOWNS unknowns and FUZZ_MAX_REQUESTS analyses;
+ *   - no integer over FUZZ_MAX_DIGITS digits in the case text (this bounds
+ *     exponents such as lambda^1000 or 10^-1000, simulate steps=, prec=,
+ *     digits=, sweep steps; see fuzz_numbers_small);
+ *   - --max-prec FUZZ_MAX_PREC and at most FUZZ_MAX_POINTS sweep/map points.
+ *
+ * Invariants (abort() = a finding):
+ *   - success produces a document, an error carries a message;
+ *   - no RS_ERR_INTERNAL / RS_ERR_INCONSISTENT error and no
+ *     RS_OUTCOME_INCONSISTENT outcome: both mean two of recstab's own methods
+ *     disagreed, i.e. a bug (set FUZZ_ALLOW_INCONSISTENT=1 to only count them);
+ *   - the text report, Markdown and LaTeX renderings of the document run
+ *     (ASan/UBSan watch them; their output goes to /dev/null). */
+#ifndef RECSTAB_FUZZ_COMMON_H
+#define RECSTAB_FUZZ_COMMON_H
+
+#include <ctype.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <jansson.h>
+#include "recstab/analysis.h"
+#include "recstab/casefile.h"
+#include "recstab/derivation.h"
+#include "recstab/report.h"
+#include "recstab/sweep.h"
+
+#ifndef RS_SOURCE_DIR
+#define RS_SOURCE_DIR "."
+#endif
+/* Inputs are parsed as if they were a file in cases/, so that the seeds'
+ * relative `include include/...` lines resolve. */
+#define FUZZ_CASE_PATH RS_SOURCE_DIR "/cases/fuzz.case"
+
+#define FUZZ_MAX_RUN_BYTES 4096
+#define FUZZ_MAX_UNKNOWNS 4
+#define FUZZ_MAX_REQUESTS 8
+#define FUZZ_MAX_DIGITS 3
+#define FUZZ_MAX_FRAC_DIGITS 12
+#define FUZZ_MAX_PREC 1024
+#define FUZZ_MAX_POINTS 64
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+
+static FILE *fuzz_sink;
+
+static inline void fuzz_setup(void)
+{
+    rs_sweep_options_t sw;
+    rs_sweep_options_default(&sw);
+    sw.max_points = FUZZ_MAX_POINTS;
+    rs_sweep_set_options(&sw);
+    fuzz_sink = fopen("/dev/null", "w");
+    if (fuzz_sink == NULL)
+        abort();
+}
+
+/* data as a NUL-terminated string (malloc'd), or NULL */
+static inline char *fuzz_text(const uint8_t *data, size_t size)
+{
+    char *text = malloc(size + 1);
+    if (text == NULL)
+        return NULL;
+    if (size > 0)
+        memcpy(text, data, size);
+    text[size] = '\0';
+    return text;
+}
+
+/* 1 when, outside comments, no integer in s has more than FUZZ_MAX_DIGITS
+ * digits (FUZZ_MAX_FRAC_DIGITS after '.' or '/': 0.1234 and 1/1000 are cheap,
+ * lambda^1000 and steps=100000 are not) */
+static inline int fuzz_numbers_small(const char *s, size_t n)
+{
+    size_t i, run = 0, cap = FUZZ_MAX_DIGITS;
+    int comment = 0;
+    for (i = 0; i < n; i++) {
+        if (s[i] == '#')
+            comment = 1;
+        else if (s[i] == '\n')
+            comment = 0;
+        if (comment || !isdigit((unsigned char) s[i])) {
+            run = 0;
+            continue;
+        }
+        if (run == 0)
+            cap = (i > 0 && (s[i - 1] == '.' || s[i - 1] == '/')) ? FUZZ_MAX_FRAC_DIGITS : FUZZ_MAX_DIGITS;
+        if (++run > cap)
+            return 0;
+    }
+    return 1;
+}
+
+/* 1 when a parsed case is small enough to run its analyses (the builders'
+ * states are unknowns too) */
+static inline int fuzz_case_small(const rs_case_t c)
+{
+    return c->nunknowns <= FUZZ_MAX_UNKNOWNS && c->nrequests <= FUZZ_MAX_REQUESTS;
+}
+
+static inline void fuzz_options(rs_options_t *opt, slong max_prec)
+{
+    rs_options_default(opt);
+    opt->max_prec = max_prec;
+    opt->with_scheme = 1;          /* the derivations need the scheme */
+}
+
+static inline void fuzz_check_error(int r, const rs_error_t err)
+{
+    if (r == RS_OK)
+        return;
+    if (err->msg[0] == '\0')
+        abort();                   /* every error carries a message */
+    if (r == RS_ERR_INTERNAL)
+        abort();
+    if (r == RS_ERR_INCONSISTENT && getenv("FUZZ_ALLOW_INCONSISTENT") == NULL)
+        abort();
+}
+
+/* every renderer over one result document */
+static inline void fuzz_render(const json_t *doc)
+{
+    char *s;
+    rs_report_text(fuzz_sink, doc);
+    rs_derivation_markdown(fuzz_sink, doc);
+    rs_derivation_latex(fuzz_sink, doc, 1);
+    rs_derivation_latex_begin(fuzz_sink);
+    rs_derivation_latex(fuzz_sink, doc, 0);
+    rs_derivation_latex_end(fuzz_sink);
+    s = json_dumps(doc, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
+    if (s == NULL)
+        abort();                   /* the JSON output must serialise */
+    free(s);
+}
+
+/* Run c's analyses and render the result; checks the invariants. */
+static inline void fuzz_run(rs_case_t c, const rs_options_t *opt)
+{
+    rs_error_t err;
+    json_t *doc = NULL;
+    int outcome = 0, r;
+    rs_error_init(err);
+    r = rs_analysis_run(&doc, &outcome, c, opt, err);
+    if (r == RS_OK && doc == NULL)
+        abort();                   /* success must produce a document */
+    if (r != RS_OK && doc != NULL)
+        abort();                   /* an error leaves no document */
+    fuzz_check_error(r, err);
+    if (r == RS_OK) {
+        if ((outcome & RS_OUTCOME_INCONSISTENT) && getenv("FUZZ_ALLOW_INCONSISTENT") == NULL)
+            abort();
+        fuzz_render(doc);
+        json_decref(doc);
+    }
+}
+
+#endif

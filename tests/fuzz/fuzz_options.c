@@ -1,0 +1,137 @@
+/* fuzz_options.c -- structured libFuzzer harness: leading bytes pick one of
+ * the bundled cases, one analysis and the precision ceiling; the rest of the
+ * input is that analysis' options and extra case lines.  The cases are valid,
+ * so every input reaches the analysis' option parsing and its mathematics.
+ *
+ *   byte 0   case: FUZZ_CASES[b % n] (its own analyse/expect/claim lines dropped)
+ *   byte 1   analysis: FUZZ_ANALYSES[b % n]
+ *   byte 2   --max-prec: 64 << (b % 5), i.e. 64 ... 1024
+ *   rest     first line: appended to the analysis word ("h from 0 to 1 steps 4")
+ *            further lines: appended to the case before the analysis
+ *            ("set h = 1/3", "assume h < 2", a second "analyse ...")
+ *
+ * The text actually run is an ordinary case file; FUZZ_SHOW=1 prints it and
+ * its --max-prec on stderr, so a finding replays with the command
+ * (build/recstab --max-prec P FILE) and goes to tests/fuzz/regress/ as is.
+ * Caps: as fuzz_analyses (fuzz_common.h). */
+#include "fuzz_common.h"
+
+static const char *const FUZZ_CASES[] = {
+    "cases/textbook/trapezoidal.case",               /* one symbolic parameter */
+    "cases/textbook/bdf2.case",
+    "cases/textbook/newmark-average-acceleration.case",
+    "cases/textbook/central-difference.case",
+    "cases/park-staggered.case",                     /* several parameters, region ... at */
+    "cases/olivier2019-GS12-ee-ei.case",             /* builders, every value set */
+    "cases/li-explicit-k1.case",                     /* exact co-simulation (numeric only) */
+    "cases/recurrence-exact-oscillator.case",        /* exp/sin entries (numeric only) */
+    "cases/recurrence-forward-euler.case",           /* polynomial matrix recurrence */
+    "cases/hard/double-on-circle.case",              /* char, roots on the circle */
+    "cases/hard/plus-minus-one.case",
+    "cases/textbook/forward-euler.case",
+};
+#define FUZZ_NCASES ((int) (sizeof FUZZ_CASES / sizeof FUZZ_CASES[0]))
+
+static const char *const FUZZ_ANALYSES[] = {
+    "analyse region", "claim", "analyse limit", "analyse radius", "analyse modes",
+    "analyse simulate", "analyse sweep", "analyse map", "analyse routh", "analyse jury",
+    "analyse hurwitz", "analyse bilinear", "analyse stability", "analyse charpoly",
+    "expect charpoly", "expect bilinear",
+};
+#define FUZZ_NANALYSES ((int) (sizeof FUZZ_ANALYSES / sizeof FUZZ_ANALYSES[0]))
+
+static char *fuzz_case_text[FUZZ_NCASES];
+
+static int is_request_line(const char *line)
+{
+    while (*line == ' ' || *line == '\t')
+        line++;
+    return strncmp(line, "analyse", 7) == 0 || strncmp(line, "analyze", 7) == 0
+           || strncmp(line, "expect", 6) == 0 || strncmp(line, "claim", 5) == 0;
+}
+
+/* The case file's text without its request lines (malloc'd). */
+static char *load_case(const char *rel)
+{
+    char path[1024], line[4096];
+    size_t len = 0, cap = 1 << 16;
+    char *text = malloc(cap);
+    int dropping = 0;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
+    f = fopen(path, "r");
+    if (f == NULL || text == NULL) {
+        fprintf(stderr, "fuzz_options: cannot read %s\n", path);
+        abort();
+    }
+    text[0] = '\0';
+    while (fgets(line, sizeof line, f) != NULL) {
+        size_t n = strlen(line);
+        int continued = n >= 2 && line[n - 2] == '\\';
+        if (dropping || is_request_line(line)) {
+            dropping = continued;   /* with its continuation lines */
+            continue;
+        }
+        if (len + n + 1 > cap)
+            abort();
+        memcpy(text + len, line, n + 1);
+        len += n;
+    }
+    fclose(f);
+    return text;
+}
+
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    int i;
+    (void) argc;
+    (void) argv;
+    fuzz_setup();
+    for (i = 0; i < FUZZ_NCASES; i++)
+        fuzz_case_text[i] = load_case(FUZZ_CASES[i]);
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    const char *base, *what, *rest, *nl;
+    size_t restlen, optlen;
+    slong max_prec;
+    char *text;
+    size_t len;
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t opt;
+    int r;
+    if (size < 3 || size > FUZZ_MAX_RUN_BYTES)
+        return 0;
+    base = fuzz_case_text[data[0] % FUZZ_NCASES];
+    what = FUZZ_ANALYSES[data[1] % FUZZ_NANALYSES];
+    max_prec = 64L << (data[2] % 5);
+    rest = (const char *) data + 3;
+    restlen = size - 3;
+    if (memchr(rest, '\0', restlen) != NULL || !fuzz_numbers_small(rest, restlen))
+        return 0;
+    nl = memchr(rest, '\n', restlen);
+    optlen = nl ? (size_t) (nl - rest) : restlen;
+    /* base, the extra lines, then the analysis line */
+    len = strlen(base) + restlen + strlen(what) + 8;
+    text = malloc(len);
+    if (text == NULL)
+        return 0;
+    snprintf(text, len, "%s\n%.*s\n%s %.*s\n", base, nl ? (int) (restlen - optlen - 1) : 0,
+             nl ? nl + 1 : "", what, (int) optlen, rest);
+    if (getenv("FUZZ_SHOW") != NULL)
+        fprintf(stderr, "# --max-prec %ld\n%s", (long) max_prec, text);
+    rs_case_init(c);
+    rs_error_init(err);
+    r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, strlen(text), err);
+    fuzz_check_error(r, err);
+    if (r == RS_OK && fuzz_case_small(c)) {
+        fuzz_options(&opt, max_prec);
+        fuzz_run(c, &opt);
+    }
+    rs_case_clear(c);
+    free(text);
+    return 0;
+}
