@@ -5,17 +5,9 @@
  *
  * Inputs longer than 4 KB or with more than 6 unknowns are only parsed, so
  * that slow determinants do not hide parser bugs behind timeouts. */
-#include <stdint.h>
-#include <stdlib.h>
-#include <string.h>
-#include <jansson.h>
-#include "recstab/analysis.h"
-#include "recstab/casefile.h"
+#include "fuzz_common.h"
 
-#define FUZZ_MAX_RUN_BYTES 4096
 #define FUZZ_MAX_RUN_UNKNOWNS 6
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -30,7 +22,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     text[size] = '\0';
     rs_case_init(c);
     rs_error_init(err);
-    r = rs_case_parse_string(c, "fuzz.case", text, size, err);
+    r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, size, err);
     if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && c->nunknowns <= FUZZ_MAX_RUN_UNKNOWNS) {
         json_t *doc = NULL;
         int outcome = 0;

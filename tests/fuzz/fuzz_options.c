@@ -1,18 +1,22 @@
 /* fuzz_options.c -- structured libFuzzer harness: leading bytes pick one of
- * the bundled cases, one analysis and the precision ceiling; the rest of the
- * input is that analysis' options and extra case lines.  The cases are valid,
- * so every input reaches the analysis' option parsing and its mathematics.
+ * the bundled cases, one analysis and the command-line settings; the rest of
+ * the input is that analysis' options and extra case lines.  The cases are
+ * valid, so every input reaches the analysis' option parsing and its
+ * mathematics.
  *
  *   byte 0   case: FUZZ_CASES[b % n] (its own analyse/expect/claim lines dropped)
  *   byte 1   analysis: FUZZ_ANALYSES[b % n]
- *   byte 2   --max-prec: 64 << (b % 5), i.e. 64 ... 1024
- *   rest     first line: appended to the analysis word ("h from 0 to 1 steps 4")
- *            further lines: appended to the case before the analysis
- *            ("set h = 1/3", "assume h < 2", a second "analyse ...")
+ *   byte 2   bits 0-2: --max-prec 64 << (b % 5), i.e. 64 ... 1024;
+ *            bits 3-5: --sweep-level (fast, prec128, prec256, exact, double; mod 5);
+ *            bits 6-7: --shard 1/1, 1/2, 2/2, 2/3
+ *   rest     first line: appended to the analysis word ("h from 0 to 1 steps 4");
+ *            further lines: "--set NAME=VALUE" goes to rs_case_set_value (as the
+ *            command's --set), any other line is appended to the case before
+ *            the analysis ("set h = 1/3", "assume h < 2", a second "analyse ...")
  *
- * The text actually run is an ordinary case file; FUZZ_SHOW=1 prints it and
- * its --max-prec on stderr, so a finding replays with the command
- * (build/recstab --max-prec P FILE) and goes to tests/fuzz/regress/ as is.
+ * The text actually run is an ordinary case file; FUZZ_SHOW=1 prints it with
+ * its options on stderr, so a finding replays with the command
+ * (build/recstab --max-prec P ... FILE) and goes to tests/fuzz/regress/.
  * Caps: as fuzz_analyses (fuzz_common.h). */
 #include "fuzz_common.h"
 
@@ -92,40 +96,83 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     return 0;
 }
 
+/* --set lines of rest (each "--set NAME=VALUE") into sets, the other lines
+ * after the first into lines; both NUL-separated in buffers of restlen+1 */
+static void split_lines(char *lines, char *sets, const char *rest, size_t restlen)
+{
+    const char *p = memchr(rest, '\n', restlen), *end = rest + restlen;
+    size_t nl = 0, ns = 0;
+    while (p != NULL && p < end) {
+        const char *q = p + 1, *e = memchr(q, '\n', (size_t) (end - q));
+        size_t n;
+        if (e == NULL)
+            e = end;
+        n = (size_t) (e - q);
+        if (n > 6 && strncmp(q, "--set ", 6) == 0) {
+            memcpy(sets + ns, q + 6, n - 6);
+            ns += n - 6;
+            sets[ns++] = '\0';
+        } else {
+            memcpy(lines + nl, q, n);
+            nl += n;
+            lines[nl++] = '\n';
+        }
+        p = (e < end) ? e : NULL;
+    }
+    lines[nl] = '\0';
+    sets[ns] = '\0';
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    const char *base, *what, *rest, *nl;
-    size_t restlen, optlen;
+    static const slong shards[4][2] = {{1, 1}, {1, 2}, {2, 2}, {2, 3}};
+    const char *base, *what, *rest, *nl, *set;
+    size_t restlen, optlen, len;
     slong max_prec;
-    char *text;
-    size_t len;
+    char *text, *lines, *sets;
     rs_case_t c;
     rs_error_t err;
     rs_options_t opt;
+    rs_sweep_options_t sw;
     int r;
     if (size < 3 || size > FUZZ_MAX_RUN_BYTES)
         return 0;
     base = fuzz_case_text[data[0] % FUZZ_NCASES];
     what = FUZZ_ANALYSES[data[1] % FUZZ_NANALYSES];
-    max_prec = 64L << (data[2] % 5);
+    max_prec = 64L << ((data[2] & 7) % 5);
+    rs_sweep_options_default(&sw);
+    sw.max_points = FUZZ_MAX_POINTS;
+    sw.first_level = ((data[2] >> 3) & 7) % 5;
+    sw.shard_index = shards[data[2] >> 6][0];
+    sw.shard_count = shards[data[2] >> 6][1];
+    rs_sweep_set_options(&sw);
     rest = (const char *) data + 3;
     restlen = size - 3;
     if (memchr(rest, '\0', restlen) != NULL || !fuzz_numbers_small(rest, restlen))
         return 0;
     nl = memchr(rest, '\n', restlen);
     optlen = nl ? (size_t) (nl - rest) : restlen;
-    /* base, the extra lines, then the analysis line */
+    lines = malloc(restlen + 1);
+    sets = malloc(restlen + 1);
     len = strlen(base) + restlen + strlen(what) + 8;
     text = malloc(len);
-    if (text == NULL)
-        return 0;
-    snprintf(text, len, "%s\n%.*s\n%s %.*s\n", base, nl ? (int) (restlen - optlen - 1) : 0,
-             nl ? nl + 1 : "", what, (int) optlen, rest);
-    if (getenv("FUZZ_SHOW") != NULL)
-        fprintf(stderr, "# --max-prec %ld\n%s", (long) max_prec, text);
+    if (text == NULL || lines == NULL || sets == NULL)
+        abort();
+    split_lines(lines, sets, rest, restlen);
+    /* base, the extra lines, then the analysis line */
+    snprintf(text, len, "%s\n%s%s %.*s\n", base, lines, what, (int) optlen, rest);
+    if (getenv("FUZZ_SHOW") != NULL) {
+        fprintf(stderr, "# --max-prec %ld --sweep-level %s --shard %ld/%ld", (long) max_prec,
+                rs_sweep_level_names[sw.first_level], (long) sw.shard_index, (long) sw.shard_count);
+        for (set = sets; *set != '\0'; set += strlen(set) + 1)
+            fprintf(stderr, " --set '%s'", set);
+        fprintf(stderr, "\n%s", text);
+    }
     rs_case_init(c);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, strlen(text), err);
+    for (set = sets; r == RS_OK && *set != '\0'; set += strlen(set) + 1)
+        r = rs_case_set_value(c, set, err);
     fuzz_check_error(r, err);
     if (r == RS_OK && fuzz_case_small(c)) {
         fuzz_options(&opt, max_prec);
@@ -133,5 +180,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     rs_case_clear(c);
     free(text);
+    free(lines);
+    free(sets);
     return 0;
 }
