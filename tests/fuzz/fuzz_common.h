@@ -16,7 +16,9 @@
  *     RS_OUTCOME_INCONSISTENT outcome: both mean two of recstab's own methods
  *     disagreed, i.e. a bug (set FUZZ_ALLOW_INCONSISTENT=1 to only count them);
  *   - the text report, Markdown and LaTeX renderings of the document run
- *     (ASan/UBSan watch them; their output goes to /dev/null). */
+ *     (ASan/UBSan watch them) and the LaTeX holds none of the primitives that
+ *     touch files or redefine TeX (\input, \write, \def, ...): user text
+ *     must come out escaped (fuzz_check_latex). */
 #ifndef RECSTAB_FUZZ_COMMON_H
 #define RECSTAB_FUZZ_COMMON_H
 
@@ -125,16 +127,37 @@ static inline void fuzz_check_error(int r, const rs_error_t err)
         abort();
 }
 
+/* LaTeX primitives that read or write files, run commands or redefine the
+ * language: case text (titles, names, equations) must never produce them */
+static inline void fuzz_check_latex(const char *tex)
+{
+    static const char *const bad[] = {"\\input", "\\include", "\\write", "\\openout", "\\openin",
+                                      "\\read", "\\immediate", "\\catcode", "\\def", "\\csname",
+                                      "\\newcommand", "\\renewcommand", "\\special", NULL};
+    int i;
+    for (i = 0; bad[i] != NULL; i++)
+        if (strstr(tex, bad[i]) != NULL)
+            abort();
+}
+
 /* every renderer over one result document */
 static inline void fuzz_render(const json_t *doc)
 {
-    char *s;
+    char *s = NULL;
+    size_t n = 0;
+    FILE *mem;
     rs_report_text(fuzz_sink, doc);
     rs_derivation_markdown(fuzz_sink, doc);
-    rs_derivation_latex(fuzz_sink, doc, 1);
-    rs_derivation_latex_begin(fuzz_sink);
-    rs_derivation_latex(fuzz_sink, doc, 0);
-    rs_derivation_latex_end(fuzz_sink);
+    mem = open_memstream(&s, &n);
+    if (mem == NULL)
+        abort();
+    rs_derivation_latex(mem, doc, 1);
+    rs_derivation_latex_begin(mem);
+    rs_derivation_latex(mem, doc, 0);
+    rs_derivation_latex_end(mem);
+    fclose(mem);
+    fuzz_check_latex(s);
+    free(s);
     s = json_dumps(doc, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
     if (s == NULL)
         abort();                   /* the JSON output must serialise */
