@@ -33,6 +33,10 @@ static const char *const FUZZ_CASES[] = {
     "cases/hard/double-on-circle.case",              /* char, roots on the circle */
     "cases/hard/plus-minus-one.case",
     "cases/textbook/forward-euler.case",
+    "cases/hard/algebraic-system-jordan.case",       /* no assumptions, algebraic ends */
+    "cases/hard/free-sign-linear.case",              /* leading coefficient of either sign */
+    "cases/hard/algebraic-singular.case",
+    "cases/hard/root-at-minus-one.case",
 };
 #define FUZZ_NCASES ((int) (sizeof FUZZ_CASES / sizeof FUZZ_CASES[0]))
 
