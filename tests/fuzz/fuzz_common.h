@@ -4,7 +4,8 @@
  *
  * Caps (the resource budget of issue 11 is not the harnesses' job; these
  * only keep known-big computations out so that the fuzzer looks for bugs):
- *   - at most FUZZ_MAX_UNKNOWNS unknowns and FUZZ_MAX_REQUESTS analyses;
+ *   - at most FUZZ_MAX_UNKNOWNS unknowns (FUZZ_MAX_UNKNOWNS_SET when every
+ *     parameter is set) and FUZZ_MAX_REQUESTS analyses;
  *   - no integer over FUZZ_MAX_DIGITS digits in the case text (this bounds
  *     exponents such as lambda^1000 or 10^-1000, simulate steps=, prec=,
  *     digits=, sweep steps; see fuzz_numbers_small);
@@ -43,7 +44,8 @@
 
 #define FUZZ_MAX_RUN_BYTES 4096
 #define FUZZ_MAX_UNKNOWNS 4
-#define FUZZ_MAX_REQUESTS 8
+#define FUZZ_MAX_UNKNOWNS_SET 8
+#define FUZZ_MAX_REQUESTS 12
 #define FUZZ_MAX_DIGITS 3
 #define FUZZ_MAX_FRAC_DIGITS 12
 #define FUZZ_MAX_PREC 1024
@@ -101,11 +103,31 @@ static inline int fuzz_numbers_small(const char *s, size_t n)
     return 1;
 }
 
+/* 1 when every parameter of c has a `set` value (the determinant is then
+ * univariate in lambda, or in the one parameter a region/sweep frees) */
+static inline int fuzz_all_params_set(const rs_case_t c)
+{
+    slong i, j;
+    for (i = 0; i < c->nparams; i++) {
+        for (j = 0; j < c->nsets; j++)
+            if (strcmp(c->sets[j].name, c->params[i].name) == 0)
+                break;
+        if (j == c->nsets)
+            return 0;
+    }
+    return 1;
+}
+
 /* 1 when a parsed case is small enough to run its analyses (the builders'
- * states are unknowns too) */
+ * states are unknowns too): symbolic determinants of more than a few
+ * unknowns are the budget's business, numeric ones (the Olivier cases:
+ * 8 unknowns, every value set) take milliseconds */
 static inline int fuzz_case_small(const rs_case_t c)
 {
-    return c->nunknowns <= FUZZ_MAX_UNKNOWNS && c->nrequests <= FUZZ_MAX_REQUESTS;
+    if (c->nrequests > FUZZ_MAX_REQUESTS)
+        return 0;
+    return c->nunknowns <= FUZZ_MAX_UNKNOWNS
+           || (c->nunknowns <= FUZZ_MAX_UNKNOWNS_SET && fuzz_all_params_set(c));
 }
 
 static inline void fuzz_options(rs_options_t *opt, slong max_prec)
