@@ -9,7 +9,10 @@
  *   - no integer over FUZZ_MAX_DIGITS digits in the case text (this bounds
  *     exponents such as lambda^1000 or 10^-1000, simulate steps=, prec=,
  *     digits=, sweep steps; see fuzz_numbers_small);
- *   - --max-prec FUZZ_MAX_PREC and at most FUZZ_MAX_POINTS sweep/map points.
+ *   - --max-prec FUZZ_MAX_PREC and at most FUZZ_MAX_POINTS sweep/map points;
+ *   - the run's budget (budget.h): FUZZ_TIME_LIMIT seconds, FUZZ_MEMORY_LIMIT
+ *     MB; hitting it is an ordinary RS_ERR_LIMIT, a libFuzzer timeout (10 s)
+ *     or RSS overflow (2 GB) means a loop without a budget check.
  *
  * Invariants (abort() = a finding):
  *   - success produces a document, an error carries a message;
@@ -50,6 +53,8 @@
 #define FUZZ_MAX_FRAC_DIGITS 12
 #define FUZZ_MAX_PREC 1024
 #define FUZZ_MAX_POINTS 64
+#define FUZZ_TIME_LIMIT 5.0         /* s, budget.h; libFuzzer's -timeout is 10 */
+#define FUZZ_MEMORY_LIMIT 1024      /* MB, budget.h; -rss_limit_mb is 2048 */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerInitialize(int *argc, char ***argv);
@@ -134,6 +139,8 @@ static inline void fuzz_options(rs_options_t *opt, slong max_prec)
 {
     rs_options_default(opt);
     opt->max_prec = max_prec;
+    opt->time_limit = FUZZ_TIME_LIMIT;
+    opt->memory_limit = FUZZ_MEMORY_LIMIT;
     opt->with_scheme = 1;          /* the derivations need the scheme */
 }
 
