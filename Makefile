@@ -6,11 +6,12 @@ PREFIX  ?= /usr/local
 BUILD   ?= build
 CSTD    := -std=c11 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Werror -Wno-format-truncation
+WARN    += -Wmissing-prototypes -Wstrict-prototypes -Wshadow
 # gcc's stringop-overread misfires on FLINT's inline mpoly helpers
 WARN    += $(if $(findstring clang,$(CC)),,-Wno-stringop-overread)
 OPT     ?= -O2 -g
 SAN     ?=
-CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fopenmp -Iinclude -I/usr/include/flint $(CFLAGS)
+CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fopenmp -Iinclude -Isrc -I/usr/include/flint $(CFLAGS)
 LIBS    := -fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
 VERSION := 0.1.0
 
@@ -20,19 +21,27 @@ DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
 # MPI build (make mpi): installed by `make mpi` only, not by `make deps`
 MPI_PKGS := libopenmpi-dev openmpi-bin
 
-LIB_SRC  := $(sort $(wildcard src/*.c))
+# One folder per stage (docs/architecture.md); the library is every stage but
+# cli.  File names are unique across folders (one archive, flat test binaries).
+STAGES   := util lang lower algebra stability numeric analysis render
+LIB_SRC  := $(sort $(foreach s,$(STAGES),$(wildcard src/$(s)/*.c)))
 CLI_SRC  := $(sort $(wildcard src/cli/*.c))
-TEST_SRC := $(sort $(wildcard tests/test_*.c))
-HDRS     := $(wildcard include/recstab/*.h)
+TEST_SRC := $(sort $(wildcard tests/unit/*/test_*.c))
+# the installed headers, an explicit list; private headers live in src/<stage>/
+PUBLIC_HDRS := $(addprefix include/recstab/,recstab.h error.h budget.h expr.h casefile.h \
+               scheme.h charpoly.h cond.h semisimple.h bilinear.h routh.h hurwitz.h jury.h \
+               rootcount.h radius.h cosim.h sweep.h analysis.h report.h derivation.h)
+HDRS     := $(wildcard include/recstab/*.h src/*/*.h)
 
 LIB_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
 CLI_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(CLI_SRC))
-TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+TEST_BIN := $(addprefix $(BUILD)/tests/,$(basename $(notdir $(TEST_SRC))))
+vpath test_%.c $(sort $(dir $(TEST_SRC)))
 
 LIBRS  := $(BUILD)/librecstab.a
 BIN    := $(BUILD)/recstab
 
-.PHONY: all deps check test demo install clean check-sanitize bench figures mpi
+.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers
 
 all: $(LIBRS) $(BIN)
 
@@ -61,7 +70,7 @@ $(LIBRS): $(LIB_OBJ)
 $(BIN): $(CLI_OBJ) $(LIBRS)
 	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) $(LIBS)
 
-$(BUILD)/tests/%: tests/%.c tests/testutil.h tests/closed_forms.h $(LIBRS) $(HDRS)
+$(BUILD)/tests/%: %.c tests/testutil.h tests/closed_forms.h $(LIBRS) $(HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -Itests -DRS_SOURCE_DIR='"$(CURDIR)"' -o $@ $< $(LIBRS) -lcmocka $(LIBS)
 
@@ -91,7 +100,7 @@ install: all
 	  $(DESTDIR)$(PREFIX)/include/recstab $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/recstab
 	install -m 644 $(LIBRS) $(DESTDIR)$(PREFIX)/lib/librecstab.a
-	install -m 644 include/recstab/*.h $(DESTDIR)$(PREFIX)/include/recstab/
+	install -m 644 $(PUBLIC_HDRS) $(DESTDIR)$(PREFIX)/include/recstab/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' recstab.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/recstab.pc
 
@@ -137,7 +146,7 @@ clean:
 FUZZ_SECONDS   ?= 60
 FUZZ_CC        ?= clang
 FUZZ_HARNESSES ?= fuzz_case fuzz_analyses fuzz_options
-FUZZ_FLAGS     := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -I/usr/include/flint \
+FUZZ_FLAGS     := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I/usr/include/flint \
                   -DRS_SOURCE_DIR='"$(CURDIR)"' -DRS_VERSION='"$(VERSION)"'
 FUZZ_LIBS      := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
 FUZZ_OBJ       := $(patsubst src/%.c,build/fuzz-obj/%.o,$(LIB_SRC))
@@ -188,3 +197,6 @@ check-long: $(BUILD)/tests/test_property
 figures: deps
 	@$(MAKE) --no-print-directory all
 	sh docs/make-figures.sh
+
+print-public-headers:   # for tests/cli/suite_headers.sh
+	@echo $(PUBLIC_HDRS)

@@ -1,6 +1,6 @@
 #!/bin/sh
-# Runs every cmocka suite in $BUILD/tests and every shell suite tests/*.sh,
-# then prints one summary line "N passed, N failed".
+# Runs every cmocka suite in $BUILD/tests and every shell suite tests/cli/suite_*.sh,
+# and the dependency rule tests/check_deps.sh, then prints one summary line "N passed, N failed".
 BUILD=${BUILD:-build}
 export BUILD
 pass=0; fail=0; failed_suites=""
@@ -22,7 +22,7 @@ for t in "$BUILD"/tests/test_*; do
         echo "$name: $p passed"
     fi
 done
-for s in tests/suite_*.sh; do
+for s in tests/cli/suite_*.sh tests/check_deps.sh; do
     [ -f "$s" ] || continue
     name=$(basename "$s" .sh)
     sh "$s" >"$log" 2>&1

@@ -32,7 +32,7 @@
  *     affine in u*, so one linearised Newton step from the predictor (eq. 13
  *     with the m x m Jacobian matrix J = dg/du* = I_m - C G_0) solves them
  *     exactly; corrector with the corrected u_{N+1} = C z_{N+1}.
- *     (Derivation in src/cosim.c.)
+ *     (Derivation in src/numeric/cosim.c.)
  * With E = e^{A H} (block diagonal) and the gains G_j = sum_k l_{j,k} Phi_k
  * (n x m), Phi_k = int_0^H e^{A (H - s)} B (s/H)^k ds (k = 0..K), l_{j,k}
  * the coefficients of the Lagrange basis polynomial of node j in
@@ -250,7 +250,7 @@ int rs_cosim_monolithic(arb_mat_t Emono, const rs_cosim_t cs, slong prec,
 int rs_cosim_monolithic_radius(rs_radius_t r, const rs_cosim_t cs,
                                slong digits, slong max_prec, rs_error_t err);
 
-/* A case with two subsystems integrated `exact` (src/analysis_cosim.c):
+/* A case with two subsystems integrated `exact` (src/analysis/analysis_cosim.c):
  * A_i from each subsystem's equations in its own states; coupling
  * variables u = (the partner states the equations use, in state order,
  * C row = e_state: displacement coupling / base-point excitation; then

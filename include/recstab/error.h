@@ -7,6 +7,7 @@
 #define RECSTAB_ERROR_H
 
 #include <stdarg.h>
+#include <stddef.h>
 
 #ifdef __cplusplus
 extern "C" {

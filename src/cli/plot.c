@@ -338,30 +338,30 @@ int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard
     f = fdopen(fd, "w");
     if (n == 0) fputs("# recstab: no sweep or map in this run\n", f);
     for (i = 0; i < n; i++) {
-        json_t *o = tabs[i].el;
-        const char *bt = jstr(o, "boundary_table");
+        json_t *tab = tabs[i].el;
+        const char *bt = jstr(tab, "boundary_table");
         t++;
         fprintf(f, "# recstab table %zu: case=", t);
         put_comment_text(f, tabs[i].case_path);
         fputs("; title=", f);
         put_comment_text(f, tabs[i].title);
         fputs("; analysis=", f);
-        put_comment_text(f, jstr(o, "text"));
-        fprintf(f, "; points=%lld\n", (long long) json_integer_value(json_object_get(o, "points")));
+        put_comment_text(f, jstr(tab, "text"));
+        fprintf(f, "; points=%lld\n", (long long) json_integer_value(json_object_get(tab, "points")));
         if (shard_count > 1) {
-            json_t *rows = json_object_get(o, "rows");
+            json_t *rows = json_object_get(tab, "rows");
             fprintf(f, "# shard %ld/%ld: rows %lld-%lld of table %zu\n", shard_index, shard_count,
                     (long long) json_integer_value(json_array_get(rows, 0)),
                     (long long) json_integer_value(json_array_get(rows, 1)) - 1, t);
         }
-        fputs(jstr(o, "table"), f);
+        fputs(jstr(tab, "table"), f);
         {
             char *shown = rs_utf8_escape(path);   /* json_string refuses invalid UTF-8 */
-            json_object_set_new(o, "csv", json_string(shown));
+            json_object_set_new(tab, "csv", json_string(shown));
             flint_free(shown);
         }
         if (bt != NULL) {
-            json_t *conds = json_object_get(json_object_get(o, "boundary"), "conditions");
+            json_t *conds = json_object_get(json_object_get(tab, "boundary"), "conditions");
             size_t k;
             t++;
             fprintf(f, "# recstab table %zu: boundary of table %zu; case=", t, t - 1);
@@ -590,13 +590,13 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
     /* modes sweeps: one panel per quantity and reference frequency (as the
      * frequency-error / damping-ratio panels of Olivier et al.'s Fig. 12.4) */
     for (i = 0; i < n; i++) {
-        const json_t *o = tabs[i].el;
+        const json_t *tab = tabs[i].el;
         int m;
-        if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
+        if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), "modes") != 0) continue;
         for (m = 1; m <= 8; m++) {
             char cname[32];
             snprintf(cname, sizeof cname, "damping_ratio_%d", m);
-            if (col_index(o, cname) > 0 && m > nmodes) nmodes = m;
+            if (col_index(tab, cname) > 0 && m > nmodes) nmodes = m;
         }
     }
     npanels = nmaps + (size_t) (has_kind[0] + has_kind[1]) + (size_t) (has_kind[2] ? 2 * (nmodes > 0 ? nmodes : 1) : 0);
@@ -615,10 +615,10 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
     if (npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
     /* maps: one panel each */
     for (i = 0; i < n; i++) {
-        json_t *o = tabs[i].el, *params = json_object_get(o, "params"), *grid = json_object_get(o, "grid");
-        int radius = strcmp(jstr(o, "of"), "radius") == 0;
+        json_t *tab = tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
+        int radius = strcmp(jstr(tab, "of"), "radius") == 0;
         int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
-        if (strcmp(jstr(o, "analysis"), "map") != 0) continue;
+        if (strcmp(jstr(tab, "analysis"), "map") != 0) continue;
         fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\n", g);
         fputs("set title ", g);
         put_q(g, legend(tabs + i));
@@ -636,12 +636,12 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
                   "1.5 '#d73027', 2.5 '#d73027')\n", g);
         fputs("plot ", g);
         put_table(g, dir, 't', i);
-        fprintf(g, " skip 1 using %d:%d:(", col_index(o, json_string_value(json_array_get(params, 0))),
-                col_index(o, json_string_value(json_array_get(params, 1))));
-        if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(o, "radius"), col_index(o, "radius"));
-        else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(o, "code"), col_index(o, "code"));
+        fprintf(g, " skip 1 using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
+                col_index(tab, json_string_value(json_array_get(params, 1))));
+        if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(tab, "radius"), col_index(tab, "radius"));
+        else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(tab, "code"), col_index(tab, "code"));
         fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
-        if (jstr(o, "boundary_table"))
+        if (jstr(tab, "boundary_table"))
         {
             fputs(", ", g);
             put_table(g, dir, 'b', i);
@@ -661,30 +661,30 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
         if (k == 2) fputs("set ylabel 'damping ratio, frequency error'\nset title 'principal mode'\n", g);
         fputs("plot ", g);
         for (i = 0; i < n; i++) {
-            json_t *o = tabs[i].el;
-            const char *prm = jstr(o, "param");
-            int x = col_index(o, prm);
-            if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kinds[k]) != 0) continue;
+            json_t *tab = tabs[i].el;
+            const char *prm = jstr(tab, "param");
+            int x = col_index(tab, prm);
+            if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), kinds[k]) != 0) continue;
             if (!first) fputs(", ", g);
             first = 0;
             if (k == 0) {
                 put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(o, "radius"));
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "radius"));
                 put_q(g, legend(tabs + i));
             } else if (k == 1) {
                 put_table(g, dir, 't', i);
                 fprintf(g, " skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
-                        col_index(o, "code"), col_index(o, "code"));
+                        col_index(tab, "code"), col_index(tab, "code"));
                 put_q(g, legend(tabs + i));
             } else {
                 char t2[600];
                 put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(o, "damping_ratio_1"));
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "damping_ratio_1"));
                 snprintf(t2, sizeof t2, "%s: damping ratio", legend(tabs + i));
                 put_q(g, t2);
                 fputs(", ", g);
                 put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(o, "frequency_error_1"));
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(tab, "frequency_error_1"));
                 snprintf(t2, sizeof t2, "%s: frequency error", legend(tabs + i));
                 put_q(g, t2);
             }
@@ -709,14 +709,14 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
                 fputs("\nplot ", g);
                 snprintf(cname, sizeof cname, "%s_%d", qcol[qn], m);
                 for (i = 0; i < n; i++) {
-                    json_t *o = tabs[i].el;
-                    if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), "modes") != 0) continue;
-                    if (col_index(o, cname) <= 0) continue;
+                    json_t *tab = tabs[i].el;
+                    if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), "modes") != 0) continue;
+                    if (col_index(tab, cname) <= 0) continue;
                     if (!first) fputs(", ", g);
                     first = 0;
                     put_table(g, dir, 't', i);
                     fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ",
-                            col_index(o, jstr(o, "param")), col_index(o, cname));
+                            col_index(tab, jstr(tab, "param")), col_index(tab, cname));
                     put_q(g, legend(tabs + i));
                 }
                 if (first) fputs("0 notitle", g);

@@ -4,11 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "recstab/analysis.h"
-#include "recstab/analysis_impl.h"
-#include "recstab/polyfmt.h"
+#include "analysis/impl.h"
+#include "util/polyfmt.h"
 #include "recstab/bilinear.h"
 #include "recstab/cond.h"
-#include "recstab/builder.h"
+#include "lower/builder.h"
 #include "recstab/radius.h"
 
 const char *const rs_analysis_names[] = {
@@ -341,8 +341,6 @@ static int placeholders_ok(const rs_scheme_struct *s, const fmpz_mpoly_t content
     flint_free(zp);
     return ok;
 }
-
-int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
 
 int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **out)
 {

@@ -3,8 +3,8 @@
  * entries re-evaluated at doubled precision until it certifies. */
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/analysis_impl.h"
-#include "recstab/recurrence.h"
+#include "analysis/impl.h"
+#include "lower/recurrence.h"
 #include "recstab/radius.h"
 
 static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)

@@ -1,11 +1,11 @@
 /* builder.c -- subsystems, integrators and couplings expanded into
- * difference equations (see include/recstab/builder.h). */
+ * difference equations (see builder.h). */
 #include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/builder.h"
+#include "lower/builder.h"
 
 static void skip_ws(const char *t, size_t *i)
 {
@@ -262,7 +262,7 @@ int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_
         if (i == p0) return at(err, src, p0, "expected the force's name, found '%s'", t + p0);
         name = rs_strndup(t + p0, i - p0);
         {
-            /* several coupling forces (vector coupling, src/analysis_cosim.c): the first in
+            /* several coupling forces (vector coupling, src/analysis/analysis_cosim.c): the first in
              * force_name/force_expr/force_loc, the others in more_forces */
             slong k;
             int dup = c->force_name != NULL && strcmp(c->force_name, name) == 0;
@@ -438,8 +438,6 @@ int rs_builder_is_exact(const rs_case_t c)
         if (c->subs[i].method && strcmp(c->subs[i].method, "exact") == 0) return 1;
     return 0;
 }
-
-int rs_case_parse_append(rs_case_t c, const char *label, const char *text, rs_error_t err);
 
 int rs_builder_expand(rs_case_t c, rs_error_t err)
 {

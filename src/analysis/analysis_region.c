@@ -10,20 +10,13 @@
 #include <flint/fmpz_poly_factor.h>
 #include "recstab/radius.h"
 #include "recstab/budget.h"
-#include "recstab/analysis_impl.h"
+#include "analysis/impl.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
 #include "recstab/rootcount.h"
 #include "recstab/semisimple.h"
 #include "recstab/cond.h"
-#include "recstab/polyfmt.h"
-
-int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
-char *rs_run_free_params(const rs_variant_t *v);
-void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
-int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
-int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
-int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
+#include "util/polyfmt.h"
 
 /* ---- parsing helpers -------------------------------------------------------- */
 

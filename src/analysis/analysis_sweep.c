@@ -27,7 +27,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
 #include "recstab/budget.h"
-#include "recstab/analysis_impl.h"
+#include "analysis/impl.h"
 #include "recstab/sweep.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
@@ -35,10 +35,7 @@
 #include "recstab/routh.h"
 #include "recstab/jury.h"
 #include "recstab/hurwitz.h"
-#include "recstab/polyfmt.h"
-
-int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
-char *rs_run_free_params(const rs_variant_t *v);
+#include "util/polyfmt.h"
 
 #define SW_MAX_REFS 4
 #define SW_MAX_TOKENS 32

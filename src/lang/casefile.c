@@ -8,8 +8,8 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "recstab/casefile.h"
-#include "recstab/builder.h"
-#include "recstab/recurrence.h"
+#include "lower/builder.h"
+#include "lower/recurrence.h"
 
 char *rs_strdup(const char *s)
 {

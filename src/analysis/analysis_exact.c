@@ -2,13 +2,13 @@
  * jury, stability (this file), region, limit and claim (analysis_region.c). */
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/analysis_impl.h"
+#include "analysis/impl.h"
 #include "recstab/bilinear.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
 #include "recstab/hurwitz.h"
 #include "recstab/rootcount.h"
-#include "recstab/polyfmt.h"
+#include "util/polyfmt.h"
 #include "recstab/semisimple.h"
 #include "recstab/cond.h"
 
@@ -614,7 +614,7 @@ int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mp
  * makes the lex-leading term of p positive: that fixes no sign of a symbolic
  * coefficient (and lc q = (-1)^n p(-1) is another coefficient anyway), so
  * only the assumptions may drop a branch. */
-int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
+static int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
 {
     const rs_scheme_struct *s = v->s;
     int *sign = rs_run_signs(run, s);
@@ -669,7 +669,7 @@ static const char *hurwitz_never_reason(const rs_hurwitz_or_t hb, char *buf, siz
 /* "conditions" (one branch) or "branches" (an OR of two), "never" when
  * no branch can hold; returns 1 if every condition of a branch holds under
  * the assumptions, -1 if no branch can hold, 0 otherwise. */
-int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
+static int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
 {
     char buf[300];
     const char *why = hurwitz_never_reason(hb, buf, sizeof buf);
@@ -1077,10 +1077,6 @@ static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
     fmpz_poly_clear(p);
     return r;
 }
-
-int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest);
-int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest);
-int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest);
 
 const rs_analysis_entry_t rs_analysis_extra[] = {
     {"bilinear", an_bilinear},

@@ -5,8 +5,8 @@
  * (radius, and the verdict the radius certifies). */
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/analysis_impl.h"
-#include "recstab/builder.h"
+#include "analysis/impl.h"
+#include "lower/builder.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 

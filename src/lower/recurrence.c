@@ -2,7 +2,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/recurrence.h"
+#include "lower/recurrence.h"
 
 static int at(rs_error_t err, const rs_src_t *src, size_t i, const char *fmt, const char *a)
 {
@@ -104,8 +104,6 @@ static int has_call(const rs_expr_t *e)
     if (e->kind == RS_EXPR_NAME && strcmp(e->name, "pi") == 0) return 1;
     return has_call(e->a) || has_call(e->b);
 }
-
-int rs_case_parse_append(rs_case_t c, const char *label, const char *text, rs_error_t err);
 
 int rs_recurrence_expand(rs_case_t c, rs_error_t err)
 {

@@ -25,7 +25,7 @@
 #include <math.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
-#include "recstab/analysis_impl.h"
+#include "analysis/impl.h"
 #include "recstab/rootcount.h"
 #include <flint/fmpq_poly.h>
 

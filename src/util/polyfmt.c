@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "recstab/polyfmt.h"
+#include "util/polyfmt.h"
 
 char *rs_polyfmt_spaced(const char *s)
 {

@@ -9,16 +9,10 @@
 #include <acb.h>
 #include <arb_mat.h>
 #include "recstab/budget.h"
-#include "recstab/analysis_impl.h"
+#include "analysis/impl.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
-#include "recstab/polyfmt.h"
-
-int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
-int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
-                        const char *what);
-int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
-void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
+#include "util/polyfmt.h"
 
 #define RS_SIMULATE_MAX_STEPS 10000000
 
@@ -497,15 +491,15 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     for (i = 0; i < n; i++)
         for (u = 0; u < n; u++) {
             slong sft, len = Mu[u] - mu[u];
-            arb_ptr v = _arb_vec_init(len > 0 ? len : 1);
+            arb_ptr cv = _arb_vec_init(len > 0 ? len : 1);
             for (sft = mu[u]; sft < Mu[u]; sft++) {
                 if (scalar) {
                     fmpz_set(fmpq_numref(c), p->coeffs + sft);
                     fmpz_one(fmpq_denref(c));
                 } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
-                arb_set_fmpq(v + (sft - mu[u]), c, prec);
+                arb_set_fmpq(cv + (sft - mu[u]), c, prec);
             }
-            cf[i * n + u] = v;
+            cf[i * n + u] = cv;
         }
     {
         /* multiply-adds per step (L^-1 and the history terms) at about

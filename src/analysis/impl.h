@@ -1,5 +1,5 @@
-/* analysis_impl.h -- internals shared by the analysis implementation files
- * (src/analysis*.c).  Not installed for library users' code to rely on. */
+/* analysis/impl.h -- internals shared by the analysis implementation files
+ * (the .c files of src/analysis/).  Private: not installed. */
 #ifndef RECSTAB_ANALYSIS_IMPL_H
 #define RECSTAB_ANALYSIS_IMPL_H
 
@@ -11,6 +11,7 @@
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
 #include "recstab/cond.h"
+#include "recstab/hurwitz.h"
 
 typedef struct {
     char *key;            /* "name=value;..." of the substituted values */
@@ -139,15 +140,15 @@ int rs_req_eval_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_
 typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
 typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
 /* analyses implemented in other files, NULL-terminated tables:
- * src/analysis_exact.c (bilinear, routh, hurwitz, jury, stability, region,
- * limit, claim) and src/analysis_numeric.c (radius, modes, simulate). */
+ * src/analysis/analysis_exact.c (bilinear, routh, hurwitz, jury, stability, region,
+ * limit, claim) and src/analysis/analysis_numeric.c (radius, modes, simulate). */
 extern const rs_analysis_entry_t rs_analysis_extra[];
 extern const rs_analysis_entry_t rs_analysis_numeric[];
-extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis_sweep.c: sweep, map */
-extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis_cosim.c: exact integration */
-extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis_recurrence.c: numeric recurrences */
+extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis/analysis_sweep.c: sweep, map */
+extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis/analysis_cosim.c: exact integration */
+extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis/analysis_recurrence.c: numeric recurrences */
 
-/* Modes (src/analysis_numeric.c, shared with sweeps of modes).  principal:
+/* Modes (src/analysis/analysis_numeric.c, shared with sweeps of modes).  principal:
  * for each reference frequency refs[k] (time step h) the root with Im >= 0
  * closest to exp(i refs[k] h) and its conjugate get k + 1, every other root 0
  * (spurious); rr->nroots entries.  continuous: for a nonzero root,
@@ -158,14 +159,14 @@ void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb
 void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const acb_t root, const arb_t h,
                          slong prec);
 
-/* Simulate's cross-check (src/analysis_numeric.c): NULL when a measured
+/* Simulate's cross-check (src/analysis/analysis_numeric.c): NULL when a measured
  * log growth per step over `steps` steps is compatible with the exact verdict
  * (status st, `outside` roots outside the circle, p of degree `degree`), else
  * why not; *tau is the threshold on |log growth| (see the source for why). */
 const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside, double log_growth, slong degree,
                                      slong steps);
 
-/* Grid value i of K+1 points from A to B (src/analysis_sweep.c); log
+/* Grid value i of K+1 points from A to B (src/analysis/analysis_sweep.c); log
  * spacing: the simplest rational within 1e-13 relative of A*(B/A)^(i/K)
  * (endpoints exact). */
 void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, int logsp);
@@ -175,9 +176,30 @@ void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, i
 int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
 
 /* Symbolic conditions checked against the exact point verdict
- * (src/analysis_exact.c): holds(data, point, s) is 1 (stable), 0 (not) or
+ * (src/analysis/analysis_exact.c): holds(data, point, s) is 1 (stable), 0 (not) or
  * -1 (a condition vanishes: skipped) at point[v] for every variable. */
 typedef int (*rs_holds_fn)(const void *data, fmpq *const *point, const rs_scheme_struct *s);
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o);
+
+/* Shared steps of the analyses (analysis_exact.c), once here instead of
+ * copied into each caller.  rs_run_default_variant: the variant at the case's
+ * set values; rs_run_free_params: its free parameters as "a, b" (malloc'd);
+ * rs_run_numeric_poly: p at the request's point (what names it in errors);
+ * rs_run_exact_count: the exact root count of p, added to o;
+ * rs_run_hurwitz: the Hurwitz/Lienard-Chipart conditions of qz;
+ * rs_run_symbolic_conditions: the symbolic stability conditions into o. */
+int rs_run_default_variant(rs_run_t *run, rs_variant_t **v);
+char *rs_run_free_params(const rs_variant_t *v);
+int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
+                        const char *what);
+int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
+void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
+int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
+int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
+
+/* region, limit and claim (analysis_region.c), listed in analysis_exact.c's table */
+int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest);
+int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest);
+int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest);
 
 #endif

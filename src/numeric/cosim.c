@@ -42,7 +42,7 @@
  *     exactly "u_{N+1} = J^{-1} C (E z_N + sum_{j>=1} G_j u_{N+1-j})",
  *     the solution of the linear coupling conditions (I - C G_0) u_{N+1} =
  *     C (E z_N + ...), then z_{N+1} = E z_N + G_0 u_{N+1} + ....
- * The time-domain oracle in tests/test_cosim.c runs steps 1-3 literally
+ * The time-domain oracle in tests/unit/numeric/test_cosim.c runs steps 1-3 literally
  * (predictor, finite-difference Jacobian matrix column by column, Newton
  * step solving J delta = -g^p, corrector) for FF, FD and DD and agrees; it
  * also checks its finite-difference J against rs_cosim_recurrence's jacm.
@@ -243,7 +243,7 @@ int rs_cosim_li_ff(rs_cosim_t cs, const fmpq_t c1, const fmpq_t d1,
  * (B_DD row 2); for mass 2 likewise with 1/am21 (A_FD = A_DD row 4,
  * B_FD = B_DD row 4: +acc1/am21 c1 x1~ + adc1/am21 d1 v1~).  Every printed
  * sign agrees; A + B C reproduces eq. (5) exactly for FF, FD and DD
- * (tests/test_cosim.c), and eq. (5) is mechanically stable (its eigenvalues
+ * (tests/unit/numeric/test_cosim.c), and eq. (5) is mechanically stable (its eigenvalues
  * have negative real parts at positive parameters; tested with GSL).
  * Slips found (shape only): D_FD row 2 has 4 entries (should be
  * (1 0 0 0 0)); A_DD rows 1 and 3 are printed 5 wide (the 4 x 4 rows are
