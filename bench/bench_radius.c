@@ -2,7 +2,8 @@
  *
  * Build and run (from the repository root; links the sources directly):
  *   gcc -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -O2 -Iinclude \
- *       -I/usr/include/flint src/util/error.c src/numeric/radius.c bench/bench_radius.c \
+ *       -I/usr/include/flint src/util/error.c src/util/budget.c src/numeric/radius.c \
+ *       bench/bench_radius.c \
  *       -o /tmp/bench_radius -lflint-arb -lflint -lgsl -lgslcblas -lmpfr \
  *       -lgmp -lm && /tmp/bench_radius
  *
