@@ -27,7 +27,7 @@ rank() {
 # the stage of each public header (where its functions are defined)
 public_stage() {
     case $1 in
-    error|budget) echo util ;;
+    error|budget|str) echo util ;;
     expr|casefile) echo lang ;;
     scheme) echo lower ;;
     charpoly|cond|semisimple) echo algebra ;;

@@ -11,6 +11,7 @@
 #include <flint/fmpq.h>
 #include "recstab/error.h"
 #include "recstab/expr.h"
+#include "recstab/str.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -173,18 +174,6 @@ void rs_case_add_request(rs_case_t c, const char *text, const char *file,
 int rs_cond_parse(rs_cond_t *cond, const rs_src_t *src, size_t *pos,
                   rs_error_t err);
 void rs_cond_clear(rs_cond_t *cond);
-
-/* Copies of strings (flint_malloc'd; free with flint_free). */
-char *rs_strdup(const char *s);
-char *rs_strndup(const char *s, size_t n);
-
-/* Length (1 to 4) of the valid UTF-8 sequence at s (n bytes readable), 0
- * when the bytes there are none (overlong forms and surrogates included,
- * as jansson judges them). */
-int rs_utf8_seq_len(const char *s, size_t n);
-/* Copy of s (flint_malloc'd) with every byte that is not part of valid
- * UTF-8 written as \xNN: file names in text and JSON output. */
-char *rs_utf8_escape(const char *s);
 
 /* Name validity helpers. */
 int rs_name_is_reserved(const char *name); /* lambda, z, n */

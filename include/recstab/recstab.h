@@ -6,6 +6,7 @@
 
 #include "recstab/error.h"
 #include "recstab/budget.h"
+#include "recstab/str.h"
 #include "recstab/expr.h"
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
