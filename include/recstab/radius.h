@@ -177,6 +177,9 @@ char *rs_radius_arb_str(const arb_t x, slong n);
 char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n);
 char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
 
+/* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
+const char *rs_radius_verdict(const rs_radius_t rr);
+
 #ifdef __cplusplus
 }
 #endif

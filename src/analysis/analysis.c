@@ -257,17 +257,6 @@ json_t *rs_json_sets(const rs_case_t c)
     return sets;
 }
 
-const char *rs_radius_verdict(const rs_radius_t rr)
-{
-    arb_t one;
-    const char *v;
-    arb_init(one);
-    arb_one(one);
-    v = arb_lt(rr->upper, one) ? "stable" : arb_gt(rr->lower, one) ? "unstable" : "undecided";
-    arb_clear(one);
-    return v;
-}
-
 /* Digits for printing the bounds: digits + 5, or more when a bound is
  * certified on one side of 1 but that many digits would round it onto 1
  * (upper = 1 - 1e-40 prints as 1.0000 rounded up).  A bound b in (0.1, 10)

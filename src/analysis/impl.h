@@ -112,8 +112,6 @@ json_t *rs_json_sets(const rs_case_t c);
 json_t *rs_json_arb(const arb_t x, slong digits);
 /* certified, lower, upper, rho, digits, precision_bits of a radius. */
 void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits);
-/* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
-const char *rs_radius_verdict(const rs_radius_t rr);
 
 /* Options "key=value" of a request: the value of key (1 if present);
  * every word a known key (else an error naming them); an integer in

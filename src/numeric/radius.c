@@ -1415,3 +1415,14 @@ void rs_radius_complex_roots(acb_ptr roots, const fmpz_poly_t f, slong prec)
         acb_mul_2exp_si(roots + i, roots + i, s);
     fmpz_poly_clear(g);
 }
+
+const char *rs_radius_verdict(const rs_radius_t rr)
+{
+    arb_t one;
+    const char *v;
+    arb_init(one);
+    arb_one(one);
+    v = arb_lt(rr->upper, one) ? "stable" : arb_gt(rr->lower, one) ? "unstable" : "undecided";
+    arb_clear(one);
+    return v;
+}
