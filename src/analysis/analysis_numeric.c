@@ -10,6 +10,7 @@
 #include <arb_mat.h>
 #include "recstab/budget.h"
 #include "analysis/impl.h"
+#include "numeric/modes.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
 #include "util/polyfmt.h"
@@ -617,53 +618,3 @@ const rs_analysis_entry_t rs_analysis_numeric[] = {
     {"simulate", an_simulate},
     {NULL, NULL}
 };
-
-/* ---- shared with analysis_sweep.c (sweep ... of modes) ------------------------------ */
-
-void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const acb_t root, const arb_t h,
-                         slong prec)
-{
-    acb_t c;
-    acb_init(c);
-    acb_log(c, root, prec);
-    acb_div_arb(c, c, h, prec);
-    arb_set(sigma, acb_realref(c));
-    arb_set(omega, acb_imagref(c));
-    arb_hypot(mag, sigma, omega, prec);
-    arb_div(zeta, sigma, mag, prec);
-    arb_neg(zeta, zeta);
-    acb_clear(c);
-}
-
-void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
-                        slong nref, slong prec)
-{
-    slong i, k;
-    for (i = 0; i < rr->nroots; i++) principal[i] = 0;
-    for (k = 0; k < nref; k++) {
-        acb_t target, d, cj;
-        arb_t best, dist;
-        slong bi = -1;
-        acb_init(target); acb_init(d); acb_init(cj);
-        arb_init(best); arb_init(dist);
-        arb_mul(acb_imagref(target), refs + k, h, prec);
-        acb_exp(target, target, prec);
-        for (i = 0; i < rr->nroots; i++) {
-            if (principal[i] || arf_sgn(arb_midref(acb_imagref(rr->roots + i))) < 0) continue;
-            acb_sub(d, rr->roots + i, target, prec);
-            acb_abs(dist, d, prec);
-            if (bi < 0 || arf_cmp(arb_midref(dist), arb_midref(best)) < 0) { bi = i; arb_set(best, dist); }
-        }
-        if (bi >= 0) {
-            principal[bi] = (int) (k + 1);
-            acb_conj(cj, rr->roots + bi);
-            for (i = 0; i < rr->nroots && !arb_is_zero(acb_imagref(rr->roots + bi)); i++)
-                if (i != bi && !principal[i] && acb_overlaps(cj, rr->roots + i)) {
-                    principal[i] = (int) (k + 1);
-                    break;
-                }
-        }
-        acb_clear(target); acb_clear(d); acb_clear(cj);
-        arb_clear(best); arb_clear(dist);
-    }
-}

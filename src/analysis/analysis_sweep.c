@@ -28,6 +28,7 @@
 #include <gsl/gsl_poly.h>
 #include "recstab/budget.h"
 #include "analysis/impl.h"
+#include "numeric/modes.h"
 #include "recstab/sweep.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"

@@ -146,16 +146,6 @@ extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis/analysis_
 extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis/analysis_cosim.c: exact integration */
 extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis/analysis_recurrence.c: numeric recurrences */
 
-/* Modes (src/analysis/analysis_numeric.c, shared with sweeps of modes).  principal:
- * for each reference frequency refs[k] (time step h) the root with Im >= 0
- * closest to exp(i refs[k] h) and its conjugate get k + 1, every other root 0
- * (spurious); rr->nroots entries.  continuous: for a nonzero root,
- * ln(root)/h = sigma + i omega (principal logarithm), mag = |ln(root)/h|
- * and the damping ratio zeta = -sigma/mag. */
-void rs_modes_principal(int *principal, const rs_radius_t rr, const arb_t h, arb_srcptr refs,
-                        slong nref, slong prec);
-void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const acb_t root, const arb_t h,
-                         slong prec);
 
 /* Simulate's cross-check (src/analysis/analysis_numeric.c): NULL when a measured
  * log growth per step over `steps` steps is compatible with the exact verdict
