@@ -22,6 +22,7 @@ extern "C" {
 #endif
 
 #define RS_CHARPOLY_MAX_TERMS 2000000  /* terms in any intermediate polynomial */
+#define RS_CHARPOLY_MAX_BITS (1L << 26) /* bits of all coefficients of p (about 20 million digits) */
 
 typedef struct {
     fmpz_mpoly_t p;               /* in the scheme's zctx */

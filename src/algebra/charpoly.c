@@ -294,6 +294,17 @@ int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
                          "the determinant of the lambda-matrix is identically zero: the equations "
                          "are dependent (singular scheme)");
     if (r == RS_OK) {
+        /* every analysis prints or transforms these coefficients: refuse a
+         * polynomial whose decimal form alone would be tens of megabytes */
+        slong i, len = fmpz_mpoly_length(cp->p, zctx);
+        double bits = 0;
+        for (i = 0; i < len; i++) bits += (double) fmpz_bits(cp->p->coeffs + i);
+        if (bits > (double) RS_CHARPOLY_MAX_BITS)
+            r = rs_error_set(err, RS_ERR_LIMIT, "the characteristic polynomial's coefficients hold %.0f bits in "
+                             "all (limit %ld, about 20 million digits): give the parameters smaller values",
+                             bits, (long) RS_CHARPOLY_MAX_BITS);
+    }
+    if (r == RS_OK) {
         fmpq_t g;
         fmpq_init(g);
         fmpq_one(g);

@@ -3,6 +3,7 @@
  * q(z) = sum_k p_k (1+z)^k (1-z)^(n-k), computed coefficientwise over Z:
  * no rational function is ever formed. */
 #include "recstab/bilinear.h"
+#include "recstab/budget.h"
 
 void rs_bilinear_fmpz_poly(fmpz_poly_t q, const fmpz_poly_t p)
 {
@@ -75,6 +76,10 @@ void rs_bilinear_fmpz_mpoly(fmpz_mpoly_t q, const fmpz_mpoly_t p, slong var,
     fmpz_mpoly_add_ui(onem, onem, 1, ctx);    /* 1 - z */
 
     for (k = 0; k <= n; k++) {
+        /* symbolic coefficients make each product large: stop with the
+         * budget (its sticky state makes the caller's next check report) */
+        if (rs_budget_check(NULL, "the bilinear transform") != RS_OK)
+            break;
         e = (ulong) k;
         fmpz_mpoly_get_coeff_vars_ui(c, p, &var, &e, 1, ctx);
         if (fmpz_mpoly_is_zero(c, ctx))
