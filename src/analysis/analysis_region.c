@@ -477,6 +477,9 @@ static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_po
     kp_set(&x, a);
     kp_set(&y, b);
     while (y.deg >= 0) {
+        /* coefficients in Q[t]/(m) can swell: stop with the budget (sticky:
+         * rs_analysis_run reports it and discards the result) */
+        if (rs_budget_check(NULL, "the status at an algebraic endpoint") != RS_OK) break;
         kp_divrem(NULL, &r, &x, &y, m);
         kp_set(&x, &y);
         kp_set(&y, &r);
@@ -497,7 +500,7 @@ static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
     kp_init(&a, p->deg + 1); kp_init(&b, p->deg + 1);
     fmpq_poly_init(d); fmpq_poly_init(t); fmpq_poly_init(u);
     kp_set(&a, p);
-    for (k = a.deg; k >= 1 && ok; k--) {
+    for (k = a.deg; k >= 1 && ok && rs_budget_check(NULL, "the status at an algebraic endpoint") == RS_OK; k--) {
         k_mul(t, a.c + k, a.c + k, m);
         k_mul(u, a.c + 0, a.c + 0, m);
         fmpq_poly_sub(d, t, u);
