@@ -70,10 +70,12 @@ int rs_semisimple_matrix(fmpq_poly_struct *A, const rs_scheme_t s, const slong *
  * circle root, marginal iff every circle root is semisimple.  s is the scheme
  * whose lambda-matrix is judged (vars[i] = vals[i] substituted first); s ==
  * NULL or a `char` scheme: the scalar rule.  ss receives the circle factors
- * (computed only when some circle root exists).  Thread-safe. */
+ * when the verdict needs them, or (list != 0) whenever a circle root exists;
+ * their circle roots must add up to rc->on (RS_ERR_INCONSISTENT otherwise,
+ * as when a kernel falls outside [1, multiplicity]).  Thread-safe. */
 int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_struct *s,
                           const slong *vars, const fmpq *vals, slong nv, const fmpz_poly_t p,
-                          const rs_rootcount_struct *rc, rs_error_t err);
+                          const rs_rootcount_struct *rc, int list, rs_error_t err);
 
 /* With one parameter tv symbolic in s (every other one substituted): the
  * values of tv where the rank of A modulo the factor f (irreducible in

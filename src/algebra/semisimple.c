@@ -99,6 +99,10 @@ int rs_semisimple_circle(rs_semisimple_t ss, const fmpq_poly_struct *A, slong n,
                 cf->kernel = n - rs_semisimple_rank_mod(A, n, cf->factor);
             else
                 cf->kernel = 1;   /* scalar recurrence: one solution per root */
+            /* A(alpha) is singular, and dim ker <= multiplicity always */
+            if (cf->kernel < 1 || cf->kernel > cf->mult)
+                r = rs_error_set(err, RS_ERR_INCONSISTENT, "semisimplicity test: dim ker A = %ld at a root "
+                                 "of multiplicity %ld", (long) cf->kernel, (long) cf->mult);
             cf->semisimple = (cf->kernel == cf->mult);
             if (!cf->semisimple) ss->all_semisimple = 0;
         }
@@ -127,12 +131,12 @@ int rs_semisimple_matrix(fmpq_poly_struct *A, const rs_scheme_t s, const slong *
 
 int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_struct *s,
                           const slong *vars, const fmpq *vals, slong nv, const fmpz_poly_t p,
-                          const rs_rootcount_struct *rc, rs_error_t err)
+                          const rs_rootcount_struct *rc, int list, rs_error_t err)
 {
-    int r = RS_OK;
+    int r = RS_OK, needed = rc->outside == 0 && rs_rootcount_max_on_mult(rc) > 1;
     *st = rs_rootcount_status(rc);
     rs_semisimple_clear(ss);
-    if (rc->on == 0) return RS_OK;
+    if (rc->on == 0 || (!needed && !list)) return RS_OK;
     if (s == NULL || s->from_char || s->n < 1) {
         r = rs_semisimple_circle(ss, NULL, 0, p, err);
     } else {
@@ -146,7 +150,15 @@ int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_s
         for (i = 0; i < n * n; i++) fmpq_poly_clear(A + i);
         flint_free(A);
     }
-    if (r == RS_OK && rc->outside == 0 && rs_rootcount_max_on_mult(rc) > 1)
+    if (r == RS_OK) {
+        /* the factorisation counts the circle roots a second time */
+        slong i, on = 0;
+        for (i = 0; i < ss->nfactors; i++) on += ss->f[i].on * ss->f[i].mult;
+        if (on != rc->on)
+            r = rs_error_set(err, RS_ERR_INCONSISTENT, "%ld roots on the circle by factorisation, %ld by the "
+                             "exact count", (long) on, (long) rc->on);
+    }
+    if (r == RS_OK && needed)
         *st = ss->all_semisimple ? RS_STATUS_MARGINAL : RS_STATUS_UNSTABLE;
     return r;
 }

@@ -151,7 +151,7 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
         return RS_OK;
     }
     rs_semisimple_init(ss);
-    r = rs_semisimple_verdict(st, ss, s, vars, vals, nv, p, rc, run->err);
+    r = rs_semisimple_verdict(st, ss, s, vars, vals, nv, p, rc, o != NULL, run->err);
     if (r == RS_OK && o != NULL && rc->on > 0) {
         json_object_set_new(o, "circle_roots", circle_roots_json(ss));
         json_object_set_new(o, "rule", json_string(ss->system ?

@@ -662,7 +662,7 @@ static int point_system(pt_t *pt, const job_t *J, slong idx, const fmpz_poly_t P
     rs_semisimple_init(ss);
     r = exact_count(rc, pp, err);
     if (r == RS_OK)
-        r = rs_semisimple_verdict(&st, ss, J->v->s, J->var, vals, J->is_map ? 2 : 1, pp, rc, err);
+        r = rs_semisimple_verdict(&st, ss, J->v->s, J->var, vals, J->is_map ? 2 : 1, pp, rc, 0, err);
     if (r == RS_OK) pt->d.verdict = (int) st;
     rs_semisimple_clear(ss);
     rs_rootcount_clear(rc);
