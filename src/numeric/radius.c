@@ -433,13 +433,32 @@ static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong prec
     return status;
 }
 
+/* g(mu) = f(2^sc mu) up to a power of 2, with 2^sc about the geometric mean
+ * of the root magnitudes (0 for moderate scales, |sc| < 32, so ordinary
+ * results do not change): Durand-Kerner started near the unit circle
+ * crawls for minutes on roots of magnitude 10^-600.  Roots of g times 2^sc
+ * are the roots of f, exactly.  Returns sc. */
+static slong _rs_radius_rescale(fmpz_poly_t g, const fmpz_poly_t f)
+{
+    slong n = fmpz_poly_degree(f), k = 0, sc, i;
+    while (fmpz_is_zero(f->coeffs + k)) k++;
+    sc = k < n ? ((slong) fmpz_bits(f->coeffs + k) - (slong) fmpz_bits(f->coeffs + n)) / (n - k) : 0;
+    if (sc > -32 && sc < 32) sc = 0;
+    fmpz_poly_fit_length(g, n + 1);
+    /* sc > 0: coefficient i times 2^(sc i); sc < 0: times 2^(-sc (n - i)) */
+    for (i = 0; i <= n; i++)
+        fmpz_mul_2exp(g->coeffs + i, f->coeffs + i, (ulong) (sc > 0 ? sc * i : -sc * (n - i)));
+    _fmpz_poly_set_length(g, n + 1);
+    return sc;
+}
+
 /* acb_poly_find_roots seeded with the GSL double roots (when the
  * coefficients fit in double and GSL converges); certified when all d
  * output balls are isolated (then each holds exactly one root); otherwise
  * arb_fmpz_poly_complex_roots (certified, always isolates) at target prec. */
 static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
 {
-    slong d = fmpz_poly_degree(f0), i, n, k = 0, sc;
+    slong d = fmpz_poly_degree(f0), i, n, sc;
     acb_poly_t P;
     acb_ptr init = NULL;
     double *a, *z;
@@ -447,17 +466,8 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
 
     if (d == 1)
         return _rs_factor_roots_companion(E, f0, prec);
-    /* roots far from magnitude 1 (w = 10^600: |lambda| ~ 10^-600): iterate
-     * on f(2^sc mu), 2^sc the geometric mean of the root magnitudes, and
-     * scale the roots back exactly (rs_radius_complex_roots does the same) */
-    while (fmpz_is_zero(f0->coeffs + k)) k++;
-    sc = k < d ? ((slong) fmpz_bits(f0->coeffs + k) - (slong) fmpz_bits(f0->coeffs + d)) / (d - k) : 0;
-    if (sc > -32 && sc < 32) sc = 0;
     fmpz_poly_init(f);
-    fmpz_poly_fit_length(f, d + 1);
-    for (i = 0; i <= d; i++)
-        fmpz_mul_2exp(f->coeffs + i, f0->coeffs + i, (ulong) (sc > 0 ? sc * i : -sc * (d - i)));
-    _fmpz_poly_set_length(f, d + 1);
+    sc = _rs_radius_rescale(f, f0);
     a = flint_malloc((d + 1) * sizeof(double));
     z = flint_malloc(2 * d * sizeof(double));
     if (_rs_radius_to_double(a, f, NULL) == RS_OK &&
@@ -1395,21 +1405,11 @@ char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n)
  * (|s| < 32) are left alone so that ordinary results do not change. */
 void rs_radius_complex_roots(acb_ptr roots, const fmpz_poly_t f, slong prec)
 {
-    slong n = fmpz_poly_degree(f), k = 0, s, i;
+    slong n = fmpz_poly_degree(f), s, i;
     fmpz_poly_t g;
     if (n < 1) return;
-    while (fmpz_is_zero(f->coeffs + k)) k++;
-    s = k < n ? ((slong) fmpz_bits(f->coeffs + k) - (slong) fmpz_bits(f->coeffs + n)) / (n - k) : 0;
-    if (s > -32 && s < 32) {
-        arb_fmpz_poly_complex_roots(roots, f, 0, prec);
-        return;
-    }
     fmpz_poly_init(g);
-    fmpz_poly_fit_length(g, n + 1);
-    /* s > 0: coefficient i times 2^(s i); s < 0: times 2^(-s (n - i)) */
-    for (i = 0; i <= n; i++)
-        fmpz_mul_2exp(g->coeffs + i, f->coeffs + i, (ulong) (s > 0 ? s * i : -s * (n - i)));
-    _fmpz_poly_set_length(g, n + 1);
+    s = _rs_radius_rescale(g, f);
     arb_fmpz_poly_complex_roots(roots, g, 0, prec);
     for (i = 0; i < n; i++)
         acb_mul_2exp_si(roots + i, roots + i, s);
