@@ -636,7 +636,8 @@ static void point_modes(pt_t *pt, const job_t *J, slong idx, const rs_radius_t r
 /* What the polynomial alone cannot say: the step is singular where the
  * degree in lambda drops, and a repeated circle root of a system is bounded
  * when semisimple (rs_semisimple_verdict on the lambda-matrix there). */
-static int point_system(pt_t *pt, const job_t *J, slong idx, const fmpz_poly_t P, rs_error_t err)
+static int point_system(pt_t *pt, const job_t *J, slong idx, const fmpz_poly_t P,
+                        const rs_rootcount_struct *known, rs_error_t err)
 {
     slong i = idx % J->K1, j = idx / J->K1;
     fmpq vals[2];
@@ -660,7 +661,8 @@ static int point_system(pt_t *pt, const job_t *J, slong idx, const fmpz_poly_t P
     fmpz_poly_primitive_part(pp, P);
     rs_rootcount_init(rc);
     rs_semisimple_init(ss);
-    r = exact_count(rc, pp, err);
+    /* the ladder's exact rung kept no counts; a stability sweep has them */
+    r = known != NULL ? (*rc = *known, RS_OK) : exact_count(rc, pp, err);
     if (r == RS_OK)
         r = rs_semisimple_verdict(&st, ss, J->v->s, J->var, vals, J->is_map ? 2 : 1, pp, rc, 0, err);
     if (r == RS_OK) pt->d.verdict = (int) st;
@@ -697,7 +699,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
                 pt->on = (int) rc->on;
                 pt->outside = (int) rc->outside;
             }
-            if (r == RS_OK) r = point_system(pt, J, idx, P, err);
+            if (r == RS_OK) r = point_system(pt, J, idx, P, fmpz_poly_degree(P) > 0 ? rc : NULL, err);
         }
         rs_rootcount_clear(rc);
         pt->d.status = r;
@@ -705,7 +707,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
         return;
     }
     r = rs_sweep_decide(&pt->d, P, err);
-    if (r == RS_OK) r = point_system(pt, J, idx, P, err);
+    if (r == RS_OK) r = point_system(pt, J, idx, P, NULL, err);
     if (r == RS_OK && pt->d.verdict >= 0 && pt->d.verdict != RS_STATUS_SINGULAR && fmpz_poly_degree(P) >= 1
         && (J->kind == OF_MODES || (!pt->d.isolated && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0))
             || (J->kind == OF_RADIUS && !J->is_map))) {

@@ -74,9 +74,9 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
 int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *pp, const rs_scheme_t s);
 
 /* The exact verdict of variant v at vars[i] = vals[i] (i < nv), which set
- * every parameter still symbolic in v: p evaluated exactly (into u when
- * u != NULL), "singular" where its degree in lambda drops or it vanishes
- * identically, else the counts rc (Routh and Schur-Cohn, which must agree)
+ * every parameter still symbolic in v: p evaluated exactly, "singular"
+ * where its degree in lambda drops or it vanishes identically, else the
+ * counts rc (Routh and Schur-Cohn, which must agree)
  * judged by rs_run_verdict. */
 int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                         const slong *vars, const fmpq *vals, slong nv);
