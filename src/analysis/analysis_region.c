@@ -468,7 +468,23 @@ static void kp_divrem(kpoly_t *q, kpoly_t *r, const kpoly_t *a, const kpoly_t *b
     fmpq_poly_clear(inv); fmpq_poly_clear(f); fmpq_poly_clear(t);
 }
 
-/* g = gcd(a, b) (Euclid in K[lambda]; not both zero) */
+/* a /= its leading coefficient (a != 0).  Monic remainders keep the
+ * coefficients in K to the size of subresultant quotients; the plain
+ * remainder sequence squares them at every step (a degree-15 BDF2 region
+ * spent 9 s in the inversions of swollen leading coefficients). */
+static void kp_make_monic(kpoly_t *a, const fmpq_poly_t m)
+{
+    fmpq_poly_t inv;
+    slong i;
+    if (a->deg < 0) return;
+    fmpq_poly_init(inv);
+    k_inv(inv, a->c + a->deg, m);
+    for (i = 0; i < a->deg; i++) k_mul(a->c + i, a->c + i, inv, m);
+    fmpq_poly_one(a->c + a->deg);
+    fmpq_poly_clear(inv);
+}
+
+/* g = gcd(a, b) (Euclid in K[lambda] with monic remainders; not both zero) */
 static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
 {
     slong cap = FLINT_MAX(a->cap, b->cap);
@@ -476,11 +492,14 @@ static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_po
     kp_init(&x, cap); kp_init(&y, cap); kp_init(&r, cap);
     kp_set(&x, a);
     kp_set(&y, b);
+    kp_make_monic(&x, m);
+    kp_make_monic(&y, m);
     while (y.deg >= 0) {
         /* coefficients in Q[t]/(m) can swell: stop with the budget (sticky:
          * rs_analysis_run reports it and discards the result) */
         if (rs_budget_check(NULL, "the status at an algebraic endpoint") != RS_OK) break;
         kp_divrem(NULL, &r, &x, &y, m);
+        kp_make_monic(&r, m);
         kp_set(&x, &y);
         kp_set(&y, &r);
     }
@@ -513,6 +532,9 @@ static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
         }
         for (j = k; j < b.cap; j++) fmpq_poly_zero(b.c + j);
         b.deg = k - 1;      /* lead b_{k-1} = a_k^2 - a_0^2 != 0 */
+        /* dividing by the real d(t0) != 0 scales every later a_k^2 - a_0^2
+         * by a square: the signs stay, the sizes stop doubling per step */
+        kp_make_monic(&b, m);
         kp_set(&a, &b);
     }
     kp_clear(&a); kp_clear(&b);
