@@ -17,6 +17,7 @@
 #define RECSTAB_BUDGET_H
 
 #include <flint/flint.h>
+#include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 
 #ifdef __cplusplus
@@ -41,6 +42,12 @@ int rs_budget_check(rs_error_t err, const char *what);
 /* RS_OK, or RS_ERR_LIMIT if WHAT, estimated at seconds and bytes, would not
  * fit into what is left of the budget (the message gives the estimate). */
 int rs_budget_estimate(rs_error_t err, const char *what, double seconds, double bytes);
+/* Estimated seconds of fmpz_mpoly_mul(a, b): la lb term pairs (FLINT's heap
+ * multiplication), about 4e-10 s per pair and limb of the result's
+ * coefficients (measured: 34 000 x 34 000 terms of 110-bit coefficients in
+ * 1.8-2.2 s, Debian 12, FLINT 2.9).  For rs_budget_estimate before products
+ * that cannot be interrupted. */
+double rs_budget_mpoly_mul_seconds(const fmpz_mpoly_t a, const fmpz_mpoly_t b);
 /* 1 once a limit was hit (sticky until the next start); its message. */
 int rs_budget_exceeded(void);
 int rs_budget_error(rs_error_t err);

@@ -276,6 +276,19 @@ _leading_minor_pivoting(fmpz_mpoly_t det, const fmpz_mpoly_struct *a,
     return RS_OK;
 }
 
+/* Seconds for the products of one fraction-free Routh row (below). */
+static double
+_row_estimate(const fmpz_mpoly_struct *r0, const fmpz_mpoly_struct *r1,
+              slong len)
+{
+    double s = 0.0;
+    slong j;
+    for (j = 0; j + 1 < len; j++)
+        s += rs_budget_mpoly_mul_seconds(r1, r0 + j + 1)
+             + rs_budget_mpoly_mul_seconds(r0, r1 + j + 1);
+    return s;
+}
+
 /* Fraction-free Routh scheme (the Hurwitz-structured form of Bareiss's
  * elimination).  Rows R_0 = (a_n, a_{n-2}, ...), R_1 = (a_{n-1}, a_{n-3},
  * ...), and for m >= 2
@@ -286,10 +299,12 @@ _leading_minor_pivoting(fmpz_mpoly_t det, const fmpz_mpoly_struct *a,
  * independent a_i, and it stays exact after specialisation as long as the
  * divisor is not identically zero.)  Computes D_1..D_m into D and returns m:
  * it stops before a division by an identically-zero D_{m-3}, or (which
- * should not happen) at an inexact division. */
+ * should not happen) at an inexact division, or with *status = RS_ERR_LIMIT
+ * when a row does not fit into the budget (_row_estimate). */
 static slong
 _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
-                      slong n, const fmpz_mpoly_ctx_t ctx)
+                      slong n, const fmpz_mpoly_ctx_t ctx, int *status,
+                      rs_error_t err)
 {
     slong len = n / 2 + 2, m, j, done;
     fmpz_mpoly_struct *R = flint_malloc(3 * len * sizeof(fmpz_mpoly_struct));
@@ -313,7 +328,14 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         const fmpz_mpoly_struct *d = (m >= 4) ? D + (m - 4) : NULL;
         if (d != NULL && fmpz_mpoly_is_zero(d, ctx))
             break;
+        *status = rs_budget_estimate(err, "a row of the Hurwitz minors",
+                                     _row_estimate(r0, r1, len), 0.0);
+        if (*status != RS_OK)
+            break;
         for (j = 0; j + 1 < len && ok; j++) {
+            /* one product can take seconds: stop between them */
+            if ((*status = rs_budget_check(err, "the Hurwitz minors")) != RS_OK)
+                break;
             fmpz_mpoly_mul(t, r1 + 0, r0 + j + 1, ctx);
             fmpz_mpoly_mul(u, r0 + 0, r1 + j + 1, ctx);
             fmpz_mpoly_sub(t, t, u, ctx);
@@ -322,7 +344,7 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
             else
                 ok = fmpz_mpoly_divides(r2 + j, t, d, ctx);
         }
-        if (!ok)
+        if (!ok || *status != RS_OK)
             break;
         fmpz_mpoly_zero(r2 + len - 1, ctx);
         fmpz_mpoly_set(D + m - 1, r2 + 0, ctx);
@@ -346,7 +368,11 @@ static int
 _hurwitz_minors(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a, slong n,
                 const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
-    slong k = _hurwitz_minors_routh(D, a, n, ctx);
+    int status = RS_OK;
+    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, err);
+
+    if (status != RS_OK)
+        return status;
 
     for (; k < n - 1; k++) {
         int r = _leading_minor_pivoting(D + k, a, n, k + 1, ctx, err);

@@ -477,8 +477,21 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
                 "parameters and use the exact numeric array", i - 1);
             break;
         }
+        {
+            /* one product can take minutes: estimate the row, and stop
+             * between products when the budget runs out */
+            double sec = 0.0;
+            for (j = 0; j < r->rowlen[i]; j++) {
+                sec += rs_budget_mpoly_mul_seconds(piv, up + j + 1);
+                if (j + 1 < r->rowlen[i - 1])
+                    sec += rs_budget_mpoly_mul_seconds(up, r->rows[i - 1] + j + 1);
+            }
+            status = rs_budget_estimate(err, "a row of the symbolic Routh array", sec, 0.0);
+        }
         for (j = 0; j < r->rowlen[i] && status == RS_OK; j++) {
             fmpz_mpoly_struct *out = r->rows[i] + j;
+            if ((status = rs_budget_check(err, "the symbolic Routh array")) != RS_OK)
+                break;
             /* t = piv * up[j+1] - up[0] * prev[j+1]; up always has j+1 */
             fmpz_mpoly_mul(t, piv, up + j + 1, ctx);
             if (j + 1 < r->rowlen[i - 1]) {

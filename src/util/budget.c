@@ -216,3 +216,9 @@ int rs_budget_estimate(rs_error_t err, const char *what, double seconds, double 
                             "raise it with --memory-limit", what, bytes / 1048576.0, ml >> 20);
     return RS_OK;
 }
+
+double rs_budget_mpoly_mul_seconds(const fmpz_mpoly_t a, const fmpz_mpoly_t b)
+{
+    double limbs = 1.0 + (double) (FLINT_ABS(fmpz_mpoly_max_bits(a)) + FLINT_ABS(fmpz_mpoly_max_bits(b))) / 64.0;
+    return 4e-10 * (double) a->length * (double) b->length * limbs;
+}

@@ -5,7 +5,8 @@
 # exit with status 2, print nothing on stdout, and print exactly
 # tests/bad/NAME.expected on stderr.  NAME.args holds extra options.  Inputs
 # the fuzzer found (tests/fuzz/regress/*) must finish within 20 s with a
-# status below 3 (no crash, no timeout, no sanitizer report).
+# status below 3 (no crash, no timeout, no sanitizer report), under the
+# fuzzers' budget (--time-limit 5, FUZZ_TIME_LIMIT of tests/fuzz/fuzz_common.h).
 # Prints "ok ..." or "FAIL ..." per check.
 BUILD=${BUILD:-build}
 RS="$(cd "$BUILD" 2>/dev/null && pwd)/recstab"
@@ -90,7 +91,7 @@ for f in tests/fuzz/regress/*; do
     [ -f "$f" ] || continue
     for j in "" --json; do
         # shellcheck disable=SC2086
-        timeout 20 "$RS" $j "$f" >"$T/out" 2>"$T/err"; rc=$?
+        timeout 20 "$RS" --time-limit 5 $j "$f" >"$T/out" 2>"$T/err"; rc=$?
         if [ "$rc" -le 2 ]; then ok "fuzz regression $j $f"
         else fail "fuzz regression $j $f: exit $rc"; head -c 2000 "$T/err"; fi
     done
