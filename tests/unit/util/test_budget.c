@@ -10,6 +10,7 @@
 #include "recstab/budget.h"
 #include "recstab/analysis.h"
 #include "recstab/charpoly.h"
+#include "recstab/routh.h"
 #include "testutil.h"
 
 static double mono(void)
@@ -145,6 +146,45 @@ static void test_det_estimate(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* A symbolic Routh row whose products cannot fit is refused at its estimate,
+ * before the first product: q = sum_k (a+b+c+1)^(52+k) z^k (k = 0..8) has
+ * coefficients of C(55,3) = 26 235 to C(63,3) = 39 711 terms (the dense
+ * trivariate count), so row 2 multiplies pairs of about 10^9 term pairs each
+ * (seconds apiece by the calibration in budget.h), far past a 1 s budget. */
+static void test_routh_row_estimate(void **state)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t q, base, t;
+    rs_routh_mpoly_t r;
+    rs_error_t err;
+    slong k;
+    double t0;
+    (void) state;
+    rs_error_init(err);
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);      /* z, a, b, c */
+    fmpz_mpoly_init(q, ctx); fmpz_mpoly_init(base, ctx); fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_set_str_pretty(base, "a+b+c+1", (const char *[]) {"z", "a", "b", "c"}, ctx);
+    for (k = 0; k <= 8; k++) {
+        fmpz_mpoly_pow_ui(t, base, 52 + k, ctx);
+        assert_int_equal(fmpz_mpoly_length(t, ctx), (55 + k) * (54 + k) * (53 + k) / 6);
+        fmpz_mpoly_gen(base, 0, ctx);
+        fmpz_mpoly_pow_ui(base, base, k, ctx);
+        fmpz_mpoly_mul(t, t, base, ctx);
+        fmpz_mpoly_add(q, q, t, ctx);
+        fmpz_mpoly_set_str_pretty(base, "a+b+c+1", (const char *[]) {"z", "a", "b", "c"}, ctx);
+    }
+    rs_routh_mpoly_init(r);
+    rs_budget_start(1.0, 0.0, 0);
+    t0 = mono();
+    assert_int_equal(rs_routh_mpoly(r, q, 0, ctx, err), RS_ERR_LIMIT);
+    assert_true(mono() - t0 < 1.0);
+    assert_non_null(strstr(err->msg, "symbolic Routh array would take about"));
+    rs_budget_stop();
+    rs_routh_mpoly_clear(r, ctx);
+    fmpz_mpoly_clear(q, ctx); fmpz_mpoly_clear(base, ctx); fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
 static json_t *run_string(const char *text, int *code, rs_error_t err)
 {
     rs_case_t c;
@@ -201,7 +241,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
-        cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_region_single_value),
+        cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_region_single_value),
         cmocka_unit_test(test_region_contradictory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
