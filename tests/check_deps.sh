@@ -1,25 +1,29 @@
 #!/bin/sh
 # check_deps.sh -- the dependency rule of docs/architecture.md:
 #
-#     util <- lang <- lower <- {algebra, stability, numeric} <- analysis <- render <- cli
+#     util <- lang <- lower <- algebra <- numeric <- stability <- analysis <- render <- cli
 #
-# A file may include headers of its own stage and of earlier stages only; the
-# three kernel stages (algebra, stability, numeric) do not include each other.
+# A file may include headers of its own stage and of earlier stages only.
+# Inside the kernel {algebra, numeric, stability} the order is algebra (exact
+# polynomials, conditions and the parameter signs) <- numeric (certified
+# isolation, radius, the verdict ladder with its exact rung passed in) <-
+# stability (the exact counts, which check themselves against certified
+# isolation, and the semisimplicity verdict over them).
 # Every #include "..." of src/*/*.[ch] and include/recstab/*.h is checked:
 #   "recstab/NAME.h"   a public header, its stage from the table below
 #   "STAGE/NAME.h"     a private header of that stage (src/STAGE/NAME.h)
 #   "NAME.h"           a header next to the file (same stage)
-# Public headers may include public headers only.  Existing violations are
-# listed in KNOWN with the phase-B change that removes them; the list can only
-# shrink: a new violation fails, and so does a listed one that is gone.
+# Public headers may include public headers only.  Exceptions would be
+# listed in KNOWN; the list can only shrink: a new violation fails, and so
+# does a listed one that is gone.
 # Prints "ok deps ..." / "FAIL deps ..." lines (tests/run.sh counts them).
 cd "$(dirname "$0")/.." || exit 1
 
 rank() {
     case $1 in
     util) echo 0 ;; lang) echo 1 ;; lower) echo 2 ;;
-    algebra|stability|numeric) echo 3 ;;
-    analysis) echo 4 ;; render) echo 5 ;; cli) echo 6 ;;
+    algebra) echo 3 ;; numeric) echo 4 ;; stability) echo 5 ;;
+    analysis) echo 6 ;; render) echo 7 ;; cli) echo 8 ;;
     *) echo x ;;
     esac
 }
@@ -30,8 +34,8 @@ public_stage() {
     error|budget|str) echo util ;;
     expr|casefile) echo lang ;;
     scheme) echo lower ;;
-    charpoly|cond|semisimple) echo algebra ;;
-    bilinear|routh|hurwitz|jury|rootcount) echo stability ;;
+    charpoly|cond) echo algebra ;;
+    bilinear|routh|hurwitz|jury|rootcount|semisimple) echo stability ;;
     radius|cosim) echo numeric ;;
     analysis|sweep) echo analysis ;;      # sweep.h: src/analysis/analysis_sweep.c
     report|derivation|recstab) echo render ;;
@@ -43,21 +47,10 @@ public_stage() {
 KNOWN='
 src/lang/casefile.c -> lower/builder.h
 src/lang/casefile.c -> lower/recurrence.h
-src/algebra/cond.c -> recstab/hurwitz.h
-src/algebra/semisimple.c -> recstab/rootcount.h
-include/recstab/semisimple.h -> recstab/rootcount.h
-src/stability/rootcount.c -> recstab/radius.h
 '
 # casefile.c -> builder.h, recurrence.h: the parser expands subsystem blocks
 #   and matrix recurrences by generating case text and re-parsing it; phase B
 #   (typed syntax tree, lowering in src/lower/) makes lower the only consumer.
-# cond.c -> hurwitz.h: the parameter signs (RS_SIGN_*) live in hurwitz.h;
-#   phase B moves the sign type to algebra (cond.h), where the assumptions are.
-# semisimple.c, semisimple.h -> rootcount.h: the semisimple rank counts the
-#   unit-circle roots of each factor with rs_rootcount_t; phase B moves the
-#   semisimplicity test to stability, next to the root counts.
-# rootcount.c -> radius.h: the certified isolation of a factor's roots uses
-#   rs_radius_complex_roots; phase B moves that isolation routine to stability.
 
 fails=0
 seen=$(mktemp)
@@ -85,7 +78,7 @@ check_file() { # file stage
         if printf '%s\n' "$KNOWN" | grep -qxF "$f -> $inc"; then
             echo "$f -> $inc" >>"$seen"; continue
         fi
-        echo "FAIL deps $f ($st) includes \"$inc\" ($tst): against util <- lang <- lower <- {algebra, stability, numeric} <- analysis <- render <- cli"
+        echo "FAIL deps $f ($st) includes \"$inc\" ($tst): against util <- lang <- lower <- algebra <- numeric <- stability <- analysis <- render <- cli"
         bad=1
     done
     return $bad

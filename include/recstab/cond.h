@@ -14,6 +14,14 @@
 extern "C" {
 #endif
 
+/* What is known of the sign of each variable (from `assume` lines). */
+typedef enum {
+    RS_SIGN_UNKNOWN = 0,
+    RS_SIGN_POSITIVE = 1,    /* v > 0 */
+    RS_SIGN_NONNEGATIVE = 2  /* v >= 0 */
+} rs_sign_t;
+
+
 /* Interval of one parameter implied by the simple conditions NAME op CONST
  * (lower/upper ends; an end is absent when has_lo/has_hi is 0). */
 typedef struct {
@@ -50,7 +58,7 @@ int rs_condpoly_holds(const rs_condpoly_t *cp, fmpq *const *vals,
                       const rs_scheme_t s);
 
 /* "positive" > "nonnegative" > "unknown" sign of each scheme variable from the
- * bounds (RS_SIGN_* values of hurwitz.h). */
+ * bounds (RS_SIGN_* values above). */
 void rs_bounds_signs(int *sign, const rs_bound_t *b, slong nparams);
 
 #ifdef __cplusplus

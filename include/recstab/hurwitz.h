@@ -20,17 +20,11 @@
 #include <flint/fmpz_mpoly_factor.h>
 #include <flint/fmpq.h>
 #include "recstab/error.h"
+#include "recstab/cond.h"   /* rs_sign_t */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* What is known of the sign of each variable (from `assume` lines). */
-typedef enum {
-    RS_SIGN_UNKNOWN = 0,
-    RS_SIGN_POSITIVE = 1,    /* v > 0 */
-    RS_SIGN_NONNEGATIVE = 2  /* v >= 0 */
-} rs_sign_t;
 
 /* One condition "poly > 0" (or ">= 0" for the non-strict variants), with its
  * factorisation: constant * prod factor[i]^exp[i]. */

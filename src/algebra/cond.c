@@ -1,7 +1,6 @@
 /* cond.c -- parameter conditions: bounds and exact evaluation. */
 #include <string.h>
 #include "recstab/cond.h"
-#include "recstab/hurwitz.h"
 
 void rs_bounds_init(rs_bound_t *b, slong n)
 {
