@@ -26,14 +26,24 @@ typedef enum {
 
 typedef struct rs_expr_struct {
     rs_expr_kind_t kind;
+    const char *file;                /* source file of the node: not owned (the case's
+                                        file list or the caller's rs_src_t keeps it) */
     int line, col;                   /* source position of the node */
     fmpq_t num;                      /* RS_EXPR_NUM */
-    char *name;                      /* RS_EXPR_NAME */
-    int shifted;                     /* NAME[n+K] written */
+    char *lit;                       /* RS_EXPR_NUM: its spelling ("0.5", "1e-3"), or NULL */
+    char *name;                      /* RS_EXPR_NAME, RS_EXPR_CALL */
+    int shifted;                     /* NAME[n+K] written (2: written with an explicit +0) */
     slong shift;                     /* K */
+    int paren;                       /* pairs of parentheses written around the node */
     struct rs_expr_struct *a, *b;    /* operands */
 } rs_expr_struct;
 typedef rs_expr_struct rs_expr_t;
+
+/* The file of node e, or dflt for a node without one. */
+static inline const char *rs_expr_file(const rs_expr_t *e, const char *dflt)
+{
+    return e->file != NULL ? e->file : dflt;
+}
 
 /* Source text being parsed: where errors point. */
 typedef struct {
@@ -68,6 +78,25 @@ int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src,
 
 void rs_expr_free(rs_expr_t *e);
 rs_expr_t *rs_expr_copy(const rs_expr_t *e);
+
+/* Building trees (the lowering stage's builders): every new node takes the
+ * position (file, line, col) it is given; operands are owned by the result. */
+rs_expr_t *rs_expr_new_num(slong v, const char *file, int line, int col);
+rs_expr_t *rs_expr_new_name(const char *name, int shifted, slong shift,
+                            const char *file, int line, int col);
+rs_expr_t *rs_expr_new_op(rs_expr_kind_t kind, rs_expr_t *a, rs_expr_t *b,
+                          const char *file, int line, int col);
+/* e with one more pair of parentheses around it (printing only). */
+rs_expr_t *rs_expr_paren(rs_expr_t *e);
+
+/* Structural equality: kinds, numbers, names and shifts (positions,
+ * parentheses and spellings ignored). */
+int rs_expr_equal(const rs_expr_t *a, const rs_expr_t *b);
+
+/* The tree as case-file text (flint_malloc'd): "a + b", "a - b", "a*b",
+ * "a/b", "a^b", "-a", "f(a)", numbers as spelled, the written parentheses
+ * (and those the operator precedence needs). */
+char *rs_expr_str(const rs_expr_t *e);
 
 /* Source position of text[i] in src. */
 void rs_src_pos(const rs_src_t *src, size_t i, int *line, int *col);

@@ -41,6 +41,17 @@ typedef struct {
 } rs_scheme_struct;
 typedef rs_scheme_struct rs_scheme_t[1];
 
+/* Lowering (src/lower/): gives the parsed case its meaning as equations.
+ * Subsystems/integrators/couplings and polynomial recurrence terms become
+ * unknowns and equations appended to c (marked generated), built as
+ * expression trees; call once after parsing, before rs_scheme_build or
+ * rs_analysis_run.  Errors name the user's file:line:col. */
+int rs_case_lower(rs_case_t c, rs_error_t err);
+
+/* The generated unknowns and equations as case text, for the user to read
+ * (--emit equations; flint_malloc'd), or NULL when lowering generated none. */
+char *rs_case_emit_equations(const rs_case_t c);
+
 void rs_scheme_init(rs_scheme_t s);
 void rs_scheme_clear(rs_scheme_t s);
 

@@ -9,6 +9,7 @@
 #include "recstab/bilinear.h"
 #include "recstab/cond.h"
 #include "lower/builder.h"
+#include "lower/recurrence.h"
 #include "recstab/radius.h"
 
 const char *const rs_analysis_names[] = {
@@ -838,7 +839,7 @@ static int dispatch(rs_run_t *run, const rs_request_t *q)
     while (t[n] && !isspace((unsigned char) t[n])) n++;
     /* the kind of case decides which analyses exist: a recurrence with
      * exp/sin entries or exactly integrated subsystems is numeric only */
-    if (run->c->numeric_recurrence) {
+    if (rs_recurrence_is_numeric(run->c)) {
         if ((e = lookup(recurrence, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
         return rs_req_error(run, q, t, RS_ERR_INPUT,
                             "a recurrence with non-polynomial entries (exp, sin, ...) is numeric: only radius and "
@@ -972,7 +973,7 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     int r;
     *out = NULL;
     *nout = 0;
-    if (c->numeric_recurrence || rs_builder_is_exact(c)) {
+    if (rs_recurrence_is_numeric(c) || rs_builder_is_exact(c)) {
         names[n++] = "stability";
     } else {
         r = rs_run_numeric_variant(run, &v);
@@ -1025,7 +1026,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     /* an error in the equations must surface even when no analysis asks */
     rs_scheme_init(run.sym);
     r = check_assumptions(c, err);
-    if (r == RS_OK && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
+    if (r == RS_OK && !rs_builder_is_exact(c) && !rs_recurrence_is_numeric(c)) {
         r = rs_scheme_build(run.sym, c, err);
         run.have_sym = (r == RS_OK);
     }
@@ -1078,7 +1079,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
         json_object_set_new(d, "default_analyses", arr);
     }
     free_requests(defaults, ndefaults);
-    if (opt->with_scheme && !rs_builder_is_exact(c) && !c->numeric_recurrence) {
+    if (opt->with_scheme && !rs_builder_is_exact(c) && !rs_recurrence_is_numeric(c)) {
         json_t *sc = scheme_json(&run);
         if (sc == NULL) {
             json_decref(d);

@@ -10,36 +10,18 @@
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
-static char *dupcat(const char *a, const char *b)
-{
-    char *s = malloc(strlen(a) + strlen(b) + 1);
-    strcpy(s, a);
-    strcat(s, b);
-    return s;
-}
-
 /* num/den of an expression of the synthetic evaluation case at the set values */
 typedef struct { const char *name; const fmpq *value; } val_t;
 typedef struct { slong n; val_t *v; } vals_t;
 
 static int eval_linear(fmpq_mpoly_t out, const rs_case_struct *c, const vals_t *vals, const rs_case_struct *tc,
-                       const rs_scheme_struct *ts, const char *text, const rs_loc_t *loc, rs_error_t err)
+                       const rs_scheme_struct *ts, const rs_expr_t *e, const rs_loc_t *loc, rs_error_t err)
 {
-    rs_src_t src;
-    rs_expr_t *e = NULL;
     fmpq_mpoly_t den;
     slong i;
     int r;
-    memset(&src, 0, sizeof src);
-    src.file = loc->file;
-    src.text = text;
-    src.line = loc->line;
-    src.col = loc->col;
-    r = rs_expr_parse_all(&e, &src, err);
-    if (r != RS_OK) return r;
     fmpq_mpoly_init(den, ts->ctx);
     r = rs_scheme_eval_poly(out, den, ts, tc, e, 0, err);
-    rs_expr_free(e);
     if (r == RS_OK) {
         for (i = 0; i < vals->n; i++) {
             slong k = rs_case_param_index(tc, vals->v[i].name);
@@ -97,21 +79,53 @@ static int check_linear(const fmpq_mpoly_t p, slong lo, slong hi, const rs_schem
     return r;
 }
 
-/* The coupling forces of the case: the first in force_*, the others in more_forces. */
-static slong nforces(const rs_case_struct *c)
+/* appends NAME as a parameter of the evaluation case (declared at loc) */
+static int eval_param(rs_case_struct *tc, const char *name, const rs_loc_t *loc, rs_error_t err)
 {
-    return (c->force_name != NULL ? 1 : 0) + c->nmore_forces;
+    rs_name_t *n;
+    if (rs_case_param_index(tc, name) >= 0)
+        return rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col, "'%s' is already declared", name);
+    tc->params = flint_realloc(tc->params, (tc->nparams + 1) * sizeof(rs_name_t));
+    n = &tc->params[tc->nparams++];
+    memset(n, 0, sizeof *n);
+    n->name = rs_strdup(name);
+    n->loc.file = rs_strdup(loc->file);
+    n->loc.line = loc->line;
+    n->loc.col = loc->col;
+    return RS_OK;
 }
 
-static void force_get(const rs_case_struct *c, slong f, const char **name, const char **expr, const rs_loc_t **loc)
+/* The evaluation case, built from the trees (nothing re-parsed): its
+ * parameters are the parameters, the states and the forces; `char lambda`;
+ * the case's unshifted lets (e.g. c1 = lr1^2 + li1^2 for maps over eigenvalues). */
+static int eval_case(rs_case_struct *tc, const rs_case_struct *c, rs_error_t err)
 {
-    if (c->force_name != NULL) {
-        if (f == 0) { *name = c->force_name; *expr = c->force_expr; *loc = &c->force_loc; return; }
-        f--;
+    slong i, a, j;
+    int r = RS_OK;
+    tc->path = rs_strdup(c->path);
+    for (i = 0; i < c->nparams && r == RS_OK; i++) r = eval_param(tc, c->params[i].name, &c->params[i].loc, err);
+    for (a = 0; a < 2 && r == RS_OK; a++)
+        for (j = 0; j < c->subs[a].nstates && r == RS_OK; j++)
+            r = eval_param(tc, c->subs[a].states[j].name, &c->subs[a].states[j].loc, err);
+    for (i = 0; i < c->nforces && r == RS_OK; i++) r = eval_param(tc, c->forces[i].name, &c->forces[i].loc, err);
+    for (i = 0; i < c->nlets && r == RS_OK; i++) {
+        rs_let_t *l;
+        if (c->lets[i].shifted) continue;
+        tc->lets = flint_realloc(tc->lets, (tc->nlets + 1) * sizeof(rs_let_t));
+        l = &tc->lets[tc->nlets++];
+        memset(l, 0, sizeof *l);
+        l->name = rs_strdup(c->lets[i].name);
+        l->e = rs_expr_copy(c->lets[i].e);
+        l->text = rs_strdup(c->lets[i].text);
+        l->loc.file = rs_strdup(c->lets[i].loc.file);
+        l->loc.line = c->lets[i].loc.line;
+        l->loc.col = c->lets[i].loc.col;
     }
-    *name = c->more_forces[f].name;
-    *expr = c->more_forces[f].expr;
-    *loc = &c->more_forces[f].loc;
+    if (r == RS_OK) {
+        tc->charexpr = rs_expr_new_name("lambda", 0, 0, NULL, 0, 0);
+        tc->charloc.file = rs_strdup(c->path);
+    }
+    return r;
 }
 
 /* Two subsystems integrated exactly, coupled through u = C z (rs_cosim_from_case in cosim.h):
@@ -121,10 +135,9 @@ static void force_get(const rs_case_struct *c, slong f, const char **name, const
  * its expression in the states).  u = (partner states used, in state order; then the forces). */
 static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *vals, rs_error_t err)
 {
-    char *text = dupcat("param", ""), *tmp;
     rs_case_t tc;
     rs_scheme_t ts;
-    slong i, j, a, nstate[2], base[2], fbase, n, nf = nforces(c), m, *in_var = NULL;
+    slong i, j, a, nstate[2], base[2], fbase, n, nf = c->nforces, m, *in_var = NULL;
     int r = RS_OK;
     fmpq_mpoly_t p;
     fmpq_t q, h0;
@@ -133,30 +146,10 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
                                "exact integration with co-simulation coupling needs two subsystems (found %ld)",
                                (long) c->nsubs);
-    /* a synthetic case whose parameters are the parameters, the states and the forces */
-    for (i = 0; i < c->nparams; i++) { tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->params[i].name); free(tmp); }
-    for (a = 0; a < 2; a++)
-        for (j = 0; j < c->subs[a].nstates; j++) {
-            tmp = dupcat(text, " "); free(text); text = dupcat(tmp, c->subs[a].states[j]); free(tmp);
-        }
-    for (i = 0; i < nf; i++) {
-        const char *fn, *fe;
-        const rs_loc_t *fl;
-        force_get(c, i, &fn, &fe, &fl);
-        tmp = dupcat(text, " "); free(text); text = dupcat(tmp, fn); free(tmp);
-    }
-    tmp = dupcat(text, "\nchar lambda\n"); free(text); text = tmp;
-    /* the case's named expressions (e.g. c1 = lr1^2 + li1^2 for maps over eigenvalues) */
-    for (i = 0; i < c->nlets; i++) {
-        if (c->lets[i].shifted) continue;
-        tmp = dupcat(text, "let "); free(text); text = dupcat(tmp, c->lets[i].text); free(tmp);
-        tmp = dupcat(text, "\n"); free(text); text = tmp;
-    }
     rs_case_init(tc);
     rs_scheme_init(ts);
-    r = rs_case_parse_string(tc, c->path, text, strlen(text), err);
-    free(text);
-    if (r != RS_OK) { rs_case_clear(tc); return r; }
+    r = eval_case(tc, c, err);
+    if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
     /* copy the lets so that state equations may use them */
     r = rs_scheme_build(ts, tc, err);
     if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
@@ -178,16 +171,16 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
             slong k, q2;
             int second = 0;
             for (k = 0; k < s->ndeqs; k++)
-                if (strcmp(s->deqs[k].state, s->states[j]) == 0 && s->deqs[k].order == 1) d = &s->deqs[k];
+                if (strcmp(s->deqs[k].state, s->states[j].name) == 0 && s->deqs[k].order == 1) d = &s->deqs[k];
             /* X'' = f: X' is the next state; that state's derivative is f */
             for (k = 0; k < s->ndeqs && d == NULL; k++)
-                if (s->deqs[k].order == 2 && j > 0 && strcmp(s->deqs[k].state, s->states[j - 1]) == 0) d = &s->deqs[k];
+                if (s->deqs[k].order == 2 && j > 0 && strcmp(s->deqs[k].state, s->states[j - 1].name) == 0) d = &s->deqs[k];
             for (k = 0; k < s->ndeqs; k++)
-                if (s->deqs[k].order == 2 && strcmp(s->deqs[k].state, s->states[j]) == 0) second = 1;
+                if (s->deqs[k].order == 2 && strcmp(s->deqs[k].state, s->states[j].name) == 0) second = 1;
             if (second) {
                 if (j + 1 >= s->nstates) {
                     r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
-                                        "declare the velocity state after %s", s->states[j]);
+                                        "declare the velocity state after %s", s->states[j].name);
                     break;
                 }
                 fmpq_one(fmpq_mat_entry(W, row0 + j, row0 + j + 1));
@@ -195,7 +188,7 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
             }
             if (d == NULL) {
                 r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
-                                    "expected an equation %s' = ...", s->states[j]);
+                                    "expected an equation %s' = ...", s->states[j].name);
                 break;
             }
             r = eval_linear(p, c, vals, tc, ts, d->rhs, &d->loc, err);
@@ -257,10 +250,9 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
             if (v < n) {
                 fmpq_one(fmpq_mat_entry(cs->C, i, v));
             } else {
-                const char *fn, *fe;
-                const rs_loc_t *fl;
-                force_get(c, v - n, &fn, &fe, &fl);
-                r = eval_linear(p, c, vals, tc, ts, fe, fl, err);
+                const rs_force_t *fo = &c->forces[v - n];
+                const rs_loc_t *fl = &fo->loc;
+                r = eval_linear(p, c, vals, tc, ts, fo->e, fl, err);
                 if (r == RS_OK) r = check_linear(p, base[0], fbase, ts, fl, "a coupling force", "the states", err);
                 for (j = 0; j < n && r == RS_OK; j++) {
                     lin_coeff(q, p, base[0] + j, ts);

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <flint/fmpz.h>
 #include "recstab/expr.h"
+#include "recstab/str.h"
 
 typedef struct {
     const rs_src_t *src;
@@ -76,6 +77,7 @@ static rs_expr_t *node_new(parser_t *p, rs_expr_kind_t kind, size_t at)
     rs_expr_t *e = flint_calloc(1, sizeof(rs_expr_t));
     e->kind = kind;
     fmpq_init(e->num);
+    e->file = p->src->file;
     rs_src_pos(p->src, at, &e->line, &e->col);
     return e;
 }
@@ -88,6 +90,7 @@ void rs_expr_free(rs_expr_t *e)
     rs_expr_free(e->b);
     fmpq_clear(e->num);
     flint_free(e->name);
+    flint_free(e->lit);
     flint_free(e);
 }
 
@@ -100,10 +103,8 @@ rs_expr_t *rs_expr_copy(const rs_expr_t *e)
     *c = *e;
     fmpq_init(c->num);
     fmpq_set(c->num, e->num);
-    if (e->name != NULL) {
-        c->name = flint_malloc(strlen(e->name) + 1);
-        strcpy(c->name, e->name);
-    }
+    c->name = e->name != NULL ? rs_strdup(e->name) : NULL;
+    c->lit = e->lit != NULL ? rs_strdup(e->lit) : NULL;
     c->a = rs_expr_copy(e->a);
     c->b = rs_expr_copy(e->b);
     return c;
@@ -183,6 +184,7 @@ static rs_expr_t *parse_primary(parser_t *p)
             return NULL;
         }
         p->pos++;
+        e->paren++;
         return e;
     }
     if (isdigit((unsigned char) t[p->pos]) || (t[p->pos] == '.' && isdigit((unsigned char) t[p->pos + 1]))) {
@@ -203,6 +205,7 @@ static rs_expr_t *parse_primary(parser_t *p)
         p->height = 1;
         fmpq_swap(e->num, q);
         fmpq_clear(q);
+        e->lit = rs_strndup(t + p->pos, i - p->pos);
         p->pos = i;
         if (isalpha((unsigned char) t[p->pos]) || t[p->pos] == '_') {
             perr(p, p->pos, "an operator after a number (write 2*h, not 2h)");
@@ -258,6 +261,7 @@ static rs_expr_t *parse_primary(parser_t *p)
             skip_ws(p);
             if (t[p->pos] == '+' || t[p->pos] == '-') {
                 sign = (t[p->pos] == '-') ? -1 : 1;
+                e->shifted = 2;   /* printed back as written, x[n+0] included */
                 p->pos++;
                 skip_ws(p);
                 if (!isdigit((unsigned char) t[p->pos])) {
@@ -285,7 +289,7 @@ static rs_expr_t *parse_primary(parser_t *p)
                 return NULL;
             }
             p->pos++;
-            e->shifted = 1;
+            e->shifted = e->shifted ? e->shifted : 1;
             e->shift = sign * k;
         }
         return e;

@@ -1,49 +1,78 @@
-/* builder.c -- subsystems, integrators and couplings expanded into
- * difference equations (see builder.h). */
-#include <ctype.h>
-#include <stdarg.h>
+/* builder.c -- subsystems, integrators and couplings lowered into unknowns
+ * and difference equations (see builder.h).  The equations are built as
+ * expression trees: the user's right-hand sides are copied with every name
+ * resolved to a sequence, so each node keeps the user's file:line:col; the
+ * nodes the integration formulas add carry the `integrate` statement's. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "lower/builder.h"
 
-static void skip_ws(const char *t, size_t *i)
+#define MAX_STATES 64
+
+typedef struct {
+    rs_case_struct *c;
+    slong K;               /* iterations */
+    int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel */
+    slong first, second;   /* gauss-seidel order */
+    slong *vel;            /* per subsystem, per state: index of its velocity (pair) or -1 */
+    int *pair;             /* per subsystem: integrator works on (x, v) pairs */
+} gen_t;
+
+/* where generated nodes point */
+typedef struct { const char *file; int line, col; } pos_t;
+
+static pos_t pos_of(const rs_loc_t *l) { pos_t p = {l->file, l->line, l->col}; return p; }
+static pos_t pos_node(const rs_expr_t *e) { pos_t p = {e->file, e->line, e->col}; return p; }
+
+static rs_expr_t *num(slong v, pos_t p) { return rs_expr_new_num(v, p.file, p.line, p.col); }
+static rs_expr_t *op(rs_expr_kind_t k, rs_expr_t *a, rs_expr_t *b, pos_t p)
 {
-    while (t[*i] == ' ' || t[*i] == '\t') (*i)++;
+    return rs_expr_new_op(k, a, b, p.file, p.line, p.col);
+}
+static rs_expr_t *P(rs_expr_t *e) { return rs_expr_paren(e); }
+static rs_expr_t *copy(const rs_expr_t *e) { return rs_expr_copy(e); }
+
+/* NAME[n+shift] */
+static rs_expr_t *seq(const char *name, slong shift, pos_t p)
+{
+    return rs_expr_new_name(name, 1, shift, p.file, p.line, p.col);
 }
 
-/* a word: letters, digits, '_', '-', '.', '/' (method names, numbers) */
-static char *read_token(const char *t, size_t *i)
+/* the unknown of state s in iterate j (the last iterate is s itself) */
+static void var_name(char *buf, size_t len, const char *s, slong j, slong K)
 {
-    size_t j;
-    skip_ws(t, i);
-    j = *i;
-    while (t[j] && t[j] != ' ' && t[j] != '\t' && t[j] != ',') j++;
-    if (j == *i) return NULL;
-    {
-        char *s = rs_strndup(t + *i, j - *i);
-        *i = j;
-        return s;
-    }
+    if (j == K) snprintf(buf, len, "%s", s);
+    else snprintf(buf, len, "%s_it%ld", s, (long) j);
 }
 
-static int at(rs_error_t err, const rs_src_t *src, size_t i, const char *fmt, const char *a)
+/* the unknown of the derivative of s in iterate j */
+static void dvar_name(char *buf, size_t len, const char *s, slong j, slong K)
 {
-    int line, col;
-    rs_src_pos(src, i, &line, &col);
-    return rs_error_set_at(err, RS_ERR_INPUT, src->file, line, col, fmt, a);
+    if (j == K) snprintf(buf, len, "%s_dot", s);
+    else snprintf(buf, len, "%s_dot_it%ld", s, (long) j);
 }
 
-static void set_loc(rs_loc_t *l, const rs_src_t *src, size_t i)
+static rs_expr_t *var(const char *s, slong j, slong K, slong shift, pos_t p)
 {
-    l->file = rs_strdup(src->file);
-    rs_src_pos(src, i, &l->line, &l->col);
+    char b[96];
+    var_name(b, sizeof b, s, j, K);
+    return seq(b, shift, p);
 }
 
-int rs_builder_is_keyword(const char *w)
+static rs_expr_t *dvar(const char *s, slong j, slong K, slong shift, pos_t p)
 {
-    return strcmp(w, "subsystem") == 0 || strcmp(w, "integrate") == 0 || strcmp(w, "couple") == 0
-        || strcmp(w, "iterations") == 0 || strcmp(w, "extrapolate") == 0 || strcmp(w, "coupling") == 0;
+    char b[96];
+    dvar_name(b, sizeof b, s, j, K);
+    return seq(b, shift, p);
+}
+
+/* s_dot[n+shift] */
+static rs_expr_t *dot(const char *s, slong shift, pos_t p)
+{
+    char b[96];
+    snprintf(b, sizeof b, "%s_dot", s);
+    return seq(b, shift, p);
 }
 
 static slong sub_index(const rs_case_struct *c, const char *name)
@@ -54,300 +83,23 @@ static slong sub_index(const rs_case_struct *c, const char *name)
     return -1;
 }
 
-static int valid_ident(const char *s)
+static slong state_index(const rs_subsystem_t *s, const char *name)
 {
-    if (!(isalpha((unsigned char) *s) || *s == '_')) return 0;
-    for (; *s; s++)
-        if (!(isalnum((unsigned char) *s) || *s == '_')) return 0;
-    return 1;
-}
-
-static const char *const methods[] = {"euler-forward", "euler-backward", "trapezoidal", "theta", "bdf2", "bdf3",
-                                      "central-difference", "newmark", "exact", NULL};
-
-int rs_builder_statement(rs_case_t c, const char *kw, const rs_src_t *src, size_t i, rs_error_t err)
-{
-    const char *t = src->text;
-    if (t[i] == '\'') {
-        /* NAME' = EXPR or NAME'' = EXPR inside the last subsystem block */
-        rs_subsystem_t *s;
-        rs_deq_t *d;
-        int order = 1;
-        size_t start;
-        rs_expr_t *e = NULL;
-        int r;
-        if (c->nsubs == 0)
-            return at(err, src, 0, "expected a `subsystem` statement before the state equation %s'", kw);
-        s = &c->subs[c->nsubs - 1];
-        i++;
-        if (t[i] == '\'') { order = 2; i++; }
-        skip_ws(t, &i);
-        if (t[i] != '=') return at(err, src, i, "expected '=' after %s' in a state equation", kw);
-        i++;
-        skip_ws(t, &i);
-        start = i;
-        r = rs_expr_parse_all(&e, &(rs_src_t){src->file, t + start, 0, 0, src->linemap ? src->linemap + start : NULL,
-                                             src->colmap ? src->colmap + start : NULL}, err);
-        if (r != RS_OK) return r;
-        rs_expr_free(e);
-        s->deqs = flint_realloc(s->deqs, (s->ndeqs + 1) * sizeof(rs_deq_t));
-        d = &s->deqs[s->ndeqs++];
-        memset(d, 0, sizeof *d);
-        d->state = rs_strdup(kw);
-        d->order = order;
-        d->rhs = rs_strdup(t + start);
-        set_loc(&d->loc, src, 0);
-        return RS_OK;
-    }
-    if (strcmp(kw, "subsystem") == 0) {
-        char *name = read_token(t, &i), *w;
-        rs_subsystem_t *s;
-        if (name == NULL || !valid_ident(name)) {
-            flint_free(name);
-            return at(err, src, i, "expected a subsystem name, found '%s'", t + i);
-        }
-        if (sub_index(c, name) >= 0) {
-            at(err, src, i, "subsystem '%s' is already declared", name);
-            flint_free(name);
-            return err->code;
-        }
-        w = read_token(t, &i);
-        if (w == NULL || strcmp(w, "state") != 0) {
-            flint_free(name); flint_free(w);
-            return at(err, src, i, "expected 'state NAME ...' after the subsystem name, found '%s'", t + i);
-        }
-        flint_free(w);
-        c->subs = flint_realloc(c->subs, (c->nsubs + 1) * sizeof(rs_subsystem_t));
-        s = &c->subs[c->nsubs++];
-        memset(s, 0, sizeof *s);
-        s->name = name;
-        set_loc(&s->loc, src, 0);
-        for (;;) {
-            size_t p0;
-            skip_ws(t, &i);
-            if (t[i] == ',') { i++; continue; }
-            if (t[i] == '\0') break;
-            p0 = i;
-            w = read_token(t, &i);
-            if (w == NULL || !valid_ident(w)) {
-                flint_free(w);
-                return at(err, src, p0, "expected a state name, found '%s'", t + p0);
-            }
-            s->states = flint_realloc(s->states, (s->nstates + 1) * sizeof(char *));
-            s->states[s->nstates++] = w;
-        }
-        if (s->nstates == 0) return at(err, src, i, "expected at least one state name%s", "");
-        return RS_OK;
-    }
-    if (strcmp(kw, "integrate") == 0) {
-        size_t p0;
-        char *name = read_token(t, &i), *m;
-        slong k, idx;
-        int known = 0;
-        rs_subsystem_t *s;
-        if (name == NULL || (idx = sub_index(c, name)) < 0) {
-            at(err, src, i, "expected the name of a declared subsystem after integrate, found '%s'", name ? name : "");
-            flint_free(name);
-            return err->code;
-        }
-        flint_free(name);
-        s = &c->subs[idx];
-        if (s->method != NULL) return at(err, src, 0, "subsystem '%s' already has an integrator", s->name);
-        p0 = i;
-        m = read_token(t, &i);
-        for (k = 0; m && methods[k]; k++) if (strcmp(m, methods[k]) == 0) known = 1;
-        if (!known) {
-            flint_free(m);
-            skip_ws(t, &p0);
-            return at(err, src, p0, "expected an integrator (euler-forward, euler-backward, trapezoidal, theta T, "
-                      "bdf2, bdf3, central-difference, newmark B G, exact), found '%s'", t + p0);
-        }
-        s->method = m;
-        set_loc(&s->intloc, src, p0);
-        if (strcmp(m, "theta") == 0 || strcmp(m, "newmark") == 0) s->arg1 = read_token(t, &i);
-        if (strcmp(m, "newmark") == 0) s->arg2 = read_token(t, &i);
-        skip_ws(t, &i);
-        if ((strcmp(m, "theta") == 0 && s->arg1 == NULL) || (strcmp(m, "newmark") == 0 && s->arg2 == NULL))
-            return at(err, src, i, "expected the method's parameters, then the step, found '%s'", t + i);
-        if (t[i] == '\0') return at(err, src, i, "expected the step (an expression such as h) after the method%s", "");
-        s->step = rs_strdup(t + i);
-        {
-            /* the step must be an expression */
-            rs_expr_t *e = NULL;
-            rs_src_t sub = {src->file, t + i, 0, 0, src->linemap ? src->linemap + i : NULL,
-                            src->colmap ? src->colmap + i : NULL};
-            int r = rs_expr_parse_all(&e, &sub, err);
-            rs_expr_free(e);
-            if (r != RS_OK) return r;
-        }
-        return RS_OK;
-    }
-    if (strcmp(kw, "couple") == 0) {
-        size_t p0;
-        char *w;
-        if (c->couple != NULL) return at(err, src, 0, "a case has one couple statement%s", "");
-        skip_ws(t, &i);
-        p0 = i;
-        w = read_token(t, &i);
-        set_loc(&c->couple_loc, src, p0);
-        if (w && (strcmp(w, "jacobi") == 0 || strcmp(w, "monolithic") == 0)) {
-            c->couple = w;
-        } else if (w && strcmp(w, "gauss-seidel") == 0) {
-            c->couple = w;
-            c->couple_first = read_token(t, &i);
-            c->couple_second = read_token(t, &i);
-            if (c->couple_second == NULL)
-                return at(err, src, i, "expected two subsystem names after gauss-seidel (the first is "
-                          "integrated first), found '%s'", t + i);
-        } else if (w && (strcmp(w, "explicit") == 0 || strcmp(w, "implicit") == 0)) {
-            char *o = read_token(t, &i), *k;
-            c->couple = w;
-            k = read_token(t, &i);
-            if (o == NULL || strcmp(o, "order") != 0 || k == NULL || strlen(k) > 2 || !isdigit((unsigned char) k[0])) {
-                flint_free(o); flint_free(k);
-                return at(err, src, i, "expected 'order K' (K = 0, 1, 2) after explicit/implicit%s", "");
-            }
-            c->couple_order = atol(k);
-            flint_free(o); flint_free(k);
-        } else {
-            flint_free(w);
-            return at(err, src, p0, "expected jacobi, gauss-seidel S1 S2, monolithic, explicit order K or "
-                      "implicit order K, found '%s'", t + p0);
-        }
-        skip_ws(t, &i);
-        if (t[i] != '\0') return at(err, src, i, "expected end of line, found '%s'", t + i);
-        return RS_OK;
-    }
-    if (strcmp(kw, "iterations") == 0 || strcmp(kw, "extrapolate") == 0) {
-        char *w;
-        size_t p0;
-        long k;
-        if (strcmp(kw, "extrapolate") == 0) {
-            w = read_token(t, &i);
-            if (w == NULL || strcmp(w, "order") != 0) {
-                flint_free(w);
-                return at(err, src, i, "expected 'order K' after extrapolate%s", "");
-            }
-            flint_free(w);
-        }
-        skip_ws(t, &i);
-        p0 = i;
-        w = read_token(t, &i);
-        if (w == NULL || strspn(w, "0123456789") != strlen(w) || strlen(w) > 3) {
-            flint_free(w);
-            return at(err, src, p0, "expected a small non-negative integer, found '%s'", t + p0);
-        }
-        k = atol(w);
-        flint_free(w);
-        if (strcmp(kw, "iterations") == 0) {
-            if (k > RS_BUILDER_MAX_ITERATIONS) return at(err, src, p0, "too many iterations (limit 16)%s", "");
-            c->iterations = k;
-        } else {
-            if (k > RS_BUILDER_MAX_ORDER) return at(err, src, p0, "extrapolation order too high (limit 6)%s", "");
-            c->extrapolate = k;
-        }
-        return RS_OK;
-    }
-    if (strcmp(kw, "coupling") == 0) {
-        char *w = read_token(t, &i), *name;
-        size_t p0;
-        if (w == NULL || strcmp(w, "force") != 0) {
-            flint_free(w);
-            return at(err, src, i, "expected 'coupling force NAME = EXPR'%s", "");
-        }
-        flint_free(w);
-        skip_ws(t, &i);
-        p0 = i;
-        while (isalnum((unsigned char) t[i]) || t[i] == '_') i++;
-        if (i == p0) return at(err, src, p0, "expected the force's name, found '%s'", t + p0);
-        name = rs_strndup(t + p0, i - p0);
-        {
-            /* several coupling forces (vector coupling, src/analysis/analysis_cosim.c): the first in
-             * force_name/force_expr/force_loc, the others in more_forces */
-            slong k;
-            int dup = c->force_name != NULL && strcmp(c->force_name, name) == 0;
-            for (k = 0; k < c->nmore_forces; k++)
-                if (strcmp(c->more_forces[k].name, name) == 0) dup = 1;
-            if (dup) {
-                int r = at(err, src, p0, "the coupling force '%s' is already defined", name);
-                flint_free(name);
-                return r;
-            }
-        }
-        skip_ws(t, &i);
-        if (t[i] != '=') { flint_free(name); return at(err, src, i, "expected '=' after the force's name%s", ""); }
-        i++;
-        skip_ws(t, &i);
-        if (c->force_name == NULL) {
-            c->force_name = name;
-            c->force_expr = rs_strdup(t + i);
-            set_loc(&c->force_loc, src, p0);
-        } else {
-            rs_force_t *f;
-            c->more_forces = flint_realloc(c->more_forces, (c->nmore_forces + 1) * sizeof(rs_force_t));
-            f = &c->more_forces[c->nmore_forces++];
-            f->name = name;
-            f->expr = rs_strdup(t + i);
-            set_loc(&f->loc, src, p0);
-        }
-        return RS_OK;
-    }
-    return at(err, src, 0, "unknown builder statement '%s'", kw);
-}
-
-/* ---- expansion ---------------------------------------------------------------- */
-
-typedef struct { char *s; size_t len, cap; } sb_t;
-
-static void sb_add(sb_t *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void sb_add(sb_t *b, const char *fmt, ...)
-{
-    va_list ap;
-    int n;
-    va_start(ap, fmt);
-    n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (b->len + (size_t) n + 1 > b->cap) {
-        b->cap = 2 * (b->len + (size_t) n + 1);
-        b->s = flint_realloc(b->s, b->cap);
-    }
-    va_start(ap, fmt);
-    vsnprintf(b->s + b->len, (size_t) n + 1, fmt, ap);
-    va_end(ap);
-    b->len += (size_t) n;
-}
-
-typedef struct {
-    const rs_case_struct *c;
-    slong K;               /* iterations */
-    int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel */
-    slong first, second;   /* gauss-seidel order */
-    slong *vel;            /* per subsystem, per state: index of its velocity (pair) or -1 */
-    int *pair;             /* per subsystem: integrator works on (x, v) pairs */
-} gen_t;
-
-static int is_pos(const gen_t *g, slong a, slong k) { return g->pair[a] && g->vel[a * 64 + k] >= 0; }
-
-static void var(sb_t *b, const char *s, slong j, slong K)
-{
-    if (j == K) sb_add(b, "%s", s);
-    else sb_add(b, "%s_it%ld", s, (long) j);
-}
-
-static void dvar(sb_t *b, const char *s, slong j, slong K)
-{
-    if (j == K) sb_add(b, "%s_dot", s);
-    else sb_add(b, "%s_dot_it%ld", s, (long) j);
+    slong k;
+    for (k = 0; k < s->nstates; k++)
+        if (strcmp(s->states[k].name, name) == 0) return k;
+    return -1;
 }
 
 static int find_state(const rs_case_struct *c, const char *name, slong *a, slong *k)
 {
-    slong i, j;
+    slong i;
     for (i = 0; i < c->nsubs; i++)
-        for (j = 0; j < c->subs[i].nstates; j++)
-            if (strcmp(c->subs[i].states[j], name) == 0) { *a = i; *k = j; return 1; }
+        if ((*k = state_index(&c->subs[i], name)) >= 0) { *a = i; return 1; }
     return 0;
 }
+
+static int is_pos(const gen_t *g, slong a, slong k) { return g->pair[a] && g->vel[a * MAX_STATES + k] >= 0; }
 
 /* binomial coefficients of the extrapolating polynomial through
  * n, n-1, ..., n-K evaluated at n+1: (-1)^i C(K+1, i+1) */
@@ -359,76 +111,84 @@ static slong extrap_coeff(slong K, slong i)
 }
 
 /* partner state p as seen by subsystem a in iterate j */
-static void partner(sb_t *b, const gen_t *g, const char *p, slong a, slong j)
+static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong j, pos_t at)
 {
     int delayed;
-    const rs_case_struct *c = g->c;
-    if (g->kind == 0) { var(b, p, j, g->K); sb_add(b, "[n+1]"); return; }
+    if (g->kind == 0) return var(p, j, g->K, 1, at);
     delayed = (g->kind == 1) || (g->kind == 2 && a == g->first);
     if (j == 0 && delayed) {
-        slong K = c->extrapolate < 0 ? 0 : c->extrapolate, i;
-        if (K == 0) { sb_add(b, "%s[n]", p); return; }
-        sb_add(b, "(");
-        for (i = 0; i <= K; i++) {
+        slong K = g->c->extrapolate < 0 ? 0 : g->c->extrapolate, i;
+        rs_expr_t *e;
+        if (K == 0) return seq(p, 0, at);
+        e = op(RS_EXPR_MUL, num(extrap_coeff(K, 0), at), seq(p, 0, at), at);
+        for (i = 1; i <= K; i++) {
             slong cf = extrap_coeff(K, i);
-            sb_add(b, "%s%ld*%s[n-%ld]", i == 0 ? "" : (cf < 0 ? " - " : " + "), (long) (cf < 0 && i > 0 ? -cf : cf),
-                   p, (long) i);
+            e = op(cf < 0 ? RS_EXPR_SUB : RS_EXPR_ADD, e,
+                   op(RS_EXPR_MUL, num(cf < 0 ? -cf : cf, at), seq(p, -i, at), at), at);
         }
-        sb_add(b, ")");
-        return;
+        return P(e);
     }
-    if (j == 0) { var(b, p, 0, g->K); sb_add(b, "[n+1]"); return; }
-    var(b, p, delayed ? j - 1 : j, g->K);
-    sb_add(b, "[n+1]");
+    if (j == 0) return var(p, 0, g->K, 1, at);
+    return var(p, delayed ? j - 1 : j, g->K, 1, at);
 }
 
-/* rhs of subsystem a, iterate j, with every name resolved to a sequence */
-static int subst(sb_t *b, const gen_t *g, slong a, slong j, const rs_deq_t *d, rs_error_t err)
+/* a copy of the right-hand side e of subsystem a, iterate j, with every name
+ * resolved to a sequence; NULL and err set on an error (at the node) */
+static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
 {
     const rs_case_struct *c = g->c;
-    const char *t = d->rhs;
-    size_t i = 0;
-    while (t[i]) {
-        if (isalpha((unsigned char) t[i]) || t[i] == '_') {
-            size_t k = i;
-            char name[80];
-            slong sa, sk, li;
-            while (isalnum((unsigned char) t[k]) || t[k] == '_') k++;
-            snprintf(name, sizeof name, "%.*s", (int) (k - i > 70 ? 70 : k - i), t + i);
-            {
-                size_t q = k;
-                while (t[q] == ' ') q++;
-                if (t[q] == '[')
-                    return rs_error_set_at(err, RS_ERR_INPUT, d->loc.file, d->loc.line, d->loc.col,
-                                           "state equations are written without shifts; found '%s['", name);
-            }
-            if (find_state(c, name, &sa, &sk)) {
-                if (sa == a) { var(b, name, j, g->K); sb_add(b, "[n+1]"); }
-                else partner(b, g, name, a, j);
-            } else if ((li = rs_case_let_index(c, name)) >= 0) {
-                if (c->lets[li].shifted) sb_add(b, "%s[n+1]", name);
-                else sb_add(b, "%s", name);
-            } else if (rs_case_param_index(c, name) >= 0) {
-                sb_add(b, "%s", name);
-            } else {
-                return rs_error_set_at(err, RS_ERR_INPUT, d->loc.file, d->loc.line, d->loc.col,
-                                       "unknown name '%s' in the state equation (expected a state, param or let)",
-                                       name);
-            }
-            i = k;
-        } else if (isdigit((unsigned char) t[i]) || t[i] == '.') {
-            /* numbers (including exponents like 1e-3) pass through */
-            size_t k = i;
-            while (isalnum((unsigned char) t[k]) || t[k] == '.'
-                   || ((t[k] == '-' || t[k] == '+') && k > i && (t[k - 1] == 'e' || t[k - 1] == 'E'))) k++;
-            sb_add(b, "%.*s", (int) (k - i), t + i);
-            i = k;
-        } else {
-            sb_add(b, "%c", t[i]);
-            i++;
+    rs_expr_t *out;
+    if (e->kind == RS_EXPR_NAME || e->kind == RS_EXPR_CALL) {
+        slong sa, sk, li;
+        pos_t at = pos_node(e);
+        if (e->kind == RS_EXPR_NAME && e->shifted) {
+            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                            "state equations are written without shifts; found '%s['", e->name);
+            return NULL;
         }
+        if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
+            out = sa == a ? var(e->name, j, g->K, 1, at) : partner(g, e->name, a, j, at);
+        else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
+            out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+        else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
+            out = rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+        else {
+            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                            "unknown name '%s' in the state equation (expected a state, param or let)", e->name);
+            return NULL;
+        }
+        out->paren += e->paren;
+        return out;
     }
-    return RS_OK;
+    if (e->kind == RS_EXPR_NUM) return copy(e);
+    out = rs_expr_new_op(e->kind, NULL, NULL, e->file, e->line, e->col);
+    out->paren = e->paren;
+    if ((out->a = subst(g, a, j, e->a, err)) == NULL
+        || (e->b != NULL && (out->b = subst(g, a, j, e->b, err)) == NULL)) {
+        rs_expr_free(out);
+        return NULL;
+    }
+    return out;
+}
+
+/* appends the generated equation lhs = rhs */
+static void add_eq(rs_case_struct *c, rs_expr_t *lhs, rs_expr_t *rhs, const rs_loc_t *loc)
+{
+    rs_eq_t *q;
+    char *l = rs_expr_str(lhs), *r = rs_expr_str(rhs);
+    c->eqs = flint_realloc(c->eqs, (c->neqs + 1) * sizeof(rs_eq_t));
+    q = &c->eqs[c->neqs++];
+    memset(q, 0, sizeof *q);
+    q->lhs = lhs;
+    q->rhs = rhs;
+    q->loc.file = rs_strdup(loc->file);
+    q->loc.line = loc->line;
+    q->loc.col = loc->col;
+    q->text = flint_malloc(strlen(l) + strlen(r) + 4);
+    sprintf(q->text, "%s = %s", l, r);
+    flint_free(l);
+    flint_free(r);
+    q->generated = 1;
 }
 
 int rs_builder_is_exact(const rs_case_t c)
@@ -439,215 +199,305 @@ int rs_builder_is_exact(const rs_case_t c)
     return 0;
 }
 
+static int err_at(rs_error_t err, int code, const rs_loc_t *l, int col, const char *fmt, const char *a)
+{
+    return rs_error_set_at(err, code, l->file, l->line, col > 0 ? col : l->col, fmt, a);
+}
+
+/* every subsystem integrated; exact integration all or nothing.  *exact: the
+ * case is co-simulation (lowered by analysis_cosim.c, not into equations) */
+static int check_subsystems(const rs_case_struct *c, int *exact, rs_error_t err)
+{
+    slong a;
+    char msg[64];
+    for (a = 0; a < c->nsubs; a++) {
+        if (c->subs[a].method == NULL)
+            return err_at(err, RS_ERR_INPUT, &c->subs[a].loc, 0, "expected `integrate %s METHOD STEP` for this subsystem",
+                          c->subs[a].name);
+        snprintf(msg, sizeof msg, "%d", MAX_STATES);
+        if (c->subs[a].nstates > MAX_STATES)
+            return err_at(err, RS_ERR_LIMIT, &c->subs[a].loc, 1, "too many states in one subsystem (limit %s)", msg);
+    }
+    *exact = rs_builder_is_exact(c);
+    if (!*exact) return RS_OK;
+    for (a = 0; a < c->nsubs; a++)
+        if (strcmp(c->subs[a].method, "exact") != 0)
+            return err_at(err, RS_ERR_INPUT, &c->subs[a].intloc, 0,
+                          "exact integration is supported when every subsystem uses it (found %s)", c->subs[a].method);
+    /* coupling forces are optional: displacement coupling uses the partner's states */
+    if (c->couple == NULL || !(strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
+        return err_at(err, RS_ERR_INPUT, &c->subs[0].loc, 1,
+                      "exact integration needs `couple explicit|implicit order K` (and the coupling: "
+                      "`coupling force NAME = EXPR` lines and/or the partner's states)%s", "");
+    return RS_OK;
+}
+
+static int coupling_kind(gen_t *g, const rs_case_struct *c, rs_error_t err)
+{
+    if (c->couple && (strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
+        return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0,
+                      "applied-force coupling (couple %s order K) needs `integrate ... exact`", c->couple);
+    if (c->nsubs == 1 || (c->couple && strcmp(c->couple, "monolithic") == 0)) g->kind = 0;
+    else if (c->couple == NULL) {
+        char msg[256];
+        snprintf(msg, sizeof msg, "expected a `couple` statement (jacobi, gauss-seidel S1 S2, monolithic) for %ld "
+                 "subsystems", (long) c->nsubs);
+        return err_at(err, RS_ERR_INPUT, &c->subs[0].loc, 1, "%s", msg);
+    } else if (strcmp(c->couple, "jacobi") == 0) g->kind = 1;
+    else {
+        g->kind = 2;
+        g->first = sub_index(c, c->couple_first);
+        g->second = sub_index(c, c->couple_second);
+        if (g->first < 0 || g->second < 0 || g->first == g->second || c->nsubs != 2)
+            return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "gauss-seidel needs the names of the two subsystems, found '%s'",
+                          c->couple_first ? c->couple_first : "");
+    }
+    g->K = g->kind == 0 ? 0 : c->iterations;
+    return RS_OK;
+}
+
+/* the (position, velocity) pairs of subsystem a: X'' = F lines make X' = V
+ * with V the next state; X' = V with V a state (compared as trees, so
+ * X' = (V) too) pairs them as well */
+static int find_pairs(gen_t *g, slong a, rs_error_t err)
+{
+    const rs_subsystem_t *s = &g->c->subs[a];
+    slong *vel = g->vel + a * MAX_STATES, j, k, si;
+    char msg[256];
+    for (k = 0; k < MAX_STATES; k++) vel[k] = -1;
+    g->pair[a] = strcmp(s->method, "newmark") == 0 || strcmp(s->method, "central-difference") == 0;
+    for (j = 0; j < s->ndeqs; j++) {
+        const rs_deq_t *d = &s->deqs[j];
+        if ((si = state_index(s, d->state)) < 0) {
+            snprintf(msg, sizeof msg, "'%s' is not a state of subsystem %s", d->state, s->name);
+            return err_at(err, RS_ERR_INPUT, &d->loc, 1, "%s", msg);
+        }
+        if (d->order == 2) {
+            if (si + 1 >= s->nstates)
+                return err_at(err, RS_ERR_INPUT, &d->loc, 1, "declare the velocity state right after %s (subsystem ... "
+                              "state X V) for a second-order equation", d->state);
+            vel[si] = si + 1;
+        }
+    }
+    for (j = 0; j < s->ndeqs; j++) {
+        const rs_expr_t *e = s->deqs[j].rhs;
+        if (s->deqs[j].order != 1 || e->kind != RS_EXPR_NAME || e->shifted) continue;
+        si = state_index(s, s->deqs[j].state);
+        k = state_index(s, e->name);
+        if (k >= 0 && k != si) vel[si] = k;
+    }
+    if (!g->pair[a]) return RS_OK;
+    if (g->K > 0) return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations with %s are not supported", s->method);
+    for (k = 0; k < s->nstates; k++) {
+        int isvel = 0;
+        slong q;
+        for (q = 0; q < s->nstates; q++) if (vel[q] == k) isvel = 1;
+        if (vel[k] < 0 && !isvel) {
+            snprintf(msg, sizeof msg, "%s integrates (position, velocity) pairs: write X'' = ... or X' = V for "
+                     "every position (state %s)", s->method, s->states[k].name);
+            return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "%s", msg);
+        }
+    }
+    return RS_OK;
+}
+
+/* the user's declaration of name (param, unknown or let), or NULL */
+static const rs_loc_t *user_decl(const rs_case_struct *c, const char *name)
+{
+    slong i;
+    if ((i = rs_case_param_index(c, name)) >= 0) return &c->params[i].loc;
+    if ((i = rs_case_unknown_index(c, name)) >= 0) return &c->unknowns[i].loc;
+    if ((i = rs_case_let_index(c, name)) >= 0) return &c->lets[i].loc;
+    return NULL;
+}
+
+/* appends the generated unknown name (for state st of subsystem s): an
+ * error at the user's declaration when the user took that name */
+static int add_unknown(rs_case_struct *c, const char *name, const rs_subsystem_t *s, const rs_name_t *st,
+                       rs_error_t err)
+{
+    const rs_loc_t *u;
+    rs_name_t *n;
+    if (rs_name_is_reserved(name))
+        return err_at(err, RS_ERR_INPUT, &st->loc, 0,
+                      "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
+    if ((u = user_decl(c, name)) != NULL) {
+        slong i = rs_case_unknown_index(c, name);
+        if (i >= 0 && c->unknowns[i].generated)   /* two subsystems with one state name */
+            return err_at(err, RS_ERR_INPUT, &st->loc, 0, "'%s' is already declared", name);
+        return rs_error_set_at(err, RS_ERR_INPUT, u->file, u->line, u->col,
+                               "'%s' is also a name the builders generate (for state %s of subsystem %s); choose "
+                               "another name", name, st->name, s->name);
+    }
+    if (c->nparams + c->nunknowns + c->nlets >= RS_CASE_MAX_NAMES)
+        return err_at(err, RS_ERR_LIMIT, &st->loc, 0, "too many names (limit %s)", "256");
+    c->unknowns = flint_realloc(c->unknowns, (c->nunknowns + 1) * sizeof(rs_name_t));
+    n = &c->unknowns[c->nunknowns++];
+    n->name = rs_strdup(name);
+    n->loc.file = rs_strdup(st->loc.file);
+    n->loc.line = st->loc.line;
+    n->loc.col = st->loc.col;
+    n->generated = 1;
+    if (c->unknown_loc.file == NULL) {
+        c->unknown_loc.file = rs_strdup(st->loc.file);
+        c->unknown_loc.line = st->loc.line;
+        c->unknown_loc.col = st->loc.col;
+    }
+    return RS_OK;
+}
+
+/* every state (and the derivative of each state that is not a position of
+ * a pair) in every iterate */
+static int gen_unknowns(const gen_t *g, rs_error_t err)
+{
+    rs_case_struct *c = g->c;
+    slong a, k, j;
+    char b[96];
+    int r = RS_OK;
+    for (a = 0; a < c->nsubs && r == RS_OK; a++) {
+        const rs_subsystem_t *s = &c->subs[a];
+        for (k = 0; k < s->nstates && r == RS_OK; k++)
+            for (j = 0; j <= g->K && r == RS_OK; j++) {
+                var_name(b, sizeof b, s->states[k].name, j, g->K);
+                r = add_unknown(c, b, s, &s->states[k], err);
+                if (r == RS_OK && !is_pos(g, a, k)) {
+                    dvar_name(b, sizeof b, s->states[k].name, j, g->K);
+                    r = add_unknown(c, b, s, &s->states[k], err);
+                }
+            }
+    }
+    return r;
+}
+
+/* the integration formula of a (position x, velocity v) pair */
+static void pair_formula(rs_case_struct *c, const rs_subsystem_t *s, const char *x, const char *v)
+{
+    pos_t p = pos_of(&s->intloc);
+    const rs_expr_t *h = s->step;
+    if (strcmp(s->method, "newmark") == 0) {
+        /* x[n+1] = x[n] + (h)*v[n] + (h)^2*((1/2 - (B))*v_dot[n] + (B)*v_dot[n+1]) */
+        rs_expr_t *acc = P(op(RS_EXPR_ADD,
+                              op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(s->arg1)), p)),
+                                 dot(v, 0, p), p),
+                              op(RS_EXPR_MUL, P(copy(s->arg1)), dot(v, 1, p), p), p));
+        add_eq(c, seq(x, 1, p),
+               op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
+                  op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
+        /* v[n+1] = v[n] + (h)*((1 - (G))*v_dot[n] + (G)*v_dot[n+1]) */
+        acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(s->arg2)), p)), dot(v, 0, p), p),
+                   op(RS_EXPR_MUL, P(copy(s->arg2)), dot(v, 1, p), p), p));
+        add_eq(c, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
+    } else {
+        /* central difference: x[n+1] - 2*x[n] + x[n-1] = (h)^2*v_dot[n], 2*(h)*v[n] = x[n+1] - x[n-1] */
+        add_eq(c, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
+                     seq(x, -1, p), p),
+               op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), dot(v, 0, p), p), &s->intloc);
+        add_eq(c, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), seq(v, 0, p), p),
+               op(RS_EXPR_SUB, seq(x, 1, p), seq(x, -1, p), p), &s->intloc);
+    }
+}
+
+/* the one-step integration formula of state x in iterate j:
+ * X[n+1] - x[n] = ... with X the iterate's unknown, DX its derivative */
+static void formula(rs_case_struct *c, const gen_t *g, const rs_subsystem_t *s, const char *x, slong j)
+{
+    pos_t p = pos_of(&s->intloc);
+    const char *m = s->method;
+    rs_expr_t *X = var(x, j, g->K, 1, p), *DX = dvar(x, j, g->K, 1, p), *h = P(copy(s->step));
+    if (strcmp(m, "euler-forward") == 0 || strcmp(m, "euler-backward") == 0) {
+        if (strcmp(m, "euler-forward") == 0) { rs_expr_free(DX); DX = dot(x, 0, p); }
+        add_eq(c, op(RS_EXPR_SUB, X, seq(x, 0, p), p), op(RS_EXPR_MUL, h, DX, p), &s->intloc);
+    } else if (strcmp(m, "trapezoidal") == 0 || strcmp(m, "theta") == 0) {
+        /* (h)*((1 - (T))*x_dot[n] + (T)*DX[n+1]), T = 1/2 for the trapezoidal rule */
+        rs_expr_t *T1, *T2;
+        if (strcmp(m, "theta") == 0) { T1 = copy(s->arg1); T2 = copy(s->arg1); }
+        else { T1 = op(RS_EXPR_DIV, num(1, p), num(2, p), p); T2 = op(RS_EXPR_DIV, num(1, p), num(2, p), p); }
+        add_eq(c, op(RS_EXPR_SUB, X, seq(x, 0, p), p),
+               op(RS_EXPR_MUL, h, P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(T1), p)), dot(x, 0, p), p),
+                                       op(RS_EXPR_MUL, P(T2), DX, p), p)), p), &s->intloc);
+    } else if (strcmp(m, "bdf2") == 0) {
+        /* X[n+1]*3 - 4*x[n] + x[n-1] = 2*(h)*DX[n+1] */
+        add_eq(c, op(RS_EXPR_ADD, op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(3, p), p),
+                                     op(RS_EXPR_MUL, num(4, p), seq(x, 0, p), p), p), seq(x, -1, p), p),
+               op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), h, p), DX, p), &s->intloc);
+    } else {
+        /* bdf3: X[n+1]*11 - 18*x[n] + 9*x[n-1] - 2*x[n-2] = 6*(h)*DX[n+1] */
+        rs_expr_t *l = op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(11, p), p), op(RS_EXPR_MUL, num(18, p), seq(x, 0, p), p), p);
+        l = op(RS_EXPR_ADD, l, op(RS_EXPR_MUL, num(9, p), seq(x, -1, p), p), p);
+        l = op(RS_EXPR_SUB, l, op(RS_EXPR_MUL, num(2, p), seq(x, -2, p), p), p);
+        add_eq(c, l, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(6, p), h, p), DX, p), &s->intloc);
+    }
+}
+
+/* the state equation giving the derivative of state k (that of X'' = F
+ * for the velocity of X), or NULL */
+static const rs_deq_t *deq_of(const gen_t *g, slong a, slong k)
+{
+    const rs_subsystem_t *s = &g->c->subs[a];
+    const rs_deq_t *d = NULL;
+    slong q, e;
+    for (q = 0; q < s->ndeqs; q++)
+        if (strcmp(s->deqs[q].state, s->states[k].name) == 0 && s->deqs[q].order == 1) d = &s->deqs[q];
+    for (q = 0; q < s->nstates; q++)
+        if (g->vel[a * MAX_STATES + q] == k)
+            for (e = 0; e < s->ndeqs; e++)
+                if (s->deqs[e].order == 2 && strcmp(s->deqs[e].state, s->states[q].name) == 0) d = &s->deqs[e];
+    return d;
+}
+
+/* the equations of subsystem a in iterate j */
+static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
+{
+    rs_case_struct *c = g->c;
+    const rs_subsystem_t *s = &c->subs[a];
+    slong k, vk;
+    for (k = 0; k < s->nstates; k++) {
+        const char *x = s->states[k].name;
+        const rs_deq_t *d = deq_of(g, a, k);
+        vk = g->vel[a * MAX_STATES + k];
+        if (d == NULL && vk < 0)
+            return err_at(err, RS_ERR_INPUT, &s->loc, 0, "expected an equation %s' = ... in this subsystem", x);
+        /* equation of motion at the new time */
+        if (!is_pos(g, a, k)) {
+            rs_expr_t *rhs;
+            if (d == NULL) {   /* x' = v of a second-order line */
+                rhs = var(s->states[vk].name, j, g->K, 1, pos_of(&s->loc));
+            } else {
+                if ((rhs = subst(g, a, j, d->rhs, err)) == NULL) return err->code;
+                P(rhs);
+            }
+            add_eq(c, dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), rhs, d ? &d->loc : &s->loc);
+        }
+        if (g->pair[a]) {
+            if (vk >= 0) pair_formula(c, s, x, s->states[vk].name);   /* velocities go with their position */
+        } else {
+            formula(c, g, s, x, j);
+        }
+    }
+    return RS_OK;
+}
+
 int rs_builder_expand(rs_case_t c, rs_error_t err)
 {
     gen_t g;
-    sb_t b = {NULL, 0, 0}, unk = {NULL, 0, 0};
-    slong a, k, j;
-    int r = RS_OK;
+    slong a, j;
+    int r, exact;
     if (c->nsubs == 0) return RS_OK;
+    r = check_subsystems(c, &exact, err);
+    if (r != RS_OK || exact) return r;
     memset(&g, 0, sizeof g);
     g.c = c;
-    for (a = 0; a < c->nsubs; a++) {
-        if (c->subs[a].method == NULL)
-            return rs_error_set_at(err, RS_ERR_INPUT, c->subs[a].loc.file, c->subs[a].loc.line, c->subs[a].loc.col,
-                                   "expected `integrate %s METHOD STEP` for this subsystem", c->subs[a].name);
-        if (c->subs[a].nstates > 64)
-            return rs_error_set_at(err, RS_ERR_LIMIT, c->subs[a].loc.file, c->subs[a].loc.line, 1,
-                                   "too many states in one subsystem (limit %d)", 64);
-    }
-    if (rs_builder_is_exact(c)) {
-        for (a = 0; a < c->nsubs; a++)
-            if (strcmp(c->subs[a].method, "exact") != 0)
-                return rs_error_set_at(err, RS_ERR_INPUT, c->subs[a].intloc.file, c->subs[a].intloc.line,
-                                       c->subs[a].intloc.col,
-                                       "exact integration is supported when every subsystem uses it (found %s)",
-                                       c->subs[a].method);
-        /* coupling forces are optional: displacement coupling uses the partner's states */
-        if (c->couple == NULL || !(strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
-            return rs_error_set_at(err, RS_ERR_INPUT, c->subs[0].loc.file, c->subs[0].loc.line, 1,
-                                   "exact integration needs `couple explicit|implicit order K` (and the coupling: "
-                                   "`coupling force NAME = EXPR` lines and/or the partner's states)%s", "");
-        c->emitted = rs_strdup("# exact (analytic) subsystem integration: a numeric matrix recurrence, built at "
-                            "set values; only numeric analyses (radius) apply\n");
-        return RS_OK;
-    }
-    if (c->couple && (strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
-        return rs_error_set_at(err, RS_ERR_INPUT, c->couple_loc.file, c->couple_loc.line, c->couple_loc.col,
-                               "applied-force coupling (couple %s order K) needs `integrate ... exact`", c->couple);
-    if (c->nsubs == 1 || (c->couple && strcmp(c->couple, "monolithic") == 0)) g.kind = 0;
-    else if (c->couple == NULL)
-        return rs_error_set_at(err, RS_ERR_INPUT, c->subs[0].loc.file, c->subs[0].loc.line, 1,
-                               "expected a `couple` statement (jacobi, gauss-seidel S1 S2, monolithic) for %ld "
-                               "subsystems", (long) c->nsubs);
-    else if (strcmp(c->couple, "jacobi") == 0) g.kind = 1;
-    else {
-        g.kind = 2;
-        g.first = sub_index(c, c->couple_first);
-        g.second = sub_index(c, c->couple_second);
-        if (g.first < 0 || g.second < 0 || g.first == g.second || c->nsubs != 2)
-            return rs_error_set_at(err, RS_ERR_INPUT, c->couple_loc.file, c->couple_loc.line, c->couple_loc.col,
-                                   "gauss-seidel needs the names of the two subsystems, found '%s'",
-                                   c->couple_first ? c->couple_first : "");
-    }
-    g.K = g.kind == 0 ? 0 : c->iterations;
-    g.vel = flint_malloc(c->nsubs * 64 * sizeof(slong));
+    r = coupling_kind(&g, c, err);
+    if (r != RS_OK) return r;
+    g.vel = flint_malloc(c->nsubs * MAX_STATES * sizeof(slong));
     g.pair = flint_calloc(c->nsubs, sizeof(int));
-    /* derivative equation of each state; second-order lines define x' = v */
-    for (a = 0; a < c->nsubs && r == RS_OK; a++) {
-        rs_subsystem_t *s = &c->subs[a];
-        const char *m = s->method;
-        g.pair[a] = strcmp(m, "newmark") == 0 || strcmp(m, "central-difference") == 0;
-        for (k = 0; k < 64; k++) g.vel[a * 64 + k] = -1;
-        for (j = 0; j < s->ndeqs; j++) {
-            slong si = -1;
-            for (k = 0; k < s->nstates; k++) if (strcmp(s->states[k], s->deqs[j].state) == 0) si = k;
-            if (si < 0) {
-                r = rs_error_set_at(err, RS_ERR_INPUT, s->deqs[j].loc.file, s->deqs[j].loc.line, 1,
-                                    "'%s' is not a state of subsystem %s", s->deqs[j].state, s->name);
-                break;
-            }
-            if (s->deqs[j].order == 2) {
-                if (si + 1 >= s->nstates)
-                    r = rs_error_set_at(err, RS_ERR_INPUT, s->deqs[j].loc.file, s->deqs[j].loc.line, 1,
-                                        "declare the velocity state right after %s (subsystem ... state X V) "
-                                        "for a second-order equation", s->deqs[j].state);
-                else g.vel[a * 64 + si] = si + 1;
-            }
-        }
-        /* first-order x' = v with v a state of the subsystem also makes a pair */
-        for (j = 0; j < s->ndeqs && r == RS_OK; j++) {
-            slong si = -1;
-            if (s->deqs[j].order != 1) continue;
-            for (k = 0; k < s->nstates; k++) if (strcmp(s->states[k], s->deqs[j].state) == 0) si = k;
-            for (k = 0; k < s->nstates; k++) {
-                const char *rh = s->deqs[j].rhs;
-                while (*rh == ' ') rh++;
-                if (strcmp(rh, s->states[k]) == 0 && k != si) g.vel[a * 64 + si] = k;
-            }
-        }
-        if (g.pair[a]) {
-            if (g.K > 0)
-                r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
-                                    "iterations with %s are not supported", m);
-            for (k = 0; k < s->nstates && r == RS_OK; k++) {
-                int isvel = 0;
-                slong q;
-                for (q = 0; q < s->nstates; q++) if (g.vel[a * 64 + q] == k) isvel = 1;
-                if (g.vel[a * 64 + k] < 0 && !isvel)
-                    r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
-                                        "%s integrates (position, velocity) pairs: write X'' = ... or X' = V for "
-                                        "every position (state %s)", m, s->states[k]);
-            }
-        }
-    }
-    /* unknowns */
-    for (a = 0; a < c->nsubs && r == RS_OK; a++) {
-        rs_subsystem_t *s = &c->subs[a];
-        for (k = 0; k < s->nstates; k++) {
-            slong jj;
-            int pos = is_pos(&g, a, k);
-            for (jj = 0; jj <= g.K; jj++) {
-                sb_add(&unk, " ");
-                var(&unk, s->states[k], jj, g.K);
-                if (!pos) { sb_add(&unk, " "); dvar(&unk, s->states[k], jj, g.K); }
-            }
-        }
-    }
-    if (r == RS_OK) sb_add(&b, "unknown%s\n", unk.s);
-    /* equations */
-    for (a = 0; a < c->nsubs && r == RS_OK; a++) {
-        rs_subsystem_t *s = &c->subs[a];
-        const char *m = s->method, *h = s->step;
-        for (j = 0; j <= g.K && r == RS_OK; j++) {
-            for (k = 0; k < s->nstates && r == RS_OK; k++) {
-                const char *x = s->states[k];
-                const rs_deq_t *d = NULL;
-                slong q;
-                int pos = is_pos(&g, a, k);
-                for (q = 0; q < s->ndeqs; q++)
-                    if (strcmp(s->deqs[q].state, x) == 0 && s->deqs[q].order == 1) d = &s->deqs[q];
-                /* the velocity of a second-order line gets that line */
-                for (q = 0; q < s->nstates; q++)
-                    if (g.vel[a * 64 + q] == k) {
-                        slong e;
-                        for (e = 0; e < s->ndeqs; e++)
-                            if (s->deqs[e].order == 2 && strcmp(s->deqs[e].state, s->states[q]) == 0) d = &s->deqs[e];
-                    }
-                if (d == NULL && !(g.vel[a * 64 + k] >= 0)) {
-                    r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
-                                        "expected an equation %s' = ... in this subsystem", x);
-                    break;
-                }
-                /* equation of motion at the new time */
-                if (!pos) {
-                    sb_add(&b, "eq ");
-                    dvar(&b, x, j, g.K);
-                    sb_add(&b, "[n+1] = ");
-                    if (d == NULL) {
-                        /* x' = v of a second-order line */
-                        var(&b, s->states[g.vel[a * 64 + k]], j, g.K);
-                        sb_add(&b, "[n+1]");
-                    } else {
-                        sb_add(&b, "(");
-                        r = subst(&b, &g, a, j, d, err);
-                        sb_add(&b, ")");
-                    }
-                    sb_add(&b, "\n");
-                }
-                if (r != RS_OK) break;
-                /* integration formula */
-                if (g.pair[a]) {
-                    slong vk = g.vel[a * 64 + k];
-                    const char *v;
-                    if (vk < 0) continue;       /* velocities are handled with their position */
-                    v = s->states[vk];
-                    if (strcmp(m, "newmark") == 0) {
-                        sb_add(&b, "eq %s[n+1] = %s[n] + (%s)*%s[n] + (%s)^2*((1/2 - (%s))*%s_dot[n] + (%s)*%s_dot[n+1])\n",
-                               x, x, h, v, h, s->arg1, v, s->arg1, v);
-                        sb_add(&b, "eq %s[n+1] = %s[n] + (%s)*((1 - (%s))*%s_dot[n] + (%s)*%s_dot[n+1])\n",
-                               v, v, h, s->arg2, v, s->arg2, v);
-                    } else {
-                        sb_add(&b, "eq %s[n+1] - 2*%s[n] + %s[n-1] = (%s)^2*%s_dot[n]\n", x, x, x, h, v);
-                        sb_add(&b, "eq 2*(%s)*%s[n] = %s[n+1] - %s[n-1]\n", h, v, x, x);
-                    }
-                    continue;
-                }
-                sb_add(&b, "eq ");
-                var(&b, x, j, g.K);
-                if (strcmp(m, "euler-forward") == 0)
-                    sb_add(&b, "[n+1] - %s[n] = (%s)*%s_dot[n]\n", x, h, x);
-                else if (strcmp(m, "euler-backward") == 0) {
-                    sb_add(&b, "[n+1] - %s[n] = (%s)*", x, h);
-                    dvar(&b, x, j, g.K);
-                    sb_add(&b, "[n+1]\n");
-                } else if (strcmp(m, "trapezoidal") == 0 || strcmp(m, "theta") == 0) {
-                    const char *th = strcmp(m, "theta") == 0 ? s->arg1 : "1/2";
-                    sb_add(&b, "[n+1] - %s[n] = (%s)*((1 - (%s))*%s_dot[n] + (%s)*", x, h, th, x, th);
-                    dvar(&b, x, j, g.K);
-                    sb_add(&b, "[n+1])\n");
-                } else if (strcmp(m, "bdf2") == 0) {
-                    sb_add(&b, "[n+1]*3 - 4*%s[n] + %s[n-1] = 2*(%s)*", x, x, h);
-                    dvar(&b, x, j, g.K);
-                    sb_add(&b, "[n+1]\n");
-                } else if (strcmp(m, "bdf3") == 0) {
-                    sb_add(&b, "[n+1]*11 - 18*%s[n] + 9*%s[n-1] - 2*%s[n-2] = 6*(%s)*", x, x, x, h);
-                    dvar(&b, x, j, g.K);
-                    sb_add(&b, "[n+1]\n");
-                }
-            }
-        }
-    }
+    for (a = 0; a < c->nsubs && r == RS_OK; a++)
+        r = find_pairs(&g, a, err);
+    if (r == RS_OK) r = gen_unknowns(&g, err);
+    for (a = 0; a < c->nsubs && r == RS_OK; a++)
+        for (j = 0; j <= g.K && r == RS_OK; j++)
+            r = gen_equations(&g, a, j, err);
     flint_free(g.vel);
     flint_free(g.pair);
-    flint_free(unk.s);
-    if (r == RS_OK) {
-        char label[600];
-        snprintf(label, sizeof label, "%s (equations generated by the builders; see --emit equations)", c->path);
-        c->emitted = b.s;
-        b.s = NULL;
-        r = rs_case_parse_append(c, label, c->emitted, err);
-    }
-    flint_free(b.s);
     return r;
 }

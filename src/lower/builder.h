@@ -31,20 +31,11 @@
 extern "C" {
 #endif
 
-#define RS_BUILDER_MAX_ITERATIONS 16
-#define RS_BUILDER_MAX_ORDER 6
-
-/* Handles a builder statement (keyword already read; text = whole
- * statement, i = position after the keyword).  Returns RS_OK or an error
- * with file:line:col.  Also handles `NAME' = EXPR` lines (keyword = NAME,
- * i at the first apostrophe). */
-int rs_builder_statement(rs_case_t c, const char *keyword, const rs_src_t *src, size_t i,
-                         rs_error_t err);
-int rs_builder_is_keyword(const char *word);
-
-/* Expands subsystems/integrators/couplings into unknowns and equations
- * (appended to the case), keeping the generated text in c->emitted. No-op
- * when the case has no subsystem. */
+/* Lowers the subsystems/integrators/couplings of c into unknowns and
+ * equations appended to c (marked generated), built as expression trees.
+ * A generated name the user declared is an error at the user's declaration.
+ * No-op when the case has no subsystem; with exact integration it only
+ * checks the statements (the co-simulation model is built by cosim). */
 int rs_builder_expand(rs_case_t c, rs_error_t err);
 
 /* The case uses exact (analytic) integration: only numeric analyses apply. */

@@ -20,13 +20,13 @@
 extern "C" {
 #endif
 
-/* Parses `recurrence K = [e11, e12; e21, e22]` (src->text, i after the
- * keyword) into c->rec. */
-int rs_recurrence_statement(rs_case_t c, const rs_src_t *src, size_t i, rs_error_t err);
-
-/* After parsing: checks the terms, and either appends the equivalent unknowns
- * and equations (polynomial entries) or marks the case numeric. */
+/* Lowering: checks the terms and, with polynomial entries, appends the
+ * equivalent unknowns (z1, ..., zn unless declared) and equations to c,
+ * marked generated, built as trees from the entries. */
 int rs_recurrence_expand(rs_case_t c, rs_error_t err);
+
+/* Entries with functions or pi: the numeric path only (no equations). */
+int rs_recurrence_is_numeric(const rs_case_t c);
 
 /* The matrices A[0..K] (K = largest shift; acb_mat initialised here, n x n)
  * at precision prec with the case's set values (and extra values, may be

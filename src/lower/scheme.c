@@ -63,7 +63,7 @@ static int err_at(ev_t *x, const rs_expr_t *e, int code, const char *fmt, const 
     __attribute__((format(printf, 4, 0)));
 static int err_at(ev_t *x, const rs_expr_t *e, int code, const char *fmt, const char *a)
 {
-    return rs_error_set_at(x->err, code, x->c->path, e->line, e->col, fmt, a);
+    return rs_error_set_at(x->err, code, rs_expr_file(e, x->c->path), e->line, e->col, fmt, a);
 }
 
 static void mul_lambda_pow(fmpq_mpoly_t p, slong k, const rs_scheme_struct *s)
@@ -156,7 +156,7 @@ static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
         slong d = fmpq_mpoly_degree_si(a, v, s->ctx);
         double dd = k == 0 ? (double) d + (double) fmpq_mpoly_degree_si(b, v, s->ctx) : (double) d * (double) k;
         if (dd > RS_SCHEME_MAX_DEGREE)
-            return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+            return rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                    "degree limit exceeded: degree %.0f in %s (limit %d per variable)",
                                    dd, s->vars[v], RS_SCHEME_MAX_DEGREE);
         dterms *= dd + 1.0;
@@ -184,11 +184,11 @@ static int prod_check(ev_t *x, const rs_expr_t *e, const fmpq_mpoly_t a,
     /* the bound can be loose (the result is checked again once computed):
      * refuse only what is far beyond the limit */
     if (terms > 20.0 * RS_SCHEME_MAX_TERMS)
-        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                "term limit exceeded: this %s could have %.0f terms (limit %d terms per polynomial)",
                                k == 0 ? "product" : "power", terms, RS_SCHEME_MAX_TERMS);
     if (terms * bits > RS_SCHEME_MAX_BITS)
-        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                "size limit exceeded: this %s could need %.0f bits of coefficients (limit %.0f bits)",
                                k == 0 ? "product" : "power", terms * bits, RS_SCHEME_MAX_BITS);
     return RS_OK;
@@ -252,7 +252,7 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
             return err_at(x, e, RS_ERR_INPUT,
                           "the unknown '%s' cannot appear here (only parameters and lambda)", e->name);
         if (!e->shifted)
-            return rs_error_set_at(x->err, RS_ERR_INPUT, x->c->path, e->line, e->col,
+            return rs_error_set_at(x->err, RS_ERR_INPUT, rs_expr_file(e, x->c->path), e->line, e->col,
                                    "expected a shift after the unknown '%s', as in %s[n] or %s[n+1]",
                                    e->name, e->name, e->name);
         fmpq_mpoly_one(out->c + 1 + k, s->ctx);
@@ -263,7 +263,7 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
         const rs_let_t *l = &x->c->lets[k];
         int r;
         if (l->shifted && !e->shifted)
-            return rs_error_set_at(x->err, RS_ERR_INPUT, x->c->path, e->line, e->col,
+            return rs_error_set_at(x->err, RS_ERR_INPUT, rs_expr_file(e, x->c->path), e->line, e->col,
                                    "'%s' is a derived sequence: expected a shift, as in %s[n+1]",
                                    e->name, e->name);
         if (!l->shifted && e->shifted)
@@ -352,7 +352,7 @@ static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
         fmpq_mpoly_mul(out->c + i, a->c + i, b->den, s->ctx);
     out->low = a->low;
     fmpq_mpoly_mul(out->den, a->den, b->c + 0, s->ctx);
-    record_nonzero(x, b->c + 0, x->c->path, e->line, e->col);
+    record_nonzero(x, b->c + 0, rs_expr_file(e, x->c->path), e->line, e->col);
     return RS_OK;
 }
 
@@ -363,11 +363,11 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
     int r;
     slong i;
     if (++x->steps > RS_SCHEME_MAX_STEPS)
-        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                "expression too large after expanding lets (limit %d operations)",
                                RS_SCHEME_MAX_STEPS);
     if (x->depth >= RS_SCHEME_MAX_DEPTH)
-        return rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+        return rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                "expression too deep after expanding lets (limit %d levels)",
                                RS_SCHEME_MAX_DEPTH);
     x->depth++;
@@ -376,7 +376,7 @@ static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
     for (i = 0; r == RS_OK && i <= out->ns; i++) {
         const fmpq_mpoly_struct *p = i < out->ns ? out->c + i : out->den;
         if (fmpq_mpoly_length(p, x->s->ctx) > RS_SCHEME_MAX_TERMS)
-            r = rs_error_set_at(x->err, RS_ERR_LIMIT, x->c->path, e->line, e->col,
+            r = rs_error_set_at(x->err, RS_ERR_LIMIT, rs_expr_file(e, x->c->path), e->line, e->col,
                                 "term limit exceeded: %ld terms (limit %d terms per polynomial)",
                                 (long) fmpq_mpoly_length(p, x->s->ctx), RS_SCHEME_MAX_TERMS);
     }
@@ -489,7 +489,7 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
                 }
                 fmpq_mpoly_pow_ui(out->c + 0, a.den, (ulong) kk, ctx);
                 fmpq_mpoly_pow_ui(out->den, a.c + 0, (ulong) kk, ctx);
-                record_nonzero(x, a.c + 0, x->c->path, e->line, e->col);
+                record_nonzero(x, a.c + 0, rs_expr_file(e, x->c->path), e->line, e->col);
             }
         }
         break;
@@ -583,7 +583,7 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     lin_init(&v, c->nunknowns + 1, s->ctx);
     r = eval(&v, e, &x);
     if (r == RS_OK && lin_has_unknowns(&v, s->ctx))
-        r = rs_error_set_at(err, RS_ERR_INPUT, c->path, e->line, e->col,
+        r = rs_error_set_at(err, RS_ERR_INPUT, rs_expr_file(e, c->path), e->line, e->col,
                             "expected an expression without unknowns");
     if (r == RS_OK) {
         fmpq_mpoly_set(num, v.c + 0, s->ctx);
@@ -600,19 +600,19 @@ static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     lin_t v;
     int r;
     if (c->neqs > 0 || c->nunknowns > 0)
-        return rs_error_set_at(err, RS_ERR_INPUT, c->path, c->charloc.line, c->charloc.col,
+        return rs_error_set_at(err, RS_ERR_INPUT, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col,
                                "a case gives either `char` or `unknown`/`eq` lines, not both");
     ev_setup(&x, s, c, 1, s, err);
     lin_init(&v, 1, s->ctx);
     r = eval(&v, c->charexpr, &x);
     if (r == RS_OK) {
-        record_nonzero(&x, v.den, c->path, c->charloc.line, c->charloc.col);
+        record_nonzero(&x, v.den, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col);
         fmpq_mpoly_set(s->charpoly, v.c + 0, s->ctx);
         if (fmpq_mpoly_is_zero(s->charpoly, s->ctx))
-            r = rs_error_set_at(err, RS_ERR_MATH, c->path, c->charloc.line, c->charloc.col,
+            r = rs_error_set_at(err, RS_ERR_MATH, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col,
                                 "the characteristic polynomial is identically zero");
         else if (fmpq_mpoly_degree_si(s->charpoly, s->lambda_var, s->ctx) < 1)
-            r = rs_error_set_at(err, RS_ERR_INPUT, c->path, c->charloc.line, c->charloc.col,
+            r = rs_error_set_at(err, RS_ERR_INPUT, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col,
                                 "expected a polynomial in lambda, found one without lambda");
     }
     s->from_char = 1;
@@ -634,7 +634,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 1, 1,
                                "expected `unknown` and `eq` lines (or a `char` line), found none");
     if (n > RS_SCHEME_MAX_UNKNOWNS)
-        return rs_error_set_at(err, RS_ERR_LIMIT, c->path, c->unknown_loc.line, c->unknown_loc.col,
+        return rs_error_set_at(err, RS_ERR_LIMIT, c->unknown_loc.file ? c->unknown_loc.file : c->path, c->unknown_loc.line, c->unknown_loc.col,
                                "too many unknowns (%ld; limit %d)", (long) n, RS_SCHEME_MAX_UNKNOWNS);
     if (c->neqs != n) {
         const rs_loc_t *l = c->neqs > n ? &c->eqs[n].loc : &c->unknown_loc;

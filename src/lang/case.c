@@ -1,0 +1,229 @@
+/* case.c -- the case structure: init, clear (one per sub-structure),
+ * look-ups, and the command line's additions (--set, --analyse). */
+#include <stdio.h>
+#include <string.h>
+#include "parse.h"
+
+void rs_case_init(rs_case_t c)
+{
+    memset(c, 0, sizeof(rs_case_struct));
+    c->extrapolate = -1;
+}
+
+void rs_loc_clear(rs_loc_t *l)
+{
+    flint_free(l->file);
+    l->file = NULL;
+}
+
+void rs_name_clear(rs_name_t *n)
+{
+    flint_free(n->name);
+    rs_loc_clear(&n->loc);
+    memset(n, 0, sizeof *n);
+}
+
+void rs_let_clear(rs_let_t *l)
+{
+    flint_free(l->name);
+    rs_expr_free(l->e);
+    rs_loc_clear(&l->loc);
+    flint_free(l->text);
+    memset(l, 0, sizeof *l);
+}
+
+void rs_eq_clear(rs_eq_t *q)
+{
+    rs_expr_free(q->lhs);
+    rs_expr_free(q->rhs);
+    rs_loc_clear(&q->loc);
+    flint_free(q->text);
+    memset(q, 0, sizeof *q);
+}
+
+void rs_set_clear(rs_set_t *s)
+{
+    flint_free(s->name);
+    fmpq_clear(s->value);
+    rs_loc_clear(&s->loc);
+    memset(s, 0, sizeof *s);
+}
+
+void rs_request_clear(rs_request_t *q)
+{
+    flint_free(q->text);
+    rs_loc_clear(&q->loc);
+    memset(q, 0, sizeof *q);
+}
+
+void rs_recterm_clear(rs_recterm_t *t)
+{
+    slong k;
+    for (k = 0; k < t->rows * t->cols; k++)
+        rs_expr_free(t->entries[k]);
+    flint_free(t->entries);
+    rs_loc_clear(&t->loc);
+    memset(t, 0, sizeof *t);
+}
+
+void rs_deq_clear(rs_deq_t *d)
+{
+    flint_free(d->state);
+    rs_expr_free(d->rhs);
+    rs_loc_clear(&d->loc);
+    memset(d, 0, sizeof *d);
+}
+
+void rs_force_clear(rs_force_t *f)
+{
+    flint_free(f->name);
+    rs_expr_free(f->e);
+    rs_loc_clear(&f->loc);
+    memset(f, 0, sizeof *f);
+}
+
+void rs_subsystem_clear(rs_subsystem_t *s)
+{
+    slong k;
+    flint_free(s->name);
+    rs_loc_clear(&s->loc);
+    for (k = 0; k < s->nstates; k++) rs_name_clear(&s->states[k]);
+    flint_free(s->states);
+    for (k = 0; k < s->ndeqs; k++) rs_deq_clear(&s->deqs[k]);
+    flint_free(s->deqs);
+    flint_free(s->method);
+    rs_expr_free(s->arg1);
+    rs_expr_free(s->arg2);
+    rs_expr_free(s->step);
+    rs_loc_clear(&s->intloc);
+    memset(s, 0, sizeof *s);
+}
+
+void rs_case_clear_requests(rs_case_t c)
+{
+    slong i;
+    for (i = 0; i < c->nrequests; i++) rs_request_clear(&c->requests[i]);
+    flint_free(c->requests);
+    c->requests = NULL;
+    c->nrequests = 0;
+}
+
+/* clears arr[0..n) with clear, frees arr */
+#define CLEAR_ALL(arr, n, clear) do { slong k_; for (k_ = 0; k_ < (n); k_++) clear(&(arr)[k_]); \
+                                      flint_free(arr); } while (0)
+
+void rs_case_clear(rs_case_t c)
+{
+    slong i;
+    flint_free(c->path);
+    flint_free(c->title);
+    CLEAR_ALL(c->params, c->nparams, rs_name_clear);
+    CLEAR_ALL(c->unknowns, c->nunknowns, rs_name_clear);
+    CLEAR_ALL(c->assume, c->nassume, rs_cond_clear);
+    CLEAR_ALL(c->lets, c->nlets, rs_let_clear);
+    CLEAR_ALL(c->eqs, c->neqs, rs_eq_clear);
+    rs_expr_free(c->charexpr);
+    rs_loc_clear(&c->charloc);
+    CLEAR_ALL(c->sets, c->nsets, rs_set_clear);
+    rs_case_clear_requests(c);
+    rs_loc_clear(&c->unknown_loc);
+    CLEAR_ALL(c->subs, c->nsubs, rs_subsystem_clear);
+    flint_free(c->couple);
+    flint_free(c->couple_first);
+    flint_free(c->couple_second);
+    rs_loc_clear(&c->couple_loc);
+    CLEAR_ALL(c->forces, c->nforces, rs_force_clear);
+    CLEAR_ALL(c->rec, c->nrec, rs_recterm_clear);
+    /* last: the trees above point at these names */
+    for (i = 0; i < c->nfiles; i++) flint_free(c->files[i]);
+    flint_free(c->files);
+    memset(c, 0, sizeof(rs_case_struct));
+}
+
+slong rs_case_param_index(const rs_case_t c, const char *name)
+{
+    slong i;
+    for (i = 0; i < c->nparams; i++)
+        if (strcmp(c->params[i].name, name) == 0) return i;
+    return -1;
+}
+
+slong rs_case_unknown_index(const rs_case_t c, const char *name)
+{
+    slong i;
+    for (i = 0; i < c->nunknowns; i++)
+        if (strcmp(c->unknowns[i].name, name) == 0) return i;
+    return -1;
+}
+
+slong rs_case_let_index(const rs_case_t c, const char *name)
+{
+    slong i;
+    for (i = 0; i < c->nlets; i++)
+        if (strcmp(c->lets[i].name, name) == 0) return i;
+    return -1;
+}
+
+int rs_name_is_reserved(const char *name)
+{
+    return strcmp(name, "lambda") == 0 || strcmp(name, "z") == 0 || strcmp(name, "n") == 0;
+}
+
+void rs_case_add_request(rs_case_t c, const char *text, const char *file, int line, int col)
+{
+    RS_GROW(c->requests, c->nrequests);
+    c->requests[c->nrequests].text = rs_strdup(text);
+    c->requests[c->nrequests].loc.file = rs_strdup(file);
+    c->requests[c->nrequests].loc.line = line;
+    c->requests[c->nrequests].loc.col = col;
+    c->nrequests++;
+}
+
+void _rs_case_set_one(rs_case_struct *c, const char *name, const fmpq_t v, const char *file, int line, int col)
+{
+    slong k;
+    for (k = 0; k < c->nsets; k++)
+        if (strcmp(c->sets[k].name, name) == 0) {
+            fmpq_set(c->sets[k].value, v);
+            return;
+        }
+    RS_GROW(c->sets, c->nsets);
+    c->sets[c->nsets].name = rs_strdup(name);
+    fmpq_init(c->sets[c->nsets].value);
+    fmpq_set(c->sets[c->nsets].value, v);
+    c->sets[c->nsets].loc.file = rs_strdup(file);
+    c->sets[c->nsets].loc.line = line;
+    c->sets[c->nsets].loc.col = col;
+    c->nsets++;
+}
+
+int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err)
+{
+    const char *eq = strchr(assignment, '=');
+    char *name;
+    size_t n;
+    fmpq_t v;
+    int r;
+    if (eq == NULL)
+        return rs_error_set(err, RS_ERR_INPUT, "--set %s: expected NAME=VALUE", assignment);
+    n = (size_t) (eq - assignment);
+    while (n > 0 && assignment[n - 1] == ' ') n--;
+    name = rs_strndup(assignment, n);
+    if (rs_case_param_index(c, name) < 0) {
+        r = rs_error_set(err, RS_ERR_INPUT, "--set %s: '%s' is not a parameter of %s", assignment, name, c->path);
+        flint_free(name);
+        return r;
+    }
+    fmpq_init(v);
+    r = rs_expr_parse_number(v, eq + 1, err);
+    if (r != RS_OK) {
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        rs_error_set(err, RS_ERR_INPUT, "--set %s: %s", assignment, msg);
+    } else {
+        _rs_case_set_one(c, name, v, "--set", 0, 0);
+    }
+    fmpq_clear(v);
+    flint_free(name);
+    return r;
+}
