@@ -45,12 +45,7 @@ public_stage() {
 
 # "FILE -> HEADER" allowed for now; each removed by a phase-B item (issue 12)
 KNOWN='
-src/lang/casefile.c -> lower/builder.h
-src/lang/casefile.c -> lower/recurrence.h
 '
-# casefile.c -> builder.h, recurrence.h: the parser expands subsystem blocks
-#   and matrix recurrences by generating case text and re-parsing it; phase B
-#   (typed syntax tree, lowering in src/lower/) makes lower the only consumer.
 
 fails=0
 seen=$(mktemp)

@@ -32,8 +32,9 @@ typedef struct rs_expr_struct {
     fmpq_t num;                      /* RS_EXPR_NUM */
     char *lit;                       /* RS_EXPR_NUM: its spelling ("0.5", "1e-3"), or NULL */
     char *name;                      /* RS_EXPR_NAME, RS_EXPR_CALL */
-    int shifted;                     /* NAME[n+K] written (2: written with an explicit +0) */
+    int shifted;                     /* NAME[n+K] written */
     slong shift;                     /* K */
+    int shift_signed;                /* K written with its sign, x[n+0] included (printing) */
     int paren;                       /* pairs of parentheses written around the node */
     struct rs_expr_struct *a, *b;    /* operands */
 } rs_expr_struct;

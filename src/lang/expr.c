@@ -261,7 +261,7 @@ static rs_expr_t *parse_primary(parser_t *p)
             skip_ws(p);
             if (t[p->pos] == '+' || t[p->pos] == '-') {
                 sign = (t[p->pos] == '-') ? -1 : 1;
-                e->shifted = 2;   /* printed back as written, x[n+0] included */
+                e->shift_signed = 1;
                 p->pos++;
                 skip_ws(p);
                 if (!isdigit((unsigned char) t[p->pos])) {
@@ -289,7 +289,7 @@ static rs_expr_t *parse_primary(parser_t *p)
                 return NULL;
             }
             p->pos++;
-            e->shifted = e->shifted ? e->shifted : 1;
+            e->shifted = 1;
             e->shift = sign * k;
         }
         return e;

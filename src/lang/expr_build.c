@@ -55,7 +55,7 @@ int rs_expr_equal(const rs_expr_t *a, const rs_expr_t *b)
     case RS_EXPR_NUM:
         return fmpq_equal(a->num, b->num);
     case RS_EXPR_NAME:
-        return strcmp(a->name, b->name) == 0 && (a->shifted != 0) == (b->shifted != 0) && a->shift == b->shift;
+        return strcmp(a->name, b->name) == 0 && a->shifted == b->shifted && a->shift == b->shift;
     case RS_EXPR_CALL:
         if (strcmp(a->name, b->name) != 0) return 0;
         break;
@@ -126,7 +126,7 @@ static void print(buf_t *b, const rs_expr_t *e, int need_paren)
         break;
     case RS_EXPR_NAME:
         put(b, "%s", e->name);
-        if (e->shifted && (e->shift != 0 || e->shifted == 2))
+        if (e->shifted && (e->shift != 0 || e->shift_signed))
             put(b, "[n%c%ld]", e->shift < 0 ? '-' : '+', (long) (e->shift < 0 ? -e->shift : e->shift));
         else if (e->shifted)
             put(b, "[n]");

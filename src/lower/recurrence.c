@@ -83,9 +83,10 @@ static void gen_row(rs_case_t c, slong n, slong i)
     for (t = 0; t < c->nrec; t++)
         for (j = 0; j < n; j++) {
             const rs_loc_t *tl = &c->rec[t].loc;
-            rs_expr_t *m = rs_expr_new_op(RS_EXPR_MUL, rs_expr_paren(rs_expr_copy(c->rec[t].entries[i * n + j])),
-                                          rs_expr_new_name(c->unknowns[j].name, 2, c->rec[t].k, tl->file, tl->line,
-                                                           tl->col), tl->file, tl->line, tl->col);
+            rs_expr_t *z = rs_expr_new_name(c->unknowns[j].name, 1, c->rec[t].k, tl->file, tl->line, tl->col), *m;
+            z->shift_signed = 1;   /* printed z1[n+0] */
+            m = rs_expr_new_op(RS_EXPR_MUL, rs_expr_paren(rs_expr_copy(c->rec[t].entries[i * n + j])), z, tl->file,
+                               tl->line, tl->col);
             lhs = lhs == NULL ? m : rs_expr_new_op(RS_EXPR_ADD, lhs, m, tl->file, tl->line, tl->col);
         }
     c->eqs = flint_realloc(c->eqs, (c->neqs + 1) * sizeof(rs_eq_t));

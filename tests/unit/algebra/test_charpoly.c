@@ -85,6 +85,7 @@ static void test_pipeline_park(void **state)
     rs_error_init(err);
     flint_randinit(st);
     assert_int_equal(rs_case_parse_file(c, RS_SOURCE_DIR "/cases/park-staggered.case", err), RS_OK);
+    assert_int_equal(rs_case_lower(c, err), RS_OK);
     assert_int_equal(rs_scheme_build(s, c, err), RS_OK);
     rs_charpoly_init(cp, s);
     assert_int_equal(rs_charpoly_compute(cp, s, err), RS_OK);

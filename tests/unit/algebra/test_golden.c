@@ -22,7 +22,7 @@ static void check_case(const char *rel, const char *closed, slong degree)
     rs_case_init(c);
     rs_scheme_init(s);
     rs_error_init(err);
-    if (rs_case_parse_file(c, path, err) != RS_OK || rs_scheme_build(s, c, err) != RS_OK)
+    if (rs_case_parse_file(c, path, err) != RS_OK || rs_case_lower(c, err) != RS_OK || rs_scheme_build(s, c, err) != RS_OK)
         fail_msg("%s: %s", rel, err->msg);
     rs_charpoly_init(cp, s);
     assert_int_equal(rs_charpoly_compute(cp, s, err), RS_OK);

@@ -62,7 +62,7 @@ static void pol_build(pol_t *P, const char *label, const char *text)
     rs_error_init(err);
     rs_case_init(P->c);
     rs_scheme_init(P->s);
-    if (rs_case_parse_string(P->c, label, text, strlen(text), err) != RS_OK
+    if (rs_case_parse_string(P->c, label, text, strlen(text), err) != RS_OK || rs_case_lower(P->c, err) != RS_OK
         || rs_scheme_build(P->s, P->c, err) != RS_OK)
         fail_msg("%s: %s:%d:%d %s", label, err->file, err->line, err->col, err->msg);
     {

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <arb.h>
 #include "recstab/casefile.h"
+#include "recstab/scheme.h"
 #include "recstab/analysis.h"
 
 static void test_polynomial_entries(void **state)
@@ -64,6 +65,7 @@ static void test_errors(void **state)
     rs_case_init(c);
     rs_options_default(&opt);
     assert_int_equal(rs_case_parse_string(c, "t.case", bad2, strlen(bad2), err), RS_OK);
+    assert_int_equal(rs_case_lower(c, err), RS_OK);
     assert_int_not_equal(rs_analysis_run(&doc, &outcome, c, &opt, err), RS_OK);
     assert_non_null(strstr(err->msg, "'a' is not"));
     rs_case_clear(c);
