@@ -158,12 +158,12 @@ static int st_integrate(rs_stmt_t *x, size_t i)
     flint_free(name);
     s = &x->c->subs[idx];
     if (s->method != NULL) return at(x, 0, "subsystem '%s' already has an integrator", s->name);
+    _rs_skip_ws(t, &i);
     p0 = i;
     m = _rs_read_token(t, &i);
     for (k = 0; m && methods[k]; k++) if (strcmp(m, methods[k]) == 0) known = 1;
     if (!known) {
         flint_free(m);
-        _rs_skip_ws(t, &p0);
         return at(x, p0, "expected an integrator (euler-forward, euler-backward, trapezoidal, theta T, "
                   "bdf2, bdf3, central-difference, newmark B G, exact), found '%s'", t + p0);
     }

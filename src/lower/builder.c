@@ -270,11 +270,11 @@ static int find_pairs(gen_t *g, slong a, rs_error_t err)
         const rs_deq_t *d = &s->deqs[j];
         if ((si = state_index(s, d->state)) < 0) {
             snprintf(msg, sizeof msg, "'%s' is not a state of subsystem %s", d->state, s->name);
-            return err_at(err, RS_ERR_INPUT, &d->loc, 1, "%s", msg);
+            return err_at(err, RS_ERR_INPUT, &d->loc, 0, "%s", msg);
         }
         if (d->order == 2) {
             if (si + 1 >= s->nstates)
-                return err_at(err, RS_ERR_INPUT, &d->loc, 1, "declare the velocity state right after %s (subsystem ... "
+                return err_at(err, RS_ERR_INPUT, &d->loc, 0, "declare the velocity state right after %s (subsystem ... "
                               "state X V) for a second-order equation", d->state);
             vel[si] = si + 1;
         }

@@ -1,6 +1,8 @@
 /* test_casefile.c -- the case-file language: valid files and one test per
  * error class, each checking line, column and message. */
 #include "testutil.h"
+#include <stdlib.h>
+#include <unistd.h>
 #include <string.h>
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
@@ -245,6 +247,113 @@ static void test_division_assumption(void **state)
     rs_case_clear(c);
 }
 
+/* node position: file, line, column (counted by hand in the text below) */
+static void at_pos(const rs_expr_t *e, const char *file, int line, int col)
+{
+    assert_non_null(e);
+    if (e->file == NULL || strcmp(e->file, file) != 0 || e->line != line || e->col != col)
+        fail_msg("node at %s:%d:%d, expected %s:%d:%d", e->file ? e->file : "(none)", e->line, e->col, file, line,
+                 col);
+}
+
+/* The typed syntax tree: every builder statement keeps its expressions as
+ * trees whose nodes carry file:line:col, the coupling forces are one array,
+ * and parsing does not lower (no unknown or equation is generated). */
+static const char *builders =
+    "param k, h, th\n"                                   /* 1 */
+    "subsystem S1 state y v\n"                           /* 2 */
+    "  y' = v\n"                                         /* 3 */
+    "  v' = -k*y + f\n"                                  /* 4 */
+    "integrate S1 theta th (h)\n"                        /* 5 */
+    "subsystem S2 state z\n"                             /* 6 */
+    "  z'' = -k*z\n"                                     /* 7 */
+    "integrate S2 newmark 1/4 0.5 h\n"                   /* 8 */
+    "couple explicit order 1\n"                          /* 9 */
+    "coupling force f = k*(z - y)\n"                     /* 10 */
+    "coupling force g = y\n"                             /* 11 */
+    "recurrence 1 = [1, h; 0, 1]\n";                     /* 12 */
+
+static void test_syntax_tree(void **state)
+{
+    rs_case_t c;
+    rs_error_t err;
+    const rs_subsystem_t *s;
+    (void) state;
+    rs_case_init(c);
+    rs_error_init(err);
+    assert_int_equal(rs_case_parse_string(c, "t.case", builders, strlen(builders), err), RS_OK);
+    assert_int_equal(c->nunknowns, 0);
+    assert_int_equal(c->neqs, 0);
+    assert_int_equal(c->nsubs, 2);
+    s = &c->subs[0];
+    assert_int_equal(s->nstates, 2);
+    assert_string_equal(s->states[1].name, "v");
+    assert_int_equal(s->states[1].loc.line, 2);
+    assert_int_equal(s->states[1].loc.col, 22);
+    assert_int_equal(s->ndeqs, 2);
+    assert_string_equal(s->deqs[1].state, "v");
+    assert_int_equal(s->deqs[1].loc.line, 4);
+    assert_int_equal(s->deqs[1].loc.col, 3);
+    /* -k*y + f: ADD at '+' (col 13), its operands MUL at '*' (col 10), f (col 15) */
+    assert_int_equal(s->deqs[1].rhs->kind, RS_EXPR_ADD);
+    at_pos(s->deqs[1].rhs, "t.case", 4, 13);
+    at_pos(s->deqs[1].rhs->a, "t.case", 4, 10);
+    at_pos(s->deqs[1].rhs->b, "t.case", 4, 15);
+    assert_string_equal(s->method, "theta");
+    at_pos(s->arg1, "t.case", 5, 20);
+    assert_null(s->arg2);
+    at_pos(s->step, "t.case", 5, 24);     /* h inside the parentheses */
+    assert_int_equal(s->step->paren, 1);
+    s = &c->subs[1];
+    assert_int_equal(s->deqs[0].order, 2);
+    at_pos(s->arg1, "t.case", 8, 23);     /* 1/4: the DIV node at '/' */
+    assert_int_equal(s->arg1->kind, RS_EXPR_DIV);
+    at_pos(s->arg2, "t.case", 8, 26);
+    assert_string_equal(s->arg2->lit, "0.5");
+    at_pos(s->step, "t.case", 8, 30);
+    /* one array of coupling forces, in order */
+    assert_int_equal(c->nforces, 2);
+    assert_string_equal(c->forces[0].name, "f");
+    assert_int_equal(c->forces[0].loc.col, 16);
+    at_pos(c->forces[0].e, "t.case", 10, 21);
+    assert_string_equal(c->forces[1].name, "g");
+    at_pos(c->forces[1].e, "t.case", 11, 20);
+    assert_int_equal(c->nrec, 1);
+    at_pos(c->rec[0].entries[1], "t.case", 12, 20);
+    rs_case_clear(c);
+}
+
+/* Statements read from an included file keep that file's positions. */
+static void test_include_positions(void **state)
+{
+    rs_case_t c;
+    rs_error_t err;
+    char dir[] = "/tmp/rs-test-include-XXXXXX", path[128], inc[128];
+    FILE *f;
+    (void) state;
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/main.case", dir);
+    snprintf(inc, sizeof inc, "%s/part.inc", dir);
+    f = fopen(inc, "w");
+    fputs("# fragment\n\neq x[n+1] = a*x[n]\n", f);
+    fclose(f);
+    f = fopen(path, "w");
+    fputs("param a\nunknown x\ninclude part.inc\n", f);
+    fclose(f);
+    rs_case_init(c);
+    rs_error_init(err);
+    assert_int_equal(rs_case_parse_file(c, path, err), RS_OK);
+    assert_int_equal(c->neqs, 1);
+    assert_string_equal(c->eqs[0].loc.file, inc);
+    assert_int_equal(c->eqs[0].loc.line, 3);
+    at_pos(c->eqs[0].rhs, inc, 3, 14);    /* the '*' of a*x[n] */
+    at_pos(c->eqs[0].lhs, inc, 3, 4);
+    rs_case_clear(c);
+    remove(inc);
+    remove(path);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -265,6 +374,8 @@ int main(void)
         cmocka_unit_test(test_bytes),
         cmocka_unit_test(test_set_value_cli),
         cmocka_unit_test(test_division_assumption),
+        cmocka_unit_test(test_syntax_tree),
+        cmocka_unit_test(test_include_positions),
     };
     return cmocka_run_group_tests_name("casefile", tests, NULL, NULL);
 }

@@ -103,6 +103,74 @@ static void test_depth_limit(void **state)
     fmpq_clear(q);
 }
 
+static rs_expr_t *parse(const char *s)
+{
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    rs_error_t err;
+    memset(&src, 0, sizeof src);
+    src.file = "t";
+    src.text = s;
+    src.line = 1;
+    src.col = 1;
+    rs_error_init(err);
+    if (rs_expr_parse_all(&e, &src, err) != RS_OK) fail_msg("%s: %s", s, err->msg);
+    return e;
+}
+
+/* Printing a parsed tree gives the text back when it is written in the
+ * printer's spacing (the --emit equations output keeps the user's text so):
+ * parentheses as written, number spellings, shifts. */
+static void test_print_round_trip(void **state)
+{
+    const char *texts[] = {"-w^2*x", "(-k1*y1 + kc*(y2 - y1) + dc*(v2 - v1))/m1", "-(1 + acc1)*c1*x1 - d1*v1",
+                           "x[n+1] - 2*x[n] + x[n-1]", "z1[n+0]", "((h))", "0.5*1e-3 - 1/4", "exp(-a*h)",
+                           "2^-1", "a - (b - c)", "a/(b*c)", "(a^b)^c", NULL};
+    size_t i;
+    (void) state;
+    for (i = 0; texts[i]; i++) {
+        rs_expr_t *e = parse(texts[i]);
+        char *p = rs_expr_str(e);
+        assert_string_equal(p, texts[i]);
+        flint_free(p);
+        rs_expr_free(e);
+    }
+}
+
+/* Trees built without parentheses get those the precedence needs: the
+ * printed text parses back to the same tree. */
+static void test_print_built(void **state)
+{
+    rs_expr_t *e = rs_expr_new_op(RS_EXPR_MUL, rs_expr_new_name("a", 0, 0, NULL, 0, 0),
+                                  rs_expr_new_op(RS_EXPR_SUB, rs_expr_new_name("x", 1, 1, NULL, 0, 0),
+                                                 rs_expr_new_num(2, NULL, 0, 0), NULL, 0, 0), NULL, 0, 0);
+    char *p = rs_expr_str(e);
+    rs_expr_t *back;
+    (void) state;
+    assert_string_equal(p, "a*(x[n+1] - 2)");
+    back = parse(p);
+    assert_true(rs_expr_equal(e, back));
+    flint_free(p);
+    rs_expr_free(e);
+    rs_expr_free(back);
+}
+
+/* Structural equality ignores parentheses, spellings and positions. */
+static void test_equal(void **state)
+{
+    const char *same[][2] = {{"(v)", "v"}, {"((a + b))*c", "(a + b)*c"}, {"0.50", "5e-1"}, {"x[n+0]", "x[n]"}};
+    const char *differ[][2] = {{"v", "v[n]"}, {"a + b", "b + a"}, {"a - b - c", "a - (b - c)"}, {"sin(x)", "cos(x)"}};
+    size_t i;
+    (void) state;
+    for (i = 0; i < 4; i++) {
+        rs_expr_t *a = parse(same[i][0]), *b = parse(same[i][1]);
+        rs_expr_t *c = parse(differ[i][0]), *d = parse(differ[i][1]);
+        if (!rs_expr_equal(a, b)) fail_msg("%s != %s", same[i][0], same[i][1]);
+        if (rs_expr_equal(c, d)) fail_msg("%s == %s", differ[i][0], differ[i][1]);
+        rs_expr_free(a); rs_expr_free(b); rs_expr_free(c); rs_expr_free(d);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -110,6 +178,9 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_shift_parse),
         cmocka_unit_test(test_depth_limit),
+        cmocka_unit_test(test_print_round_trip),
+        cmocka_unit_test(test_print_built),
+        cmocka_unit_test(test_equal),
     };
     return cmocka_run_group_tests_name("expr", tests, NULL, NULL);
 }

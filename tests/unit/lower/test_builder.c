@@ -344,6 +344,72 @@ static void test_time_domain_oracle(void **state)
         }
 }
 
+/* Newmark pairs are found on trees: x' = (v) gives the same equations as
+ * x' = v (issue 12: the text comparison rejected it), and with beta = 1/4,
+ * gamma = 1/2, h = 1 the characteristic polynomial is the closed form of
+ * Hughes (The Finite Element Method, ch. 9; cases/textbook/newmark-average-
+ * acceleration.case): (4 + w^2) lambda^2 - (8 - 2 w^2) lambda + (4 + w^2). */
+static void test_newmark_pairs_structural(void **state)
+{
+    const char *plain = "param w\nsubsystem S state x v\n  x' = v\n  v' = -w^2*x\nintegrate S newmark 1/4 1/2 1\n";
+    const char *paren = "param w\nsubsystem S state x v\n  x' = (v)\n  v' = -w^2*x\nintegrate S newmark 1/4 1/2 1\n";
+    pol_t A, B;
+    slong i;
+    (void) state;
+    pol_build(&A, "plain", plain);
+    pol_build(&B, "paren", paren);
+    assert_int_equal(A.c->neqs, B.c->neqs);
+    for (i = 0; i < A.c->neqs; i++) {
+        assert_true(A.c->eqs[i].generated);
+        assert_true(rs_expr_equal(A.c->eqs[i].lhs, B.c->eqs[i].lhs));
+        assert_true(rs_expr_equal(A.c->eqs[i].rhs, B.c->eqs[i].rhs));
+    }
+    assert_true(pol_equals(&B, "(4 + w^2)*lambda^2 - (8 - 2*w^2)*lambda + (4 + w^2)"));
+    pol_clear(&A);
+    pol_clear(&B);
+}
+
+/* The generated equations are trees whose nodes point at the user's text:
+ * the equation of motion's right-hand side at the state equation (line 4),
+ * the integration formula at the `integrate` statement (line 5, the method's
+ * column 13); the step h keeps its own position (line 5, column 28). */
+static void test_generated_positions(void **state)
+{
+    const char *text = "param w, h\n"
+                       "subsystem S state x v\n"
+                       "  x' = v\n"
+                       "  v' = -w^2*x\n"
+                       "integrate S euler-forward h\n";
+    pol_t A;
+    const rs_eq_t *motion = NULL, *formula = NULL;
+    slong i;
+    char *t;
+    (void) state;
+    pol_build(&A, "t.case", text);
+    for (i = 0; i < A.c->neqs; i++) {
+        t = A.c->eqs[i].text;
+        if (strncmp(t, "v_dot[n+1] = ", 13) == 0) motion = &A.c->eqs[i];
+        if (strncmp(t, "v[n+1] - v[n] = ", 16) == 0) formula = &A.c->eqs[i];
+    }
+    assert_non_null(motion);
+    assert_non_null(formula);
+    assert_string_equal(motion->text, "v_dot[n+1] = (-w^2*x[n+1])");
+    assert_string_equal(formula->text, "v[n+1] - v[n] = (h)*v_dot[n]");
+    /* -w^2*x: MUL at '*' (column 12); x became x[n+1] at column 13 */
+    assert_string_equal(motion->rhs->file, "t.case");
+    assert_int_equal(motion->rhs->line, 4);
+    assert_int_equal(motion->rhs->col, 12);
+    assert_int_equal(motion->rhs->b->col, 13);
+    assert_int_equal(motion->rhs->b->shift, 1);
+    assert_int_equal(formula->lhs->line, 5);
+    assert_int_equal(formula->lhs->col, 13);
+    assert_int_equal(formula->rhs->a->line, 5);   /* (h) */
+    assert_int_equal(formula->rhs->a->col, 27);
+    assert_int_equal(A.c->nunknowns, 4);          /* x x_dot v v_dot, all generated */
+    for (i = 0; i < A.c->nunknowns; i++) assert_true(A.c->unknowns[i].generated);
+    pol_clear(&A);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -351,6 +417,8 @@ int main(void)
         cmocka_unit_test(test_one_iteration_forward_euler),
         cmocka_unit_test(test_decoupled_factorises),
         cmocka_unit_test(test_park_builders),
+        cmocka_unit_test(test_newmark_pairs_structural),
+        cmocka_unit_test(test_generated_positions),
         cmocka_unit_test(test_time_domain_oracle),
     };
     return cmocka_run_group_tests_name("builder", tests, NULL, NULL);
