@@ -10,43 +10,9 @@
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
-/* num/den of an expression of the synthetic evaluation case at the set values */
+/* values substituted for parameters (the set values, or a map point's) */
 typedef struct { const char *name; const fmpq *value; } val_t;
 typedef struct { slong n; val_t *v; } vals_t;
-
-static int eval_linear(fmpq_mpoly_t out, const rs_case_struct *c, const vals_t *vals, const rs_case_struct *tc,
-                       const rs_scheme_struct *ts, const rs_expr_t *e, const rs_loc_t *loc, rs_error_t err)
-{
-    fmpq_mpoly_t den;
-    slong i;
-    int r;
-    fmpq_mpoly_init(den, ts->ctx);
-    r = rs_scheme_eval_poly(out, den, ts, tc, e, 0, err);
-    if (r == RS_OK) {
-        for (i = 0; i < vals->n; i++) {
-            slong k = rs_case_param_index(tc, vals->v[i].name);
-            fmpq_mpoly_evaluate_one_fmpq(out, out, k, vals->v[i].value, ts->ctx);
-            fmpq_mpoly_evaluate_one_fmpq(den, den, k, vals->v[i].value, ts->ctx);
-        }
-        for (i = 0; i < c->nparams; i++)
-            if (fmpq_mpoly_degree_si(out, i, ts->ctx) > 0 || fmpq_mpoly_degree_si(den, i, ts->ctx) > 0)
-                r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
-                                    "exact integration is numeric: set every parameter (still symbolic: %s)",
-                                    c->params[i].name);
-        if (r == RS_OK) {
-            fmpq_t d;
-            fmpq_init(d);
-            fmpq_mpoly_get_fmpq(d, den, ts->ctx);
-            if (fmpq_is_zero(d))
-                r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col, "division by zero%s", "");
-            else
-                fmpq_mpoly_scalar_div_fmpq(out, out, d, ts->ctx);
-            fmpq_clear(d);
-        }
-    }
-    fmpq_mpoly_clear(den, ts->ctx);
-    return r;
-}
 
 /* coefficient of variable v (degree <= 1 checked by the caller) */
 static void lin_coeff(fmpq_t q, const fmpq_mpoly_t p, slong v, const rs_scheme_struct *ts)
@@ -128,98 +94,211 @@ static int eval_case(rs_case_struct *tc, const rs_case_struct *c, rs_error_t err
     return r;
 }
 
-/* Two subsystems integrated exactly, coupled through u = C z (rs_cosim_from_case in cosim.h):
- * a subsystem's equations are linear in its own states (-> A_i), in the coupling forces and in
- * the partner's states (-> B_i; each partner state used is one coupling variable, displacement
- * coupling / base-point excitation, with C row e_state; each force one, C row = the coefficients of
- * its expression in the states).  u = (partner states used, in state order; then the forces). */
-static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *vals, rs_error_t err)
-{
-    rs_case_t tc;
+/* The co-simulation model of a case (design.md: A_i, B_i, C as linear forms
+ * in the parameters, built once per run): every state equation, macro step
+ * and coupling force evaluated once as num/den polynomials in an evaluation
+ * case whose variables are the parameters, the states and the forces.  At a
+ * point (cosim_at) only numbers are substituted. */
+typedef struct {
+    rs_case_t tc;              /* the evaluation case (eval_case) */
     rs_scheme_t ts;
-    slong i, j, a, nstate[2], base[2], fbase, n, nf = c->nforces, m, *in_var = NULL;
-    int r = RS_OK;
-    fmpq_mpoly_t p;
-    fmpq_t q, h0;
-    fmpq_mat_t W;      /* row = state equation (global), columns = states then forces */
+    slong nstate[2], n, nf;
+    slong nforms;              /* n state rows, 2 macro steps, nf forces */
+    fmpq_mpoly_struct *num, *den;
+    int *second;               /* per state row: X'' = F's X (its derivative is the next state) */
+    const rs_loc_t **loc;      /* where each form comes from */
+} cosim_forms_t;
+
+static slong form_step(const cosim_forms_t *F, slong a) { return F->n + a; }
+static slong form_force(const cosim_forms_t *F, slong f) { return F->n + 2 + f; }
+
+static void cosim_forms_clear(cosim_forms_t *F)
+{
+    slong i;
+    for (i = 0; i < F->nforms; i++) {
+        fmpq_mpoly_clear(F->num + i, F->ts->ctx);
+        fmpq_mpoly_clear(F->den + i, F->ts->ctx);
+    }
+    flint_free(F->num);
+    flint_free(F->den);
+    flint_free(F->second);
+    flint_free(F->loc);
+    rs_scheme_clear(F->ts);
+    rs_case_clear(F->tc);
+}
+
+/* state row j of subsystem s: its equation (or *second for X of X'' = F) */
+static int row_equation(const rs_deq_t **out, int *second, const rs_subsystem_t *s, slong j, rs_error_t err)
+{
+    const rs_deq_t *d = NULL;
+    slong k;
+    *second = 0;
+    for (k = 0; k < s->ndeqs; k++)
+        if (strcmp(s->deqs[k].state, s->states[j].name) == 0 && s->deqs[k].order == 1) d = &s->deqs[k];
+    /* X'' = f: X' is the next state; that state's derivative is f */
+    for (k = 0; k < s->ndeqs && d == NULL; k++)
+        if (s->deqs[k].order == 2 && j > 0 && strcmp(s->deqs[k].state, s->states[j - 1].name) == 0) d = &s->deqs[k];
+    for (k = 0; k < s->ndeqs; k++)
+        if (s->deqs[k].order == 2 && strcmp(s->deqs[k].state, s->states[j].name) == 0) *second = 1;
+    *out = d;
+    if (*second) {
+        if (j + 1 >= s->nstates)
+            return rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
+                                   "declare the velocity state after %s", s->states[j].name);
+        return RS_OK;
+    }
+    if (d == NULL)
+        return rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
+                               "expected an equation %s' = ...", s->states[j].name);
+    return RS_OK;
+}
+
+static int form_add(cosim_forms_t *F, const rs_expr_t *e, const rs_loc_t *loc, rs_error_t err)
+{
+    slong i = F->nforms++;
+    fmpq_mpoly_init(F->num + i, F->ts->ctx);
+    fmpq_mpoly_init(F->den + i, F->ts->ctx);
+    F->loc[i] = loc;
+    if (e == NULL) { fmpq_mpoly_one(F->den + i, F->ts->ctx); return RS_OK; }
+    return rs_scheme_eval_poly(F->num + i, F->den + i, F->ts, F->tc, e, 0, err);
+}
+
+static int cosim_forms_init(cosim_forms_t *F, const rs_case_struct *c, rs_error_t err)
+{
+    slong a, j, row = 0, i;
+    int r;
+    memset(F, 0, sizeof *F);
+    rs_case_init(F->tc);
+    rs_scheme_init(F->ts);
     if (c->nsubs != 2)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
                                "exact integration with co-simulation coupling needs two subsystems (found %ld)",
                                (long) c->nsubs);
-    rs_case_init(tc);
-    rs_scheme_init(ts);
-    r = eval_case(tc, c, err);
-    if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
-    /* copy the lets so that state equations may use them */
-    r = rs_scheme_build(ts, tc, err);
-    if (r != RS_OK) { rs_scheme_clear(ts); rs_case_clear(tc); return r; }
-    nstate[0] = c->subs[0].nstates;
-    nstate[1] = c->subs[1].nstates;
-    n = nstate[0] + nstate[1];
-    base[0] = c->nparams;
-    base[1] = c->nparams + nstate[0];
-    fbase = c->nparams + n;
+    r = eval_case(F->tc, c, err);
+    if (r == RS_OK) r = rs_scheme_build(F->ts, F->tc, err);
+    if (r != RS_OK) return r;
+    F->nstate[0] = c->subs[0].nstates;
+    F->nstate[1] = c->subs[1].nstates;
+    F->n = F->nstate[0] + F->nstate[1];
+    F->nf = c->nforces;
+    F->num = flint_malloc((F->n + 2 + F->nf) * sizeof(fmpq_mpoly_struct));
+    F->den = flint_malloc((F->n + 2 + F->nf) * sizeof(fmpq_mpoly_struct));
+    F->loc = flint_malloc((F->n + 2 + F->nf) * sizeof(rs_loc_t *));
+    F->second = flint_calloc(F->n, sizeof(int));
+    for (a = 0; a < 2 && r == RS_OK; a++)
+        for (j = 0; j < c->subs[a].nstates && r == RS_OK; j++, row++) {
+            const rs_deq_t *d;
+            r = row_equation(&d, &F->second[row], &c->subs[a], j, err);
+            if (r == RS_OK) r = form_add(F, F->second[row] ? NULL : d->rhs, F->second[row] ? &c->subs[a].loc : &d->loc, err);
+        }
+    for (a = 0; a < 2 && r == RS_OK; a++) r = form_add(F, c->subs[a].step, &c->subs[a].intloc, err);
+    for (i = 0; i < F->nf && r == RS_OK; i++) r = form_add(F, c->forces[i].e, &c->forces[i].loc, err);
+    return r;
+}
+
+/* form i at the values: out = num/den with every parameter substituted */
+static int form_at(fmpq_mpoly_t out, const cosim_forms_t *F, slong i, const rs_case_struct *c, const vals_t *vals,
+                   rs_error_t err)
+{
+    const rs_scheme_struct *ts = F->ts;
+    const rs_loc_t *loc = F->loc[i];
+    fmpq_mpoly_t den;
+    slong k;
+    int r = RS_OK;
+    fmpq_mpoly_init(den, ts->ctx);
+    fmpq_mpoly_set(out, F->num + i, ts->ctx);
+    fmpq_mpoly_set(den, F->den + i, ts->ctx);
+    for (k = 0; k < vals->n; k++) {
+        slong v = rs_case_param_index(F->tc, vals->v[k].name);
+        fmpq_mpoly_evaluate_one_fmpq(out, out, v, vals->v[k].value, ts->ctx);
+        fmpq_mpoly_evaluate_one_fmpq(den, den, v, vals->v[k].value, ts->ctx);
+    }
+    for (k = 0; k < c->nparams; k++)
+        if (fmpq_mpoly_degree_si(out, k, ts->ctx) > 0 || fmpq_mpoly_degree_si(den, k, ts->ctx) > 0)
+            r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col,
+                                "exact integration is numeric: set every parameter (still symbolic: %s)",
+                                c->params[k].name);
+    if (r == RS_OK) {
+        fmpq_t d;
+        fmpq_init(d);
+        fmpq_mpoly_get_fmpq(d, den, ts->ctx);
+        if (fmpq_is_zero(d))
+            r = rs_error_set_at(err, RS_ERR_INPUT, loc->file, loc->line, loc->col, "division by zero%s", "");
+        else
+            fmpq_mpoly_scalar_div_fmpq(out, out, d, ts->ctx);
+        fmpq_clear(d);
+    }
+    fmpq_mpoly_clear(den, ts->ctx);
+    return r;
+}
+
+/* W (row = state equation, columns = states then forces) and the macro step at the values */
+static int cosim_rows_at(fmpq_mat_t W, fmpq_t h0, const cosim_forms_t *F, const rs_case_struct *c,
+                         const vals_t *vals, rs_error_t err)
+{
+    const rs_scheme_struct *ts = F->ts;
+    slong a, j, q2, row = 0, base = c->nparams, n = F->n, nf = F->nf;
+    fmpq_mpoly_t p;
+    fmpq_t q;
+    int r = RS_OK;
+    fmpq_mpoly_init(p, ts->ctx);
+    fmpq_init(q);
+    for (a = 0; a < 2 && r == RS_OK; a++) {
+        for (j = 0; j < F->nstate[a] && r == RS_OK; j++, row++) {
+            if (F->second[row]) { fmpq_one(fmpq_mat_entry(W, row, row + 1)); continue; }
+            r = form_at(p, F, row, c, vals, err);
+            if (r == RS_OK)
+                r = check_linear(p, base, base + n + nf, ts, F->loc[row], "a state equation",
+                                 "the states (its own; the partner's are coupling inputs) and the coupling forces", err);
+            for (q2 = 0; q2 < n + nf && r == RS_OK; q2++) {
+                lin_coeff(q, p, base + q2, ts);
+                fmpq_set(fmpq_mat_entry(W, row, q2), q);
+            }
+        }
+        /* the macro step */
+        if (r == RS_OK) r = form_at(p, F, form_step(F, a), c, vals, err);
+        if (r == RS_OK) {
+            const rs_loc_t *l = &c->subs[a].intloc;
+            if (!fmpq_mpoly_is_fmpq(p, ts->ctx) || fmpq_mpoly_is_zero(p, ts->ctx))
+                r = rs_error_set_at(err, RS_ERR_INPUT, l->file, l->line, l->col,
+                                    "expected a positive number as the macro step%s", "");
+            else {
+                fmpq_mpoly_get_fmpq(q, p, ts->ctx);
+                if (a == 1 && !fmpq_equal(q, h0))
+                    r = rs_error_set_at(err, RS_ERR_INPUT, l->file, l->line, l->col,
+                                        "both subsystems must use the same macro step%s", "");
+                fmpq_set(h0, q);
+            }
+        }
+    }
+    fmpq_mpoly_clear(p, ts->ctx);
+    fmpq_clear(q);
+    return r;
+}
+
+/* Two subsystems integrated exactly, coupled through u = C z (rs_cosim_from_case in cosim.h),
+ * at the values: a subsystem's equations are linear in its own states (-> A_i), in the coupling
+ * forces and in the partner's states (-> B_i; each partner state used is one coupling variable,
+ * displacement coupling / base-point excitation, with C row e_state; each force one, C row = the
+ * coefficients of its expression in the states).  u = (partner states used, in state order; then
+ * the forces). */
+static int cosim_at(rs_cosim_t cs, const cosim_forms_t *F, const rs_case_struct *c, const vals_t *vals,
+                    rs_error_t err)
+{
+    const rs_scheme_struct *ts = F->ts;
+    slong i, j, n = F->n, nf = F->nf, m = 0, base = c->nparams, *in_var;
+    const slong *nstate = F->nstate;
+    int r;
+    fmpq_mpoly_t p;
+    fmpq_t q, h0;
+    fmpq_mat_t W;
     fmpq_mpoly_init(p, ts->ctx);
     fmpq_init(q);
     fmpq_init(h0);
     fmpq_mat_init(W, n, n + nf);
-    for (a = 0; a < 2 && r == RS_OK; a++) {
-        const rs_subsystem_t *s = &c->subs[a];
-        slong row0 = base[a] - base[0];
-        for (j = 0; j < s->nstates && r == RS_OK; j++) {
-            const rs_deq_t *d = NULL;
-            slong k, q2;
-            int second = 0;
-            for (k = 0; k < s->ndeqs; k++)
-                if (strcmp(s->deqs[k].state, s->states[j].name) == 0 && s->deqs[k].order == 1) d = &s->deqs[k];
-            /* X'' = f: X' is the next state; that state's derivative is f */
-            for (k = 0; k < s->ndeqs && d == NULL; k++)
-                if (s->deqs[k].order == 2 && j > 0 && strcmp(s->deqs[k].state, s->states[j - 1].name) == 0) d = &s->deqs[k];
-            for (k = 0; k < s->ndeqs; k++)
-                if (s->deqs[k].order == 2 && strcmp(s->deqs[k].state, s->states[j].name) == 0) second = 1;
-            if (second) {
-                if (j + 1 >= s->nstates) {
-                    r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
-                                        "declare the velocity state after %s", s->states[j].name);
-                    break;
-                }
-                fmpq_one(fmpq_mat_entry(W, row0 + j, row0 + j + 1));
-                continue;
-            }
-            if (d == NULL) {
-                r = rs_error_set_at(err, RS_ERR_INPUT, s->loc.file, s->loc.line, s->loc.col,
-                                    "expected an equation %s' = ...", s->states[j].name);
-                break;
-            }
-            r = eval_linear(p, c, vals, tc, ts, d->rhs, &d->loc, err);
-            if (r == RS_OK)
-                r = check_linear(p, base[0], fbase + nf, ts, &d->loc, "a state equation",
-                                 "the states (its own; the partner's are coupling inputs) and the coupling forces", err);
-            for (q2 = 0; q2 < n + nf && r == RS_OK; q2++) {
-                lin_coeff(q, p, base[0] + q2, ts);
-                fmpq_set(fmpq_mat_entry(W, row0 + j, q2), q);
-            }
-        }
-        /* the macro step */
-        if (r == RS_OK) {
-            r = eval_linear(p, c, vals, tc, ts, s->step, &s->intloc, err);
-            if (r == RS_OK) {
-                if (!fmpq_mpoly_is_fmpq(p, ts->ctx) || fmpq_mpoly_is_zero(p, ts->ctx))
-                    r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
-                                        "expected a positive number as the macro step%s", "");
-                else {
-                    fmpq_mpoly_get_fmpq(q, p, ts->ctx);
-                    if (a == 1 && !fmpq_equal(q, h0))
-                        r = rs_error_set_at(err, RS_ERR_INPUT, s->intloc.file, s->intloc.line, s->intloc.col,
-                                            "both subsystems must use the same macro step%s", "");
-                    fmpq_set(h0, q);
-                }
-            }
-        }
-    }
-    /* the coupling variables: W column of each (a partner state used, then every force) */
-    m = 0;
     in_var = flint_malloc((n + nf + 1) * sizeof(slong));
+    r = cosim_rows_at(W, h0, F, c, vals, err);
+    /* the coupling variables: W column of each (a partner state used, then every force) */
     if (r == RS_OK) {
         for (j = 0; j < n; j++) {
             int own = j < nstate[0] ? 0 : 1, used = 0;
@@ -249,15 +328,14 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
             slong v = in_var[i];
             if (v < n) {
                 fmpq_one(fmpq_mat_entry(cs->C, i, v));
-            } else {
-                const rs_force_t *fo = &c->forces[v - n];
-                const rs_loc_t *fl = &fo->loc;
-                r = eval_linear(p, c, vals, tc, ts, fo->e, fl, err);
-                if (r == RS_OK) r = check_linear(p, base[0], fbase, ts, fl, "a coupling force", "the states", err);
-                for (j = 0; j < n && r == RS_OK; j++) {
-                    lin_coeff(q, p, base[0] + j, ts);
-                    fmpq_set(fmpq_mat_entry(cs->C, i, j), q);
-                }
+                continue;
+            }
+            r = form_at(p, F, form_force(F, v - n), c, vals, err);
+            if (r == RS_OK) r = check_linear(p, base, base + n, ts, F->loc[form_force(F, v - n)], "a coupling force",
+                                             "the states", err);
+            for (j = 0; j < n && r == RS_OK; j++) {
+                lin_coeff(q, p, base + j, ts);
+                fmpq_set(fmpq_mat_entry(cs->C, i, j), q);
             }
         }
     }
@@ -272,8 +350,17 @@ static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *val
     fmpq_mpoly_clear(p, ts->ctx);
     fmpq_clear(q);
     fmpq_clear(h0);
-    rs_scheme_clear(ts);
-    rs_case_clear(tc);
+    return r;
+}
+
+/* The model at the values in one call (the forms built and cleared here;
+ * a run over many points builds them once with cosim_forms_init). */
+static int cosim_build(rs_cosim_t cs, const rs_case_struct *c, const vals_t *vals, rs_error_t err)
+{
+    cosim_forms_t F;
+    int r = cosim_forms_init(&F, c, err);
+    if (r == RS_OK) r = cosim_at(cs, &F, c, vals, err);
+    cosim_forms_clear(&F);
     return r;
 }
 
