@@ -98,6 +98,8 @@ int rs_expr_equal(const rs_expr_t *a, const rs_expr_t *b);
  * "a/b", "a^b", "-a", "f(a)", numbers as spelled, the written parentheses
  * (and those the operator precedence needs). */
 char *rs_expr_str(const rs_expr_t *e);
+/* "LHS = RHS" printed the same way (an equation's text). */
+char *rs_expr_eq_str(const rs_expr_t *lhs, const rs_expr_t *rhs);
 
 /* Source position of text[i] in src. */
 void rs_src_pos(const rs_src_t *src, size_t i, int *line, int *col);

@@ -155,3 +155,13 @@ char *rs_expr_str(const rs_expr_t *e)
     if (e != NULL) print(&b, e, 0);
     return b.s;
 }
+
+char *rs_expr_eq_str(const rs_expr_t *lhs, const rs_expr_t *rhs)
+{
+    buf_t b = {NULL, 0, 0};
+    put(&b, "%s", "");
+    print(&b, lhs, 0);
+    put(&b, " = ");
+    print(&b, rhs, 0);
+    return b.s;
+}

@@ -175,7 +175,6 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
 static void add_eq(rs_case_struct *c, rs_expr_t *lhs, rs_expr_t *rhs, const rs_loc_t *loc)
 {
     rs_eq_t *q;
-    char *l = rs_expr_str(lhs), *r = rs_expr_str(rhs);
     c->eqs = flint_realloc(c->eqs, (c->neqs + 1) * sizeof(rs_eq_t));
     q = &c->eqs[c->neqs++];
     memset(q, 0, sizeof *q);
@@ -184,10 +183,7 @@ static void add_eq(rs_case_struct *c, rs_expr_t *lhs, rs_expr_t *rhs, const rs_l
     q->loc.file = rs_strdup(loc->file);
     q->loc.line = loc->line;
     q->loc.col = loc->col;
-    q->text = flint_malloc(strlen(l) + strlen(r) + 4);
-    sprintf(q->text, "%s = %s", l, r);
-    flint_free(l);
-    flint_free(r);
+    q->text = rs_expr_eq_str(lhs, rhs);
     q->generated = 1;
 }
 

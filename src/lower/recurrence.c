@@ -77,7 +77,6 @@ static void gen_row(rs_case_t c, slong n, slong i)
 {
     const rs_loc_t *l = &c->rec[0].loc;
     rs_expr_t *lhs = NULL;
-    char *ltext, *text;
     rs_eq_t *q;
     slong t, j;
     for (t = 0; t < c->nrec; t++)
@@ -97,11 +96,7 @@ static void gen_row(rs_case_t c, slong n, slong i)
     q->loc.file = rs_strdup(l->file);
     q->loc.line = l->line;
     q->loc.col = l->col;
-    ltext = rs_expr_str(lhs);
-    text = flint_malloc(strlen(ltext) + 5);
-    sprintf(text, "%s = 0", ltext);
-    flint_free(ltext);
-    q->text = text;
+    q->text = rs_expr_eq_str(q->lhs, q->rhs);
     q->generated = 1;
 }
 
