@@ -165,6 +165,56 @@ static int scan_decimal(fmpq_t q, const char *t, size_t *i)
 static rs_expr_t *parse_expr(parser_t *p);
 static rs_expr_t *parse_unary(parser_t *p);
 
+/* the shift [n], [n+K] or [n-K] after a name (p->pos at '['), into e;
+ * 0 and e freed on an error */
+static int parse_shift(parser_t *p, rs_expr_t *e)
+{
+    const char *t = p->src->text;
+    slong k = 0, sign = 1;
+    size_t lb = p->pos;
+    p->pos++;
+    skip_ws(p);
+    if (t[p->pos] != 'n' || isalnum((unsigned char) t[p->pos + 1]) || t[p->pos + 1] == '_') {
+        perr(p, p->pos, "'n' in a shift such as x[n+1]");
+        rs_expr_free(e);
+        return 0;
+    }
+    p->pos++;
+    skip_ws(p);
+    if (t[p->pos] == '+' || t[p->pos] == '-') {
+        sign = (t[p->pos] == '-') ? -1 : 1;
+        e->shift_signed = 1;
+        p->pos++;
+        skip_ws(p);
+        if (!isdigit((unsigned char) t[p->pos])) {
+            perr(p, p->pos, "an integer shift such as x[n+1]");
+            rs_expr_free(e);
+            return 0;
+        }
+        while (isdigit((unsigned char) t[p->pos])) {
+            k = 10 * k + (t[p->pos] - '0');
+            p->pos++;
+            if (k > 100000) {
+                int line, col;
+                rs_src_pos(p->src, lb, &line, &col);
+                rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col, "shift too large (limit 100000)");
+                rs_expr_free(e);
+                return 0;
+            }
+        }
+        skip_ws(p);
+    }
+    if (t[p->pos] != ']') {
+        perr(p, p->pos, "']' to close the shift");
+        rs_expr_free(e);
+        return 0;
+    }
+    p->pos++;
+    e->shifted = 1;
+    e->shift = sign * k;
+    return 1;
+}
+
 static rs_expr_t *parse_primary(parser_t *p)
 {
     const char *t = p->src->text;
@@ -247,51 +297,8 @@ static rs_expr_t *parse_primary(parser_t *p)
             p->height = p->height + 1;
             return e;
         }
-        if (t[p->pos] == '[') {
-            slong k = 0, sign = 1;
-            size_t lb = p->pos;
-            p->pos++;
-            skip_ws(p);
-            if (t[p->pos] != 'n' || isalnum((unsigned char) t[p->pos + 1]) || t[p->pos + 1] == '_') {
-                perr(p, p->pos, "'n' in a shift such as x[n+1]");
-                rs_expr_free(e);
-                return NULL;
-            }
-            p->pos++;
-            skip_ws(p);
-            if (t[p->pos] == '+' || t[p->pos] == '-') {
-                sign = (t[p->pos] == '-') ? -1 : 1;
-                e->shift_signed = 1;
-                p->pos++;
-                skip_ws(p);
-                if (!isdigit((unsigned char) t[p->pos])) {
-                    perr(p, p->pos, "an integer shift such as x[n+1]");
-                    rs_expr_free(e);
-                    return NULL;
-                }
-                while (isdigit((unsigned char) t[p->pos])) {
-                    k = 10 * k + (t[p->pos] - '0');
-                    p->pos++;
-                    if (k > 100000) {
-                        int line, col;
-                        rs_src_pos(p->src, lb, &line, &col);
-                        rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
-                                        "shift too large (limit 100000)");
-                        rs_expr_free(e);
-                        return NULL;
-                    }
-                }
-                skip_ws(p);
-            }
-            if (t[p->pos] != ']') {
-                perr(p, p->pos, "']' to close the shift");
-                rs_expr_free(e);
-                return NULL;
-            }
-            p->pos++;
-            e->shifted = 1;
-            e->shift = sign * k;
-        }
+        if (t[p->pos] == '[' && !parse_shift(p, e))
+            return NULL;
         return e;
     }
     perr(p, p->pos, "an expression (number, name or '(')");

@@ -27,6 +27,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rs_case_init(c);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, size, err);
+    if (r == RS_OK) r = rs_case_lower(c, err);
     fuzz_check_error(r, err);
     if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && fuzz_numbers_small(text, size) && fuzz_case_small(c)) {
         fuzz_options(&opt, FUZZ_MAX_PREC);

@@ -23,6 +23,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rs_case_init(c);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, size, err);
+    if (r == RS_OK) r = rs_case_lower(c, err);
     if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && c->nunknowns <= FUZZ_MAX_RUN_UNKNOWNS) {
         json_t *doc = NULL;
         int outcome = 0;

@@ -34,6 +34,7 @@
 #include <jansson.h>
 #include "recstab/analysis.h"
 #include "recstab/casefile.h"
+#include "recstab/scheme.h"
 #include "recstab/derivation.h"
 #include "recstab/report.h"
 #include "recstab/sweep.h"

@@ -175,6 +175,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rs_case_init(c);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, strlen(text), err);
+    if (r == RS_OK) r = rs_case_lower(c, err);
     for (set = sets; r == RS_OK && *set != '\0'; set += strlen(set) + 1)
         r = rs_case_set_value(c, set, err);
     fuzz_check_error(r, err);
