@@ -34,7 +34,7 @@ typedef struct rs_expr_struct {
     char *name;                      /* RS_EXPR_NAME, RS_EXPR_CALL */
     int shifted;                     /* NAME[n+K] written */
     slong shift;                     /* K */
-    int shift_signed;                /* K written with its sign, x[n+0] included (printing) */
+    int shift_signed;                /* K written with a sign: +1 '+', -1 '-' (x[n+0], x[n-0] print back) */
     int paren;                       /* pairs of parentheses written around the node */
     struct rs_expr_struct *a, *b;    /* operands */
 } rs_expr_struct;

@@ -183,7 +183,7 @@ static int parse_shift(parser_t *p, rs_expr_t *e)
     skip_ws(p);
     if (t[p->pos] == '+' || t[p->pos] == '-') {
         sign = (t[p->pos] == '-') ? -1 : 1;
-        e->shift_signed = 1;
+        e->shift_signed = (int) sign;
         p->pos++;
         skip_ws(p);
         if (!isdigit((unsigned char) t[p->pos])) {

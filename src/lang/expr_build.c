@@ -127,7 +127,8 @@ static void print(buf_t *b, const rs_expr_t *e, int need_paren)
     case RS_EXPR_NAME:
         put(b, "%s", e->name);
         if (e->shifted && (e->shift != 0 || e->shift_signed))
-            put(b, "[n%c%ld]", e->shift < 0 ? '-' : '+', (long) (e->shift < 0 ? -e->shift : e->shift));
+            put(b, "[n%c%ld]", e->shift < 0 || (e->shift == 0 && e->shift_signed < 0) ? '-' : '+',
+                (long) (e->shift < 0 ? -e->shift : e->shift));
         else if (e->shifted)
             put(b, "[n]");
         break;

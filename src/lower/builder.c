@@ -120,7 +120,9 @@ static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong j, pos_t
         slong K = g->c->extrapolate < 0 ? 0 : g->c->extrapolate, i;
         rs_expr_t *e;
         if (K == 0) return seq(p, 0, at);
-        e = op(RS_EXPR_MUL, num(extrap_coeff(K, 0), at), seq(p, 0, at), at);
+        e = seq(p, 0, at);
+        e->shift_signed = -1;   /* printed p[n-0], the first of p[n-i] */
+        e = op(RS_EXPR_MUL, num(extrap_coeff(K, 0), at), e, at);
         for (i = 1; i <= K; i++) {
             slong cf = extrap_coeff(K, i);
             e = op(cf < 0 ? RS_EXPR_SUB : RS_EXPR_ADD, e,

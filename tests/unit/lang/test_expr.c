@@ -124,7 +124,7 @@ static rs_expr_t *parse(const char *s)
 static void test_print_round_trip(void **state)
 {
     const char *texts[] = {"-w^2*x", "(-k1*y1 + kc*(y2 - y1) + dc*(v2 - v1))/m1", "-(1 + acc1)*c1*x1 - d1*v1",
-                           "x[n+1] - 2*x[n] + x[n-1]", "z1[n+0]", "((h))", "0.5*1e-3 - 1/4", "exp(-a*h)",
+                           "x[n+1] - 2*x[n] + x[n-1]", "z1[n+0]", "y[n-0]", "((h))", "0.5*1e-3 - 1/4", "exp(-a*h)",
                            "2^-1", "a - (b - c)", "a/(b*c)", "(a^b)^c", NULL};
     size_t i;
     (void) state;
