@@ -594,6 +594,15 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     return r;
 }
 
+/* rs_case_lower generated the equations of the builder or recurrence statements */
+static int lowered(const rs_case_t c)
+{
+    slong i;
+    for (i = 0; i < c->neqs; i++)
+        if (c->eqs[i].generated) return 1;
+    return 0;
+}
+
 static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
 {
     ev_t x;
@@ -628,6 +637,9 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     int r = RS_OK;
     rs_scheme_clear(s);
     setup_ctx(s, c);
+    if ((c->nsubs > 0 || c->nrec > 0) && !lowered(c))
+        return rs_error_set(err, RS_ERR_INTERNAL, "%s: the builder or recurrence statements are not lowered "
+                            "(call rs_case_lower after parsing)", c->path);
     if (c->charexpr != NULL)
         return build_char(s, c, err);
     if (n == 0)

@@ -410,6 +410,32 @@ static void test_generated_positions(void **state)
     pol_clear(&A);
 }
 
+/* Parsing does not lower: building the scheme of an unlowered builder case
+ * is refused (an internal error naming rs_case_lower), and after
+ * rs_case_lower the same case builds. */
+static void test_parse_does_not_lower(void **state)
+{
+    const char *text = "param w, h\nsubsystem S state x v\n  x' = v\n  v' = -w^2*x\nintegrate S euler-forward h\n";
+    rs_case_t c;
+    rs_scheme_t s;
+    rs_error_t err;
+    (void) state;
+    rs_case_init(c);
+    rs_scheme_init(s);
+    rs_error_init(err);
+    assert_int_equal(rs_case_parse_string(c, "t.case", text, strlen(text), err), RS_OK);
+    assert_int_equal(c->nunknowns, 0);
+    assert_int_equal(c->neqs, 0);
+    assert_int_equal(rs_scheme_build(s, c, err), RS_ERR_INTERNAL);
+    assert_non_null(strstr(err->msg, "rs_case_lower"));
+    assert_int_equal(rs_case_lower(c, err), RS_OK);
+    assert_int_equal(c->nunknowns, 4);
+    assert_int_equal(c->neqs, 4);
+    assert_int_equal(rs_scheme_build(s, c, err), RS_OK);
+    rs_scheme_clear(s);
+    rs_case_clear(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -419,6 +445,7 @@ int main(void)
         cmocka_unit_test(test_park_builders),
         cmocka_unit_test(test_newmark_pairs_structural),
         cmocka_unit_test(test_generated_positions),
+        cmocka_unit_test(test_parse_does_not_lower),
         cmocka_unit_test(test_time_domain_oracle),
     };
     return cmocka_run_group_tests_name("builder", tests, NULL, NULL);
