@@ -1,7 +1,6 @@
 /* casefile.c -- reading .case files into rs_case_t: logical lines
  * (continuations, comments), the statement keywords, include.  The builder
  * and recurrence statements are in stmt_builder.c and stmt_recurrence.c. */
-#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,8 +9,6 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "parse.h"
-
-/* ---------- statement parsing ------------------------------------------ */
 
 static int name_taken(const rs_case_struct *c, const char *name)
 {
@@ -23,7 +20,7 @@ static int check_new_name(rs_stmt_t *x, size_t at, const char *name)
 {
     if (rs_name_is_reserved(name))
         return _rs_at_err(x, at, RS_ERR_INPUT,
-                      "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
+                          "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
     if (name_taken(x->c, name))
         return _rs_at_err(x, at, RS_ERR_INPUT, "'%s' is already declared", name);
     if (x->c->nparams + x->c->nunknowns + x->c->nlets >= RS_CASE_MAX_NAMES)
