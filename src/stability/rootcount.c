@@ -213,11 +213,11 @@ static int count_isolated(rs_rootcount_t rc, const fmpz_poly_t f, slong e,
     slong deg = fmpz_poly_degree(f), prec, i, in = 0, out = 0;
     acb_ptr roots = _acb_vec_init(deg);
     arb_t r;
-    int done = 0;
+    int done = 0, status = RS_OK;
 
     arb_init(r);
     for (prec = 64; prec <= RS_ROOTCOUNT_MAX_PREC && !done; prec *= 2) {
-        if (rs_budget_check(err, "the root isolation") != RS_OK) break;
+        if ((status = rs_budget_check(err, "the root isolation")) != RS_OK) break;
         rs_radius_complex_roots(roots, f, prec);
         in = out = 0;
         for (i = 0; i < deg; i++) {
@@ -232,6 +232,8 @@ static int count_isolated(rs_rootcount_t rc, const fmpz_poly_t f, slong e,
     }
     arb_clear(r);
     _acb_vec_clear(roots, deg);
+    if (status != RS_OK)
+        return status;
     if (!done)
         return rs_error_set(err, RS_ERR_UNDECIDED,
             "root isolation of a degree %ld factor did not separate its "

@@ -156,7 +156,9 @@ static int routh_segment(rs_routh_t r, fmpq_poly_t G, slong *rhp,
     len = 1;
     while (!fmpq_poly_is_zero(cur)) {
         slong nominal = D[len - 1] - 1, row, zeros;
-        if (rs_budget_check(err, "the Routh array") != RS_OK) break;
+        /* a stop must reach the caller: its segment loop would take the
+         * unfinished chain for a zero row and run past its arrays */
+        if ((status = rs_budget_check(err, "the Routh array")) != RS_OK) break;
         row = routh_push_row(r, cur, nominal);
         zeros = (nominal - fmpq_poly_degree(cur)) / 2;
         if (zeros > 0)
@@ -194,7 +196,9 @@ static int routh_segment(rs_routh_t r, fmpq_poly_t G, slong *rhp,
     }
     mB = D[0] - D[len - 1];
     num = mB - c * (vminus - vplus);
-    if (num < 0 || num > 2 * mB || num % 2 != 0)
+    if (status != RS_OK)
+        num = 0;
+    else if (num < 0 || num > 2 * mB || num % 2 != 0)
         status = rs_error_set(err, RS_ERR_INTERNAL,
             "Routh segment count inconsistent (degree %ld, index %ld)",
             mB, vminus - vplus);

@@ -185,6 +185,39 @@ static void test_routh_row_estimate(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* A Routh array stopped by the budget reports the stop: before, the segment
+ * loop took the unfinished remainder chain for a zero row and ran past its
+ * arrays (heap overflow found by the fuzz regression region-algebraic-
+ * endpoint-swell under --time-limit 1).  p = (lambda + 2)^12: any degree-12
+ * polynomial with a non-trivial chain does; the budget is spent at once. */
+static void test_routh_stop(void **state)
+{
+    fmpz_poly_t p, l;
+    rs_routh_t r;
+    rs_error_t err;
+    (void) state;
+    rs_error_init(err);
+    fmpz_poly_init(p); fmpz_poly_init(l);
+    fmpz_poly_set_coeff_si(l, 1, 1);
+    fmpz_poly_set_coeff_si(l, 0, 2);
+    fmpz_poly_pow(p, l, 12);
+    rs_routh_init(r);
+    rs_budget_start(1e-9, 1.0, 0);       /* already past the limit */
+    assert_int_equal(rs_routh_fmpz_poly(r, p, err), RS_ERR_LIMIT);
+    assert_non_null(strstr(err->msg, "time limit"));
+    rs_budget_stop();
+    rs_routh_clear(r);
+    rs_error_clear(err);
+    rs_error_init(err);
+    rs_routh_init(r);
+    rs_budget_start(0.0, 0.0, 0);        /* no limits (clears the sticky stop) */
+    assert_int_equal(rs_routh_fmpz_poly(r, p, err), RS_OK);   /* all 12 roots at -2 */
+    assert_int_equal(r->count->outside, 12);
+    rs_budget_stop();
+    rs_routh_clear(r);
+    fmpz_poly_clear(p); fmpz_poly_clear(l);
+}
+
 static json_t *run_string(const char *text, int *code, rs_error_t err)
 {
     rs_case_t c;
@@ -242,7 +275,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
-        cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_region_single_value),
+        cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_routh_stop), cmocka_unit_test(test_region_single_value),
         cmocka_unit_test(test_region_contradictory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
