@@ -12,6 +12,7 @@
 #include "recstab/error.h"
 #include "recstab/casefile.h"
 #include "recstab/budget.h"
+#include "recstab/sweep.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -31,6 +32,7 @@ typedef struct {
     double time_limit;     /* seconds for the run (<= 0: none; budget.h) */
     double time_spent;     /* of which already used (e.g. by earlier cases) */
     slong memory_limit;    /* MB of counted memory (<= 0: none; budget.h) */
+    rs_sweep_options_t sweep; /* sweeps and maps: shard, point limit, progress, first level (sweep.h) */
 } rs_options_t;
 
 void rs_options_default(rs_options_t *opt);

@@ -1,9 +1,10 @@
 /* sweep.h -- 1-D sweeps and 2-D stability maps (analyses `sweep` and `map`).
  *
  * The analyses themselves run through rs_analysis_run like every other
- * analysis; this header holds the process-wide settings they use (sharding,
- * the point limit, a progress callback) and the per-point certified verdict
- * used by them, for library users who want it directly.
+ * analysis; this header holds the settings they take from the run's options
+ * (rs_options_t.sweep: sharding, the point limit, a progress callback) and
+ * the per-point certified verdict used by them, for library users who want
+ * it directly.
  *
  * Every point of a sweep or map gets a certified verdict, decided by the
  * first level that can:
@@ -54,10 +55,9 @@ typedef struct {
     int first_level;
 } rs_sweep_options_t;
 
+/* shard 1/1, RS_SWEEP_MAX_POINTS_DEFAULT, no progress, RS_LEVEL_FAST.  The
+ * options of a run are rs_options_t.sweep (analysis.h): no process-wide state. */
 void rs_sweep_options_default(rs_sweep_options_t *o);
-/* Process-wide settings for the sweep and map analyses (copied). */
-void rs_sweep_set_options(const rs_sweep_options_t *o);
-void rs_sweep_get_options(rs_sweep_options_t *o);
 
 /* The rows of shard I/N (1-based) of npoints points: the contiguous block
  * [*lo, *hi) with lo = floor((I-1)*P/N), hi = floor(I*P/N). */

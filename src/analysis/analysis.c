@@ -24,6 +24,7 @@ void rs_options_default(rs_options_t *opt)
     opt->time_limit = RS_BUDGET_TIME_DEFAULT;
     opt->time_spent = 0;
     opt->memory_limit = rs_budget_memory_default();
+    rs_sweep_options_default(&opt->sweep);
 }
 
 /* ---- variants: the scheme with some parameters substituted ------------- */

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "analysis/impl.h"
+#include "analysis/sweep_impl.h"
 #include "lower/builder.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
@@ -447,39 +448,21 @@ static int an_cosim_stability(rs_run_t *run, const rs_request_t *q, const char *
 
 /* map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]: certified radius on a grid
  * (same table layout as the polynomial maps of analysis_sweep.c) */
-static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
-    char n1[80], n2[80], a1[64], b1[64], a2[64], b2[64], of[32] = "radius";
-    long K1, K2;
-    fmpq_t A[2], B[2];
-    rs_error_t e2;
+    const char *n1 = R->axis[0].name, *n2 = R->axis[1].name;
+    slong K1 = R->axis[0].count, K2 = R->axis[1].count;
+    const fmpq *A[2], *B[2];
     slong i, j, idx, counts[3] = {0, 0, 0};
     char *buf = NULL;
     size_t len = 0;
     FILE *f;
     json_t *o, *cols;
-    int r = RS_OK, nf;
+    int r = RS_OK;
     const char *cn[] = {"index", "i", "j", NULL, NULL, NULL, NULL, "verdict", "code", "radius", "radius_lower",
                         "radius_upper", "decided_by"};
     char e1n[96], e2n[96];
-    nf = sscanf(rest, "%79s %63s %63s %ld , %79s %63s %63s %ld of %31s", n1, a1, b1, &K1, n2, a2, b2, &K2, of);
-    if (nf < 8)
-        return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "expected 'map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]', found '%s'", rest);
-    if (strcmp(of, "radius") != 0 && strcmp(of, "stability") != 0)
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected 'of radius' or 'of stability', found '%s'", of);
-    if (rs_case_param_index(run->c, n1) < 0 || rs_case_param_index(run->c, n2) < 0)
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected two parameters of the case, found '%s'", rest);
-    if (K1 < 2 || K2 < 2 || K1 * K2 > 1000000)
-        return rs_req_error(run, q, rest, RS_ERR_LIMIT,
-                            "map size: 2 to 1000 points per axis and at most 1000000 points in all, found '%s'", rest);
-    for (i = 0; i < 2; i++) { fmpq_init(A[i]); fmpq_init(B[i]); }
-    rs_error_init(e2);
-    if (rs_expr_parse_number(A[0], a1, e2) || rs_expr_parse_number(B[0], b1, e2)
-        || rs_expr_parse_number(A[1], a2, e2) || rs_expr_parse_number(B[1], b2, e2)) {
-        for (i = 0; i < 2; i++) { fmpq_clear(A[i]); fmpq_clear(B[i]); }
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected numbers for the map ranges: %s", e2->msg);
-    }
+    for (i = 0; i < 2; i++) { A[i] = R->axis[i].from; B[i] = R->axis[i].to; }
     snprintf(e1n, sizeof e1n, "%s_exact", n1);
     snprintf(e2n, sizeof e2n, "%s_exact", n2);
     cn[3] = n1; cn[4] = n2; cn[5] = e1n; cn[6] = e2n;
@@ -564,7 +547,17 @@ static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_decref(cols);
     }
     free(buf);
-    for (i = 0; i < 2; i++) { fmpq_clear(A[i]); fmpq_clear(B[i]); }
+    return r;
+}
+
+static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_sweep_request_t R;
+    int r;
+    rs_sweep_request_init(&R);
+    r = rs_map_request_parse(&R, run, q, rest);
+    if (r == RS_OK) r = rs_an_cosim_map_run(run, q, &R);
+    rs_sweep_request_clear(&R);
     return r;
 }
 

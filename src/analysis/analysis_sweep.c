@@ -28,6 +28,7 @@
 #include <gsl/gsl_poly.h>
 #include "recstab/budget.h"
 #include "analysis/impl.h"
+#include "analysis/sweep_impl.h"
 #include "numeric/modes.h"
 #include "recstab/sweep.h"
 #include "recstab/radius.h"
@@ -46,8 +47,6 @@ const char *const rs_sweep_level_names[5] = {"fast", "prec128", "prec256", "exac
 
 /* ---- process-wide options ------------------------------------------------------ */
 
-static rs_sweep_options_t g_opt = {1, 1, RS_SWEEP_MAX_POINTS_DEFAULT, NULL, NULL, RS_LEVEL_FAST};
-
 void rs_sweep_options_default(rs_sweep_options_t *o)
 {
     o->shard_index = 1;
@@ -58,8 +57,6 @@ void rs_sweep_options_default(rs_sweep_options_t *o)
     o->first_level = RS_LEVEL_FAST;
 }
 
-void rs_sweep_set_options(const rs_sweep_options_t *o) { g_opt = *o; }
-void rs_sweep_get_options(rs_sweep_options_t *o) { *o = g_opt; }
 
 void rs_sweep_shard_range(slong *lo, slong *hi, slong npoints, slong I, slong N)
 {
@@ -242,8 +239,8 @@ static int decide_exact(rs_sweep_point_t *pt, rs_rootcount_t rc, const fmpz_poly
     return RS_OK;
 }
 
-/* p with the factor lambda^v removed; *n = its degree. */
-int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
+/* The ladder from first_level (RS_LEVEL_*) on. */
+static int decide_from(rs_sweep_point_t *pt, const fmpz_poly_t p, int first_level, rs_error_t err)
 {
     fmpz_poly_t q;
     slong v, n, i, prec;
@@ -316,7 +313,7 @@ int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
         w = (a[n] != 0) ? gsl_poly_complex_workspace_alloc((size_t) n + 1) : NULL;
         st = (w == NULL) ? GSL_EFAILED : gsl_poly_complex_solve(a, (size_t) n + 1, w, z);
         if (w) gsl_poly_complex_workspace_free(w);
-        if (st == GSL_SUCCESS && g_opt.first_level == RS_LEVEL_DOUBLE) {
+        if (st == GSL_SUCCESS && first_level == RS_LEVEL_DOUBLE) {
             /* benchmark baseline: no certificate at all */
             double rho = 0;
             for (i = 0; i < n; i++) {
@@ -334,7 +331,7 @@ int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
             free(z);
             goto done;
         }
-        if (st == GSL_SUCCESS && g_opt.first_level > RS_LEVEL_FAST) {
+        if (st == GSL_SUCCESS && first_level > RS_LEVEL_FAST) {
             for (i = 0; i < n; i++) acb_set_d_d(seeds + i, z[2 * i], z[2 * i + 1]);
         } else if (st == GSL_SUCCESS) {
             int finite = 1;
@@ -362,7 +359,7 @@ int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
     }
     /* levels prec128, prec256: Arb's root finder seeded with the doubles */
     for (prec = 128; verdict < 0 && prec <= 256; prec *= 2) {
-        if ((prec == 128 && g_opt.first_level > RS_LEVEL_PREC128) || (prec == 256 && g_opt.first_level > RS_LEVEL_PREC256))
+        if ((prec == 128 && first_level > RS_LEVEL_PREC128) || (prec == 256 && first_level > RS_LEVEL_PREC256))
             continue;
         slong iso, allzero = 1;
         for (i = 0; i < n; i++) if (!acb_is_zero(seeds + i)) allzero = 0;
@@ -393,6 +390,11 @@ done:
     fmpz_poly_clear(q);
     pt->status = r;
     return r;
+}
+
+int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
+{
+    return decide_from(pt, p, RS_LEVEL_FAST, err);
 }
 
 /* ---- request parsing ------------------------------------------------------------------ */
@@ -706,7 +708,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
         fmpz_poly_clear(P);
         return;
     }
-    r = rs_sweep_decide(&pt->d, P, err);
+    r = decide_from(&pt->d, P, J->run->opt->sweep.first_level, err);
     if (r == RS_OK) r = point_system(pt, J, idx, P, NULL, err);
     if (r == RS_OK && pt->d.verdict >= 0 && pt->d.verdict != RS_STATUS_SINGULAR && fmpz_poly_degree(P) >= 1
         && (J->kind == OF_MODES || (!pt->d.isolated && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0))
@@ -739,6 +741,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
  * over the ranks and gathered. */
 static void compute_range(pt_t *pts, const job_t *J, slong lo, slong hi, const char *what)
 {
+    const rs_sweep_options_t *so = &J->run->opt->sweep;
     slong done = 0, mylo = lo, myhi = hi;
     double last = now_seconds();
     gsl_error_handler_t *old = gsl_set_error_handler_off();
@@ -764,7 +767,7 @@ static void compute_range(pt_t *pts, const job_t *J, slong lo, slong hi, const c
              * rs_analysis_run reports the limit */
             if (rs_budget_check(NULL, what) != RS_OK) continue;
             compute_point(pts + (k - lo), J, k, e);
-            if (g_opt.progress != NULL) {
+            if (so->progress != NULL) {
                 slong d;
 #pragma omp atomic capture
                 d = ++done;
@@ -775,7 +778,7 @@ static void compute_range(pt_t *pts, const job_t *J, slong lo, slong hi, const c
                     double t = now_seconds();
                     if (t - last > 0.2) {
                         last = t;
-                        g_opt.progress(g_opt.progress_arg, what, d, myhi - mylo);
+                        so->progress(so->progress_arg, what, d, myhi - mylo);
                     }
                 }
             }
@@ -796,7 +799,7 @@ static void compute_range(pt_t *pts, const job_t *J, slong lo, slong hi, const c
         free(displs);
     }
 #endif
-    if (g_opt.progress != NULL) g_opt.progress(g_opt.progress_arg, what, myhi - mylo, myhi - mylo);
+    if (so->progress != NULL) so->progress(so->progress_arg, what, myhi - mylo, myhi - mylo);
     gsl_set_error_handler(old);
 }
 
@@ -944,7 +947,7 @@ static int limit_error(rs_run_t *run, const rs_request_t *q, double npoints, con
     /* exact below 2^53, rounded (and said so) above */
     snprintf(msg, sizeof msg, npoints < 9007199254740992.0 ? "%s has %.0f points, more than the limit of %ld points "
              "per sweep or map (raise it with --max-points N)" : "%s has about %.4g points, more than the limit of "
-             "%ld points per sweep or map (raise it with --max-points N)", desc, npoints, (long) g_opt.max_points);
+             "%ld points per sweep or map (raise it with --max-points N)", desc, npoints, (long) run->opt->sweep.max_points);
     return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
 }
 
@@ -1120,47 +1123,97 @@ void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, i
     }
 }
 
-static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
+void rs_sweep_request_init(rs_sweep_request_t *r)
+{
+    slong ax;
+    memset(r, 0, sizeof *r);
+    for (ax = 0; ax < 2; ax++) {
+        fmpq_init(r->axis[ax].from);
+        fmpq_init(r->axis[ax].to);
+        r->axis[ax].var = -1;
+    }
+}
+
+void rs_sweep_request_clear(rs_sweep_request_t *r)
+{
+    slong ax;
+    for (ax = 0; ax < 2; ax++) {
+        fmpq_clear(r->axis[ax].from);
+        fmpq_clear(r->axis[ax].to);
+    }
+}
+
+/* the parameter named by token t into ax */
+static int parse_param(rs_sweep_axis_t *ax, rs_run_t *run, const rs_request_t *q, const tok_t *t)
+{
+    ax->at = t->s;
+    if (t->n >= sizeof ax->name) return tok_error(run, q, t, "'%s' is not a parameter");
+    memcpy(ax->name, t->s, t->n);
+    ax->name[t->n] = '\0';
+    ax->var = rs_case_param_index(run->c, ax->name);
+    if (ax->var < 0) return tok_error(run, q, t, "'%s' is not a parameter");
+    return RS_OK;
+}
+
+int rs_sweep_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     tok_t t[SW_MAX_TOKENS];
     const char *opts;
-    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos, K, idx, lo, hi, i;
-    int kind, logsp = 0, r;
-    char name[80];
-    fmpq_t A, B;
+    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos;
+    rs_sweep_axis_t *ax = R->axis;
+    int r;
+    if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
+    R->kind = RS_SWEEP_KIND_SWEEP;
+    R->naxes = 1;
+    if (nt < 7 || !tok_is(t + 1, "from") || !tok_is(t + 3, "to") || !tok_is(t + 5, "steps"))
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected 'sweep NAME from A to B steps K [log] [of radius|modes|stability]', found '%s'",
+                            rest);
+    r = parse_param(ax, run, q, t);
+    if (r != RS_OK) return r;
+    ax->from_at = t[2].s;
+    if (tok_number(ax->from, t + 2) != RS_OK) return tok_error(run, q, t + 2, "expected a number after 'from', found '%s'");
+    if (tok_number(ax->to, t + 4) != RS_OK) return tok_error(run, q, t + 4, "expected a number after 'to', found '%s'");
+    if (!tok_long(&ax->count, t + 6) || ax->count < 1)
+        return tok_error(run, q, t + 6, "expected a positive integer number of steps, found '%s'");
+    pos = 7;
+    if (pos < nt && tok_is(t + pos, "log")) { R->logsp = 1; pos++; }
+    r = parse_of(run, q, t, nt, &pos, &R->of, 1);
+    if (r == RS_OK && opts != NULL && R->of != OF_MODES)
+        r = rs_req_error(run, q, opts, RS_ERR_INPUT, "options are only for 'of modes', found '%s'", opts);
+    R->opts = opts;
+    if (r == RS_OK && R->logsp && (fmpq_sgn(ax->from) <= 0 || fmpq_sgn(ax->to) <= 0))
+        r = rs_req_error(run, q, ax->from_at, RS_ERR_INPUT, "log spacing needs A > 0 and B > 0, found '%s'", ax->from_at);
+    if (r == RS_OK && ax->count >= run->opt->sweep.max_points)
+        r = limit_error(run, q, (double) ax->count + 1.0, "the sweep");
+    return r;
+}
+
+static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_sweep_request_t R;
+    int r;
+    rs_sweep_request_init(&R);
+    r = rs_sweep_request_parse(&R, run, q, rest);
+    if (r == RS_OK) r = rs_an_sweep_run(run, q, &R);
+    rs_sweep_request_clear(&R);
+    return r;
+}
+
+int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
+{
+    const char *opts = R->opts;
+    slong K = R->axis[0].count, idx = R->axis[0].var, lo, hi, i;
+    int kind = R->of, logsp = R->logsp, r;
+    const char *name = R->axis[0].name;
+    const fmpq *A = R->axis[0].from, *B = R->axis[0].to;
     rs_variant_t *v;
     job_t J;
     fmpq *vals;
     pt_t *pts;
     double t0 = now_seconds();
-    if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
-    if (nt < 7 || !tok_is(t + 1, "from") || !tok_is(t + 3, "to") || !tok_is(t + 5, "steps"))
-        return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "expected 'sweep NAME from A to B steps K [log] [of radius|modes|stability]', found '%s'",
-                            rest);
-    if (t[0].n >= sizeof name) return tok_error(run, q, t, "'%s' is not a parameter");
-    memcpy(name, t[0].s, t[0].n);
-    name[t[0].n] = '\0';
-    idx = rs_case_param_index(run->c, name);
-    if (idx < 0) return tok_error(run, q, t, "'%s' is not a parameter");
-    fmpq_init(A);
-    fmpq_init(B);
-    if (tok_number(A, t + 2) != RS_OK) { fmpq_clear(A); fmpq_clear(B); return tok_error(run, q, t + 2, "expected a number after 'from', found '%s'"); }
-    if (tok_number(B, t + 4) != RS_OK) { fmpq_clear(A); fmpq_clear(B); return tok_error(run, q, t + 4, "expected a number after 'to', found '%s'"); }
-    if (!tok_long(&K, t + 6) || K < 1) {
-        fmpq_clear(A); fmpq_clear(B);
-        return tok_error(run, q, t + 6, "expected a positive integer number of steps, found '%s'");
-    }
-    pos = 7;
-    if (pos < nt && tok_is(t + pos, "log")) { logsp = 1; pos++; }
-    r = parse_of(run, q, t, nt, &pos, &kind, 1);
-    if (r == RS_OK && opts != NULL && kind != OF_MODES)
-        r = rs_req_error(run, q, opts, RS_ERR_INPUT, "options are only for 'of modes', found '%s'", opts);
-    if (r == RS_OK && logsp && (fmpq_sgn(A) <= 0 || fmpq_sgn(B) <= 0))
-        r = rs_req_error(run, q, t[2].s, RS_ERR_INPUT, "log spacing needs A > 0 and B > 0, found '%s'", t[2].s);
-    if (r == RS_OK && K >= g_opt.max_points) r = limit_error(run, q, (double) K + 1.0, "the sweep");
-    if (r == RS_OK) r = estimate_points(run, q, (double) K + 1.0, "the sweep");
-    if (r != RS_OK) { fmpq_clear(A); fmpq_clear(B); return r; }
+    r = estimate_points(run, q, (double) K + 1.0, "the sweep");
+    if (r != RS_OK) return r;
     {
         rs_assign_t *a;
         slong n;
@@ -1171,7 +1224,7 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_assign_free(a, n);
     }
     if (r == RS_OK) r = check_free(run, q, v, idx, -1, "sweep");
-    if (r != RS_OK) { fmpq_clear(A); fmpq_clear(B); return r; }
+    if (r != RS_OK) return r;
 
     memset(&J, 0, sizeof J);
     J.run = run;
@@ -1194,11 +1247,10 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
         if (r != RS_OK) {
             job_clear(&J);
             _fmpq_vec_clear(vals, J.npoints);
-            fmpq_clear(A); fmpq_clear(B);
             return r;
         }
     }
-    rs_sweep_shard_range(&lo, &hi, J.npoints, g_opt.shard_index, g_opt.shard_count);
+    rs_sweep_shard_range(&lo, &hi, J.npoints, run->opt->sweep.shard_index, run->opt->sweep.shard_count);
     pts = calloc((size_t) (hi - lo + 1), sizeof(pt_t));
     {
         char what[120];
@@ -1234,7 +1286,7 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "computed", json_integer(hi - lo));
         {
             char sh[64];
-            snprintf(sh, sizeof sh, "%ld/%ld", (long) g_opt.shard_index, (long) g_opt.shard_count);
+            snprintf(sh, sizeof sh, "%ld/%ld", (long) run->opt->sweep.shard_index, (long) run->opt->sweep.shard_count);
             json_object_set_new(o, "shard", json_string(sh));
             json_object_set_new(o, "rows", json_pack("[I,I]", (json_int_t) lo, (json_int_t) hi));
         }
@@ -1306,8 +1358,6 @@ static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
     free(pts);
     job_clear(&J);
     _fmpq_vec_clear(vals, J.npoints);
-    fmpq_clear(A);
-    fmpq_clear(B);
     return r;
 }
 
@@ -1425,7 +1475,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
             _fmpz_vec_clear(g, T.d1 + 1);
         }
         /* rows: fixed n2, crossings in n1 */
-        for (j = 0; j < K2 && g_opt.shard_index == 1; j++)
+        for (j = 0; j < K2 && run->opt->sweep.shard_index == 1; j++)
             for (i = 0; i < K1; i++) {
                 slong a = j * K1 + i;
                 double xa = fmpq_get_d(x1 + i), y = fmpq_get_d(x2 + j);
@@ -1440,7 +1490,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
                 }
             }
         /* columns: fixed n1, crossings in n2 */
-        for (i = 0; i < K1 && g_opt.shard_index == 1; i++)
+        for (i = 0; i < K1 && run->opt->sweep.shard_index == 1; i++)
             for (j = 0; j + 1 < K2; j++) {
                 slong a = j * K1 + i, bidx = (j + 1) * K1 + i;
                 if (sg[a] * sg[bidx] < 0) {
@@ -1478,47 +1528,72 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, slong 
     fmpz_mpoly_clear(qz, s->zctx);
 }
 
-static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_map_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_request_t *q, const char *rest)
 {
     tok_t t[SW_MAX_TOKENS];
     const char *opts;
-    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos, K[2], idx[2], lo, hi, i, ax;
-    int kind, r = RS_OK;
-    char name[2][80];
-    fmpq_t A[2], B[2];
+    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos, ax, max = run->opt->sweep.max_points;
+    rs_sweep_axis_t *X = R->axis;
+    int r = RS_OK;
+    if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
+    R->kind = RS_SWEEP_KIND_MAP;
+    R->naxes = 2;
+    if (opts != NULL) return rs_req_error(run, q, opts, RS_ERR_INPUT, "unexpected option '%s' for map", opts);
+    if (nt < 9 || !tok_is(t + 4, ","))
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected 'map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]', found '%s'", rest);
+    for (ax = 0; ax < 2 && r == RS_OK; ax++) {
+        const tok_t *u = t + 5 * ax;
+        r = parse_param(X + ax, run, q, u);
+        X[ax].from_at = u[1].s;
+        if (r != RS_OK) break;
+        else if (tok_number(X[ax].from, u + 1) != RS_OK) r = tok_error(run, q, u + 1, "expected a number (the first value), found '%s'");
+        else if (tok_number(X[ax].to, u + 2) != RS_OK) r = tok_error(run, q, u + 2, "expected a number (the last value), found '%s'");
+        else if (!tok_long(&X[ax].count, u + 3) || X[ax].count < 1)
+            r = tok_error(run, q, u + 3, "expected a positive integer number of points, found '%s'");
+    }
+    if (r == RS_OK && X[0].var == X[1].var) r = tok_error(run, q, t + 5, "map needs two different parameters, found '%s' twice");
+    pos = 9;
+    if (r == RS_OK) r = parse_of(run, q, t, nt, &pos, &R->of, 0);
+    /* K1 * K2 compared by division: the product may overflow */
+    if (r == RS_OK && (X[0].count > max || X[1].count > max || X[0].count > max / X[1].count)) {
+        char desc[200];
+        snprintf(desc, sizeof desc, "the map (%ld x %ld)", (long) X[0].count, (long) X[1].count);
+        r = limit_error(run, q, (double) X[0].count * (double) X[1].count, desc);
+    }
+    return r;
+}
+
+static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
+{
+    rs_sweep_request_t R;
+    int r;
+    rs_sweep_request_init(&R);
+    r = rs_map_request_parse(&R, run, q, rest);
+    if (r == RS_OK) r = rs_an_map_run(run, q, &R);
+    rs_sweep_request_clear(&R);
+    return r;
+}
+
+int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
+{
+    slong K[2], idx[2], lo, hi, i;
+    int kind = R->of, r;
+    const char *name[2];
+    const fmpq *A[2], *B[2];
     rs_variant_t *v;
     job_t J;
     fmpq *xs[2];
     pt_t *pts;
     double t0 = now_seconds(), t_points = 0;
-    if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
-    if (opts != NULL) return rs_req_error(run, q, opts, RS_ERR_INPUT, "unexpected option '%s' for map", opts);
-    if (nt < 9 || !tok_is(t + 4, ","))
-        return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "expected 'map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]', found '%s'", rest);
-    for (ax = 0; ax < 2; ax++) { fmpq_init(A[ax]); fmpq_init(B[ax]); }
-    for (ax = 0; ax < 2 && r == RS_OK; ax++) {
-        const tok_t *u = t + 5 * ax;
-        if (u[0].n >= sizeof name[ax]) { r = tok_error(run, q, u, "'%s' is not a parameter"); break; }
-        memcpy(name[ax], u[0].s, u[0].n);
-        name[ax][u[0].n] = '\0';
-        idx[ax] = rs_case_param_index(run->c, name[ax]);
-        if (idx[ax] < 0) r = tok_error(run, q, u, "'%s' is not a parameter");
-        else if (tok_number(A[ax], u + 1) != RS_OK) r = tok_error(run, q, u + 1, "expected a number (the first value), found '%s'");
-        else if (tok_number(B[ax], u + 2) != RS_OK) r = tok_error(run, q, u + 2, "expected a number (the last value), found '%s'");
-        else if (!tok_long(&K[ax], u + 3) || K[ax] < 1)
-            r = tok_error(run, q, u + 3, "expected a positive integer number of points, found '%s'");
+    for (i = 0; i < 2; i++) {
+        K[i] = R->axis[i].count;
+        idx[i] = R->axis[i].var;
+        name[i] = R->axis[i].name;
+        A[i] = R->axis[i].from;
+        B[i] = R->axis[i].to;
     }
-    if (r == RS_OK && idx[0] == idx[1]) r = tok_error(run, q, t + 5, "map needs two different parameters, found '%s' twice");
-    pos = 9;
-    if (r == RS_OK) r = parse_of(run, q, t, nt, &pos, &kind, 0);
-    /* K[0] * K[1] compared by division: the product may overflow */
-    if (r == RS_OK && (K[0] > g_opt.max_points || K[1] > g_opt.max_points || K[0] > g_opt.max_points / K[1])) {
-        char desc[200];
-        snprintf(desc, sizeof desc, "the map (%ld x %ld)", (long) K[0], (long) K[1]);
-        r = limit_error(run, q, (double) K[0] * (double) K[1], desc);
-    }
-    if (r == RS_OK) r = estimate_points(run, q, (double) K[0] * (double) K[1], "the map");
+    r = estimate_points(run, q, (double) K[0] * (double) K[1], "the map");
     if (r == RS_OK) {
         rs_assign_t *a;
         slong n;
@@ -1530,10 +1605,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
         rs_assign_free(a, n);
         if (r == RS_OK) r = check_free(run, q, v, idx[0], idx[1], "map");
     }
-    if (r != RS_OK) {
-        for (ax = 0; ax < 2; ax++) { fmpq_clear(A[ax]); fmpq_clear(B[ax]); }
-        return r;
-    }
+    if (r != RS_OK) return r;
     memset(&J, 0, sizeof J);
     J.run = run;
     J.q = q;
@@ -1553,7 +1625,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
     J.x[1] = xs[1];
     J.U1 = powers_table(xs[0], K[0], J.T.d1);
     J.U2 = powers_table(xs[1], K[1], J.T.d2);
-    rs_sweep_shard_range(&lo, &hi, J.npoints, g_opt.shard_index, g_opt.shard_count);
+    rs_sweep_shard_range(&lo, &hi, J.npoints, run->opt->sweep.shard_index, run->opt->sweep.shard_count);
     pts = calloc((size_t) (hi - lo + 1), sizeof(pt_t));
     {
         char what[200];
@@ -1587,7 +1659,7 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
         json_object_set_new(o, "computed", json_integer(hi - lo));
         {
             char sh[64];
-            snprintf(sh, sizeof sh, "%ld/%ld", (long) g_opt.shard_index, (long) g_opt.shard_count);
+            snprintf(sh, sizeof sh, "%ld/%ld", (long) run->opt->sweep.shard_index, (long) run->opt->sweep.shard_count);
             json_object_set_new(o, "shard", json_string(sh));
             json_object_set_new(o, "rows", json_pack("[I,I]", (json_int_t) lo, (json_int_t) hi));
         }
@@ -1645,7 +1717,6 @@ static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
     job_clear(&J);
     _fmpq_vec_clear(xs[0], K[0]);
     _fmpq_vec_clear(xs[1], K[1]);
-    for (ax = 0; ax < 2; ax++) { fmpq_clear(A[ax]); fmpq_clear(B[ax]); }
     return r;
 }
 

@@ -190,7 +190,6 @@ int main(int argc, char **argv)
     int nouts = 0;
     long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
     int rank = 0, first_level = RS_LEVEL_FAST;
-    rs_sweep_options_t swopt;
     double budget_t0;
 
 #ifdef RS_MPI
@@ -327,13 +326,11 @@ int main(int argc, char **argv)
 #ifdef _OPENMP
     if (threads > 0) omp_set_num_threads((int) threads);
 #endif
-    rs_sweep_options_default(&swopt);
-    swopt.shard_index = shard_i;
-    swopt.shard_count = shard_n;
-    swopt.max_points = max_points;
-    swopt.first_level = first_level;
-    if (rank == 0 && isatty(2)) swopt.progress = progress;
-    rs_sweep_set_options(&swopt);
+    opt.sweep.shard_index = shard_i;
+    opt.sweep.shard_count = shard_n;
+    opt.sweep.max_points = max_points;
+    opt.sweep.first_level = first_level;
+    if (rank == 0 && isatty(2)) opt.sweep.progress = progress;
     if (ncases == 0) {
         fprintf(stderr, "recstab: expected a case file (or - for stdin)\n");
         usage(stderr);

@@ -64,10 +64,6 @@ static FILE *fuzz_sink;
 
 static inline void fuzz_setup(void)
 {
-    rs_sweep_options_t sw;
-    rs_sweep_options_default(&sw);
-    sw.max_points = FUZZ_MAX_POINTS;
-    rs_sweep_set_options(&sw);
     fuzz_sink = fopen("/dev/null", "w");
     if (fuzz_sink == NULL)
         abort();
@@ -143,6 +139,7 @@ static inline void fuzz_options(rs_options_t *opt, slong max_prec)
     opt->time_limit = FUZZ_TIME_LIMIT;
     opt->memory_limit = FUZZ_MEMORY_LIMIT;
     opt->with_scheme = 1;          /* the derivations need the scheme */
+    opt->sweep.max_points = FUZZ_MAX_POINTS;
 }
 
 static inline void fuzz_check_error(int r, const rs_error_t err)

@@ -149,7 +149,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sw.first_level = ((data[2] >> 3) & 7) % 5;
     sw.shard_index = shards[data[2] >> 6][0];
     sw.shard_count = shards[data[2] >> 6][1];
-    rs_sweep_set_options(&sw);
     rest = (const char *) data + 3;
     restlen = size - 3;
     if (memchr(rest, '\0', restlen) != NULL || !fuzz_numbers_small(rest, restlen))
@@ -181,6 +180,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz_check_error(r, err);
     if (r == RS_OK && fuzz_case_small(c)) {
         fuzz_options(&opt, max_prec);
+        opt.sweep = sw;
         fuzz_run(c, &opt);
     }
     rs_case_clear(c);

@@ -27,27 +27,33 @@
 #include "recstab/analysis.h"
 #include "recstab/sweep.h"
 
-static json_t *run_text(const char *text, const char *const *req, int nreq, int *code)
+/* the case text with the requests req[] instead of its own, under options opt */
+static json_t *run_text_opt(const char *text, const char *const *req, int nreq, const rs_options_t *opt, int *code)
 {
     rs_case_t c;
     rs_error_t err;
-    rs_options_t opt;
     json_t *doc = NULL;
     int i, r;
     rs_case_init(c);
     rs_error_init(err);
-    rs_options_default(&opt);
     if (rs_case_parse_string(c, "test.case", text, strlen(text), err) != RS_OK || rs_case_lower(c, err) != RS_OK) fail_msg("parse: %s", err->msg);
     rs_case_clear_requests(c);
     for (i = 0; i < nreq; i++) rs_case_add_request(c, req[i], "test", 1, 1);
     {
         int outcome;
-        r = rs_analysis_run(&doc, &outcome, c, &opt, err);
+        r = rs_analysis_run(&doc, &outcome, c, opt, err);
     }
     if (code) *code = r;
     else if (r != RS_OK) fail_msg("run: %s", err->msg);
     rs_case_clear(c);
     return doc;
+}
+
+static json_t *run_text(const char *text, const char *const *req, int nreq, int *code)
+{
+    rs_options_t opt;
+    rs_options_default(&opt);
+    return run_text_opt(text, req, nreq, &opt, code);
 }
 
 static json_t *run_file(const char *rel, const char *const *req, int nreq)
@@ -373,7 +379,7 @@ static char *park_table(int threads, slong shard, slong nshards)
     const char *text = "param a b c\nchar (lambda^2 - a*lambda + b)*(lambda^2 + c*lambda/2 + a*b/3) - lambda/7\n"
                        "set c = 1/3\n";
     const char *req[] = {"map a -2 2 23, b -1 1 19"};
-    rs_sweep_options_t so;
+    rs_options_t opt;
     json_t *doc;
     char *out;
 #ifdef _OPENMP
@@ -381,15 +387,12 @@ static char *park_table(int threads, slong shard, slong nshards)
 #else
     (void) threads;
 #endif
-    rs_sweep_options_default(&so);
-    so.shard_index = shard;
-    so.shard_count = nshards;
-    rs_sweep_set_options(&so);
-    doc = run_text(text, req, 1, NULL);
+    rs_options_default(&opt);
+    opt.sweep.shard_index = shard;
+    opt.sweep.shard_count = nshards;
+    doc = run_text_opt(text, req, 1, &opt, NULL);
     out = strdup(json_string_value(json_object_get(result(doc, 0), "table")));
     json_decref(doc);
-    rs_sweep_options_default(&so);
-    rs_sweep_set_options(&so);
     return out;
 }
 
