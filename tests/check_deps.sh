@@ -36,7 +36,7 @@ public_stage() {
     scheme) echo lower ;;
     charpoly|cond) echo algebra ;;
     bilinear|routh|hurwitz|jury|rootcount|semisimple) echo stability ;;
-    radius|cosim) echo numeric ;;
+    radius|cosim|ladder) echo numeric ;;
     analysis|sweep) echo analysis ;;      # sweep.h: src/analysis/analysis_sweep.c
     report|derivation|recstab) echo render ;;
     *) echo unknown ;;

@@ -20,6 +20,7 @@
 #include "recstab/rootcount.h"
 #include "recstab/radius.h"
 #include "recstab/cosim.h"
+#include "recstab/ladder.h"
 #include "recstab/sweep.h"
 #include "recstab/analysis.h"
 #include "recstab/report.h"

@@ -43,7 +43,6 @@
 #define SW_MAX_TOKENS 32
 #define SW_TEXT_ROWS_MAX 200
 
-const char *const rs_sweep_level_names[5] = {"fast", "prec128", "prec256", "exact", "double"};
 
 /* ---- process-wide options ------------------------------------------------------ */
 
@@ -76,125 +75,6 @@ static double now_seconds(void)
 
 /* ---- the certified verdict of one polynomial --------------------------------------- */
 
-static double arb_lower_d(const arb_t x)
-{
-    arf_t t;
-    double d;
-    arf_init(t);
-    arb_get_lbound_arf(t, x, 64);
-    d = arf_get_d(t, ARF_RND_DOWN);
-    arf_clear(t);
-    return d < 0 ? 0 : d;
-}
-
-static double arb_upper_d(const arb_t x)
-{
-    arf_t t;
-    double d;
-    arf_init(t);
-    arb_get_ubound_arf(t, x, 64);
-    d = arf_get_d(t, ARF_RND_UP);
-    arf_clear(t);
-    return d;
-}
-
-/* Verdict from root inclusion discs (each holds >= 1 root; when all n are
- * pairwise disjoint, exactly one each).  Returns the verdict or -1. */
-static int judge_discs(rs_sweep_point_t *pt, acb_srcptr roots, slong n, slong nisolated, slong prec)
-{
-    arb_t a, one;
-    slong i;
-    int all_in = (nisolated == n), any_out = 0;
-    double lo = 0, hi = 0;
-    arb_init(a);
-    arb_init(one);
-    arb_one(one);
-    for (i = 0; i < n; i++) {
-        double l, u;
-        if (!acb_is_finite(roots + i)) { all_in = 0; continue; }
-        acb_abs(a, roots + i, prec);
-        if (!arb_lt(a, one)) all_in = 0;
-        if (arb_gt(a, one)) any_out = 1;
-        l = arb_lower_d(a);
-        u = arb_upper_d(a);
-        if (l > lo) lo = l;
-        if (u > hi) hi = u;
-    }
-    arb_clear(a);
-    arb_clear(one);
-    if (lo > pt->rho_lower) pt->rho_lower = lo;
-    if (nisolated == n) {
-        pt->isolated = 1;
-        pt->rho_lower = lo;
-        pt->rho_upper = hi;
-    }
-    if (any_out) return RS_STATUS_UNSTABLE;
-    if (all_in) return RS_STATUS_STABLE;
-    return -1;
-}
-
-/* The same Newton inclusion (disc n|p(z)|/|p'(z)| around z holds a root) in
- * plain double arithmetic with a priori rounding-error bounds (IEEE binary64,
- * round to nearest; u = 2^-53): the computed Horner values of p and p' are
- * within (10n + 12) u S and (20n + 24) u S' of the exact ones, S = sum |a_k||z|^k,
- * S' = sum k|a_k||z|^(k-1) (Higham, ASNA 2nd ed., 5.1 and 3.6, with the
- * coefficient rounding 2u S included and a factor >= 2 of slack); every other
- * operation is given a relative 8u margin.  Any non-finite or subnormal
- * quantity returns -1 (undecided: the Arb check runs).  a[0..n] approximate
- * the exact coefficients 2^-shift q_k to 2u relative each. */
-static int judge_double(rs_sweep_point_t *pt, const double *a, const double *z, slong n)
-{
-    const double u = 0x1p-53;
-    double r[64], m[64], lo = 0, hi = 0;
-    slong i, j, k;
-    int all_in = 1, any_out = 0;
-    if (n > 64) return -1;
-    for (i = 0; i < n; i++) {
-        double x = z[2 * i], y = z[2 * i + 1], pr = a[n], pi = 0, dr = 0, di = 0, az, S, Sd = 0, P, D, t;
-        az = hypot(x, y);
-        S = fabs(a[n]);
-        for (k = n - 1; k >= 0; k--) {
-            /* derivative first: d = d z + p */
-            t = dr * x - di * y + pr;
-            di = dr * y + di * x + pi;
-            dr = t;
-            t = pr * x - pi * y + a[k];
-            pi = pr * y + pi * x;
-            pr = t;
-            Sd = Sd * az + S;
-            S = S * az + fabs(a[k]);
-        }
-        if (!isfinite(pr) || !isfinite(pi) || !isfinite(dr) || !isfinite(di) || !isfinite(S) || !isfinite(Sd)
-            || !(S > 0x1p-900) || !(az > 0x1p-400)) return -1;
-        P = hypot(pr, pi) * (1 + 8 * u) + (10.0 * (double) n + 12) * u * S * (1 + 8 * u);
-        D = hypot(dr, di) * (1 - 8 * u) - (20.0 * (double) n + 24) * u * Sd * (1 + 8 * u);
-        if (!(D > 0x1p-900) || !isfinite(P)) return -1;
-        r[i] = (double) n * P / D * (1 + 16 * u);
-        m[i] = az;
-        if (!isfinite(r[i])) return -1;
-    }
-    for (i = 0; i < n; i++)
-        for (j = i + 1; j < n; j++)
-            if (!(hypot(z[2 * i] - z[2 * j], z[2 * i + 1] - z[2 * j + 1]) * (1 - 16 * u) > (r[i] + r[j]) * (1 + 8 * u)))
-                return -1;                      /* not isolated: let Arb try */
-    for (i = 0; i < n; i++) {
-        double up = (m[i] * (1 + 8 * u) + r[i]) * (1 + 8 * u), dn = (m[i] * (1 - 8 * u) - r[i]) * (1 - 8 * u);
-        if (!(up < 1)) all_in = 0;
-        if (dn > 1) any_out = 1;
-        if (dn > lo) lo = dn;
-        if (up > hi) hi = up;
-    }
-    pt->isolated = 1;
-    pt->rho_lower = lo;
-    pt->rho_upper = hi;
-    if (any_out) return RS_STATUS_UNSTABLE;
-    if (all_in) return RS_STATUS_STABLE;
-    pt->isolated = 0;
-    pt->rho_lower = 0;
-    pt->rho_upper = INFINITY;
-    return -1;
-}
-
 static int exact_count(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err)
 {
     rs_routh_t ro;
@@ -215,186 +95,29 @@ static int exact_count(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err)
     return r;
 }
 
-/* The exact verdict; rc gets the counts (of the primitive part of p). */
-static int decide_exact(rs_sweep_point_t *pt, rs_rootcount_t rc, const fmpz_poly_t q, rs_error_t err)
+/* The ladder's exact rung (ladder.h): Routh and Schur-Cohn, which must
+ * agree; arg, when not NULL, is an rs_rootcount_struct that gets the counts. */
+static int exact_rung(rs_ladder_count_t *c, const fmpz_poly_t p, void *arg, rs_error_t err)
 {
-    fmpz_poly_t pp;
-    int r;
-    fmpz_poly_init(pp);
-    fmpz_poly_primitive_part(pp, q);
-    r = exact_count(rc, pp, err);
-    fmpz_poly_clear(pp);
-    if (r != RS_OK) return r;
-    pt->verdict = (int) rs_rootcount_status(rc);
-    pt->repeated_on = (rc->outside == 0 && rs_rootcount_max_on_mult(rc) > 1);
-    pt->level = RS_LEVEL_EXACT;
-    if (rc->outside == 0 && rc->on > 0) {
-        pt->rho_lower = pt->rho_upper = 1.0;   /* exactly: the largest roots are on the circle */
-        pt->isolated = 1;
-    } else if (rc->outside == 0) {
-        if (pt->rho_upper > 1.0) pt->rho_upper = 1.0;
-    } else if (pt->rho_lower < 1.0) {
-        pt->rho_lower = 1.0;
-    }
-    return RS_OK;
-}
-
-/* The ladder from first_level (RS_LEVEL_*) on. */
-static int decide_from(rs_sweep_point_t *pt, const fmpz_poly_t p, int first_level, rs_error_t err)
-{
-    fmpz_poly_t q;
-    slong v, n, i, prec;
-    int verdict = -1, r = RS_OK;
-    double *a = NULL, *z = NULL;
-    acb_ptr roots = NULL, seeds = NULL;
-    acb_poly_t P;
     rs_rootcount_t rc;
-
-    pt->status = RS_OK;
-    pt->verdict = -1;
-    pt->level = RS_LEVEL_FAST;
-    pt->isolated = 0;
-    pt->rho_lower = 0;
-    pt->rho_upper = INFINITY;
-    if (fmpz_poly_is_zero(p)) return RS_OK;        /* the scheme is singular here */
-    v = 0;
-    while (fmpz_is_zero(p->coeffs + v)) v++;
-    fmpz_poly_init(q);
-    fmpz_poly_shift_right(q, p, v);
-    n = fmpz_poly_degree(q);
-    if (n == 0) {                                    /* only roots at 0 (or none) */
-        pt->verdict = RS_STATUS_STABLE;
-        pt->isolated = 1;
-        pt->rho_lower = pt->rho_upper = 0;
-        fmpz_poly_clear(q);
-        return RS_OK;
-    }
+    int r;
     rs_rootcount_init(rc);
-    if (n == 1) {                                    /* the root -q0/q1, exactly */
-        fmpq_t t;
-        int c = fmpz_cmpabs(q->coeffs + 0, q->coeffs + 1);
-        fmpq_init(t);
-        fmpq_set_fmpz_frac(t, q->coeffs + 0, q->coeffs + 1);
-        fmpq_abs(t, t);
-        pt->verdict = c < 0 ? RS_STATUS_STABLE : c == 0 ? RS_STATUS_MARGINAL : RS_STATUS_UNSTABLE;
-        pt->level = RS_LEVEL_EXACT;
-        pt->isolated = 1;
-        {
-            arb_t x;
-            arb_init(x);
-            arb_set_fmpq(x, t, 64);
-            pt->rho_lower = arb_lower_d(x);
-            pt->rho_upper = arb_upper_d(x);
-            arb_clear(x);
-        }
-        fmpq_clear(t);
-        goto done;
+    r = exact_count(rc, p, err);
+    if (r == RS_OK) {
+        c->inside = rc->inside;
+        c->on = rc->on;
+        c->outside = rc->outside;
+        c->max_on_mult = rs_rootcount_max_on_mult(rc);
+        c->status = (int) rs_rootcount_status(rc);
+        if (arg != NULL) *(rs_rootcount_struct *) arg = *rc;
     }
-    roots = _acb_vec_init(n);
-    seeds = _acb_vec_init(n);
-    acb_poly_init(P);
-    /* level fast: GSL double roots, validated at 64 bits */
-    {
-        slong maxbits = 0, shift;
-        int st;
-        gsl_poly_complex_workspace *w;
-        a = malloc((size_t) (n + 1) * sizeof(double));
-        z = malloc((size_t) (2 * n) * sizeof(double));
-        for (i = 0; i <= n; i++) {
-            slong b = (slong) fmpz_bits(q->coeffs + i);
-            if (b > maxbits) maxbits = b;
-        }
-        shift = maxbits > 900 ? maxbits - 900 : 0;
-        for (i = 0; i <= n; i++) {
-            slong e;
-            double m = fmpz_get_d_2exp(&e, q->coeffs + i);
-            a[i] = (m == 0) ? 0.0 : ldexp(m, (int) (e - shift));
-        }
-        w = (a[n] != 0) ? gsl_poly_complex_workspace_alloc((size_t) n + 1) : NULL;
-        st = (w == NULL) ? GSL_EFAILED : gsl_poly_complex_solve(a, (size_t) n + 1, w, z);
-        if (w) gsl_poly_complex_workspace_free(w);
-        if (st == GSL_SUCCESS && first_level == RS_LEVEL_DOUBLE) {
-            /* benchmark baseline: no certificate at all */
-            double rho = 0;
-            for (i = 0; i < n; i++) {
-                double m = hypot(z[2 * i], z[2 * i + 1]);
-                if (m > rho) rho = m;
-            }
-            pt->verdict = rho < 1 - 1e-9 ? RS_STATUS_STABLE : rho > 1 + 1e-9 ? RS_STATUS_UNSTABLE : RS_STATUS_MARGINAL;
-            pt->level = RS_LEVEL_DOUBLE;
-            pt->rho_lower = pt->rho_upper = rho;
-            pt->isolated = 1;
-            _acb_vec_clear(roots, n);
-            _acb_vec_clear(seeds, n);
-            acb_poly_clear(P);
-            free(a);
-            free(z);
-            goto done;
-        }
-        if (st == GSL_SUCCESS && first_level > RS_LEVEL_FAST) {
-            for (i = 0; i < n; i++) acb_set_d_d(seeds + i, z[2 * i], z[2 * i + 1]);
-        } else if (st == GSL_SUCCESS) {
-            int finite = 1;
-            for (i = 0; i < 2 * n; i++) if (!isfinite(z[i])) finite = 0;
-            for (i = 0; i <= n && finite; i++)      /* a coefficient lost to underflow: no a priori bound */
-                if (!fmpz_is_zero(q->coeffs + i) && !(fabs(a[i]) > 0x1p-1000)) finite = 0;
-            if (finite && (verdict = judge_double(pt, a, z, n)) >= 0) {
-                pt->level = RS_LEVEL_FAST;
-            } else if (finite) {
-                for (i = 0; i < n; i++) {
-                    acb_set_d_d(roots + i, z[2 * i], z[2 * i + 1]);
-                    acb_set(seeds + i, roots + i);
-                }
-                acb_poly_set_fmpz_poly(P, q, 64);
-                {
-                    slong iso = _acb_poly_validate_roots(roots, P->coeffs, n + 1, 64);
-                    verdict = judge_discs(pt, roots, n, iso, 64);
-                }
-                pt->level = RS_LEVEL_FAST;
-            } else st = GSL_EFAILED;
-        }
-        if (st != GSL_SUCCESS) {
-            for (i = 0; i < n; i++) acb_zero(seeds + i);
-        }
-    }
-    /* levels prec128, prec256: Arb's root finder seeded with the doubles */
-    for (prec = 128; verdict < 0 && prec <= 256; prec *= 2) {
-        if ((prec == 128 && first_level > RS_LEVEL_PREC128) || (prec == 256 && first_level > RS_LEVEL_PREC256))
-            continue;
-        slong iso, allzero = 1;
-        for (i = 0; i < n; i++) if (!acb_is_zero(seeds + i)) allzero = 0;
-        acb_poly_set_fmpz_poly(P, q, prec);
-        iso = acb_poly_find_roots(roots, P, allzero ? NULL : seeds, 2 * prec, prec);
-        pt->rho_lower = 0;
-        verdict = judge_discs(pt, roots, n, iso, prec);
-        pt->level = prec == 128 ? RS_LEVEL_PREC128 : RS_LEVEL_PREC256;
-        for (i = 0; i < n; i++) {
-            acb_set(seeds + i, roots + i);
-            mag_zero(arb_radref(acb_realref(seeds + i)));
-            mag_zero(arb_radref(acb_imagref(seeds + i)));
-        }
-    }
-    if (verdict >= 0) {
-        pt->verdict = verdict;
-    } else {
-        /* the exact test always decides */
-        r = decide_exact(pt, rc, q, err);
-    }
-    _acb_vec_clear(roots, n);
-    _acb_vec_clear(seeds, n);
-    acb_poly_clear(P);
-    free(a);
-    free(z);
-done:
     rs_rootcount_clear(rc);
-    fmpz_poly_clear(q);
-    pt->status = r;
     return r;
 }
 
 int rs_sweep_decide(rs_sweep_point_t *pt, const fmpz_poly_t p, rs_error_t err)
 {
-    return decide_from(pt, p, RS_LEVEL_FAST, err);
+    return rs_ladder_decide(pt, p, RS_LEVEL_FAST, exact_rung, NULL, err);
 }
 
 /* ---- request parsing ------------------------------------------------------------------ */
@@ -696,7 +419,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
                 pt->d.level = RS_LEVEL_EXACT;
                 pt->inside = pt->on = pt->outside = 0;
             } else {
-                r = decide_exact(&pt->d, rc, P, err);
+                r = rs_ladder_decide_exact(&pt->d, P, exact_rung, rc, err);
                 pt->inside = (int) rc->inside;
                 pt->on = (int) rc->on;
                 pt->outside = (int) rc->outside;
@@ -708,7 +431,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
         fmpz_poly_clear(P);
         return;
     }
-    r = decide_from(&pt->d, P, J->run->opt->sweep.first_level, err);
+    r = rs_ladder_decide(&pt->d, P, J->run->opt->sweep.first_level, exact_rung, NULL, err);
     if (r == RS_OK) r = point_system(pt, J, idx, P, NULL, err);
     if (r == RS_OK && pt->d.verdict >= 0 && pt->d.verdict != RS_STATUS_SINGULAR && fmpz_poly_degree(P) >= 1
         && (J->kind == OF_MODES || (!pt->d.isolated && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0))
@@ -723,7 +446,7 @@ static void compute_point(pt_t *pt, const job_t *J, slong idx, rs_error_t err)
         } else {
             r = rs_radius_fmpz_poly(rr, P, 15, J->max_prec, err);
             if (r == RS_OK) {
-                double lo = arb_lower_d(rr->lower), hi = arb_upper_d(rr->upper);
+                double lo = rs_ladder_lower_d(rr->lower), hi = rs_ladder_upper_d(rr->upper);
                 if (!(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
                     pt->d.rho_lower = lo;
                     pt->d.rho_upper = hi;
