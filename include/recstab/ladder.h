@@ -31,8 +31,10 @@ extern "C" {
 
 /* Certified verdict levels. */
 enum { RS_LEVEL_FAST = 0, RS_LEVEL_PREC128 = 1, RS_LEVEL_PREC256 = 2, RS_LEVEL_EXACT = 3,
-       RS_LEVEL_DOUBLE = 4 /* uncertified, benchmarking only */ };
-extern const char *const rs_sweep_level_names[5]; /* "fast", "prec128", "prec256", "exact", "double" */
+       RS_LEVEL_DOUBLE = 4, /* uncertified, benchmarking only */
+       RS_LEVEL_CERTIFIED = 5 /* certified numerics with no exact side (maps of exactly
+                                 integrated co-simulations), not a rung of this ladder */ };
+extern const char *const rs_sweep_level_names[6]; /* "fast", "prec128", "prec256", "exact", "double", "certified" */
 
 typedef struct {
     int status;          /* RS_OK, or the error code of this point */

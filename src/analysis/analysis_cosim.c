@@ -3,10 +3,13 @@
  * and/or the partner's states, explicit or implicit order K): the recurrence has
  * matrix-exponential entries, so only the certified numeric analyses apply
  * (radius, and the verdict the radius certifies). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpq_vec.h>
 #include "analysis/impl.h"
 #include "analysis/sweep_impl.h"
+#include "numeric/grid.h"
 #include "lower/builder.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
@@ -446,107 +449,115 @@ static int an_cosim_stability(rs_run_t *run, const rs_request_t *q, const char *
     return an_cosim(run, q, rest, 1);
 }
 
-/* map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]: certified radius on a grid
- * (same table layout as the polynomial maps of analysis_sweep.c) */
+/* ---- the map: the model kind "exact integration" of the sweep engine ---------------------- */
+
+/* map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]: the certified
+ * radius at every grid point, through the engine of every map
+ * (sweep_engine.c: shards, --max-points, codes, columns, summary).  With no
+ * exact side, a radius interval that contains 1 is RS_SWEEP_UNDECIDED. */
+typedef struct {
+    rs_run_t *run;
+    const rs_sweep_request_t *R;
+    const fmpq *x[2];
+} cosim_map_t;
+
+/* the co-simulation at grid point idx (index = j*K1 + i) */
+static int cosim_map_build(rs_cosim_t cs, const cosim_map_t *M, slong idx, rs_error_t err)
+{
+    slong K1 = M->R->axis[0].count;
+    const char *names[2];
+    fmpq vv[2];
+    vals_t vals;
+    int r;
+    names[0] = M->R->axis[0].name;
+    names[1] = M->R->axis[1].name;
+    vv[0] = M->x[0][idx % K1];
+    vv[1] = M->x[1][idx / K1];
+    vals_make(&vals, M->run->c, names, vv, 2);
+    r = cosim_build(cs, M->run->c, &vals, err);
+    flint_free(vals.v);
+    return r;
+}
+
+/* the model's callback: the verdict the certified radius gives (6 digits),
+ * the radius cells from its balls (bounds rounded outward, 17 digits) */
+static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t err)
+{
+    const cosim_map_t *M = model;
+    rs_cosim_t cs;
+    rs_radius_t rr;
+    slong max_prec = M->run->opt->max_prec < 1024 ? M->run->opt->max_prec : 1024;
+    memset(row, 0, sizeof *row);
+    row->d.verdict = -1;
+    row->inside = row->on = row->outside = -1;
+    rs_cosim_init(cs, 1, 1);
+    rs_radius_init(rr);
+    row->d.status = cosim_map_build(cs, M, idx, err);
+    if (row->d.status == RS_OK && rs_cosim_radius(rr, cs, 6, max_prec, err) == RS_OK) {
+        arb_t one;
+        char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
+             *hi = rs_radius_str_upper(rr->upper, 17);
+        size_t n = strlen(rho) + strlen(lo) + strlen(hi) + 3;
+        arb_init(one);
+        arb_one(one);
+        row->d.verdict = arb_lt(rr->upper, one) ? RS_STATUS_STABLE : arb_gt(rr->lower, one) ? RS_STATUS_UNSTABLE
+                         : RS_SWEEP_UNDECIDED;
+        row->d.level = RS_LEVEL_CERTIFIED;
+        row->cells = malloc(n);
+        snprintf(row->cells, n, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
+        flint_free(rho);
+        flint_free(lo);
+        flint_free(hi);
+        arb_clear(one);
+    }
+    rs_radius_clear(rr);
+    rs_cosim_clear(cs);
+}
+
 int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
-    const char *n1 = R->axis[0].name, *n2 = R->axis[1].name;
-    slong K1 = R->axis[0].count, K2 = R->axis[1].count;
-    const fmpq *A[2], *B[2];
-    slong i, j, idx, counts[3] = {0, 0, 0};
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f;
-    json_t *o, *cols;
-    int r = RS_OK;
-    const char *cn[] = {"index", "i", "j", NULL, NULL, NULL, NULL, "verdict", "code", "radius", "radius_lower",
-                        "radius_upper", "decided_by"};
-    char e1n[96], e2n[96];
-    for (i = 0; i < 2; i++) { A[i] = R->axis[i].from; B[i] = R->axis[i].to; }
-    snprintf(e1n, sizeof e1n, "%s_exact", n1);
-    snprintf(e2n, sizeof e2n, "%s_exact", n2);
-    cn[3] = n1; cn[4] = n2; cn[5] = e1n; cn[6] = e2n;
-    cols = json_array();
-    f = open_memstream(&buf, &len);
-    for (i = 0; i < 13; i++) {
-        json_array_append_new(cols, json_string(cn[i]));
-        fprintf(f, "%s%s", i ? "," : "", cn[i]);
+    const rs_sweep_axis_t *X = R->axis;
+    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
+    cosim_map_t M;
+    rs_sweep_model_t m;
+    rs_sweep_row_t *rows = NULL;
+    fmpq *xs[2];
+    double t0 = rs_sweep_now(), t_points;
+    char what[200], desc[200];
+    int r = rs_sweep_estimate(run, q, (double) X[0].count * (double) X[1].count, "the map");
+    if (r != RS_OK) return r;
+    xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
+    xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
+    M.run = run;
+    M.R = R;
+    M.x[0] = xs[0];
+    M.x[1] = xs[1];
+    {
+        /* the case's own errors (a parameter still symbolic, an equation not
+         * linear) at their place, before any point runs */
+        rs_cosim_t cs;
+        rs_cosim_init(cs, 1, 1);
+        r = cosim_map_build(cs, &M, 0, run->err);
+        rs_cosim_clear(cs);
     }
-    fputc('\n', f);
-    idx = 0;
-    for (j = 0; j < K2 && r == RS_OK; j++)
-        for (i = 0; i < K1 && r == RS_OK; i++, idx++) {
-            fmpq vv[2];
-            const char *names[2];
-            vals_t vals;
-            rs_cosim_t cs;
-            rs_radius_t rr;
-            char *x1, *x2;
-            int verdict = -1;
-            fmpq_init(vv + 0); fmpq_init(vv + 1);
-            rs_grid_value(vv + 0, A[0], B[0], i, K1 - 1, 0);
-            rs_grid_value(vv + 1, A[1], B[1], j, K2 - 1, 0);
-            names[0] = n1; names[1] = n2;
-            vals_make(&vals, run->c, names, vv, 2);
-            rs_cosim_init(cs, 1, 1);
-            rs_radius_init(rr);
-            r = cosim_build(cs, run->c, &vals, run->err);
-            x1 = fmpq_get_str(NULL, 10, vv + 0);
-            x2 = fmpq_get_str(NULL, 10, vv + 1);
-            fprintf(f, "%ld,%ld,%ld,%.17g,%.17g,%s,%s,", (long) idx, (long) i, (long) j, fmpq_get_d(vv + 0),
-                    fmpq_get_d(vv + 1), x1, x2);
-            if (r == RS_OK) {
-                int rr_ok = rs_cosim_radius(rr, cs, 6, run->opt->max_prec < 1024 ? run->opt->max_prec : 1024, run->err);
-                if (rr_ok == RS_OK) {
-                    arb_t one;
-                    arb_init(one);
-                    arb_one(one);
-                    verdict = arb_lt(rr->upper, one) ? 0 : arb_gt(rr->lower, one) ? 2 : 1;
-                    counts[verdict]++;
-                    /* bounds rounded outward, the radius with its certified digits */
-                    char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
-                         *hi = rs_radius_str_upper(rr->upper, 17);
-                    fprintf(f, "%s,%d,%s,%s,%s,certified\n",
-                            verdict == 0 ? "stable" : verdict == 2 ? "unstable" : "undecided", verdict,
-                            rho[0] == '[' ? "" : rho, lo, hi);
-                    flint_free(rho);
-                    flint_free(lo);
-                    flint_free(hi);
-                    arb_clear(one);
-                } else {
-                    rs_error_init(run->err);
-                    fprintf(f, "undefined,-1,,,,\n");
-                }
-            }
-            flint_free(x1); flint_free(x2);
-            rs_radius_clear(rr);
-            rs_cosim_clear(cs);
-            flint_free(vals.v);
-            fmpq_clear(vv + 0); fmpq_clear(vv + 1);
-        }
-    fclose(f);
     if (r == RS_OK) {
-        o = json_object();
-        json_object_set_new(o, "analysis", json_string("map"));
-        json_object_set_new(o, "params", json_pack("[s,s]", n1, n2));
-        json_object_set_new(o, "ranges", json_pack("[[o,o,I],[o,o,I]]", rs_json_fmpq(A[0]), rs_json_fmpq(B[0]),
-                                                   (json_int_t) K1, rs_json_fmpq(A[1]), rs_json_fmpq(B[1]), (json_int_t) K2));
-        json_object_set_new(o, "grid", json_pack("[I,I]", (json_int_t) K1, (json_int_t) K2));
-        json_object_set_new(o, "of", json_string("radius"));
-        json_object_set_new(o, "points", json_integer(K1 * K2));
-        json_object_set_new(o, "computed", json_integer(K1 * K2));
-        json_object_set_new(o, "verdicts", json_pack("{s:I,s:I,s:I}", "stable", (json_int_t) counts[0], "undecided",
-                                                     (json_int_t) counts[1], "unstable", (json_int_t) counts[2]));
-        json_object_set_new(o, "decided_by", json_pack("{s:I}", "certified", (json_int_t) (counts[0] + counts[1] + counts[2])));
-        json_object_set_new(o, "columns", cols);
-        json_object_set_new(o, "text", json_string(q->text));
-        json_object_set_new(o, "table", json_string(buf));
-        json_object_set_new(o, "csv", json_null());
-        json_array_append_new(run->results, o);
-    } else {
-        json_decref(cols);
+        m.point = cosim_map_point;
+        m.model = &M;
+        m.serial = 1;       /* each point re-parses a synthetic case; its rows hold malloc'd cells */
+        snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
+        snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
+        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, desc);
     }
-    free(buf);
+    t_points = rs_sweep_now() - t0;
+    if (r == RS_OK) {
+        json_t *o = rs_sweep_map_json(run, q, R, (const fmpq *const *) xs, rows, lo, hi);
+        json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
+        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
+        json_array_append_new(run->results, o);
+    }
+    rs_sweep_rows_free(rows, hi - lo);
+    _fmpq_vec_clear(xs[0], X[0].count);
+    _fmpq_vec_clear(xs[1], X[1].count);
     return r;
 }
 

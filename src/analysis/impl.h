@@ -142,7 +142,7 @@ typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
  * limit, claim) and src/analysis/analysis_numeric.c (radius, modes, simulate). */
 extern const rs_analysis_entry_t rs_analysis_extra[];
 extern const rs_analysis_entry_t rs_analysis_numeric[];
-extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis/analysis_sweep.c: sweep, map */
+extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis/analysis_sweep.c: sweep, map (sweep_impl.h) */
 extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis/analysis_cosim.c: exact integration */
 extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis/analysis_recurrence.c: numeric recurrences */
 
@@ -153,11 +153,6 @@ extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis/anal
  * why not; *tau is the threshold on |log growth| (see the source for why). */
 const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside, double log_growth, slong degree,
                                      slong steps);
-
-/* Grid value i of K+1 points from A to B (src/analysis/analysis_sweep.c); log
- * spacing: the simplest rational within 1e-13 relative of A*(B/A)^(i/K)
- * (endpoints exact). */
-void rs_grid_value(fmpq_t x, const fmpq_t A, const fmpq_t B, slong i, slong K, int logsp);
 
 /* Sign information for the parameters from the case's `assume` lines
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */

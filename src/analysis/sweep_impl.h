@@ -11,13 +11,22 @@
  *   sweep NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]
  *   map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]
  *
- * One engine computes every sweep and map (src/analysis/sweep_engine.c): the
- * grid (rs_grid_value), the shard of the points (--shard), the point limit
- * (--max-points), the per-point verdict codes, the CSV columns, the JSON
- * summary; the model kind supplies only the verdict at a point. */
+ * One engine computes every sweep and map (src/analysis/sweep_engine.c over
+ * src/numeric/engine.c and grid.c): the grid (rs_grid_value), the shard of
+ * the points (--shard), the point limit (--max-points), the per-point verdict
+ * codes, the CSV columns, the JSON summary, OpenMP/MPI and progress; the
+ * model kind supplies only the verdict at a point (rs_sweep_model_t):
+ *   equations          src/analysis/sweep_poly.c (p evaluated exactly, the
+ *                      ladder of ladder.h, semisimplicity for systems)
+ *   co-simulation      src/analysis/analysis_cosim.c (exact integration: the
+ *                      certified radius; RS_SWEEP_UNDECIDED where it
+ *                      cannot tell |lambda| from 1)
+ *   matrix recurrence  has no sweep or map (numeric entries, radius and
+ *                      stability only). */
 #ifndef RECSTAB_ANALYSIS_SWEEP_IMPL_H
 #define RECSTAB_ANALYSIS_SWEEP_IMPL_H
 
+#include <stdio.h>
 #include <flint/fmpq.h>
 #include "analysis/impl.h"
 #include "recstab/sweep.h"
@@ -60,5 +69,82 @@ int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request
 int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *r);
 /* the map of a case whose subsystems are integrated exactly (analysis_cosim.c) */
 int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *r);
+
+/* ---- the engine (sweep_engine.c), shared by the model kinds ---------------------- */
+
+#define RS_SWEEP_MAX_REFS 4      /* references of `of modes` */
+
+/* Verdict codes of the CSV `code` column: rs_status_t (0 stable, 1 marginal,
+ * 2 unstable, 3 singular), -1 undefined (p vanishes identically there), and
+ * RS_SWEEP_UNDECIDED: a model with numerics only (exact integration) whose
+ * certified radius interval contains 1 -- not "marginal", which is an exact
+ * verdict (roots on the circle, all semisimple). */
+#define RS_SWEEP_UNDECIDED 4
+
+/* The result of one point. */
+typedef struct {
+    rs_sweep_point_t d;                 /* verdict, level, radius bounds */
+    int inside, on, outside;            /* exact counts (of stability sweeps), else -1 */
+    int nmodes;                         /* references found */
+    /* damping ratio, frequency error, omega per reference: certified
+     * [mode_lo, mode_hi] (doubles rounded outward); NAN when not found */
+    double mode_lo[3 * RS_SWEEP_MAX_REFS], mode_hi[3 * RS_SWEEP_MAX_REFS];
+    char *cells;                        /* "radius,lower,upper" written by the model (malloc'd;
+                                           serial models only), or NULL: from d */
+} rs_sweep_row_t;
+
+/* A model kind: the verdict at grid point idx (index = j*K1 + i of a map). */
+typedef struct {
+    void (*point)(rs_sweep_row_t *row, slong idx, void *model, rs_error_t err);
+    void *model;
+    int serial;                         /* not thread-safe: one point after another, no MPI split */
+} rs_sweep_model_t;
+
+double rs_sweep_now(void);
+/* errors at the request: more than --max-points points; more than the budget allows */
+int rs_sweep_limit_error(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
+int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
+/* The run's shard of npoints points computed by m: *rows[0 .. *hi - *lo)
+ * (rs_sweep_rows_free).  A point's error is recomputed serially for its
+ * message and put at the request ("at point N (desc): ..."). */
+int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run, const rs_request_t *q,
+                     const rs_sweep_model_t *m, slong npoints, const char *what, const char *desc);
+void rs_sweep_rows_free(rs_sweep_row_t *rows, slong n);
+/* "points", "computed", "shard", "rows" */
+void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo, slong hi);
+/* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
+void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
+/* {NAME: value} of the case's set values except keep[] */
+json_t *rs_sweep_json_sets(rs_run_t *run, const char *const *keep, slong nkeep);
+/* The map element of a parsed map request (every model kind): header,
+ * columns, the table of rows [lo, hi) over the axis values xs[0], xs[1],
+ * summary, "substituted", "text" (the boundary and timings are the caller's). */
+json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
+                          const rs_sweep_row_t *rows, slong lo, slong hi);
+/* table cells */
+void rs_sweep_put_radius(FILE *f, const rs_sweep_row_t *row);
+void rs_sweep_put_certified(FILE *f, double lo, double hi);
+const char *rs_sweep_verdict_name(int code);
+void rs_sweep_put_fmpq(FILE *f, const fmpq_t x);          /* exact: p/q */
+void rs_sweep_put_double_of(FILE *f, const fmpq_t x);     /* %.15g */
+
+/* ---- the model of the equations (sweep_poly.c) ------------------------------------- */
+
+/* the variant at every set value but the request's axes (analysis_sweep.c) */
+int rs_sweep_variant(rs_variant_t **v, rs_run_t *run, const rs_sweep_request_t *R);
+
+typedef struct rs_sweep_poly_struct rs_sweep_poly_t;
+/* The model of variant v along the request's axes (values xs[0], xs[1]):
+ * NULL with the error at the request when a parameter other than the axes
+ * is still symbolic or the `of modes` options are wrong. */
+int rs_sweep_poly_new(rs_sweep_poly_t **J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                      const rs_variant_t *v, const fmpq *const *xs, slong npoints);
+void rs_sweep_poly_free(rs_sweep_poly_t *J);
+void rs_sweep_poly_model(rs_sweep_model_t *m, rs_sweep_poly_t *J);
+slong rs_sweep_poly_nref(const rs_sweep_poly_t *J);
+
+/* ---- request parsing helpers (sweep_request.c) ------------------------------------ */
+
+extern const char *const rs_sweep_of_names[3];   /* "radius", "stability", "modes" */
 
 #endif

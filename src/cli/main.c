@@ -10,6 +10,7 @@
 #include <time.h>
 #include <sys/resource.h>
 #include <jansson.h>
+#include <gsl/gsl_errno.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -201,6 +202,10 @@ int main(int argc, char **argv)
     }
 #endif
     rs_options_default(&opt);
+    /* GSL's error handler, set once for the whole process: off, so that a
+     * failing GSL call (the sweep ladder's double root finder, OpenMP
+     * workers included) returns its status instead of aborting */
+    gsl_set_error_handler_off();
     raise_stack_limit();
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];

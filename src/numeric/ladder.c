@@ -12,7 +12,7 @@
 /* the rs_status_t values (rootcount.h, a stage the numeric one does not include) */
 enum { ST_STABLE = 0, ST_MARGINAL = 1, ST_UNSTABLE = 2 };
 
-const char *const rs_sweep_level_names[5] = {"fast", "prec128", "prec256", "exact", "double"};
+const char *const rs_sweep_level_names[6] = {"fast", "prec128", "prec256", "exact", "double", "certified"};
 
 double rs_ladder_lower_d(const arb_t x)
 {

@@ -22,6 +22,7 @@
 #include <omp.h>
 #endif
 #include <arb.h>
+#include <gsl/gsl_errno.h>
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
 #include "recstab/analysis.h"
@@ -482,6 +483,7 @@ static void test_modes_sweep(void **state)
 
 int main(void)
 {
+    gsl_set_error_handler_off();   /* once, as the recstab command does (sweep.h) */
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_forward_euler_radius),
         cmocka_unit_test(test_central_difference_verdicts),

@@ -1,0 +1,240 @@
+/* analysis_map.c -- the map analysis of the equations and its exact
+ * stability boundary:
+ *
+ *   map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]
+ *
+ * The points are computed by the engine (sweep_engine.c) with the model of
+ * the equations (sweep_poly.c); the table is the engine's, as for every
+ * model kind.  Where p is symbolic in both parameters the boundary is added:
+ * the zero sets of the reduced Lienard-Chipart conditions and of p(1), p(-1)
+ * found from exact signs at the grid points. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpz_vec.h>
+#include <flint/fmpq_vec.h>
+#include "analysis/sweep_impl.h"
+#include "numeric/grid.h"
+#include "recstab/budget.h"
+#include "recstab/hurwitz.h"
+
+typedef struct {
+    fmpz_mpoly_t f;
+    char *origin;
+} bcond_t;
+
+/* The candidate polynomials of the boundary into bc (*nb of them): the
+ * non-constant reduced Lienard-Chipart conditions, then p(1), p(-1) unless
+ * constant or already listed up to sign.  RS_OK, or the error of hurwitz
+ * (p(1), p(-1) are listed all the same). */
+static int boundary_candidates(bcond_t **out, slong *nb, rs_run_t *run, const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    rs_hurwitz_t h;
+    fmpz_mpoly_t qz;
+    bcond_t *bc;
+    slong c, n = 0;
+    int r;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_init(h);
+    r = rs_run_hurwitz(h, run, v, qz);
+    bc = calloc((size_t) ((r == RS_OK ? h->ncond : 0) + 2), sizeof(bcond_t));
+    for (c = 0; r == RS_OK && c < h->ncond; c++) {
+        if (h->cond[c].trivially_true || fmpz_mpoly_is_fmpz(h->cond[c].reduced, s->zctx)) continue;
+        fmpz_mpoly_init(bc[n].f, s->zctx);
+        fmpz_mpoly_set(bc[n].f, h->cond[c].reduced, s->zctx);
+        bc[n].origin = strdup(h->cond[c].origin);
+        n++;
+    }
+    for (c = 0; c < 2; c++) {
+        fmpz_t one;
+        fmpz_mpoly_t neg;
+        slong k;
+        int dup = 0;
+        fmpz_init(one);
+        fmpz_set_si(one, c == 0 ? 1 : -1);
+        fmpz_mpoly_init(bc[n].f, s->zctx);
+        fmpz_mpoly_evaluate_one_fmpz(bc[n].f, v->cp->p, s->lambda_var, one, s->zctx);
+        fmpz_clear(one);
+        fmpz_mpoly_init(neg, s->zctx);
+        fmpz_mpoly_neg(neg, bc[n].f, s->zctx);
+        for (k = 0; k < n; k++)
+            if (fmpz_mpoly_equal(bc[k].f, bc[n].f, s->zctx) || fmpz_mpoly_equal(bc[k].f, neg, s->zctx)) dup = 1;
+        fmpz_mpoly_clear(neg, s->zctx);
+        if (dup || fmpz_mpoly_is_fmpz(bc[n].f, s->zctx)) { fmpz_mpoly_clear(bc[n].f, s->zctx); continue; }
+        bc[n].origin = strdup(c == 0 ? "p(1)" : "p(-1)");
+        n++;
+    }
+    rs_hurwitz_clear(h, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    *out = bc;
+    *nb = n;
+    return r;
+}
+
+/* Exact signs sg and double approximations val of f at every grid point
+ * (index j*K1 + i); RS_OK, or the budget ran out (then no rows). */
+static void boundary_signs(signed char *sg, double *val, const fmpz_mpoly_t f, const rs_variant_t *v, slong v1,
+                           slong v2, const fmpq *x1, slong K1, const fmpq *x2, slong K2)
+{
+    rs_grid_terms_t T;
+    fmpz *U1, *U2, *g;
+    double *bx1 = malloc((size_t) K1 * sizeof(double)), *bx2 = malloc((size_t) K2 * sizeof(double));
+    slong i, j;
+    rs_grid_terms_init(&T, f, -1, v1, v2, v->s->zctx);
+    U1 = rs_grid_powers(x1, K1, T.d1);
+    U2 = rs_grid_powers(x2, K2, T.d2);
+    /* log2 of den^d per axis value, for the double approximations */
+    for (i = 0; i < K1; i++) bx1[i] = (double) T.d1 * log2(fmpz_get_d(fmpq_denref(x1 + i)));
+    for (j = 0; j < K2; j++) bx2[j] = (double) T.d2 * log2(fmpz_get_d(fmpq_denref(x2 + j)));
+#pragma omp parallel for schedule(dynamic, 4) private(i, g)
+    for (j = 0; j < K2; j++) {
+        slong k;
+        fmpz_t w;
+        if (rs_budget_check(NULL, "the map's boundary") != RS_OK) continue;
+        g = _fmpz_vec_init(T.d1 + 1);
+        fmpz_init(w);
+        for (k = 0; k < T.n; k++)
+            fmpz_addmul(g + T.e1[k], T.c + k, U2 + j * (T.d2 + 1) + T.e2[k]);
+        for (i = 0; i < K1; i++) {
+            slong e;
+            double m;
+            fmpz_zero(w);
+            for (k = 0; k <= T.d1; k++) fmpz_addmul(w, g + k, U1 + i * (T.d1 + 1) + k);
+            sg[j * K1 + i] = (signed char) fmpz_sgn(w);
+            m = fmpz_get_d_2exp(&e, w);
+            val[j * K1 + i] = m == 0 ? 0 : m * exp2((double) e - bx1[i] - bx2[j]);
+        }
+        fmpz_clear(w);
+        _fmpz_vec_clear(g, T.d1 + 1);
+    }
+    free(bx1);
+    free(bx2);
+    _fmpz_vec_clear(U1, K1 * (T.d1 + 1));
+    _fmpz_vec_clear(U2, K2 * (T.d2 + 1));
+    rs_grid_terms_clear(&T);
+}
+
+/* The boundary rows of condition c: zeros, then sign changes along rows
+ * (fixed x2, crossing in x1), then along columns; the number of rows. */
+static slong boundary_rows(FILE *f, slong c, const signed char *sg, const double *val, const fmpq *x1, slong K1,
+                           const fmpq *x2, slong K2)
+{
+    slong i, j, n = 0;
+    for (j = 0; j < K2; j++)
+        for (i = 0; i < K1; i++) {
+            slong a = j * K1 + i;
+            double xa = fmpq_get_d(x1 + i), y = fmpq_get_d(x2 + j);
+            if (sg[a] == 0) {
+                fprintf(f, "%ld,%.15g,%.15g,zero\n", (long) c + 1, xa, y);
+                n++;
+            } else if (i + 1 < K1 && sg[a] * sg[a + 1] < 0) {
+                double tt = val[a] / (val[a] - val[a + 1]), xb = fmpq_get_d(x1 + i + 1);
+                if (!(tt >= 0 && tt <= 1)) tt = 0.5;
+                fprintf(f, "%ld,%.15g,%.15g,row\n", (long) c + 1, xa + tt * (xb - xa), y);
+                n++;
+            }
+        }
+    for (i = 0; i < K1; i++)
+        for (j = 0; j + 1 < K2; j++) {
+            slong a = j * K1 + i, b = (j + 1) * K1 + i;
+            if (sg[a] * sg[b] < 0) {
+                double ya = fmpq_get_d(x2 + j), yb = fmpq_get_d(x2 + j + 1);
+                double tt = val[a] / (val[a] - val[b]);
+                if (!(tt >= 0 && tt <= 1)) tt = 0.5;
+                fprintf(f, "%ld,%.15g,%.15g,column\n", (long) c + 1, fmpq_get_d(x1 + i), ya + tt * (yb - ya));
+                n++;
+            }
+        }
+    return n;
+}
+
+/* Boundary of the stability region: sign changes of the reduced
+ * Lienard-Chipart conditions and of p(1), p(-1) along grid rows and
+ * columns (exact signs at grid points, crossing interpolated linearly).  Its
+ * rows in shard 1 only, the header in every shard, so shards merge by
+ * concatenation. */
+static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const rs_sweep_request_t *R,
+                         const fmpq *x1, const fmpq *x2)
+{
+    slong v1 = R->axis[0].var, v2 = R->axis[1].var, K1 = R->axis[0].count, K2 = R->axis[1].count;
+    bcond_t *bc;
+    slong nb, c, npts = 0;
+    json_t *conds = json_array(), *b = json_object();
+    rs_error_struct saved = *run->err;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f;
+    if (boundary_candidates(&bc, &nb, run, v) != RS_OK) {
+        json_object_set_new(b, "hurwitz_error", json_string(run->err->msg));
+        *run->err = saved;
+    }
+    f = open_memstream(&buf, &len);
+    fprintf(f, "condition,%s,%s,scan\n", R->axis[0].name, R->axis[1].name);
+    for (c = 0; c < nb; c++) {
+        double *val = malloc((size_t) (K1 * K2) * sizeof(double));
+        signed char *sg = malloc((size_t) (K1 * K2));
+        json_array_append_new(conds, json_pack("{s:I,s:s,s:o}", "index", (json_int_t) c + 1, "origin",
+                                               bc[c].origin, "poly", rs_json_zpoly(bc[c].f, v->s)));
+        boundary_signs(sg, val, bc[c].f, v, v1, v2, x1, K1, x2, K2);
+        if (run->opt->sweep.shard_index == 1) npts += boundary_rows(f, c, sg, val, x1, K1, x2, K2);
+        free(val);
+        free(sg);
+    }
+    fclose(f);
+    json_object_set_new(b, "conditions", conds);
+    json_object_set_new(b, "points", json_integer(npts));
+    json_object_set_new(b, "method", json_string(
+        "zero sets of the reduced Lienard-Chipart conditions of q(z) (hurwitz) and of p(1), p(-1): exact signs "
+        "at the grid points, a crossing between two neighbours of a row (column) placed by linear "
+        "interpolation of the values; 'zero' rows are grid points where the polynomial vanishes exactly"));
+    json_object_set_new(o, "boundary", b);
+    json_object_set_new(o, "boundary_table", json_string(buf));
+    free(buf);
+    for (c = 0; c < nb; c++) {
+        fmpz_mpoly_clear(bc[c].f, v->s->zctx);
+        free(bc[c].origin);
+    }
+    free(bc);
+}
+
+int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
+{
+    const rs_sweep_axis_t *X = R->axis;
+    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
+    rs_variant_t *v;
+    rs_sweep_poly_t *J = NULL;
+    rs_sweep_model_t m;
+    rs_sweep_row_t *rows = NULL;
+    fmpq *xs[2];
+    double t0 = rs_sweep_now(), t_points;
+    char what[200], desc[200];
+    int r = rs_sweep_estimate(run, q, (double) X[0].count * (double) X[1].count, "the map");
+    if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
+    if (r != RS_OK) return r;
+    xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
+    xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
+    r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) xs, npoints);
+    if (r == RS_OK) {
+        rs_sweep_poly_model(&m, J);
+        snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
+        snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
+        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, desc);
+    }
+    t_points = rs_sweep_now() - t0;
+    if (r == RS_OK) {
+        json_t *o = rs_sweep_map_json(run, q, R, (const fmpq *const *) xs, rows, lo, hi);
+        if (fmpz_mpoly_degree_si(v->cp->p, X[0].var, v->s->zctx) > 0
+            && fmpz_mpoly_degree_si(v->cp->p, X[1].var, v->s->zctx) > 0)
+            map_boundary(o, run, v, R, xs[0], xs[1]);
+        json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
+        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
+        json_array_append_new(run->results, o);
+    }
+    rs_sweep_rows_free(rows, hi - lo);
+    rs_sweep_poly_free(J);
+    _fmpq_vec_clear(xs[0], X[0].count);
+    _fmpq_vec_clear(xs[1], X[1].count);
+    return r;
+}
