@@ -5,7 +5,7 @@
 # I/N outputs merge (by concatenation, README "Sweeps and maps") into the
 # full run's CSV byte for byte, --threads does not change the CSV, the point
 # limit exits 2 naming --max-points, the exact-integration map agrees with
-# the single-point radius, and, when mpirun and build/recstab-mpi exist, 2
+# the single-point radius and shards, limits and codes like the others, and, when mpirun and build/recstab-mpi exist, 2
 # and 3 MPI ranks write the same CSV as one process.
 # Prints "ok ..." or "FAIL ..." per check.
 BUILD=${BUILD:-build}
@@ -125,6 +125,46 @@ grep -v '^#\|^index' "$T/li.csv" | while IFS=, read -r idx i j x y xe ye verdict
         && [ "$st" = "$verdict" ]; then :; else echo "row $idx: map $verdict [$lo, $hi], point $st $rho"; fi
 done >"$T/li.diff"
 if [ ! -s "$T/li.diff" ]; then ok "cosim map: every point agrees with the single-point radius"; else fail "cosim map: $(cat "$T/li.diff")"; fi
+
+# the co-simulation map runs through the same engine as every map: its
+# shards merge (by the README's recipe) into the unsharded CSV byte for byte,
+# --max-points refuses it before any point runs, and it has the same columns,
+# JSON keys and codes (0 stable, 2 unstable; 4 undecided where the certified
+# radius interval contains 1 -- there is no exact side to call it marginal)
+LIMAP="map acc1 0 3 5, c1 1/2 2 3"
+"$RS" --csv "$T/lifull.csv" --analyse "$LIMAP" "$LI" >/dev/null 2>"$T/err" || fail "cosim map: $(cat "$T/err")"
+for N in 2 3; do
+    files=""
+    I=1
+    while [ $I -le $N ]; do
+        "$RS" --shard $I/$N --csv "$T/li$I-$N.csv" --analyse "$LIMAP" "$LI" >/dev/null 2>"$T/err" \
+            || fail "cosim map --shard $I/$N: $(cat "$T/err")"
+        files="$files $T/li$I-$N.csv"
+        I=$((I + 1))
+    done
+    # shellcheck disable=SC2086
+    merge $files >"$T/limerged-$N.csv"
+    n1=$(grep -vc '^#\|^index' "$T/li1-$N.csv")
+    if [ "$n1" -lt 15 ] && cmp -s "$T/limerged-$N.csv" "$T/lifull.csv"; then ok "cosim map --shard x/$N: shards of $n1.. rows merge into the full map"
+    else fail "cosim map --shard x/$N: $n1 rows in shard 1, merge differs: $(diff "$T/limerged-$N.csv" "$T/lifull.csv" | head -3)"; fi
+done
+"$RS" --json --shard 2/3 --analyse "$LIMAP" "$LI" >"$T/lis.json" 2>"$T/err"
+if grep -q '"shard": "2/3"' "$T/lis.json" && grep -q '"computed": 5' "$T/lis.json"; then ok "cosim map JSON: shard 2/3 computed 5 of 15 points"
+else fail "cosim map JSON shard keys: $(grep -E 'shard|computed' "$T/lis.json")"; fi
+"$RS" --csv "$T/lilim.csv" --max-points 14 --analyse "$LIMAP" "$LI" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "cosim map --max-points 14 (15 points) exit" 2 "$rc"
+if grep -q 'the map (5 x 3) has 15 points, more than the limit of 14 points' "$T/err" && [ ! -s "$T/out" ] && [ ! -e "$T/lilim.csv" ]; then
+    ok "cosim map: --max-points refused with its message, nothing written"; else fail "cosim map limit: $(cat "$T/err")"; fi
+# acc1 = adc1 = d1 = 0 uncouples two undamped oscillators (frequencies
+# sqrt(c1), sqrt(2 c1) with ac21 = 2): exp(A H) has every eigenvalue exactly on
+# the unit circle, so the certified radius interval contains 1 -> undecided;
+# acc1 = 1 is unstable (the single-point radius analysis agrees, above)
+DD=cases/li-dd-explicit-k0.case
+"$RS" --csv "$T/und.csv" --set d1=0 --set ac21=2 --analyse "map acc1 0 1 2, adc1 0 0 1" "$DD" >/dev/null 2>"$T/err"
+codes=$(grep -v '^#\|^index' "$T/und.csv" | cut -d, -f8,9 | tr '\n' ' ')
+if [ "$codes" = "undecided,4 unstable,2 " ]; then ok "cosim map codes: undecided 4, unstable 2"; else fail "cosim map codes: '$codes' $(cat "$T/err")"; fi
+"$RS" --set d1=0 --set ac21=2 --set acc1=0 --set adc1=0 --analyse radius "$DD" 2>&1 | grep -q 'verdict *undecided' \
+    && ok "the single point agrees: undecided" || fail "single point at the undecided map point"
 
 # MPI: same CSV with 2 and 3 ranks (make mpi builds $BUILD/recstab-mpi)
 if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
