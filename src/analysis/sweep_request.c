@@ -101,6 +101,33 @@ static int parse_of(rs_run_t *run, const rs_request_t *q, const tok_t *t, slong 
     return RS_OK;
 }
 
+/* The keys of the `of modes` options (h=, reference=; reference required):
+ * checked here, before anything runs; the values are expressions, evaluated
+ * per point by the run (sweep_poly.c). */
+static int check_modes_keys(rs_run_t *run, const rs_request_t *q, const char *opts)
+{
+    const char *p = opts;
+    int have_ref = 0;
+    while (p != NULL && *p) {
+        size_t len;
+        const char *eq;
+        while (*p == ' ' || *p == '\t') p++;
+        len = strcspn(p, " \t");
+        eq = memchr(p, '=', len);
+        if (eq != NULL) {
+            if (eq - p == 9 && strncmp(p, "reference", 9) == 0) have_ref = 1;
+            else if (!(eq - p == 1 && p[0] == 'h'))
+                return rs_req_error(run, q, p, RS_ERR_INPUT, "expected an option (h=, reference=), found '%s'", p);
+        }
+        p += len;
+    }
+    if (!have_ref)
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT,
+                            "sweep ... of modes needs reference=EXPR (the exact frequency of the mode, e.g. "
+                            "reference=w with h=1 for a scaled w = omega*h), found '%s'", q->text);
+    return RS_OK;
+}
+
 void rs_sweep_request_init(rs_sweep_request_t *r)
 {
     slong ax;
@@ -160,6 +187,7 @@ int rs_sweep_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_reques
     if (r == RS_OK && opts != NULL && R->of != RS_SWEEP_OF_MODES)
         r = rs_req_error(run, q, opts, RS_ERR_INPUT, "options are only for 'of modes', found '%s'", opts);
     R->opts = opts;
+    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) r = check_modes_keys(run, q, opts);
     if (r == RS_OK && R->logsp && (fmpq_sgn(ax->from) <= 0 || fmpq_sgn(ax->to) <= 0))
         r = rs_req_error(run, q, ax->from_at, RS_ERR_INPUT, "log spacing needs A > 0 and B > 0, found '%s'", ax->from_at);
     if (r == RS_OK && ax->count >= run->opt->sweep.max_points)
