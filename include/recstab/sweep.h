@@ -15,7 +15,13 @@
  * results; tables and JSON are built serially afterwards, so the output does
  * not depend on the thread count.  With -DRS_MPI the points of each shard are
  * further split over the MPI ranks (contiguous blocks) and gathered on every
- * rank (MPI_Allgatherv), so every rank builds the same JSON. */
+ * rank (MPI_Allgatherv), so every rank builds the same JSON.
+ *
+ * GSL's error handler: a program that runs sweeps or maps (rs_analysis_run)
+ * or calls rs_sweep_decide switches it off once, before (the recstab command
+ * does so at the start of main): GSL's default handler aborts the process
+ * when the double root finder of the ladder fails, and the library does not
+ * change process-wide state behind its caller's back. */
 #ifndef RECSTAB_SWEEP_H
 #define RECSTAB_SWEEP_H
 
