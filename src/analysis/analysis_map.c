@@ -74,7 +74,8 @@ static int boundary_candidates(bcond_t **out, slong *nb, rs_run_t *run, const rs
 }
 
 /* Exact signs sg and double approximations val of f at every grid point
- * (index j*K1 + i); RS_OK, or the budget ran out (then no rows). */
+ * (index j*K1 + i); rows are skipped once the budget ran out (the run
+ * reports the limit). */
 static void boundary_signs(signed char *sg, double *val, const fmpz_mpoly_t f, const rs_variant_t *v, slong v1,
                            slong v2, const fmpq *x1, slong K1, const fmpq *x2, slong K2)
 {
