@@ -459,6 +459,7 @@ typedef struct {
     rs_run_t *run;
     const rs_sweep_request_t *R;
     const fmpq *x[2];
+    cosim_forms_t F;       /* the linear forms, built once for every point */
 } cosim_map_t;
 
 /* the co-simulation at grid point idx (index = j*K1 + i) */
@@ -474,7 +475,7 @@ static int cosim_map_build(rs_cosim_t cs, const cosim_map_t *M, slong idx, rs_er
     vv[0] = M->x[0][idx % K1];
     vv[1] = M->x[1][idx / K1];
     vals_make(&vals, M->run->c, names, vv, 2);
-    r = cosim_build(cs, M->run->c, &vals, err);
+    r = cosim_at(cs, &M->F, M->run->c, &vals, err);
     flint_free(vals.v);
     return r;
 }
@@ -532,7 +533,8 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     M.R = R;
     M.x[0] = xs[0];
     M.x[1] = xs[1];
-    {
+    r = cosim_forms_init(&M.F, run->c, run->err);
+    if (r == RS_OK) {
         /* the case's own errors (a parameter still symbolic, an equation not
          * linear) at their place, before any point runs */
         rs_cosim_t cs;
@@ -543,7 +545,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     if (r == RS_OK) {
         m.point = cosim_map_point;
         m.model = &M;
-        m.serial = 1;       /* each point re-parses a synthetic case; its rows hold malloc'd cells */
+        m.serial = 1;       /* points share the forms' evaluation contexts; rows hold malloc'd cells */
         snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
         snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
         r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, desc);
@@ -556,6 +558,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
         json_array_append_new(run->results, o);
     }
     rs_sweep_rows_free(rows, hi - lo);
+    cosim_forms_clear(&M.F);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
