@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "util/polyfmt.h"
+#include "recstab/budget.h"
 
 char *rs_polyfmt_spaced(const char *s)
 {
@@ -74,6 +75,9 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
         ulong kk = (ulong) k;
         char *cs;
         int neg = 0, single;
+        /* decimal printing of large symbolic coefficients takes seconds:
+         * stop with the budget (sticky: the run reports it, drops the text) */
+        if (rs_budget_check(NULL, "printing a polynomial") != RS_OK) break;
         fmpz_mpoly_get_coeff_vars_ui(c, p, &var, &kk, 1, ctx);
         if (fmpz_mpoly_is_zero(c, ctx)) continue;
         single = (fmpz_mpoly_length(c, ctx) == 1);
