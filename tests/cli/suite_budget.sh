@@ -54,6 +54,13 @@ check "memory limit estimated before a sweep" 1 'the sweep would need about [0-9
 check "li --set c1=0 (stack at 65536 bits)" 4.5 'time limit of 2 s reached' \
     -- --set c1=0 --time-limit 2 cases/li-explicit-k0.case
 
+# region k1 at m1 = 10^-1000 on an Olivier case (issue 11: "runs for hours"):
+# Arb's complex root finder isolating the critical values' real roots raises
+# its own precision and is one library call; the command's backstop ends it
+# one second past the limit, with the limit's message.
+check "region at m1=10^-1000 (Olivier)" 4.5 'time limit of 2 s reached' \
+    -- --time-limit 2 --analyse 'region k1 at m1=10^-1000' cases/olivier2019-J-ee-ee.case
+
 # options
 for bad in "--time-limit" "--time-limit -1" "--time-limit 1.5" "--memory-limit x" "--memory-limit 100000000000"; do
     # shellcheck disable=SC2086
