@@ -33,7 +33,7 @@ public_stage() {
     case $1 in
     error|budget|str) echo util ;;
     expr|casefile) echo lang ;;
-    scheme) echo lower ;;
+    model|scheme) echo lower ;;
     charpoly|cond) echo algebra ;;
     bilinear|routh|hurwitz|jury|rootcount|semisimple) echo stability ;;
     radius|cosim|ladder) echo numeric ;;

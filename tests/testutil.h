@@ -57,7 +57,7 @@ static inline json_t *tu_run_case(const char *rel, const char *const *req, int n
     rs_case_init(c);
     rs_error_init(err);
     rs_options_default(&opt);
-    if (rs_case_parse_file(c, path, err) != RS_OK || rs_case_lower(c, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
+    if (rs_case_parse_file(c, path, err) != RS_OK) fail_msg("%s: %s", rel, err->msg);
     if (nreq >= 0) {
         rs_case_clear_requests(c);
         for (i = 0; i < nreq; i++) rs_case_add_request(c, req[i], "test", 1, 1);
@@ -80,7 +80,6 @@ static inline json_t *tu_run_text(const char *text, const rs_options_t *opt, int
     rs_error_init(err);
     rs_options_default(&def);
     r = rs_case_parse_string(c, "test.case", text, strlen(text), err);
-    if (r == RS_OK) r = rs_case_lower(c, err);
     if (r == RS_OK) r = rs_analysis_run(&doc, outcome, c, opt != NULL ? opt : &def, err);
     rs_case_clear(c);
     if (code != NULL) *code = r;

@@ -7,7 +7,8 @@
  * statements (subsystem, NAME' = EXPR, integrate, couple, iterations,
  * extrapolate, coupling force).  Every item keeps its file:line:col, and so
  * does every node of its expressions.  Parsing reads syntax only: meaning
- * (equations, matrices) is given by lowering, src/lower/ (scheme.h). */
+ * (equations, matrices) is given by lowering, src/lower/ (model.h), which
+ * only reads the case. */
 #ifndef RECSTAB_CASEFILE_H
 #define RECSTAB_CASEFILE_H
 
@@ -37,7 +38,6 @@ typedef struct {
 typedef struct {
     char *name;
     rs_loc_t loc;
-    int generated;         /* made by lowering (rs_case_lower), not written */
 } rs_name_t;
 
 typedef enum { RS_CMP_LT, RS_CMP_LE, RS_CMP_GT, RS_CMP_GE, RS_CMP_NE, RS_CMP_EQ } rs_cmp_t;
@@ -63,8 +63,8 @@ typedef struct {
 typedef struct {
     rs_expr_t *lhs, *rhs;
     rs_loc_t loc;
-    char *text;            /* source text "lhs = rhs" (printed trees when generated) */
-    int generated;         /* made by lowering (rs_case_lower), not written */
+    char *text;            /* source text "lhs = rhs" (in a model: the printed trees
+                              of a generated equation) */
 } rs_eq_t;
 
 typedef struct {
@@ -120,8 +120,8 @@ typedef struct {
 
 /* The case: a typed syntax tree of the statements read (the include files'
  * statements in place), plus the `--set` values and `--analyse` requests of
- * the command line.  rs_case_lower (scheme.h) appends the unknowns and
- * equations the builders and recurrence terms stand for, marked generated. */
+ * the command line.  Syntax only: the unknowns and equations the builders
+ * and recurrence terms stand for are in the model (rs_model_lower, model.h). */
 typedef struct {
     char *path;            /* as given ("-" for stdin) */
     char *title;
@@ -134,7 +134,6 @@ typedef struct {
     rs_loc_t charloc;
     slong nsets;     rs_set_t *sets;
     slong nrequests; rs_request_t *requests;
-    rs_loc_t unknown_loc;  /* first `unknown` statement */
     /* builders */
     slong nsubs;     rs_subsystem_t *subs;
     char *couple;          /* jacobi, gauss-seidel, monolithic, explicit, implicit */

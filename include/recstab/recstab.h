@@ -9,6 +9,7 @@
 #include "recstab/str.h"
 #include "recstab/expr.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
 #include "recstab/cond.h"

@@ -1,4 +1,4 @@
-/* scheme.h -- from a parsed case to the lambda-matrix.
+/* scheme.h -- from the equations model (model.h) to the lambda-matrix.
  *
  * Each equation (lhs - rhs = 0) is evaluated exactly as a linear form in the
  * shifted unknowns with coefficients in Q[params]; x[n+k] becomes lambda^k
@@ -15,6 +15,7 @@
 #include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -30,6 +31,7 @@ typedef struct {
     slong lambda_var;           /* == nparams */
     char **vars;                /* variable names, "lambda" last */
     slong n;                    /* unknowns (0 for a `char` case) */
+    char **unknowns;            /* their names, the columns of M */
     fmpq_mpoly_struct *M;       /* n*n row-major lambda-matrix */
     slong *row_shift;           /* lowest shift of each row before normalising */
     int from_char;              /* p given directly by `char` */
@@ -41,28 +43,19 @@ typedef struct {
 } rs_scheme_struct;
 typedef rs_scheme_struct rs_scheme_t[1];
 
-/* Lowering (src/lower/): gives the parsed case its meaning as equations.
- * Subsystems/integrators/couplings and polynomial recurrence terms become
- * unknowns and equations appended to c (marked generated), built as
- * expression trees; call once after parsing, before rs_scheme_build or
- * rs_analysis_run.  Errors name the user's file:line:col. */
-int rs_case_lower(rs_case_t c, rs_error_t err);
-
-/* The generated unknowns and equations as case text, for the user to read
- * (--emit equations; flint_malloc'd), or NULL when lowering generated none. */
-char *rs_case_emit_equations(const rs_case_t c);
-
 void rs_scheme_init(rs_scheme_t s);
 void rs_scheme_clear(rs_scheme_t s);
 
-/* Builds the lambda-matrix (or the char polynomial) of a case, all
- * parameters symbolic.  Errors name file:line:col. */
-int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err);
+/* Builds the lambda-matrix (or the char polynomial) of an equations model
+ * (rs_model_lower), all parameters symbolic.  Errors name file:line:col. */
+int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err);
 
 /* Evaluates an expression without unknowns (used for `char`, `expect`,
  * conditions): result num/den with den a polynomial in the parameters only,
- * den != 0.  allow_lambda: 0 parameters only, 1 lambda allowed, 2 z allowed
- * (stored in lambda's variable slot, for `expect bilinear`). */
+ * den != 0.  Names are the case's params and lets and the scheme's unknowns
+ * (s built from c's model).  allow_lambda: 0 parameters only, 1 lambda
+ * allowed, 2 z allowed (stored in lambda's variable slot, for `expect
+ * bilinear`). */
 int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
                         const rs_case_t c, const rs_expr_t *e, int allow_lambda,
                         rs_error_t err);

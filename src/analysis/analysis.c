@@ -197,7 +197,7 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         rs_scheme_copy(v->s, run->sym);
         r = RS_OK;
     } else {
-        r = rs_scheme_build(v->s, run->c, run->err);
+        r = rs_scheme_build(v->s, run->m, run->err);
     }
     v->assigned = json_object();
     if (r == RS_OK) {
@@ -219,7 +219,7 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
                              "in lambda): the scheme has no dynamics");
         if (r != RS_OK && run->err->file[0] == '\0') {
             /* point determinant failures at the equations */
-            const rs_loc_t *l = run->c->neqs > 0 ? &run->c->eqs[0].loc : &run->c->charloc;
+            const rs_loc_t *l = run->m->neqs > 0 ? &run->m->eqs[0].loc : &run->c->charloc;
             char msg[RS_ERROR_MSG_LEN];
             snprintf(msg, sizeof msg, "%s%s%s", run->err->msg, n > 0 ? " at " : "", n > 0 ? key : "");
             rs_error_set_at(run->err, r, l->file ? l->file : run->c->path, l->line, l->col, "%s", msg);
@@ -891,7 +891,7 @@ static json_t *scheme_json(rs_run_t *run)
         return NULL;
     }
     rs_assign_free(a, n);
-    for (i = 0; i < c->neqs; i++) json_array_append_new(eqs, json_string(c->eqs[i].text ? c->eqs[i].text : ""));
+    for (i = 0; i < run->m->neqs; i++) json_array_append_new(eqs, json_string(run->m->eqs[i].text ? run->m->eqs[i].text : ""));
     for (i = 0; i < c->nlets; i++) json_array_append_new(lets, json_string(c->lets[i].text ? c->lets[i].text : ""));
     for (i = 0; i < v->s->n; i++) {
         json_t *row = json_array();
@@ -920,25 +920,25 @@ static json_t *scheme_json(rs_run_t *run)
     return o;
 }
 
-/* the first name of e that the case does not declare (a typo in an
+/* the first name of e that the model does not declare (a typo in an
  * assume line would otherwise silently drop the assumption), or NULL */
-static const rs_expr_t *undeclared_name(const rs_expr_t *e, const rs_case_t c)
+static const rs_expr_t *undeclared_name(const rs_expr_t *e, const rs_model_t m)
 {
     const rs_expr_t *u;
     if (e == NULL) return NULL;
     if (e->kind == RS_EXPR_NAME)
-        return (rs_case_param_index(c, e->name) < 0 && rs_case_unknown_index(c, e->name) < 0
-                && rs_case_let_index(c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
-    if ((u = undeclared_name(e->a, c)) != NULL) return u;
-    return undeclared_name(e->b, c);
+        return (rs_case_param_index(m->c, e->name) < 0 && rs_model_unknown_index(m, e->name) < 0
+                && rs_case_let_index(m->c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
+    if ((u = undeclared_name(e->a, m)) != NULL) return u;
+    return undeclared_name(e->b, m);
 }
 
-static int check_assumptions(const rs_case_t c, rs_error_t err)
+static int check_assumptions(const rs_case_t c, const rs_model_t m, rs_error_t err)
 {
     slong i, k;
     for (i = 0; i < c->nassume; i++)
         for (k = 0; k < c->assume[i].n; k++) {
-            const rs_expr_t *u = undeclared_name(c->assume[i].e[k], c);
+            const rs_expr_t *u = undeclared_name(c->assume[i].e[k], m);
             if (u != NULL)
                 return rs_error_set_at(err, RS_ERR_INPUT, c->assume[i].loc.file ? c->assume[i].loc.file : c->path,
                                        u->line, u->col,
@@ -966,7 +966,7 @@ static void free_requests(rs_request_t *q, slong n)
 static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
 {
     const rs_case_struct *c = run->c;
-    const rs_loc_t *at = c->neqs > 0 ? &c->eqs[0].loc : c->charexpr != NULL ? &c->charloc : NULL;
+    const rs_loc_t *at = run->m->neqs > 0 ? &run->m->eqs[0].loc : c->charexpr != NULL ? &c->charloc : NULL;
     const char *names[3];
     char region[80 + RS_CASE_MAX_NAMES];
     slong n = 0, i, nfree = 0, last = -1;
@@ -1013,9 +1013,12 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     json_t *d, *arr;
     slong i, ndefaults = 0;
     rs_request_t *defaults = NULL;
+    rs_model_t m;
     int r = RS_OK;
     memset(&run, 0, sizeof run);
+    rs_model_init(m);
     run.c = c;
+    run.m = m;
     run.opt = opt;
     run.err = err;
     run.results = json_array();
@@ -1026,9 +1029,10 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     rs_budget_start(opt->time_limit, opt->time_spent, opt->memory_limit);
     /* an error in the equations must surface even when no analysis asks */
     rs_scheme_init(run.sym);
-    r = check_assumptions(c, err);
+    r = rs_model_lower(m, c, err);
+    if (r == RS_OK) r = check_assumptions(c, m, err);
     if (r == RS_OK && !rs_builder_is_exact(c) && !rs_recurrence_is_numeric(c)) {
-        r = rs_scheme_build(run.sym, c, err);
+        r = rs_scheme_build(run.sym, m, err);
         run.have_sym = (r == RS_OK);
     }
     if (r == RS_OK && c->nrequests == 0) {
@@ -1057,6 +1061,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
         for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
         free(run.variants);
         rs_scheme_clear(run.sym);
+        rs_model_clear(m);
         json_decref(run.results);
         return r;
     }
@@ -1071,7 +1076,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));
     json_object_set_new(d, "params", arr);
     arr = json_array();
-    for (i = 0; i < c->nunknowns; i++) json_array_append_new(arr, json_string(c->unknowns[i].name));
+    for (i = 0; i < m->nunknowns; i++) json_array_append_new(arr, json_string(m->unknowns[i].name));
     json_object_set_new(d, "unknowns", arr);
     json_object_set_new(d, "set", rs_json_sets(c));
     if (ndefaults > 0) {
@@ -1088,6 +1093,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
             for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
             free(run.variants);
             rs_scheme_clear(run.sym);
+            rs_model_clear(m);
             return err->code ? err->code : RS_ERR_INTERNAL;
         }
         json_object_set_new(d, "scheme", sc);
@@ -1096,6 +1102,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
     free(run.variants);
     rs_scheme_clear(run.sym);
+    rs_model_clear(m);
     *doc = d;
     *outcome = run.outcome;
     return RS_OK;

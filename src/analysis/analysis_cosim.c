@@ -105,6 +105,7 @@ static int eval_case(rs_case_struct *tc, const rs_case_struct *c, rs_error_t err
  * point (cosim_at) only numbers are substituted. */
 typedef struct {
     rs_case_t tc;              /* the evaluation case (eval_case) */
+    rs_model_t tm;             /* ... lowered */
     rs_scheme_t ts;
     slong nstate[2], n, nf;
     slong nforms;              /* n state rows, 2 macro steps, nf forces */
@@ -128,6 +129,7 @@ static void cosim_forms_clear(cosim_forms_t *F)
     flint_free(F->second);
     flint_free(F->loc);
     rs_scheme_clear(F->ts);
+    rs_model_clear(F->tm);
     rs_case_clear(F->tc);
 }
 
@@ -173,13 +175,15 @@ static int cosim_forms_init(cosim_forms_t *F, const rs_case_struct *c, rs_error_
     int r;
     memset(F, 0, sizeof *F);
     rs_case_init(F->tc);
+    rs_model_init(F->tm);
     rs_scheme_init(F->ts);
     if (c->nsubs != 2)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 0, 0,
                                "exact integration with co-simulation coupling needs two subsystems (found %ld)",
                                (long) c->nsubs);
     r = eval_case(F->tc, c, err);
-    if (r == RS_OK) r = rs_scheme_build(F->ts, F->tc, err);
+    if (r == RS_OK) r = rs_model_lower(F->tm, F->tc, err);
+    if (r == RS_OK) r = rs_scheme_build(F->ts, F->tm, err);
     if (r != RS_OK) return r;
     F->nstate[0] = c->subs[0].nstates;
     F->nstate[1] = c->subs[1].nstates;

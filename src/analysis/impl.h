@@ -34,6 +34,7 @@ typedef struct {
 
 typedef struct {
     const rs_case_struct *c;
+    const rs_model_struct *m;  /* the case lowered, once per run */
     const rs_options_t *opt;
     rs_variant_t **variants;
     slong nvariants;

@@ -21,6 +21,7 @@
 #include "recstab/sweep.h"
 #include "plot.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "recstab/report.h"
 #include "recstab/derivation.h"
@@ -359,7 +360,6 @@ int main(int argc, char **argv)
         rs_case_init(c);
         rs_error_init(err);
         r = rs_case_parse_file(c, cases[i], err);
-        if (r == RS_OK) r = rs_case_lower(c, err);
         for (k = 0; r == RS_OK && k < nsets; k++)
             r = rs_case_set_value(c, sets[k], err);
         if (r == RS_OK && nanalyses > 0) {
@@ -377,16 +377,23 @@ int main(int argc, char **argv)
             }
         }
         if (r == RS_OK && emit) {
-            json_t *e = json_object();
-            char *shown = rs_utf8_escape(cases[i]);
-            json_object_set_new(e, "case", json_string(shown));
-            flint_free(shown);
-            char *eqs = rs_case_emit_equations(c);
-            json_object_set_new(e, "equations", json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
-            flint_free(eqs);
-            json_array_append_new(docs, e);
-            rs_case_clear(c);
-            continue;
+            rs_model_t m;
+            rs_model_init(m);
+            r = rs_model_lower(m, c, err);
+            if (r == RS_OK) {
+                json_t *e = json_object();
+                char *shown = rs_utf8_escape(cases[i]);
+                json_object_set_new(e, "case", json_string(shown));
+                flint_free(shown);
+                char *eqs = rs_model_emit_equations(m);
+                json_object_set_new(e, "equations", json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
+                flint_free(eqs);
+                json_array_append_new(docs, e);
+                rs_model_clear(m);
+                rs_case_clear(c);
+                continue;
+            }
+            rs_model_clear(m);
         }
         if (r == RS_OK) {
             rs_options_t o = opt;

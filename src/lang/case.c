@@ -126,7 +126,6 @@ void rs_case_clear(rs_case_t c)
     rs_loc_clear(&c->charloc);
     CLEAR_ALL(c->sets, c->nsets, rs_set_clear);
     rs_case_clear_requests(c);
-    rs_loc_clear(&c->unknown_loc);
     CLEAR_ALL(c->subs, c->nsubs, rs_subsystem_clear);
     flint_free(c->couple);
     flint_free(c->couple_first);

@@ -49,7 +49,6 @@ static int st_names(rs_stmt_t *x, size_t i, int unknowns)
             x->c->unknowns[x->c->nunknowns].name = name;
             _rs_set_loc(x, &x->c->unknowns[x->c->nunknowns].loc, at);
             x->c->nunknowns++;
-            if (x->c->unknown_loc.file == NULL) _rs_set_loc(x, &x->c->unknown_loc, at);
         } else {
             RS_GROW(x->c->params, x->c->nparams);
             x->c->params[x->c->nparams].name = name;
@@ -505,7 +504,7 @@ static int parse_text(rs_parser_t *p, const char *path, const char *text, size_t
     return r;
 }
 
-/* the top level: the case file's text (syntax only; rs_case_lower gives it meaning) */
+/* the top level: the case file's text (syntax only; rs_model_lower gives it meaning) */
 static int parse_top(rs_case_t c, const char *path, const char *text, size_t len, const struct stat *st,
                      rs_error_t err)
 {

@@ -7,11 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lower/builder.h"
+#include "lower/lower.h"
 
 #define MAX_STATES 64
 
 typedef struct {
-    rs_case_struct *c;
+    const rs_case_struct *c;
+    rs_model_struct *m;    /* receives the unknowns and equations */
     slong K;               /* iterations */
     int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel */
     slong first, second;   /* gauss-seidel order */
@@ -173,20 +175,10 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
     return out;
 }
 
-/* appends the generated equation lhs = rhs */
-static void add_eq(rs_case_struct *c, rs_expr_t *lhs, rs_expr_t *rhs, const rs_loc_t *loc)
+/* appends the generated equation lhs = rhs to the model */
+static void add_eq(rs_model_struct *m, rs_expr_t *lhs, rs_expr_t *rhs, const rs_loc_t *loc)
 {
-    rs_eq_t *q;
-    c->eqs = flint_realloc(c->eqs, (c->neqs + 1) * sizeof(rs_eq_t));
-    q = &c->eqs[c->neqs++];
-    memset(q, 0, sizeof *q);
-    q->lhs = lhs;
-    q->rhs = rhs;
-    q->loc.file = rs_strdup(loc->file);
-    q->loc.line = loc->line;
-    q->loc.col = loc->col;
-    q->text = rs_expr_eq_str(lhs, rhs);
-    q->generated = 1;
+    rs_lower_add_eq(m, lhs, rhs, loc, NULL);
 }
 
 int rs_builder_is_exact(const rs_case_t c)
@@ -309,38 +301,25 @@ static const rs_loc_t *user_decl(const rs_case_struct *c, const char *name)
     return NULL;
 }
 
-/* appends the generated unknown name (for state st of subsystem s): an
- * error at the user's declaration when the user took that name */
-static int add_unknown(rs_case_struct *c, const char *name, const rs_subsystem_t *s, const rs_name_t *st,
-                       rs_error_t err)
+/* appends the generated unknown name (for state st of subsystem s) to the
+ * model: an error at the user's declaration when the user took that name */
+static int add_unknown(rs_model_struct *m, const rs_case_struct *c, const char *name, const rs_subsystem_t *s,
+                       const rs_name_t *st, rs_error_t err)
 {
     const rs_loc_t *u;
-    rs_name_t *n;
     if (rs_name_is_reserved(name))
         return err_at(err, RS_ERR_INPUT, &st->loc, 0,
                       "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
-    if ((u = user_decl(c, name)) != NULL) {
-        slong i = rs_case_unknown_index(c, name);
-        if (i >= 0 && c->unknowns[i].generated)   /* two subsystems with one state name */
-            return err_at(err, RS_ERR_INPUT, &st->loc, 0, "'%s' is already declared", name);
+    if ((u = user_decl(c, name)) != NULL)
         return rs_error_set_at(err, RS_ERR_INPUT, u->file, u->line, u->col,
                                "'%s' is also a name the builders generate (for state %s of subsystem %s); choose "
                                "another name", name, st->name, s->name);
-    }
-    if (c->nparams + c->nunknowns + c->nlets >= RS_CASE_MAX_NAMES)
+    if (rs_model_unknown_index(m, name) >= 0)   /* two subsystems with one state name */
+        return err_at(err, RS_ERR_INPUT, &st->loc, 0, "'%s' is already declared", name);
+    if (c->nparams + m->nunknowns + c->nlets >= RS_CASE_MAX_NAMES)
         return err_at(err, RS_ERR_LIMIT, &st->loc, 0, "too many names (limit %s)", "256");
-    c->unknowns = flint_realloc(c->unknowns, (c->nunknowns + 1) * sizeof(rs_name_t));
-    n = &c->unknowns[c->nunknowns++];
-    n->name = rs_strdup(name);
-    n->loc.file = rs_strdup(st->loc.file);
-    n->loc.line = st->loc.line;
-    n->loc.col = st->loc.col;
-    n->generated = 1;
-    if (c->unknown_loc.file == NULL) {
-        c->unknown_loc.file = rs_strdup(st->loc.file);
-        c->unknown_loc.line = st->loc.line;
-        c->unknown_loc.col = st->loc.col;
-    }
+    rs_lower_add_unknown(m, name, &st->loc);
+    if (m->unknown_loc.file == NULL) rs_lower_loc_copy(&m->unknown_loc, &st->loc);
     return RS_OK;
 }
 
@@ -348,7 +327,7 @@ static int add_unknown(rs_case_struct *c, const char *name, const rs_subsystem_t
  * a pair) in every iterate */
 static int gen_unknowns(const gen_t *g, rs_error_t err)
 {
-    rs_case_struct *c = g->c;
+    const rs_case_struct *c = g->c;
     slong a, k, j;
     char b[96];
     int r = RS_OK;
@@ -357,10 +336,10 @@ static int gen_unknowns(const gen_t *g, rs_error_t err)
         for (k = 0; k < s->nstates && r == RS_OK; k++)
             for (j = 0; j <= g->K && r == RS_OK; j++) {
                 var_name(b, sizeof b, s->states[k].name, j, g->K);
-                r = add_unknown(c, b, s, &s->states[k], err);
+                r = add_unknown(g->m, c, b, s, &s->states[k], err);
                 if (r == RS_OK && !is_pos(g, a, k)) {
                     dvar_name(b, sizeof b, s->states[k].name, j, g->K);
-                    r = add_unknown(c, b, s, &s->states[k], err);
+                    r = add_unknown(g->m, c, b, s, &s->states[k], err);
                 }
             }
     }
@@ -368,7 +347,7 @@ static int gen_unknowns(const gen_t *g, rs_error_t err)
 }
 
 /* the integration formula of a (position x, velocity v) pair */
-static void pair_formula(rs_case_struct *c, const rs_subsystem_t *s, const char *x, const char *v)
+static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char *x, const char *v)
 {
     pos_t p = pos_of(&s->intloc);
     const rs_expr_t *h = s->step;
@@ -378,44 +357,44 @@ static void pair_formula(rs_case_struct *c, const rs_subsystem_t *s, const char 
                               op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(s->arg1)), p)),
                                  dot(v, 0, p), p),
                               op(RS_EXPR_MUL, P(copy(s->arg1)), dot(v, 1, p), p), p));
-        add_eq(c, seq(x, 1, p),
+        add_eq(m, seq(x, 1, p),
                op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
                   op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
         /* v[n+1] = v[n] + (h)*((1 - (G))*v_dot[n] + (G)*v_dot[n+1]) */
         acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(s->arg2)), p)), dot(v, 0, p), p),
                    op(RS_EXPR_MUL, P(copy(s->arg2)), dot(v, 1, p), p), p));
-        add_eq(c, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
+        add_eq(m, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
     } else {
         /* central difference: x[n+1] - 2*x[n] + x[n-1] = (h)^2*v_dot[n], 2*(h)*v[n] = x[n+1] - x[n-1] */
-        add_eq(c, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
+        add_eq(m, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
                      seq(x, -1, p), p),
                op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), dot(v, 0, p), p), &s->intloc);
-        add_eq(c, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), seq(v, 0, p), p),
+        add_eq(m, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), seq(v, 0, p), p),
                op(RS_EXPR_SUB, seq(x, 1, p), seq(x, -1, p), p), &s->intloc);
     }
 }
 
 /* the one-step integration formula of state x in iterate j:
  * X[n+1] - x[n] = ... with X the iterate's unknown, DX its derivative */
-static void formula(rs_case_struct *c, const gen_t *g, const rs_subsystem_t *s, const char *x, slong j)
+static void formula(rs_model_struct *mod, const gen_t *g, const rs_subsystem_t *s, const char *x, slong j)
 {
     pos_t p = pos_of(&s->intloc);
     const char *m = s->method;
     rs_expr_t *X = var(x, j, g->K, 1, p), *DX = dvar(x, j, g->K, 1, p), *h = P(copy(s->step));
     if (strcmp(m, "euler-forward") == 0 || strcmp(m, "euler-backward") == 0) {
         if (strcmp(m, "euler-forward") == 0) { rs_expr_free(DX); DX = dot(x, 0, p); }
-        add_eq(c, op(RS_EXPR_SUB, X, seq(x, 0, p), p), op(RS_EXPR_MUL, h, DX, p), &s->intloc);
+        add_eq(mod, op(RS_EXPR_SUB, X, seq(x, 0, p), p), op(RS_EXPR_MUL, h, DX, p), &s->intloc);
     } else if (strcmp(m, "trapezoidal") == 0 || strcmp(m, "theta") == 0) {
         /* (h)*((1 - (T))*x_dot[n] + (T)*DX[n+1]), T = 1/2 for the trapezoidal rule */
         rs_expr_t *T1, *T2;
         if (strcmp(m, "theta") == 0) { T1 = copy(s->arg1); T2 = copy(s->arg1); }
         else { T1 = op(RS_EXPR_DIV, num(1, p), num(2, p), p); T2 = op(RS_EXPR_DIV, num(1, p), num(2, p), p); }
-        add_eq(c, op(RS_EXPR_SUB, X, seq(x, 0, p), p),
+        add_eq(mod, op(RS_EXPR_SUB, X, seq(x, 0, p), p),
                op(RS_EXPR_MUL, h, P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(T1), p)), dot(x, 0, p), p),
                                        op(RS_EXPR_MUL, P(T2), DX, p), p)), p), &s->intloc);
     } else if (strcmp(m, "bdf2") == 0) {
         /* X[n+1]*3 - 4*x[n] + x[n-1] = 2*(h)*DX[n+1] */
-        add_eq(c, op(RS_EXPR_ADD, op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(3, p), p),
+        add_eq(mod, op(RS_EXPR_ADD, op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(3, p), p),
                                      op(RS_EXPR_MUL, num(4, p), seq(x, 0, p), p), p), seq(x, -1, p), p),
                op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), h, p), DX, p), &s->intloc);
     } else {
@@ -423,7 +402,7 @@ static void formula(rs_case_struct *c, const gen_t *g, const rs_subsystem_t *s, 
         rs_expr_t *l = op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(11, p), p), op(RS_EXPR_MUL, num(18, p), seq(x, 0, p), p), p);
         l = op(RS_EXPR_ADD, l, op(RS_EXPR_MUL, num(9, p), seq(x, -1, p), p), p);
         l = op(RS_EXPR_SUB, l, op(RS_EXPR_MUL, num(2, p), seq(x, -2, p), p), p);
-        add_eq(c, l, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(6, p), h, p), DX, p), &s->intloc);
+        add_eq(mod, l, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(6, p), h, p), DX, p), &s->intloc);
     }
 }
 
@@ -446,7 +425,7 @@ static const rs_deq_t *deq_of(const gen_t *g, slong a, slong k)
 /* the equations of subsystem a in iterate j */
 static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
 {
-    rs_case_struct *c = g->c;
+    const rs_case_struct *c = g->c;
     const rs_subsystem_t *s = &c->subs[a];
     slong k, vk;
     for (k = 0; k < s->nstates; k++) {
@@ -464,27 +443,30 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
                 if ((rhs = subst(g, a, j, d->rhs, err)) == NULL) return err->code;
                 P(rhs);
             }
-            add_eq(c, dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), rhs, d ? &d->loc : &s->loc);
+            add_eq(g->m, dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), rhs, d ? &d->loc : &s->loc);
         }
         if (g->pair[a]) {
-            if (vk >= 0) pair_formula(c, s, x, s->states[vk].name);   /* velocities go with their position */
+            if (vk >= 0) pair_formula(g->m, s, x, s->states[vk].name);   /* velocities go with their position */
         } else {
-            formula(c, g, s, x, j);
+            formula(g->m, g, s, x, j);
         }
     }
     return RS_OK;
 }
 
-int rs_builder_expand(rs_case_t c, rs_error_t err)
+int rs_builder_lower(rs_model_struct *m, rs_error_t err)
 {
+    const rs_case_struct *c = m->c;
     gen_t g;
     slong a, j;
     int r, exact;
     if (c->nsubs == 0) return RS_OK;
     r = check_subsystems(c, &exact, err);
+    if (r == RS_OK && exact) m->kind = RS_MODEL_COSIM;
     if (r != RS_OK || exact) return r;
     memset(&g, 0, sizeof g);
     g.c = c;
+    g.m = m;
     r = coupling_kind(&g, c, err);
     if (r != RS_OK) return r;
     g.vel = flint_malloc(c->nsubs * MAX_STATES * sizeof(slong));

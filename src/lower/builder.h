@@ -26,17 +26,18 @@
 
 #include "recstab/error.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Lowers the subsystems/integrators/couplings of c into unknowns and
- * equations appended to c (marked generated), built as expression trees.
- * A generated name the user declared is an error at the user's declaration.
+/* Lowers the subsystems/integrators/couplings of the case m->c into
+ * unknowns and equations appended to m, built as expression trees.  A
+ * generated name the user declared is an error at the user's declaration.
  * No-op when the case has no subsystem; with exact integration it only
- * checks the statements (the co-simulation model is built by cosim). */
-int rs_builder_expand(rs_case_t c, rs_error_t err);
+ * checks the statements and makes m a co-simulation model. */
+int rs_builder_lower(rs_model_struct *m, rs_error_t err);
 
 /* The case uses exact (analytic) integration: only numeric analyses apply. */
 int rs_builder_is_exact(const rs_case_t c);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "lower/recurrence.h"
+#include "lower/lower.h"
 
 static int has_call(const rs_expr_t *e)
 {
@@ -46,14 +47,14 @@ static int check_terms(const rs_case_t c, rs_error_t err)
 }
 
 /* the unknowns z1, ..., zn when the case declares none */
-static int gen_unknowns(rs_case_t c, slong n, rs_error_t err)
+static int gen_unknowns(rs_model_struct *m, slong n, rs_error_t err)
 {
+    const rs_case_struct *c = m->c;
     const rs_loc_t *l = &c->rec[0].loc;
     slong j;
     for (j = 0; j < n; j++) {
         char b[32];
         slong u;
-        rs_name_t *z;
         snprintf(b, sizeof b, "z%ld", (long) j + 1);
         if ((u = rs_case_param_index(c, b)) >= 0 || (u = rs_case_let_index(c, b)) >= 0) {
             const rs_loc_t *d = rs_case_param_index(c, b) >= 0 ? &c->params[u].loc : &c->lets[u].loc;
@@ -61,55 +62,49 @@ static int gen_unknowns(rs_case_t c, slong n, rs_error_t err)
                                    "'%s' is also the name of an unknown the recurrence terms generate; declare "
                                    "the unknowns with `unknown` or choose another name", b);
         }
-        c->unknowns = flint_realloc(c->unknowns, (c->nunknowns + 1) * sizeof(rs_name_t));
-        z = &c->unknowns[c->nunknowns++];
-        z->name = rs_strdup(b);
-        z->loc.file = rs_strdup(l->file);
-        z->loc.line = l->line;
-        z->loc.col = l->col;
-        z->generated = 1;
+        rs_lower_add_unknown(m, b, l);
     }
     return RS_OK;
 }
 
 /* row i: sum over the terms A_K and columns j of (A_K[i,j])*z_j[n+K] = 0 */
-static void gen_row(rs_case_t c, slong n, slong i)
+static void gen_row(rs_model_struct *m, slong n, slong i)
 {
+    const rs_case_struct *c = m->c;
     const rs_loc_t *l = &c->rec[0].loc;
     rs_expr_t *lhs = NULL;
-    rs_eq_t *q;
     slong t, j;
     for (t = 0; t < c->nrec; t++)
         for (j = 0; j < n; j++) {
             const rs_loc_t *tl = &c->rec[t].loc;
-            rs_expr_t *z = rs_expr_new_name(c->unknowns[j].name, 1, c->rec[t].k, tl->file, tl->line, tl->col), *m;
+            rs_expr_t *z = rs_expr_new_name(m->unknowns[j].name, 1, c->rec[t].k, tl->file, tl->line, tl->col), *term;
             z->shift_signed = 1;   /* printed z1[n+0] */
-            m = rs_expr_new_op(RS_EXPR_MUL, rs_expr_paren(rs_expr_copy(c->rec[t].entries[i * n + j])), z, tl->file,
-                               tl->line, tl->col);
-            lhs = lhs == NULL ? m : rs_expr_new_op(RS_EXPR_ADD, lhs, m, tl->file, tl->line, tl->col);
+            term = rs_expr_new_op(RS_EXPR_MUL, rs_expr_paren(rs_expr_copy(c->rec[t].entries[i * n + j])), z, tl->file,
+                                  tl->line, tl->col);
+            lhs = lhs == NULL ? term : rs_expr_new_op(RS_EXPR_ADD, lhs, term, tl->file, tl->line, tl->col);
         }
-    c->eqs = flint_realloc(c->eqs, (c->neqs + 1) * sizeof(rs_eq_t));
-    q = &c->eqs[c->neqs++];
-    memset(q, 0, sizeof *q);
-    q->lhs = lhs;
-    q->rhs = rs_expr_new_num(0, l->file, l->line, l->col);
-    q->loc.file = rs_strdup(l->file);
-    q->loc.line = l->line;
-    q->loc.col = l->col;
-    q->text = rs_expr_eq_str(q->lhs, q->rhs);
-    q->generated = 1;
+    rs_lower_add_eq(m, lhs, rs_expr_new_num(0, l->file, l->line, l->col), l, NULL);
 }
 
-int rs_recurrence_expand(rs_case_t c, rs_error_t err)
+int rs_recurrence_lower(rs_model_struct *m, rs_error_t err)
 {
+    const rs_case_struct *c = m->c;
     slong n, i;
     int r;
     if (c->nrec == 0) return RS_OK;
     n = c->rec[0].rows;
     r = check_terms(c, err);
-    if (r != RS_OK || rs_recurrence_is_numeric(c)) return r;
-    if (c->nunknowns == 0) r = gen_unknowns(c, n, err);
-    for (i = 0; i < n && r == RS_OK; i++) gen_row(c, n, i);
+    if (r != RS_OK) return r;
+    if (rs_recurrence_is_numeric(c)) {
+        m->kind = RS_MODEL_RECURRENCE;
+        m->nterms = c->nrec;
+        m->terms = c->rec;
+        m->n = n;
+        for (i = 0; i < c->nrec; i++) if (c->rec[i].k > m->K) m->K = c->rec[i].k;
+        return RS_OK;
+    }
+    if (c->nunknowns == 0) r = gen_unknowns(m, n, err);
+    for (i = 0; i < n && r == RS_OK; i++) gen_row(m, n, i);
     return r;
 }
 

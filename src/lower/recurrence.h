@@ -15,15 +15,17 @@
 #include <acb_mat.h>
 #include "recstab/error.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Lowering: checks the terms and, with polynomial entries, appends the
- * equivalent unknowns (z1, ..., zn unless declared) and equations to c,
- * marked generated, built as trees from the entries. */
-int rs_recurrence_expand(rs_case_t c, rs_error_t err);
+/* Lowering: checks the terms of the case m->c and, with polynomial entries,
+ * appends the equivalent unknowns (z1, ..., zn unless declared) and
+ * equations to m, built as trees from the entries; with non-polynomial
+ * entries m becomes a recurrence model (its terms, n, K). */
+int rs_recurrence_lower(rs_model_struct *m, rs_error_t err);
 
 /* Entries with functions or pi: the numeric path only (no equations). */
 int rs_recurrence_is_numeric(const rs_case_t c);

@@ -1,4 +1,5 @@
-/* scheme.c -- exact evaluation of equations into the lambda-matrix. */
+/* scheme.c -- exact evaluation of the model's equations into the
+ * lambda-matrix. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -236,6 +237,15 @@ static void record_nonzero(ev_t *x, const fmpq_mpoly_t d, const char *file, int 
 
 static int eval(lin_t *out, const rs_expr_t *e, ev_t *x);
 
+/* index of the unknown (column) name of s, or -1 */
+static slong unknown_index(const rs_scheme_struct *s, const char *name)
+{
+    slong i;
+    for (i = 0; i < s->n; i++)
+        if (strcmp(s->unknowns[i], name) == 0) return i;
+    return -1;
+}
+
 static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
 {
     const rs_scheme_struct *s = x->s;
@@ -247,7 +257,7 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
         fmpq_mpoly_gen(out->c + 0, k, s->ctx);
         return RS_OK;
     }
-    if ((k = rs_case_unknown_index(x->c, e->name)) >= 0) {
+    if ((k = unknown_index(s, e->name)) >= 0) {
         if (x->allow_lambda)
             return err_at(x, e, RS_ERR_INPUT,
                           "the unknown '%s' cannot appear here (only parameters and lambda)", e->name);
@@ -397,7 +407,7 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
     case RS_EXPR_NAME:
         return eval_name(out, e, x);
     case RS_EXPR_CALL:
-        if (rs_case_unknown_index(x->c, e->name) >= 0 || rs_case_let_index(x->c, e->name) >= 0
+        if (unknown_index(s, e->name) >= 0 || rs_case_let_index(x->c, e->name) >= 0
             || rs_case_param_index(x->c, e->name) >= 0)
             return err_at(x, e, RS_ERR_INPUT,
                           "expected a shift in square brackets after '%s', as in x[n+1], found '('", e->name);
@@ -528,6 +538,8 @@ void rs_scheme_clear(rs_scheme_t s)
     fmpz_mpoly_ctx_clear(s->zctx);
     for (i = 0; i < s->nvars; i++) flint_free(s->vars[i]);
     flint_free(s->vars);
+    for (i = 0; i < s->n; i++) flint_free(s->unknowns[i]);
+    flint_free(s->unknowns);
     memset(s, 0, sizeof(rs_scheme_struct));
 }
 
@@ -580,7 +592,7 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     lin_t v;
     int r;
     ev_setup(&x, s, c, allow_lambda, NULL, err);
-    lin_init(&v, c->nunknowns + 1, s->ctx);
+    lin_init(&v, s->n + 1, s->ctx);
     r = eval(&v, e, &x);
     if (r == RS_OK && lin_has_unknowns(&v, s->ctx))
         r = rs_error_set_at(err, RS_ERR_INPUT, rs_expr_file(e, c->path), e->line, e->col,
@@ -594,21 +606,13 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     return r;
 }
 
-/* rs_case_lower generated the equations of the builder or recurrence statements */
-static int lowered(const rs_case_t c)
+static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err)
 {
-    slong i;
-    for (i = 0; i < c->neqs; i++)
-        if (c->eqs[i].generated) return 1;
-    return 0;
-}
-
-static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
-{
+    const rs_case_struct *c = m->c;
     ev_t x;
     lin_t v;
     int r;
-    if (c->neqs > 0 || c->nunknowns > 0)
+    if (m->neqs > 0 || m->nunknowns > 0)
         return rs_error_set_at(err, RS_ERR_INPUT, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col,
                                "a case gives either `char` or `unknown`/`eq` lines, not both");
     ev_setup(&x, s, c, 1, s, err);
@@ -630,38 +634,41 @@ static int build_char(rs_scheme_t s, const rs_case_t c, rs_error_t err)
     return r;
 }
 
-int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
+int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
 {
+    const rs_case_struct *c = m->c;
     ev_t x;
-    slong i, j, n = c->nunknowns;
+    slong i, j, n = m->nunknowns;
     int r = RS_OK;
     rs_scheme_clear(s);
+    if (c == NULL || m->kind != RS_MODEL_EQUATIONS)
+        return rs_error_set(err, RS_ERR_INTERNAL, "the lambda-matrix is built from an equations model "
+                            "(rs_model_lower)%s", "");
     setup_ctx(s, c);
-    if ((c->nsubs > 0 || c->nrec > 0) && !lowered(c))
-        return rs_error_set(err, RS_ERR_INTERNAL, "%s: the builder or recurrence statements are not lowered "
-                            "(call rs_case_lower after parsing)", c->path);
     if (c->charexpr != NULL)
-        return build_char(s, c, err);
+        return build_char(s, m, err);
     if (n == 0)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 1, 1,
                                "expected `unknown` and `eq` lines (or a `char` line), found none");
     if (n > RS_SCHEME_MAX_UNKNOWNS)
-        return rs_error_set_at(err, RS_ERR_LIMIT, c->unknown_loc.file ? c->unknown_loc.file : c->path, c->unknown_loc.line, c->unknown_loc.col,
+        return rs_error_set_at(err, RS_ERR_LIMIT, m->unknown_loc.file ? m->unknown_loc.file : c->path, m->unknown_loc.line, m->unknown_loc.col,
                                "too many unknowns (%ld; limit %d)", (long) n, RS_SCHEME_MAX_UNKNOWNS);
-    if (c->neqs != n) {
-        const rs_loc_t *l = c->neqs > n ? &c->eqs[n].loc : &c->unknown_loc;
+    if (m->neqs != n) {
+        const rs_loc_t *l = m->neqs > n ? &m->eqs[n].loc : &m->unknown_loc;
         return rs_error_set_at(err, RS_ERR_INPUT, l->file, l->line, l->col,
                                "expected as many equations as unknowns (%ld unknowns), found %ld equations",
-                               (long) n, (long) c->neqs);
+                               (long) n, (long) m->neqs);
     }
     s->n = n;
+    s->unknowns = flint_malloc(n * sizeof(char *));
+    for (i = 0; i < n; i++) s->unknowns[i] = rs_strdup(m->unknowns[i].name);
     s->M = flint_malloc(n * n * sizeof(fmpq_mpoly_struct));
     for (i = 0; i < n * n; i++) fmpq_mpoly_init(s->M + i, s->ctx);
     s->row_shift = flint_calloc(n, sizeof(slong));
     ev_setup(&x, s, c, 0, s, err);
     for (i = 0; i < n && r == RS_OK; i++) {
         lin_t lhs, rhs, v;
-        const rs_eq_t *q = &c->eqs[i];
+        const rs_eq_t *q = &m->eqs[i];
         slong rowmin = WORD_MAX;
         lin_init(&lhs, n + 1, s->ctx);
         lin_init(&rhs, n + 1, s->ctx);
@@ -681,8 +688,8 @@ int rs_scheme_build(rs_scheme_t s, const rs_case_t c, rs_error_t err)
             record_nonzero(&x, v.den, q->loc.file ? q->loc.file : c->path, q->loc.line, q->loc.col);
             for (j = 0; j < n; j++)
                 if (!fmpq_mpoly_is_zero(v.c + 1 + j, s->ctx)) {
-                    slong m = v.low + rs_scheme_min_degree(v.c[1 + j].zpoly, s->lambda_var, s->ctx->zctx);
-                    if (m < rowmin) rowmin = m;
+                    slong low = v.low + rs_scheme_min_degree(v.c[1 + j].zpoly, s->lambda_var, s->ctx->zctx);
+                    if (low < rowmin) rowmin = low;
                 }
             s->row_shift[i] = rowmin;
             for (j = 0; j < n; j++) {
@@ -732,6 +739,8 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
     dst->from_char = src->from_char;
     dst->n = src->n;
     if (src->n > 0) {
+        dst->unknowns = flint_malloc(src->n * sizeof(char *));
+        for (i = 0; i < src->n; i++) dst->unknowns[i] = rs_strdup(src->unknowns[i]);
         dst->M = flint_malloc(src->n * src->n * sizeof(fmpq_mpoly_struct));
         for (i = 0; i < src->n * src->n; i++) {
             fmpq_mpoly_init(dst->M + i, dst->ctx);

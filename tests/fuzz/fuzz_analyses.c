@@ -18,6 +18,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     rs_case_t c;
+    rs_model_t m;
     rs_error_t err;
     rs_options_t opt;
     char *text = fuzz_text(data, size);
@@ -25,14 +26,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (text == NULL)
         return 0;
     rs_case_init(c);
+    rs_model_init(m);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, size, err);
-    if (r == RS_OK) r = rs_case_lower(c, err);
+    if (r == RS_OK) r = rs_model_lower(m, c, err);
     fuzz_check_error(r, err);
-    if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && fuzz_numbers_small(text, size) && fuzz_case_small(c)) {
+    if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && fuzz_numbers_small(text, size) && fuzz_case_small(c, m)) {
         fuzz_options(&opt, FUZZ_MAX_PREC);
         fuzz_run(c, &opt);
     }
+    rs_model_clear(m);
     rs_case_clear(c);
     free(text);
     return 0;

@@ -12,6 +12,7 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     rs_case_t c;
+    rs_model_t m;
     rs_error_t err;
     char *text = malloc(size + 1);
     int r;
@@ -21,10 +22,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         memcpy(text, data, size);
     text[size] = '\0';
     rs_case_init(c);
+    rs_model_init(m);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, size, err);
-    if (r == RS_OK) r = rs_case_lower(c, err);
-    if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && c->nunknowns <= FUZZ_MAX_RUN_UNKNOWNS) {
+    if (r == RS_OK) r = rs_model_lower(m, c, err);
+    if (r == RS_OK && size <= FUZZ_MAX_RUN_BYTES && m->nunknowns <= FUZZ_MAX_RUN_UNKNOWNS) {
         json_t *doc = NULL;
         int outcome = 0;
         rs_options_t opt;
@@ -39,6 +41,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (r != RS_OK && err->msg[0] == '\0')
         abort();                /* every error carries a message */
+    rs_model_clear(m);
     rs_case_clear(c);
     free(text);
     return 0;

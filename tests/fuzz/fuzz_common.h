@@ -35,6 +35,7 @@
 #include <gsl/gsl_errno.h>
 #include "recstab/analysis.h"
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "recstab/derivation.h"
 #include "recstab/report.h"
@@ -122,16 +123,16 @@ static inline int fuzz_all_params_set(const rs_case_t c)
     return 1;
 }
 
-/* 1 when a parsed case is small enough to run its analyses (the builders'
+/* 1 when a parsed case (lowered into m) is small enough to run its analyses (the builders'
  * states are unknowns too): symbolic determinants of more than a few
  * unknowns are the budget's business, numeric ones (the Olivier cases:
  * 8 unknowns, every value set) take milliseconds */
-static inline int fuzz_case_small(const rs_case_t c)
+static inline int fuzz_case_small(const rs_case_t c, const rs_model_t m)
 {
     if (c->nrequests > FUZZ_MAX_REQUESTS)
         return 0;
-    return c->nunknowns <= FUZZ_MAX_UNKNOWNS
-           || (c->nunknowns <= FUZZ_MAX_UNKNOWNS_SET && fuzz_all_params_set(c));
+    return m->nunknowns <= FUZZ_MAX_UNKNOWNS
+           || (m->nunknowns <= FUZZ_MAX_UNKNOWNS_SET && fuzz_all_params_set(c));
 }
 
 static inline void fuzz_options(rs_options_t *opt, slong max_prec)

@@ -135,6 +135,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     slong max_prec;
     char *text, *lines, *sets;
     rs_case_t c;
+    rs_model_t m;
     rs_error_t err;
     rs_options_t opt;
     rs_sweep_options_t sw;
@@ -172,17 +173,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fprintf(stderr, "\n%s", text);
     }
     rs_case_init(c);
+    rs_model_init(m);
     rs_error_init(err);
     r = rs_case_parse_string(c, FUZZ_CASE_PATH, text, strlen(text), err);
-    if (r == RS_OK) r = rs_case_lower(c, err);
+    if (r == RS_OK) r = rs_model_lower(m, c, err);
     for (set = sets; r == RS_OK && *set != '\0'; set += strlen(set) + 1)
         r = rs_case_set_value(c, set, err);
     fuzz_check_error(r, err);
-    if (r == RS_OK && fuzz_case_small(c)) {
+    if (r == RS_OK && fuzz_case_small(c, m)) {
         fuzz_options(&opt, max_prec);
         opt.sweep = sw;
         fuzz_run(c, &opt);
     }
+    rs_model_clear(m);
     rs_case_clear(c);
     free(text);
     free(lines);

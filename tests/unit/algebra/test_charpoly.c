@@ -74,6 +74,7 @@ static void test_random_det(void **state)
 static void test_pipeline_park(void **state)
 {
     rs_case_t c;
+    rs_model_t m;
     rs_scheme_t s;
     rs_charpoly_t cp;
     rs_error_t err;
@@ -81,12 +82,13 @@ static void test_pipeline_park(void **state)
     slong k, i, n;
     (void) state;
     rs_case_init(c);
+    rs_model_init(m);
     rs_scheme_init(s);
     rs_error_init(err);
     flint_randinit(st);
     assert_int_equal(rs_case_parse_file(c, RS_SOURCE_DIR "/cases/park-staggered.case", err), RS_OK);
-    assert_int_equal(rs_case_lower(c, err), RS_OK);
-    assert_int_equal(rs_scheme_build(s, c, err), RS_OK);
+    assert_int_equal(rs_model_lower(m, c, err), RS_OK);
+    assert_int_equal(rs_scheme_build(s, m, err), RS_OK);
     rs_charpoly_init(cp, s);
     assert_int_equal(rs_charpoly_compute(cp, s, err), RS_OK);
     assert_int_equal(cp->degree, 4);
@@ -115,6 +117,7 @@ static void test_pipeline_park(void **state)
     }
     rs_charpoly_clear(cp, s);
     rs_scheme_clear(s);
+    rs_model_clear(m);
     rs_case_clear(c);
     flint_randclear(st);
 }

@@ -4,6 +4,7 @@
 #include "testutil.h"
 #include <string.h>
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
 
@@ -13,6 +14,7 @@ static void check_case(const char *rel, const char *closed, slong degree)
 {
     char path[1024];
     rs_case_t c;
+    rs_model_t m;
     rs_scheme_t s;
     rs_charpoly_t cp;
     rs_error_t err;
@@ -20,9 +22,10 @@ static void check_case(const char *rel, const char *closed, slong degree)
     fmpq_t scale;
     snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
     rs_case_init(c);
+    rs_model_init(m);
     rs_scheme_init(s);
     rs_error_init(err);
-    if (rs_case_parse_file(c, path, err) != RS_OK || rs_case_lower(c, err) != RS_OK || rs_scheme_build(s, c, err) != RS_OK)
+    if (rs_case_parse_file(c, path, err) != RS_OK || rs_model_lower(m, c, err) != RS_OK || rs_scheme_build(s, m, err) != RS_OK)
         fail_msg("%s: %s", rel, err->msg);
     rs_charpoly_init(cp, s);
     assert_int_equal(rs_charpoly_compute(cp, s, err), RS_OK);
@@ -41,6 +44,7 @@ static void check_case(const char *rel, const char *closed, slong degree)
     fmpq_clear(scale);
     rs_charpoly_clear(cp, s);
     rs_scheme_clear(s);
+    rs_model_clear(m);
     rs_case_clear(c);
 }
 

@@ -333,7 +333,6 @@ static void test_park_symbolic_jury(void **state)
             rs_error_init(err);
             rs_options_default(&opt);
             assert_int_equal(rs_case_parse_file(c, path, err), RS_OK);
-            assert_int_equal(rs_case_lower(c, err), RS_OK);
             for (v2 = 0; v2 < 4; v2++) assert_int_equal(rs_case_set_value(c, sets[v2], err), RS_OK);
             rs_case_clear_requests(c);
             sreq[0] = "stability";

@@ -20,7 +20,6 @@ static int run_text(const char *text, rs_error_t err)
     rs_error_init(err);
     rs_options_default(&opt);
     r = rs_case_parse_string(c, "t.case", text, strlen(text), err);
-    if (r == RS_OK) r = rs_case_lower(c, err);
     if (r == RS_OK)
         r = rs_analysis_run(&doc, &outcome, c, &opt, err);
     json_decref(doc);

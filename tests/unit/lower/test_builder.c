@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <flint/fmpz_mpoly.h>
 #include "recstab/casefile.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
 #include "recstab/radius.h"
@@ -54,16 +55,17 @@ static char *case_text(const char *rel, const char *extra)
 }
 
 /* primitive part of the characteristic polynomial (parameter content removed) */
-typedef struct { rs_case_t c; rs_scheme_t s; rs_charpoly_t cp; fmpz_mpoly_t prim; } pol_t;
+typedef struct { rs_case_t c; rs_model_t m; rs_scheme_t s; rs_charpoly_t cp; fmpz_mpoly_t prim; } pol_t;
 
 static void pol_build(pol_t *P, const char *label, const char *text)
 {
     rs_error_t err;
     rs_error_init(err);
     rs_case_init(P->c);
+    rs_model_init(P->m);
     rs_scheme_init(P->s);
-    if (rs_case_parse_string(P->c, label, text, strlen(text), err) != RS_OK || rs_case_lower(P->c, err) != RS_OK
-        || rs_scheme_build(P->s, P->c, err) != RS_OK)
+    if (rs_case_parse_string(P->c, label, text, strlen(text), err) != RS_OK || rs_model_lower(P->m, P->c, err) != RS_OK
+        || rs_scheme_build(P->s, P->m, err) != RS_OK)
         fail_msg("%s: %s:%d:%d %s", label, err->file, err->line, err->col, err->msg);
     {
         slong i;
@@ -82,6 +84,7 @@ static void pol_clear(pol_t *P)
     fmpz_mpoly_clear(P->prim, P->s->zctx);
     rs_charpoly_clear(P->cp, P->s);
     rs_scheme_clear(P->s);
+    rs_model_clear(P->m);
     rs_case_clear(P->c);
 }
 
@@ -358,11 +361,11 @@ static void test_newmark_pairs_structural(void **state)
     (void) state;
     pol_build(&A, "plain", plain);
     pol_build(&B, "paren", paren);
-    assert_int_equal(A.c->neqs, B.c->neqs);
-    for (i = 0; i < A.c->neqs; i++) {
-        assert_true(A.c->eqs[i].generated);
-        assert_true(rs_expr_equal(A.c->eqs[i].lhs, B.c->eqs[i].lhs));
-        assert_true(rs_expr_equal(A.c->eqs[i].rhs, B.c->eqs[i].rhs));
+    assert_int_equal(A.m->neqs, B.m->neqs);
+    assert_int_equal(A.m->nuser_eqs, 0);          /* all generated */
+    for (i = 0; i < A.m->neqs; i++) {
+        assert_true(rs_expr_equal(A.m->eqs[i].lhs, B.m->eqs[i].lhs));
+        assert_true(rs_expr_equal(A.m->eqs[i].rhs, B.m->eqs[i].rhs));
     }
     assert_true(pol_equals(&B, "(4 + w^2)*lambda^2 - (8 - 2*w^2)*lambda + (4 + w^2)"));
     pol_clear(&A);
@@ -386,10 +389,10 @@ static void test_generated_positions(void **state)
     char *t;
     (void) state;
     pol_build(&A, "t.case", text);
-    for (i = 0; i < A.c->neqs; i++) {
-        t = A.c->eqs[i].text;
-        if (strncmp(t, "v_dot[n+1] = ", 13) == 0) motion = &A.c->eqs[i];
-        if (strncmp(t, "v[n+1] - v[n] = ", 16) == 0) formula = &A.c->eqs[i];
+    for (i = 0; i < A.m->neqs; i++) {
+        t = A.m->eqs[i].text;
+        if (strncmp(t, "v_dot[n+1] = ", 13) == 0) motion = &A.m->eqs[i];
+        if (strncmp(t, "v[n+1] - v[n] = ", 16) == 0) formula = &A.m->eqs[i];
     }
     assert_non_null(motion);
     assert_non_null(formula);
@@ -405,35 +408,11 @@ static void test_generated_positions(void **state)
     assert_int_equal(formula->lhs->col, 13);
     assert_int_equal(formula->rhs->a->line, 5);   /* (h) */
     assert_int_equal(formula->rhs->a->col, 27);
-    assert_int_equal(A.c->nunknowns, 4);          /* x x_dot v v_dot, all generated */
-    for (i = 0; i < A.c->nunknowns; i++) assert_true(A.c->unknowns[i].generated);
+    assert_int_equal(A.m->nunknowns, 4);          /* x x_dot v v_dot, all generated */
+    assert_int_equal(A.m->nuser_unknowns, 0);
+    assert_int_equal(A.c->nunknowns, 0);          /* the case holds syntax only */
+    assert_int_equal(A.c->neqs, 0);
     pol_clear(&A);
-}
-
-/* Parsing does not lower: building the scheme of an unlowered builder case
- * is refused (an internal error naming rs_case_lower), and after
- * rs_case_lower the same case builds. */
-static void test_parse_does_not_lower(void **state)
-{
-    const char *text = "param w, h\nsubsystem S state x v\n  x' = v\n  v' = -w^2*x\nintegrate S euler-forward h\n";
-    rs_case_t c;
-    rs_scheme_t s;
-    rs_error_t err;
-    (void) state;
-    rs_case_init(c);
-    rs_scheme_init(s);
-    rs_error_init(err);
-    assert_int_equal(rs_case_parse_string(c, "t.case", text, strlen(text), err), RS_OK);
-    assert_int_equal(c->nunknowns, 0);
-    assert_int_equal(c->neqs, 0);
-    assert_int_equal(rs_scheme_build(s, c, err), RS_ERR_INTERNAL);
-    assert_non_null(strstr(err->msg, "rs_case_lower"));
-    assert_int_equal(rs_case_lower(c, err), RS_OK);
-    assert_int_equal(c->nunknowns, 4);
-    assert_int_equal(c->neqs, 4);
-    assert_int_equal(rs_scheme_build(s, c, err), RS_OK);
-    rs_scheme_clear(s);
-    rs_case_clear(c);
 }
 
 int main(void)
@@ -445,7 +424,6 @@ int main(void)
         cmocka_unit_test(test_park_builders),
         cmocka_unit_test(test_newmark_pairs_structural),
         cmocka_unit_test(test_generated_positions),
-        cmocka_unit_test(test_parse_does_not_lower),
         cmocka_unit_test(test_time_domain_oracle),
     };
     return cmocka_run_group_tests_name("builder", tests, NULL, NULL);

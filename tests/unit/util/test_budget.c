@@ -228,7 +228,6 @@ static json_t *run_string(const char *text, int *code, rs_error_t err)
     rs_options_default(&opt);
     opt.time_limit = 20;   /* the endless loop this guards against ends here */
     *code = rs_case_parse_string(c, "region.case", text, strlen(text), err);
-    if (*code == RS_OK) *code = rs_case_lower(c, err);
     if (*code == RS_OK) *code = rs_analysis_run(&doc, &outcome, c, &opt, err);
     rs_case_clear(c);
     return doc;
