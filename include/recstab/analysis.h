@@ -37,7 +37,8 @@ typedef struct {
 
 void rs_options_default(rs_options_t *opt);
 
-/* Runs every request of c.  On success *doc is the case's JSON document
+/* Lowers c (rs_model_lower, once) and runs every request of c on the
+ * model.  On success *doc is the case's JSON document
  * {"case", "title", "params", "unknowns", "results": [...]} and *outcome
  * is RS_OUTCOME_*.  On error *doc is NULL. */
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
