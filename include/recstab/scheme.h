@@ -39,7 +39,8 @@ typedef struct {
     slong nnonzero;             /* assumptions made by multiplying through */
     fmpq_mpoly_struct *nonzero; /* each must be != 0 */
     char **nonzero_text;        /* "m != 0" */
-    rs_loc_t *nonzero_loc;      /* where each was first needed (file points into the case) */
+    rs_loc_t *nonzero_loc;      /* where each was first needed (file points into the
+                                   model or its case: valid while they live) */
 } rs_scheme_struct;
 typedef rs_scheme_struct rs_scheme_t[1];
 

@@ -20,7 +20,7 @@ static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int st
     rs_radius_init(rr);
     for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec; prec *= 2) {
         acb_mat_struct *A = NULL;
-        r = rs_recurrence_matrices(&A, &K, run->c, prec, run->err);
+        r = rs_recurrence_matrices(&A, &K, run->m, prec, run->err);
         if (r == RS_OK) r = rs_radius_matrix_poly(rr, A, K, digits, run->opt->max_prec, run->err);
         for (i = 0; A && i <= K; i++) acb_mat_clear(A + i);
         flint_free(A);

@@ -175,17 +175,18 @@ int rs_recurrence_eval(arb_t out, const rs_expr_t *e, const rs_case_t c, slong p
     return r;
 }
 
-int rs_recurrence_matrices(acb_mat_struct **A, slong *K, const rs_case_t c, slong prec, rs_error_t err)
+int rs_recurrence_matrices(acb_mat_struct **A, slong *K, const rs_model_t m, slong prec, rs_error_t err)
 {
-    slong n = c->rec[0].rows, t, i, kmax = 0;
+    slong n = m->n, t, i;
     int r = RS_OK;
-    for (t = 0; t < c->nrec; t++) if (c->rec[t].k > kmax) kmax = c->rec[t].k;
-    *A = flint_malloc((kmax + 1) * sizeof(acb_mat_struct));
-    for (i = 0; i <= kmax; i++) acb_mat_init(*A + i, n, n);
-    for (t = 0; t < c->nrec && r == RS_OK; t++)
+    if (m->kind != RS_MODEL_RECURRENCE)
+        return rs_error_set(err, RS_ERR_INTERNAL, "expected a recurrence model%s", "");
+    *A = flint_malloc((m->K + 1) * sizeof(acb_mat_struct));
+    for (i = 0; i <= m->K; i++) acb_mat_init(*A + i, n, n);
+    for (t = 0; t < m->nterms && r == RS_OK; t++)
         for (i = 0; i < n * n && r == RS_OK; i++)
-            r = rs_recurrence_eval(acb_realref(acb_mat_entry(*A + c->rec[t].k, i / n, i % n)), c->rec[t].entries[i], c,
-                                   prec, err);
-    *K = kmax;
+            r = rs_recurrence_eval(acb_realref(acb_mat_entry(*A + m->terms[t].k, i / n, i % n)), m->terms[t].entries[i],
+                                   m->c, prec, err);
+    *K = m->K;
     return r;
 }

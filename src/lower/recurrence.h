@@ -30,10 +30,10 @@ int rs_recurrence_lower(rs_model_struct *m, rs_error_t err);
 /* Entries with functions or pi: the numeric path only (no equations). */
 int rs_recurrence_is_numeric(const rs_case_t c);
 
-/* The matrices A[0..K] (K = largest shift; acb_mat initialised here, n x n)
- * at precision prec with the case's set values (and extra values, may be
- * NULL).  Returns RS_OK or an error naming an unset parameter. */
-int rs_recurrence_matrices(acb_mat_struct **A, slong *K, const rs_case_t c, slong prec, rs_error_t err);
+/* The matrices A[0..K] of a recurrence model (K = m->K; acb_mat
+ * initialised here, n x n) at precision prec with the case's set values.
+ * Returns RS_OK or an error naming an unset parameter. */
+int rs_recurrence_matrices(acb_mat_struct **A, slong *K, const rs_model_t m, slong prec, rs_error_t err);
 
 /* Evaluates an expression in ball arithmetic; names are looked up among the
  * case's parameters with set values (pi is the constant). */

@@ -14,6 +14,7 @@
 #include "recstab/casefile.h"
 #include "recstab/model.h"
 #include "recstab/scheme.h"
+#include "lower/recurrence.h"
 
 typedef struct { char *s; size_t len, cap; } buf_t;
 
@@ -282,15 +283,21 @@ static void test_builder_name_taken(void **state)
 }
 
 /* exp/sin entries: a recurrence model with the case's two terms, n = 2 and
- * K = 1; no unknowns or equations are made and nothing is emitted. */
+ * K = 1; no unknowns or equations are made and nothing is emitted.  Its
+ * matrices at a = 1, h = 1/2: A_1 = I, A_0 = [-e^{-1/2}, 0; -sin(1)/2, -1/2]
+ * (the entries evaluated here with Arb's own functions). */
 static void test_recurrence_model(void **state)
 {
     const char *text = "param a, h\n"
                        "recurrence 1 = [1, 0; 0, 1]\n"
-                       "recurrence 0 = [-exp(-a*h), 0; -h*sin(a), -1/2]\n";
+                       "recurrence 0 = [-exp(-a*h), 0; -h*sin(a), -1/2]\n"
+                       "set a = 1, h = 1/2\n";
     rs_case_t c;
     rs_model_t m;
     rs_error_t err;
+    acb_mat_struct *A = NULL;
+    slong K = -1, i;
+    arb_t want;
     (void) state;
     rs_case_init(c);
     rs_model_init(m);
@@ -305,6 +312,30 @@ static void test_recurrence_model(void **state)
     assert_int_equal(m->nunknowns, 0);
     assert_int_equal(m->neqs, 0);
     assert_null(rs_model_emit_equations(m));
+    assert_int_equal(rs_recurrence_matrices(&A, &K, m, 128, err), RS_OK);
+    assert_int_equal(K, 1);
+    for (i = 0; i < 4; i++)                       /* A_1 = I, exactly */
+        assert_true(i % 3 == 0 ? acb_is_one(acb_mat_entry(A + 1, i / 2, i % 2))
+                               : acb_is_zero(acb_mat_entry(A + 1, i / 2, i % 2)));
+    arb_init(want);
+    arb_set_si(want, -1);
+    arb_mul_2exp_si(want, want, -1);
+    arb_exp(want, want, 128);
+    arb_neg(want, want);                          /* -e^{-1/2} */
+    assert_true(arb_overlaps(acb_realref(acb_mat_entry(A + 0, 0, 0)), want));
+    arb_set_si(want, 1);
+    arb_sin(want, want, 128);
+    arb_mul_2exp_si(want, want, -1);
+    arb_neg(want, want);                          /* -sin(1)/2 */
+    assert_true(arb_overlaps(acb_realref(acb_mat_entry(A + 0, 1, 0)), want));
+    assert_false(arb_overlaps(acb_realref(acb_mat_entry(A + 0, 0, 0)), want));
+    assert_true(acb_is_zero(acb_mat_entry(A + 0, 0, 1)));
+    arb_set_si(want, -1);
+    arb_mul_2exp_si(want, want, -1);
+    assert_true(arb_equal(acb_realref(acb_mat_entry(A + 0, 1, 1)), want));
+    arb_clear(want);
+    for (i = 0; i <= K; i++) acb_mat_clear(A + i);
+    flint_free(A);
     rs_model_clear(m);
     rs_case_clear(c);
 }
