@@ -45,10 +45,12 @@ record)
             echo "exit $?" >>"$out/extra-$name.$fmt.err"
         done
         sed -i -e 's/"seconds": *[-0-9.eE+]*/"seconds": S/g' \
+               -e 's/"seconds_points": *[-0-9.eE+]*/"seconds_points": S/g' \
                -e 's/"threads": *[0-9]*/"threads": T/g' "$out/extra-$name.json"
         sed -i -e 's/points in [0-9.]* s/points in S s/' "$out/extra-$name.txt"
     done <<EXTRA
 sweep|$cd_||sweep w from 0 to 4 steps 8
+sweep-long|$cd_||sweep w from 0 to 4 steps 70
 sweep-modes|$cd_||sweep w from 1/2 to 3 steps 5 of modes reference=w
 map|cases/park-staggered.case|muh=1 wh=1|map alpha 0 3 4, m 1/10 20 3
 map-exact|cases/li-explicit-k1.case||map acc1 0 3 3, c1 1/2 2 2

@@ -1,0 +1,575 @@
+/* layout_exact.c -- the layouts of the exact analyses (charpoly, expect,
+ * bilinear, routh, hurwitz, jury, stability, region, limit, claim) and the
+ * blocks they share; each written once for the three backends. */
+#include <stdlib.h>
+#include <string.h>
+#include "render_impl.h"
+
+#define js rs_render_jstr
+#define ji rs_render_jint
+
+/* ---- blocks shared by several layouts -------------------------------------------- */
+
+/* The values substituted ("at") and the parameters p does not depend on. */
+void rs_render_assigned(rs_render_t *r, const json_t *o)
+{
+    const json_t *sub = json_object_get(o, "substituted");
+    const json_t *nip = json_object_get(o, "not_in_p");
+    const char *key;
+    json_t *val;
+    size_t i;
+    int first = 1;
+    for (i = 0; i < json_array_size(nip); i++)
+        rs_render_textf(r, "%s%s%s", i == 0 ? "  not in p     " : ", ", json_string_value(json_array_get(nip, i)),
+                        i + 1 == json_array_size(nip) ? " (p does not depend on them: no value needed)\n" : "");
+    if (!json_is_object(sub) || json_object_size(sub) == 0) return;
+    rs_render_textf(r, "  %-12s ", "at");
+    json_object_foreach((json_t *) sub, key, val) {
+        rs_render_textf(r, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
+        first = 0;
+    }
+    rs_render_textf(r, "\n");
+}
+
+/* A labelled line of the array's members joined by sep (strings as they are,
+ * other values as compact JSON). */
+void rs_render_string_list(rs_render_t *r, const char *label, const json_t *arr, const char *sep)
+{
+    size_t i;
+    if (!json_is_array(arr) || json_array_size(arr) == 0) return;
+    rs_render_textf(r, "  %-12s ", label);
+    for (i = 0; i < json_array_size(arr); i++) {
+        const json_t *v = json_array_get(arr, i);
+        if (i > 0) rs_render_textf(r, "%s", sep);
+        if (json_is_string(v)) rs_render_textf(r, "%s", json_string_value(v));
+        else {
+            char *s = json_dumps(v, JSON_COMPACT | JSON_ENCODE_ANY);
+            rs_render_textf(r, "%s", s);
+            free(s);
+        }
+    }
+    rs_render_textf(r, "\n");
+}
+
+/* the conditions checked against exact point verdicts */
+void rs_render_sample_check(rs_render_t *r, const json_t *o)
+{
+    const json_t *c = json_object_get(o, "sample_check");
+    if (c == NULL) return;
+    if (json_is_true(json_object_get(c, "agree"))) {
+        rs_render_linef(r, "checked", "conditions agree with the exact verdict at %lld admissible rational points",
+                        ji(c, "points"));
+    } else {
+        char *pt = json_dumps(json_object_get(c, "point"), JSON_COMPACT | JSON_SORT_KEYS);
+        rs_render_linef(r, "checked", "DISAGREEMENT at %s: the conditions say %s, the exact verdict is %s", pt,
+                        js(c, "conditions_say"), js(c, "exact_verdict"));
+        free(pt);
+    }
+}
+
+/* "never" (no branch can hold) or "branches" (an OR of condition lists);
+ * 1 if the result has either (then printed), else 0. */
+static int branches(rs_render_t *r, const json_t *o)
+{
+    const json_t *br = json_object_get(o, "branches");
+    size_t i, j;
+    if (js(o, "never") != NULL) {
+        rs_render_line(r, "never", "%s", js(o, "never"));
+        rs_render_esc(r, js(o, "never"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+        return 1;
+    }
+    if (!json_is_array(br)) return 0;
+    rs_render_say(r, "All |lambda| < 1 if and only if every condition of one branch holds (the sign of the leading "
+                     "coefficient of q is not fixed by the assumptions):\n\n",
+                  "All $|\\lambda| < 1$ if and only if every condition of one branch holds (the sign of the "
+                  "leading coefficient of $q$ is not fixed by the assumptions):\n");
+    rs_render_list_begin(r);
+    for (i = 0; i < json_array_size(br); i++) {
+        const json_t *b = json_array_get(br, i);
+        rs_render_item_begin(r);
+        rs_render_say(r, i == 0 ? "either: " : "or: ", i == 0 ? "either: " : "or: ");
+        for (j = 0; j < json_array_size(b); j++) {
+            const char *c = json_string_value(json_array_get(b, j));
+            rs_render_line(r, j > 0 ? "and" : i == 0 ? "stable iff" : "or", "%s", c);
+            if (j) rs_render_say(r, ", ", ", ");
+            rs_render_math(r, c);
+        }
+        rs_render_item_end(r);
+    }
+    rs_render_list_end(r);
+    return 1;
+}
+
+/* The derivation's list of conditions, after its sentence; empty (if given)
+ * is the item for an empty list. */
+static void condition_list(rs_render_t *r, const json_t *c, const char *md, const char *tex, const char *empty)
+{
+    size_t i;
+    rs_render_say(r, md, tex);
+    rs_render_list_begin(r);
+    for (i = 0; i < json_array_size(c); i++) {
+        rs_render_item_begin(r);
+        rs_render_math(r, json_string_value(json_array_get(c, i)));
+        rs_render_item_end(r);
+    }
+    if (json_array_size(c) == 0 && empty != NULL) {
+        rs_render_item_begin(r);
+        rs_render_say(r, empty, empty);
+        rs_render_item_end(r);
+    }
+    rs_render_list_end(r);
+}
+
+/* The report's condition lines: first, then next, unless "never". */
+static void condition_lines(rs_render_t *r, const json_t *o, const char *first, const char *next)
+{
+    const json_t *c = json_object_get(o, "conditions");
+    size_t i;
+    for (i = 0; i < json_array_size(c) && js(o, "never") == NULL; i++)
+        rs_render_line(r, i == 0 ? first : next, "%s", json_string_value(json_array_get(c, i)));
+}
+
+/* ---- the layouts ------------------------------------------------------------------ */
+
+void rs_render_charpoly(rs_render_t *r, const json_t *o)
+{
+    long long removed = ji(o, "removed_lambda_power");
+    rs_render_line(r, "p(lambda)", "%s", js(o, "poly"));
+    rs_render_linef(r, "degree", "%lld", ji(o, "degree"));
+    if (removed > 0) rs_render_linef(r, "removed", "lambda^%lld (roots at 0) divided out", removed);
+    rs_render_line(r, "content", "%s (det = content * lambda^k * p)", js(o, "content"));
+    rs_render_line(r, "param factor", "%s (common factor of all coefficients)", js(o, "param_content"));
+    rs_render_assigned(r, o);
+    rs_render_string_list(r, "assuming", json_object_get(o, "nonzero_assumptions"), ", ");
+
+    rs_render_heading(r, "Characteristic polynomial", "Characteristic polynomial");
+    rs_render_say(r, "p(lambda) = det of the lambda-matrix (fraction-free)",
+                  "The determinant of the $\\lambda$-matrix, computed fraction-free");
+    if (removed > 0)
+        rs_render_sayf(r, ", lambda^%lld (roots at 0) divided out",
+                       ", with the factor $\\lambda^{%lld}$ (roots at 0) divided out", removed);
+    rs_render_say(r, ":\n\n    p(lambda) = ", ":\n\n$p(\\lambda) = ");
+    rs_render_poly(r, js(o, "poly"));
+    rs_render_sayf(r, "\n\ndegree %lld, content %s.\n\n", "$\n\n(degree %lld, content %s).\n\n", ji(o, "degree"),
+                   js(o, "content"));
+}
+
+/* The derivation's paragraph of a claim or an expect. */
+static void claim_prose(rs_render_t *r, const json_t *o)
+{
+    const json_t *ce = json_object_get(o, "counterexample");
+    const char *diff = js(o, "difference");
+    rs_render_code(r, js(o, "text"));
+    rs_render_sayf(r, ": **%s**.\n\n", ": \\textbf{%s}.\n\n", js(o, "status"));
+    if (json_is_object(ce)) {
+        const char *k;
+        json_t *v;
+        int first = 1;
+        rs_render_say(r, "Counterexample: ", "Counterexample: $");
+        json_object_foreach((json_t *) ce, k, v) {
+            if (!first) rs_render_say(r, ", ", ",\\ ");
+            rs_render_poly(r, k);
+            rs_render_say(r, " = ", " = ");
+            rs_render_poly(r, json_string_value(v));
+            first = 0;
+        }
+        rs_render_say(r, ". ", "$. ");
+        rs_render_count(r, json_object_get(o, "at_counterexample"), RS_RENDER_PROSE);
+    }
+    if (diff != NULL && strcmp(diff, "0") != 0) {
+        rs_render_say(r, "Printed minus derived: ", "Printed minus derived: ");
+        rs_render_math(r, diff);
+        rs_render_say(r, "\n\n", ".\n\n");
+    }
+}
+
+void rs_render_expect(rs_render_t *r, const json_t *o)
+{
+    const char *st = js(o, "status");
+    rs_render_line(r, "checks", "%s", js(o, "text"));
+    rs_render_line(r, "status", "%s", st);
+    if (st && strcmp(st, "different") == 0) {
+        rs_render_line(r, "derived", "%s", js(o, "derived"));
+        rs_render_line(r, "printed", "%s", js(o, "expected_normalised"));
+        rs_render_line(r, "difference", "%s", js(o, "difference"));
+        rs_render_line(r, "ratio", "printed = (%s) * derived", js(o, "ratio"));
+    }
+    rs_render_assigned(r, o);
+    rs_render_heading(r, "Printed polynomial", "Printed polynomial");
+    claim_prose(r, o);
+}
+
+void rs_render_bilinear(rs_render_t *r, const json_t *o)
+{
+    rs_render_line(r, "q(z)", "%s", js(o, "poly"));
+    rs_render_line(r, "", "%s", "q(z) = (1-z)^n p((1+z)/(1-z)): |lambda| < 1 <=> Re z < 0");
+    rs_render_linef(r, "degree", "%lld (degree drop %lld = roots at lambda = -1; z = 0 of multiplicity %lld = "
+                    "roots at lambda = 1)", ji(o, "degree"), ji(o, "degree_drop"), ji(o, "zero_mult"));
+    rs_render_line(r, "p(1)", "%s (lambda = 1 is a root where this vanishes)", js(o, "p_at_1"));
+    rs_render_line(r, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", js(o, "p_at_minus_1"));
+    rs_render_assigned(r, o);
+
+    rs_render_heading(r, "Bilinear transform", "Bilinear transform");
+    rs_render_say(r, "lambda = (1+z)/(1-z) maps |lambda| < 1 onto Re z < 0; q(z) = (1-z)^n p((1+z)/(1-z)):\n\n"
+                     "    q(z) = ",
+                  "With $\\lambda = \\frac{1+z}{1-z}$, $|\\lambda| < 1 \\iff \\operatorname{Re} z < 0$; "
+                  "$q(z) = (1-z)^n\\, p\\!\\left(\\frac{1+z}{1-z}\\right)$:\n\n$q(z) = ");
+    rs_render_poly(r, js(o, "poly"));
+    rs_render_sayf(r, "\n\ndegree drop %lld (roots at lambda = -1), z = 0 of multiplicity %lld (roots at "
+                      "lambda = 1); p(1) = `",
+                   "$\n\nDegree drop %lld (roots at $\\lambda=-1$), $z=0$ of multiplicity %lld (roots at "
+                   "$\\lambda = 1$); $p(1) = ", ji(o, "degree_drop"), ji(o, "zero_mult"));
+    rs_render_poly(r, js(o, "p_at_1"));
+    rs_render_say(r, "`, p(-1) = `", "$, $p(-1) = ");
+    rs_render_poly(r, js(o, "p_at_minus_1"));
+    rs_render_say(r, "`.\n\n", "$.\n\n");
+}
+
+/* The first-column signs as eps -> 0+ (zero first entries replaced by eps). */
+static void epsilon_signs(rs_render_t *r, const json_t *es)
+{
+    char buf[256];
+    size_t i, n = 0;
+    if (es == NULL) return;
+    buf[0] = '\0';
+    for (i = 0; i < json_array_size(es) && n + 4 < sizeof buf; i++) {
+        json_int_t sg = json_integer_value(json_array_get(es, i));
+        n += (size_t) snprintf(buf + n, sizeof buf - n, "%s%s", i ? " " : "", sg > 0 ? "+" : sg < 0 ? "-" : "0");
+    }
+    rs_render_line(r, "eps -> 0+", "first column signs %s (zero first entries replaced by eps)", buf);
+}
+
+void rs_render_routh(rs_render_t *r, const json_t *o)
+{
+    const json_t *ev = json_object_get(o, "events");
+    int sym = json_is_true(json_object_get(o, "symbolic"));
+    size_t i;
+    rs_render_heading(r, "Routh array of q(z)", "Routh array of $q(z)$");
+    if (sym) rs_render_line(r, "array", "%s", "fraction-free, symbolic");
+    rs_render_rows(r, json_object_get(o, "rows"), sym ? NULL : json_object_get(o, "powers"));
+    if (!sym) epsilon_signs(r, json_object_get(o, "epsilon_signs"));
+    for (i = 0; i < json_array_size(ev); i++) {
+        const json_t *e = json_array_get(ev, i);
+        rs_render_line(r, js(e, "kind"), "%s", js(e, "text"));
+        rs_render_sayf(r, "*Singular step (%s):* ", "\\emph{Singular step:} ", js(e, "kind"));
+        rs_render_esc(r, js(e, "text"));
+        rs_render_say(r, "\n\n", "\n\n");
+    }
+    if (js(o, "note") != NULL) {
+        if (sym) rs_render_line(r, "note", "%s", js(o, "note"));
+        rs_render_esc(r, js(o, "note"));
+        rs_render_say(r, "\n\n", "\n\n");
+    }
+    /* the report counts the numeric array; the derivation whatever has a status */
+    rs_render_count(r, o, (sym ? 0 : RS_RENDER_TEXT) | (js(o, "status") ? RS_RENDER_PROSE : 0));
+    rs_render_assigned(r, o);
+}
+
+/* the factors of the Lienard-Chipart conditions dropped, and why */
+static void dropped_factors(rs_render_t *r, const json_t *dropped)
+{
+    size_t i;
+    for (i = 0; i < json_array_size(dropped); i++) {
+        const json_t *d = json_array_get(dropped, i);
+        rs_render_linef(r, i == 0 ? "dropped" : "", "%s (in %s): %s", js(d, "factor"), js(d, "from"),
+                        js(d, "reason"));
+        rs_render_say(r, "Dropped factor ", "Factor ");
+        rs_render_math(r, js(d, "factor"));
+        rs_render_sayf(r, " of %s: ", " of $%s$ dropped: ", js(d, "from"));
+        rs_render_esc(r, js(d, "reason"));
+        rs_render_say(r, ".\n", ".\n\n");
+    }
+    rs_render_say(r, "\n", NULL);
+}
+
+void rs_render_hurwitz(rs_render_t *r, const json_t *o)
+{
+    const json_t *minors = json_object_get(o, "minors");
+    const json_t *conds = json_object_get(o, "conditions");
+    size_t i;
+    rs_render_heading(r, "Hurwitz minors and Lienard-Chipart conditions",
+                      "Hurwitz minors and Li\\'enard--Chipart conditions");
+    for (i = 0; i < json_array_size(minors); i++) {
+        const char *m = json_string_value(json_array_get(minors, i));
+        char lab[32];
+        snprintf(lab, sizeof lab, "D_%zu", i + 1);
+        rs_render_line(r, lab, "%s", m);
+        rs_render_sayf(r, "- D_%zu = `", "$D_{%zu} = ", i + 1);
+        rs_render_poly(r, m);
+        rs_render_say(r, "`\n", "$\n\n");
+    }
+    rs_render_say(r, "\n", NULL);
+    if (!branches(r, o)) {
+        if (json_array_size(conds) == 0)
+            rs_render_line(r, "conditions", "%s", "none left: every Lienard-Chipart condition holds under the "
+                                                  "assumptions");
+        condition_list(r, conds, "All |lambda| < 1 if and only if:\n\n",
+                       "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
+                       "(every condition holds under the assumptions)");
+    }
+    condition_lines(r, o, "conditions", "");
+    rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
+    dropped_factors(r, json_object_get(o, "dropped"));
+    rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
+    rs_render_line(r, "p(1)", "%s (lambda = 1 is a root where this vanishes)", js(o, "p_at_1"));
+    rs_render_line(r, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", js(o, "p_at_minus_1"));
+    rs_render_line(r, "verdict", "%s", js(o, "verdict"));
+    rs_render_sample_check(r, o);
+    rs_render_assigned(r, o);
+}
+
+/* jury and stability: the derivation's Schur-Cohn conditions when symbolic */
+static int schur_cohn_prose(rs_render_t *r, const json_t *o, const char *md, const char *tex)
+{
+    rs_render_heading(r, md, tex);
+    if (!json_is_true(json_object_get(o, "symbolic"))) return 0;
+    condition_list(r, json_object_get(o, "conditions"), "All |lambda| < 1 if and only if:\n\n",
+                   "All $|\\lambda| < 1$ if and only if:\n", NULL);
+    return 1;
+}
+
+void rs_render_jury(rs_render_t *r, const json_t *o)
+{
+    const json_t *cc = json_object_get(o, "cross_check");
+    int sym = schur_cohn_prose(r, o, "Schur-Cohn test on p(lambda)", "Schur--Cohn test on $p(\\lambda)$");
+    rs_render_line(r, "method", "%s", js(o, "method"));
+    if (sym) {
+        if (json_array_size(json_object_get(o, "conditions")) == 0)
+            rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
+                                                  "assumptions");
+        condition_lines(r, o, "stable iff", "and");
+        rs_render_line(r, "note", "%s", js(o, "note"));
+        rs_render_sample_check(r, o);
+        rs_render_assigned(r, o);
+        return;
+    }
+    if (json_is_true(json_object_get(o, "table_regular")))
+        rs_render_string_list(r, "table rows", json_object_get(o, "rows"), "\n               ");
+    else
+        rs_render_line(r, "table", "%s", "singular Jury table: decided through gcd(p, p*) and the Schur-Cohn form");
+    rs_render_count(r, o, RS_RENDER_ALL);
+    rs_render_line(r, "cross-check", "%s", json_is_true(json_object_get(cc, "agree"))
+                                               ? "Routh (bilinear) agrees" : "DISAGREES with Routh (bilinear)");
+    rs_render_assigned(r, o);
+}
+
+/* Which method decided, and whether Routh and Schur-Cohn agree. */
+static void decided_by(rs_render_t *r, const json_t *o)
+{
+    const json_t *agree = json_object_get(o, "agree");
+    if (json_is_boolean(agree))
+        rs_render_linef(r, "decided by", "%s (%s)", js(o, "decided_by"),
+                        json_is_true(agree) ? "Routh on q(z) and Schur-Cohn on p(lambda) agree"
+                                            : "DISAGREEMENT between Routh and Schur-Cohn: internal inconsistency");
+    else
+        rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
+}
+
+void rs_render_stability(rs_render_t *r, const json_t *o)
+{
+    int sym = schur_cohn_prose(r, o, "Stability at the given values", "Stability at the given values");
+    if (json_object_get(o, "inside") == NULL) {
+        /* a co-simulation's stability is its certified radius in the report */
+        rs_render_radius(r, o);
+        rs_render_count(r, o, sym ? 0 : RS_RENDER_PROSE);
+        return;
+    }
+    rs_render_count(r, o, RS_RENDER_TEXT | (sym ? 0 : RS_RENDER_PROSE));
+    decided_by(r, o);
+    rs_render_assigned(r, o);
+}
+
+static const char *endpoint(const json_t *e, int hi)
+{
+    const char *s = rs_render_endpoint(e, hi);
+    return s ? s : "(null)";
+}
+
+/* the region as intervals of one parameter, each with its status */
+static void region_intervals(rs_render_t *r, const json_t *o)
+{
+    const json_t *ivs = json_object_get(o, "intervals");
+    const char *param = js(o, "param");
+    size_t i;
+    rs_render_list_begin(r);
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *iv = json_array_get(ivs, i), *hi = json_object_get(iv, "hi");
+        const char *a = endpoint(json_object_get(iv, "lo"), 0), *b = endpoint(hi, 1);
+        const char *open = json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(";
+        const char *close = json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")";
+        if (strcmp(a, b) == 0) rs_render_textf(r, "  %-10s %s = %s\n", js(iv, "status"), param, a);
+        else rs_render_textf(r, "  %-10s %s in %s%s, %s%s\n", js(iv, "status"), param, open, a, b, close);
+        rs_render_item_begin(r);
+        rs_render_sayf(r, "**%s**: ", "%s: $", js(iv, "status"));
+        rs_render_poly(r, param);
+        rs_render_sayf(r, " in %s%s, %s%s", " \\in %s%s, %s%s$", open, a, b, close);
+        if (json_is_object(hi)) {
+            rs_render_say(r, " (upper end: a root of ", " (upper end: a root of ");
+            rs_render_math(r, js(hi, "minpoly"));
+            rs_render_say(r, ")", ")");
+        }
+        rs_render_item_end(r);
+    }
+    rs_render_list_end(r);
+}
+
+/* the report's exact form of algebraic endpoints, and the undecided points */
+static void region_where(rs_render_t *r, const json_t *o)
+{
+    const json_t *ivs = json_object_get(o, "intervals");
+    const json_t *pts = json_object_get(o, "undecided_points");
+    size_t i;
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *hi = json_object_get(json_array_get(ivs, i), "hi");
+        if (json_is_object(hi) && (i + 1 == json_array_size(ivs) ||
+            !json_equal(hi, json_object_get(json_array_get(ivs, i + 1), "hi"))))
+            rs_render_linef(r, "where", "%s is root %lld (from below, 0-based) of %s", js(hi, "approx"),
+                            ji(hi, "root_index"), js(hi, "minpoly"));
+    }
+    for (i = 0; i < json_array_size(pts); i++)
+        rs_render_linef(r, "undecided", "%s (status at this point itself not decided exactly)",
+                        endpoint(json_object_get(json_array_get(pts, i), "value"), 0));
+}
+
+void rs_render_region(rs_render_t *r, const json_t *o)
+{
+    rs_render_heading_begin(r);
+    rs_render_say(r, "Stability region in ", "Stability region in $");
+    rs_render_poly(r, js(o, "param"));
+    rs_render_say(r, NULL, "$");
+    rs_render_heading_end(r);
+    if (json_is_true(json_object_get(o, "symbolic"))) {
+        const json_t *c = json_object_get(o, "conditions");
+        if (!branches(r, o)) {
+            if (json_array_size(c) == 0)
+                rs_render_line(r, "stable iff", "%s", "true: every condition holds under the assumptions");
+            condition_list(r, c, "Stable if and only if:\n\n", "Stable if and only if:\n", NULL);
+        }
+        condition_lines(r, o, "stable iff", "and");
+        rs_render_line(r, "note", "%s", js(o, "note"));
+        rs_render_sample_check(r, o);
+        rs_render_assigned(r, o);
+        return;
+    }
+    region_intervals(r, o);
+    region_where(r, o);
+    rs_render_assigned(r, o);
+}
+
+void rs_render_limit(rs_render_t *r, const json_t *o)
+{
+    const json_t *roots = json_object_get(o, "roots");
+    const char *to = js(o, "to");
+    char lab[80];
+    size_t i;
+    snprintf(lab, sizeof lab, "%s -> %s", js(o, "param"), to);
+    rs_render_line(r, lab, "roots tend to the roots of %s", js(o, "limit_poly"));
+    rs_render_heading_begin(r);
+    rs_render_say(r, "Limit ", "Limit $");
+    rs_render_poly(r, js(o, "param"));
+    rs_render_say(r, " -> ", " \\to ");
+    rs_render_say(r, to, to && strcmp(to, "inf") == 0 ? "\\infty" : "0");
+    rs_render_say(r, NULL, "$");
+    rs_render_heading_end(r);
+    rs_render_say(r, "The roots tend to: ", "The roots tend to: ");
+    for (i = 0; i < json_array_size(roots); i++) {
+        const json_t *z = json_array_get(roots, i);
+        const char *mp = js(z, "minpoly");
+        rs_render_linef(r, "", "%s (multiplicity %lld)%s%s", js(z, "value"), ji(z, "multiplicity"),
+                        mp ? ", root of " : "", mp ? mp : "");
+        rs_render_say(r, i ? ", " : "", i ? ", $" : "$");
+        rs_render_poly(r, js(z, "value"));
+        rs_render_sayf(r, " (x%lld)", "$ ($\\times %lld$)", ji(z, "multiplicity"));
+    }
+    rs_render_say(r, ".\n\n", ".\n\n");
+    if (json_is_true(json_object_get(o, "all_roots_to_zero")))
+        rs_render_line(r, "", "%s", "every root tends to 0 (strong decay)");
+    rs_render_assigned(r, o);
+}
+
+/* "k = v, ..." of a JSON object of strings, in the report */
+static void assignments(rs_render_t *r, const json_t *obj)
+{
+    const char *key;
+    json_t *val;
+    int first = 1;
+    json_object_foreach((json_t *) obj, key, val) {
+        rs_render_textf(r, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
+        first = 0;
+    }
+}
+
+/* the report's proof of a claim: one line per condition */
+static void certificate_lines(rs_render_t *r, const json_t *c)
+{
+    size_t i;
+    for (i = 0; i < json_array_size(c); i++) {
+        const json_t *e = json_array_get(c, i);
+        const char *label = i == 0 ? "certificate" : "";
+        if (js(e, "text")) {
+            rs_render_line(r, label, "%s", js(e, "text"));
+            continue;
+        }
+        rs_render_textf(r, "  %-12s %s > 0 since with ", label, js(e, "condition"));
+        assignments(r, json_object_get(e, "substitution"));
+        rs_render_textf(r, " (every s >= 0) the numerator's %lld coefficients are all >= 0",
+                        ji(e, "transformed_terms"));
+        if (js(e, "positive_factor")) rs_render_textf(r, " after dividing by %s > 0", js(e, "positive_factor"));
+        if (ji(e, "polya_power") > 0) rs_render_textf(r, " times (1 + sum s)^%lld", ji(e, "polya_power"));
+        rs_render_textf(r, "\n");
+    }
+    rs_render_line(r, "re-checked", "%s", "yes (independent evaluation at random points of the region)");
+}
+
+/* the derivation's proof of a claim: the substitutions of each condition */
+static void certificate_prose(rs_render_t *r, const json_t *c)
+{
+    size_t i;
+    rs_render_say(r, "Certificate (after each substitution, s >= 0, every coefficient of the numerator is "
+                     "non-negative):\n\n",
+                  "Certificate: after the substitutions below (each $s \\geq 0$), every coefficient of the "
+                  "numerator is non-negative:\n");
+    rs_render_list_begin(r);
+    for (i = 0; i < json_array_size(c); i++) {
+        const char *k;
+        json_t *v;
+        rs_render_item_begin(r);
+        rs_render_math(r, js(json_array_get(c, i), "condition"));
+        rs_render_say(r, " > 0 with", " $> 0$ with ");
+        json_object_foreach(json_object_get(json_array_get(c, i), "substitution"), k, v) {
+            rs_render_say(r, " ", "$");
+            rs_render_poly(r, k);
+            rs_render_say(r, " = ", " = ");
+            rs_render_poly(r, json_string_value(v));
+            rs_render_say(r, ";", "$ ");
+        }
+        rs_render_item_end(r);
+    }
+    rs_render_list_end(r);
+}
+
+void rs_render_claim(rs_render_t *r, const json_t *o)
+{
+    const char *st = js(o, "status");
+    rs_render_line(r, "claim", "%s", js(o, "text"));
+    rs_render_line(r, "status", "%s", st);
+    if (st && strcmp(st, "refuted") == 0) {
+        const json_t *ce = json_object_get(o, "counterexample"), *at = json_object_get(o, "at_counterexample");
+        rs_render_textf(r, "  %-12s ", "counterexample");
+        assignments(r, ce);
+        rs_render_textf(r, "%s\n", json_object_size(ce) == 0 ? "the scheme as given (no free parameter)" : "");
+        if (js(at, "reason")) rs_render_linef(r, "verdict", "%s: %s", js(at, "status"), js(at, "reason"));
+        else rs_render_count(r, at, RS_RENDER_TEXT);
+    } else if (st && strcmp(st, "proved") == 0) {
+        certificate_lines(r, json_object_get(o, "certificate"));
+    } else {
+        rs_render_line(r, "tried", "%s", js(o, "tried"));
+        rs_render_line(r, "failed at", "%s", js(o, "failed_at"));
+    }
+    rs_render_linef(r, "search", "%lld points checked exactly", ji(o, "points_checked"));
+    rs_render_assigned(r, o);
+    rs_render_heading(r, "Claim", "Claim");
+    claim_prose(r, o);
+    if (json_is_array(json_object_get(o, "certificate"))) certificate_prose(r, json_object_get(o, "certificate"));
+}

@@ -1,0 +1,167 @@
+/* layout_numeric.c -- the layouts of the numeric analyses (radius, modes,
+ * simulate, sweep and map) and of any other result: report lines only, the
+ * derivations show none of them. */
+#include <stdlib.h>
+#include <string.h>
+#include <flint/flint.h>
+#include "recstab/radius.h"
+#include "render_impl.h"
+
+/* A root's radius (a double from the JSON) to 2 digits, rounded up. */
+static char *radius_up(double r)
+{
+    arf_t a;
+    char *s;
+    arf_init(a);
+    arf_set_d(a, r);
+    s = rs_radius_arf_str(a, 2, ARF_RND_CEIL);
+    arf_clear(a);
+    return s;
+}
+
+void rs_render_radius(rs_render_t *r, const json_t *o)
+{
+    const json_t *roots = json_object_get(o, "roots");
+    size_t i;
+    rs_render_line(r, "method", "%s", rs_render_jstr(o, "method"));
+    if (json_is_true(json_object_get(o, "certified"))) {
+        char buf[160];
+        rs_render_line(r, "rho", "%s", rs_render_jstr(o, "rho"));
+        rs_render_line(r, "certified", "[%s,", rs_render_jstr(o, "lower"));
+        rs_render_line(r, "", " %s]", rs_render_jstr(o, "upper"));
+        snprintf(buf, sizeof buf, "%lld digits asked, %lld bits used", rs_render_jint(o, "digits"), rs_render_jint(o, "precision_bits"));
+        rs_render_line(r, "precision", "%s", buf);
+        for (i = 0; i < json_array_size(roots); i++) {
+            /* whole strings: cutting a printed decimal short is not a rounding */
+            const json_t *z = json_array_get(roots, i);
+            const char *re = rs_render_jstr(z, "re"), *im = rs_render_jstr(z, "im"), *ab = rs_render_jstr(z, "abs");
+            char *rad = radius_up(json_real_value(json_object_get(z, "radius")));
+            size_t len = strlen(re) + strlen(im) + strlen(ab) + strlen(rad) + 32;
+            char *rb = malloc(len);
+            snprintf(rb, len, "%s %s %si +- %s  |.| = %s", re, im[0] == '-' ? "-" : "+", im[0] == '-' ? im + 1 : im,
+                     rad, ab);
+            rs_render_line(r, i == 0 ? "roots" : "", "%s", rb);
+            free(rb);
+            flint_free(rad);
+        }
+        if (json_object_get(o, "verdict_digits") != NULL) {
+            snprintf(buf, sizeof buf, "raised to %lld digits to separate the interval from 1", rs_render_jint(o, "verdict_digits"));
+            rs_render_line(r, "refined", "%s", buf);
+        }
+        rs_render_line(r, "from radius", "%s", rs_render_jstr(o, "verdict_from_radius"));
+        rs_render_line(r, "exact", "%s (consistent with the radius)", rs_render_jstr(o, "exact_status"));
+        rs_render_line(r, "verdict", "%s (certified by the radius interval)", rs_render_jstr(o, "status"));
+        rs_render_line(r, "monolithic", "%s (exact integration of the coupled system: the reference)", rs_render_jstr(o, "monolithic_rho"));
+    } else {
+        char buf[64];
+        snprintf(buf, sizeof buf, "%.17g (double precision, NOT certified)", json_real_value(json_object_get(o, "rho")));
+        rs_render_line(r, "rho", "%s", buf);
+        rs_render_line(r, "exact", "%s", rs_render_jstr(o, "exact_status"));
+    }
+    rs_render_assigned(r, o);
+}
+
+void rs_render_modes(rs_render_t *r, const json_t *o)
+{
+    const char *groups[] = {"modes", "spurious"};
+    size_t g, i;
+    rs_render_line(r, "h", "%s", rs_render_jstr(o, "h"));
+    for (g = 0; g < 2; g++) {
+        const json_t *m = json_object_get(o, groups[g]);
+        for (i = 0; i < json_array_size(m); i++) {
+            const json_t *e = json_array_get(m, i);
+            char buf[400];
+            if (rs_render_jstr(e, "sigma") == NULL) continue;
+            snprintf(buf, sizeof buf, "sigma %s omega %s damping %s%s%s", rs_render_jstr(e, "sigma"),
+                     rs_render_jstr(e, "omega"), rs_render_jstr(e, "damping_ratio"), rs_render_jstr(e, "frequency_error") ? " freq.error " : "",
+                     rs_render_jstr(e, "frequency_error") ? rs_render_jstr(e, "frequency_error") : "");
+            rs_render_line(r, i == 0 ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
+        }
+    }
+    rs_render_assigned(r, o);
+}
+
+void rs_render_simulate(rs_render_t *r, const json_t *o)
+{
+    char buf[200];
+    snprintf(buf, sizeof buf, "%lld steps from a seeded random start (seed %lld), %lld bits", rs_render_jint(o, "steps"),
+             rs_render_jint(o, "seed"), rs_render_jint(o, "precision_bits"));
+    rs_render_line(r, "run", "%s", buf);
+    rs_render_line(r, "recurrence", "%s", rs_render_jstr(o, "recurrence"));
+    rs_render_line(r, "growth", "%s per step (measured)", rs_render_jstr(o, "growth") ? rs_render_jstr(o, "growth") : "undefined");
+    if (rs_render_jstr(o, "radius")) rs_render_line(r, "radius", "%s (certified)", rs_render_jstr(o, "radius"));
+    if (json_object_get(o, "check")) {
+        const json_t *ck = json_object_get(o, "check");
+        snprintf(buf, sizeof buf, "%s (exact): %s", rs_render_jstr(json_object_get(o, "verdict"), "status"),
+                 json_is_true(json_object_get(ck, "consistent")) ? "consistent with the run"
+                                                                : rs_render_jstr(ck, "disagreement"));
+        rs_render_line(r, "verdict", "%s", buf);
+    }
+    rs_render_assigned(r, o);
+}
+
+void rs_render_sweep(rs_render_t *r, const json_t *o)
+{
+    const char *tab = rs_render_jstr(o, "table");
+    const json_t *v = json_object_get(o, "verdicts"), *d = json_object_get(o, "decided_by");
+    const char *key;
+    json_t *val;
+    char buf[512];
+    size_t off = 0;
+    rs_render_line(r, "request", "%s", rs_render_jstr(o, "text"));
+    buf[0] = '\0';
+    json_object_foreach((json_t *) v, key, val)
+        off += (size_t) snprintf(buf + off, off < sizeof buf ? sizeof buf - off : 0, "%s%s %lld", off ? ", " : "",
+                                 key, (long long) json_integer_value(val));
+    rs_render_line(r, "verdicts", "%s", buf);
+    off = 0;
+    buf[0] = '\0';
+    json_object_foreach((json_t *) d, key, val)
+        off += (size_t) snprintf(buf + off, off < sizeof buf ? sizeof buf - off : 0, "%s%s %lld", off ? ", " : "",
+                                 key, (long long) json_integer_value(val));
+    rs_render_line(r, "decided by", "%s", buf);
+    snprintf(buf, sizeof buf, "%lld points in %.3f s", (long long) json_integer_value(json_object_get(o, "points")),
+             json_real_value(json_object_get(o, "seconds")));
+    rs_render_line(r, "computed", "%s", buf);
+    rs_render_line(r, "csv", "%s", rs_render_jstr(o, "csv"));
+    rs_render_line(r, "note", "%s", rs_render_jstr(o, "table_note"));
+    if (tab != NULL) {
+        /* the table, columns aligned */
+        const char *p = tab;
+        int rowsn = 0;
+        while (*p && rowsn < 60) {
+            const char *nl = strchr(p, '\n');
+            size_t len = nl ? (size_t) (nl - p) : strlen(p);
+            size_t i = 0;
+            rs_render_textf(r, "    ");
+            while (i < len) {
+                size_t j = i;
+                while (j < len && p[j] != ',') j++;
+                rs_render_textf(r, "%-18.*s", (int) (j - i > 17 ? 17 : j - i), p + i);
+                i = j + 1;
+            }
+            rs_render_textf(r, "\n");
+            rowsn++;
+            p += len + (nl ? 1 : 0);
+        }
+        if (*p) rs_render_textf(r, "    ... (all rows: --csv FILE)\n");
+    }
+    rs_render_assigned(r, o);
+}
+
+/* Fallback: every member except "analysis" as key: value. */
+void rs_render_generic(rs_render_t *r, const json_t *o)
+{
+    const char *key;
+    json_t *val;
+    json_object_foreach((json_t *) o, key, val) {
+        if (strcmp(key, "analysis") == 0) continue;
+        if (json_is_string(val)) rs_render_line(r, key, "%s", json_string_value(val));
+        else {
+            char *s = json_dumps(val, JSON_COMPACT | JSON_ENCODE_ANY);
+            rs_render_line(r, key, "%s", s);
+            free(s);
+        }
+    }
+}
+

@@ -1,0 +1,52 @@
+/* markdown.c -- the Markdown derivation backend. */
+#include "render_impl.h"
+
+static void md_raw(FILE *out, const char *s)
+{
+    fputs(s ? s : "(null)", out);   /* as glibc prints a NULL %s */
+}
+
+static void md_code(FILE *out, const char *s)
+{
+    fprintf(out, "`%s`", s ? s : "");
+}
+
+static void md_count(FILE *out, const json_t *o)
+{
+    fprintf(out, "Verdict: **%s** — %lld roots inside, %lld on, %lld outside the unit circle",
+            rs_render_jstr(o, "status"), rs_render_jint(o, "inside"), rs_render_jint(o, "on"),
+            rs_render_jint(o, "outside"));
+    if (rs_render_jint(o, "at_one")) fprintf(out, "; lambda = 1 (x%lld)", rs_render_jint(o, "at_one"));
+    if (rs_render_jint(o, "at_minus_one")) fprintf(out, "; lambda = -1 (x%lld)", rs_render_jint(o, "at_minus_one"));
+    fputs(".\n\n", out);
+}
+
+/* a table with a column per entry, rows labelled z^(n-i) */
+static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
+{
+    size_t i, j, w = 0;
+    (void) powers;
+    for (i = 0; i < json_array_size(rows); i++)
+        if (json_array_size(json_array_get(rows, i)) > w) w = json_array_size(json_array_get(rows, i));
+    fputs("| row |", out);
+    for (j = 0; j < w; j++) fprintf(out, " %zu |", j + 1);
+    fputs("\n|---|", out);
+    for (j = 0; j < w; j++) fputs("---|", out);
+    fputc('\n', out);
+    for (i = 0; i < json_array_size(rows); i++) {
+        const json_t *row = json_array_get(rows, i);
+        fprintf(out, "| z^%zu |", json_array_size(rows) - 1 - i);
+        for (j = 0; j < w; j++) {
+            fputc(' ', out);
+            if (j < json_array_size(row)) md_code(out, json_string_value(json_array_get(row, j)));
+            fputs(" |", out);
+        }
+        fputc('\n', out);
+    }
+    fputc('\n', out);
+}
+
+const rs_render_backend_t rs_render_markdown_backend = {
+    RS_RENDER_MARKDOWN, NULL, NULL, md_raw, md_raw, md_code, md_code,
+    md_count, md_rows, "### ", "\n\n", "", "- ", "\n", "\n"
+};
