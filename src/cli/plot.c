@@ -543,200 +543,246 @@ static void plot_dir_drop(const char *dir, size_t n)
     pthread_mutex_unlock(&tidy_lock);
 }
 
-int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
-{
-    const char *path = o->path;
-    size_t n = collect(docs, NULL), i, npanels = 0, nmaps = 0;
+/* What one --plot draws: the tables, the folder their CSV files go to, and
+ * the panels they need. */
+typedef struct {
     tab_t *tabs;
-    const char *ext = ext_of(path), *tdir = getenv("TMPDIR");
-    char dir[4096], p[4096 + 64];
-    const char *kinds[3] = {"radius", "stability", "modes"};
-    int has_kind[3] = {0, 0, 0}, k, fd, status = 0, cols, rows, nmodes = 0;
-    FILE *g;
-    pid_t pid;
-    if (n == 0) {
-        snprintf(err, errlen, "--plot: the run has no sweep or map to plot");
-        return -1;
-    }
-    if (strcmp(ext, "png") != 0 && strcmp(ext, "svg") != 0) {
-        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", path);
-        return -1;
-    }
-    tabs = calloc(n + 1, sizeof(tab_t));
-    collect(docs, tabs);
-    snprintf(dir, sizeof dir, "%s/recstab-plot.XXXXXX", tdir && *tdir ? tdir : "/tmp");
+    size_t n, nmaps, npanels;
+    char dir[4096];
+    int has_kind[3];   /* sweeps of radius, stability, modes */
+    int nmodes;        /* mode panels per quantity (0: one principal-mode panel) */
+} plot_t;
+
+static const char *const plot_kinds[3] = {"radius", "stability", "modes"};
+
+static int is_sweep_of(const json_t *tab, const char *kind)
+{
+    return strcmp(jstr(tab, "analysis"), "sweep") == 0 && strcmp(jstr(tab, "of"), kind) == 0;
+}
+
+/* the plot's private folder under TMPDIR, registered for the signal handler */
+static int plot_dir_make(plot_t *pl, char *err, size_t errlen)
+{
+    const char *tdir = getenv("TMPDIR");
+    snprintf(pl->dir, sizeof pl->dir, "%s/recstab-plot.XXXXXX", tdir && *tdir ? tdir : "/tmp");
     pthread_mutex_lock(&tidy_lock);
-    if (mkdtemp(dir) != NULL) {
-        snprintf(tidy_dir, sizeof tidy_dir, "%s", dir);
-        tidy_dir_files = n;
+    if (mkdtemp(pl->dir) != NULL) {
+        snprintf(tidy_dir, sizeof tidy_dir, "%s", pl->dir);
+        tidy_dir_files = pl->n;
     }
     pthread_mutex_unlock(&tidy_lock);
     if (tidy_dir[0] == '\0') {
         snprintf(err, errlen, "--plot: cannot create a temporary directory: %s", strerror(errno));
-        free(tabs);
         return -1;
     }
-    for (i = 0; i < n; i++) {
-        const char *a = jstr(tabs[i].el, "analysis"), *of = jstr(tabs[i].el, "of");
-        snprintf(p, sizeof p, "%s/t%zu.csv", dir, i);
-        write_file(p, jstr(tabs[i].el, "table"));
-        if (jstr(tabs[i].el, "boundary_table")) {
-            snprintf(p, sizeof p, "%s/b%zu.csv", dir, i);
-            write_file(p, jstr(tabs[i].el, "boundary_table"));
+    return 0;
+}
+
+/* Each table (and its exact boundary) as a CSV file in the folder; counts
+ * the maps and the kinds of sweep. */
+static void plot_write_tables(plot_t *pl)
+{
+    char p[4096 + 64];
+    size_t i;
+    int k;
+    for (i = 0; i < pl->n; i++) {
+        const char *a = jstr(pl->tabs[i].el, "analysis"), *of = jstr(pl->tabs[i].el, "of");
+        snprintf(p, sizeof p, "%s/t%zu.csv", pl->dir, i);
+        write_file(p, jstr(pl->tabs[i].el, "table"));
+        if (jstr(pl->tabs[i].el, "boundary_table")) {
+            snprintf(p, sizeof p, "%s/b%zu.csv", pl->dir, i);
+            write_file(p, jstr(pl->tabs[i].el, "boundary_table"));
         }
-        if (strcmp(a, "map") == 0) nmaps++;
-        else for (k = 0; k < 3; k++) if (of && strcmp(of, kinds[k]) == 0) has_kind[k] = 1;
+        if (strcmp(a, "map") == 0) pl->nmaps++;
+        else for (k = 0; k < 3; k++) if (of && strcmp(of, plot_kinds[k]) == 0) pl->has_kind[k] = 1;
     }
-    /* modes sweeps: one panel per quantity and reference frequency (as the
-     * frequency-error / damping-ratio panels of Olivier et al.'s Fig. 12.4) */
-    for (i = 0; i < n; i++) {
-        const json_t *tab = tabs[i].el;
+}
+
+/* modes sweeps: one panel per quantity and reference frequency (as the
+ * frequency-error / damping-ratio panels of Olivier et al.'s Fig. 12.4) */
+static void plot_count_panels(plot_t *pl)
+{
+    size_t i;
+    for (i = 0; i < pl->n; i++) {
+        const json_t *tab = pl->tabs[i].el;
         int m;
-        if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), "modes") != 0) continue;
+        if (!is_sweep_of(tab, "modes")) continue;
         for (m = 1; m <= 8; m++) {
             char cname[32];
             snprintf(cname, sizeof cname, "damping_ratio_%d", m);
-            if (col_index(tab, cname) > 0 && m > nmodes) nmodes = m;
+            if (col_index(tab, cname) > 0 && m > pl->nmodes) pl->nmodes = m;
         }
     }
-    npanels = nmaps + (size_t) (has_kind[0] + has_kind[1]) + (size_t) (has_kind[2] ? 2 * (nmodes > 0 ? nmodes : 1) : 0);
-    cols = npanels > 1 ? 2 : 1;
-    rows = (int) ((npanels + (size_t) cols - 1) / (size_t) cols);
-    fd = stage_open(o, err, errlen);
-    if (fd < 0) { plot_dir_drop(dir, n); free(tabs); return -1; }
-    close(fd);
-    snprintf(p, sizeof p, "%s/plot.gp", dir);
+    pl->npanels = pl->nmaps + (size_t) (pl->has_kind[0] + pl->has_kind[1])
+                  + (size_t) (pl->has_kind[2] ? 2 * (pl->nmodes > 0 ? pl->nmodes : 1) : 0);
+}
+
+/* a map: one panel, the verdict (or the radius capped at 2) over the grid */
+static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
+{
+    json_t *tab = pl->tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
+    int radius = strcmp(jstr(tab, "of"), "radius") == 0;
+    int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
+    fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\n", g);
+    fputs("set title ", g);
+    put_q(g, legend(pl->tabs + i));
+    fputs("\nset xlabel ", g);
+    put_q(g, json_string_value(json_array_get(params, 0)));
+    fputs("\nset ylabel ", g);
+    put_q(g, json_string_value(json_array_get(params, 1)));
+    fputs("\nset autoscale fix\n", g);
+    if (radius)
+        fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
+              "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
+    else
+        fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
+              "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
+              "1.5 '#d73027', 2.5 '#d73027')\n", g);
+    fputs("plot ", g);
+    put_table(g, pl->dir, 't', i);
+    fprintf(g, " skip 1 using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
+            col_index(tab, json_string_value(json_array_get(params, 1))));
+    if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(tab, "radius"), col_index(tab, "radius"));
+    else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(tab, "code"), col_index(tab, "code"));
+    fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
+    if (jstr(tab, "boundary_table"))
+    {
+        fputs(", ", g);
+        put_table(g, pl->dir, 'b', i);
+        fputs(" skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
+              "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
+    }
+    fputc('\n', g);
+}
+
+/* one sweep's curve(s) in the panel of kind k */
+static void plot_sweep_curve(FILE *g, const plot_t *pl, size_t i, int k)
+{
+    json_t *tab = pl->tabs[i].el;
+    int x = col_index(tab, jstr(tab, "param"));
+    put_table(g, pl->dir, 't', i);
+    if (k == 0) {
+        fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "radius"));
+        put_q(g, legend(pl->tabs + i));
+    } else if (k == 1) {
+        fprintf(g, " skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
+                col_index(tab, "code"), col_index(tab, "code"));
+        put_q(g, legend(pl->tabs + i));
+    } else {
+        char t2[600];
+        fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "damping_ratio_1"));
+        snprintf(t2, sizeof t2, "%s: damping ratio", legend(pl->tabs + i));
+        put_q(g, t2);
+        fputs(", ", g);
+        put_table(g, pl->dir, 't', i);
+        fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(tab, "frequency_error_1"));
+        snprintf(t2, sizeof t2, "%s: frequency error", legend(pl->tabs + i));
+        put_q(g, t2);
+    }
+}
+
+/* sweeps: one panel per kind, every case overlaid */
+static void plot_sweep_panels(FILE *g, const plot_t *pl)
+{
+    size_t i;
+    int k;
+    for (k = 0; k < 3; k++) {
+        int first = 1;
+        if (!pl->has_kind[k] || (k == 2 && pl->nmodes > 0)) continue;
+        sweep_panel_start(g, pl->tabs, pl->n, plot_kinds[k]);
+        if (k == 0) fputs("set ylabel 'spectral radius'\nset title 'certified spectral radius'\n", g);
+        if (k == 1) fputs("set ylabel 'verdict'\nset yrange [-0.5:2.5]\nset ytics ('stable' 0, 'marginal' 1, "
+                          "'unstable' 2)\nset title 'exact verdict'\n", g);
+        if (k == 2) fputs("set ylabel 'damping ratio, frequency error'\nset title 'principal mode'\n", g);
+        fputs("plot ", g);
+        for (i = 0; i < pl->n; i++) {
+            if (!is_sweep_of(pl->tabs[i].el, plot_kinds[k])) continue;
+            if (!first) fputs(", ", g);
+            first = 0;
+            plot_sweep_curve(g, pl, i, k);
+        }
+        if (k == 0) fputs(", 1 with lines dt 2 lc rgb 'gray' title 'unit circle'", g);
+        fputc('\n', g);
+    }
+}
+
+/* modes sweeps with references: a panel per quantity and mode */
+static void plot_mode_panels(FILE *g, const plot_t *pl)
+{
+    const char *qcol[2] = {"frequency_error", "damping_ratio"};
+    const char *qlab[2] = {"relative frequency error", "damping ratio"};
+    int qn, m;
+    size_t i;
+    for (qn = 0; qn < 2 && pl->nmodes > 0; qn++)
+        for (m = 1; m <= pl->nmodes; m++) {
+            int first = 1;
+            char cname[48], ttl[128];
+            sweep_panel_start(g, pl->tabs, pl->n, "modes");
+            snprintf(ttl, sizeof ttl, "%s, mode %d", qlab[qn], m);
+            fputs("set title ", g);
+            put_q(g, ttl);
+            fputs("\nset ylabel ", g);
+            put_q(g, qlab[qn]);
+            fputs("\nplot ", g);
+            snprintf(cname, sizeof cname, "%s_%d", qcol[qn], m);
+            for (i = 0; i < pl->n; i++) {
+                json_t *tab = pl->tabs[i].el;
+                if (!is_sweep_of(tab, "modes") || col_index(tab, cname) <= 0) continue;
+                if (!first) fputs(", ", g);
+                first = 0;
+                put_table(g, pl->dir, 't', i);
+                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ",
+                        col_index(tab, jstr(tab, "param")), col_index(tab, cname));
+                put_q(g, legend(pl->tabs + i));
+            }
+            if (first) fputs("0 notitle", g);
+            fputc('\n', g);
+        }
+}
+
+/* the gnuplot script: terminal and output (the staged file), then every panel */
+static void plot_write_script(const plot_t *pl, const rs_cli_out_t *o, const char *ext)
+{
+    char p[4096 + 64];
+    int cols = pl->npanels > 1 ? 2 : 1, rows = (int) ((pl->npanels + (size_t) cols - 1) / (size_t) cols);
+    FILE *g;
+    size_t i;
+    snprintf(p, sizeof p, "%s/plot.gp", pl->dir);
     g = fopen(p, "w");
     if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     else fprintf(g, "set terminal svg size %d,%d noenhanced\n", 800 * cols, 600 * rows);
     fputs("set output ", g);
     put_path(g, o->tmp);
     fputs("\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
-    if (npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
-    /* maps: one panel each */
-    for (i = 0; i < n; i++) {
-        json_t *tab = tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
-        int radius = strcmp(jstr(tab, "of"), "radius") == 0;
-        int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
-        if (strcmp(jstr(tab, "analysis"), "map") != 0) continue;
-        fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\n", g);
-        fputs("set title ", g);
-        put_q(g, legend(tabs + i));
-        fputs("\nset xlabel ", g);
-        put_q(g, json_string_value(json_array_get(params, 0)));
-        fputs("\nset ylabel ", g);
-        put_q(g, json_string_value(json_array_get(params, 1)));
-        fputs("\nset autoscale fix\n", g);
-        if (radius)
-            fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
-                  "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
-        else
-            fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
-                  "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
-                  "1.5 '#d73027', 2.5 '#d73027')\n", g);
-        fputs("plot ", g);
-        put_table(g, dir, 't', i);
-        fprintf(g, " skip 1 using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
-                col_index(tab, json_string_value(json_array_get(params, 1))));
-        if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(tab, "radius"), col_index(tab, "radius"));
-        else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(tab, "code"), col_index(tab, "code"));
-        fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
-        if (jstr(tab, "boundary_table"))
-        {
-            fputs(", ", g);
-            put_table(g, dir, 'b', i);
-            fputs(" skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
-                  "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
-        }
-        fputc('\n', g);
-    }
-    /* sweeps: one panel per kind, every case overlaid */
-    for (k = 0; k < 3; k++) {
-        int first = 1;
-        if (!has_kind[k] || (k == 2 && nmodes > 0)) continue;
-        sweep_panel_start(g, tabs, n, kinds[k]);
-        if (k == 0) fputs("set ylabel 'spectral radius'\nset title 'certified spectral radius'\n", g);
-        if (k == 1) fputs("set ylabel 'verdict'\nset yrange [-0.5:2.5]\nset ytics ('stable' 0, 'marginal' 1, "
-                          "'unstable' 2)\nset title 'exact verdict'\n", g);
-        if (k == 2) fputs("set ylabel 'damping ratio, frequency error'\nset title 'principal mode'\n", g);
-        fputs("plot ", g);
-        for (i = 0; i < n; i++) {
-            json_t *tab = tabs[i].el;
-            const char *prm = jstr(tab, "param");
-            int x = col_index(tab, prm);
-            if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), kinds[k]) != 0) continue;
-            if (!first) fputs(", ", g);
-            first = 0;
-            if (k == 0) {
-                put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "radius"));
-                put_q(g, legend(tabs + i));
-            } else if (k == 1) {
-                put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
-                        col_index(tab, "code"), col_index(tab, "code"));
-                put_q(g, legend(tabs + i));
-            } else {
-                char t2[600];
-                put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "damping_ratio_1"));
-                snprintf(t2, sizeof t2, "%s: damping ratio", legend(tabs + i));
-                put_q(g, t2);
-                fputs(", ", g);
-                put_table(g, dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(tab, "frequency_error_1"));
-                snprintf(t2, sizeof t2, "%s: frequency error", legend(tabs + i));
-                put_q(g, t2);
-            }
-        }
-        if (k == 0) fputs(", 1 with lines dt 2 lc rgb 'gray' title 'unit circle'", g);
-        fputc('\n', g);
-    }
-    {
-        int qn, m;
-        const char *qcol[2] = {"frequency_error", "damping_ratio"};
-        const char *qlab[2] = {"relative frequency error", "damping ratio"};
-        for (qn = 0; qn < 2 && nmodes > 0; qn++)
-            for (m = 1; m <= nmodes; m++) {
-                int first = 1;
-                char cname[48], ttl[128];
-                sweep_panel_start(g, tabs, n, "modes");
-                snprintf(ttl, sizeof ttl, "%s, mode %d", qlab[qn], m);
-                fputs("set title ", g);
-                put_q(g, ttl);
-                fputs("\nset ylabel ", g);
-                put_q(g, qlab[qn]);
-                fputs("\nplot ", g);
-                snprintf(cname, sizeof cname, "%s_%d", qcol[qn], m);
-                for (i = 0; i < n; i++) {
-                    json_t *tab = tabs[i].el;
-                    if (strcmp(jstr(tab, "analysis"), "sweep") != 0 || strcmp(jstr(tab, "of"), "modes") != 0) continue;
-                    if (col_index(tab, cname) <= 0) continue;
-                    if (!first) fputs(", ", g);
-                    first = 0;
-                    put_table(g, dir, 't', i);
-                    fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ",
-                            col_index(tab, jstr(tab, "param")), col_index(tab, cname));
-                    put_q(g, legend(tabs + i));
-                }
-                if (first) fputs("0 notitle", g);
-                fputc('\n', g);
-            }
-    }
-    if (npanels > 1) fputs("unset multiplot\n", g);
+    if (pl->npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
+    for (i = 0; i < pl->n; i++)
+        if (strcmp(jstr(pl->tabs[i].el, "analysis"), "map") == 0) plot_map_panel(g, pl, i);
+    plot_sweep_panels(g, pl);
+    plot_mode_panels(g, pl);
+    if (pl->npanels > 1) fputs("unset multiplot\n", g);
     fputs("set output\n", g);
     fclose(g);
+}
+
+/* Runs gnuplot on the script (registered for the signal handler while it
+ * runs); its log becomes the message when it fails. */
+static int plot_run_gnuplot(const char *dir, char *err, size_t errlen)
+{
+    char p[4096 + 64], msg[300] = "";
+    int status = 0;
+    pid_t pid;
+    FILE *lf;
     fflush(stdout);
     pthread_mutex_lock(&tidy_lock);   /* a signal now finds gnuplot registered */
     pid = fork();
     if (pid == 0) {
-        int lf;
+        int fd;
         sigset_t none;
         sigemptyset(&none);
         pthread_sigmask(SIG_SETMASK, &none, NULL);
         snprintf(p, sizeof p, "%s/gnuplot.log", dir);
-        lf = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        if (lf >= 0) { dup2(lf, 1); dup2(lf, 2); close(lf); }
+        fd = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (fd >= 0) { dup2(fd, 1); dup2(fd, 2); close(fd); }
         /* "./" keeps a relative TMPDIR starting with '-' from being an option */
         snprintf(p, sizeof p, "%s%s/plot.gp", dir[0] == '/' ? "" : "./", dir);
         execlp("gnuplot", "gnuplot", p, (char *) NULL);
@@ -748,36 +794,63 @@ int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
     pthread_mutex_lock(&tidy_lock);
     tidy_child = 0;
     pthread_mutex_unlock(&tidy_lock);
-    if (pid < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        char msg[300] = "";
-        FILE *lf;
-        snprintf(p, sizeof p, "%s/gnuplot.log", dir);
-        lf = fopen(p, "r");
-        if (lf) {
-            size_t m = fread(msg, 1, sizeof msg - 1, lf);
-            msg[m] = '\0';
-            fclose(lf);
-        }
-        if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127)
-            snprintf(err, errlen, "--plot: gnuplot not found (Debian: apt-get install gnuplot-nox)");
-        else
-            snprintf(err, errlen, "--plot: gnuplot failed: %s", msg);
-        stage_drop(o);
-        plot_dir_drop(dir, n);
-        free(tabs);
+    if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return 0;
+    snprintf(p, sizeof p, "%s/gnuplot.log", dir);
+    lf = fopen(p, "r");
+    if (lf) {
+        size_t m = fread(msg, 1, sizeof msg - 1, lf);
+        msg[m] = '\0';
+        fclose(lf);
+    }
+    if (pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        snprintf(err, errlen, "--plot: gnuplot not found (Debian: apt-get install gnuplot-nox)");
+    else
+        snprintf(err, errlen, "--plot: gnuplot failed: %s", msg);
+    return -1;
+}
+
+/* the staged output must hold what gnuplot wrote */
+static int plot_check_output(const rs_cli_out_t *o, char *err, size_t errlen)
+{
+    struct stat st;
+    if (stat(o->tmp, &st) != 0 || st.st_size == 0) {
+        snprintf(err, errlen, "--plot: gnuplot wrote nothing");
         return -1;
     }
-    {
-        struct stat st;
-        if (stat(o->tmp, &st) != 0 || st.st_size == 0) {
-            snprintf(err, errlen, "--plot: gnuplot wrote nothing");
-            stage_drop(o);
-            plot_dir_drop(dir, n);
-            free(tabs);
-            return -1;
-        }
-    }
-    plot_dir_drop(dir, n);
-    free(tabs);
     return 0;
+}
+
+int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
+{
+    const char *ext = ext_of(o->path);
+    plot_t pl;
+    int fd, rc = -1;
+    memset(&pl, 0, sizeof pl);
+    pl.n = collect(docs, NULL);
+    if (pl.n == 0) {
+        snprintf(err, errlen, "--plot: the run has no sweep or map to plot");
+        return -1;
+    }
+    if (strcmp(ext, "png") != 0 && strcmp(ext, "svg") != 0) {
+        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", o->path);
+        return -1;
+    }
+    pl.tabs = calloc(pl.n + 1, sizeof(tab_t));
+    collect(docs, pl.tabs);
+    if (plot_dir_make(&pl, err, errlen) != 0) {
+        free(pl.tabs);
+        return -1;
+    }
+    plot_write_tables(&pl);
+    plot_count_panels(&pl);
+    fd = stage_open(o, err, errlen);
+    if (fd >= 0) {
+        close(fd);
+        plot_write_script(&pl, o, ext);
+        if (plot_run_gnuplot(pl.dir, err, errlen) == 0 && plot_check_output(o, err, errlen) == 0) rc = 0;
+        else stage_drop(o);
+    }
+    plot_dir_drop(pl.dir, pl.n);
+    free(pl.tabs);
+    return rc;
 }
