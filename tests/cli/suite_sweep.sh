@@ -100,6 +100,12 @@ if command -v gnuplot >/dev/null 2>&1; then
     if grep -q '<svg' "$T/sw.svg" && grep -q 'Central difference' "$T/sw.svg" && grep -q 'Forward Euler' "$T/sw.svg"; then
         ok "--plot overlays the cases with their titles"; else fail "--plot overlay legends"; fi
     if grep -q '>w<' "$T/sw.svg"; then ok "--plot axis label names the parameter"; else fail "--plot axis label"; fi
+    # a map and a sweep in one plot (the sweep panel used to read the map's
+    # missing "param" and crash)
+    "$RS" --plot "$T/mix.svg" --set muh=1 --set wh=1 --analyse "map alpha 0 3 4, m 1/10 20 3" \
+        --analyse "sweep alpha from 0 to 3 steps 5 of radius" --set m=10 "$PARK" >/dev/null 2>"$T/err"; rc=$?
+    check_exit "--plot map and sweep together exit" 0 "$rc"
+    if grep -q 'spectral radius' "$T/mix.svg"; then ok "--plot map and sweep: both panels"; else fail "--plot map and sweep: $(cat "$T/err")"; fi
     "$RS" --plot "$T/x.pdf" --analyse "$SW" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
     check_exit "--plot unknown extension" 2 "$rc"
     "$RS" --plot "$T/none.png" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
