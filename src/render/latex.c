@@ -176,7 +176,7 @@ static void latex_rows(FILE *out, const json_t *rows, const json_t *powers)
 }
 
 const rs_render_backend_t rs_render_latex_backend = {
-    RS_RENDER_LATEX, NULL, NULL, rs_render_tex_text, tex_poly, tex_math, tex_code,
+    RS_RENDER_LATEX, NULL, NULL, NULL, rs_render_tex_text, tex_poly, tex_math, tex_code,
     latex_count, latex_rows, "\\subsection*{", "}\n",
     "\\begin{itemize}\n", "\\item ", "\n", "\\end{itemize}\n"
 };

@@ -19,11 +19,13 @@ void rs_render_assigned(rs_render_t *r, const json_t *o)
     json_t *val;
     size_t i;
     int first = 1;
-    for (i = 0; i < json_array_size(nip); i++)
-        rs_render_textf(r, "%s%s%s", i == 0 ? "  not in p     " : ", ", json_string_value(json_array_get(nip, i)),
+    for (i = 0; i < json_array_size(nip); i++) {
+        if (i == 0) rs_render_label(r, "not in p");
+        rs_render_textf(r, "%s%s%s", i == 0 ? "" : ", ", json_string_value(json_array_get(nip, i)),
                         i + 1 == json_array_size(nip) ? " (p does not depend on them: no value needed)\n" : "");
+    }
     if (!json_is_object(sub) || json_object_size(sub) == 0) return;
-    rs_render_textf(r, "  %-12s ", "at");
+    rs_render_label(r, "at");
     json_object_foreach((json_t *) sub, key, val) {
         rs_render_textf(r, "%s%s = %s", first ? "" : ", ", key, json_string_value(val));
         first = 0;
@@ -37,7 +39,7 @@ void rs_render_string_list(rs_render_t *r, const char *label, const json_t *arr,
 {
     size_t i;
     if (!json_is_array(arr) || json_array_size(arr) == 0) return;
-    rs_render_textf(r, "  %-12s ", label);
+    rs_render_label(r, label);
     for (i = 0; i < json_array_size(arr); i++) {
         const json_t *v = json_array_get(arr, i);
         if (i > 0) rs_render_textf(r, "%s", sep);
@@ -121,12 +123,13 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
     rs_render_list_end(r);
 }
 
-/* The report's condition lines: first, then next, unless "never". */
-static void condition_lines(rs_render_t *r, const json_t *o, const char *first, const char *next)
+/* The report's condition lines: first, then next (none when the result says
+ * "never" and never_counts). */
+static void condition_lines(rs_render_t *r, const json_t *o, const char *first, const char *next, int never_counts)
 {
     const json_t *c = json_object_get(o, "conditions");
     size_t i;
-    for (i = 0; i < json_array_size(c) && js(o, "never") == NULL; i++)
+    for (i = 0; i < json_array_size(c) && !(never_counts && js(o, "never") != NULL); i++)
         rs_render_line(r, i == 0 ? first : next, "%s", json_string_value(json_array_get(c, i)));
 }
 
@@ -308,7 +311,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
                        "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
                        "(every condition holds under the assumptions)");
     }
-    condition_lines(r, o, "conditions", "");
+    condition_lines(r, o, "conditions", "", 1);
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
     rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
@@ -338,7 +341,7 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
         if (json_array_size(json_object_get(o, "conditions")) == 0)
             rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
                                                   "assumptions");
-        condition_lines(r, o, "stable iff", "and");
+        condition_lines(r, o, "stable iff", "and", 0);
         rs_render_line(r, "note", "%s", js(o, "note"));
         rs_render_sample_check(r, o);
         rs_render_assigned(r, o);
@@ -446,7 +449,7 @@ void rs_render_region(rs_render_t *r, const json_t *o)
                 rs_render_line(r, "stable iff", "%s", "true: every condition holds under the assumptions");
             condition_list(r, c, "Stable if and only if:\n\n", "Stable if and only if:\n", NULL);
         }
-        condition_lines(r, o, "stable iff", "and");
+        condition_lines(r, o, "stable iff", "and", 1);
         rs_render_line(r, "note", "%s", js(o, "note"));
         rs_render_sample_check(r, o);
         rs_render_assigned(r, o);
@@ -511,7 +514,8 @@ static void certificate_lines(rs_render_t *r, const json_t *c)
             rs_render_line(r, label, "%s", js(e, "text"));
             continue;
         }
-        rs_render_textf(r, "  %-12s %s > 0 since with ", label, js(e, "condition"));
+        rs_render_label(r, label);
+        rs_render_textf(r, "%s > 0 since with ", js(e, "condition"));
         assignments(r, json_object_get(e, "substitution"));
         rs_render_textf(r, " (every s >= 0) the numerator's %lld coefficients are all >= 0",
                         ji(e, "transformed_terms"));
@@ -556,7 +560,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
     rs_render_line(r, "status", "%s", st);
     if (st && strcmp(st, "refuted") == 0) {
         const json_t *ce = json_object_get(o, "counterexample"), *at = json_object_get(o, "at_counterexample");
-        rs_render_textf(r, "  %-12s ", "counterexample");
+        rs_render_label(r, "counterexample");
         assignments(r, ce);
         rs_render_textf(r, "%s\n", json_object_size(ce) == 0 ? "the scheme as given (no free parameter)" : "");
         if (js(at, "reason")) rs_render_linef(r, "verdict", "%s: %s", js(at, "status"), js(at, "reason"));

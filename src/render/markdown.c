@@ -47,6 +47,6 @@ static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
 }
 
 const rs_render_backend_t rs_render_markdown_backend = {
-    RS_RENDER_MARKDOWN, NULL, NULL, md_raw, md_raw, md_code, md_code,
+    RS_RENDER_MARKDOWN, NULL, NULL, NULL, md_raw, md_raw, md_code, md_code,
     md_count, md_rows, "### ", "\n\n", "", "- ", "\n", "\n"
 };

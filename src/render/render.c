@@ -57,6 +57,11 @@ void rs_render_textf(rs_render_t *r, const char *fmt, ...)
     va_end(ap);
 }
 
+void rs_render_label(rs_render_t *r, const char *label)
+{
+    if (r->be->label != NULL) r->be->label(r->out, label);
+}
+
 static const char *pick(const rs_render_t *r, const char *md, const char *tex)
 {
     return r->be->kind == RS_RENDER_MARKDOWN ? md : r->be->kind == RS_RENDER_LATEX ? tex : NULL;

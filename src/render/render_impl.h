@@ -29,6 +29,7 @@ typedef struct {
     int kind;
     /* text report lines (NULL in the derivations) */
     void (*field)(FILE *out, const char *label, const char *fmt, va_list ap);
+    void (*label)(FILE *out, const char *label);
     void (*textf)(FILE *out, const char *fmt, va_list ap);
     /* values inside prose (no-ops in the text report) */
     void (*esc)(FILE *out, const char *s);    /* a string as running text */
@@ -61,6 +62,8 @@ void rs_render_line(rs_render_t *r, const char *label, const char *fmt, const ch
 void rs_render_linef(rs_render_t *r, const char *label, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void rs_render_textf(rs_render_t *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* the start of a report line composed with rs_render_textf: "  LABEL        " */
+void rs_render_label(rs_render_t *r, const char *label);
 
 /* derivation sentences: md for Markdown, tex for LaTeX (NULL: nothing); the
  * _f form formats both with the same arguments (a format may use fewer) */

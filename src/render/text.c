@@ -3,9 +3,14 @@
 
 #define LABEL_W 12
 
-static void text_field(FILE *out, const char *label, const char *fmt, va_list ap)
+static void text_label(FILE *out, const char *label)
 {
     fprintf(out, "  %-*s ", LABEL_W, label ? label : "");
+}
+
+static void text_field(FILE *out, const char *label, const char *fmt, va_list ap)
+{
+    text_label(out, label);
     vfprintf(out, fmt, ap);
     fputc('\n', out);
 }
@@ -84,6 +89,6 @@ static void text_rows(FILE *out, const json_t *rows, const json_t *powers)
 }
 
 const rs_render_backend_t rs_render_text_backend = {
-    RS_RENDER_TEXT, text_field, text_textf, text_none, text_none, text_none, text_none,
+    RS_RENDER_TEXT, text_field, text_label, text_textf, text_none, text_none, text_none, text_none,
     text_count, text_rows, "", "", "", "", "", ""
 };

@@ -67,6 +67,9 @@ stability|$cd_|w=1|stability
 stability-cosim|cases/li-explicit-k1.case||stability
 radius|$cd_|w=1|radius
 expect-different|$cd_||expect charpoly lambda^2 + 1
+not-in-p|cases/textbook/jordan-vs-identity.case||stability
+jury-regular|cases/textbook/bdf2.case|w=1|jury
+hurwitz-numeric|cases/textbook/bdf2.case|w=1|hurwitz
 EXTRA
     echo "recorded $(ls "$out" | grep -c '\.json$') cases in $out"
     ;;
