@@ -157,7 +157,6 @@ static void latex_count(FILE *out, const json_t *o)
 static void latex_rows(FILE *out, const json_t *rows, const json_t *powers)
 {
     size_t i, j, w = 0;
-    (void) powers;
     for (i = 0; i < json_array_size(rows); i++)
         if (json_array_size(json_array_get(rows, i)) > w) w = json_array_size(json_array_get(rows, i));
     fputs("\\[\\begin{array}{r|", out);
@@ -165,7 +164,7 @@ static void latex_rows(FILE *out, const json_t *rows, const json_t *powers)
     fputs("}\n", out);
     for (i = 0; i < json_array_size(rows); i++) {
         const json_t *row = json_array_get(rows, i);
-        fprintf(out, "z^{%zu}", json_array_size(rows) - 1 - i);
+        fprintf(out, "z^{%ld}", rs_render_row_power(rows, powers, i));
         for (j = 0; j < w; j++) {
             fputs(" & ", out);
             if (j < json_array_size(row)) rs_derivation_tex_poly(out, json_string_value(json_array_get(row, j)));

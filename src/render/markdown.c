@@ -21,11 +21,10 @@ static void md_count(FILE *out, const json_t *o)
     fputs(".\n\n", out);
 }
 
-/* a table with a column per entry, rows labelled z^(n-i) */
+/* a table with a column per entry, each row labelled by its power of z */
 static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
 {
     size_t i, j, w = 0;
-    (void) powers;
     for (i = 0; i < json_array_size(rows); i++)
         if (json_array_size(json_array_get(rows, i)) > w) w = json_array_size(json_array_get(rows, i));
     fputs("| row |", out);
@@ -35,7 +34,7 @@ static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
     fputc('\n', out);
     for (i = 0; i < json_array_size(rows); i++) {
         const json_t *row = json_array_get(rows, i);
-        fprintf(out, "| z^%zu |", json_array_size(rows) - 1 - i);
+        fprintf(out, "| z^%ld |", rs_render_row_power(rows, powers, i));
         for (j = 0; j < w; j++) {
             fputc(' ', out);
             if (j < json_array_size(row)) md_code(out, json_string_value(json_array_get(row, j)));

@@ -103,6 +103,12 @@ void rs_render_count(rs_render_t *r, const json_t *o, int mask)
     if (r->be->kind & mask) r->be->count(r->out, o);
 }
 
+long rs_render_row_power(const json_t *rows, const json_t *powers, size_t i)
+{
+    const json_t *p = json_array_get(powers, i);
+    return json_is_integer(p) ? (long) json_integer_value(p) : (long) (json_array_size(rows) - 1 - i);
+}
+
 void rs_render_rows(rs_render_t *r, const json_t *rows, const json_t *powers)
 {
     r->be->rows(r->out, rows, powers);

@@ -82,6 +82,9 @@ void rs_render_heading_end(rs_render_t *r);
 
 /* verdict counts, for the backends in mask only */
 void rs_render_count(rs_render_t *r, const json_t *o, int mask);
+/* The power of z labelling row i of a Routh table: the row's own power from
+ * "powers" (a generalised step may skip powers), else deg - i. */
+long rs_render_row_power(const json_t *rows, const json_t *powers, size_t i);
 void rs_render_rows(rs_render_t *r, const json_t *rows, const json_t *powers);
 
 /* a bulleted list (derivations) */

@@ -75,12 +75,11 @@ static void text_count(FILE *out, const json_t *o)
  * powers, so each row's own power when given */
 static void text_rows(FILE *out, const json_t *rows, const json_t *powers)
 {
-    size_t i, j, deg = json_array_size(rows) - 1;
+    size_t i, j;
     for (i = 0; i < json_array_size(rows); i++) {
         const json_t *row = json_array_get(rows, i);
         char lab[32];
-        snprintf(lab, sizeof lab, "z^%ld", json_is_integer(json_array_get(powers, i))
-                 ? (long) json_integer_value(json_array_get(powers, i)) : (long) (deg - i));
+        snprintf(lab, sizeof lab, "z^%ld", rs_render_row_power(rows, powers, i));
         fprintf(out, "  %-*s ", LABEL_W, lab);
         for (j = 0; j < json_array_size(row); j++)
             fprintf(out, "%s%s", j ? "   " : "", json_string_value(json_array_get(row, j)));

@@ -172,6 +172,24 @@ static const char *doc_branches =
     "    {\"status\": \"unstable\", \"lo\": {\"approx\": \"1.41\", \"root_index\": 1, \"minpoly\": \"x^2 - 2\"},"
     "     \"lo_closed\": true, \"hi\": null, \"hi_closed\": false}]}]}";
 
+/* A generalised Routh step that skips a power: rows for z^4, z^3, z^1, z^0
+ * ("powers" of the document).  Every format labels each row by its own power
+ * (the Markdown and LaTeX tables used to count down from the number of rows:
+ * z^3, z^2, z^1, z^0 here, as if no power were skipped). */
+static void test_routh_powers(void **state)
+{
+    const char *doc =
+        "{\"case\": \"g.case\", \"results\": ["
+        "  {\"analysis\": \"routh\", \"rows\": [[\"1\", \"2\"], [\"1\"], [\"3\"], [\"1\"]],"
+        "   \"powers\": [4, 3, 1, 0], \"status\": \"unstable\", \"inside\": 2, \"on\": 0, \"outside\": 2}]}";
+    char *t = render(doc, TEXT), *m = render(doc, MARKDOWN), *l = render(doc, LATEX);
+    (void) state;
+    assert_non_null(strstr(t, "  z^4          1   2\n  z^3          1\n  z^1          3\n  z^0          1\n"));
+    assert_non_null(strstr(m, "| z^4 | `1` | `2` |\n| z^3 | `1` |  |\n| z^1 | `3` |  |\n| z^0 | `1` |  |\n"));
+    assert_non_null(strstr(l, "z^{4} & 1 & 2 \\\\\nz^{3} & 1 &  \\\\\nz^{1} & 3 &  \\\\\nz^{0} & 1 &  \\\\\n"));
+    free(t); free(m); free(l);
+}
+
 static void test_branches_text(void **state)
 {
     (void) state;
@@ -250,6 +268,7 @@ int main(void)
         cmocka_unit_test(test_scheme_text),
         cmocka_unit_test(test_scheme_markdown),
         cmocka_unit_test(test_scheme_latex),
+        cmocka_unit_test(test_routh_powers),
         cmocka_unit_test(test_branches_text),
         cmocka_unit_test(test_branches_markdown),
         cmocka_unit_test(test_branches_latex),
