@@ -8,6 +8,7 @@
 #ifndef RECSTAB_ANALYSIS_H
 #define RECSTAB_ANALYSIS_H
 
+#include <stdio.h>
 #include <jansson.h>
 #include "recstab/error.h"
 #include "recstab/casefile.h"
@@ -44,8 +45,11 @@ void rs_options_default(rs_options_t *opt);
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
                     const rs_options_t *opt, rs_error_t err);
 
-/* Names of the analyses recstab knows (NULL-terminated), for --help. */
-extern const char *const rs_analysis_names[];
+/* The analyses recstab knows, from the registry (src/analysis/registry.c):
+ * for each its synopsis (name, words, options), the model kinds it applies
+ * to, what it gives and its options' ranges and defaults (`recstab
+ * --list-analyses`); names_only: their names on one line (--help). */
+void rs_analysis_list(FILE *out, int names_only);
 
 #ifdef __cplusplus
 }

@@ -5,16 +5,12 @@
 #include <string.h>
 #include "recstab/analysis.h"
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "util/polyfmt.h"
 #include "recstab/bilinear.h"
 #include "recstab/cond.h"
 #include "lower/builder.h"
-#include "lower/recurrence.h"
 #include "recstab/radius.h"
-
-const char *const rs_analysis_names[] = {
-    "charpoly", "expect", NULL
-};
 
 void rs_options_default(rs_options_t *opt)
 {
@@ -487,66 +483,6 @@ int *rs_run_signs(rs_run_t *run, const rs_scheme_t s)
     return sign;
 }
 
-/* ---- request options "key=value" ----------------------------------------- */
-
-int rs_req_opt_get(char *val, size_t len, const char *text, const char *key)
-{
-    size_t kl = strlen(key);
-    const char *t = text;
-    while ((t = strstr(t, key)) != NULL) {
-        if ((t == text || t[-1] == ' ' || t[-1] == '\t' || t[-1] == ',') && t[kl] == '=') {
-            size_t n = strcspn(t + kl + 1, " \t");
-            if (n >= len) n = len - 1;
-            memcpy(val, t + kl + 1, n);
-            val[n] = '\0';
-            return 1;
-        }
-        t += kl;
-    }
-    return 0;
-}
-
-int rs_req_opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys)
-{
-    const char *t = text;
-    while (*t) {
-        size_t n, k;
-        int ok = 0;
-        while (*t == ' ' || *t == '\t') t++;
-        if (!*t) break;
-        n = strcspn(t, "= \t");
-        for (k = 0; keys[k]; k++)
-            if (strlen(keys[k]) == n && strncmp(keys[k], t, n) == 0 && t[n] == '=') ok = 1;
-        if (!ok) {
-            char list[256] = "", msg[400];
-            for (k = 0; keys[k]; k++) {
-                strcat(list, k ? ", " : "");
-                strcat(list, keys[k]);
-                strcat(list, "=");
-            }
-            snprintf(msg, sizeof msg, "expected an option (%s), found '%%s'", list);
-            return rs_req_error(run, q, t, RS_ERR_INPUT, msg, t);
-        }
-        t += strcspn(t, " \t");
-    }
-    return RS_OK;
-}
-
-int rs_req_opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
-                    slong lo, slong hi)
-{
-    char val[64], *end, msg[200];
-    long x;
-    if (!rs_req_opt_get(val, sizeof val, text, key)) return RS_OK;
-    x = strtol(val, &end, 10);
-    if (*end == '\0' && x >= lo && x <= hi) {
-        *out = x;
-        return RS_OK;
-    }
-    snprintf(msg, sizeof msg, "%s= expects an integer from %ld to %ld (limit), found '%%s'", key, (long) lo, (long) hi);
-    return rs_req_error(run, q, strstr(text, key), (*end == '\0' && x > hi) ? RS_ERR_LIMIT : RS_ERR_INPUT, msg, val);
-}
-
 /* Request text helpers */
 const char *rs_req_skip_word(const char *t)
 {
@@ -664,14 +600,13 @@ json_t *rs_charpoly_json(const rs_variant_t *v)
     return o;
 }
 
-static int an_charpoly(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_assign_t *a;
     slong n;
     rs_variant_t *v;
     int r;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after charpoly, found '%s'", rest);
+    (void) req;
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, n);
     rs_assign_free(a, n);
@@ -728,45 +663,46 @@ void rs_compare_poly(json_t *o, const fmpq_mpoly_t expected, const fmpz_mpoly_t 
     fmpq_clear(scale);
 }
 
-static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
+/* expect charpoly|bilinear POLY: the polynomial parsed up front */
+int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run)
 {
-    const char *what = rest;
-    const char *exprtext;
-    rs_assign_t *a;
-    slong n, i;
-    rs_variant_t *v;
+    const rs_request_t *q = req->q;
+    const char *what = req->rest;
     rs_src_t src;
-    rs_expr_t *e = NULL;
-    fmpq_mpoly_t num, den;
-    json_t *o;
-    int r, bil;
+    size_t pos;
+    int r;
     if (strncmp(what, "charpoly", 8) == 0 && (what[8] == ' ' || what[8] == '\t'))
-        bil = 0;
+        req->u.expect.bilinear = 0;
     else if (strncmp(what, "bilinear", 8) == 0 && (what[8] == ' ' || what[8] == '\t'))
-        bil = 1;
+        req->u.expect.bilinear = 1;
     else
         return rs_req_error(run, q, what, RS_ERR_INPUT,
                             "expected 'charpoly' or 'bilinear' followed by a polynomial, found '%s'", what);
-    exprtext = rs_req_skip_word(what);
+    rs_req_src(&src, q);
+    pos = (size_t) (rs_req_skip_word(what) - q->text);
+    r = rs_expr_parse(&req->u.expect.poly, &src, &pos, run->err);
+    if (r == RS_OK && q->text[pos] != '\0')
+        return rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
+                            "expected an operator or end of line, found '%s'", q->text + pos);
+    return r;
+}
+
+int rs_an_expect(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    int bil = req->u.expect.bilinear;
+    rs_assign_t *a;
+    slong n, i;
+    rs_variant_t *v;
+    fmpq_mpoly_t num, den;
+    json_t *o;
+    int r;
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, n);
     if (r != RS_OK) { rs_assign_free(a, n); return r; }
-    rs_req_src(&src, q);
-    {
-        size_t pos = (size_t) (exprtext - q->text);
-        r = rs_expr_parse(&e, &src, &pos, run->err);
-        if (r == RS_OK && q->text[pos] != '\0') {
-            rs_expr_free(e);
-            rs_assign_free(a, n);
-            return rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
-                                "expected an operator or end of line, found '%s'", q->text + pos);
-        }
-    }
-    if (r != RS_OK) { rs_assign_free(a, n); return r; }
     fmpq_mpoly_init(num, v->s->ctx);
     fmpq_mpoly_init(den, v->s->ctx);
-    r = rs_scheme_eval_poly(num, den, v->s, run->c, e, bil ? 2 : 1, run->err);
-    rs_expr_free(e);
+    r = rs_scheme_eval_poly(num, den, v->s, run->c, req->u.expect.poly, bil ? 2 : 1, run->err);
     if (r == RS_OK) {
         const fmpz_mpoly_ctx_struct *zctx = v->s->zctx;
         fmpz_mpoly_t raw, norm;
@@ -807,73 +743,6 @@ static int an_expect(rs_run_t *run, const rs_request_t *q, const char *rest)
     fmpq_mpoly_clear(den, v->s->ctx);
     rs_assign_free(a, n);
     return r;
-}
-
-/* ---- dispatch ------------------------------------------------------------ */
-
-static const rs_analysis_entry_t table[] = {
-    {"charpoly", an_charpoly},
-    {"expect", an_expect},
-    {NULL, NULL}
-};
-
-/* the entry named by the first n characters of t in one of the tables */
-static const rs_analysis_entry_t *lookup(const rs_analysis_entry_t *const *tables, const char *t, size_t n)
-{
-    slong k, i;
-    for (k = 0; tables[k] != NULL; k++)
-        for (i = 0; tables[k][i].name != NULL; i++)
-            if (strlen(tables[k][i].name) == n && strncmp(tables[k][i].name, t, n) == 0)
-                return tables[k] + i;
-    return NULL;
-}
-
-static int dispatch(rs_run_t *run, const rs_request_t *q)
-{
-    static const rs_analysis_entry_t *const general[] = {table, rs_analysis_extra, rs_analysis_numeric,
-                                                         rs_analysis_sweep, NULL};
-    static const rs_analysis_entry_t *const recurrence[] = {rs_analysis_recurrence, NULL};
-    static const rs_analysis_entry_t *const cosim[] = {rs_analysis_cosim, NULL};
-    const char *t = q->text;
-    const rs_analysis_entry_t *e;
-    size_t n = 0;
-    while (t[n] && !isspace((unsigned char) t[n])) n++;
-    /* the kind of case decides which analyses exist: a recurrence with
-     * exp/sin entries or exactly integrated subsystems is numeric only */
-    if (rs_recurrence_is_numeric(run->c)) {
-        if ((e = lookup(recurrence, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
-        return rs_req_error(run, q, t, RS_ERR_INPUT,
-                            "a recurrence with non-polynomial entries (exp, sin, ...) is numeric: only radius and "
-                            "stability apply, found '%s'", t);
-    }
-    if (rs_builder_is_exact(run->c)) {
-        if ((e = lookup(cosim, t, n)) != NULL) return e->fn(run, q, rs_req_skip_word(t));
-        return rs_req_error(run, q, t, RS_ERR_INPUT,
-                            "exact (analytic) subsystem integration gives a recurrence with matrix-exponential "
-                            "entries: only radius, stability and map apply, found '%s'", t);
-    }
-    if ((e = lookup(general, t, n)) != NULL) {
-        size_t before = json_array_size(run->results);
-        int r = e->fn(run, q, rs_req_skip_word(t));
-        /* numeric analyses that set their own "substituted": name the
-         * parameters p does not depend on (placeholders) */
-        if (r == RS_OK && (strcmp(e->name, "radius") == 0 || strcmp(e->name, "modes") == 0
-                           || strcmp(e->name, "simulate") == 0)) {
-            rs_variant_t *v;
-            size_t k;
-            if (rs_run_numeric_variant(run, &v) == RS_OK && v->not_in_p != NULL)
-                for (k = before; k < json_array_size(run->results); k++)
-                    json_object_set(json_array_get(run->results, k), "not_in_p", v->not_in_p);
-        }
-        return r;
-    }
-    {
-        char word[80];
-        snprintf(word, sizeof word, "%.*s", (int) (n > 60 ? 60 : n), t);
-        return rs_req_error(run, q, t, RS_ERR_INPUT,
-                            "expected an analysis (charpoly, bilinear, routh, hurwitz, jury, stability, "
-                            "region, limit, claim, radius, modes, simulate, sweep, map, expect), found '%s'", word);
-    }
 }
 
 /* The equations as written and the lambda-matrix (set values substituted),
@@ -974,7 +843,7 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     int r;
     *out = NULL;
     *nout = 0;
-    if (rs_recurrence_is_numeric(c) || rs_builder_is_exact(c)) {
+    if (rs_model_kind(c) != RS_MODEL_EQUATIONS) {
         names[n++] = "stability";
     } else {
         r = rs_run_numeric_variant(run, &v);
@@ -1006,14 +875,98 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     return RS_OK;
 }
 
+/* Parses every request against the registry (*out: nq typed requests) before
+ * any runs: the first bad one is the error. */
+static int parse_requests(rs_an_req_t **out, rs_run_t *run, const rs_request_t *q, slong nq)
+{
+    slong i;
+    int r = RS_OK;
+    *out = calloc((size_t) nq + 1, sizeof(rs_an_req_t));
+    for (i = 0; i < nq && r == RS_OK; i++) r = rs_an_req_parse(*out + i, run, q + i);
+    return r;
+}
+
+static void clear_requests(rs_an_req_t *req, slong n)
+{
+    slong i;
+    for (i = 0; req != NULL && i < n; i++) rs_an_req_clear(req + i);
+    free(req);
+}
+
+/* Runs the parsed requests in order, each checked against the budget;
+ * `relocate`: a limit error without a place is put at its request (the
+ * case's own requests, not the defaults). */
+static int run_requests(rs_run_t *run, const rs_an_req_t *req, slong n, int relocate)
+{
+    slong i;
+    int r = RS_OK;
+    for (i = 0; i < n && r == RS_OK; i++) {
+        r = rs_an_req_run(run, req + i);
+        /* a loop stopped by the budget may have ended in another error or in
+         * a partial result: the budget's message is the one to report, at
+         * the request that ran out */
+        if (rs_budget_exceeded()) r = rs_budget_error(run->err);
+        if (relocate && r == RS_ERR_LIMIT && run->err->line == 0) {
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "%s", run->err->msg);
+            r = rs_req_error(run, req[i].q, req[i].q->text, r, "%s", msg);
+        }
+    }
+    return r;
+}
+
+static void run_clear(rs_run_t *run)
+{
+    slong i;
+    for (i = 0; i < run->nvariants; i++) variant_free(run->variants[i]);
+    free(run->variants);
+    rs_scheme_clear(run->sym);
+    json_decref(run->results);
+}
+
+/* The case's document around the results (takes run->results). */
+static json_t *case_doc(rs_run_t *run, const rs_request_t *defaults, slong ndefaults)
+{
+    const rs_case_struct *c = run->c;
+    json_t *d = json_object(), *arr;
+    slong i;
+    char *shown = rs_utf8_escape(c->path);   /* json_string refuses invalid UTF-8 */
+    json_object_set_new(d, "case", json_string(shown));
+    flint_free(shown);
+    json_object_set_new(d, "title", c->title ? json_string(c->title) : json_null());
+    arr = json_array();
+    for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));
+    json_object_set_new(d, "params", arr);
+    arr = json_array();
+    for (i = 0; i < run->m->nunknowns; i++) json_array_append_new(arr, json_string(run->m->unknowns[i].name));
+    json_object_set_new(d, "unknowns", arr);
+    json_object_set_new(d, "set", rs_json_sets(c));
+    if (ndefaults > 0) {
+        arr = json_array();
+        for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
+        json_object_set_new(d, "default_analyses", arr);
+    }
+    if (run->opt->with_scheme && rs_model_kind(c) == RS_MODEL_EQUATIONS) {
+        json_t *sc = scheme_json(run);
+        if (sc == NULL) {
+            json_decref(d);
+            return NULL;
+        }
+        json_object_set_new(d, "scheme", sc);
+    }
+    json_object_set_new(d, "results", run->results);
+    run->results = NULL;
+    return d;
+}
+
 int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
                     const rs_options_t *opt, rs_error_t err)
 {
     rs_run_t run;
-    json_t *d, *arr;
-    slong i, ndefaults = 0;
+    slong ndefaults = 0, nreq = 0;
     rs_request_t *defaults = NULL;
     rs_model_t m;
+    rs_an_req_t *req = NULL;
     int r = RS_OK;
     memset(&run, 0, sizeof run);
     rs_model_init(m);
@@ -1031,79 +984,26 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     rs_scheme_init(run.sym);
     r = rs_model_lower(m, c, err);
     if (r == RS_OK) r = check_assumptions(c, m, err);
-    if (r == RS_OK && !rs_builder_is_exact(c) && !rs_recurrence_is_numeric(c)) {
+    if (r == RS_OK && rs_model_kind(c) == RS_MODEL_EQUATIONS) {
         r = rs_scheme_build(run.sym, m, err);
         run.have_sym = (r == RS_OK);
     }
-    if (r == RS_OK && c->nrequests == 0) {
-        r = default_requests(&run, &defaults, &ndefaults);
-        for (i = 0; i < ndefaults && r == RS_OK; i++) {
-            r = dispatch(&run, defaults + i);
-            if (rs_budget_exceeded()) r = rs_budget_error(err);
-        }
+    if (r == RS_OK && c->nrequests == 0) r = default_requests(&run, &defaults, &ndefaults);
+    if (r == RS_OK) {
+        nreq = c->nrequests > 0 ? c->nrequests : ndefaults;
+        r = parse_requests(&req, &run, c->nrequests > 0 ? c->requests : defaults, nreq);
     }
-    for (i = 0; i < c->nrequests && r == RS_OK; i++) {
-        r = dispatch(&run, &c->requests[i]);
-        /* a loop stopped by the budget may have ended in another error or in
-         * a partial result: the budget's message is the one to report, at
-         * the request that ran out */
-        if (rs_budget_exceeded()) r = rs_budget_error(err);
-        if (r == RS_ERR_LIMIT && err->line == 0) {
-            char msg[RS_ERROR_MSG_LEN];
-            snprintf(msg, sizeof msg, "%s", err->msg);
-            r = rs_req_error(&run, &c->requests[i], c->requests[i].text, r, "%s", msg);
-        }
-    }
+    if (r == RS_OK) r = run_requests(&run, req, nreq, c->nrequests > 0);
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(err);
     rs_budget_stop();
-    if (r != RS_OK) {
-        free_requests(defaults, ndefaults);
-        for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
-        free(run.variants);
-        rs_scheme_clear(run.sym);
-        rs_model_clear(m);
-        json_decref(run.results);
-        return r;
-    }
-    d = json_object();
-    {
-        char *shown = rs_utf8_escape(c->path);   /* json_string refuses invalid UTF-8 */
-        json_object_set_new(d, "case", json_string(shown));
-        flint_free(shown);
-    }
-    json_object_set_new(d, "title", c->title ? json_string(c->title) : json_null());
-    arr = json_array();
-    for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));
-    json_object_set_new(d, "params", arr);
-    arr = json_array();
-    for (i = 0; i < m->nunknowns; i++) json_array_append_new(arr, json_string(m->unknowns[i].name));
-    json_object_set_new(d, "unknowns", arr);
-    json_object_set_new(d, "set", rs_json_sets(c));
-    if (ndefaults > 0) {
-        arr = json_array();
-        for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
-        json_object_set_new(d, "default_analyses", arr);
+    clear_requests(req, nreq);
+    if (r == RS_OK) {
+        *doc = case_doc(&run, defaults, ndefaults);
+        if (*doc == NULL) r = err->code ? err->code : RS_ERR_INTERNAL;
     }
     free_requests(defaults, ndefaults);
-    if (opt->with_scheme && !rs_builder_is_exact(c) && !rs_recurrence_is_numeric(c)) {
-        json_t *sc = scheme_json(&run);
-        if (sc == NULL) {
-            json_decref(d);
-            json_decref(run.results);
-            for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
-            free(run.variants);
-            rs_scheme_clear(run.sym);
-            rs_model_clear(m);
-            return err->code ? err->code : RS_ERR_INTERNAL;
-        }
-        json_object_set_new(d, "scheme", sc);
-    }
-    json_object_set_new(d, "results", run.results);
-    for (i = 0; i < run.nvariants; i++) variant_free(run.variants[i]);
-    free(run.variants);
-    rs_scheme_clear(run.sym);
+    if (r == RS_OK) *outcome = run.outcome;
+    run_clear(&run);
     rs_model_clear(m);
-    *doc = d;
-    *outcome = run.outcome;
-    return RS_OK;
+    return r;
 }

@@ -9,6 +9,7 @@
 #include <flint/fmpq_vec.h>
 #include "analysis/impl.h"
 #include "analysis/sweep_impl.h"
+#include "analysis/registry.h"
 #include "numeric/grid.h"
 #include "lower/builder.h"
 #include "recstab/cosim.h"
@@ -403,17 +404,12 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
     return r;
 }
 
-static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
+int rs_an_cosim_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q)
 {
     rs_cosim_t cs;
     rs_radius_t rr, rm;
-    slong digits = run->opt->default_digits;
     json_t *o;
     int r;
-    static const char *const keys[] = {"digits", NULL};
-    r = rs_req_opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
-    if (r != RS_OK) return r;
     rs_cosim_init(cs, 1, 1);
     r = rs_cosim_from_case(cs, run->c, run->err);
     if (r != RS_OK) { rs_cosim_clear(cs); return r; }
@@ -441,16 +437,6 @@ static int an_cosim(rs_run_t *run, const rs_request_t *q, const char *rest, int 
     rs_radius_clear(rm);
     rs_cosim_clear(cs);
     return r;
-}
-
-static int an_cosim_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    return an_cosim(run, q, rest, 0);
-}
-
-static int an_cosim_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    return an_cosim(run, q, rest, 1);
 }
 
 /* ---- the map: the model kind "exact integration" of the sweep engine ---------------------- */
@@ -581,7 +567,5 @@ static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
 
 const rs_analysis_entry_t rs_analysis_cosim[] = {
     {"map", an_cosim_map},
-    {"radius", an_cosim_radius},
-    {"stability", an_cosim_stability},
     {NULL, NULL}
 };

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
@@ -392,7 +393,7 @@ static json_t *p_at_stated(const rs_variant_t *v, slong x)
 
 /* ---- bilinear ------------------------------------------------------------- */
 
-static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -400,8 +401,7 @@ static int an_bilinear(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o;
     slong d, lv;
     int r;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after bilinear, found '%s'", rest);
+    (void) req;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
@@ -440,16 +440,15 @@ static const char *event_name(rs_routh_event_kind_t k)
     return "?";
 }
 
-static int an_routh(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
 {
+    const rs_request_t *q = req->q;
     rs_variant_t *v;
     const rs_scheme_struct *s;
     fmpz_poly_t p;
     json_t *o, *rows;
     slong i, j;
     int r;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after routh, found '%s'", rest);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
@@ -719,7 +718,7 @@ int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, 
     return r;
 }
 
-static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -729,8 +728,7 @@ static int an_hurwitz(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
     slong i, k;
     int r, verdict;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after hurwitz, found '%s'", rest);
+    (void) req;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
@@ -990,7 +988,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     return r;
 }
 
-static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
     fmpz_poly_t p;
@@ -999,8 +997,7 @@ static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o, *rows;
     slong i;
     int r;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after jury, found '%s'", rest);
+    (void) req;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
@@ -1044,15 +1041,14 @@ static int an_jury(rs_run_t *run, const rs_request_t *q, const char *rest)
     return r;
 }
 
-static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
 {
+    const rs_request_t *q = req->q;
     rs_variant_t *v;
     fmpz_poly_t p;
     rs_rootcount_t rc;
     json_t *o;
     int r;
-    if (*rest != '\0')
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected end of line after stability, found '%s'", rest);
     r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
@@ -1078,14 +1074,3 @@ static int an_stability(rs_run_t *run, const rs_request_t *q, const char *rest)
     return r;
 }
 
-const rs_analysis_entry_t rs_analysis_extra[] = {
-    {"bilinear", an_bilinear},
-    {"routh", an_routh},
-    {"hurwitz", an_hurwitz},
-    {"jury", an_jury},
-    {"stability", an_stability},
-    {"region", rs_an_region},
-    {"limit", rs_an_limit},
-    {"claim", rs_an_claim},
-    {NULL, NULL}
-};

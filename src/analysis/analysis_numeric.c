@@ -10,12 +10,12 @@
 #include <arb_mat.h>
 #include "recstab/budget.h"
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "numeric/modes.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
 #include "util/polyfmt.h"
 
-#define RS_SIMULATE_MAX_STEPS 10000000
 
 /* A root enclosure as midpoint strings re, im and one radius covering the
  * ball and the rounding of both printed midpoints (rounded up to double). */
@@ -76,24 +76,18 @@ static slong radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, c
     return got;
 }
 
-static int an_radius(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
 {
-    static const char *const keys[] = {"digits", "method", NULL};
+    const rs_request_t *q = req->q;
+    const rs_optval_t *dg = rs_an_opt(req, "digits");
     rs_variant_t *v;
     fmpz_poly_t p;
     rs_radius_t rr;
     rs_rootcount_t rc;
-    char method[32] = "certified";
-    slong digits = run->opt->default_digits, i;
+    const char *method = rs_an_opt_choice(req, "method");
+    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, i;
     json_t *o, *roots;
     int r;
-    r = rs_req_opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
-    if (r != RS_OK) return r;
-    rs_req_opt_get(method, sizeof method, rest, "method");
-    if (strcmp(method, "certified") != 0 && strcmp(method, "double") != 0 && strcmp(method, "companion") != 0)
-        return rs_req_error(run, q, strstr(rest, "method"), RS_ERR_INPUT,
-                            "method= expects certified, companion or double, found '%s'", method);
     r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
@@ -211,12 +205,14 @@ static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs
     return r;
 }
 
-static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
 {
+    const rs_request_t *q = req->q;
+    const rs_optval_t *o_h = rs_an_opt(req, "h"), *o_ref = rs_an_opt(req, "reference");
     rs_variant_t *v;
     fmpz_poly_t p;
     rs_radius_t rr;
-    const char *ref, *hs;
+    const char *hs;
     arb_t h, *refs = NULL;
     slong nref = 0, i, prec = 128, digits = 15;
     int *principal;
@@ -230,27 +226,19 @@ static int an_modes(rs_run_t *run, const rs_request_t *q, const char *rest)
     arb_init(h);
     arb_one(h);
     /* options: h=EXPR (time step; default 1 for schemes scaled by h), reference=EXPR[,EXPR...] */
-    hs = strstr(rest, "h=");
-    if (hs != NULL && (hs == rest || hs[-1] == ' '))
-    {
-        r = eval_number(h, run, q, v, hs + 2, prec);
+    hs = o_h->val;
+    if (hs != NULL) {
+        r = eval_number(h, run, q, v, hs, prec);
         /* ln(lambda)/h: a step must be positive */
         if (r == RS_OK && !arb_is_positive(h))
-            r = rs_req_error(run, q, hs + 2, RS_ERR_INPUT, "expected a time step h > 0, found '%s'", hs + 2);
+            r = rs_req_error(run, q, hs, RS_ERR_INPUT, "expected a time step h > 0, found '%s'", hs);
     }
-    ref = strstr(rest, "reference=");
-    if (r == RS_OK && ref != NULL) {
-        const char *t = ref + 10;
-        for (;;) {
-            size_t n = strcspn(t, ", \t");
-            refs = realloc(refs, (size_t) (nref + 1) * sizeof(arb_t));
+    if (r == RS_OK && o_ref->nlist > 0) {
+        refs = calloc((size_t) o_ref->nlist, sizeof(arb_t));
+        for (i = 0; i < o_ref->nlist && r == RS_OK; i++) {
             arb_init(refs[nref]);
-            r = eval_number(refs[nref], run, q, v, t, prec);
+            r = eval_number(refs[nref], run, q, v, o_ref->list[i], prec);
             nref++;
-            if (r != RS_OK) break;
-            t += n;
-            if (*t != ',') break;
-            t++;
         }
     }
     if (r != RS_OK) {
@@ -400,9 +388,11 @@ static void entry_coeff(fmpq_t c, const fmpq_mpoly_t e, slong k, const rs_scheme
     fmpq_mpoly_clear(t, s->ctx);
 }
 
-static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
+int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
 {
-    static const char *const keys[] = {"steps", "seed", "prec", NULL};
+    const rs_request_t *q = req->q;
+    const rs_optval_t *o_steps = rs_an_opt(req, "steps"), *o_seed = rs_an_opt(req, "seed"),
+                      *o_prec = rs_an_opt(req, "prec");
     rs_variant_t *v;
     const rs_scheme_struct *s;
     fmpz_poly_t p;
@@ -416,11 +406,9 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
     arb_t norm, lognorm_mid, lognorm_end, t1, t2;
     fmpq_t c;
     flint_rand_t st;
-    r = rs_req_opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "steps", &steps, 1, RS_SIMULATE_MAX_STEPS);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "seed", &seed, 0, 1000000000);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "prec", &prec, 32, 65536);
-    if (r != RS_OK) return r;
+    if (o_steps->at != NULL) steps = o_steps->num;
+    if (o_seed->at != NULL) seed = o_seed->num;
+    if (o_prec->at != NULL) prec = o_prec->num;
     r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
@@ -513,7 +501,7 @@ static int an_simulate(rs_run_t *run, const rs_request_t *q, const char *rest)
         if (r != RS_OK) {
             char msg[RS_ERROR_MSG_LEN];
             snprintf(msg, sizeof msg, "%s", run->err->msg);
-            r = rs_req_error(run, q, rest, RS_ERR_LIMIT, "%s", msg);
+            r = rs_req_error(run, q, req->rest, RS_ERR_LIMIT, "%s", msg);
         }
     }
     for (step = 1; step <= steps && r == RS_OK; step++) {
@@ -612,9 +600,3 @@ done:
     return r;
 }
 
-const rs_analysis_entry_t rs_analysis_numeric[] = {
-    {"radius", an_radius},
-    {"modes", an_modes},
-    {"simulate", an_simulate},
-    {NULL, NULL}
-};

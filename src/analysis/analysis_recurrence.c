@@ -4,19 +4,16 @@
 #include <stdlib.h>
 #include <string.h>
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "lower/recurrence.h"
 #include "recstab/radius.h"
 
-static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int stability)
+int rs_an_rec_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q)
 {
-    static const char *const keys[] = {"digits", NULL};
-    slong digits = run->opt->default_digits, prec, K = 0, i;
+    slong prec, K = 0, i;
     rs_radius_t rr;
     json_t *o;
-    int r = rs_req_opt_check(run, q, rest, keys);
-    if (r == RS_OK) r = rs_req_opt_long(run, q, rest, "digits", &digits, 1, RS_DIGITS_MAX);
-    if (r != RS_OK) return r;
-    r = RS_ERR_UNDECIDED;
+    int r = RS_ERR_UNDECIDED;
     rs_radius_init(rr);
     for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec; prec *= 2) {
         acb_mat_struct *A = NULL;
@@ -45,12 +42,3 @@ static int an_rec(rs_run_t *run, const rs_request_t *q, const char *rest, int st
     rs_radius_clear(rr);
     return RS_OK;
 }
-
-static int an_rec_radius(rs_run_t *run, const rs_request_t *q, const char *rest) { return an_rec(run, q, rest, 0); }
-static int an_rec_stability(rs_run_t *run, const rs_request_t *q, const char *rest) { return an_rec(run, q, rest, 1); }
-
-const rs_analysis_entry_t rs_analysis_recurrence[] = {
-    {"radius", an_rec_radius},
-    {"stability", an_rec_stability},
-    {NULL, NULL}
-};

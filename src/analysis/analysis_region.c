@@ -11,6 +11,7 @@
 #include "recstab/radius.h"
 #include "recstab/budget.h"
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
 #include "recstab/rootcount.h"
@@ -740,12 +741,40 @@ static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
     return r;
 }
 
-int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
+/* region NAME [at P=V, ...]: the parameter and the values, checked up front */
+int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
 {
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest, *t;
     char name[80];
-    const char *t;
-    rs_assign_t *at = NULL, *a = NULL;
-    slong nat = 0, na = 0, tv, i, ncrit = 0, npieces = 0;
+    slong i;
+    int r;
+    t = read_word(rest, name);
+    if (t == NULL)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after region, found '%s'", rest);
+    req->u.region.param = rs_case_param_index(run->c, name);
+    if (req->u.region.param < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    t = skip_ws(t);
+    if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
+        r = parse_assignments(run, q, t + 2, &req->u.region.at, &req->u.region.nat);
+        if (r != RS_OK) return r;
+    } else if (*t != '\0') {
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
+    }
+    for (i = 0; i < req->u.region.nat; i++)
+        if (req->u.region.at[i].var == req->u.region.param)
+            return rs_req_error(run, q, rest, RS_ERR_INPUT, "the region parameter '%s' is also given a value", name);
+    return RS_OK;
+}
+
+int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest;
+    const char *name = run->c->params[req->u.region.param].name;
+    rs_assign_t *a = NULL;
+    slong na = 0, tv = req->u.region.param, i, ncrit = 0, npieces = 0;
     const char *keep[1];
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -756,30 +785,10 @@ int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_t *o, *ivs, *pts;
     int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0, single;
 
-    t = read_word(rest, name);
-    if (t == NULL)
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after region, found '%s'", rest);
-    tv = rs_case_param_index(run->c, name);
-    if (tv < 0)
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
-    t = skip_ws(t);
-    if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
-        r = parse_assignments(run, q, t + 2, &at, &nat);
-        if (r != RS_OK) return r;
-    } else if (*t != '\0') {
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
-    }
     keep[0] = name;
-    rs_run_assignments(run, &a, &na, keep, 1, at, nat);
-    for (i = 0; i < na; i++)
-        if (a[i].var == tv) {
-            rs_assign_free(a, na);
-            rs_assign_free(at, nat);
-            return rs_req_error(run, q, rest, RS_ERR_INPUT, "the region parameter '%s' is also given a value", name);
-        }
+    rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);
     r = rs_run_variant(&v, run, a, na);
     rs_assign_free(a, na);
-    rs_assign_free(at, nat);
     if (r != RS_OK) return r;
     s = v->s;
     o = json_object();
@@ -1100,31 +1109,41 @@ static void roots_json(json_t *arr, const fmpz_poly_t f)
     fmpz_poly_factor_clear(fac);
 }
 
-int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest)
+/* limit NAME -> 0|inf */
+int rs_an_limit_parse(rs_an_req_t *req, rs_run_t *run)
 {
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest, *t;
     char name[80];
-    const char *t;
-    const char *keep[1];
-    rs_assign_t *a;
-    slong na, tv, d, k, j, dl;
-    rs_variant_t *v;
-    const rs_scheme_struct *s;
-    int to_inf, r;
-    fmpz_poly_t c;
-    json_t *o, *roots;
     t = read_word(rest, name);
     if (t == NULL)
         return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after limit, found '%s'", rest);
-    tv = rs_case_param_index(run->c, name);
-    if (tv < 0)
+    req->u.limit.param = rs_case_param_index(run->c, name);
+    if (req->u.limit.param < 0)
         return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
     t = skip_ws(t);
     if (strncmp(t, "->", 2) != 0)
         return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '-> 0' or '-> inf' after the name, found '%s'", t);
     t = skip_ws(t + 2);
-    if (strcmp(t, "0") == 0) to_inf = 0;
-    else if (strcmp(t, "inf") == 0 || strcmp(t, "infinity") == 0 || strcmp(t, "oo") == 0) to_inf = 1;
+    if (strcmp(t, "0") == 0) req->u.limit.to_inf = 0;
+    else if (strcmp(t, "inf") == 0 || strcmp(t, "infinity") == 0 || strcmp(t, "oo") == 0) req->u.limit.to_inf = 1;
     else return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 0 or inf, found '%s'", t);
+    return RS_OK;
+}
+
+int rs_an_limit(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest;
+    const char *name = run->c->params[req->u.limit.param].name;
+    const char *keep[1];
+    rs_assign_t *a;
+    slong na, tv = req->u.limit.param, d, k, j, dl;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    int to_inf = req->u.limit.to_inf, r;
+    fmpz_poly_t c;
+    json_t *o, *roots;
     keep[0] = name;
     rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
     r = rs_run_variant(&v, run, a, na);
@@ -2287,39 +2306,61 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
     return r;
 }
 
-int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
+/* claim stable|bounded|unstable [when CONDITION ...]: the conditions parsed up front */
+int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run)
 {
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest, *t;
     char kindw[80];
-    const char *t, *tried;
-    claim_kind_t kind;
-    rs_variant_t *v;
-    claim_dnf_t dnf;
-    slong i, nparams = run->c->nparams, ntried = 0;
-    json_t *o, *counter = NULL, *at = NULL;
-    int r = RS_OK, proved = 1, split = 0, inconsistent = 0;
-    claim_cx_t cx;
-
+    claim_dnf_t *dnf;
+    int r;
     t = read_word(rest, kindw);
     if (t == NULL || !(strcmp(kindw, "stable") == 0 || strcmp(kindw, "bounded") == 0
                        || strcmp(kindw, "unstable") == 0))
         return rs_req_error(run, q, rest, RS_ERR_INPUT,
                             "expected stable, bounded or unstable after claim, found '%s'", rest);
-    kind = strcmp(kindw, "stable") == 0 ? CLAIM_STABLE : strcmp(kindw, "bounded") == 0 ? CLAIM_BOUNDED
-                                                                                    : CLAIM_UNSTABLE;
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    req->u.claim.kind = strcmp(kindw, "stable") == 0 ? CLAIM_STABLE : strcmp(kindw, "bounded") == 0 ? CLAIM_BOUNDED
+                                                                                                   : CLAIM_UNSTABLE;
     t = skip_ws(t);
-    memset(&dnf, 0, sizeof dnf);
+    dnf = calloc(1, sizeof(claim_dnf_t));
+    req->u.claim.dnf = dnf;
     if (*t != '\0') {
         if (strncmp(t, "when", 4) != 0 || !(t[4] == ' ' || t[4] == '\t'))
             return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'when CONDITION' or end of line, found '%s'", t);
-        r = claim_dnf_parse(&dnf, run, q, t + 4);
+        r = claim_dnf_parse(dnf, run, q, t + 4);
         if (r != RS_OK) return r;
     } else {
-        dnf.nparts = 1;
-        dnf.n = calloc(1, sizeof(slong));
-        dnf.conds = calloc(1, sizeof(rs_cond_t *));
+        dnf->nparts = 1;
+        dnf->n = calloc(1, sizeof(slong));
+        dnf->conds = calloc(1, sizeof(rs_cond_t *));
     }
+    return RS_OK;
+}
+
+void rs_an_claim_req_clear(rs_an_req_t *req)
+{
+    if (req->u.claim.dnf != NULL) claim_dnf_clear(req->u.claim.dnf);
+    free(req->u.claim.dnf);
+    req->u.claim.dnf = NULL;
+}
+
+int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
+{
+    static const char *const kind_words[] = {"stable", "bounded", "unstable"};
+    const rs_request_t *q = req->q;
+    const char *tried, *kindw;
+    claim_kind_t kind = (claim_kind_t) req->u.claim.kind;
+    rs_variant_t *v;
+    const claim_dnf_t *d = req->u.claim.dnf;
+    claim_dnf_t dnf = *d;
+    slong i, nparams = run->c->nparams, ntried = 0;
+    json_t *o, *counter = NULL, *at = NULL;
+    int r = RS_OK, proved = 1, split = 0, inconsistent = 0;
+    claim_cx_t cx;
+
+    kindw = kind_words[kind == CLAIM_STABLE ? 0 : kind == CLAIM_BOUNDED ? 1 : 2];
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
     o = json_object();
     json_object_set_new(o, "analysis", json_string("claim"));
     json_object_set_new(o, "text", json_string(q->text));
@@ -2406,6 +2447,5 @@ int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest)
     json_decref(counter);
     json_decref(at);
     flint_randclear(cx.st);
-    claim_dnf_clear(&dnf);
     return r;
 }

@@ -114,14 +114,6 @@ json_t *rs_json_arb(const arb_t x, slong digits);
 /* certified, lower, upper, rho, digits, precision_bits of a radius. */
 void rs_json_radius(json_t *o, const rs_radius_t rr, slong digits);
 
-/* Options "key=value" of a request: the value of key (1 if present);
- * every word a known key (else an error naming them); an integer in
- * [lo, hi] (unchanged *out when absent). */
-int rs_req_opt_get(char *val, size_t len, const char *text, const char *key);
-int rs_req_opt_check(rs_run_t *run, const rs_request_t *q, const char *text, const char *const *keys);
-int rs_req_opt_long(rs_run_t *run, const rs_request_t *q, const char *text, const char *key, slong *out,
-                    slong lo, slong hi);
-
 const char *rs_req_skip_word(const char *t);
 int rs_req_error(rs_run_t *run, const rs_request_t *q, const char *at, int code,
                  const char *fmt, const char *a);
@@ -138,14 +130,11 @@ int rs_req_eval_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_
 
 typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
 typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
-/* analyses implemented in other files, NULL-terminated tables:
- * src/analysis/analysis_exact.c (bilinear, routh, hurwitz, jury, stability, region,
- * limit, claim) and src/analysis/analysis_numeric.c (radius, modes, simulate). */
-extern const rs_analysis_entry_t rs_analysis_extra[];
-extern const rs_analysis_entry_t rs_analysis_numeric[];
-extern const rs_analysis_entry_t rs_analysis_sweep[];  /* src/analysis/analysis_sweep.c: sweep, map (sweep_impl.h) */
-extern const rs_analysis_entry_t rs_analysis_cosim[];  /* src/analysis/analysis_cosim.c: exact integration */
-extern const rs_analysis_entry_t rs_analysis_recurrence[];  /* src/analysis/analysis_recurrence.c: numeric recurrences */
+/* The sweep and map implementations not yet behind the registry's typed
+ * requests (registry.c calls them by name): src/analysis/analysis_sweep.c
+ * (sweep, map) and src/analysis/analysis_cosim.c (map of exact integration). */
+extern const rs_analysis_entry_t rs_analysis_sweep[];
+extern const rs_analysis_entry_t rs_analysis_cosim[];
 
 
 /* Simulate's cross-check (src/analysis/analysis_numeric.c): NULL when a measured
@@ -180,10 +169,5 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
 void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
-
-/* region, limit and claim (analysis_region.c), listed in analysis_exact.c's table */
-int rs_an_region(rs_run_t *run, const rs_request_t *q, const char *rest);
-int rs_an_limit(rs_run_t *run, const rs_request_t *q, const char *rest);
-int rs_an_claim(rs_run_t *run, const rs_request_t *q, const char *rest);
 
 #endif

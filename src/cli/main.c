@@ -50,9 +50,12 @@ static void usage(FILE *f)
           "  --emit equations               print the unknowns and equations the builders generated\n"
           "  --time-limit SECONDS           wall time for the whole run (default 600; 0 = none)\n"
           "  --memory-limit MB              memory for the computation (default half of the RAM; 0 = none)\n"
+          "  --list-analyses                the analyses, their options and the models they apply to\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
-          "             3 internal inconsistency (two independent methods disagree)\n", f);
+          "             3 internal inconsistency (two independent methods disagree)\n"
+          "analyses (--list-analyses for their options): ", f);
+    rs_analysis_list(f, 1);
 }
 
 /* progress of long sweeps and maps, only when stderr is a terminal */
@@ -226,6 +229,7 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--latex") == 0) latex = 1;
         else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
         else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
+        else if (strcmp(a, "--list-analyses") == 0) { rs_analysis_list(stdout, 0); rc = 0; goto end; }
         else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
                  || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0
                  || strcmp(a, "--sweep-level") == 0) {

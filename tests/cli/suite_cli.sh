@@ -85,3 +85,43 @@ else
 fi
 "$RS" --json --latex cases/textbook/trapezoidal.case >"$T/out" 2>&1; rc=$?
 check_exit "--json with --latex is a usage error" 2 "$rc"
+
+# the registry of analyses (src/analysis/registry.c) against the README and
+# --help: every synopsis of --list-analyses (with its models) is a row of
+# the README's table of analyses (| escaped as \| there) and the table has no
+# other rows; --help's last line names the same analyses in the same order
+"$RS" --list-analyses >"$T/list" 2>&1; rc=$?
+check_exit "--list-analyses" 0 "$rc"
+sed -n '/^| analysis (`recstab --list-analyses`)/,/^$/p' README.md | tail -n +3 | sed '/^$/d' >"$T/rows"
+nrows=$(wc -l <"$T/rows"); nlist=0; missing=""
+while IFS= read -r syn; do
+    IFS= read -r models
+    models=${models#    models: }
+    nlist=$((nlist + 1))
+    row="| \`$(printf '%s' "$syn" | sed 's/|/\\|/g')\` | $models |"
+    grep -qF "$row" "$T/rows" || missing="$missing [$syn: $models]"
+done <<LIST
+$(awk '/^[^ ]/ || /^    models: /' "$T/list")
+LIST
+if [ -z "$missing" ] && [ "$nlist" = "$nrows" ] && [ "$nlist" -gt 10 ]; then
+    ok "README table of analyses = --list-analyses ($nlist entries)"
+else
+    fail "README table of analyses differs from --list-analyses ($nlist entries, $nrows rows):$missing"
+fi
+names=$(grep -v '^ ' "$T/list" | cut -d' ' -f1 | awk '!seen[$0]++' | paste -sd, - | sed 's/,/, /g')
+"$RS" --help | tail -1 >"$T/helpnames"
+if [ "$(cat "$T/helpnames")" = "analyses (--list-analyses for their options): $names" ]; then
+    ok "--help names the registry's analyses"
+else
+    fail "--help: '$(cat "$T/helpnames")', registry: '$names'"
+fi
+# a misspelled option after a long sweep (4 million points, 56 s before the
+# registry on 2 busy cores) is reported before the sweep runs
+start=$(date +%s)
+"$RS" --threads 1 tests/bad/request-after-sweep.case >"$T/out" 2>"$T/err"; rc=$?
+took=$(( $(date +%s) - start ))
+if [ "$rc" = 2 ] && [ "$took" -le 3 ] && [ ! -s "$T/out" ] && grep -q ":8:15: expected an option (reference=, h=)" "$T/err"; then
+    ok "bad request after a long sweep: refused at once (${took} s)"
+else
+    fail "bad request after a long sweep: exit $rc after ${took} s: $(cat "$T/err")"
+fi

@@ -1,0 +1,129 @@
+/* analysis/registry.h -- the registry of analyses: for each one its name,
+ * the model kinds it applies to, its option grammar, the parse function that
+ * turns the request text into a typed request, and the run function taking
+ * that request.  rs_analysis_run parses and checks every request of a case
+ * against it before the first analysis runs.  Private: not installed. */
+#ifndef RECSTAB_ANALYSIS_REGISTRY_H
+#define RECSTAB_ANALYSIS_REGISTRY_H
+
+#include "analysis/impl.h"
+#include "recstab/model.h"
+
+/* A set of the model kinds of model.h (RS_MODEL_EQUATIONS: difference
+ * equations, `char`, polynomial recurrences; RS_MODEL_RECURRENCE: matrix
+ * recurrences with exp, sin, ... entries, numeric only; RS_MODEL_COSIM:
+ * exactly integrated subsystems): one bit per kind. */
+#define RS_AN_KINDS(k) (1 << (k))
+
+/* The model kind of a case (one of RS_MODEL_*). */
+int rs_model_kind(const rs_case_t c);
+
+/* Types of a `key=value` option. */
+typedef enum {
+    RS_OPT_INTEGER,   /* a decimal integer in [lo, hi] */
+    RS_OPT_ENUM,      /* one of choices[] */
+    RS_OPT_EXPR,      /* an expression (evaluated by the analysis) */
+    RS_OPT_EXPRS      /* expressions separated by ',' */
+} rs_opt_type_t;
+
+#define RS_AN_MAX_OPTS 4
+#define RS_SIMULATE_MAX_STEPS 10000000   /* steps= of simulate */
+
+typedef struct {
+    const char *key;
+    rs_opt_type_t type;
+    slong lo, hi;                 /* RS_OPT_INTEGER: the range */
+    const char *const *choices;   /* RS_OPT_ENUM: NULL-terminated, the first is the default */
+    const char *meta;             /* the value's placeholder in the synopsis (N, EXPR, ...) */
+    const char *def;              /* the default, as shown by --list-analyses */
+} rs_opt_spec_t;
+
+/* One parsed option: at == NULL when absent. */
+typedef struct {
+    const char *at;       /* the key in the request text */
+    const char *val;      /* its value */
+    slong num;            /* INTEGER: the value; ENUM: index into choices */
+    slong nlist;          /* EXPRS: the expressions' starts */
+    const char **list;
+} rs_optval_t;
+
+typedef struct rs_an_def_struct rs_an_def_t;
+
+/* A request parsed against its registry entry.  Text pointers point into
+ * q->text (error places stay exact). */
+typedef struct {
+    const rs_an_def_t *def;
+    const rs_request_t *q;
+    const char *rest;                 /* the text after the analysis name */
+    rs_optval_t opt[RS_AN_MAX_OPTS];  /* by the order of def->opts */
+    union {
+        struct { int bilinear; rs_expr_t *poly; } expect;
+        struct { slong param; rs_assign_t *at; slong nat; } region;
+        struct { slong param; int to_inf; } limit;
+        struct { int kind; void *dnf; } claim;       /* dnf: claim.c's claim_dnf_t */
+    } u;
+} rs_an_req_t;
+
+typedef int (*rs_an_parse_fn)(rs_an_req_t *req, rs_run_t *run);
+typedef int (*rs_an_run_fn)(rs_run_t *run, const rs_an_req_t *req);
+
+/* Entry flags. */
+enum {
+    RS_AN_NOT_IN_P = 1   /* numeric: lists the parameters given placeholders ("not_in_p") */
+};
+
+struct rs_an_def_struct {
+    const char *name;
+    const char *const *aliases;   /* other names (NULL-terminated) or NULL */
+    int kinds;                    /* the RS_AN_KINDS(RS_MODEL_*) it applies to, or-ed */
+    const char *words;            /* grammar of the words before the options ("NAME -> 0|inf"),
+                                     "" when there are none */
+    const rs_opt_spec_t *opts;    /* `key=value` options (key NULL ends), or NULL */
+    const char *summary;          /* one line: what it gives */
+    rs_an_parse_fn parse;         /* the words (NULL: none allowed); options are parsed before */
+    rs_an_run_fn run;
+    int flags;
+};
+
+/* The registry, in the order of the error lists (NULL name ends it). */
+extern const rs_an_def_t rs_an_registry[];
+
+/* Parses q against the registry for the case's model kind: unknown
+ * analysis, wrong kind, unknown option, value out of range are input errors
+ * at the offending word.  Clear with rs_an_req_clear (also after an error). */
+int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q);
+void rs_an_req_clear(rs_an_req_t *req);
+/* Runs a parsed request. */
+int rs_an_req_run(rs_run_t *run, const rs_an_req_t *req);
+
+/* The option key of def (its index in def->opts), for run functions. */
+const rs_optval_t *rs_an_opt(const rs_an_req_t *req, const char *key);
+/* The choice of an RS_OPT_ENUM option (its default when absent). */
+const char *rs_an_opt_choice(const rs_an_req_t *req, const char *key);
+
+/* Parse functions of the analyses with words (in their files). */
+int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run);
+int rs_an_limit_parse(rs_an_req_t *req, rs_run_t *run);
+int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run);
+void rs_an_claim_req_clear(rs_an_req_t *req);
+int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run);
+
+/* Run functions (one file each in src/analysis/). */
+int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_expect(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_routh(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_jury(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_stability(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_region(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_limit(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_claim(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
+/* radius and stability of numeric recurrences and co-simulations */
+int rs_an_rec_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q);
+int rs_an_cosim_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q);
+
+#endif
