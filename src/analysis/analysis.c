@@ -684,6 +684,7 @@ int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run)
     if (r == RS_OK && q->text[pos] != '\0')
         return rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
                             "expected an operator or end of line, found '%s'", q->text + pos);
+    if (r == RS_OK) r = rs_an_check_names(run, q, req->u.expect.poly);
     return r;
 }
 
@@ -789,25 +790,12 @@ static json_t *scheme_json(rs_run_t *run)
     return o;
 }
 
-/* the first name of e that the model does not declare (a typo in an
- * assume line would otherwise silently drop the assumption), or NULL */
-static const rs_expr_t *undeclared_name(const rs_expr_t *e, const rs_model_t m)
-{
-    const rs_expr_t *u;
-    if (e == NULL) return NULL;
-    if (e->kind == RS_EXPR_NAME)
-        return (rs_case_param_index(m->c, e->name) < 0 && rs_model_unknown_index(m, e->name) < 0
-                && rs_case_let_index(m->c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
-    if ((u = undeclared_name(e->a, m)) != NULL) return u;
-    return undeclared_name(e->b, m);
-}
-
 static int check_assumptions(const rs_case_t c, const rs_model_t m, rs_error_t err)
 {
     slong i, k;
     for (i = 0; i < c->nassume; i++)
         for (k = 0; k < c->assume[i].n; k++) {
-            const rs_expr_t *u = undeclared_name(c->assume[i].e[k], m);
+            const rs_expr_t *u = rs_an_undeclared_name(c->assume[i].e[k], m);
             if (u != NULL)
                 return rs_error_set_at(err, RS_ERR_INPUT, c->assume[i].loc.file ? c->assume[i].loc.file : c->path,
                                        u->line, u->col,

@@ -2327,7 +2327,12 @@ int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run)
     if (*t != '\0') {
         if (strncmp(t, "when", 4) != 0 || !(t[4] == ' ' || t[4] == '\t'))
             return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'when CONDITION' or end of line, found '%s'", t);
+        slong i, j, k;
         r = claim_dnf_parse(dnf, run, q, t + 4);
+        for (i = 0; r == RS_OK && i < dnf->nparts; i++)
+            for (j = 0; r == RS_OK && j < dnf->n[i]; j++)
+                for (k = 0; r == RS_OK && k < dnf->conds[i][j].n; k++)
+                    r = rs_an_check_names(run, q, dnf->conds[i][j].e[k]);
         if (r != RS_OK) return r;
     } else {
         dnf->nparts = 1;

@@ -197,6 +197,27 @@ static int lookup(const rs_an_def_t **out, rs_run_t *run, const rs_request_t *q)
     return rs_req_error(run, q, t, RS_ERR_INPUT, msg, t);
 }
 
+/* ---- names ----------------------------------------------------------------- */
+
+const rs_expr_t *rs_an_undeclared_name(const rs_expr_t *e, const rs_model_t m)
+{
+    const rs_expr_t *u;
+    if (e == NULL) return NULL;
+    if (e->kind == RS_EXPR_NAME)
+        return (rs_case_param_index(m->c, e->name) < 0 && rs_model_unknown_index(m, e->name) < 0
+                && rs_case_let_index(m->c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
+    if ((u = rs_an_undeclared_name(e->a, m)) != NULL) return u;
+    return rs_an_undeclared_name(e->b, m);
+}
+
+int rs_an_check_names(rs_run_t *run, const rs_request_t *q, const rs_expr_t *e)
+{
+    const rs_expr_t *u = rs_an_undeclared_name(e, run->m);
+    if (u == NULL) return RS_OK;
+    return rs_error_set_at(run->err, RS_ERR_INPUT, q->loc.file, u->line, u->col,
+                           "unknown name '%s' (expected a declared param, unknown or let)", u->name);
+}
+
 /* ---- options `key=value` --------------------------------------------------- */
 
 const rs_optval_t *rs_an_opt(const rs_an_req_t *req, const char *key)
@@ -243,6 +264,7 @@ static int opt_expr(rs_run_t *run, const rs_request_t *q, const char *t, const c
     int r;
     rs_req_src(&src, q);
     r = rs_expr_parse(&e, &src, &pos, run->err);
+    if (r == RS_OK) r = rs_an_check_names(run, q, e);
     rs_expr_free(e);
     *end = q->text + pos;
     return r;

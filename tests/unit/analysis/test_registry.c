@@ -159,6 +159,10 @@ static void test_bad(void **state)
     bad(&f, "limit v -> 1", RS_ERR_INPUT, 20, "expected 0 or inf, found '1'");
     bad(&f, "claim stable when w < 1 xor v > 0", RS_ERR_INPUT, 33, "expected 'and', 'or', ',' or end of line");
     bad(&f, "expect charpoly lambda +", RS_ERR_INPUT, 33, "expected an expression");
+    /* undeclared names in expressions, at the name */
+    bad(&f, "claim stable when 0 < ww < 1", RS_ERR_INPUT, 31, "unknown name 'ww'");
+    bad(&f, "modes h=1/2 reference=1,wx", RS_ERR_INPUT, 33, "unknown name 'wx'");
+    bad(&f, "expect charpoly lambda + vv", RS_ERR_INPUT, 34, "unknown name 'vv'");
     rs_case_clear(f.c);
 }
 
