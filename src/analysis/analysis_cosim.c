@@ -9,7 +9,6 @@
 #include <flint/fmpq_vec.h>
 #include "analysis/impl.h"
 #include "analysis/sweep_impl.h"
-#include "analysis/registry.h"
 #include "numeric/grid.h"
 #include "lower/builder.h"
 #include "recstab/cosim.h"
@@ -401,41 +400,6 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
     vals_make(&vals, c, NULL, NULL, 0);
     r = cosim_build(cs, c, &vals, err);
     flint_free(vals.v);
-    return r;
-}
-
-int rs_an_cosim_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q)
-{
-    rs_cosim_t cs;
-    rs_radius_t rr, rm;
-    json_t *o;
-    int r;
-    rs_cosim_init(cs, 1, 1);
-    r = rs_cosim_from_case(cs, run->c, run->err);
-    if (r != RS_OK) { rs_cosim_clear(cs); return r; }
-    rs_radius_init(rr);
-    rs_radius_init(rm);
-    r = rs_cosim_radius(rr, cs, digits, run->opt->max_prec, run->err);
-    if (r == RS_OK) r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
-    if (r == RS_OK) {
-        o = json_object();
-        json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
-        json_object_set_new(o, "method", json_string("exact subsystem integration (matrix exponentials, Arb), "
-                                                     "certified eigenvalues of the one-step map"));
-        json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
-                                                     "order", (json_int_t) cs->order));
-        rs_json_radius(o, rr, digits);
-        json_object_set_new(o, "monolithic_rho", rs_json_arb(rm->rho, digits));
-        json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
-        json_object_set_new(o, "decided_by", json_string("certified"));
-        json_object_set_new(o, "substituted", rs_json_sets(run->c));
-        json_array_append_new(run->results, o);
-    } else {
-        r = rs_req_relocate(run, q, r, "radius");
-    }
-    rs_radius_clear(rr);
-    rs_radius_clear(rm);
-    rs_cosim_clear(cs);
     return r;
 }
 

@@ -1,5 +1,8 @@
-/* analysis/impl.h -- internals shared by the analysis implementation files
- * (the .c files of src/analysis/).  Private: not installed. */
+/* analysis/impl.h -- what the analysis files share: the run of a case and
+ * its variants, the exact point verdict and the JSON helpers (run.c), the
+ * symbolic stability conditions (conditions.c).  The analyses (an_*.c,
+ * analysis_region.c, analysis_sweep.c) include this and registry.h only, never
+ * each other.  Private: not installed. */
 #ifndef RECSTAB_ANALYSIS_IMPL_H
 #define RECSTAB_ANALYSIS_IMPL_H
 
@@ -137,7 +140,7 @@ extern const rs_analysis_entry_t rs_analysis_sweep[];
 extern const rs_analysis_entry_t rs_analysis_cosim[];
 
 
-/* Simulate's cross-check (src/analysis/analysis_numeric.c): NULL when a measured
+/* Simulate's cross-check (src/analysis/an_simulate.c): NULL when a measured
  * log growth per step over `steps` steps is compatible with the exact verdict
  * (status st, `outside` roots outside the circle, p of degree `degree`), else
  * why not; *tau is the threshold on |log growth| (see the source for why). */
@@ -149,12 +152,12 @@ const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside,
 int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
 
 /* Symbolic conditions checked against the exact point verdict
- * (src/analysis/analysis_exact.c): holds(data, point, s) is 1 (stable), 0 (not) or
+ * (src/analysis/run.c): holds(data, point, s) is 1 (stable), 0 (not) or
  * -1 (a condition vanishes: skipped) at point[v] for every variable. */
 typedef int (*rs_holds_fn)(const void *data, fmpq *const *point, const rs_scheme_struct *s);
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o);
 
-/* Shared steps of the analyses (analysis_exact.c), once here instead of
+/* Shared steps of the analyses (run.c, conditions.c), once here instead of
  * copied into each caller.  rs_run_default_variant: the variant at the case's
  * set values; rs_run_free_params: its free parameters as "a, b" (malloc'd);
  * rs_run_numeric_poly: p at the request's point (what names it in errors);
@@ -169,5 +172,21 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
 void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
+/* conditions.c: the OR of Hurwitz branches of qz (over the sign of its
+ * leading coefficient), 1/0/-1 at a point as rs_holds_fn, as JSON (returns
+ * the verdict: 1 always, 0 never, -1 conditions); a condition factor as
+ * text; str appended to arr unless there. */
+int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
+int rs_run_hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s);
+int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s);
+json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s);
+void rs_json_append_unique(json_t *arr, const char *str);
+
+/* run.c: a variant freed (rs_run_variant caches them in the run); a root
+ * enclosure as {re, im, rad} strings; p(x) of the polynomial as stated
+ * (content and sign of the normalisation undone) for x = 1, -1. */
+void rs_variant_free(rs_variant_t *v);
+json_t *rs_json_acb(const acb_t z, slong digits);
+json_t *rs_json_p_at(const rs_variant_t *v, slong x);
 
 #endif

@@ -4,11 +4,11 @@
  * reported at once; the names, grammars and model kinds printed by
  * `--list-analyses`, by --help and in the error lists all come from this
  * table (tests/cli/suite_cli.sh compares them with the README). */
-#include <ctype.h>
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <ctype.h>
+#include <errno.h>
 #include "analysis/registry.h"
 #include "lower/builder.h"
 #include "lower/recurrence.h"
@@ -66,17 +66,6 @@ static int legacy_run(const rs_analysis_entry_t *table, rs_run_t *run, const rs_
 static int run_sweep(rs_run_t *run, const rs_an_req_t *req) { return legacy_run(rs_analysis_sweep, run, req); }
 static int run_cosim_map(rs_run_t *run, const rs_an_req_t *req) { return legacy_run(rs_analysis_cosim, run, req); }
 
-/* radius and stability of the numeric model kinds: one grammar, two engines */
-static int run_numeric(rs_run_t *run, const rs_an_req_t *req, int stability)
-{
-    const rs_optval_t *d = rs_an_opt(req, "digits");
-    slong digits = d->at != NULL ? d->num : run->opt->default_digits;
-    if (rs_model_kind(run->c) == RS_MODEL_RECURRENCE) return rs_an_rec_radius(run, digits, stability, req->q);
-    return rs_an_cosim_radius(run, digits, stability, req->q);
-}
-static int run_numeric_radius(rs_run_t *run, const rs_an_req_t *req) { return run_numeric(run, req, 0); }
-static int run_numeric_stability(rs_run_t *run, const rs_an_req_t *req) { return run_numeric(run, req, 1); }
-
 #define EQ RS_AN_KINDS(RS_MODEL_EQUATIONS)
 #define NUM (RS_AN_KINDS(RS_MODEL_RECURRENCE) | RS_AN_KINDS(RS_MODEL_COSIM))
 
@@ -118,9 +107,9 @@ const rs_an_def_t rs_an_registry[] = {
     {"expect", NULL, EQ, "charpoly|bilinear POLY", NULL, "compares a printed polynomial with the derived one",
      rs_an_expect_parse, rs_an_expect, 0},
     {"radius", NULL, NUM, "", digits_opts, "the certified spectral radius of the one-step map",
-     NULL, run_numeric_radius, 0},
+     NULL, rs_an_numeric_radius, 0},
     {"stability", NULL, NUM, "", digits_opts, "the verdict from the certified spectral radius",
-     NULL, run_numeric_stability, 0},
+     NULL, rs_an_numeric_stability, 0},
     {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]", NULL,
      "certified radius on a grid of two parameters", legacy_parse, run_cosim_map, 0},
     {NULL, NULL, 0, NULL, NULL, NULL, NULL, NULL, 0}

@@ -114,7 +114,8 @@ int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_claim_req_clear(rs_an_req_t *req);
 int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run);
 
-/* Run functions (one file each in src/analysis/). */
+/* Run functions (one file each in src/analysis/: an_NAME.c; region, limit
+ * and claim in analysis_region.c; sweep and map in analysis_sweep.c). */
 int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_expect(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req);
@@ -128,8 +129,8 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
-/* radius and stability of numeric recurrences and co-simulations */
-int rs_an_rec_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q);
-int rs_an_cosim_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q);
+/* radius and stability of numeric recurrences and co-simulations (an_radius.c) */
+int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_numeric_stability(rs_run_t *run, const rs_an_req_t *req);
 
 #endif

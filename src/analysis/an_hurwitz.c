@@ -1,0 +1,101 @@
+/* an_hurwitz.c -- `hurwitz`: the Hurwitz minors and Lienard-Chipart
+ * conditions of q(z), factored, checked at sample points. */
+#include <stdlib.h>
+#include "analysis/registry.h"
+
+int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_hurwitz_or_t hb;
+    const rs_hurwitz_struct *h;
+    fmpz_mpoly_t qz;
+    json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
+    slong i, k;
+    int r, verdict;
+    (void) req;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_or_init(hb);
+    r = rs_run_hurwitz_or(hb, run, v, qz);
+    if (r != RS_OK) {
+        rs_hurwitz_or_clear(hb, s->zctx);
+        fmpz_mpoly_clear(qz, s->zctx);
+        return r;
+    }
+    h = hb->branch + 0;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("hurwitz"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "degree", json_integer(hb->nbranch > 0 ? h->n : v->cp->degree));
+    json_object_set_new(o, "negated", json_boolean(h->negated));
+    json_object_set_new(o, "p_at_1", rs_json_p_at(v, 1));
+    json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
+    minors = json_array();
+    for (i = 0; i < h->n; i++) json_array_append_new(minors, rs_json_zpoly(h->minors + i, s));
+    json_object_set_new(o, "minors", minors);
+    conds = json_array();
+    nonzero = json_array();
+    dropped = json_array();
+    always = json_array();
+    details = json_array();
+    for (i = 0; i < h->ncond; i++) {
+        const rs_hurwitz_cond_struct *c = h->cond + i;
+        json_t *d = json_object(), *fl = json_array();
+        json_object_set_new(d, "origin", json_string(c->origin));
+        json_object_set_new(d, "poly", rs_json_zpoly(c->poly, s));
+        for (k = 0; k < c->factors->num; k++) {
+            json_t *f = json_object();
+            json_object_set_new(f, "factor", rs_json_factor(c->factors->poly + k, s));
+            json_object_set_new(f, "exponent", json_integer(fmpz_get_si(c->factors->exp + k)));
+            json_object_set_new(f, "dropped", json_boolean(c->dropped[k]));
+            json_array_append_new(fl, f);
+            if (c->dropped[k]) {
+                json_t *dd = json_object();
+                json_object_set_new(dd, "factor", rs_json_factor(c->factors->poly + k, s));
+                json_object_set_new(dd, "from", json_string(c->origin));
+                json_object_set_new(dd, "reason", json_string("of one sign under the assumptions"));
+                json_array_append_new(dropped, dd);
+            } else if (c->even[k]) {
+                char *line = rs_cond_string(c->factors->poly + k, s, "!= 0");
+                json_array_append_new(nonzero, json_string(line));
+                free(line);
+            }
+        }
+        json_object_set_new(d, "factors", fl);
+        json_object_set_new(d, "reduced", rs_json_zpoly(c->reduced, s));
+        json_object_set_new(d, "trivially_true", json_boolean(c->trivially_true));
+        json_object_set_new(d, "trivially_false", json_boolean(c->trivially_false));
+        json_array_append_new(details, d);
+        if (c->trivially_true) {
+            json_array_append_new(always, json_string(c->origin));
+        } else {
+            char *line = rs_cond_string(c->reduced, s, "> 0");
+            json_array_append_new(conds, json_string(line));
+            free(line);
+        }
+    }
+    if (hb->nbranch == 1) {
+        json_object_set_new(o, "conditions", conds);
+        json_object_set_new(o, "nonzero", nonzero);
+    } else {
+        json_decref(conds);
+        json_decref(nonzero);
+    }
+    verdict = rs_json_hurwitz_or(o, hb, s);
+    json_object_set_new(o, "dropped", dropped);
+    json_object_set_new(o, "always_true", always);
+    json_object_set_new(o, "details", details);
+    json_object_set_new(o, "verdict", json_string(verdict > 0 ? "stable under the assumptions"
+                                                  : verdict < 0 ? "never stable"
+                                                  : hb->nbranch == 2 ? "stable iff one branch holds"
+                                                  : "stable iff the conditions hold"));
+    r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
+    if (r == RS_OK) rs_run_emit_exact(run, v, o);
+    else json_decref(o);
+    rs_hurwitz_or_clear(hb, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    return r;
+}

@@ -1,0 +1,231 @@
+/* an_jury.c -- `jury`: Schur-Cohn on p(lambda) directly, numeric or with
+ * the symbolic Schur-Cohn (Jury) conditions, cross-checked against Routh. */
+#include <stdlib.h>
+#include "analysis/registry.h"
+#include "recstab/routh.h"
+#include "recstab/jury.h"
+#include "util/polyfmt.h"
+
+/* Symbolic Schur-Cohn (Jury) conditions: with p_n = p and
+ * p_{k-1} = (lead(p_k) p_k - p_k(0) p_k^*)/lambda (p^* the reciprocal), all
+ * roots lie inside the circle iff delta_k = lead(p_k)^2 - p_k(0)^2 > 0 for
+ * k = n..1 (Schur 1917; Jury's table).  Each reduced polynomial is divided by
+ * the content of its coefficients (a non-zero factor of the parameters does
+ * not move roots and enters delta squared).  Generic: where a delta vanishes
+ * the exact numeric test decides. */
+/* The symbolic Schur-Cohn conditions as polynomials: poly > 0, or
+ * poly != 0 when ne[i] (for the check at sample points). */
+typedef struct {
+    slong n;
+    fmpz_mpoly_struct *poly;
+    int *ne;
+    const fmpz_mpoly_ctx_struct *ctx;
+} jury_conds_t;
+
+static void jury_conds_add(jury_conds_t *c, const fmpz_mpoly_t p, int ne)
+{
+    c->poly = flint_realloc(c->poly, (c->n + 1) * sizeof(fmpz_mpoly_struct));
+    c->ne = flint_realloc(c->ne, (c->n + 1) * sizeof(int));
+    fmpz_mpoly_init(c->poly + c->n, c->ctx);
+    fmpz_mpoly_set(c->poly + c->n, p, c->ctx);
+    c->ne[c->n++] = ne;
+}
+
+static void jury_conds_clear(jury_conds_t *c)
+{
+    slong i;
+    for (i = 0; i < c->n; i++) fmpz_mpoly_clear(c->poly + i, c->ctx);
+    flint_free(c->poly);
+    flint_free(c->ne);
+}
+
+/* 1 if every condition holds, 0 if one fails, -1 if one vanishes (a
+ * condition identically 0 > 0 just fails) */
+static int jury_conds_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    const jury_conds_t *c = data;
+    slong i;
+    int ok = 1;
+    for (i = 0; i < c->n; i++) {
+        int sg;
+        if (fmpz_mpoly_is_zero(c->poly + i, s->zctx)) { ok = 0; continue; }
+        sg = rs_hurwitz_sign_at(c->poly + i, pt, s->zctx);
+        if (sg == 0) return -1;
+        if (!c->ne[i] && sg < 0) ok = 0;
+    }
+    return ok;
+}
+
+static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
+{
+    const rs_scheme_struct *s = v->s;
+    slong lv = s->lambda_var, n = v->cp->degree, k, j;
+    fmpz_mpoly_struct *a = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    fmpz_mpoly_t t, u, g, delta;
+    json_t *rows = json_array(), *conds = json_array(), *dropped = json_array();
+    int *sign = rs_run_signs(run, s);
+    int r = RS_OK;
+    jury_conds_t jc;
+    jc.n = 0; jc.poly = NULL; jc.ne = NULL; jc.ctx = s->zctx;
+    for (j = 0; j <= n; j++) {
+        fmpz_mpoly_init(a + j, s->zctx);
+        rs_charpoly_coeff(a + j, v->cp->p, j, lv, s->zctx);
+    }
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
+    fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(delta, s->zctx);
+    for (k = n; k >= 1 && r == RS_OK; k--) {
+        json_t *row = json_array();
+        fmpz_mpoly_factor_t f;
+        slong i;
+        for (j = 0; j <= k; j++) json_array_append_new(row, rs_json_zpoly(a + j, s));
+        json_array_append_new(rows, row);
+        /* delta_k = a_k^2 - a_0^2 = (a_k - a_0)(a_k + a_0) */
+        fmpz_mpoly_mul(t, a + k, a + k, s->zctx);
+        fmpz_mpoly_mul(u, a + 0, a + 0, s->zctx);
+        fmpz_mpoly_sub(delta, t, u, s->zctx);
+        if (fmpz_mpoly_length(delta, s->zctx) > RS_CHARPOLY_MAX_TERMS) {
+            r = rs_error_set(run->err, RS_ERR_LIMIT, "symbolic Schur-Cohn table: a condition has over %ld terms (limit)",
+                             (long) RS_CHARPOLY_MAX_TERMS);
+            json_decref(row);
+            break;
+        }
+        fmpz_mpoly_factor_init(f, s->zctx);
+        if (fmpz_mpoly_is_zero(delta, s->zctx)) {
+            /* |p_k(0)| = |lead| for every value: the table is singular (e.g. a
+             * self-reciprocal p, roots symmetric about the circle): never
+             * asymptotically stable; the exact numeric test counts the roots */
+            rs_json_append_unique(conds, "0 > 0");
+            jury_conds_add(&jc, delta, 0);
+            json_object_set_new(o, "singular_row", json_integer(n - k));
+            fmpz_mpoly_factor_clear(f, s->zctx);
+            break;
+        } else if (fmpz_mpoly_factor(f, delta, s->zctx)) {
+            /* keep the factors whose sign is not settled by the assumptions */
+            fmpz_mpoly_t kept;
+            int neg = fmpz_sgn(f->constant) < 0;
+            fmpz_mpoly_init(kept, s->zctx);
+            fmpz_mpoly_one(kept, s->zctx);
+            for (i = 0; i < f->num; i++) {
+                int sg = rs_hurwitz_sign(f->poly + i, (const rs_sign_t *) sign, s->zctx);
+                slong e = fmpz_get_si(f->exp + i);
+                if (sg != 0) {
+                    if (sg < 0 && (e & 1)) neg = !neg;
+                    json_array_append_new(dropped, json_pack("{s:o,s:I}", "factor", rs_json_zpoly(f->poly + i, s),
+                                                             "row", (json_int_t) (n - k)));
+                    continue;
+                }
+                if (e & 1) fmpz_mpoly_mul(kept, kept, f->poly + i, s->zctx);
+                else {
+                    char *line = rs_cond_string(f->poly + i, s, "!= 0");
+                    rs_json_append_unique(conds, line);
+                    jury_conds_add(&jc, f->poly + i, 1);
+                    free(line);
+                }
+            }
+            if (neg) fmpz_mpoly_neg(kept, kept, s->zctx);
+            if (!fmpz_mpoly_is_one(kept, s->zctx)) {
+                char *line = rs_cond_string(kept, s, "> 0");
+                rs_json_append_unique(conds, line);
+                jury_conds_add(&jc, kept, 0);
+                free(line);
+            }
+            fmpz_mpoly_clear(kept, s->zctx);
+        }
+        fmpz_mpoly_factor_clear(f, s->zctx);
+        /* p_{k-1}: coefficient j = a_k a_{j+1} - a_0 a_{k-1-j}, j = 0..k-1 */
+        {
+            fmpz_mpoly_struct *b = flint_malloc(k * sizeof(fmpz_mpoly_struct));
+            for (j = 0; j < k; j++) {
+                fmpz_mpoly_init(b + j, s->zctx);
+                fmpz_mpoly_mul(t, a + k, a + j + 1, s->zctx);
+                fmpz_mpoly_mul(u, a + 0, a + k - 1 - j, s->zctx);
+                fmpz_mpoly_sub(b + j, t, u, s->zctx);
+            }
+            /* divide by the content of the row */
+            fmpz_mpoly_zero(g, s->zctx);
+            for (j = 0; j < k; j++) {
+                if (!fmpz_mpoly_gcd(g, g, b + j, s->zctx)) { fmpz_mpoly_one(g, s->zctx); break; }
+            }
+            if (!fmpz_mpoly_is_zero(g, s->zctx) && !fmpz_mpoly_is_one(g, s->zctx))
+                for (j = 0; j < k; j++) fmpz_mpoly_divexact(b + j, b + j, g, s->zctx);
+            for (j = 0; j <= k; j++) fmpz_mpoly_clear(a + j, s->zctx);
+            for (j = 0; j < k; j++) a[j] = b[j];
+            flint_free(b);
+        }
+    }
+    for (j = 0; j <= k && j <= n; j++) fmpz_mpoly_clear(a + j, s->zctx);
+    flint_free(a);
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
+    flint_free(sign);
+    if (r == RS_OK) {
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "rows", rows);
+        json_object_set_new(o, "conditions", conds);
+        json_object_set_new(o, "dropped", dropped);
+        json_object_set_new(o, "note", json_string(
+            "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
+            "all |lambda| < 1 iff every lead^2 - const^2 > 0 (Schur 1917, strict inequalities: exact for every "
+            "value; where the leading coefficient of p vanishes the first condition fails)"));
+        r = rs_run_sample_check(run, v, jury_conds_holds, &jc, o);
+    } else {
+        json_decref(rows);
+        json_decref(conds);
+        json_decref(dropped);
+    }
+    jury_conds_clear(&jc);
+    return r;
+}
+
+int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
+{
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_jury_t ju;
+    rs_routh_t ro;
+    json_t *o, *rows;
+    slong i;
+    int r;
+    (void) req;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    if (!rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx)) {
+        fmpz_poly_clear(p);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("jury"));
+        json_object_set_new(o, "method", json_string("Schur-Cohn (Jury) table, symbolic"));
+        r = jury_symbolic(run, v, o);
+        if (r != RS_OK) { json_decref(o); return r; }
+        rs_run_emit_exact(run, v, o);
+        return RS_OK;
+    }
+    rs_jury_init(ju);
+    rs_routh_init(ro);
+    r = rs_jury_fmpz_poly(ju, p, run->err);
+    if (r == RS_OK) r = rs_routh_fmpz_poly(ro, p, run->err);
+    if (r == RS_OK) {
+        int agree = rs_rootcount_equal(ro->count, ju->count);
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("jury"));
+        json_object_set_new(o, "method", json_string("Schur-Cohn (gcd with the reciprocal polynomial, "
+                                                     "Schur-Cohn-Fujiwara inertia)"));
+        json_object_set_new(o, "table_regular", json_boolean(ju->table_regular));
+        rows = json_array();
+        for (i = 0; i < ju->nrows; i++) {
+            char *str = rs_polyfmt_fmpz_poly(ju->rows + i, "lambda");
+            json_array_append_new(rows, json_string(str));
+            free(str);
+        }
+        json_object_set_new(o, "rows", rows);
+        json_object_set_new(o, "gcd_degree", json_integer(ju->gcd_degree));
+        rs_json_add_count(o, ju->count);
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:b}", "with", "routh (bilinear)", "agree", agree));
+        if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
+        rs_run_emit_exact(run, v, o);
+    }
+    rs_jury_clear(ju);
+    rs_routh_clear(ro);
+    fmpz_poly_clear(p);
+    return r;
+}

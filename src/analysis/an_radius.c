@@ -1,0 +1,248 @@
+/* an_radius.c -- `radius`: the certified spectral radius (Arb, with the
+ * GSL double baseline on request) checked against the exact verdict, and
+ * radius / stability of the numeric model kinds (matrix recurrences with
+ * exp, sin, ... entries; exactly integrated co-simulation). */
+#include <string.h>
+#include "analysis/registry.h"
+#include "lower/recurrence.h"
+#include "recstab/cosim.h"
+
+/* ---- radius ---------------------------------------------------------------------- */
+
+/* When the radius interval contains 1 but no root lies on the circle (so
+ * rho != 1), more digits separate it from 1: raise them (x4 per round, while
+ * the precision stays within --max-prec) until upper < 1 or lower > 1.  rr
+ * keeps the most precise result; returns the digits it was computed with
+ * (digits when no refinement ran or none helped). */
+static slong radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc,
+                              const char *method, slong digits)
+{
+    slong cap = (slong) ((double) (run->opt->max_prec > 0 ? run->opt->max_prec : RS_RADIUS_MAX_PREC_DEFAULT)
+                         / 3.33) - 12, d = digits, got = digits;
+    rs_radius_t r2;
+    int r;
+    if (rc->on > 0 || strcmp(rs_radius_verdict(rr), "undecided") != 0) return digits;
+    rs_radius_init(r2);
+    while (d < cap && strcmp(rs_radius_verdict(rr), "undecided") == 0) {
+        d = FLINT_MIN(4 * d, cap);
+        if (strcmp(method, "companion") == 0)
+            r = rs_radius_fmpz_poly_companion(r2, p, d, run->opt->max_prec, run->err);
+        else
+            r = rs_radius_fmpz_poly(r2, p, d, run->opt->max_prec, run->err);
+        if (r != RS_OK) {                 /* out of precision: stays undecided */
+            rs_error_init(run->err);
+            break;
+        }
+        rs_radius_swap(rr, r2);
+        got = d;
+    }
+    rs_radius_clear(r2);
+    return got;
+}
+
+int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const rs_optval_t *dg = rs_an_opt(req, "digits");
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_radius_t rr;
+    rs_rootcount_t rc;
+    const char *method = rs_an_opt_choice(req, "method");
+    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, i;
+    json_t *o, *roots;
+    int r;
+    r = rs_run_numeric_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "radius");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    rs_radius_init(rr);
+    rs_rootcount_init(rc);
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("radius"));
+    if (fmpz_poly_degree(p) < 1) {
+        /* det A = c*lambda^k: every root is 0 (dead-beat), radius exactly 0 */
+        json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
+        json_object_set_new(o, "certified", json_true());
+        json_object_set_new(o, "lower", json_string("0"));
+        json_object_set_new(o, "upper", json_string("0"));
+        json_object_set_new(o, "rho", json_string("0"));
+        json_object_set_new(o, "roots", json_array());
+        arb_zero(rr->lower);
+        arb_zero(rr->upper);
+        arb_zero(rr->rho);
+    } else if (strcmp(method, "double") == 0) {
+        r = rs_radius_double(rr, p, run->err);
+        if (r == RS_OK) {
+            json_object_set_new(o, "method", json_string("double (GSL gsl_poly_complex_solve, uncertified)"));
+            json_object_set_new(o, "certified", json_false());
+            json_object_set_new(o, "rho", json_real(rr->rho_double));
+            roots = json_array();
+            for (i = 0; i < rr->nroots; i++)
+                json_array_append_new(roots, json_pack("{s:f,s:f}", "re",
+                    arf_get_d(arb_midref(acb_realref(rr->roots + i)), ARF_RND_NEAR), "im",
+                    arf_get_d(arb_midref(acb_imagref(rr->roots + i)), ARF_RND_NEAR)));
+            json_object_set_new(o, "roots", roots);
+        }
+    } else {
+        if (strcmp(method, "companion") == 0)
+            r = rs_radius_fmpz_poly_companion(rr, p, digits, run->opt->max_prec, run->err);
+        else
+            r = rs_radius_fmpz_poly(rr, p, digits, run->opt->max_prec, run->err);
+        if (r == RS_OK) {
+            json_object_set_new(o, "method", json_string(
+                rr->method == RS_RADIUS_METHOD_COMPANION ? "companion matrix, acb_mat_eig_simple/multiple (certified)"
+                : rr->method == RS_RADIUS_METHOD_COMPLEX_ROOTS ? "arb_fmpz_poly_complex_roots on squarefree factors (certified)"
+                : rr->method == RS_RADIUS_METHOD_FIND_ROOTS ? "acb_poly_find_roots + validation on squarefree factors (certified)"
+                : "certified enclosure"));
+            rs_json_radius(o, rr, digits);
+            roots = json_array();
+            for (i = 0; i < rr->nroots; i++) {
+                json_t *z = rs_json_acb(rr->roots + i, digits);
+                arb_t ab;
+                arb_init(ab);
+                acb_abs(ab, rr->roots + i, rr->prec);
+                json_object_set_new(z, "abs", rs_json_arb(ab, digits));
+                json_object_set_new(z, "multiplicity", json_integer(rr->mult ? rr->mult[i] : 1));
+                arb_clear(ab);
+                json_array_append_new(roots, z);
+            }
+            json_object_set_new(o, "roots", roots);
+        }
+    }
+    if (r == RS_OK) {
+        /* the exact verdict at the same point decides; the radius must agree */
+        r = rs_run_exact_count(rc, run, p, NULL);
+    }
+    if (r == RS_OK) {
+        rs_status_t st;
+        int consistent = 1;
+        r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, NULL);
+        json_object_set_new(o, "exact_status", json_string(rs_status_name(st)));
+        if (v->singular)
+            json_object_set_new(o, "singular", json_string("the leading coefficient of det A(lambda) vanishes "
+                                "here: the step cannot be solved; the radius is that of the reduced polynomial"));
+        if (strcmp(method, "double") != 0 && !v->singular) {
+            const char *nv;
+            slong got = radius_refine(rr, run, p, rc, method, digits);
+            if (got > digits) {
+                /* the printed bounds came from the refined run: reprint */
+                rs_json_radius(o, rr, digits);
+                json_object_set_new(o, "verdict_digits", json_integer(got));
+            }
+            /* only certified comparisons: a radius interval that contains 1
+             * decides nothing, so it cannot contradict the exact count */
+            nv = rs_radius_verdict(rr);
+            if (strcmp(nv, "stable") == 0 && (rc->on > 0 || rc->outside > 0)) consistent = 0;
+            if (strcmp(nv, "unstable") == 0 && rc->outside == 0) consistent = 0;
+            json_object_set_new(o, "verdict_from_radius", json_string(strcmp(nv, "undecided") != 0 ? nv :
+                "undecided numerically (the interval contains 1): the exact side decides"));
+            json_object_set_new(o, "consistent", json_boolean(consistent));
+            if (!consistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
+        }
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+        r = rs_req_relocate(run, q, r, "radius");
+    }
+    rs_rootcount_clear(rc);
+    rs_radius_clear(rr);
+    fmpz_poly_clear(p);
+    return r;
+}
+
+/* ---- numeric recurrences ------------------------------------------------------ */
+
+static int rec_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q)
+{
+    slong prec, K = 0, i;
+    rs_radius_t rr;
+    json_t *o;
+    int r = RS_ERR_UNDECIDED;
+    rs_radius_init(rr);
+    for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec; prec *= 2) {
+        acb_mat_struct *A = NULL;
+        r = rs_recurrence_matrices(&A, &K, run->m, prec, run->err);
+        if (r == RS_OK) r = rs_radius_matrix_poly(rr, A, K, digits, run->opt->max_prec, run->err);
+        for (i = 0; A && i <= K; i++) acb_mat_clear(A + i);
+        flint_free(A);
+        if (r != RS_ERR_UNDECIDED && r != RS_ERR_LIMIT) break;
+        rs_error_init(run->err);
+    }
+    if (r != RS_OK) {
+        rs_radius_clear(rr);
+        /* out of precision is a resource limit of the request */
+        if (run->err->file[0] == '\0' && r == RS_ERR_UNDECIDED) r = RS_ERR_LIMIT;
+        return rs_req_relocate(run, q, r, "radius");
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
+    json_object_set_new(o, "method", json_string("block companion matrix of the recurrence, entries in Arb "
+                                                 "(certified eigenvalue enclosures)"));
+    rs_json_radius(o, rr, digits);
+    json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
+    json_object_set_new(o, "decided_by", json_string("certified"));
+    json_object_set_new(o, "substituted", rs_json_sets(run->c));
+    json_array_append_new(run->results, o);
+    rs_radius_clear(rr);
+    return RS_OK;
+}
+
+/* ---- exactly integrated co-simulation ------------------------------------------ */
+
+static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_request_t *q)
+{
+    rs_cosim_t cs;
+    rs_radius_t rr, rm;
+    json_t *o;
+    int r;
+    rs_cosim_init(cs, 1, 1);
+    r = rs_cosim_from_case(cs, run->c, run->err);
+    if (r != RS_OK) { rs_cosim_clear(cs); return r; }
+    rs_radius_init(rr);
+    rs_radius_init(rm);
+    r = rs_cosim_radius(rr, cs, digits, run->opt->max_prec, run->err);
+    if (r == RS_OK) r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
+        json_object_set_new(o, "method", json_string("exact subsystem integration (matrix exponentials, Arb), "
+                                                     "certified eigenvalues of the one-step map"));
+        json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
+                                                     "order", (json_int_t) cs->order));
+        rs_json_radius(o, rr, digits);
+        json_object_set_new(o, "monolithic_rho", rs_json_arb(rm->rho, digits));
+        json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
+        json_object_set_new(o, "decided_by", json_string("certified"));
+        json_object_set_new(o, "substituted", rs_json_sets(run->c));
+        json_array_append_new(run->results, o);
+    } else {
+        r = rs_req_relocate(run, q, r, "radius");
+    }
+    rs_radius_clear(rr);
+    rs_radius_clear(rm);
+    rs_cosim_clear(cs);
+    return r;
+}
+
+/* radius and stability of the numeric model kinds: one grammar, two engines */
+static int numeric(rs_run_t *run, const rs_an_req_t *req, int stability)
+{
+    const rs_optval_t *d = rs_an_opt(req, "digits");
+    slong digits = d->at != NULL ? d->num : run->opt->default_digits;
+    if (rs_model_kind(run->c) == RS_MODEL_RECURRENCE) return rec_radius(run, digits, stability, req->q);
+    return cosim_radius(run, digits, stability, req->q);
+}
+
+int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req)
+{
+    return numeric(run, req, 0);
+}
+
+int rs_an_numeric_stability(rs_run_t *run, const rs_an_req_t *req)
+{
+    return numeric(run, req, 1);
+}

@@ -1,0 +1,36 @@
+/* an_stability.c -- `stability` of the equations: every parameter set,
+ * the exact verdict with root counts (Routh and Schur-Cohn must agree). */
+#include "analysis/registry.h"
+
+int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    rs_rootcount_t rc;
+    json_t *o;
+    int r;
+    r = rs_run_numeric_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, q, v, "stability");
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("stability"));
+        rs_rootcount_init(rc);
+        r = rs_run_exact_count(rc, run, p, o);
+        if (r == RS_OK) {
+            rs_status_t st;
+            rs_json_add_count(o, rc);
+            r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, o);
+        }
+        if (r == RS_OK) {
+            rs_run_emit_exact(run, v, o);
+        } else {
+            json_decref(o);
+        }
+        rs_rootcount_clear(rc);
+    }
+    fmpz_poly_clear(p);
+    return r;
+}

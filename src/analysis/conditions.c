@@ -1,0 +1,150 @@
+/* conditions.c -- the symbolic stability conditions (Hurwitz /
+ * Lienard-Chipart of q(z), an OR of branches over the sign of its leading
+ * coefficient) as JSON, shared by hurwitz, region and the maps' boundary. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "analysis/impl.h"
+#include "recstab/bilinear.h"
+
+void rs_json_append_unique(json_t *arr, const char *str)
+{
+    size_t i;
+    for (i = 0; i < json_array_size(arr); i++)
+        if (strcmp(json_string_value(json_array_get(arr, i)), str) == 0) return;
+    json_array_append_new(arr, json_string(str));
+}
+
+json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s)
+{
+    return rs_json_zpoly(f, s);
+}
+
+int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
+{
+    const rs_scheme_struct *s = v->s;
+    int *sign = rs_run_signs(run, s);
+    int r;
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+    /* q losing degree for every value is a root lambda = -1 for every value:
+     * conditions of the lower-degree q would ignore it */
+    if (fmpz_mpoly_degree_si(qz, s->lambda_var, s->zctx) < v->cp->degree) {
+        flint_free(sign);
+        rs_hurwitz_clear(h, s->zctx);
+        return rs_error_set(run->err, RS_ERR_MATH, "hurwitz: p(-1) = 0 for every parameter value (lambda = -1 "
+                            "is a root): never asymptotically stable");
+    }
+    r = rs_hurwitz_compute(h, qz, s->lambda_var, (const rs_sign_t *) sign, s->zctx, run->err);
+    flint_free(sign);
+    return r;
+}
+
+/* The conditions of q(z) for every admissible sign of its leading
+ * coefficient (an OR of branches), q(z) into qz.  charpoly's normalisation
+ * makes the lex-leading term of p positive: that fixes no sign of a symbolic
+ * coefficient (and lc q = (-1)^n p(-1) is another coefficient anyway), so
+ * only the assumptions may drop a branch. */
+int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
+{
+    const rs_scheme_struct *s = v->s;
+    int *sign = rs_run_signs(run, s);
+    int r;
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
+    r = rs_hurwitz_or_compute(hb, qz, s->lambda_var, v->cp->degree, (const rs_sign_t *) sign, s->zctx, run->err);
+    flint_free(sign);
+    return r;
+}
+
+int rs_run_hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    return rs_hurwitz_or_holds((const rs_hurwitz_or_struct *) data, pt, s->zctx);
+}
+
+/* Every stated condition of one branch: "reduced > 0" and "factor != 0". */
+static json_t *branch_json(const rs_hurwitz_t h, const rs_scheme_t s)
+{
+    json_t *a = json_array();
+    slong i, k;
+    for (i = 0; i < h->ncond; i++) {
+        char *line;
+        if (h->cond[i].trivially_true) continue;
+        line = rs_cond_string(h->cond[i].reduced, s, "> 0");
+        rs_json_append_unique(a, line);
+        free(line);
+    }
+    for (i = 0; i < h->ncond; i++)
+        for (k = 0; k < h->cond[i].factors->num; k++)
+            if (!h->cond[i].dropped[k] && h->cond[i].even[k]) {
+                char *line = rs_cond_string(h->cond[i].factors->poly + k, s, "!= 0");
+                rs_json_append_unique(a, line);
+                free(line);
+            }
+    return a;
+}
+
+/* Why no branch exists (lambda = -1 or 1 a root for every value), or NULL. */
+static const char *hurwitz_never_reason(const rs_hurwitz_or_t hb, char *buf, size_t len)
+{
+    if (hb->degree_drop > 0)
+        snprintf(buf, len, "p(-1) = 0 for every parameter value: lambda = -1 is a root (multiplicity %ld: q(z) "
+                 "has degree %ld less); never asymptotically stable", (long) hb->degree_drop, (long) hb->degree_drop);
+    else if (hb->zero_mult > 0)
+        snprintf(buf, len, "p(1) = 0 for every parameter value: lambda = 1 is a root (multiplicity %ld: z^%ld "
+                 "divides q(z)); never asymptotically stable", (long) hb->zero_mult, (long) hb->zero_mult);
+    else
+        return NULL;
+    return buf;
+}
+
+/* "conditions" (one branch) or "branches" (an OR of two), "never" when
+ * no branch can hold; returns 1 if every condition of a branch holds under
+ * the assumptions, -1 if no branch can hold, 0 otherwise. */
+int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
+{
+    char buf[300];
+    const char *why = hurwitz_never_reason(hb, buf, sizeof buf);
+    slong i;
+    if (why != NULL) {
+        json_object_set_new(o, "conditions", json_pack("[s]", "0 > 0"));
+        json_object_set_new(o, "never", json_string(why));
+        return -1;
+    }
+    if (hb->nbranch == 2) {
+        json_t *br = json_array();
+        for (i = 0; i < 2; i++) json_array_append_new(br, branch_json(hb->branch + i, s));
+        json_object_set_new(o, "branches", br);
+        json_object_set_new(o, "branches_note", json_string(
+            "stable iff every condition of one branch holds (the sign of the leading coefficient of q(z) is "
+            "not fixed by the assumptions; Lienard-Chipart applies to q or -q, whichever has it positive)"));
+        return 0;
+    }
+    for (i = 0; i < hb->branch[0].ncond; i++)
+        if (hb->branch[0].cond[i].trivially_false) return -1;
+    for (i = 0; i < hb->branch[0].ncond; i++)
+        if (!hb->branch[0].cond[i].trivially_true) return 0;
+    return 1;
+}
+
+/* Conditions equivalent to stability for every admissible value into o:
+ * "conditions" (one branch: every stated condition, non-zero ones
+ * included), "branches" (an OR) or "never"; checked at sample points.
+ * Returns as rs_json_hurwitz_or through *verdict, or an error code. */
+int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict)
+{
+    const rs_scheme_struct *s = v->s;
+    rs_hurwitz_or_t hb;
+    fmpz_mpoly_t qz;
+    int r;
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_or_init(hb);
+    r = rs_run_hurwitz_or(hb, run, v, qz);
+    if (r == RS_OK) {
+        *verdict = rs_json_hurwitz_or(o, hb, s);
+        if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
+            json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
+        r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
+    }
+    rs_hurwitz_or_clear(hb, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    return r;
+}
