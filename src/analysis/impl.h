@@ -1,7 +1,7 @@
 /* analysis/impl.h -- what the analysis files share: the run of a case and
  * its variants, the exact point verdict and the JSON helpers (run.c), the
  * symbolic stability conditions (conditions.c).  The analyses (an_*.c,
- * analysis_region.c, analysis_sweep.c) include this and registry.h only, never
+ * analysis_sweep.c) include this and registry.h only, never
  * each other.  Private: not installed. */
 #ifndef RECSTAB_ANALYSIS_IMPL_H
 #define RECSTAB_ANALYSIS_IMPL_H
@@ -181,6 +181,15 @@ int rs_run_hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_s
 int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s);
 json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s);
 void rs_json_append_unique(json_t *arr, const char *str);
+
+/* run.c: blanks skipped; a name (letters, digits, _; at most 64 characters
+ * into buf) read after blanks, NULL when none starts there; the number of
+ * variables of p other than lambda and `except` that occur; the coefficient
+ * of t^j of p (variable tv, no other free one) as a polynomial in lambda. */
+const char *rs_req_skip_blanks(const char *t);
+const char *rs_req_read_name(const char *t, char *buf);
+slong rs_run_count_free(const fmpz_mpoly_t p, const rs_scheme_t s, slong except);
+void rs_run_coeff_in(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, slong j, const rs_scheme_t s);
 
 /* run.c: a variant freed (rs_run_variant caches them in the run); a root
  * enclosure as {re, im, rad} strings; p(x) of the polynomial as stated

@@ -970,3 +970,47 @@ json_t *rs_json_p_at(const rs_variant_t *v, slong x)
     fmpq_mpoly_clear(t, s->ctx);
     return j;
 }
+
+/* ---- request words and parameters (region, limit, claim) -------------------------------------------------------- */
+
+const char *rs_req_skip_blanks(const char *t)
+{
+    while (*t == ' ' || *t == '\t') t++;
+    return t;
+}
+
+/* reads an identifier into buf (<= 64 chars); returns pointer after it or NULL */
+const char *rs_req_read_name(const char *t, char *buf)
+{
+    size_t n = 0;
+    t = rs_req_skip_blanks(t);
+    if (!((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') || *t == '_'))
+        return NULL;
+    while (((*t >= 'a' && *t <= 'z') || (*t >= 'A' && *t <= 'Z') || (*t >= '0' && *t <= '9') || *t == '_')
+           && n < 64)
+        buf[n++] = *t++;
+    buf[n] = '\0';
+    return t;
+}
+
+/* variables of p other than lambda that still occur */
+slong rs_run_count_free(const fmpz_mpoly_t p, const rs_scheme_t s, slong except)
+{
+    slong v, n = 0;
+    for (v = 0; v < s->nvars; v++)
+        if (v != s->lambda_var && v != except && fmpz_mpoly_degree_si(p, v, s->zctx) > 0) n++;
+    return n;
+}
+
+/* c_j(lambda): coefficient of t^j of p (no other free variable), as a
+ * univariate polynomial in lambda. */
+void rs_run_coeff_in(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, slong j, const rs_scheme_t s)
+{
+    fmpz_mpoly_t c;
+    ulong jj = (ulong) j;
+    fmpz_mpoly_init(c, s->zctx);
+    fmpz_mpoly_get_coeff_vars_ui(c, p, &tv, &jj, 1, s->zctx);
+    if (!fmpz_mpoly_get_fmpz_poly(out, c, s->lambda_var, s->zctx))
+        fmpz_poly_zero(out);
+    fmpz_mpoly_clear(c, s->zctx);
+}

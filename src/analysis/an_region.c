@@ -1,0 +1,1010 @@
+/* an_region.c -- `region NAME [at P=V, ...]`: the exact set of NAME values
+ * where the scheme is stable, marginal, unstable or singular, endpoints
+ * exact (rational, or a real algebraic number whose status is decided in
+ * Q[t]/(minpoly)); with other parameters symbolic, the conditions on NAME. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <arb.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
+#include "analysis/registry.h"
+#include "recstab/bilinear.h"
+#include "recstab/semisimple.h"
+#include "util/polyfmt.h"
+
+/* "NAME=VALUE, NAME=VALUE" into assignments; *end is where parsing stopped */
+static int parse_assignments(rs_run_t *run, const rs_request_t *q, const char *t, rs_assign_t **out,
+                             slong *nout)
+{
+    rs_assign_t *a = NULL;
+    slong n = 0;
+    *out = NULL;
+    *nout = 0;
+    for (;;) {
+        char name[80];
+        const char *u = rs_req_read_name(t, name), *v;
+        char *num;
+        size_t len;
+        slong idx;
+        rs_error_t e2;
+        int r;
+        if (u == NULL) {
+            /* the values parsed so far are freed too */
+            r = rs_req_error(run, q, rs_req_skip_blanks(t), RS_ERR_INPUT, "expected NAME=VALUE after 'at', found '%s'", rs_req_skip_blanks(t));
+            rs_assign_free(a, n);
+            return r;
+        }
+        idx = rs_case_param_index(run->c, name);
+        if (idx < 0) {
+            r = rs_req_error(run, q, rs_req_skip_blanks(t), RS_ERR_INPUT, "'%s' is not a parameter", name);
+            rs_assign_free(a, n);
+            return r;
+        }
+        u = rs_req_skip_blanks(u);
+        if (*u != '=') {
+            r = rs_req_error(run, q, u, RS_ERR_INPUT, "expected '=' after the name, found '%s'", u);
+            rs_assign_free(a, n);
+            return r;
+        }
+        v = u + 1;
+        len = strcspn(v, ",");
+        num = malloc(len + 1);
+        memcpy(num, v, len);
+        num[len] = '\0';
+        a = realloc(a, (size_t) (n + 1) * sizeof(rs_assign_t));
+        a[n].name = run->c->params[idx].name;
+        a[n].var = idx;
+        fmpq_init(a[n].value);
+        rs_error_init(e2);
+        r = rs_expr_parse_number(a[n].value, num, e2);
+        free(num);
+        n++;
+        if (r != RS_OK) {
+            rs_assign_free(a, n);
+            return rs_req_error(run, q, v, RS_ERR_INPUT, "expected a number: %s", e2->msg);
+        }
+        t = v + len;
+        if (*t == ',') { t++; continue; }
+        break;
+    }
+    *out = a;
+    *nout = n;
+    return RS_OK;
+}
+
+/* b^d p(lambda; a/b), d = deg_t p: an integer polynomial in lambda with the
+ * same roots as p(lambda; t) at t = a/b. */
+static void eval_at(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, const fmpq_t t, const rs_scheme_t s)
+{
+    slong d = fmpz_mpoly_degree_si(p, tv, s->zctx), j;
+    fmpz_poly_t c;
+    fmpz_t w, aj, bj;
+    fmpz_poly_init(c);
+    fmpz_init(w); fmpz_init(aj); fmpz_init(bj);
+    fmpz_poly_zero(out);
+    for (j = 0; j <= d; j++) {
+        rs_run_coeff_in(c, p, tv, j, s);
+        fmpz_pow_ui(aj, fmpq_numref(t), (ulong) j);
+        fmpz_pow_ui(bj, fmpq_denref(t), (ulong) (d - j));
+        fmpz_mul(w, aj, bj);
+        fmpz_poly_scalar_mul_fmpz(c, c, w);
+        fmpz_poly_add(out, out, c);
+    }
+    fmpz_poly_clear(c);
+    fmpz_clear(w); fmpz_clear(aj); fmpz_clear(bj);
+}
+
+/* ---- real algebraic numbers ------------------------------------------------ */
+
+#define CRIT_LC 1     /* leading coefficient in lambda: degree drop */
+#define CRIT_PM1 2    /* p(1) or p(-1): a root at lambda = +-1 */
+#define CRIT_D 4      /* D_{n-1} of q: a pair z, -z (circle pair or real pair) */
+#define CRIT_DISC 8   /* discriminant: a repeated root */
+#define CRIT_TOUCH (CRIT_LC | CRIT_PM1 | CRIT_D)
+
+/* A real root of an irreducible integer polynomial: the root number idx (in
+ * increasing order) of minpoly; rational when deg minpoly == 1. */
+typedef struct {
+    fmpz_poly_t minpoly;
+    slong idx;
+    int rational;
+    fmpq_t q;            /* the value when rational */
+    arb_t x;             /* enclosure */
+    slong prec;
+    int boundary;        /* which critical polynomials vanish here: CRIT_* */
+} alg_t;
+
+static void alg_init(alg_t *a)
+{
+    fmpz_poly_init(a->minpoly);
+    fmpq_init(a->q);
+    arb_init(a->x);
+    a->idx = 0;
+    a->rational = 0;
+    a->prec = 0;
+    a->boundary = 1;
+}
+
+static void alg_clear(alg_t *a)
+{
+    fmpz_poly_clear(a->minpoly);
+    fmpq_clear(a->q);
+    arb_clear(a->x);
+}
+
+/* recompute the enclosure to at least prec bits */
+static void alg_refine(alg_t *a, slong prec)
+{
+    if (a->rational) {
+        arb_set_fmpq(a->x, a->q, prec + 10);
+        a->prec = prec;
+        return;
+    }
+    if (a->prec >= prec) return;
+    {
+        slong d = fmpz_poly_degree(a->minpoly);
+        acb_ptr r = _acb_vec_init(d);
+        rs_radius_complex_roots(r, a->minpoly, prec);
+        arb_set(a->x, acb_realref(r + a->idx));
+        _acb_vec_clear(r, d);
+        a->prec = prec;
+    }
+}
+
+/* -1, 0, 1 (a and b are distinct unless they are the same root) */
+static int alg_cmp(alg_t *a, alg_t *b)
+{
+    slong prec = 64;
+    if (a->rational && b->rational) return fmpq_cmp(a->q, b->q);
+    if (fmpz_poly_equal(a->minpoly, b->minpoly) && a->idx == b->idx) return 0;
+    for (;;) {
+        alg_refine(a, prec);
+        alg_refine(b, prec);
+        if (arb_lt(a->x, b->x)) return -1;
+        if (arb_gt(a->x, b->x)) return 1;
+        prec *= 2;
+        if (prec > 1 << 20) return 0; /* cannot happen for distinct algebraic numbers */
+    }
+}
+
+/* appends the real roots of f (any non-zero polynomial) as alg_t */
+static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int boundary)
+{
+    fmpz_poly_factor_t fac;
+    slong i, k, n0 = *n;
+    if (fmpz_poly_degree(f) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, f);
+    for (i = 0; i < fac->num; i++) {
+        const fmpz_poly_struct *g = fac->p + i;
+        slong d = fmpz_poly_degree(g), nreal;
+        if (d < 1) continue;
+        if (d == 1) {
+            *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
+            alg_init(*list + *n);
+            fmpz_poly_set((*list)[*n].minpoly, g);
+            (*list)[*n].rational = 1;
+            fmpq_set_fmpz_frac((*list)[*n].q, g->coeffs + 0, g->coeffs + 1);
+            fmpq_neg((*list)[*n].q, (*list)[*n].q);
+            alg_refine(*list + *n, 128);
+            (*n)++;
+            continue;
+        }
+        nreal = fmpz_poly_num_real_roots(g);
+        for (k = 0; k < nreal; k++) {
+            *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
+            alg_init(*list + *n);
+            fmpz_poly_set((*list)[*n].minpoly, g);
+            (*list)[*n].idx = k;
+            alg_refine(*list + *n, 128);
+            (*n)++;
+        }
+    }
+    for (i = n0; i < *n; i++) (*list)[i].boundary = boundary;
+    fmpz_poly_factor_clear(fac);
+}
+
+/* JSON form of an endpoint: "p/q" for rationals; for algebraic numbers an
+ * object with the minimal polynomial, an isolating interval and 30 digits. */
+static json_t *alg_json(alg_t *a, const char *var)
+{
+    char *mp, *s;
+    json_t *o;
+    arf_t lo, hi;
+    fmpq_t ql, qh;
+    if (a->rational) return rs_json_fmpq(a->q);
+    alg_refine(a, 128);
+    o = json_object();
+    mp = rs_polyfmt_fmpz_poly(a->minpoly, var);
+    json_object_set_new(o, "minpoly", json_string(mp));
+    free(mp);
+    json_object_set_new(o, "root_index", json_integer(a->idx));
+    arf_init(lo); arf_init(hi);
+    fmpq_init(ql); fmpq_init(qh);
+    arb_get_lbound_arf(lo, a->x, 128);
+    arb_get_ubound_arf(hi, a->x, 128);
+    arf_get_fmpq(ql, lo);
+    arf_get_fmpq(qh, hi);
+    json_object_set_new(o, "interval", json_pack("[o,o]", rs_json_fmpq(ql), rs_json_fmpq(qh)));
+    s = rs_radius_arb_str(a->x, 30);   /* certified digits only */
+    json_object_set_new(o, "approx", json_string(s));
+    flint_free(s);
+    arf_clear(lo); arf_clear(hi);
+    fmpq_clear(ql); fmpq_clear(qh);
+    return o;
+}
+
+static double alg_double(alg_t *a)
+{
+    alg_refine(a, 64);
+    return arf_get_d(arb_midref(a->x), ARF_RND_NEAR);
+}
+
+/* a rational strictly between a and b (a < b); NULL ends are infinite */
+static void rational_between(fmpq_t out, alg_t *a, alg_t *b)
+{
+    if (a == NULL && b == NULL) { fmpq_zero(out); return; }
+    if (b == NULL || a == NULL) {
+        /* an integer beyond the end: past the rational end itself, or past
+         * the far bound of the certified enclosure of an algebraic end (the
+         * midpoint of a 64-bit ball of 2*10^40 is off by about 10^21) */
+        alg_t *e = a ? a : b;
+        fmpz_t f;
+        arf_t bd;
+        fmpz_init(f);
+        arf_init(bd);
+        if (e->rational) {
+            if (a) { fmpz_fdiv_q(f, fmpq_numref(e->q), fmpq_denref(e->q)); fmpz_add_ui(f, f, 1); }
+            else { fmpz_cdiv_q(f, fmpq_numref(e->q), fmpq_denref(e->q)); fmpz_sub_ui(f, f, 1); }
+        } else {
+            alg_refine(e, 64);
+            if (a) { arb_get_ubound_arf(bd, e->x, 64); arf_get_fmpz(f, bd, ARF_RND_FLOOR); fmpz_add_ui(f, f, 1); }
+            else { arb_get_lbound_arf(bd, e->x, 64); arf_get_fmpz(f, bd, ARF_RND_CEIL); fmpz_sub_ui(f, f, 1); }
+        }
+        fmpz_set(fmpq_numref(out), f);
+        fmpz_one(fmpq_denref(out));
+        arf_clear(bd);
+        fmpz_clear(f);
+        return;
+    }
+    {
+        slong prec = 64;
+        arf_t u, l;
+        arf_init(u); arf_init(l);
+        for (;;) {
+            /* a < b are distinct, so this ends; the check bounds the cost */
+            if (rs_budget_check(NULL, "the region") != RS_OK) break;
+            alg_refine(a, prec);
+            alg_refine(b, prec);
+            arb_get_ubound_arf(u, a->x, prec);
+            arb_get_lbound_arf(l, b->x, prec);
+            if (arf_cmp(u, l) < 0) break;
+            prec *= 2;
+        }
+        /* the simplest rational in (u, l): try small denominators first */
+        {
+            fmpq_t qu, ql, t;
+            fmpz_t den;
+            int found = 0;
+            fmpq_init(qu); fmpq_init(ql); fmpq_init(t);
+            fmpz_init(den);
+            arf_get_fmpq(qu, u);
+            arf_get_fmpq(ql, l);
+            for (fmpz_one(den); !found && fmpz_cmp_ui(den, 1024) <= 0; fmpz_mul_ui(den, den, 2)) {
+                fmpz_t k;
+                fmpz_init(k);
+                /* k = floor(qu * den) + 1 */
+                fmpz_mul(k, fmpq_numref(qu), den);
+                fmpz_fdiv_q(k, k, fmpq_denref(qu));
+                fmpz_add_ui(k, k, 1);
+                fmpq_set_fmpz_frac(t, k, den);
+                if (fmpq_cmp(t, qu) > 0 && fmpq_cmp(t, ql) < 0) { fmpq_set(out, t); found = 1; }
+                fmpz_clear(k);
+            }
+            if (!found) {
+                fmpq_add(out, qu, ql);
+                fmpq_div_2exp(out, out, 1);
+            }
+            fmpq_clear(qu); fmpq_clear(ql); fmpq_clear(t);
+            fmpz_clear(den);
+        }
+        arf_clear(u); arf_clear(l);
+    }
+}
+
+/* ---- status at an algebraic point, exactly ---------------------------------- */
+
+/* Arithmetic in K = Q[t]/(m), m the minimal polynomial of the real algebraic
+ * t0: an element is an fmpq_poly of degree < deg m; it is zero at t0 iff it
+ * is the zero polynomial, so its sign at t0 is decided by refining Arb
+ * enclosures of t0 until the value's ball excludes 0 (always terminates).
+ * Polynomials in lambda over K are arrays of such elements, c[0..deg]. */
+typedef struct {
+    slong deg;             /* -1 for the zero polynomial */
+    fmpq_poly_struct *c;   /* deg + 1 coefficients (capacity cap) */
+    slong cap;
+} kpoly_t;
+
+static void kp_init(kpoly_t *a, slong cap)
+{
+    slong i;
+    a->cap = cap > 0 ? cap : 1;
+    a->deg = -1;
+    a->c = flint_malloc(a->cap * sizeof(fmpq_poly_struct));
+    for (i = 0; i < a->cap; i++) fmpq_poly_init(a->c + i);
+}
+
+static void kp_clear(kpoly_t *a)
+{
+    slong i;
+    for (i = 0; i < a->cap; i++) fmpq_poly_clear(a->c + i);
+    flint_free(a->c);
+}
+
+static void kp_normalise(kpoly_t *a)
+{
+    while (a->deg >= 0 && fmpq_poly_is_zero(a->c + a->deg)) a->deg--;
+}
+
+static void kp_set(kpoly_t *a, const kpoly_t *b)
+{
+    slong i;
+    for (i = 0; i < a->cap; i++) {
+        if (i <= b->deg) fmpq_poly_set(a->c + i, b->c + i);
+        else fmpq_poly_zero(a->c + i);
+    }
+    a->deg = b->deg;
+}
+
+/* sign of x(t0), x reduced mod m */
+static int k_sign(const fmpq_poly_t x, alg_t *t0)
+{
+    slong prec = 64;
+    arb_poly_t ap;
+    arb_t y;
+    int s = 0;
+    if (fmpq_poly_is_zero(x)) return 0;
+    arb_poly_init(ap);
+    arb_init(y);
+    for (; s == 0; prec *= 2) {
+        alg_refine(t0, prec);
+        arb_poly_set_fmpq_poly(ap, x, prec);
+        arb_poly_evaluate(y, ap, t0->x, prec);
+        if (arb_is_positive(y)) s = 1;
+        else if (arb_is_negative(y)) s = -1;
+    }
+    arb_poly_clear(ap);
+    arb_clear(y);
+    return s;
+}
+
+static void k_mul(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b, const fmpq_poly_t m)
+{
+    fmpq_poly_mul(out, a, b);
+    fmpq_poly_rem(out, out, m);
+}
+
+/* 1/a in K (a != 0: gcd(a, m) = 1 as m is irreducible) */
+static void k_inv(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t m)
+{
+    fmpq_poly_t g, t;
+    fmpq_poly_init(g);
+    fmpq_poly_init(t);
+    fmpq_poly_xgcd(g, out, t, a, m);
+    fmpq_poly_clear(g);
+    fmpq_poly_clear(t);
+}
+
+/* a = q b + r in K[lambda] (b != 0); q may be NULL */
+static void kp_divrem(kpoly_t *q, kpoly_t *r, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    fmpq_poly_t inv, f, t;
+    slong i, d;
+    fmpq_poly_init(inv); fmpq_poly_init(f); fmpq_poly_init(t);
+    kp_set(r, a);
+    if (q != NULL) { for (i = 0; i < q->cap; i++) fmpq_poly_zero(q->c + i); q->deg = -1; }
+    k_inv(inv, b->c + b->deg, m);
+    while (r->deg >= b->deg) {
+        d = r->deg - b->deg;
+        k_mul(f, r->c + r->deg, inv, m);
+        if (q != NULL) { fmpq_poly_set(q->c + d, f); if (q->deg < d) q->deg = d; }
+        for (i = 0; i <= b->deg; i++) {
+            k_mul(t, f, b->c + i, m);
+            fmpq_poly_sub(r->c + i + d, r->c + i + d, t);
+        }
+        fmpq_poly_zero(r->c + r->deg);   /* exactly cancelled */
+        kp_normalise(r);
+    }
+    fmpq_poly_clear(inv); fmpq_poly_clear(f); fmpq_poly_clear(t);
+}
+
+/* a /= its leading coefficient (a != 0).  Monic remainders keep the
+ * coefficients in K to the size of subresultant quotients; the plain
+ * remainder sequence squares them at every step (a degree-15 BDF2 region
+ * spent 9 s in the inversions of swollen leading coefficients). */
+static void kp_make_monic(kpoly_t *a, const fmpq_poly_t m)
+{
+    fmpq_poly_t inv;
+    slong i;
+    if (a->deg < 0) return;
+    fmpq_poly_init(inv);
+    k_inv(inv, a->c + a->deg, m);
+    for (i = 0; i < a->deg; i++) k_mul(a->c + i, a->c + i, inv, m);
+    fmpq_poly_one(a->c + a->deg);
+    fmpq_poly_clear(inv);
+}
+
+/* g = gcd(a, b) (Euclid in K[lambda] with monic remainders; not both zero) */
+static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    slong cap = FLINT_MAX(a->cap, b->cap);
+    kpoly_t x, y, r;
+    kp_init(&x, cap); kp_init(&y, cap); kp_init(&r, cap);
+    kp_set(&x, a);
+    kp_set(&y, b);
+    kp_make_monic(&x, m);
+    kp_make_monic(&y, m);
+    while (y.deg >= 0) {
+        /* coefficients in Q[t]/(m) can swell: stop with the budget (sticky:
+         * rs_analysis_run reports it and discards the result) */
+        if (rs_budget_check(NULL, "the status at an algebraic endpoint") != RS_OK) break;
+        kp_divrem(NULL, &r, &x, &y, m);
+        kp_make_monic(&r, m);
+        kp_set(&x, &y);
+        kp_set(&y, &r);
+    }
+    kp_set(g, &x);
+    kp_clear(&x); kp_clear(&y); kp_clear(&r);
+}
+
+/* every root strictly inside the unit circle: the Schur-Cohn recursion
+ * p_{k-1} = (a_k p_k - a_0 p_k^*)/lambda with a_k^2 - a_0^2 > 0 at each
+ * step (Schur 1917), signs at t0 exact */
+static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
+{
+    kpoly_t a, b;
+    fmpq_poly_t d, t, u;
+    slong k, j;
+    int ok = 1;
+    kp_init(&a, p->deg + 1); kp_init(&b, p->deg + 1);
+    fmpq_poly_init(d); fmpq_poly_init(t); fmpq_poly_init(u);
+    kp_set(&a, p);
+    for (k = a.deg; k >= 1 && ok && rs_budget_check(NULL, "the status at an algebraic endpoint") == RS_OK; k--) {
+        k_mul(t, a.c + k, a.c + k, m);
+        k_mul(u, a.c + 0, a.c + 0, m);
+        fmpq_poly_sub(d, t, u);
+        if (k_sign(d, t0) <= 0) { ok = 0; break; }
+        /* b_j = a_k a_{j+1} - a_0 a_{k-1-j}, j = 0..k-1 */
+        for (j = 0; j < k; j++) {
+            k_mul(t, a.c + k, a.c + j + 1, m);
+            k_mul(u, a.c + 0, a.c + k - 1 - j, m);
+            fmpq_poly_sub(b.c + j, t, u);
+        }
+        for (j = k; j < b.cap; j++) fmpq_poly_zero(b.c + j);
+        b.deg = k - 1;      /* lead b_{k-1} = a_k^2 - a_0^2 != 0 */
+        /* dividing by the real d(t0) != 0 scales every later a_k^2 - a_0^2
+         * by a square: the signs stay, the sizes stop doubling per step */
+        kp_make_monic(&b, m);
+        kp_set(&a, &b);
+    }
+    kp_clear(&a); kp_clear(&b);
+    fmpq_poly_clear(d); fmpq_poly_clear(t); fmpq_poly_clear(u);
+    return ok;
+}
+
+/* multiplicity of the root x0 = +-1 of a (non-zero) in K[lambda] */
+static slong kp_mult_pm1(const kpoly_t *a, slong x0, const fmpq_poly_t m)
+{
+    kpoly_t b, lin, r;
+    slong k = 0;
+    kp_init(&b, a->deg + 1); kp_init(&lin, 2); kp_init(&r, a->deg + 1);
+    fmpq_poly_set_si(lin.c + 0, -x0);
+    fmpq_poly_one(lin.c + 1);
+    lin.deg = 1;
+    kp_set(&b, a);
+    while (b.deg >= 1) {
+        kpoly_t q;
+        kp_init(&q, b.deg + 1);
+        kp_divrem(&q, &r, &b, &lin, m);
+        if (r.deg >= 0) { kp_clear(&q); break; }
+        kp_set(&b, &q);
+        kp_clear(&q);
+        k++;
+    }
+    kp_clear(&b); kp_clear(&lin); kp_clear(&r);
+    return k;
+}
+
+/* A system at t0 whose circle roots are all on the circle, R = the repeated
+ * part of gcd(p, p*): marginal iff each repeated root is semisimple.  Only
+ * +-1 are judged (dim ker A(+-1; t0) by the rank over Q[t]/(minpoly)); a
+ * repeated non-real circle root leaves *decided = 0. */
+static rs_status_t semisimple_pm1(int *decided, const kpoly_t *P, const kpoly_t *R, const fmpz_mpoly_t p,
+                                  slong tv, alg_t *t0, const fmpq_poly_t m, const rs_scheme_t s)
+{
+    slong x0, n = s->n, i, rest = R->deg;
+    rs_status_t st = RS_STATUS_MARGINAL;
+    fmpq_poly_struct *A = flint_malloc(n * n * sizeof(fmpq_poly_struct));
+    fmpq_mpoly_t e;
+    fmpq_t xv;
+    (void) p;
+    fmpq_mpoly_init(e, s->ctx);
+    fmpq_init(xv);
+    for (i = 0; i < n * n; i++) fmpq_poly_init(A + i);
+    for (x0 = -1; x0 <= 1; x0 += 2) {
+        slong k = kp_mult_pm1(R, x0, m), mult, rank;
+        if (k == 0) continue;
+        rest -= k;
+        mult = kp_mult_pm1(P, x0, m);
+        fmpq_set_si(xv, x0, 1);
+        for (i = 0; i < n * n; i++) {
+            fmpq_mpoly_evaluate_one_fmpq(e, s->M + i, s->lambda_var, xv, s->ctx);
+            if (!fmpq_mpoly_get_fmpq_poly(A + i, e, tv, s->ctx)) { *decided = 0; goto done; }
+        }
+        rank = rs_semisimple_rank_mod(A, n, t0->minpoly);
+        if (n - rank != mult) st = RS_STATUS_UNSTABLE;   /* a Jordan block at x0 */
+    }
+    if (rest > 0 && st != RS_STATUS_UNSTABLE) *decided = 0;   /* a repeated non-real circle root */
+done:
+    for (i = 0; i < n * n; i++) fmpq_poly_clear(A + i);
+    flint_free(A);
+    fmpq_mpoly_clear(e, s->ctx);
+    fmpq_clear(xv);
+    return st;
+}
+
+/* Status of p(lambda; t0), t0 an irrational real algebraic number, exactly:
+ * singular where the leading coefficient vanishes; else with
+ * g = gcd(p, p*) (every circle root, every pair r, 1/r; self-reciprocal):
+ * stable iff p has all roots inside; unstable if p/g (no circle roots) has
+ * a root outside or g is not squarefree (a repeated circle root or a
+ * repeated pair); otherwise g has all roots on the circle,
+ * simple, iff g' has all roots strictly inside (Cohn 1922 with
+ * Gauss-Lucas): marginal, else a pair off the circle: unstable.  A system
+ * with a repeated circle root: marginal iff semisimple (semisimple_pm1);
+ * returns 0 (undecided) only for a repeated non-real circle root there. */
+static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
+{
+    int decided = 1;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j;
+    fmpq_poly_t m;
+    fmpz_mpoly_t c;
+    fmpz_poly_t u;
+    kpoly_t P, R, G, H, D;
+    rs_status_t st;
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    fmpz_mpoly_init(c, s->zctx);
+    fmpz_poly_init(u);
+    kp_init(&P, n + 1); kp_init(&R, n + 1); kp_init(&G, n + 1); kp_init(&H, n + 1); kp_init(&D, n + 1);
+    for (j = 0; j <= n; j++) {
+        ulong e = (ulong) j;
+        fmpz_mpoly_get_coeff_vars_ui(c, p, &lv, &e, 1, s->zctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, c, tv, s->zctx)) fmpz_poly_zero(u);
+        fmpq_poly_set_fmpz_poly(P.c + j, u);
+        fmpq_poly_rem(P.c + j, P.c + j, m);
+    }
+    P.deg = n;
+    kp_normalise(&P);
+    if (P.deg < n) {
+        st = RS_STATUS_SINGULAR;     /* no step: the leading coefficient is 0 at t0 */
+    } else {
+        for (j = 0; j <= n; j++) fmpq_poly_set(R.c + j, P.c + n - j);
+        R.deg = n;
+        kp_normalise(&R);
+        kp_gcd(&G, &P, &R, m);
+        if (G.deg <= 0) {
+            st = kp_all_inside(&P, m, t0) ? RS_STATUS_STABLE : RS_STATUS_UNSTABLE;
+        } else {
+            kp_divrem(&H, &R, &P, &G, m);
+            st = RS_STATUS_UNSTABLE;
+            if (kp_all_inside(&H, m, t0)) {
+                for (j = 0; j < G.deg; j++) {             /* D = G' */
+                    fmpq_poly_scalar_mul_si(D.c + j, G.c + j + 1, j + 1);
+                }
+                D.deg = G.deg - 1;
+                kp_normalise(&D);
+                kp_gcd(&R, &G, &D, m);
+                if (R.deg == 0 && kp_all_inside(&D, m, t0)) {
+                    st = RS_STATUS_MARGINAL;
+                } else if (R.deg > 0 && s->n >= 2 && !s->from_char) {
+                    /* a repeated root of g: if every root of g is on the
+                     * circle (its squarefree part G/R passes Cohn's test) a
+                     * system may still be bounded: semisimple roots */
+                    kp_divrem(&H, &D, &G, &R, m);
+                    kp_set(&G, &H);
+                    for (j = 0; j < G.deg; j++) fmpq_poly_scalar_mul_si(D.c + j, G.c + j + 1, j + 1);
+                    for (j = G.deg; j < D.cap; j++) fmpq_poly_zero(D.c + j);
+                    D.deg = G.deg - 1;
+                    kp_normalise(&D);
+                    if (kp_all_inside(&D, m, t0))
+                        st = semisimple_pm1(&decided, &P, &R, p, tv, t0, m, s);
+                }
+            }
+        }
+    }
+    *out = st;
+    kp_clear(&P); kp_clear(&R); kp_clear(&G); kp_clear(&H); kp_clear(&D);
+    fmpq_poly_clear(m);
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpz_poly_clear(u);
+    return decided;
+}
+
+/* ---- region ------------------------------------------------------------------ */
+
+/* univariate polynomial in variable tv from an mpoly in t only (else 0) */
+static int to_upoly(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, const rs_scheme_t s)
+{
+    return fmpz_mpoly_get_fmpz_poly(out, p, tv, s->zctx);
+}
+
+typedef struct {
+    int is_point;        /* a single value, or the open interval between */
+    alg_t *lo, *hi;      /* NULL = infinite (intervals); for points lo == hi */
+    int decided;         /* status known exactly */
+    rs_status_t status;
+} piece_t;
+
+/* The exact verdict of v at t (system-aware; "singular" where the degree in
+ * lambda drops); RS_ERR_MATH when p vanishes identically at t. */
+static int status_at(rs_status_t *st, rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t)
+{
+    rs_rootcount_t rc;
+    fmpz_poly_t u;
+    int r;
+    fmpz_poly_init(u);
+    eval_at(u, v->cp->p, tv, t, v->s);
+    r = fmpz_poly_is_zero(u) ? RS_ERR_MATH : RS_OK;
+    fmpz_poly_clear(u);
+    if (r != RS_OK) return r;
+    r = rs_run_point_status(st, rc, run, v, &tv, t, 1);
+    rs_rootcount_clear(rc);
+    return r;
+}
+
+static void sort_algs(alg_t *a, slong n)
+{
+    slong i, j;
+    for (i = 1; i < n; i++)       /* insertion sort: n is small */
+        for (j = i; j > 0 && alg_cmp(a + j - 1, a + j) > 0; j--) {
+            alg_t t = a[j - 1];
+            a[j - 1] = a[j];
+            a[j] = t;
+        }
+}
+
+/* region in one parameter when other parameters are still symbolic: the
+ * conditions as functions of them (Hurwitz/Lienard-Chipart, factored). */
+static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
+{
+    int verdict, r = rs_run_symbolic_conditions(run, v, o, &verdict);
+    if (r == RS_OK) {
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "note", json_string(
+            "other parameters are symbolic: stable iff every condition holds (Lienard-Chipart on the "
+            "bilinear polynomial, factors positive under the assumptions dropped; an OR of branches where the "
+            "sign of its leading coefficient is free); a region valid for all admissible values is what "
+            "`claim stable when ...` proves or refutes"));
+    }
+    return r;
+}
+
+/* region NAME [at P=V, ...]: the parameter and the values, checked up front */
+int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest, *t;
+    char name[80];
+    slong i;
+    int r;
+    t = rs_req_read_name(rest, name);
+    if (t == NULL)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after region, found '%s'", rest);
+    req->u.region.param = rs_case_param_index(run->c, name);
+    if (req->u.region.param < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    t = rs_req_skip_blanks(t);
+    if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
+        r = parse_assignments(run, q, t + 2, &req->u.region.at, &req->u.region.nat);
+        if (r != RS_OK) return r;
+    } else if (*t != '\0') {
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
+    }
+    for (i = 0; i < req->u.region.nat; i++)
+        if (req->u.region.at[i].var == req->u.region.param)
+            return rs_req_error(run, q, rest, RS_ERR_INPUT, "the region parameter '%s' is also given a value", name);
+    return RS_OK;
+}
+
+int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const char *rest = req->rest;
+    const char *name = run->c->params[req->u.region.param].name;
+    rs_assign_t *a = NULL;
+    slong na = 0, tv = req->u.region.param, i, ncrit = 0, npieces = 0;
+    const char *keep[1];
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_bound_t *bounds;
+    alg_t *crit = NULL, lo_end, hi_end;
+    piece_t *pieces = NULL;
+    fmpz_mpoly_t pt, g, tmp, sqf, sqf_t;
+    json_t *o, *ivs, *pts;
+    int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0, single;
+
+    keep[0] = name;
+    rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    s = v->s;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "param", json_string(name));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    if (rs_run_count_free(v->cp->p, s, tv) > 0) {
+        r = region_symbolic(run, v, o);
+        if (r != RS_OK) { json_decref(o); return r; }
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+        return RS_OK;
+    }
+    /* domain of the parameter from the assume lines */
+    bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(bounds, run->c->nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(bounds, &run->c->assume[i], run->c, run->err);
+    if (rs_bound_empty(bounds + tv)) {
+        rs_bounds_clear(bounds, run->c->nparams);
+        flint_free(bounds);
+        json_decref(o);
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "the assumptions are contradictory: no value of '%s' satisfies them", name);
+    }
+    /* assume NAME = c: the region is that one point, no interval */
+    single = bounds[tv].has_lo && bounds[tv].has_hi && fmpq_equal(bounds[tv].lo, bounds[tv].hi);
+    alg_init(&lo_end);
+    alg_init(&hi_end);
+    have_lo = bounds[tv].has_lo;
+    have_hi = bounds[tv].has_hi;
+    if (have_lo) { lo_end.rational = 1; fmpq_set(lo_end.q, bounds[tv].lo); alg_refine(&lo_end, 128); }
+    if (have_hi) { hi_end.rational = 1; fmpq_set(hi_end.q, bounds[tv].hi); alg_refine(&hi_end, 128); }
+
+    /* the part of p that depends on t, and its critical values */
+    fmpz_mpoly_init(pt, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpz_mpoly_init(tmp, s->zctx);
+    if (!fmpz_mpoly_content_vars(g, v->cp->p, &tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
+        fmpz_mpoly_one(g, s->zctx);
+    fmpz_mpoly_divexact(pt, v->cp->p, g, s->zctx);
+    /* A system keeps repeated factors (identical modes): roots cross or
+     * collide where the squarefree part says, and a repeated factor changes
+     * its Jordan structure only where the rank of A modulo it can drop. */
+    fmpz_mpoly_init(sqf, s->zctx);
+    fmpz_mpoly_init(sqf_t, s->zctx);
+    fmpz_mpoly_one(sqf, s->zctx);
+    fmpz_mpoly_one(sqf_t, s->zctx);
+    {
+        fmpz_mpoly_factor_t fac;
+        fmpz_poly_struct *drops = NULL;
+        slong ndrops = 0, k;
+        fmpz_mpoly_factor_init(fac, s->zctx);
+        if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
+            for (k = 0; k < fac->num; k++) {
+                fmpz_mpoly_struct *f = fac->poly + k;
+                int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
+                if (has_l) fmpz_mpoly_mul(sqf, sqf, f, s->zctx);
+                if (fmpz_mpoly_degree_si(f, tv, s->zctx) > 0) fmpz_mpoly_mul(sqf_t, sqf_t, f, s->zctx);
+                if (has_l && fmpz_cmp_ui(fac->exp + k, 2) >= 0)
+                    rs_semisimple_rank_drops(&drops, &ndrops, s, tv, f);
+            }
+        } else {
+            fmpz_mpoly_set(sqf, pt, s->zctx);
+            fmpz_mpoly_set(sqf_t, pt, s->zctx);
+        }
+        for (k = 0; k < ndrops; k++) {
+            alg_roots_append(&crit, &ncrit, drops + k, CRIT_LC | CRIT_DISC);
+            fmpz_poly_clear(drops + k);
+        }
+        flint_free(drops);
+        fmpz_mpoly_factor_clear(fac, s->zctx);
+    }
+    if (fmpz_mpoly_degree_si(pt, tv, s->zctx) > 0) {
+        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(pt, lv, s->zctx);
+        fmpz_poly_t u;
+        fmpz_t pm;
+        fmpz_poly_init(u);
+        fmpz_init(pm);
+        /* leading coefficient in lambda */
+        {
+            ulong nn = (ulong) n;
+            fmpz_mpoly_get_coeff_vars_ui(tmp, pt, &lv, &nn, 1, s->zctx);
+            if (to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_LC);
+        }
+        /* roots at lambda = 1 and lambda = -1 */
+        fmpz_set_si(pm, 1);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
+        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
+        fmpz_set_si(pm, -1);
+        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
+        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
+        /* a pair of roots crossing the circle elsewhere: D_{n-1} of q */
+        if (n >= 2) {
+            rs_hurwitz_t h;
+            fmpz_mpoly_t qz;
+            int *sign = flint_calloc(s->nvars, sizeof(int));
+            fmpz_mpoly_init(qz, s->zctx);
+            rs_hurwitz_init(h);
+            rs_bilinear_fmpz_mpoly(qz, sqf_t, lv, s->zctx);
+            if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
+                && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, run->err) == RS_OK
+                && h->n >= 2) {
+                if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
+                    d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
+                else if (to_upoly(u, h->minors + h->n - 2, tv, s))
+                    alg_roots_append(&crit, &ncrit, u, CRIT_D);
+            }
+            rs_hurwitz_clear(h, s->zctx);
+            fmpz_mpoly_clear(qz, s->zctx);
+            flint_free(sign);
+        }
+        /* collisions (roots leaving the circle through a double root) */
+        if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2) {
+            if (!fmpz_mpoly_discriminant(tmp, sqf, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
+                repeated_always = 1;
+            else if (to_upoly(u, tmp, tv, s))
+                alg_roots_append(&crit, &ncrit, u, d_always ? (CRIT_DISC | CRIT_D) : CRIT_DISC);
+        }
+        fmpz_poly_clear(u);
+        fmpz_clear(pm);
+    }
+    rs_error_init(run->err);
+    /* sort, drop duplicates and values outside the open domain */
+    sort_algs(crit, ncrit);
+    {
+        slong k = 0;
+        for (i = 0; i < ncrit; i++) {
+            int keepit = 1;
+            if (k > 0 && alg_cmp(crit + k - 1, crit + i) == 0) {
+                keepit = 0;
+                crit[k - 1].boundary |= crit[i].boundary;
+            }
+            if (keepit && have_lo && alg_cmp(crit + i, &lo_end) <= 0) keepit = 0;
+            if (keepit && have_hi && alg_cmp(crit + i, &hi_end) >= 0) keepit = 0;
+            if (keepit) {
+                if (k != i) { alg_t tt = crit[k]; crit[k] = crit[i]; crit[i] = tt; }
+                k++;
+            }
+        }
+        for (i = k; i < ncrit; i++) alg_clear(crit + i);
+        ncrit = k;
+    }
+    /* pieces: [lo], (lo, c1), c1, ..., (ck, hi), [hi] */
+    pieces = calloc((size_t) (2 * ncrit + 4), sizeof(piece_t));
+    if (have_lo && bounds[tv].lo_closed) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &lo_end; npieces++;
+    }
+    for (i = 0; i <= ncrit && !single; i++) {
+        pieces[npieces].is_point = 0;
+        pieces[npieces].lo = (i == 0) ? (have_lo ? &lo_end : NULL) : crit + i - 1;
+        pieces[npieces].hi = (i == ncrit) ? (have_hi ? &hi_end : NULL) : crit + i;
+        npieces++;
+        if (i < ncrit) {
+            pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = crit + i; npieces++;
+        }
+    }
+    if (have_hi && bounds[tv].hi_closed && !(have_lo && fmpq_equal(bounds[tv].lo, bounds[tv].hi))) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &hi_end; npieces++;
+    }
+    /* decide each piece exactly at a rational point */
+    for (i = 0; i < npieces && r == RS_OK; i++) {
+        piece_t *pc = pieces + i;
+        fmpq_t x;
+        fmpq_init(x);
+        if (pc->is_point && !pc->lo->rational) {
+            pc->decided = status_at_algebraic(&pc->status, v->cp->p, tv, pc->lo, s);
+        } else {
+            if (pc->is_point) fmpq_set(x, pc->lo->q);
+            else rational_between(x, pc->lo, pc->hi);
+            r = status_at(&pc->status, run, v, tv, x);
+            if (r == RS_ERR_MATH) {
+                char *xs = fmpq_get_str(NULL, 10, x);
+                r = rs_req_error(run, q, rest, RS_ERR_MATH,
+                                 "the characteristic polynomial vanishes identically at %s", xs);
+                flint_free(xs);
+            }
+            pc->decided = 1;
+        }
+        fmpq_clear(x);
+    }
+    /* Irrational critical values, decided exactly from what vanishes there:
+     * - none of lc, p(+-1), D_{n-1}: no root on the circle (Orlando: a circle
+     *   root other than +-1 makes D_{n-1} vanish) and no degree drop, so the
+     *   status is that of both neighbours, which must agree;
+     * - a stable neighbour, lc != 0, and p(+-1) = 0 or D_{n-1} = 0 but no
+     *   repeated root (discriminant != 0): the limit of roots inside the disc
+     *   leaves none outside, a pair z, -z of q cannot be real (one would be
+     *   outside), so a root is on the circle and all are simple: marginal. */
+    /* (The exact status above is checked against this continuity argument
+     * wherever it applies: a disagreement is an inconsistency, exit 3.) */
+    for (i = 1; i + 1 < npieces && r == RS_OK; i++) {
+        piece_t *pc = pieces + i;
+        int fl;
+        if (!pc->is_point || pc->lo->rational || !pc->decided) continue;
+        fl = pc->lo->boundary;
+        if (!(fl & CRIT_TOUCH)) {
+            if (!pieces[i - 1].decided || !pieces[i + 1].decided
+                || pieces[i - 1].status != pieces[i + 1].status
+                || pc->status != pieces[i - 1].status)
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
+        } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !repeated_always
+                   /* a repeated factor (a system's identical modes) may be a Jordan block */
+                   && fmpz_mpoly_degree_si(sqf, s->lambda_var, s->zctx)
+                      == fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx)
+                   && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
+                       || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
+            if (pc->status != RS_STATUS_MARGINAL)
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
+        }
+    }
+    if (r == RS_OK) {
+        /* merge runs of decided pieces with equal status into intervals */
+        ivs = json_array();
+        pts = json_array();
+        i = 0;
+        while (i < npieces) {
+            slong j = i;
+            json_t *iv;
+            if (!pieces[i].decided) {
+                json_t *pj = json_object();
+                json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
+                json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
+                json_object_set_new(pj, "status", json_string("undecided"));
+                json_object_set_new(pj, "note", json_string(
+                    "irrational algebraic point where a system has a repeated circle root: its semisimplicity "
+                    "(the rank of A there) is not decided; not stable, the intervals beside it are exact"));
+                json_array_append_new(pts, pj);
+                i++;
+                continue;
+            }
+            while (j + 1 < npieces && pieces[j + 1].decided && pieces[j + 1].status == pieces[i].status) j++;
+            iv = json_object();
+            {
+                alg_t *lo = pieces[i].lo, *hi = pieces[j].hi;
+                json_object_set_new(iv, "lo", lo ? alg_json(lo, name) : json_null());
+                json_object_set_new(iv, "hi", hi ? alg_json(hi, name) : json_null());
+                json_object_set_new(iv, "lo_closed", json_boolean(pieces[i].is_point));
+                json_object_set_new(iv, "hi_closed", json_boolean(pieces[j].is_point));
+                json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
+                json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
+                json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
+            }
+            json_array_append_new(ivs, iv);
+            i = j + 1;
+        }
+        json_object_set_new(o, "symbolic", json_false());
+        json_object_set_new(o, "intervals", ivs);
+        json_object_set_new(o, "undecided_points", pts);
+        json_object_set_new(o, "critical_values", json_integer(ncrit));
+        json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+    }
+    for (i = 0; i < ncrit; i++) alg_clear(crit + i);
+    free(crit);
+    free(pieces);
+    alg_clear(&lo_end);
+    alg_clear(&hi_end);
+    rs_bounds_clear(bounds, run->c->nparams);
+    flint_free(bounds);
+    fmpz_mpoly_clear(pt, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpz_mpoly_clear(tmp, s->zctx);
+    fmpz_mpoly_clear(sqf, s->zctx);
+    fmpz_mpoly_clear(sqf_t, s->zctx);
+    return r;
+}
