@@ -96,13 +96,13 @@ void rs_an_req_clear(rs_an_req_t *req);
 /* Runs a parsed request. */
 int rs_an_req_run(rs_run_t *run, const rs_an_req_t *req);
 
-/* The option key of def (its index in def->opts), for run functions. */
+/* The value of option `key` of the request (run.c; absent: at == NULL). */
 const rs_optval_t *rs_an_opt(const rs_an_req_t *req, const char *key);
 /* The choice of an RS_OPT_ENUM option (its default when absent). */
 const char *rs_an_opt_choice(const rs_an_req_t *req, const char *key);
 
-/* The first name of e the model does not declare (param, unknown, let or
- * reserved), or NULL; rs_an_check_names: that as an input error at the
+/* (run.c) The first name of e the model does not declare (param, unknown,
+ * let or reserved), or NULL; rs_an_check_names: that as an input error at the
  * name (a typo would otherwise surface late, or without a place). */
 const rs_expr_t *rs_an_undeclared_name(const rs_expr_t *e, const rs_model_t m);
 int rs_an_check_names(rs_run_t *run, const rs_request_t *q, const rs_expr_t *e);

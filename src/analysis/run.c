@@ -7,6 +7,9 @@
 #include <string.h>
 #include <ctype.h>
 #include "analysis/impl.h"
+#include "analysis/registry.h"
+#include "lower/builder.h"
+#include "lower/recurrence.h"
 #include "util/polyfmt.h"
 #include "recstab/semisimple.h"
 #include "recstab/routh.h"
@@ -1013,4 +1016,50 @@ void rs_run_coeff_in(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, slong j, c
     if (!fmpz_mpoly_get_fmpz_poly(out, c, s->lambda_var, s->zctx))
         fmpz_poly_zero(out);
     fmpz_mpoly_clear(c, s->zctx);
+}
+
+/* ---- typed requests: names and options ----------------------------------------------------------------- */
+
+const rs_expr_t *rs_an_undeclared_name(const rs_expr_t *e, const rs_model_t m)
+{
+    const rs_expr_t *u;
+    if (e == NULL) return NULL;
+    if (e->kind == RS_EXPR_NAME)
+        return (rs_case_param_index(m->c, e->name) < 0 && rs_model_unknown_index(m, e->name) < 0
+                && rs_case_let_index(m->c, e->name) < 0 && !rs_name_is_reserved(e->name)) ? e : NULL;
+    if ((u = rs_an_undeclared_name(e->a, m)) != NULL) return u;
+    return rs_an_undeclared_name(e->b, m);
+}
+
+int rs_an_check_names(rs_run_t *run, const rs_request_t *q, const rs_expr_t *e)
+{
+    const rs_expr_t *u = rs_an_undeclared_name(e, run->m);
+    if (u == NULL) return RS_OK;
+    return rs_error_set_at(run->err, RS_ERR_INPUT, q->loc.file, u->line, u->col,
+                           "unknown name '%s' (expected a declared param, unknown or let)", u->name);
+}
+
+const rs_optval_t *rs_an_opt(const rs_an_req_t *req, const char *key)
+{
+    static const rs_optval_t absent;
+    slong k;
+    for (k = 0; req->def->opts != NULL && req->def->opts[k].key != NULL; k++)
+        if (strcmp(req->def->opts[k].key, key) == 0) return req->opt + k;
+    return &absent;
+}
+
+const char *rs_an_opt_choice(const rs_an_req_t *req, const char *key)
+{
+    slong k;
+    for (k = 0; req->def->opts != NULL && req->def->opts[k].key != NULL; k++)
+        if (strcmp(req->def->opts[k].key, key) == 0)
+            return req->def->opts[k].choices[req->opt[k].at != NULL ? req->opt[k].num : 0];
+    return NULL;
+}
+
+int rs_model_kind(const rs_case_t c)
+{
+    if (rs_recurrence_is_numeric(c)) return RS_MODEL_RECURRENCE;
+    if (rs_builder_is_exact(c)) return RS_MODEL_COSIM;
+    return RS_MODEL_EQUATIONS;
 }
