@@ -178,301 +178,337 @@ fail:
     return -1;
 }
 
-int main(int argc, char **argv)
-{
-    int json = 0, markdown = 0, latex = 0, emit = 0, i, worst = 0;
-    const char **sets = calloc((size_t) argc, sizeof(char *));
-    const char **analyses = calloc((size_t) argc, sizeof(char *));
-    const char **cases = calloc((size_t) argc, sizeof(char *));
-    int nsets = 0, nanalyses = 0, ncases = 0, rc = 0;
+/* The command line, parsed once and passed down (no globals). */
+typedef struct {
+    int json, markdown, latex, emit;
+    const char **sets, **analyses, **cases;
+    int nsets, nanalyses, ncases;
+    const char *csv_path, *plot_path;
+    long shard_i, shard_n, threads, max_points;
+    int first_level;
+    int rank;              /* MPI rank (0 without MPI): only rank 0 writes */
     rs_options_t opt;
-    json_t *docs = json_array();
-    char *outbuf = NULL;
-    size_t outlen = 0;
-    FILE *out;
-    const char *csv_path = NULL, *plot_path = NULL;
-    rs_cli_out_t csv_out, plot_out, *outs[2];
-    int nouts = 0;
-    long shard_i = 1, shard_n = 1, threads = 0, max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
-    int rank = 0, first_level = RS_LEVEL_FAST;
-    double budget_t0;
+} cli_t;
 
-#ifdef RS_MPI
-    MPI_Init(&argc, &argv);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (rank != 0) {
-        /* every rank runs the same analyses; only rank 0 writes anything */
-        if (freopen("/dev/null", "w", stdout) == NULL || freopen("/dev/null", "w", stderr) == NULL) return 2;
+/* Usage errors print to stderr and give exit status 2. */
+static int usage_error(const char *fmt, const char *a, const char *b, int with_usage)
+{
+    fputs("recstab: ", stderr);
+    fprintf(stderr, fmt, a, b);
+    fputc('\n', stderr);
+    if (with_usage) usage(stderr);
+    return 2;
+}
+
+/* --shard I/N into cli; 0 or the exit status */
+static int parse_shard(cli_t *cli, const char *val)
+{
+    char *slash, tmp[64];
+    snprintf(tmp, sizeof tmp, "%s", val);
+    slash = strchr(tmp, '/');
+    if (slash != NULL) {
+        *slash = '\0';
+        if (parse_long(tmp, 1, 1000000000L, &cli->shard_i) && parse_long(slash + 1, 1, 1000000000L, &cli->shard_n)
+            && cli->shard_i <= cli->shard_n) return 0;
     }
-#endif
-    rs_options_default(&opt);
-    /* GSL's error handler, set once for the whole process: off, so that a
-     * failing GSL call (the sweep ladder's double root finder, OpenMP
-     * workers included) returns its status instead of aborting */
-    gsl_set_error_handler_off();
-    raise_stack_limit();
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--json") == 0) json = 1;
-        else if (strcmp(a, "--markdown") == 0) markdown = 1;
-        else if (strcmp(a, "--emit") == 0 || strcmp(a, "--emit=equations") == 0) {
-            if (strcmp(a, "--emit") == 0) {
-                if (i + 1 >= argc || strcmp(argv[i + 1], "equations") != 0) {
-                    fprintf(stderr, "recstab: --emit expects 'equations'\n");
-                    rc = 2;
-                    goto end;
-                }
-                i++;
-            }
-            emit = 1;
+    return usage_error("--shard expects I/N with 1 <= I <= N (e.g. 2/4), found '%s'%s", val, "", 0);
+}
+
+/* The options of the sweeps and maps and the output files, with a value:
+ * 0 or the exit status. */
+static int parse_sweep_option(cli_t *cli, const char *a, const char *val)
+{
+    static const char *const lv[] = {"fast", "prec128", "prec256", "exact", "double"};
+    int k;
+    if (strcmp(a, "--csv") == 0) cli->csv_path = val;
+    else if (strcmp(a, "--plot") == 0) cli->plot_path = val;
+    else if (strcmp(a, "--threads") == 0) {
+        if (!parse_long(val, 1, 4096, &cli->threads))
+            return usage_error("--threads expects a number of threads from 1 to 4096, found '%s'%s", val, "", 0);
+    } else if (strcmp(a, "--sweep-level") == 0) {
+        cli->first_level = -1;
+        for (k = 0; k < 5; k++) if (strcmp(val, lv[k]) == 0) cli->first_level = k;
+        if (cli->first_level < 0)
+            return usage_error("--sweep-level expects fast, prec128, prec256, exact or double, found '%s'%s", val, "", 0);
+    } else if (strcmp(a, "--max-points") == 0) {
+        if (!parse_long(val, 1, 1000000000000L, &cli->max_points))
+            return usage_error("--max-points expects a positive number of points, found '%s'%s", val, "", 0);
+    } else return parse_shard(cli, val);
+    return 0;
+}
+
+/* One argument at argv[*i] (advanced past its value): 0, or the exit
+ * status to end with (--help, --version, --list-analyses: 0; errors: 2). */
+static int parse_arg(cli_t *cli, int argc, char **argv, int *i)
+{
+    const char *a = argv[*i];
+    if (strcmp(a, "--json") == 0) cli->json = 1;
+    else if (strcmp(a, "--markdown") == 0) cli->markdown = 1;
+    else if (strcmp(a, "--emit") == 0 || strcmp(a, "--emit=equations") == 0) {
+        if (strcmp(a, "--emit") == 0) {
+            if (*i + 1 >= argc || strcmp(argv[*i + 1], "equations") != 0)
+                return usage_error("--emit expects 'equations'%s%s", "", "", 0);
+            (*i)++;
         }
-        else if (strcmp(a, "--latex") == 0) latex = 1;
-        else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); rc = 0; goto end; }
-        else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); rc = 0; goto end; }
-        else if (strcmp(a, "--list-analyses") == 0) { rs_analysis_list(stdout, 0); rc = 0; goto end; }
-        else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
-                 || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0
-                 || strcmp(a, "--sweep-level") == 0) {
-            const char *val;
-            if (i + 1 >= argc) {
-                fprintf(stderr, "recstab: %s needs a value\n", a);
-                usage(stderr);
-                rc = 2;
-                goto end;
-            }
-            val = argv[++i];
-            if (strcmp(a, "--csv") == 0) csv_path = val;
-            else if (strcmp(a, "--plot") == 0) plot_path = val;
-            else if (strcmp(a, "--threads") == 0) {
-                if (!parse_long(val, 1, 4096, &threads)) {
-                    fprintf(stderr, "recstab: --threads expects a number of threads from 1 to 4096, found '%s'\n", val);
-                    rc = 2;
-                    goto end;
-                }
-            } else if (strcmp(a, "--sweep-level") == 0) {
-                static const char *const lv[] = {"fast", "prec128", "prec256", "exact", "double"};
-                int k2;
-                first_level = -1;
-                for (k2 = 0; k2 < 5; k2++) if (strcmp(val, lv[k2]) == 0) first_level = k2;
-                if (first_level < 0) {
-                    fprintf(stderr, "recstab: --sweep-level expects fast, prec128, prec256, exact or double, found '%s'\n", val);
-                    rc = 2;
-                    goto end;
-                }
-            } else if (strcmp(a, "--max-points") == 0) {
-                if (!parse_long(val, 1, 1000000000000L, &max_points)) {
-                    fprintf(stderr, "recstab: --max-points expects a positive number of points, found '%s'\n", val);
-                    rc = 2;
-                    goto end;
-                }
-            } else {
-                char *slash;
-                const char *bad = NULL;
-                char tmp[64];
-                snprintf(tmp, sizeof tmp, "%s", val);
-                slash = strchr(tmp, '/');
-                if (slash == NULL) bad = val;
-                else {
-                    *slash = '\0';
-                    if (!parse_long(tmp, 1, 1000000000L, &shard_i) || !parse_long(slash + 1, 1, 1000000000L, &shard_n)
-                        || shard_i > shard_n) bad = val;
-                }
-                if (bad) {
-                    fprintf(stderr, "recstab: --shard expects I/N with 1 <= I <= N (e.g. 2/4), found '%s'\n", val);
-                    rc = 2;
-                    goto end;
-                }
-            }
-        } else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
-                 || strcmp(a, "--max-prec") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "recstab: %s needs a value\n", a);
-                usage(stderr);
-                rc = 2;
-                goto end;
-            }
-            if (strcmp(a, "--set") == 0) sets[nsets++] = argv[++i];
-            else if (strcmp(a, "--max-prec") == 0) {
-                char *endp;
-                long v = strtol(argv[++i], &endp, 10);
-                if (*endp != '\0' || v < 16 || v > 10000000) {
-                    fprintf(stderr, "recstab: --max-prec expects bits between 16 and 10000000, found '%s'\n", argv[i]);
-                    rc = 2;
-                    goto end;
-                }
-                opt.max_prec = v;
-            } else analyses[nanalyses++] = argv[++i];
-        } else if (strcmp(a, "--time-limit") == 0 || strcmp(a, "--memory-limit") == 0) {
+        cli->emit = 1;
+    }
+    else if (strcmp(a, "--latex") == 0) cli->latex = 1;
+    else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); return 0; }
+    else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); return 0; }
+    else if (strcmp(a, "--list-analyses") == 0) { rs_analysis_list(stdout, 0); return 0; }
+    else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
+             || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0
+             || strcmp(a, "--sweep-level") == 0) {
+        if (*i + 1 >= argc) return usage_error("%s needs a value%s", a, "", 1);
+        if (parse_sweep_option(cli, a, argv[++*i]) != 0) return 2;
+    } else if (strcmp(a, "--set") == 0 || strcmp(a, "--analyse") == 0 || strcmp(a, "--analyze") == 0
+               || strcmp(a, "--max-prec") == 0) {
+        if (*i + 1 >= argc) return usage_error("%s needs a value%s", a, "", 1);
+        if (strcmp(a, "--set") == 0) cli->sets[cli->nsets++] = argv[++*i];
+        else if (strcmp(a, "--max-prec") == 0) {
             long v;
-            if (i + 1 >= argc || !parse_long(argv[i + 1], 0, 100000000L, &v)) {
-                fprintf(stderr, "recstab: %s expects a whole number (0 = no limit) up to 100000000, found '%s'\n",
-                        a, i + 1 < argc ? argv[i + 1] : "nothing");
-                rc = 2;
-                goto end;
-            }
-            if (a[2] == 't') opt.time_limit = (double) v;
-            else opt.memory_limit = v;
-            i++;
-        } else if (strncmp(a, "--set=", 6) == 0) sets[nsets++] = a + 6;
-        else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)
-            analyses[nanalyses++] = a + 10;
-        else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "recstab: unknown option '%s'\n", a);
-            usage(stderr);
-            rc = 2;
-            goto end;
-        } else cases[ncases++] = a;
-    }
-    if (json + markdown + latex > 1) {
-        fprintf(stderr, "recstab: choose one of --json, --markdown, --latex\n");
-        rc = 2;
-        goto end;
-    }
-    opt.with_scheme = markdown || latex;
-    if (outputs_init(&csv_out, csv_path, &plot_out, plot_path, outs, &nouts) != 0) {
-        rc = 2;
-        goto end;
-    }
+            if (!parse_long(argv[++*i], 16, 10000000, &v))
+                return usage_error("--max-prec expects bits between 16 and 10000000, found '%s'%s", argv[*i], "", 0);
+            cli->opt.max_prec = v;
+        } else cli->analyses[cli->nanalyses++] = argv[++*i];
+    } else if (strcmp(a, "--time-limit") == 0 || strcmp(a, "--memory-limit") == 0) {
+        long v;
+        if (*i + 1 >= argc || !parse_long(argv[*i + 1], 0, 100000000L, &v))
+            return usage_error("%s expects a whole number (0 = no limit) up to 100000000, found '%s'", a,
+                               *i + 1 < argc ? argv[*i + 1] : "nothing", 0);
+        if (a[2] == 't') cli->opt.time_limit = (double) v;
+        else cli->opt.memory_limit = v;
+        (*i)++;
+    } else if (strncmp(a, "--set=", 6) == 0) cli->sets[cli->nsets++] = a + 6;
+    else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)
+        cli->analyses[cli->nanalyses++] = a + 10;
+    else if (a[0] == '-' && a[1] != '\0') return usage_error("unknown option '%s'%s", a, "", 1);
+    else cli->cases[cli->ncases++] = a;
+    return -1;
+}
+
+/* All arguments: -1 to go on, else the exit status. */
+static int parse_args(cli_t *cli, int argc, char **argv)
+{
+    int i, r;
+    for (i = 1; i < argc; i++)
+        if ((r = parse_arg(cli, argc, argv, &i)) >= 0) return r;
+    if (cli->json + cli->markdown + cli->latex > 1)
+        return usage_error("choose one of --json, --markdown, --latex%s%s", "", "", 0);
+    cli->opt.with_scheme = cli->markdown || cli->latex;
+    return -1;
+}
+
+/* The sweeps' and maps' options (they travel in the run's options) and
+ * threads, before the first case. */
+static void sweep_setup(cli_t *cli)
+{
 #ifdef _OPENMP
-    if (threads > 0) omp_set_num_threads((int) threads);
+    if (cli->threads > 0) omp_set_num_threads((int) cli->threads);
 #endif
-    opt.sweep.shard_index = shard_i;
-    opt.sweep.shard_count = shard_n;
-    opt.sweep.max_points = max_points;
-    opt.sweep.first_level = first_level;
-    if (rank == 0 && isatty(2)) opt.sweep.progress = progress;
-    if (ncases == 0) {
-        fprintf(stderr, "recstab: expected a case file (or - for stdin)\n");
-        usage(stderr);
-        rc = 2;
-        goto end;
+    cli->opt.sweep.shard_index = cli->shard_i;
+    cli->opt.sweep.shard_count = cli->shard_n;
+    cli->opt.sweep.max_points = cli->max_points;
+    cli->opt.sweep.first_level = cli->first_level;
+    if (cli->rank == 0 && isatty(2)) cli->opt.sweep.progress = progress;
+}
+
+/* The case's requests replaced by the --analyse ones. */
+static void replace_requests(rs_case_t c, const cli_t *cli)
+{
+    int k;
+    rs_case_clear_requests(c);
+    for (k = 0; k < cli->nanalyses; k++) {
+        const char *t = cli->analyses[k];
+        char *line;
+        while (*t == ' ') t++;
+        line = malloc(strlen(t) + 1);
+        strcpy(line, t);
+        if (strncmp(line, "analyse ", 8) == 0 || strncmp(line, "analyze ", 8) == 0)
+            memmove(line, line + 8, strlen(line + 8) + 1);
+        rs_case_add_request(c, line, "--analyse", 0, 0);
+        free(line);
     }
-    snprintf(budget_alarm_msg, sizeof budget_alarm_msg, "time limit of %g s reached; raise it with --time-limit",
-             opt.time_limit);
-    budget_t0 = mono_seconds();
-    rs_budget_set_fatal(budget_fatal);
-    if (opt.time_limit > 0) {
-        /* backstop one second after the limit; the cases share the limit */
-        signal(SIGALRM, budget_alarm);
-        alarm((unsigned) opt.time_limit + 1);
-    }
-    for (i = 0; i < ncases; i++) {
-        rs_case_t c;
-        rs_error_t err;
-        json_t *doc = NULL;
-        int outcome = 0, r, k;
-        rs_case_init(c);
-        rs_error_init(err);
-        r = rs_case_parse_file(c, cases[i], err);
-        for (k = 0; r == RS_OK && k < nsets; k++)
-            r = rs_case_set_value(c, sets[k], err);
-        if (r == RS_OK && nanalyses > 0) {
-            rs_case_clear_requests(c);
-            for (k = 0; k < nanalyses; k++) {
-                const char *t = analyses[k];
-                char *line;
-                while (*t == ' ') t++;
-                line = malloc(strlen(t) + 1);
-                strcpy(line, t);
-                if (strncmp(line, "analyse ", 8) == 0 || strncmp(line, "analyze ", 8) == 0)
-                    memmove(line, line + 8, strlen(line + 8) + 1);
-                rs_case_add_request(c, line, "--analyse", 0, 0);
-                free(line);
-            }
-        }
-        if (r == RS_OK && emit) {
-            rs_model_t m;
-            rs_model_init(m);
-            r = rs_model_lower(m, c, err);
-            if (r == RS_OK) {
-                json_t *e = json_object();
-                char *shown = rs_utf8_escape(cases[i]);
-                json_object_set_new(e, "case", json_string(shown));
-                flint_free(shown);
-                char *eqs = rs_model_emit_equations(m);
-                json_object_set_new(e, "equations", json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
-                flint_free(eqs);
-                json_array_append_new(docs, e);
-                rs_model_clear(m);
-                rs_case_clear(c);
-                continue;
-            }
-            rs_model_clear(m);
-        }
+}
+
+/* One case: parsed, --set and --analyse applied, then its equations
+ * (--emit) or its analyses appended to docs; 0, or the exit status after
+ * printing the error.  *worst: the worst outcome so far (exit 1 or 3). */
+static int run_case(const cli_t *cli, const char *path, json_t *docs, double t0, int *worst)
+{
+    rs_case_t c;
+    rs_error_t err;
+    json_t *doc = NULL;
+    int outcome = 0, r, k;
+    rs_case_init(c);
+    rs_error_init(err);
+    r = rs_case_parse_file(c, path, err);
+    for (k = 0; r == RS_OK && k < cli->nsets; k++)
+        r = rs_case_set_value(c, cli->sets[k], err);
+    if (r == RS_OK && cli->nanalyses > 0) replace_requests(c, cli);
+    if (r == RS_OK && cli->emit) {
+        rs_model_t m;
+        rs_model_init(m);
+        r = rs_model_lower(m, c, err);
         if (r == RS_OK) {
-            rs_options_t o = opt;
-            o.time_spent = mono_seconds() - budget_t0;
-            r = rs_analysis_run(&doc, &outcome, c, &o, err);
-        }
-        if (r != RS_OK) {
-            char msg[2 * RS_ERROR_MSG_LEN];
-            rs_error_format(msg, sizeof msg, err);
-            fprintf(stderr, "recstab: %s\n", msg);
+            json_t *e = json_object();
+            char *shown = rs_utf8_escape(path), *eqs;
+            json_object_set_new(e, "case", json_string(shown));
+            flint_free(shown);
+            eqs = rs_model_emit_equations(m);
+            json_object_set_new(e, "equations", json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
+            flint_free(eqs);
+            json_array_append_new(docs, e);
+            rs_model_clear(m);
             rs_case_clear(c);
-            rc = exit_code_for(r);
-            goto end;
+            return 0;
         }
-        if (outcome & RS_OUTCOME_INCONSISTENT) worst = 3;
-        else if ((outcome & RS_OUTCOME_FAILED) && worst == 0) worst = 1;
-        json_array_append_new(docs, doc);
-        rs_case_clear(c);
+        rs_model_clear(m);
     }
-    alarm(0);   /* the analyses are done: no backstop while writing */
-    /* sweep/map files: staged beside their targets, renamed only once
-     * everything succeeded */
-    if (rank == 0 && (csv_path != NULL || plot_path != NULL)) {
-        char msg[1200];
-        if (plot_path != NULL && rs_cli_plot_stage(&plot_out, docs, msg, sizeof msg) != 0) {
-            fprintf(stderr, "recstab: %s\n", msg);
-            rc = 2;
-            goto end;
-        }
-        if (csv_path != NULL && rs_cli_csv_stage(&csv_out, docs, shard_i, shard_n, msg, sizeof msg) != 0) {
-            fprintf(stderr, "recstab: %s\n", msg);
-            rc = 2;
-            goto end;
-        }
+    if (r == RS_OK) {
+        rs_options_t o = cli->opt;
+        o.time_spent = mono_seconds() - t0;
+        r = rs_analysis_run(&doc, &outcome, c, &o, err);
     }
-    rs_cli_trim_tables(docs, csv_path != NULL, 200);
-    out = open_memstream(&outbuf, &outlen);
-    if (emit) {
-        size_t k;
+    rs_case_clear(c);
+    if (r != RS_OK) {
+        char msg[2 * RS_ERROR_MSG_LEN];
+        rs_error_format(msg, sizeof msg, err);
+        fprintf(stderr, "recstab: %s\n", msg);
+        return exit_code_for(r);
+    }
+    if (outcome & RS_OUTCOME_INCONSISTENT) *worst = 3;
+    else if ((outcome & RS_OUTCOME_FAILED) && *worst == 0) *worst = 1;
+    json_array_append_new(docs, doc);
+    return 0;
+}
+
+/* The report of every case in the chosen form. */
+static void render(FILE *out, const cli_t *cli, json_t *docs)
+{
+    size_t k;
+    if (cli->emit) {
         for (k = 0; k < json_array_size(docs); k++) {
             json_t *e = json_array_get(docs, k);
             fprintf(out, "# %s\n%s", json_string_value(json_object_get(e, "case")),
                     json_string_value(json_object_get(e, "equations")));
         }
-    } else if (json) {
-        json_t *top = (ncases == 1) ? json_incref(json_array_get(docs, 0))
-                                    : json_pack("{s:O}", "cases", docs);
+    } else if (cli->json) {
+        json_t *top = (cli->ncases == 1) ? json_incref(json_array_get(docs, 0))
+                                         : json_pack("{s:O}", "cases", docs);
         json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
         fputc('\n', out);
         json_decref(top);
-    } else if (markdown) {
-        size_t k;
+    } else if (cli->markdown) {
         for (k = 0; k < json_array_size(docs); k++) rs_derivation_markdown(out, json_array_get(docs, k));
-    } else if (latex) {
-        size_t k;
+    } else if (cli->latex) {
         rs_derivation_latex_begin(out);
         for (k = 0; k < json_array_size(docs); k++) rs_derivation_latex(out, json_array_get(docs, k), 0);
         rs_derivation_latex_end(out);
     } else {
-        size_t k;
         for (k = 0; k < json_array_size(docs); k++) {
             if (k > 0) fputc('\n', out);
             rs_report_text(out, json_array_get(docs, k));
         }
     }
+}
+
+/* Every case, under the time limit's backstop: 0 or the exit status. */
+static int run_cases(const cli_t *cli, json_t *docs, int *worst)
+{
+    double t0;
+    int i, rc = 0;
+    snprintf(budget_alarm_msg, sizeof budget_alarm_msg, "time limit of %g s reached; raise it with --time-limit",
+             cli->opt.time_limit);
+    t0 = mono_seconds();
+    rs_budget_set_fatal(budget_fatal);
+    if (cli->opt.time_limit > 0) {
+        /* backstop one second after the limit; the cases share the limit */
+        signal(SIGALRM, budget_alarm);
+        alarm((unsigned) cli->opt.time_limit + 1);
+    }
+    for (i = 0; i < cli->ncases && rc == 0; i++) rc = run_case(cli, cli->cases[i], docs, t0, worst);
+    alarm(0);   /* the analyses are done: no backstop while writing */
+    return rc;
+}
+
+/* The sweep/map files staged beside their targets (renamed only once
+ * everything succeeded), the report rendered and everything committed. */
+static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_out_t *csv_out, rs_cli_out_t *plot_out,
+                         rs_cli_out_t **outs, int nouts, int worst)
+{
+    char *outbuf = NULL;
+    size_t outlen = 0;
+    FILE *out;
+    int rc;
+    if (cli->rank == 0 && (cli->csv_path != NULL || cli->plot_path != NULL)) {
+        char msg[1200];
+        if (cli->plot_path != NULL && rs_cli_plot_stage(plot_out, docs, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            return 2;
+        }
+        if (cli->csv_path != NULL && rs_cli_csv_stage(csv_out, docs, cli->shard_i, cli->shard_n, msg, sizeof msg) != 0) {
+            fprintf(stderr, "recstab: %s\n", msg);
+            return 2;
+        }
+    }
+    rs_cli_trim_tables(docs, cli->csv_path != NULL, 200);
+    out = open_memstream(&outbuf, &outlen);
+    render(out, cli, docs);
     fclose(out);
-    if (rank != 0) outlen = 0;
-    rc = outputs_commit(outs, rank == 0 ? nouts : 0, outbuf, outlen,
-                        csv_path != NULL && strcmp(csv_path, "-") == 0 ? stderr : stdout) != 0 ? 2 : worst;
+    if (cli->rank != 0) outlen = 0;
+    rc = outputs_commit(outs, cli->rank == 0 ? nouts : 0, outbuf, outlen,
+                        cli->csv_path != NULL && strcmp(cli->csv_path, "-") == 0 ? stderr : stdout) != 0 ? 2 : worst;
     free(outbuf);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    cli_t cli;
+    json_t *docs = json_array();
+    rs_cli_out_t csv_out, plot_out, *outs[2];
+    int nouts = 0, i, worst = 0, rc;
+
+    memset(&cli, 0, sizeof cli);
+    cli.sets = calloc((size_t) argc, sizeof(char *));
+    cli.analyses = calloc((size_t) argc, sizeof(char *));
+    cli.cases = calloc((size_t) argc, sizeof(char *));
+    cli.shard_i = cli.shard_n = 1;
+    cli.max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
+    cli.first_level = RS_LEVEL_FAST;
+#ifdef RS_MPI
+    MPI_Init(&argc, &argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &cli.rank);
+    if (cli.rank != 0) {
+        /* every rank runs the same analyses; only rank 0 writes anything */
+        if (freopen("/dev/null", "w", stdout) == NULL || freopen("/dev/null", "w", stderr) == NULL) return 2;
+    }
+#endif
+    rs_options_default(&cli.opt);
+    /* GSL's error handler, set once for the whole process: off, so that a
+     * failing GSL call (the sweep ladder's double root finder, OpenMP
+     * workers included) returns its status instead of aborting */
+    gsl_set_error_handler_off();
+    raise_stack_limit();
+    rc = parse_args(&cli, argc, argv);
+    if (rc >= 0) goto end;
+    if (outputs_init(&csv_out, cli.csv_path, &plot_out, cli.plot_path, outs, &nouts) != 0) {
+        rc = 2;
+        goto end;
+    }
+    sweep_setup(&cli);
+    if (cli.ncases == 0) {
+        rc = usage_error("expected a case file (or - for stdin)%s%s", "", "", 1);
+        goto end;
+    }
+    rc = run_cases(&cli, docs, &worst);
+    if (rc == 0) rc = write_outputs(&cli, docs, &csv_out, &plot_out, outs, nouts, worst);
 end:
     for (i = 0; i < nouts; i++) rs_cli_out_clear(outs[i]);
     rs_cli_signals_stop();
     json_decref(docs);
-    free(sets); free(analyses); free(cases);
+    free(cli.sets); free(cli.analyses); free(cli.cases);
 #ifdef RS_MPI
     MPI_Finalize();
 #endif
