@@ -719,200 +719,191 @@ int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
     return RS_OK;
 }
 
-int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
-{
-    const rs_request_t *q = req->q;
-    const char *rest = req->rest;
-    const char *name = run->c->params[req->u.region.param].name;
-    rs_assign_t *a = NULL;
-    slong na = 0, tv = req->u.region.param, i, ncrit = 0, npieces = 0;
-    const char *keep[1];
-    rs_variant_t *v;
+/* The region of one parameter at numbers for the others: its domain, the
+ * critical values (where a root can reach the circle or the degree drop),
+ * the pieces between them and their exact statuses. */
+typedef struct {
+    rs_run_t *run;
+    const rs_request_t *q;
+    const char *rest, *name;
+    const rs_variant_t *v;
     const rs_scheme_struct *s;
-    rs_bound_t *bounds;
-    alg_t *crit = NULL, lo_end, hi_end;
-    piece_t *pieces = NULL;
-    fmpz_mpoly_t pt, g, tmp, sqf, sqf_t;
-    json_t *o, *ivs, *pts;
-    int r = RS_OK, have_lo, have_hi, repeated_always = 0, d_always = 0, single;
+    slong tv;                   /* the parameter's variable */
+    rs_bound_t *bounds;         /* from the assume lines */
+    int have_lo, have_hi, single;
+    alg_t lo_end, hi_end;
+    fmpz_mpoly_t pt;            /* the part of p that depends on t */
+    fmpz_mpoly_t sqf, sqf_t;    /* squarefree part of p; of its factors with t */
+    int repeated_always;        /* the discriminant vanishes for every t */
+    int d_always;               /* D_{n-1} of q vanishes for every t */
+    alg_t *crit;
+    slong ncrit;
+    piece_t *pieces;
+    slong npieces;
+} region_t;
 
-    keep[0] = name;
-    rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);
-    r = rs_run_variant(&v, run, a, na);
-    rs_assign_free(a, na);
-    if (r != RS_OK) return r;
-    s = v->s;
-    o = json_object();
-    json_object_set_new(o, "analysis", json_string("region"));
-    json_object_set_new(o, "param", json_string(name));
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    if (rs_run_count_free(v->cp->p, s, tv) > 0) {
-        r = region_symbolic(run, v, o);
-        if (r != RS_OK) { json_decref(o); return r; }
-        json_object_set_new(o, "decided_by", json_string("exact"));
-        json_array_append_new(run->results, o);
-        return RS_OK;
+/* The squarefree parts of p (a system keeps repeated factors: identical
+ * modes) and the values where a repeated factor's Jordan structure can
+ * change: where the rank of A modulo it can drop. */
+static void region_squarefree(region_t *rg)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong tv = rg->tv, ndrops = 0, k;
+    fmpz_mpoly_factor_t fac;
+    fmpz_poly_struct *drops = NULL;
+    fmpz_mpoly_one(rg->sqf, s->zctx);
+    fmpz_mpoly_one(rg->sqf_t, s->zctx);
+    fmpz_mpoly_factor_init(fac, s->zctx);
+    if (fmpz_mpoly_factor(fac, rg->v->cp->p, s->zctx)) {
+        for (k = 0; k < fac->num; k++) {
+            fmpz_mpoly_struct *f = fac->poly + k;
+            int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
+            if (has_l) fmpz_mpoly_mul(rg->sqf, rg->sqf, f, s->zctx);
+            if (fmpz_mpoly_degree_si(f, tv, s->zctx) > 0) fmpz_mpoly_mul(rg->sqf_t, rg->sqf_t, f, s->zctx);
+            if (has_l && fmpz_cmp_ui(fac->exp + k, 2) >= 0)
+                rs_semisimple_rank_drops(&drops, &ndrops, s, tv, f);
+        }
+    } else {
+        fmpz_mpoly_set(rg->sqf, rg->pt, s->zctx);
+        fmpz_mpoly_set(rg->sqf_t, rg->pt, s->zctx);
     }
-    /* domain of the parameter from the assume lines */
-    bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
-    rs_bounds_init(bounds, run->c->nparams);
-    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(bounds, &run->c->assume[i], run->c, run->err);
-    if (rs_bound_empty(bounds + tv)) {
-        rs_bounds_clear(bounds, run->c->nparams);
-        flint_free(bounds);
-        json_decref(o);
-        return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "the assumptions are contradictory: no value of '%s' satisfies them", name);
+    for (k = 0; k < ndrops; k++) {
+        alg_roots_append(&rg->crit, &rg->ncrit, drops + k, CRIT_LC | CRIT_DISC);
+        fmpz_poly_clear(drops + k);
     }
-    /* assume NAME = c: the region is that one point, no interval */
-    single = bounds[tv].has_lo && bounds[tv].has_hi && fmpq_equal(bounds[tv].lo, bounds[tv].hi);
-    alg_init(&lo_end);
-    alg_init(&hi_end);
-    have_lo = bounds[tv].has_lo;
-    have_hi = bounds[tv].has_hi;
-    if (have_lo) { lo_end.rational = 1; fmpq_set(lo_end.q, bounds[tv].lo); alg_refine(&lo_end, 128); }
-    if (have_hi) { hi_end.rational = 1; fmpq_set(hi_end.q, bounds[tv].hi); alg_refine(&hi_end, 128); }
+    flint_free(drops);
+    fmpz_mpoly_factor_clear(fac, s->zctx);
+}
 
-    /* the part of p that depends on t, and its critical values */
-    fmpz_mpoly_init(pt, s->zctx);
-    fmpz_mpoly_init(g, s->zctx);
+/* A pair of roots crossing the circle elsewhere than +-1: the zeros of
+ * D_{n-1} of q (or d_always when it vanishes for every t). */
+static void region_crit_pairs(region_t *rg, fmpz_poly_t u)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong lv = s->lambda_var, tv = rg->tv;
+    rs_hurwitz_t h;
+    fmpz_mpoly_t qz;
+    int *sign = flint_calloc(s->nvars, sizeof(int));
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_init(h);
+    rs_bilinear_fmpz_mpoly(qz, rg->sqf_t, lv, s->zctx);
+    if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
+        && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+        && h->n >= 2) {
+        if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
+            rg->d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
+        else if (to_upoly(u, h->minors + h->n - 2, tv, s))
+            alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_D);
+    }
+    rs_hurwitz_clear(h, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    flint_free(sign);
+}
+
+/* The critical values of t: the leading coefficient in lambda vanishes, a
+ * root at lambda = 1 or -1, a pair crossing the circle, a collision. */
+static void region_critical(region_t *rg)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong lv = s->lambda_var, tv = rg->tv, n = fmpz_mpoly_degree_si(rg->pt, lv, s->zctx);
+    ulong nn = (ulong) n;
+    fmpz_mpoly_t tmp;
+    fmpz_poly_t u;
+    fmpz_t pm;
+    if (fmpz_mpoly_degree_si(rg->pt, tv, s->zctx) <= 0) return;
     fmpz_mpoly_init(tmp, s->zctx);
-    if (!fmpz_mpoly_content_vars(g, v->cp->p, &tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
-        fmpz_mpoly_one(g, s->zctx);
-    fmpz_mpoly_divexact(pt, v->cp->p, g, s->zctx);
-    /* A system keeps repeated factors (identical modes): roots cross or
-     * collide where the squarefree part says, and a repeated factor changes
-     * its Jordan structure only where the rank of A modulo it can drop. */
-    fmpz_mpoly_init(sqf, s->zctx);
-    fmpz_mpoly_init(sqf_t, s->zctx);
-    fmpz_mpoly_one(sqf, s->zctx);
-    fmpz_mpoly_one(sqf_t, s->zctx);
-    {
-        fmpz_mpoly_factor_t fac;
-        fmpz_poly_struct *drops = NULL;
-        slong ndrops = 0, k;
-        fmpz_mpoly_factor_init(fac, s->zctx);
-        if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
-            for (k = 0; k < fac->num; k++) {
-                fmpz_mpoly_struct *f = fac->poly + k;
-                int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
-                if (has_l) fmpz_mpoly_mul(sqf, sqf, f, s->zctx);
-                if (fmpz_mpoly_degree_si(f, tv, s->zctx) > 0) fmpz_mpoly_mul(sqf_t, sqf_t, f, s->zctx);
-                if (has_l && fmpz_cmp_ui(fac->exp + k, 2) >= 0)
-                    rs_semisimple_rank_drops(&drops, &ndrops, s, tv, f);
-            }
-        } else {
-            fmpz_mpoly_set(sqf, pt, s->zctx);
-            fmpz_mpoly_set(sqf_t, pt, s->zctx);
-        }
-        for (k = 0; k < ndrops; k++) {
-            alg_roots_append(&crit, &ncrit, drops + k, CRIT_LC | CRIT_DISC);
-            fmpz_poly_clear(drops + k);
-        }
-        flint_free(drops);
-        fmpz_mpoly_factor_clear(fac, s->zctx);
+    fmpz_poly_init(u);
+    fmpz_init(pm);
+    /* leading coefficient in lambda */
+    fmpz_mpoly_get_coeff_vars_ui(tmp, rg->pt, &lv, &nn, 1, s->zctx);
+    if (to_upoly(u, tmp, tv, s)) alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_LC);
+    /* roots at lambda = 1 and lambda = -1 */
+    fmpz_set_si(pm, 1);
+    fmpz_mpoly_evaluate_one_fmpz(tmp, rg->sqf_t, lv, pm, s->zctx);
+    if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_PM1);
+    fmpz_set_si(pm, -1);
+    fmpz_mpoly_evaluate_one_fmpz(tmp, rg->sqf_t, lv, pm, s->zctx);
+    if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_PM1);
+    if (n >= 2) region_crit_pairs(rg, u);
+    /* collisions (roots leaving the circle through a double root) */
+    if (fmpz_mpoly_degree_si(rg->sqf, lv, s->zctx) >= 2) {
+        if (!fmpz_mpoly_discriminant(tmp, rg->sqf, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
+            rg->repeated_always = 1;
+        else if (to_upoly(u, tmp, tv, s))
+            alg_roots_append(&rg->crit, &rg->ncrit, u, rg->d_always ? (CRIT_DISC | CRIT_D) : CRIT_DISC);
     }
-    if (fmpz_mpoly_degree_si(pt, tv, s->zctx) > 0) {
-        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(pt, lv, s->zctx);
-        fmpz_poly_t u;
-        fmpz_t pm;
-        fmpz_poly_init(u);
-        fmpz_init(pm);
-        /* leading coefficient in lambda */
-        {
-            ulong nn = (ulong) n;
-            fmpz_mpoly_get_coeff_vars_ui(tmp, pt, &lv, &nn, 1, s->zctx);
-            if (to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_LC);
+    fmpz_poly_clear(u);
+    fmpz_clear(pm);
+    fmpz_mpoly_clear(tmp, s->zctx);
+}
+
+/* Sorted, without duplicates (their reasons merged) and without values
+ * outside the open domain. */
+static void region_crit_prune(region_t *rg)
+{
+    slong i, k = 0;
+    sort_algs(rg->crit, rg->ncrit);
+    for (i = 0; i < rg->ncrit; i++) {
+        alg_t *crit = rg->crit;
+        int keepit = 1;
+        if (k > 0 && alg_cmp(crit + k - 1, crit + i) == 0) {
+            keepit = 0;
+            crit[k - 1].boundary |= crit[i].boundary;
         }
-        /* roots at lambda = 1 and lambda = -1 */
-        fmpz_set_si(pm, 1);
-        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
-        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
-        fmpz_set_si(pm, -1);
-        fmpz_mpoly_evaluate_one_fmpz(tmp, sqf_t, lv, pm, s->zctx);
-        if (!fmpz_mpoly_is_zero(tmp, s->zctx) && to_upoly(u, tmp, tv, s)) alg_roots_append(&crit, &ncrit, u, CRIT_PM1);
-        /* a pair of roots crossing the circle elsewhere: D_{n-1} of q */
-        if (n >= 2) {
-            rs_hurwitz_t h;
-            fmpz_mpoly_t qz;
-            int *sign = flint_calloc(s->nvars, sizeof(int));
-            fmpz_mpoly_init(qz, s->zctx);
-            rs_hurwitz_init(h);
-            rs_bilinear_fmpz_mpoly(qz, sqf_t, lv, s->zctx);
-            if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
-                && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, run->err) == RS_OK
-                && h->n >= 2) {
-                if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
-                    d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
-                else if (to_upoly(u, h->minors + h->n - 2, tv, s))
-                    alg_roots_append(&crit, &ncrit, u, CRIT_D);
-            }
-            rs_hurwitz_clear(h, s->zctx);
-            fmpz_mpoly_clear(qz, s->zctx);
-            flint_free(sign);
+        if (keepit && rg->have_lo && alg_cmp(crit + i, &rg->lo_end) <= 0) keepit = 0;
+        if (keepit && rg->have_hi && alg_cmp(crit + i, &rg->hi_end) >= 0) keepit = 0;
+        if (keepit) {
+            if (k != i) { alg_t tt = crit[k]; crit[k] = crit[i]; crit[i] = tt; }
+            k++;
         }
-        /* collisions (roots leaving the circle through a double root) */
-        if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2) {
-            if (!fmpz_mpoly_discriminant(tmp, sqf, lv, s->zctx) || fmpz_mpoly_is_zero(tmp, s->zctx))
-                repeated_always = 1;
-            else if (to_upoly(u, tmp, tv, s))
-                alg_roots_append(&crit, &ncrit, u, d_always ? (CRIT_DISC | CRIT_D) : CRIT_DISC);
-        }
-        fmpz_poly_clear(u);
-        fmpz_clear(pm);
     }
-    rs_error_init(run->err);
-    /* sort, drop duplicates and values outside the open domain */
-    sort_algs(crit, ncrit);
-    {
-        slong k = 0;
-        for (i = 0; i < ncrit; i++) {
-            int keepit = 1;
-            if (k > 0 && alg_cmp(crit + k - 1, crit + i) == 0) {
-                keepit = 0;
-                crit[k - 1].boundary |= crit[i].boundary;
-            }
-            if (keepit && have_lo && alg_cmp(crit + i, &lo_end) <= 0) keepit = 0;
-            if (keepit && have_hi && alg_cmp(crit + i, &hi_end) >= 0) keepit = 0;
-            if (keepit) {
-                if (k != i) { alg_t tt = crit[k]; crit[k] = crit[i]; crit[i] = tt; }
-                k++;
-            }
-        }
-        for (i = k; i < ncrit; i++) alg_clear(crit + i);
-        ncrit = k;
+    for (i = k; i < rg->ncrit; i++) alg_clear(rg->crit + i);
+    rg->ncrit = k;
+}
+
+/* pieces: [lo], (lo, c1), c1, ..., (ck, hi), [hi] */
+static void region_pieces(region_t *rg)
+{
+    const rs_bound_t *bt = rg->bounds + rg->tv;
+    piece_t *pieces = calloc((size_t) (2 * rg->ncrit + 4), sizeof(piece_t));
+    slong i, npieces = 0, ncrit = rg->ncrit;
+    if (rg->have_lo && bt->lo_closed) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &rg->lo_end; npieces++;
     }
-    /* pieces: [lo], (lo, c1), c1, ..., (ck, hi), [hi] */
-    pieces = calloc((size_t) (2 * ncrit + 4), sizeof(piece_t));
-    if (have_lo && bounds[tv].lo_closed) {
-        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &lo_end; npieces++;
-    }
-    for (i = 0; i <= ncrit && !single; i++) {
+    for (i = 0; i <= ncrit && !rg->single; i++) {
         pieces[npieces].is_point = 0;
-        pieces[npieces].lo = (i == 0) ? (have_lo ? &lo_end : NULL) : crit + i - 1;
-        pieces[npieces].hi = (i == ncrit) ? (have_hi ? &hi_end : NULL) : crit + i;
+        pieces[npieces].lo = (i == 0) ? (rg->have_lo ? &rg->lo_end : NULL) : rg->crit + i - 1;
+        pieces[npieces].hi = (i == ncrit) ? (rg->have_hi ? &rg->hi_end : NULL) : rg->crit + i;
         npieces++;
         if (i < ncrit) {
-            pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = crit + i; npieces++;
+            pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = rg->crit + i; npieces++;
         }
     }
-    if (have_hi && bounds[tv].hi_closed && !(have_lo && fmpq_equal(bounds[tv].lo, bounds[tv].hi))) {
-        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &hi_end; npieces++;
+    if (rg->have_hi && bt->hi_closed && !(rg->have_lo && fmpq_equal(bt->lo, bt->hi))) {
+        pieces[npieces].is_point = 1; pieces[npieces].lo = pieces[npieces].hi = &rg->hi_end; npieces++;
     }
-    /* decide each piece exactly at a rational point */
-    for (i = 0; i < npieces && r == RS_OK; i++) {
-        piece_t *pc = pieces + i;
+    rg->pieces = pieces;
+    rg->npieces = npieces;
+}
+
+/* decide each piece exactly at a rational point */
+static int region_decide(region_t *rg)
+{
+    slong i;
+    int r = RS_OK;
+    for (i = 0; i < rg->npieces && r == RS_OK; i++) {
+        piece_t *pc = rg->pieces + i;
         fmpq_t x;
         fmpq_init(x);
         if (pc->is_point && !pc->lo->rational) {
-            pc->decided = status_at_algebraic(&pc->status, v->cp->p, tv, pc->lo, s);
+            pc->decided = status_at_algebraic(&pc->status, rg->v->cp->p, rg->tv, pc->lo, rg->s);
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
-            r = status_at(&pc->status, run, v, tv, x);
+            r = status_at(&pc->status, rg->run, rg->v, rg->tv, x);
             if (r == RS_ERR_MATH) {
                 char *xs = fmpq_get_str(NULL, 10, x);
-                r = rs_req_error(run, q, rest, RS_ERR_MATH,
+                r = rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_MATH,
                                  "the characteristic polynomial vanishes identically at %s", xs);
                 flint_free(xs);
             }
@@ -920,18 +911,26 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
         }
         fmpq_clear(x);
     }
-    /* Irrational critical values, decided exactly from what vanishes there:
-     * - none of lc, p(+-1), D_{n-1}: no root on the circle (Orlando: a circle
-     *   root other than +-1 makes D_{n-1} vanish) and no degree drop, so the
-     *   status is that of both neighbours, which must agree;
-     * - a stable neighbour, lc != 0, and p(+-1) = 0 or D_{n-1} = 0 but no
-     *   repeated root (discriminant != 0): the limit of roots inside the disc
-     *   leaves none outside, a pair z, -z of q cannot be real (one would be
-     *   outside), so a root is on the circle and all are simple: marginal. */
-    /* (The exact status above is checked against this continuity argument
-     * wherever it applies: a disagreement is an inconsistency, exit 3.) */
-    for (i = 1; i + 1 < npieces && r == RS_OK; i++) {
-        piece_t *pc = pieces + i;
+    return r;
+}
+
+/* Irrational critical values, decided exactly from what vanishes there:
+ * - none of lc, p(+-1), D_{n-1}: no root on the circle (Orlando: a circle
+ *   root other than +-1 makes D_{n-1} vanish) and no degree drop, so the
+ *   status is that of both neighbours, which must agree;
+ * - a stable neighbour, lc != 0, and p(+-1) = 0 or D_{n-1} = 0 but no
+ *   repeated root (discriminant != 0): the limit of roots inside the disc
+ *   leaves none outside, a pair z, -z of q cannot be real (one would be
+ *   outside), so a root is on the circle and all are simple: marginal.
+ * (The exact status above is checked against this continuity argument
+ * wherever it applies: a disagreement is an inconsistency, exit 3.) */
+static void region_check(region_t *rg)
+{
+    const rs_scheme_struct *s = rg->s;
+    const piece_t *pieces = rg->pieces;
+    slong i;
+    for (i = 1; i + 1 < rg->npieces; i++) {
+        const piece_t *pc = pieces + i;
         int fl;
         if (!pc->is_point || pc->lo->rational || !pc->decided) continue;
         fl = pc->lo->boundary;
@@ -939,72 +938,172 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
             if (!pieces[i - 1].decided || !pieces[i + 1].decided
                 || pieces[i - 1].status != pieces[i + 1].status
                 || pc->status != pieces[i - 1].status)
-                run->outcome |= RS_OUTCOME_INCONSISTENT;
-        } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !repeated_always
+                rg->run->outcome |= RS_OUTCOME_INCONSISTENT;
+        } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !rg->repeated_always
                    /* a repeated factor (a system's identical modes) may be a Jordan block */
-                   && fmpz_mpoly_degree_si(sqf, s->lambda_var, s->zctx)
-                      == fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx)
+                   && fmpz_mpoly_degree_si(rg->sqf, s->lambda_var, s->zctx)
+                      == fmpz_mpoly_degree_si(rg->v->cp->p, s->lambda_var, s->zctx)
                    && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
                        || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
             if (pc->status != RS_STATUS_MARGINAL)
-                run->outcome |= RS_OUTCOME_INCONSISTENT;
+                rg->run->outcome |= RS_OUTCOME_INCONSISTENT;
         }
     }
-    if (r == RS_OK) {
-        /* merge runs of decided pieces with equal status into intervals */
-        ivs = json_array();
-        pts = json_array();
-        i = 0;
-        while (i < npieces) {
-            slong j = i;
-            json_t *iv;
-            if (!pieces[i].decided) {
-                json_t *pj = json_object();
-                json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
-                json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
-                json_object_set_new(pj, "status", json_string("undecided"));
-                json_object_set_new(pj, "note", json_string(
-                    "irrational algebraic point where a system has a repeated circle root: its semisimplicity "
-                    "(the rank of A there) is not decided; not stable, the intervals beside it are exact"));
-                json_array_append_new(pts, pj);
-                i++;
-                continue;
-            }
-            while (j + 1 < npieces && pieces[j + 1].decided && pieces[j + 1].status == pieces[i].status) j++;
-            iv = json_object();
-            {
-                alg_t *lo = pieces[i].lo, *hi = pieces[j].hi;
-                json_object_set_new(iv, "lo", lo ? alg_json(lo, name) : json_null());
-                json_object_set_new(iv, "hi", hi ? alg_json(hi, name) : json_null());
-                json_object_set_new(iv, "lo_closed", json_boolean(pieces[i].is_point));
-                json_object_set_new(iv, "hi_closed", json_boolean(pieces[j].is_point));
-                json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
-                json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
-                json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
-            }
-            json_array_append_new(ivs, iv);
-            i = j + 1;
+}
+
+/* merge runs of decided pieces with equal status into intervals */
+static void region_json(region_t *rg, json_t *o)
+{
+    const piece_t *pieces = rg->pieces;
+    const char *name = rg->name;
+    json_t *ivs = json_array(), *pts = json_array();
+    slong i = 0, npieces = rg->npieces;
+    while (i < npieces) {
+        slong j = i;
+        json_t *iv;
+        alg_t *lo, *hi;
+        if (!pieces[i].decided) {
+            json_t *pj = json_object();
+            json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
+            json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
+            json_object_set_new(pj, "status", json_string("undecided"));
+            json_object_set_new(pj, "note", json_string(
+                "irrational algebraic point where a system has a repeated circle root: its semisimplicity "
+                "(the rank of A there) is not decided; not stable, the intervals beside it are exact"));
+            json_array_append_new(pts, pj);
+            i++;
+            continue;
         }
-        json_object_set_new(o, "symbolic", json_false());
-        json_object_set_new(o, "intervals", ivs);
-        json_object_set_new(o, "undecided_points", pts);
-        json_object_set_new(o, "critical_values", json_integer(ncrit));
+        while (j + 1 < npieces && pieces[j + 1].decided && pieces[j + 1].status == pieces[i].status) j++;
+        iv = json_object();
+        lo = pieces[i].lo;
+        hi = pieces[j].hi;
+        json_object_set_new(iv, "lo", lo ? alg_json(lo, name) : json_null());
+        json_object_set_new(iv, "hi", hi ? alg_json(hi, name) : json_null());
+        json_object_set_new(iv, "lo_closed", json_boolean(pieces[i].is_point));
+        json_object_set_new(iv, "hi_closed", json_boolean(pieces[j].is_point));
+        json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
+        json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
+        json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
+        json_array_append_new(ivs, iv);
+        i = j + 1;
+    }
+    json_object_set_new(o, "symbolic", json_false());
+    json_object_set_new(o, "intervals", ivs);
+    json_object_set_new(o, "undecided_points", pts);
+    json_object_set_new(o, "critical_values", json_integer(rg->ncrit));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+}
+
+/* The domain of t from the assume lines (an error when it is empty). */
+static int region_domain(region_t *rg)
+{
+    rs_run_t *run = rg->run;
+    rs_bound_t *bt;
+    slong i;
+    rg->bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(rg->bounds, run->c->nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(rg->bounds, &run->c->assume[i], run->c, run->err);
+    bt = rg->bounds + rg->tv;
+    if (rs_bound_empty(bt))
+        return rs_req_error(run, rg->q, rg->rest, RS_ERR_INPUT,
+                            "the assumptions are contradictory: no value of '%s' satisfies them", rg->name);
+    /* assume NAME = c: the region is that one point, no interval */
+    rg->single = bt->has_lo && bt->has_hi && fmpq_equal(bt->lo, bt->hi);
+    rg->have_lo = bt->has_lo;
+    rg->have_hi = bt->has_hi;
+    if (rg->have_lo) { rg->lo_end.rational = 1; fmpq_set(rg->lo_end.q, bt->lo); alg_refine(&rg->lo_end, 128); }
+    if (rg->have_hi) { rg->hi_end.rational = 1; fmpq_set(rg->hi_end.q, bt->hi); alg_refine(&rg->hi_end, 128); }
+    return RS_OK;
+}
+
+static void region_init(region_t *rg, rs_run_t *run, const rs_an_req_t *req, const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t g;
+    memset(rg, 0, sizeof *rg);
+    rg->run = run;
+    rg->q = req->q;
+    rg->rest = req->rest;
+    rg->tv = req->u.region.param;
+    rg->name = run->c->params[rg->tv].name;
+    rg->v = v;
+    rg->s = s;
+    alg_init(&rg->lo_end);
+    alg_init(&rg->hi_end);
+    fmpz_mpoly_init(rg->pt, s->zctx);
+    fmpz_mpoly_init(rg->sqf, s->zctx);
+    fmpz_mpoly_init(rg->sqf_t, s->zctx);
+    /* the part of p that depends on t */
+    fmpz_mpoly_init(g, s->zctx);
+    if (!fmpz_mpoly_content_vars(g, v->cp->p, &rg->tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
+        fmpz_mpoly_one(g, s->zctx);
+    fmpz_mpoly_divexact(rg->pt, v->cp->p, g, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+}
+
+static void region_clear(region_t *rg)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong i;
+    for (i = 0; i < rg->ncrit; i++) alg_clear(rg->crit + i);
+    free(rg->crit);
+    free(rg->pieces);
+    alg_clear(&rg->lo_end);
+    alg_clear(&rg->hi_end);
+    if (rg->bounds != NULL) {
+        rs_bounds_clear(rg->bounds, rg->run->c->nparams);
+        flint_free(rg->bounds);
+    }
+    fmpz_mpoly_clear(rg->pt, s->zctx);
+    fmpz_mpoly_clear(rg->sqf, s->zctx);
+    fmpz_mpoly_clear(rg->sqf_t, s->zctx);
+}
+
+int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    const char *name = run->c->params[req->u.region.param].name;
+    rs_assign_t *a = NULL;
+    slong na = 0;
+    const char *keep[1];
+    rs_variant_t *v;
+    region_t rg;
+    json_t *o;
+    int r;
+
+    keep[0] = name;
+    rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "param", json_string(name));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    if (rs_run_count_free(v->cp->p, v->s, req->u.region.param) > 0) {
+        r = region_symbolic(run, v, o);
+        if (r != RS_OK) { json_decref(o); return r; }
         json_object_set_new(o, "decided_by", json_string("exact"));
+        json_array_append_new(run->results, o);
+        return RS_OK;
+    }
+    region_init(&rg, run, req, v);
+    r = region_domain(&rg);
+    if (r == RS_OK) {
+        region_squarefree(&rg);
+        region_critical(&rg);
+        rs_error_init(run->err);
+        region_crit_prune(&rg);
+        region_pieces(&rg);
+        r = region_decide(&rg);
+    }
+    if (r == RS_OK) {
+        region_check(&rg);
+        region_json(&rg, o);
         json_array_append_new(run->results, o);
     } else {
         json_decref(o);
     }
-    for (i = 0; i < ncrit; i++) alg_clear(crit + i);
-    free(crit);
-    free(pieces);
-    alg_clear(&lo_end);
-    alg_clear(&hi_end);
-    rs_bounds_clear(bounds, run->c->nparams);
-    flint_free(bounds);
-    fmpz_mpoly_clear(pt, s->zctx);
-    fmpz_mpoly_clear(g, s->zctx);
-    fmpz_mpoly_clear(tmp, s->zctx);
-    fmpz_mpoly_clear(sqf, s->zctx);
-    fmpz_mpoly_clear(sqf_t, s->zctx);
+    region_clear(&rg);
     return r;
 }
