@@ -2,6 +2,7 @@
  * arithmetic from a seeded random start, the measured growth per step
  * cross-checked against the exact verdict. */
 #include <math.h>
+#include <string.h>
 #include <stdio.h>
 #include <arb_mat.h>
 #include "analysis/registry.h"
@@ -88,171 +89,187 @@ static void entry_coeff(fmpq_t c, const fmpq_mpoly_t e, slong k, const rs_scheme
     fmpq_mpoly_clear(t, s->ctx);
 }
 
-int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
-{
-    const rs_request_t *q = req->q;
-    const rs_optval_t *o_steps = rs_an_opt(req, "steps"), *o_seed = rs_an_opt(req, "seed"),
-                      *o_prec = rs_an_opt(req, "prec");
-    rs_variant_t *v;
-    const rs_scheme_struct *s;
-    fmpz_poly_t p;
-    slong steps = 1000, seed = 1, prec = 128, n, i, u, step;
-    slong *Mu = NULL, *mu = NULL;
-    int r, scalar = 0;
-    json_t *o;
+/* The recurrence stepped by simulate: for each unknown u its shifts mu_u..M_u
+ * in the equations, the matrix L of the coefficients of u[n+M_u] (and its
+ * inverse), the history of each unknown and the other coefficients as balls;
+ * scalar: the recurrence of p itself (L singular or absent). */
+typedef struct {
+    slong n, prec;
+    int scalar;
+    slong *Mu, *mu;
     arb_mat_t L, Linv;
-    arb_ptr *hist = NULL;      /* per unknown: values at n+m_u .. n+M_u (newest last) */
-    arb_ptr rhs, znew, *cf;
-    arb_t norm, lognorm_mid, lognorm_end, t1, t2;
-    fmpq_t c;
-    flint_rand_t st;
-    if (o_steps->at != NULL) steps = o_steps->num;
-    if (o_seed->at != NULL) seed = o_seed->num;
-    if (o_prec->at != NULL) prec = o_prec->num;
-    r = rs_run_numeric_variant(run, &v);
-    if (r != RS_OK) return r;
-    s = v->s;
-    fmpz_poly_init(p);
-    r = rs_run_numeric_poly(p, run, q, v, "simulate");
-    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
-    fmpq_init(c);
-    flint_randinit(st);
-    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
-    /* the recurrence of the equations as written: for each unknown u its
-     * largest shift M_u; the coefficients of u[n+M_u] form L */
-    n = s->from_char ? 1 : s->n;
-    Mu = flint_calloc(n, sizeof(slong));
-    mu = flint_calloc(n, sizeof(slong));
-    arb_mat_init(L, n, n);
-    arb_mat_init(Linv, n, n);
-    if (s->from_char) {
-        scalar = 1;
-    } else {
-        for (u = 0; u < n; u++) {
-            Mu[u] = WORD_MIN;
-            mu[u] = WORD_MAX;
-            for (i = 0; i < n; i++) {
-                const fmpq_mpoly_struct *e = s->M + i * n + u;
-                if (fmpq_mpoly_is_zero(e, s->ctx)) continue;
-                if (fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i] > Mu[u])
-                    Mu[u] = fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i];
-                {
-                    slong lo = rs_scheme_min_degree(e->zpoly, s->lambda_var, s->ctx->zctx) + s->row_shift[i];
-                    if (lo < mu[u]) mu[u] = lo;
-                }
-            }
-            if (Mu[u] == WORD_MIN) { scalar = 1; break; }
+    arb_ptr *hist;      /* per unknown: values at n+m_u .. n+M_u (newest last) */
+    arb_ptr *cf;        /* the coefficient of u[n+sft] in equation i: cf[i n + u][sft - mu_u] */
+    arb_ptr rhs, znew;
+} sim_t;
+
+/* the shifts of each unknown and L; the scalar recurrence of p when L is
+ * singular or the case is a `char` polynomial */
+static void sim_shifts(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, fmpq_t c)
+{
+    slong n = sm->n, u, i;
+    if (s->from_char) sm->scalar = 1;
+    for (u = 0; u < n && !sm->scalar; u++) {
+        sm->Mu[u] = WORD_MIN;
+        sm->mu[u] = WORD_MAX;
+        for (i = 0; i < n; i++) {
+            const fmpq_mpoly_struct *e = s->M + i * n + u;
+            slong lo;
+            if (fmpq_mpoly_is_zero(e, s->ctx)) continue;
+            if (fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i] > sm->Mu[u])
+                sm->Mu[u] = fmpq_mpoly_degree_si(e, s->lambda_var, s->ctx) + s->row_shift[i];
+            lo = rs_scheme_min_degree(e->zpoly, s->lambda_var, s->ctx->zctx) + s->row_shift[i];
+            if (lo < sm->mu[u]) sm->mu[u] = lo;
         }
-        for (i = 0; i < n && !scalar; i++)
-            for (u = 0; u < n; u++) {
-                entry_coeff(c, s->M + i * n + u, Mu[u] - s->row_shift[i], s);
-                arb_set_fmpq(arb_mat_entry(L, i, u), c, prec);
-            }
-        if (!scalar && !arb_mat_inv(Linv, L, prec)) scalar = 1;
+        if (sm->Mu[u] == WORD_MIN) sm->scalar = 1;
     }
-    if (scalar) {
+    for (i = 0; i < n && !sm->scalar; i++)
+        for (u = 0; u < n; u++) {
+            entry_coeff(c, s->M + i * n + u, sm->Mu[u] - s->row_shift[i], s);
+            arb_set_fmpq(arb_mat_entry(sm->L, i, u), c, sm->prec);
+        }
+    if (!sm->scalar && !arb_mat_inv(sm->Linv, sm->L, sm->prec)) sm->scalar = 1;
+    if (sm->scalar) {
         /* the scalar recurrence of p: c_N x[n+N] = -sum c_i x[n+i] */
         slong N = fmpz_poly_degree(p);
-        arb_mat_clear(L);
-        arb_mat_clear(Linv);
-        n = 1;
-        arb_mat_init(L, 1, 1);
-        arb_mat_init(Linv, 1, 1);
-        arb_set_fmpz(arb_mat_entry(L, 0, 0), p->coeffs + N);
-        arb_inv(arb_mat_entry(Linv, 0, 0), arb_mat_entry(L, 0, 0), prec);
-        Mu[0] = N;
-        mu[0] = 0;
+        arb_mat_clear(sm->L);
+        arb_mat_clear(sm->Linv);
+        sm->n = 1;
+        arb_mat_init(sm->L, 1, 1);
+        arb_mat_init(sm->Linv, 1, 1);
+        arb_set_fmpz(arb_mat_entry(sm->L, 0, 0), p->coeffs + N);
+        arb_inv(arb_mat_entry(sm->Linv, 0, 0), arb_mat_entry(sm->L, 0, 0), sm->prec);
+        sm->Mu[0] = N;
+        sm->mu[0] = 0;
     }
-    hist = flint_malloc(n * sizeof(arb_ptr));
+}
+
+/* the recurrence, a seeded random start in [-1, 1] and the coefficients */
+static void sim_init(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, slong prec, flint_rand_t st)
+{
+    slong n, u, i;
+    fmpq_t c;
+    fmpq_init(c);
+    memset(sm, 0, sizeof *sm);
+    sm->prec = prec;
+    sm->n = n = s->from_char ? 1 : s->n;
+    sm->Mu = flint_calloc(n, sizeof(slong));
+    sm->mu = flint_calloc(n, sizeof(slong));
+    arb_mat_init(sm->L, n, n);
+    arb_mat_init(sm->Linv, n, n);
+    sim_shifts(sm, s, p, c);
+    n = sm->n;
+    sm->hist = flint_malloc(n * sizeof(arb_ptr));
     for (u = 0; u < n; u++) {
-        slong len = Mu[u] - mu[u] + 1, j;
-        hist[u] = _arb_vec_init(len);
+        slong len = sm->Mu[u] - sm->mu[u] + 1, j;
+        sm->hist[u] = _arb_vec_init(len);
         for (j = 0; j < len - 1; j++) {       /* seeded random start in [-1, 1] */
             fmpq_set_si(c, (slong) n_randint(st, 2001) - 1000, 1000);
-            arb_set_fmpq(hist[u] + j, c, prec);
+            arb_set_fmpq(sm->hist[u] + j, c, prec);
         }
     }
-    rhs = _arb_vec_init(n);
-    znew = _arb_vec_init(n);
-    arb_init(norm); arb_init(lognorm_mid); arb_init(lognorm_end); arb_init(t1); arb_init(t2);
+    sm->rhs = _arb_vec_init(n);
+    sm->znew = _arb_vec_init(n);
     /* the coefficient of u[n+sft] in equation i, once, as balls */
-    cf = flint_malloc(n * n * sizeof(arb_ptr));
+    sm->cf = flint_malloc(n * n * sizeof(arb_ptr));
     for (i = 0; i < n; i++)
         for (u = 0; u < n; u++) {
-            slong sft, len = Mu[u] - mu[u];
+            slong sft, len = sm->Mu[u] - sm->mu[u];
             arb_ptr cv = _arb_vec_init(len > 0 ? len : 1);
-            for (sft = mu[u]; sft < Mu[u]; sft++) {
-                if (scalar) {
+            for (sft = sm->mu[u]; sft < sm->Mu[u]; sft++) {
+                if (sm->scalar) {
                     fmpz_set(fmpq_numref(c), p->coeffs + sft);
                     fmpz_one(fmpq_denref(c));
                 } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
-                arb_set_fmpq(cv + (sft - mu[u]), c, prec);
+                arb_set_fmpq(cv + (sft - sm->mu[u]), c, prec);
             }
-            cf[i * n + u] = cv;
+            sm->cf[i * n + u] = cv;
         }
-    {
-        /* multiply-adds per step (L^-1 and the history terms) at about
-         * 0.5 ns (prec/64)^1.6 each: a lower bound of the measured cost
-         * (20000 steps of a 2x2 system at 65536 bits take 9 s) */
-        double ops = (double) n * (double) n, limbs = prec / 64.0;
-        for (u = 0; u < n; u++) ops += (double) n * (double) (Mu[u] - mu[u] + 1);
-        r = rs_budget_estimate(run->err, "simulate", (double) steps * ops * 0.5e-9 * pow(limbs > 1 ? limbs : 1, 1.6),
-                               (double) ops * (double) prec / 8.0);
-        if (r != RS_OK) {
-            char msg[RS_ERROR_MSG_LEN];
-            snprintf(msg, sizeof msg, "%s", run->err->msg);
-            r = rs_req_error(run, q, req->rest, RS_ERR_LIMIT, "%s", msg);
-        }
+    fmpq_clear(c);
+}
+
+static void sim_clear(sim_t *sm)
+{
+    slong u, i, n = sm->n;
+    for (u = 0; u < n; u++) _arb_vec_clear(sm->hist[u], sm->Mu[u] - sm->mu[u] + 1);
+    flint_free(sm->hist);
+    for (i = 0; i < n * n; i++)
+        _arb_vec_clear(sm->cf[i], sm->Mu[i % n] - sm->mu[i % n] > 0 ? sm->Mu[i % n] - sm->mu[i % n] : 1);
+    flint_free(sm->cf);
+    _arb_vec_clear(sm->rhs, n);
+    _arb_vec_clear(sm->znew, n);
+    arb_mat_clear(sm->L);
+    arb_mat_clear(sm->Linv);
+    flint_free(sm->Mu);
+    flint_free(sm->mu);
+}
+
+/* Refuses a run the time limit cannot hold: multiply-adds per step (L^-1
+ * and the history terms) at about 0.5 ns (prec/64)^1.6 each, a lower bound
+ * of the measured cost (20000 steps of a 2x2 system at 65536 bits take 9 s). */
+static int sim_estimate(const sim_t *sm, rs_run_t *run, const rs_an_req_t *req, slong steps)
+{
+    double ops = (double) sm->n * (double) sm->n, limbs = sm->prec / 64.0;
+    slong u;
+    int r;
+    for (u = 0; u < sm->n; u++) ops += (double) sm->n * (double) (sm->Mu[u] - sm->mu[u] + 1);
+    r = rs_budget_estimate(run->err, "simulate", (double) steps * ops * 0.5e-9 * pow(limbs > 1 ? limbs : 1, 1.6),
+                           (double) ops * (double) sm->prec / 8.0);
+    if (r != RS_OK) {
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "%s", run->err->msg);
+        r = rs_req_error(run, req->q, req->rest, RS_ERR_LIMIT, "%s", msg);
     }
-    for (step = 1; step <= steps && r == RS_OK; step++) {
-        if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
-        for (i = 0; i < n; i++) {
-            arb_zero(rhs + i);
-            for (u = 0; u < n; u++) {
-                slong k2, len = Mu[u] - mu[u];
-                for (k2 = 0; k2 < len; k2++)
-                    if (!arb_is_zero(cf[i * n + u] + k2))
-                        arb_addmul(rhs + i, cf[i * n + u] + k2, hist[u] + k2, prec);
-            }
-            arb_neg(rhs + i, rhs + i);
-        }
+    return r;
+}
+
+/* One step: the newest value of every unknown; norm = max |value| over
+ * the histories (t1 scratch). */
+static void sim_step(sim_t *sm, arb_t norm, arb_t t1)
+{
+    slong n = sm->n, prec = sm->prec, i, u;
+    for (i = 0; i < n; i++) {
+        arb_zero(sm->rhs + i);
         for (u = 0; u < n; u++) {
-            arb_zero(znew + u);
-            for (i = 0; i < n; i++) arb_addmul(znew + u, arb_mat_entry(Linv, u, i), rhs + i, prec);
-            /* midpoint arithmetic at the working precision: propagated ball
-             * radii grow like the sum of |coefficients|^n, not like rho^n, and
-             * would swamp the measurement; the growth is a measurement */
-            mag_zero(arb_radref(znew + u));
+            slong k2, len = sm->Mu[u] - sm->mu[u];
+            for (k2 = 0; k2 < len; k2++)
+                if (!arb_is_zero(sm->cf[i * n + u] + k2))
+                    arb_addmul(sm->rhs + i, sm->cf[i * n + u] + k2, sm->hist[u] + k2, prec);
         }
-        /* shift histories, newest value last */
-        arb_zero(norm);
-        for (u = 0; u < n; u++) {
-            slong len = Mu[u] - mu[u] + 1, j;
-            arb_set(hist[u] + len - 1, znew + u);
-            for (j = 0; j < len; j++) {
-                arb_abs(t1, hist[u] + j);
-                arb_max(norm, norm, t1, prec);
-            }
-            /* the known values for the next step move one place down */
-            for (j = 0; j + 1 < len; j++) arb_swap(hist[u] + j, hist[u] + j + 1);
-        }
-        /* window averages of log |z| over [N/4, N/2) and [3N/4, N): the
-         * oscillation of complex modes averages out */
-        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lognorm_mid, lognorm_mid, t2, 64); }
-        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(lognorm_end, lognorm_end, t2, 64); }
+        arb_neg(sm->rhs + i, sm->rhs + i);
     }
-    if (r != RS_OK) goto done;
-    o = json_object();
-    json_object_set_new(o, "analysis", json_string("simulate"));
-    json_object_set_new(o, "steps", json_integer(steps));
-    json_object_set_new(o, "seed", json_integer(seed));
-    json_object_set_new(o, "precision_bits", json_integer(prec));
-    json_object_set_new(o, "recurrence", json_string(scalar ? "scalar recurrence of p(lambda) (the equations' "
-                                                              "leading matrix is singular or absent)"
-                                                            : "the case's equations as written, solved for the "
-                                                              "newest value of every unknown at each step"));
-    json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision"));
-    /* growth per step over the second half: (|z_N| / |z_{N/2}|)^(1/(N - N/2)) */
+    for (u = 0; u < n; u++) {
+        arb_zero(sm->znew + u);
+        for (i = 0; i < n; i++) arb_addmul(sm->znew + u, arb_mat_entry(sm->Linv, u, i), sm->rhs + i, prec);
+        /* midpoint arithmetic at the working precision: propagated ball
+         * radii grow like the sum of |coefficients|^n, not like rho^n, and
+         * would swamp the measurement; the growth is a measurement */
+        mag_zero(arb_radref(sm->znew + u));
+    }
+    /* shift histories, newest value last */
+    arb_zero(norm);
+    for (u = 0; u < n; u++) {
+        slong len = sm->Mu[u] - sm->mu[u] + 1, j;
+        arb_set(sm->hist[u] + len - 1, sm->znew + u);
+        for (j = 0; j < len; j++) {
+            arb_abs(t1, sm->hist[u] + j);
+            arb_max(norm, norm, t1, prec);
+        }
+        /* the known values for the next step move one place down */
+        for (j = 0; j + 1 < len; j++) arb_swap(sm->hist[u] + j, sm->hist[u] + j + 1);
+    }
+}
+
+/* growth per step from the window averages of log |z| over [N/4, N/2) and
+ * [3N/4, N) (sums in lognorm_mid, lognorm_end), cross-checked; the radius
+ * beside it */
+static int simulate_growth(rs_run_t *run, json_t *o, const rs_variant_t *v, const fmpz_poly_t p, slong steps,
+                           arb_t lognorm_mid, arb_t lognorm_end, slong prec)
+{
+    arb_t t1, t2;
+    rs_radius_t rr;
+    int r = RS_OK;
+    arb_init(t1); arb_init(t2);
     if (steps >= 8 && arb_is_finite(lognorm_end) && arb_is_finite(lognorm_mid)) {
         slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
         /* averages over [a1, b1] and [a2, b2]; centres (a+b)/2 */
@@ -269,32 +286,65 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "growth", json_null());
         json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
     }
-    {
-        rs_radius_t rr;
-        rs_radius_init(rr);
-        if (rs_radius_fmpz_poly(rr, p, 15, run->opt->max_prec, run->err) == RS_OK)
-            json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
-        else
-            rs_error_init(run->err);
-        rs_radius_clear(rr);
+    rs_radius_init(rr);
+    if (rs_radius_fmpz_poly(rr, p, 15, run->opt->max_prec, run->err) == RS_OK)
+        json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
+    else
+        rs_error_init(run->err);
+    rs_radius_clear(rr);
+    arb_clear(t1); arb_clear(t2);
+    return r;
+}
+
+int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_optval_t *o_steps = rs_an_opt(req, "steps"), *o_seed = rs_an_opt(req, "seed"),
+                      *o_prec = rs_an_opt(req, "prec");
+    slong steps = o_steps->at != NULL ? o_steps->num : 1000, seed = o_seed->at != NULL ? o_seed->num : 1;
+    slong prec = o_prec->at != NULL ? o_prec->num : 128, step;
+    rs_variant_t *v;
+    fmpz_poly_t p;
+    sim_t sm;
+    json_t *o;
+    arb_t norm, lognorm_mid, lognorm_end, t1, t2;
+    flint_rand_t st;
+    int r = rs_run_numeric_variant(run, &v);
+    if (r != RS_OK) return r;
+    fmpz_poly_init(p);
+    r = rs_run_numeric_poly(p, run, req->q, v, "simulate");
+    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    flint_randinit(st);
+    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+    sim_init(&sm, v->s, p, prec, st);
+    arb_init(norm); arb_init(lognorm_mid); arb_init(lognorm_end); arb_init(t1); arb_init(t2);
+    r = sim_estimate(&sm, run, req, steps);
+    for (step = 1; step <= steps && r == RS_OK; step++) {
+        if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
+        sim_step(&sm, norm, t1);
+        /* window averages of log |z| over [N/4, N/2) and [3N/4, N): the
+         * oscillation of complex modes averages out */
+        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lognorm_mid, lognorm_mid, t2, 64); }
+        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(lognorm_end, lognorm_end, t2, 64); }
     }
-    json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    if (r == RS_OK) json_array_append_new(run->results, o);
-    else json_decref(o);
-done:
-    for (u = 0; u < n; u++) _arb_vec_clear(hist[u], Mu[u] - mu[u] + 1);
-    flint_free(hist);
-    for (i = 0; i < n * n; i++) _arb_vec_clear(cf[i], Mu[i % n] - mu[i % n] > 0 ? Mu[i % n] - mu[i % n] : 1);
-    flint_free(cf);
-    _arb_vec_clear(rhs, n);
-    _arb_vec_clear(znew, n);
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("simulate"));
+        json_object_set_new(o, "steps", json_integer(steps));
+        json_object_set_new(o, "seed", json_integer(seed));
+        json_object_set_new(o, "precision_bits", json_integer(prec));
+        json_object_set_new(o, "recurrence", json_string(sm.scalar ? "scalar recurrence of p(lambda) (the equations' "
+                                                                     "leading matrix is singular or absent)"
+                                                                   : "the case's equations as written, solved for the "
+                                                                     "newest value of every unknown at each step"));
+        json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision"));
+        r = simulate_growth(run, o, v, p, steps, lognorm_mid, lognorm_end, prec);
+        json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        if (r == RS_OK) json_array_append_new(run->results, o);
+        else json_decref(o);
+    }
+    sim_clear(&sm);
     arb_clear(norm); arb_clear(lognorm_mid); arb_clear(lognorm_end); arb_clear(t1); arb_clear(t2);
-    arb_mat_clear(L);
-    arb_mat_clear(Linv);
-    flint_free(Mu);
-    flint_free(mu);
-    fmpq_clear(c);
     flint_randclear(st);
     fmpz_poly_clear(p);
     return r;
