@@ -114,8 +114,8 @@ int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_claim_req_clear(rs_an_req_t *req);
 int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run);
 
-/* Run functions (one file each in src/analysis/: an_NAME.c; region, limit
- * and claim in analysis_region.c; sweep and map in analysis_sweep.c). */
+/* Run functions (one file each in src/analysis/: an_NAME.c; sweep and map
+ * in analysis_sweep.c and analysis_cosim.c). */
 int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_expect(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req);
