@@ -411,6 +411,84 @@ static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bo
     return ok;
 }
 
+/* g (degree dg >= 1 in u, the variable of lambda) has only simple negative
+ * roots on the whole box: one sign of its coefficients (and a positive
+ * discriminant for dg = 2); for dg > 2 by Hermite-Biehler. */
+static int prove_negative_simple(rs_run_t *run, const fmpz_mpoly_t g, const rs_bound_t *b, const rs_scheme_t s,
+                                 claim_cx_t *cx)
+{
+    slong lv = s->lambda_var, i, dg = fmpz_mpoly_degree_si(g, lv, s->zctx);
+    ulong *e = flint_malloc(s->nvars * sizeof(ulong));
+    fmpz_mpoly_t t;
+    int ok = 1;
+    fmpz_mpoly_init(t, s->zctx);
+    if (dg == 1) {
+        fmpz_mpoly_t a1, a0;
+        size_t n0 = json_array_size(cx->cert);
+        fmpz_mpoly_init(a1, s->zctx); fmpz_mpoly_init(a0, s->zctx);
+        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
+        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
+        /* root u = -a0/a1 < 0: a0, a1 of one sign */
+        ok = prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
+        if (!ok) {
+            cert_truncate(cx, n0);
+            ok = prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
+        }
+        fmpz_mpoly_clear(a1, s->zctx); fmpz_mpoly_clear(a0, s->zctx);
+    } else if (dg == 2) {
+        fmpz_mpoly_t a2, a1, a0, d;
+        size_t n0 = json_array_size(cx->cert);
+        fmpz_mpoly_init(a2, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+        fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(d, s->zctx);
+        rs_charpoly_coeff(a2, g, 2, lv, s->zctx);
+        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
+        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
+        /* two simple negative roots in u: one sign for a2, a1, a0 and a1^2 - 4 a2 a0 > 0 */
+        fmpz_mpoly_mul(d, a1, a1, s->zctx);
+        fmpz_mpoly_mul(t, a2, a0, s->zctx);
+        fmpz_mpoly_scalar_mul_si(t, t, 4, s->zctx);
+        fmpz_mpoly_sub(d, d, t, s->zctx);
+        ok = prove_sign(a2, 1, b, s, cx) && prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
+        if (!ok) {
+            cert_truncate(cx, n0);
+            ok = prove_sign(a2, -1, b, s, cx) && prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
+        }
+        ok = ok && prove_sign(d, 1, b, s, cx);
+        fmpz_mpoly_clear(a2, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+        fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(d, s->zctx);
+    } else {
+        /* g has only simple negative roots iff P(z) = g(z^2) + z g'(z^2) is
+         * Hurwitz-stable (Hermite-Biehler: the roots of g and g' are real,
+         * negative, simple and interlace, as Rolle gives for g') */
+        fmpz_mpoly_t P, gd;
+        slong n = fmpz_mpoly_length(g, s->zctx);
+        fmpz_mpoly_init(P, s->zctx);
+        fmpz_mpoly_init(gd, s->zctx);
+        fmpz_mpoly_derivative(gd, g, lv, s->zctx);
+        for (i = 0; i < n; i++) {                           /* g(z^2) */
+            fmpz_mpoly_get_term_exp_ui(e, g, i, s->zctx);
+            e[lv] *= 2;
+            fmpz_mpoly_push_term_fmpz_ui(P, g->coeffs + i, e, s->zctx);
+        }
+        n = fmpz_mpoly_length(gd, s->zctx);
+        for (i = 0; i < n; i++) {                           /* z g'(z^2) */
+            fmpz_mpoly_get_term_exp_ui(e, gd, i, s->zctx);
+            e[lv] = 2 * e[lv] + 1;
+            fmpz_mpoly_push_term_fmpz_ui(P, gd->coeffs + i, e, s->zctx);
+        }
+        fmpz_mpoly_sort_terms(P, s->zctx);
+        fmpz_mpoly_combine_like_terms(P, s->zctx);
+        cert_note(cx, "G = z^k g(z^2): g has simple negative roots because g(z^2) + z g'(z^2) is "
+                      "Hurwitz-stable (Hermite-Biehler)");
+        ok = prove_hurwitz_stable(run, P, b, s, cx);
+        fmpz_mpoly_clear(P, s->zctx);
+        fmpz_mpoly_clear(gd, s->zctx);
+    }
+    fmpz_mpoly_clear(t, s->zctx);
+    flint_free(e);
+    return ok;
+}
+
 /* Bounded (stable or marginal) on the whole box: q = G H with
  * G = gcd(q(z), q(-z)) (the roots symmetric about the origin, among them
  * every root on the imaginary axis), H Hurwitz-stable, and G = z^k g(z^2)
@@ -481,68 +559,7 @@ static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t 
         ok = prove_nonzero(t, b, s, cx);
         fmpz_clear(zero);
     }
-    if (ok && dg == 1) {
-        fmpz_mpoly_t a1, a0;
-        size_t n0 = json_array_size(cx->cert);
-        fmpz_mpoly_init(a1, s->zctx); fmpz_mpoly_init(a0, s->zctx);
-        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
-        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
-        /* root u = -a0/a1 < 0: a0, a1 of one sign */
-        ok = prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
-        if (!ok) {
-            cert_truncate(cx, n0);
-            ok = prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
-        }
-        fmpz_mpoly_clear(a1, s->zctx); fmpz_mpoly_clear(a0, s->zctx);
-    } else if (ok && dg == 2) {
-        fmpz_mpoly_t a2, a1, a0, d;
-        size_t n0 = json_array_size(cx->cert);
-        fmpz_mpoly_init(a2, s->zctx); fmpz_mpoly_init(a1, s->zctx);
-        fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(d, s->zctx);
-        rs_charpoly_coeff(a2, g, 2, lv, s->zctx);
-        rs_charpoly_coeff(a1, g, 1, lv, s->zctx);
-        rs_charpoly_coeff(a0, g, 0, lv, s->zctx);
-        /* two simple negative roots in u: one sign for a2, a1, a0 and a1^2 - 4 a2 a0 > 0 */
-        fmpz_mpoly_mul(d, a1, a1, s->zctx);
-        fmpz_mpoly_mul(t, a2, a0, s->zctx);
-        fmpz_mpoly_scalar_mul_si(t, t, 4, s->zctx);
-        fmpz_mpoly_sub(d, d, t, s->zctx);
-        ok = prove_sign(a2, 1, b, s, cx) && prove_sign(a1, 1, b, s, cx) && prove_sign(a0, 1, b, s, cx);
-        if (!ok) {
-            cert_truncate(cx, n0);
-            ok = prove_sign(a2, -1, b, s, cx) && prove_sign(a1, -1, b, s, cx) && prove_sign(a0, -1, b, s, cx);
-        }
-        ok = ok && prove_sign(d, 1, b, s, cx);
-        fmpz_mpoly_clear(a2, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
-        fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(d, s->zctx);
-    } else if (ok && dg > 2) {
-        /* g has only simple negative roots iff P(z) = g(z^2) + z g'(z^2) is
-         * Hurwitz-stable (Hermite-Biehler: the roots of g and g' are real,
-         * negative, simple and interlace, as Rolle gives for g') */
-        fmpz_mpoly_t P, gd;
-        slong n = fmpz_mpoly_length(g, s->zctx);
-        fmpz_mpoly_init(P, s->zctx);
-        fmpz_mpoly_init(gd, s->zctx);
-        fmpz_mpoly_derivative(gd, g, lv, s->zctx);
-        for (i = 0; i < n; i++) {                           /* g(z^2) */
-            fmpz_mpoly_get_term_exp_ui(e, g, i, s->zctx);
-            e[lv] *= 2;
-            fmpz_mpoly_push_term_fmpz_ui(P, g->coeffs + i, e, s->zctx);
-        }
-        n = fmpz_mpoly_length(gd, s->zctx);
-        for (i = 0; i < n; i++) {                           /* z g'(z^2) */
-            fmpz_mpoly_get_term_exp_ui(e, gd, i, s->zctx);
-            e[lv] = 2 * e[lv] + 1;
-            fmpz_mpoly_push_term_fmpz_ui(P, gd->coeffs + i, e, s->zctx);
-        }
-        fmpz_mpoly_sort_terms(P, s->zctx);
-        fmpz_mpoly_combine_like_terms(P, s->zctx);
-        cert_note(cx, "G = z^k g(z^2): g has simple negative roots because g(z^2) + z g'(z^2) is "
-                      "Hurwitz-stable (Hermite-Biehler)");
-        ok = prove_hurwitz_stable(run, P, b, s, cx);
-        fmpz_mpoly_clear(P, s->zctx);
-        fmpz_mpoly_clear(gd, s->zctx);
-    }
+    if (ok && dg >= 1) ok = prove_negative_simple(run, g, b, s, cx);
     fmpz_mpoly_clear(q, s->zctx); fmpz_mpoly_clear(qm, s->zctx);
     fmpz_mpoly_clear(G, s->zctx); fmpz_mpoly_clear(H, s->zctx);
     fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(t, s->zctx);
