@@ -120,28 +120,27 @@ static int def_named(const rs_an_def_t *d, const char *t, size_t n)
     return 0;
 }
 
+/* 1 when entry i applies to one of `kinds` and is the first such with its name */
+static int first_of_name(slong i, int kinds)
+{
+    slong j;
+    if (!(rs_an_registry[i].kinds & kinds)) return 0;
+    for (j = 0; j < i; j++)
+        if ((rs_an_registry[j].kinds & kinds) && strcmp(rs_an_registry[j].name, rs_an_registry[i].name) == 0)
+            return 0;
+    return 1;
+}
+
 /* the names of the entries for the model kinds in `kinds`, each once, in
  * table order, joined by ", " (and " and " before the last when `and`) */
 static void names_list(char *buf, size_t len, int kinds, int and)
 {
-    slong i, j, n = 0, count = 0;
+    slong i, n = 0, count = 0;
     buf[0] = '\0';
+    for (i = 0; rs_an_registry[i].name != NULL; i++) count += first_of_name(i, kinds);
     for (i = 0; rs_an_registry[i].name != NULL; i++) {
-        int first = 1;
-        if (!(rs_an_registry[i].kinds & kinds)) continue;
-        for (j = 0; j < i; j++)
-            if ((rs_an_registry[j].kinds & kinds) && strcmp(rs_an_registry[j].name, rs_an_registry[i].name) == 0)
-                first = 0;
-        count += first;
-    }
-    for (i = 0; rs_an_registry[i].name != NULL; i++) {
-        int first = 1;
         size_t used = strlen(buf);
-        if (!(rs_an_registry[i].kinds & kinds)) continue;
-        for (j = 0; j < i; j++)
-            if ((rs_an_registry[j].kinds & kinds) && strcmp(rs_an_registry[j].name, rs_an_registry[i].name) == 0)
-                first = 0;
-        if (!first) continue;
+        if (!first_of_name(i, kinds)) continue;
         snprintf(buf + used, len - used, "%s%s", n == 0 ? "" : (and && n == count - 1) ? " and " : ", ",
                  rs_an_registry[i].name);
         n++;
