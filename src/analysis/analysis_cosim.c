@@ -517,19 +517,3 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
 }
-
-static int an_cosim_map(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    rs_sweep_request_t R;
-    int r;
-    rs_sweep_request_init(&R);
-    r = rs_map_request_parse(&R, run, q, rest);
-    if (r == RS_OK) r = rs_an_cosim_map_run(run, q, &R);
-    rs_sweep_request_clear(&R);
-    return r;
-}
-
-const rs_analysis_entry_t rs_analysis_cosim[] = {
-    {"map", an_cosim_map},
-    {NULL, NULL}
-};

@@ -158,31 +158,3 @@ int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request
     _fmpq_vec_clear(vals, npoints);
     return r;
 }
-
-static int an_sweep(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    rs_sweep_request_t R;
-    int r;
-    rs_sweep_request_init(&R);
-    r = rs_sweep_request_parse(&R, run, q, rest);
-    if (r == RS_OK) r = rs_an_sweep_run(run, q, &R);
-    rs_sweep_request_clear(&R);
-    return r;
-}
-
-static int an_map(rs_run_t *run, const rs_request_t *q, const char *rest)
-{
-    rs_sweep_request_t R;
-    int r;
-    rs_sweep_request_init(&R);
-    r = rs_map_request_parse(&R, run, q, rest);
-    if (r == RS_OK) r = rs_an_map_run(run, q, &R);
-    rs_sweep_request_clear(&R);
-    return r;
-}
-
-const rs_analysis_entry_t rs_analysis_sweep[] = {
-    {"sweep", an_sweep},
-    {"map", an_map},
-    {NULL, NULL}
-};

@@ -1,8 +1,8 @@
 /* analysis/impl.h -- what the analysis files share: the run of a case and
  * its variants, the exact point verdict and the JSON helpers (run.c), the
- * symbolic stability conditions (conditions.c).  The analyses (an_*.c,
- * analysis_sweep.c) include this and registry.h only, never
- * each other.  Private: not installed. */
+ * symbolic stability conditions (conditions.c).  The one-analysis files
+ * (an_*.c) include this and registry.h, never each other; the sweeps and
+ * maps add sweep_impl.h.  Private: not installed. */
 #ifndef RECSTAB_ANALYSIS_IMPL_H
 #define RECSTAB_ANALYSIS_IMPL_H
 
@@ -131,13 +131,6 @@ int rs_req_relocate(rs_run_t *run, const rs_request_t *q, int code, const char *
 int rs_req_eval_points(fmpq *out, slong stride, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
                        const char *text, slong var, const fmpq *vals, slong npoints, const char **end);
 
-typedef int (*rs_analysis_fn)(rs_run_t *, const rs_request_t *, const char *);
-typedef struct { const char *name; rs_analysis_fn fn; } rs_analysis_entry_t;
-/* The sweep and map implementations not yet behind the registry's typed
- * requests (registry.c calls them by name): src/analysis/analysis_sweep.c
- * (sweep, map) and src/analysis/analysis_cosim.c (map of exact integration). */
-extern const rs_analysis_entry_t rs_analysis_sweep[];
-extern const rs_analysis_entry_t rs_analysis_cosim[];
 
 
 /* Simulate's cross-check (src/analysis/an_simulate.c): NULL when a measured

@@ -10,6 +10,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include "analysis/registry.h"
+#include "analysis/sweep_impl.h"
 
 /* ---- grammars ------------------------------------------------------------ */
 
@@ -36,26 +37,30 @@ static const rs_opt_spec_t simulate_opts[] = {
     {NULL, 0, 0, 0, NULL, NULL, NULL}
 };
 
-/* sweep and map keep their own parsers (src/analysis/analysis_sweep.c,
- * analysis_cosim.c) until the one sweep/map engine provides a typed parse:
- * their words are checked when they run */
-static int legacy_parse(rs_an_req_t *req, rs_run_t *run)
+/* sweep and map: the typed requests of the sweep/map engine (sweep_impl.h);
+ * the same map grammar for the equations and for exact integration */
+static int sweep_parse_as(rs_an_req_t *req, rs_run_t *run, int map)
 {
-    (void) req;
-    (void) run;
-    return RS_OK;
+    rs_sweep_request_t *r = malloc(sizeof *r);
+    rs_sweep_request_init(r);
+    req->u.sweep = r;
+    return map ? rs_map_request_parse(r, run, req->q, req->rest) : rs_sweep_request_parse(r, run, req->q, req->rest);
 }
+static int sweep_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 0); }
+static int map_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 1); }
 
-static int legacy_run(const rs_analysis_entry_t *table, rs_run_t *run, const rs_an_req_t *req)
+static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 {
-    slong i;
-    for (i = 0; table[i].name != NULL; i++)
-        if (strcmp(table[i].name, req->def->name) == 0) return table[i].fn(run, req->q, req->rest);
-    return rs_error_set(run->err, RS_ERR_INTERNAL, "no implementation of '%s'", req->def->name);
+    return rs_an_sweep_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
 }
-
-static int run_sweep(rs_run_t *run, const rs_an_req_t *req) { return legacy_run(rs_analysis_sweep, run, req); }
-static int run_cosim_map(rs_run_t *run, const rs_an_req_t *req) { return legacy_run(rs_analysis_cosim, run, req); }
+static int run_map(rs_run_t *run, const rs_an_req_t *req)
+{
+    return rs_an_map_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
+}
+static int run_cosim_map(rs_run_t *run, const rs_an_req_t *req)
+{
+    return rs_an_cosim_map_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
+}
 
 #define EQ RS_AN_KINDS(RS_MODEL_EQUATIONS)
 #define NUM (RS_AN_KINDS(RS_MODEL_RECURRENCE) | RS_AN_KINDS(RS_MODEL_COSIM))
@@ -92,17 +97,17 @@ const rs_an_def_t rs_an_registry[] = {
     {"simulate", NULL, EQ, "", simulate_opts, "the measured growth per step of the equations themselves",
      NULL, rs_an_simulate, RS_AN_NOT_IN_P},
     {"sweep", NULL, EQ, "NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]",
-     NULL, "verdicts (and radius or modes) on a grid of one parameter", legacy_parse, run_sweep, 0},
+     NULL, "verdicts (and radius or modes) on a grid of one parameter", sweep_parse, run_sweep, 0},
     {"map", NULL, EQ, "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
-     "verdicts and radius on a grid of two parameters, with the exact boundary", legacy_parse, run_sweep, 0},
+     "verdicts and radius on a grid of two parameters, with the exact boundary", map_parse, run_map, 0},
     {"expect", NULL, EQ, "charpoly|bilinear POLY", NULL, "compares a printed polynomial with the derived one",
      rs_an_expect_parse, rs_an_expect, 0},
     {"radius", NULL, NUM, "", digits_opts, "the certified spectral radius of the one-step map",
      NULL, rs_an_numeric_radius, 0},
     {"stability", NULL, NUM, "", digits_opts, "the verdict from the certified spectral radius",
      NULL, rs_an_numeric_stability, 0},
-    {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius]", NULL,
-     "certified radius on a grid of two parameters", legacy_parse, run_cosim_map, 0},
+    {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
+     "verdicts from the certified radius on a grid of two parameters", map_parse, run_cosim_map, 0},
     {NULL, NULL, 0, NULL, NULL, NULL, NULL, NULL, 0}
 };
 
@@ -317,6 +322,10 @@ void rs_an_req_clear(rs_an_req_t *req)
     if (req->def != NULL && req->def->parse == rs_an_region_parse) rs_assign_free(req->u.region.at, req->u.region.nat);
     if (req->def != NULL && req->def->parse == rs_an_claim_parse) rs_an_claim_req_clear(req);
     if (req->def != NULL && req->def->parse == rs_an_expect_parse) rs_expr_free(req->u.expect.poly);
+    if (req->def != NULL && (req->def->parse == sweep_parse || req->def->parse == map_parse) && req->u.sweep != NULL) {
+        rs_sweep_request_clear((rs_sweep_request_t *) req->u.sweep);
+        free(req->u.sweep);
+    }
     memset(req, 0, sizeof *req);
 }
 

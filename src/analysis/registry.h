@@ -60,7 +60,8 @@ typedef struct {
         struct { int bilinear; rs_expr_t *poly; } expect;
         struct { slong param; rs_assign_t *at; slong nat; } region;
         struct { slong param; int to_inf; } limit;
-        struct { int kind; void *dnf; } claim;       /* dnf: claim.c's claim_dnf_t */
+        struct { int kind; void *dnf; } claim;       /* dnf: an_claim.c's claim_dnf_t */
+        void *sweep;                                 /* sweep, map: rs_sweep_request_t (sweep_impl.h) */
     } u;
 } rs_an_req_t;
 

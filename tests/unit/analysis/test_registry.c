@@ -8,7 +8,9 @@
 #include <string.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
+#include "recstab/scheme.h"
 #include "analysis/registry.h"
+#include "analysis/sweep_impl.h"
 
 /* HHT-like two-parameter case: params w, v; nothing set */
 static const char *case_text =
@@ -29,6 +31,7 @@ static void fixture_init(fixture_t *f, const char *text)
     rs_error_init(f->err);
     rs_options_default(&f->opt);
     assert_int_equal(rs_case_parse_string(f->c, "t.case", text, strlen(text), f->err), RS_OK);
+    assert_int_equal(rs_case_lower(f->c, f->err), RS_OK);
     memset(&f->run, 0, sizeof f->run);
     f->run.c = f->c;
     f->run.opt = &f->opt;
@@ -117,6 +120,18 @@ static void test_typed(void **state)
     assert_non_null(req.u.expect.poly);
     rs_an_req_clear(&req);
 
+    /* sweep and map: the sweep engine's typed request (4 steps: 5 points; a 3 x 2 map) */
+    assert_int_equal(parse(&req, &f, &q, "sweep w from 0 to 1 steps 4 of stability"), RS_OK);
+    assert_string_equal(req.def->name, "sweep");
+    assert_int_equal(((rs_sweep_request_t *) req.u.sweep)->naxes, 1);
+    assert_int_equal(((rs_sweep_request_t *) req.u.sweep)->axis[0].count, 4);
+    assert_int_equal(((rs_sweep_request_t *) req.u.sweep)->of, RS_SWEEP_OF_STABILITY);
+    rs_an_req_clear(&req);
+    assert_int_equal(parse(&req, &f, &q, "map w 0 1 3, v 1 2 2"), RS_OK);
+    assert_int_equal(((rs_sweep_request_t *) req.u.sweep)->naxes, 2);
+    assert_int_equal(((rs_sweep_request_t *) req.u.sweep)->axis[1].var, 1);
+    rs_an_req_clear(&req);
+
     assert_int_equal(parse(&req, &f, &q, "claim bounded when w > 0 or w < -1"), RS_OK);
     assert_non_null(req.u.claim.dnf);
     rs_an_req_clear(&req);
@@ -202,6 +217,7 @@ static void test_checked_first(void **state)
     rs_error_init(err);
     rs_options_default(&opt);
     assert_int_equal(rs_case_parse_string(c, "t.case", text, strlen(text), err), RS_OK);
+    assert_int_equal(rs_case_lower(c, err), RS_OK);
     assert_int_equal(rs_analysis_run(&doc, &outcome, c, &opt, err), RS_ERR_INPUT);
     assert_null(doc);
     assert_int_equal(err->line, 6);
