@@ -76,6 +76,11 @@ int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run)
     return r;
 }
 
+void rs_an_expect_req_clear(rs_an_req_t *req)
+{
+    rs_expr_free(req->u.expect.poly);
+}
+
 int rs_an_expect(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;

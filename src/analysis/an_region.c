@@ -1060,6 +1060,11 @@ static void region_clear(region_t *rg)
     fmpz_mpoly_clear(rg->sqf_t, s->zctx);
 }
 
+void rs_an_region_req_clear(rs_an_req_t *req)
+{
+    rs_assign_free(req->u.region.at, req->u.region.nat);
+}
+
 int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *name = run->c->params[req->u.region.param].name;

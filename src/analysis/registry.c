@@ -47,6 +47,12 @@ static int sweep_parse_as(rs_an_req_t *req, rs_run_t *run, int map)
     return map ? rs_map_request_parse(r, run, req->q, req->rest) : rs_sweep_request_parse(r, run, req->q, req->rest);
 }
 static int sweep_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 0); }
+static void sweep_req_clear(rs_an_req_t *req)
+{
+    if (req->u.sweep == NULL) return;
+    rs_sweep_request_clear((rs_sweep_request_t *) req->u.sweep);
+    free(req->u.sweep);
+}
 static int map_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 1); }
 
 static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
@@ -70,45 +76,45 @@ static int run_cosim_map(rs_run_t *run, const rs_an_req_t *req)
 const rs_an_def_t rs_an_registry[] = {
     {"charpoly", NULL, EQ, "", NULL,
      "p(lambda) = det of the lambda-matrix, fraction-free; lambda^k and the rational content split off",
-     NULL, rs_an_charpoly, 0},
+     NULL, NULL, rs_an_charpoly, 0},
     {"bilinear", NULL, EQ, "", NULL,
      "q(z) = (1-z)^n p((1+z)/(1-z)), degree drop, z = 0 multiplicity, p(1), p(-1)",
-     NULL, rs_an_bilinear, 0},
+     NULL, NULL, rs_an_bilinear, 0},
     {"routh", NULL, EQ, "", NULL, "the exact Routh array of q, singular cases handled exactly and named",
-     NULL, rs_an_routh, 0},
+     NULL, NULL, rs_an_routh, 0},
     {"hurwitz", NULL, EQ, "", NULL, "Hurwitz minors and the Lienard-Chipart conditions, factored over Q",
-     NULL, rs_an_hurwitz, 0},
+     NULL, NULL, rs_an_hurwitz, 0},
     {"jury", NULL, EQ, "", NULL, "Schur-Cohn on p(lambda) directly, cross-checked against Routh",
-     NULL, rs_an_jury, 0},
+     NULL, NULL, rs_an_jury, 0},
     {"stability", NULL, EQ, "", NULL, "all parameters set: stable / marginal / unstable / singular with root counts",
-     NULL, rs_an_stability, RS_AN_NOT_IN_P},
+     NULL, NULL, rs_an_stability, RS_AN_NOT_IN_P},
     {"region", NULL, EQ, "NAME [at P=V, ...]", NULL,
      "the exact set of NAME values where the scheme is stable, marginal, unstable",
-     rs_an_region_parse, rs_an_region, 0},
+     rs_an_region_parse, rs_an_region_req_clear, rs_an_region, 0},
     {"limit", NULL, EQ, "NAME -> 0|inf", NULL, "the limits of the roots with multiplicities",
-     rs_an_limit_parse, rs_an_limit, 0},
+     rs_an_limit_parse, NULL, rs_an_limit, 0},
     {"claim", NULL, EQ, "stable|bounded|unstable [when CONDITION [and|or ...]]", NULL,
      "proved (re-checked certificate), refuted (exact counterexample) or undecided",
-     rs_an_claim_parse, rs_an_claim, 0},
+     rs_an_claim_parse, rs_an_claim_req_clear, rs_an_claim, 0},
     {"radius", NULL, EQ, "", radius_opts, "the spectral radius as a certified interval, the roots as balls",
-     NULL, rs_an_radius, RS_AN_NOT_IN_P},
+     NULL, NULL, rs_an_radius, RS_AN_NOT_IN_P},
     {"modes", NULL, EQ, "", modes_opts, "for each root: ln(lambda)/h, damping ratio, relative frequency error",
-     NULL, rs_an_modes, RS_AN_NOT_IN_P},
+     NULL, NULL, rs_an_modes, RS_AN_NOT_IN_P},
     {"simulate", NULL, EQ, "", simulate_opts, "the measured growth per step of the equations themselves",
-     NULL, rs_an_simulate, RS_AN_NOT_IN_P},
+     NULL, NULL, rs_an_simulate, RS_AN_NOT_IN_P},
     {"sweep", NULL, EQ, "NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]",
-     NULL, "verdicts (and radius or modes) on a grid of one parameter", sweep_parse, run_sweep, 0},
+     NULL, "verdicts (and radius or modes) on a grid of one parameter", sweep_parse, sweep_req_clear, run_sweep, 0},
     {"map", NULL, EQ, "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
-     "verdicts and radius on a grid of two parameters, with the exact boundary", map_parse, run_map, 0},
+     "verdicts and radius on a grid of two parameters, with the exact boundary", map_parse, sweep_req_clear, run_map, 0},
     {"expect", NULL, EQ, "charpoly|bilinear POLY", NULL, "compares a printed polynomial with the derived one",
-     rs_an_expect_parse, rs_an_expect, 0},
+     rs_an_expect_parse, rs_an_expect_req_clear, rs_an_expect, 0},
     {"radius", NULL, NUM, "", digits_opts, "the certified spectral radius of the one-step map",
-     NULL, rs_an_numeric_radius, 0},
+     NULL, NULL, rs_an_numeric_radius, 0},
     {"stability", NULL, NUM, "", digits_opts, "the verdict from the certified spectral radius",
-     NULL, rs_an_numeric_stability, 0},
+     NULL, NULL, rs_an_numeric_stability, 0},
     {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
-     "verdicts from the certified radius on a grid of two parameters", map_parse, run_cosim_map, 0},
-    {NULL, NULL, 0, NULL, NULL, NULL, NULL, NULL, 0}
+     "verdicts from the certified radius on a grid of two parameters", map_parse, sweep_req_clear, run_cosim_map, 0},
+    {NULL, NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL, 0}
 };
 
 #undef EQ
@@ -319,13 +325,7 @@ void rs_an_req_clear(rs_an_req_t *req)
 {
     slong k;
     for (k = 0; k < RS_AN_MAX_OPTS; k++) free(req->opt[k].list);
-    if (req->def != NULL && req->def->parse == rs_an_region_parse) rs_assign_free(req->u.region.at, req->u.region.nat);
-    if (req->def != NULL && req->def->parse == rs_an_claim_parse) rs_an_claim_req_clear(req);
-    if (req->def != NULL && req->def->parse == rs_an_expect_parse) rs_expr_free(req->u.expect.poly);
-    if (req->def != NULL && (req->def->parse == sweep_parse || req->def->parse == map_parse) && req->u.sweep != NULL) {
-        rs_sweep_request_clear((rs_sweep_request_t *) req->u.sweep);
-        free(req->u.sweep);
-    }
+    if (req->def != NULL && req->def->clear != NULL) req->def->clear(req);
     memset(req, 0, sizeof *req);
 }
 

@@ -67,6 +67,7 @@ typedef struct {
 
 typedef int (*rs_an_parse_fn)(rs_an_req_t *req, rs_run_t *run);
 typedef int (*rs_an_run_fn)(rs_run_t *run, const rs_an_req_t *req);
+typedef void (*rs_an_clear_fn)(rs_an_req_t *req);
 
 /* Entry flags. */
 enum {
@@ -81,7 +82,8 @@ struct rs_an_def_struct {
                                      "" when there are none */
     const rs_opt_spec_t *opts;    /* `key=value` options (key NULL ends), or NULL */
     const char *summary;          /* one line: what it gives */
-    rs_an_parse_fn parse;         /* the words (NULL: none allowed); options are parsed before */
+    rs_an_parse_fn parse;         /* the words and options (NULL: the `key=value` options only) */
+    rs_an_clear_fn clear;         /* frees what parse put in the request's union, or NULL */
     rs_an_run_fn run;
     int flags;
 };
@@ -110,10 +112,12 @@ int rs_an_check_names(rs_run_t *run, const rs_request_t *q, const rs_expr_t *e);
 
 /* Parse functions of the analyses with words (in their files). */
 int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run);
+void rs_an_region_req_clear(rs_an_req_t *req);
 int rs_an_limit_parse(rs_an_req_t *req, rs_run_t *run);
 int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_claim_req_clear(rs_an_req_t *req);
 int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run);
+void rs_an_expect_req_clear(rs_an_req_t *req);
 
 /* Run functions (one file each in src/analysis/: an_NAME.c; sweep and map
  * in analysis_sweep.c and analysis_cosim.c). */
