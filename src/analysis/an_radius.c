@@ -233,7 +233,7 @@ static int numeric(rs_run_t *run, const rs_an_req_t *req, int stability)
 {
     const rs_optval_t *d = rs_an_opt(req, "digits");
     slong digits = d->at != NULL ? d->num : run->opt->default_digits;
-    if (rs_model_kind(run->c) == RS_MODEL_RECURRENCE) return rec_radius(run, digits, stability, req->q);
+    if (run->m->kind == RS_MODEL_RECURRENCE) return rec_radius(run, digits, stability, req->q);
     return cosim_radius(run, digits, stability, req->q);
 }
 

@@ -6,7 +6,6 @@
 #include <string.h>
 #include "analysis/registry.h"
 #include "util/polyfmt.h"
-#include "lower/builder.h"
 
 void rs_options_default(rs_options_t *opt)
 {
@@ -104,7 +103,7 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     int r;
     *out = NULL;
     *nout = 0;
-    if (rs_model_kind(c) != RS_MODEL_EQUATIONS) {
+    if (run->m->kind != RS_MODEL_EQUATIONS) {
         names[n++] = "stability";
     } else {
         r = rs_run_numeric_variant(run, &v);
@@ -207,7 +206,7 @@ static json_t *case_doc(rs_run_t *run, const rs_request_t *defaults, slong ndefa
         for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
         json_object_set_new(d, "default_analyses", arr);
     }
-    if (run->opt->with_scheme && rs_model_kind(c) == RS_MODEL_EQUATIONS) {
+    if (run->opt->with_scheme && run->m->kind == RS_MODEL_EQUATIONS) {
         json_t *sc = scheme_json(run);
         if (sc == NULL) {
             json_decref(d);
@@ -245,7 +244,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     rs_scheme_init(run.sym);
     r = rs_model_lower(m, c, err);
     if (r == RS_OK) r = check_assumptions(c, m, err);
-    if (r == RS_OK && rs_model_kind(c) == RS_MODEL_EQUATIONS) {
+    if (r == RS_OK && m->kind == RS_MODEL_EQUATIONS) {
         r = rs_scheme_build(run.sym, m, err);
         run.have_sym = (r == RS_OK);
     }

@@ -161,7 +161,7 @@ static void names_list(char *buf, size_t len, int kinds, int and)
 /* the entry for the first word of q, or an error naming what applies */
 static int lookup(const rs_an_def_t **out, rs_run_t *run, const rs_request_t *q)
 {
-    int kind = rs_model_kind(run->c);
+    int kind = run->m->kind;
     const char *t = q->text;
     size_t n = 0;
     slong i;

@@ -15,9 +15,6 @@
  * exactly integrated subsystems): one bit per kind. */
 #define RS_AN_KINDS(k) (1 << (k))
 
-/* The model kind of a case (one of RS_MODEL_*). */
-int rs_model_kind(const rs_case_t c);
-
 /* Types of a `key=value` option. */
 typedef enum {
     RS_OPT_INTEGER,   /* a decimal integer in [lo, hi] */

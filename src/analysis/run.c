@@ -8,8 +8,6 @@
 #include <ctype.h>
 #include "analysis/impl.h"
 #include "analysis/registry.h"
-#include "lower/builder.h"
-#include "lower/recurrence.h"
 #include "util/polyfmt.h"
 #include "recstab/semisimple.h"
 #include "recstab/routh.h"
@@ -1055,11 +1053,4 @@ const char *rs_an_opt_choice(const rs_an_req_t *req, const char *key)
         if (strcmp(req->def->opts[k].key, key) == 0)
             return req->def->opts[k].choices[req->opt[k].at != NULL ? req->opt[k].num : 0];
     return NULL;
-}
-
-int rs_model_kind(const rs_case_t c)
-{
-    if (rs_recurrence_is_numeric(c)) return RS_MODEL_RECURRENCE;
-    if (rs_builder_is_exact(c)) return RS_MODEL_COSIM;
-    return RS_MODEL_EQUATIONS;
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
+#include "recstab/model.h"
 #include "recstab/scheme.h"
 #include "analysis/registry.h"
 #include "analysis/sweep_impl.h"
@@ -20,6 +21,7 @@ static const char *case_text =
 
 typedef struct {
     rs_case_t c;
+    rs_model_t m;
     rs_options_t opt;
     rs_error_t err;
     rs_run_t run;
@@ -31,11 +33,19 @@ static void fixture_init(fixture_t *f, const char *text)
     rs_error_init(f->err);
     rs_options_default(&f->opt);
     assert_int_equal(rs_case_parse_string(f->c, "t.case", text, strlen(text), f->err), RS_OK);
-    assert_int_equal(rs_case_lower(f->c, f->err), RS_OK);
+    rs_model_init(f->m);
+    assert_int_equal(rs_model_lower(f->m, f->c, f->err), RS_OK);
     memset(&f->run, 0, sizeof f->run);
     f->run.c = f->c;
+    f->run.m = f->m;
     f->run.opt = &f->opt;
     f->run.err = f->err;
+}
+
+static void fixture_clear(fixture_t *f)
+{
+    rs_model_clear(f->m);
+    rs_case_clear(f->c);
 }
 
 /* parses `text` as the request on line 9, column 9 (after "analyse ") */
@@ -135,7 +145,7 @@ static void test_typed(void **state)
     assert_int_equal(parse(&req, &f, &q, "claim bounded when w > 0 or w < -1"), RS_OK);
     assert_non_null(req.u.claim.dnf);
     rs_an_req_clear(&req);
-    rs_case_clear(f.c);
+    fixture_clear(&f);
 }
 
 /* code, column and the start of the message of a bad request */
@@ -178,7 +188,7 @@ static void test_bad(void **state)
     bad(&f, "claim stable when 0 < ww < 1", RS_ERR_INPUT, 31, "unknown name 'ww'");
     bad(&f, "modes h=1/2 reference=1,wx", RS_ERR_INPUT, 33, "unknown name 'wx'");
     bad(&f, "expect charpoly lambda + vv", RS_ERR_INPUT, 34, "unknown name 'vv'");
-    rs_case_clear(f.c);
+    fixture_clear(&f);
 }
 
 /* the model kind decides which entries exist */
@@ -189,7 +199,7 @@ static void test_kinds(void **state)
     rs_an_req_t req;
     (void) state;
     fixture_init(&f, "param h\nset h = 1/10\nrecurrence 1 = [1]\nrecurrence 0 = [-exp(-h)]\n");
-    assert_int_equal(rs_model_kind(f.c), RS_MODEL_RECURRENCE);
+    assert_int_equal(f.m->kind, RS_MODEL_RECURRENCE);
     assert_int_equal(parse(&req, &f, &q, "radius digits=20"), RS_OK);
     assert_true(req.def->kinds & RS_AN_KINDS(RS_MODEL_RECURRENCE));
     assert_int_equal(rs_an_opt(&req, "digits")->num, 20);
@@ -198,7 +208,7 @@ static void test_kinds(void **state)
     bad(&f, "radius method=double", RS_ERR_INPUT, 16, "expected an option (digits=), found 'method=double'");
     bad(&f, "routh", RS_ERR_INPUT, 9, "a recurrence with non-polynomial entries (exp, sin, ...) is numeric: only "
         "radius and stability apply, found 'routh'");
-    rs_case_clear(f.c);
+    fixture_clear(&f);
 }
 
 /* a bad request after a good one: the run fails before the first runs
@@ -217,7 +227,6 @@ static void test_checked_first(void **state)
     rs_error_init(err);
     rs_options_default(&opt);
     assert_int_equal(rs_case_parse_string(c, "t.case", text, strlen(text), err), RS_OK);
-    assert_int_equal(rs_case_lower(c, err), RS_OK);
     assert_int_equal(rs_analysis_run(&doc, &outcome, c, &opt, err), RS_ERR_INPUT);
     assert_null(doc);
     assert_int_equal(err->line, 6);
