@@ -56,7 +56,7 @@
 #define FUZZ_MAX_FRAC_DIGITS 12
 #define FUZZ_MAX_PREC 1024
 #define FUZZ_MAX_POINTS 64
-#define FUZZ_TIME_LIMIT 5.0         /* s, budget.h; libFuzzer's -timeout is 10 */
+#define FUZZ_TIME_LIMIT 5.0         /* s, budget.h; libFuzzer's -timeout is 25 (Makefile: FUZZ_TIMEOUT) */
 #define FUZZ_MEMORY_LIMIT 1024      /* MB, budget.h; -rss_limit_mb is 2048 */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
