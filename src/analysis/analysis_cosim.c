@@ -472,13 +472,10 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
 int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     const rs_sweep_axis_t *X = R->axis;
-    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
     cosim_map_t M;
     rs_sweep_model_t m;
-    rs_sweep_row_t *rows = NULL;
     fmpq *xs[2];
-    double t0 = rs_sweep_now(), t_points;
-    char what[200], desc[200];
+    double t0 = rs_sweep_now();
     int r = rs_sweep_estimate(run, q, (double) X[0].count * (double) X[1].count, "the map");
     if (r != RS_OK) return r;
     xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
@@ -500,18 +497,8 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
         m.point = cosim_map_point;
         m.model = &M;
         m.serial = 1;       /* points share the forms' evaluation contexts; rows hold malloc'd cells */
-        snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
-        snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
-        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, desc);
+        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
     }
-    t_points = rs_sweep_now() - t0;
-    if (r == RS_OK) {
-        json_t *o = rs_sweep_map_json(run, q, R, (const fmpq *const *) xs, rows, lo, hi);
-        json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
-        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
-        json_array_append_new(run->results, o);
-    }
-    rs_sweep_rows_free(rows, hi - lo);
     cosim_forms_clear(&M.F);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);

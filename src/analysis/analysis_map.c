@@ -200,17 +200,32 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
     free(bc);
 }
 
+/* the boundary overlay of a map whose p depends on both axes */
+typedef struct {
+    rs_run_t *run;
+    const rs_variant_t *v;
+    const rs_sweep_request_t *R;
+    fmpq *const *xs;
+} map_deco_t;
+
+static void map_decorate(json_t *o, void *arg)
+{
+    map_deco_t *d = arg;
+    const rs_sweep_axis_t *X = d->R->axis;
+    if (fmpz_mpoly_degree_si(d->v->cp->p, X[0].var, d->v->s->zctx) > 0
+        && fmpz_mpoly_degree_si(d->v->cp->p, X[1].var, d->v->s->zctx) > 0)
+        map_boundary(o, d->run, d->v, d->R, d->xs[0], d->xs[1]);
+}
+
 int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     const rs_sweep_axis_t *X = R->axis;
-    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
+    slong npoints = X[0].count * X[1].count;
     rs_variant_t *v;
     rs_sweep_poly_t *J = NULL;
     rs_sweep_model_t m;
-    rs_sweep_row_t *rows = NULL;
     fmpq *xs[2];
-    double t0 = rs_sweep_now(), t_points;
-    char what[200], desc[200];
+    double t0 = rs_sweep_now();
     int r = rs_sweep_estimate(run, q, (double) X[0].count * (double) X[1].count, "the map");
     if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;
@@ -218,22 +233,14 @@ int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t
     xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
     r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) xs, npoints);
     if (r == RS_OK) {
+        map_deco_t d;
+        d.run = run;
+        d.v = v;
+        d.R = R;
+        d.xs = xs;
         rs_sweep_poly_model(&m, J);
-        snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
-        snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
-        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, desc);
+        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, map_decorate, &d);
     }
-    t_points = rs_sweep_now() - t0;
-    if (r == RS_OK) {
-        json_t *o = rs_sweep_map_json(run, q, R, (const fmpq *const *) xs, rows, lo, hi);
-        if (fmpz_mpoly_degree_si(v->cp->p, X[0].var, v->s->zctx) > 0
-            && fmpz_mpoly_degree_si(v->cp->p, X[1].var, v->s->zctx) > 0)
-            map_boundary(o, run, v, R, xs[0], xs[1]);
-        json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
-        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
-        json_array_append_new(run->results, o);
-    }
-    rs_sweep_rows_free(rows, hi - lo);
     rs_sweep_poly_free(J);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);

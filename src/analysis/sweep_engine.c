@@ -322,3 +322,27 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     free(buf);
     return o;
 }
+
+int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
+                        const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg)
+{
+    const rs_sweep_axis_t *X = R->axis;
+    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
+    rs_sweep_row_t *rows = NULL;
+    char what[200], desc[200];
+    double t_points;
+    int r;
+    snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
+    snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
+    r = rs_sweep_compute(&rows, &lo, &hi, run, q, m, npoints, what, desc);
+    t_points = rs_sweep_now() - t0;
+    if (r == RS_OK) {
+        json_t *o = rs_sweep_map_json(run, q, R, xs, rows, lo, hi);
+        if (decorate != NULL) decorate(o, arg);
+        json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
+        json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
+        json_array_append_new(run->results, o);
+    }
+    rs_sweep_rows_free(rows, hi - lo);
+    return r;
+}

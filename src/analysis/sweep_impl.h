@@ -121,6 +121,13 @@ json_t *rs_sweep_json_sets(rs_run_t *run, const char *const *keep, slong nkeep);
  * summary, "substituted", "text" (the boundary and timings are the caller's). */
 json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
                           const rs_sweep_row_t *rows, slong lo, slong hi);
+/* The rest of a map run for every model kind: the shard of the grid
+ * xs[0] x xs[1] computed by m, its map element (rs_sweep_map_json), then
+ * decorate(o, arg) when not NULL (the boundary), the timings since t0, and
+ * the element appended to the run's results. */
+typedef void (*rs_sweep_decorate_fn)(json_t *o, void *arg);
+int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
+                        const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg);
 /* table cells */
 void rs_sweep_put_radius(FILE *f, const rs_sweep_row_t *row);
 void rs_sweep_put_certified(FILE *f, double lo, double hi);
