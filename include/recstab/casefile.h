@@ -116,6 +116,9 @@ typedef struct {
     rs_expr_t *arg1, *arg2; /* theta T / newmark B G, or NULL */
     rs_expr_t *step;       /* the step */
     rs_loc_t intloc;       /* position of METHOD */
+    char *tableau;         /* rk NAME, or NULL */
+    slong ntab; fmpq *tab; /* rk [A | b] inline: s*s + s entries, A by rows then b */
+    slong korder;          /* adams-bashforth/adams-moulton/bdf K */
 } rs_subsystem_t;
 
 /* The case: a typed syntax tree of the statements read (the include files'

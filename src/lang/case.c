@@ -96,6 +96,8 @@ void rs_subsystem_clear(rs_subsystem_t *s)
     rs_expr_free(s->arg2);
     rs_expr_free(s->step);
     rs_loc_clear(&s->intloc);
+    flint_free(s->tableau);
+    if (s->tab) _fmpq_vec_clear(s->tab, s->ntab);
     memset(s, 0, sizeof *s);
 }
 

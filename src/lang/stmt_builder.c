@@ -2,11 +2,15 @@
  * src/lower/builder.c):
  *     subsystem NAME state X V ...      NAME' = EXPR, NAME'' = EXPR
  *     integrate NAME METHOD [ARG1 [ARG2]] STEP
+ *     integrate NAME rk TABLEAU STEP      (a name, or [A11, A12; A21, A22 | b1, b2])
+ *     integrate NAME adams-bashforth K STEP | adams-moulton K STEP | bdf K STEP
+ *     integrate NAME hht ALPHA STEP | generalized-alpha RHO_INF STEP | wbz ALPHA STEP | leapfrog STEP
  *     couple jacobi | gauss-seidel S1 S2 | monolithic | explicit order K | implicit order K
  *     iterations K    extrapolate order K    coupling force NAME = EXPR */
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpq_vec.h>
 #include "parse.h"
 
 static int at(rs_stmt_t *x, size_t i, const char *fmt, const char *a)
@@ -125,7 +129,117 @@ static int st_subsystem(rs_stmt_t *x, size_t i)
 }
 
 static const char *const methods[] = {"euler-forward", "euler-backward", "trapezoidal", "theta", "bdf2", "bdf3",
-                                      "central-difference", "newmark", "exact", NULL};
+                                      "central-difference", "newmark", "exact", "rk", "adams-bashforth",
+                                      "adams-moulton", "bdf", "hht", "generalized-alpha", "wbz", "leapfrog", NULL};
+
+static const char *const tableaux[] = {"euler", "heun", "midpoint", "rk4", "gauss2", "radau-iia2", "radau-iia3",
+                                       "sdirk2", NULL};
+
+#define MAX_STAGES 8
+
+/* one rational entry of an inline tableau at t[*i], ended by ',', ';', '|', ']' or a blank */
+static int tab_entry(rs_stmt_t *x, size_t *i, fmpq_t q)
+{
+    const char *t = x->src.text;
+    char buf[64];
+    size_t p0, n;
+    _rs_skip_ws(t, i);
+    p0 = *i;
+    while (t[*i] && !strchr(",;|] \t", t[*i])) (*i)++;
+    n = *i - p0;
+    if (n > 0 && n < sizeof buf) {
+        memcpy(buf, t + p0, n);
+        buf[n] = '\0';
+        if (strspn(buf, "-0123456789/") == n && isdigit((unsigned char) buf[n - 1]) && fmpq_set_str(q, buf, 10) == 0
+            && !fmpz_is_zero(fmpq_denref(q))) {
+            fmpq_canonicalise(q);
+            return RS_OK;
+        }
+    }
+    return at(x, p0, "expected a rational tableau entry (such as -1/12), found '%s'", t + p0);
+}
+
+/* [A11, A12; A21, A22 | b1, b2] at t[*i] (on '['): s rows of s entries, then s weights */
+static int tab_inline(rs_stmt_t *x, rs_subsystem_t *s, size_t *i)
+{
+    const char *t = x->src.text;
+    fmpq e[MAX_STAGES * MAX_STAGES + MAX_STAGES];
+    slong n = 0, rows = 1, cols = 0, first = -1, k, st;
+    int r = RS_OK, inb = 0;
+    size_t p0 = *i;
+    for (k = 0; k < MAX_STAGES * MAX_STAGES + MAX_STAGES; k++) fmpq_init(e + k);
+    (*i)++;
+    for (;;) {
+        if (n == MAX_STAGES * MAX_STAGES + MAX_STAGES) { r = at(x, *i, "too many stages (limit 8)%s", ""); break; }
+        if ((r = tab_entry(x, i, e + n)) != RS_OK) break;
+        n++; cols++;
+        _rs_skip_ws(t, i);
+        if (t[*i] == ',') { (*i)++; continue; }
+        if (t[*i] == ';' || t[*i] == '|' || t[*i] == ']') {
+            if (!inb && first < 0) first = cols;
+            if (!inb && cols != first) { r = at(x, *i, "expected %s entries in every row of the tableau", ""); break; }
+            if (t[*i] == ']') break;
+            if (inb) { r = at(x, *i, "expected ']' after the weights b, found '%s'", t + *i); break; }
+            if (t[*i] == '|') inb = 1; else rows++;
+            cols = 0;
+            (*i)++;
+            continue;
+        }
+        _rs_skip_ws(t, i);
+        continue;   /* entries separated by blanks */
+    }
+    if (r == RS_OK) {
+        (*i)++;
+        st = cols;
+        if (!inb || st != rows || first != st || st > MAX_STAGES)
+            r = at(x, p0, "expected a square tableau [A | b] with s rows of s entries and s weights b%s", "");
+    }
+    if (r == RS_OK) {
+        s->ntab = n;
+        s->tab = _fmpq_vec_init(n);
+        for (k = 0; k < n; k++) fmpq_set(s->tab + k, e + k);
+    }
+    for (k = 0; k < MAX_STAGES * MAX_STAGES + MAX_STAGES; k++) fmpq_clear(e + k);
+    return r;
+}
+
+/* rk NAME | rk [...] */
+static int rk_tableau(rs_stmt_t *x, rs_subsystem_t *s, size_t *i)
+{
+    const char *t = x->src.text;
+    size_t p0;
+    char *w;
+    slong k;
+    _rs_skip_ws(t, i);
+    if (t[*i] == '[') return tab_inline(x, s, i);
+    p0 = *i;
+    w = _rs_read_token(t, i);
+    for (k = 0; w && tableaux[k]; k++)
+        if (strcmp(w, tableaux[k]) == 0) { s->tableau = w; return RS_OK; }
+    flint_free(w);
+    return at(x, p0, "expected a Butcher tableau (euler, heun, midpoint, rk4, gauss2, radau-iia2, radau-iia3, "
+              "sdirk2, or [A11, A12; A21, A22 | b1, b2]), found '%s'", t + p0);
+}
+
+/* the K of adams-bashforth K, adams-moulton K (1..6) and bdf K (1..7: BDF7 shows the loss of zero-stability) */
+static int step_count(rs_stmt_t *x, rs_subsystem_t *s, size_t *i)
+{
+    const char *t = x->src.text;
+    slong hi = strcmp(s->method, "bdf") == 0 ? 7 : 6;
+    size_t p0;
+    char *w;
+    _rs_skip_ws(t, i);
+    p0 = *i;
+    w = _rs_read_token(t, i);
+    if (w == NULL || strlen(w) != 1 || w[0] < '1' || w[0] > '0' + hi) {
+        flint_free(w);
+        return at(x, p0, hi == 7 ? "expected the number of steps K = 1..7, found '%s'"
+                  : "expected the number of steps K = 1..6, found '%s'", t + p0);
+    }
+    s->korder = w[0] - '0';
+    flint_free(w);
+    return RS_OK;
+}
 
 /* the method's parameter: a token read as an expression */
 static int method_arg(rs_expr_t **e, rs_stmt_t *x, size_t *i)
@@ -165,11 +279,18 @@ static int st_integrate(rs_stmt_t *x, size_t i)
     if (!known) {
         flint_free(m);
         return at(x, p0, "expected an integrator (euler-forward, euler-backward, trapezoidal, theta T, "
-                  "bdf2, bdf3, central-difference, newmark B G, exact), found '%s'", t + p0);
+                  "bdf2, bdf3, central-difference, newmark B G, exact, rk TABLEAU, adams-bashforth K, "
+                  "adams-moulton K, bdf K, hht ALPHA, generalized-alpha RHO_INF, wbz ALPHA, leapfrog), found '%s'",
+                  t + p0);
     }
     s->method = m;
     _rs_set_loc(x, &s->intloc, p0);
-    theta = strcmp(m, "theta") == 0;
+    if (strcmp(m, "rk") == 0) r = rk_tableau(x, s, &i);
+    else if (strcmp(m, "adams-bashforth") == 0 || strcmp(m, "adams-moulton") == 0 || strcmp(m, "bdf") == 0)
+        r = step_count(x, s, &i);
+    if (r != RS_OK) return r;
+    theta = strcmp(m, "theta") == 0 || strcmp(m, "hht") == 0 || strcmp(m, "generalized-alpha") == 0
+        || strcmp(m, "wbz") == 0;
     newmark = strcmp(m, "newmark") == 0;
     if (theta || newmark) r = method_arg(&s->arg1, x, &i);
     if (r == RS_OK && newmark) r = method_arg(&s->arg2, x, &i);

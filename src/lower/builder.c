@@ -8,6 +8,7 @@
 #include <string.h>
 #include "lower/builder.h"
 #include "lower/lower.h"
+#include "lower/methods.h"
 
 #define MAX_STATES 64
 
@@ -19,6 +20,9 @@ typedef struct {
     slong first, second;   /* gauss-seidel order */
     slong *vel;            /* per subsystem, per state: index of its velocity (pair) or -1 */
     int *pair;             /* per subsystem: integrator works on (x, v) pairs */
+    rs_tableau_struct *tab; /* per subsystem: its Butcher tableau (rk), s = 0 otherwise */
+    slong stage;           /* subst: own states at this Runge-Kutta stage (>= 0), */
+    int mix;               /* or at the alpha methods' intermediate time (1) */
 } gen_t;
 
 /* where generated nodes point */
@@ -136,6 +140,96 @@ static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong j, pos_t
     return var(p, delayed ? j - 1 : j, g->K, 1, at);
 }
 
+static int is_method(const rs_subsystem_t *s, const char *m) { return strcmp(s->method, m) == 0; }
+
+static int is_alpha(const rs_subsystem_t *s)
+{
+    return is_method(s, "hht") || is_method(s, "generalized-alpha") || is_method(s, "wbz");
+}
+
+/* |q| as a tree: N or N/D */
+static rs_expr_t *rat(const fmpq_t q, pos_t p)
+{
+    rs_expr_t *e = num(fmpz_get_si(fmpq_numref(q)), p);
+    fmpz_abs(fmpq_numref(e->num), fmpq_numref(q));
+    if (fmpz_is_one(fmpq_denref(q))) return e;
+    return op(RS_EXPR_DIV, e, num(fmpz_get_si(fmpq_denref(q)), p), p);
+}
+
+/* sum c[i]*t[i] over the nonzero c[i] (unit coefficients left out, signs as + and -); the
+ * terms t[i] are consumed; NULL when every c[i] is zero */
+static rs_expr_t *lincomb(const fmpq *c, rs_expr_t **t, slong n, pos_t p)
+{
+    rs_expr_t *e = NULL, *x;
+    slong i;
+    for (i = 0; i < n; i++) {
+        if (fmpq_is_zero(c + i)) { rs_expr_free(t[i]); continue; }
+        x = fmpq_is_one(c + i) || fmpq_is_pm1(c + i) ? t[i] : op(RS_EXPR_MUL, rat(c + i, p), t[i], p);
+        if (e == NULL) e = fmpq_sgn(c + i) < 0 ? rs_expr_new_op(RS_EXPR_NEG, x, NULL, p.file, p.line, p.col) : x;
+        else e = op(fmpq_sgn(c + i) < 0 ? RS_EXPR_SUB : RS_EXPR_ADD, e, x, p);
+    }
+    return e;
+}
+
+/* the unknown of stage i (from 1) of state s in iterate j: s_kI, s_kI_itJ */
+static void stage_name(char *buf, size_t len, const char *s, slong i, slong j, slong K)
+{
+    if (j == K) snprintf(buf, len, "%s_k%ld", s, (long) i);
+    else snprintf(buf, len, "%s_k%ld_it%ld", s, (long) i, (long) j);
+}
+
+static rs_expr_t *stage_var(const char *s, slong i, slong j, slong K, pos_t p)
+{
+    char b[96];
+    stage_name(b, sizeof b, s, i, j, K);
+    return seq(b, 1, p);
+}
+
+/* alpha_f of the alpha methods as a tree (NULL for wbz: 0) */
+static rs_expr_t *alpha_f(const rs_subsystem_t *s, pos_t p)
+{
+    if (is_method(s, "hht")) return P(rs_expr_new_op(RS_EXPR_NEG, P(copy(s->arg1)), NULL, p.file, p.line, p.col));
+    if (is_method(s, "generalized-alpha"))   /* rho/(rho + 1) */
+        return P(op(RS_EXPR_DIV, P(copy(s->arg1)), P(op(RS_EXPR_ADD, P(copy(s->arg1)), num(1, p), p)), p));
+    return NULL;
+}
+
+/* alpha_m of the alpha methods as a tree (NULL for hht: 0) */
+static rs_expr_t *alpha_m(const rs_subsystem_t *s, pos_t p)
+{
+    if (is_method(s, "wbz")) return P(copy(s->arg1));
+    if (is_method(s, "generalized-alpha"))   /* (2 rho - 1)/(rho + 1) */
+        return P(op(RS_EXPR_DIV, P(op(RS_EXPR_SUB, op(RS_EXPR_MUL, num(2, p), P(copy(s->arg1)), p), num(1, p), p)),
+                    P(op(RS_EXPR_ADD, P(copy(s->arg1)), num(1, p), p)), p));
+    return NULL;
+}
+
+/* own state x of subsystem a in iterate j as subst sees it: x[n+1], a
+ * Runge-Kutta stage value x[n] + (h)*(sum_l a_il x_kl[n+1]), or the alpha
+ * methods' (1 - alpha_f)*x[n+1] + alpha_f*x[n] */
+static rs_expr_t *own(const gen_t *g, slong a, const char *x, slong j, pos_t at)
+{
+    const rs_subsystem_t *s = &g->c->subs[a];
+    if (g->stage >= 0) {
+        const rs_tableau_struct *t = &g->tab[a];
+        rs_expr_t *k[RS_METHODS_MAX_STAGES], *sum;
+        slong l;
+        pos_t p = pos_of(&s->intloc);
+        for (l = 0; l < t->s; l++) k[l] = stage_var(x, l + 1, j, g->K, p);
+        sum = lincomb(t->A + g->stage * t->s, k, t->s, p);
+        if (sum == NULL) return seq(x, 0, at);
+        return P(op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(s->step)), P(sum), p), p));
+    }
+    if (g->mix) {
+        pos_t p = pos_of(&s->intloc);
+        rs_expr_t *af = alpha_f(s, p);
+        if (af == NULL) return var(x, j, g->K, 1, at);
+        return P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), af, p)), var(x, j, g->K, 1, p), p),
+                    op(RS_EXPR_MUL, alpha_f(s, p), seq(x, 0, p), p), p));
+    }
+    return var(x, j, g->K, 1, at);
+}
+
 /* a copy of the right-hand side e of subsystem a, iterate j, with every name
  * resolved to a sequence; NULL and err set on an error (at the node) */
 static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
@@ -151,7 +245,7 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
             return NULL;
         }
         if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
-            out = sa == a ? var(e->name, j, g->K, 1, at) : partner(g, e->name, a, j, at);
+            out = sa == a ? own(g, a, e->name, j, at) : partner(g, e->name, a, j, at);
         else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
             out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
         else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
@@ -255,7 +349,7 @@ static int find_pairs(gen_t *g, slong a, rs_error_t err)
     slong *vel = g->vel + a * MAX_STATES, j, k, si;
     char msg[256];
     for (k = 0; k < MAX_STATES; k++) vel[k] = -1;
-    g->pair[a] = strcmp(s->method, "newmark") == 0 || strcmp(s->method, "central-difference") == 0;
+    g->pair[a] = strcmp(s->method, "newmark") == 0 || strcmp(s->method, "central-difference") == 0 || is_alpha(s);
     for (j = 0; j < s->ndeqs; j++) {
         const rs_deq_t *d = &s->deqs[j];
         if ((si = state_index(s, d->state)) < 0) {
@@ -328,7 +422,7 @@ static int add_unknown(rs_model_struct *m, const rs_case_struct *c, const char *
 static int gen_unknowns(const gen_t *g, rs_error_t err)
 {
     const rs_case_struct *c = g->c;
-    slong a, k, j;
+    slong a, k, j, i;
     char b[96];
     int r = RS_OK;
     for (a = 0; a < c->nsubs && r == RS_OK; a++) {
@@ -341,9 +435,30 @@ static int gen_unknowns(const gen_t *g, rs_error_t err)
                     dvar_name(b, sizeof b, s->states[k].name, j, g->K);
                     r = add_unknown(g->m, c, b, s, &s->states[k], err);
                 }
+                for (i = 0; i < g->tab[a].s && r == RS_OK; i++) {
+                    stage_name(b, sizeof b, s->states[k].name, i + 1, j, g->K);
+                    r = add_unknown(g->m, c, b, s, &s->states[k], err);
+                }
             }
     }
     return r;
+}
+
+/* Newmark's update of the pair (x, v) with parameter trees B, G (consumed) */
+static void newmark_update(rs_model_struct *m, const rs_subsystem_t *s, const char *x, const char *v, rs_expr_t *B,
+                           rs_expr_t *G, pos_t p)
+{
+    const rs_expr_t *h = s->step;
+    rs_expr_t *acc = P(op(RS_EXPR_ADD,
+                          op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(B)), p)),
+                             dot(v, 0, p), p),
+                          op(RS_EXPR_MUL, P(B), dot(v, 1, p), p), p));
+    add_eq(m, seq(x, 1, p),
+           op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
+              op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
+    acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(G)), p)), dot(v, 0, p), p),
+               op(RS_EXPR_MUL, P(G), dot(v, 1, p), p), p));
+    add_eq(m, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
 }
 
 /* the integration formula of a (position x, velocity v) pair */
@@ -351,7 +466,14 @@ static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char
 {
     pos_t p = pos_of(&s->intloc);
     const rs_expr_t *h = s->step;
-    if (strcmp(s->method, "newmark") == 0) {
+    if (is_alpha(s)) {
+        /* Newmark's update with gamma = 1/2 - alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2/4 */
+        rs_expr_t *G = op(RS_EXPR_DIV, num(1, p), num(2, p), p), *B = num(1, p), *am = alpha_m(s, p), *af = alpha_f(s, p);
+        if (am) { G = op(RS_EXPR_SUB, G, am, p); B = op(RS_EXPR_SUB, B, alpha_m(s, p), p); }
+        if (af) { G = op(RS_EXPR_ADD, G, af, p); B = op(RS_EXPR_ADD, B, alpha_f(s, p), p); }
+        B = op(RS_EXPR_DIV, op(RS_EXPR_POW, P(B), num(2, p), p), num(4, p), p);
+        newmark_update(m, s, x, v, B, G, p);
+    } else if (strcmp(s->method, "newmark") == 0) {
         /* x[n+1] = x[n] + (h)*v[n] + (h)^2*((1/2 - (B))*v_dot[n] + (B)*v_dot[n+1]) */
         rs_expr_t *acc = P(op(RS_EXPR_ADD,
                               op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(s->arg1)), p)),
@@ -372,6 +494,52 @@ static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char
         add_eq(m, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), seq(v, 0, p), p),
                op(RS_EXPR_SUB, seq(x, 1, p), seq(x, -1, p), p), &s->intloc);
     }
+}
+
+/* D*(X[n+1] - x[n]) = (h)*(...) or sum c_i x[n+1-i] = D*(h)*DX[n+1] with
+ * integer coefficients (D clears the denominators) for rk (the stages
+ * b_i x_ki[n+1]), adams-bashforth K (x_dot[n-i]), adams-moulton K (DX[n+1],
+ * x_dot[n+1-i]) and bdf K; X, DX and h are consumed */
+static void multistep_formula(rs_model_struct *mod, const gen_t *g, const rs_subsystem_t *s, const char *x, slong j,
+                              rs_expr_t *X, rs_expr_t *DX, rs_expr_t *h, pos_t p)
+{
+    const char *m = s->method;
+    slong k = s->korder, n, i, a = s - g->c->subs;
+    fmpq *c = _fmpq_vec_init(RS_METHODS_MAX_STAGES + 2);
+    rs_expr_t *t[RS_METHODS_MAX_STAGES + 2], *lhs, *rhs;
+    fmpz_t D;
+    fmpz_init(D);
+    if (strcmp(m, "rk") == 0) {
+        n = g->tab[a].s;
+        for (i = 0; i < n; i++) fmpq_set(c + i, g->tab[a].b + i);
+        for (i = 0; i < n; i++) t[i] = stage_var(x, i + 1, j, g->K, p);
+    } else if (strcmp(m, "bdf") == 0) {
+        n = k + 1;
+        rs_methods_bdf(c, k);
+        t[0] = X;
+        for (i = 1; i < n; i++) t[i] = seq(x, 1 - i, p);
+    } else {
+        int implicit = strcmp(m, "adams-moulton") == 0;
+        n = implicit ? k + 1 : k;
+        rs_methods_adams(c, k, implicit);
+        for (i = 0; i < n; i++) t[i] = implicit && i == 0 ? DX : dot(x, implicit ? 1 - i : -i, p);
+    }
+    fmpz_one(D);
+    for (i = 0; i < n; i++) fmpz_lcm(D, D, fmpq_denref(c + i));
+    for (i = 0; i < n; i++) fmpq_mul_fmpz(c + i, c + i, D);
+    if (strcmp(m, "bdf") == 0) {
+        lhs = lincomb(c, t, n, p);
+        rhs = op(RS_EXPR_MUL, h, DX, p);
+        if (!fmpz_is_one(D)) rhs = op(RS_EXPR_MUL, num(fmpz_get_si(D), p), rhs, p);
+    } else {
+        lhs = op(RS_EXPR_SUB, X, seq(x, 0, p), p);
+        if (!fmpz_is_one(D)) lhs = op(RS_EXPR_MUL, num(fmpz_get_si(D), p), P(lhs), p);
+        rhs = op(RS_EXPR_MUL, h, P(lincomb(c, t, n, p)), p);
+        if (strcmp(m, "adams-bashforth") == 0 || strcmp(m, "rk") == 0) rs_expr_free(DX);
+    }
+    add_eq(mod, lhs, rhs, &s->intloc);
+    _fmpq_vec_clear(c, RS_METHODS_MAX_STAGES + 2);
+    fmpz_clear(D);
 }
 
 /* the one-step integration formula of state x in iterate j:
@@ -397,6 +565,13 @@ static void formula(rs_model_struct *mod, const gen_t *g, const rs_subsystem_t *
         add_eq(mod, op(RS_EXPR_ADD, op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(3, p), p),
                                      op(RS_EXPR_MUL, num(4, p), seq(x, 0, p), p), p), seq(x, -1, p), p),
                op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), h, p), DX, p), &s->intloc);
+    } else if (strcmp(m, "leapfrog") == 0) {
+        /* X[n+1] - x[n-1] = 2*(h)*x_dot[n] */
+        rs_expr_free(DX);
+        add_eq(mod, op(RS_EXPR_SUB, X, seq(x, -1, p), p), op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), h, p), dot(x, 0, p), p),
+               &s->intloc);
+    } else if (strcmp(m, "rk") == 0 || strncmp(m, "adams-", 6) == 0 || strcmp(m, "bdf") == 0) {
+        multistep_formula(mod, g, s, x, j, X, DX, h, p);
     } else {
         /* bdf3: X[n+1]*11 - 18*x[n] + 9*x[n-1] - 2*x[n-2] = 6*(h)*DX[n+1] */
         rs_expr_t *l = op(RS_EXPR_SUB, op(RS_EXPR_MUL, X, num(11, p), p), op(RS_EXPR_MUL, num(18, p), seq(x, 0, p), p), p);
@@ -427,7 +602,7 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
 {
     const rs_case_struct *c = g->c;
     const rs_subsystem_t *s = &c->subs[a];
-    slong k, vk;
+    slong k, vk, i;
     for (k = 0; k < s->nstates; k++) {
         const char *x = s->states[k].name;
         const rs_deq_t *d = deq_of(g, a, k);
@@ -436,14 +611,32 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
             return err_at(err, RS_ERR_INPUT, &s->loc, 0, "expected an equation %s' = ... in this subsystem", x);
         /* equation of motion at the new time */
         if (!is_pos(g, a, k)) {
-            rs_expr_t *rhs;
+            rs_expr_t *rhs, *lhs = dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), *am;
+            gen_t *gm = (gen_t *) g;
             if (d == NULL) {   /* x' = v of a second-order line */
                 rhs = var(s->states[vk].name, j, g->K, 1, pos_of(&s->loc));
             } else {
-                if ((rhs = subst(g, a, j, d->rhs, err)) == NULL) return err->code;
+                gm->mix = is_alpha(s);   /* the alpha methods: F at (1 - alpha_f) t[n+1] + alpha_f t[n] */
+                rhs = subst(g, a, j, d->rhs, err);
+                gm->mix = 0;
+                if (rhs == NULL) { rs_expr_free(lhs); return err->code; }
                 P(rhs);
             }
-            add_eq(g->m, dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), rhs, d ? &d->loc : &s->loc);
+            if (is_alpha(s) && (am = alpha_m(s, pos_of(&s->intloc))) != NULL) {
+                /* (1 - alpha_m)*x_dot[n+1] + alpha_m*x_dot[n] */
+                pos_t p = pos_of(&s->intloc);
+                lhs = op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), am, p)), lhs, p),
+                         op(RS_EXPR_MUL, alpha_m(s, p), dot(x, 0, p), p), p);
+            }
+            add_eq(g->m, lhs, rhs, d ? &d->loc : &s->loc);
+            /* Runge-Kutta stages: x_ki[n+1] = f at the stage values */
+            for (i = 0; d != NULL && i < g->tab[a].s; i++) {
+                gm->stage = i;
+                rhs = subst(g, a, j, d->rhs, err);
+                gm->stage = -1;
+                if (rhs == NULL) return err->code;
+                add_eq(g->m, stage_var(x, i + 1, j, g->K, pos_of(&d->loc)), P(rhs), &d->loc);
+            }
         }
         if (g->pair[a]) {
             if (vk >= 0) pair_formula(g->m, s, x, s->states[vk].name);   /* velocities go with their position */
@@ -452,6 +645,20 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
         }
     }
     return RS_OK;
+}
+
+/* the Butcher tableau of subsystem s (none: 0 stages) */
+static void tableau_of(rs_tableau_struct *t, const rs_subsystem_t *s)
+{
+    slong n, i;
+    rs_tableau_init(t, 0);
+    if (strcmp(s->method, "rk") != 0) return;
+    if (s->tableau) { rs_tableau_named(t, s->tableau); return; }
+    for (n = 1; n * n + n < s->ntab; n++) ;
+    rs_tableau_clear(t);
+    rs_tableau_init(t, n);
+    for (i = 0; i < n * n; i++) fmpq_set(t->A + i, s->tab + i);
+    for (i = 0; i < n; i++) fmpq_set(t->b + i, s->tab + n * n + i);
 }
 
 int rs_builder_lower(rs_model_struct *m, rs_error_t err)
@@ -467,16 +674,21 @@ int rs_builder_lower(rs_model_struct *m, rs_error_t err)
     memset(&g, 0, sizeof g);
     g.c = c;
     g.m = m;
+    g.stage = -1;
     r = coupling_kind(&g, c, err);
     if (r != RS_OK) return r;
     g.vel = flint_malloc(c->nsubs * MAX_STATES * sizeof(slong));
     g.pair = flint_calloc(c->nsubs, sizeof(int));
+    g.tab = flint_calloc(c->nsubs, sizeof(rs_tableau_struct));
+    for (a = 0; a < c->nsubs; a++) tableau_of(&g.tab[a], &c->subs[a]);
     for (a = 0; a < c->nsubs && r == RS_OK; a++)
         r = find_pairs(&g, a, err);
     if (r == RS_OK) r = gen_unknowns(&g, err);
     for (a = 0; a < c->nsubs && r == RS_OK; a++)
         for (j = 0; j <= g.K && r == RS_OK; j++)
             r = gen_equations(&g, a, j, err);
+    for (a = 0; a < c->nsubs; a++) rs_tableau_clear(&g.tab[a]);
+    flint_free(g.tab);
     flint_free(g.vel);
     flint_free(g.pair);
     return r;
