@@ -230,6 +230,24 @@ static rs_expr_t *own(const gen_t *g, slong a, const char *x, slong j, pos_t at)
     return var(x, j, g->K, 1, at);
 }
 
+/* monolithic coupling: subsystem b integrated by the same method as a (the
+ * same tableau, or the same alpha method and parameter), so that a
+ * Runge-Kutta stage or an alpha method's intermediate time sees b's state
+ * at that stage or time too; otherwise partners enter as the coupling says */
+static int same_method(const gen_t *g, slong a, slong b)
+{
+    const rs_subsystem_t *s = &g->c->subs[a], *t = &g->c->subs[b];
+    slong i;
+    if (g->kind != 0 || strcmp(s->method, t->method) != 0 || !rs_expr_equal(s->step, t->step)) return 0;
+    if (is_alpha(s)) return rs_expr_equal(s->arg1, t->arg1);
+    if (g->tab[a].s != g->tab[b].s) return 0;
+    for (i = 0; i < g->tab[a].s * g->tab[a].s; i++)
+        if (!fmpq_equal(g->tab[a].A + i, g->tab[b].A + i)) return 0;
+    for (i = 0; i < g->tab[a].s; i++)
+        if (!fmpq_equal(g->tab[a].b + i, g->tab[b].b + i)) return 0;
+    return 1;
+}
+
 /* a copy of the right-hand side e of subsystem a, iterate j, with every name
  * resolved to a sequence; NULL and err set on an error (at the node) */
 static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
@@ -245,7 +263,8 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
             return NULL;
         }
         if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
-            out = sa == a ? own(g, a, e->name, j, at) : partner(g, e->name, a, j, at);
+            out = sa == a || ((g->stage >= 0 || g->mix) && same_method(g, a, sa)) ? own(g, sa, e->name, j, at)
+                : partner(g, e->name, a, j, at);
         else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
             out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
         else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
@@ -648,17 +667,23 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
 }
 
 /* the Butcher tableau of subsystem s (none: 0 stages) */
-static void tableau_of(rs_tableau_struct *t, const rs_subsystem_t *s)
+static int tableau_of(rs_tableau_struct *t, const rs_subsystem_t *s, rs_error_t err)
 {
     slong n, i;
     rs_tableau_init(t, 0);
-    if (strcmp(s->method, "rk") != 0) return;
-    if (s->tableau) { rs_tableau_named(t, s->tableau); return; }
+    if (strcmp(s->method, "rk") != 0) return RS_OK;
+    if (s->tableau) {
+        if (rs_tableau_named(t, s->tableau) == 1) return RS_OK;
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "the stability function of %s is not rational (its "
+                      "coefficients involve a square root) and exact analyses work over the rationals; expected a "
+                      "tableau with rational entries, such as rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
+    }
     for (n = 1; n * n + n < s->ntab; n++) ;
     rs_tableau_clear(t);
     rs_tableau_init(t, n);
     for (i = 0; i < n * n; i++) fmpq_set(t->A + i, s->tab + i);
     for (i = 0; i < n; i++) fmpq_set(t->b + i, s->tab + n * n + i);
+    return RS_OK;
 }
 
 int rs_builder_lower(rs_model_struct *m, rs_error_t err)
@@ -680,7 +705,11 @@ int rs_builder_lower(rs_model_struct *m, rs_error_t err)
     g.vel = flint_malloc(c->nsubs * MAX_STATES * sizeof(slong));
     g.pair = flint_calloc(c->nsubs, sizeof(int));
     g.tab = flint_calloc(c->nsubs, sizeof(rs_tableau_struct));
-    for (a = 0; a < c->nsubs; a++) tableau_of(&g.tab[a], &c->subs[a]);
+    for (a = 0; a < c->nsubs; a++) rs_tableau_init(&g.tab[a], 0);
+    for (a = 0; a < c->nsubs && r == RS_OK; a++) {
+        rs_tableau_clear(&g.tab[a]);
+        r = tableau_of(&g.tab[a], &c->subs[a], err);
+    }
     for (a = 0; a < c->nsubs && r == RS_OK; a++)
         r = find_pairs(&g, a, err);
     if (r == RS_OK) r = gen_unknowns(&g, err);

@@ -72,12 +72,14 @@ static void qd_mat_mul(qd_t *C, const qd_t *A, const qd_t *B, slong s, slong d)
 
 /* R = num/den from A, b over Q(sqrt d): den(z) = det(I - zA) by Newton's
  * identities on the traces of A^k, num = den * (1 + sum_k (b^T A^k 1) z^(k+1))
- * truncated at degree s (deg num <= s); both must come out rational */
-static void qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const qd_t *b, slong s, slong d)
+ * truncated at degree s (deg num <= s); 0 when they are not rational (then
+ * num, den hold the rational parts only) */
+static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const qd_t *b, slong s, slong d)
 {
     qd_t *P = qd_vec_init(s * s), *tr = qd_vec_init(s + 1), *mk = qd_vec_init(s), *e = qd_vec_init(s + 1), p;
     fmpq_poly_t ser, g;
     slong i, j, k;
+    int rational = 1;
     fmpq_init(p.x); fmpq_init(p.y);
     for (i = 0; i < s; i++) { fmpq_one(P[i * s + i].x); }   /* P = A^0 */
     for (k = 0; k <= s; k++) {
@@ -108,7 +110,7 @@ static void qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const 
         }
         fmpq_div_fmpz(e[k].x, e[k].x, (fmpz_set_si(fmpq_numref(p.x), k), fmpq_numref(p.x)));
         fmpq_div_fmpz(e[k].y, e[k].y, fmpq_numref(p.x));
-        FLINT_ASSERT(fmpq_is_zero(e[k].y));
+        rational &= fmpq_is_zero(e[k].y);
         fmpq_set(p.x, e[k].x);
         if (k % 2) fmpq_neg(p.x, p.x);
         fmpq_poly_set_coeff_fmpq(den, k, p.x);
@@ -117,7 +119,7 @@ static void qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const 
     fmpq_poly_init(g);
     fmpq_poly_set_coeff_si(ser, 0, 1);
     for (k = 0; k < s; k++) {
-        FLINT_ASSERT(fmpq_is_zero(mk[k].y));
+        rational &= fmpq_is_zero(mk[k].y);
         fmpq_poly_set_coeff_fmpq(ser, k + 1, mk[k].x);
     }
     fmpq_poly_mullow(num, den, ser, s + 1);
@@ -131,6 +133,7 @@ static void qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const 
     fmpq_poly_clear(g);
     fmpq_clear(p.x); fmpq_clear(p.y);
     qd_vec_clear(P, s * s); qd_vec_clear(tr, s + 1); qd_vec_clear(mk, s); qd_vec_clear(e, s + 1);
+    return rational;
 }
 
 void rs_tableau_stability(fmpq_poly_t num, fmpq_poly_t den, const rs_tableau_t t)
@@ -194,10 +197,10 @@ int rs_methods_rk_stability_named(fmpq_poly_t num, fmpq_poly_t den, const char *
     b = qd_vec_init(s);
     for (i = 0; i < s * s; i++) qd_set_str(&A[i], t->e[i]);
     for (i = 0; i < s; i++) qd_set_str(&b[i], t->e[s * s + i]);
-    qd_stability(num, den, A, b, s, t->d);
+    i = qd_stability(num, den, A, b, s, t->d);
     qd_vec_clear(A, s * s);
     qd_vec_clear(b, s);
-    return 1;
+    return i ? 1 : -1;
 }
 
 void rs_tableau_realize(rs_tableau_t t, const fmpq_poly_t num, const fmpq_poly_t den)
@@ -243,10 +246,10 @@ int rs_tableau_named(rs_tableau_t t, const char *name)
     if (n->d != 0) {
         fmpq_poly_t num, den;
         fmpq_poly_init(num); fmpq_poly_init(den);
-        rs_methods_rk_stability_named(num, den, name);
-        rs_tableau_realize(t, num, den);
+        i = rs_methods_rk_stability_named(num, den, name);
+        if (i == 1) rs_tableau_realize(t, num, den);
         fmpq_poly_clear(num); fmpq_poly_clear(den);
-        return 1;
+        return i;
     }
     rs_tableau_clear(t);
     rs_tableau_init(t, n->s);

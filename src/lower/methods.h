@@ -29,7 +29,9 @@ void rs_tableau_clear(rs_tableau_t t);
 
 /* R(z) = 1 + z b^T (I - zA)^-1 1 = num/den in lowest terms, den(0) = 1,
  * for the tableau of `name` (euler, heun, midpoint, rk4, gauss2,
- * radau-iia2, radau-iia3, sdirk2).  Returns 0 for an unknown name. */
+ * radau-iia2, radau-iia3, sdirk2).  Returns 0 for an unknown name, -1
+ * when R is not in Q(z) (sdirk2: gamma = 1 - sqrt(2)/2 gives the
+ * denominator (1 - gamma z)^2; num, den then hold the rational parts). */
 int rs_methods_rk_stability_named(fmpq_poly_t num, fmpq_poly_t den, const char *name);
 
 /* the same for a rational tableau */
@@ -38,7 +40,8 @@ void rs_tableau_stability(fmpq_poly_t num, fmpq_poly_t den, const rs_tableau_t t
 /* the tableau of `name` when its entries are rational, else a rational
  * tableau with the same stability function (a realization of R with the
  * stage vector 1: the same step x[n+1] = R(hF) x[n] for x' = F x + G u with
- * u frozen over the step).  Returns 0 for an unknown name. */
+ * u frozen over the step).  Returns 0 for an unknown name, -1 when R is
+ * not rational (t unchanged). */
 int rs_tableau_named(rs_tableau_t t, const char *name);
 
 /* the realization above of R = num/den (den(0) = 1, deg num, deg den <= s) */
