@@ -145,6 +145,7 @@ static int tab_entry(rs_stmt_t *x, size_t *i, fmpq_t q)
     size_t p0, n;
     _rs_skip_ws(t, i);
     p0 = *i;
+    if (t[p0] == '\0') return at(x, p0, "expected ']' closing the tableau, found end of line%s", "");
     while (t[*i] && !strchr(",;|] \t", t[*i])) (*i)++;
     n = *i - p0;
     if (n > 0 && n < sizeof buf) {
@@ -177,7 +178,10 @@ static int tab_inline(rs_stmt_t *x, rs_subsystem_t *s, size_t *i)
         if (t[*i] == ',') { (*i)++; continue; }
         if (t[*i] == ';' || t[*i] == '|' || t[*i] == ']') {
             if (!inb && first < 0) first = cols;
-            if (!inb && cols != first) { r = at(x, *i, "expected %s entries in every row of the tableau", ""); break; }
+            if (!inb && cols != first) {
+                r = at(x, *i, "expected as many entries in each row of the tableau as in the first, found '%s'", t + *i);
+                break;
+            }
             if (t[*i] == ']') break;
             if (inb) { r = at(x, *i, "expected ']' after the weights b, found '%s'", t + *i); break; }
             if (t[*i] == '|') inb = 1; else rows++;

@@ -674,9 +674,9 @@ static int tableau_of(rs_tableau_struct *t, const rs_subsystem_t *s, rs_error_t 
     if (strcmp(s->method, "rk") != 0) return RS_OK;
     if (s->tableau) {
         if (rs_tableau_named(t, s->tableau) == 1) return RS_OK;
-        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "the stability function of %s is not rational (its "
-                      "coefficients involve a square root) and exact analyses work over the rationals; expected a "
-                      "tableau with rational entries, such as rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "expected a tableau whose stability function is rational "
+                      "(exact analyses work over the rationals), found %s (coefficients with sqrt(2), R(z) not "
+                      "rational); write a rational tableau inline: rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
     }
     for (n = 1; n * n + n < s->ntab; n++) ;
     rs_tableau_clear(t);
