@@ -7,7 +7,9 @@
  *       v1' = (-k1*y1 + kc*(y2 - y1))/m1
  *     integrate S1 euler-forward h      # euler-forward, euler-backward,
  *                                       # trapezoidal, theta T, bdf2, bdf3,
- *                                       # central-difference, newmark B G, exact
+ *                                       # central-difference, newmark B G, exact,
+ *                                       # rk TABLEAU, adams-bashforth K, adams-moulton K,
+ *                                       # bdf K, leapfrog, hht A, generalized-alpha R, wbz A
  *     couple jacobi | couple gauss-seidel S1 S2 | couple monolithic
  *     iterations K                      # re-integrate with the previous iterate's inputs
  *     extrapolate order K               # inputs at t+h from the last K+1 macro values
