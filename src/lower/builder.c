@@ -617,7 +617,7 @@ static const rs_deq_t *deq_of(const gen_t *g, slong a, slong k)
 }
 
 /* the equations of subsystem a in iterate j */
-static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
+static int gen_equations(gen_t *g, slong a, slong j, rs_error_t err)
 {
     const rs_case_struct *c = g->c;
     const rs_subsystem_t *s = &c->subs[a];
@@ -631,13 +631,12 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
         /* equation of motion at the new time */
         if (!is_pos(g, a, k)) {
             rs_expr_t *rhs, *lhs = dvar(x, j, g->K, 1, d ? pos_of(&d->loc) : pos_of(&s->loc)), *am;
-            gen_t *gm = (gen_t *) g;
             if (d == NULL) {   /* x' = v of a second-order line */
                 rhs = var(s->states[vk].name, j, g->K, 1, pos_of(&s->loc));
             } else {
-                gm->mix = is_alpha(s);   /* the alpha methods: F at (1 - alpha_f) t[n+1] + alpha_f t[n] */
+                g->mix = is_alpha(s);   /* the alpha methods: F at (1 - alpha_f) t[n+1] + alpha_f t[n] */
                 rhs = subst(g, a, j, d->rhs, err);
-                gm->mix = 0;
+                g->mix = 0;
                 if (rhs == NULL) { rs_expr_free(lhs); return err->code; }
                 P(rhs);
             }
@@ -649,12 +648,13 @@ static int gen_equations(const gen_t *g, slong a, slong j, rs_error_t err)
             }
             add_eq(g->m, lhs, rhs, d ? &d->loc : &s->loc);
             /* Runge-Kutta stages: x_ki[n+1] = f at the stage values */
-            for (i = 0; d != NULL && i < g->tab[a].s; i++) {
-                gm->stage = i;
-                rhs = subst(g, a, j, d->rhs, err);
-                gm->stage = -1;
+            for (i = 0; i < g->tab[a].s; i++) {
+                g->stage = i;   /* x' = v of a second-order line: v's stage value */
+                rhs = d ? subst(g, a, j, d->rhs, err) : own(g, a, s->states[vk].name, j, pos_of(&s->loc));
+                g->stage = -1;
                 if (rhs == NULL) return err->code;
-                add_eq(g->m, stage_var(x, i + 1, j, g->K, pos_of(&d->loc)), P(rhs), &d->loc);
+                add_eq(g->m, stage_var(x, i + 1, j, g->K, d ? pos_of(&d->loc) : pos_of(&s->loc)), rhs->paren ? rhs : P(rhs),
+                       d ? &d->loc : &s->loc);
             }
         }
         if (g->pair[a]) {
