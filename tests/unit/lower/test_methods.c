@@ -11,7 +11,8 @@
  *  - built schemes: rk4 on an oscillator (two subsystems coupled
  *    monolithically, or one second-order subsystem) equals
  *    det(lambda I - R(F)) worked out by hand; generalized-alpha's roots at
- *    w -> inf are -rho_inf (triple). */
+ *    w -> inf are -rho_inf (triple); bdf 1..3, adams 1, rk euler and the
+ *    implicit midpoint rule equal the hand-typed integrators. */
 #include "testutil.h"
 #include <string.h>
 #include <acb_poly.h>
@@ -382,6 +383,32 @@ static void test_generalized_alpha_infinity(void **state)
     built_clear(&B);
 }
 
+/* the new builders against the hand-typed integrators of builder.c on the
+ * oscillator x' = v, v' = -w^2 x: bdf 1, 2, 3 are euler-backward, bdf2,
+ * bdf3; adams-bashforth 1 and rk euler are euler-forward; adams-moulton 1 is
+ * the trapezoidal rule, and so is the implicit midpoint rule rk [1/2 | 1] on
+ * a linear problem (both have R = (1 + z/2)/(1 - z/2)) */
+static void test_against_existing(void **state)
+{
+    const char *pairs[][2] = {{"bdf 1", "euler-backward"}, {"bdf 2", "bdf2"}, {"bdf 3", "bdf3"},
+                              {"adams-bashforth 1", "euler-forward"}, {"rk euler", "euler-forward"},
+                              {"adams-moulton 1", "trapezoidal"}, {"rk [1/2 | 1]", "trapezoidal"}};
+    char text[2][256];
+    built_t B[2];
+    slong k, i;
+    (void) state;
+    for (k = 0; k < 7; k++) {
+        for (i = 0; i < 2; i++) {
+            snprintf(text[i], sizeof text[i], "param w h\nsubsystem S state x v\n  x' = v\n  v' = -w^2*x\n"
+                     "integrate S %s h\n", pairs[k][i]);
+            build(&B[i], text[i]);
+        }
+        if (!fmpz_mpoly_equal(B[0].cp->p, B[1].cp->p, B[0].s->zctx)) fail_msg("%s vs %s", pairs[k][0], pairs[k][1]);
+        built_clear(&B[0]);
+        built_clear(&B[1]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -393,6 +420,7 @@ int main(void)
         cmocka_unit_test(test_bdf),
         cmocka_unit_test(test_rk4_oscillator),
         cmocka_unit_test(test_generalized_alpha_infinity),
+        cmocka_unit_test(test_against_existing),
     };
     return cmocka_run_group_tests_name("methods", tests, NULL, NULL);
 }
