@@ -121,7 +121,7 @@ static void test_explicit(void **state)
 
 /* Gauss s-stage: the (s,s) Pade approximant (Hairer and Wanner II, IV.3,
  * Theorem 3.10 / IV.5); Radau IIA s-stage: the (s-1,s) one (ibid., IV.5,
- * Theorem 5.?  and Table 5.? of the stability functions); by hand
+ * the stability functions of the Radau IIA methods); by hand
  * (2,2) = (1 + z/2 + z^2/12)/(1 - z/2 + z^2/12) */
 static void test_implicit(void **state)
 {
