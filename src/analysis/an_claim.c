@@ -1277,3 +1277,45 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
     flint_randclear(cx.st);
     return r;
 }
+
+/* One set for `region NAME for all`: b as claim_bounds makes it (NAME fixed
+ * at a number).  Returns RS_OK and *verdict 1 proved (certificate in *ev),
+ * -1 refuted (the counterexample and its exact verdict in *ev), 0 undecided
+ * (where the proof stopped in *ev), 2 proved and refuted (inconsistent). */
+int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const rs_bound_t *b, int search)
+{
+    claim_cx_t cx;
+    json_t *counter = NULL, *at = NULL;
+    slong ntried = 0;
+    int r = RS_OK, split = 0, pr;
+    memset(cx.fail, 0, sizeof cx.fail);
+    cx.fail_progress = 0;
+    cx.cert = json_array();
+    flint_randinit(cx.st);
+    pr = claim_prove(run, (claim_kind_t) kind, b, &cx, 0, &split);
+    if (!pr || search)
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at);
+    if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
+    *ev = NULL;
+    *verdict = 0;
+    if (r == RS_OK) {
+        if (counter != NULL) {
+            *verdict = pr ? 2 : -1;
+            *ev = json_pack("{s:o,s:o,s:I}", "counterexample", counter, "at_counterexample", at,
+                            "points_checked", (json_int_t) ntried);
+            counter = at = NULL;
+        } else if (pr) {
+            *verdict = 1;
+            *ev = json_pack("{s:o,s:b}", "certificate", cx.cert, "certificate_rechecked", 1);
+            cx.cert = NULL;
+        } else {
+            *ev = json_pack("{s:s,s:I}", "failed_at", cx.fail[0] ? cx.fail : "no certificate found",
+                            "points_checked", (json_int_t) ntried);
+        }
+    }
+    json_decref(cx.cert);
+    json_decref(counter);
+    json_decref(at);
+    flint_randclear(cx.st);
+    return r;
+}

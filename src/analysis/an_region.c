@@ -646,6 +646,7 @@ typedef struct {
     alg_t *lo, *hi;      /* NULL = infinite (intervals); for points lo == hi */
     int decided;         /* status known exactly */
     rs_status_t status;
+    json_t *ev;          /* for all: the certificate or counterexample */
 } piece_t;
 
 /* The exact verdict of v at t (system-aware; "singular" where the degree in
@@ -692,6 +693,70 @@ static int region_symbolic(rs_run_t *run, rs_variant_t *v, json_t *o)
     return r;
 }
 
+static int param_is_set(const rs_run_t *run, slong k)
+{
+    slong i;
+    for (i = 0; i < run->c->nsets; i++)
+        if (strcmp(run->c->sets[i].name, run->c->params[k].name) == 0) return 1;
+    return 0;
+}
+
+/* "all [P1, P2, ...]" after `region NAME for`: the quantified parameters (no
+ * list: every parameter neither NAME nor set) */
+static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
+{
+    const rs_request_t *q = req->q;
+    slong np = run->c->nparams, k, tv = req->u.region.param;
+    char name[80];
+    req->u.region.forall = 1;
+    req->u.region.qv = flint_malloc((np + 1) * sizeof(slong));
+    req->u.region.nq = 0;
+    if (strncmp(t, "all", 3) != 0 || !(t[3] == ' ' || t[3] == '\t' || t[3] == '\0' || t[3] == '['))
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'all' after 'for', found '%s'", t);
+    t = rs_req_skip_blanks(t + 3);
+    if (*t == '\0') {
+        for (k = 0; k < np; k++)
+            if (k != tv && !param_is_set(run, k)) req->u.region.qv[req->u.region.nq++] = k;
+        return RS_OK;
+    }
+    if (*t != '[')
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '[' or end of line after 'for all', found '%s'", t);
+    t = rs_req_skip_blanks(t + 1);
+    for (;;) {
+        const char *u = rs_req_read_name(t, name);
+        slong i;
+        if (u == NULL)
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected a parameter name in 'for all [...]', found '%s'", t);
+        k = rs_case_param_index(run->c, name);
+        if (k < 0) return rs_req_error(run, q, t, RS_ERR_INPUT, "'%s' is not a parameter", name);
+        if (k == tv)
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "the region parameter '%s' cannot also be quantified", name);
+        if (param_is_set(run, k))
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "'%s' is set to a value: it cannot be quantified", name);
+        for (i = 0; i < req->u.region.nq; i++)
+            if (req->u.region.qv[i] == k)
+                return rs_req_error(run, q, t, RS_ERR_INPUT, "'%s' is quantified twice", name);
+        req->u.region.qv[req->u.region.nq++] = k;
+        t = rs_req_skip_blanks(u);
+        if (*t == ',') { t = rs_req_skip_blanks(t + 1); continue; }
+        if (*t == ']') break;
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ',' or ']' in 'for all [...]', found '%s'", t);
+    }
+    t = rs_req_skip_blanks(t + 1);
+    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line after ']', found '%s'", t);
+    /* every parameter left symbolic must be quantified */
+    for (k = 0; k < np; k++) {
+        slong i;
+        int in = k == tv || param_is_set(run, k);
+        for (i = 0; i < req->u.region.nq && !in; i++) in = req->u.region.qv[i] == k;
+        if (!in)
+            return rs_req_error(run, q, req->rest, RS_ERR_INPUT,
+                                "'%s' is neither set nor quantified: add it to 'for all [...]' or set it",
+                                run->c->params[k].name);
+    }
+    return RS_OK;
+}
+
 /* region NAME [at P=V, ...]: the parameter and the values, checked up front */
 int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
 {
@@ -710,8 +775,11 @@ int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
     if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
         r = parse_assignments(run, q, t + 2, &req->u.region.at, &req->u.region.nat);
         if (r != RS_OK) return r;
+    } else if (strncmp(t, "for", 3) == 0 && (t[3] == ' ' || t[3] == '\t')) {
+        return parse_forall(req, run, rs_req_skip_blanks(t + 3));
     } else if (*t != '\0') {
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
+        return rs_req_error(run, q, t, RS_ERR_INPUT,
+                            "expected 'at NAME=VALUE, ...', 'for all [NAME, ...]' or end of line, found '%s'", t);
     }
     for (i = 0; i < req->u.region.nat; i++)
         if (req->u.region.at[i].var == req->u.region.param)
@@ -740,6 +808,9 @@ typedef struct {
     slong ncrit;
     piece_t *pieces;
     slong npieces;
+    int forall;                 /* region NAME for all [...] */
+    const slong *qv;            /* ... over these parameters */
+    slong nq;
 } region_t;
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
@@ -914,6 +985,140 @@ static int region_decide(region_t *rg)
     return r;
 }
 
+/* for all: the critical values of the projection (the whole parameter line
+ * is one cell when there are none), each cell decided at a rational sample,
+ * an irrational critical value left undecided */
+static int region_forall_critical(region_t *rg)
+{
+    fmpz_poly_struct *u = NULL;
+    slong nu = 0, k;
+    int r = rs_an_forall_critical(&u, &nu, rg->run, rg->v, rg->tv, rg->qv, rg->nq, rg->bounds);
+    for (k = 0; k < nu; k++) {
+        if (r == RS_OK) alg_roots_append(&rg->crit, &rg->ncrit, u + k, CRIT_TOUCH);
+        fmpz_poly_clear(u + k);
+    }
+    flint_free(u);
+    return r;
+}
+
+/* The exact verdict at t = c (irrational) and the quantified parameters at
+ * the rational point pt (a neighbour's counterexample {NAME: value}). */
+static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_t *pt)
+{
+    const rs_scheme_struct *s = rg->s;
+    fmpz_mpoly_t f, g;
+    fmpq_t x;
+    slong k;
+    int decided = 0;
+    fmpz_mpoly_init(f, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpq_init(x);
+    fmpz_mpoly_set(f, rg->v->cp->p, s->zctx);
+    for (k = 0; k < rg->nq; k++) {
+        const char *w = json_string_value(json_object_get(pt, rg->run->c->params[rg->qv[k]].name));
+        if (w == NULL || fmpq_set_str(x, w, 10) != 0) break;
+        fmpq_canonicalise(x);
+        rs_an_forall_subst(g, f, rg->qv[k], x, s->zctx);
+        fmpz_mpoly_swap(f, g, s->zctx);
+    }
+    if (k == rg->nq) decided = !fmpz_mpoly_is_zero(f, s->zctx) && status_at_algebraic(st, f, rg->tv, c, s);
+    fmpz_mpoly_clear(f, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpq_clear(x);
+    return decided;
+}
+
+/* An irrational critical value c between two decided cells: unstable (or
+ * marginal) at the point when the exact verdict at c with the quantified
+ * parameters at a neighbour's counterexample says so; stable (bounded) when
+ * a certificate covers the closed rational interval between the neighbours'
+ * samples, which contains c. */
+static int region_forall_irrational(region_t *rg, slong i)
+{
+    piece_t *pc = rg->pieces + i, *nb[2];
+    rs_status_t st;
+    slong k;
+    int r = RS_OK;
+    nb[0] = pc - 1;
+    nb[1] = pc + 1;
+    for (k = 0; k < 2 && !pc->decided; k++) {
+        const json_t *cx;
+        if (!nb[k]->decided || nb[k]->ev == NULL) continue;
+        cx = json_object_get(nb[k]->ev, nb[k]->status == RS_STATUS_MARGINAL ? "not_stable_at" : "counterexample");
+        if (cx == NULL || !forall_status_at(&st, rg, pc->lo, cx)) continue;
+        if (st == RS_STATUS_UNSTABLE || st == RS_STATUS_SINGULAR) {
+            pc->decided = 1;
+            pc->status = st;
+        } else if (st == RS_STATUS_MARGINAL && nb[0]->decided && nb[1]->decided
+                   && nb[0]->status == RS_STATUS_MARGINAL && nb[1]->status == RS_STATUS_MARGINAL) {
+            pc->status = RS_STATUS_MARGINAL;     /* bounded still to be proved */
+        } else {
+            continue;
+        }
+        pc->ev = json_object();
+        json_object_set(pc->ev, st == RS_STATUS_MARGINAL ? "not_stable_at" : "counterexample", (json_t *) cx);
+        json_object_set_new(pc->ev, "note", json_string(
+            "the other parameters as given, the region parameter at this algebraic value: exact verdict in "
+            "Q(value)"));
+        json_object_set_new(pc->ev, "at_counterexample",
+                            json_pack("{s:s,s:s}", "status", rs_status_name(st), "decided_by", "exact"));
+    }
+    if (!pc->decided && nb[0]->decided && nb[1]->decided && nb[0]->status == nb[1]->status
+        && (nb[0]->status == RS_STATUS_STABLE || pc->status == RS_STATUS_MARGINAL)) {
+        const char *a = json_string_value(json_object_get(nb[0]->ev, "sample"));
+        const char *b = json_string_value(json_object_get(nb[1]->ev, "sample"));
+        fmpq_t lo, hi;
+        json_t *ev = NULL;
+        int proved = 0;
+        fmpq_init(lo); fmpq_init(hi);
+        if (a != NULL && b != NULL && fmpq_set_str(lo, a, 10) == 0 && fmpq_set_str(hi, b, 10) == 0) {
+            fmpq_canonicalise(lo); fmpq_canonicalise(hi);
+            r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, nb[0]->status == RS_STATUS_STABLE ? 0 : 1);
+        }
+        if (proved) {
+            json_t *keep = pc->ev;
+            pc->decided = 1;
+            pc->status = nb[0]->status;
+            pc->ev = ev;
+            ev = NULL;
+            json_object_set_new(pc->ev, "proved_on", json_pack("[s,s]", a, b));
+            if (keep != NULL) json_object_update(pc->ev, keep);
+            json_decref(keep);
+        }
+        json_decref(ev);
+        fmpq_clear(lo); fmpq_clear(hi);
+    }
+    return r;
+}
+
+#define FORALL_MAX_ALG_DEGREE 8
+
+static int region_forall_decide(region_t *rg)
+{
+    slong i;
+    int r = RS_OK;
+    for (i = 0; i < rg->npieces && r == RS_OK; i++) {
+        piece_t *pc = rg->pieces + i;
+        fmpq_t x;
+        if (pc->is_point && !pc->lo->rational) { pc->decided = 0; continue; }
+        fmpq_init(x);
+        if (pc->is_point) fmpq_set(x, pc->lo->q);
+        else rational_between(x, pc->lo, pc->hi);
+        r = rs_budget_check(rg->run->err, "region ... for all (deciding its cells)");
+        if (r == RS_OK) r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x);
+        if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
+        fmpq_clear(x);
+    }
+    /* irrational values of high degree (spurious ones of the projection
+     * mostly) are left undecided: arithmetic in Q[t]/(minpoly) grows fast */
+    for (i = 1; i + 1 < rg->npieces && r == RS_OK; i++)
+        if (rg->pieces[i].is_point && !rg->pieces[i].lo->rational
+            && fmpz_poly_degree(rg->pieces[i].lo->minpoly) <= FORALL_MAX_ALG_DEGREE
+            && (r = rs_budget_check(rg->run->err, "region ... for all (irrational critical values)")) == RS_OK)
+            r = region_forall_irrational(rg, i);
+    return r;
+}
+
 /* Irrational critical values, decided exactly from what vanishes there:
  * - none of lc, p(+-1), D_{n-1}: no root on the circle (Orlando: a circle
  *   root other than +-1 makes D_{n-1} vanish) and no degree drop, so the
@@ -962,6 +1167,21 @@ static void region_json(region_t *rg, json_t *o)
         slong j = i;
         json_t *iv;
         alg_t *lo, *hi;
+        if (!pieces[i].decided && rg->forall) {
+            iv = json_object();
+            json_object_set_new(iv, "lo", pieces[i].lo ? alg_json(pieces[i].lo, name) : json_null());
+            json_object_set_new(iv, "hi", pieces[i].hi ? alg_json(pieces[i].hi, name) : json_null());
+            json_object_set_new(iv, "lo_closed", json_boolean(pieces[i].is_point));
+            json_object_set_new(iv, "hi_closed", json_boolean(pieces[i].is_point));
+            json_object_set_new(iv, "status", json_string("undecided"));
+            json_object_set_new(iv, "lo_approx", pieces[i].lo ? json_real(alg_double(pieces[i].lo)) : json_null());
+            json_object_set_new(iv, "hi_approx", pieces[i].hi ? json_real(alg_double(pieces[i].hi)) : json_null());
+            json_object_set_new(iv, "evidence", json_pack("[O]", pieces[i].ev ? pieces[i].ev : json_pack("{s:s}",
+                "failed_at", "an irrational critical value: the claim machinery needs a rational value")));
+            json_array_append_new(ivs, iv);
+            i++;
+            continue;
+        }
         if (!pieces[i].decided) {
             json_t *pj = json_object();
             json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
@@ -985,6 +1205,18 @@ static void region_json(region_t *rg, json_t *o)
         json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
         json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
         json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
+        if (rg->forall) {
+            /* one certificate or counterexample per cell (open interval or point) */
+            json_t *evs = json_array();
+            slong k;
+            for (k = i; k <= j; k++) {
+                json_t *e = json_object();
+                json_object_set_new(e, "cell", json_string(pieces[k].is_point ? "point" : "interval"));
+                if (pieces[k].ev != NULL) json_object_update(e, pieces[k].ev);
+                json_array_append_new(evs, e);
+            }
+            json_object_set_new(iv, "evidence", evs);
+        }
         json_array_append_new(ivs, iv);
         i = j + 1;
     }
@@ -993,6 +1225,12 @@ static void region_json(region_t *rg, json_t *o)
     json_object_set_new(o, "undecided_points", pts);
     json_object_set_new(o, "critical_values", json_integer(rg->ncrit));
     json_object_set_new(o, "decided_by", json_string("exact"));
+    if (rg->forall) {
+        json_t *fa = json_array();
+        slong k;
+        for (k = 0; k < rg->nq; k++) json_array_append_new(fa, json_string(rg->run->c->params[rg->qv[k]].name));
+        json_object_set_new(o, "for_all", fa);
+    }
 }
 
 /* The domain of t from the assume lines (an error when it is empty). */
@@ -1029,6 +1267,9 @@ static void region_init(region_t *rg, rs_run_t *run, const rs_an_req_t *req, con
     rg->name = run->c->params[rg->tv].name;
     rg->v = v;
     rg->s = s;
+    rg->forall = req->u.region.forall;
+    rg->qv = req->u.region.qv;
+    rg->nq = req->u.region.nq;
     alg_init(&rg->lo_end);
     alg_init(&rg->hi_end);
     fmpz_mpoly_init(rg->pt, s->zctx);
@@ -1048,6 +1289,7 @@ static void region_clear(region_t *rg)
     slong i;
     for (i = 0; i < rg->ncrit; i++) alg_clear(rg->crit + i);
     free(rg->crit);
+    for (i = 0; i < rg->npieces; i++) json_decref(rg->pieces[i].ev);
     free(rg->pieces);
     alg_clear(&rg->lo_end);
     alg_clear(&rg->hi_end);
@@ -1063,6 +1305,8 @@ static void region_clear(region_t *rg)
 void rs_an_region_req_clear(rs_an_req_t *req)
 {
     rs_assign_free(req->u.region.at, req->u.region.nat);
+    flint_free(req->u.region.qv);
+    req->u.region.qv = NULL;
 }
 
 int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
@@ -1085,6 +1329,25 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "analysis", json_string("region"));
     json_object_set_new(o, "param", json_string(name));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    if (req->u.region.forall) {
+        region_init(&rg, run, req, v);
+        json_object_set_new(o, "symbolic", json_false());
+        r = region_domain(&rg);
+        if (r == RS_OK) r = region_forall_critical(&rg);
+        if (r == RS_OK) {
+            region_crit_prune(&rg);
+            region_pieces(&rg);
+            r = region_forall_decide(&rg);
+        }
+        if (r == RS_OK) {
+            region_json(&rg, o);
+            json_array_append_new(run->results, o);
+        } else {
+            json_decref(o);
+        }
+        region_clear(&rg);
+        return r;
+    }
     if (rs_run_count_free(v->cp->p, v->s, req->u.region.param) > 0) {
         r = region_symbolic(run, v, o);
         if (r != RS_OK) { json_decref(o); return r; }

@@ -55,7 +55,8 @@ typedef struct {
     rs_optval_t opt[RS_AN_MAX_OPTS];  /* by the order of def->opts */
     union {
         struct { int bilinear; rs_expr_t *poly; } expect;
-        struct { slong param; rs_assign_t *at; slong nat; } region;
+        struct { slong param; rs_assign_t *at; slong nat;
+                 int forall; slong *qv; slong nq; } region;   /* forall: `for all [P, ...]` */
         struct { slong param; int to_inf; } limit;
         struct { int kind; void *dnf; } claim;       /* dnf: an_claim.c's claim_dnf_t */
         void *sweep;                                 /* sweep, map: rs_sweep_request_t (sweep_impl.h) */
@@ -128,6 +129,17 @@ int rs_an_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_region(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_limit(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_claim(rs_run_t *run, const rs_an_req_t *req);
+/* an_claim.c: prove or refute a claim of kind (0 stable, 1 bounded) on the
+ * set b; region NAME for all uses it cell by cell */
+int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const rs_bound_t *b, int search);
+/* an_region_forall.c: the critical values of parameter tv for `for all`
+ * over the variables qv[0..nq-1] (univariate in tv, appended to *out); the
+ * status of one cell at tv = t decided for all of them */
+int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, const rs_variant_t *v, slong tv,
+                          const slong *qv, slong nq, const rs_bound_t *b);
+int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t);
+int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const fmpq_t lo, const fmpq_t hi, int kind);
+void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const fmpq_t x, const fmpz_mpoly_ctx_t ctx);
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
