@@ -1,0 +1,216 @@
+/* test_forall.c -- `region NAME for all [P, ...]` (issue 13, part 1): the
+ * NAME values stable (marginal) for every admissible value of the others.
+ * Expected ranges, each derived independently of recstab:
+ *   - theta method on the undamped oscillator (cases/forall/theta-oscillator.case):
+ *     lambda = (1 + (1-th) i w)/(1 - th i w), |lambda|^2 = (1 + (1-th)^2 w^2)/(1 + th^2 w^2):
+ *     for all w > 0 stable iff th > 1/2, marginal at th = 1/2, unstable below;
+ *   - central difference, p = l^2 - (2 - w^2) l + 1 (Hughes, The Finite
+ *     Element Method, ch. 9): marginal for 0 < w < 2, double root -1 at w = 2
+ *     and a root below -1 beyond: unstable on [2, inf) (no other parameter:
+ *     `for all` over nothing is the plain region);
+ *   - Newmark on x'' = -w^2 x, h = 1 (Hughes ch. 9: unconditionally stable
+ *     iff 2 beta >= gamma >= 1/2): at gamma = 1/2 marginal (|lambda| = 1) for
+ *     every w iff beta >= 1/4; at gamma = 3/5 stable for every w iff beta >=
+ *     3/10 (= gamma/2, numerical dissipation); for beta < 0 the leading
+ *     coefficient 1 + beta w^2 vanishes at w^2 = -1/beta: singular there;
+ *   - Park's staggered scheme (cases/park-staggered.case) at m = muh = 1, for
+ *     all wh > 0: q(z) = (1-z)^4 p((1+z)/(1-z)) has, by hand from the case's
+ *     p, coefficients a0..a4 = 8 W, 16 W (3 - alpha), 8 (2 alpha W + 7 W + 8),
+ *     192, 192 (W = wh^2) and D3 = a3 a2 a1 - a3^2 a0 - a4 a1^2 =
+ *     -24576 W (W (4 alpha^2 - 11 alpha - 3) + 8 alpha - 12): positive for
+ *     every W > 0 iff 8 alpha - 12 <= 0 and (4 alpha + 1)(alpha - 3) <= 0, so
+ *     stable for all wh iff 0 <= alpha <= 3/2 (alpha = 3/2: D3 = 258048 W^2 > 0). */
+#include "testutil.h"
+#include <string.h>
+#include "recstab/casefile.h"
+#include "recstab/analysis.h"
+
+static const json_t *result(const json_t *doc, size_t i)
+{
+    return json_array_get(json_object_get(doc, "results"), i);
+}
+
+static const char *str(const json_t *o, const char *k)
+{
+    return json_string_value(json_object_get(o, k));
+}
+
+/* an endpoint as text ("inf" for null) */
+static const char *end(const json_t *iv, const char *k)
+{
+    const json_t *e = json_object_get(iv, k);
+    if (json_is_null(e)) return "inf";
+    return json_is_string(e) ? json_string_value(e) : "algebraic";
+}
+
+struct iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
+
+/* the region's intervals are exactly want[0..n-1], each with its evidence */
+static void check_region(const json_t *o, const struct iv *want, size_t n, const char *what)
+{
+    const json_t *ivs = json_object_get(o, "intervals");
+    size_t i;
+    if (json_array_size(ivs) != n) fail_msg("%s: %zu intervals, expected %zu", what, json_array_size(ivs), n);
+    for (i = 0; i < n; i++) {
+        const json_t *iv = json_array_get(ivs, i), *ev = json_object_get(iv, "evidence"), *e;
+        size_t k;
+        if (strcmp(end(iv, "lo"), want[i].lo) != 0 || strcmp(end(iv, "hi"), want[i].hi) != 0
+            || json_is_true(json_object_get(iv, "lo_closed")) != want[i].lo_closed
+            || json_is_true(json_object_get(iv, "hi_closed")) != want[i].hi_closed
+            || strcmp(str(iv, "status"), want[i].status) != 0)
+            fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
+                     json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", end(iv, "lo"), end(iv, "hi"),
+                     json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", str(iv, "status"),
+                     want[i].lo_closed ? "[" : "(", want[i].lo, want[i].hi, want[i].hi_closed ? "]" : ")",
+                     want[i].status);
+        /* every cell carries its evidence: a re-checked certificate, or a counterexample */
+        assert_true(json_array_size(ev) > 0);
+        json_array_foreach(ev, k, e) {
+            if (strcmp(want[i].status, "unstable") == 0 || strcmp(want[i].status, "singular") == 0) {
+                assert_non_null(json_object_get(e, "counterexample"));
+                assert_string_equal(str(json_object_get(e, "at_counterexample"), "status"), want[i].status);
+            } else {
+                assert_true(json_is_true(json_object_get(e, "certificate_rechecked")));
+            }
+            if (strcmp(want[i].status, "marginal") == 0) assert_non_null(json_object_get(e, "not_stable_at"));
+        }
+    }
+}
+
+/* case text with --set values (NULL-terminated "NAME=VALUE" list); *code
+ * the status (NULL: an error fails the test) */
+static json_t *run_set(const char *text, const char *const *sets, int *outcome, int *code)
+{
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t opt;
+    json_t *doc = NULL;
+    int r;
+    rs_case_init(c);
+    rs_error_init(err);
+    rs_options_default(&opt);
+    r = rs_case_parse_string(c, "test.case", text, strlen(text), err);
+    for (; r == RS_OK && sets != NULL && *sets != NULL; sets++) r = rs_case_set_value(c, *sets, err);
+    if (r == RS_OK) r = rs_analysis_run(&doc, outcome, c, &opt, err);
+    rs_case_clear(c);
+    if (code != NULL) *code = r;
+    else if (r != RS_OK || doc == NULL) fail_msg("%s: %s", text, err->msg);
+    return doc;
+}
+
+static json_t *run_ok(const char *text, int *outcome)
+{
+    return run_set(text, NULL, outcome, NULL);
+}
+
+static void test_theta(void **state)
+{
+    static const char *req[] = {"region th for all [w]", "region th for all", "claim stable when th > 1/2",
+                                "claim stable when th > 2/5", "claim bounded when th >= 1/2"};
+    static const struct iv want[] = {{"inf", 0, "1/2", 0, "unstable"}, {"1/2", 1, "1/2", 1, "marginal"},
+                                     {"1/2", 0, "inf", 0, "stable"}};
+    int outcome;
+    json_t *doc = tu_run_case("cases/forall/theta-oscillator.case", req, 5, &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 3, "theta for all [w]");
+    check_region(result(doc, 1), want, 3, "theta for all");
+    assert_string_equal(json_string_value(json_array_get(json_object_get(result(doc, 0), "for_all"), 0)), "w");
+    /* claims agree with the region: inside proved, reaching outside refuted */
+    assert_string_equal(str(result(doc, 2), "status"), "proved");
+    assert_string_equal(str(result(doc, 3), "status"), "refuted");
+    assert_string_equal(str(result(doc, 4), "status"), "proved");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+static void test_central_difference(void **state)
+{
+    static const struct iv want[] = {{"0", 0, "2", 0, "marginal"}, {"2", 1, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = run_ok("param w\nassume w > 0\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\n"
+                         "analyse region w for all\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 2, "central difference");
+    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "for_all")), 0);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+#define NEWMARK "param b g w\nassume w > 0\nsubsystem S state x v\n  x'' = -w^2*x\nintegrate S newmark b g 1\n"
+
+static void test_newmark(void **state)
+{
+    static const struct iv half[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "1/4", 0, "unstable"},
+                                     {"1/4", 1, "inf", 0, "marginal"}};
+    static const struct iv damped[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "3/10", 0, "unstable"},
+                                       {"3/10", 1, "inf", 0, "stable"}};
+    int outcome;
+    static const char *const g1[] = {"g=1/2", NULL}, *const g2[] = {"g=3/5", NULL};
+    json_t *doc = run_set(NEWMARK "analyse region b for all [w]\n", g1, &outcome, NULL);
+    (void) state;
+    check_region(result(doc, 0), half, 3, "newmark gamma = 1/2");
+    json_decref(doc);
+    doc = run_set(NEWMARK "analyse region b for all [w]\n", g2, &outcome, NULL);
+    check_region(result(doc, 0), damped, 3, "newmark gamma = 3/5");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+static void test_park(void **state)
+{
+    static const struct iv want[] = {{"0", 1, "3/2", 1, "stable"}, {"3/2", 0, "inf", 0, "unstable"}};
+    static const char *const sets[] = {"m=1", "muh=1", NULL};
+    int outcome, code;
+    json_t *doc;
+    (void) state;
+    doc = run_set("param m muh wh alpha\nassume m > 0, muh > 0, wh > 0, alpha >= 0\nunknown y x v a\n"
+                      "let yp[n+1] = (1 + alpha)*y[n] - alpha*y[n-1]\n"
+                      "eq 3*y[n+1] - 4*y[n] + y[n-1] + 2*(1 + m)*muh*y[n+1] + 2*wh^2*x[n+1] = 0\n"
+                      "eq x[n+1] - x[n] = (v[n+1] + v[n])/2\neq v[n+1] - v[n] = (a[n+1] + a[n])/2\n"
+                      "eq a[n+1] + wh^2*x[n+1] + m*muh*yp[n+1] = 0\n"
+                      "analyse region alpha for all [wh]\n", sets, &outcome, &code);
+    assert_int_equal(code, RS_OK);
+    check_region(result(doc, 0), want, 2, "park at m = muh = 1");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+/* bad requests: a clear error, no result */
+static void test_bad(void **state)
+{
+    static const char *bad[] = {
+        "analyse region th for all [x]\n", "analyse region th for all [th]\n", "analyse region th for all [w\n",
+        "analyse region th for all [w, w]\n", "analyse region th for every\n", "analyse region th for all w\n",
+        "analyse region th for all [w] extra\n", "analyse region th for all []\n"};
+    static const char *const setw[] = {"w=1", NULL};
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char buf[512];
+        int outcome, code;
+        json_t *doc;
+        snprintf(buf, sizeof buf, "param th w\nassume w > 0\nunknown x\neq x[n+1] = x[n] - th*w*x[n]\n%s", bad[i]);
+        doc = run_set(buf, NULL, &outcome, &code);
+        if (code != RS_ERR_INPUT) fail_msg("%s: code %d, expected an input error", bad[i], code);
+        json_decref(doc);
+    }
+    {   /* a quantified parameter that is set */
+        int outcome, code;
+        json_t *doc = run_set("param th w\nassume w > 0\nunknown x\neq x[n+1] = x[n] - th*w*x[n]\n"
+                              "analyse region th for all [w]\n", setw, &outcome, &code);
+        assert_int_equal(code, RS_ERR_INPUT);
+        json_decref(doc);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_theta),
+        cmocka_unit_test(test_central_difference),
+        cmocka_unit_test(test_newmark),
+        cmocka_unit_test(test_park),
+        cmocka_unit_test(test_bad),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
