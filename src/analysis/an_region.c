@@ -701,6 +701,15 @@ static int param_is_set(const rs_run_t *run, slong k)
     return 0;
 }
 
+/* what a parse error found: 'text' or end of line */
+static const char *found(const char *t)
+{
+    static char buf[96];
+    if (*t == '\0') return "end of line";
+    snprintf(buf, sizeof buf, "'%.80s'", t);
+    return buf;
+}
+
 /* "all [P1, P2, ...]" after `region NAME for`: the quantified parameters (no
  * list: every parameter neither NAME nor set) */
 static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
@@ -712,7 +721,7 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
     req->u.region.qv = flint_malloc((np + 1) * sizeof(slong));
     req->u.region.nq = 0;
     if (strncmp(t, "all", 3) != 0 || !(t[3] == ' ' || t[3] == '\t' || t[3] == '\0' || t[3] == '['))
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'all' after 'for', found '%s'", t);
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'all' after 'for', found %s", found(t));
     t = rs_req_skip_blanks(t + 3);
     if (*t == '\0') {
         for (k = 0; k < np; k++)
@@ -720,13 +729,13 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
         return RS_OK;
     }
     if (*t != '[')
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '[' or end of line after 'for all', found '%s'", t);
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '[' or end of line after 'for all', found %s", found(t));
     t = rs_req_skip_blanks(t + 1);
     for (;;) {
         const char *u = rs_req_read_name(t, name);
         slong i;
         if (u == NULL)
-            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected a parameter name in 'for all [...]', found '%s'", t);
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected a parameter name in 'for all [...]', found %s", found(t));
         k = rs_case_param_index(run->c, name);
         if (k < 0) return rs_req_error(run, q, t, RS_ERR_INPUT, "'%s' is not a parameter", name);
         if (k == tv)
@@ -740,10 +749,10 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
         t = rs_req_skip_blanks(u);
         if (*t == ',') { t = rs_req_skip_blanks(t + 1); continue; }
         if (*t == ']') break;
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ',' or ']' in 'for all [...]', found '%s'", t);
+        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ',' or ']' in 'for all [...]', found %s", found(t));
     }
     t = rs_req_skip_blanks(t + 1);
-    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line after ']', found '%s'", t);
+    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line after ']', found %s", found(t));
     /* every parameter left symbolic must be quantified */
     for (k = 0; k < np; k++) {
         slong i;

@@ -457,6 +457,16 @@ void rs_render_region(rs_render_t *r, const json_t *o)
     }
     region_intervals(r, o);
     region_where(r, o);
+    if (json_is_array(json_object_get(o, "for_all"))) {   /* region NAME for all [...] */
+        const json_t *fa = json_object_get(o, "for_all");
+        char names[256] = "";
+        size_t i;
+        for (i = 0; i < json_array_size(fa); i++)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
+                     json_string_value(json_array_get(fa, i)));
+        rs_render_linef(r, "for all", "%s%s (each interval: a re-checked certificate, or an exact counterexample)",
+                        names[0] ? names : "(no other parameter)", json_array_size(fa) ? " admissible" : "");
+    }
     rs_render_assigned(r, o);
 }
 
