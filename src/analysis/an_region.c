@@ -1041,8 +1041,8 @@ static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_
  * marginal) at the point when the exact verdict at c with the quantified
  * parameters at a neighbour's counterexample says so; stable (bounded) when
  * a certificate covers the closed rational interval between the neighbours'
- * samples, which contains c. */
-static int region_forall_irrational(region_t *rg, slong i)
+ * samples, which contains c (algebraic = 0: only the latter). */
+static int region_forall_irrational(region_t *rg, slong i, int algebraic)
 {
     piece_t *pc = rg->pieces + i, *nb[2];
     rs_status_t st;
@@ -1050,7 +1050,7 @@ static int region_forall_irrational(region_t *rg, slong i)
     int r = RS_OK;
     nb[0] = pc - 1;
     nb[1] = pc + 1;
-    for (k = 0; k < 2 && !pc->decided; k++) {
+    for (k = 0; k < 2 && !pc->decided && algebraic; k++) {
         const json_t *cx;
         if (!nb[k]->decided || nb[k]->ev == NULL) continue;
         cx = json_object_get(nb[k]->ev, nb[k]->status == RS_STATUS_MARGINAL ? "not_stable_at" : "counterexample");
@@ -1118,13 +1118,13 @@ static int region_forall_decide(region_t *rg)
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);
     }
-    /* irrational values of high degree (spurious ones of the projection
-     * mostly) are left undecided: arithmetic in Q[t]/(minpoly) grows fast */
+    /* no verdict in Q[t]/(minpoly) at irrational values of high degree
+     * (spurious ones of the projection mostly): its arithmetic grows fast;
+     * the certificate over the rational interval around them still applies */
     for (i = 1; i + 1 < rg->npieces && r == RS_OK; i++)
         if (rg->pieces[i].is_point && !rg->pieces[i].lo->rational
-            && fmpz_poly_degree(rg->pieces[i].lo->minpoly) <= FORALL_MAX_ALG_DEGREE
             && (r = rs_budget_check(rg->run->err, "region ... for all (irrational critical values)")) == RS_OK)
-            r = region_forall_irrational(rg, i);
+            r = region_forall_irrational(rg, i, fmpz_poly_degree(rg->pieces[i].lo->minpoly) <= FORALL_MAX_ALG_DEGREE);
     return r;
 }
 
