@@ -701,13 +701,13 @@ static int param_is_set(const rs_run_t *run, slong k)
     return 0;
 }
 
-/* what a parse error found: 'text' or end of line */
-static const char *found(const char *t)
+/* a parse error at t: "expected WHAT, found 'text'" or "..., found end of line" */
+static int forall_error(rs_run_t *run, const rs_request_t *q, const char *t, const char *what)
 {
-    static char buf[96];
-    if (*t == '\0') return "end of line";
-    snprintf(buf, sizeof buf, "'%.80s'", t);
-    return buf;
+    char buf[200];
+    if (*t == '\0') snprintf(buf, sizeof buf, "expected %s, found end of line", what);
+    else snprintf(buf, sizeof buf, "expected %s, found '%.80s'", what, t);
+    return rs_req_error(run, q, t, RS_ERR_INPUT, "%s", buf);
 }
 
 /* "all [P1, P2, ...]" after `region NAME for`: the quantified parameters (no
@@ -721,7 +721,7 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
     req->u.region.qv = flint_malloc((np + 1) * sizeof(slong));
     req->u.region.nq = 0;
     if (strncmp(t, "all", 3) != 0 || !(t[3] == ' ' || t[3] == '\t' || t[3] == '\0' || t[3] == '['))
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'all' after 'for', found %s", found(t));
+        return forall_error(run, q, t, "'all' after 'for'");
     t = rs_req_skip_blanks(t + 3);
     if (*t == '\0') {
         for (k = 0; k < np; k++)
@@ -729,13 +729,13 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
         return RS_OK;
     }
     if (*t != '[')
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected '[' or end of line after 'for all', found %s", found(t));
+        return forall_error(run, q, t, "'[' or end of line after 'for all'");
     t = rs_req_skip_blanks(t + 1);
     for (;;) {
         const char *u = rs_req_read_name(t, name);
         slong i;
         if (u == NULL)
-            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected a parameter name in 'for all [...]', found %s", found(t));
+            return forall_error(run, q, t, "a parameter name in 'for all [...]'");
         k = rs_case_param_index(run->c, name);
         if (k < 0) return rs_req_error(run, q, t, RS_ERR_INPUT, "'%s' is not a parameter", name);
         if (k == tv)
@@ -749,10 +749,10 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
         t = rs_req_skip_blanks(u);
         if (*t == ',') { t = rs_req_skip_blanks(t + 1); continue; }
         if (*t == ']') break;
-        return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ',' or ']' in 'for all [...]', found %s", found(t));
+        return forall_error(run, q, t, "',' or ']' in 'for all [...]'");
     }
     t = rs_req_skip_blanks(t + 1);
-    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line after ']', found %s", found(t));
+    if (*t != '\0') return forall_error(run, q, t, "end of line after ']'");
     /* every parameter left symbolic must be quantified */
     for (k = 0; k < np; k++) {
         slong i;
