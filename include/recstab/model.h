@@ -8,7 +8,9 @@
  *               polynomial entries are lowered into this kind, as trees
  *   recurrence  a matrix recurrence A_K z[n+K] + ... + A_0 z[n] = 0 with
  *               non-polynomial entries (exp, sin, pi, ...): numeric only
- *   cosim       subsystems integrated exactly (co-simulation): numeric only */
+ *   cosim       subsystems integrated exactly (co-simulation): numeric only;
+ *               its linear forms (A_i, B_i, C in the parameters) are built
+ *               once by rs_model_lower, a point substitutes numbers only */
 #ifndef RECSTAB_MODEL_H
 #define RECSTAB_MODEL_H
 
@@ -25,6 +27,9 @@ typedef enum {
     RS_MODEL_RECURRENCE,
     RS_MODEL_COSIM
 } rs_model_kind_t;
+
+/* the linear forms of a co-simulation (private: src/lower/cosim_model.h) */
+typedef struct rs_cosim_model_struct rs_cosim_model_struct;
 
 typedef struct {
     const rs_case_struct *c;    /* the case lowered (not owned; must outlive the model):
@@ -44,6 +49,10 @@ typedef struct {
     /* recurrence: the terms A_K z[n+K] (the case's), n x n, K the largest shift */
     slong nterms;     const rs_recterm_t *terms;
     slong n, K;
+    /* cosim: the linear forms, or NULL with the error that building them
+     * gave (reported by the analyses that need them, rs_model_cosim) */
+    rs_cosim_model_struct *cosim;
+    rs_error_t cosim_err;
 } rs_model_struct;
 typedef rs_model_struct rs_model_t[1];
 
@@ -54,6 +63,10 @@ void rs_model_clear(rs_model_t m);
  * must outlive m.  Errors name the user's file:line:col (a generated name
  * the user also declared: at the user's declaration). */
 int rs_model_lower(rs_model_t m, const rs_case_t c, rs_error_t err);
+
+/* The co-simulation forms of a model of kind RS_MODEL_COSIM (built by
+ * rs_model_lower), or NULL with the error building them gave in err. */
+const rs_cosim_model_struct *rs_model_cosim(const rs_model_t m, rs_error_t err);
 
 /* Index of an unknown of the model by name, or -1. */
 slong rs_model_unknown_index(const rs_model_t m, const char *name);

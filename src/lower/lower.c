@@ -7,6 +7,7 @@
 #include "lower/lower.h"
 #include "lower/builder.h"
 #include "lower/recurrence.h"
+#include "lower/cosim_model.h"
 
 void rs_model_init(rs_model_t m)
 {
@@ -20,6 +21,8 @@ void rs_model_clear(rs_model_t m)
     flint_free(m->unknowns);
     for (i = 0; i < m->neqs; i++) rs_eq_clear(&m->eqs[i]);
     flint_free(m->eqs);
+    if (m->cosim != NULL) rs_cosim_model_clear(m->cosim);
+    flint_free(m->cosim);
     rs_loc_clear(&m->unknown_loc);
     memset(m, 0, sizeof(rs_model_struct));
 }
@@ -67,7 +70,23 @@ int rs_model_lower(rs_model_t m, const rs_case_t c, rs_error_t err)
     m->nuser_eqs = m->neqs;
     r = rs_builder_lower(m, err);
     if (r == RS_OK) r = rs_recurrence_lower(m, err);
+    if (r == RS_OK && m->kind == RS_MODEL_COSIM) {
+        /* an error here is the analyses' that need the forms (radius, map),
+         * not the lowering's: --emit equations still works */
+        m->cosim = flint_malloc(sizeof(rs_cosim_model_struct));
+        if (rs_cosim_model_init(m->cosim, c, m->cosim_err) != RS_OK) {
+            rs_cosim_model_clear(m->cosim);
+            flint_free(m->cosim);
+            m->cosim = NULL;
+        }
+    }
     return r;
+}
+
+const rs_cosim_model_struct *rs_model_cosim(const rs_model_t m, rs_error_t err)
+{
+    if (m->cosim == NULL) *err = *m->cosim_err;
+    return m->cosim;
 }
 
 slong rs_model_unknown_index(const rs_model_t m, const char *name)
