@@ -236,14 +236,12 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
         arb_t one;
         char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
              *hi = rs_radius_str_upper(rr->upper, 17);
-        size_t n = strlen(rho) + strlen(lo) + strlen(hi) + 3;
         arb_init(one);
         arb_one(one);
         row->d.verdict = arb_lt(rr->upper, one) ? RS_STATUS_STABLE : arb_gt(rr->lower, one) ? RS_STATUS_UNSTABLE
                          : RS_SWEEP_UNDECIDED;
         row->d.level = RS_LEVEL_CERTIFIED;
-        row->cells = malloc(n);
-        snprintf(row->cells, n, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
+        snprintf(row->cells, sizeof row->cells, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
         flint_free(rho);
         flint_free(lo);
         flint_free(hi);
@@ -281,7 +279,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     if (r == RS_OK) {
         m.point = cosim_map_point;
         m.model = &M;
-        m.serial = 1;       /* points share the forms' evaluation contexts; rows hold malloc'd cells */
+        m.serial = 0;       /* a point only reads the forms (their context included) */
         r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
     }
     _fmpq_vec_clear(xs[0], X[0].count);

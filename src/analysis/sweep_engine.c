@@ -87,7 +87,6 @@ static int point_errors(rs_run_t *run, const rs_request_t *q, const rs_sweep_mod
             rs_error_init(e);
             memset(&tmp, 0, sizeof tmp);
             m->point(&tmp, lo + i, m->model, e);
-            free(tmp.cells);
             code = tmp.d.status != RS_OK ? tmp.d.status : rows[i].d.status;
             if (code == RS_ERR_INCONSISTENT) run->outcome |= RS_OUTCOME_INCONSISTENT;
             snprintf(msg, sizeof msg, "at point %ld (%s): %s", (long) (lo + i), desc,
@@ -116,9 +115,7 @@ int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run,
 
 void rs_sweep_rows_free(rs_sweep_row_t *rows, slong n)
 {
-    slong i;
-    if (rows == NULL) return;
-    for (i = 0; i < n; i++) free(rows[i].cells);
+    (void) n;
     free(rows);
 }
 
@@ -169,7 +166,7 @@ void rs_sweep_put_certified(FILE *f, double lo, double hi)
 void rs_sweep_put_radius(FILE *f, const rs_sweep_row_t *row)
 {
     const rs_sweep_point_t *d = &row->d;
-    if (row->cells != NULL) { fputs(row->cells, f); return; }
+    if (row->cells[0] != 0) { fputs(row->cells, f); return; }
     if (d->verdict < 0) { fputs(",,", f); return; }
     if (d->level == RS_LEVEL_DOUBLE) {
         /* benchmark baseline: an estimate, and no certified bound at all */

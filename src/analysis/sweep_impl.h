@@ -89,8 +89,8 @@ typedef struct {
     /* damping ratio, frequency error, omega per reference: certified
      * [mode_lo, mode_hi] (doubles rounded outward); NAN when not found */
     double mode_lo[3 * RS_SWEEP_MAX_REFS], mode_hi[3 * RS_SWEEP_MAX_REFS];
-    char *cells;                        /* "radius,lower,upper" written by the model (malloc'd;
-                                           serial models only), or NULL: from d */
+    char cells[128];                    /* "radius,lower,upper" written by the model, or empty:
+                                           from d (inside the row: rows travel as bytes, MPI) */
 } rs_sweep_row_t;
 
 /* A model kind: the verdict at grid point idx (index = j*K1 + i of a map). */

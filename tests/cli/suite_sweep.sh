@@ -154,6 +154,17 @@ for N in 2 3; do
     if [ "$n1" -lt 15 ] && cmp -s "$T/limerged-$N.csv" "$T/lifull.csv"; then ok "cosim map --shard x/$N: shards of $n1.. rows merge into the full map"
     else fail "cosim map --shard x/$N: $n1 rows in shard 1, merge differs: $(diff "$T/limerged-$N.csv" "$T/lifull.csv" | head -3)"; fi
 done
+# the points run in parallel (OpenMP, each thread its own scratch): 1, 2
+# and 3 threads write the same CSV byte for byte (rows in index order),
+# over a grid with stable and unstable points of the explicit k = 1 scheme
+for TH in 1 2 3; do
+    "$RS" --threads $TH --csv "$T/lith$TH.csv" --analyse "map acc1 0 3 9, c1 1/2 2 7" "$LI" >/dev/null 2>"$T/err" \
+        || fail "cosim map --threads $TH: $(cat "$T/err")"
+done
+if cmp -s "$T/lith1.csv" "$T/lith2.csv" && cmp -s "$T/lith1.csv" "$T/lith3.csv" \
+    && grep -q ',stable,0,' "$T/lith1.csv" && grep -q ',unstable,2,' "$T/lith1.csv"; then
+    ok "cosim map: --threads 1, 2, 3 write the same CSV (stable and unstable points)"
+else fail "cosim map threads: $(diff "$T/lith1.csv" "$T/lith2.csv" | head -3)"; fi
 "$RS" --json --shard 2/3 --analyse "$LIMAP" "$LI" >"$T/lis.json" 2>"$T/err"
 if grep -q '"shard": "2/3"' "$T/lis.json" && grep -q '"computed": 5' "$T/lis.json"; then ok "cosim map JSON: shard 2/3 computed 5 of 15 points"
 else fail "cosim map JSON shard keys: $(grep -E 'shard|computed' "$T/lis.json")"; fi

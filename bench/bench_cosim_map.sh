@@ -1,0 +1,49 @@
+#!/bin/sh
+# bench_cosim_map.sh -- the exactly integrated co-simulation map (issue 14
+# part 3) side by side with its peers, in one run on the same machine:
+#   before   a recstab binary built from an earlier commit (BEFORE=path;
+#            skipped when unset), the same map and threads
+#   after    this tree's build/recstab
+#   poly     a polynomial map of the same size (cases/park-staggered.case,
+#            degree 4, the certified ladder)
+# and checks that before and after write the same CSV byte for byte.
+#   usage: BEFORE=/path/recstab sh bench/bench_cosim_map.sh [N] [THREADS]   (default 400, 2)
+BUILD=${BUILD:-build}
+RS="$BUILD/recstab"
+N=${1:-400}
+TH=${2:-2}
+LI=cases/li-explicit-k1.case
+[ -x "$RS" ] || { echo "bench_cosim_map: build $RS first (make all)" >&2; exit 2; }
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+field() { # json-file key -> value of the first "key": number
+    sed -n "s/^ *\"$2\": \([0-9.e+-]*\),*$/\1/p" "$1" | head -1
+}
+
+# label binary csv case spec [options...]: one line, points/s over the points' time
+run() {
+    label=$1; bin=$2; csv=$3; case=$4; spec=$5; shift 5
+    /usr/bin/env time -f '%e %U %S' -o "$T/time" "$bin" --json --threads "$TH" --max-points 1000000 --csv "$csv" "$@" \
+        --analyse "$spec" "$case" >"$T/o.json" 2>"$T/err" || { echo "bench_cosim_map: $label failed: $(cat "$T/err")" >&2; return 1; }
+    pts=$(field "$T/o.json" points)
+    sp=$(field "$T/o.json" seconds_points)
+    set -- $(cat "$T/time")
+    printf '%-28s %7s pts %9.3f s points %8.2f s wall %8.2f s cpu %9.0f pts/s\n' "$label" "$pts" "$sp" "$1" \
+        "$(echo "$2 + $3" | bc)" "$(echo "$pts / $sp" | bc -l)"
+    echo "$pts / $sp" | bc -l >"$T/rate-$label"
+}
+
+echo "bench_cosim_map: $N x $N maps, $TH threads ($(nproc) cores; load $(cut -d' ' -f1-3 /proc/loadavg))"
+LIMAP="map acc1 0 3 $N, c1 1/2 2 $N"
+if [ -n "${BEFORE:-}" ]; then run before "$BEFORE" "$T/before.csv" "$LI" "$LIMAP"; fi
+run after "$RS" "$T/after.csv" "$LI" "$LIMAP"
+run poly "$RS" "$T/poly.csv" cases/park-staggered.case "map alpha 0 3 $N, m 1/10 20 $N" --set muh=1 --set wh=1
+if [ -n "${BEFORE:-}" ]; then
+    # the first line names the run (case, analysis): identical; rows byte for byte
+    if cmp -s "$T/before.csv" "$T/after.csv"; then echo "CSV before == after (byte for byte)"
+    else echo "CSV DIFFERS: $(diff "$T/before.csv" "$T/after.csv" | head -3)"; fi
+    printf 'after/before speed-up %.2fx\n' "$(echo "$(cat "$T/rate-after") / $(cat "$T/rate-before")" | bc -l)"
+fi
+printf 'poly/after (polynomial map rate over the co-simulation map rate) %.1fx\n' \
+    "$(echo "$(cat "$T/rate-poly") / $(cat "$T/rate-after")" | bc -l)"
