@@ -187,23 +187,24 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
     return r;
 }
 
-/* ---- the map: the model kind "exact integration" of the sweep engine ---------------------- */
+/* ---- sweep and map: the model kind "exact integration" of the sweep engine ------------------ */
 
-/* map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]: the certified
- * radius at every grid point, through the engine of every map
+/* sweep NAME from A to B steps K [log] [of radius|stability] and
+ * map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]: the certified
+ * radius at every grid point, through the engine of every sweep and map
  * (sweep_engine.c: shards, --max-points, codes, columns, summary).  With no
  * exact side, a radius interval that contains 1 is RS_SWEEP_UNDECIDED. */
 typedef struct {
     rs_run_t *run;
     const rs_sweep_request_t *R;
-    const fmpq *x[2];
+    const fmpq *x[2];                 /* the axis values: x[0][i] (and x[1][j] of a map) */
     const rs_cosim_model_struct *F;   /* the linear forms (the run's model) */
 } cosim_map_t;
 
-/* the co-simulation at grid point idx (index = j*K1 + i) */
+/* the co-simulation at grid point idx (a sweep's index; a map's j*K1 + i) */
 static int cosim_map_build(rs_cosim_t cs, const cosim_map_t *M, slong idx, rs_error_t err)
 {
-    slong K1 = M->R->axis[0].count;
+    slong K1 = M->R->naxes == 2 ? M->R->axis[0].count : WORD_MAX;
     const char *names[2];
     fmpq vv[2];
     rs_cosim_vals_t vals;
@@ -211,8 +212,8 @@ static int cosim_map_build(rs_cosim_t cs, const cosim_map_t *M, slong idx, rs_er
     names[0] = M->R->axis[0].name;
     names[1] = M->R->axis[1].name;
     vv[0] = M->x[0][idx % K1];
-    vv[1] = M->x[1][idx / K1];
-    rs_cosim_vals_make(&vals, M->run->c, names, vv, 2);
+    if (M->R->naxes == 2) vv[1] = M->x[1][idx / K1];
+    rs_cosim_vals_make(&vals, M->run->c, names, vv, M->R->naxes);
     r = cosim_at(cs, M->F, M->run->c, &vals, err);
     flint_free(vals.v);
     return r;
@@ -251,6 +252,31 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     rs_cosim_clear(cs);
 }
 
+/* M over the axis values x (x[1] NULL for a sweep): the run's forms, then
+ * the case's own errors (a parameter still symbolic, an equation not
+ * linear) at their place, before any point runs */
+static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_request_t *R,
+                           const fmpq *x0, const fmpq *x1)
+{
+    int r;
+    M->run = run;
+    M->R = R;
+    M->x[0] = x0;
+    M->x[1] = x1;
+    M->F = rs_model_cosim(run->m, run->err);
+    r = M->F != NULL ? RS_OK : run->err->code;
+    if (r == RS_OK) {
+        rs_cosim_t cs;
+        rs_cosim_init(cs, 1, 1);
+        r = cosim_map_build(cs, M, 0, run->err);
+        rs_cosim_clear(cs);
+    }
+    m->point = cosim_map_point;
+    m->model = M;
+    m->serial = 0;       /* a point only reads the forms (their context included) */
+    return r;
+}
+
 int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     const rs_sweep_axis_t *X = R->axis;
@@ -262,27 +288,26 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     if (r != RS_OK) return r;
     xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
     xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
-    M.run = run;
-    M.R = R;
-    M.x[0] = xs[0];
-    M.x[1] = xs[1];
-    M.F = rs_model_cosim(run->m, run->err);
-    r = M.F != NULL ? RS_OK : run->err->code;
-    if (r == RS_OK) {
-        /* the case's own errors (a parameter still symbolic, an equation not
-         * linear) at their place, before any point runs */
-        rs_cosim_t cs;
-        rs_cosim_init(cs, 1, 1);
-        r = cosim_map_build(cs, &M, 0, run->err);
-        rs_cosim_clear(cs);
-    }
-    if (r == RS_OK) {
-        m.point = cosim_map_point;
-        m.model = &M;
-        m.serial = 0;       /* a point only reads the forms (their context included) */
-        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
-    }
+    r = cosim_grid_init(&M, &m, run, R, xs[0], xs[1]);
+    if (r == RS_OK) r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
+}
+
+int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_request_t *R, const fmpq *vals)
+{
+    cosim_map_t *M = flint_malloc(sizeof *M);
+    int r = cosim_grid_init(M, m, run, R, vals, NULL);
+    if (r != RS_OK) {
+        flint_free(M);
+        m->model = NULL;
+    }
+    return r;
+}
+
+void rs_cosim_sweep_model_free(rs_sweep_model_t *m)
+{
+    flint_free(m->model);
+    m->model = NULL;
 }

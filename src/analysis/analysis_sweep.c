@@ -46,6 +46,9 @@ static void sweep_row(FILE *f, const rs_sweep_row_t *p, int of, slong nref)
     int c;
     if (of == RS_SWEEP_OF_STABILITY) {
         if (p->d.verdict < 0) fprintf(f, "undefined,-1,,,,%s\n", "exact");
+        /* a model with numerics only (exact integration) has no exact counts */
+        else if (p->inside < 0) fprintf(f, "%s,%d,,,,%s\n", rs_sweep_verdict_name(p->d.verdict), p->d.verdict,
+                                        rs_sweep_level_names[p->d.level]);
         else fprintf(f, "%s,%d,%d,%d,%d,%s\n", rs_sweep_verdict_name(p->d.verdict), p->d.verdict, p->inside,
                      p->on, p->outside, rs_sweep_level_names[p->d.level]);
         return;
@@ -132,29 +135,34 @@ int rs_sweep_variant(rs_variant_t **v, rs_run_t *run, const rs_sweep_request_t *
 int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     slong K = R->axis[0].count, npoints = K + 1, lo = 0, hi = 0, i;
-    rs_variant_t *v;
+    rs_variant_t *v = NULL;
     rs_sweep_poly_t *J = NULL;
     rs_sweep_model_t m;
     rs_sweep_row_t *rows = NULL;
     fmpq *vals;
     double t0 = rs_sweep_now();
     char what[120];
+    int cosim = run->m->kind == RS_MODEL_COSIM;
     int r = rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep");
-    if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
+    if (r == RS_OK && !cosim) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;
     vals = _fmpq_vec_init(npoints);
     for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
-    r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) &vals, npoints);
+    /* the model kind supplies the point: the equations, or exact integration */
+    m.model = NULL;
+    if (cosim) r = rs_cosim_sweep_model_new(&m, run, R, vals);
+    else r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) &vals, npoints);
     if (r == RS_OK) {
-        rs_sweep_poly_model(&m, J);
+        if (!cosim) rs_sweep_poly_model(&m, J);
         snprintf(what, sizeof what, "sweep %s", R->axis[0].name);
         r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, R->axis[0].name);
     }
     if (r == RS_OK)
-        json_array_append_new(run->results, sweep_json(run, q, R, vals, rows, lo, hi, rs_sweep_poly_nref(J),
+        json_array_append_new(run->results, sweep_json(run, q, R, vals, rows, lo, hi, cosim ? 0 : rs_sweep_poly_nref(J),
                                                        rs_sweep_now() - t0));
     rs_sweep_rows_free(rows, hi - lo);
     rs_sweep_poly_free(J);
+    if (cosim) rs_cosim_sweep_model_free(&m);
     _fmpq_vec_clear(vals, npoints);
     return r;
 }

@@ -135,6 +135,14 @@ const char *rs_sweep_verdict_name(int code);
 void rs_sweep_put_fmpq(FILE *f, const fmpq_t x);          /* exact: p/q */
 void rs_sweep_put_double_of(FILE *f, const fmpq_t x);     /* %.15g */
 
+/* ---- the model of exact integration (analysis_cosim.c) ------------------------------ */
+
+/* The co-simulation model of a sweep over vals[0 .. K] (read, not copied):
+ * m->model allocated (rs_cosim_sweep_model_free), or an error in run->err
+ * at its place in the case (forms not built, a parameter still symbolic). */
+int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_request_t *R, const fmpq *vals);
+void rs_cosim_sweep_model_free(rs_sweep_model_t *m);
+
 /* ---- the model of the equations (sweep_poly.c) ------------------------------------- */
 
 /* the variant at every set value but the request's axes (analysis_sweep.c) */

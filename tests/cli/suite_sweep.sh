@@ -183,6 +183,54 @@ if [ "$codes" = "undecided,4 unstable,2 " ]; then ok "cosim map codes: undecided
 "$RS" --set d1=0 --set ac21=2 --set acc1=0 --set adc1=0 --analyse radius "$DD" 2>&1 | grep -q 'verdict *undecided' \
     && ok "the single point agrees: undecided" || fail "single point at the undecided map point"
 
+# exact-integration sweep: with the coupling off (acc1 = adc1 = 0) the two
+# subsystems are the damped oscillators x'' = -c1 x - d1 x' and (ac21 = 2)
+# x'' = -2 c1 x - d1 x', whose exact one-step maps have eigenvalues
+# exp((-d1/2 +- i sqrt(c c1 - d1^2/4)) H), c = 1, 2, H = 1 (distinct: with
+# ac21 = 1 they coincide and cannot be isolated).  So the radius is
+# exp(-d1/2) by hand (c1 = 101/100 > d1^2/4 for d1 <= 2),
+# checked against awk's exp(): inside the certified interval at every d1 of
+# the sweep; d1 = 0 lies exactly on the circle: undecided (4), the rest stable
+"$RS" --csv "$T/lisw.csv" --set acc1=0 --set adc1=0 --set ac21=2 --analyse "sweep d1 from 0 to 2 steps 4" "$LI" >/dev/null 2>"$T/err"; rc=$?
+check_exit "cosim sweep exit" 0 "$rc"
+grep -v '^#\|^index' "$T/lisw.csv" | while IFS=, read -r idx x xe rad lo hi verdict code by; do
+    if awk -v x="$x" -v l="$lo" -v h="$hi" 'BEGIN { r = exp(-x / 2); exit !(r >= l * (1 - 1e-15) && r <= h * (1 + 1e-15)) }' \
+        && { { [ "$idx" = 0 ] && [ "$code" = 4 ]; } || { [ "$idx" != 0 ] && [ "$code" = 0 ]; }; } && [ "$by" = certified ]; then :
+    else echo "row $idx: d1 = $x [$lo, $hi] $verdict $code $by"; fi
+done >"$T/lisw.diff"
+rows=$(grep -vc '^#\|^index' "$T/lisw.csv")
+if [ "$rows" = 5 ] && [ ! -s "$T/lisw.diff" ]; then ok "cosim sweep d1: radius exp(-d1/2) in every certified interval, d1 = 0 undecided"
+else fail "cosim sweep d1 ($rows rows): $(cat "$T/lisw.diff" "$T/err")"; fi
+# coupled (acc1 from 0 to 3): every point is the single-point radius analysis
+# at that acc1 (inside the row's interval, same verdict), shards merge into
+# the full CSV, `of stability` has the verdicts and no exact counts
+SW="sweep acc1 from 0 to 3 steps 6"
+"$RS" --csv "$T/lisw2.csv" --analyse "$SW" "$LI" >/dev/null 2>"$T/err" || fail "cosim sweep: $(cat "$T/err")"
+grep -v '^#\|^index' "$T/lisw2.csv" | while IFS=, read -r idx x xe rad lo hi verdict code by; do
+    "$RS" --json --set "acc1=$xe" --analyse radius "$LI" >"$T/pt.json" 2>>"$T/err"
+    rho=$(sed -n 's/.*"rho": "\(.*\)".*/\1/p' "$T/pt.json" | head -1)
+    st=$(sed -n 's/.*"status": "\(.*\)".*/\1/p' "$T/pt.json" | head -1)
+    if awk -v r="$rho" -v l="$lo" -v h="$hi" 'BEGIN { exit !(r + 0 >= l * (1 - 1e-15) && r + 0 <= h * (1 + 1e-15)) }' \
+        && [ "$st" = "$verdict" ]; then :; else echo "row $idx: sweep $verdict [$lo, $hi], point $st $rho"; fi
+done >"$T/lisw2.diff"
+if [ ! -s "$T/lisw2.diff" ] && grep -q ',stable,0,' "$T/lisw2.csv" && grep -q ',unstable,2,' "$T/lisw2.csv"; then
+    ok "cosim sweep acc1: every point agrees with the single-point radius (stable and unstable)"
+else fail "cosim sweep acc1: $(cat "$T/lisw2.diff")"; fi
+"$RS" --shard 1/2 --csv "$T/lisw-1.csv" --analyse "$SW" "$LI" >/dev/null 2>&1
+"$RS" --shard 2/2 --csv "$T/lisw-2.csv" --analyse "$SW" "$LI" >/dev/null 2>&1
+merge "$T/lisw-1.csv" "$T/lisw-2.csv" >"$T/lisw-m.csv"
+if [ "$(grep -vc '^#\|^index' "$T/lisw-1.csv")" -lt 7 ] && cmp -s "$T/lisw-m.csv" "$T/lisw2.csv"; then ok "cosim sweep --shard 1/2, 2/2 merge into the full sweep"
+else fail "cosim sweep shards: $(diff "$T/lisw-m.csv" "$T/lisw2.csv" | head -3)"; fi
+"$RS" --csv "$T/lisw3.csv" --analyse "$SW of stability" "$LI" >/dev/null 2>"$T/err"
+got=$(grep -v '^#\|^index' "$T/lisw3.csv" | cut -d, -f4-9 | sort | uniq -c | tr -s ' ' | tr '\n' ';')
+exp=$(grep -v '^#\|^index' "$T/lisw2.csv" | awk -F, '{print $7 "," $8 ",,,," $9}' | sort | uniq -c | tr -s ' ' | tr '\n' ';')
+if [ -n "$got" ] && [ "$got" = "$exp" ]; then ok "cosim sweep of stability: the radius sweep's verdicts, counts empty"
+else fail "cosim sweep of stability: '$got' vs '$exp'"; fi
+"$RS" --analyse "$SW of modes reference=1" "$LI" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "cosim sweep of modes exit" 2 "$rc"
+if grep -q "expected radius or stability after 'of', found 'modes'" "$T/err" && [ ! -s "$T/out" ]; then ok "cosim sweep of modes: refused, nothing on stdout"
+else fail "cosim sweep of modes: $(cat "$T/err")"; fi
+
 # MPI: same CSV with 2 and 3 ranks (make mpi builds $BUILD/recstab-mpi)
 if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
     MPIOPT="--oversubscribe"
