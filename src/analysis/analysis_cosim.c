@@ -219,6 +219,15 @@ static int cosim_map_build(rs_cosim_t cs, const cosim_map_t *M, slong idx, rs_er
     return r;
 }
 
+/* the certified radius (6 digits) at the point, or its best certified
+ * enclosure when the eigenvalues cannot be isolated */
+static int cosim_point_radius(rs_radius_t rr, const rs_cosim_t cs, slong max_prec, rs_error_t err)
+{
+    int r = rs_cosim_radius(rr, cs, 6, max_prec, err);
+    if (r == RS_ERR_UNDECIDED && arb_is_finite(rr->lower) && arb_is_finite(rr->upper)) r = RS_OK;
+    return r;
+}
+
 /* the model's callback: the verdict the certified radius gives (6 digits),
  * the radius cells from its balls (bounds rounded outward, 17 digits) */
 static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t err)
@@ -233,7 +242,10 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     rs_cosim_init(cs, 1, 1);
     rs_radius_init(rr);
     row->d.status = cosim_map_build(cs, M, idx, err);
-    if (row->d.status == RS_OK && rs_cosim_radius(rr, cs, 6, max_prec, err) == RS_OK) {
+    /* RS_ERR_UNDECIDED (eigenvalues not isolated, e.g. two equal subsystems'
+     * repeated eigenvalues): the enclosure certified so far still decides
+     * when it excludes 1, else the point is undecided -- not undefined */
+    if (row->d.status == RS_OK && cosim_point_radius(rr, cs, max_prec, err) == RS_OK) {
         arb_t one;
         char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
              *hi = rs_radius_str_upper(rr->upper, 17);

@@ -184,23 +184,27 @@ if [ "$codes" = "undecided,4 unstable,2 " ]; then ok "cosim map codes: undecided
     && ok "the single point agrees: undecided" || fail "single point at the undecided map point"
 
 # exact-integration sweep: with the coupling off (acc1 = adc1 = 0) the two
-# subsystems are the damped oscillators x'' = -c1 x - d1 x' and (ac21 = 2)
-# x'' = -2 c1 x - d1 x', whose exact one-step maps have eigenvalues
-# exp((-d1/2 +- i sqrt(c c1 - d1^2/4)) H), c = 1, 2, H = 1 (distinct: with
-# ac21 = 1 they coincide and cannot be isolated).  So the radius is
-# exp(-d1/2) by hand (c1 = 101/100 > d1^2/4 for d1 <= 2),
-# checked against awk's exp(): inside the certified interval at every d1 of
-# the sweep; d1 = 0 lies exactly on the circle: undecided (4), the rest stable
-"$RS" --csv "$T/lisw.csv" --set acc1=0 --set adc1=0 --set ac21=2 --analyse "sweep d1 from 0 to 2 steps 4" "$LI" >/dev/null 2>"$T/err"; rc=$?
-check_exit "cosim sweep exit" 0 "$rc"
-grep -v '^#\|^index' "$T/lisw.csv" | while IFS=, read -r idx x xe rad lo hi verdict code by; do
-    if awk -v x="$x" -v l="$lo" -v h="$hi" 'BEGIN { r = exp(-x / 2); exit !(r >= l * (1 - 1e-15) && r <= h * (1 + 1e-15)) }' \
-        && { { [ "$idx" = 0 ] && [ "$code" = 4 ]; } || { [ "$idx" != 0 ] && [ "$code" = 0 ]; }; } && [ "$by" = certified ]; then :
-    else echo "row $idx: d1 = $x [$lo, $hi] $verdict $code $by"; fi
-done >"$T/lisw.diff"
-rows=$(grep -vc '^#\|^index' "$T/lisw.csv")
-if [ "$rows" = 5 ] && [ ! -s "$T/lisw.diff" ]; then ok "cosim sweep d1: radius exp(-d1/2) in every certified interval, d1 = 0 undecided"
-else fail "cosim sweep d1 ($rows rows): $(cat "$T/lisw.diff" "$T/err")"; fi
+# subsystems are the damped oscillators x'' = -c1 x - d1 x' and
+# x'' = -ac21 c1 x - d1 x', whose exact one-step maps have eigenvalues
+# exp((-d1/2 +- i sqrt(c c1 - d1^2/4)) H), c = 1, ac21, H = 1.  So the radius
+# is exp(-d1/2) by hand (c1 = 101/100 > d1^2/4 for d1 <= 2), checked against
+# awk's exp(): inside the certified interval at every d1 of the sweep;
+# d1 = 0 lies exactly on the circle: undecided (4), the rest stable.  With
+# ac21 = 1 the eigenvalues are double (equal subsystems) and cannot be
+# isolated: the enclosure certified so far still decides (not "undefined")
+for AC in 2 1; do
+    "$RS" --csv "$T/lisw.csv" --set acc1=0 --set adc1=0 --set ac21=$AC --analyse "sweep d1 from 0 to 2 steps 4" "$LI" \
+        >/dev/null 2>"$T/err"; rc=$?
+    check_exit "cosim sweep ac21=$AC exit" 0 "$rc"
+    grep -v '^#\|^index' "$T/lisw.csv" | while IFS=, read -r idx x xe rad lo hi verdict code by; do
+        if awk -v x="$x" -v l="$lo" -v h="$hi" 'BEGIN { r = exp(-x / 2); exit !(r >= l * (1 - 1e-15) && r <= h * (1 + 1e-15)) }' \
+            && { { [ "$idx" = 0 ] && [ "$code" = 4 ]; } || { [ "$idx" != 0 ] && [ "$code" = 0 ]; }; } && [ "$by" = certified ]; then :
+        else echo "row $idx: d1 = $x [$lo, $hi] $verdict $code $by"; fi
+    done >"$T/lisw.diff"
+    rows=$(grep -vc '^#\|^index' "$T/lisw.csv")
+    if [ "$rows" = 5 ] && [ ! -s "$T/lisw.diff" ]; then ok "cosim sweep d1, ac21 = $AC: radius exp(-d1/2) in every certified interval, d1 = 0 undecided"
+    else fail "cosim sweep d1, ac21 = $AC ($rows rows): $(cat "$T/lisw.diff" "$T/err")"; fi
+done
 # coupled (acc1 from 0 to 3): every point is the single-point radius analysis
 # at that acc1 (inside the row's interval, same verdict), shards merge into
 # the full CSV, `of stability` has the verdicts and no exact counts
