@@ -21,6 +21,50 @@ static int eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs
     return r;
 }
 
+/* "h", "modes", "spurious", "note" of o from the certified roots rr (every
+ * model kind: the equations' p, the co-simulation's one-step map) */
+void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_t *refs, slong nref, slong prec,
+                      slong digits)
+{
+    /* principal roots: for each reference w0, the root with Im >= 0 closest to
+     * exp(i w0 h) and its conjugate; every other root is spurious */
+    int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
+    json_t *modes, *spur;
+    slong i;
+    rs_modes_principal(principal, rr, h, (arb_srcptr) refs, nref, prec);
+    json_object_set_new(o, "h", rs_json_arb(h, digits));
+    modes = json_array();
+    spur = json_array();
+    for (i = 0; i < rr->nroots; i++) {
+        json_t *m = json_object();
+        arb_t sig, om, mag, xi, err;
+        arb_init(sig); arb_init(om); arb_init(mag); arb_init(xi); arb_init(err);
+        json_object_set_new(m, "root", rs_json_acb(rr->roots + i, digits));
+        if (acb_is_zero(rr->roots + i)) {
+            json_object_set_new(m, "note", json_string("root at 0: no continuous equivalent"));
+        } else {
+            rs_modes_continuous(sig, om, mag, xi, rr->roots + i, h, prec);
+            json_object_set_new(m, "sigma", rs_json_arb(sig, digits));
+            json_object_set_new(m, "omega", rs_json_arb(om, digits));
+            json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
+            if (principal[i]) {
+                arb_sub(err, mag, refs[principal[i] - 1], prec);
+                arb_div(err, err, refs[principal[i] - 1], prec);
+                json_object_set_new(m, "reference", rs_json_arb(refs[principal[i] - 1], digits));
+                json_object_set_new(m, "frequency_error", rs_json_arb(err, digits));
+            }
+        }
+        json_array_append_new((principal[i] || nref == 0) ? modes : spur, m);
+        arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(xi); arb_clear(err);
+    }
+    json_object_set_new(o, "modes", modes);
+    json_object_set_new(o, "spurious", spur);
+    json_object_set_new(o, "note", json_string(
+        "lambda_c = ln(lambda)/h = sigma +- i omega (principal logarithm); damping ratio = -sigma/|lambda_c|; "
+        "frequency error = (|lambda_c| - omega0)/omega0 for the principal roots of each reference omega0"));
+    free(principal);
+}
+
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -31,8 +75,7 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     const char *hs;
     arb_t h, *refs = NULL;
     slong nref = 0, i, prec = 128, digits = 15;
-    int *principal;
-    json_t *o, *modes, *spur;
+    json_t *o;
     int r;
     r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
@@ -74,46 +117,12 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
         fmpz_poly_clear(p);
         return r;
     }
-    /* principal roots: for each reference w0, the root with Im >= 0 closest to
-     * exp(i w0 h) and its conjugate; every other root is spurious */
-    principal = calloc((size_t) rr->nroots + 1, sizeof(int));
-    rs_modes_principal(principal, rr, h, (arb_srcptr) refs, nref, prec);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("modes"));
-    json_object_set_new(o, "h", rs_json_arb(h, digits));
-    modes = json_array();
-    spur = json_array();
-    for (i = 0; i < rr->nroots; i++) {
-        json_t *m = json_object();
-        arb_t sig, om, mag, xi, err;
-        arb_init(sig); arb_init(om); arb_init(mag); arb_init(xi); arb_init(err);
-        json_object_set_new(m, "root", rs_json_acb(rr->roots + i, digits));
-        if (acb_is_zero(rr->roots + i)) {
-            json_object_set_new(m, "note", json_string("root at 0: no continuous equivalent"));
-        } else {
-            rs_modes_continuous(sig, om, mag, xi, rr->roots + i, h, prec);
-            json_object_set_new(m, "sigma", rs_json_arb(sig, digits));
-            json_object_set_new(m, "omega", rs_json_arb(om, digits));
-            json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
-            if (principal[i]) {
-                arb_sub(err, mag, refs[principal[i] - 1], prec);
-                arb_div(err, err, refs[principal[i] - 1], prec);
-                json_object_set_new(m, "reference", rs_json_arb(refs[principal[i] - 1], digits));
-                json_object_set_new(m, "frequency_error", rs_json_arb(err, digits));
-            }
-        }
-        json_array_append_new((principal[i] || nref == 0) ? modes : spur, m);
-        arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(xi); arb_clear(err);
-    }
-    json_object_set_new(o, "modes", modes);
-    json_object_set_new(o, "spurious", spur);
-    json_object_set_new(o, "note", json_string(
-        "lambda_c = ln(lambda)/h = sigma +- i omega (principal logarithm); damping ratio = -sigma/|lambda_c|; "
-        "frequency error = (|lambda_c| - omega0)/omega0 for the principal roots of each reference omega0"));
+    rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
     json_object_set_new(o, "decided_by", json_string("certified"));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
     json_array_append_new(run->results, o);
-    free(principal);
     for (i = 0; i < nref; i++) arb_clear(refs[i]);
     free(refs);
     arb_clear(h);

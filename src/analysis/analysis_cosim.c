@@ -8,6 +8,7 @@
 #include <string.h>
 #include <flint/fmpq_vec.h>
 #include "analysis/impl.h"
+#include "analysis/registry.h"
 #include "analysis/sweep_impl.h"
 #include "numeric/grid.h"
 #include "lower/cosim_model.h"
@@ -322,4 +323,112 @@ void rs_cosim_sweep_model_free(rs_sweep_model_t *m)
 {
     flint_free(m->model);
     m->model = NULL;
+}
+
+/* ---- modes: the eigenvalues of the one-step map as continuous modes ----------------------- */
+
+/* A request expression (h=, reference=) at the case's set values, through
+ * the forms' context (its first variables are the case's parameters). */
+static int cosim_eval_number(arb_t out, rs_run_t *run, const rs_request_t *q, const rs_cosim_model_struct *F,
+                             const char *text, slong prec)
+{
+    const fmpq_mpoly_ctx_struct *ctx = F->ts->ctx;
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t num, den;
+    rs_cosim_vals_t vals;
+    size_t pos = (size_t) (text - q->text);
+    slong k;
+    int r;
+    rs_req_src(&src, q);
+    r = rs_expr_parse(&e, &src, &pos, run->err);
+    if (r != RS_OK) return r;
+    fmpq_mpoly_init(num, ctx);
+    fmpq_mpoly_init(den, ctx);
+    r = rs_scheme_eval_poly(num, den, F->ts, F->tc, e, 0, run->err);
+    rs_expr_free(e);
+    rs_cosim_vals_make(&vals, run->c, NULL, NULL, 0);
+    for (k = 0; k < vals.n && r == RS_OK; k++) {
+        slong v = rs_case_param_index(F->tc, vals.v[k].name);
+        fmpq_mpoly_evaluate_one_fmpq(num, num, v, vals.v[k].value, ctx);
+        fmpq_mpoly_evaluate_one_fmpq(den, den, v, vals.v[k].value, ctx);
+    }
+    flint_free(vals.v);
+    if (r == RS_OK && (!fmpq_mpoly_is_fmpq(num, ctx) || !fmpq_mpoly_is_fmpq(den, ctx) || fmpq_mpoly_is_zero(den, ctx)))
+        r = rs_req_error(run, q, text, RS_ERR_INPUT, "expected a value of set parameters, found '%s'", text);
+    if (r == RS_OK) {
+        fmpq_t a, b;
+        fmpq_init(a);
+        fmpq_init(b);
+        fmpq_mpoly_get_fmpq(a, num, ctx);
+        fmpq_mpoly_get_fmpq(b, den, ctx);
+        fmpq_div(a, a, b);
+        arb_set_fmpq(out, a, prec);
+        fmpq_clear(a);
+        fmpq_clear(b);
+    }
+    fmpq_mpoly_clear(num, ctx);
+    fmpq_mpoly_clear(den, ctx);
+    return r;
+}
+
+/* modes [h=EXPR] [reference=EXPR[,EXPR]]: the modes element of the
+ * equations (an_modes.c) over the certified eigenvalues of the one-step map
+ * (30 digits); h defaults to the macro step H, the step of that map */
+int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const rs_optval_t *o_h = rs_an_opt(req, "h"), *o_ref = rs_an_opt(req, "reference");
+    const rs_cosim_model_struct *F = rs_model_cosim(run->m, run->err);
+    rs_cosim_vals_t vals;
+    rs_cosim_t cs;
+    rs_radius_t rr;
+    arb_t h, *refs = NULL;
+    slong nref = 0, i, prec = 128, digits = 15;
+    int r;
+    json_t *o;
+    if (F == NULL) return run->err->code;
+    rs_cosim_init(cs, 1, 1);
+    rs_radius_init(rr);
+    arb_init(h);
+    rs_cosim_vals_make(&vals, run->c, NULL, NULL, 0);
+    r = cosim_at(cs, F, run->c, &vals, run->err);
+    flint_free(vals.v);
+    if (r == RS_OK) {
+        arb_set_fmpq(h, cs->H, prec);
+        if (o_h->val != NULL) {
+            r = cosim_eval_number(h, run, q, F, o_h->val, prec);
+            /* ln(lambda)/h: a step must be positive */
+            if (r == RS_OK && !arb_is_positive(h))
+                r = rs_req_error(run, q, o_h->val, RS_ERR_INPUT, "expected a time step h > 0, found '%s'", o_h->val);
+        }
+    }
+    if (r == RS_OK && o_ref->nlist > 0) {
+        refs = calloc((size_t) o_ref->nlist, sizeof(arb_t));
+        for (i = 0; i < o_ref->nlist && r == RS_OK; i++) {
+            arb_init(refs[nref]);
+            r = cosim_eval_number(refs[nref], run, q, F, o_ref->list[i], prec);
+            nref++;
+        }
+    }
+    if (r == RS_OK) {
+        r = rs_cosim_radius(rr, cs, 30, run->opt->max_prec, run->err);
+        if (r != RS_OK) r = rs_req_relocate(run, q, r, "modes");
+    }
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("modes"));
+        json_object_set_new(o, "method", json_string("exact subsystem integration (matrix exponentials, Arb), "
+                                                     "certified eigenvalues of the one-step map"));
+        rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
+        json_object_set_new(o, "decided_by", json_string("certified"));
+        json_object_set_new(o, "substituted", rs_json_sets(run->c));
+        json_array_append_new(run->results, o);
+    }
+    for (i = 0; i < nref; i++) arb_clear(refs[i]);
+    free(refs);
+    arb_clear(h);
+    rs_radius_clear(rr);
+    rs_cosim_clear(cs);
+    return r;
 }

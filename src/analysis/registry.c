@@ -30,6 +30,12 @@ static const rs_opt_spec_t modes_opts[] = {
     {"h", RS_OPT_EXPR, 0, 0, NULL, "EXPR", "1"},
     {NULL, 0, 0, 0, NULL, NULL, NULL}
 };
+/* exact integration: the one-step map spans the macro step H */
+static const rs_opt_spec_t cosim_modes_opts[] = {
+    {"reference", RS_OPT_EXPRS, 0, 0, NULL, "EXPR", "none"},
+    {"h", RS_OPT_EXPR, 0, 0, NULL, "EXPR", "H"},
+    {NULL, 0, 0, 0, NULL, NULL, NULL}
+};
 static const rs_opt_spec_t simulate_opts[] = {
     {"steps", RS_OPT_INTEGER, 1, RS_SIMULATE_MAX_STEPS, NULL, "N", "1000"},
     {"seed", RS_OPT_INTEGER, 0, 1000000000, NULL, "S", "1"},
@@ -125,6 +131,9 @@ const rs_an_def_t rs_an_registry[] = {
      NULL, NULL, rs_an_numeric_radius, 0},
     {"stability", NULL, NUM, "", digits_opts, "the verdict from the certified spectral radius",
      NULL, NULL, rs_an_numeric_stability, 0},
+    {"modes", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "", cosim_modes_opts,
+     "for each eigenvalue of the one-step map: ln(lambda)/h, damping ratio, relative frequency error",
+     NULL, NULL, rs_an_cosim_modes, 0},
     {"sweep", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B steps K [log] [of radius|stability]", NULL,
      "verdicts from the certified radius on a grid of one parameter", cosim_sweep_parse, sweep_req_clear, run_sweep, 0},
     {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,

@@ -142,6 +142,12 @@ int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const 
 void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const fmpq_t x, const fmpz_mpoly_ctx_t ctx);
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
+/* "h", "modes", "spurious", "note" of a modes element o from the certified
+ * roots rr at time step h, references refs[0 .. nref) (an_modes.c) */
+void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_t *refs, slong nref, slong prec,
+                      slong digits);
+/* modes of an exactly integrated co-simulation (analysis_cosim.c) */
+int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
 /* radius and stability of numeric recurrences and co-simulations (an_radius.c) */
 int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req);

@@ -235,6 +235,25 @@ check_exit "cosim sweep of modes exit" 2 "$rc"
 if grep -q "expected radius or stability after 'of', found 'modes'" "$T/err" && [ ! -s "$T/out" ]; then ok "cosim sweep of modes: refused, nothing on stdout"
 else fail "cosim sweep of modes: $(cat "$T/err")"; fi
 
+# modes of an exactly integrated co-simulation: in Li's symmetric model the
+# in-phase motion x1 = x2, v1 = v2 never loads the coupling (lc = 0 at every
+# macro step, extrapolated or not), so it is the uncoupled oscillator's mode
+# by hand: lambda_c = -d1/2 +- i sqrt(c1 - d1^2/4) = -1/10 +- i at c1 = 101/100,
+# d1 = 1/5; damping ratio 0.1/sqrt(1.01), frequency error sqrt(1.01) - 1 for
+# reference=1 (awk), h = the macro step H = 1 by default
+"$RS" --json --analyse "modes reference=1" "$LI" >"$T/limodes.json" 2>"$T/err"; rc=$?
+check_exit "cosim modes exit" 0 "$rc"
+tr -d ' \n' <"$T/limodes.json" | sed 's/.*"modes":\[\(.*\)\],"spurious".*/\1/' | tr '}' '\n' \
+    | sed -n 's/.*"sigma":"\([^"]*\)","omega":"\([^"]*\)","damping_ratio":"\([^"]*\)","reference":"1","frequency_error":"\([^"]*\)".*/\1 \2 \3 \4/p' >"$T/limodes.txt"
+if [ "$(wc -l <"$T/limodes.txt")" = 2 ] && awk 'function ok(a, b) { return (a - b < 1e-14 && b - a < 1e-14) }
+    { if (!(ok($1, -0.1) && ok($2 * $2, 1) && ok($3, 0.1 / sqrt(1.01)) && ok($4, sqrt(1.01) - 1))) bad = 1 }
+    END { exit bad }' "$T/limodes.txt" && grep -q '"h": "1"' "$T/limodes.json"; then
+    ok "cosim modes: the in-phase mode -1/10 +- i, damping 0.1/sqrt(1.01), frequency error sqrt(1.01) - 1"
+else fail "cosim modes: $(cat "$T/limodes.txt" "$T/err")"; fi
+"$RS" --analyse "modes h=0" "$LI" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "cosim modes h=0 exit" 2 "$rc"
+grep -q "expected a time step h > 0, found '0'" "$T/err" && [ ! -s "$T/out" ] && ok "cosim modes h=0: refused" || fail "cosim modes h=0: $(cat "$T/err")"
+
 # MPI: same CSV with 2 and 3 ranks (make mpi builds $BUILD/recstab-mpi)
 if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
     MPIOPT="--oversubscribe"
