@@ -200,7 +200,7 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
     json_t *o;
     int r;
     rs_cosim_init(cs, 1, 1);
-    r = rs_cosim_from_case(cs, run->c, run->err);
+    r = rs_run_cosim(cs, run);
     if (r != RS_OK) { rs_cosim_clear(cs); return r; }
     rs_radius_init(rr);
     rs_radius_init(rm);

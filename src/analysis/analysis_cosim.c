@@ -188,6 +188,20 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
     return r;
 }
 
+/* The co-simulation of the run's model at the case's set values (the forms
+ * the run lowered once; rs_cosim_from_case builds its own). */
+int rs_run_cosim(rs_cosim_t cs, rs_run_t *run)
+{
+    const rs_cosim_model_struct *F = rs_model_cosim(run->m, run->err);
+    rs_cosim_vals_t vals;
+    int r;
+    if (F == NULL) return run->err->code;
+    rs_cosim_vals_make(&vals, run->c, NULL, NULL, 0);
+    r = cosim_at(cs, F, run->c, &vals, run->err);
+    flint_free(vals.v);
+    return r;
+}
+
 /* ---- sweep and map: the model kind "exact integration" of the sweep engine ------------------ */
 
 /* sweep NAME from A to B steps K [log] [of radius|stability] and

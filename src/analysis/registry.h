@@ -8,6 +8,7 @@
 
 #include "analysis/impl.h"
 #include "recstab/model.h"
+#include "recstab/cosim.h"
 
 /* A set of the model kinds of model.h (RS_MODEL_EQUATIONS: difference
  * equations, `char`, polynomial recurrences; RS_MODEL_RECURRENCE: matrix
@@ -148,6 +149,8 @@ void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_
                       slong digits);
 /* modes of an exactly integrated co-simulation (analysis_cosim.c) */
 int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req);
+/* the run's co-simulation at the case's set values, from the forms lowered once */
+int rs_run_cosim(rs_cosim_t cs, rs_run_t *run);
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
 /* radius and stability of numeric recurrences and co-simulations (an_radius.c) */
 int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req);
