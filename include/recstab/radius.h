@@ -143,6 +143,15 @@ int rs_radius_matrix_poly(rs_radius_t r, const acb_mat_struct *A, slong k,
  * off during the call and restored (not thread-safe). */
 int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
 
+/* Uncertified approximations of the d roots of a[0] + ... + a[d] x^d
+ * (double coefficients, a[0] != 0 != a[d]) into z (2d doubles: re, im):
+ * Aberth-Ehrlich iterations in double (Gauss-Seidel updates) from Bini's
+ * Newton-polygon starting points, at most maxiter sweeps; a root stops when
+ * |p(z)| is within the rounding error of its evaluation.  Returns the sweeps
+ * used, or -1 when some root did not get there (z is filled anyway).
+ * src/numeric/aberth.c; the certified routes only use z as seeds. */
+int rs_radius_aberth_d(double *z, const double *a, slong d, slong maxiter);
+
 /* arb_fmpz_poly_complex_roots (f squarefree, same root order) solved on
  * f(2^s mu) when the roots' magnitudes are far from 1 (2^s their geometric
  * mean, |s| >= 32), which keeps extreme coefficients from taking hours. */

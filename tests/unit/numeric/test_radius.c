@@ -11,6 +11,7 @@
  *   (3l-1)^2 (2l+1) rho = 1/2;  (10^10 l - (10^10-1))^6 (2l-1): 1 - 10^-10
  *   10^80 l^2 - 1   rho = 10^-40
  *   prod_{k=1..40} (41 l - k): 40/41;  prod_{k=0..39} (2^20 l - 2^k): 2^19
+ *   lambda^n - c    every root has modulus c^(1/n)
  *   matrix recurrences: eigenvalues of a 2x2 matrix by the quadratic formula,
  *   and the determinant of a 2x2 polynomial matrix computed with fmpz_poly.
  */
@@ -804,6 +805,105 @@ static void test_dense_degree12(void **state)
     fmpz_poly_clear(p);
 }
 
+/* lambda^n - c: every root has modulus c^(1/n) (closed form), the n roots
+ * c^(1/n) e^(2 pi i k/n) are spaced 2 c^(1/n) sin(pi/n) apart. */
+static void test_aberth_binomial(void **state)
+{
+    static const slong nc[3][2] = { { 7, 3 }, { 150, 2 }, { 500, 5 } };
+    int t;
+    (void) state;
+    for (t = 0; t < 3; t++) {
+        slong n = nc[t][0], i, j;
+        double *a = flint_calloc(n + 1, sizeof(double));
+        double *z = flint_malloc(2 * n * sizeof(double));
+        double rho = pow((double) nc[t][1], 1.0 / (double) n);
+        double gap = 2 * rho * sin(3.141592653589793 / (double) n);
+        a[0] = -(double) nc[t][1];
+        a[n] = 1;
+        assert_true(rs_radius_aberth_d(z, a, n, 100) >= 0);
+        for (i = 0; i < n; i++) {
+            assert_true(fabs(hypot(z[2 * i], z[2 * i + 1]) - rho) <= 1e-12 * rho);
+            for (j = 0; j < i; j++) /* n distinct roots: each found once */
+                assert_true(hypot(z[2 * i] - z[2 * j], z[2 * i + 1] - z[2 * j + 1]) > gap / 2);
+        }
+        flint_free(a);
+        flint_free(z);
+    }
+}
+
+/* lambda^200 - 3 and lambda^300 - 1/2 scaled (2 lambda^300 - 1): radius
+ * 3^(1/200), 2^(-1/300) (closed forms, arb_root_ui), at 30 and 128 digits
+ * (the second at 30 only) through the Aberth-seeded default route. */
+static void test_high_degree_binomial(void **state)
+{
+    fmpz_poly_t p;
+    arb_t truth;
+    slong digits[2] = { 30, 128 }, k;
+    (void) state;
+    fmpz_poly_init(p);
+    arb_init(truth);
+    for (k = 0; k < 2; k++) {
+        slong prec = truth_prec(digits[k]);
+        fmpz_poly_zero(p);
+        fmpz_poly_set_coeff_si(p, 0, -3);
+        fmpz_poly_set_coeff_si(p, 200, 1);
+        arb_set_ui(truth, 3);
+        arb_root_ui(truth, truth, 200, prec);
+        run_check(rs_radius_fmpz_poly, p, truth, digits[k]);
+        if (k > 0) /* 128 digits at degree 300: a second, keep check fast */
+            continue;
+        fmpz_poly_zero(p);
+        fmpz_poly_set_coeff_si(p, 0, -1);
+        fmpz_poly_set_coeff_si(p, 300, 2);
+        arb_set_ui(truth, 2);
+        arb_root_ui(truth, truth, 300, prec);
+        arb_inv(truth, truth, prec);
+        run_check(rs_radius_fmpz_poly, p, truth, digits[k]);
+    }
+    arb_clear(truth);
+    fmpz_poly_clear(p);
+}
+
+/* Degree 100, coefficients drawn uniformly from [-100, 100]
+ * (bench/radius_highdeg.sh, awk srand(100)), c_0 first.  Reference radius
+ * from mpmath 1.3.0 at 60 digits:
+ *   mpmath.mp.dps = 60; r = mpmath.polyroots(c[::-1], maxsteps=400,
+ *   extraprec=400); mpmath.nstr(max(abs(z) for z in r), 45)
+ * = 1.27236328894060322414207260929988041492729486 (45 digits, +-1 in the
+ * last); checked at 40 digits. */
+static void test_random_degree100(void **state)
+{
+    static const slong c[101] = {
+        -37,-43,-52,-3,-25,-90,14,94,3,-14,-18,-70,17,26,23,-18,-79,75,-47,24,34
+        ,-29,-59,7,-23,69,77,-8,30,55,-1,94,-89,48,-10,-13,58,-96,-19,-39,-10,63
+        ,-9,-93,-11,-86,-10,10,89,43,-66,23,-86,-24,-71,-9,-55,-94,84,75,61,-18,
+        69,72,-70,-42,-42,89,-38,39,-51,53,2,41,60,91,55,-51,0,43,92,35,-35,-95,
+        -90,-5,-3,-45,1,-20,-70,-39,63,99,-67,93,-43,-8,81,19,-69
+    };
+    fmpz_poly_t p;
+    rs_radius_t r;
+    rs_error_t err;
+    arb_t truth;
+    int i;
+    (void) state;
+    fmpz_poly_init(p);
+    arb_init(truth);
+    rs_radius_init(r);
+    rs_error_init(err);
+    for (i = 0; i <= 100; i++)
+        fmpz_poly_set_coeff_si(p, i, c[i]);
+    arb_set_str(truth, "1.27236328894060322414207260929988041492729486 +/- 2e-44", 200);
+    assert_int_equal(rs_radius_fmpz_poly(r, p, 40, 0, err), RS_OK);
+    assert_true(arb_overlaps(r->rho, truth));
+    assert_true(arb_le(r->lower, r->upper));
+    /* the certified interval is 40 digits wide at most and meets the
+     * reference ball */
+    assert_true(!arb_lt(r->upper, truth) && !arb_gt(r->lower, truth));
+    rs_radius_clear(r);
+    arb_clear(truth);
+    fmpz_poly_clear(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -828,6 +928,9 @@ int main(void)
         cmocka_unit_test(test_matrix_first_order),
         cmocka_unit_test(test_matrix_second_order),
         cmocka_unit_test(test_dense_degree12),
+        cmocka_unit_test(test_aberth_binomial),
+        cmocka_unit_test(test_high_degree_binomial),
+        cmocka_unit_test(test_random_degree100),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
