@@ -865,7 +865,7 @@ static void test_high_degree_binomial(void **state)
 }
 
 /* Degree 100, coefficients drawn uniformly from [-100, 100]
- * (bench/radius_highdeg.sh, awk srand(100)), c_0 first.  Reference radius
+ * (bench/radius_highdeg.sh, mawk 1.3.4 srand(100)), c_0 first.  Reference radius
  * from mpmath 1.3.0 at 60 digits:
  *   mpmath.mp.dps = 60; r = mpmath.polyroots(c[::-1], maxsteps=400,
  *   extraprec=400); mpmath.nstr(max(abs(z) for z in r), 45)
