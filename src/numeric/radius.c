@@ -402,12 +402,13 @@ static void _rs_sqf_clear(_rs_sqf_struct *s)
 static int _rs_radius_to_double(double *a, const fmpz_poly_t q, rs_error_t err);
 static int _rs_radius_gsl_solve(double *z, const double *a, slong d);
 
-/* Enclosures of the roots of one squarefree factor f (deg d) into E. */
-typedef int (*_rs_factor_roots_fn)(acb_ptr E, const fmpz_poly_t f, slong prec);
+/* Enclosures of the roots of one squarefree factor f (deg d) into E at
+ * precision *wp; *wp is raised to the highest working precision used. */
+typedef int (*_rs_factor_roots_fn)(acb_ptr E, const fmpz_poly_t f, slong *wp);
 
-static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong prec)
+static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong *wp)
 {
-    slong d = fmpz_poly_degree(f);
+    slong d = fmpz_poly_degree(f), prec = *wp;
     acb_poly_t P;
     acb_mat_t C, R;
     acb_ptr Eapp;
@@ -456,22 +457,23 @@ static slong _rs_radius_rescale(fmpz_poly_t g, const fmpz_poly_t f)
  * coefficients fit in double and GSL converges); certified when all d
  * output balls are isolated (then each holds exactly one root); otherwise
  * arb_fmpz_poly_complex_roots (certified, always isolates) at target prec. */
-static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
+static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp)
 {
-    slong d = fmpz_poly_degree(f0), i, n, sc;
+    slong d = fmpz_poly_degree(f0), i, n, sc, prec = *wp;
     acb_poly_t P;
     acb_ptr init = NULL;
     double *a, *z;
     fmpz_poly_t f;
 
     if (d == 1)
-        return _rs_factor_roots_companion(E, f0, prec);
+        return _rs_factor_roots_companion(E, f0, wp);
     /* Arb's Durand-Kerner + validation lose about d/2 bits at high degree
      * whatever the precision (measured: d = 100, 200, 300 lose 56, 106,
      * 152 bits; bench/README.md): working at prec + d/2 there certifies
      * in one pass instead of failing at prec and redoing all at 2 prec */
     if (d > 64)
         prec += d / 2;
+    *wp = prec;
     fmpz_poly_init(f);
     sc = _rs_radius_rescale(f, f0);
     a = flint_malloc((d + 1) * sizeof(double));
@@ -527,6 +529,7 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
             if (init == NULL) init = _acb_vec_init(d);
             for (i = 0; i < d; i++) acb_get_mid(init + i, E + i);
             if (p2 != prec) acb_poly_set_fmpz_poly(P, f, p2);
+            *wp = p2;
             n = acb_poly_find_roots(E, P, init, 64, p2);
         }
     }
@@ -541,9 +544,9 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong prec)
     return n == d ? RS_EIG_SIMPLE : RS_EIG_FAIL;
 }
 
-static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong prec)
+static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong *wp)
 {
-    rs_radius_complex_roots(E, f, prec);
+    rs_radius_complex_roots(E, f, *wp);
     return RS_EIG_SIMPLE;
 }
 
@@ -562,7 +565,10 @@ static int _rs_sqf_roots(rs_radius_t r, const _rs_sqf_struct *s,
         const fmpz_poly_struct *f = s->fac->p + i;
         slong d = fmpz_poly_degree(f), e = s->fac->exp[i];
         acb_ptr E = _acb_vec_init(d);
-        int status = fn(E, f, prec);
+        slong w = prec;
+        int status = fn(E, f, &w);
+        if (w > r->prec)
+            r->prec = w;
         if (status < worst)
             worst = status;
         if (status != RS_EIG_FAIL) {
