@@ -85,7 +85,11 @@ int rs_radius_fmpz_poly(rs_radius_t r, const fmpz_poly_t p, slong digits,
  *   32 iterations; when that does not isolate all roots (bad seeds) or
  *   leaves one with fewer than prec - 40 accurate bits (ill-conditioned), the
  *   factor goes to arb_fmpz_poly_complex_roots.  Start at
- *   ceil(digits*log2(10)) + 32 bits.  The default route (fastest).
+ *   ceil(digits*log2(10)) + 32 bits.  Above degree 64 the seeds come from
+ *   rs_radius_aberth_d (GSL as fallback), Arb works at prec + d/2 and an
+ *   evaluation-limited result is redone once at a precision covering the
+ *   measured loss; r->prec reports the highest precision used.  The
+ *   default route (fastest).
  * _companion: companion matrix (acb_mat_companion), acb_mat_approx_eig_qr,
  *   acb_mat_eig_simple (fallback acb_mat_eig_multiple_rump: cluster balls,
  *   isolated = 0), same start precision.  Slowest (the QR step dominates).
