@@ -10,6 +10,7 @@
 #include <string.h>
 #include <flint/fmpz_poly.h>
 #include <flint/fmpz_mat.h>
+#include <flint/fmpq_mat.h>
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include "recstab/hurwitz.h"
@@ -1101,6 +1102,195 @@ test_degree12(void **state)
     tctx_clear(&t);
 }
 
+/* ------------------------------------------------------------------ */
+/* the N-mass chain of issue 17                                        */
+
+/* det of the m x m matrix M (row-major) by cofactor expansion along the
+ * first row: independent of the module's Routh/Bareiss routes. */
+static void
+mpoly_det(fmpz_mpoly_t det, const fmpz_mpoly_struct *M, slong m,
+          const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_struct *S;
+    fmpz_mpoly_t minor, t;
+    slong c, i, j, k;
+
+    if (m == 1) {
+        fmpz_mpoly_set(det, M, ctx);
+        return;
+    }
+    S = flint_malloc((m - 1) * (m - 1) * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i < (m - 1) * (m - 1); i++)
+        fmpz_mpoly_init(S + i, ctx);
+    fmpz_mpoly_init(minor, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_zero(det, ctx);
+    for (c = 0; c < m; c++) {
+        if (fmpz_mpoly_is_zero(M + c, ctx))
+            continue;
+        for (i = 1; i < m; i++)
+            for (j = 0, k = 0; j < m; j++)
+                if (j != c)
+                    fmpz_mpoly_set(S + (i - 1) * (m - 1) + k++, M + i * m + j,
+                                   ctx);
+        mpoly_det(minor, S, m - 1, ctx);
+        fmpz_mpoly_mul(t, M + c, minor, ctx);
+        if (c % 2)
+            fmpz_mpoly_sub(det, det, t, ctx);
+        else
+            fmpz_mpoly_add(det, det, t, ctx);
+    }
+    for (i = 0; i < (m - 1) * (m - 1); i++)
+        fmpz_mpoly_clear(S + i, ctx);
+    flint_free(S);
+    fmpz_mpoly_clear(minor, ctx);
+    fmpz_mpoly_clear(t, ctx);
+}
+
+/* Variables c, k1..kN, z (z last).  The chain of bench/make_chain_case.sh:
+ * unit masses, x'' + c x' + K x = 0 with K the stiffness matrix (spring i
+ * between masses i-1 and i, mass 0 the wall): K_ii = k_i + k_{i+1} (no
+ * k_{N+1}), K_{i,i+1} = K_{i+1,i} = -k_{i+1}.  The trapezoidal rule
+ * (lambda - 1) x = (lambda + 1) v / 2, the same for v and a, under
+ * lambda = (1+z)/(1-z) gives v = 2z x, a = 2z v (by hand), so
+ * q(z) = det(4 z^2 I + 2 c z I + K) up to a constant factor. */
+static void
+chain_q(fmpz_mpoly_t q, slong N, const tctx_struct *t)
+{
+    fmpz_mpoly_struct *M = flint_malloc(N * N * sizeof(fmpz_mpoly_struct));
+    char buf[128];
+    slong i, j;
+
+    for (i = 0; i < N; i++)
+        for (j = 0; j < N; j++) {
+            fmpz_mpoly_init(M + i * N + j, t->ctx);
+            if (i == j && i + 1 < N)
+                snprintf(buf, sizeof(buf), "4*z^2 + 2*c*z + k%ld + k%ld",
+                         (long) i + 1, (long) i + 2);
+            else if (i == j)
+                snprintf(buf, sizeof(buf), "4*z^2 + 2*c*z + k%ld",
+                         (long) i + 1);
+            else if (j == i + 1 || i == j + 1)
+                snprintf(buf, sizeof(buf), "-k%ld",
+                         (long) (i > j ? i : j) + 1);
+            else
+                continue;
+            set_str(M + i * N + j, buf, t);
+        }
+    mpoly_det(q, M, N, t->ctx);
+    for (i = 0; i < N * N; i++)
+        fmpz_mpoly_clear(M + i, t->ctx);
+    flint_free(M);
+}
+
+/* Exact verdict at a point: the chain is modally decoupled into
+ * 4 z^2 + 2 c z + mu for the eigenvalues mu of the symmetric K, whose roots
+ * have Re z < 0 iff c > 0 and mu > 0; so stable iff c > 0 and K is positive
+ * definite, i.e. (Sylvester) every leading principal minor of K is > 0,
+ * computed here with fmpq_mat_det.  Returns 1 stable, 0 not, -1 on the
+ * boundary (c = 0 or a minor 0). */
+static int
+chain_verdict(fmpq *const *vals, slong N)
+{
+    fmpq_mat_t K;
+    fmpq_t d;
+    slong i, m;
+    int r = 1;
+
+    if (fmpq_sgn(vals[0]) == 0)
+        return -1;
+    if (fmpq_sgn(vals[0]) < 0)
+        r = 0;
+    fmpq_init(d);
+    for (m = 1; m <= N && r != -1; m++) {
+        fmpq_mat_init(K, m, m);
+        for (i = 0; i < m; i++) {
+            fmpq_set(fmpq_mat_entry(K, i, i), vals[1 + i]);
+            if (i + 1 < N)
+                fmpq_add(fmpq_mat_entry(K, i, i), fmpq_mat_entry(K, i, i),
+                         vals[2 + i]);
+            if (i + 1 < m) {
+                fmpq_neg(fmpq_mat_entry(K, i, i + 1), vals[2 + i]);
+                fmpq_neg(fmpq_mat_entry(K, i + 1, i), vals[2 + i]);
+            }
+        }
+        fmpq_mat_det(d, K);
+        if (fmpq_sgn(d) == 0)
+            r = -1;
+        else if (fmpq_sgn(d) < 0 && r == 1)
+            r = 0;
+        fmpq_mat_clear(K);
+    }
+    fmpq_clear(d);
+    return r;
+}
+
+/* Chains of 2 and 3 masses: every minor against the Laplace expansion (the
+ * module's route, Routh rows up to n-1 and D_n = a_0 D_{n-1}, against an
+ * independent determinant), and the stated conditions (no sign
+ * assumptions: both branches) at random rational points against the
+ * exact modal verdict above. */
+static void
+test_chain(void **state)
+{
+    const char *vars3[] = {"c", "k1", "k2", "k3", "z"};
+    const char *vars2[] = {"c", "k1", "k2", "z"};
+    slong N;
+    (void) state;
+
+    rng_state = 1717;
+    for (N = 2; N <= 3; N++) {
+        tctx_struct t;
+        fmpz_mpoly_t q;
+        rs_hurwitz_or_t hb;
+        rs_error_t err;
+        fmpq **vals;
+        slong nv = N + 2, i, trial, agree = 0, stable = 0, b;
+
+        tctx_init(&t, N == 2 ? vars2 : vars3, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        rs_hurwitz_or_init(hb);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        assert_int_equal(rs_hurwitz_or_compute(hb, q, nv - 1, 2 * N, NULL,
+                                               t.ctx, err), RS_OK);
+        for (b = 0; b < hb->nbranch; b++) {
+            assert_int_equal(hb->branch[b].n, 2 * N);
+            check_minors_laplace(hb->branch + b, t.ctx);
+        }
+        vals = flint_malloc(nv * sizeof(fmpq *));
+        for (i = 0; i < nv; i++) {
+            vals[i] = flint_malloc(sizeof(fmpq));
+            fmpq_init(vals[i]);
+        }
+        for (trial = 0; trial < 200; trial++) {
+            int want, got;
+            /* mostly positive values, some negative (K indefinite or
+             * c < 0): both verdicts occur */
+            for (i = 0; i + 1 < nv; i++)
+                fmpq_set_si(vals[i], rng_range(-3, 12) | 1, rng_range(1, 5));
+            want = chain_verdict(vals, N);
+            got = rs_hurwitz_or_holds(hb, vals, t.ctx);
+            if (want < 0 || got < 0)
+                continue;
+            assert_int_equal(got, want);
+            agree++;
+            stable += want;
+        }
+        print_message("N=%ld: %ld points, %ld stable\n", (long) N, (long) agree, (long) stable);
+        assert_true(agree >= 150);
+        assert_true(stable >= 30 && agree - stable >= 30);
+        for (i = 0; i < nv; i++) {
+            fmpq_clear(vals[i]);
+            flint_free(vals[i]);
+        }
+        flint_free(vals);
+        rs_hurwitz_or_clear(hb, t.ctx);
+        fmpz_mpoly_clear(q, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
 int
 main(void)
 {
@@ -1119,6 +1309,7 @@ main(void)
         cmocka_unit_test(test_numeric_vs_roots),
         cmocka_unit_test(test_numeric_axis_roots),
         cmocka_unit_test(test_degree12),
+        cmocka_unit_test(test_chain),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
