@@ -35,6 +35,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpz_vec.h>
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 
@@ -289,6 +290,43 @@ _row_estimate(const fmpz_mpoly_struct *r0, const fmpz_mpoly_struct *r1,
     return s;
 }
 
+/* Integer content of the row r[0..len-1] (1 for a zero row) into g. */
+static void
+_row_content(fmpz_t g, const fmpz_mpoly_struct *r, slong len)
+{
+    slong j;
+    fmpz_zero(g);
+    for (j = 0; j < len; j++)
+        _fmpz_vec_content_chained(g, r[j].coeffs, r[j].length, g);
+    if (fmpz_is_zero(g))
+        fmpz_one(g);
+}
+
+/* r[j] /= g for the row r[0..len-1]; scale *= g. */
+static void
+_row_split_content(fmpz_mpoly_struct *r, slong len, fmpq_t scale,
+                   const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_t g;
+    slong j;
+    fmpz_init(g);
+    _row_content(g, r, len);
+    if (!fmpz_is_one(g))
+        for (j = 0; j < len; j++)
+            fmpz_mpoly_scalar_divexact_fmpz(r + j, r + j, g, ctx);
+    fmpq_mul_fmpz(scale, scale, g);
+    fmpz_clear(g);
+}
+
+/* D = scale * r, where the product has integer coefficients. */
+static void
+_scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
+            const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_scalar_mul_fmpz(D, r, fmpq_numref(scale), ctx);
+    fmpz_mpoly_scalar_divexact_fmpz(D, D, fmpq_denref(scale), ctx);
+}
+
 /* Fraction-free Routh scheme (the Hurwitz-structured form of Bareiss's
  * elimination).  Rows R_0 = (a_n, a_{n-2}, ...), R_1 = (a_{n-1}, a_{n-3},
  * ...), and for m >= 2
@@ -297,7 +335,15 @@ _row_estimate(const fmpz_mpoly_struct *r0, const fmpz_mpoly_struct *r1,
  * classical Routh row m scaled by D_{m-1}; its entries are bordered minors
  * of H, so the division is exact as an identity between polynomials in
  * independent a_i, and it stays exact after specialisation as long as the
- * divisor is not identically zero.)  Computes D_1..D_m (m < n) into D and
+ * divisor is not identically zero.)
+ * Each row is stored as R_m = s_m S_m with s_m rational and S_m of integer
+ * content 1: the products then run on S (for the bilinear q of a 5-mass
+ * chain the contents are powers of 2 up to 2^135 on 160-bit coefficients,
+ * issue 17), and S_m[j] = (S_{m-1}[0] S_{m-2}[j+1] - S_{m-2}[0]
+ * S_{m-1}[j+1]) / pp(d_m) up to the integer content, exact over Z by
+ * Gauss's lemma (pp: primitive part), with s_m = s_{m-1} s_{m-2} g /
+ * cont(d_m) for the content g split off; D_m = s_m S_m[0] exactly.
+ * Computes D_1..D_m (m < n) into D and
  * returns m; row n is never formed: its only entry D_n = a_0 D_{n-1} is one
  * cheap product, while the recursion's would be the largest of all (about
  * half the time for a 5-mass chain, issue 17).  It
@@ -312,22 +358,33 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
     slong len = n / 2 + 2, m, j, done;
     fmpz_mpoly_struct *R = flint_malloc(3 * len * sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_struct *r0 = R, *r1 = R + len, *r2 = R + 2 * len, *tmp;
-    fmpz_mpoly_t t, u;
+    fmpz_mpoly_t t, u, pd;
+    fmpq_t s0, s1, s2;
+    fmpz_t cd;
     int ok = 1;
 
     for (j = 0; j < 3 * len; j++)
         fmpz_mpoly_init(R + j, ctx);
     fmpz_mpoly_init(t, ctx);
     fmpz_mpoly_init(u, ctx);
+    fmpz_mpoly_init(pd, ctx);
+    fmpq_init(s0);
+    fmpq_init(s1);
+    fmpq_init(s2);
+    fmpz_init(cd);
     for (j = 0; 2 * j <= n; j++)
         fmpz_mpoly_set(r0 + j, a + n - 2 * j, ctx);
     for (j = 0; 2 * j + 1 <= n; j++)
         fmpz_mpoly_set(r1 + j, a + n - 2 * j - 1, ctx);
     fmpz_mpoly_set(D + 0, r1 + 0, ctx);
+    fmpq_one(s0);
+    fmpq_one(s1);
+    _row_split_content(r0, len, s0, ctx);
+    _row_split_content(r1, len, s1, ctx);
     done = 1;
 
-    for (m = 2; m <= n; m++) {
-        /* r0 = R_{m-2}, r1 = R_{m-1}; row m into r2 */
+    for (m = 2; m < n; m++) {
+        /* r0 = S_{m-2}, r1 = S_{m-1}; row m into r2 */
         const fmpz_mpoly_struct *d = (m >= 4) ? D + (m - 4) : NULL;
         if (d != NULL && fmpz_mpoly_is_zero(d, ctx))
             break;
@@ -335,6 +392,11 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                                      _row_estimate(r0, r1, len), 0.0);
         if (*status != RS_OK)
             break;
+        fmpz_one(cd);
+        if (d != NULL) {
+            _fmpz_vec_content(cd, d->coeffs, d->length);
+            fmpz_mpoly_scalar_divexact_fmpz(pd, d, cd, ctx);
+        }
         for (j = 0; j + 1 < len && ok; j++) {
             /* one product can take seconds: stop between them */
             if ((*status = rs_budget_check(err, "the Hurwitz minors")) != RS_OK)
@@ -345,18 +407,28 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
             if (d == NULL)
                 fmpz_mpoly_swap(r2 + j, t, ctx);
             else
-                ok = fmpz_mpoly_divides(r2 + j, t, d, ctx);
+                ok = fmpz_mpoly_divides(r2 + j, t, pd, ctx);
         }
         if (!ok || *status != RS_OK)
             break;
         fmpz_mpoly_zero(r2 + len - 1, ctx);
-        fmpz_mpoly_set(D + m - 1, r2 + 0, ctx);
+        fmpq_mul(s2, s0, s1);
+        fmpq_div_fmpz(s2, s2, cd);
+        _row_split_content(r2, len, s2, ctx);
+        _scaled_set(D + m - 1, r2 + 0, s2, ctx);
         done = m;
         tmp = r0; r0 = r1; r1 = r2; r2 = tmp;
+        fmpq_swap(s0, s1);
+        fmpq_swap(s1, s2);
     }
 
     fmpz_mpoly_clear(t, ctx);
     fmpz_mpoly_clear(u, ctx);
+    fmpz_mpoly_clear(pd, ctx);
+    fmpq_clear(s0);
+    fmpq_clear(s1);
+    fmpq_clear(s2);
+    fmpz_clear(cd);
     for (j = 0; j < 3 * len; j++)
         fmpz_mpoly_clear(R + j, ctx);
     flint_free(R);
