@@ -16,23 +16,15 @@
 #include "recstab/scheme.h"
 #include "lower/recurrence.h"
 
-typedef struct { char *s; size_t len, cap; } buf_t;
+/* the deep print goes to a memory stream (POSIX open_memstream) */
+typedef struct { FILE *f; char *s; size_t len; } buf_t;
 
 static void put(buf_t *b, const char *fmt, ...)
 {
     va_list ap;
-    int n;
     va_start(ap, fmt);
-    n = vsnprintf(NULL, 0, fmt, ap);
+    vfprintf(b->f, fmt, ap);
     va_end(ap);
-    if (b->len + (size_t) n + 1 > b->cap) {
-        b->cap = 2 * (b->len + (size_t) n + 1);
-        b->s = realloc(b->s, b->cap);
-    }
-    va_start(ap, fmt);
-    vsnprintf(b->s + b->len, (size_t) n + 1, fmt, ap);
-    va_end(ap);
-    b->len += (size_t) n;
 }
 
 static void put_loc(buf_t *b, const rs_loc_t *l)
@@ -67,7 +59,8 @@ static void put_name(buf_t *b, const rs_name_t *n)
 /* a deep print of every field of the case */
 static char *case_dump(const rs_case_t c)
 {
-    buf_t b = {NULL, 0, 0};
+    buf_t b = {NULL, NULL, 0};
+    b.f = open_memstream(&b.s, &b.len);
     slong i, k;
     put(&b, "path %s title %s\n", c->path, c->title ? c->title : "-");
     put(&b, "params %ld:", (long) c->nparams);
@@ -152,6 +145,7 @@ static char *case_dump(const rs_case_t c)
     put(&b, "files %ld:", (long) c->nfiles);
     for (i = 0; i < c->nfiles; i++) put(&b, " %s", c->files[i]);
     put(&b, "\n");
+    fclose(b.f);
     return b.s;
 }
 
