@@ -654,15 +654,17 @@ typedef struct {
 static int status_at(rs_status_t *st, rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t)
 {
     rs_rootcount_t rc;
-    fmpz_poly_t u;
-    int r;
-    fmpz_poly_init(u);
-    eval_at(u, v->cp->p, tv, t, v->s);
-    r = fmpz_poly_is_zero(u) ? RS_ERR_MATH : RS_OK;
-    fmpz_poly_clear(u);
-    if (r != RS_OK) return r;
-    r = rs_run_point_status(st, rc, run, v, &tv, t, 1);
+    int r = rs_run_point_status(st, rc, run, v, &tv, t, 1);
     rs_rootcount_clear(rc);
+    if (r == RS_OK && *st == RS_STATUS_SINGULAR) {
+        /* singular also where p vanishes identically: that one is an error
+         * (evaluated only here, not at every point) */
+        fmpz_poly_t u;
+        fmpz_poly_init(u);
+        eval_at(u, v->cp->p, tv, t, v->s);
+        if (fmpz_poly_is_zero(u)) r = RS_ERR_MATH;
+        fmpz_poly_clear(u);
+    }
     return r;
 }
 
