@@ -37,7 +37,7 @@ public_stage() {
     charpoly|cond) echo algebra ;;
     bilinear|routh|hurwitz|jury|rootcount|semisimple) echo stability ;;
     radius|cosim|ladder) echo numeric ;;
-    analysis|sweep) echo analysis ;;      # sweep.h: src/analysis/analysis_sweep.c
+    analysis|sweep|api) echo analysis ;;     # sweep.h: src/analysis/analysis_sweep.c
     report|derivation|recstab) echo render ;;
     *) echo unknown ;;
     esac

@@ -26,5 +26,6 @@
 #include "recstab/analysis.h"
 #include "recstab/report.h"
 #include "recstab/derivation.h"
+#include "recstab/api.h"
 
 #endif

@@ -18,6 +18,7 @@
 #include <mpi.h>
 #endif
 #include "recstab/analysis.h"
+#include "recstab/api.h"
 #include "recstab/sweep.h"
 #include "plot.h"
 #include "recstab/casefile.h"
@@ -113,12 +114,6 @@ static void raise_stack_limit(void)
     if (getrlimit(RLIMIT_STACK, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY || rl.rlim_cur >= want) return;
     rl.rlim_cur = (rl.rlim_max == RLIM_INFINITY || rl.rlim_max > want) ? want : rl.rlim_max;
     setrlimit(RLIMIT_STACK, &rl);
-}
-
-static int exit_code_for(int code)
-{
-    /* an internal error is a bug, like two methods disagreeing */
-    return (code == RS_ERR_INCONSISTENT || code == RS_ERR_INTERNAL) ? 3 : 2;
 }
 
 /* Checks the --csv / --plot targets before any work and starts the signal
@@ -313,72 +308,31 @@ static void sweep_setup(cli_t *cli)
     if (cli->rank == 0 && isatty(2)) cli->opt.sweep.progress = progress;
 }
 
-/* The case's requests replaced by the --analyse ones. */
-static void replace_requests(rs_case_t c, const cli_t *cli)
-{
-    int k;
-    rs_case_clear_requests(c);
-    for (k = 0; k < cli->nanalyses; k++) {
-        const char *t = cli->analyses[k];
-        char *line;
-        while (*t == ' ') t++;
-        line = malloc(strlen(t) + 1);
-        strcpy(line, t);
-        if (strncmp(line, "analyse ", 8) == 0 || strncmp(line, "analyze ", 8) == 0)
-            memmove(line, line + 8, strlen(line + 8) + 1);
-        rs_case_add_request(c, line, "--analyse", 0, 0);
-        free(line);
-    }
-}
-
-/* One case: parsed, --set and --analyse applied, then its equations
- * (--emit) or its analyses appended to docs; 0, or the exit status after
- * printing the error.  *worst: the worst outcome so far (exit 1 or 3). */
+/* One case run by the library's driver (--set, --analyse, --emit applied)
+ * and its document appended to docs; 0, or the exit status after printing
+ * the error.  *worst: the worst outcome so far (exit 1 or 3). */
 static int run_case(const cli_t *cli, const char *path, json_t *docs, double t0, int *worst)
 {
-    rs_case_t c;
+    rs_run_options_t ro;
     rs_error_t err;
     json_t *doc = NULL;
-    int outcome = 0, r, k;
-    rs_case_init(c);
+    int outcome = 0, r;
+    ro.sets = cli->sets;
+    ro.nsets = cli->nsets;
+    ro.analyses = cli->analyses;
+    ro.nanalyses = cli->nanalyses;
+    ro.emit = cli->emit;
+    ro.opt = cli->opt;
+    ro.opt.time_spent = mono_seconds() - t0;
     rs_error_init(err);
-    r = rs_case_parse_file(c, path, err);
-    for (k = 0; r == RS_OK && k < cli->nsets; k++)
-        r = rs_case_set_value(c, cli->sets[k], err);
-    if (r == RS_OK && cli->nanalyses > 0) replace_requests(c, cli);
-    if (r == RS_OK && cli->emit) {
-        rs_model_t m;
-        rs_model_init(m);
-        r = rs_model_lower(m, c, err);
-        if (r == RS_OK) {
-            json_t *e = json_object();
-            char *shown = rs_utf8_escape(path), *eqs;
-            json_object_set_new(e, "case", json_string(shown));
-            flint_free(shown);
-            eqs = rs_model_emit_equations(m);
-            json_object_set_new(e, "equations", json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
-            flint_free(eqs);
-            json_array_append_new(docs, e);
-            rs_model_clear(m);
-            rs_case_clear(c);
-            return 0;
-        }
-        rs_model_clear(m);
-    }
-    if (r == RS_OK) {
-        rs_options_t o = cli->opt;
-        o.time_spent = mono_seconds() - t0;
-        r = rs_analysis_run(&doc, &outcome, c, &o, err);
-    }
-    rs_case_clear(c);
+    r = rs_run_case(&doc, &outcome, path, NULL, &ro, err);
     if (r != RS_OK) {
         char msg[2 * RS_ERROR_MSG_LEN];
         rs_error_format(msg, sizeof msg, err);
         fprintf(stderr, "recstab: %s\n", msg);
-        return exit_code_for(r);
+        return rs_run_exit_status(r, 0, 0);
     }
-    if (outcome & RS_OUTCOME_INCONSISTENT) *worst = 3;
-    else if ((outcome & RS_OUTCOME_FAILED) && *worst == 0) *worst = 1;
+    *worst = rs_run_exit_status(RS_OK, outcome, *worst);
     json_array_append_new(docs, doc);
     return 0;
 }
@@ -394,8 +348,7 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
                     json_string_value(json_object_get(e, "equations")));
         }
     } else if (cli->json) {
-        json_t *top = (cli->ncases == 1) ? json_incref(json_array_get(docs, 0))
-                                         : json_pack("{s:O}", "cases", docs);
+        json_t *top = rs_run_json_document(docs, cli->ncases);
         json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
         fputc('\n', out);
         json_decref(top);

@@ -1,0 +1,69 @@
+/* api.h -- running a whole case: the one-call API and the driver that the
+ * recstab command runs too (src/analysis/driver.c), so that the command and
+ * the API produce the same document and the same exit status. */
+#ifndef RECSTAB_API_H
+#define RECSTAB_API_H
+
+#include <jansson.h>
+#include "recstab/error.h"
+#include "recstab/analysis.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What the command line adds to a case: --set values, --analyse requests
+ * (replacing the case's own), --emit equations, and the run's options. */
+typedef struct {
+    const char *const *sets;      /* "NAME=VALUE" each, like --set */
+    int nsets;
+    const char *const *analyses;  /* "ANALYSIS [OPTIONS]", "expect ...", "claim ...", like --analyse */
+    int nanalyses;
+    int emit;                     /* 1: {"case", "equations"} instead of the analyses */
+    rs_options_t opt;             /* rs_options_default, then changed as needed */
+} rs_run_options_t;
+
+/* Defaults: no --set, the case's own requests, the command's option defaults. */
+void rs_run_options_default(rs_run_options_t *ro);
+
+/* One case, from its text (text != NULL; path names it in messages and
+ * locates its includes) or read from path ("-": stdin), with ro applied:
+ * RS_OK and *doc the case's JSON document (*outcome: RS_OUTCOME_* bits), or
+ * an error code with err filled and *doc NULL.  Never prints. */
+int rs_run_case(json_t **doc, int *outcome, const char *path, const char *text,
+                const rs_run_options_t *ro, rs_error_t err);
+
+/* The exit status of the command: 2 for an error code (3 for
+ * RS_ERR_INCONSISTENT and RS_ERR_INTERNAL), else from the outcome bits
+ * (1 a claim or expectation failed, 3 two methods disagreed, 0 done),
+ * never better than worst (the status of earlier cases, 0 for none). */
+int rs_run_exit_status(int code, int outcome, int worst);
+
+/* The document `recstab --json` prints for the documents of ncases cases
+ * (a JSON array docs): one case's document alone, {"cases": [...]} for
+ * several.  A new reference. */
+json_t *rs_run_json_document(json_t *docs, int ncases);
+
+/* The one-call API: runs case_text (named source_name in messages, includes
+ * relative to it; NULL: "<string>") exactly as `recstab --json` would and
+ * returns the command's exit status, 0 done, 1 a claim or expectation
+ * failed, 2 bad input or a limit, 3 two of recstab's methods disagree.
+ * *json receives the document as the command prints it (free it with
+ * rs_free); on status 2 and errors without a document (and 3 from an
+ * internal error), {"error": {"code", "message", "file", "line", "col"}}
+ * with the message the command prints on stderr.  *json is NULL only when
+ * memory ran out or json is NULL. */
+int rs_analyse_json(const char *case_text, const char *source_name, char **json);
+
+/* rs_analyse_json with --set, --analyse and the options of ro (NULL: the
+ * defaults). */
+int rs_analyse_json_opt(const char *case_text, const char *source_name,
+                        const rs_run_options_t *ro, char **json);
+
+/* Frees what the library returned to the caller (rs_analyse_json's *json). */
+void rs_free(void *p);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,162 @@
+/* driver.c -- one case run as the command runs it (--set, --analyse,
+ * --emit, the run's options), the exit status and the --json document;
+ * and the one-call API over them.  The recstab command calls these too,
+ * so the command and the API cannot drift apart. */
+#include <stdlib.h>
+#include <string.h>
+#include <jansson.h>
+#include <flint/flint.h>
+#include "recstab/api.h"
+#include "recstab/casefile.h"
+#include "recstab/model.h"
+#include "recstab/str.h"
+
+void rs_run_options_default(rs_run_options_t *ro)
+{
+    memset(ro, 0, sizeof *ro);
+    rs_options_default(&ro->opt);
+}
+
+/* The case's requests replaced by the --analyse ones (a leading
+ * "analyse "/"analyze " is dropped). */
+static void replace_requests(rs_case_t c, const rs_run_options_t *ro)
+{
+    int k;
+    rs_case_clear_requests(c);
+    for (k = 0; k < ro->nanalyses; k++) {
+        const char *t = ro->analyses[k];
+        while (*t == ' ') t++;
+        if (strncmp(t, "analyse ", 8) == 0 || strncmp(t, "analyze ", 8) == 0) t += 8;
+        rs_case_add_request(c, t, "--analyse", 0, 0);
+    }
+}
+
+/* --emit equations: {"case", "equations"} of the lowered model. */
+static int emit_doc(json_t **doc, const rs_case_t c, const char *path, rs_error_t err)
+{
+    rs_model_t m;
+    int r;
+    rs_model_init(m);
+    r = rs_model_lower(m, c, err);
+    if (r == RS_OK) {
+        char *shown = rs_utf8_escape(path), *eqs = rs_model_emit_equations(m);
+        *doc = json_object();
+        json_object_set_new(*doc, "case", json_string(shown));
+        json_object_set_new(*doc, "equations",
+                            json_string(eqs ? eqs : "# no builder statements: the case's own equations\n"));
+        flint_free(shown);
+        flint_free(eqs);
+    }
+    rs_model_clear(m);
+    return r;
+}
+
+int rs_run_case(json_t **doc, int *outcome, const char *path, const char *text,
+                const rs_run_options_t *ro, rs_error_t err)
+{
+    rs_case_t c;
+    int r, k;
+    *doc = NULL;
+    *outcome = 0;
+    rs_case_init(c);
+    r = text != NULL ? rs_case_parse_string(c, path, text, strlen(text), err)
+                     : rs_case_parse_file(c, path, err);
+    for (k = 0; r == RS_OK && k < ro->nsets; k++)
+        r = rs_case_set_value(c, ro->sets[k], err);
+    if (r == RS_OK && ro->nanalyses > 0) replace_requests(c, ro);
+    if (r == RS_OK && ro->emit) r = emit_doc(doc, c, path, err);
+    else if (r == RS_OK) r = rs_analysis_run(doc, outcome, c, &ro->opt, err);
+    rs_case_clear(c);
+    return r;
+}
+
+int rs_run_exit_status(int code, int outcome, int worst)
+{
+    /* an internal error is a bug, like two methods disagreeing */
+    if (code != RS_OK) return (code == RS_ERR_INCONSISTENT || code == RS_ERR_INTERNAL) ? 3 : 2;
+    if (outcome & RS_OUTCOME_INCONSISTENT) return 3;
+    if ((outcome & RS_OUTCOME_FAILED) && worst == 0) return 1;
+    return worst;
+}
+
+json_t *rs_run_json_document(json_t *docs, int ncases)
+{
+    return ncases == 1 ? json_incref(json_array_get(docs, 0)) : json_pack("{s:O}", "cases", docs);
+}
+
+/* {"error": {...}} for a run that ended with err (the command prints the
+ * formatted message on stderr). */
+static char *error_json(const rs_error_t err)
+{
+    char msg[2 * RS_ERROR_MSG_LEN];
+    json_t *e;
+    char *s;
+    rs_error_format(msg, sizeof msg, err);
+    e = json_pack("{s:{s:s,s:s,s:s,s:i,s:i}}", "error", "code", rs_error_code_name(err->code),
+                  "message", msg, "file", err->file, "line", err->line, "col", err->col);
+    if (e == NULL) /* the message or file name is not UTF-8 */
+        e = json_pack("{s:{s:s,s:s}}", "error", "code", rs_error_code_name(err->code),
+                      "message", "(a message that is not valid UTF-8)");
+    s = json_dumps(e, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
+    json_decref(e);
+    return s;
+}
+
+/* the document as the command prints it: indented, with a final newline */
+static char *dump_line(json_t *top)
+{
+    char *s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER), *line;
+    size_t n;
+    if (s == NULL) return NULL;
+    n = strlen(s);
+    line = realloc(s, n + 2);
+    if (line == NULL) {
+        free(s);
+        return NULL;
+    }
+    line[n] = '\n';
+    line[n + 1] = '\0';
+    return line;
+}
+
+int rs_analyse_json_opt(const char *case_text, const char *source_name,
+                        const rs_run_options_t *ro, char **json)
+{
+    rs_run_options_t dflt;
+    rs_error_t err;
+    json_t *doc = NULL, *docs, *top;
+    int outcome = 0, r, status;
+    char *out;
+    if (ro == NULL) {
+        rs_run_options_default(&dflt);
+        ro = &dflt;
+    }
+    if (source_name == NULL) source_name = "<string>";
+    rs_error_init(err);
+    if (case_text == NULL) r = rs_error_set(err, RS_ERR_INPUT, "no case text (NULL)");
+    else r = rs_run_case(&doc, &outcome, source_name, case_text, ro, err);
+    status = rs_run_exit_status(r, outcome, 0);
+    if (r != RS_OK) out = error_json(err);
+    else {
+        docs = json_array();
+        json_array_append_new(docs, doc);
+        top = rs_run_json_document(docs, 1);
+        out = dump_line(top);
+        json_decref(top);
+        json_decref(docs);
+    }
+    rs_error_clear(err);
+    if (json != NULL) *json = out;
+    else free(out);
+    return status;
+}
+
+int rs_analyse_json(const char *case_text, const char *source_name, char **json)
+{
+    return rs_analyse_json_opt(case_text, source_name, NULL, json);
+}
+
+void rs_free(void *p)
+{
+    free(p);
+}
