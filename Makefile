@@ -11,12 +11,32 @@ WARN    += -Wmissing-prototypes -Wstrict-prototypes -Wshadow
 WARN    += $(if $(findstring clang,$(CC)),,-Wno-stringop-overread)
 OPT     ?= -O2 -g
 SAN     ?=
-CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fopenmp -Iinclude -Isrc -I/usr/include/flint $(CFLAGS)
-LIBS    := -fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+# FLINT 3 (Arb is part of it; flint.pc, headers in include/flint/) when
+# pkg-config finds it, else Debian's FLINT 2.9 + Arb 2.23 (no .pc files)
+FLINT3  := $(shell pkg-config --atleast-version=3 flint 2>/dev/null && echo yes)
+ifeq ($(FLINT3),yes)
+FLINT_CFLAGS := $(shell pkg-config --cflags flint) -I$(shell pkg-config --variable=includedir flint)/flint
+FLINT_LIBS   := $(shell pkg-config --libs flint)
+else
+FLINT_CFLAGS := -I/usr/include/flint
+FLINT_LIBS   := -lflint-arb -lflint
+endif
+DEP_LIBS := $(FLINT_LIBS) -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+# -fPIC everywhere: the same objects make librecstab.a and librecstab.so
+CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fPIC -fopenmp -Iinclude -Isrc $(FLINT_CFLAGS) $(CFLAGS)
+LIBS    := -fopenmp $(DEP_LIBS)
 VERSION := 0.1.0
+SOVERSION := 0
+PYTHON  ?= python3
 
-DEB_PKGS := libflint-dev libflint-arb-dev libgsl-dev libgmp-dev libmpfr-dev \
-            libjansson-dev libcmocka-dev gnuplot-nox libclang-rt-14-dev clang valgrind
+# Debian packages `make deps` installs when missing, each with why (printed)
+DEB_WHY := \
+  libflint-dev:exact_polynomials,_FLINT libflint-arb-dev:certified_balls,_Arb \
+  libgsl-dev:the_double_root_finder_of_sweeps libgmp-dev:big_integers libmpfr-dev:the_floats_of_Arb \
+  libjansson-dev:JSON_documents libcmocka-dev:unit_tests gnuplot-nox:--plot \
+  libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz valgrind:make_check-valgrind \
+  python3-pytest:tests_of_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
+DEB_PKGS := $(foreach p,$(DEB_WHY),$(firstword $(subst :, ,$(p))))
 
 # MPI build (make mpi): installed by `make mpi` only, not by `make deps`
 MPI_PKGS := libopenmpi-dev openmpi-bin
@@ -30,7 +50,7 @@ TEST_SRC := $(sort $(wildcard tests/unit/*/test_*.c))
 # the installed headers, an explicit list; private headers live in src/<stage>/
 PUBLIC_HDRS := $(addprefix include/recstab/,recstab.h error.h budget.h str.h expr.h casefile.h \
                model.h scheme.h charpoly.h cond.h semisimple.h bilinear.h routh.h hurwitz.h jury.h \
-               rootcount.h radius.h cosim.h ladder.h sweep.h analysis.h report.h derivation.h)
+               rootcount.h radius.h cosim.h ladder.h sweep.h analysis.h report.h derivation.h api.h)
 HDRS     := $(wildcard include/recstab/*.h src/*/*.h)
 
 LIB_OBJ  := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
@@ -39,14 +59,19 @@ TEST_BIN := $(addprefix $(BUILD)/tests/,$(basename $(notdir $(TEST_SRC))))
 vpath test_%.c $(sort $(dir $(TEST_SRC)))
 
 LIBRS  := $(BUILD)/librecstab.a
+LIBSO_REAL := $(BUILD)/librecstab.so.$(VERSION)
+LIBSO  := $(BUILD)/librecstab.so
 BIN    := $(BUILD)/recstab
+EXAMPLE_BIN := $(patsubst examples/%.c,$(BUILD)/examples/%,$(sort $(wildcard examples/*.c)))
 
-.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers
+.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers examples
 
-all: $(LIBRS) $(BIN)
+all: $(LIBRS) $(LIBSO) $(BIN) $(BUILD)/recstab.pc
 
 # Install only the Debian packages that are missing (apt-get update first).
 deps:
+	@echo "make deps: Debian packages used (installed when missing):"; \
+	for w in $(DEB_WHY); do echo "  $${w%%:*}: $${w#*:}" | tr _ ' '; done
 	@missing=""; for p in $(DEB_PKGS); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
 	    || missing="$$missing $$p"; done; \
@@ -67,6 +92,28 @@ $(LIBRS): $(LIB_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 
+# the shared library: soname librecstab.so.$(SOVERSION), its dependencies
+# recorded (DT_NEEDED) so that -lrecstab alone links a program
+$(LIBSO_REAL): $(LIB_OBJ)
+	$(CC) -shared -Wl,-soname,librecstab.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LIBS)
+
+$(LIBSO): $(LIBSO_REAL)
+	ln -sf librecstab.so.$(VERSION) $(BUILD)/librecstab.so.$(SOVERSION)
+	ln -sf librecstab.so.$(VERSION) $@
+
+# recstab.pc for PREFIX (make install writes it again for its own PREFIX)
+$(BUILD)/recstab.pc: recstab.pc.in Makefile
+	@mkdir -p $(dir $@)
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@FLINT_CFLAGS@|$(FLINT_CFLAGS)|g' \
+	    -e 's|@DEP_LIBS@|$(DEP_LIBS)|g' $< > $@
+
+# the C examples, linked against the shared library in the build tree
+$(BUILD)/examples/%: examples/%.c $(LIBSO) $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -o $@ $< -L$(BUILD) -lrecstab -Wl,-rpath,$(abspath $(BUILD)) $(LIBS)
+
+examples: $(EXAMPLE_BIN)
+
 $(BIN): $(CLI_OBJ) $(LIBRS)
 	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) $(LIBS)
 
@@ -74,7 +121,7 @@ $(BUILD)/tests/%: %.c tests/testutil.h tests/closed_forms.h $(LIBRS) $(HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_ALL) -Itests -DRS_SOURCE_DIR='"$(CURDIR)"' -o $@ $< $(LIBRS) -lcmocka $(LIBS)
 
-test: $(TEST_BIN) $(BIN)
+test: $(TEST_BIN) $(BIN) $(LIBSO) $(EXAMPLE_BIN)
 	@BUILD=$(BUILD) sh tests/run.sh
 
 check: deps
@@ -95,14 +142,25 @@ demo: deps
 bench: all
 	sh bench/run.sh
 
+# Python's site folder under PREFIX (Debian's python3 searches
+# PREFIX/lib/python3.X/dist-packages for PREFIX=/usr/local)
+PYDIR ?= $(PREFIX)/lib/$(shell $(PYTHON) -c 'import sys; print("python%d.%d" % sys.version_info[:2])' 2>/dev/null || echo python3)/dist-packages
+
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib \
-	  $(DESTDIR)$(PREFIX)/include/recstab $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	  $(DESTDIR)$(PREFIX)/include/recstab $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PYDIR)/recstab
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/recstab
 	install -m 644 $(LIBRS) $(DESTDIR)$(PREFIX)/lib/librecstab.a
+	install -m 755 $(LIBSO_REAL) $(DESTDIR)$(PREFIX)/lib/librecstab.so.$(VERSION)
+	ln -sf librecstab.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/librecstab.so.$(SOVERSION)
+	ln -sf librecstab.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/librecstab.so
 	install -m 644 $(PUBLIC_HDRS) $(DESTDIR)$(PREFIX)/include/recstab/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' recstab.pc.in \
-	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/recstab.pc
+	install -m 644 recstab.1 $(DESTDIR)$(PREFIX)/share/man/man1/recstab.1
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' -e 's|@FLINT_CFLAGS@|$(FLINT_CFLAGS)|g' \
+	    -e 's|@DEP_LIBS@|$(DEP_LIBS)|g' recstab.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/recstab.pc
+	install -m 644 python/recstab/*.py $(DESTDIR)$(PYDIR)/recstab/
+	echo 'LIBRARY = "$(PREFIX)/lib/librecstab.so.$(SOVERSION)"' > $(DESTDIR)$(PYDIR)/recstab/_installed.py
 
 # build/recstab-mpi: the same sources with -DRS_MPI (mpicc); sweeps and maps
 # are split over the ranks of `mpirun -n K build/recstab-mpi ...`.
@@ -146,9 +204,9 @@ clean:
 FUZZ_SECONDS   ?= 60
 FUZZ_CC        ?= clang
 FUZZ_HARNESSES ?= fuzz_case fuzz_analyses fuzz_options
-FUZZ_FLAGS     := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I/usr/include/flint \
+FUZZ_FLAGS     := -g -O1 -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc $(FLINT_CFLAGS) \
                   -DRS_SOURCE_DIR='"$(CURDIR)"' -DRS_VERSION='"$(VERSION)"'
-FUZZ_LIBS      := -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
+FUZZ_LIBS      := $(DEP_LIBS)
 FUZZ_OBJ       := $(patsubst src/%.c,build/fuzz-obj/%.o,$(LIB_SRC))
 FUZZ_BINS      := $(addprefix build/,$(FUZZ_HARNESSES))
 
