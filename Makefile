@@ -27,7 +27,8 @@ CFLAGS_ALL = $(CSTD) $(WARN) $(OPT) $(SAN) -fPIC -fopenmp -Iinclude -Isrc $(FLIN
 LIBS    := -fopenmp $(DEP_LIBS)
 VERSION := 0.1.0
 SOVERSION := 0
-PYTHON  ?= python3
+# Debian's python3 (python3-numpy, python3-pytest), not one earlier on PATH
+PYTHON  ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 
 # Debian packages `make deps` installs when missing, each with why (printed)
 DEB_WHY := \

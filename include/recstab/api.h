@@ -60,6 +60,16 @@ int rs_analyse_json(const char *case_text, const char *source_name, char **json)
 int rs_analyse_json_opt(const char *case_text, const char *source_name,
                         const rs_run_options_t *ro, char **json);
 
+/* flags of rs_analyse_json_with: the document carries "scheme" (the
+ * equations and lambda-matrix that --markdown and --latex show) */
+#define RS_RUN_SCHEME 1
+
+/* rs_analyse_json with --set values ("NAME=VALUE") and --analyse requests,
+ * each a NULL-terminated list (NULL: none), and flags (RS_RUN_*); for
+ * callers that cannot build rs_run_options_t (ctypes, other languages). */
+int rs_analyse_json_with(const char *case_text, const char *source_name, const char *const *sets,
+                         const char *const *analyses, int flags, char **json);
+
 /* Frees what the library returned to the caller (rs_analyse_json's *json). */
 void rs_free(void *p);
 

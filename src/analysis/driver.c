@@ -156,6 +156,19 @@ int rs_analyse_json(const char *case_text, const char *source_name, char **json)
     return rs_analyse_json_opt(case_text, source_name, NULL, json);
 }
 
+int rs_analyse_json_with(const char *case_text, const char *source_name, const char *const *sets,
+                         const char *const *analyses, int flags, char **json)
+{
+    rs_run_options_t ro;
+    rs_run_options_default(&ro);
+    ro.opt.with_scheme = (flags & RS_RUN_SCHEME) != 0;
+    ro.sets = sets;
+    ro.analyses = analyses;
+    while (sets != NULL && sets[ro.nsets] != NULL) ro.nsets++;
+    while (analyses != NULL && analyses[ro.nanalyses] != NULL) ro.nanalyses++;
+    return rs_analyse_json_opt(case_text, source_name, &ro, json);
+}
+
 void rs_free(void *p)
 {
     free(p);

@@ -523,7 +523,11 @@ static int parse_top(rs_case_t c, const char *path, const char *text, size_t len
 
 int rs_case_parse_string(rs_case_t c, const char *path, const char *text, size_t len, rs_error_t err)
 {
-    return parse_top(c, path, text, len, NULL, err);
+    /* text named after a file (the API's source name): that file including
+     * itself is a cycle, as when the file is read */
+    struct stat st;
+    int named = path != NULL && stat(path, &st) == 0 && S_ISREG(st.st_mode);
+    return parse_top(c, path, text, len, named ? &st : NULL, err);
 }
 
 /* Reads path ("-": stdin) whole into a NUL-terminated buffer; *st
