@@ -30,14 +30,32 @@ SOVERSION := 0
 # Debian's python3 (python3-numpy, python3-pytest), not one earlier on PATH
 PYTHON  ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 
-# Debian packages `make deps` installs when missing, each with why (printed)
+# Debian packages, each with why (make prints the reason of each package it
+# installs; `make deps-list` prints them all).  `make deps` installs what
+# building, `make check` and `make demo` need; `make fuzz` and
+# `make check-valgrind` add their own tools.
 DEB_WHY := \
   libflint-dev:exact_polynomials,_FLINT libflint-arb-dev:certified_balls,_Arb \
   libgsl-dev:the_double_root_finder_of_sweeps libgmp-dev:big_integers libmpfr-dev:the_floats_of_Arb \
-  libjansson-dev:JSON_documents libcmocka-dev:unit_tests gnuplot-nox:--plot \
-  libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz valgrind:make_check-valgrind \
-  python3-pytest:tests_of_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
+  libjansson-dev:JSON_documents libcmocka-dev:unit_tests_of_make_check gnuplot-nox:--plot \
+  python3-pytest:make_check_tests_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
+FUZZ_WHY := libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz
+VALGRIND_WHY := valgrind:make_check-valgrind
 DEB_PKGS := $(foreach p,$(DEB_WHY),$(firstword $(subst :, ,$(p))))
+
+# $(call deb-install,WHO,PKG:WHY...): apt-get install of the missing ones,
+# each named with its reason first
+define deb-install
+	@missing=""; for w in $(2); do p=$${w%%:*}; \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
+	    || { missing="$$missing $$p"; echo "make $(1): installing $$p: $${w#*:}" | tr _ ' '; }; done; \
+	if [ -n "$$missing" ]; then \
+	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null \
+	    || { echo "make $(1): apt-get failed for$$missing" >&2; exit 1; }; \
+	else echo "make $(1): all Debian packages present"; fi
+endef
 
 # MPI build (make mpi): installed by `make mpi` only, not by `make deps`
 MPI_PKGS := libopenmpi-dev openmpi-bin
@@ -65,24 +83,22 @@ LIBSO  := $(BUILD)/librecstab.so
 BIN    := $(BUILD)/recstab
 EXAMPLE_BIN := $(patsubst examples/%.c,$(BUILD)/examples/%,$(sort $(wildcard examples/*.c)))
 
-.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers examples
+.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers examples deps-fuzz deps-valgrind deps-list
 
 all: $(LIBRS) $(LIBSO) $(BIN) $(BUILD)/recstab.pc
 
 # Install only the Debian packages that are missing (apt-get update first).
 deps:
-	@echo "make deps: Debian packages used (installed when missing):"; \
-	for w in $(DEB_WHY); do echo "  $${w%%:*}: $${w#*:}" | tr _ ' '; done
-	@missing=""; for p in $(DEB_PKGS); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
-	    || missing="$$missing $$p"; done; \
-	if [ -n "$$missing" ]; then \
-	  echo "make deps: installing$$missing"; \
-	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null \
-	    || { echo "make deps: apt-get failed for$$missing" >&2; exit 1; }; \
-	else echo "make deps: all Debian packages present"; fi
+	$(call deb-install,deps,$(DEB_WHY))
+
+deps-fuzz:
+	$(call deb-install,fuzz,$(FUZZ_WHY))
+
+deps-valgrind:
+	$(call deb-install,check-valgrind,$(VALGRIND_WHY))
+
+deps-list:
+	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done
 
 $(BUILD)/obj/%.o: src/%.c $(HDRS)
 	@mkdir -p $(dir $@)
@@ -233,7 +249,7 @@ fuzz-build: $(FUZZ_BINS)
 # smaller quarantine, released to the system, keeps -rss_limit_mb meaningful.
 FUZZ_TIMEOUT ?= 25
 FUZZ_ASAN_OPTIONS ?= quarantine_size_mb=32:allocator_release_to_os_interval_ms=200
-fuzz: deps fuzz-build
+fuzz: deps deps-fuzz fuzz-build
 	@mkdir -p build/fuzz-artifacts
 	@fail=""; for h in $(FUZZ_HARNESSES); do \
 	  mkdir -p build/fuzz-corpus/$$h; \
@@ -249,7 +265,7 @@ fuzz: deps fuzz-build
 
 # Every case under valgrind (definite leaks and memory errors fail, exit 99);
 # each case must still end with its "# expect-exit: N" status (default 0).
-check-valgrind: deps
+check-valgrind: deps deps-valgrind
 	@$(MAKE) --no-print-directory all
 	@fail=0; for f in $$(find cases -name '*.case' | sort); do \
 	  want=$$(sed -n 's/^# expect-exit: *\([0-9]\).*/\1/p' "$$f" | head -1); want=$${want:-0}; \
