@@ -16,7 +16,7 @@ import ctypes.util
 import json
 import os
 
-__all__ = ["analyse", "analyze", "map_array", "plot", "Derivation", "derivation",
+__all__ = ["analyse", "analyze", "analyse_status", "map_array", "plot", "Derivation", "derivation",
            "RecstabError", "InputError", "LimitError", "InconsistentError", "library_path"]
 
 
@@ -191,12 +191,12 @@ def map_array(doc_or_case, index=0, **kw):
 
 
 def plot(doc_or_case, index=0, ax=None, labels=None, **kw):
-    """Plot the map (stability codes over the grid) or, without a map, the
-    first sweep's value, with matplotlib; returns the Axes.  ``labels``: a
-    dict of axis labels by parameter name (LaTeX allowed)."""
-    import matplotlib
+    """Plot a map (its stability codes over the grid: 0 stable, 1 marginal,
+    2 unstable, 3 singular) or, without a map, a sweep (the quantity it
+    sweeps, "radius" by default) with matplotlib; returns the Axes.
+    ``labels``: axis labels by parameter or column name (LaTeX allowed).
+    ``ax``: an Axes to draw into (default: a new figure)."""
     if ax is None:
-        matplotlib.use(matplotlib.get_backend())
         import matplotlib.pyplot as plt
         ax = plt.figure().gca()
     labels = labels or {}
@@ -209,14 +209,16 @@ def plot(doc_or_case, index=0, ax=None, labels=None, **kw):
         ax.set_ylabel(labels.get(py, py))
         return ax
     sweeps = _results(doc, "sweep")
-    if not sweeps:
-        raise ValueError("the document has neither a map nor a sweep")
+    if len(sweeps) <= index:
+        raise ValueError("the document has no map and %d sweep(s), no sweep %d" % (len(sweeps), index))
     s = sweeps[index]
+    if "table" not in s:
+        raise ValueError("the sweep's rows are not in the document (%s)" % s.get("table_note", "no table"))
     lines = [ln for ln in s["table"].splitlines() if ln and not ln.startswith("#")]
     cols = lines[0].split(",")
     rows = [ln.split(",") for ln in lines[1:]]
-    p = s["params"][0] if "params" in s else cols[1]
-    ycol = "radius" if "radius" in cols else cols[-1]
+    p = s["param"]
+    ycol = s.get("of") if s.get("of") in cols else "radius"
     xs = [float(r[cols.index(p)]) for r in rows]
     ys = [float(r[cols.index(ycol)]) if r[cols.index(ycol)] else float("nan") for r in rows]
     ax.plot(xs, ys)

@@ -86,6 +86,30 @@ def test_derivation_reprs():
     assert "lambda" in md
 
 
+class _Axes:
+    """records what plot draws (no matplotlib needed)"""
+    def plot(self, xs, ys):
+        self.xs, self.ys = xs, ys
+
+    def set_xlabel(self, t):
+        self.xlabel = t
+
+    def set_ylabel(self, t):
+        self.ylabel = t
+
+
+def test_plot_sweep_values():
+    # central difference, radius over w = 0, 1/2, ..., 4: 1 on (0, 2]
+    # (roots on the circle; at w = 0 and 2 a double root of modulus 1); at
+    # w = 5/2, p = l^2 + 17/4 l + 1 = (l + 4)(l + 1/4): radius 4; at w = 3,
+    # (7 + sqrt 45)/2
+    ax = recstab.plot(CD, analyses=["sweep w from 0 to 4 steps 8"], ax=_Axes(), labels={"w": "$\\omega h$"})
+    assert ax.xs == [0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4]
+    assert ax.ys[:5] == [1, 1, 1, 1, 1]
+    assert abs(ax.ys[5] - 4) < 1e-9 and abs(ax.ys[6] - (7 + 45 ** 0.5) / 2) < 1e-9
+    assert ax.xlabel == "$\\omega h$" and ax.ylabel == "radius"
+
+
 def test_plot_when_matplotlib_is_there():
     pytest.importorskip("matplotlib")
     import matplotlib
