@@ -112,7 +112,7 @@ $(LIBRS): $(LIB_OBJ)
 # the shared library: soname librecstab.so.$(SOVERSION), its dependencies
 # recorded (DT_NEEDED) so that -lrecstab alone links a program
 $(LIBSO_REAL): $(LIB_OBJ)
-	$(CC) -shared -Wl,-soname,librecstab.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LIBS)
+	$(CC) $(SAN) -shared -Wl,-soname,librecstab.so.$(SOVERSION) -Wl,--no-undefined -o $@ $^ $(LIBS)
 
 $(LIBSO): $(LIBSO_REAL)
 	ln -sf librecstab.so.$(VERSION) $(BUILD)/librecstab.so.$(SOVERSION)
