@@ -65,10 +65,14 @@ int rs_analyse_json_opt(const char *case_text, const char *source_name,
 #define RS_RUN_SCHEME 1
 
 /* rs_analyse_json with --set values ("NAME=VALUE") and --analyse requests,
- * each a NULL-terminated list (NULL: none), and flags (RS_RUN_*); for
- * callers that cannot build rs_run_options_t (ctypes, other languages). */
+ * each a NULL-terminated list (NULL: none), flags (RS_RUN_*) and the
+ * budget: time_limit seconds and memory_limit MB (< 0: the command's
+ * defaults, 600 s and half of the RAM; 0: none), as --time-limit and
+ * --memory-limit; for callers that cannot build rs_run_options_t (ctypes,
+ * other languages). */
 int rs_analyse_json_with(const char *case_text, const char *source_name, const char *const *sets,
-                         const char *const *analyses, int flags, char **json);
+                         const char *const *analyses, int flags, double time_limit, long memory_limit,
+                         char **json);
 
 /* Frees what the library returned to the caller (rs_analyse_json's *json). */
 void rs_free(void *p);

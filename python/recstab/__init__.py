@@ -73,8 +73,8 @@ library_path = _find_library()
 _lib = ctypes.CDLL(library_path)
 _lib.rs_analyse_json_with.restype = ctypes.c_int
 _lib.rs_analyse_json_with.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.POINTER(ctypes.c_char_p),
-                                      ctypes.POINTER(ctypes.c_char_p), ctypes.c_int,
-                                      ctypes.POINTER(ctypes.c_void_p)]
+                                      ctypes.POINTER(ctypes.c_char_p), ctypes.c_int, ctypes.c_double,
+                                      ctypes.c_long, ctypes.POINTER(ctypes.c_void_p)]
 _lib.rs_free.restype = None
 _lib.rs_free.argtypes = [ctypes.c_void_p]
 
@@ -99,7 +99,8 @@ def _read_case(text_or_path):
     return text_or_path, "<string>"
 
 
-def analyse_status(text_or_path, set=None, analyses=None, source_name=None, scheme=False):
+def analyse_status(text_or_path, set=None, analyses=None, source_name=None, scheme=False,
+                   time_limit=None, memory_limit=None):
     """(exit status, document): like ``analyse`` but status 1 and 3 are returned, not raised."""
     text, source = _read_case(text_or_path)
     if source_name is not None:
@@ -108,7 +109,8 @@ def analyse_status(text_or_path, set=None, analyses=None, source_name=None, sche
     out = ctypes.c_void_p()
     status = _lib.rs_analyse_json_with(text.encode("utf-8"), source.encode("utf-8"), _strings(sets),
                                        _strings(list(analyses or [])), 1 if scheme else 0,
-                                       ctypes.byref(out))
+                                       -1.0 if time_limit is None else float(time_limit),
+                                       -1 if memory_limit is None else int(memory_limit), ctypes.byref(out))
     if not out.value:
         raise MemoryError("librecstab returned no document")
     try:
@@ -118,7 +120,8 @@ def analyse_status(text_or_path, set=None, analyses=None, source_name=None, sche
     return status, doc
 
 
-def analyse(text_or_path, set=None, analyses=None, source_name=None, scheme=False):
+def analyse(text_or_path, set=None, analyses=None, source_name=None, scheme=False,
+            time_limit=None, memory_limit=None):
     """Run a case (its text, or the path of a case file) and return its JSON document.
 
     ``set``: values like ``--set`` (``{"w": "1/2"}``), ``analyses``: requests
@@ -126,8 +129,10 @@ def analyse(text_or_path, set=None, analyses=None, source_name=None, scheme=Fals
     claim or expectation (exit status 1) is part of the document (its
     result's "holds" is false); errors raise ``InputError``, ``LimitError``
     (the budget) or ``InconsistentError``.  ``scheme=True`` adds the
-    "scheme" that derivations show (as --markdown and --latex do)."""
-    status, doc = analyse_status(text_or_path, set, analyses, source_name, scheme)
+    "scheme" that derivations show (as --markdown and --latex do);
+    ``time_limit`` (seconds) and ``memory_limit`` (MB) are the budget of
+    --time-limit and --memory-limit (None: 600 s and half of the RAM; 0: none)."""
+    status, doc = analyse_status(text_or_path, set, analyses, source_name, scheme, time_limit, memory_limit)
     if "error" in doc and len(doc) == 1:
         err = doc["error"]
         cls = InconsistentError if status == 3 else LimitError if err.get("code") == "limit" else InputError

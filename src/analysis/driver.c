@@ -157,11 +157,14 @@ int rs_analyse_json(const char *case_text, const char *source_name, char **json)
 }
 
 int rs_analyse_json_with(const char *case_text, const char *source_name, const char *const *sets,
-                         const char *const *analyses, int flags, char **json)
+                         const char *const *analyses, int flags, double time_limit, long memory_limit,
+                         char **json)
 {
     rs_run_options_t ro;
     rs_run_options_default(&ro);
     ro.opt.with_scheme = (flags & RS_RUN_SCHEME) != 0;
+    if (time_limit >= 0) ro.opt.time_limit = time_limit;
+    if (memory_limit >= 0) ro.opt.memory_limit = memory_limit;
     ro.sets = sets;
     ro.analyses = analyses;
     while (sets != NULL && sets[ro.nsets] != NULL) ro.nsets++;

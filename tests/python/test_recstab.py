@@ -67,6 +67,16 @@ def test_point_budget_raises_limit_error():
     assert e.value.status == 2 and "9000000 points" in str(e.value)
 
 
+def test_time_budget_raises_limit_error():
+    # the engine counts at least 1 us per point (a fixed lower bound in
+    # rs_sweep_estimate): 2e6 points need 2 s, refused under a 1 s limit
+    # before any work (as `recstab --time-limit 1` does)
+    case = "param a\nparam b\nunknown x\neq x[n+1] = a*x[n]\n"
+    with pytest.raises(recstab.LimitError) as e:
+        recstab.analyse(case, analyses=["map a -2 2 2000, b 0 1 1000"], time_limit=1)
+    assert "time limit of 1 s" in str(e.value)
+
+
 def test_map_array():
     np = pytest.importorskip("numpy")
     case = "param a\nparam b\nunknown x\neq x[n+1] = a*x[n]\n"

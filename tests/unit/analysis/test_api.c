@@ -181,7 +181,7 @@ static void test_api_with_sets_and_analyses(void **state)
     json_t *j, *r;
     (void) state;
     assert_non_null(text);
-    assert_int_equal(rs_analyse_json_with(text, "cases/textbook/central-difference.case", sets, an, 0, &json), 0);
+    assert_int_equal(rs_analyse_json_with(text, "cases/textbook/central-difference.case", sets, an, 0, -1, -1, &json), 0);
     j = json_loads(json, 0, NULL);
     assert_non_null(j);
     r = json_array_get(json_object_get(j, "results"), 0);
@@ -191,15 +191,24 @@ static void test_api_with_sets_and_analyses(void **state)
     json_decref(j);
     rs_free(json);
     /* RS_RUN_SCHEME: the document carries the scheme, as under --markdown */
-    assert_int_equal(rs_analyse_json_with(text, "x.case", sets, an, RS_RUN_SCHEME, &json), 0);
+    assert_int_equal(rs_analyse_json_with(text, "x.case", sets, an, RS_RUN_SCHEME, -1, -1, &json), 0);
     j = json_loads(json, 0, NULL);
     assert_non_null(json_object_get(j, "scheme"));
     json_decref(j);
     rs_free(json);
     /* a name the case does not declare: exit 2, the error as a document */
     sets[0] = "nosuch=1";
-    assert_int_equal(rs_analyse_json_with(text, "x.case", sets, NULL, 0, &json), 2);
+    assert_int_equal(rs_analyse_json_with(text, "x.case", sets, NULL, 0, -1, -1, &json), 2);
     assert_non_null(strstr(json, "\"error\""));
+    rs_free(json);
+    /* the time budget: the engine counts at least 1 us per point
+     * (rs_sweep_estimate, a fixed lower bound, not a measurement), so a map
+     * of 2000 x 1000 points needs 2 s and a 1 s limit refuses it before it
+     * runs: code "limit", exit 2, as with --time-limit 1 */
+    assert_int_equal(rs_analyse_json_with("param a\nparam b\nunknown x\neq x[n+1] = a*x[n]\n", "m.case", NULL,
+                                          (const char *[]){"map a -2 2 2000, b 0 1 1000", NULL}, 0, 1, -1, &json), 2);
+    assert_non_null(strstr(json, "\"code\": \"limit\""));
+    assert_non_null(strstr(json, "time limit of 1 s"));
     rs_free(json);
     free(text);
 }
