@@ -59,6 +59,7 @@
 #include <acb_mat.h>
 #include "recstab/budget.h"
 #include "recstab/cosim.h"
+#include "numeric/cosim_ball.h"
 
 /* ------------------------------------------------------------------ */
 /* model                                                               */
@@ -404,60 +405,51 @@ int rs_cosim_lagrange(fmpq_mat_t L, int method, slong order, rs_error_t err)
 /* ------------------------------------------------------------------ */
 /* exponentials (Van Loan)                                              */
 
-/* A coupling realisation: (B_1, B_2, C) with m coupling variables; either
- * the model's own or the reduced one of rs_cosim_reduce. */
-typedef struct {
-    slong m;
-    const fmpq_mat_struct *B1, *B2, *C;
-} _real_t;
-
-static void _real_own(_real_t *re, const rs_cosim_t cs)
+/* The exponentials work on a ball model (numeric/cosim_ball.h): the exact
+ * model's own realisation or the reduced one of rs_cosim_reduce converted
+ * at prec, or a model whose entries are balls over a parameter box (the
+ * certified region and claim), so both share this one engine. */
+static void _own_ball(rs_cosim_ball_t b, const rs_cosim_t cs, slong prec)
 {
-    re->m = cs->m;
-    re->B1 = cs->B1;
-    re->B2 = cs->B2;
-    re->C = cs->C;
+    rs_cosim_ball_set(b, cs, cs->B1, cs->B2, cs->C, cs->m, prec);
 }
 
 /* One subsystem: E_i into E at offset off, Phi_k e_c of subsystem i into
  * Phi rows off..off+ni-1, column k m + c (m = columns of Bi).  Only the
- * nonzero columns of Bi get a chain in the Van Loan matrix; the others
- * leave Phi zero (Phi must be zeroed by the caller). */
+ * columns of Bi that are not exactly zero get a chain in the Van Loan
+ * matrix; the others leave Phi zero (Phi must be zeroed by the caller). */
 static void _exp_phi_sub(arb_mat_t E, arb_mat_t Phi, slong off,
-                         const fmpq_mat_t Ai, const fmpq_mat_t Bi,
-                         const fmpq_t H, slong K, slong prec)
+                         const arb_mat_t Ai, const arb_mat_t Bi,
+                         const arb_t H, slong K, slong prec)
 {
-    slong ni = fmpq_mat_nrows(Ai), m = fmpq_mat_ncols(Bi), q = 0, sz, r, c,
+    slong ni = arb_mat_nrows(Ai), m = arb_mat_ncols(Bi), q = 0, sz, r, c,
           k, ch;
     slong *cols = flint_malloc((m + 1) * sizeof(slong));
-    fmpq_mat_t M;
     arb_mat_t Ma, X;
     arb_t fact;
 
     for (c = 0; c < m; c++) {
         int nz = 0;
         for (r = 0; r < ni; r++)
-            if (!fmpq_is_zero(fmpq_mat_entry(Bi, r, c)))
+            if (!arb_is_zero(arb_mat_entry(Bi, r, c)))
                 nz = 1;
         if (nz)
             cols[q++] = c;
     }
     sz = ni + q * (K + 1);
-    fmpq_mat_init(M, sz, sz);
+    arb_mat_init(Ma, sz, sz);
+    arb_mat_init(X, sz, sz);
     for (r = 0; r < ni; r++) {
         for (c = 0; c < ni; c++)
-            fmpq_mul(fmpq_mat_entry(M, r, c), fmpq_mat_entry(Ai, r, c), H);
+            arb_mul(arb_mat_entry(Ma, r, c), arb_mat_entry(Ai, r, c), H, prec);
         for (ch = 0; ch < q; ch++)
-            fmpq_mul(fmpq_mat_entry(M, r, ni + ch * (K + 1)),
-                     fmpq_mat_entry(Bi, r, cols[ch]), H);
+            arb_mul(arb_mat_entry(Ma, r, ni + ch * (K + 1)),
+                    arb_mat_entry(Bi, r, cols[ch]), H, prec);
     }
     for (ch = 0; ch < q; ch++)
         for (r = 0; r < K; r++)
-            fmpq_one(fmpq_mat_entry(M, ni + ch * (K + 1) + r,
-                                    ni + ch * (K + 1) + r + 1));
-    arb_mat_init(Ma, sz, sz);
-    arb_mat_init(X, sz, sz);
-    arb_mat_set_fmpq_mat(Ma, M, prec);
+            arb_one(arb_mat_entry(Ma, ni + ch * (K + 1) + r,
+                                  ni + ch * (K + 1) + r + 1));
     arb_mat_exp(X, Ma, prec);
     for (r = 0; r < ni; r++)
         for (c = 0; c < ni; c++)
@@ -476,17 +468,16 @@ static void _exp_phi_sub(arb_mat_t E, arb_mat_t Phi, slong off,
     arb_clear(fact);
     arb_mat_clear(X);
     arb_mat_clear(Ma);
-    fmpq_mat_clear(M);
     flint_free(cols);
 }
 
-static void _exp_phi_r(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
-                       const _real_t *re, slong prec)
+static void _exp_phi_r(arb_mat_t E, arb_mat_t Phi, const rs_cosim_ball_t b,
+                       slong prec)
 {
     arb_mat_zero(E);
     arb_mat_zero(Phi);
-    _exp_phi_sub(E, Phi, 0, cs->A1, re->B1, cs->H, cs->order, prec);
-    _exp_phi_sub(E, Phi, cs->n1, cs->A2, re->B2, cs->H, cs->order, prec);
+    _exp_phi_sub(E, Phi, 0, b->A1, b->B1, b->H, b->order, prec);
+    _exp_phi_sub(E, Phi, b->n1, b->A2, b->B2, b->H, b->order, prec);
 }
 
 /* The checks of the public E/Phi and E/G entry points: a valid cosim
@@ -511,20 +502,22 @@ static int _check_out(const arb_mat_t E, const arb_mat_t X, const char *xname,
 int rs_cosim_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_t cs,
                      slong prec, rs_error_t err)
 {
-    _real_t re;
+    rs_cosim_ball_t b;
     int rc = _check_out(E, Phi, "Phi", cs, err);
     if (rc != RS_OK)
         return rc;
-    _real_own(&re, cs);
-    _exp_phi_r(E, Phi, cs, &re, prec);
+    rs_cosim_ball_init(b);
+    _own_ball(b, cs, prec);
+    _exp_phi_r(E, Phi, b, prec);
+    rs_cosim_ball_clear(b);
     return RS_OK;
 }
 
 /* G_j = sum_k l_{j,k} Phi_k, blocks of m columns */
-static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs,
-                    const _real_t *re, slong prec, rs_error_t err)
+static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_ball_t b,
+                    slong prec, rs_error_t err)
 {
-    slong n = cs->n1 + cs->n2, K = cs->order, m = re->m, j, k, r, c;
+    slong n = b->n1 + b->n2, K = b->order, m = b->m, j, k, r, c;
     fmpq_mat_t L;
     arb_mat_t Phi;
     arb_t t;
@@ -532,9 +525,9 @@ static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs,
     fmpq_mat_init(L, K + 1, K + 1);
     arb_mat_init(Phi, n, m * (K + 1));
     arb_init(t);
-    rc = rs_cosim_lagrange(L, cs->method, K, err);
+    rc = rs_cosim_lagrange(L, b->method, K, err);
     if (rc == RS_OK) {
-        _exp_phi_r(E, Phi, cs, re, prec);
+        _exp_phi_r(E, Phi, b, prec);
         arb_mat_zero(G);
         for (j = 0; j <= K; j++)
             for (k = 0; k <= K; k++) {
@@ -560,12 +553,15 @@ static int _gains_r(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs,
 int rs_cosim_gains(arb_mat_t E, arb_mat_t G, const rs_cosim_t cs, slong prec,
                    rs_error_t err)
 {
-    _real_t re;
+    rs_cosim_ball_t b;
     int rc = _check_out(E, G, "G", cs, err);
     if (rc != RS_OK)
         return rc;
-    _real_own(&re, cs);
-    return _gains_r(E, G, cs, &re, prec, err);
+    rs_cosim_ball_init(b);
+    _own_ball(b, cs, prec);
+    rc = _gains_r(E, G, b, prec, err);
+    rs_cosim_ball_clear(b);
+    return rc;
 }
 
 /* ------------------------------------------------------------------ */
@@ -638,7 +634,7 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
 {
     slong n, K, k, j, m;
     arb_mat_t E, G, Cb, T;
-    _real_t re;
+    rs_cosim_ball_t b;
     int rc = rs_cosim_check(cs, err), impl;
     if (rc != RS_OK)
         return rc;
@@ -661,8 +657,10 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
     arb_mat_init(G, n, m * (K + 1));
     arb_mat_init(Cb, m, n);
     arb_mat_init(T, n, n);
-    _real_own(&re, cs);
-    rc = _gains_r(E, G, cs, &re, prec, err);
+    rs_cosim_ball_init(b);
+    _own_ball(b, cs, prec);
+    rc = _gains_r(E, G, b, prec, err);
+    rs_cosim_ball_clear(b);
     if (rc != RS_OK)
         goto cleanup;
     arb_mat_set_fmpq_mat(Cb, cs->C, prec);
@@ -700,10 +698,19 @@ cleanup:
     return rc;
 }
 
+static slong _hist_of(int method, slong K)
+{
+    return method == RS_COSIM_IMPLICIT ? (K > 1 ? K - 1 : 0) : K;
+}
+
 static slong _hist(const rs_cosim_t cs)
 {
-    slong K = cs->order;
-    return cs->method == RS_COSIM_IMPLICIT ? (K > 1 ? K - 1 : 0) : K;
+    return _hist_of(cs->method, cs->order);
+}
+
+slong rs_cosim_ball_dim(const rs_cosim_ball_t b)
+{
+    return b->n1 + b->n2 + _hist_of(b->method, b->order) * b->m;
 }
 
 slong rs_cosim_transition_dim(const rs_cosim_t cs)
@@ -711,19 +718,19 @@ slong rs_cosim_transition_dim(const rs_cosim_t cs)
     return cs->n1 + cs->n2 + _hist(cs) * cs->m;
 }
 
-/* The one-step map of (z_N, u_{N-1}, ..., u_{N-h}) for the realisation re
- * (m = re->m >= 0; m = 0: M = E). */
-static int _transition_r(arb_mat_t M, const rs_cosim_t cs, const _real_t *re,
-                         slong prec, rs_error_t err)
+/* The one-step map of (z_N, u_{N-1}, ..., u_{N-h}) of the ball model b
+ * (m = b->m >= 0; m = 0: M = E). */
+int rs_cosim_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec,
+                             rs_error_t err)
 {
-    slong n, K, h, dim, a, j, r, c, m = re->m;
+    slong n, K, h, dim, a, j, r, c, m = b->m;
     arb_mat_t E, G, Cb, Top, CX, J, Y;
     int rc = RS_OK, impl;
-    n = cs->n1 + cs->n2;
-    K = cs->order;
-    impl = (cs->method == RS_COSIM_IMPLICIT);
+    n = b->n1 + b->n2;
+    K = b->order;
+    impl = (b->method == RS_COSIM_IMPLICIT);
     a = impl ? 1 : 0;              /* first gain acting on z_N */
-    h = _hist(cs);                 /* u history length */
+    h = _hist_of(b->method, K);    /* u history length */
     dim = n + h * m;
     if (arb_mat_nrows(M) != dim || arb_mat_ncols(M) != dim)
         return rs_error_set(err, RS_ERR_INPUT,
@@ -736,10 +743,10 @@ static int _transition_r(arb_mat_t M, const rs_cosim_t cs, const _real_t *re,
     arb_mat_init(CX, m, dim);
     arb_mat_init(J, m, m);
     arb_mat_init(Y, m, dim);
-    rc = _gains_r(E, G, cs, re, prec, err);
+    rc = _gains_r(E, G, b, prec, err);
     if (rc != RS_OK)
         goto cleanup;
-    arb_mat_set_fmpq_mat(Cb, re->C, prec);
+    arb_mat_set(Cb, b->C);
     /* Top = [E + G_a C | G_{a+1} ... G_K]  (G_1 := 0 for implicit K = 0) */
     for (r = 0; r < n; r++) {
         for (c = 0; c < n; c++) {
@@ -813,12 +820,15 @@ cleanup:
 int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
                         rs_error_t err)
 {
-    _real_t re;
+    rs_cosim_ball_t b;
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK)
         return rc;
-    _real_own(&re, cs);
-    return _transition_r(M, cs, &re, prec, err);
+    rs_cosim_ball_init(b);
+    _own_ball(b, cs, prec);
+    rc = rs_cosim_ball_transition(M, b, prec, err);
+    rs_cosim_ball_clear(b);
+    return rc;
 }
 
 int rs_cosim_reduce(fmpq_mat_t P1, fmpq_mat_t P2, fmpq_mat_t Q, slong *rank,
@@ -1005,7 +1015,7 @@ static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
     if (route == _ROUTE_TRANSITION) {
         /* the reduced realisation (rs_cosim_reduce) */
         fmpq_mat_t P1, P2, Q;
-        _real_t re;
+        rs_cosim_ball_t b;
         arb_mat_t M;
         slong rk = 0;
         fmpq_mat_init(P1, 0, 0);
@@ -1013,16 +1023,15 @@ static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
         fmpq_mat_init(Q, 0, 0);
         rc = rs_cosim_reduce(P1, P2, Q, &rk, cs, err);
         if (rc == RS_OK) {
-            re.m = rk;
-            re.B1 = P1;
-            re.B2 = P2;
-            re.C = Q;
+            rs_cosim_ball_init(b);
+            rs_cosim_ball_set(b, cs, P1, P2, Q, rk, prec);
             dim = n + _hist(cs) * rk;
             arb_mat_init(M, dim, dim);
-            rc = _transition_r(M, cs, &re, prec, err);
+            rc = rs_cosim_ball_transition(M, b, prec, err);
             if (rc == RS_OK)
                 _set_poly(A, k, cnt, M);
             arb_mat_clear(M);
+            rs_cosim_ball_clear(b);
         }
         fmpq_mat_clear(P1);
         fmpq_mat_clear(P2);
