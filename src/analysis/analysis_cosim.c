@@ -192,11 +192,16 @@ int rs_cosim_from_case(rs_cosim_t cs, const rs_case_t c, rs_error_t err)
  * the run lowered once; rs_cosim_from_case builds its own). */
 int rs_run_cosim(rs_cosim_t cs, rs_run_t *run)
 {
+    return rs_run_cosim_at(cs, run, NULL, NULL, 0);
+}
+
+int rs_run_cosim_at(rs_cosim_t cs, rs_run_t *run, const char *const *names, const fmpq *values, slong n)
+{
     const rs_cosim_model_struct *F = rs_model_cosim(run->m, run->err);
     rs_cosim_vals_t vals;
     int r;
     if (F == NULL) return run->err->code;
-    rs_cosim_vals_make(&vals, run->c, NULL, NULL, 0);
+    rs_cosim_vals_make(&vals, run->c, names, values, n);
     r = cosim_at(cs, F, run->c, &vals, run->err);
     flint_free(vals.v);
     return r;

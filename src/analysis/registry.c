@@ -36,6 +36,11 @@ static const rs_opt_spec_t cosim_modes_opts[] = {
     {"h", RS_OPT_EXPR, 0, 0, NULL, "EXPR", "H"},
     {NULL, 0, 0, 0, NULL, NULL, NULL}
 };
+/* exact integration: a transition's enclosure narrower than 10^-N */
+static const rs_opt_spec_t cosim_region_opts[] = {
+    {"digits", RS_OPT_INTEGER, 1, 60, NULL, "N", "15"},
+    {NULL, 0, 0, 0, NULL, NULL, NULL}
+};
 static const rs_opt_spec_t simulate_opts[] = {
     {"steps", RS_OPT_INTEGER, 1, RS_SIMULATE_MAX_STEPS, NULL, "N", "1000"},
     {"seed", RS_OPT_INTEGER, 0, 1000000000, NULL, "S", "1"},
@@ -134,6 +139,12 @@ const rs_an_def_t rs_an_registry[] = {
     {"modes", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "", cosim_modes_opts,
      "for each eigenvalue of the one-step map: ln(lambda)/h, damping ratio, relative frequency error",
      NULL, NULL, rs_an_cosim_modes, 0},
+    {"region", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B", cosim_region_opts,
+     "certified stable/unstable intervals; each transition enclosed narrower than 10^-N, unseparated ones named",
+     rs_an_cosim_region_parse, rs_an_cosim_box_req_clear, rs_an_cosim_region, 0},
+    {"claim", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "stable|unstable when A <= NAME <= B [and ...]", NULL,
+     "proved over the box (Stein certificates on sub-boxes), refuted (certified point) or undecided (the sub-box)",
+     rs_an_cosim_claim_parse, rs_an_cosim_box_req_clear, rs_an_cosim_claim, 0},
     {"sweep", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B steps K [log] [of radius|stability]", NULL,
      "verdicts from the certified radius on a grid of one parameter", cosim_sweep_parse, sweep_req_clear, run_sweep, 0},
     {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,

@@ -61,6 +61,7 @@ typedef struct {
         struct { slong param; int to_inf; } limit;
         struct { int kind; void *dnf; } claim;       /* dnf: an_claim.c's claim_dnf_t */
         void *sweep;                                 /* sweep, map: rs_sweep_request_t (sweep_impl.h) */
+        void *cosim;                                 /* region, claim of exact integration (an_cosim_region.c) */
     } u;
 } rs_an_req_t;
 
@@ -151,6 +152,15 @@ void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_
 int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req);
 /* the run's co-simulation at the case's set values, from the forms lowered once */
 int rs_run_cosim(rs_cosim_t cs, rs_run_t *run);
+/* ... with names[i] = values[i] (i < n) overriding them */
+int rs_run_cosim_at(rs_cosim_t cs, rs_run_t *run, const char *const *names, const fmpq *values, slong n);
+/* region NAME from A to B [digits=N] and claim stable|unstable when A <= NAME <= B [and ...]
+ * of exact integration (an_cosim_region.c): certified by Stein certificates over parameter boxes */
+int rs_an_cosim_region_parse(rs_an_req_t *req, rs_run_t *run);
+int rs_an_cosim_claim_parse(rs_an_req_t *req, rs_run_t *run);
+void rs_an_cosim_box_req_clear(rs_an_req_t *req);
+int rs_an_cosim_region(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req);
 /* radius and stability of numeric recurrences and co-simulations (an_radius.c) */
 int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req);

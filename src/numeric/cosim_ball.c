@@ -5,6 +5,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_complex_math.h>
+#include <acb_mat.h>
 #include "numeric/cosim_ball.h"
 
 void rs_cosim_ball_init(rs_cosim_ball_t b)
@@ -158,6 +159,35 @@ static int has_negative_direction(const arb_mat_t P, slong prec)
     return neg;
 }
 
+/* rho0 at prec (acb_mat_approx_eig_qr at the midpoint) when the double
+ * estimate is too close to 1 for r = (1 + rho0)/2 to separate in double */
+static void mid_rho_prec(arf_t rho, const arb_mat_t M, slong prec)
+{
+    slong d = arb_mat_nrows(M), i;
+    acb_mat_t A;
+    acb_ptr E;
+    arf_t t;
+    acb_mat_init(A, d, d);
+    E = _acb_vec_init(d);
+    arf_init(t);
+    acb_mat_set_arb_mat(A, M);
+    acb_mat_get_mid(A, A);
+    acb_mat_approx_eig_qr(E, NULL, NULL, A, NULL, 0, prec);
+    arf_zero(rho);
+    for (i = 0; i < d; i++) {
+        arb_t a;
+        arb_init(a);
+        acb_get_mid(E + i, E + i);
+        acb_abs(a, E + i, prec);
+        arf_set(t, arb_midref(a));
+        if (arf_cmp(t, rho) > 0) arf_set(rho, t);
+        arb_clear(a);
+    }
+    arf_clear(t);
+    _acb_vec_clear(E, d);
+    acb_mat_clear(A);
+}
+
 int rs_cosim_ball_stein(const arb_mat_t M, slong prec)
 {
     slong d = arb_mat_nrows(M);
@@ -167,16 +197,34 @@ int rs_cosim_ball_stein(const arb_mat_t M, slong prec)
     arb_t r;
     if (d == 0 || !arb_mat_is_finite(M)) return RS_COSIM_BALL_UNDECIDED;
     rho0 = mid_rho(M);
-    if (!(rho0 >= 0) || rho0 == 1.0) return RS_COSIM_BALL_UNDECIDED;
-    want = rho0 < 1 ? RS_COSIM_BALL_STABLE : RS_COSIM_BALL_UNSTABLE;
+    if (!(rho0 >= 0)) return RS_COSIM_BALL_UNDECIDED;
+    arb_init(r);
+    if (fabs(rho0 - 1.0) < 1e-6 && prec > 53) {
+        arf_t rp;
+        arf_init(rp);
+        mid_rho_prec(rp, M, prec);
+        arf_sub_ui(rp, rp, 1, prec, ARF_RND_NEAR);
+        want = arf_sgn(rp) < 0 ? RS_COSIM_BALL_STABLE : arf_sgn(rp) > 0 ? RS_COSIM_BALL_UNSTABLE
+                                                                           : RS_COSIM_BALL_UNDECIDED;
+        /* r = 1 + (rho0 - 1)/2 */
+        arf_mul_2exp_si(rp, rp, -1);
+        arf_add_ui(arb_midref(r), rp, 1, prec, ARF_RND_NEAR);
+        arf_clear(rp);
+    } else {
+        want = rho0 < 1 ? RS_COSIM_BALL_STABLE : rho0 > 1 ? RS_COSIM_BALL_UNSTABLE : RS_COSIM_BALL_UNDECIDED;
+        arb_set_d(r, 0.5 * (1.0 + rho0));
+    }
+    if (want == RS_COSIM_BALL_UNDECIDED) {
+        arb_clear(r);
+        return want;
+    }
+    if (want == RS_COSIM_BALL_STABLE) arb_one(r);
     arb_mat_init(N, d, d);
     arb_mat_init(P, d, d);
     arb_mat_init(T, d, d);
     arb_mat_init(D, d, d);
     arb_mat_init(L, d, d);
-    arb_init(r);
-    /* r = 1 (stable) or (1 + rho0)/2 > 1 (unstable), an exact double */
-    arb_set_d(r, want == RS_COSIM_BALL_STABLE ? 1.0 : 0.5 * (1.0 + rho0));
+    /* r = 1 (stable) or (1 + rho0)/2 > 1 (unstable), an exact point */
     arb_mat_scalar_div_arb(N, M, r, prec);
     if (stein_solve(P, N, prec)) {
         arb_mat_mul(T, P, N, prec);
