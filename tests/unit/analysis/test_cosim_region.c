@@ -1,0 +1,193 @@
+/* test_cosim_region.c -- region and claim of exactly integrated subsystems
+ * (issue 14 part 1; src/analysis/an_cosim_region.c, src/numeric/cosim_ball.c).
+ * Independent check: a literal time loop of the scheme, written here from
+ * Li et al.'s definition (their eq. 3, 4, 7 and the explicit k = 0 step:
+ * the coupling force lambda_c = acc1 c1 (x2 - x1) + adc1 d1 (v2 - v1) is
+ * sampled at T_N and held constant while both subsystems are integrated
+ * over the macro step H = 1 by classical RK4 with 200 substeps); its growth
+ * rate per macro step on either side of each certified transition must be
+ * below 1 on the stable side and above 1 on the unstable side.  It shares
+ * no code with recstab (no exponentials, no eigenvalues). */
+#include "testutil.h"
+#include <math.h>
+#include <string.h>
+#include <stdlib.h>
+#include <jansson.h>
+#include "recstab/api.h"
+
+#define CASE RS_SOURCE_DIR "/cases/li-explicit-k0.case"
+
+/* the case's set values: c1 = 101/100, d1 = 1/5, all alphas 1 except acc1 */
+typedef struct { double c1, d1, acc1, adc1; } model_t;
+
+static void rhs(const model_t *m, const double *z, double lc, double *dz)
+{
+    dz[0] = z[1];
+    dz[1] = -m->c1 * z[0] - m->d1 * z[1] + lc;
+    dz[2] = z[3];
+    dz[3] = -m->c1 * z[2] - m->d1 * z[3] - lc;
+}
+
+/* growth per macro step of the explicit k = 0 co-simulation, measured
+ * between steps 1000 and 4000 (the in-phase mode e^{-d1/2} has died out) */
+static double time_loop_growth(const model_t *m)
+{
+    double z[4] = {1.0, 0.3, -0.7, 0.2}, l1 = 0.0, h = 1.0 / 200;
+    int N, s, i;
+    for (N = 1; N <= 4000; N++) {
+        double lc = m->acc1 * m->c1 * (z[2] - z[0]) + m->adc1 * m->d1 * (z[3] - z[1]), nrm = 0;
+        for (s = 0; s < 200; s++) {
+            double k1[4], k2[4], k3[4], k4[4], t[4];
+            rhs(m, z, lc, k1);
+            for (i = 0; i < 4; i++) t[i] = z[i] + 0.5 * h * k1[i];
+            rhs(m, t, lc, k2);
+            for (i = 0; i < 4; i++) t[i] = z[i] + 0.5 * h * k2[i];
+            rhs(m, t, lc, k3);
+            for (i = 0; i < 4; i++) t[i] = z[i] + h * k3[i];
+            rhs(m, t, lc, k4);
+            for (i = 0; i < 4; i++) z[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+        }
+        for (i = 0; i < 4; i++) nrm += z[i] * z[i];
+        if (N == 1000) l1 = 0.5 * log(nrm);
+        if (N == 4000) return exp((0.5 * log(nrm) - l1) / 3000.0);
+    }
+    return 0;
+}
+
+static json_t *run(const char *request, int *status)
+{
+    const char *an[2] = {request, NULL};
+    char *text = NULL, *out = NULL;
+    FILE *f = fopen(CASE, "r");
+    long n;
+    json_t *doc;
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    rewind(f);
+    text = calloc((size_t) n + 1, 1);
+    assert_true(fread(text, 1, (size_t) n, f) == (size_t) n);
+    fclose(f);
+    *status = rs_analyse_json_with(text, CASE, NULL, an, 0, 120, -1, &out);
+    doc = json_loads(out, 0, NULL);
+    rs_free(out);
+    free(text);
+    assert_non_null(doc);
+    return doc;
+}
+
+static const json_t *first_result(const json_t *doc)
+{
+    return json_array_get(json_object_get(doc, "results"), 0);
+}
+
+static double encl(const json_t *t, size_t i)
+{
+    return atof(json_string_value(json_array_get(json_object_get(t, "enclosure"), i)));
+}
+
+static void test_region_transition(void **state)
+{
+    int status;
+    json_t *doc = run("region acc1 from 1/10 to 2", &status);
+    const json_t *o = first_result(doc), *tr = json_object_get(o, "transitions"), *t;
+    model_t m = {1.01, 0.2, 0, 1};
+    double lo, hi, g_below, g_above;
+    (void) state;
+    assert_int_equal(status, 0);
+    assert_true(json_is_true(json_object_get(o, "certified")));
+    assert_int_equal(json_array_size(tr), 1);
+    assert_int_equal(json_array_size(json_object_get(o, "unseparated")), 0);
+    t = json_array_get(tr, 0);
+    assert_string_equal(json_string_value(json_object_get(t, "from")), "stable");
+    assert_string_equal(json_string_value(json_object_get(t, "to")), "unstable");
+    lo = encl(t, 0);
+    hi = encl(t, 1);
+    /* narrower than 10^-15 (digits=15), printed outward with 20 digits */
+    assert_true(hi > lo && hi - lo < 1e-15);
+    /* the intervals: [1/10, transition) stable, (transition, 2] unstable */
+    assert_int_equal(json_array_size(json_object_get(o, "intervals")), 2);
+    assert_non_null(json_object_get(json_array_get(json_object_get(o, "intervals"), 0), "hi_enclosure"));
+    /* the time loop 1/100 on either side */
+    m.acc1 = lo - 0.01;
+    g_below = time_loop_growth(&m);
+    m.acc1 = hi + 0.01;
+    g_above = time_loop_growth(&m);
+    print_message("transition in [%.17g, %.17g]; time loop growth %.6f below, %.6f above\n", lo, hi, g_below,
+                  g_above);
+    assert_true(g_below < 0.999);
+    assert_true(g_above > 1.001);
+    json_decref(doc);
+}
+
+static void test_claims(void **state)
+{
+    int status;
+    json_t *doc;
+    const json_t *o, *cx;
+    model_t m = {1.01, 0.2, 0, 1};
+    (void) state;
+    /* below the transition (time loop at the ends: decays) */
+    doc = run("claim stable when 1/10 <= acc1 <= 1/2", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "proved");
+    json_decref(doc);
+    m.acc1 = 0.5;
+    assert_true(time_loop_growth(&m) < 1);
+    /* two parameters: a box in (acc1, adc1) */
+    doc = run("claim stable when 1/5 <= acc1 <= 1/2 and 9/10 <= adc1 <= 11/10", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "proved");
+    json_decref(doc);
+    /* across the transition: refuted by a certified point the time loop confirms */
+    doc = run("claim stable when 1/2 <= acc1 <= 7/10", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 1);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "refuted");
+    cx = json_object_get(o, "counterexample");
+    assert_non_null(cx);
+    {
+        const char *s = json_string_value(json_object_get(cx, "acc1"));
+        long a, b;
+        assert_int_equal(sscanf(s, "%ld/%ld", &a, &b), 2);
+        m.acc1 = (double) a / (double) b;
+        assert_true(m.acc1 > 0.598 && m.acc1 <= 0.7);
+        assert_true(time_loop_growth(&m) > 1);
+    }
+    json_decref(doc);
+    doc = run("claim unstable when 3/5 <= acc1 <= 2", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "proved");
+    json_decref(doc);
+}
+
+static void test_errors(void **state)
+{
+    int status;
+    json_t *doc;
+    (void) state;
+    doc = run("region nosuch from 0 to 1", &status);
+    assert_int_equal(status, 2);
+    assert_non_null(strstr(json_string_value(json_object_get(json_object_get(doc, "error"), "message")),
+                           "expected a parameter"));
+    json_decref(doc);
+    doc = run("region acc1 from 1 to 1/2", &status);
+    assert_int_equal(status, 2);
+    json_decref(doc);
+    doc = run("claim stable when acc1 <= 1", &status);
+    assert_int_equal(status, 2);
+    json_decref(doc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_region_transition),
+        cmocka_unit_test(test_claims),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
