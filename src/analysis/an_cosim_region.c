@@ -341,6 +341,15 @@ static void box_ctx_clear(box_ctx_t *X)
     if (X->x != NULL) _arb_vec_clear(X->x, X->nx);
 }
 
+/* the set values that stay fixed (the box's parameters vary) */
+static json_t *sets_but_box(const rs_case_struct *c, const box_req_t *B)
+{
+    json_t *o = rs_json_sets(c);
+    slong i;
+    for (i = 0; i < B->naxes; i++) json_object_del(o, B->name[i]);
+    return o;
+}
+
 /* ---- region --------------------------------------------------------------- */
 
 typedef struct { fmpq_t lo, hi; int v; } seg_t;
@@ -546,7 +555,7 @@ int rs_an_cosim_region(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "param", json_string(B->name[0]));
         json_object_set_new(o, "from", exact_json(B->lo[0]));
         json_object_set_new(o, "to", exact_json(B->hi[0]));
-        json_object_set_new(o, "substituted", rs_json_sets(run->c));
+        json_object_set_new(o, "substituted", sets_but_box(run->c, B));
         json_object_set_new(o, "symbolic", json_false());
         json_object_set_new(o, "certified", json_boolean(all_certified));
         json_object_set_new(o, "digits", json_integer(digits));
@@ -718,7 +727,7 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
                                           "boxes", (json_int_t) done));
         if (counter != NULL) json_object_set_new(o, "counterexample", counter);
         if (fail != NULL) json_object_set_new(o, "failed_at", fail);
-        json_object_set_new(o, "substituted", rs_json_sets(run->c));
+        json_object_set_new(o, "substituted", sets_but_box(run->c, B));
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_array_append_new(run->results, o);
         if (status != 0) run->outcome |= RS_OUTCOME_FAILED;

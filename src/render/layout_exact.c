@@ -437,6 +437,10 @@ static void region_where(rs_render_t *r, const json_t *o)
 
 void rs_render_region(rs_render_t *r, const json_t *o)
 {
+    if (json_object_get(o, "transitions") != NULL) {   /* exact integration: certified over boxes */
+        rs_render_cosim_region(r, o);
+        return;
+    }
     rs_render_heading_begin(r);
     rs_render_say(r, "Stability region in ", "Stability region in $");
     rs_render_poly(r, js(o, "param"));
@@ -566,6 +570,10 @@ static void certificate_prose(rs_render_t *r, const json_t *c)
 void rs_render_claim(rs_render_t *r, const json_t *o)
 {
     const char *st = js(o, "status");
+    if (json_object_get(o, "boxes_checked") != NULL) {   /* exact integration: certified over boxes */
+        rs_render_cosim_claim(r, o);
+        return;
+    }
     rs_render_line(r, "claim", "%s", js(o, "text"));
     rs_render_line(r, "status", "%s", st);
     if (st && strcmp(st, "refuted") == 0) {

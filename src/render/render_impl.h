@@ -106,6 +106,9 @@ void rs_render_stability(rs_render_t *r, const json_t *o);
 void rs_render_region(rs_render_t *r, const json_t *o);
 void rs_render_limit(rs_render_t *r, const json_t *o);
 void rs_render_claim(rs_render_t *r, const json_t *o);
+/* region and claim of exact integration (layout_cosim.c), called by the two above */
+void rs_render_cosim_region(rs_render_t *r, const json_t *o);
+void rs_render_cosim_claim(rs_render_t *r, const json_t *o);
 void rs_render_radius(rs_render_t *r, const json_t *o);
 void rs_render_modes(rs_render_t *r, const json_t *o);
 void rs_render_simulate(rs_render_t *r, const json_t *o);
