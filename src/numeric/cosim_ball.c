@@ -4,6 +4,8 @@
 #include <math.h>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_complex_math.h>
 #include <acb_mat.h>
 #include "numeric/cosim_ball.h"
@@ -87,6 +89,32 @@ static double mid_rho(const arb_mat_t M)
     return rho;
 }
 
+/* x = K^{-1} rhs in double (GSL LU): the fast path's Stein system (d^2 unknowns) */
+static int solve_double(arb_mat_t x, const arb_mat_t K, const arb_mat_t rhs)
+{
+    slong n = arb_mat_nrows(K), i, j;
+    gsl_matrix *A = gsl_matrix_alloc((size_t) n, (size_t) n);
+    gsl_vector *b = gsl_vector_alloc((size_t) n), *y = gsl_vector_alloc((size_t) n);
+    gsl_permutation *p = gsl_permutation_alloc((size_t) n);
+    int sgn, ok;
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++)
+            gsl_matrix_set(A, (size_t) i, (size_t) j, arf_get_d(arb_midref(arb_mat_entry(K, i, j)), ARF_RND_NEAR));
+        gsl_vector_set(b, (size_t) i, arf_get_d(arb_midref(arb_mat_entry(rhs, i, 0)), ARF_RND_NEAR));
+    }
+    ok = gsl_linalg_LU_decomp(A, p, &sgn) == 0 && gsl_linalg_LU_solve(A, p, b, y) == 0;
+    for (i = 0; ok && i < n; i++) {
+        double v = gsl_vector_get(y, (size_t) i);
+        if (!isfinite(v)) ok = 0;
+        else arb_set_d(arb_mat_entry(x, i, 0), v);
+    }
+    gsl_permutation_free(p);
+    gsl_vector_free(y);
+    gsl_vector_free(b);
+    gsl_matrix_free(A);
+    return ok;
+}
+
 /* P (point, symmetric) with P - N0^T P N0 ~= I, N0 the midpoint of N: the
  * Kronecker system (I - N0^T (x) N0^T) vec P = vec I, floating point at prec
  * (only D > 0 below is certified, so P needs no error bound) */
@@ -111,7 +139,7 @@ static int stein_solve(arb_mat_t P, const arb_mat_t N, slong prec)
                     if (i == j && k == l) arb_add_ui(e, e, 1, prec);
                 }
     for (i = 0; i < d; i++) arb_one(arb_mat_entry(rhs, i * d + i, 0));
-    ok = arb_mat_approx_solve(x, K, rhs, prec);
+    ok = prec <= 64 ? solve_double(x, K, rhs) : arb_mat_approx_solve(x, K, rhs, prec);
     for (i = 0; ok && i < d; i++)
         for (k = 0; k < d; k++) {
             /* vec index i*d + k holds P[k][i]; symmetrise to an exact point matrix */
