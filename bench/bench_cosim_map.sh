@@ -3,7 +3,7 @@
 # part 3) side by side with its peers, in one run on the same machine:
 #   before   a recstab binary built from an earlier commit (BEFORE=path;
 #            skipped when unset), the same map and threads
-#   after    this tree's build/recstab
+#   after    this tree's build/recstab (of radius, and of stability: the fast Stein verdicts)
 #   poly     a polynomial map of the same size (cases/park-staggered.case,
 #            degree 4, the certified ladder)
 # and checks that before and after write the same CSV byte for byte.
@@ -38,6 +38,8 @@ echo "bench_cosim_map: $N x $N maps, $TH threads ($(nproc) cores; load $(cut -d'
 LIMAP="map acc1 0 3 $N, c1 1/2 2 $N"
 if [ -n "${BEFORE:-}" ]; then run before "$BEFORE" "$T/before.csv" "$LI" "$LIMAP"; fi
 run after "$RS" "$T/after.csv" "$LI" "$LIMAP"
+# `of stability`: the fast Stein verdict (no radius cells), every 64th point cross-checked
+run after-stability "$RS" "$T/after-stab.csv" "$LI" "$LIMAP of stability"
 run poly "$RS" "$T/poly.csv" cases/park-staggered.case "map alpha 0 3 $N, m 1/10 20 $N" --set muh=1 --set wh=1
 if [ -n "${BEFORE:-}" ]; then
     # the first line names the run (case, analysis): identical; rows byte for byte
@@ -47,3 +49,6 @@ if [ -n "${BEFORE:-}" ]; then
 fi
 printf 'poly/after (polynomial map rate over the co-simulation map rate) %.1fx\n' \
     "$(echo "$(cat "$T/rate-poly") / $(cat "$T/rate-after")" | bc -l)"
+printf 'poly/after-stability %.1fx; after-stability/after %.2fx\n' \
+    "$(echo "$(cat "$T/rate-poly") / $(cat "$T/rate-after-stability")" | bc -l)" \
+    "$(echo "$(cat "$T/rate-after-stability") / $(cat "$T/rate-after")" | bc -l)"
