@@ -216,17 +216,60 @@ static void mid_rho_prec(arf_t rho, const arb_mat_t M, slong prec)
     acb_mat_clear(A);
 }
 
-int rs_cosim_ball_stein(const arb_mat_t M, slong prec)
+/* The certificate for M/r: want = RS_COSIM_BALL_STABLE or _UNSTABLE, or
+ * _UNDECIDED for either (only sound with r = 1: P > 0 proves rho < 1, a
+ * negative direction rho > 1, since D > 0 excludes the unit circle). */
+static int stein_try(const arb_mat_t M, const arb_t r, int want, slong prec)
 {
     slong d = arb_mat_nrows(M);
-    double rho0;
-    int verdict = RS_COSIM_BALL_UNDECIDED, want;
+    int verdict = RS_COSIM_BALL_UNDECIDED;
     arb_mat_t N, P, T, D, L;
+    arb_mat_init(N, d, d);
+    arb_mat_init(P, d, d);
+    arb_mat_init(T, d, d);
+    arb_mat_init(D, d, d);
+    arb_mat_init(L, d, d);
+    arb_mat_scalar_div_arb(N, M, r, prec);
+    if (stein_solve(P, N, prec)) {
+        arb_mat_mul(T, P, N, prec);
+        arb_mat_transpose(D, N);
+        arb_mat_mul(L, D, T, prec);
+        arb_mat_sub(D, P, L, prec);
+        if (arb_mat_cho(L, D, prec)) {
+            if (want != RS_COSIM_BALL_UNSTABLE && arb_mat_cho(T, P, prec)) verdict = RS_COSIM_BALL_STABLE;
+            else if (want != RS_COSIM_BALL_STABLE && has_negative_direction(P, prec))
+                verdict = RS_COSIM_BALL_UNSTABLE;
+        }
+    }
+    arb_mat_clear(N);
+    arb_mat_clear(P);
+    arb_mat_clear(T);
+    arb_mat_clear(D);
+    arb_mat_clear(L);
+    return verdict;
+}
+
+int rs_cosim_ball_stein(const arb_mat_t M, slong prec)
+{
+    double rho0;
+    int verdict, want;
     arb_t r;
-    if (d == 0 || !arb_mat_is_finite(M)) return RS_COSIM_BALL_UNDECIDED;
-    rho0 = mid_rho(M);
-    if (!(rho0 >= 0)) return RS_COSIM_BALL_UNDECIDED;
+    if (arb_mat_nrows(M) == 0 || !arb_mat_is_finite(M)) return RS_COSIM_BALL_UNDECIDED;
+    /* r = 1 first: no eigenvalue estimate needed when it certifies */
     arb_init(r);
+    arb_one(r);
+    verdict = stein_try(M, r, RS_COSIM_BALL_UNDECIDED, prec);
+    if (verdict != RS_COSIM_BALL_UNDECIDED) {
+        arb_clear(r);
+        return verdict;
+    }
+    /* else scale by r = (1 + rho0)/2 when unstable (reciprocal eigenvalue
+     * pairs make the r = 1 system singular), from an estimate rho0 */
+    rho0 = mid_rho(M);
+    if (!(rho0 >= 0)) {
+        arb_clear(r);
+        return RS_COSIM_BALL_UNDECIDED;
+    }
     if (fabs(rho0 - 1.0) < 1e-6 && prec > 53) {
         arf_t rp;
         arf_init(rp);
@@ -242,34 +285,8 @@ int rs_cosim_ball_stein(const arb_mat_t M, slong prec)
         want = rho0 < 1 ? RS_COSIM_BALL_STABLE : rho0 > 1 ? RS_COSIM_BALL_UNSTABLE : RS_COSIM_BALL_UNDECIDED;
         arb_set_d(r, 0.5 * (1.0 + rho0));
     }
-    if (want == RS_COSIM_BALL_UNDECIDED) {
-        arb_clear(r);
-        return want;
-    }
-    if (want == RS_COSIM_BALL_STABLE) arb_one(r);
-    arb_mat_init(N, d, d);
-    arb_mat_init(P, d, d);
-    arb_mat_init(T, d, d);
-    arb_mat_init(D, d, d);
-    arb_mat_init(L, d, d);
-    /* r = 1 (stable) or (1 + rho0)/2 > 1 (unstable), an exact point */
-    arb_mat_scalar_div_arb(N, M, r, prec);
-    if (stein_solve(P, N, prec)) {
-        arb_mat_mul(T, P, N, prec);
-        arb_mat_transpose(D, N);
-        arb_mat_mul(L, D, T, prec);
-        arb_mat_sub(D, P, L, prec);
-        if (arb_mat_cho(L, D, prec)) {
-            if (want == RS_COSIM_BALL_STABLE && arb_mat_cho(T, P, prec)) verdict = RS_COSIM_BALL_STABLE;
-            else if (want == RS_COSIM_BALL_UNSTABLE && has_negative_direction(P, prec))
-                verdict = RS_COSIM_BALL_UNSTABLE;
-        }
-    }
+    /* stable: r = 1 was tried */
+    verdict = want == RS_COSIM_BALL_UNSTABLE ? stein_try(M, r, want, prec) : RS_COSIM_BALL_UNDECIDED;
     arb_clear(r);
-    arb_mat_clear(N);
-    arb_mat_clear(P);
-    arb_mat_clear(T);
-    arb_mat_clear(D);
-    arb_mat_clear(L);
     return verdict;
 }

@@ -47,9 +47,12 @@ enum {
  * definite (Cholesky) for every M in the ball.  Then M/r has no eigenvalue
  * on the unit circle, and (Stein) P > 0 iff rho(M/r) < 1: P > 0 certified
  * with r = 1 proves rho(M) < 1; a vector x with x^T P x < 0 certified with
- * r > 1 proves rho(M) > r > 1 (if rho(M/r) < 1, P = sum (M/r)^{Tk} D
- * (M/r)^k would be positive definite).  r = 1 or (1 + rho0)/2 from a GSL
- * double estimate rho0 at the midpoint.  Everything else: undecided. */
+ * r >= 1 proves rho(M) > r (if rho(M/r) < 1, P = sum (M/r)^{Tk} D (M/r)^k
+ * would be positive definite; rho(M/r) = 1 is excluded by D > 0).  r = 1
+ * first; if that fails and a GSL double estimate rho0 at the midpoint
+ * (Arb QR at prec when within 1e-6 of 1) exceeds 1, r = (1 + rho0)/2
+ * (eigenvalue pairs with lambda_i lambda_j = 1 make the r = 1 system
+ * singular).  Everything else: undecided. */
 int rs_cosim_ball_stein(const arb_mat_t M, slong prec);
 
 #endif

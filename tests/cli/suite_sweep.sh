@@ -165,6 +165,18 @@ if cmp -s "$T/lith1.csv" "$T/lith2.csv" && cmp -s "$T/lith1.csv" "$T/lith3.csv" 
     && grep -q ',stable,0,' "$T/lith1.csv" && grep -q ',unstable,2,' "$T/lith1.csv"; then
     ok "cosim map: --threads 1, 2, 3 write the same CSV (stable and unstable points)"
 else fail "cosim map threads: $(diff "$T/lith1.csv" "$T/lith2.csv" | head -3)"; fi
+# `of stability` takes the fast Stein verdict (no eigenvalues, no radius
+# cells): on a 15 x 15 grid across the stability boundary every verdict
+# equals the one the certified radius gives (the `of radius` map)
+"$RS" --csv "$T/lir.csv" --analyse "map acc1 0 3 15, c1 1/2 2 15" "$LI" >/dev/null 2>"$T/err" || fail "cosim map: $(cat "$T/err")"
+"$RS" --csv "$T/lis.csv" --analyse "map acc1 0 3 15, c1 1/2 2 15 of stability" "$LI" >/dev/null 2>"$T/err" \
+    || fail "cosim map of stability: $(cat "$T/err")"
+cut -d, -f1-9 "$T/lir.csv" | sed 1d >"$T/lir.codes"
+cut -d, -f1-9 "$T/lis.csv" | sed 1d >"$T/lis.codes"
+if cmp -s "$T/lir.codes" "$T/lis.codes" && grep -q ',stable,0,,,,certified' "$T/lis.csv" \
+    && grep -q ',unstable,2,,,,certified' "$T/lis.csv"; then
+    ok "cosim map of stability: fast Stein verdicts = certified-radius verdicts at all 225 points"
+else fail "cosim map of stability differs: $(diff "$T/lir.codes" "$T/lis.codes" | head -3)"; fi
 "$RS" --json --shard 2/3 --analyse "$LIMAP" "$LI" >"$T/lis.json" 2>"$T/err"
 if grep -q '"shard": "2/3"' "$T/lis.json" && grep -q '"computed": 5' "$T/lis.json"; then ok "cosim map JSON: shard 2/3 computed 5 of 15 points"
 else fail "cosim map JSON shard keys: $(grep -E 'shard|computed' "$T/lis.json")"; fi
