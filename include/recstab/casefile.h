@@ -141,7 +141,10 @@ typedef struct {
     slong nsubs;     rs_subsystem_t *subs;
     char *couple;          /* jacobi, gauss-seidel, monolithic, explicit, implicit */
     char *couple_first, *couple_second;
+    slong ncouple_seq; char **couple_seq;   /* gauss-seidel S1 S2 ... Sn: the order of integration */
     slong couple_order;    /* explicit/implicit order K */
+    int couple_ext;        /* implicit ... extension D|I: 'D', 'I' or 0 */
+    fmpq *couple_alpha;    /* extension I alpha_T = VALUE (NULL: 1/2) */
     rs_loc_t couple_loc;
     slong iterations;      /* 0 = none */
     slong extrapolate;     /* -1 = none (order 0 = hold the last value) */

@@ -69,7 +69,14 @@ enum {
     RS_COSIM_IMPLICIT = 1
 };
 
+enum {
+    RS_COSIM_EXT_NONE = 0,
+    RS_COSIM_EXT_D = 1,   /* coupling condition and its derivative at T_{N+1} */
+    RS_COSIM_EXT_I = 2    /* coupling condition at T_{N+1} and its integral over the macro step */
+};
+
 #define RS_COSIM_MAX_ORDER 3
+#define RS_COSIM_EXT_MAX_ORDER 2
 #define RS_COSIM_MAX_DIM 256   /* n_1 + n_2 limit */
 #define RS_COSIM_MAX_INPUTS 64 /* m limit */
 
@@ -82,6 +89,9 @@ typedef struct {
     fmpq_t H;            /* macro step, > 0 (default 1) */
     int method;          /* RS_COSIM_EXPLICIT (default) or RS_COSIM_IMPLICIT */
     slong order;         /* K in 0..RS_COSIM_MAX_ORDER (default 0) */
+    int ext;             /* implicit only: RS_COSIM_EXT_NONE (default), _D, _I
+                            (Li et al. sect. 3.2; reading in src/numeric/cosim_ext.h) */
+    fmpq_t alpha_T;      /* the intermediate sampling point T_N + alpha_T H (default 1/2) */
 } rs_cosim_struct;
 typedef rs_cosim_struct rs_cosim_t[1];
 

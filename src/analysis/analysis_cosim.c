@@ -158,6 +158,8 @@ static int cosim_at(rs_cosim_t cs, const rs_cosim_model_struct *F, const rs_case
         fmpq_set(cs->H, h0);
         cs->method = strcmp(c->couple, "implicit") == 0 ? RS_COSIM_IMPLICIT : RS_COSIM_EXPLICIT;
         cs->order = c->couple_order;
+        cs->ext = c->couple_ext == 'D' ? RS_COSIM_EXT_D : c->couple_ext == 'I' ? RS_COSIM_EXT_I : RS_COSIM_EXT_NONE;
+        if (c->couple_alpha != NULL) fmpq_set(cs->alpha_T, c->couple_alpha);
         r = rs_cosim_check(cs, err);
     }
     flint_free(in_var);

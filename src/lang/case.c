@@ -132,6 +132,9 @@ void rs_case_clear(rs_case_t c)
     flint_free(c->couple);
     flint_free(c->couple_first);
     flint_free(c->couple_second);
+    for (i = 0; i < c->ncouple_seq; i++) flint_free(c->couple_seq[i]);
+    flint_free(c->couple_seq);
+    if (c->couple_alpha != NULL) { fmpq_clear(c->couple_alpha); flint_free(c->couple_alpha); }
     rs_loc_clear(&c->couple_loc);
     CLEAR_ALL(c->forces, c->nforces, rs_force_clear);
     CLEAR_ALL(c->rec, c->nrec, rs_recterm_clear);

@@ -5,7 +5,8 @@
  *     integrate NAME rk TABLEAU STEP      (a name, or [A11, A12; A21, A22 | b1, b2])
  *     integrate NAME adams-bashforth K STEP | adams-moulton K STEP | bdf K STEP
  *     integrate NAME hht ALPHA STEP | generalized-alpha RHO_INF STEP | wbz ALPHA STEP | leapfrog STEP
- *     couple jacobi | gauss-seidel S1 S2 | monolithic | explicit order K | implicit order K
+ *     couple jacobi | gauss-seidel S1 S2 ... Sn | monolithic | explicit order K
+ *            | implicit order K [extension D | extension I [alpha_T = VALUE]]
  *     iterations K    extrapolate order K    coupling force NAME = EXPR */
 #include <ctype.h>
 #include <stdlib.h>
@@ -306,6 +307,70 @@ static int st_integrate(rs_stmt_t *x, size_t i)
     return rest_expr(&s->step, x, i);
 }
 
+/* [extension D | extension I [alpha_T = VALUE]] after `couple implicit order K`
+ * (Li et al. sect. 3.2; the reading: src/numeric/cosim_ext.h) */
+static int couple_extension(rs_stmt_t *x, size_t i)
+{
+    const char *t = x->src.text;
+    rs_case_struct *c = x->c;
+    size_t p0;
+    char *w;
+    rs_expr_t *e = NULL;
+    int r;
+    _rs_skip_ws(t, &i);
+    if (t[i] == '\0') return RS_OK;
+    p0 = i;
+    w = _rs_read_token(t, &i);
+    if (w == NULL || strcmp(w, "extension") != 0) {
+        flint_free(w);
+        return at(x, p0, "expected end of line or 'extension D|I', found '%s'", t + p0);
+    }
+    flint_free(w);
+    if (strcmp(c->couple, "implicit") != 0)
+        return at(x, p0, "the extension couplings correct an implicit step: write 'couple implicit order K "
+                  "extension ...'%s", "");
+    _rs_skip_ws(t, &i);
+    p0 = i;
+    w = _rs_read_token(t, &i);
+    if (w == NULL || strlen(w) != 1 || (w[0] != 'D' && w[0] != 'I')) {
+        flint_free(w);
+        return at(x, p0, "expected D (derivative) or I (integral) after extension, found '%s'", t + p0);
+    }
+    c->couple_ext = w[0];
+    flint_free(w);
+    if (c->couple_order > 2)
+        return at(x, p0, "expected 'order K' with K = 0, 1, 2 for the extension couplings%s", "");
+    _rs_skip_ws(t, &i);
+    if (t[i] == '\0') return RS_OK;
+    p0 = i;
+    w = _rs_read_ident(t, &i);
+    if (w == NULL || strcmp(w, "alpha_T") != 0) {
+        flint_free(w);
+        return at(x, p0, "expected end of line or 'alpha_T = VALUE', found '%s'", t + p0);
+    }
+    flint_free(w);
+    if (c->couple_ext != 'I')
+        return at(x, p0, "alpha_T (the intermediate sampling point) is an option of extension I; extension D "
+                  "samples at T_{N+1/2}%s", "");
+    _rs_skip_ws(t, &i);
+    if (t[i] != '=') return at(x, i, "expected '=' after alpha_T, found '%s'", t + i);
+    i++;
+    _rs_skip_ws(t, &i);
+    p0 = i;
+    r = rs_expr_parse(&e, &x->src, &i, x->err);
+    if (r != RS_OK) return r;
+    c->couple_alpha = flint_malloc(sizeof(fmpq));
+    fmpq_init(c->couple_alpha);
+    r = rs_expr_eval_const(c->couple_alpha, e, &x->src, x->err);
+    rs_expr_free(e);
+    if (r != RS_OK) return r;
+    if (fmpq_sgn(c->couple_alpha) <= 0 || fmpq_cmp_si(c->couple_alpha, 1) >= 0)
+        return at(x, p0, "expected alpha_T strictly between 0 and 1, found '%s'", t + p0);
+    _rs_skip_ws(t, &i);
+    if (t[i] != '\0') return at(x, i, "expected end of line, found '%s'", t + i);
+    return RS_OK;
+}
+
 static int st_couple(rs_stmt_t *x, size_t i)
 {
     const char *t = x->src.text;
@@ -320,12 +385,20 @@ static int st_couple(rs_stmt_t *x, size_t i)
     if (w && (strcmp(w, "jacobi") == 0 || strcmp(w, "monolithic") == 0)) {
         c->couple = w;
     } else if (w && strcmp(w, "gauss-seidel") == 0) {
+        char *s;
         c->couple = w;
-        c->couple_first = _rs_read_token(t, &i);
-        c->couple_second = _rs_read_token(t, &i);
-        if (c->couple_second == NULL)
-            return at(x, i, "expected two subsystem names after gauss-seidel (the first is "
-                      "integrated first), found '%s'", t + i);
+        /* S1 S2 ... Sn: the order in which the subsystems are integrated */
+        for (;;) {
+            _rs_skip_ws(t, &i);
+            if ((s = _rs_read_token(t, &i)) == NULL) break;
+            RS_GROW(c->couple_seq, c->ncouple_seq);
+            c->couple_seq[c->ncouple_seq++] = s;
+        }
+        if (c->ncouple_seq < 2)
+            return at(x, i, "expected the names of the subsystems after gauss-seidel, in the order they are "
+                      "integrated (at least two), found '%s'", t + i);
+        c->couple_first = rs_strdup(c->couple_seq[0]);
+        c->couple_second = rs_strdup(c->couple_seq[1]);
     } else if (w && (strcmp(w, "explicit") == 0 || strcmp(w, "implicit") == 0)) {
         char *o = _rs_read_token(t, &i), *k;
         c->couple = w;
@@ -336,9 +409,10 @@ static int st_couple(rs_stmt_t *x, size_t i)
         }
         c->couple_order = atol(k);
         flint_free(o); flint_free(k);
+        return couple_extension(x, i);
     } else {
         flint_free(w);
-        return at(x, p0, "expected jacobi, gauss-seidel S1 S2, monolithic, explicit order K or "
+        return at(x, p0, "expected jacobi, gauss-seidel S1 S2 ..., monolithic, explicit order K or "
                   "implicit order K, found '%s'", t + p0);
     }
     _rs_skip_ws(t, &i);

@@ -60,6 +60,7 @@
 #include "recstab/budget.h"
 #include "recstab/cosim.h"
 #include "numeric/cosim_ball.h"
+#include "numeric/cosim_ext.h"
 
 /* ------------------------------------------------------------------ */
 /* model                                                               */
@@ -103,12 +104,16 @@ void rs_cosim_init_m(rs_cosim_t cs, slong n1, slong n2, slong m)
     fmpq_one(cs->H);
     cs->method = RS_COSIM_EXPLICIT;
     cs->order = 0;
+    cs->ext = RS_COSIM_EXT_NONE;
+    fmpq_init(cs->alpha_T);
+    fmpq_set_si(cs->alpha_T, 1, 2);
 }
 
 void rs_cosim_clear(rs_cosim_t cs)
 {
     _free_mats(cs);
     fmpq_clear(cs->H);
+    fmpq_clear(cs->alpha_T);
 }
 
 void rs_cosim_set_dims(rs_cosim_t cs, slong n1, slong n2)
@@ -165,7 +170,7 @@ int rs_cosim_check(const rs_cosim_t cs, rs_error_t err)
         return rs_error_set(err, RS_ERR_INPUT,
                             "cosim: approximation order K = %ld outside "
                             "0..%d", (long) cs->order, RS_COSIM_MAX_ORDER);
-    return RS_OK;
+    return rs_cosim_ext_check(cs, err);
 }
 
 /* Signs follow the printed equations of motion (2)/(4): the coupling force
@@ -638,6 +643,9 @@ int rs_cosim_recurrence(rs_cosim_rec_t rec, const rs_cosim_t cs, slong prec,
     int rc = rs_cosim_check(cs, err), impl;
     if (rc != RS_OK)
         return rc;
+    if (cs->ext != RS_COSIM_EXT_NONE)
+        return rs_error_set(err, RS_ERR_INPUT, "cosim: the D-/I-extension couplings have a one-step map "
+                            "(rs_cosim_transition), not the recurrence of eq. (15)");
     n = cs->n1 + cs->n2;
     K = cs->order;
     m = cs->m;
@@ -715,6 +723,8 @@ slong rs_cosim_ball_dim(const rs_cosim_ball_t b)
 
 slong rs_cosim_transition_dim(const rs_cosim_t cs)
 {
+    if (cs->ext != RS_COSIM_EXT_NONE)   /* state z_N only (cosim_ext.h) */
+        return cs->n1 + cs->n2;
     return cs->n1 + cs->n2 + _hist(cs) * cs->m;
 }
 
@@ -824,6 +834,8 @@ int rs_cosim_transition(arb_mat_t M, const rs_cosim_t cs, slong prec,
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK)
         return rc;
+    if (cs->ext != RS_COSIM_EXT_NONE)
+        return rs_cosim_ext_transition(M, cs, prec, err);
     rs_cosim_ball_init(b);
     _own_ball(b, cs, prec);
     rc = rs_cosim_ball_transition(M, b, prec, err);
@@ -1010,6 +1022,16 @@ static int _build(acb_mat_struct **A, slong *k, slong *cnt, int route,
             *cnt = rec->k + 1;
         }
         rs_cosim_rec_clear(rec);
+        return rc;
+    }
+    if (route == _ROUTE_TRANSITION && cs->ext != RS_COSIM_EXT_NONE) {
+        /* D-/I-extension: the n x n one-step map of z_N (cosim_ext.c) */
+        arb_mat_t M;
+        arb_mat_init(M, n, n);
+        rc = rs_cosim_ext_transition(M, cs, prec, err);
+        if (rc == RS_OK)
+            _set_poly(A, k, cnt, M);
+        arb_mat_clear(M);
         return rc;
     }
     if (route == _ROUTE_TRANSITION) {
