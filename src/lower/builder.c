@@ -17,7 +17,7 @@ typedef struct {
     rs_model_struct *m;    /* receives the unknowns and equations */
     slong K;               /* iterations */
     int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel */
-    slong first, second;   /* gauss-seidel order */
+    slong *rank;           /* gauss-seidel: each subsystem's place in the order of integration */
     slong *vel;            /* per subsystem, per state: index of its velocity (pair) or -1 */
     int *pair;             /* per subsystem: integrator works on (x, v) pairs */
     rs_tableau_struct *tab; /* per subsystem: its Butcher tableau (rk), s = 0 otherwise */
@@ -116,12 +116,13 @@ static slong extrap_coeff(slong K, slong i)
     return (i % 2) ? -r : r;
 }
 
-/* partner state p as seen by subsystem a in iterate j */
-static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong j, pos_t at)
+/* partner state p (of subsystem b) as seen by subsystem a in iterate j:
+ * Gauss-Seidel sees the new value of a subsystem integrated before a */
+static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong b, slong j, pos_t at)
 {
     int delayed;
     if (g->kind == 0) return var(p, j, g->K, 1, at);
-    delayed = (g->kind == 1) || (g->kind == 2 && a == g->first);
+    delayed = (g->kind == 1) || (g->kind == 2 && g->rank[b] > g->rank[a]);
     if (j == 0 && delayed) {
         slong K = g->c->extrapolate < 0 ? 0 : g->c->extrapolate, i;
         rs_expr_t *e;
@@ -264,7 +265,7 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
         }
         if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
             out = sa == a || ((g->stage >= 0 || g->mix) && same_method(g, a, sa)) ? own(g, sa, e->name, j, at)
-                : partner(g, e->name, a, j, at);
+                : partner(g, e->name, a, sa, j, at);
         else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
             out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
         else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
@@ -348,12 +349,25 @@ static int coupling_kind(gen_t *g, const rs_case_struct *c, rs_error_t err)
         return err_at(err, RS_ERR_INPUT, &c->subs[0].loc, 1, "%s", msg);
     } else if (strcmp(c->couple, "jacobi") == 0) g->kind = 1;
     else {
+        slong i, b;
+        char msg[160];
         g->kind = 2;
-        g->first = sub_index(c, c->couple_first);
-        g->second = sub_index(c, c->couple_second);
-        if (g->first < 0 || g->second < 0 || g->first == g->second || c->nsubs != 2)
-            return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "gauss-seidel needs the names of the two subsystems, found '%s'",
-                          c->couple_first ? c->couple_first : "");
+        for (i = 0; i < c->nsubs; i++) g->rank[i] = -1;
+        for (i = 0; i < c->ncouple_seq; i++) {
+            if ((b = sub_index(c, c->couple_seq[i])) < 0)
+                return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "gauss-seidel: '%s' is not a declared subsystem",
+                              c->couple_seq[i]);
+            if (g->rank[b] >= 0)
+                return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "gauss-seidel: subsystem '%s' is named twice",
+                              c->couple_seq[i]);
+            g->rank[b] = i;
+        }
+        for (i = 0; i < c->nsubs; i++)
+            if (g->rank[i] < 0) {
+                snprintf(msg, sizeof msg, "gauss-seidel names every subsystem in the order they are integrated "
+                         "(%ld declared); missing: %s", (long) c->nsubs, c->subs[i].name);
+                return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "%s", msg);
+            }
     }
     g->K = g->kind == 0 ? 0 : c->iterations;
     return RS_OK;
@@ -390,7 +404,12 @@ static int find_pairs(gen_t *g, slong a, rs_error_t err)
         if (k >= 0 && k != si) vel[si] = k;
     }
     if (!g->pair[a]) return RS_OK;
-    if (g->K > 0) return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations with %s are not supported", s->method);
+    if (g->K > 0 && strcmp(s->method, "central-difference") == 0)
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations are not defined for %s: it is explicit (x[n+1] "
+                      "uses the accelerations at n only), so every iterate would equal the first", s->method);
+    if (g->K > 0 && is_alpha(s))
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations with %s are not supported (where the iterates "
+                      "enter its intermediate time t[n+1-alpha_f] is not defined by recstab)", s->method);
     for (k = 0; k < s->nstates; k++) {
         int isvel = 0;
         slong q;
@@ -463,25 +482,25 @@ static int gen_unknowns(const gen_t *g, rs_error_t err)
     return r;
 }
 
-/* Newmark's update of the pair (x, v) with parameter trees B, G (consumed) */
+/* Newmark's update of the pair (x, v) of iterate j (of K) with parameter trees B, G (consumed) */
 static void newmark_update(rs_model_struct *m, const rs_subsystem_t *s, const char *x, const char *v, rs_expr_t *B,
-                           rs_expr_t *G, pos_t p)
+                           rs_expr_t *G, slong j, slong K, pos_t p)
 {
     const rs_expr_t *h = s->step;
     rs_expr_t *acc = P(op(RS_EXPR_ADD,
                           op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(B)), p)),
                              dot(v, 0, p), p),
-                          op(RS_EXPR_MUL, P(B), dot(v, 1, p), p), p));
-    add_eq(m, seq(x, 1, p),
+                          op(RS_EXPR_MUL, P(B), dvar(v, j, K, 1, p), p), p));
+    add_eq(m, var(x, j, K, 1, p),
            op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
               op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
     acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(G)), p)), dot(v, 0, p), p),
-               op(RS_EXPR_MUL, P(G), dot(v, 1, p), p), p));
-    add_eq(m, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
+               op(RS_EXPR_MUL, P(G), dvar(v, j, K, 1, p), p), p));
+    add_eq(m, var(v, j, K, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
 }
 
-/* the integration formula of a (position x, velocity v) pair */
-static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char *x, const char *v)
+/* the integration formula of a (position x, velocity v) pair in iterate j (of K) */
+static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char *x, const char *v, slong j, slong K)
 {
     pos_t p = pos_of(&s->intloc);
     const rs_expr_t *h = s->step;
@@ -491,20 +510,11 @@ static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char
         if (am) { G = op(RS_EXPR_SUB, G, am, p); B = op(RS_EXPR_SUB, B, alpha_m(s, p), p); }
         if (af) { G = op(RS_EXPR_ADD, G, af, p); B = op(RS_EXPR_ADD, B, alpha_f(s, p), p); }
         B = op(RS_EXPR_DIV, op(RS_EXPR_POW, P(B), num(2, p), p), num(4, p), p);
-        newmark_update(m, s, x, v, B, G, p);
+        newmark_update(m, s, x, v, B, G, j, K, p);
     } else if (strcmp(s->method, "newmark") == 0) {
-        /* x[n+1] = x[n] + (h)*v[n] + (h)^2*((1/2 - (B))*v_dot[n] + (B)*v_dot[n+1]) */
-        rs_expr_t *acc = P(op(RS_EXPR_ADD,
-                              op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(s->arg1)), p)),
-                                 dot(v, 0, p), p),
-                              op(RS_EXPR_MUL, P(copy(s->arg1)), dot(v, 1, p), p), p));
-        add_eq(m, seq(x, 1, p),
-               op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
-                  op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
-        /* v[n+1] = v[n] + (h)*((1 - (G))*v_dot[n] + (G)*v_dot[n+1]) */
-        acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(s->arg2)), p)), dot(v, 0, p), p),
-                   op(RS_EXPR_MUL, P(copy(s->arg2)), dot(v, 1, p), p), p));
-        add_eq(m, seq(v, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
+        /* X[n+1] = x[n] + (h)*v[n] + (h)^2*((1/2 - (B))*v_dot[n] + (B)*V_dot[n+1]),
+         * V[n+1] = v[n] + (h)*((1 - (G))*v_dot[n] + (G)*V_dot[n+1]); X, V the iterate's */
+        newmark_update(m, s, x, v, copy(s->arg1), copy(s->arg2), j, K, p);
     } else {
         /* central difference: x[n+1] - 2*x[n] + x[n-1] = (h)^2*v_dot[n], 2*(h)*v[n] = x[n+1] - x[n-1] */
         add_eq(m, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
@@ -658,7 +668,7 @@ static int gen_equations(gen_t *g, slong a, slong j, rs_error_t err)
             }
         }
         if (g->pair[a]) {
-            if (vk >= 0) pair_formula(g->m, s, x, s->states[vk].name);   /* velocities go with their position */
+            if (vk >= 0) pair_formula(g->m, s, x, s->states[vk].name, j, g->K);   /* velocities go with their position */
         } else {
             formula(g->m, g, s, x, j);
         }
@@ -700,8 +710,9 @@ int rs_builder_lower(rs_model_struct *m, rs_error_t err)
     g.c = c;
     g.m = m;
     g.stage = -1;
+    g.rank = flint_malloc(c->nsubs * sizeof(slong));
     r = coupling_kind(&g, c, err);
-    if (r != RS_OK) return r;
+    if (r != RS_OK) { flint_free(g.rank); return r; }
     g.vel = flint_malloc(c->nsubs * MAX_STATES * sizeof(slong));
     g.pair = flint_calloc(c->nsubs, sizeof(int));
     g.tab = flint_calloc(c->nsubs, sizeof(rs_tableau_struct));
@@ -720,5 +731,6 @@ int rs_builder_lower(rs_model_struct *m, rs_error_t err)
     flint_free(g.tab);
     flint_free(g.vel);
     flint_free(g.pair);
+    flint_free(g.rank);
     return r;
 }
