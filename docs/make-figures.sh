@@ -47,4 +47,13 @@ for model in sym unsym; do
     done
   done
 done
+# Li et al. Fig. 8: I-Extension, k = 1, alpha_T = 1/4, 1/2, 3/4, symmetric and
+# unsymmetric models (recstab's reading of the extension: src/numeric/cosim_ext.h).
+for model in sym unsym; do
+  for a in 1_4 "" 3_4; do
+    f=cases/cosim/li-ext-i-k1${a:+-a$a}-$model.case
+    $RS --plot "$OUT/li-fig8-ext-i-k1-a${a:-1_2}-$model.png" \
+        --analyse "map lr1 -2 -1/100 80, li1 1/100 2 80 of radius" "$f" > /dev/null || [ $? -le 1 ]
+  done
+done
 ls -1 "$OUT"
