@@ -16,7 +16,8 @@ typedef struct {
     const rs_case_struct *c;
     rs_model_struct *m;    /* receives the unknowns and equations */
     slong K;               /* iterations */
-    int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel */
+    int kind;              /* 0 monolithic, 1 jacobi, 2 gauss-seidel, 3 explicit, 4 implicit (order corder) */
+    slong corder;
     slong *rank;           /* gauss-seidel: each subsystem's place in the order of integration */
     slong *vel;            /* per subsystem, per state: index of its velocity (pair) or -1 */
     int *pair;             /* per subsystem: integrator works on (x, v) pairs */
@@ -249,6 +250,126 @@ static int same_method(const gen_t *g, slong a, slong b)
     return 1;
 }
 
+/* ---- couple explicit|implicit order K with integrators (Li et al.'s coupling) ----
+ * Each coupling variable (a partner state used, or a `coupling force` as a
+ * whole, own states included) is the degree-K polynomial in tau (the macro
+ * step's time, t = t[n] + tau h) through its values at the nodes tau_j = -j
+ * (explicit: extrapolation from n, n-1, ..., n-K) or 1 - j (implicit: the
+ * new value u[n+1] = its expression at the new states, solved with the step,
+ * then n, ..., n+1-K), evaluated where the integrator evaluates the
+ * right-hand side: tau = 1 for the equation of motion at t[n+1], c_i for a
+ * Runge-Kutta stage, 1 - alpha_f for the alpha methods. */
+
+/* node j's shift */
+static slong node_shift(const gen_t *g, slong j) { return g->kind == 4 ? 1 - j : -j; }
+
+/* l_j(tau) = prod_{k != j} (tau - tau_k)/(tau_j - tau_k) as a tree; tau a
+ * number (tq) or a tree (tt, copied) */
+static rs_expr_t *basis(const gen_t *g, slong j, const fmpq_t tq, const rs_expr_t *tt, pos_t p)
+{
+    slong k, n = g->corder + 1;
+    fmpq_t v, d;
+    rs_expr_t *e = NULL;
+    fmpq_init(v);
+    fmpq_init(d);
+    fmpq_one(v);
+    for (k = 0; k < n; k++) {
+        if (k == j) continue;
+        fmpq_set_si(d, node_shift(g, j) - node_shift(g, k), 1);
+        fmpq_inv(d, d);
+        if (tt == NULL) {
+            fmpq_t t;
+            fmpq_init(t);
+            fmpq_sub_si(t, tq, node_shift(g, k));
+            fmpq_mul(v, v, t);
+            fmpq_clear(t);
+        } else {
+            rs_expr_t *f = P(op(RS_EXPR_SUB, P(copy(tt)), num(node_shift(g, k), p), p));
+            if (node_shift(g, k) < 0) f = P(op(RS_EXPR_ADD, P(copy(tt)), num(-node_shift(g, k), p), p));
+            e = e == NULL ? f : op(RS_EXPR_MUL, e, f, p);
+        }
+        fmpq_mul(v, v, d);
+    }
+    if (e == NULL || !fmpq_is_one(v)) {
+        rs_expr_t *c = rat(v, p);
+        if (fmpq_sgn(v) < 0) c = P(rs_expr_new_op(RS_EXPR_NEG, c, NULL, p.file, p.line, p.col));
+        e = e == NULL ? c : op(RS_EXPR_MUL, c, e, p);
+    }
+    fmpq_clear(v);
+    fmpq_clear(d);
+    return e;
+}
+
+/* a copy of the force expression e with every state at n + shift */
+static rs_expr_t *at_shift(const gen_t *g, const rs_expr_t *e, slong shift, rs_error_t err)
+{
+    const rs_case_struct *c = g->c;
+    rs_expr_t *out;
+    slong sa, sk, li;
+    if (e->kind == RS_EXPR_NAME || e->kind == RS_EXPR_CALL) {
+        pos_t at = pos_node(e);
+        if (e->kind == RS_EXPR_NAME && !e->shifted && find_state(c, e->name, &sa, &sk))
+            out = seq(e->name, shift, at);
+        else if (e->kind == RS_EXPR_NAME && !e->shifted && (((li = rs_case_let_index(c, e->name)) >= 0
+                                                              && !c->lets[li].shifted)
+                                                             || rs_case_param_index(c, e->name) >= 0))
+            out = rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+        else {
+            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                            "expected states, params and unshifted lets in a coupling force; found '%s'", e->name);
+            return NULL;
+        }
+        out->paren += e->paren;
+        return out;
+    }
+    if (e->kind == RS_EXPR_NUM) return copy(e);
+    out = rs_expr_new_op(e->kind, NULL, NULL, e->file, e->line, e->col);
+    out->paren = e->paren;
+    if ((out->a = at_shift(g, e->a, shift, err)) == NULL
+        || (e->b != NULL && (out->b = at_shift(g, e->b, shift, err)) == NULL)) {
+        rs_expr_free(out);
+        return NULL;
+    }
+    return out;
+}
+
+/* the coupling variable (partner state name, or force expression fe) as
+ * subsystem a's right-hand side sees it now (g->stage, g->mix) */
+static rs_expr_t *coupled(const gen_t *g, slong a, const char *name, const rs_expr_t *fe, pos_t at, rs_error_t err)
+{
+    const rs_subsystem_t *s = &g->c->subs[a];
+    pos_t p = pos_of(&s->intloc);
+    fmpq_t tq;
+    rs_expr_t *tt = NULL, *e = NULL;
+    slong j, i;
+    fmpq_init(tq);
+    fmpq_one(tq);
+    if (g->stage >= 0) {   /* c_i = sum_l a_il */
+        fmpq_zero(tq);
+        for (i = 0; i < g->tab[a].s; i++) fmpq_add(tq, tq, g->tab[a].A + g->stage * g->tab[a].s + i);
+    } else if (g->mix && (tt = alpha_f(s, p)) != NULL) {
+        tt = P(op(RS_EXPR_SUB, num(1, p), tt, p));
+    }
+    for (j = 0; j <= g->corder; j++) {
+        rs_expr_t *v = fe ? at_shift(g, fe, node_shift(g, j), err) : seq(name, node_shift(g, j), at), *b, *t;
+        if (v == NULL) { rs_expr_free(e); e = NULL; break; }
+        b = basis(g, j, tq, tt, p);
+        t = op(RS_EXPR_MUL, b, P(v), at);
+        e = e == NULL ? t : op(RS_EXPR_ADD, e, t, at);
+    }
+    rs_expr_free(tt);
+    fmpq_clear(tq);
+    return e == NULL ? NULL : P(e);
+}
+
+static slong force_index(const rs_case_struct *c, const char *name)
+{
+    slong i;
+    for (i = 0; i < c->nforces; i++)
+        if (strcmp(c->forces[i].name, name) == 0) return i;
+    return -1;
+}
+
 /* a copy of the right-hand side e of subsystem a, iterate j, with every name
  * resolved to a sequence; NULL and err set on an error (at the node) */
 static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
@@ -263,7 +384,13 @@ static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs
                             "state equations are written without shifts; found '%s['", e->name);
             return NULL;
         }
-        if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
+        /* explicit/implicit coupling: partner states and forces are coupling variables */
+        int pst = g->kind >= 3 && e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk) && sa != a;
+        slong fi = g->kind >= 3 && e->kind == RS_EXPR_NAME && !pst ? force_index(c, e->name) : -1;
+        if (pst || fi >= 0) {
+            out = coupled(g, a, e->name, pst ? NULL : c->forces[fi].e, at, err);
+            if (out == NULL) return NULL;
+        } else if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
             out = sa == a || ((g->stage >= 0 || g->mix) && same_method(g, a, sa)) ? own(g, sa, e->name, j, at)
                 : partner(g, e->name, a, sa, j, at);
         else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
@@ -338,9 +465,20 @@ static int check_subsystems(const rs_case_struct *c, int *exact, rs_error_t err)
 
 static int coupling_kind(gen_t *g, const rs_case_struct *c, rs_error_t err)
 {
-    if (c->couple && (strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0))
-        return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0,
-                      "applied-force coupling (couple %s order K) needs `integrate ... exact`", c->couple);
+    if (c->couple && (strcmp(c->couple, "explicit") == 0 || strcmp(c->couple, "implicit") == 0)) {
+        g->kind = strcmp(c->couple, "explicit") == 0 ? 3 : 4;
+        g->corder = c->couple_order;
+        g->K = 0;
+        if (c->couple_ext)
+            return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "the extension couplings are defined for subsystems "
+                          "integrated exactly (`integrate S exact H`)%s", "");
+        if (c->couple_order > RS_CASE_MAX_EXTRAPOLATE)
+            return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "coupling order too high (limit 6)%s", "");
+        if (c->iterations > 0 || c->extrapolate >= 0)
+            return err_at(err, RS_ERR_INPUT, &c->couple_loc, 0, "couple %s order K has its own polynomials: "
+                          "`iterations` and `extrapolate` apply to jacobi and gauss-seidel", c->couple);
+        return RS_OK;
+    }
     if (c->nsubs == 1 || (c->couple && strcmp(c->couple, "monolithic") == 0)) g->kind = 0;
     else if (c->couple == NULL) {
         char msg[256];

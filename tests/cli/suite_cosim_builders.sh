@@ -2,7 +2,9 @@
 # suite_cosim_builders.sh -- couplings written with the builders against the
 # same schemes written as equations by hand (cases/cosim/*-by-hand.case):
 # Gauss-Seidel over three subsystems in a given order, and Jacobi with one
-# iteration of Newmark subsystems.  The characteristic polynomials must be
+# iteration of Newmark subsystems, couple explicit|implicit order K with
+# integrators (backward Euler + trapezoidal; midpoint rule + backward Euler).
+# The characteristic polynomials must be
 # identical.  Plus the extension couplings' case files run and decide.
 # Prints "ok ..." or "FAIL ..." per check.
 BUILD=${BUILD:-build}
@@ -13,7 +15,7 @@ fail() { echo "FAIL $*"; }
 
 poly() { "$RS" --analyse charpoly "$1" 2>&1 | sed -n 's/^  p(lambda) *//p' | head -1; }
 
-for pair in gs3 newmark-iter; do
+for pair in gs3 newmark-iter li-explicit-integrator li-implicit-integrator; do
     a=$(poly cases/cosim/$pair-builder.case); b=$(poly cases/cosim/$pair-by-hand.case)
     if [ -n "$a" ] && [ "$a" = "$b" ]; then ok "$pair: builder = by hand ($a)"
     else fail "$pair: builder '$a' vs by hand '$b'"; fi
