@@ -652,7 +652,16 @@ static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char
     } else if (strcmp(s->method, "newmark") == 0) {
         /* X[n+1] = x[n] + (h)*v[n] + (h)^2*((1/2 - (B))*v_dot[n] + (B)*V_dot[n+1]),
          * V[n+1] = v[n] + (h)*((1 - (G))*v_dot[n] + (G)*V_dot[n+1]); X, V the iterate's */
-        newmark_update(m, s, x, v, copy(s->arg1), copy(s->arg2), j, K, p);
+        rs_expr_t *acc = P(op(RS_EXPR_ADD,
+                              op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, op(RS_EXPR_DIV, num(1, p), num(2, p), p), P(copy(s->arg1)), p)),
+                                 dot(v, 0, p), p),
+                              op(RS_EXPR_MUL, P(copy(s->arg1)), dvar(v, j, K, 1, p), p), p));
+        add_eq(m, var(x, j, K, 1, p),
+               op(RS_EXPR_ADD, op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(h)), seq(v, 0, p), p), p),
+                  op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), acc, p), p), &s->intloc);
+        acc = P(op(RS_EXPR_ADD, op(RS_EXPR_MUL, P(op(RS_EXPR_SUB, num(1, p), P(copy(s->arg2)), p)), dot(v, 0, p), p),
+                   op(RS_EXPR_MUL, P(copy(s->arg2)), dvar(v, j, K, 1, p), p), p));
+        add_eq(m, var(v, j, K, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
     } else {
         /* central difference: x[n+1] - 2*x[n] + x[n-1] = (h)^2*v_dot[n], 2*(h)*v[n] = x[n+1] - x[n-1] */
         add_eq(m, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
