@@ -300,37 +300,47 @@ static rs_expr_t *basis(const gen_t *g, slong j, const fmpq_t tq, const rs_expr_
     return e;
 }
 
-/* a copy of the force expression e with every state at n + shift */
-static rs_expr_t *at_shift(const gen_t *g, const rs_expr_t *e, slong shift, rs_error_t err)
+/* a copy of e with every name resolved by leaf (its parentheses kept):
+ * the one tree walk of subst and at_shift; NULL and err set on an error */
+typedef rs_expr_t *(*leaf_fn)(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err);
+static rs_expr_t *map_tree(const gen_t *g, slong a, slong j, const rs_expr_t *e, leaf_fn leaf, rs_error_t err)
 {
-    const rs_case_struct *c = g->c;
     rs_expr_t *out;
-    slong sa, sk, li;
     if (e->kind == RS_EXPR_NAME || e->kind == RS_EXPR_CALL) {
-        pos_t at = pos_node(e);
-        if (e->kind == RS_EXPR_NAME && !e->shifted && find_state(c, e->name, &sa, &sk))
-            out = seq(e->name, shift, at);
-        else if (e->kind == RS_EXPR_NAME && !e->shifted && (((li = rs_case_let_index(c, e->name)) >= 0
-                                                              && !c->lets[li].shifted)
-                                                             || rs_case_param_index(c, e->name) >= 0))
-            out = rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
-        else {
-            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
-                            "expected states, params and unshifted lets in a coupling force; found '%s'", e->name);
-            return NULL;
-        }
-        out->paren += e->paren;
+        if ((out = leaf(g, a, j, e, err)) != NULL) out->paren += e->paren;
         return out;
     }
     if (e->kind == RS_EXPR_NUM) return copy(e);
     out = rs_expr_new_op(e->kind, NULL, NULL, e->file, e->line, e->col);
     out->paren = e->paren;
-    if ((out->a = at_shift(g, e->a, shift, err)) == NULL
-        || (e->b != NULL && (out->b = at_shift(g, e->b, shift, err)) == NULL)) {
+    if ((out->a = map_tree(g, a, j, e->a, leaf, err)) == NULL
+        || (e->b != NULL && (out->b = map_tree(g, a, j, e->b, leaf, err)) == NULL)) {
         rs_expr_free(out);
         return NULL;
     }
     return out;
+}
+
+/* a name of a coupling force at n + shift: states shifted, params and unshifted lets kept */
+static rs_expr_t *shift_leaf(const gen_t *g, slong a, slong shift, const rs_expr_t *e, rs_error_t err)
+{
+    const rs_case_struct *c = g->c;
+    slong sa, sk, li;
+    pos_t at = pos_node(e);
+    (void) a;
+    if (e->kind == RS_EXPR_NAME && !e->shifted && find_state(c, e->name, &sa, &sk)) return seq(e->name, shift, at);
+    if (e->kind == RS_EXPR_NAME && !e->shifted
+        && (((li = rs_case_let_index(c, e->name)) >= 0 && !c->lets[li].shifted) || rs_case_param_index(c, e->name) >= 0))
+        return rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+    rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                    "expected states, params and unshifted lets in a coupling force; found '%s'", e->name);
+    return NULL;
+}
+
+/* a copy of the force expression e with every state at n + shift */
+static rs_expr_t *at_shift(const gen_t *g, const rs_expr_t *e, slong shift, rs_error_t err)
+{
+    return map_tree(g, 0, shift, e, shift_leaf, err);
 }
 
 /* the coupling variable (partner state name, or force expression fe) as
@@ -370,50 +380,44 @@ static slong force_index(const rs_case_struct *c, const char *name)
     return -1;
 }
 
+/* a name of the right-hand side of subsystem a, iterate j, resolved to a
+ * sequence (NULL and err set on an error, at the node) */
+static rs_expr_t *subst_leaf(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
+{
+    const rs_case_struct *c = g->c;
+    rs_expr_t *out;
+    slong sa, sk, li;
+    pos_t at = pos_node(e);
+    if (e->kind == RS_EXPR_NAME && e->shifted) {
+        rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                        "state equations are written without shifts; found '%s['", e->name);
+        return NULL;
+    }
+    /* explicit/implicit coupling: partner states and forces are coupling variables */
+    int pst = g->kind >= 3 && e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk) && sa != a;
+    slong fi = g->kind >= 3 && e->kind == RS_EXPR_NAME && !pst ? force_index(c, e->name) : -1;
+    if (pst || fi >= 0) {
+        out = coupled(g, a, e->name, pst ? NULL : c->forces[fi].e, at, err);
+    } else if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
+        out = sa == a || ((g->stage >= 0 || g->mix) && same_method(g, a, sa)) ? own(g, sa, e->name, j, at)
+            : partner(g, e->name, a, sa, j, at);
+    else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
+        out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+    else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
+        out = rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
+    else {
+        rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
+                        "unknown name '%s' in the state equation (expected a state, param or let)", e->name);
+        return NULL;
+    }
+    return out;
+}
+
 /* a copy of the right-hand side e of subsystem a, iterate j, with every name
  * resolved to a sequence; NULL and err set on an error (at the node) */
 static rs_expr_t *subst(const gen_t *g, slong a, slong j, const rs_expr_t *e, rs_error_t err)
 {
-    const rs_case_struct *c = g->c;
-    rs_expr_t *out;
-    if (e->kind == RS_EXPR_NAME || e->kind == RS_EXPR_CALL) {
-        slong sa, sk, li;
-        pos_t at = pos_node(e);
-        if (e->kind == RS_EXPR_NAME && e->shifted) {
-            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
-                            "state equations are written without shifts; found '%s['", e->name);
-            return NULL;
-        }
-        /* explicit/implicit coupling: partner states and forces are coupling variables */
-        int pst = g->kind >= 3 && e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk) && sa != a;
-        slong fi = g->kind >= 3 && e->kind == RS_EXPR_NAME && !pst ? force_index(c, e->name) : -1;
-        if (pst || fi >= 0) {
-            out = coupled(g, a, e->name, pst ? NULL : c->forces[fi].e, at, err);
-            if (out == NULL) return NULL;
-        } else if (e->kind == RS_EXPR_NAME && find_state(c, e->name, &sa, &sk))
-            out = sa == a || ((g->stage >= 0 || g->mix) && same_method(g, a, sa)) ? own(g, sa, e->name, j, at)
-                : partner(g, e->name, a, sa, j, at);
-        else if (e->kind == RS_EXPR_NAME && (li = rs_case_let_index(c, e->name)) >= 0)
-            out = c->lets[li].shifted ? seq(e->name, 1, at) : rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
-        else if (e->kind == RS_EXPR_NAME && rs_case_param_index(c, e->name) >= 0)
-            out = rs_expr_new_name(e->name, 0, 0, at.file, at.line, at.col);
-        else {
-            rs_error_set_at(err, RS_ERR_INPUT, e->file, e->line, e->col,
-                            "unknown name '%s' in the state equation (expected a state, param or let)", e->name);
-            return NULL;
-        }
-        out->paren += e->paren;
-        return out;
-    }
-    if (e->kind == RS_EXPR_NUM) return copy(e);
-    out = rs_expr_new_op(e->kind, NULL, NULL, e->file, e->line, e->col);
-    out->paren = e->paren;
-    if ((out->a = subst(g, a, j, e->a, err)) == NULL
-        || (e->b != NULL && (out->b = subst(g, a, j, e->b, err)) == NULL)) {
-        rs_expr_free(out);
-        return NULL;
-    }
-    return out;
+    return map_tree(g, a, j, e, subst_leaf, err);
 }
 
 /* appends the generated equation lhs = rhs to the model */
