@@ -323,6 +323,12 @@ static int box_ctx_init(box_ctx_t *X, rs_run_t *run, const box_req_t *B, slong p
     X->x = NULL;
     X->F = rs_model_cosim(run->m, run->err);
     if (X->F == NULL) return run->err->code;
+    /* the ball model over a box has no extension couplings (rs_cosim_ext_transition
+     * works on point models only): refuse rather than answer for the direct scheme */
+    if (run->c->couple_ext != 0)
+        return rs_error_set(run->err, RS_ERR_INPUT,
+                            "region and claim over a box are not available for the %c-Extension coupling "
+                            "(radius, stability, sweep and map are)", run->c->couple_ext);
     for (i = 0; i < B->naxes; i++) names[i] = B->name[i];
     rs_cosim_init(cs, 1, 1);
     r = rs_run_cosim_at(cs, run, names, B->lo[0], B->naxes);
