@@ -1003,7 +1003,7 @@ static int region_forall_critical(region_t *rg)
 {
     fmpz_poly_struct *u = NULL;
     slong nu = 0, k;
-    int r = rs_an_forall_critical(&u, &nu, rg->run, rg->v, rg->tv, rg->qv, rg->nq, rg->bounds);
+    int r = rs_an_forall_critical(&u, &nu, rg->run, rg->v, rg->tv, rg->qv, rg->nq, rg->bounds, 0);
     for (k = 0; k < nu; k++) {
         if (r == RS_OK) alg_roots_append(&rg->crit, &rg->ncrit, u + k, CRIT_TOUCH);
         fmpz_poly_clear(u + k);

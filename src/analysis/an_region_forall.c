@@ -14,19 +14,16 @@
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
+#include "analysis/an_region.h"
 
-/* a set of irreducible polynomials, each up to sign once */
-typedef struct {
-    fmpz_mpoly_struct *p;
-    slong n, cap;
-} plist_t;
+/* ---- the projection -------------------------------------------------------- */
 
-static void plist_init(plist_t *l)
+void rs_plist_init(rs_plist_t *l)
 {
     memset(l, 0, sizeof *l);
 }
 
-static void plist_clear(plist_t *l, const fmpz_mpoly_ctx_t ctx)
+void rs_plist_clear(rs_plist_t *l, const fmpz_mpoly_ctx_t ctx)
 {
     slong i;
     for (i = 0; i < l->n; i++) fmpz_mpoly_clear(l->p + i, ctx);
@@ -34,7 +31,7 @@ static void plist_clear(plist_t *l, const fmpz_mpoly_ctx_t ctx)
     memset(l, 0, sizeof *l);
 }
 
-static void plist_push(plist_t *l, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx)
+static void plist_push(rs_plist_t *l, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx)
 {
     slong i;
     for (i = 0; i < l->n; i++) {
@@ -52,17 +49,108 @@ static void plist_push(plist_t *l, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t 
     l->n++;
 }
 
-/* the irreducible non-constant factors of f (nothing for 0 or a constant) */
-static void plist_add(plist_t *l, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx)
+/* x_v = N(s)/D(s), N and D linear with integer coefficients and D > 0 for
+ * s > 0: the map of s in (0, inf) onto v's interval (as the claim prover's) */
+static int bound_map(fmpz_mpoly_t N, fmpz_mpoly_t D, slong v, const rs_bound_t *b, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t sv;
+    fmpz_t t;
+    if (!b->has_lo && !b->has_hi) return 0;
+    fmpz_mpoly_init(sv, ctx);
+    fmpz_init(t);
+    fmpz_mpoly_gen(sv, v, ctx);
+    if (b->has_lo && b->has_hi) {                 /* (lo + hi s)/(1 + s), lo = a/c, hi = e/f */
+        fmpz_mul(t, fmpq_numref(b->hi), fmpq_denref(b->lo));
+        fmpz_mpoly_scalar_mul_fmpz(N, sv, t, ctx);
+        fmpz_mul(t, fmpq_numref(b->lo), fmpq_denref(b->hi));
+        fmpz_mpoly_add_fmpz(N, N, t, ctx);
+        fmpz_mul(t, fmpq_denref(b->lo), fmpq_denref(b->hi));
+        fmpz_mpoly_add_si(D, sv, 1, ctx);
+        fmpz_mpoly_scalar_mul_fmpz(D, D, t, ctx);
+    } else if (b->has_lo) {                       /* lo + s = (a + c s)/c */
+        fmpz_mpoly_scalar_mul_fmpz(N, sv, fmpq_denref(b->lo), ctx);
+        fmpz_mpoly_add_fmpz(N, N, fmpq_numref(b->lo), ctx);
+        fmpz_mpoly_set_fmpz(D, fmpq_denref(b->lo), ctx);
+    } else {                                      /* hi - s = (e - f s)/f */
+        fmpz_mpoly_scalar_mul_fmpz(N, sv, fmpq_denref(b->hi), ctx);
+        fmpz_mpoly_neg(N, N, ctx);
+        fmpz_mpoly_add_fmpz(N, N, fmpq_numref(b->hi), ctx);
+        fmpz_mpoly_set_fmpz(D, fmpq_denref(b->hi), ctx);
+    }
+    fmpz_mpoly_clear(sv, ctx);
+    fmpz_clear(t);
+    return 1;
+}
+
+/* 1 when f has one sign and no zero on the domain b (tv's ends open: they
+ * are cells of their own; the quantified parameters' closed ends
+ * included): after mapping every interval onto s > 0, all coefficients of
+ * one sign (positive on the open orthant) and the polynomial of the closed
+ * faces' corner non-zero (every face between has a superset of its terms).
+ * Such a factor cannot separate cells and is left out of the projection. */
+static int sign_definite(const fmpz_mpoly_t f, slong tv, const rs_bound_t *b, const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = ctx->minfo->nvars, v, i, len;
+    fmpz_mpoly_t P, N, D, c, acc, pw, t;
+    int ok = 1, sg;
+    if (fmpz_mpoly_is_fmpz(f, ctx)) return !fmpz_mpoly_is_zero(f, ctx);
+    fmpz_mpoly_init(P, ctx); fmpz_mpoly_init(N, ctx); fmpz_mpoly_init(D, ctx);
+    fmpz_mpoly_init(c, ctx); fmpz_mpoly_init(acc, ctx); fmpz_mpoly_init(pw, ctx); fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_set(P, f, ctx);
+    for (v = 0; v < nv && ok; v++) {
+        slong d = fmpz_mpoly_degree_si(P, v, ctx), k;
+        if (d <= 0) continue;
+        if (!bound_map(N, D, v, b + v, ctx) || fmpz_mpoly_length(P, ctx) > 4000) { ok = 0; break; }
+        fmpz_mpoly_zero(acc, ctx);
+        for (k = 0; k <= d; k++) {                /* sum c_k N^k D^(d-k) */
+            ulong e = (ulong) k;
+            fmpz_mpoly_get_coeff_vars_ui(c, P, &v, &e, 1, ctx);
+            if (fmpz_mpoly_is_zero(c, ctx)) continue;
+            fmpz_mpoly_pow_ui(t, N, e, ctx);
+            fmpz_mpoly_pow_ui(pw, D, (ulong) (d - k), ctx);
+            fmpz_mpoly_mul(t, t, pw, ctx);
+            fmpz_mpoly_mul(t, t, c, ctx);
+            fmpz_mpoly_add(acc, acc, t, ctx);
+        }
+        fmpz_mpoly_swap(P, acc, ctx);
+    }
+    len = fmpz_mpoly_length(P, ctx);
+    sg = len > 0 ? fmpz_sgn(P->coeffs) : 0;
+    for (i = 0; i < len && ok; i++) ok = fmpz_sgn(P->coeffs + i) == sg;
+    ok = ok && sg != 0;
+    /* the corner of the closed faces of the quantified parameters */
+    for (v = 0; v < nv && ok; v++) {
+        ulong e;
+        if (v == tv || fmpz_mpoly_degree_si(f, v, ctx) <= 0) continue;
+        if (b[v].has_lo && b[v].lo_closed) {
+            e = 0;
+        } else if (b[v].has_hi && b[v].hi_closed) {
+            e = b[v].has_lo ? (ulong) fmpz_mpoly_degree_si(f, v, ctx) : 0;
+        } else {
+            continue;
+        }
+        fmpz_mpoly_get_coeff_vars_ui(c, P, &v, &e, 1, ctx);
+        fmpz_mpoly_swap(P, c, ctx);
+        ok = !fmpz_mpoly_is_zero(P, ctx);
+    }
+    fmpz_mpoly_clear(P, ctx); fmpz_mpoly_clear(N, ctx); fmpz_mpoly_clear(D, ctx);
+    fmpz_mpoly_clear(c, ctx); fmpz_mpoly_clear(acc, ctx); fmpz_mpoly_clear(pw, ctx); fmpz_mpoly_clear(t, ctx);
+    return ok;
+}
+
+/* The irreducible non-constant factors of f (nothing for 0 or a constant);
+ * with dom != NULL only those that can vanish on the domain dom. */
+void rs_plist_add(rs_plist_t *l, const fmpz_mpoly_t f, slong tv, const rs_bound_t *dom, const fmpz_mpoly_ctx_t ctx)
 {
     fmpz_mpoly_factor_t fac;
     slong k;
     if (fmpz_mpoly_is_zero(f, ctx) || fmpz_mpoly_is_fmpz(f, ctx)) return;
     fmpz_mpoly_factor_init(fac, ctx);
-    if (fmpz_mpoly_factor_squarefree(fac, f, ctx) && fmpz_mpoly_factor(fac, f, ctx)) {
+    if (fmpz_mpoly_factor(fac, f, ctx)) {
         for (k = 0; k < fac->num; k++)
-            if (!fmpz_mpoly_is_fmpz(fac->poly + k, ctx)) plist_push(l, fac->poly + k, ctx);
-    } else {
+            if (!fmpz_mpoly_is_fmpz(fac->poly + k, ctx) && (dom == NULL || !sign_definite(fac->poly + k, tv, dom, ctx)))
+                plist_push(l, fac->poly + k, ctx);
+    } else if (dom == NULL || !sign_definite(f, tv, dom, ctx)) {
         plist_push(l, f, ctx);
     }
     fmpz_mpoly_factor_clear(fac, ctx);
@@ -90,24 +178,110 @@ void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const f
     fmpz_clear(w); fmpz_clear(aj); fmpz_clear(bj);
 }
 
-/* The conditions whose signs decide the verdict: p's leading coefficient in
- * lambda, the discriminant of its squarefree part (collisions), and the
- * coefficients and Hurwitz minors of q(z) = (1-z)^n p((1+z)/(1-z)) (roots
- * crossing the circle; a_0, a_n: roots at lambda = 1, -1). */
-static int forall_conditions(plist_t *l, rs_run_t *run, const rs_variant_t *v)
+/* u -> u^(1/g) where every exponent of u in l is a multiple g > 1 and u >= 0
+ * on its interval (a homeomorphism of [0, inf): the same cells, smaller
+ * degrees); the interval's ends are raised to the power g in *bd. */
+static void deflate(rs_plist_t *l, slong u, rs_bound_t *bd, const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = ctx->minfo->nvars, i, j;
+    fmpz *shift = _fmpz_vec_init(nv), *stride = _fmpz_vec_init(nv), *one = _fmpz_vec_init(nv);
+    ulong g = 0;
+    for (i = 0; i < l->n; i++) {
+        slong len = fmpz_mpoly_length(l->p + i, ctx);
+        ulong *e = flint_malloc(nv * sizeof(ulong));
+        for (j = 0; j < len; j++) {
+            fmpz_mpoly_get_term_exp_ui(e, l->p + i, j, ctx);
+            g = n_gcd(g, e[u]);
+        }
+        flint_free(e);
+    }
+    if (g > 1 && bd->has_lo && fmpq_sgn(bd->lo) >= 0) {
+        for (j = 0; j < nv; j++) fmpz_one(stride + j);
+        fmpz_set_ui(stride + u, g);
+        for (i = 0; i < l->n; i++) fmpz_mpoly_deflate(l->p + i, l->p + i, shift, stride, ctx);
+        fmpq_pow_si(bd->lo, bd->lo, (slong) g);
+        if (bd->has_hi) fmpq_pow_si(bd->hi, bd->hi, (slong) g);
+    }
+    _fmpz_vec_clear(shift, nv); _fmpz_vec_clear(stride, nv); _fmpz_vec_clear(one, nv);
+}
+
+/* One projection step (McCallum's, with Brown's reduction): the polynomials
+ * of l with u eliminated -- the leading coefficient (roots escaping to
+ * infinity), the other coefficients only where no coefficient has one sign
+ * on the domain (where f could vanish identically), the discriminant, the
+ * pairwise resultants, and the values at the finite ends of u's interval.
+ * Factors of one sign on the domain dom are left out. */
+int rs_proj_eliminate(rs_plist_t *out, rs_run_t *run, const rs_plist_t *in, slong u, const rs_bound_t *bu,
+                      slong tv, const rs_bound_t *dom, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t t;
+    rs_plist_t l;
+    rs_bound_t bd;
+    slong i, j, k;
+    int r = RS_OK;
+    rs_plist_init(&l);
+    for (i = 0; i < in->n; i++) plist_push(&l, in->p + i, ctx);
+    rs_bounds_init(&bd, 1);
+    bd.has_lo = bu->has_lo; bd.has_hi = bu->has_hi; bd.lo_closed = bu->lo_closed; bd.hi_closed = bu->hi_closed;
+    fmpq_set(bd.lo, bu->lo); fmpq_set(bd.hi, bu->hi);
+    deflate(&l, u, &bd, ctx);
+    fmpz_mpoly_init(t, ctx);
+    for (i = 0; i < l.n && r == RS_OK; i++) {
+        const fmpz_mpoly_struct *f = l.p + i;
+        slong d = fmpz_mpoly_degree_si(f, u, ctx);
+        int definite = 0;
+        r = rs_budget_check(run->err, "the projection of region ... for all");
+        if (d <= 0) { rs_plist_add(out, f, tv, dom, ctx); continue; }
+        for (k = d; k >= 0 && !definite; k--) {
+            ulong e = (ulong) k;
+            fmpz_mpoly_get_coeff_vars_ui(t, f, &u, &e, 1, ctx);
+            definite = !fmpz_mpoly_is_zero(t, ctx) && sign_definite(t, tv, dom, ctx);
+        }
+        for (k = d; k >= 0; k--) {                 /* behaviour at infinity and where f vanishes in u */
+            ulong e = (ulong) k;
+            fmpz_mpoly_get_coeff_vars_ui(t, f, &u, &e, 1, ctx);
+            rs_plist_add(out, t, tv, dom, ctx);
+            if (definite) break;
+        }
+        if (d >= 2 && fmpz_mpoly_discriminant(t, f, u, ctx)) rs_plist_add(out, t, tv, dom, ctx);
+        if (bd.has_lo) { rs_an_forall_subst(t, f, u, bd.lo, ctx); rs_plist_add(out, t, tv, dom, ctx); }
+        if (bd.has_hi) { rs_an_forall_subst(t, f, u, bd.hi, ctx); rs_plist_add(out, t, tv, dom, ctx); }
+        for (j = i + 1; j < l.n && r == RS_OK; j++) {
+            if (fmpz_mpoly_degree_si(l.p + j, u, ctx) <= 0) continue;
+            r = rs_budget_check(run->err, "the projection of region ... for all");
+            if (r == RS_OK && fmpz_mpoly_resultant(t, f, l.p + j, u, ctx)) rs_plist_add(out, t, tv, dom, ctx);
+        }
+    }
+    fmpz_mpoly_clear(t, ctx);
+    rs_plist_clear(&l, ctx);
+    rs_bounds_clear(&bd, 1);
+    return r;
+}
+
+/* The groups of conditions, each projected on its own.  full = 0: what
+ * "stable for every value" and "singular for some value" depend on: p's
+ * leading coefficient in lambda (one group) and each coefficient and
+ * Hurwitz minor of q(z) = (1-z)^n p((1+z)/(1-z)) (one group each):
+ * stability is their conjunction (a_i, Delta_k of one sign), and for all
+ * x (A and B) = (for all x A) and (for all x B), so each truth value
+ * changes only at the critical values of its own polynomial.  full = 1:
+ * one group with all of them and the discriminant of p's squarefree part
+ * (collisions on the circle), with every pairwise resultant: what the
+ * bounded/unbounded distinction needs. */
+static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, const rs_variant_t *v, slong tv,
+                             const rs_bound_t *dom, int full)
 {
     const rs_scheme_struct *s = v->s;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx), k;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx), k, ngr;
     ulong nn = (ulong) n;
     fmpz_mpoly_t sqf, qz, t;
     fmpz_mpoly_factor_t fac;
     rs_hurwitz_t h;
+    rs_plist_t *g;
     int r = RS_OK;
     fmpz_mpoly_init(sqf, s->zctx);
     fmpz_mpoly_init(qz, s->zctx);
     fmpz_mpoly_init(t, s->zctx);
-    fmpz_mpoly_get_coeff_vars_ui(t, v->cp->p, &lv, &nn, 1, s->zctx);
-    plist_add(l, t, s->zctx);
     fmpz_mpoly_one(sqf, s->zctx);
     fmpz_mpoly_factor_init(fac, s->zctx);
     if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
@@ -118,73 +292,56 @@ static int forall_conditions(plist_t *l, rs_run_t *run, const rs_variant_t *v)
         fmpz_mpoly_set(sqf, v->cp->p, s->zctx);
     }
     fmpz_mpoly_factor_clear(fac, s->zctx);
-    if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
-        plist_add(l, t, s->zctx);
     rs_bilinear_fmpz_mpoly(qz, sqf, lv, s->zctx);
     rs_hurwitz_init(h);
-    if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1) {
-        r = rs_hurwitz_compute(h, qz, lv, NULL, s->zctx, run->err);
-        for (k = 0; r == RS_OK && k <= h->n; k++) plist_add(l, h->coeffs + k, s->zctx);
-        for (k = 0; r == RS_OK && k < h->n; k++) plist_add(l, h->minors + k, s->zctx);
-    }
+    if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1) r = rs_hurwitz_compute(h, qz, lv, NULL, s->zctx, run->err);
+    ngr = full ? 1 : 1 + (h->n + 1) + h->n;
+    g = flint_malloc((size_t) ngr * sizeof(rs_plist_t));
+    for (k = 0; k < ngr; k++) rs_plist_init(g + k);
+    fmpz_mpoly_get_coeff_vars_ui(t, v->cp->p, &lv, &nn, 1, s->zctx);
+    rs_plist_add(g, t, tv, dom, s->zctx);
+    if (full && fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
+        rs_plist_add(g, t, tv, dom, s->zctx);
+    for (k = 0; r == RS_OK && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k <= h->n; k++)
+        rs_plist_add(g + (full ? 0 : 1 + k), h->coeffs + k, tv, dom, s->zctx);
+    for (k = 0; r == RS_OK && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k < h->n; k++)
+        rs_plist_add(g + (full ? 0 : 2 + h->n + k), h->minors + k, tv, dom, s->zctx);
     rs_hurwitz_clear(h, s->zctx);
     fmpz_mpoly_clear(sqf, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
     fmpz_mpoly_clear(t, s->zctx);
-    return r;
-}
-
-/* One projection step: the polynomials of l with u eliminated. */
-static int forall_project(plist_t *out, rs_run_t *run, const plist_t *l, slong u, const rs_bound_t *bu,
-                          const fmpz_mpoly_ctx_t ctx)
-{
-    fmpz_mpoly_t t;
-    slong i, j, k;
-    int r = RS_OK;
-    fmpz_mpoly_init(t, ctx);
-    for (i = 0; i < l->n && r == RS_OK; i++) {
-        const fmpz_mpoly_struct *f = l->p + i;
-        slong d = fmpz_mpoly_degree_si(f, u, ctx);
-        r = rs_budget_check(run->err, "the projection of region ... for all");
-        if (d <= 0) { plist_add(out, f, ctx); continue; }
-        for (k = 0; k <= d; k++) {                 /* behaviour at infinity and where f vanishes in u */
-            ulong e = (ulong) k;
-            fmpz_mpoly_get_coeff_vars_ui(t, f, &u, &e, 1, ctx);
-            plist_add(out, t, ctx);
-        }
-        if (d >= 2 && fmpz_mpoly_discriminant(t, f, u, ctx)) plist_add(out, t, ctx);
-        if (bu->has_lo) { rs_an_forall_subst(t, f, u, bu->lo, ctx); plist_add(out, t, ctx); }
-        if (bu->has_hi) { rs_an_forall_subst(t, f, u, bu->hi, ctx); plist_add(out, t, ctx); }
-        for (j = i + 1; j < l->n && r == RS_OK; j++) {
-            if (fmpz_mpoly_degree_si(l->p + j, u, ctx) <= 0) continue;
-            r = rs_budget_check(run->err, "the projection of region ... for all");
-            if (r == RS_OK && fmpz_mpoly_resultant(t, f, l->p + j, u, ctx)) plist_add(out, t, ctx);
-        }
-    }
-    fmpz_mpoly_clear(t, ctx);
+    *groups = g;
+    *ng = ngr;
     return r;
 }
 
 int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, const rs_variant_t *v, slong tv,
-                          const slong *qv, slong nq, const rs_bound_t *b)
+                          const slong *qv, slong nq, const rs_bound_t *b, int full)
 {
     const fmpz_mpoly_ctx_struct *ctx = v->s->zctx;
-    plist_t l, m;
-    slong i;
+    rs_plist_t *g = NULL, all;
+    slong i, k, ng = 0;
     int r;
-    plist_init(&l);
-    r = forall_conditions(&l, run, v);
-    for (i = 0; i < nq && r == RS_OK; i++) {
-        plist_init(&m);
-        r = forall_project(&m, run, &l, qv[i], b + qv[i], ctx);
-        plist_clear(&l, ctx);
-        l = m;
+    r = forall_conditions(&g, &ng, run, v, tv, b, full);
+    rs_plist_init(&all);
+    for (k = 0; k < ng; k++) {
+        rs_plist_t l = g[k], m;
+        for (i = 0; i < nq && r == RS_OK; i++) {
+            rs_plist_init(&m);
+            r = rs_proj_eliminate(&m, run, &l, qv[i], b + qv[i], tv, b, ctx);
+            rs_plist_clear(&l, ctx);
+            l = m;
+        }
+        for (i = 0; i < l.n; i++) plist_push(&all, l.p + i, ctx);
+        rs_plist_clear(&l, ctx);
     }
-    for (i = 0; i < l.n && r == RS_OK; i++) {
+    flint_free(g);
+    if (getenv("RS_FORALL_DEBUG")) fprintf(stderr, "forall: %ld polynomials in %s\n", (long) all.n, ctx->minfo->nvars ? "t" : "");
+    for (i = 0; i < all.n && r == RS_OK; i++) {
         fmpz_poly_t u;
-        if (fmpz_mpoly_degree_si(l.p + i, tv, ctx) <= 0) continue;
+        if (fmpz_mpoly_degree_si(all.p + i, tv, ctx) <= 0) continue;
         fmpz_poly_init(u);
-        if (fmpz_mpoly_get_fmpz_poly(u, l.p + i, tv, ctx)) {
+        if (fmpz_mpoly_get_fmpz_poly(u, all.p + i, tv, ctx)) {
             *out = flint_realloc(*out, (size_t) (*nout + 1) * sizeof(fmpz_poly_struct));
             fmpz_poly_init(*out + *nout);
             fmpz_poly_swap(*out + *nout, u);
@@ -192,7 +349,7 @@ int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, co
         }
         fmpz_poly_clear(u);
     }
-    plist_clear(&l, ctx);
+    rs_plist_clear(&all, ctx);
     return r;
 }
 
