@@ -822,6 +822,7 @@ typedef struct {
     int forall;                 /* region NAME for all [...] */
     const slong *qv;            /* ... over these parameters */
     slong nq;
+    const char *projection;     /* which projection decided the cells */
 } region_t;
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
@@ -999,11 +1000,11 @@ static int region_decide(region_t *rg)
 /* for all: the critical values of the projection (the whole parameter line
  * is one cell when there are none), each cell decided at a rational sample,
  * an irrational critical value left undecided */
-static int region_forall_critical(region_t *rg)
+static int region_forall_critical(region_t *rg, int *full)
 {
     fmpz_poly_struct *u = NULL;
     slong nu = 0, k;
-    int r = rs_an_forall_critical(&u, &nu, rg->run, rg->v, rg->tv, rg->qv, rg->nq, rg->bounds, 0);
+    int r = rs_an_forall_critical(&u, &nu, rg->run, rg->v, rg->tv, rg->qv, rg->nq, rg->bounds, full);
     for (k = 0; k < nu; k++) {
         if (r == RS_OK) alg_roots_append(&rg->crit, &rg->ncrit, u + k, CRIT_TOUCH);
         fmpz_poly_clear(u + k);
@@ -1039,6 +1040,116 @@ static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_
     return decided;
 }
 
+/* p with the quantified parameters at the rational point pt ({NAME: value}):
+ * a polynomial in lambda and t (0 when pt lacks one of them) */
+static int forall_at_point(fmpz_mpoly_t f, region_t *rg, const json_t *pt)
+{
+    const rs_scheme_struct *s = rg->s;
+    fmpz_mpoly_t g;
+    fmpq_t x;
+    slong k;
+    fmpz_mpoly_init(g, s->zctx);
+    fmpq_init(x);
+    fmpz_mpoly_set(f, rg->v->cp->p, s->zctx);
+    for (k = 0; k < rg->nq; k++) {
+        const char *w = json_string_value(json_object_get(pt, rg->run->c->params[rg->qv[k]].name));
+        if (w == NULL || fmpq_set_str(x, w, 10) != 0) break;
+        fmpq_canonicalise(x);
+        rs_an_forall_subst(g, f, rg->qv[k], x, s->zctx);
+        fmpz_mpoly_swap(f, g, s->zctx);
+    }
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpq_clear(x);
+    return k == rg->nq && !fmpz_mpoly_is_zero(f, s->zctx);
+}
+
+/* The values of t where, with the quantified parameters at pt, a root can
+ * cross the circle or escape to infinity (p's leading coefficient, its
+ * t-dependent factors at lambda = +-1 and their D_{n-1}) or p vanishes
+ * (factors free of lambda): between two of them an unstable verdict at pt
+ * persists (a root strictly outside stays outside).  0 when they are not
+ * finitely many. */
+static int forall_point_crit(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong lv = s->lambda_var, tv = rg->tv, k, n;
+    fmpz_mpoly_t f, sq, t;
+    fmpz_mpoly_factor_t fac;
+    fmpz_poly_t u;
+    fmpz_t pm;
+    ulong nn;
+    int ok;
+    fmpz_mpoly_init(f, s->zctx); fmpz_mpoly_init(sq, s->zctx); fmpz_mpoly_init(t, s->zctx);
+    fmpz_mpoly_factor_init(fac, s->zctx);
+    fmpz_poly_init(u);
+    fmpz_init(pm);
+    ok = forall_at_point(f, rg, pt) && fmpz_mpoly_factor(fac, f, s->zctx);
+    fmpz_mpoly_one(sq, s->zctx);
+    for (k = 0; ok && k < fac->num; k++) {
+        const fmpz_mpoly_struct *g = fac->poly + k;
+        if (fmpz_mpoly_degree_si(g, tv, s->zctx) <= 0) continue;
+        if (fmpz_mpoly_degree_si(g, lv, s->zctx) > 0) fmpz_mpoly_mul(sq, sq, g, s->zctx);
+        else if (to_upoly(u, g, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_LC);
+    }
+    n = fmpz_mpoly_degree_si(f, lv, s->zctx);
+    nn = (ulong) n;
+    if (ok) {
+        fmpz_mpoly_get_coeff_vars_ui(t, f, &lv, &nn, 1, s->zctx);
+        if (to_upoly(u, t, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_LC);
+    }
+    for (k = -1; ok && k <= 1 && fmpz_mpoly_degree_si(sq, lv, s->zctx) > 0; k += 2) {
+        fmpz_set_si(pm, k);
+        fmpz_mpoly_evaluate_one_fmpz(t, sq, lv, pm, s->zctx);
+        if (!fmpz_mpoly_is_zero(t, s->zctx) && to_upoly(u, t, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_PM1);
+    }
+    if (ok && fmpz_mpoly_degree_si(sq, lv, s->zctx) >= 2) {
+        rs_hurwitz_t h;
+        int *sign = flint_calloc(s->nvars, sizeof(int));
+        rs_bilinear_fmpz_mpoly(t, sq, lv, s->zctx);
+        rs_hurwitz_init(h);
+        ok = fmpz_mpoly_degree_si(t, lv, s->zctx) >= 2
+             && rs_hurwitz_compute(h, t, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+             && h->n >= 2 && !fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx);
+        if (ok && to_upoly(u, h->minors + h->n - 2, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_D);
+        if (!ok) rs_error_init(rg->run->err);
+        rs_hurwitz_clear(h, s->zctx);
+        flint_free(sign);
+    }
+    fmpz_mpoly_clear(f, s->zctx); fmpz_mpoly_clear(sq, s->zctx); fmpz_mpoly_clear(t, s->zctx);
+    fmpz_mpoly_factor_clear(fac, s->zctx);
+    fmpz_poly_clear(u);
+    fmpz_clear(pm);
+    return ok;
+}
+
+/* 1 when the verdict at the point pt (unstable at t = a) holds on the whole
+ * closed range between a and b (b NULL: to infinity in direction dir):
+ * no critical value of pt in it.  *stop: the first one met (NULL if none). */
+static int forall_persists(region_t *rg, const json_t *pt, alg_t *a, alg_t *b, int dir, alg_t *stop)
+{
+    alg_t *crit = NULL;
+    slong ncrit = 0, k;
+    int ok = forall_point_crit(&crit, &ncrit, rg, pt), found = 0;
+    for (k = 0; ok && k < ncrit; k++) {
+        alg_t *e = crit + k;
+        int beyond_a = dir > 0 ? alg_cmp(e, a) >= 0 : alg_cmp(e, a) <= 0;
+        int before_b = b == NULL || (dir > 0 ? alg_cmp(e, b) <= 0 : alg_cmp(e, b) >= 0);
+        if (!beyond_a || !before_b) continue;
+        if (!found || (dir > 0 ? alg_cmp(e, stop) < 0 : alg_cmp(e, stop) > 0)) {
+            fmpz_poly_set(stop->minpoly, e->minpoly);
+            stop->idx = e->idx;
+            stop->rational = e->rational;
+            fmpq_set(stop->q, e->q);
+            arb_set(stop->x, e->x);
+            stop->prec = e->prec;
+        }
+        found = 1;
+    }
+    for (k = 0; k < ncrit; k++) alg_clear(crit + k);
+    free(crit);
+    return ok && !found;
+}
+
 /* An irrational critical value c between two decided cells: unstable (or
  * marginal) at the point when the exact verdict at c with the quantified
  * parameters at a neighbour's counterexample says so; stable (bounded) when
@@ -1052,11 +1163,36 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
     int r = RS_OK;
     nb[0] = pc - 1;
     nb[1] = pc + 1;
-    for (k = 0; k < 2 && !pc->decided && algebraic; k++) {
+    for (k = 0; k < 2 && !pc->decided; k++) {
         const json_t *cx;
+        const char *smp;
         if (!nb[k]->decided || nb[k]->ev == NULL) continue;
         cx = json_object_get(nb[k]->ev, nb[k]->status == RS_STATUS_MARGINAL ? "not_stable_at" : "counterexample");
-        if (cx == NULL || !forall_status_at(&st, rg, pc->lo, cx)) continue;
+        smp = json_string_value(json_object_get(nb[k]->ev, "sample"));
+        if (cx != NULL && smp != NULL && nb[k]->status == RS_STATUS_UNSTABLE) {
+            /* the neighbour's counterexample stays unstable up to and past c */
+            alg_t a, stop;
+            int held;
+            alg_init(&a); alg_init(&stop);
+            a.rational = 1;
+            fmpq_set_str(a.q, smp, 10);
+            fmpq_canonicalise(a.q);
+            alg_refine(&a, 128);
+            held = forall_persists(rg, cx, &a, pc->lo, k == 0 ? 1 : -1, &stop);
+            alg_clear(&a); alg_clear(&stop);
+            if (held) {
+                pc->decided = 1;
+                pc->status = RS_STATUS_UNSTABLE;
+                pc->ev = json_pack("{s:O,s:s,s:{s:s,s:s}}", "counterexample", cx, "note",
+                    "the neighbouring cell's counterexample: with the other parameters there, no value of the "
+                    "region parameter between its sample and this algebraic value lets a root cross the circle "
+                    "or escape (exact critical values at that point), so it is unstable here too",
+                    "at_counterexample", "status", "unstable", "decided_by", "exact");
+                json_object_set_new(pc->ev, "sample_of_neighbour", json_string(smp));
+                continue;
+            }
+        }
+        if (!algebraic || cx == NULL || !forall_status_at(&st, rg, pc->lo, cx)) continue;
         if (st == RS_STATUS_UNSTABLE || st == RS_STATUS_SINGULAR) {
             pc->decided = 1;
             pc->status = st;
@@ -1127,6 +1263,46 @@ static int region_forall_decide(region_t *rg)
         if (rg->pieces[i].is_point && !rg->pieces[i].lo->rational
             && (r = rs_budget_check(rg->run->err, "region ... for all (irrational critical values)")) == RS_OK)
             r = region_forall_irrational(rg, i, fmpz_poly_degree(rg->pieces[i].lo->minpoly) <= FORALL_MAX_ALG_DEGREE);
+    return r;
+}
+
+/* The cells of the cheap projection (each condition on its own) decided;
+ * where that projection does not settle a cell (an interval marginal for
+ * all values, or unstable somewhere but not covered by exact
+ * counterexamples) the full projection (every condition together, the
+ * discriminant included) is made and the cells decided again. */
+static int region_forall_run(region_t *rg)
+{
+    int full, r = RS_OK;
+    for (full = 0; full < 2 && r == RS_OK; full++) {
+        slong i;
+        int settled = 1;
+        r = region_forall_critical(rg, &full);
+        if (r == RS_OK) {
+            region_crit_prune(rg);
+            region_pieces(rg);
+            r = region_forall_decide(rg);
+        }
+        for (i = 0; i < rg->npieces && r == RS_OK && settled && !full; i++) {
+            piece_t *pc = rg->pieces + i;
+            fmpq_t x;
+            if (pc->is_point || !pc->decided || pc->status == RS_STATUS_STABLE || pc->status == RS_STATUS_SINGULAR)
+                continue;
+            fmpq_init(x);
+            rational_between(x, pc->lo, pc->hi);
+            settled = rs_an_forall_lead_nonzero(rg->run, rg->v, rg->tv, x, rg->bounds);
+            fmpq_clear(x);
+        }
+        if (r != RS_OK || settled || full) {
+            rg->projection = full ? "full" : "per-condition";
+            break;
+        }
+        for (i = 0; i < rg->ncrit; i++) alg_clear(rg->crit + i);
+        free(rg->crit);
+        for (i = 0; i < rg->npieces; i++) json_decref(rg->pieces[i].ev);
+        free(rg->pieces);
+        rg->crit = NULL; rg->ncrit = 0; rg->pieces = NULL; rg->npieces = 0;
+    }
     return r;
 }
 
@@ -1241,6 +1417,7 @@ static void region_json(region_t *rg, json_t *o)
         slong k;
         for (k = 0; k < rg->nq; k++) json_array_append_new(fa, json_string(rg->run->c->params[rg->qv[k]].name));
         json_object_set_new(o, "for_all", fa);
+        if (rg->projection != NULL) json_object_set_new(o, "projection", json_string(rg->projection));
     }
 }
 
@@ -1344,12 +1521,7 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
         region_init(&rg, run, req, v);
         json_object_set_new(o, "symbolic", json_false());
         r = region_domain(&rg);
-        if (r == RS_OK) r = region_forall_critical(&rg);
-        if (r == RS_OK) {
-            region_crit_prune(&rg);
-            region_pieces(&rg);
-            r = region_forall_decide(&rg);
-        }
+        if (r == RS_OK) r = region_forall_run(&rg);
         if (r == RS_OK) {
             region_json(&rg, o);
             json_array_append_new(run->results, o);

@@ -269,7 +269,7 @@ int rs_proj_eliminate(rs_plist_t *out, rs_run_t *run, const rs_plist_t *in, slon
  * (collisions on the circle), with every pairwise resultant: what the
  * bounded/unbounded distinction needs. */
 static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, const rs_variant_t *v, slong tv,
-                             const rs_bound_t *dom, int full)
+                             const rs_bound_t *dom, int *full)
 {
     const rs_scheme_struct *s = v->s;
     slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx), k, ngr;
@@ -295,17 +295,22 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
     rs_bilinear_fmpz_mpoly(qz, sqf, lv, s->zctx);
     rs_hurwitz_init(h);
     if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1) r = rs_hurwitz_compute(h, qz, lv, NULL, s->zctx, run->err);
-    ngr = full ? 1 : 1 + (h->n + 1) + h->n;
+    /* a condition that vanishes identically: the per-condition argument
+     * (a strictly unstable open set makes some condition negative) fails */
+    for (k = 0; r == RS_OK && !*full && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k <= h->n; k++)
+        if (fmpz_mpoly_is_zero(h->coeffs + k, s->zctx) || (k < h->n && fmpz_mpoly_is_zero(h->minors + k, s->zctx)))
+            *full = 1;
+    ngr = *full ? 1 : 1 + (h->n + 1) + h->n;
     g = flint_malloc((size_t) ngr * sizeof(rs_plist_t));
     for (k = 0; k < ngr; k++) rs_plist_init(g + k);
     fmpz_mpoly_get_coeff_vars_ui(t, v->cp->p, &lv, &nn, 1, s->zctx);
     rs_plist_add(g, t, tv, dom, s->zctx);
-    if (full && fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
+    if (*full && fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
         rs_plist_add(g, t, tv, dom, s->zctx);
     for (k = 0; r == RS_OK && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k <= h->n; k++)
-        rs_plist_add(g + (full ? 0 : 1 + k), h->coeffs + k, tv, dom, s->zctx);
+        rs_plist_add(g + (*full ? 0 : 1 + k), h->coeffs + k, tv, dom, s->zctx);
     for (k = 0; r == RS_OK && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k < h->n; k++)
-        rs_plist_add(g + (full ? 0 : 2 + h->n + k), h->minors + k, tv, dom, s->zctx);
+        rs_plist_add(g + (*full ? 0 : 2 + h->n + k), h->minors + k, tv, dom, s->zctx);
     rs_hurwitz_clear(h, s->zctx);
     fmpz_mpoly_clear(sqf, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
@@ -316,7 +321,7 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
 }
 
 int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, const rs_variant_t *v, slong tv,
-                          const slong *qv, slong nq, const rs_bound_t *b, int full)
+                          const slong *qv, slong nq, const rs_bound_t *b, int *full)
 {
     const fmpz_mpoly_ctx_struct *ctx = v->s->zctx;
     rs_plist_t *g = NULL, all;
@@ -336,7 +341,6 @@ int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, co
         rs_plist_clear(&l, ctx);
     }
     flint_free(g);
-    if (getenv("RS_FORALL_DEBUG")) fprintf(stderr, "forall: %ld polynomials in %s\n", (long) all.n, ctx->minfo->nvars ? "t" : "");
     for (i = 0; i < all.n && r == RS_OK; i++) {
         fmpz_poly_t u;
         if (fmpz_mpoly_degree_si(all.p + i, tv, ctx) <= 0) continue;
@@ -351,6 +355,27 @@ int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, co
     }
     rs_plist_clear(&all, ctx);
     return r;
+}
+
+int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t, const rs_bound_t *b)
+{
+    const rs_scheme_struct *s = v->s;
+    slong lv = s->lambda_var, n;
+    fmpz_mpoly_t qz, a, at;
+    int ok;
+    (void) run;
+    fmpz_mpoly_init(qz, s->zctx);
+    fmpz_mpoly_init(a, s->zctx);
+    fmpz_mpoly_init(at, s->zctx);
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+    n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx);
+    rs_charpoly_coeff(a, qz, n, lv, s->zctx);
+    rs_an_forall_subst(at, a, tv, t, s->zctx);
+    ok = !fmpz_mpoly_is_zero(at, s->zctx) && sign_definite(at, tv, b, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    fmpz_mpoly_clear(a, s->zctx);
+    fmpz_mpoly_clear(at, s->zctx);
+    return ok;
 }
 
 /* The exact verdict at the counterexample, recomputed from scratch with every

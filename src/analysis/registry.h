@@ -138,7 +138,10 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
  * over the variables qv[0..nq-1] (univariate in tv, appended to *out); the
  * status of one cell at tv = t decided for all of them */
 int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, const rs_variant_t *v, slong tv,
-                          const slong *qv, slong nq, const rs_bound_t *b, int full);
+                          const slong *qv, slong nq, const rs_bound_t *b, int *full);
+/* 1 when q's leading coefficient (lambda = -1 a root where it vanishes) has
+ * no zero on the domain b with tv = t */
+int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t, const rs_bound_t *b);
 int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t);
 int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const fmpq_t lo, const fmpq_t hi, int kind);
 void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const fmpq_t x, const fmpz_mpoly_ctx_t ctx);
