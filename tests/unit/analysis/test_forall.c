@@ -19,7 +19,21 @@
  *     192, 192 (W = wh^2) and D3 = a3 a2 a1 - a3^2 a0 - a4 a1^2 =
  *     -24576 W (W (4 alpha^2 - 11 alpha - 3) + 8 alpha - 12): positive for
  *     every W > 0 iff 8 alpha - 12 <= 0 and (4 alpha + 1)(alpha - 3) <= 0, so
- *     stable for all wh iff 0 <= alpha <= 3/2 (alpha = 3/2: D3 = 258048 W^2 > 0). */
+ *     stable for all wh iff 0 <= alpha <= 3/2 (alpha = 3/2: D3 = 258048 W^2 > 0);
+ *   - Park at m = 1 for all muh, wh > 0, and for all m, muh, wh > 0: stable
+ *     exactly on [0, 1] (Park's "alpha <= 1"), unstable beyond.  By hand
+ *     (sympy, from the case's p; W = wh^2): q's coefficients are a0 = 8 W muh,
+ *     a1 = 16 W (1 + muh + m muh - alpha m muh), a2 = 8 (2 W alpha m muh +
+ *     2 W m muh + W muh + 4 W + 4 m muh + 4 muh), a3 = 64 (m muh + muh + 1),
+ *     a4 = 32 (m muh + muh + 4); at alpha = 1 every coefficient and
+ *     D3 = a3 a2 a1 - a3^2 a0 - a4 a1^2 = 8192 W m muh (4 W m muh^2 + 4 W m muh
+ *     + 4 W muh^2 + 11 W muh + 7 W + 4 m muh + 4 muh + 4) are positive (the
+ *     whole of [0, 1] stable is Park's bound, proved by `claim stable when
+ *     alpha <= 1` with its re-checked certificate; only the end 1 is derived
+ *     here by hand); at alpha = 1 + e, m = 1, D3 is a
+ *     cubic in muh with leading coefficient -16384 W (W (3e^2 + e - 4) + 8 e),
+ *     negative for small W: D3 < 0 for muh large, unstable for every
+ *     alpha > 1, the bound reached only as muh -> inf. */
 #include "testutil.h"
 #include <string.h>
 #include "recstab/casefile.h"
@@ -175,6 +189,40 @@ static void test_park(void **state)
     json_decref(doc);
 }
 
+#define PARK "param m muh wh alpha\nassume m > 0, muh > 0, wh > 0, alpha >= 0\nunknown y x v a\n" \
+    "let yp[n+1] = (1 + alpha)*y[n] - alpha*y[n-1]\n" \
+    "eq 3*y[n+1] - 4*y[n] + y[n-1] + 2*(1 + m)*muh*y[n+1] + 2*wh^2*x[n+1] = 0\n" \
+    "eq x[n+1] - x[n] = (v[n+1] + v[n])/2\neq v[n+1] - v[n] = (a[n+1] + a[n])/2\n" \
+    "eq a[n+1] + wh^2*x[n+1] + m*muh*yp[n+1] = 0\n"
+
+/* Park for all of two and of all three others: alpha <= 1 exactly, every
+ * cell decided (no undecided point), the unstable side reached only in the
+ * limit m, muh -> inf (no counterexample at alpha = 1 itself) */
+static void test_park_all(void **state)
+{
+    static const struct iv want[] = {{"0", 1, "1", 1, "stable"}, {"1", 0, "inf", 0, "unstable"}};
+    static const char *const m1[] = {"m=1", NULL};
+    int outcome, code;
+    json_t *doc;
+    (void) state;
+    doc = run_set(PARK "analyse region alpha for all [muh, wh]\n", m1, &outcome, &code);
+    assert_int_equal(code, RS_OK);
+    check_region(result(doc, 0), want, 2, "park at m = 1, for all muh, wh");
+    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "undecided_points")), 0);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+    doc = run_set(PARK "analyse region alpha for all\nclaim stable when alpha <= 1\nclaim stable when alpha <= 2\n",
+                  NULL, &outcome, &code);
+    assert_int_equal(code, RS_OK);
+    check_region(result(doc, 0), want, 2, "park for all m, muh, wh");
+    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "for_all")), 3);
+    /* the claims agree with the region */
+    assert_string_equal(str(result(doc, 1), "status"), "proved");
+    assert_string_equal(str(result(doc, 2), "status"), "refuted");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 /* bad requests: a clear error, no result */
 static void test_bad(void **state)
 {
@@ -210,6 +258,7 @@ int main(void)
         cmocka_unit_test(test_central_difference),
         cmocka_unit_test(test_newmark),
         cmocka_unit_test(test_park),
+        cmocka_unit_test(test_park_all),
         cmocka_unit_test(test_bad),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
