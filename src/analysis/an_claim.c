@@ -368,6 +368,32 @@ static int prove_nonzero(const fmpz_mpoly_t cz, const rs_bound_t *b, const rs_sc
     return prove_sign(cz, 0, b, s, cx);
 }
 
+/* A condition the Hurwitz stage found positive from the signs of its
+ * factors alone: its own certificate on the set (a positive constant is
+ * stated as such), marked with where it came from. */
+static int prove_trivial(const rs_hurwitz_cond_struct *hc, const rs_bound_t *b, const rs_scheme_t s,
+                         claim_cx_t *cx)
+{
+    size_t n0 = json_array_size(cx->cert), k;
+    int ok;
+    if (fmpz_mpoly_is_fmpz(hc->poly, s->zctx)) {
+        char *cs = fmpz_get_str(NULL, 10, hc->poly->coeffs);
+        ok = fmpz_mpoly_length(hc->poly, s->zctx) == 1 && fmpz_sgn(hc->poly->coeffs) > 0;
+        json_array_append_new(cx->cert, json_pack("{s:s,s:s,s:b}", "condition", cs, "origin", hc->origin,
+                                                  "positive_constant", ok));
+        flint_free(cs);
+        if (!ok) claim_fail(cx, "a condition the sign rule called positive is not a positive constant", NULL, s);
+        return ok;
+    }
+    ok = prove_sign(hc->poly, 1, b, s, cx);
+    for (k = n0; ok && k < json_array_size(cx->cert); k++) {
+        json_t *e = json_array_get(cx->cert, k);
+        json_object_set_new(e, "origin", json_string(hc->origin));
+        json_object_set_new(e, "positive_by_factor_signs", json_true());
+    }
+    return ok;
+}
+
 /* Every Lienard-Chipart condition of h or of -h (z = variable zv) positive
  * on the box: h is Hurwitz-stable there.  Both signs are tried because the
  * sign of h's leading coefficient is not fixed by the claim (BDF2 on
@@ -397,7 +423,13 @@ static int prove_hurwitz_stable(rs_run_t *run, const fmpz_mpoly_t h, const rs_bo
         }
         for (i = 0; ok && i < hw->ncond; i++) {
             const rs_hurwitz_cond_struct *hc = hw->cond + i;
-            if (hc->trivially_true) continue;
+            if (hc->trivially_true) {
+                /* positive by its factors' signs under the assumptions:
+                 * certified on the set like any other, which checks that
+                 * sign rule independently (not an empty certificate) */
+                ok = prove_trivial(hc, b, s, cx);
+                continue;
+            }
             if (hc->trivially_false) { ok = 0; break; }
             ok = prove_sign(hc->reduced, 1, b, s, cx);
             for (k = 0; k < hc->factors->num && ok; k++)

@@ -85,6 +85,9 @@ static void check_region(const json_t *o, const struct iv *want, size_t n, const
                 assert_string_equal(str(json_object_get(e, "at_counterexample"), "status"), want[i].status);
             } else {
                 assert_true(json_is_true(json_object_get(e, "certificate_rechecked")));
+                /* real evidence, not an empty certificate (conditions positive by their
+                 * factors' signs are certified on the set too) */
+                assert_true(json_array_size(json_object_get(e, "certificate")) > 0);
             }
             if (strcmp(want[i].status, "marginal") == 0) assert_non_null(json_object_get(e, "not_stable_at"));
         }
@@ -223,6 +226,33 @@ static void test_park_all(void **state)
     json_decref(doc);
 }
 
+/* Ends reached only in a limit of the quantified parameter, closedness
+ * decided exactly.  By hand: (1 + w) x[n+1] = (1 + w - a w) x[n] has
+ * lambda = 1 - a w/(1 + w); for w > 0, w/(1 + w) fills (0, 1), so
+ * |lambda| < 1 for every w iff 0 < a w/(1 + w) < 2 for every w iff 0 < a <= 2
+ * (at a = 2, lambda = (1 - w)/(1 + w) is inside for every w > 0: the end is
+ * closed although lambda -> -1 as w -> inf); a = 0: lambda = 1 (marginal);
+ * a > 2: lambda < -1 for w > 2/(a - 2); a < 0: lambda > 1.  Likewise
+ * (1 + m) x[n+1] = (1 + m - a) x[n], lambda = 1 - a/(1 + m), a/(1 + m) fills
+ * (0, a) for m > 0: the same range, its end 2 approached as m -> 0. */
+static void test_limit_ends(void **state)
+{
+    static const struct iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+                                     {"0", 0, "2", 1, "stable"}, {"2", 0, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = run_ok("param a w\nassume w > 0\nunknown x\neq (1 + w)*x[n+1] = (1 + w - a*w)*x[n]\n"
+                         "analyse region a for all [w]\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 4, "w -> inf");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+    doc = run_ok("param a m\nassume m > 0\nunknown x\neq (1 + m)*x[n+1] = (1 + m - a)*x[n]\n"
+                 "analyse region a for all [m]\n", &outcome);
+    check_region(result(doc, 0), want, 4, "m -> 0");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 /* bad requests: a clear error, no result */
 static void test_bad(void **state)
 {
@@ -259,6 +289,7 @@ int main(void)
         cmocka_unit_test(test_newmark),
         cmocka_unit_test(test_park),
         cmocka_unit_test(test_park_all),
+        cmocka_unit_test(test_limit_ends),
         cmocka_unit_test(test_bad),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
