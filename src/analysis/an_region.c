@@ -1013,33 +1013,6 @@ static int region_forall_critical(region_t *rg, int *full)
     return r;
 }
 
-/* The exact verdict at t = c (irrational) and the quantified parameters at
- * the rational point pt (a neighbour's counterexample {NAME: value}). */
-static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_t *pt)
-{
-    const rs_scheme_struct *s = rg->s;
-    fmpz_mpoly_t f, g;
-    fmpq_t x;
-    slong k;
-    int decided = 0;
-    fmpz_mpoly_init(f, s->zctx);
-    fmpz_mpoly_init(g, s->zctx);
-    fmpq_init(x);
-    fmpz_mpoly_set(f, rg->v->cp->p, s->zctx);
-    for (k = 0; k < rg->nq; k++) {
-        const char *w = json_string_value(json_object_get(pt, rg->run->c->params[rg->qv[k]].name));
-        if (w == NULL || fmpq_set_str(x, w, 10) != 0) break;
-        fmpq_canonicalise(x);
-        rs_an_forall_subst(g, f, rg->qv[k], x, s->zctx);
-        fmpz_mpoly_swap(f, g, s->zctx);
-    }
-    if (k == rg->nq) decided = !fmpz_mpoly_is_zero(f, s->zctx) && status_at_algebraic(st, f, rg->tv, c, s);
-    fmpz_mpoly_clear(f, s->zctx);
-    fmpz_mpoly_clear(g, s->zctx);
-    fmpq_clear(x);
-    return decided;
-}
-
 /* p with the quantified parameters at the rational point pt ({NAME: value}):
  * a polynomial in lambda and t (0 when pt lacks one of them) */
 static int forall_at_point(fmpz_mpoly_t f, region_t *rg, const json_t *pt)
@@ -1061,6 +1034,18 @@ static int forall_at_point(fmpz_mpoly_t f, region_t *rg, const json_t *pt)
     fmpz_mpoly_clear(g, s->zctx);
     fmpq_clear(x);
     return k == rg->nq && !fmpz_mpoly_is_zero(f, s->zctx);
+}
+
+/* The exact verdict at t = c (irrational) and the quantified parameters at
+ * the rational point pt (a neighbour's counterexample {NAME: value}). */
+static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_t *pt)
+{
+    fmpz_mpoly_t f;
+    int decided;
+    fmpz_mpoly_init(f, rg->s->zctx);
+    decided = forall_at_point(f, rg, pt) && status_at_algebraic(st, f, rg->tv, c, rg->s);
+    fmpz_mpoly_clear(f, rg->s->zctx);
+    return decided;
 }
 
 /* The values of t where, with the quantified parameters at pt, a root can
