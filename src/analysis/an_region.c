@@ -10,6 +10,7 @@
 #include <arb_fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>
 #include "analysis/registry.h"
+#include "analysis/an_region.h"
 #include "recstab/bilinear.h"
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
@@ -104,17 +105,7 @@ static void eval_at(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, const fmpq_
 #define CRIT_DISC 8   /* discriminant: a repeated root */
 #define CRIT_TOUCH (CRIT_LC | CRIT_PM1 | CRIT_D)
 
-/* A real root of an irreducible integer polynomial: the root number idx (in
- * increasing order) of minpoly; rational when deg minpoly == 1. */
-typedef struct {
-    fmpz_poly_t minpoly;
-    slong idx;
-    int rational;
-    fmpq_t q;            /* the value when rational */
-    arb_t x;             /* enclosure */
-    slong prec;
-    int boundary;        /* which critical polynomials vanish here: CRIT_* */
-} alg_t;
+typedef rs_alg_t alg_t;
 
 static void alg_init(alg_t *a)
 {
@@ -783,6 +774,29 @@ int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run)
     if (req->u.region.param < 0)
         return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
     t = rs_req_skip_blanks(t);
+    if (*t == ',') {
+        /* region N1, N2: the exact set in the plane (an_region_cad.c) */
+        const char *u = rs_req_skip_blanks(t + 1);
+        t = rs_req_read_name(u, name);
+        if (t == NULL)
+            return rs_req_error(run, q, u, RS_ERR_INPUT, "expected a second parameter name after ',', found '%s'", u);
+        req->u.region.param2 = rs_case_param_index(run->c, name);
+        if (req->u.region.param2 < 0) return rs_req_error(run, q, u, RS_ERR_INPUT, "'%s' is not a parameter", name);
+        if (req->u.region.param2 == req->u.region.param)
+            return rs_req_error(run, q, u, RS_ERR_INPUT, "the two region parameters must differ ('%s' twice)", name);
+        req->u.region.twod = 1;
+        t = rs_req_skip_blanks(t);
+        if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
+            r = parse_assignments(run, q, t + 2, &req->u.region.at, &req->u.region.nat);
+            if (r != RS_OK) return r;
+        } else if (*t != '\0') {
+            return rs_req_error(run, q, t, RS_ERR_INPUT, "expected 'at NAME=VALUE, ...' or end of line, found '%s'", t);
+        }
+        for (i = 0; i < req->u.region.nat; i++)
+            if (req->u.region.at[i].var == req->u.region.param || req->u.region.at[i].var == req->u.region.param2)
+                return rs_req_error(run, q, rest, RS_ERR_INPUT, "%s", "a region parameter is also given a value");
+        return RS_OK;
+    }
     if (strncmp(t, "at", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
         r = parse_assignments(run, q, t + 2, &req->u.region.at, &req->u.region.nat);
         if (r != RS_OK) return r;
@@ -1493,6 +1507,7 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     json_t *o;
     int r;
 
+    if (req->u.region.twod) return rs_an_region_cad(run, req);
     keep[0] = name;
     rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);
     r = rs_run_variant(&v, run, a, na);
@@ -1542,4 +1557,23 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     }
     region_clear(&rg);
     return r;
+}
+
+/* ---- shared with an_region_cad.c (an_region.h) ---------------------------- */
+
+void rs_alg_init(rs_alg_t *a) { alg_init(a); }
+void rs_alg_clear(rs_alg_t *a) { alg_clear(a); }
+void rs_alg_refine(rs_alg_t *a, slong prec) { alg_refine(a, prec); }
+int rs_alg_cmp(rs_alg_t *a, rs_alg_t *b) { return alg_cmp(a, b); }
+void rs_alg_roots_append(rs_alg_t **list, slong *n, const fmpz_poly_t f, int boundary)
+{
+    alg_roots_append(list, n, f, boundary);
+}
+void rs_alg_sort(rs_alg_t *a, slong n) { sort_algs(a, n); }
+json_t *rs_alg_json(rs_alg_t *a, const char *var) { return alg_json(a, var); }
+double rs_alg_double(rs_alg_t *a) { return alg_double(a); }
+void rs_alg_between(fmpq_t out, rs_alg_t *a, rs_alg_t *b) { rational_between(out, a, b); }
+int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0, const rs_scheme_t s)
+{
+    return status_at_algebraic(out, p, tv, t0, s);
 }

@@ -1,8 +1,10 @@
-/* an_region.h -- the projection used by `region NAME for all` (and by the
- * cylindrical decomposition of 2-D regions): sets of irreducible integer
- * polynomials in the scheme's variables and one elimination step. */
-#ifndef RS_AN_REGION_H
-#define RS_AN_REGION_H
+/* an_region.h -- shared by the regions: the projection used by `region NAME
+ * for all` and by the cylindrical decomposition of 2-D regions (sets of
+ * irreducible integer polynomials, one elimination step), and the real
+ * algebraic numbers and exact point statuses of an_region.c. */
+#ifndef RECSTAB_AN_REGION_H
+#define RECSTAB_AN_REGION_H
+#include <arb.h>
 #include "analysis/registry.h"
 
 /* a set of irreducible polynomials, each up to sign once */
@@ -24,4 +26,38 @@ void rs_plist_add(rs_plist_t *l, const fmpz_mpoly_t f, slong tv, const rs_bound_
  * sign on dom dropped.  Budget-checked: returns the budget's error. */
 int rs_proj_eliminate(rs_plist_t *out, rs_run_t *run, const rs_plist_t *in, slong u, const rs_bound_t *bu,
                       slong tv, const rs_bound_t *dom, const fmpz_mpoly_ctx_t ctx);
+
+/* A real root of an irreducible integer polynomial: the root number idx (in
+ * increasing order) of minpoly; rational when deg minpoly == 1. */
+typedef struct {
+    fmpz_poly_t minpoly;
+    slong idx;
+    int rational;
+    fmpq_t q;            /* the value when rational */
+    arb_t x;             /* enclosure */
+    slong prec;
+    int boundary;        /* which critical polynomials vanish here (an_region.c's CRIT_*) */
+} rs_alg_t;
+
+void rs_alg_init(rs_alg_t *a);
+void rs_alg_clear(rs_alg_t *a);
+/* the enclosure refined to at least prec bits */
+void rs_alg_refine(rs_alg_t *a, slong prec);
+/* -1, 0, 1 */
+int rs_alg_cmp(rs_alg_t *a, rs_alg_t *b);
+/* appends the real roots of f (non-zero) to *list */
+void rs_alg_roots_append(rs_alg_t **list, slong *n, const fmpz_poly_t f, int boundary);
+/* sorted in increasing order */
+void rs_alg_sort(rs_alg_t *a, slong n);
+/* "p/q", or {minpoly, root_index, interval, approx} */
+json_t *rs_alg_json(rs_alg_t *a, const char *var);
+double rs_alg_double(rs_alg_t *a);
+/* a simple rational strictly between a < b (NULL ends: infinite) */
+void rs_alg_between(fmpq_t out, rs_alg_t *a, rs_alg_t *b);
+/* The exact status of p(lambda; tv = t0), p depending on no other
+ * parameter; 0 when undecided (a repeated non-real circle root of a system) */
+int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0, const rs_scheme_t s);
+
+/* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
+int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
 #endif

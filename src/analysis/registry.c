@@ -112,7 +112,7 @@ const rs_an_def_t rs_an_registry[] = {
      NULL, NULL, rs_an_jury, 0},
     {"stability", NULL, EQ, "", NULL, "all parameters set: stable / marginal / unstable / singular with root counts",
      NULL, NULL, rs_an_stability, RS_AN_NOT_IN_P},
-    {"region", NULL, EQ, "NAME [at P=V, ...] | NAME for all [P, ...]", NULL,
+    {"region", NULL, EQ, "NAME [at P=V, ...] | NAME for all [P, ...] | NAME1, NAME2 [at P=V, ...]", NULL,
      "the exact set of NAME values where the scheme is stable, marginal, unstable",
      rs_an_region_parse, rs_an_region_req_clear, rs_an_region, 0},
     {"limit", NULL, EQ, "NAME -> 0|inf", NULL, "the limits of the roots with multiplicities",

@@ -57,7 +57,8 @@ typedef struct {
     union {
         struct { int bilinear; rs_expr_t *poly; } expect;
         struct { slong param; rs_assign_t *at; slong nat;
-                 int forall; slong *qv; slong nq; } region;   /* forall: `for all [P, ...]` */
+                 int forall; slong *qv; slong nq;
+                 int twod; slong param2; } region;   /* forall: `for all [P, ...]`; twod: `region N1, N2` */
         struct { slong param; int to_inf; } limit;
         struct { int kind; void *dnf; } claim;       /* dnf: an_claim.c's claim_dnf_t */
         void *sweep;                                 /* sweep, map: rs_sweep_request_t (sweep_impl.h) */

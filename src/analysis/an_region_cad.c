@@ -1,0 +1,815 @@
+/* an_region_cad.c -- `region N1, N2 [at P=V, ...]`: the exact stable and
+ * marginal sets in the (N1, N2) plane by a cylindrical algebraic
+ * decomposition (Collins 1975; the 2-D projection of lc, discriminant and
+ * resultants suffices: over an open interval of N1 where none vanishes the
+ * roots in N2 of every polynomial are continuous and distinct).
+ *
+ *   1. the critical polynomials in (N1, N2): where a root can reach the
+ *      circle or the degree drops (lc in lambda, p(1), p(-1), D_{n-1} of
+ *      the bilinear q, the discriminant), factored; the assume lines' ends;
+ *   2. projection onto N1: leading coefficients, discriminants, pairwise
+ *      resultants in N2; their real roots cut the N1 axis into columns;
+ *   3. in each column with a rational N1 sample, the roots in N2 cut it
+ *      into cells; each cell's status is decided exactly at its sample
+ *      (rational: the point verdict; algebraic N2: in Q(N2)[lambda]);
+ *   4. the formula: an OR of ANDs of sign conditions of the polynomials,
+ *      built from the cells' sign vectors (Hong's solution formula
+ *      construction, simplified greedily while no cell of another status
+ *      satisfies it), re-parsed and checked at random rational points
+ *      against the exact point verdict (exit 3 on disagreement);
+ *   5. the boundary: the polynomials with at least one arc whose two sides
+ *      have different statuses.
+ *
+ * Limit: two parameters; every other one must be set (`at` or `set`).
+ * Columns over irrational N1 values (roots of the projection) are not
+ * decided (a two-level algebraic tower): they are listed, and
+ * "formula_complete" is false when one exists. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpz_mpoly_factor.h>
+#include <flint/fmpq_mpoly.h>
+#include <arb_fmpz_poly.h>
+#include "analysis/an_region.h"
+#include "recstab/bilinear.h"
+#include "recstab/hurwitz.h"
+#include "util/polyfmt.h"
+
+#define CAD_CHECK_POINTS 64
+
+enum { K_BOUNDARY = 0, K_DOMAIN = 1, K_PROJ = 2 };
+
+typedef struct {
+    int dim;                 /* 0, 1, 2 */
+    slong col;               /* column (its index in the N1 decomposition) */
+    int decided, outside;
+    rs_status_t st;
+    signed char *sg;         /* sign of each polynomial */
+    json_t *a, *b;           /* the sample */
+    slong sec;               /* for sections: the polynomials vanishing (first index) */
+} cell_t;
+
+typedef struct {
+    rs_run_t *run;
+    const rs_variant_t *v;
+    const rs_scheme_struct *s;
+    slong av, bv;
+    const char *an, *bn;
+    rs_bound_t *bounds;
+    fmpz_mpoly_struct *f;    /* the polynomials (kind: K_*) */
+    int *kind;
+    int *closed;             /* K_DOMAIN: the end is included */
+    slong nf;
+    rs_alg_t *crit;          /* N1 critical values, sorted */
+    slong ncrit;
+    cell_t *cells;
+    slong ncells;
+    slong undecided_lines;
+    double blo, bhi;         /* the span of N2 roots seen (for random points) */
+} cad_t;
+
+/* f with a positive leading coefficient, unless already listed */
+static void cad_add(cad_t *c, const fmpz_mpoly_t g, int kind, int closed)
+{
+    slong i;
+    fmpz_mpoly_t h;
+    if (fmpz_mpoly_is_fmpz(g, c->s->zctx)) return;
+    fmpz_mpoly_init(h, c->s->zctx);
+    fmpz_mpoly_set(h, g, c->s->zctx);
+    if (fmpz_sgn(h->coeffs + 0) < 0) fmpz_mpoly_neg(h, h, c->s->zctx);
+    for (i = 0; i < c->nf; i++)
+        if (fmpz_mpoly_equal(c->f + i, h, c->s->zctx) && (kind != K_DOMAIN || c->kind[i] != K_DOMAIN)) {
+            fmpz_mpoly_clear(h, c->s->zctx);
+            return;
+        }
+    c->f = flint_realloc(c->f, (c->nf + 1) * sizeof(fmpz_mpoly_struct));
+    c->kind = flint_realloc(c->kind, (c->nf + 1) * sizeof(int));
+    c->closed = flint_realloc(c->closed, (c->nf + 1) * sizeof(int));
+    fmpz_mpoly_init(c->f + c->nf, c->s->zctx);
+    fmpz_mpoly_swap(c->f + c->nf, h, c->s->zctx);
+    c->kind[c->nf] = kind;
+    c->closed[c->nf] = closed;
+    c->nf++;
+    fmpz_mpoly_clear(h, c->s->zctx);
+}
+
+/* the irreducible factors of g (non-constant) */
+static void cad_add_factors(cad_t *c, const fmpz_mpoly_t g, int kind)
+{
+    fmpz_mpoly_factor_t fac;
+    slong k;
+    if (fmpz_mpoly_is_zero(g, c->s->zctx)) return;
+    fmpz_mpoly_factor_init(fac, c->s->zctx);
+    if (fmpz_mpoly_factor(fac, g, c->s->zctx)) {
+        for (k = 0; k < fac->num; k++) cad_add(c, fac->poly + k, kind, 0);
+    } else {
+        cad_add(c, g, kind, 0);
+    }
+    fmpz_mpoly_factor_clear(fac, c->s->zctx);
+}
+
+/* x - e (lower end) or e - x (upper end), times the denominator of e */
+static void cad_add_end(cad_t *c, slong var, const fmpq_t e, int upper, int closed)
+{
+    fmpz_mpoly_t g, t;
+    fmpz_mpoly_init(g, c->s->zctx);
+    fmpz_mpoly_init(t, c->s->zctx);
+    fmpz_mpoly_gen(g, var, c->s->zctx);
+    fmpz_mpoly_scalar_mul_fmpz(g, g, fmpq_denref(e), c->s->zctx);
+    fmpz_mpoly_set_fmpz(t, fmpq_numref(e), c->s->zctx);
+    fmpz_mpoly_sub(g, g, t, c->s->zctx);
+    if (upper) fmpz_mpoly_neg(g, g, c->s->zctx);
+    /* not through cad_add: the sign (inside: > 0) matters here */
+    c->f = flint_realloc(c->f, (c->nf + 1) * sizeof(fmpz_mpoly_struct));
+    c->kind = flint_realloc(c->kind, (c->nf + 1) * sizeof(int));
+    c->closed = flint_realloc(c->closed, (c->nf + 1) * sizeof(int));
+    fmpz_mpoly_init(c->f + c->nf, c->s->zctx);
+    fmpz_mpoly_swap(c->f + c->nf, g, c->s->zctx);
+    c->kind[c->nf] = K_DOMAIN;
+    c->closed[c->nf] = closed;
+    c->nf++;
+    fmpz_mpoly_clear(g, c->s->zctx);
+    fmpz_mpoly_clear(t, c->s->zctx);
+}
+
+/* step 1: where the status can change (as region NAME's critical values) */
+static int cad_critical(cad_t *c)
+{
+    const rs_scheme_struct *s = c->s;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), k;
+    ulong nn = (ulong) n;
+    fmpz_mpoly_t sqf, t;
+    fmpz_mpoly_factor_t fac;
+    fmpz_t pm;
+    int r = RS_OK;
+    fmpz_mpoly_init(sqf, s->zctx);
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_init(pm);
+    fmpz_mpoly_one(sqf, s->zctx);
+    fmpz_mpoly_factor_init(fac, s->zctx);
+    if (fmpz_mpoly_factor(fac, c->v->cp->p, s->zctx)) {
+        for (k = 0; k < fac->num; k++)
+            if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) > 0) fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
+    } else {
+        fmpz_mpoly_set(sqf, c->v->cp->p, s->zctx);
+    }
+    fmpz_mpoly_factor_clear(fac, s->zctx);
+    fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &nn, 1, s->zctx);
+    cad_add_factors(c, t, K_BOUNDARY);
+    for (k = -1; k <= 1; k += 2) {
+        fmpz_set_si(pm, k);
+        fmpz_mpoly_evaluate_one_fmpz(t, sqf, lv, pm, s->zctx);
+        cad_add_factors(c, t, K_BOUNDARY);
+    }
+    if (n >= 2) {
+        rs_hurwitz_t h;
+        fmpz_mpoly_t qz;
+        int *sign = flint_calloc(s->nvars, sizeof(int));
+        fmpz_mpoly_init(qz, s->zctx);
+        rs_hurwitz_init(h);
+        rs_bilinear_fmpz_mpoly(qz, sqf, lv, s->zctx);
+        if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
+            && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, c->run->err) == RS_OK && h->n >= 2)
+            cad_add_factors(c, h->minors + h->n - 2, K_BOUNDARY);
+        rs_error_init(c->run->err);
+        rs_hurwitz_clear(h, s->zctx);
+        fmpz_mpoly_clear(qz, s->zctx);
+        flint_free(sign);
+        if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
+            cad_add_factors(c, t, K_BOUNDARY);
+    }
+    /* the domain from the assume lines */
+    for (k = 0; k < 2; k++) {
+        slong var = k == 0 ? c->av : c->bv;
+        const rs_bound_t *b = c->bounds + var;
+        if (b->has_lo) cad_add_end(c, var, b->lo, 0, b->lo_closed);
+        if (b->has_hi) cad_add_end(c, var, b->hi, 1, b->hi_closed);
+    }
+    r = rs_budget_check(c->run->err, "region N1, N2 (critical polynomials)");
+    fmpz_mpoly_clear(sqf, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
+    fmpz_clear(pm);
+    return r;
+}
+
+/* step 2: the projection onto N1 and its real roots */
+static int cad_project(cad_t *c)
+{
+    const rs_scheme_struct *s = c->s;
+    slong i, j, nf0 = c->nf, bv = c->bv;
+    fmpz_mpoly_t t;
+    fmpz_poly_t u;
+    int r = RS_OK;
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_poly_init(u);
+    for (i = 0; i < nf0 && r == RS_OK; i++) {
+        slong d = fmpz_mpoly_degree_si(c->f + i, bv, s->zctx);
+        ulong dd = (ulong) d;
+        if (d <= 0) continue;
+        fmpz_mpoly_get_coeff_vars_ui(t, c->f + i, &bv, &dd, 1, s->zctx);
+        cad_add_factors(c, t, K_PROJ);
+        if (d >= 2 && fmpz_mpoly_discriminant(t, c->f + i, bv, s->zctx)) cad_add_factors(c, t, K_PROJ);
+        for (j = i + 1; j < nf0 && r == RS_OK; j++) {
+            if (fmpz_mpoly_degree_si(c->f + j, bv, s->zctx) <= 0) continue;
+            r = rs_budget_check(c->run->err, "region N1, N2 (projection)");
+            if (r == RS_OK && fmpz_mpoly_resultant(t, c->f + i, c->f + j, bv, s->zctx)) cad_add_factors(c, t, K_PROJ);
+        }
+    }
+    /* every polynomial in N1 alone cuts the axis */
+    for (i = 0; i < c->nf && r == RS_OK; i++) {
+        if (fmpz_mpoly_degree_si(c->f + i, bv, s->zctx) > 0) continue;
+        if (fmpz_mpoly_get_fmpz_poly(u, c->f + i, c->av, s->zctx)) rs_alg_roots_append(&c->crit, &c->ncrit, u, 0);
+    }
+    rs_alg_sort(c->crit, c->ncrit);
+    for (i = 0, j = 0; i < c->ncrit; i++) {
+        if (j > 0 && rs_alg_cmp(c->crit + j - 1, c->crit + i) == 0) { rs_alg_clear(c->crit + i); continue; }
+        if (j != i) c->crit[j] = c->crit[i];
+        j++;
+    }
+    c->ncrit = j;
+    fmpz_mpoly_clear(t, s->zctx);
+    fmpz_poly_clear(u);
+    return r;
+}
+
+/* sign of g at the algebraic b (exact: 0 iff its minimal polynomial divides g) */
+static int upoly_sign_at(const fmpz_poly_t g, rs_alg_t *b)
+{
+    fmpz_poly_t rem;
+    arb_t y;
+    slong prec;
+    int sg = 0;
+    if (b->rational) {
+        fmpq_t y2;
+        fmpq_init(y2);
+        fmpz_poly_evaluate_fmpq(y2, g, b->q);
+        sg = fmpq_sgn(y2);
+        fmpq_clear(y2);
+        return sg;
+    }
+    fmpz_poly_init(rem);
+    fmpz_poly_pseudo_rem_cohen(rem, g, b->minpoly);
+    if (fmpz_poly_is_zero(rem)) { fmpz_poly_clear(rem); return 0; }
+    fmpz_poly_clear(rem);
+    arb_init(y);
+    for (prec = 64; sg == 0 && prec < (1L << 20); prec *= 2) {
+        rs_alg_refine(b, prec);
+        arb_fmpz_poly_evaluate_arb(y, g, b->x, prec);
+        if (arb_is_positive(y)) sg = 1;
+        else if (arb_is_negative(y)) sg = -1;
+    }
+    arb_clear(y);
+    return sg;
+}
+
+/* the domain polynomials' signs say whether a sample is admissible */
+static int cad_outside(const cad_t *c, const signed char *sg)
+{
+    slong k;
+    for (k = 0; k < c->nf; k++)
+        if (c->kind[k] == K_DOMAIN && (sg[k] < 0 || (sg[k] == 0 && !c->closed[k]))) return 1;
+    return 0;
+}
+
+static cell_t *cad_new_cell(cad_t *c, int dim, slong col)
+{
+    cell_t *e;
+    c->cells = flint_realloc(c->cells, (c->ncells + 1) * sizeof(cell_t));
+    e = c->cells + c->ncells++;
+    memset(e, 0, sizeof *e);
+    e->dim = dim;
+    e->col = col;
+    e->sec = -1;
+    e->sg = flint_calloc(c->nf, 1);
+    return e;
+}
+
+/* step 3 for one column N1 = a0 (rational); sector: the column is 2-D */
+static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
+{
+    const rs_scheme_struct *s = c->s;
+    fmpz_poly_struct *g = flint_malloc(c->nf * sizeof(fmpz_poly_struct));
+    rs_alg_t *roots = NULL;
+    slong nroots = 0, i, k, j;
+    fmpz_mpoly_t t, pa;
+    fmpq vals[2];
+    int r = RS_OK;
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_mpoly_init(pa, s->zctx);
+    fmpq_init(vals + 0); fmpq_init(vals + 1);
+    fmpq_set(vals + 0, a0);
+    for (k = 0; k < c->nf; k++) {
+        fmpz_poly_init(g + k);
+        rs_an_forall_subst(t, c->f + k, c->av, a0, s->zctx);
+        if (!fmpz_mpoly_get_fmpz_poly(g + k, t, c->bv, s->zctx)) fmpz_poly_zero(g + k);
+        if (fmpz_poly_degree(g + k) >= 1) rs_alg_roots_append(&roots, &nroots, g + k, 0);
+    }
+    rs_alg_sort(roots, nroots);
+    for (i = 0, j = 0; i < nroots; i++) {
+        if (j > 0 && rs_alg_cmp(roots + j - 1, roots + i) == 0) { rs_alg_clear(roots + i); continue; }
+        if (j != i) roots[j] = roots[i];
+        j++;
+    }
+    nroots = j;
+    if (nroots > 0) {
+        double lo = rs_alg_double(roots), hi = rs_alg_double(roots + nroots - 1);
+        if (lo < c->blo) c->blo = lo;
+        if (hi > c->bhi) c->bhi = hi;
+    }
+    rs_an_forall_subst(pa, c->v->cp->p, c->av, a0, s->zctx);
+    /* cells from below: sector, root, sector, ..., sector */
+    for (i = 0; i <= 2 * nroots && r == RS_OK; i++) {
+        int on_root = i % 2 == 1;
+        rs_alg_t *lo = i / 2 > 0 || on_root ? roots + (on_root ? i / 2 : i / 2 - 1) : NULL;
+        rs_alg_t *hi = (i / 2 < nroots) ? roots + i / 2 : NULL;
+        cell_t *e = cad_new_cell(c, (sector ? 1 : 0) + (on_root ? 0 : 1), col);
+        rs_alg_t bs;
+        rs_alg_init(&bs);
+        r = rs_budget_check(c->run->err, "region N1, N2 (cells)");
+        if (on_root) {
+            rs_alg_t *rt = roots + i / 2;
+            for (k = 0; k < c->nf; k++) e->sg[k] = (signed char) upoly_sign_at(g + k, rt);
+            e->b = rs_alg_json(rt, c->bn);
+            for (k = 0; k < c->nf && e->sec < 0; k++) if (e->sg[k] == 0 && !fmpz_poly_is_zero(g + k)) e->sec = k;
+            e->outside = cad_outside(c, e->sg);
+            if (!e->outside && r == RS_OK) {
+                if (rt->rational) {
+                    rs_rootcount_t rc;
+                    rs_rootcount_init(rc);
+                    fmpq_set(vals + 1, rt->q);
+                    r = rs_run_point_status(&e->st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
+                    rs_rootcount_clear(rc);
+                    e->decided = r == RS_OK;
+                } else if (!fmpz_mpoly_is_zero(pa, s->zctx)) {
+                    e->decided = rs_alg_status(&e->st, pa, c->bv, rt, s);
+                }
+            }
+        } else {
+            rs_rootcount_t rc;
+            bs.rational = 1;
+            rs_alg_between(bs.q, lo, hi);
+            for (k = 0; k < c->nf; k++) e->sg[k] = (signed char) upoly_sign_at(g + k, &bs);
+            e->b = rs_json_fmpq(bs.q);
+            e->outside = cad_outside(c, e->sg);
+            if (!e->outside && r == RS_OK) {
+                rs_rootcount_init(rc);
+                fmpq_set(vals + 1, bs.q);
+                r = rs_run_point_status(&e->st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
+                rs_rootcount_clear(rc);
+                e->decided = r == RS_OK;
+            }
+        }
+        e->a = rs_json_fmpq(a0);
+        (void) hi;
+        rs_alg_clear(&bs);
+    }
+    for (k = 0; k < c->nf; k++) fmpz_poly_clear(g + k);
+    flint_free(g);
+    for (i = 0; i < nroots; i++) rs_alg_clear(roots + i);
+    free(roots);
+    fmpz_mpoly_clear(t, s->zctx);
+    fmpz_mpoly_clear(pa, s->zctx);
+    fmpq_clear(vals + 0); fmpq_clear(vals + 1);
+    return r;
+}
+
+/* every column: sectors between the critical N1 values, sections at them */
+static int cad_lift(cad_t *c)
+{
+    slong i;
+    int r = RS_OK;
+    for (i = 0; i <= 2 * c->ncrit && r == RS_OK; i++) {
+        fmpq_t a0;
+        fmpq_init(a0);
+        if (i % 2 == 0) {
+            rs_alg_between(a0, i > 0 ? c->crit + i / 2 - 1 : NULL, i / 2 < c->ncrit ? c->crit + i / 2 : NULL);
+            r = cad_column(c, a0, 1, i);
+        } else if (c->crit[i / 2].rational) {
+            r = cad_column(c, c->crit[i / 2].q, 0, i);
+        } else {
+            /* an irrational N1 value: is it inside the domain at all? */
+            rs_alg_t *al = c->crit + i / 2;
+            const rs_bound_t *b = c->bounds + c->av;
+            int in = 1;
+            if (b->has_lo) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->lo); in &= rs_alg_cmp(al, &e) > 0; rs_alg_clear(&e); }
+            if (b->has_hi) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->hi); in &= rs_alg_cmp(al, &e) < 0; rs_alg_clear(&e); }
+            if (in) {
+                cell_t *e = cad_new_cell(c, 1, i);
+                e->a = rs_alg_json(al, c->an);
+                e->b = json_null();
+                c->undecided_lines++;
+            }
+        }
+        fmpq_clear(a0);
+    }
+    return r;
+}
+
+/* ---- the formula --------------------------------------------------------- */
+
+/* masks: bit 0 "< 0", bit 1 "= 0", bit 2 "> 0"; 7: no condition */
+static int sg_bit(signed char s) { return s < 0 ? 1 : (s == 0 ? 2 : 4); }
+
+static int conj_holds(const unsigned char *m, const signed char *sg, slong nf)
+{
+    slong k;
+    for (k = 0; k < nf; k++) if (!(m[k] & sg_bit(sg[k]))) return 0;
+    return 1;
+}
+
+/* 1 when no decided cell of another status satisfies m */
+static int conj_safe(const cad_t *c, const unsigned char *m, rs_status_t target)
+{
+    slong i;
+    for (i = 0; i < c->ncells; i++) {
+        const cell_t *e = c->cells + i;
+        if (!e->decided || e->outside || e->st == target) continue;
+        if (conj_holds(m, e->sg, c->nf)) return 0;
+    }
+    return 1;
+}
+
+/* the cells of status target as an OR of ANDs; *conflict when a cell of
+ * another status has the same signs as one of them */
+static unsigned char **cad_formula(slong *nout, int *conflict, const cad_t *c, rs_status_t target)
+{
+    unsigned char **F = NULL;
+    slong n = 0, i, k, j;
+    static const unsigned char widen[] = {7, 6, 3, 5};   /* drop, >= 0, <= 0, != 0 */
+    for (i = 0; i < c->ncells; i++) {
+        const cell_t *e = c->cells + i;
+        unsigned char *m;
+        int dup = 0;
+        if (!e->decided || e->outside || e->st != target) continue;
+        for (j = 0; j < n && !dup; j++) dup = conj_holds(F[j], e->sg, c->nf);
+        if (dup) continue;
+        m = flint_malloc(c->nf);
+        for (k = 0; k < c->nf; k++) m[k] = (unsigned char) sg_bit(e->sg[k]);
+        if (!conj_safe(c, m, target)) { *conflict = 1; flint_free(m); continue; }
+        /* widen: domain ends first, then projection factors, then the rest */
+        for (j = 0; j < 3; j++) {
+            int kd = j == 0 ? K_DOMAIN : (j == 1 ? K_PROJ : K_BOUNDARY);
+            slong w;
+            for (k = c->nf - 1; k >= 0; k--) {
+                if (c->kind[k] != kd) continue;
+                for (w = 0; w < 4; w++) {
+                    unsigned char keep = m[k];
+                    if ((widen[w] & keep) != keep || widen[w] == keep) continue;
+                    m[k] = widen[w];
+                    if (conj_safe(c, m, target)) break;
+                    m[k] = keep;
+                }
+            }
+        }
+        F = flint_realloc(F, (n + 1) * sizeof(unsigned char *));
+        F[n++] = m;
+    }
+    /* drop conjunctions contained in another one */
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            int sub = 1;
+            if (i == j || F[i] == NULL || F[j] == NULL) continue;
+            for (k = 0; k < c->nf && sub; k++) sub = (F[i][k] & F[j][k]) == F[i][k];
+            if (sub) { flint_free(F[i]); F[i] = NULL; break; }
+        }
+    }
+    for (i = 0, j = 0; i < n; i++) if (F[i] != NULL) F[j++] = F[i];
+    *nout = j;
+    return F;
+}
+
+static char *cad_polystr(const cad_t *c, slong k)
+{
+    return rs_polyfmt_fmpz_mpoly(c->f + k, (const char **) c->s->vars, c->s->zctx);
+}
+
+static json_t *cad_formula_json(const cad_t *c, unsigned char **F, slong n)
+{
+    static const char *rel[8] = {NULL, "< 0", "= 0", "<= 0", "> 0", "!= 0", ">= 0", NULL};
+    json_t *a = json_array();
+    slong i, k;
+    for (i = 0; i < n; i++) {
+        json_t *cj = json_array();
+        for (k = 0; k < c->nf; k++) {
+            char *ps, buf[16];
+            size_t len;
+            char *t;
+            if (F[i][k] == 7 || F[i][k] == 0) continue;
+            ps = cad_polystr(c, k);
+            snprintf(buf, sizeof buf, " %s", rel[F[i][k]]);
+            len = strlen(ps) + strlen(buf) + 1;
+            t = malloc(len);
+            snprintf(t, len, "%s%s", ps, buf);
+            json_array_append_new(cj, json_string(t));
+            free(t);
+            free(ps);
+        }
+        json_array_append_new(a, cj);
+    }
+    return a;
+}
+
+/* "POLY REL 0" at (x, y), re-parsed from the text with FLINT's parser */
+static int cond_eval(int *holds, const char *cond, const cad_t *c, const fmpq_t x, const fmpq_t y)
+{
+    const rs_scheme_struct *s = c->s;
+    char *poly = strdup(cond), *sp = strrchr(poly, ' '), *relp;
+    fmpq_mpoly_t P;
+    fmpq_t val;
+    fmpq *pt;
+    slong i;
+    int sg, ok = 0;
+    if (sp == NULL) { free(poly); return 0; }
+    *sp = '\0';                 /* "POLY REL" */
+    relp = strrchr(poly, ' ');
+    if (relp == NULL) { free(poly); return 0; }
+    *relp++ = '\0';
+    fmpq_mpoly_init(P, s->ctx);
+    fmpq_init(val);
+    pt = _fmpq_vec_init(s->nvars);
+    if (fmpq_mpoly_set_str_pretty(P, poly, (const char **) s->vars, s->ctx) == 0) {
+        fmpq_set(pt + c->av, x);
+        fmpq_set(pt + c->bv, y);
+        for (i = 0; i < s->nvars; i++)
+            if (i != c->av && i != c->bv && fmpq_mpoly_degree_si(P, i, s->ctx) > 0) break;
+        if (i == s->nvars) {
+            fmpq_mpoly_struct *vp = P;
+            fmpq **pp = flint_malloc(s->nvars * sizeof(fmpq *));
+            for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
+            ok = fmpq_mpoly_evaluate_all_fmpq(val, vp, pp, s->ctx);
+            flint_free(pp);
+            sg = fmpq_sgn(val);
+            if (strcmp(relp, ">") == 0) *holds = sg > 0;
+            else if (strcmp(relp, ">=") == 0) *holds = sg >= 0;
+            else if (strcmp(relp, "<") == 0) *holds = sg < 0;
+            else if (strcmp(relp, "<=") == 0) *holds = sg <= 0;
+            else if (strcmp(relp, "=") == 0) *holds = sg == 0;
+            else if (strcmp(relp, "!=") == 0) *holds = sg != 0;
+            else ok = 0;
+        }
+    }
+    _fmpq_vec_clear(pt, s->nvars);
+    fmpq_mpoly_clear(P, s->ctx);
+    fmpq_clear(val);
+    free(poly);
+    return ok;
+}
+
+static int dnf_holds(int *holds, const json_t *dnf, const cad_t *c, const fmpq_t x, const fmpq_t y)
+{
+    size_t i, j;
+    *holds = 0;
+    for (i = 0; i < json_array_size(dnf) && !*holds; i++) {
+        const json_t *cj = json_array_get(dnf, i);
+        int all = 1;
+        for (j = 0; j < json_array_size(cj) && all; j++)
+            if (!cond_eval(&all, json_string_value(json_array_get(cj, j)), c, x, y)) return 0;
+        *holds = all;
+    }
+    return 1;
+}
+
+/* a random rational in (lo, hi) (n_randint: deterministic per run) */
+static void rand_in(fmpq_t out, flint_rand_t st, const rs_bound_t *b, double dlo, double dhi)
+{
+    fmpq_t lo, hi, t;
+    fmpq_init(lo); fmpq_init(hi); fmpq_init(t);
+    if (b->has_lo) fmpq_set(lo, b->lo); else fmpq_set_si(lo, (slong) (dlo - 2), 1);
+    if (b->has_hi) fmpq_set(hi, b->hi); else fmpq_set_si(hi, (slong) (dhi + 2), 1);
+    if (b->has_lo && !b->has_hi && fmpq_cmp(hi, lo) <= 0) { fmpq_set(hi, lo); fmpz_add_ui(fmpq_numref(hi), fmpq_numref(hi), 4 * fmpz_get_ui(fmpq_denref(hi))); }
+    if (b->has_hi && !b->has_lo && fmpq_cmp(lo, hi) >= 0) { fmpq_set(lo, hi); fmpz_sub_ui(fmpq_numref(lo), fmpq_numref(lo), 4 * fmpz_get_ui(fmpq_denref(lo))); }
+    fmpq_sub(t, hi, lo);
+    fmpq_mul_si(t, t, (slong) n_randint(st, 9972) + 1);
+    {
+        fmpz_t d;
+        fmpz_init_set_ui(d, 9973);
+        fmpq_div_fmpz(t, t, d);
+        fmpz_clear(d);
+    }
+    fmpq_add(out, lo, t);
+    fmpq_clear(lo); fmpq_clear(hi); fmpq_clear(t);
+}
+
+/* step 4's check: the re-parsed formula against the exact point verdict */
+static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json_t *marginal, int complete)
+{
+    flint_rand_t st;
+    slong i, agree = 0, tried = 0;
+    double alo = c->ncrit ? rs_alg_double(c->crit) : 0, ahi = c->ncrit ? rs_alg_double(c->crit + c->ncrit - 1) : 0;
+    fmpq vals[2];
+    int r = RS_OK;
+    json_t *bad = json_array();
+    flint_randinit(st);
+    fmpq_init(vals + 0); fmpq_init(vals + 1);
+    for (i = 0; i < CAD_CHECK_POINTS && r == RS_OK; i++) {
+        rs_rootcount_t rc;
+        rs_status_t ps;
+        int hs, hm;
+        r = rs_budget_check(c->run->err, "region N1, N2 (cross-check)");
+        if (r != RS_OK) break;
+        rand_in(vals + 0, st, c->bounds + c->av, alo, ahi);
+        rand_in(vals + 1, st, c->bounds + c->bv, c->blo, c->bhi);
+        rs_rootcount_init(rc);
+        r = rs_run_point_status(&ps, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
+        rs_rootcount_clear(rc);
+        if (r != RS_OK) break;
+        if (!dnf_holds(&hs, stable, c, vals + 0, vals + 1) || !dnf_holds(&hm, marginal, c, vals + 0, vals + 1)) {
+            hs = -1;
+            hm = -1;
+        }
+        tried++;
+        if (hs == (ps == RS_STATUS_STABLE) && hm == (ps == RS_STATUS_MARGINAL)) {
+            agree++;
+        } else {
+            json_array_append_new(bad, json_pack("{s:o,s:o,s:s}", c->an, rs_json_fmpq(vals + 0), c->bn,
+                                                 rs_json_fmpq(vals + 1), "status", rs_status_name(ps)));
+        }
+    }
+    /* disagreement where the formula claims completeness: a bug (exit 3) */
+    if (r == RS_OK && agree != tried && complete) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+    json_object_set_new(o, "cross_check", json_pack("{s:I,s:I,s:o,s:s}", "points", (json_int_t) tried,
+        "agree", (json_int_t) agree, "disagree_at", bad, "method",
+        "the formula re-parsed from its text and evaluated exactly at random rational points of the domain, "
+        "against the exact point verdict (Routh and Schur-Cohn counts)"));
+    fmpq_clear(vals + 0); fmpq_clear(vals + 1);
+    flint_randclear(st);
+    return r;
+}
+
+/* step 5: arcs (1-D sections in 2-D columns) and whether they separate */
+static void cad_boundary(json_t *o, const cad_t *c)
+{
+    json_t *arcs = json_array(), *bnd = json_array();
+    slong *nsep = flint_calloc(c->nf, sizeof(slong)), *ntot = flint_calloc(c->nf, sizeof(slong)), i, k;
+    for (i = 1; i + 1 < c->ncells; i++) {
+        const cell_t *e = c->cells + i, *lo = e - 1, *hi = e + 1;
+        int sep;
+        if (e->dim != 1 || e->sec < 0 || lo->col != e->col || hi->col != e->col || lo->dim != 2 || hi->dim != 2)
+            continue;
+        if (e->outside || lo->outside || hi->outside || !lo->decided || !hi->decided) continue;
+        sep = lo->st != hi->st;
+        for (k = 0; k < c->nf; k++) {
+            if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY) continue;
+            ntot[k]++;
+            if (sep) nsep[k]++;
+        }
+        if (sep) {
+            char *ps = cad_polystr(c, e->sec);
+            json_array_append_new(arcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
+                                                  "below", rs_status_name(lo->st), "above", rs_status_name(hi->st)));
+            free(ps);
+        }
+    }
+    for (k = 0; k < c->nf; k++) {
+        char *ps;
+        if (c->kind[k] != K_BOUNDARY || nsep[k] == 0) continue;
+        ps = cad_polystr(c, k);
+        json_array_append_new(bnd, json_string(ps));
+        free(ps);
+    }
+    json_object_set_new(o, "boundary", bnd);
+    json_object_set_new(o, "arcs", arcs);
+    {
+        json_t *cand = json_array();
+        for (k = 0; k < c->nf; k++) {
+            char *ps;
+            if (c->kind[k] != K_BOUNDARY) continue;
+            ps = cad_polystr(c, k);
+            json_array_append_new(cand, json_pack("{s:s,s:I,s:I}", "poly", ps, "arcs", (json_int_t) ntot[k],
+                                                  "separating", (json_int_t) nsep[k]));
+            free(ps);
+        }
+        json_object_set_new(o, "candidates", cand);
+    }
+    flint_free(nsep);
+    flint_free(ntot);
+}
+
+static void cad_clear(cad_t *c)
+{
+    slong i;
+    for (i = 0; i < c->nf; i++) fmpz_mpoly_clear(c->f + i, c->s->zctx);
+    flint_free(c->f);
+    flint_free(c->kind);
+    flint_free(c->closed);
+    for (i = 0; i < c->ncrit; i++) rs_alg_clear(c->crit + i);
+    free(c->crit);
+    for (i = 0; i < c->ncells; i++) {
+        flint_free(c->cells[i].sg);
+        json_decref(c->cells[i].a);
+        json_decref(c->cells[i].b);
+    }
+    flint_free(c->cells);
+    if (c->bounds != NULL) {
+        rs_bounds_clear(c->bounds, c->run->c->nparams);
+        flint_free(c->bounds);
+    }
+}
+
+static json_t *cad_cells_json(const cad_t *c)
+{
+    json_t *a = json_array();
+    slong i;
+    for (i = 0; i < c->ncells; i++) {
+        const cell_t *e = c->cells + i;
+        const char *st = e->outside ? "outside" : (e->decided ? rs_status_name(e->st) : "undecided");
+        json_array_append_new(a, json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn,
+                                           e->b, "status", st));
+    }
+    return a;
+}
+
+int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
+{
+    const char *keep[2];
+    rs_assign_t *a = NULL;
+    slong na = 0, i;
+    rs_variant_t *v;
+    cad_t c;
+    json_t *o;
+    int r;
+    memset(&c, 0, sizeof c);
+    c.av = req->u.region.param;
+    c.bv = req->u.region.param2;
+    c.an = keep[0] = run->c->params[c.av].name;
+    c.bn = keep[1] = run->c->params[c.bv].name;
+    rs_run_assignments(run, &a, &na, keep, 2, req->u.region.at, req->u.region.nat);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    c.run = run;
+    c.v = v;
+    c.s = v->s;
+    c.blo = -1;
+    c.bhi = 1;
+    for (i = 0; i < run->c->nparams; i++)
+        if (i != c.av && i != c.bv && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0)
+        {
+            char msg[400];
+            snprintf(msg, sizeof msg, "'%s' is symbolic: region N1, N2 decides two parameters; set the others "
+                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, c.an, c.bn, run->c->params[i].name);
+            return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
+        }
+    c.bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(c.bounds, run->c->nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c.bounds, &run->c->assume[i], run->c, run->err);
+    if (rs_bound_empty(c.bounds + c.av) || rs_bound_empty(c.bounds + c.bv)) {
+        r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", "the assumptions are contradictory");
+        cad_clear(&c);
+        return r;
+    }
+    r = cad_critical(&c);
+    if (r == RS_OK) r = cad_project(&c);
+    if (r == RS_OK) r = cad_lift(&c);
+    if (r != RS_OK) { cad_clear(&c); return r; }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "params", json_pack("[s,s]", c.an, c.bn));
+    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+    json_object_set_new(o, "symbolic", json_false());
+    {
+        unsigned char **Fs, **Fm;
+        slong ns, nm, k;
+        int conflict = 0, complete;
+        json_t *fo = json_object(), *proj = json_array(), *cv = json_array();
+        Fs = cad_formula(&ns, &conflict, &c, RS_STATUS_STABLE);
+        Fm = cad_formula(&nm, &conflict, &c, RS_STATUS_MARGINAL);
+        json_object_set_new(fo, "stable", cad_formula_json(&c, Fs, ns));
+        json_object_set_new(fo, "marginal", cad_formula_json(&c, Fm, nm));
+        for (k = 0; k < ns; k++) flint_free(Fs[k]);
+        for (k = 0; k < nm; k++) flint_free(Fm[k]);
+        flint_free(Fs);
+        flint_free(Fm);
+        complete = !conflict && c.undecided_lines == 0;
+        for (k = 0; k < c.ncells; k++) if (!c.cells[k].decided && !c.cells[k].outside) complete = 0;
+        json_object_set_new(o, "formula", fo);
+        json_object_set_new(o, "formula_complete", json_boolean(complete));
+        if (!complete)
+            json_object_set_new(o, "formula_note", json_string(conflict
+                ? "two cells of different status have the same signs: the formula is exact except there"
+                : "some cells (on lines over irrational critical values of the first parameter) are not decided: "
+                  "the formula is exact off those lines"));
+        cad_boundary(o, &c);
+        json_object_set_new(o, "cells", cad_cells_json(&c));
+        for (k = 0; k < c.ncrit; k++) json_array_append_new(cv, rs_alg_json(c.crit + k, c.an));
+        json_object_set_new(o, "critical_values", cv);
+        for (k = 0; k < c.nf; k++) {
+            char *ps = cad_polystr(&c, k);
+            json_array_append_new(proj, json_pack("{s:s,s:s}", "poly", ps, "kind",
+                c.kind[k] == K_BOUNDARY ? "critical" : (c.kind[k] == K_DOMAIN ? "assumption" : "projection")));
+            free(ps);
+        }
+        json_object_set_new(o, "projection", proj);
+        json_object_set_new(o, "undecided_lines", json_integer(c.undecided_lines));
+        json_object_set_new(o, "method", json_string(
+            "cylindrical algebraic decomposition of the plane (Collins): critical polynomials (leading "
+            "coefficient, p(1), p(-1), D_{n-1} of the bilinear q, discriminant), their projection onto the "
+            "first parameter (leading coefficients, discriminants, resultants), one exact verdict per cell"));
+        r = cad_cross_check(o, &c, json_object_get(fo, "stable"), json_object_get(fo, "marginal"), complete);
+    }
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    if (r == RS_OK) json_array_append_new(run->results, o);
+    else json_decref(o);
+    cad_clear(&c);
+    return r;
+}
