@@ -660,6 +660,49 @@ static void cad_boundary(json_t *o, const cad_t *c)
             free(ps);
         }
     }
+    /* vertical arcs: segments of a column over a rational critical value,
+     * their sides decided exactly at (a0 -+ delta, b0), delta below a
+     * thousandth of the distance to the next critical values */
+    for (i = 0; i < c->ncells; i++) {
+        const cell_t *e = c->cells + i;
+        rs_status_t side[2];
+        fmpq vals[2];
+        fmpq_t d;
+        double gap = 1;
+        slong ci = e->col / 2, j;
+        int ok = 1;
+        if (e->dim != 1 || e->col % 2 == 0 || e->outside || !json_is_string(e->b)) continue;
+        if (ci > 0) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci) - rs_alg_double(c->crit + ci - 1));
+        if (ci + 1 < c->ncrit) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci + 1) - rs_alg_double(c->crit + ci));
+        fmpq_init(vals + 0); fmpq_init(vals + 1); fmpq_init(d);
+        fmpq_set(vals + 1, c->crit[ci].q);   /* scratch: a0 */
+        fmpq_one(d);
+        while (fmpq_get_d(d) > gap / 1024) fmpq_div_2exp(d, d, 1);
+        fmpq_set_str(vals + 1, json_string_value(e->b), 10);
+        fmpq_canonicalise(vals + 1);
+        for (j = 0; j < 2 && ok; j++) {
+            rs_rootcount_t rc;
+            if (j == 0) fmpq_sub(vals + 0, c->crit[ci].q, d); else fmpq_add(vals + 0, c->crit[ci].q, d);
+            rs_rootcount_init(rc);
+            ok = rs_run_point_status(side + j, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2) == RS_OK;
+            rs_rootcount_clear(rc);
+        }
+        rs_error_init(c->run->err);
+        fmpq_clear(vals + 0); fmpq_clear(vals + 1); fmpq_clear(d);
+        if (!ok) continue;
+        for (k = 0; k < c->nf; k++) {
+            if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY || fmpz_mpoly_degree_si(c->f + k, c->bv, c->s->zctx) > 0)
+                continue;
+            ntot[k]++;
+            if (side[0] != side[1]) {
+                char *ps = cad_polystr(c, k);
+                nsep[k]++;
+                json_array_append_new(arcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
+                                                      "left", rs_status_name(side[0]), "right", rs_status_name(side[1])));
+                free(ps);
+            }
+        }
+    }
     for (k = 0; k < c->nf; k++) {
         char *ps;
         if (c->kind[k] != K_BOUNDARY || nsep[k] == 0) continue;

@@ -435,12 +435,76 @@ static void region_where(rs_render_t *r, const json_t *o)
                         endpoint(json_object_get(json_array_get(pts, i), "value"), 0));
 }
 
+/* one side of region N1, N2's formula: an OR of ANDs as text */
+static void region2_dnf(rs_render_t *r, const json_t *dnf, const char *label, const char *md)
+{
+    char buf[4096] = "";
+    size_t i, j;
+    for (i = 0; i < json_array_size(dnf); i++) {
+        const json_t *cj = json_array_get(dnf, i);
+        size_t n = strlen(buf);
+        snprintf(buf + n, sizeof buf - n, "%s%s", i ? " or " : "", json_array_size(dnf) > 1 ? "(" : "");
+        for (j = 0; j < json_array_size(cj); j++) {
+            n = strlen(buf);
+            snprintf(buf + n, sizeof buf - n, "%s%s", j ? " and " : "", json_string_value(json_array_get(cj, j)));
+        }
+        if (json_array_size(cj) == 0) { n = strlen(buf); snprintf(buf + n, sizeof buf - n, "true"); }
+        n = strlen(buf);
+        if (json_array_size(dnf) > 1) snprintf(buf + n, sizeof buf - n, ")");
+    }
+    rs_render_line(r, label, "%s", json_array_size(dnf) ? buf : "never (no cell)");
+    if (json_array_size(dnf) == 0) return;
+    rs_render_say(r, md, md);
+    rs_render_list_begin(r);
+    for (i = 0; i < json_array_size(dnf); i++) {
+        const json_t *cj = json_array_get(dnf, i);
+        rs_render_item_begin(r);
+        if (json_array_size(cj) == 0) rs_render_say(r, "everywhere in the domain", "everywhere in the domain");
+        for (j = 0; j < json_array_size(cj); j++) {
+            if (j) rs_render_say(r, " and ", " and ");
+            rs_render_math(r, json_string_value(json_array_get(cj, j)));
+        }
+        rs_render_item_end(r);
+    }
+    rs_render_list_end(r);
+}
+
+/* region N1, N2: the formula, the boundary, the decomposition's size */
+static void region2(rs_render_t *r, const json_t *o)
+{
+    const json_t *pa = json_object_get(o, "params"), *fo = json_object_get(o, "formula");
+    const json_t *b = json_object_get(o, "boundary"), *cc = json_object_get(o, "cross_check");
+    size_t i;
+    rs_render_heading_begin(r);
+    rs_render_sayf(r, "Stability region in (%s, %s)", "Stability region in $(%s, %s)$",
+                   json_string_value(json_array_get(pa, 0)), json_string_value(json_array_get(pa, 1)));
+    rs_render_heading_end(r);
+    rs_render_say(r, "A cylindrical decomposition of the plane into cells, one exact verdict per cell; "
+                  "the sets as sign conditions of the critical polynomials:\n\n",
+                  "A cylindrical decomposition of the plane into cells, one exact verdict per cell; "
+                  "the sets as sign conditions of the critical polynomials:\n\n");
+    region2_dnf(r, json_object_get(fo, "stable"), "stable iff", "Stable if and only if one of:\n\n");
+    region2_dnf(r, json_object_get(fo, "marginal"), "marginal iff", "Marginally stable if and only if one of:\n\n");
+    for (i = 0; i < json_array_size(b); i++)
+        rs_render_line(r, i ? "" : "boundary", "%s = 0", json_string_value(json_array_get(b, i)));
+    rs_render_linef(r, "cells", "%zu (%lld critical values of %s)", json_array_size(json_object_get(o, "cells")),
+                    (long long) json_array_size(json_object_get(o, "critical_values")),
+                    json_string_value(json_array_get(pa, 0)));
+    if (!json_is_true(json_object_get(o, "formula_complete")))
+        rs_render_line(r, "incomplete", "%s", js(o, "formula_note"));
+    rs_render_linef(r, "re-checked", "%lld of %lld random rational points agree with the exact point verdict",
+                    ji(cc, "agree"), ji(cc, "points"));
+    decided_by(r, o);
+    rs_render_assigned(r, o);
+}
+
 void rs_render_region(rs_render_t *r, const json_t *o)
 {
     if (json_object_get(o, "transitions") != NULL) {   /* exact integration: certified over boxes */
         rs_render_cosim_region(r, o);
         return;
     }
+    if (json_is_array(json_object_get(o, "params"))) { region2(r, o); return; }   /* region N1, N2 */
     rs_render_heading_begin(r);
     rs_render_say(r, "Stability region in ", "Stability region in $");
     rs_render_poly(r, js(o, "param"));
