@@ -843,6 +843,19 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
             free(ps);
         }
         json_object_set_new(o, "projection", proj);
+        {
+            /* the formula speaks of the admissible points only */
+            json_t *dom = json_array();
+            for (k = 0; k < c.nf; k++) {
+                char *ps, buf[600];
+                if (c.kind[k] != K_DOMAIN) continue;
+                ps = cad_polystr(&c, k);
+                snprintf(buf, sizeof buf, "%s %s 0", ps, c.closed[k] ? ">=" : ">");
+                json_array_append_new(dom, json_string(buf));
+                free(ps);
+            }
+            json_object_set_new(o, "domain", dom);
+        }
         json_object_set_new(o, "undecided_lines", json_integer(c.undecided_lines));
         json_object_set_new(o, "method", json_string(
             "cylindrical algebraic decomposition of the plane (Collins): critical polynomials (leading "

@@ -485,6 +485,8 @@ static void region2(rs_render_t *r, const json_t *o)
                   "the sets as sign conditions of the critical polynomials:\n\n");
     region2_dnf(r, json_object_get(fo, "stable"), "stable iff", "Stable if and only if one of:\n\n");
     region2_dnf(r, json_object_get(fo, "marginal"), "marginal iff", "Marginally stable if and only if one of:\n\n");
+    for (i = 0; i < json_array_size(json_object_get(o, "domain")); i++)
+        rs_render_line(r, i ? "" : "where", "%s (assumed)", json_string_value(json_array_get(json_object_get(o, "domain"), i)));
     for (i = 0; i < json_array_size(b); i++)
         rs_render_line(r, i ? "" : "boundary", "%s = 0", json_string_value(json_array_get(b, i)));
     rs_render_linef(r, "cells", "%zu (%lld critical values of %s)", json_array_size(json_object_get(o, "cells")),
