@@ -1,0 +1,331 @@
+/* test_cad.c -- `region N1, N2 [at ...]` (issue 13, part 2): the exact
+ * stable and marginal sets in two parameters.  The formula recstab prints
+ * is re-parsed here (FLINT's parser) and evaluated exactly at hundreds of
+ * random rational points, and at points on the boundary curves, against
+ * (a) a closed form derived by hand (each in the case file's comment):
+ *   - Jury triangle of lambda^2 + a lambda + b: stable iff |b| < 1 and
+ *     |a| < 1 + b; marginal on the edges except the corners (+-2, 1);
+ *   - theta method (th, w), w > 0: stable iff th > 1/2, marginal iff th = 1/2;
+ *   - Newmark gamma = 1/2 (b, w), w > 0 (Hughes ch. 9): never stable,
+ *     marginal iff 4 + (4 b - 1) w^2 > 0;
+ * (b) the exact point verdict (`analyse stability` with both parameters set);
+ * (c) QEPCAD B's answer to the same question (its input and output below). */
+#include "testutil.h"
+#include <string.h>
+#include <flint/fmpq_mpoly.h>
+#include "recstab/casefile.h"
+#include "recstab/analysis.h"
+
+typedef int (*closed_fn)(const fmpq_t x, const fmpq_t y);   /* 0 unstable, 1 marginal, 2 stable */
+
+/* "POLY REL 0" at (x, y) with FLINT's parser in the variables (vx, vy) */
+static int cond_holds(const char *cond, const char *vx, const char *vy, const fmpq_t x, const fmpq_t y)
+{
+    const char *vars[2];
+    char poly[1024], rel[4];
+    const char *sp = strrchr(cond, ' ');
+    fmpq_mpoly_ctx_t ctx;
+    fmpq_mpoly_t P;
+    fmpq_t v;
+    fmpq *pt[2];
+    size_t n;
+    int sg, h;
+    vars[0] = vx; vars[1] = vy;
+    assert_non_null(sp);
+    assert_string_equal(sp, " 0");
+    n = (size_t) (sp - cond);
+    memcpy(poly, cond, n);
+    poly[n] = '\0';
+    sp = strrchr(poly, ' ');
+    assert_non_null(sp);
+    snprintf(rel, sizeof rel, "%s", sp + 1);
+    poly[sp - poly] = '\0';
+    fmpq_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpq_mpoly_init(P, ctx);
+    fmpq_init(v);
+    if (fmpq_mpoly_set_str_pretty(P, poly, vars, ctx) != 0) fail_msg("cannot parse '%s'", poly);
+    pt[0] = (fmpq *) x; pt[1] = (fmpq *) y;
+    assert_true(fmpq_mpoly_evaluate_all_fmpq(v, P, pt, ctx));
+    sg = fmpq_sgn(v);
+    if (strcmp(rel, ">") == 0) h = sg > 0;
+    else if (strcmp(rel, ">=") == 0) h = sg >= 0;
+    else if (strcmp(rel, "<") == 0) h = sg < 0;
+    else if (strcmp(rel, "<=") == 0) h = sg <= 0;
+    else if (strcmp(rel, "=") == 0) h = sg == 0;
+    else if (strcmp(rel, "!=") == 0) h = sg != 0;
+    else { fail_msg("relation '%s'", rel); h = 0; }
+    fmpq_mpoly_clear(P, ctx);
+    fmpq_mpoly_ctx_clear(ctx);
+    fmpq_clear(v);
+    return h;
+}
+
+static int dnf_holds(const json_t *dnf, const char *vx, const char *vy, const fmpq_t x, const fmpq_t y)
+{
+    size_t i, j;
+    for (i = 0; i < json_array_size(dnf); i++) {
+        const json_t *c = json_array_get(dnf, i);
+        int all = 1;
+        for (j = 0; j < json_array_size(c) && all; j++)
+            all = cond_holds(json_string_value(json_array_get(c, j)), vx, vy, x, y);
+        if (all) return 1;
+    }
+    return 0;
+}
+
+/* the exact point verdict: `analyse stability` with both parameters set */
+static int point_verdict(const char *text, const char *vx, const char *vy, const fmpq_t x, const fmpq_t y)
+{
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t opt;
+    json_t *doc = NULL;
+    char set[256], *xs = fmpq_get_str(NULL, 10, x), *ys = fmpq_get_str(NULL, 10, y);
+    const char *st;
+    int outcome, k;
+    rs_case_init(c);
+    rs_error_init(err);
+    rs_options_default(&opt);
+    assert_int_equal(rs_case_parse_string(c, "point.case", text, strlen(text), err), RS_OK);
+    rs_case_clear_requests(c);
+    rs_case_add_request(c, "stability", "test", 1, 1);
+    snprintf(set, sizeof set, "%s=%s", vx, xs);
+    assert_int_equal(rs_case_set_value(c, set, err), RS_OK);
+    snprintf(set, sizeof set, "%s=%s", vy, ys);
+    assert_int_equal(rs_case_set_value(c, set, err), RS_OK);
+    if (rs_analysis_run(&doc, &outcome, c, &opt, err) != RS_OK) fail_msg("point %s, %s: %s", xs, ys, err->msg);
+    st = json_string_value(json_object_get(json_array_get(json_object_get(doc, "results"), 0), "status"));
+    assert_non_null(st);
+    k = strcmp(st, "stable") == 0 ? 2 : (strcmp(st, "marginal") == 0 ? 1 : 0);
+    json_decref(doc);
+    rs_case_clear(c);
+    flint_free(xs);
+    flint_free(ys);
+    return k;
+}
+
+/* a rational in [lo, hi] with a denominator up to 60 */
+static void rand_q(fmpq_t out, flint_rand_t st, slong lo, slong hi)
+{
+    slong den = 1 + (slong) n_randint(st, 60);
+    slong num = lo * den + (slong) n_randint(st, (ulong) ((hi - lo) * den + 1));
+    fmpq_set_si(out, num, (ulong) den);
+}
+
+/* the region of case file rel against the closed form at the points
+ * (xs[i], ys[i]); every verdict check == the point verdict */
+static void check_points(const json_t *o, const char *text, const fmpq *xs, const fmpq *ys, slong n, closed_fn cf,
+                         int verdicts, const char *what)
+{
+    const json_t *pa = json_object_get(o, "params"), *fo = json_object_get(o, "formula");
+    const char *vx = json_string_value(json_array_get(pa, 0)), *vy = json_string_value(json_array_get(pa, 1));
+    slong i;
+    for (i = 0; i < n; i++) {
+        int want = cf(xs + i, ys + i), s = dnf_holds(json_object_get(fo, "stable"), vx, vy, xs + i, ys + i),
+            m = dnf_holds(json_object_get(fo, "marginal"), vx, vy, xs + i, ys + i), got = s ? 2 : (m ? 1 : 0);
+        if (s && m) fail_msg("%s: stable and marginal at once", what);
+        if (got != want) {
+            char *a = fmpq_get_str(NULL, 10, xs + i), *b = fmpq_get_str(NULL, 10, ys + i);
+            fail_msg("%s: at (%s, %s) the formula says %d, the closed form %d", what, a, b, got, want);
+        }
+        if (verdicts && point_verdict(text, vx, vy, xs + i, ys + i) != want) {
+            char *a = fmpq_get_str(NULL, 10, xs + i), *b = fmpq_get_str(NULL, 10, ys + i);
+            fail_msg("%s: at (%s, %s) the point verdict differs from the closed form %d", what, a, b, want);
+        }
+    }
+}
+
+static const char *case_text(const char *rel)
+{
+    static char buf[8192];
+    char path[1024];
+    FILE *f;
+    size_t n;
+    snprintf(path, sizeof path, "%s/%s", RS_SOURCE_DIR, rel);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    n = fread(buf, 1, sizeof buf - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static json_t *region_of(const char *rel, int *outcome)
+{
+    json_t *doc = tu_run_case(rel, NULL, -1, outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    assert_true(json_is_true(json_object_get(o, "formula_complete")));
+    assert_int_equal(*outcome & RS_OUTCOME_INCONSISTENT, 0);
+    /* the run-time cross-check agreed everywhere */
+    assert_int_equal(json_integer_value(json_object_get(json_object_get(o, "cross_check"), "agree")),
+                     json_integer_value(json_object_get(json_object_get(o, "cross_check"), "points")));
+    return doc;
+}
+
+/* ---- Jury triangle --------------------------------------------------------- */
+
+static int jury_closed(const fmpq_t a, const fmpq_t b)
+{
+    fmpq_t t, u;
+    int k = 0;
+    fmpq_init(t); fmpq_init(u);
+    fmpq_add_si(t, b, 1);                 /* 1 + b */
+    fmpq_abs(u, a);                       /* |a| */
+    if (fmpq_cmp_si(b, 1) < 0 && fmpq_cmp_si(b, -1) > 0 && fmpq_cmp(u, t) < 0) k = 2;
+    /* edges: b = 1 with |a| < 2 (a circle pair); |a| = 1 + b with -1 <= b < 1 (a root +-1, the other -+b) */
+    else if (fmpq_cmp_si(b, 1) == 0 && fmpq_cmp_si(u, 2) < 0) k = 1;
+    else if (fmpq_equal(u, t) && fmpq_cmp_si(b, -1) >= 0 && fmpq_cmp_si(b, 1) < 0) k = 1;
+    fmpq_clear(t); fmpq_clear(u);
+    return k;
+}
+
+static void test_jury(void **state)
+{
+    int outcome;
+    json_t *doc = region_of("cases/region2/jury-quadratic.case", &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    const char *text = case_text("cases/region2/jury-quadratic.case");
+    fmpq *xs = _fmpq_vec_init(400), *ys = _fmpq_vec_init(400);
+    flint_rand_t st;
+    slong i;
+    (void) state;
+    flint_randinit(st);
+    /* 250 points in [-3, 3]^2, 150 on the edges' lines (marginal or not) */
+    for (i = 0; i < 250; i++) { rand_q(xs + i, st, -3, 3); rand_q(ys + i, st, -3, 3); }
+    for (; i < 400; i++) {
+        rand_q(ys + i, st, -2, 2);
+        if (i % 3 == 0) { fmpq_add_si(xs + i, ys + i, 1); }                      /* a = 1 + b */
+        else if (i % 3 == 1) { fmpq_add_si(xs + i, ys + i, 1); fmpq_neg(xs + i, xs + i); }   /* a = -1 - b */
+        else { fmpq_set(xs + i, ys + i); fmpq_mul_si(xs + i, xs + i, 2); fmpq_set_si(ys + i, 1, 1); }  /* b = 1 */
+    }
+    check_points(o, text, xs, ys, 400, jury_closed, 1, "jury");
+    /* the boundary: the three edges (the discriminant a^2 - 4 b separates nothing) */
+    assert_int_equal(json_array_size(json_object_get(o, "boundary")), 3);
+    _fmpq_vec_clear(xs, 400); _fmpq_vec_clear(ys, 400);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
+/* ---- theta method ---------------------------------------------------------- */
+
+static int theta_closed(const fmpq_t th, const fmpq_t w)
+{
+    fmpq_t h;
+    int c;
+    (void) w;
+    fmpq_init(h);
+    fmpq_set_si(h, 1, 2);
+    c = fmpq_cmp(th, h);
+    fmpq_clear(h);
+    return c > 0 ? 2 : (c == 0 ? 1 : 0);
+}
+
+static void test_theta(void **state)
+{
+    int outcome;
+    json_t *doc = region_of("cases/region2/theta-plane.case", &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    const char *text = case_text("cases/region2/theta-plane.case");
+    fmpq *xs = _fmpq_vec_init(250), *ys = _fmpq_vec_init(250);
+    flint_rand_t st;
+    slong i;
+    (void) state;
+    flint_randinit(st);
+    for (i = 0; i < 250; i++) {
+        if (i % 5 == 0) fmpq_set_si(xs + i, 1, 2); else rand_q(xs + i, st, -2, 3);
+        do rand_q(ys + i, st, 0, 6); while (fmpq_sgn(ys + i) <= 0);
+    }
+    check_points(o, text, xs, ys, 250, theta_closed, 1, "theta");
+    assert_int_equal(json_array_size(json_object_get(o, "boundary")), 1);
+    assert_string_equal(json_string_value(json_array_get(json_object_get(o, "boundary"), 0)), "2*th - 1");
+    _fmpq_vec_clear(xs, 250); _fmpq_vec_clear(ys, 250);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
+/* ---- Newmark, gamma = 1/2 ---------------------------------------------------- */
+
+static int newmark_closed(const fmpq_t b, const fmpq_t w)
+{
+    fmpq_t t, w2;
+    int k;
+    fmpq_init(t); fmpq_init(w2);
+    fmpq_mul(w2, w, w);
+    fmpq_mul_si(t, b, 4);
+    fmpq_sub_si(t, t, 1);
+    fmpq_mul(t, t, w2);
+    fmpq_add_si(t, t, 4);                 /* 4 + (4 b - 1) w^2 */
+    k = fmpq_sgn(t) > 0 ? 1 : 0;
+    fmpq_clear(t); fmpq_clear(w2);
+    return k;
+}
+
+static void test_newmark(void **state)
+{
+    int outcome;
+    json_t *doc = region_of("cases/region2/newmark-beta-w.case", &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    const char *text = case_text("cases/region2/newmark-beta-w.case");
+    fmpq *xs = _fmpq_vec_init(250), *ys = _fmpq_vec_init(250);
+    flint_rand_t st;
+    slong i;
+    (void) state;
+    flint_randinit(st);
+    for (i = 0; i < 250; i++) {
+        rand_q(xs + i, st, -1, 1);
+        if (i % 5 == 0) {
+            /* on the curve: b = (w^2 - 4)/(4 w^2), w = 2 k (marginal fails exactly there) */
+            fmpq_set_si(ys + i, 2 + (slong) n_randint(st, 5), 1);
+            fmpq_mul(xs + i, ys + i, ys + i);
+            fmpq_sub_si(xs + i, xs + i, 4);
+            fmpq_div(xs + i, xs + i, ys + i);
+            fmpq_div(xs + i, xs + i, ys + i);
+            fmpq_div_2exp(xs + i, xs + i, 2);
+        } else {
+            do rand_q(ys + i, st, 0, 6); while (fmpq_sgn(ys + i) <= 0);
+        }
+    }
+    check_points(o, text, xs, ys, 250, newmark_closed, 1, "newmark");
+    assert_int_equal(json_array_size(json_object_get(json_object_get(o, "formula"), "stable")), 0);
+    _fmpq_vec_clear(xs, 250); _fmpq_vec_clear(ys, 250);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
+/* ---- errors ------------------------------------------------------------------ */
+
+static void test_bad(void **state)
+{
+    static const char *bad[] = {"analyse region a, a\n", "analyse region a, zz\n", "analyse region a, b at a=1\n",
+                                "analyse region a,\n", "analyse region a, b for all [c]\n",
+                                "analyse region a, b\n" /* c symbolic */};
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char buf[512];
+        int outcome, code;
+        json_t *doc;
+        snprintf(buf, sizeof buf, "param a b c\nchar lambda^2 + a*lambda + b + c\n%s", bad[i]);
+        doc = tu_run_text(buf, NULL, &outcome, &code);
+        if (code != RS_ERR_INPUT) fail_msg("%s: code %d, expected an input error", bad[i], code);
+        json_decref(doc);
+    }
+    {   /* the third parameter set: fine */
+        int outcome, code;
+        json_t *doc = tu_run_text("param a b c\nchar lambda^2 + a*lambda + b + c\nanalyse region a, b at c=0\n",
+                                  NULL, &outcome, &code);
+        assert_int_equal(code, RS_OK);
+        json_decref(doc);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_jury),
+        cmocka_unit_test(test_theta),
+        cmocka_unit_test(test_newmark),
+        cmocka_unit_test(test_bad),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
