@@ -728,6 +728,91 @@ static void cad_boundary(json_t *o, const cad_t *c)
     flint_free(ntot);
 }
 
+/* a polynomial in QEPCAD B's syntax: products by juxtaposition */
+static void qe_poly(FILE *f, const cad_t *c, const fmpz_mpoly_t g, int neg)
+{
+    fmpz_mpoly_t h;
+    char *ps, *t;
+    fmpz_mpoly_init(h, c->s->zctx);
+    if (neg) fmpz_mpoly_neg(h, g, c->s->zctx); else fmpz_mpoly_set(h, g, c->s->zctx);
+    ps = rs_polyfmt_fmpz_mpoly(h, (const char **) c->s->vars, c->s->zctx);
+    for (t = ps; *t; t++) if (*t == '*') *t = ' ';
+    fputs(ps, f);
+    free(ps);
+    fmpz_mpoly_clear(h, c->s->zctx);
+}
+
+/* The same question for QEPCAD B, from recstab's own conditions: p stable
+ * iff q(z) = (1-z)^n p((1+z)/(1-z)) is Hurwitz of degree n, i.e. (Routh-
+ * Hurwitz) every coefficient and D_1..D_{n-1} positive, for q or for -q
+ * (D_k(-q) = (-1)^k D_k(q)).  "qepcad_input": the stable set in the plane;
+ * "qepcad_input_for_all": the N1 values stable for every admissible N2. */
+static void cad_qepcad(json_t *o, cad_t *c)
+{
+    const rs_scheme_struct *s = c->s;
+    slong lv = s->lambda_var, k, br, pass;
+    rs_hurwitz_t h;
+    fmpz_mpoly_t qz;
+    int *sign = flint_calloc(s->nvars, sizeof(int));
+    fmpz_mpoly_init(qz, s->zctx);
+    rs_hurwitz_init(h);
+    rs_bilinear_fmpz_mpoly(qz, c->v->cp->p, lv, s->zctx);
+    if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1
+        && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, c->run->err) == RS_OK) {
+        for (pass = 0; pass < 2; pass++) {
+            char *buf = NULL;
+            size_t len = 0;
+            FILE *f = open_memstream(&buf, &len);
+            fprintf(f, "[ recstab: %s of the scheme, from its Routh-Hurwitz conditions ]\n(%s,%s)\n%d\n",
+                    pass == 0 ? "stable set" : "uniform range", c->an, c->bn, pass == 0 ? 2 : 1);
+            fputs(pass == 0 ? "[" : "[ [", f);
+            /* the assumptions on N1 (both: on N2 too, as a conjunct) */
+            for (k = 0; k < c->nf; k++) {
+                if (c->kind[k] != K_DOMAIN || (pass == 1 && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0))
+                    continue;
+                fputc(' ', f);
+                qe_poly(f, c, c->f + k, 0);
+                fprintf(f, " %s 0 /\\", c->closed[k] ? ">=" : ">");
+            }
+            if (pass == 1) {
+                int any = 0;
+                fprintf(f, " (A %s)[ [", c->bn);
+                for (k = 0; k < c->nf; k++) {
+                    if (c->kind[k] != K_DOMAIN || fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) <= 0) continue;
+                    fprintf(f, "%s", any ? " /\\ " : " ");
+                    qe_poly(f, c, c->f + k, 0);
+                    fprintf(f, " %s 0", c->closed[k] ? ">=" : ">");
+                    any = 1;
+                }
+                fprintf(f, "%s ] ==>", any ? "" : " 0 = 0");
+            }
+            fputs(" [", f);
+            for (br = 0; br < 2; br++) {
+                fprintf(f, "%s[", br ? " \\/ " : " ");
+                for (k = 0; k <= h->n; k++) {
+                    fputs(k ? " /\\ " : " ", f);
+                    qe_poly(f, c, h->coeffs + k, br);
+                    fputs(" > 0", f);
+                }
+                for (k = 1; k < h->n; k++) {
+                    fputs(" /\\ ", f);
+                    qe_poly(f, c, h->minors + k - 1, br && (k % 2 == 1));
+                    fputs(" > 0", f);
+                }
+                fputs(" ]", f);
+            }
+            fputs(pass == 0 ? " ] ].\nfinish\n" : " ] ] ] ].\nfinish\n", f);
+            fclose(f);
+            json_object_set_new(o, pass == 0 ? "qepcad_input" : "qepcad_input_for_all", json_string(buf));
+            free(buf);
+        }
+    }
+    rs_error_init(c->run->err);
+    rs_hurwitz_clear(h, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx);
+    flint_free(sign);
+}
+
 static void cad_clear(cad_t *c)
 {
     slong i;
@@ -833,6 +918,7 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
                 : "some cells (on lines over irrational critical values of the first parameter) are not decided: "
                   "the formula is exact off those lines"));
         cad_boundary(o, &c);
+        cad_qepcad(o, &c);
         json_object_set_new(o, "cells", cad_cells_json(&c));
         for (k = 0; k < c.ncrit; k++) json_array_append_new(cv, rs_alg_json(c.crit + k, c.an));
         json_object_set_new(o, "critical_values", cv);
