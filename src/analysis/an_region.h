@@ -60,4 +60,13 @@ int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0
 
 /* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
+
+/* The map's exact boundary drawn only where it separates (issue 13 part 3):
+ * the decomposition of the (v1, v2) plane of variant v, then per boundary
+ * point of a condition whether its arc separates two statuses. */
+typedef struct rs_region_arcs_struct rs_region_arcs_t;
+int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t *v, slong v1, slong v2);
+void rs_region_arcs_free(rs_region_arcs_t *A);
+int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y);
+json_t *rs_region_arcs_json(const rs_region_arcs_t *A);
 #endif

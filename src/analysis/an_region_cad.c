@@ -26,10 +26,12 @@
  * "formula_complete" is false when one exists. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <math.h>
 #include <string.h>
 #include <flint/fmpz_mpoly_factor.h>
 #include <flint/fmpq_mpoly.h>
 #include <arb_fmpz_poly.h>
+#include <gsl/gsl_poly.h>
 #include "analysis/an_region.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
@@ -843,6 +845,203 @@ static json_t *cad_cells_json(const cad_t *c)
         const char *st = e->outside ? "outside" : (e->decided ? rs_status_name(e->st) : "undecided");
         json_array_append_new(a, json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn,
                                            e->b, "status", st));
+    }
+    return a;
+}
+
+/* ---- the map's boundary (issue 13 part 3): only separating arcs ---------- */
+
+typedef struct {
+    slong col, k, j;     /* sector column, polynomial, its j-th real root there */
+    int sep;
+} arc_t;
+
+struct rs_region_arcs_struct {
+    cad_t c;
+    arc_t *arcs;
+    slong narcs;
+    slong *nsep;         /* per polynomial: separating arcs (vertical ones included) */
+};
+
+static void cad_arc_table(rs_region_arcs_t *A)
+{
+    cad_t *c = &A->c;
+    slong i, k;
+    A->nsep = flint_calloc(c->nf, sizeof(slong));
+    for (i = 0; i < c->ncells; i++) {
+        const cell_t *e = c->cells + i;
+        int sep;
+        if (e->dim != 1 || e->col % 2 != 0 || i == 0 || i + 1 >= c->ncells) continue;
+        sep = e[-1].col == e->col && e[1].col == e->col && e[-1].decided && e[1].decided && !e[-1].outside
+              && !e[1].outside && e[-1].st != e[1].st;
+        for (k = 0; k < c->nf; k++) {
+            slong j = 0, t;
+            if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY) continue;
+            for (t = i - 1; t >= 0 && c->cells[t].col == e->col; t--)
+                if (c->cells[t].dim == 1 && c->cells[t].sg[k] == 0) j++;
+            A->arcs = flint_realloc(A->arcs, (A->narcs + 1) * sizeof(arc_t));
+            A->arcs[A->narcs].col = e->col;
+            A->arcs[A->narcs].k = k;
+            A->arcs[A->narcs].j = j;
+            A->arcs[A->narcs].sep = sep;
+            A->narcs++;
+            if (sep) A->nsep[k]++;
+        }
+    }
+    /* vertical lines: a polynomial in N1 alone separates where the cells on
+     * its two sides differ (cad_boundary's test, counted per polynomial) */
+    {
+        json_t *o = json_object();
+        const json_t *arcs;
+        size_t t;
+        cad_boundary(o, c);
+        arcs = json_object_get(o, "arcs");
+        for (t = 0; t < json_array_size(arcs); t++) {
+            const json_t *a = json_array_get(arcs, t);
+            if (json_object_get(a, "left") == NULL) continue;
+            for (k = 0; k < c->nf; k++) {
+                char *ps = cad_polystr(c, k);
+                if (strcmp(ps, json_string_value(json_object_get(a, "poly"))) == 0) A->nsep[k]++;
+                free(ps);
+            }
+        }
+        json_decref(o);
+    }
+}
+
+int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t *v, slong v1, slong v2)
+{
+    rs_region_arcs_t *A = flint_calloc(1, sizeof(rs_region_arcs_t));
+    cad_t *c = &A->c;
+    slong i;
+    int r;
+    *out = NULL;
+    c->run = run;
+    c->v = v;
+    c->s = v->s;
+    c->av = v1;
+    c->bv = v2;
+    c->an = run->c->params[v1].name;
+    c->bn = run->c->params[v2].name;
+    c->blo = -1;
+    c->bhi = 1;
+    c->bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(c->bounds, run->c->nparams);   /* no assumptions: the whole plane */
+    for (i = 0; i < run->c->nparams; i++)
+        if (i != v1 && i != v2 && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0) {
+            rs_region_arcs_free(A);
+            return RS_ERR_INPUT;
+        }
+    r = cad_critical(c);
+    if (r == RS_OK) r = cad_project(c);
+    if (r == RS_OK) r = cad_lift(c);
+    if (r != RS_OK) { rs_region_arcs_free(A); return r; }
+    cad_arc_table(A);
+    *out = A;
+    return RS_OK;
+}
+
+void rs_region_arcs_free(rs_region_arcs_t *A)
+{
+    if (A == NULL) return;
+    cad_clear(&A->c);
+    flint_free(A->arcs);
+    flint_free(A->nsep);
+    flint_free(A);
+}
+
+/* the real roots of f(x, .) in increasing order (doubles; n returned) */
+static slong arcs_roots(double *rt, const cad_t *c, slong k, double x)
+{
+    const rs_scheme_struct *s = c->s;
+    slong d = fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx), j, n = 0, t;
+    double *a = flint_calloc(d + 1, sizeof(double)), *z = flint_calloc(2 * d + 2, sizeof(double));
+    fmpz_mpoly_t cf;
+    fmpz_poly_t u;
+    fmpz_mpoly_init(cf, s->zctx);
+    fmpz_poly_init(u);
+    for (j = 0; j <= d; j++) {
+        ulong e = (ulong) j;
+        fmpz_mpoly_get_coeff_vars_ui(cf, c->f + k, &c->bv, &e, 1, s->zctx);
+        if (fmpz_mpoly_get_fmpz_poly(u, cf, c->av, s->zctx)) {
+            slong i;
+            for (i = fmpz_poly_degree(u); i >= 0; i--) a[j] = a[j] * x + fmpz_get_d(u->coeffs + i);
+        }
+    }
+    while (d > 0 && a[d] == 0) d--;
+    if (d >= 1) {
+        gsl_poly_complex_workspace *w = gsl_poly_complex_workspace_alloc((size_t) d + 1);
+        if (gsl_poly_complex_solve(a, (size_t) d + 1, w, z) == 0) {
+            double scale = 1;
+            for (j = 0; j < d; j++) scale = FLINT_MAX(scale, fabs(z[2 * j]));
+            for (j = 0; j < d; j++) if (fabs(z[2 * j + 1]) <= 1e-7 * scale) rt[n++] = z[2 * j];
+        }
+        gsl_poly_complex_workspace_free(w);
+    }
+    for (j = 1; j < n; j++) for (t = j; t > 0 && rt[t - 1] > rt[t]; t--) { double q = rt[t]; rt[t] = rt[t - 1]; rt[t - 1] = q; }
+    flint_free(a);
+    flint_free(z);
+    fmpz_mpoly_clear(cf, s->zctx);
+    fmpz_poly_clear(u);
+    return n;
+}
+
+/* 1 when the boundary point (x, y) of condition cond lies on an arc that
+ * separates two statuses (or cannot be placed: kept); 0 also when cond has
+ * no critical factor (its zero set is not where a status can change) */
+int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y)
+{
+    const cad_t *c = &A->c;
+    slong i, k, col = -1, best_k = -1, best_j = -1;
+    double best = 1e300, *rt;
+    int factor = 0;
+    for (i = 0; i < c->ncrit; i++) {
+        double ci = rs_alg_double(c->crit + i);
+        if (fabs(ci - x) <= 1e-12 * FLINT_MAX(1, fabs(ci))) return 1;   /* on a critical line */
+        if (x < ci) break;
+    }
+    col = 2 * i;
+    for (k = 0; k < c->nf; k++) {
+        fmpz_mpoly_t q;
+        slong d, n, j;
+        int divides;
+        if (c->kind[k] != K_BOUNDARY) continue;
+        fmpz_mpoly_init(q, c->s->zctx);
+        divides = fmpz_mpoly_divides(q, cond, c->f + k, c->s->zctx);
+        fmpz_mpoly_clear(q, c->s->zctx);
+        if (!divides) continue;
+        factor = 1;
+        d = fmpz_mpoly_degree_si(c->f + k, c->bv, c->s->zctx);
+        if (d <= 0) { if (A->nsep[k] > 0) return 1; continue; }
+        rt = flint_malloc(d * sizeof(double));
+        n = arcs_roots(rt, c, k, x);
+        for (j = 0; j < n; j++)
+            if (fabs(rt[j] - y) < best) { best = fabs(rt[j] - y); best_k = k; best_j = j; }
+        flint_free(rt);
+    }
+    /* no critical factor: the status is the same on both sides */
+    if (!factor) return 0;
+    if (best_k < 0) return 1;
+    for (i = 0; i < A->narcs; i++)
+        if (A->arcs[i].col == col && A->arcs[i].k == best_k && A->arcs[i].j == best_j) return A->arcs[i].sep;
+    return 1;
+}
+
+/* the separating polynomials and the counts, for the map's JSON */
+json_t *rs_region_arcs_json(const rs_region_arcs_t *A)
+{
+    const cad_t *c = &A->c;
+    json_t *a = json_array();
+    slong k, i;
+    for (k = 0; k < c->nf; k++) {
+        slong tot = 0;
+        char *ps;
+        if (c->kind[k] != K_BOUNDARY) continue;
+        for (i = 0; i < A->narcs; i++) tot += A->arcs[i].k == k;
+        ps = cad_polystr(c, k);
+        json_array_append_new(a, json_pack("{s:s,s:I,s:I}", "poly", ps, "arcs", (json_int_t) tot, "separating",
+                                           (json_int_t) A->nsep[k]));
+        free(ps);
     }
     return a;
 }

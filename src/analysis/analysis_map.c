@@ -18,6 +18,7 @@
 #include "numeric/grid.h"
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
+#include "analysis/an_region.h"
 
 typedef struct {
     fmpz_mpoly_t f;
@@ -119,8 +120,11 @@ static void boundary_signs(signed char *sg, double *val, const fmpz_mpoly_t f, c
 
 /* The boundary rows of condition c: zeros, then sign changes along rows
  * (fixed x2, crossing in x1), then along columns; the number of rows. */
+/* A: the arcs of the plane's decomposition (NULL: every row is kept); a
+ * row on an arc that separates nothing is dropped, counted in *dropped */
+#define KEEP(x, y) (A == NULL || rs_region_arcs_keep(A, cf, (x), (y)) || ((*dropped)++, 0))
 static slong boundary_rows(FILE *f, slong c, const signed char *sg, const double *val, const fmpq *x1, slong K1,
-                           const fmpq *x2, slong K2)
+                           const fmpq *x2, slong K2, const rs_region_arcs_t *A, const fmpz_mpoly_t cf, slong *dropped)
 {
     slong i, j, n = 0;
     for (j = 0; j < K2; j++)
@@ -128,11 +132,13 @@ static slong boundary_rows(FILE *f, slong c, const signed char *sg, const double
             slong a = j * K1 + i;
             double xa = fmpq_get_d(x1 + i), y = fmpq_get_d(x2 + j);
             if (sg[a] == 0) {
+                if (!KEEP(xa, y)) continue;
                 fprintf(f, "%ld,%.15g,%.15g,zero\n", (long) c + 1, xa, y);
                 n++;
             } else if (i + 1 < K1 && sg[a] * sg[a + 1] < 0) {
                 double tt = val[a] / (val[a] - val[a + 1]), xb = fmpq_get_d(x1 + i + 1);
                 if (!(tt >= 0 && tt <= 1)) tt = 0.5;
+                if (!KEEP(xa + tt * (xb - xa), y)) continue;
                 fprintf(f, "%ld,%.15g,%.15g,row\n", (long) c + 1, xa + tt * (xb - xa), y);
                 n++;
             }
@@ -144,12 +150,14 @@ static slong boundary_rows(FILE *f, slong c, const signed char *sg, const double
                 double ya = fmpq_get_d(x2 + j), yb = fmpq_get_d(x2 + j + 1);
                 double tt = val[a] / (val[a] - val[b]);
                 if (!(tt >= 0 && tt <= 1)) tt = 0.5;
+                if (!KEEP(fmpq_get_d(x1 + i), ya + tt * (yb - ya))) continue;
                 fprintf(f, "%ld,%.15g,%.15g,column\n", (long) c + 1, fmpq_get_d(x1 + i), ya + tt * (yb - ya));
                 n++;
             }
         }
     return n;
 }
+#undef KEEP
 
 /* Boundary of the stability region: sign changes of the reduced
  * Lienard-Chipart conditions and of p(1), p(-1) along grid rows and
@@ -161,7 +169,8 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
 {
     slong v1 = R->axis[0].var, v2 = R->axis[1].var, K1 = R->axis[0].count, K2 = R->axis[1].count;
     bcond_t *bc;
-    slong nb, c, npts = 0;
+    slong nb, c, npts = 0, dropped = 0;
+    rs_region_arcs_t *A = NULL;
     json_t *conds = json_array(), *b = json_object();
     rs_error_struct saved = *run->err;
     char *buf = NULL;
@@ -171,6 +180,9 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
         json_object_set_new(b, "hurwitz_error", json_string(run->err->msg));
         *run->err = saved;
     }
+    /* only the arcs that separate two statuses are drawn (the plane's
+     * decomposition, an_region_cad.c; every other parameter set) */
+    if (rs_region_arcs_new(&A, run, v, v1, v2) != RS_OK) *run->err = saved;
     f = open_memstream(&buf, &len);
     fprintf(f, "condition,%s,%s,scan\n", R->axis[0].name, R->axis[1].name);
     for (c = 0; c < nb; c++) {
@@ -179,13 +191,18 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
         json_array_append_new(conds, json_pack("{s:I,s:s,s:o}", "index", (json_int_t) c + 1, "origin",
                                                bc[c].origin, "poly", rs_json_zpoly(bc[c].f, v->s)));
         boundary_signs(sg, val, bc[c].f, v, v1, v2, x1, K1, x2, K2);
-        if (run->opt->sweep.shard_index == 1) npts += boundary_rows(f, c, sg, val, x1, K1, x2, K2);
+        if (run->opt->sweep.shard_index == 1) npts += boundary_rows(f, c, sg, val, x1, K1, x2, K2, A, bc[c].f, &dropped);
         free(val);
         free(sg);
     }
     fclose(f);
     json_object_set_new(b, "conditions", conds);
     json_object_set_new(b, "points", json_integer(npts));
+    if (A != NULL) {
+        json_object_set_new(b, "separating_arcs", rs_region_arcs_json(A));
+        json_object_set_new(b, "dropped_points", json_integer(dropped));
+        rs_region_arcs_free(A);
+    }
     json_object_set_new(b, "method", json_string(
         "zero sets of the reduced Lienard-Chipart conditions of q(z) (hurwitz) and of p(1), p(-1): exact signs "
         "at the grid points, a crossing between two neighbours of a row (column) placed by linear "
