@@ -41,6 +41,7 @@ DEB_WHY := \
   python3-pytest:make_check_tests_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
 FUZZ_WHY := libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz
 VALGRIND_WHY := valgrind:make_check-valgrind
+BENCH_WHY := qepcad:the_QEPCAD_B_peer_of_make_bench_(bench/bench_qepcad.sh)
 DEB_PKGS := $(foreach p,$(DEB_WHY),$(firstword $(subst :, ,$(p))))
 
 # $(call deb-install,WHO,PKG:WHY...): apt-get install of the missing ones,
@@ -98,7 +99,7 @@ deps-valgrind:
 	$(call deb-install,check-valgrind,$(VALGRIND_WHY))
 
 deps-list:
-	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done
+	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY) $(BENCH_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done
 
 $(BUILD)/obj/%.o: src/%.c $(HDRS)
 	@mkdir -p $(dir $@)
@@ -157,7 +158,9 @@ demo: deps
 	@$(BIN) cases/park-staggered.case; rc=$$?; [ $$rc -le 1 ] || exit $$rc
 
 bench: all
+	$(call deb-install,bench,$(BENCH_WHY))
 	sh bench/run.sh
+	sh bench/bench_qepcad.sh
 
 # Python's site folder under PREFIX (Debian's python3 searches
 # PREFIX/lib/python3.X/dist-packages for PREFIX=/usr/local)

@@ -767,8 +767,9 @@ static void cad_qepcad(json_t *o, cad_t *c)
             FILE *f = open_memstream(&buf, &len);
             fprintf(f, "[ recstab: %s of the scheme, from its Routh-Hurwitz conditions ]\n(%s,%s)\n%d\n",
                     pass == 0 ? "stable set" : "uniform range", c->an, c->bn, pass == 0 ? 2 : 1);
-            fputs(pass == 0 ? "[" : "[ [", f);
-            /* the assumptions on N1 (both: on N2 too, as a conjunct) */
+            /* QEPCAD wants the quantifier first: (A N2)[ dom1 /\ [ dom2 ==> S ] ] */
+            if (pass == 1) fprintf(f, "(A %s)", c->bn);
+            fputs("[", f);
             for (k = 0; k < c->nf; k++) {
                 if (c->kind[k] != K_DOMAIN || (pass == 1 && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0))
                     continue;
@@ -778,7 +779,7 @@ static void cad_qepcad(json_t *o, cad_t *c)
             }
             if (pass == 1) {
                 int any = 0;
-                fprintf(f, " (A %s)[ [", c->bn);
+                fputs(" [ [", f);
                 for (k = 0; k < c->nf; k++) {
                     if (c->kind[k] != K_DOMAIN || fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) <= 0) continue;
                     fprintf(f, "%s", any ? " /\\ " : " ");
@@ -803,7 +804,7 @@ static void cad_qepcad(json_t *o, cad_t *c)
                 }
                 fputs(" ]", f);
             }
-            fputs(pass == 0 ? " ] ].\nfinish\n" : " ] ] ] ].\nfinish\n", f);
+            fputs(pass == 0 ? " ] ].\nfinish\n" : " ] ] ].\nfinish\n", f);
             fclose(f);
             json_object_set_new(o, pass == 0 ? "qepcad_input" : "qepcad_input_for_all", json_string(buf));
             free(buf);
