@@ -990,7 +990,14 @@ static slong arcs_roots(double *rt, const cad_t *c, slong k, double x)
 /* 1 when the boundary point (x, y) of condition cond lies on an arc that
  * separates two statuses (or cannot be placed: kept); 0 also when cond has
  * no critical factor (its zero set is not where a status can change) */
+static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y, int nudged);
+
 int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y)
+{
+    return arcs_keep(A, cond, x, y, 0);
+}
+
+static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y, int nudged)
 {
     const cad_t *c = &A->c;
     slong i, k, col = -1, best_k = -1, best_j = -1;
@@ -998,7 +1005,12 @@ int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, doub
     int factor = 0;
     for (i = 0; i < c->ncrit; i++) {
         double ci = rs_alg_double(c->crit + i);
-        if (fabs(ci - x) <= 1e-12 * FLINT_MAX(1, fabs(ci))) return 1;   /* on a critical line */
+        if (fabs(ci - x) <= 1e-12 * FLINT_MAX(1, fabs(ci))) {
+            /* on a critical line: the arcs just beside it, on either side */
+            double d = 1e-9 * FLINT_MAX(1, fabs(x));
+            if (nudged) return 1;
+            return arcs_keep(A, cond, x - d, y, 1) || arcs_keep(A, cond, x + d, y, 1);
+        }
         if (x < ci) break;
     }
     col = 2 * i;

@@ -9,10 +9,12 @@
  *   - Newmark gamma = 1/2 (b, w), w > 0 (Hughes ch. 9): never stable,
  *     marginal iff 4 + (4 b - 1) w^2 > 0;
  * (b) the exact point verdict (`analyse stability` with both parameters set);
- * (c) QEPCAD B's answer to the same question (its input and output below). */
+ * (c) QEPCAD B's answer to the same question (its input and output below:
+ *     test_qepcad). */
 #include "testutil.h"
 #include <string.h>
 #include <flint/fmpq_mpoly.h>
+#include <arf.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
@@ -292,6 +294,113 @@ static void test_newmark(void **state)
     json_decref(doc);
 }
 
+/* ---- QEPCAD B ------------------------------------------------------------------
+ * QEPCAD B 1.74 (Debian qepcad), run by hand on the inputs recstab writes
+ * ("qepcad_input" of the region), `qepcad +N20000000 < INPUT`:
+ *
+ * Jury:   (a,b) 2 [ [ [ a + b + 1 > 0 /\ -2 b + 2 > 0 /\ -a + b + 1 > 0 /\ -2 b + 2 > 0 ] \/
+ *                     [ -a - b - 1 > 0 /\ 2 b - 2 > 0 /\ a - b - 1 > 0 /\ 2 b - 2 > 0 ] ] ].
+ *   -> b + a + 1 > 0 /\ b - 1 < 0 /\ b - a + 1 > 0
+ * theta:  (th,w) 2 [ w > 0 /\ [ [ w^2 > 0 /\ 4 th w^2 - 2 w^2 > 0 /\ 4 th^2 w^2 - 4 th w^2 + w^2 + 4 > 0
+ *                     /\ 4 th w^2 - 2 w^2 > 0 ] \/ [ -w^2 > 0 /\ ... ] ] ].
+ *   -> 2 th - 1 > 0 /\ w > 0
+ * Newmark (b, w), gamma = 1/2: -> FALSE (never asymptotically stable)
+ *
+ * recstab's stable formula must agree with these at every sampled point of
+ * the domain (the answers QEPCAD gave, written in recstab's syntax). */
+static void check_qepcad(const char *rel, const char *const *conds, size_t n, int never, slong xlo, slong xhi,
+                         slong ylo, slong yhi)
+{
+    int outcome;
+    json_t *doc = region_of(rel, &outcome), *qe = json_array(), *cj = json_array();
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0), *pa = json_object_get(o, "params");
+    const char *vx = json_string_value(json_array_get(pa, 0)), *vy = json_string_value(json_array_get(pa, 1));
+    flint_rand_t st;
+    fmpq_t x, y;
+    size_t i;
+    flint_randinit(st);
+    fmpq_init(x); fmpq_init(y);
+    for (i = 0; i < n; i++) json_array_append_new(cj, json_string(conds[i]));
+    if (!never) json_array_append_new(qe, cj); else json_decref(cj);
+    for (i = 0; i < 300; i++) {
+        rand_q(x, st, xlo, xhi);
+        do rand_q(y, st, ylo, yhi); while (ylo == 0 && fmpq_sgn(y) <= 0);
+        if (dnf_holds(json_object_get(json_object_get(o, "formula"), "stable"), vx, vy, x, y)
+            != dnf_holds(qe, vx, vy, x, y)) {
+            char *a = fmpq_get_str(NULL, 10, x), *b = fmpq_get_str(NULL, 10, y);
+            fail_msg("%s: recstab and QEPCAD B differ at (%s, %s)", rel, a, b);
+        }
+    }
+    fmpq_clear(x); fmpq_clear(y);
+    flint_randclear(st);
+    json_decref(qe);
+    json_decref(doc);
+}
+
+static void test_qepcad(void **state)
+{
+    static const char *jury[] = {"b + a + 1 > 0", "b - 1 < 0", "b - a + 1 > 0"};
+    static const char *theta[] = {"2*th - 1 > 0", "w > 0"};
+    (void) state;
+    check_qepcad("cases/region2/jury-quadratic.case", jury, 3, 0, -3, 3, -3, 3);
+    check_qepcad("cases/region2/theta-plane.case", theta, 2, 0, -2, 3, 0, 6);
+    check_qepcad("cases/region2/newmark-beta-w.case", NULL, 0, 1, -1, 1, 0, 6);
+}
+
+/* ---- the map draws only separating arcs (issue 13 part 3) ---------------------
+ * On the Jury case the lines a + b + 1 = 0, a - b - 1 = 0, b = 1 go on
+ * outside the triangle, where unstable meets unstable: those points must be
+ * dropped, and every point kept must have the closed form's status differ
+ * on its two sides (a step of 1e-6 across the scan direction). */
+static void q_of_d(fmpq_t q, double d)
+{
+    arf_t a;
+    arf_init(a);
+    arf_set_d(a, d);
+    arf_get_fmpq(q, a);
+    arf_clear(a);
+}
+
+/* the closed form's statuses at (x, y) -+ 1e-6 in direction dir (0: x) differ */
+static int separates(double x, double y, int dir)
+{
+    fmpq_t x0, y0, x1, y1, e;
+    int d;
+    fmpq_init(x0); fmpq_init(y0); fmpq_init(x1); fmpq_init(y1); fmpq_init(e);
+    fmpq_set_si(e, 1, 1000000);
+    q_of_d(x0, x); q_of_d(y0, y);
+    fmpq_set(x1, x0); fmpq_set(y1, y0);
+    if (dir == 0) { fmpq_sub(x0, x0, e); fmpq_add(x1, x1, e); } else { fmpq_sub(y0, y0, e); fmpq_add(y1, y1, e); }
+    d = jury_closed(x0, y0) != jury_closed(x1, y1);
+    fmpq_clear(x0); fmpq_clear(y0); fmpq_clear(x1); fmpq_clear(y1); fmpq_clear(e);
+    return d;
+}
+
+static void test_map_arcs(void **state)
+{
+    int outcome;
+    json_t *doc = tu_run_text("param a b\nchar lambda^2 + a*lambda + b\nanalyse map a -3 3 31, b -3 3 31\n", NULL,
+                              &outcome, NULL);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0), *b = json_object_get(o, "boundary");
+    const char *tab = json_string_value(json_object_get(o, "boundary_table")), *line;
+    slong kept = 0;
+    (void) state;
+    assert_non_null(tab);
+    assert_true(json_integer_value(json_object_get(b, "dropped_points")) > 0);
+    for (line = strchr(tab, '\n') + 1; *line; line = strchr(line, '\n') + 1) {
+        long c;
+        double x, y;
+        char scan[16];
+        if (sscanf(line, "%ld,%lf,%lf,%15[a-z]", &c, &x, &y, scan) != 4) break;
+        /* across the curve, in x or in y (a crossing of a row or a column is on the curve) */
+        if (!separates(x, y, 0) && !separates(x, y, 1))
+            fail_msg("boundary point (%g, %g) (%s) separates nothing", x, y, scan);
+        kept++;
+    }
+    assert_true(kept > 0);
+    json_decref(doc);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 static void test_bad(void **state)
@@ -325,6 +434,8 @@ int main(void)
         cmocka_unit_test(test_jury),
         cmocka_unit_test(test_theta),
         cmocka_unit_test(test_newmark),
+        cmocka_unit_test(test_qepcad),
+        cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
