@@ -70,6 +70,19 @@ typedef struct {
     double blo, bhi;         /* the span of N2 roots seen (for random points) */
 } cad_t;
 
+/* appends h (taken: swapped out) */
+static void cad_push(cad_t *c, fmpz_mpoly_t h, int kind, int closed)
+{
+    c->f = flint_realloc(c->f, (c->nf + 1) * sizeof(fmpz_mpoly_struct));
+    c->kind = flint_realloc(c->kind, (c->nf + 1) * sizeof(int));
+    c->closed = flint_realloc(c->closed, (c->nf + 1) * sizeof(int));
+    fmpz_mpoly_init(c->f + c->nf, c->s->zctx);
+    fmpz_mpoly_swap(c->f + c->nf, h, c->s->zctx);
+    c->kind[c->nf] = kind;
+    c->closed[c->nf] = closed;
+    c->nf++;
+}
+
 /* f with a positive leading coefficient, unless already listed */
 static void cad_add(cad_t *c, const fmpz_mpoly_t g, int kind, int closed)
 {
@@ -84,14 +97,7 @@ static void cad_add(cad_t *c, const fmpz_mpoly_t g, int kind, int closed)
             fmpz_mpoly_clear(h, c->s->zctx);
             return;
         }
-    c->f = flint_realloc(c->f, (c->nf + 1) * sizeof(fmpz_mpoly_struct));
-    c->kind = flint_realloc(c->kind, (c->nf + 1) * sizeof(int));
-    c->closed = flint_realloc(c->closed, (c->nf + 1) * sizeof(int));
-    fmpz_mpoly_init(c->f + c->nf, c->s->zctx);
-    fmpz_mpoly_swap(c->f + c->nf, h, c->s->zctx);
-    c->kind[c->nf] = kind;
-    c->closed[c->nf] = closed;
-    c->nf++;
+    cad_push(c, h, kind, closed);
     fmpz_mpoly_clear(h, c->s->zctx);
 }
 
@@ -122,14 +128,7 @@ static void cad_add_end(cad_t *c, slong var, const fmpq_t e, int upper, int clos
     fmpz_mpoly_sub(g, g, t, c->s->zctx);
     if (upper) fmpz_mpoly_neg(g, g, c->s->zctx);
     /* not through cad_add: the sign (inside: > 0) matters here */
-    c->f = flint_realloc(c->f, (c->nf + 1) * sizeof(fmpz_mpoly_struct));
-    c->kind = flint_realloc(c->kind, (c->nf + 1) * sizeof(int));
-    c->closed = flint_realloc(c->closed, (c->nf + 1) * sizeof(int));
-    fmpz_mpoly_init(c->f + c->nf, c->s->zctx);
-    fmpz_mpoly_swap(c->f + c->nf, g, c->s->zctx);
-    c->kind[c->nf] = K_DOMAIN;
-    c->closed[c->nf] = closed;
-    c->nf++;
+    cad_push(c, g, K_DOMAIN, closed);
     fmpz_mpoly_clear(g, c->s->zctx);
     fmpz_mpoly_clear(t, c->s->zctx);
 }
