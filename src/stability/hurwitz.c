@@ -38,6 +38,7 @@
 #include <flint/fmpz_vec.h>
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
+#include "recstab/positivity.h"
 
 /* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
  * not be computable anyway. */
@@ -46,65 +47,14 @@
 /* ------------------------------------------------------------------ */
 /* sign test                                                           */
 
-static rs_sign_t
-_sign_of_var(const rs_sign_t *sign, slong v)
-{
-    if (sign == NULL)
-        return RS_SIGN_UNKNOWN;
-    return sign[v];
-}
-
-/* Classify one term of poly with its coefficient sign replaced by +1:
- * returns 2 if the monomial is provably > 0, 1 if provably >= 0, 0 if
- * neither.  A variable of unknown sign is harmless in an even power. */
-static int
-_monomial_class(const fmpz_mpoly_t poly, slong i, const rs_sign_t *sign,
-                const fmpz_mpoly_ctx_t ctx)
-{
-    slong v, nvars = fmpz_mpoly_ctx_nvars(ctx);
-    int cls = 2;
-
-    for (v = 0; v < nvars; v++) {
-        ulong e = fmpz_mpoly_get_term_var_exp_ui(poly, i, v, ctx);
-        rs_sign_t s;
-        if (e == 0)
-            continue;
-        s = _sign_of_var(sign, v);
-        if (s == RS_SIGN_POSITIVE)
-            continue;
-        if (s == RS_SIGN_NONNEGATIVE || (e % 2) == 0)
-            cls = 1;    /* >= 0, but may vanish */
-        else
-            return 0;   /* odd power of a variable of unknown sign */
-    }
-    return cls;
-}
-
+/* The coefficient test, then Polya's certificate (positivity.c): the
+ * conditions of a chain of 3 masses are positive for all stiffnesses and
+ * dampings > 0 but have negative coefficients (issue 17). */
 int
 rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                 const fmpz_mpoly_ctx_t ctx)
 {
-    slong i, len = fmpz_mpoly_length(poly, ctx);
-    int csign = 0, strict = 0;
-
-    if (len == 0 || !fmpz_mpoly_degrees_fit_si(poly, ctx))
-        return 0;
-
-    for (i = 0; i < len; i++) {
-        int s = fmpz_sgn(fmpz_mpoly_term_coeff_ref((fmpz_mpoly_struct *) poly,
-                                                   i, ctx));
-        int cls;
-        if (i == 0)
-            csign = s;
-        else if (s != csign)
-            return 0;
-        cls = _monomial_class(poly, i, sign, ctx);
-        if (cls == 0)
-            return 0;
-        if (cls == 2)
-            strict = 1;
-    }
-    return strict ? csign : 0;
+    return rs_positivity_sign(poly, sign, ctx, NULL);
 }
 
 /* ------------------------------------------------------------------ */

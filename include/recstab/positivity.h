@@ -1,0 +1,42 @@
+/* positivity.h -- sufficient tests that a polynomial in the parameters has
+ * one strict sign wherever the sign assumptions (`assume` lines) allow.
+ * Cheap tests first: every coefficient of one sign (monomials non-negative
+ * under the assumptions); then Polya's certificate: (s)^m f with all
+ * coefficients of one sign, s = x_1 + ... + x_k for a homogeneous f and
+ * 1 + x_1 + ... + x_k otherwise, after each variable's exponents are divided
+ * by their gcd (c^2 -> C makes the chain minors homogeneous, issue 17).
+ * The tests are sufficient, never necessary: 0 means "not proved". */
+#ifndef RECSTAB_POSITIVITY_H
+#define RECSTAB_POSITIVITY_H
+
+#include <flint/fmpz_mpoly.h>
+#include "recstab/cond.h"   /* rs_sign_t */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Largest Polya multiplier exponent m tried, and the largest number of terms
+ * of (s)^m f kept before giving up (bounds the cost of the test to about
+ * RS_POLYA_MAX_TERMS * nvars * RS_POLYA_MAX_POWER monomial operations). */
+#define RS_POLYA_MAX_POWER 40
+#define RS_POLYA_MAX_TERMS 60000
+
+/* Coefficient test only: 1 if poly > 0 wherever sign[] allows (every
+ * coefficient positive, every monomial >= 0 under sign[]: its variables
+ * positive/non-negative, or of unknown sign in an even power; some monomial
+ * > 0: all its variables positive), -1 if -poly passes, 0 otherwise (also
+ * poly = 0).  sign may be NULL (all unknown). */
+int rs_positivity_coeff_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                             const fmpz_mpoly_ctx_t ctx);
+
+/* The coefficient test, then Polya's multiplier (above); *power, if not
+ * NULL, receives the m that succeeded (0: the coefficient test; -1: not
+ * proved).  Same return convention. */
+int rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                       const fmpz_mpoly_ctx_t ctx, slong *power);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
