@@ -1291,6 +1291,79 @@ test_chain(void **state)
     }
 }
 
+/* Chains of 2..4 masses under the case's assumptions c, k_i > 0, where the
+ * modal argument above (c > 0 and K positive definite: K is a Jacobi matrix
+ * with all leading minors prod k_1.. > 0 for k > 0) makes every chain
+ * stable, so every Hurwitz minor is > 0 (Hurwitz's criterion).  The factors
+ * dropped as positive (coefficient test, then Polya in positivity.c) must
+ * leave conditions that hold at every positive point; for N = 2 every
+ * condition is proved, and for N = 3 Polya proves D_3 (a positive-definite
+ * quadratic form in c^2, k1, k2, k3 with negative coefficients, which the
+ * coefficient test alone cannot). */
+static void
+test_chain_positive(void **state)
+{
+    const char *vars4[] = {"c", "k1", "k2", "k3", "k4", "z"};
+    slong N;
+    (void) state;
+
+    rng_state = 4242;
+    for (N = 2; N <= 4; N++) {
+        tctx_struct t;
+        fmpz_mpoly_t q;
+        rs_hurwitz_or_t hb;
+        rs_error_t err;
+        rs_sign_t sign[6];
+        fmpq **vals;
+        slong nv = N + 2, i, trial, ntrue = 0;
+        const char *vn[6];
+
+        for (i = 0; i + 1 < nv; i++) {
+            vn[i] = vars4[i];
+            sign[i] = RS_SIGN_POSITIVE;
+        }
+        vn[nv - 1] = "z";
+        sign[nv - 1] = RS_SIGN_UNKNOWN;
+        tctx_init(&t, vn, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        rs_hurwitz_or_init(hb);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        assert_int_equal(rs_hurwitz_or_compute(hb, q, nv - 1, 2 * N, sign,
+                                               t.ctx, err), RS_OK);
+        assert_int_equal(hb->nbranch, 1);
+        for (i = 0; i < hb->branch[0].ncond; i++) {
+            const rs_hurwitz_cond_struct *c = hb->branch[0].cond + i;
+            ntrue += c->trivially_true;
+            if (N == 3 && strcmp(c->origin, "D_3") == 0)
+                assert_true(c->trivially_true);
+        }
+        print_message("N=%ld: %ld of %ld conditions proved\n", (long) N,
+                      (long) ntrue, (long) hb->branch[0].ncond);
+        if (N == 2)
+            assert_int_equal(ntrue, hb->branch[0].ncond);
+        vals = flint_malloc(nv * sizeof(fmpq *));
+        for (i = 0; i < nv; i++) {
+            vals[i] = flint_malloc(sizeof(fmpq));
+            fmpq_init(vals[i]);
+        }
+        for (trial = 0; trial < 40; trial++) {
+            for (i = 0; i + 1 < nv; i++)
+                fmpq_set_si(vals[i], rng_range(1, 40), rng_range(1, 7));
+            assert_int_equal(chain_verdict(vals, N), 1);
+            assert_int_equal(rs_hurwitz_or_holds(hb, vals, t.ctx), 1);
+        }
+        for (i = 0; i < nv; i++) {
+            fmpq_clear(vals[i]);
+            flint_free(vals[i]);
+        }
+        flint_free(vals);
+        rs_hurwitz_or_clear(hb, t.ctx);
+        fmpz_mpoly_clear(q, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
 int
 main(void)
 {
@@ -1310,6 +1383,7 @@ main(void)
         cmocka_unit_test(test_numeric_axis_roots),
         cmocka_unit_test(test_degree12),
         cmocka_unit_test(test_chain),
+        cmocka_unit_test(test_chain_positive),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
