@@ -69,7 +69,7 @@ CLI_SRC  := $(sort $(wildcard src/cli/*.c))
 TEST_SRC := $(sort $(wildcard tests/unit/*/test_*.c))
 # the installed headers, an explicit list; private headers live in src/<stage>/
 PUBLIC_HDRS := $(addprefix include/recstab/,recstab.h error.h budget.h str.h expr.h casefile.h \
-               model.h scheme.h charpoly.h cond.h semisimple.h bilinear.h routh.h hurwitz.h jury.h \
+               model.h scheme.h charpoly.h cond.h semisimple.h bilinear.h routh.h hurwitz.h positivity.h jury.h \
                rootcount.h radius.h cosim.h ladder.h sweep.h analysis.h report.h derivation.h api.h)
 HDRS     := $(wildcard include/recstab/*.h src/*/*.h)
 

@@ -35,7 +35,7 @@ public_stage() {
     expr|casefile) echo lang ;;
     model|scheme) echo lower ;;
     charpoly|cond) echo algebra ;;
-    bilinear|routh|hurwitz|jury|rootcount|semisimple) echo stability ;;
+    bilinear|routh|hurwitz|jury|rootcount|semisimple|positivity) echo stability ;;
     radius|cosim|ladder) echo numeric ;;
     analysis|sweep|api) echo analysis ;;     # sweep.h: src/analysis/analysis_sweep.c
     report|derivation|recstab) echo render ;;

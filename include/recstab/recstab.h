@@ -17,6 +17,7 @@
 #include "recstab/bilinear.h"
 #include "recstab/routh.h"
 #include "recstab/hurwitz.h"
+#include "recstab/positivity.h"
 #include "recstab/jury.h"
 #include "recstab/rootcount.h"
 #include "recstab/radius.h"
