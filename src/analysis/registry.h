@@ -60,6 +60,7 @@ typedef struct {
                  int forall; slong *qv; slong nq;
                  int twod; slong param2; } region;   /* forall: `for all [P, ...]`; twod: `region N1, N2` */
         struct { slong param; int to_inf; } limit;
+        struct { slong param; } astab;               /* astability: the parameter standing for z */
         struct { int kind; void *dnf; } claim;       /* dnf: an_claim.c's claim_dnf_t */
         void *sweep;                                 /* sweep, map: rs_sweep_request_t (sweep_impl.h) */
         void *cosim;                                 /* region, claim of exact integration (an_cosim_region.c) */
@@ -115,6 +116,7 @@ int rs_an_check_names(rs_run_t *run, const rs_request_t *q, const rs_expr_t *e);
 int rs_an_region_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_region_req_clear(rs_an_req_t *req);
 int rs_an_limit_parse(rs_an_req_t *req, rs_run_t *run);
+int rs_an_astability_parse(rs_an_req_t *req, rs_run_t *run);
 int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_claim_req_clear(rs_an_req_t *req);
 int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run);
@@ -131,6 +133,7 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_region(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_limit(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_astability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_claim(rs_run_t *run, const rs_an_req_t *req);
 /* an_claim.c: prove or refute a claim of kind (0 stable, 1 bounded) on the
  * set b; region NAME for all uses it cell by cell */

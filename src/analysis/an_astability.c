@@ -1,0 +1,1062 @@
+/* an_astability.c -- `astability [NAME]`: the stability region of a method
+ * on Dahlquist's test equation y' = z y, with NAME (the case's only free
+ * parameter by default) taken as the complex number z h.  Exact throughout:
+ *  - the real and the imaginary stability interval: the connected set of
+ *    bounded points around z = 0 on each axis.  Its ends are among the
+ *    critical values of the line z = s (or z = i s): q(i t, z(s)) = A + i B
+ *    (q the bilinear transform of p, lambda = (1 + i t)/(1 - i t)) has a
+ *    real root t where Res_t(A, B)(s) = 0; lambda = -1 (t = inf) and the
+ *    leading coefficient add theirs.  Each cell is decided at a rational
+ *    point by complex Schur-Cohn (cross-checked, stability/schur_complex.c);
+ *  - A-stability: for p linear in z (multistep: z = -P0/P1 on the circle)
+ *    the boundary locus Re z(t) = X(t)/W(t) must stay in Re z >= 0, and
+ *    z = -1 be stable; for one-step methods (p = D(z) lambda - N(z)) the
+ *    E-polynomial E(y) = |D(iy)|^2 - |N(iy)|^2 >= 0 and the poles in
+ *    Re z > 0 (Hairer and Wanner, Solving ODEs II, IV.3).  Where both apply
+ *    they must agree (exit 3), and so must the imaginary interval;
+ *  - A(alpha) for p linear in z: tan(alpha) = min |Y/X| over the locus in
+ *    Re z < 0, at a real root of Y' X - Y X' (an algebraic number);
+ *  - the limit of max |lambda| as z -> inf (L-stability: 0). */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <arb.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
+#include <flint/fmpz_mpoly.h>
+#include <flint/fmpz_poly_factor.h>
+#include "analysis/registry.h"
+#include "stability/schur_complex.h"
+#include "util/polyfmt.h"
+
+/* p = sum_k C[k](lambda) z^k */
+typedef struct {
+    fmpz_poly_struct *C;
+    slong K;          /* degree in z */
+    slong n;          /* degree in lambda */
+} zpoly_t;
+
+/* A real algebraic number: rational, or root idx (ascending) of the
+ * irreducible f, enclosed by x. */
+typedef struct {
+    int rational;
+    fmpq_t q;
+    fmpz_poly_t f;
+    slong idx;
+    arb_t x;
+} ralg_t;
+
+static void ralg_init(ralg_t *a) { fmpq_init(a->q); fmpz_poly_init(a->f); arb_init(a->x); a->rational = 0; a->idx = 0; }
+static void ralg_clear(ralg_t *a) { fmpq_clear(a->q); fmpz_poly_clear(a->f); arb_clear(a->x); }
+
+static void ralg_refine(ralg_t *a, slong prec)
+{
+    if (a->rational) { arb_set_fmpq(a->x, a->q, prec); return; }
+    {
+        slong d = fmpz_poly_degree(a->f);
+        acb_ptr r = _acb_vec_init(d);
+        arb_fmpz_poly_complex_roots(r, a->f, 0, prec);
+        arb_set(a->x, acb_realref(r + a->idx));
+        _acb_vec_clear(r, d);
+    }
+}
+
+/* appends the real roots of f (non-zero) */
+static void ralg_roots_append(ralg_t **list, slong *n, const fmpz_poly_t f)
+{
+    fmpz_poly_factor_t fac;
+    slong i, k;
+    if (fmpz_poly_degree(f) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, f);
+    for (i = 0; i < fac->num; i++) {
+        const fmpz_poly_struct *g = fac->p + i;
+        slong d = fmpz_poly_degree(g);
+        acb_ptr r;
+        if (d < 1) continue;
+        r = _acb_vec_init(d);
+        if (d > 1) arb_fmpz_poly_complex_roots(r, g, 0, 128);
+        for (k = 0; k < d; k++) {
+            ralg_t *a;
+            if (d > 1 && !arb_is_zero(acb_imagref(r + k))) break;   /* real roots come first */
+            *list = realloc(*list, (size_t) (*n + 1) * sizeof(ralg_t));
+            a = *list + *n;
+            ralg_init(a);
+            if (d == 1) {
+                fmpq_t x;
+                fmpq_init(x);
+                fmpq_set_fmpz_frac(x, g->coeffs + 0, g->coeffs + 1);
+                fmpq_neg(x, x);
+                fmpq_swap(a->q, x);
+                fmpq_clear(x);
+                a->rational = 1;
+            } else {
+                fmpz_poly_set(a->f, g);
+                a->idx = k;
+            }
+            ralg_refine(a, 128);
+            (*n)++;
+        }
+        _acb_vec_clear(r, d);
+    }
+    fmpz_poly_factor_clear(fac);
+}
+
+static int ralg_same(const ralg_t *a, const ralg_t *b)
+{
+    if (a->rational != b->rational) return 0;
+    if (a->rational) return fmpq_equal(a->q, b->q);
+    return a->idx == b->idx && fmpz_poly_equal(a->f, b->f);
+}
+
+static int ralg_cmp_mid(const void *x, const void *y)
+{
+    return arf_cmp(arb_midref(((const ralg_t *) x)->x), arb_midref(((const ralg_t *) y)->x));
+}
+
+/* sorted, duplicates removed, enclosures pairwise disjoint */
+static void ralg_sort(ralg_t *a, slong *n)
+{
+    slong prec = 128, i, k;
+    int ok = 0;
+    while (!ok) {
+        qsort(a, (size_t) *n, sizeof(ralg_t), ralg_cmp_mid);
+        for (i = k = 0; i < *n; i++) {
+            if (k > 0 && ralg_same(a + k - 1, a + i)) { ralg_clear(a + i); continue; }
+            if (k != i) a[k] = a[i];
+            k++;
+        }
+        *n = k;
+        ok = 1;
+        for (i = 0; i + 1 < *n; i++)
+            if (arb_overlaps(a[i].x, a[i + 1].x)) ok = 0;
+        if (!ok) {
+            prec *= 2;
+            for (i = 0; i < *n; i++) ralg_refine(a + i, prec);
+        }
+    }
+}
+
+/* a rational strictly between a and b (disjoint enclosures; NULL: infinite) */
+static void rational_between(fmpq_t out, const ralg_t *a, const ralg_t *b)
+{
+    arf_t u, l;
+    fmpq_t x;
+    arf_init(u); arf_init(l); fmpq_init(x);
+    if (a != NULL) arb_get_ubound_arf(u, a->x, 128);
+    if (b != NULL) arb_get_lbound_arf(l, b->x, 128);
+    if (a == NULL && b == NULL) fmpq_zero(out);
+    else if (a == NULL) { arf_get_fmpq(x, l); fmpz_fdiv_q(fmpq_numref(out), fmpq_numref(x), fmpq_denref(x)); fmpz_sub_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
+    else if (b == NULL) { arf_get_fmpq(x, u); fmpz_cdiv_q(fmpq_numref(out), fmpq_numref(x), fmpq_denref(x)); fmpz_add_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
+    else {
+        fmpq_t y;
+        fmpq_init(y);
+        arf_get_fmpq(x, u);
+        arf_get_fmpq(y, l);
+        fmpq_add(out, x, y);
+        fmpq_div_2exp(out, out, 1);
+        /* prefer a simpler rational when one fits (0, integers) */
+        if (fmpq_sgn(x) < 0 && fmpq_sgn(y) > 0) fmpq_zero(out);
+        fmpq_clear(y);
+    }
+    arf_clear(u); arf_clear(l); fmpq_clear(x);
+}
+
+/* JSON of an interval end: integers as numbers, other rationals and
+ * algebraic numbers as {"exact", "approx"} (approx: certified digits). */
+static json_t *ralg_json(ralg_t *a, const char *var)
+{
+    json_t *o;
+    char *s;
+    if (a->rational && fmpz_is_one(fmpq_denref(a->q)) && fmpz_fits_si(fmpq_numref(a->q)))
+        return json_integer((json_int_t) fmpz_get_si(fmpq_numref(a->q)));
+    o = json_object();
+    ralg_refine(a, 128);
+    if (a->rational) {
+        s = fmpq_get_str(NULL, 10, a->q);
+        json_object_set_new(o, "exact", json_string(s));
+        flint_free(s);
+    } else {
+        char *mp = rs_polyfmt_fmpz_poly(a->f, var);
+        char *buf = malloc(strlen(mp) + 64);
+        sprintf(buf, "real root %ld (ascending) of %s", (long) a->idx + 1, mp);
+        json_object_set_new(o, "exact", json_string(buf));
+        json_object_set_new(o, "minpoly", json_string(mp));
+        free(buf);
+        free(mp);
+    }
+    json_object_set_new(o, "approx", json_real(arf_get_d(arb_midref(a->x), ARF_RND_NEAR)));
+    s = rs_radius_arb_str(a->x, 20);
+    json_object_set_new(o, "certified", json_string(s));
+    flint_free(s);
+    return o;
+}
+
+/* (re, im) = sum_k C[k] z0^k, z0 = zr + i zi */
+static void eval_at(fmpq_poly_t re, fmpq_poly_t im, const zpoly_t *P, const fmpq_t zr, const fmpq_t zi)
+{
+    fmpq_t pr, pi, t;
+    fmpq_poly_t c;
+    slong k;
+    fmpq_init(pr); fmpq_init(pi); fmpq_init(t);
+    fmpq_poly_init(c);
+    fmpq_one(pr);
+    fmpq_poly_zero(re);
+    fmpq_poly_zero(im);
+    for (k = 0; k <= P->K; k++) {
+        fmpq_poly_set_fmpz_poly(c, P->C + k);
+        fmpq_poly_scalar_mul_fmpq(c, c, pr);
+        fmpq_poly_add(re, re, c);
+        fmpq_poly_set_fmpz_poly(c, P->C + k);
+        fmpq_poly_scalar_mul_fmpq(c, c, pi);
+        fmpq_poly_add(im, im, c);
+        /* (pr + i pi) *= z0 */
+        fmpq_mul(t, pr, zr);
+        fmpq_submul(t, pi, zi);
+        fmpq_mul(pi, pi, zr);
+        fmpq_addmul(pi, pr, zi);
+        fmpq_swap(pr, t);
+    }
+    fmpq_clear(pr); fmpq_clear(pi); fmpq_clear(t);
+    fmpq_poly_clear(c);
+}
+
+/* c(i^e s) split: c(i^e s) = re(s) + i im(s) for a polynomial c in z */
+static void split_line(fmpz_poly_t re, fmpz_poly_t im, const fmpz_poly_t c, int e)
+{
+    slong k;
+    fmpz_poly_zero(re);
+    fmpz_poly_zero(im);
+    for (k = 0; k <= fmpz_poly_degree(c); k++) {
+        slong r = (e * k) % 4;
+        fmpz_poly_struct *dst = (r % 2 == 0) ? re : im;
+        fmpz_t x;
+        fmpz_init(x);
+        fmpz_set(x, c->coeffs + k);
+        if (r >= 2) fmpz_neg(x, x);
+        fmpz_poly_set_coeff_fmpz(dst, k, x);
+        fmpz_clear(x);
+    }
+}
+
+/* the polynomial in z of coefficient j of lambda (j = -1: p at lambda = -1) */
+static void zcoeff(fmpz_poly_t out, const zpoly_t *P, slong j)
+{
+    slong k;
+    fmpz_poly_zero(out);
+    for (k = 0; k <= P->K; k++) {
+        fmpz_t x;
+        fmpz_init(x);
+        if (j >= 0) fmpz_poly_get_coeff_fmpz(x, P->C + k, j);
+        else fmpz_poly_evaluate_fmpz(x, P->C + k, (fmpz_t) {-1});
+        fmpz_poly_set_coeff_fmpz(out, k, x);
+        fmpz_clear(x);
+    }
+}
+
+/* (1-w)^n c((1+w)/(1-w)) */
+static void bilinear_n(fmpz_poly_t out, const fmpz_poly_t c, slong n)
+{
+    fmpz_poly_t a, b, t;
+    slong j;
+    fmpz_poly_init(a); fmpz_poly_init(b); fmpz_poly_init(t);
+    fmpz_poly_zero(out);
+    for (j = 0; j <= fmpz_poly_degree(c); j++) {
+        fmpz_poly_set_coeff_si(a, 0, 1); fmpz_poly_set_coeff_si(a, 1, 1);
+        fmpz_poly_set_coeff_si(b, 0, 1); fmpz_poly_set_coeff_si(b, 1, -1);
+        fmpz_poly_pow(a, a, (ulong) j);
+        fmpz_poly_pow(b, b, (ulong) (n - j));
+        fmpz_poly_mul(t, a, b);
+        fmpz_poly_scalar_mul_fmpz(t, t, c->coeffs + j);
+        fmpz_poly_add(out, out, t);
+    }
+    fmpz_poly_clear(a); fmpz_poly_clear(b); fmpz_poly_clear(t);
+}
+
+/* c(i t) = re(t) + i im(t) (the bilinear variable on the circle) */
+static void split_it(fmpz_poly_t re, fmpz_poly_t im, const fmpz_poly_t c) { split_line(re, im, c, 1); }
+
+/* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
+static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, e[2];
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_poly_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(R, ctx); i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(c, R, i, ctx);
+        fmpz_mpoly_get_term_exp_si(e, R, i, ctx);
+        if (e[0] == 0) fmpz_poly_set_coeff_fmpz(out, e[1], c);
+    }
+    fmpz_clear(c);
+}
+
+/* The critical values on the line z = i^e s: where a root can reach the
+ * unit circle or the leading coefficient vanish. */
+static void line_critical(ralg_t **crit, slong *ncrit, const zpoly_t *P, int e)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t A, B, G, R, T;
+    fmpz_poly_t cb, re, im, u, g;
+    slong k, a;
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(G, ctx);
+    fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(T, ctx);
+    fmpz_poly_init(cb); fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(u); fmpz_poly_init(g);
+    /* q(i t, i^e s) = A + i B */
+    for (k = 0; k <= P->K; k++) {
+        bilinear_n(cb, P->C + k, P->n);
+        for (a = 0; a <= fmpz_poly_degree(cb); a++) {
+            ulong ex[2];
+            slong r = (a + e * k) % 4;
+            fmpz_t c;
+            fmpz_init(c);
+            ex[0] = (ulong) a; ex[1] = (ulong) k;
+            fmpz_set(c, cb->coeffs + a);
+            if (r >= 2) fmpz_neg(c, c);
+            fmpz_mpoly_set_coeff_fmpz_ui(T, c, ex, ctx);
+            fmpz_mpoly_add((r % 2 == 0) ? A : B, (r % 2 == 0) ? A : B, T, ctx);
+            fmpz_mpoly_zero(T, ctx);
+            fmpz_clear(c);
+        }
+    }
+    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
+        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
+        /* circle roots along the whole line (e.g. A-stable methods on the
+         * imaginary axis): their collisions and degree drops are critical */
+        fmpz_mpoly_divexact(A, A, G, ctx);
+        fmpz_mpoly_divexact(B, B, G, ctx);
+        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) {
+            mpoly_to_s(u, R, ctx);
+            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+        }
+        {
+            ulong d0 = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
+            slong v0 = 0;
+            fmpz_mpoly_get_coeff_vars_ui(R, G, &v0, &d0, 1, ctx);
+            mpoly_to_s(u, R, ctx);
+            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+        }
+    }
+    if (fmpz_mpoly_is_zero(B, ctx) || fmpz_mpoly_is_zero(A, ctx)) {
+        /* one part vanishes: its real t-roots are the other's; project with the discriminant */
+        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
+        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) {
+            mpoly_to_s(u, R, ctx);
+            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+        }
+    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
+               && fmpz_mpoly_resultant(R, A, B, 0, ctx)) {
+        mpoly_to_s(u, R, ctx);
+        if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+    }
+    /* lambda = -1 (t = inf) and the leading coefficient: common real roots of both parts */
+    for (k = 0; k < 2; k++) {
+        zcoeff(cb, P, k == 0 ? -1 : P->n);
+        split_line(re, im, cb, e);
+        fmpz_poly_gcd(g, re, im);
+        if (!fmpz_poly_is_zero(g)) ralg_roots_append(crit, ncrit, g);
+    }
+    fmpz_poly_clear(cb); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
+    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
+    fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(T, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+static int bounded(rs_status_t st) { return st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL; }
+
+/* exact status at z = i^e s0 */
+static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0, rs_error_t err)
+{
+    fmpq_poly_t re, im;
+    fmpq_t zr, zi;
+    int r;
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    fmpq_init(zr); fmpq_init(zi);
+    fmpq_set(e ? zi : zr, s0);
+    eval_at(re, im, P, zr, zi);
+    r = rs_schur_complex_status(st, re, im, P->n, err);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    fmpq_clear(zr); fmpq_clear(zi);
+    return r;
+}
+
+/* 1 when the irreducible f divides both parts of c(i^e s) */
+static int vanishes_at(const fmpz_poly_t c, int e, const fmpz_poly_t f)
+{
+    fmpz_poly_t re, im, r;
+    int z;
+    fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(r);
+    split_line(re, im, c, e);
+    fmpz_poly_gcd(r, re, im);
+    fmpz_poly_gcd(r, r, f);
+    z = fmpz_poly_degree(r) >= 1;
+    fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(r);
+    return z;
+}
+
+/* An interval of the line: [lo, hi] with infinite ends NULL. */
+typedef struct {
+    int empty;
+    ralg_t lo, hi;
+    int lo_inf, hi_inf, lo_closed, hi_closed;
+    int undecided;     /* an end whose closedness is not decided */
+} line_iv_t;
+
+/* The bounded component of z = i^e s containing s = 0. */
+static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc, int e, rs_error_t err)
+{
+    ralg_t *crit = NULL;
+    slong ncrit = 0, npc, i, j, start = -1;
+    rs_status_t *pst;
+    int *pdec, r = RS_OK;
+    memset(iv, 0, sizeof *iv);
+    ralg_init(&iv->lo);
+    ralg_init(&iv->hi);
+    line_critical(&crit, &ncrit, P, e);
+    ralg_sort(crit, &ncrit);
+    /* pieces: cell 0, point 0, cell 1, ..., cell ncrit */
+    npc = 2 * ncrit + 1;
+    pst = flint_calloc(npc, sizeof(rs_status_t));
+    pdec = flint_calloc(npc, sizeof(int));
+    for (i = 0; i < npc && r == RS_OK; i += 2) {
+        fmpq_t x;
+        fmpq_init(x);
+        rational_between(x, i == 0 ? NULL : crit + i / 2 - 1, i / 2 == ncrit ? NULL : crit + i / 2);
+        r = status_line(pst + i, P, e, x, err);
+        pdec[i] = 1;
+        if (fmpq_is_zero(x)) start = i;
+        fmpq_clear(x);
+    }
+    for (i = 1; i < npc && r == RS_OK; i += 2) {
+        ralg_t *c = crit + i / 2;
+        if (c->rational) {
+            r = status_line(pst + i, P, e, c->q, err);
+            pdec[i] = 1;
+            if (fmpq_is_zero(c->q)) start = i;
+        } else {
+            fmpz_poly_t lc;
+            fmpz_poly_init(lc);
+            zcoeff(lc, P, P->n);
+            if (vanishes_at(lc, e, c->f)) { pst[i] = RS_STATUS_SINGULAR; pdec[i] = 1; }
+            else if ((bounded(pst[i - 1]) || bounded(pst[i + 1])) && !vanishes_at(disc, e, c->f)) {
+                /* the limit of bounded roots, all simple there */
+                pst[i] = RS_STATUS_MARGINAL; pdec[i] = 1;
+            }
+            fmpz_poly_clear(lc);
+        }
+    }
+    if (r == RS_OK) {
+        if (start < 0 || !pdec[start] || !bounded(pst[start])) iv->empty = 1;
+        else {
+            i = start;
+            while (i > 0 && pdec[i - 1] && bounded(pst[i - 1])) i--;
+            j = start;
+            while (j + 1 < npc && pdec[j + 1] && bounded(pst[j + 1])) j++;
+            iv->lo_inf = (i == 0);
+            iv->hi_inf = (j == npc - 1);
+            if (!iv->lo_inf) {
+                slong c = (i % 2 == 1) ? i / 2 : i / 2 - 1;   /* point i itself, or the point before cell i */
+                ralg_t *a = crit + c;
+                iv->lo.rational = a->rational; fmpq_set(iv->lo.q, a->q); fmpz_poly_set(iv->lo.f, a->f);
+                iv->lo.idx = a->idx; arb_set(iv->lo.x, a->x);
+                iv->lo_closed = (i % 2 == 1);
+                if (i % 2 == 0 && !pdec[i - 1]) iv->undecided = 1;
+            }
+            if (!iv->hi_inf) {
+                slong c = j / 2;   /* point j, or the point after cell j */
+                ralg_t *a = crit + c;
+                iv->hi.rational = a->rational; fmpq_set(iv->hi.q, a->q); fmpz_poly_set(iv->hi.f, a->f);
+                iv->hi.idx = a->idx; arb_set(iv->hi.x, a->x);
+                iv->hi_closed = (j % 2 == 1);
+                if (j % 2 == 0 && !pdec[j + 1]) iv->undecided = 1;
+            }
+        }
+    }
+    for (i = 0; i < ncrit; i++) ralg_clear(crit + i);
+    free(crit);
+    flint_free(pst);
+    flint_free(pdec);
+    return r;
+}
+
+static void line_iv_clear(line_iv_t *iv) { ralg_clear(&iv->lo); ralg_clear(&iv->hi); }
+
+static json_t *line_iv_json(line_iv_t *iv, const char *var)
+{
+    if (iv->empty) return json_null();
+    return json_pack("[o,o]", iv->lo_inf ? json_string("-inf") : ralg_json(&iv->lo, var),
+                     iv->hi_inf ? json_string("inf") : ralg_json(&iv->hi, var));
+}
+
+static json_t *line_iv_detail(line_iv_t *iv)
+{
+    if (iv->empty) return json_pack("{s:b}", "empty", 1);
+    return json_pack("{s:b,s:b,s:b}", "lo_closed", !iv->lo_inf && iv->lo_closed, "hi_closed",
+                     !iv->hi_inf && iv->hi_closed, "ends_decided", !iv->undecided);
+}
+
+/* f >= 0 on the whole real line: every odd-multiplicity factor without a
+ * real root and a positive leading coefficient (f = 0 counts).  Otherwise
+ * *t0 is a rational where f < 0. */
+static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
+{
+    fmpz_poly_factor_t fac;
+    ralg_t *rts = NULL;
+    slong nr = 0, i;
+    int ok = 1;
+    if (fmpz_poly_is_zero(f)) return 1;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, f);
+    for (i = 0; i < fac->num; i++)
+        if (fac->exp[i] % 2 == 1) ralg_roots_append(&rts, &nr, fac->p + i);
+    ralg_sort(rts, &nr);
+    /* sign in each cell between the odd roots */
+    for (i = 0; i <= nr && ok; i++) {
+        fmpz_t v;
+        fmpq_t x, y;
+        fmpz_init(v); fmpq_init(x); fmpq_init(y);
+        rational_between(x, i == 0 ? NULL : rts + i - 1, i == nr ? NULL : rts + i);
+        fmpz_poly_evaluate_fmpq(y, f, x);
+        if (fmpq_sgn(y) < 0) { ok = 0; fmpq_set(t0, x); }
+        fmpz_clear(v); fmpq_clear(x); fmpq_clear(y);
+    }
+    for (i = 0; i < nr; i++) ralg_clear(rts + i);
+    free(rts);
+    fmpz_poly_factor_clear(fac);
+    return ok;
+}
+
+static char *poly_str(const fmpz_poly_t f, const char *var) { return rs_polyfmt_fmpz_poly(f, var); }
+
+/* A(alpha) for p = P0 + z P1: alpha as a certified ball in degrees, its
+ * exact description and the locus point; *alpha_zero when the locus meets
+ * the negative real axis. */
+static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found, arb_t deg)
+{
+    fmpz_poly_t C, t1, t2;
+    ralg_t *rts = NULL, *yr = NULL;
+    slong nr = 0, ny = 0, i, best = -1, prec = 256;
+    arb_t u, bu, xv, yv;
+    json_t *o = NULL;
+    fmpz_poly_init(C); fmpz_poly_init(t1); fmpz_poly_init(t2);
+    arb_init(u); arb_init(bu); arb_init(xv); arb_init(yv);
+    *found = 0;
+    /* Y' X - Y X' */
+    fmpz_poly_derivative(t1, Y);
+    fmpz_poly_mul(t1, t1, X);
+    fmpz_poly_derivative(t2, X);
+    fmpz_poly_mul(t2, t2, Y);
+    fmpz_poly_sub(C, t1, t2);
+    /* the locus on the negative real axis: Y = 0 with X < 0 */
+    if (!fmpz_poly_is_zero(Y)) ralg_roots_append(&yr, &ny, Y);
+    for (i = 0; i < ny; i++) {
+        if (yr[i].rational) arb_set_fmpq(xv, yr[i].q, prec); else { ralg_refine(yr + i, prec); arb_set(xv, yr[i].x); }
+        arb_fmpz_poly_evaluate_arb(xv, X, xv, prec);
+        if (arb_is_negative(xv)) {
+            *found = 1;
+            arb_zero(deg);
+            o = json_pack("{s:s,s:s}", "exact", "0", "reason", "the boundary locus crosses the negative real axis");
+            goto done;
+        }
+    }
+    if (!fmpz_poly_is_zero(C)) ralg_roots_append(&rts, &nr, C);
+    for (i = 0; i < nr; i++) {
+        ralg_refine(rts + i, prec);
+        arb_fmpz_poly_evaluate_arb(xv, X, rts[i].x, prec);
+        if (!arb_is_negative(xv)) continue;
+        arb_fmpz_poly_evaluate_arb(yv, Y, rts[i].x, prec);
+        arb_div(u, yv, xv, prec);
+        arb_abs(u, u);
+        if (best < 0 || arb_lt(u, bu) || (!arb_gt(u, bu) && arf_cmp(arb_midref(u), arb_midref(bu)) < 0)) {
+            best = i;
+            arb_set(bu, u);
+        }
+    }
+    if (best >= 0) {
+        /* exact: u = |Y/X|(t*) is a root of Res_t(f(t), X(t) u -+ Y(t)) */
+        fmpz_mpoly_ctx_t ctx;
+        fmpz_mpoly_t F, L, R;
+        fmpz_poly_t m, f;
+        fmpz_poly_factor_t fac;
+        char *ms = NULL, *buf;
+        int neg;
+        slong k;
+        fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+        fmpz_mpoly_init(F, ctx); fmpz_mpoly_init(L, ctx); fmpz_mpoly_init(R, ctx);
+        fmpz_poly_init(m); fmpz_poly_init(f);
+        fmpz_poly_factor_init(fac);
+        arb_fmpz_poly_evaluate_arb(yv, Y, rts[best].x, prec);
+        arb_fmpz_poly_evaluate_arb(xv, X, rts[best].x, prec);
+        arb_div(u, yv, xv, prec);
+        neg = arb_is_negative(u);
+        if (rts[best].rational) { fmpz_poly_set_coeff_fmpz(f, 1, fmpq_denref(rts[best].q)); fmpz_poly_set_coeff_fmpz(f, 0, fmpq_numref(rts[best].q)); fmpz_neg(f->coeffs, f->coeffs); }
+        else fmpz_poly_set(f, rts[best].f);
+        for (k = 0; k <= fmpz_poly_degree(f); k++) {
+            ulong ex[2] = {(ulong) k, 0};
+            fmpz_mpoly_set_coeff_fmpz_ui(F, f->coeffs + k, ex, ctx);
+        }
+        /* X(t) u - s Y(t), s = -1 when Y/X < 0 (u = -Y/X) */
+        for (k = 0; k <= fmpz_poly_degree(X); k++) {
+            ulong ex[2] = {(ulong) k, 1};
+            fmpz_mpoly_set_coeff_fmpz_ui(L, X->coeffs + k, ex, ctx);
+        }
+        for (k = 0; k <= fmpz_poly_degree(Y); k++) {
+            ulong ex[2] = {(ulong) k, 0};
+            fmpz_t c;
+            fmpz_init(c);
+            fmpz_set(c, Y->coeffs + k);
+            if (!neg) fmpz_neg(c, c);
+            fmpz_mpoly_set_coeff_fmpz_ui(L, c, ex, ctx);
+            fmpz_clear(c);
+        }
+        if (fmpz_mpoly_resultant(R, F, L, 0, ctx)) {
+            mpoly_to_s(m, R, ctx);
+            if (fmpz_poly_degree(m) >= 1) {
+                fmpz_poly_factor(fac, m);
+                for (k = 0; k < fac->num; k++) {
+                    arb_t val;
+                    arb_init(val);
+                    arb_fmpz_poly_evaluate_arb(val, fac->p + k, bu, prec);
+                    if (arb_contains_zero(val) && ms == NULL) ms = poly_str(fac->p + k, "u");
+                    arb_clear(val);
+                }
+            }
+        }
+        /* degrees = atan(u) 180 / pi */
+        {
+            arb_t pi;
+            arb_init(pi);
+            arb_atan(deg, bu, prec);
+            arb_mul_ui(deg, deg, 180, prec);
+            arb_const_pi(pi, prec);
+            arb_div(deg, deg, pi, prec);
+            arb_clear(pi);
+        }
+        *found = 1;
+        buf = malloc((ms ? strlen(ms) : 0) + 200);
+        sprintf(buf, "(180/pi) atan(u), u = tan(alpha) the root of %s near %.15g", ms ? ms : "(not found)",
+                arf_get_d(arb_midref(bu), ARF_RND_NEAR));
+        o = json_pack("{s:s}", "exact", buf);
+        if (ms) json_object_set_new(o, "tan_alpha_minpoly", json_string(ms));
+        json_object_set_new(o, "tan_alpha", json_real(arf_get_d(arb_midref(bu), ARF_RND_NEAR)));
+        free(buf);
+        free(ms);
+        fmpz_poly_factor_clear(fac);
+        fmpz_poly_clear(m); fmpz_poly_clear(f);
+        fmpz_mpoly_clear(F, ctx); fmpz_mpoly_clear(L, ctx); fmpz_mpoly_clear(R, ctx);
+        fmpz_mpoly_ctx_clear(ctx);
+    }
+done:
+    for (i = 0; i < nr; i++) ralg_clear(rts + i);
+    for (i = 0; i < ny; i++) ralg_clear(yr + i);
+    free(rts); free(yr);
+    fmpz_poly_clear(C); fmpz_poly_clear(t1); fmpz_poly_clear(t2);
+    arb_clear(u); arb_clear(bu); arb_clear(xv); arb_clear(yv);
+    return o;
+}
+
+/* a point of the open left half-plane near z0 where p is exactly unstable
+ * (evidence against A-stability), or the boundary point z0 itself */
+static json_t *lhp_evidence(const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, rs_error_t err)
+{
+    static const slong dr[] = {0, -1, 1, 0, 0}, di[] = {0, 0, 0, -1, 1};
+    slong k, j;
+    for (j = 1; j <= 3; j++)
+        for (k = 0; k < 5; k++) {
+            fmpq_t a, b, eps;
+            fmpq_poly_t re, im;
+            rs_status_t st;
+            json_t *o = NULL;
+            fmpq_init(a); fmpq_init(b); fmpq_init(eps);
+            fmpq_poly_init(re); fmpq_poly_init(im);
+            fmpq_set_si(eps, 1, j == 1 ? 100 : j == 2 ? 10000 : 1000000);
+            fmpq_set(a, zr); fmpq_set(b, zi);
+            if (dr[k]) { fmpq_mul_si(eps, eps, dr[k]); fmpq_add(a, a, eps); }
+            if (di[k]) { fmpq_mul_si(eps, eps, di[k]); fmpq_add(b, b, eps); }
+            eval_at(re, im, P, a, b);
+            if (fmpq_sgn(a) < 0 && rs_schur_complex_status(&st, re, im, P->n, err) == RS_OK
+                && st == RS_STATUS_UNSTABLE)
+                o = json_pack("{s:o,s:o,s:s}", "re", rs_json_fmpq(a), "im", rs_json_fmpq(b), "status", "unstable");
+            fmpq_clear(a); fmpq_clear(b); fmpq_clear(eps);
+            fmpq_poly_clear(re); fmpq_poly_clear(im);
+            if (o != NULL) return o;
+        }
+    return json_pack("{s:o,s:o,s:s}", "re", rs_json_fmpq(zr), "im", rs_json_fmpq(zi), "status",
+                     "a root on the unit circle at this point of Re z < 0 (boundary locus point)");
+}
+
+/* ---- request ------------------------------------------------------------------ */
+
+int rs_an_astability_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    const rs_request_t *q = req->q;
+    const char *rest = rs_req_skip_blanks(req->rest), *t;
+    char name[80];
+    req->u.astab.param = -1;
+    if (*rest == '\0') {
+        if (run->c->nparams == 1) { req->u.astab.param = 0; return RS_OK; }
+        {
+            slong i, nfree = 0, last = -1;
+            for (i = 0; i < run->c->nparams; i++) {
+                slong k;
+                int set = 0;
+                for (k = 0; k < run->c->nsets; k++)
+                    if (strcmp(run->c->sets[k].name, run->c->params[i].name) == 0) set = 1;
+                if (!set) { nfree++; last = i; }
+            }
+            if (nfree == 1) { req->u.astab.param = last; return RS_OK; }
+        }
+        return rs_req_error(run, q, rest, RS_ERR_INPUT,
+                            "expected the parameter that stands for z = h*lambda after astability%s", "");
+    }
+    t = rs_req_read_name(rest, name);
+    if (t == NULL)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "expected a parameter name after astability, found '%s'", rest);
+    req->u.astab.param = rs_case_param_index(run->c, name);
+    if (req->u.astab.param < 0)
+        return rs_req_error(run, q, rest, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    t = rs_req_skip_blanks(t);
+    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line, found '%s'", t);
+    return RS_OK;
+}
+
+int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const char *name = run->c->params[req->u.astab.param].name;
+    const char *keep[1];
+    rs_assign_t *as;
+    slong na, tv = req->u.astab.param, k;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    zpoly_t P;
+    line_iv_t riv, iiv;
+    fmpz_poly_t disc, lc;
+    json_t *o, *ev;
+    int r, lin_decided = 0, lin_astable = 0, one_decided = 0, one_astable = 0, a_stable = -1;
+    rs_status_t st_m1 = RS_STATUS_UNSTABLE;
+    fmpq_t zr, zi;
+    keep[0] = name;
+    rs_run_assignments(run, &as, &na, keep, 1, NULL, 0);
+    r = rs_run_variant(&v, run, as, na);
+    rs_assign_free(as, na);
+    if (r != RS_OK) return r;
+    s = v->s;
+    if (rs_run_count_free(v->cp->p, s, tv) > 0) {
+        char *fp = rs_run_free_params(v);
+        char msg[400];
+        snprintf(msg, sizeof msg, "astability needs the other parameters set to numbers; still symbolic: %s", fp);
+        free(fp);
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "%s", msg);
+    }
+    P.K = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
+    P.n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    if (P.K < 1 || P.n < 1)
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT,
+                            "astability: the characteristic polynomial must depend on '%s' and on lambda", name);
+    P.C = flint_malloc((P.K + 1) * sizeof(fmpz_poly_struct));
+    for (k = 0; k <= P.K; k++) {
+        fmpz_poly_init(P.C + k);
+        rs_run_coeff_in(P.C + k, v->cp->p, tv, k, s);
+    }
+    fmpz_poly_init(disc); fmpz_poly_init(lc);
+    fmpq_init(zr); fmpq_init(zi);
+    {
+        /* the discriminant in lambda, a polynomial in z */
+        fmpz_mpoly_t d;
+        fmpz_mpoly_init(d, s->zctx);
+        if (fmpz_mpoly_discriminant(d, v->cp->p, s->lambda_var, s->zctx)) {
+            fmpz_mpoly_t c;
+            fmpz_mpoly_init(c, s->zctx);
+            for (k = 0; k <= fmpz_mpoly_degree_si(d, tv, s->zctx); k++) {
+                ulong kk = (ulong) k;
+                fmpz_t x;
+                fmpz_init(x);
+                fmpz_mpoly_get_coeff_vars_ui(c, d, &tv, &kk, 1, s->zctx);
+                if (fmpz_mpoly_is_fmpz(c, s->zctx)) fmpz_mpoly_get_fmpz(x, c, s->zctx);
+                fmpz_poly_set_coeff_fmpz(disc, k, x);
+                fmpz_clear(x);
+            }
+            fmpz_mpoly_clear(c, s->zctx);
+        }
+        fmpz_mpoly_clear(d, s->zctx);
+        if (P.n == 1) fmpz_poly_one(disc);   /* one root: never repeated */
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("astability"));
+    json_object_set_new(o, "param", json_string(name));
+    r = line_interval(&riv, &P, disc, 0, run->err);
+    if (r == RS_OK) r = line_interval(&iiv, &P, disc, 1, run->err);
+    else ralg_init(&iiv.lo), ralg_init(&iiv.hi);
+    if (r != RS_OK) goto out;
+    json_object_set_new(o, "real_interval", line_iv_json(&riv, name));
+    json_object_set_new(o, "imag_interval", line_iv_json(&iiv, name));
+    json_object_set_new(o, "real_interval_detail", line_iv_detail(&riv));
+    json_object_set_new(o, "imag_interval_detail", line_iv_detail(&iiv));
+    fmpq_set_si(zr, -1, 1);
+    r = status_line(&st_m1, &P, 0, zr, run->err);
+    if (r != RS_OK) goto out;
+    ev = json_array();
+    /* route 1: p linear in z, the boundary locus z(t) = (X + i Y)/W */
+    if (P.K == 1) {
+        fmpz_poly_t q0, q1, a0, b0, a1, b1, X, Y, t1;
+        fmpq_t t0, w;
+        int xnonneg, infok = 1, lcok = 1;
+        fmpz_poly_init(q0); fmpz_poly_init(q1); fmpz_poly_init(a0); fmpz_poly_init(b0);
+        fmpz_poly_init(a1); fmpz_poly_init(b1); fmpz_poly_init(X); fmpz_poly_init(Y); fmpz_poly_init(t1);
+        fmpq_init(t0); fmpq_init(w);
+        bilinear_n(q0, P.C + 0, P.n);
+        bilinear_n(q1, P.C + 1, P.n);
+        split_it(a0, b0, q0);
+        split_it(a1, b1, q1);
+        fmpz_poly_mul(X, a0, a1);
+        fmpz_poly_mul(t1, b0, b1);
+        fmpz_poly_add(X, X, t1);
+        fmpz_poly_neg(X, X);
+        fmpz_poly_mul(Y, a0, b1);
+        fmpz_poly_mul(t1, a1, b0);
+        fmpz_poly_sub(Y, Y, t1);
+        {
+            char *p0 = poly_str(P.C + 0, "lambda"), *p1 = poly_str(P.C + 1, "lambda");
+            char *buf = malloc(strlen(p0) + strlen(p1) + 120);
+            sprintf(buf, "%s = -(%s)/(%s), lambda = exp(i*phi), 0 <= phi < 2*pi", name, p0, p1);
+            json_object_set_new(o, "boundary_locus", json_string(buf));
+            free(buf); free(p0); free(p1);
+            p0 = poly_str(X, "t"); p1 = poly_str(Y, "t");
+            json_object_set_new(o, "boundary_locus_t", json_pack("{s:s,s:s,s:s}", "t", "tan(phi/2)",
+                                "re_numerator", p0, "im_numerator", p1));
+            free(p0); free(p1);
+        }
+        /* lambda = -1 (t = inf): z_inf = -P0(-1)/P1(-1) must not be negative */
+        {
+            fmpz_t v0, v1;
+            fmpz_init(v0); fmpz_init(v1);
+            fmpz_poly_evaluate_fmpz(v0, P.C + 0, (fmpz_t) {-1});
+            fmpz_poly_evaluate_fmpz(v1, P.C + 1, (fmpz_t) {-1});
+            if (!fmpz_is_zero(v1) && fmpz_sgn(v0) * fmpz_sgn(v1) > 0) {
+                infok = 0;
+                fmpq_set_fmpz_frac(zr, v0, v1);
+                fmpq_neg(zr, zr);
+            }
+            /* the leading coefficient vanishes at -lc(P0)/lc(P1) */
+            fmpz_poly_get_coeff_fmpz(v0, P.C + 0, P.n);
+            fmpz_poly_get_coeff_fmpz(v1, P.C + 1, P.n);
+            if (!fmpz_is_zero(v1) && fmpz_sgn(v0) * fmpz_sgn(v1) > 0) lcok = 0;
+            fmpz_clear(v0); fmpz_clear(v1);
+        }
+        xnonneg = nonneg_everywhere(X, t0);
+        lin_decided = 1;
+        lin_astable = xnonneg && infok && lcok && st_m1 == RS_STATUS_STABLE;
+        {
+            json_t *e = json_pack("{s:s,s:b,s:b,s:b,s:s}", "route", "boundary locus (p linear in z)",
+                                  "re_locus_nonnegative", xnonneg, "lambda_minus_one_point_ok", infok,
+                                  "leading_coefficient_zero_ok", lcok, "status_at_minus_one", rs_status_name(st_m1));
+            if (!xnonneg) {
+                /* z(t0) = (X + i Y)(t0) / W(t0), a boundary point with Re z < 0 */
+                fmpq_t yv;
+                fmpz_poly_t W;
+                fmpq_init(yv);
+                fmpz_poly_init(W);
+                fmpz_poly_mul(W, a1, a1);
+                fmpz_poly_mul(t1, b1, b1);
+                fmpz_poly_add(W, W, t1);
+                fmpz_poly_evaluate_fmpq(w, W, t0);
+                fmpz_poly_evaluate_fmpq(zr, X, t0);
+                fmpz_poly_evaluate_fmpq(yv, Y, t0);
+                fmpq_div(zr, zr, w);
+                fmpq_div(zi, yv, w);
+                json_object_set_new(e, "t", rs_json_fmpq(t0));
+                json_object_set_new(e, "counterexample", lhp_evidence(&P, zr, zi, run->err));
+                fmpq_clear(yv);
+                fmpz_poly_clear(W);
+            } else if (!infok) {
+                fmpq_zero(zi);
+                json_object_set_new(e, "counterexample", lhp_evidence(&P, zr, zi, run->err));
+            }
+            json_array_append_new(ev, e);
+        }
+        /* A(alpha) */
+        if (st_m1 == RS_STATUS_STABLE) {
+            if (lin_astable) {
+                json_object_set_new(o, "alpha_degrees", json_integer(90));
+                json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
+            } else if (!infok || !lcok) {
+                json_object_set_new(o, "alpha_degrees", json_integer(0));
+                json_object_set_new(o, "alpha_degrees_approx", json_real(0.0));
+            } else {
+                arb_t deg;
+                int found;
+                json_t *aj;
+                arb_init(deg);
+                aj = alpha_linear(X, Y, &found, deg);
+                if (found && aj != NULL) {
+                    char *ds = rs_radius_arb_str(deg, 15);
+                    json_object_set_new(o, "alpha_degrees", aj);
+                    json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(deg), ARF_RND_NEAR)));
+                    json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+                    flint_free(ds);
+                } else {
+                    json_decref(aj);
+                    json_object_set_new(o, "alpha_degrees", json_null());
+                    json_object_set_new(o, "alpha_degrees_approx", json_null());
+                }
+                arb_clear(deg);
+            }
+        } else {
+            json_object_set_new(o, "alpha_degrees", json_null());
+            json_object_set_new(o, "alpha_degrees_approx", json_null());
+            json_object_set_new(o, "alpha_note", json_string("z = -1 is not stable: no sector |arg(-z)| < alpha lies in the region"));
+        }
+        fmpz_poly_clear(q0); fmpz_poly_clear(q1); fmpz_poly_clear(a0); fmpz_poly_clear(b0);
+        fmpz_poly_clear(a1); fmpz_poly_clear(b1); fmpz_poly_clear(X); fmpz_poly_clear(Y); fmpz_poly_clear(t1);
+        fmpq_clear(t0); fmpq_clear(w);
+    } else {
+        char *pp = rs_polyfmt_fmpz_mpoly(v->cp->p, (const char **) s->vars, s->zctx);
+        char *buf = malloc(strlen(pp) + 120);
+        sprintf(buf, "p(lambda, %s) = 0 with lambda = exp(i*phi), p = %s", name, pp);
+        json_object_set_new(o, "boundary_locus", json_string(buf));
+        free(buf);
+        free(pp);
+    }
+    /* route 2: one-step methods p = D(z) lambda - N(z): E(y) >= 0 and poles in Re z > 0 */
+    if (P.n == 1) {
+        fmpz_poly_t D, N, dr, di, nr, ni, E, t1, Dt;
+        fmpq_t y0;
+        rs_rootcount_t rc;
+        int enonneg, poles_ok = 1;
+        fmpz_poly_init(D); fmpz_poly_init(N); fmpz_poly_init(dr); fmpz_poly_init(di); fmpz_poly_init(nr);
+        fmpz_poly_init(ni); fmpz_poly_init(E); fmpz_poly_init(t1); fmpz_poly_init(Dt);
+        fmpq_init(y0);
+        rs_rootcount_init(rc);
+        zcoeff(D, &P, 1);
+        zcoeff(N, &P, 0);
+        split_line(dr, di, D, 1);
+        split_line(nr, ni, N, 1);
+        fmpz_poly_mul(E, dr, dr);
+        fmpz_poly_mul(t1, di, di); fmpz_poly_add(E, E, t1);
+        fmpz_poly_mul(t1, nr, nr); fmpz_poly_sub(E, E, t1);
+        fmpz_poly_mul(t1, ni, ni); fmpz_poly_sub(E, E, t1);
+        enonneg = nonneg_everywhere(E, y0);
+        if (fmpz_poly_degree(D) >= 1) {
+            /* z in Re z > 0 <=> w = (z - 1)/(z + 1) inside the unit disc: D((1+w)/(1-w)) (1-w)^m */
+            bilinear_n(Dt, D, fmpz_poly_degree(D));
+            if (fmpz_poly_degree(Dt) < fmpz_poly_degree(D)) poles_ok = 0;   /* a pole at z = -1 */
+            else if ((r = rs_rootcount_factor(rc, Dt, run->err)) != RS_OK) goto one_out;
+            else poles_ok = rc->inside == rc->degree;
+        }
+        one_decided = 1;
+        one_astable = enonneg && poles_ok;
+        {
+            char *es = poly_str(E, "y");
+            json_t *e = json_pack("{s:s,s:s,s:b,s:b}", "route", "E-polynomial (one-step method)", "E", es,
+                                  "E_nonnegative", enonneg, "poles_in_right_half_plane", poles_ok);
+            free(es);
+            if (!enonneg) json_object_set_new(e, "counterexample_imag", rs_json_fmpq(y0));
+            json_array_append_new(ev, e);
+        }
+    one_out:
+        rs_rootcount_clear(rc);
+        fmpz_poly_clear(D); fmpz_poly_clear(N); fmpz_poly_clear(dr); fmpz_poly_clear(di); fmpz_poly_clear(nr);
+        fmpz_poly_clear(ni); fmpz_poly_clear(E); fmpz_poly_clear(t1); fmpz_poly_clear(Dt);
+        fmpq_clear(y0);
+        if (r != RS_OK) { json_decref(ev); goto out; }
+    }
+    if (lin_decided && one_decided && lin_astable != one_astable) {
+        json_decref(ev);
+        r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT,
+                            "the boundary locus and the E-polynomial disagree on A-stability"), "astability");
+        goto out;
+    }
+    if (lin_decided || one_decided) {
+        a_stable = lin_decided ? lin_astable : one_astable;
+        /* A-stable: the whole closed left half-plane is bounded, so are both axes' halves */
+        if (a_stable && (iiv.empty || !iiv.lo_inf || !iiv.hi_inf || riv.empty || !riv.lo_inf)) {
+            json_decref(ev);
+            r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT,
+                                "A-stable by the boundary locus, yet an axis interval is bounded"), "astability");
+            goto out;
+        }
+        json_object_set_new(o, "a_stable", json_boolean(a_stable));
+    } else {
+        json_object_set_new(o, "a_stable", json_null());
+        json_object_set_new(o, "a_stable_note", json_string(
+            "undecided: neither linear in z nor a one-step method (degree 1 in lambda)"));
+    }
+    if (!json_object_get(o, "alpha_degrees")) {
+        json_object_set_new(o, "alpha_degrees", a_stable == 1 ? json_integer(90) : json_null());
+        json_object_set_new(o, "alpha_degrees_approx", a_stable == 1 ? json_real(90.0) : json_null());
+        if (a_stable != 1)
+            json_object_set_new(o, "alpha_note", json_string(
+                "A(alpha) is computed for methods linear in z (multistep); not for this one"));
+    }
+    json_object_set_new(o, "evidence", ev);
+    /* z -> inf: the roots of the top coefficient in z; fewer than n: some go to infinity */
+    {
+        const fmpz_poly_struct *c = P.C + P.K;
+        json_t *lim;
+        int l0 = 0;
+        if (fmpz_poly_degree(c) < P.n) lim = json_string("inf");
+        else {
+            fmpz_poly_factor_t fac;
+            arb_t m, ab;
+            slong i, j;
+            int all_rational = 1;
+            fmpq_t best, x;
+            fmpz_poly_factor_init(fac);
+            arb_init(m); arb_init(ab);
+            fmpq_init(best); fmpq_init(x);
+            fmpz_poly_factor(fac, c);
+            arb_zero(m);
+            for (i = 0; i < fac->num; i++) {
+                const fmpz_poly_struct *g = fac->p + i;
+                slong d = fmpz_poly_degree(g);
+                if (d == 1) {
+                    fmpq_set_fmpz_frac(x, g->coeffs + 0, g->coeffs + 1);
+                    fmpq_abs(x, x);
+                    if (fmpq_cmp(x, best) > 0) fmpq_set(best, x);
+                    arb_set_fmpq(ab, x, 128);
+                    arb_max(m, m, ab, 128);
+                } else if (d > 1) {
+                    acb_ptr rt = _acb_vec_init(d);
+                    all_rational = 0;
+                    arb_fmpz_poly_complex_roots(rt, g, 0, 128);
+                    for (j = 0; j < d; j++) { acb_abs(ab, rt + j, 128); arb_max(m, m, ab, 128); }
+                    _acb_vec_clear(rt, d);
+                }
+            }
+            if (all_rational) {
+                ralg_t a;
+                ralg_init(&a);
+                a.rational = 1;
+                fmpq_set(a.q, best);
+                lim = ralg_json(&a, "r");
+                l0 = fmpq_is_zero(best);
+                ralg_clear(&a);
+            } else {
+                char *cs = poly_str(c, "lambda"), *ms = rs_radius_arb_str(m, 20);
+                char *buf = malloc(strlen(cs) + 40);
+                sprintf(buf, "max |root| of %s", cs);
+                lim = json_pack("{s:s,s:f,s:s}", "exact", buf, "approx", arf_get_d(arb_midref(m), ARF_RND_NEAR),
+                                "certified", ms);
+                free(buf); free(cs); flint_free(ms);
+            }
+            fmpz_poly_factor_clear(fac);
+            arb_clear(m); arb_clear(ab);
+            fmpq_clear(best); fmpq_clear(x);
+        }
+        json_object_set_new(o, "limit_at_infinity", lim);
+        json_object_set_new(o, "l_stable", a_stable == -1 ? json_null() : json_boolean(a_stable == 1 && l0));
+    }
+    rs_run_emit_exact(run, v, o);
+    o = NULL;
+out:
+    json_decref(o);
+    line_iv_clear(&riv);
+    line_iv_clear(&iiv);
+    for (k = 0; k <= P.K; k++) fmpz_poly_clear(P.C + k);
+    flint_free(P.C);
+    fmpz_poly_clear(disc); fmpz_poly_clear(lc);
+    fmpq_clear(zr); fmpq_clear(zi);
+    return r;
+}

@@ -1,0 +1,202 @@
+/* schur_complex.c -- unit-circle tests for polynomials over Q(i): the
+ * Schur-Cohn recursion on complex coefficients (Marden, Geometry of
+ * Polynomials, Thm 43.1; Henrici, Applied and Computational Complex
+ * Analysis I, 6.8) and the real route p conj(p), which must agree. */
+#include <flint/fmpq.h>
+#include "stability/schur_complex.h"
+
+static slong cdeg(const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    return FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im));
+}
+
+/* |a_k|^2 */
+static void cnorm2(fmpq_t out, const fmpq_poly_t re, const fmpq_poly_t im, slong k)
+{
+    fmpq_t x;
+    fmpq_init(x);
+    fmpq_poly_get_coeff_fmpq(out, re, k);
+    fmpq_mul(out, out, out);
+    fmpq_poly_get_coeff_fmpq(x, im, k);
+    fmpq_addmul(out, x, x);
+    fmpq_clear(x);
+}
+
+/* (or + i oi) = (cr + i ci) (pr + i pi) */
+static void cscale(fmpq_poly_t or_, fmpq_poly_t oi, const fmpq_t cr, const fmpq_t ci,
+                   const fmpq_poly_t pr, const fmpq_poly_t pi)
+{
+    fmpq_poly_t a, b;
+    fmpq_poly_init(a); fmpq_poly_init(b);
+    fmpq_poly_scalar_mul_fmpq(a, pr, cr);
+    fmpq_poly_scalar_mul_fmpq(b, pi, ci);
+    fmpq_poly_sub(a, a, b);
+    fmpq_poly_scalar_mul_fmpq(b, pi, cr);
+    fmpq_poly_scalar_mul_fmpq(oi, pr, ci);
+    fmpq_poly_add(oi, oi, b);
+    fmpq_poly_swap(or_, a);
+    fmpq_poly_clear(a); fmpq_poly_clear(b);
+}
+
+int rs_schur_complex_inside(const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    fmpq_poly_t pr, pi, sr, si, tr, ti;
+    fmpq_t an, a0, cr, ci;
+    slong n = cdeg(re, im);
+    int ok = 1;
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    fmpq_poly_init(sr); fmpq_poly_init(si);
+    fmpq_poly_init(tr); fmpq_poly_init(ti);
+    fmpq_init(an); fmpq_init(a0); fmpq_init(cr); fmpq_init(ci);
+    fmpq_poly_set(pr, re);
+    fmpq_poly_set(pi, im);
+    while (ok && n >= 1) {
+        cnorm2(an, pr, pi, n);
+        cnorm2(a0, pr, pi, 0);
+        if (fmpq_cmp(an, a0) <= 0) { ok = 0; break; }   /* |prod roots| >= 1, or a root on the circle */
+        /* p* = lambda^n conj(p(1/conj lambda)): reversed conjugate coefficients */
+        fmpq_poly_reverse(sr, pr, n + 1);
+        fmpq_poly_reverse(si, pi, n + 1);
+        fmpq_poly_neg(si, si);
+        /* conj(a_n) p - a_0 p*, then / lambda */
+        fmpq_poly_get_coeff_fmpq(cr, pr, n);
+        fmpq_poly_get_coeff_fmpq(ci, pi, n);
+        fmpq_neg(ci, ci);
+        cscale(tr, ti, cr, ci, pr, pi);
+        fmpq_poly_get_coeff_fmpq(cr, pr, 0);
+        fmpq_poly_get_coeff_fmpq(ci, pi, 0);
+        cscale(sr, si, cr, ci, sr, si);
+        fmpq_poly_sub(pr, tr, sr);
+        fmpq_poly_sub(pi, ti, si);
+        fmpq_poly_shift_right(pr, pr, 1);
+        fmpq_poly_shift_right(pi, pi, 1);
+        n--;
+        /* the new leading coefficient is |a_n|^2 - |a_0|^2 > 0: scale it to 1 (keeps sizes small) */
+        fmpq_sub(an, an, a0);
+        fmpq_poly_scalar_div_fmpq(pr, pr, an);
+        fmpq_poly_scalar_div_fmpq(pi, pi, an);
+    }
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    fmpq_poly_clear(sr); fmpq_poly_clear(si);
+    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    fmpq_clear(an); fmpq_clear(a0); fmpq_clear(cr); fmpq_clear(ci);
+    return ok;
+}
+
+void rs_schur_complex_norm(fmpz_poly_t P, const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    fmpq_poly_t a, b;
+    fmpq_poly_init(a); fmpq_poly_init(b);
+    fmpq_poly_mul(a, re, re);
+    fmpq_poly_mul(b, im, im);
+    fmpq_poly_add(a, a, b);
+    fmpq_poly_get_numerator(P, a);
+    fmpz_poly_primitive_part(P, P);
+    fmpq_poly_clear(a); fmpq_poly_clear(b);
+}
+
+void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t are, const fmpq_poly_t aim,
+                          const fmpq_poly_t bre, const fmpq_poly_t bim)
+{
+    fmpq_poly_t ar, ai, br, bi, tr, ti;
+    fmpq_t lr, li, cr, ci, d;
+    fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(br); fmpq_poly_init(bi);
+    fmpq_poly_init(tr); fmpq_poly_init(ti);
+    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci); fmpq_init(d);
+    fmpq_poly_set(ar, are); fmpq_poly_set(ai, aim);
+    fmpq_poly_set(br, bre); fmpq_poly_set(bi, bim);
+    while (cdeg(br, bi) >= 0) {
+        slong db = cdeg(br, bi);
+        /* 1 / lead(b) */
+        fmpq_poly_get_coeff_fmpq(lr, br, db);
+        fmpq_poly_get_coeff_fmpq(li, bi, db);
+        fmpq_mul(d, lr, lr);
+        fmpq_addmul(d, li, li);
+        fmpq_div(lr, lr, d);
+        fmpq_div(li, li, d);
+        fmpq_neg(li, li);
+        /* a = a mod b */
+        while (cdeg(ar, ai) >= db) {
+            slong da = cdeg(ar, ai);
+            fmpq_t xr, xi;
+            fmpq_init(xr); fmpq_init(xi);
+            fmpq_poly_get_coeff_fmpq(xr, ar, da);
+            fmpq_poly_get_coeff_fmpq(xi, ai, da);
+            fmpq_mul(cr, xr, lr); fmpq_submul(cr, xi, li);
+            fmpq_mul(ci, xr, li); fmpq_addmul(ci, xi, lr);
+            cscale(tr, ti, cr, ci, br, bi);
+            fmpq_poly_shift_left(tr, tr, da - db);
+            fmpq_poly_shift_left(ti, ti, da - db);
+            fmpq_poly_sub(ar, ar, tr);
+            fmpq_poly_sub(ai, ai, ti);
+            /* exact cancellation of the top coefficient */
+            fmpq_poly_set_coeff_si(ar, da, 0);
+            fmpq_poly_set_coeff_si(ai, da, 0);
+            fmpq_clear(xr); fmpq_clear(xi);
+        }
+        fmpq_poly_swap(ar, br); fmpq_poly_swap(ai, bi);
+    }
+    /* a is the gcd: make it monic */
+    if (cdeg(ar, ai) >= 0) {
+        slong da = cdeg(ar, ai);
+        fmpq_poly_get_coeff_fmpq(lr, ar, da);
+        fmpq_poly_get_coeff_fmpq(li, ai, da);
+        fmpq_mul(d, lr, lr);
+        fmpq_addmul(d, li, li);
+        fmpq_div(lr, lr, d);
+        fmpq_div(li, li, d);
+        fmpq_neg(li, li);
+        cscale(ar, ai, lr, li, ar, ai);
+    }
+    fmpq_poly_swap(gre, ar); fmpq_poly_swap(gim, ai);
+    fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(br); fmpq_poly_clear(bi);
+    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(d);
+}
+
+int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,
+                            rs_error_t err)
+{
+    fmpz_poly_t P;
+    rs_rootcount_t rc;
+    int inside, r;
+    slong n = cdeg(re, im);
+    if (n < 0) return rs_error_set(err, RS_ERR_MATH, "the characteristic polynomial vanishes identically");
+    if (n < deg) { *st = RS_STATUS_SINGULAR; return RS_OK; }
+    inside = rs_schur_complex_inside(re, im);
+    fmpz_poly_init(P);
+    rs_rootcount_init(rc);
+    rs_schur_complex_norm(P, re, im);
+    r = rs_rootcount_factor(rc, P, err);
+    if (r == RS_OK && inside != (rc->inside == rc->degree))
+        r = rs_error_set(err, RS_ERR_INCONSISTENT,
+                         "complex Schur-Cohn and the count of p conj(p) disagree on 'all roots inside'");
+    if (r == RS_OK) {
+        if (inside) *st = RS_STATUS_STABLE;
+        else if (rc->outside > 0) *st = RS_STATUS_UNSTABLE;
+        else {
+            /* all |lambda| <= 1, some on the circle: a repeated one is a root of gcd(p, p') */
+            fmpq_poly_t dr, di, gr, gi;
+            fmpz_poly_t G;
+            rs_rootcount_t gc;
+            fmpq_poly_init(dr); fmpq_poly_init(di); fmpq_poly_init(gr); fmpq_poly_init(gi);
+            fmpz_poly_init(G);
+            rs_rootcount_init(gc);
+            fmpq_poly_derivative(dr, re);
+            fmpq_poly_derivative(di, im);
+            rs_schur_complex_gcd(gr, gi, re, im, dr, di);
+            *st = RS_STATUS_MARGINAL;
+            if (cdeg(gr, gi) >= 1) {
+                rs_schur_complex_norm(G, gr, gi);
+                r = rs_rootcount_factor(gc, G, err);
+                if (r == RS_OK && gc->on > 0) *st = RS_STATUS_UNSTABLE;
+            }
+            rs_rootcount_clear(gc);
+            fmpz_poly_clear(G);
+            fmpq_poly_clear(dr); fmpq_poly_clear(di); fmpq_poly_clear(gr); fmpq_poly_clear(gi);
+        }
+    }
+    rs_rootcount_clear(rc);
+    fmpz_poly_clear(P);
+    return r;
+}

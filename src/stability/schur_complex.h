@@ -1,0 +1,34 @@
+/* schur_complex.h -- unit-circle root location for polynomials with
+ * Gaussian-rational coefficients p = re + i im (re, im in Q[lambda]): the
+ * Schur-Cohn recursion on the complex coefficients directly, cross-checked
+ * against the exact count of the real polynomial p * conj(p) = re^2 + im^2
+ * (same root moduli).  Private to the library (used by analysis/an_astability.c). */
+#ifndef RECSTAB_SCHUR_COMPLEX_H
+#define RECSTAB_SCHUR_COMPLEX_H
+
+#include <flint/fmpq_poly.h>
+#include <flint/fmpz_poly.h>
+#include "recstab/error.h"
+#include "recstab/rootcount.h"
+
+/* 1 when every root of re + i im lies strictly inside the unit circle
+ * (Schur-Cohn: |a_n| > |a_0| and the reduced polynomial
+ * (conj(a_n) p - a_0 p*)/lambda again), else 0.  p must not be zero. */
+int rs_schur_complex_inside(const fmpq_poly_t re, const fmpq_poly_t im);
+
+/* P = re^2 + im^2 = p conj(p) as a primitive integer polynomial. */
+void rs_schur_complex_norm(fmpz_poly_t P, const fmpq_poly_t re, const fmpq_poly_t im);
+
+/* g = gcd(a, b) over Q(i) (monic; zero when both are zero). */
+void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t are, const fmpq_poly_t aim,
+                          const fmpq_poly_t bre, const fmpq_poly_t bim);
+
+/* The exact verdict of the scalar recurrence with characteristic polynomial
+ * re + i im: stable (Schur-Cohn, cross-checked against the count of
+ * p conj(p): RS_ERR_INCONSISTENT when they disagree), unstable (a root
+ * outside, or a repeated root on the circle: gcd(p, p') has one) or
+ * marginal.  deg is the degree p must have: a lower one is "singular". */
+int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,
+                            rs_error_t err);
+
+#endif
