@@ -137,29 +137,36 @@ static void ralg_sort(ralg_t *a, slong *n)
     }
 }
 
-/* a rational strictly between a and b (disjoint enclosures; NULL: infinite) */
+/* the rational with the smallest power-of-two denominator strictly between
+ * the enclosures of a and b (disjoint; NULL: infinite); 0 when it fits */
 static void rational_between(fmpq_t out, const ralg_t *a, const ralg_t *b)
 {
     arf_t u, l;
-    fmpq_t x;
-    arf_init(u); arf_init(l); fmpq_init(x);
+    fmpq_t x, y;
+    slong k;
+    arf_init(u); arf_init(l); fmpq_init(x); fmpq_init(y);
     if (a != NULL) arb_get_ubound_arf(u, a->x, 128);
     if (b != NULL) arb_get_lbound_arf(l, b->x, 128);
-    if (a == NULL && b == NULL) fmpq_zero(out);
-    else if (a == NULL) { arf_get_fmpq(x, l); fmpz_fdiv_q(fmpq_numref(out), fmpq_numref(x), fmpq_denref(x)); fmpz_sub_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
-    else if (b == NULL) { arf_get_fmpq(x, u); fmpz_cdiv_q(fmpq_numref(out), fmpq_numref(x), fmpq_denref(x)); fmpz_add_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
+    if (a != NULL) arf_get_fmpq(x, u);
+    if (b != NULL) arf_get_fmpq(y, l);
+    if ((a == NULL || fmpq_sgn(x) < 0) && (b == NULL || fmpq_sgn(y) > 0)) fmpq_zero(out);
+    else if (a == NULL) { fmpz_fdiv_q(fmpq_numref(out), fmpq_numref(y), fmpq_denref(y)); fmpz_sub_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
+    else if (b == NULL) { fmpz_fdiv_q(fmpq_numref(out), fmpq_numref(x), fmpq_denref(x)); fmpz_add_ui(fmpq_numref(out), fmpq_numref(out), 1); fmpz_one(fmpq_denref(out)); }
     else {
-        fmpq_t y;
-        fmpq_init(y);
-        arf_get_fmpq(x, u);
-        arf_get_fmpq(y, l);
-        fmpq_add(out, x, y);
-        fmpq_div_2exp(out, out, 1);
-        /* prefer a simpler rational when one fits (0, integers) */
-        if (fmpq_sgn(x) < 0 && fmpq_sgn(y) > 0) fmpq_zero(out);
-        fmpq_clear(y);
+        for (k = 0; ; k++) {
+            /* floor(x 2^k) + 1, over 2^k */
+            fmpq_t c;
+            fmpq_init(c);
+            fmpq_mul_2exp(c, x, (ulong) k);
+            fmpz_fdiv_q(fmpq_numref(out), fmpq_numref(c), fmpq_denref(c));
+            fmpz_add_ui(fmpq_numref(out), fmpq_numref(out), 1);
+            fmpz_one(fmpq_denref(out));
+            fmpq_div_2exp(out, out, (ulong) k);
+            fmpq_clear(c);
+            if (fmpq_cmp(out, y) < 0) break;
+        }
     }
-    arf_clear(u); arf_clear(l); fmpq_clear(x);
+    arf_clear(u); arf_clear(l); fmpq_clear(x); fmpq_clear(y);
 }
 
 /* JSON of an interval end: integers as numbers, other rationals and
@@ -262,6 +269,7 @@ static void bilinear_n(fmpz_poly_t out, const fmpz_poly_t c, slong n)
     fmpz_poly_init(a); fmpz_poly_init(b); fmpz_poly_init(t);
     fmpz_poly_zero(out);
     for (j = 0; j <= fmpz_poly_degree(c); j++) {
+        fmpz_poly_zero(a); fmpz_poly_zero(b);
         fmpz_poly_set_coeff_si(a, 0, 1); fmpz_poly_set_coeff_si(a, 1, 1);
         fmpz_poly_set_coeff_si(b, 0, 1); fmpz_poly_set_coeff_si(b, 1, -1);
         fmpz_poly_pow(a, a, (ulong) j);
@@ -496,9 +504,9 @@ static json_t *line_iv_detail(line_iv_t *iv)
                      !iv->hi_inf && iv->hi_closed, "ends_decided", !iv->undecided);
 }
 
-/* f >= 0 on the whole real line: every odd-multiplicity factor without a
- * real root and a positive leading coefficient (f = 0 counts).  Otherwise
- * *t0 is a rational where f < 0. */
+/* f >= 0 on the whole real line (f = 0 counts): f is decided at a rational
+ * in each cell between its real roots.  Otherwise *t0 is a rational where
+ * f < 0. */
 static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
 {
     fmpz_poly_factor_t fac;
@@ -508,8 +516,8 @@ static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
     if (fmpz_poly_is_zero(f)) return 1;
     fmpz_poly_factor_init(fac);
     fmpz_poly_factor(fac, f);
-    for (i = 0; i < fac->num; i++)
-        if (fac->exp[i] % 2 == 1) ralg_roots_append(&rts, &nr, fac->p + i);
+    /* every real root bounds a cell, so no sample is a root */
+    for (i = 0; i < fac->num; i++) ralg_roots_append(&rts, &nr, fac->p + i);
     ralg_sort(rts, &nr);
     /* sign in each cell between the odd roots */
     for (i = 0; i <= nr && ok; i++) {
