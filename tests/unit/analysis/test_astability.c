@@ -1,0 +1,281 @@
+/* test_astability.c -- `analyse astability` on the bundled cases/complex/
+ * cases, each expected value from a source in the literature and re-derived
+ * here independently of recstab's exact code:
+ *   - rk4: R(x) = 1 solved by bisection in double on the closed form of R,
+ *     the imaginary end 2 sqrt 2 from |R(iy)|^2 = 1 - y^6/72 + y^8/576;
+ *   - BDF3..6 A(alpha) (Hairer and Wanner, Solving ODEs II, Table V.2.3:
+ *     86.03, 73.35, 51.84, 17.84 degrees) re-derived by a literal dense scan
+ *     of the locus z(phi) = rho(e^{i phi})/sigma(e^{i phi}) in complex double,
+ *     rho built here from its definition sum_j (1/j) nabla^j;
+ *   - BDF1..6 zero-stable, BDF7 not (Hairer, Norsett, Wanner I, Theorem
+ *     III.3.4): the roots of rho(lambda)/(lambda - 1) isolated with Arb;
+ *   - Adams real intervals: z = rho(-1)/sigma(-1) by hand (case comments);
+ *   - trapezoid / implicit midpoint R(inf) = -1, Radau IIA R(inf) = 0. */
+#include "testutil.h"
+#include <string.h>
+#include <math.h>
+#include <complex.h>
+#include <arb_fmpz_poly.h>
+#include <flint/fmpq_poly.h>
+#include "recstab/analysis.h"
+
+#define PI_D 3.14159265358979323846
+
+static json_t *run(const char *rel, json_t **res)
+{
+    int outcome;
+    json_t *doc = tu_run_case(rel, NULL, -1, &outcome);
+    *res = json_array_get(json_object_get(doc, "results"), 0);
+    assert_string_equal(json_string_value(json_object_get(*res, "analysis")), "astability");
+    return doc;
+}
+
+/* an interval end as a double: integers, "-inf"/"inf", {"approx"} */
+static double end_value(const json_t *iv, size_t i)
+{
+    const json_t *e = json_array_get(iv, i);
+    if (json_is_integer(e)) return (double) json_integer_value(e);
+    if (json_is_string(e)) return json_string_value(e)[0] == '-' ? -INFINITY : INFINITY;
+    assert_true(json_is_object(e));
+    return json_real_value(json_object_get(e, "approx"));
+}
+
+static double rk4_R(double x) { return 1 + x + x * x / 2 + x * x * x / 6 + x * x * x * x / 24; }
+
+static void test_rk4(void **state)
+{
+    json_t *r, *doc = run("cases/complex/rk4-astability.case", &r);
+    const json_t *re = json_object_get(r, "real_interval"), *im = json_object_get(r, "imag_interval");
+    double lo = -3, hi = -2.5, y;
+    int k;
+    (void) state;
+    /* R(-3) > 1 > R(-2.5): bisection on R(x) - 1 */
+    for (k = 0; k < 200; k++) {
+        double m = (lo + hi) / 2;
+        if (rk4_R(m) > 1) lo = m; else hi = m;
+    }
+    assert_true(fabs(end_value(re, 0) - lo) < 1e-12);
+    assert_string_equal(json_string_value(json_object_get(json_array_get(re, 0), "minpoly")), "q^3 + 4*q^2 + 12*q + 24");
+    assert_int_equal(json_integer_value(json_array_get(re, 1)), 0);
+    /* |R(iy)|^2 - 1 = y^6 (y^2 - 8)/576 */
+    y = sqrt(8.0);
+    assert_true(fabs(end_value(im, 1) - y) < 1e-12);
+    assert_true(fabs(end_value(im, 0) + y) < 1e-12);
+    assert_string_equal(json_string_value(json_object_get(json_array_get(im, 1), "minpoly")), "q^2 - 8");
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    assert_string_equal(json_string_value(json_object_get(r, "limit_at_infinity")), "inf");
+    json_decref(doc);
+}
+
+/* rho of BDFk (coefficient of lambda^j in rho[j]), from sum_{j=1..k} (1/j) nabla^j y[n+1] */
+static void bdf_rho(fmpq_poly_t rho, int k)
+{
+    int j, m;
+    fmpq_t c;
+    fmpq_init(c);
+    fmpq_poly_zero(rho);
+    for (j = 1; j <= k; j++) {
+        fmpz_t b;
+        fmpz_init(b);
+        for (m = 0; m <= j; m++) {
+            fmpq_t old;
+            fmpq_init(old);
+            fmpz_bin_uiui(b, (ulong) j, (ulong) m);
+            fmpq_set_fmpz_frac(c, b, (fmpz_t) {j});
+            if (m % 2) fmpq_neg(c, c);
+            fmpq_poly_get_coeff_fmpq(old, rho, k - m);
+            fmpq_add(old, old, c);
+            fmpq_poly_set_coeff_fmpq(rho, k - m, old);
+            fmpq_clear(old);
+        }
+        fmpz_clear(b);
+    }
+    fmpq_clear(c);
+}
+
+/* alpha by a dense scan of the locus z = rho(e^{i phi}) / e^{i k phi} */
+static double bdf_alpha_scan(int k)
+{
+    fmpq_poly_t rho;
+    double c[8] = {0}, best = 90;
+    long i, N = 400000;
+    int j;
+    fmpq_poly_init(rho);
+    bdf_rho(rho, k);
+    for (j = 0; j <= k; j++) {
+        fmpq_t x;
+        fmpq_init(x);
+        fmpq_poly_get_coeff_fmpq(x, rho, j);
+        c[j] = fmpq_get_d(x);
+        fmpq_clear(x);
+    }
+    for (i = 1; i < N; i++) {
+        double phi = PI_D * (double) i / (double) N;
+        double complex l = cexp(I * phi), z = 0;
+        for (j = k; j >= 0; j--) z = z * l + c[j];
+        z /= cpow(l, k);
+        if (creal(z) < 0) {
+            double a = atan(fabs(cimag(z)) / -creal(z)) * 180 / PI_D;
+            if (a < best) best = a;
+        }
+    }
+    fmpq_poly_clear(rho);
+    return best;
+}
+
+static void test_bdf_alpha(void **state)
+{
+    static const double table[] = {86.03, 73.35, 51.84, 17.84};   /* Hairer-Wanner II, Table V.2.3 */
+    int k;
+    (void) state;
+    for (k = 3; k <= 6; k++) {
+        char rel[80];
+        json_t *r, *doc;
+        double a, scan = bdf_alpha_scan(k);
+        snprintf(rel, sizeof rel, "cases/complex/bdf%d-astability.case", k);
+        doc = run(rel, &r);
+        a = json_real_value(json_object_get(r, "alpha_degrees_approx"));
+        assert_true(fabs(a - table[k - 3]) < 0.005);
+        assert_true(fabs(a - scan) < 1e-4);
+        assert_false(json_is_true(json_object_get(r, "a_stable")));
+        assert_true(json_is_object(json_object_get(r, "alpha_degrees")));
+        json_decref(doc);
+    }
+}
+
+/* max |root| of rho(lambda)/(lambda - 1), certified by Arb */
+static int bdf_zero_stable(int k)
+{
+    fmpq_poly_t rho, d, qq;
+    fmpz_poly_t z;
+    acb_ptr r;
+    arb_t ab, one;
+    slong i, n;
+    int ok = 1;
+    fmpq_poly_init(rho); fmpq_poly_init(d); fmpq_poly_init(qq);
+    fmpz_poly_init(z);
+    arb_init(ab); arb_init(one);
+    bdf_rho(rho, k);
+    fmpq_poly_set_coeff_si(d, 1, 1);
+    fmpq_poly_set_coeff_si(d, 0, -1);
+    fmpq_poly_div(qq, rho, d);
+    fmpq_poly_get_numerator(z, qq);
+    n = fmpz_poly_degree(z);
+    r = _acb_vec_init(n);
+    arb_fmpz_poly_complex_roots(r, z, 0, 128);
+    arb_one(one);
+    for (i = 0; i < n; i++) {
+        acb_abs(ab, r + i, 128);
+        if (!arb_lt(ab, one)) ok = 0;
+    }
+    _acb_vec_clear(r, n);
+    arb_clear(ab); arb_clear(one);
+    fmpq_poly_clear(rho); fmpq_poly_clear(d); fmpq_poly_clear(qq);
+    fmpz_poly_clear(z);
+    return ok;
+}
+
+static void test_bdf_zero_stability(void **state)
+{
+    int k;
+    (void) state;
+    for (k = 1; k <= 7; k++) {
+        char rel[80];
+        json_t *r, *doc;
+        const json_t *re;
+        snprintf(rel, sizeof rel, "cases/complex/bdf%d-astability.case", k);
+        doc = run(rel, &r);
+        re = json_object_get(r, "real_interval");
+        assert_int_equal(bdf_zero_stable(k), k <= 6);
+        if (k <= 6) {
+            /* zero-stable, and the whole negative real axis (A(0) for every k <= 6) */
+            assert_true(json_is_array(re));
+            assert_true(end_value(re, 0) == -INFINITY);
+            assert_int_equal(json_integer_value(json_array_get(re, 1)), 0);
+            /* rho's spurious roots vanish as z -> inf: sigma = lambda^k */
+            assert_int_equal(json_integer_value(json_object_get(r, "limit_at_infinity")), 0);
+            assert_int_equal(json_is_true(json_object_get(r, "a_stable")), k <= 2);
+            assert_int_equal(json_is_true(json_object_get(r, "l_stable")), k <= 2);
+        } else {
+            assert_true(json_is_null(re));
+        }
+        json_decref(doc);
+    }
+}
+
+static void test_a_and_l_stability(void **state)
+{
+    static const struct { const char *rel; int limit; int l_stable; } c[] = {
+        {"cases/complex/trapezoid-astability.case", 1, 0},          /* R(inf) = -1 */
+        {"cases/complex/implicit-midpoint-astability.case", 1, 0},  /* the same R */
+        {"cases/complex/radau-iia3-astability.case", 0, 1},         /* deg N < deg D */
+    };
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        json_t *r, *doc = run(c[i].rel, &r);
+        const json_t *im = json_object_get(r, "imag_interval"), *re = json_object_get(r, "real_interval");
+        assert_true(json_is_true(json_object_get(r, "a_stable")));
+        assert_int_equal(json_integer_value(json_object_get(r, "limit_at_infinity")), c[i].limit);
+        assert_int_equal(json_is_true(json_object_get(r, "l_stable")), c[i].l_stable);
+        assert_int_equal(json_integer_value(json_object_get(r, "alpha_degrees")), 90);
+        assert_true(end_value(im, 0) == -INFINITY && end_value(im, 1) == INFINITY);
+        assert_true(end_value(re, 0) == -INFINITY);
+        json_decref(doc);
+    }
+}
+
+static void test_adams(void **state)
+{
+    json_t *r, *doc;
+    const json_t *e;
+    (void) state;
+    doc = run("cases/complex/adams-astability.case", &r);
+    assert_int_equal(json_integer_value(json_array_get(json_object_get(r, "real_interval"), 0)), -1);
+    json_decref(doc);
+    doc = run("cases/complex/adams-bashforth3-astability.case", &r);
+    e = json_array_get(json_object_get(r, "real_interval"), 0);
+    assert_string_equal(json_string_value(json_object_get(e, "exact")), "-6/11");
+    json_decref(doc);
+    doc = run("cases/complex/adams-moulton2-astability.case", &r);
+    assert_int_equal(json_integer_value(json_array_get(json_object_get(r, "real_interval"), 0)), -6);
+    /* (4 + sqrt 21)/5 */
+    assert_true(fabs(json_real_value(json_object_get(json_object_get(r, "limit_at_infinity"), "approx"))
+                     - (4 + sqrt(21.0)) / 5) < 1e-12);
+    json_decref(doc);
+}
+
+/* bad requests: exit-2 style errors */
+static void test_errors(void **state)
+{
+    int code, outcome;
+    json_t *doc;
+    (void) state;
+    doc = tu_run_text("param q\nparam w\nchar lambda - 1 - q*w\nanalyse astability\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+    doc = tu_run_text("param q\nparam w\nchar lambda - 1 - q*w\nanalyse astability q\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+    doc = tu_run_text("param q\nchar lambda - 1 - q\nanalyse astability r\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+    /* forward Euler from a char line: the disc |1 + z| <= 1, real [-2, 0] */
+    doc = tu_run_text("param q\nchar lambda - 1 - q\nanalyse astability\n", NULL, &outcome, NULL);
+    assert_int_equal(json_integer_value(json_array_get(json_object_get(json_array_get(json_object_get(doc, "results"), 0),
+                                                                       "real_interval"), 0)), -2);
+    json_decref(doc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rk4),
+        cmocka_unit_test(test_bdf_alpha),
+        cmocka_unit_test(test_bdf_zero_stability),
+        cmocka_unit_test(test_a_and_l_stability),
+        cmocka_unit_test(test_adams),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
