@@ -28,6 +28,7 @@
 #include "analysis/registry.h"
 #include "stability/schur_complex.h"
 #include "util/polyfmt.h"
+#include "recstab/budget.h"
 
 /* p = sum_k C[k](lambda) z^k */
 typedef struct {
@@ -432,6 +433,7 @@ static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc
         fmpq_init(x);
         rational_between(x, i == 0 ? NULL : crit + i / 2 - 1, i / 2 == ncrit ? NULL : crit + i / 2);
         r = status_line(pst + i, P, e, x, err);
+        if (r == RS_OK) r = rs_budget_check(err, "astability");
         pdec[i] = 1;
         if (fmpq_is_zero(x)) start = i;
         fmpq_clear(x);
@@ -733,9 +735,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
     const char *name = run->c->params[req->u.astab.param].name;
-    const char *keep[1];
-    rs_assign_t *as;
-    slong na, tv = req->u.astab.param, k;
+    slong tv = req->u.astab.param, k;
     rs_variant_t *v;
     const rs_scheme_struct *s;
     zpoly_t P;
@@ -745,19 +745,9 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     int r, lin_decided = 0, lin_astable = 0, one_decided = 0, one_astable = 0, a_stable = -1;
     rs_status_t st_m1 = RS_STATUS_UNSTABLE;
     fmpq_t zr, zi;
-    keep[0] = name;
-    rs_run_assignments(run, &as, &na, keep, 1, NULL, 0);
-    r = rs_run_variant(&v, run, as, na);
-    rs_assign_free(as, na);
+    r = rs_run_variant_one_free(&v, run, q, req->rest, tv, "astability");
     if (r != RS_OK) return r;
     s = v->s;
-    if (rs_run_count_free(v->cp->p, s, tv) > 0) {
-        char *fp = rs_run_free_params(v);
-        char msg[400];
-        snprintf(msg, sizeof msg, "astability needs the other parameters set to numbers; still symbolic: %s", fp);
-        free(fp);
-        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "%s", msg);
-    }
     P.K = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
     P.n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
     if (P.K < 1 || P.n < 1)
@@ -990,6 +980,14 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "a_stable", json_null());
         json_object_set_new(o, "a_stable_note", json_string(
             "undecided: neither linear in z nor a one-step method (degree 1 in lambda)"));
+    }
+    if (riv.empty || !riv.lo_inf) {
+        /* A(alpha) for any alpha >= 0 needs the whole negative real axis (A(0), Widlund) */
+        json_object_set_new(o, "alpha_degrees", json_null());
+        json_object_set_new(o, "alpha_degrees_approx", json_null());
+        json_object_set_new(o, "alpha_note", json_string(
+            "not A(0)-stable: the real interval does not reach -inf, so no sector |arg(-z)| < alpha lies in the region"));
+        json_object_del(o, "alpha_degrees_certified");
     }
     if (!json_object_get(o, "alpha_degrees")) {
         json_object_set_new(o, "alpha_degrees", a_stable == 1 ? json_integer(90) : json_null());

@@ -86,27 +86,15 @@ int rs_an_limit(rs_run_t *run, const rs_an_req_t *req)
     const rs_request_t *q = req->q;
     const char *rest = req->rest;
     const char *name = run->c->params[req->u.limit.param].name;
-    const char *keep[1];
-    rs_assign_t *a;
-    slong na, tv = req->u.limit.param, d, k, j, dl;
+    slong tv = req->u.limit.param, d, k, j, dl;
     rs_variant_t *v;
     const rs_scheme_struct *s;
     int to_inf = req->u.limit.to_inf, r;
     fmpz_poly_t c;
     json_t *o, *roots;
-    keep[0] = name;
-    rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
-    r = rs_run_variant(&v, run, a, na);
-    rs_assign_free(a, na);
+    r = rs_run_variant_one_free(&v, run, q, rest, tv, "limit");
     if (r != RS_OK) return r;
     s = v->s;
-    if (rs_run_count_free(v->cp->p, s, tv) > 0) {
-        char *fp = rs_run_free_params(v);
-        char msg[400];
-        snprintf(msg, sizeof msg, "limit needs the other parameters set to numbers; still symbolic: %s", fp);
-        free(fp);
-        return rs_req_error(run, q, rest, RS_ERR_INPUT, "%s", msg);
-    }
     d = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
     dl = v->cp->degree;
     fmpz_poly_init(c);

@@ -56,6 +56,11 @@ int rs_run_assignments(rs_run_t *run, rs_assign_t **out, slong *nout,
                        const char *const *keep, slong nkeep,
                        const rs_assign_t *extra, slong nextra);
 void rs_assign_free(rs_assign_t *a, slong n);
+/* The variant at the case's set values with parameter tv kept symbolic; an
+ * input error at `at` ("WHAT needs the other parameters set to numbers")
+ * when another parameter is still free (run.c). */
+int rs_run_variant_one_free(rs_variant_t **v, rs_run_t *run, const rs_request_t *q, const char *at, slong tv,
+                            const char *what);
 /* Cached: scheme + charpoly with the assignments substituted. */
 int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slong n);
 /* Top degree in lambda of det A (the degree of p plus the power of lambda

@@ -1054,3 +1054,27 @@ const char *rs_an_opt_choice(const rs_an_req_t *req, const char *key)
             return req->def->opts[k].choices[req->opt[k].at != NULL ? req->opt[k].num : 0];
     return NULL;
 }
+
+/* The variant at the case's set values with parameter tv kept symbolic; an
+ * input error at `at` naming `what` when another parameter is still free. */
+int rs_run_variant_one_free(rs_variant_t **v, rs_run_t *run, const rs_request_t *q, const char *at, slong tv,
+                            const char *what)
+{
+    const char *keep[1];
+    rs_assign_t *a;
+    slong na;
+    int r;
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+    r = rs_run_variant(v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    if (rs_run_count_free((*v)->cp->p, (*v)->s, tv) > 0) {
+        char *fp = rs_run_free_params(*v);
+        char msg[400];
+        snprintf(msg, sizeof msg, "%s needs the other parameters set to numbers; still symbolic: %s", what, fp);
+        free(fp);
+        return rs_req_error(run, q, at, RS_ERR_INPUT, "%s", msg);
+    }
+    return RS_OK;
+}

@@ -95,26 +95,35 @@ void rs_schur_complex_norm(fmpz_poly_t P, const fmpq_poly_t re, const fmpq_poly_
     fmpq_poly_clear(a); fmpq_poly_clear(b);
 }
 
+/* (lr + i li) = 1 / (the leading coefficient of re + i im), which is non-zero */
+static void cinv_lead(fmpq_t lr, fmpq_t li, const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    slong n = cdeg(re, im);
+    fmpq_t d;
+    fmpq_init(d);
+    fmpq_poly_get_coeff_fmpq(lr, re, n);
+    fmpq_poly_get_coeff_fmpq(li, im, n);
+    fmpq_mul(d, lr, lr);
+    fmpq_addmul(d, li, li);
+    fmpq_div(lr, lr, d);
+    fmpq_div(li, li, d);
+    fmpq_neg(li, li);
+    fmpq_clear(d);
+}
+
 void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t are, const fmpq_poly_t aim,
                           const fmpq_poly_t bre, const fmpq_poly_t bim)
 {
     fmpq_poly_t ar, ai, br, bi, tr, ti;
-    fmpq_t lr, li, cr, ci, d;
+    fmpq_t lr, li, cr, ci;
     fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(br); fmpq_poly_init(bi);
     fmpq_poly_init(tr); fmpq_poly_init(ti);
-    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci); fmpq_init(d);
+    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci);
     fmpq_poly_set(ar, are); fmpq_poly_set(ai, aim);
     fmpq_poly_set(br, bre); fmpq_poly_set(bi, bim);
     while (cdeg(br, bi) >= 0) {
         slong db = cdeg(br, bi);
-        /* 1 / lead(b) */
-        fmpq_poly_get_coeff_fmpq(lr, br, db);
-        fmpq_poly_get_coeff_fmpq(li, bi, db);
-        fmpq_mul(d, lr, lr);
-        fmpq_addmul(d, li, li);
-        fmpq_div(lr, lr, d);
-        fmpq_div(li, li, d);
-        fmpq_neg(li, li);
+        cinv_lead(lr, li, br, bi);
         /* a = a mod b */
         while (cdeg(ar, ai) >= db) {
             slong da = cdeg(ar, ai);
@@ -138,20 +147,13 @@ void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t ar
     }
     /* a is the gcd: make it monic */
     if (cdeg(ar, ai) >= 0) {
-        slong da = cdeg(ar, ai);
-        fmpq_poly_get_coeff_fmpq(lr, ar, da);
-        fmpq_poly_get_coeff_fmpq(li, ai, da);
-        fmpq_mul(d, lr, lr);
-        fmpq_addmul(d, li, li);
-        fmpq_div(lr, lr, d);
-        fmpq_div(li, li, d);
-        fmpq_neg(li, li);
+        cinv_lead(lr, li, ar, ai);
         cscale(ar, ai, lr, li, ar, ai);
     }
     fmpq_poly_swap(gre, ar); fmpq_poly_swap(gim, ai);
     fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(br); fmpq_poly_clear(bi);
     fmpq_poly_clear(tr); fmpq_poly_clear(ti);
-    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(d);
+    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci);
 }
 
 int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,

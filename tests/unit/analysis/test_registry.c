@@ -177,7 +177,7 @@ static void test_bad(void **state)
     bad(&f, "radius method=exact", RS_ERR_INPUT, 16, "method= expects certified, companion or double, found 'exact'");
     bad(&f, "routh now", RS_ERR_INPUT, 15, "expected end of line after routh, found 'now'");
     bad(&f, "frobnicate", RS_ERR_INPUT, 9, "expected an analysis (charpoly, bilinear, routh, hurwitz, jury, "
-        "stability, region, limit, claim, radius, modes, simulate, sweep, map, expect), found 'frobnicate'");
+        "stability, region, limit, astability, claim, radius, modes, simulate, sweep, map, expect), found 'frobnicate'");
     /* model-dependent checks up front: parameter names */
     bad(&f, "region q", RS_ERR_INPUT, 16, "'q' is not a parameter");
     bad(&f, "region w at w=1", RS_ERR_INPUT, 16, "the region parameter 'w' is also given a value");
