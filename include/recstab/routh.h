@@ -67,6 +67,16 @@ void rs_routh_clear(rs_routh_t r);
  * p is the characteristic polynomial in lambda (not q); p != 0. */
 int rs_routh_fmpz_poly(rs_routh_t r, const fmpz_poly_t p, rs_error_t err);
 
+/* The same count for a REGULAR array only, in integer arithmetic: the
+ * fraction-free (Bareiss) rows, whose first entries are the Hurwitz minors,
+ * with exact divisions and no gcds (src/stability/routh_int.c; degree 500:
+ * about a second instead of a minute).  Fills rc (inside/outside) and
+ * returns RS_OK; returns RS_ERR_UNDECIDED, rc untouched, when q = bilinear(p)
+ * has a degree drop, q(0) = 0, a zero pivot or a zero row -- the caller then
+ * runs rs_routh_fmpz_poly, which handles those exactly.  Budget stops are
+ * returned as such. */
+int rs_routh_int_count(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err);
+
 /* Generic fraction-free Routh array of a multivariate q (variable `var` is z).
  * rows[i] has rowlen[i] entries, polynomials in the parameters (z absent).
  * Row i >= 2 is T_i[j] = (T_{i-1}[0] T_{i-2}[j+1] - T_{i-2}[0] T_{i-1}[j+1])
