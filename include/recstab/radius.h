@@ -24,12 +24,18 @@
 #include <acb_poly.h>
 #include <acb_mat.h>
 #include "recstab/error.h"
+#include "recstab/rootcount.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 #define RS_RADIUS_MAX_PREC_DEFAULT 65536
+
+/* Above this degree the high-degree paths run: Aberth seeds, the count of
+ * the verdict from certified root balls cross-checked with Schur-Cohn
+ * (rs_radius_count_balls), Routh as an integer PRS. */
+#define RS_RADIUS_HIGH_DEGREE 64
 
 typedef struct {
     arb_t lower;          /* certified: lower <= rho */
@@ -189,6 +195,13 @@ char *rs_radius_arf_str(const arf_t x, slong n, arf_rnd_t rnd);
 char *rs_radius_arb_str(const arb_t x, slong n);
 char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n);
 char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
+
+/* Count of the roots inside / outside the unit circle read off r's balls
+ * (src/numeric/outer.c): returns 1 and fills rc (degree, inside, outside;
+ * nothing on the circle) when r holds `degree` isolating balls (isolated = 1)
+ * each strictly inside or strictly outside |lambda| = 1; else 0 (rc
+ * untouched): some ball meets the circle, and an exact count must decide. */
+int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree);
 
 /* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
 const char *rs_radius_verdict(const rs_radius_t rr);

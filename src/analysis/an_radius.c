@@ -6,6 +6,7 @@
 #include "analysis/registry.h"
 #include "lower/recurrence.h"
 #include "recstab/cosim.h"
+#include "recstab/jury.h"
 
 /* ---- radius ---------------------------------------------------------------------- */
 
@@ -38,6 +39,48 @@ static slong radius_refine(rs_radius_t rr, rs_run_t *run, const fmpz_poly_t p, c
     }
     rs_radius_clear(r2);
     return got;
+}
+
+/* The count above degree 64.  Schur-Cohn (exact, on p) gives it; when every
+ * certified root ball lies off the unit circle the balls count too, and the
+ * two must agree (the Routh array costs 15-45 s at degree 500, Schur-Cohn
+ * about 1 s).  A ball on the circle leaves it to Routh + Schur-Cohn as below
+ * degree 65.  Says which in count_methods / count_agree. */
+static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, const rs_radius_t rr,
+                             json_t *o)
+{
+    rs_rootcount_t rb;
+    rs_jury_t ju;
+    json_t *t;
+    int r, agree;
+    if (!rs_radius_count_balls(rb, rr, fmpz_poly_degree(p))) {
+        t = json_object();
+        r = rs_run_exact_count(rc, run, p, t);
+        if (r == RS_OK) {
+            json_object_set(o, "count_methods", json_object_get(t, "methods"));
+            json_object_set(o, "count_agree", json_object_get(t, "agree"));
+            if (json_object_get(t, "schur_cohn_count") != NULL)
+                json_object_set(o, "schur_cohn_count", json_object_get(t, "schur_cohn_count"));
+        }
+        json_decref(t);
+        return r;
+    }
+    rs_jury_init(ju);
+    r = rs_jury_fmpz_poly(ju, p, run->err);
+    if (r == RS_OK) {
+        agree = rs_rootcount_equal(rb, ju->count);
+        *rc = *ju->count;
+        json_object_set_new(o, "count_methods", json_pack("[ss]", "certified root balls", "schur-cohn"));
+        json_object_set_new(o, "count_agree", json_boolean(agree));
+        if (!agree) {
+            json_t *d = json_object();
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+            rs_json_add_count(d, rb);
+            json_object_set_new(o, "ball_count", d);
+        }
+    }
+    rs_jury_clear(ju);
+    return r;
 }
 
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
@@ -113,7 +156,10 @@ int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
     }
     if (r == RS_OK) {
         /* the exact verdict at the same point decides; the radius must agree */
-        r = rs_run_exact_count(rc, run, p, NULL);
+        if (fmpz_poly_degree(p) > RS_RADIUS_HIGH_DEGREE && strcmp(method, "double") != 0)
+            r = radius_count_high(rc, run, p, rr, o);
+        else
+            r = rs_run_exact_count(rc, run, p, NULL);
     }
     if (r == RS_OK) {
         rs_status_t st;
