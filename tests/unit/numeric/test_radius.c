@@ -904,6 +904,44 @@ static void test_random_degree100(void **state)
     fmpz_poly_clear(p);
 }
 
+/* rs_radius_count_balls on certified radii at degree 80: 2 lambda^80 - 1
+ * has every root at 2^(-1/80) < 1 (closed form): 80 inside; lambda^80 - 3
+ * at 3^(1/80) > 1: 80 outside; (lambda^80 - 3)(lambda - 1) has the root 1
+ * on the circle, whose (exact, point) ball meets it: no count. */
+static void test_count_balls(void **state)
+{
+    fmpz_poly_t p, f;
+    rs_radius_t r;
+    rs_rootcount_t rc;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(f);
+    rs_radius_init(r);
+    rs_error_init(err);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    fmpz_poly_set_coeff_si(p, 80, 2);
+    assert_int_equal(rs_radius_fmpz_poly(r, p, 15, 0, err), RS_OK);
+    assert_int_equal(rs_radius_count_balls(rc, r, 80), 1);
+    assert_int_equal(rc->inside, 80);
+    assert_int_equal(rc->outside, 0);
+    fmpz_poly_set_coeff_si(p, 0, -3);
+    fmpz_poly_set_coeff_si(p, 80, 1);
+    assert_int_equal(rs_radius_fmpz_poly(r, p, 15, 0, err), RS_OK);
+    assert_int_equal(rs_radius_count_balls(rc, r, 80), 1);
+    assert_int_equal(rc->inside, 0);
+    assert_int_equal(rc->outside, 80);
+    assert_int_equal(rs_radius_count_balls(rc, r, 81), 0);   /* wrong degree */
+    fmpz_poly_set_coeff_si(f, 0, -1);
+    fmpz_poly_set_coeff_si(f, 1, 1);
+    fmpz_poly_mul(p, p, f);
+    assert_int_equal(rs_radius_fmpz_poly(r, p, 15, 0, err), RS_OK);
+    assert_int_equal(rs_radius_count_balls(rc, r, 81), 0);
+    rs_radius_clear(r);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -931,6 +969,7 @@ int main(void)
         cmocka_unit_test(test_aberth_binomial),
         cmocka_unit_test(test_high_degree_binomial),
         cmocka_unit_test(test_random_degree100),
+        cmocka_unit_test(test_count_balls),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();

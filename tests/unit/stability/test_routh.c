@@ -492,6 +492,69 @@ static void test_mpoly_singular(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* rs_routh_int_count.  Closed form: p = (2 l + 5)(l - 3) prod_{k=1..30}
+ * (31 l - k) has the roots k/31 (inside), 3 and -5/2 (outside): 30 in, 2
+ * out, and its array is regular (no circle roots, q(0) != 0).  Then the
+ * rational generalised array (an independent code path: remainders over Q,
+ * Sturm signs) on random polynomials: equal counts wherever the integer
+ * array is regular, and a singular one is refused, not miscounted. */
+static void test_int_count(void **state)
+{
+    fmpz_poly_t p, f;
+    rs_rootcount_t rc;
+    rs_routh_t r;
+    rs_error_t err;
+    flint_rand_t st;
+    slong k, it, regular = 0;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(f);
+    rs_error_init(err);
+    fmpz_poly_set_coeff_si(p, 0, 5);
+    fmpz_poly_set_coeff_si(p, 1, 2);
+    fmpz_poly_set_coeff_si(f, 0, -3);
+    fmpz_poly_set_coeff_si(f, 1, 1);
+    fmpz_poly_mul(p, p, f);
+    for (k = 1; k <= 30; k++) {
+        fmpz_poly_set_coeff_si(f, 0, -k);
+        fmpz_poly_set_coeff_si(f, 1, 31);
+        fmpz_poly_mul(p, p, f);
+    }
+    assert_int_equal(rs_routh_int_count(rc, p, err), RS_OK);
+    assert_int_equal(rc->degree, 32);
+    assert_int_equal(rc->inside, 30);
+    assert_int_equal(rc->outside, 2);
+    assert_int_equal(rc->on, 0);
+    /* lambda^2 - 1: roots +-1, q(0) = 0 and a degree drop: refused */
+    fmpz_poly_zero(f);
+    fmpz_poly_set_coeff_si(f, 0, -1);
+    fmpz_poly_set_coeff_si(f, 2, 1);
+    assert_int_equal(rs_routh_int_count(rc, f, err), RS_ERR_UNDECIDED);
+    /* lambda^2 + 1: roots +-i on the circle, a zero row: refused */
+    fmpz_poly_set_coeff_si(f, 0, 1);
+    assert_int_equal(rs_routh_int_count(rc, f, err), RS_ERR_UNDECIDED);
+    flint_randinit(st);
+    for (it = 0; it < 200; it++) {
+        slong d = 1 + it % 40;
+        do
+            fmpz_poly_randtest(p, st, d + 1, 3 + it % 6);
+        while (fmpz_poly_degree(p) < 1);
+        if (rs_routh_int_count(rc, p, err) != RS_OK)
+            continue;
+        regular++;
+        rs_routh_init(r);
+        assert_int_equal(rs_routh_fmpz_poly(r, p, err), RS_OK);
+        assert_int_equal(r->count->on, 0);
+        assert_int_equal(rc->inside, r->count->inside);
+        assert_int_equal(rc->outside, r->count->outside);
+        rs_routh_clear(r);
+    }
+    assert_true(regular >= 100);
+    flint_randclear(st);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -505,6 +568,7 @@ int main(void)
         cmocka_unit_test(test_mpoly_forward_euler),
         cmocka_unit_test(test_mpoly_vs_rational),
         cmocka_unit_test(test_mpoly_singular),
+        cmocka_unit_test(test_int_count),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();

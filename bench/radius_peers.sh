@@ -1,0 +1,73 @@
+#!/bin/sh
+# radius_peers.sh -- certified radius at high degree, recstab beside PARI/GP
+# polroots and MPSolve, each a whole process, one thread, in one run.
+#   sh bench/radius_peers.sh [BIN] [POLYS] [DIGITS]
+# POLYS: names understood by bench/radius_peers_gen.py (default: random
+# degree 12..500, clustered 100 and 500, Wilkinson-type 20 and 40, 2x^N - 1
+# for N = 100 and 500); DIGITS default "30 128".  Commands timed:
+#   BIN --analyse 'radius digits=D' NAME.case
+#   gp -q -f -D parisizemax=2G  (realprecision D; polroots; max |root|)
+#   mpsolve -j1 -Ga -o D -p EXPR          (guaranteed inclusions)
+# Each once, `/usr/bin/time -f '%e %U %S'`: wall s and CPU (user + system)
+# s; PEER_TIMEOUT seconds of wall time each (default 120; "timeout").  A peer
+# that is not installed (Debian pari-gp, mpsolve; `make bench` installs
+# them) prints "-".  The last columns are recstab / peer CPU ratios (the
+# issue's table; below 1: recstab faster), then rho from each tool (first
+# 12 digits) so that a wrong answer shows.  Work files: build/radius-peers/.
+bin=${1:-build/recstab}
+polys=${2:-"random-12 random-50 random-100 random-200 random-500 cluster-100 cluster-500 wilkinson-20 wilkinson-40 pow-100 pow-500"}
+digs=${3:-"30 128"}
+tmo=${PEER_TIMEOUT:-120}
+dir=build/radius-peers
+here=$(dirname "$0")
+mkdir -p "$dir"
+python3 "$here/radius_peers_gen.py" "$dir" $polys || exit 1
+have_gp=0; command -v gp > /dev/null 2>&1 && have_gp=1
+have_mps=0; command -v mpsolve > /dev/null 2>&1 && have_mps=1
+
+# run OUT CMD...: prints "wall cpu" (or "timeout" / "fail")
+run() {
+    out=$1; shift
+    timeout "$tmo" /usr/bin/time -o "$dir/time" -f '%e %U %S' "$@" > "$out" 2> "$dir/err"
+    rc=$?
+    if [ $rc -eq 124 ]; then echo timeout; return; fi
+    awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }' "$dir/time" | tail -1
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else printf "-" }'; }
+
+printf '%-14s %6s | %-15s | %-15s | %-15s | %8s %8s | %s\n' polynomial digits \
+    "recstab wall/cpu" "PARI wall/cpu" "MPSolve wall/cpu" "rs/PARI" "rs/MPS" "rho: recstab PARI MPSolve"
+for P in $polys; do
+    for D in $digs; do
+        r=$(run "$dir/rs.out" "$bin" --analyse "radius digits=$D" "$dir/$P.case")
+        rrho=$(sed -n 's/^ *rho  *//p' "$dir/rs.out" | head -1 | cut -c1-14)
+        g="-"; grho="-"
+        if [ $have_gp = 1 ]; then
+            printf 'default(realprecision,%s);p=%s;r=polroots(p);print(vecmax(abs(r)));\nquit\n' \
+                "$D" "$(cat "$dir/$P.expr")" > "$dir/gp.in"
+            g=$(run "$dir/gp.out" gp -q -f -D parisizemax=2000000000 "$dir/gp.in")
+            grho=$(head -1 "$dir/gp.out" | cut -c1-14)
+        fi
+        m="-"; mrho="-"
+        if [ $have_mps = 1 ]; then
+            m=$(run "$dir/mps.out" mpsolve -j1 -Ga -o "$D" -p "$(cat "$dir/$P.expr")")
+            mrho=$(python3 -c '
+import sys, re
+from decimal import Decimal, getcontext
+getcontext().prec = 40
+best = Decimal(0)
+for line in open(sys.argv[1]):
+    m = re.match(r"\s*\(\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*\)", line)
+    if m:
+        a, b = Decimal(m.group(1)), Decimal(m.group(2))
+        best = max(best, (a * a + b * b).sqrt())
+print(str(best)[:14])' "$dir/mps.out" 2> /dev/null)
+        fi
+        rc=$(echo "$r" | awk '{ print $2 }')
+        gc=$(echo "$g" | awk '{ print $2 }')
+        mc=$(echo "$m" | awk '{ print $2 }')
+        printf '%-14s %6s | %-15s | %-15s | %-15s | %8s %8s | %s %s %s\n' "$P" "$D" \
+            "$(echo "$r" | tr ' ' /)" "$(echo "$g" | tr ' ' /)" "$(echo "$m" | tr ' ' /)" \
+            "$(ratio "$rc" "$gc")" "$(ratio "$rc" "$mc")" "$rrho" "$grho" "$mrho"
+    done
+done
