@@ -41,7 +41,7 @@ DEB_WHY := \
   python3-pytest:make_check_tests_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
 FUZZ_WHY := libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz
 VALGRIND_WHY := valgrind:make_check-valgrind
-BENCH_WHY := qepcad:the_QEPCAD_B_peer_of_make_bench
+BENCH_WHY := qepcad:the_QEPCAD_B_peer_of_make_bench pari-gp:the_PARI_peer_of_make_bench mpsolve:the_MPSolve_peer_of_make_bench
 DEB_PKGS := $(foreach p,$(DEB_WHY),$(firstword $(subst :, ,$(p))))
 
 # $(call deb-install,WHO,PKG:WHY...): apt-get install of the missing ones,
