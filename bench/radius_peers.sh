@@ -18,7 +18,7 @@ bin=${1:-build/recstab}
 polys=${2:-"random-12 random-50 random-100 random-200 random-500 cluster-100 cluster-500 wilkinson-20 wilkinson-40 pow-100 pow-500"}
 digs=${3:-"30 128"}
 tmo=${PEER_TIMEOUT:-120}
-dir=build/radius-peers
+dir=${PEERS_DIR:-build/radius-peers}
 here=$(dirname "$0")
 mkdir -p "$dir"
 python3 "$here/radius_peers_gen.py" "$dir" $polys || exit 1
