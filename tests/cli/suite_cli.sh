@@ -130,22 +130,21 @@ fi
 # 2^(-1/80) = 0.9913730... < 1 (closed form), stable; lambda^66 - 1 (plus
 # 0 lambda^67 to have degree 66 only): roots on the circle, the balls meet
 # it, so Routh + Schur-Cohn count (marginal: 66 simple circle roots).
-printf 'title binomial 80\nchar 2*lambda^80 - 1\n' > "$T/b80.case"
-"$RS" --json --analyse 'radius digits=20' "$T/b80.case" > "$T/out" 2>"$T/err"; rc=$?
-if [ "$rc" = 0 ] && python3 - "$T/out" <<'PY'
+# radius_high NAME CHAR PYTHON-ASSERTS: radius digits=20 of `char CHAR`
+# exits 0 and its JSON result r passes the asserts
+radius_high() {
+    printf 'title %s\nchar %s\n' "$1" "$2" > "$T/hd.case"
+    "$RS" --json --analyse 'radius digits=20' "$T/hd.case" > "$T/out" 2>"$T/err"; rc=$?
+    if [ "$rc" = 0 ] && python3 -c "
 import json, sys
-r = [x for x in json.load(open(sys.argv[1]))["results"] if x["analysis"] == "radius"][0]
-assert r["count_methods"] == ["certified root balls", "schur-cohn"], r
-assert r["count_agree"] is True and r["exact_status"] == "stable", r
-assert r["rho"].startswith("0.99137308746"), r["rho"]   # 2^(-1/80) = 0.99137308746...
-PY
-then ok "radius degree 80: count from certified balls + Schur-Cohn"; else fail "radius degree 80: exit $rc $(head -c 300 "$T/out") $(cat "$T/err")"; fi
-printf 'title circle 66\nchar lambda^66 - 1\n' > "$T/c66.case"
-"$RS" --json --analyse 'radius digits=20' "$T/c66.case" > "$T/out" 2>"$T/err"; rc=$?
-if [ "$rc" = 0 ] && python3 - "$T/out" <<'PY'
-import json, sys
-r = [x for x in json.load(open(sys.argv[1]))["results"] if x["analysis"] == "radius"][0]
-assert r["count_methods"] == ["routh (bilinear)", "schur-cohn"], r
-assert r["count_agree"] is True and r["exact_status"] == "marginal", r
-PY
-then ok "radius degree 66 on the circle: Routh + Schur-Cohn decide"; else fail "radius degree 66: exit $rc $(head -c 300 "$T/out") $(cat "$T/err")"; fi
+r = [x for x in json.load(open(sys.argv[1]))['results'] if x['analysis'] == 'radius'][0]
+$3" "$T/out"; then ok "radius $1"; else fail "radius $1: exit $rc $(head -c 300 "$T/out") $(cat "$T/err")"; fi
+}
+# 2^(-1/80) = 0.99137308746...
+radius_high "degree 80: count from certified balls + Schur-Cohn" "2*lambda^80 - 1" "
+assert r['count_methods'] == ['certified root balls', 'schur-cohn'], r
+assert r['count_agree'] is True and r['exact_status'] == 'stable', r
+assert r['rho'].startswith('0.99137308746'), r['rho']"
+radius_high "degree 66 on the circle: Routh + Schur-Cohn decide" "lambda^66 - 1" "
+assert r['count_methods'] == ['routh (bilinear)', 'schur-cohn'], r
+assert r['count_agree'] is True and r['exact_status'] == 'marginal', r"
