@@ -9,7 +9,9 @@
 #   gp -q -f -D parisizemax=2G  (realprecision D; polroots; max |root|)
 #   mpsolve -j1 -Ga -o D -p EXPR          (guaranteed inclusions)
 # Each once, `/usr/bin/time -f '%e %U %S'`: wall s and CPU (user + system)
-# s; PEER_TIMEOUT seconds of wall time each (default 120; "timeout").  A peer
+# s; PEER_TIMEOUT seconds of CPU each (ulimit -t, default 120; "limit"), and
+# ten times that of wall time.  The ratios are of CPU time: on a shared
+# machine the wall time measures the other jobs.  A peer
 # that is not installed (Debian pari-gp, mpsolve; `make bench` installs
 # them) prints "-".  The last columns are recstab / peer CPU ratios (the
 # issue's table; below 1: recstab faster), then rho from each tool (first
@@ -28,9 +30,10 @@ have_mps=0; command -v mpsolve > /dev/null 2>&1 && have_mps=1
 # run OUT CMD...: prints "wall cpu" (or "timeout" / "fail")
 run() {
     out=$1; shift
-    timeout "$tmo" /usr/bin/time -o "$dir/time" -f '%e %U %S' "$@" > "$out" 2> "$dir/err"
+    : > "$dir/time"
+    ( ulimit -t "$tmo"; timeout $((10 * tmo)) /usr/bin/time -o "$dir/time" -f '%e %U %S' "$@" > "$out" 2> "$dir/err" )
     rc=$?
-    if [ $rc -eq 124 ]; then echo timeout; return; fi
+    if [ $rc -eq 124 ] || [ $rc -ge 128 ] || grep -q signal "$dir/time"; then echo limit; return; fi
     awk '{ printf "%.3f %.3f\n", $1, $2 + $3 }' "$dir/time" | tail -1
 }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else printf "-" }'; }

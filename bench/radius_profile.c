@@ -6,11 +6,15 @@
  *       -ljansson -lmpfr -lgmp -lm
  *   /tmp/radius_profile DIGITS < coefficients     (c_0 .. c_d, one per line)
  *
- * Prints wall seconds (CLOCK_MONOTONIC, one run each) of: the squarefree
+ * Prints CPU seconds (CLOCK_PROCESS_CPUTIME_ID, one run each: the machine is
+ * shared, wall time is not the work) of: the squarefree
  * factorisation, the GSL double roots, rs_radius_double, the default certified
- * radius rs_radius_fmpz_poly, and the exact count the radius analysis runs
- * after it (rs_routh_fmpz_poly, rs_jury_fmpz_poly). */
+ * radius rs_radius_fmpz_poly, the count read off its balls
+ * (rs_radius_count_balls), and the exact counts (rs_routh_int_count, the
+ * rational rs_routh_fmpz_poly -- skipped with NO_RATIONAL_ROUTH=1 --, and
+ * rs_jury_fmpz_poly). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
 #include <flint/fmpz_poly_factor.h>
 #include "recstab/radius.h"
@@ -20,7 +24,7 @@
 static double now(void)
 {
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return (double) t.tv_sec + 1e-9 * (double) t.tv_nsec;
 }
 
@@ -49,11 +53,22 @@ int main(int argc, char **argv)
     printf("  rs_radius_double (GSL)     %8.3f s rc %d\n", now() - t, rc);
     t = now(); rc = rs_radius_fmpz_poly(r, p, digits, 0, err);
     printf("  rs_radius_fmpz_poly        %8.3f s rc %d, %ld bits\n", now() - t, rc, (long) r->prec);
+    {
+        rs_rootcount_t rb;
+        t = now(); rc = rs_radius_count_balls(rb, r, fmpz_poly_degree(p));
+        printf("  count from the balls       %8.3f s decisive %d (in %ld, out %ld)\n", now() - t, rc,
+               rc ? (long) rb->inside : -1L, rc ? (long) rb->outside : -1L);
+        t = now(); rc = rs_routh_int_count(rb, p, err);
+        printf("  exact count: routh int PRS %8.3f s rc %d\n", now() - t, rc);
+    }
     rs_radius_clear(r);
+    if (getenv("NO_RATIONAL_ROUTH") != NULL)
+        goto jury;
     rs_routh_init(ro);
     t = now(); rc = rs_routh_fmpz_poly(ro, p, err);
     printf("  exact count: routh         %8.3f s rc %d\n", now() - t, rc);
     rs_routh_clear(ro);
+jury:
     rs_jury_init(ju);
     t = now(); rc = rs_jury_fmpz_poly(ju, p, err);
     printf("  exact count: schur-cohn    %8.3f s rc %d\n", now() - t, rc);
