@@ -58,6 +58,11 @@ typedef struct {
     int partial;          /* 1 after an error return when lower/upper/rho still
                              hold a certified enclosure, only wider than
                              requested (nroots is then 0) */
+    slong nouter;         /* > 0: above degree 64 only this many roots, those
+                             whose balls may hold the largest modulus, were
+                             refined to the requested digits; the other balls
+                             are certified and isolating but coarser (about 60
+                             bits; rs_radius_outer_refine).  0: every root */
 } rs_radius_struct;
 typedef rs_radius_struct rs_radius_t[1];
 
@@ -202,6 +207,15 @@ char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
  * each strictly inside or strictly outside |lambda| = 1; else 0 (rc
  * untouched): some ball meets the circle, and an exact count must decide. */
 int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree);
+
+/* E: the deg f certified isolating balls of the roots of f (squarefree),
+ * from a low precision.  Refines those that may be of largest modulus to
+ * prec bits (Newton on midpoints), then certifies all deg f balls once at
+ * prec (_acb_poly_validate_roots).  Returns 1 with E replaced and *nouter
+ * = the number refined when every ball is isolating and the coarse ones
+ * still lie below the refined ones; else 0, E unchanged (also when more
+ * than a quarter of the roots are candidates: nothing to save). */
+int rs_radius_outer_refine(acb_ptr E, slong *nouter, const fmpz_poly_t f, slong prec);
 
 /* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
 const char *rs_radius_verdict(const rs_radius_t rr);

@@ -83,6 +83,42 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
     return r;
 }
 
+/* Only the roots that may be of largest modulus were refined to the digits
+ * (above degree 64): say so, with a certified bound on the others' moduli. */
+static void radius_outer_json(json_t *o, const rs_radius_t rr, slong digits)
+{
+    arb_t a, top, rest;
+    arf_t lb;
+    slong i;
+    char *s;
+    arb_init(a);
+    arb_init(top);
+    arb_init(rest);
+    arf_init(lb);
+    for (i = 0; i < rr->nroots; i++) {        /* top: the largest lower bound */
+        acb_abs(a, rr->roots + i, rr->prec);
+        arb_get_lbound_arf(lb, a, rr->prec);
+        if (i == 0 || arf_cmp(lb, arb_midref(top)) > 0) arb_set_arf(top, lb);
+    }
+    arb_zero(rest);
+    for (i = 0; i < rr->nroots; i++) {        /* rest: the balls wholly below it */
+        acb_abs(a, rr->roots + i, rr->prec);
+        if (arb_lt(a, top)) arb_max(rest, rest, a, rr->prec);
+    }
+    arb_get_ubound_arf(lb, rest, rr->prec);
+    arb_set_arf(rest, lb);
+    s = rs_radius_str_upper(rest, 10);   /* a bound, not a result: 10 digits */
+    json_object_set_new(o, "certified_outer_only", json_pack("{s:I,s:I,s:s,s:s}", "refined_roots", (json_int_t) rr->nouter,
+        "roots", (json_int_t) rr->nroots, "others_within", s,
+        "note", "only the roots that may be of largest modulus were certified to the requested digits; "
+        "the others are certified isolating balls (about 60 bits) inside |lambda| <= others_within"));
+    flint_free(s);
+    arb_clear(a);
+    arb_clear(top);
+    arb_clear(rest);
+    arf_clear(lb);
+}
+
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -152,6 +188,7 @@ int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
                 json_array_append_new(roots, z);
             }
             json_object_set_new(o, "roots", roots);
+            if (rr->nouter > 0) radius_outer_json(o, rr, digits);
         }
     }
     if (r == RS_OK) {

@@ -39,3 +39,110 @@ int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree)
     rc->outside = out;
     return 1;
 }
+
+/* rs_radius_outer_refine: the radius needs only the roots of largest
+ * modulus to the requested digits.  The caller has certified every root of
+ * f at a low precision (isolating balls E); here the roots whose ball may
+ * hold the largest modulus are refined by Newton's iteration on midpoints
+ * at prec, and then all d balls are certified again, once, by Arb's
+ * inclusion test at prec (_acb_poly_validate_roots: the other roots keep
+ * their low-precision midpoints, so their balls stay coarse).  One O(d^2)
+ * validation at prec replaces dozens of Durand-Kerner sweeps there. */
+int rs_radius_outer_refine(acb_ptr E, slong *nouter, const fmpz_poly_t f, slong prec)
+{
+    slong d = fmpz_poly_degree(f), i, k, ncand = 0;
+    char *cand = flint_calloc(d, 1);
+    acb_ptr R = _acb_vec_init(d);
+    acb_poly_t P;
+    acb_t y, dy, c;
+    arb_t a;
+    arf_t M, lb, ub;
+    mag_t mc, mr;
+    int ok = 0;
+
+    acb_poly_init(P);
+    acb_init(y);
+    acb_init(dy);
+    acb_init(c);
+    arb_init(a);
+    arf_init(M);
+    arf_init(lb);
+    arf_init(ub);
+    mag_init(mc);
+    mag_init(mr);
+    /* M = the largest lower bound of a modulus: a ball wholly below M
+     * cannot hold the largest root */
+    arf_zero(M);
+    for (i = 0; i < d; i++) {
+        acb_abs(a, E + i, MAG_BITS * 2);
+        arb_get_lbound_arf(lb, a, MAG_BITS * 2);
+        if (arf_cmp(lb, M) > 0)
+            arf_set(M, lb);
+    }
+    for (i = 0; i < d; i++) {
+        acb_abs(a, E + i, MAG_BITS * 2);
+        arb_get_ubound_arf(ub, a, MAG_BITS * 2);
+        cand[i] = arf_cmp(ub, M) >= 0;
+        ncand += cand[i];
+    }
+    /* roots all on one circle (lambda^n - c): nothing to save */
+    if (ncand > d / 4)
+        goto cleanup;
+    acb_poly_set_fmpz_poly(P, f, prec);
+    for (i = 0; i < d; i++) {
+        acb_get_mid(R + i, E + i);
+        if (!cand[i])
+            continue;
+        /* quadratic convergence from ~60 correct bits: a few steps */
+        for (k = 0; k < 24; k++) {
+            _acb_poly_evaluate2(y, dy, P->coeffs, d + 1, R + i, prec);
+            if (acb_contains_zero(dy))
+                goto cleanup;
+            acb_div(c, y, dy, prec);
+            acb_get_mid(c, c);
+            acb_sub(R + i, R + i, c, prec);
+            acb_get_mid(R + i, R + i);
+            /* stop once the step is below the last bits of R_i */
+            acb_get_mag(mc, c);
+            acb_get_mag_lower(mr, R + i);
+            mag_mul_2exp_si(mr, mr, 16 - prec);
+            if (mag_cmp(mc, mr) <= 0)
+                break;
+        }
+    }
+    if (_acb_poly_validate_roots(R, P->coeffs, d + 1, prec) != d)
+        goto cleanup;
+    /* the coarse balls must still lie below the refined ones */
+    arf_zero(M);
+    for (i = 0; i < d; i++) {
+        acb_abs(a, R + i, prec);
+        arb_get_lbound_arf(lb, a, prec);
+        if (arf_cmp(lb, M) > 0)
+            arf_set(M, lb);
+    }
+    k = 0;
+    for (i = 0; i < d; i++) {
+        acb_abs(a, R + i, prec);
+        arb_get_ubound_arf(ub, a, prec);
+        k += arf_cmp(ub, M) >= 0;
+    }
+    if (k > ncand)
+        goto cleanup;
+    _acb_vec_set(E, R, d);
+    *nouter = ncand;
+    ok = 1;
+cleanup:
+    acb_poly_clear(P);
+    acb_clear(y);
+    acb_clear(dy);
+    acb_clear(c);
+    arb_clear(a);
+    arf_clear(M);
+    arf_clear(lb);
+    arf_clear(ub);
+    mag_clear(mc);
+    mag_clear(mr);
+    _acb_vec_clear(R, d);
+    flint_free(cand);
+    return ok;
+}

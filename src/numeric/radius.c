@@ -38,6 +38,7 @@ void rs_radius_init(rs_radius_t r)
     r->method = RS_RADIUS_METHOD_NONE;
     r->isolated = 0;
     r->partial = 0;
+    r->nouter = 0;
 }
 
 static void _rs_radius_free_roots(rs_radius_t r)
@@ -79,6 +80,7 @@ static void _rs_radius_reset(rs_radius_t r, slong digits)
     r->method = RS_RADIUS_METHOD_NONE;
     r->isolated = 0;
     r->partial = 0;
+    r->nouter = 0;
 }
 
 static void _rs_radius_alloc_roots(rs_radius_t r, slong n)
@@ -403,10 +405,12 @@ static int _rs_radius_to_double(double *a, const fmpz_poly_t q, rs_error_t err);
 static int _rs_radius_gsl_solve(double *z, const double *a, slong d);
 
 /* Enclosures of the roots of one squarefree factor f (deg d) into E at
- * precision *wp; *wp is raised to the highest working precision used. */
-typedef int (*_rs_factor_roots_fn)(acb_ptr E, const fmpz_poly_t f, slong *wp);
+ * precision *wp; *wp is raised to the highest working precision used.
+ * *nouter: -1 when every ball is at that precision, else the number of
+ * balls refined to it (rs_radius_outer_refine: the others are coarser). */
+typedef int (*_rs_factor_roots_fn)(acb_ptr E, const fmpz_poly_t f, slong *wp, slong *nouter);
 
-static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong *wp)
+static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong *wp, slong *nouter)
 {
     slong d = fmpz_poly_degree(f), prec = *wp;
     acb_poly_t P;
@@ -414,6 +418,7 @@ static int _rs_factor_roots_companion(acb_ptr E, const fmpz_poly_t f, slong *wp)
     acb_ptr Eapp;
     int status;
 
+    *nouter = -1;
     if (d == 1) { /* -f0/f1, no matrix needed */
         arb_fmpz_div_fmpz(acb_realref(E), f->coeffs, f->coeffs + 1, prec);
         arb_neg(acb_realref(E), acb_realref(E));
@@ -457,7 +462,7 @@ static slong _rs_radius_rescale(fmpz_poly_t g, const fmpz_poly_t f)
  * coefficients fit in double and GSL converges); certified when all d
  * output balls are isolated (then each holds exactly one root); otherwise
  * arb_fmpz_poly_complex_roots (certified, always isolates) at target prec. */
-static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp)
+static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp, slong *nouter)
 {
     slong d = fmpz_poly_degree(f0), i, n, sc, prec = *wp;
     acb_poly_t P;
@@ -465,8 +470,20 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp)
     double *a, *z;
     fmpz_poly_t f;
 
+    *nouter = -1;
     if (d == 1)
-        return _rs_factor_roots_companion(E, f0, wp);
+        return _rs_factor_roots_companion(E, f0, wp, nouter);
+    /* above degree 64 and well beyond 64 bits: every root at 64 bits (+ d/2,
+     * below), then only the possibly largest ones to prec (outer.c); the
+     * full route at prec when that does not certify */
+    if (d > RS_RADIUS_HIGH_DEGREE && prec > 160) {
+        slong w = 64, no;
+        if (_rs_factor_roots_find(E, f0, &w, &no) == RS_EIG_SIMPLE &&
+            rs_radius_outer_refine(E, nouter, f0, prec + d / 2)) {
+            *wp = prec + d / 2;
+            return RS_EIG_SIMPLE;
+        }
+    }
     /* Arb's Durand-Kerner + validation lose about d/2 bits at high degree
      * whatever the precision (measured: d = 100, 200, 300 lose 56, 106,
      * 152 bits; bench/README.md): working at prec + d/2 there certifies
@@ -544,8 +561,9 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp)
     return n == d ? RS_EIG_SIMPLE : RS_EIG_FAIL;
 }
 
-static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong *wp)
+static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong *wp, slong *nouter)
 {
+    *nouter = -1;
     rs_radius_complex_roots(E, f, *wp);
     return RS_EIG_SIMPLE;
 }
@@ -554,7 +572,8 @@ static int _rs_factor_roots_arb(acb_ptr E, const fmpz_poly_t f, slong *wp)
 static int _rs_sqf_roots(rs_radius_t r, const _rs_sqf_struct *s,
                          _rs_factor_roots_fn fn, slong prec)
 {
-    slong i, j, c, idx = 0, worst = RS_EIG_SIMPLE;
+    slong i, j, c, idx = 0, worst = RS_EIG_SIMPLE, full = s->nzero;
+    int outer = 0;
 
     _rs_radius_alloc_roots(r, s->deg);
     for (i = 0; i < s->nzero; i++, idx++) {
@@ -566,9 +585,12 @@ static int _rs_sqf_roots(rs_radius_t r, const _rs_sqf_struct *s,
         slong d = fmpz_poly_degree(f), e = s->fac->exp[i];
         acb_ptr E = _acb_vec_init(d);
         slong w = prec;
-        int status = fn(E, f, &w);
+        slong no = -1;
+        int status = fn(E, f, &w, &no);
         if (w > r->prec)
             r->prec = w;
+        outer |= no >= 0;
+        full += (no >= 0 ? no : d) * e;
         if (status < worst)
             worst = status;
         if (status != RS_EIG_FAIL) {
@@ -582,6 +604,7 @@ static int _rs_sqf_roots(rs_radius_t r, const _rs_sqf_struct *s,
         if (status == RS_EIG_FAIL)
             break;
     }
+    r->nouter = outer ? full : 0;
     return (int) worst;
 }
 
