@@ -85,7 +85,7 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
 
 /* Only the roots that may be of largest modulus were refined to the digits
  * (above degree 64): say so, with a certified bound on the others' moduli. */
-static void radius_outer_json(json_t *o, const rs_radius_t rr, slong digits)
+static void radius_outer_json(json_t *o, const rs_radius_t rr)
 {
     arb_t a, top, rest;
     arf_t lb;
@@ -188,7 +188,7 @@ int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
                 json_array_append_new(roots, z);
             }
             json_object_set_new(o, "roots", roots);
-            if (rr->nouter > 0) radius_outer_json(o, rr, digits);
+            if (rr->nouter > 0) radius_outer_json(o, rr);
         }
     }
     if (r == RS_OK) {
