@@ -55,9 +55,10 @@ int main(int argc, char **argv)
     printf("  rs_radius_fmpz_poly        %8.3f s rc %d, %ld bits\n", now() - t, rc, (long) r->prec);
     {
         rs_rootcount_t rb;
-        t = now(); rc = rs_radius_count_balls(rb, r, fmpz_poly_degree(p));
+        slong in = -1, out = -1;
+        t = now(); rc = rs_radius_count_balls(&in, &out, r, fmpz_poly_degree(p));
         printf("  count from the balls       %8.3f s decisive %d (in %ld, out %ld)\n", now() - t, rc,
-               rc ? (long) rb->inside : -1L, rc ? (long) rb->outside : -1L);
+               (long) in, (long) out);
         t = now(); rc = rs_routh_int_count(rb, p, err);
         printf("  exact count: routh int PRS %8.3f s rc %d\n", now() - t, rc);
     }

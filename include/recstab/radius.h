@@ -24,7 +24,6 @@
 #include <acb_poly.h>
 #include <acb_mat.h>
 #include "recstab/error.h"
-#include "recstab/rootcount.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -202,11 +201,11 @@ char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n);
 char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
 
 /* Count of the roots inside / outside the unit circle read off r's balls
- * (src/numeric/outer.c): returns 1 and fills rc (degree, inside, outside;
- * nothing on the circle) when r holds `degree` isolating balls (isolated = 1)
- * each strictly inside or strictly outside |lambda| = 1; else 0 (rc
- * untouched): some ball meets the circle, and an exact count must decide. */
-int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree);
+ * (src/numeric/outer.c): returns 1 and sets *inside, *outside (nothing on
+ * the circle) when r holds `degree` isolating balls (isolated = 1) each
+ * strictly inside or strictly outside |lambda| = 1; else 0 (untouched):
+ * some ball meets the circle, and an exact count must decide. */
+int rs_radius_count_balls(slong *inside, slong *outside, const rs_radius_t r, slong degree);
 
 /* E: the deg f certified isolating balls of the roots of f (squarefree),
  * from a low precision.  Refines those that may be of largest modulus to

@@ -53,7 +53,9 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
     rs_jury_t ju;
     json_t *t;
     int r, agree;
-    if (!rs_radius_count_balls(rb, rr, fmpz_poly_degree(p))) {
+    rs_rootcount_init(rb);
+    rb->degree = fmpz_poly_degree(p);
+    if (!rs_radius_count_balls(&rb->inside, &rb->outside, rr, rb->degree)) {
         t = json_object();
         r = rs_run_exact_count(rc, run, p, t);
         if (r == RS_OK) {

@@ -7,7 +7,7 @@
  * count against Schur-Cohn (an exact method on other arithmetic). */
 #include "recstab/radius.h"
 
-int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree)
+int rs_radius_count_balls(slong *inside, slong *outside, const rs_radius_t r, slong degree)
 {
     slong i, in = 0, out = 0, prec = FLINT_MAX(r->prec, 64);
     arb_t a, one;
@@ -33,10 +33,8 @@ int rs_radius_count_balls(rs_rootcount_t rc, const rs_radius_t r, slong degree)
     arb_clear(one);
     if (!ok)
         return 0;
-    rs_rootcount_init(rc);
-    rc->degree = degree;
-    rc->inside = in;
-    rc->outside = out;
+    *inside = in;
+    *outside = out;
     return 1;
 }
 
