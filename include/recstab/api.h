@@ -39,10 +39,18 @@ int rs_run_case(json_t **doc, int *outcome, const char *path, const char *text,
  * never better than worst (the status of earlier cases, 0 for none). */
 int rs_run_exit_status(int code, int outcome, int worst);
 
-/* The document `recstab --json` prints for the documents of ncases cases
- * (a JSON array docs): one case's document alone, {"cases": [...]} for
- * several.  A new reference. */
+/* The document `recstab --json` prints for the documents of the cases of a
+ * run (a JSON array docs): always {"cases": [DOC, ...]}, whatever the number
+ * of cases (ncases is not used: the shape never depends on it).  The CSV
+ * text of the sweeps and maps ("table", "boundary_table": what the command
+ * writes to --csv files) is removed from docs; their "rows" stay.  A new
+ * reference. */
 json_t *rs_run_json_document(json_t *docs, int ncases);
+
+/* The document as `recstab --json` prints it (malloc'd, free()): indented
+ * two spaces, each row of "rows" and "boundary_rows" on one line, a final
+ * newline; NULL when memory ran out. */
+char *rs_run_json_dumps(json_t *top);
 
 /* The one-call API: runs case_text (named source_name in messages, includes
  * relative to it; NULL: "<string>") exactly as `recstab --json` would and

@@ -2,7 +2,7 @@
  * rs_case_t (no mathematics yet; see scheme.h for meaning).
  *
  * Line-oriented; '#' starts a comment; a line ending in '\' continues on
- * the next.  Statements: title, param, assume, unknown, let, eq, char, set,
+ * the next.  Statements: title, param, assume, unknown, let, eq, char, set, label,
  * analyse (analyze), expect, claim, include, recurrence and the builder
  * statements (subsystem, NAME' = EXPR, integrate, couple, iterations,
  * extrapolate, coupling force).  Every item keeps its file:line:col, and so
@@ -128,6 +128,7 @@ typedef struct {
 typedef struct {
     char *path;            /* as given ("-" for stdin) */
     char *title;
+    slong nlabels;   char **label_names, **label_texts;   /* `label NAME = "TEXT"` */
     slong nparams;   rs_name_t *params;
     slong nunknowns; rs_name_t *unknowns;
     slong nassume;   rs_cond_t *assume;

@@ -40,7 +40,7 @@ typedef struct {
     slong shard_index;    /* I of --shard I/N (1-based) */
     slong shard_count;    /* N (1: no sharding) */
     slong max_points;     /* points per sweep or map (RS_ERR_LIMIT past it) */
-    /* called from one thread at a time, at most every ~0.2 s, and once with
+    /* called from one thread at a time: once with done == 0 at the start, at most every ~0.2 s, and once with
      * done == total at the end; NULL for none.  what: "sweep w", "map x,y". */
     void (*progress)(void *arg, const char *what, slong done, slong total);
     void *progress_arg;
@@ -48,9 +48,13 @@ typedef struct {
      * RS_LEVEL_FAST), or RS_LEVEL_DOUBLE: GSL double roots only, verdict
      * from max |root| vs 1 with no certificate (decided_by "double") */
     int first_level;
+    /* rows of each sweep and map in the JSON document ("rows",
+     * "boundary_rows"): all when < 0 (the default), else the first json_rows
+     * and "rows_omitted" (--json-rows N) */
+    slong json_rows;
 } rs_sweep_options_t;
 
-/* shard 1/1, RS_SWEEP_MAX_POINTS_DEFAULT, no progress, RS_LEVEL_FAST.  The
+/* shard 1/1, RS_SWEEP_MAX_POINTS_DEFAULT, no progress, RS_LEVEL_FAST, every row.  The
  * options of a run are rs_options_t.sweep (analysis.h): no process-wide state. */
 void rs_sweep_options_default(rs_sweep_options_t *o);
 

@@ -6,7 +6,7 @@ JSON document (a dict).
 
     >>> import recstab
     >>> doc = recstab.analyse("cases/textbook/central-difference.case", set={"w": "1"})
-    >>> doc["results"][0]["analysis"]
+    >>> doc["cases"][0]["results"][0]["analysis"]
     'charpoly'
 
 numpy (``map_array``) and matplotlib (``plot``) are optional.
@@ -16,7 +16,7 @@ import ctypes.util
 import json
 import os
 
-__all__ = ["analyse", "analyze", "analyse_status", "map_array", "plot", "Derivation", "derivation",
+__all__ = ["analyse", "analyze", "analyse_status", "cases", "table", "map_array", "plot", "Derivation", "derivation",
            "RecstabError", "InputError", "LimitError", "InconsistentError", "library_path"]
 
 
@@ -146,8 +146,23 @@ def analyse(text_or_path, set=None, analyses=None, source_name=None, scheme=Fals
 analyze = analyse
 
 
+def cases(doc):
+    """The case documents of a document: ``doc["cases"]`` (the shape of every
+    document), or ``[doc]`` for one case's document taken out of it."""
+    return doc["cases"] if "cases" in doc else [doc]
+
+
 def _results(doc, kind):
-    return [r for r in doc.get("results", []) if r.get("analysis") == kind]
+    return [r for d in cases(doc) for r in d.get("results", []) if r.get("analysis") == kind]
+
+
+def table(element, boundary=False):
+    """The rows of a sweep or map element as a pandas DataFrame (columns
+    as in the CSV file; needs pandas); ``boundary=True``: its boundary rows."""
+    import pandas as pd
+    if boundary:
+        return pd.DataFrame(element["boundary_rows"], columns=element["boundary"]["columns"])
+    return pd.DataFrame(element["rows"], columns=element["columns"])
 
 
 def map_array(doc_or_case, index=0, **kw):
@@ -163,17 +178,13 @@ def map_array(doc_or_case, index=0, **kw):
     if len(maps) <= index:
         raise ValueError("the document has %d map(s), no map %d" % (len(maps), index))
     m = maps[index]
-    if "table" not in m:
-        raise ValueError("the map's rows are not in the document (%s)" % m.get("table_note", "no table"))
-    lines = [ln for ln in m["table"].splitlines() if ln and not ln.startswith("#")]
-    cols = lines[0].split(",")
+    if m.get("rows_omitted"):
+        raise ValueError("the document holds %d of the map's rows (--json-rows)" % len(m["rows"]))
+    cols = m["columns"]
     nx, ny = m["grid"]
     px, py = m["params"]
     out = {"params": [px, py]}
-    data = {c: [] for c in cols}
-    for ln in lines[1:]:
-        for c, v in zip(cols, ln.split(",")):
-            data[c].append(v)
+    data = {c: [row[k] for row in m["rows"]] for k, c in enumerate(cols)}
     ii = np.array(data["i"], dtype=int)
     jj = np.array(data["j"], dtype=int)
     x = np.full(nx, np.nan)
@@ -185,9 +196,9 @@ def map_array(doc_or_case, index=0, **kw):
         if c in ("index", "i", "j"):
             continue
         try:
-            vals = np.array([float(v) if v != "" else np.nan for v in data[c]])
+            vals = np.array([float(v) if v is not None else np.nan for v in data[c]])
             a = np.full((ny, nx), np.nan)
-        except ValueError:
+        except (ValueError, TypeError):
             vals = np.array(data[c], dtype=object)
             a = np.full((ny, nx), "", dtype=object)
         a[jj, ii] = vals
@@ -217,15 +228,12 @@ def plot(doc_or_case, index=0, ax=None, labels=None, **kw):
     if len(sweeps) <= index:
         raise ValueError("the document has no map and %d sweep(s), no sweep %d" % (len(sweeps), index))
     s = sweeps[index]
-    if "table" not in s:
-        raise ValueError("the sweep's rows are not in the document (%s)" % s.get("table_note", "no table"))
-    lines = [ln for ln in s["table"].splitlines() if ln and not ln.startswith("#")]
-    cols = lines[0].split(",")
-    rows = [ln.split(",") for ln in lines[1:]]
+    cols = s["columns"]
+    rows = s["rows"]
     p = s["param"]
     ycol = s.get("of") if s.get("of") in cols else "radius"
     xs = [float(r[cols.index(p)]) for r in rows]
-    ys = [float(r[cols.index(ycol)]) if r[cols.index(ycol)] else float("nan") for r in rows]
+    ys = [float(r[cols.index(ycol)]) if r[cols.index(ycol)] is not None else float("nan") for r in rows]
     ax.plot(xs, ys)
     ax.set_xlabel(labels.get(p, p))
     ax.set_ylabel(labels.get(ycol, ycol))
@@ -287,4 +295,5 @@ def derivation(doc_or_case, **kw):
     text or path) for Jupyter: Markdown and LaTeX as the command's
     --markdown and --latex print them (LaTeX without the preamble)."""
     doc = doc_or_case if isinstance(doc_or_case, dict) else analyse(doc_or_case, scheme=True, **kw)
-    return Derivation(_render(doc, False), _render(doc, True))
+    docs = cases(doc)
+    return Derivation("".join(_render(d, False) for d in docs), "".join(_render(d, True) for d in docs))

@@ -194,6 +194,11 @@ static json_t *case_doc(rs_run_t *run, const rs_request_t *defaults, slong ndefa
     json_object_set_new(d, "case", json_string(shown));
     flint_free(shown);
     json_object_set_new(d, "title", c->title ? json_string(c->title) : json_null());
+    if (c->nlabels > 0) {
+        json_t *lab = json_object();
+        for (i = 0; i < c->nlabels; i++) json_object_set_new(lab, c->label_names[i], json_string(c->label_texts[i]));
+        json_object_set_new(d, "labels", lab);
+    }
     arr = json_array();
     for (i = 0; i < c->nparams; i++) json_array_append_new(arr, json_string(c->params[i].name));
     json_object_set_new(d, "params", arr);

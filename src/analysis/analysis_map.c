@@ -209,6 +209,8 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
         "interpolation of the values; 'zero' rows are grid points where the polynomial vanishes exactly"));
     json_object_set_new(o, "boundary", b);
     json_object_set_new(o, "boundary_table", json_string(buf));
+    json_object_set_new(b, "columns", json_pack("[s,s,s,s]", "condition", R->axis[0].name, R->axis[1].name, "scan"));
+    rs_sweep_json_rows(o, "boundary_rows", buf, run->opt->sweep.json_rows);
     free(buf);
     for (c = 0; c < nb; c++) {
         fmpz_mpoly_clear(bc[c].f, v->s->zctx);

@@ -115,6 +115,7 @@ static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     json_object_set_new(o, "substituted", rs_sweep_json_sets(run, keep, 1));
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "table", json_string(buf));
+    rs_sweep_json_rows(o, "rows", buf, run->opt->sweep.json_rows);
     free(buf);
     return o;
 }

@@ -2,6 +2,7 @@
  * --emit, the run's options), the exit status and the --json document;
  * and the one-call API over them.  The recstab command calls these too,
  * so the command and the API cannot drift apart. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <jansson.h>
@@ -81,7 +82,102 @@ int rs_run_exit_status(int code, int outcome, int worst)
 
 json_t *rs_run_json_document(json_t *docs, int ncases)
 {
-    return ncases == 1 ? json_incref(json_array_get(docs, 0)) : json_pack("{s:O}", "cases", docs);
+    size_t i, k;
+    /* one shape for one case or many: readers never test which it is */
+    (void) ncases;
+    for (i = 0; i < json_array_size(docs); i++) {
+        json_t *res = json_object_get(json_array_get(docs, i), "results");
+        /* the rows are in "rows": the CSV text for files and plots goes */
+        for (k = 0; k < json_array_size(res); k++) {
+            json_object_del(json_array_get(res, k), "table");
+            json_object_del(json_array_get(res, k), "boundary_table");
+        }
+    }
+    return json_pack("{s:O}", "cases", docs);
+}
+
+/* the row arrays of the document, swapped with placeholders while dumping */
+typedef struct {
+    json_t **arr;
+    json_t **owner;
+    const char **key;
+    size_t n;
+} rowsets_t;
+
+static void rowsets_swap(rowsets_t *rs, json_t *top)
+{
+    static const char *const keys[] = {"rows", "boundary_rows"};
+    json_t *docs = json_object_get(top, "cases");
+    size_t i, k;
+    int m;
+    for (i = 0; i < json_array_size(docs); i++) {
+        json_t *res = json_object_get(json_array_get(docs, i), "results");
+        for (k = 0; k < json_array_size(res); k++) {
+            json_t *o = json_array_get(res, k);
+            const char *a = json_string_value(json_object_get(o, "analysis"));
+            if (a == NULL || (strcmp(a, "sweep") != 0 && strcmp(a, "map") != 0)) continue;
+            for (m = 0; m < 2; m++) {
+                json_t *r = json_object_get(o, keys[m]);
+                char ph[48];
+                if (!json_is_array(r)) continue;
+                rs->arr = realloc(rs->arr, (rs->n + 1) * sizeof(json_t *));
+                rs->owner = realloc(rs->owner, (rs->n + 1) * sizeof(json_t *));
+                rs->key = realloc(rs->key, (rs->n + 1) * sizeof(char *));
+                rs->arr[rs->n] = json_incref(r);
+                rs->owner[rs->n] = o;
+                rs->key[rs->n] = keys[m];
+                snprintf(ph, sizeof ph, "\001rows %zu\001", rs->n);
+                json_object_set_new(o, keys[m], json_string(ph));
+                rs->n++;
+            }
+        }
+    }
+}
+
+char *rs_run_json_dumps(json_t *top)
+{
+    rowsets_t rs = {NULL, NULL, NULL, 0};
+    char *s, *out = NULL;
+    size_t len = 0, k;
+    FILE *f;
+    rowsets_swap(&rs, top);
+    s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
+    if (s == NULL) goto done;
+    f = open_memstream(&out, &len);
+    {
+        const char *p = s;
+        for (;;) {
+            const char *q = strstr(p, "\"\\u0001rows ");
+            const char *ls;
+            size_t id, r, indent;
+            if (q == NULL) break;
+            id = (size_t) strtoul(q + 12, NULL, 10);
+            fwrite(p, 1, (size_t) (q - p), f);
+            /* the indentation of the key's line */
+            for (ls = q; ls > s && ls[-1] != '\n'; ls--) {}
+            for (indent = 0; ls[indent] == ' '; indent++) {}
+            fputc('[', f);
+            for (r = 0; id < rs.n && r < json_array_size(rs.arr[id]); r++) {
+                char *row = json_dumps(json_array_get(rs.arr[id], r), JSON_COMPACT | JSON_ENCODE_ANY);
+                fprintf(f, "%s\n%*s%s", r ? "," : "", (int) indent + 2, "", row ? row : "null");
+                free(row);
+            }
+            if (r > 0) fprintf(f, "\n%*s", (int) indent, "");
+            fputc(']', f);
+            p = strchr(q + 1, '"') + 1;
+        }
+        fputs(p, f);
+    }
+    fputc('\n', f);
+    fclose(f);
+    free(s);
+done:
+    /* the document as it was */
+    for (k = 0; k < rs.n; k++) json_object_set_new(rs.owner[k], rs.key[k], rs.arr[k]);
+    free(rs.arr);
+    free(rs.owner);
+    free(rs.key);
+    return out;
 }
 
 /* {"error": {...}} for a run that ended with err (the command prints the
@@ -100,23 +196,6 @@ static char *error_json(const rs_error_t err)
     s = json_dumps(e, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
     json_decref(e);
     return s;
-}
-
-/* the document as the command prints it: indented, with a final newline */
-static char *dump_line(json_t *top)
-{
-    char *s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER), *line;
-    size_t n;
-    if (s == NULL) return NULL;
-    n = strlen(s);
-    line = realloc(s, n + 2);
-    if (line == NULL) {
-        free(s);
-        return NULL;
-    }
-    line[n] = '\n';
-    line[n + 1] = '\0';
-    return line;
 }
 
 int rs_analyse_json_opt(const char *case_text, const char *source_name,
@@ -141,7 +220,7 @@ int rs_analyse_json_opt(const char *case_text, const char *source_name,
         docs = json_array();
         json_array_append_new(docs, doc);
         top = rs_run_json_document(docs, 1);
-        out = dump_line(top);
+        out = rs_run_json_dumps(top);
         json_decref(top);
         json_decref(docs);
     }

@@ -23,6 +23,7 @@ void rs_sweep_options_default(rs_sweep_options_t *o)
     o->progress = NULL;
     o->progress_arg = NULL;
     o->first_level = RS_LEVEL_FAST;
+    o->json_rows = -1;
 }
 
 void rs_sweep_shard_range(slong *lo, slong *hi, slong npoints, slong I, slong N)
@@ -126,7 +127,71 @@ void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo
     json_object_set_new(o, "computed", json_integer(hi - lo));
     snprintf(sh, sizeof sh, "%ld/%ld", (long) run->opt->sweep.shard_index, (long) run->opt->sweep.shard_count);
     json_object_set_new(o, "shard", json_string(sh));
-    json_object_set_new(o, "rows", json_pack("[I,I]", (json_int_t) lo, (json_int_t) hi));
+    json_object_set_new(o, "row_range", json_pack("[I,I]", (json_int_t) lo, (json_int_t) hi));
+}
+
+/* One CSV cell as JSON: null when empty, a number when the whole cell is a
+ * finite number (the exact NAME_exact columns stay strings: "1/3" and "3"
+ * alike, so a column has one type), else the string ("inf", verdicts). */
+static json_t *cell_json(const char *s, size_t n, int exact)
+{
+    char tmp[160], *end;
+    double d;
+    if (n == 0) return json_null();
+    if (n >= sizeof tmp) return json_stringn(s, n);
+    memcpy(tmp, s, n);
+    tmp[n] = '\0';
+    if (exact) return json_string(tmp);
+    d = strtod(tmp, &end);
+    if (*end != '\0' || !isfinite(d)) return json_string(tmp);
+    if (strpbrk(tmp, ".eE") == NULL && fabs(d) < 9007199254740992.0) return json_integer((json_int_t) d);
+    return json_real(d);
+}
+
+void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap)
+{
+    json_t *rows = json_array();
+    const char *p = table, *nl;
+    char *exact = NULL;
+    slong nrow = 0, ncol = 0, k;
+    char omitted[64];
+    /* the header: which columns are exact */
+    nl = strchr(p, '\n');
+    if (nl != NULL) {
+        const char *c = p;
+        exact = calloc((size_t) (nl - p) + 2, 1);
+        for (;;) {
+            const char *e = c;
+            while (e < nl && *e != ',') e++;
+            exact[ncol++] = (e - c > 6 && strncmp(e - 6, "_exact", 6) == 0);
+            if (e >= nl) break;
+            c = e + 1;
+        }
+        p = nl + 1;
+    } else p = "";
+    for (; *p; p = nl + 1, nrow++) {
+        nl = strchr(p, '\n');
+        if (nl == NULL) nl = p + strlen(p);
+        if (cap < 0 || nrow < cap) {
+            json_t *row = json_array();
+            const char *c = p;
+            for (k = 0;; k++) {
+                const char *e = c;
+                while (e < nl && *e != ',') e++;
+                json_array_append_new(row, cell_json(c, (size_t) (e - c), k < ncol && exact[k]));
+                if (e >= nl) break;
+                c = e + 1;
+            }
+            json_array_append_new(rows, row);
+        }
+        if (*nl == '\0') { nrow++; break; }
+    }
+    json_object_set_new(o, key, rows);
+    if (cap >= 0 && nrow > cap) {
+        snprintf(omitted, sizeof omitted, "%s_omitted", key);
+        json_object_set_new(o, omitted, json_integer(nrow - cap));
+    }
+    free(exact);
 }
 
 /* ---- table cells ------------------------------------------------------------------------------ */
@@ -316,6 +381,7 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     json_object_set_new(o, "substituted", rs_sweep_json_sets(run, keep, 2));
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "table", json_string(buf));
+    rs_sweep_json_rows(o, "rows", buf, run->opt->sweep.json_rows);
     free(buf);
     return o;
 }

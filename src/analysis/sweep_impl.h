@@ -110,8 +110,13 @@ int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, cons
 int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run, const rs_request_t *q,
                      const rs_sweep_model_t *m, slong npoints, const char *what, const char *desc);
 void rs_sweep_rows_free(rs_sweep_row_t *rows, slong n);
-/* "points", "computed", "shard", "rows" */
+/* "points", "computed", "shard", "row_range" ([lo, hi) of the shard) */
 void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo, slong hi);
+/* o[key]: the rows of a CSV table (header line, then rows) as arrays of
+ * cells in the order of its columns (numbers, null for empty cells,
+ * strings for text and the exact NAME_exact columns); only the first cap
+ * rows when cap >= 0, and then o[key + "_omitted"]: how many were left out. */
+void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap);
 /* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
 void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
 /* {NAME: value} of the case's set values except keep[] */

@@ -59,13 +59,55 @@ static void usage(FILE *f)
     rs_analysis_list(f, 1);
 }
 
-/* progress of long sweeps and maps, only when stderr is a terminal */
+/* Progress of long sweeps and maps on stderr: on a terminal one line
+ * rewritten in place; elsewhere (--progress) a line at most every 2 s.
+ * The time left is extrapolated from the rate since the first point. */
+typedef struct {
+    int tty;
+    char what[200];
+    double t0, last;
+} progress_t;
+
+static double mono_seconds(void);
+
+static void put_duration(FILE *f, double s)
+{
+    if (s < 60) fprintf(f, "%.0f s", s);
+    else if (s < 3600) fprintf(f, "%d min %02d s", (int) (s / 60), (int) s % 60);
+    else fprintf(f, "%d h %02d min", (int) (s / 3600), (int) (s / 60) % 60);
+}
+
 static void progress(void *arg, const char *what, slong done, slong total)
 {
-    (void) arg;
-    if (done >= total) fputs("\r\033[K", stderr);
-    else fprintf(stderr, "\rrecstab: %s: %ld/%ld points (%ld%%)", what, (long) done, (long) total,
-                 (long) (100 * done / (total > 0 ? total : 1)));
+    progress_t *p = arg;
+    double now = mono_seconds();
+    if (strcmp(p->what, what) != 0 || done == 0) {
+        /* a new sweep or map: its clock starts now */
+        snprintf(p->what, sizeof p->what, "%s", what);
+        p->t0 = now;
+        p->last = 0;
+    }
+    if (done >= total) {
+        if (p->tty) fputs("\r\033[K", stderr);
+        else {
+            fprintf(stderr, "recstab: %s: %ld/%ld points done in ", what, (long) done, (long) total);
+            put_duration(stderr, now - p->t0);
+            fputc('\n', stderr);
+        }
+        p->what[0] = '\0';
+        fflush(stderr);
+        return;
+    }
+    if (!p->tty && now - p->last < 2.0) return;
+    p->last = now;
+    fprintf(stderr, "%srecstab: %s: %ld/%ld points (%ld%%)", p->tty ? "\r" : "", what, (long) done, (long) total,
+            (long) (100 * done / (total > 0 ? total : 1)));
+    if (done > 0 && now - p->t0 > 0.5) {
+        fputs(", about ", stderr);
+        put_duration(stderr, (now - p->t0) * (double) (total - done) / (double) done);
+        fputs(" left", stderr);
+    }
+    fputs(p->tty ? "\033[K" : "\n", stderr);
     fflush(stderr);
 }
 
@@ -116,22 +158,54 @@ static void raise_stack_limit(void)
     setrlimit(RLIMIT_STACK, &rl);
 }
 
-/* Checks the --csv / --plot targets before any work and starts the signal
- * thread (before OpenMP starts threads: they inherit its signal mask). */
-static int outputs_init(rs_cli_out_t *csv, const char *csv_path, rs_cli_out_t *plot, const char *plot_path,
-                        rs_cli_out_t **outs, int *nouts)
+/* The command line, parsed once and passed down (no globals). */
+typedef struct {
+    int json, markdown, latex, emit;
+    const char **sets, **analyses, **cases;
+    int nsets, nanalyses, ncases;
+    const char *csv_path, **plot_paths, *plot_script;
+    int nplots, progress;
+    long plot_w, plot_h;   /* --plot-size, 0: the default per panel */
+    long shard_i, shard_n, threads, max_points, json_rows;
+    int first_level;
+    int rank;              /* MPI rank (0 without MPI): only rank 0 writes */
+    rs_options_t opt;
+} cli_t;
+
+/* Checks the --csv / --plot / --plot-script targets before any work and
+ * starts the signal thread (before OpenMP starts threads: they inherit its
+ * signal mask).  set->o[0] is --csv when given, then the plots, then the
+ * script; the CSV stage adds its further files later. */
+static int outputs_init(const cli_t *cli, rs_cli_outs_t *set, rs_cli_out_t **csv, rs_cli_out_t **script)
 {
     char msg[1200];
-    *nouts = 0;
-    if (csv_path != NULL) {
-        if (rs_cli_out_init(csv, "--csv", csv_path, msg, sizeof msg) != 0) goto fail;
-        outs[(*nouts)++] = csv;
+    int k;
+    *csv = *script = NULL;
+    set->n = 0;
+    if (cli->nplots + 2 > RS_CLI_MAX_OUTS) {
+        snprintf(msg, sizeof msg, "at most %d --plot options", RS_CLI_MAX_OUTS - 2);
+        goto fail;
     }
-    if (plot_path != NULL) {
-        if (rs_cli_out_init(plot, "--plot", plot_path, msg, sizeof msg) != 0) goto fail;
-        outs[(*nouts)++] = plot;
+    for (k = -1; k <= cli->nplots; k++) {
+        const char *path = k < 0 ? cli->csv_path : k < cli->nplots ? cli->plot_paths[k] : cli->plot_script;
+        const char *opt = k < 0 ? "--csv" : k < cli->nplots ? "--plot" : "--plot-script";
+        rs_cli_out_t *o;
+        if (path == NULL) continue;
+        o = calloc(1, sizeof *o);
+        set->o[set->n++] = o;
+        if (rs_cli_out_init(o, opt, path, msg, sizeof msg) != 0) {
+            set->n--;
+            free(o);
+            goto fail;
+        }
+        if (k < 0) *csv = o;
+        if (k == cli->nplots) *script = o;
     }
-    if (*nouts > 0) {
+    if (cli->plot_script != NULL && cli->nplots == 0) {
+        snprintf(msg, sizeof msg, "--plot-script needs a --plot FILE (the output the script writes)");
+        goto fail;
+    }
+    if (set->n > 0) {
         /* a closed stdout must fail the write (and undo the files), not kill us */
         struct sigaction sa;
         memset(&sa, 0, sizeof sa);
@@ -173,17 +247,6 @@ fail:
     return -1;
 }
 
-/* The command line, parsed once and passed down (no globals). */
-typedef struct {
-    int json, markdown, latex, emit;
-    const char **sets, **analyses, **cases;
-    int nsets, nanalyses, ncases;
-    const char *csv_path, *plot_path;
-    long shard_i, shard_n, threads, max_points;
-    int first_level;
-    int rank;              /* MPI rank (0 without MPI): only rank 0 writes */
-    rs_options_t opt;
-} cli_t;
 
 /* Usage errors print to stderr and give exit status 2. */
 static int usage_error(const char *fmt, const char *a, const char *b, int with_usage)
@@ -216,7 +279,20 @@ static int parse_sweep_option(cli_t *cli, const char *a, const char *val)
     static const char *const lv[] = {"fast", "prec128", "prec256", "exact", "double"};
     int k;
     if (strcmp(a, "--csv") == 0) cli->csv_path = val;
-    else if (strcmp(a, "--plot") == 0) cli->plot_path = val;
+    else if (strcmp(a, "--plot") == 0) cli->plot_paths[cli->nplots++] = val;
+    else if (strcmp(a, "--plot-script") == 0) cli->plot_script = val;
+    else if (strcmp(a, "--plot-size") == 0) {
+        char tmp[64], *x;
+        snprintf(tmp, sizeof tmp, "%s", val);
+        x = strchr(tmp, 'x');
+        if (x != NULL) *x = '\0';
+        if (x == NULL || !parse_long(tmp, 100, 20000, &cli->plot_w) || !parse_long(x + 1, 100, 20000, &cli->plot_h))
+            return usage_error("--plot-size expects WIDTHxHEIGHT in pixels from 100 to 20000 (e.g. 1200x900), found '%s'%s",
+                               val, "", 0);
+    } else if (strcmp(a, "--json-rows") == 0) {
+        if (!parse_long(val, 0, 1000000000000L, &cli->json_rows))
+            return usage_error("--json-rows expects a number of rows (0 or more), found '%s'%s", val, "", 0);
+    }
     else if (strcmp(a, "--threads") == 0) {
         if (!parse_long(val, 1, 4096, &cli->threads))
             return usage_error("--threads expects a number of threads from 1 to 4096, found '%s'%s", val, "", 0);
@@ -251,7 +327,9 @@ static int parse_arg(cli_t *cli, int argc, char **argv, int *i)
     else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { usage(stdout); return 0; }
     else if (strcmp(a, "--version") == 0) { printf("recstab %s\n", RS_VERSION); return 0; }
     else if (strcmp(a, "--list-analyses") == 0) { rs_analysis_list(stdout, 0); return 0; }
+    else if (strcmp(a, "--progress") == 0) cli->progress = 1;
     else if (strcmp(a, "--csv") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--shard") == 0
+             || strcmp(a, "--plot-script") == 0 || strcmp(a, "--plot-size") == 0 || strcmp(a, "--json-rows") == 0
              || strcmp(a, "--threads") == 0 || strcmp(a, "--max-points") == 0
              || strcmp(a, "--sweep-level") == 0) {
         if (*i + 1 >= argc) return usage_error("%s needs a value%s", a, "", 1);
@@ -296,7 +374,7 @@ static int parse_args(cli_t *cli, int argc, char **argv)
 
 /* The sweeps' and maps' options (they travel in the run's options) and
  * threads, before the first case. */
-static void sweep_setup(cli_t *cli)
+static void sweep_setup(cli_t *cli, progress_t *pg)
 {
 #ifdef _OPENMP
     if (cli->threads > 0) omp_set_num_threads((int) cli->threads);
@@ -305,7 +383,13 @@ static void sweep_setup(cli_t *cli)
     cli->opt.sweep.shard_count = cli->shard_n;
     cli->opt.sweep.max_points = cli->max_points;
     cli->opt.sweep.first_level = cli->first_level;
-    if (cli->rank == 0 && isatty(2)) cli->opt.sweep.progress = progress;
+    cli->opt.sweep.json_rows = cli->json_rows;
+    memset(pg, 0, sizeof *pg);
+    pg->tty = isatty(2);
+    if (cli->rank == 0 && (pg->tty || cli->progress)) {
+        cli->opt.sweep.progress = progress;
+        cli->opt.sweep.progress_arg = pg;
+    }
 }
 
 /* One case run by the library's driver (--set, --analyse, --emit applied)
@@ -349,8 +433,9 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
         }
     } else if (cli->json) {
         json_t *top = rs_run_json_document(docs, cli->ncases);
-        json_dumpf(top, out, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
-        fputc('\n', out);
+        char *text = rs_run_json_dumps(top);
+        if (text != NULL) fputs(text, out);
+        free(text);
         json_decref(top);
     } else if (cli->markdown) {
         for (k = 0; k < json_array_size(docs); k++) rs_derivation_markdown(out, json_array_get(docs, k));
@@ -387,30 +472,31 @@ static int run_cases(const cli_t *cli, json_t *docs, int *worst)
 
 /* The sweep/map files staged beside their targets (renamed only once
  * everything succeeded), the report rendered and everything committed. */
-static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_out_t *csv_out, rs_cli_out_t *plot_out,
-                         rs_cli_out_t **outs, int nouts, int worst)
+static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_outs_t *set, rs_cli_out_t *csv_out,
+                         rs_cli_out_t *script_out, int worst)
 {
     char *outbuf = NULL;
     size_t outlen = 0;
     FILE *out;
     int rc;
-    if (cli->rank == 0 && (cli->csv_path != NULL || cli->plot_path != NULL)) {
+    if (cli->rank == 0 && set->n > 0) {
         char msg[1200];
-        if (cli->plot_path != NULL && rs_cli_plot_stage(plot_out, docs, msg, sizeof msg) != 0) {
+        if (cli->nplots > 0 && rs_cli_plot_stage(set->o + (csv_out != NULL), cli->nplots, script_out, cli->plot_w,
+                                                 cli->plot_h, docs, msg, sizeof msg) != 0) {
             fprintf(stderr, "recstab: %s\n", msg);
             return 2;
         }
-        if (cli->csv_path != NULL && rs_cli_csv_stage(csv_out, docs, cli->shard_i, cli->shard_n, msg, sizeof msg) != 0) {
+        if (csv_out != NULL && rs_cli_csv_stage(csv_out, set, docs, cli->shard_i, cli->shard_n, msg, sizeof msg) != 0) {
             fprintf(stderr, "recstab: %s\n", msg);
             return 2;
         }
     }
-    rs_cli_trim_tables(docs, cli->csv_path != NULL, 200);
+    if (!cli->json) rs_cli_trim_tables(docs, cli->csv_path != NULL, 200);
     out = open_memstream(&outbuf, &outlen);
     render(out, cli, docs);
     fclose(out);
     if (cli->rank != 0) outlen = 0;
-    rc = outputs_commit(outs, cli->rank == 0 ? nouts : 0, outbuf, outlen,
+    rc = outputs_commit(set->o, cli->rank == 0 ? set->n : 0, outbuf, outlen,
                         cli->csv_path != NULL && strcmp(cli->csv_path, "-") == 0 ? stderr : stdout) != 0 ? 2 : worst;
     free(outbuf);
     return rc;
@@ -419,16 +505,21 @@ static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_out_t *csv_out, 
 int main(int argc, char **argv)
 {
     cli_t cli;
+    progress_t pg;
     json_t *docs = json_array();
-    rs_cli_out_t csv_out, plot_out, *outs[2];
-    int nouts = 0, i, worst = 0, rc;
+    rs_cli_outs_t set;
+    rs_cli_out_t *csv_out = NULL, *script_out = NULL;
+    int i, worst = 0, rc;
 
     memset(&cli, 0, sizeof cli);
+    set.n = 0;
     cli.sets = calloc((size_t) argc, sizeof(char *));
     cli.analyses = calloc((size_t) argc, sizeof(char *));
     cli.cases = calloc((size_t) argc, sizeof(char *));
     cli.shard_i = cli.shard_n = 1;
     cli.max_points = RS_SWEEP_MAX_POINTS_DEFAULT;
+    cli.json_rows = -1;
+    cli.plot_paths = calloc((size_t) argc, sizeof(char *));
     cli.first_level = RS_LEVEL_FAST;
 #ifdef RS_MPI
     MPI_Init(&argc, &argv);
@@ -446,22 +537,27 @@ int main(int argc, char **argv)
     raise_stack_limit();
     rc = parse_args(&cli, argc, argv);
     if (rc >= 0) goto end;
-    if (outputs_init(&csv_out, cli.csv_path, &plot_out, cli.plot_path, outs, &nouts) != 0) {
+    if (outputs_init(&cli, &set, &csv_out, &script_out) != 0) {
         rc = 2;
         goto end;
     }
-    sweep_setup(&cli);
+    sweep_setup(&cli, &pg);
     if (cli.ncases == 0) {
         rc = usage_error("expected a case file (or - for stdin)%s%s", "", "", 1);
         goto end;
     }
     rc = run_cases(&cli, docs, &worst);
-    if (rc == 0) rc = write_outputs(&cli, docs, &csv_out, &plot_out, outs, nouts, worst);
+    if (rc == 0) rc = write_outputs(&cli, docs, &set, csv_out, script_out, worst);
 end:
-    for (i = 0; i < nouts; i++) rs_cli_out_clear(outs[i]);
+    /* rs_cli_out_clear frees the further CSV files the run made */
+    for (i = 0; i < set.n; i++) {
+        int owned = set.o[i]->owned;
+        rs_cli_out_clear(set.o[i]);
+        if (!owned) free(set.o[i]);
+    }
     rs_cli_signals_stop();
     json_decref(docs);
-    free(cli.sets); free(cli.analyses); free(cli.cases);
+    free(cli.sets); free(cli.analyses); free(cli.cases); free(cli.plot_paths);
 #ifdef RS_MPI
     MPI_Finalize();
 #endif

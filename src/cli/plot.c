@@ -20,6 +20,7 @@ typedef struct {
     const char *case_path;
     const char *title;
     json_t *el;
+    json_t *labels;     /* the case's `label NAME = "TEXT"` values, or NULL */
 } tab_t;
 
 static const char *jstr(const json_t *o, const char *k)
@@ -42,6 +43,7 @@ static size_t collect(json_t *docs, tab_t *out)
                 out[n].case_path = jstr(d, "case");
                 out[n].title = jstr(d, "title");
                 out[n].el = o;
+                out[n].labels = json_object_get(d, "labels");
             }
             n++;
         }
@@ -71,7 +73,7 @@ static size_t count_rows(const char *t)
  * thread takes before it removes temporaries, undoes renames and exits. */
 
 static pthread_mutex_t tidy_lock = PTHREAD_MUTEX_INITIALIZER;
-static rs_cli_out_t *tidy_outs[4];
+static rs_cli_out_t *tidy_outs[RS_CLI_MAX_OUTS];
 static int ntidy_outs;
 static char tidy_dir[4096];   /* the plot's private folder, "" when none */
 static size_t tidy_dir_files;
@@ -86,8 +88,9 @@ int rs_cli_out_init(rs_cli_out_t *o, const char *option, const char *path, char 
     memset(o, 0, sizeof *o);
     o->option = option;
     o->path = path;
-    if (strcmp(option, "--plot") == 0 && strcmp(ext_of(path), "png") != 0 && strcmp(ext_of(path), "svg") != 0) {
-        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", path);
+    if (strcmp(option, "--plot") == 0 && strcmp(ext_of(path), "png") != 0 && strcmp(ext_of(path), "svg") != 0
+        && strcmp(ext_of(path), "pdf") != 0) {
+        snprintf(err, errlen, "--plot: expected a file name ending in .pdf, .png or .svg, found '%s'", path);
         return -1;
     }
     if (strcmp(path, "-") == 0 && strcmp(option, "--csv") == 0) o->through = 1;
@@ -108,7 +111,7 @@ int rs_cli_out_init(rs_cli_out_t *o, const char *option, const char *path, char 
 
     else o->through = 1;   /* a device or FIFO: written through, never replaced */
     pthread_mutex_lock(&tidy_lock);
-    if (ntidy_outs < 4) tidy_outs[ntidy_outs++] = o;
+    if (ntidy_outs < RS_CLI_MAX_OUTS) tidy_outs[ntidy_outs++] = o;
     pthread_mutex_unlock(&tidy_lock);
     return 0;
 }
@@ -140,6 +143,10 @@ void rs_cli_out_clear(rs_cli_out_t *o)
     for (k = 0; k < ntidy_outs; k++)
         if (tidy_outs[k] == o) tidy_outs[k] = tidy_outs[--ntidy_outs];
     pthread_mutex_unlock(&tidy_lock);
+    if (o->owned) {
+        free((char *) o->path);
+        free(o);
+    }
 }
 
 /* the stage: mkstemp beside the path (renamed onto it at the end), in
@@ -325,68 +332,136 @@ void rs_cli_signals_stop(void)
     signal_th_running = 0;
 }
 
-int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard_count, char *err, size_t errlen)
+/* The path of CSV file k (0: the --csv path itself) of table t (1-based)
+ * or of its boundary: STEM.t.csv, STEM.boundary.csv, STEM.t.boundary.csv
+ * beside PATH = STEM.csv (PATH.t... when PATH has no extension). */
+static char *csv_path_of(const char *path, size_t t, int boundary)
 {
-    const char *path = o->path;
-    size_t n = collect(docs, NULL), i, t = 0;
-    tab_t *tabs = calloc(n + 1, sizeof(tab_t));
+    const char *slash = strrchr(path, '/'), *dot = strrchr(path, '.');
+    size_t stem, n = strlen(path) + 48;
+    char *p = malloc(n), num[32] = "";
+    if (dot == NULL || (slash != NULL && dot < slash) || dot == path || dot[-1] == '/') dot = path + strlen(path);
+    stem = (size_t) (dot - path);
+    if (t > 1) snprintf(num, sizeof num, ".%zu", t);
+    snprintf(p, n, "%.*s%s%s%s", (int) stem, path, num, boundary ? ".boundary" : "", dot);
+    return p;
+}
+
+/* One table into its own staged file: "# " comment lines, then the
+ * table (its header line first). */
+static int csv_write_one(rs_cli_out_t *o, const char *comments, const char *table, char *err, size_t errlen)
+{
+    int fd = stage_open(o, err, errlen), bad = 0;
     FILE *f;
-    int fd, bad = 0;
-    collect(docs, tabs);
-    fd = stage_open(o, err, errlen);
-    if (fd < 0) { free(tabs); return -1; }
+    if (fd < 0) return -1;
     f = fdopen(fd, "w");
-    if (n == 0) fputs("# recstab: no sweep or map in this run\n", f);
-    for (i = 0; i < n; i++) {
-        json_t *tab = tabs[i].el;
-        const char *bt = jstr(tab, "boundary_table");
-        t++;
-        fprintf(f, "# recstab table %zu: case=", t);
-        put_comment_text(f, tabs[i].case_path);
-        fputs("; title=", f);
-        put_comment_text(f, tabs[i].title);
-        fputs("; analysis=", f);
-        put_comment_text(f, jstr(tab, "text"));
-        fprintf(f, "; points=%lld\n", (long long) json_integer_value(json_object_get(tab, "points")));
-        if (shard_count > 1) {
-            json_t *rows = json_object_get(tab, "rows");
-            fprintf(f, "# shard %ld/%ld: rows %lld-%lld of table %zu\n", shard_index, shard_count,
-                    (long long) json_integer_value(json_array_get(rows, 0)),
-                    (long long) json_integer_value(json_array_get(rows, 1)) - 1, t);
-        }
-        fputs(jstr(tab, "table"), f);
-        {
-            char *shown = rs_utf8_escape(path);   /* json_string refuses invalid UTF-8 */
-            json_object_set_new(tab, "csv", json_string(shown));
-            flint_free(shown);
-        }
-        if (bt != NULL) {
-            json_t *conds = json_object_get(json_object_get(tab, "boundary"), "conditions");
-            size_t k;
-            t++;
-            fprintf(f, "# recstab table %zu: boundary of table %zu; case=", t, t - 1);
-            put_comment_text(f, tabs[i].case_path);
-            fputs("; conditions:", f);
-            for (k = 0; k < json_array_size(conds); k++) {
-                json_t *c = json_array_get(conds, k);
-                fprintf(f, "%s %lld (%s) %s > 0", k ? ";" : "",
-                        (long long) json_integer_value(json_object_get(c, "index")), jstr(c, "origin"), jstr(c, "poly"));
-            }
-            fputc('\n', f);
-            if (shard_count > 1)
-                fprintf(f, "# shard %ld/%ld: boundary rows only in shard 1\n", shard_index, shard_count);
-            fputs(bt, f);
-        }
-    }
+    fputs(comments, f);
+    fputs(table, f);
     if (fflush(f) != 0 || ferror(f)) bad = 1;
     if (fclose(f) != 0) bad = 1;
-    free(tabs);
     if (bad) {
         snprintf(err, errlen, "cannot write '%s': %s", o->tmp, strerror(errno));
         stage_drop(o);
         return -1;
     }
     return 0;
+}
+
+static void set_path_key(json_t *tab, const char *key, const char *path)
+{
+    char *shown = rs_utf8_escape(path);   /* json_string refuses invalid UTF-8 */
+    json_object_set_new(tab, key, json_string(shown));
+    flint_free(shown);
+}
+
+/* a further file of the run (a table after the first, a boundary) */
+static rs_cli_out_t *csv_extra(rs_cli_outs_t *set, const char *path, char *err, size_t errlen)
+{
+    rs_cli_out_t *x;
+    if (set->n >= RS_CLI_MAX_OUTS) {
+        snprintf(err, errlen, "--csv: more than %d files in one run", RS_CLI_MAX_OUTS);
+        return NULL;
+    }
+    x = calloc(1, sizeof *x);
+    if (rs_cli_out_init(x, "--csv", strdup(path), err, errlen) != 0) {
+        free((char *) x->path);
+        free(x);
+        return NULL;
+    }
+    x->owned = 1;
+    set->o[set->n++] = x;
+    return x;
+}
+
+int rs_cli_csv_stage(rs_cli_out_t *o, rs_cli_outs_t *set, json_t *docs, long shard_index, long shard_count,
+                     char *err, size_t errlen)
+{
+    const char *path = o->path;
+    size_t n = collect(docs, NULL), i;
+    tab_t *tabs = calloc(n + 1, sizeof(tab_t));
+    int rc = 0;
+    collect(docs, tabs);
+    if (o->through && (n > 1 || (n == 1 && jstr(tabs[0].el, "boundary_table") != NULL))) {
+        snprintf(err, errlen, "--csv: the run has more than one table (one file each: FILE.csv, FILE.2.csv, "
+                 "FILE.boundary.csv, ...): give a regular file name, not '%s'", path);
+        free(tabs);
+        return -1;
+    }
+    if (n == 0) rc = csv_write_one(o, "# recstab: no sweep or map in this run\n", "", err, errlen);
+    for (i = 0; i < n && rc == 0; i++) {
+        json_t *tab = tabs[i].el;
+        const char *bt = jstr(tab, "boundary_table");
+        char *cbuf = NULL, *tpath = i == 0 ? NULL : csv_path_of(path, i + 1, 0);
+        size_t clen = 0;
+        FILE *c = open_memstream(&cbuf, &clen);
+        rs_cli_out_t *to = i == 0 ? o : csv_extra(set, tpath, err, errlen);
+        fprintf(c, "# recstab table %zu: case=", i + 1);
+        put_comment_text(c, tabs[i].case_path);
+        fputs("; title=", c);
+        put_comment_text(c, tabs[i].title);
+        fputs("; analysis=", c);
+        put_comment_text(c, jstr(tab, "text"));
+        fprintf(c, "; points=%lld\n", (long long) json_integer_value(json_object_get(tab, "points")));
+        if (shard_count > 1) {
+            json_t *rows = json_object_get(tab, "row_range");
+            fprintf(c, "# shard %ld/%ld: rows %lld-%lld of table %zu\n", shard_index, shard_count,
+                    (long long) json_integer_value(json_array_get(rows, 0)),
+                    (long long) json_integer_value(json_array_get(rows, 1)) - 1, i + 1);
+        }
+        fclose(c);
+        if (to == NULL) rc = -1;
+        else rc = csv_write_one(to, cbuf, jstr(tab, "table"), err, errlen);
+        free(cbuf);
+        if (rc == 0) set_path_key(tab, "csv", i == 0 ? path : tpath);
+        free(tpath);
+        if (rc == 0 && bt != NULL) {
+            json_t *conds = json_object_get(json_object_get(tab, "boundary"), "conditions");
+            char *bpath = csv_path_of(path, i + 1, 1);
+            size_t k;
+            cbuf = NULL;
+            clen = 0;
+            c = open_memstream(&cbuf, &clen);
+            fprintf(c, "# recstab boundary of table %zu: case=", i + 1);
+            put_comment_text(c, tabs[i].case_path);
+            fputs("; conditions:", c);
+            for (k = 0; k < json_array_size(conds); k++) {
+                json_t *cd = json_array_get(conds, k);
+                fprintf(c, "%s %lld (%s) %s > 0", k ? ";" : "",
+                        (long long) json_integer_value(json_object_get(cd, "index")), jstr(cd, "origin"), jstr(cd, "poly"));
+            }
+            fputc('\n', c);
+            if (shard_count > 1)
+                fprintf(c, "# shard %ld/%ld: boundary rows only in shard 1\n", shard_index, shard_count);
+            fclose(c);
+            to = csv_extra(set, bpath, err, errlen);
+            rc = to == NULL ? -1 : csv_write_one(to, cbuf, bt, err, errlen);
+            if (rc == 0) set_path_key(tab, "boundary_csv", bpath);
+            free(cbuf);
+            free(bpath);
+        }
+    }
+    free(tabs);
+    return rc;
 }
 
 void rs_cli_trim_tables(json_t *docs, int have_csv, size_t max_rows)
@@ -455,12 +530,22 @@ static void put_path(FILE *f, const char *path)
     free(p);
 }
 
-/* the quoted name of a table file in the plot's private folder */
+/* the name of a table's datablock in the script ($t0, $b0: the rows of
+ * table 0 and of its boundary); the script holds the data, so a kept
+ * --plot-script runs on its own */
 static void put_table(FILE *f, const char *dir, char kind, size_t i)
 {
-    char p[4096 + 64];
-    snprintf(p, sizeof p, "%s/%c%zu.csv", dir, kind, i);
-    put_path(f, p);
+    (void) dir;
+    fprintf(f, "$%c%zu", kind, i);
+}
+
+/* a table's rows (without its header line) as the datablock $KIND I */
+static void put_datablock(FILE *g, char kind, size_t i, const char *table)
+{
+    const char *nl = strchr(table, '\n');
+    fprintf(g, "$%c%zu << EOD\n", kind, i);
+    if (nl != NULL) fputs(nl + 1, g);
+    fputs("EOD\n", g);
 }
 
 static const char *ext_of(const char *path)
@@ -469,19 +554,107 @@ static const char *ext_of(const char *path)
     return d ? d + 1 : "";
 }
 
-static int write_file(const char *path, const char *text)
+
+/* A label in LaTeX notation as plain Unicode text for gnuplot (its
+ * terminals run noenhanced: no markup from user text reaches them): Greek
+ * letters and a few symbols from their macros, digits and signs after _ and
+ * ^ as sub- and superscripts, $ and braces dropped. */
+static void latex_to_text(char *out, size_t n, const char *in)
 {
-    FILE *f = fopen(path, "w");
-    int ok;
-    if (!f) return -1;
-    ok = fputs(text, f) >= 0;
-    if (fclose(f) != 0) ok = 0;
-    return ok ? 0 : -1;
+    static const char *const mac[][2] = {
+        {"alpha", "\u03b1"}, {"beta", "\u03b2"}, {"gamma", "\u03b3"}, {"delta", "\u03b4"}, {"epsilon", "\u03b5"},
+        {"varepsilon", "\u03b5"}, {"zeta", "\u03b6"}, {"eta", "\u03b7"}, {"theta", "\u03b8"}, {"iota", "\u03b9"},
+        {"kappa", "\u03ba"}, {"lambda", "\u03bb"}, {"mu", "\u03bc"}, {"nu", "\u03bd"}, {"xi", "\u03be"},
+        {"pi", "\u03c0"}, {"rho", "\u03c1"}, {"sigma", "\u03c3"}, {"tau", "\u03c4"}, {"phi", "\u03c6"},
+        {"varphi", "\u03c6"}, {"chi", "\u03c7"}, {"psi", "\u03c8"}, {"omega", "\u03c9"}, {"Gamma", "\u0393"},
+        {"Delta", "\u0394"}, {"Theta", "\u0398"}, {"Lambda", "\u039b"}, {"Xi", "\u039e"}, {"Pi", "\u03a0"},
+        {"Sigma", "\u03a3"}, {"Phi", "\u03a6"}, {"Psi", "\u03a8"}, {"Omega", "\u03a9"}, {"Re", "Re"},
+        {"Im", "Im"}, {"cdot", "\u00b7"}, {"times", "\u00d7"}, {"le", "\u2264"}, {"ge", "\u2265"},
+        {"infty", "\u221e"}, {"ell", "\u2113"}, {",", " "}, {";", " "}, {" ", " "}};
+    static const char *const sub[] = {"\u2080", "\u2081", "\u2082", "\u2083", "\u2084", "\u2085", "\u2086",
+                                      "\u2087", "\u2088", "\u2089"};
+    static const char *const sup[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074", "\u2075", "\u2076",
+                                      "\u2077", "\u2078", "\u2079"};
+    size_t o = 0, i = 0, k;
+    int script = 0;   /* 1 after _, 2 after ^, until the group or character ends */
+    int group = 0;
+    out[0] = '\0';
+    while (in[i] && o + 8 < n) {
+        const char *put = NULL;
+        char one[2] = {0, 0};
+        if (in[i] == '$' || ((in[i] == '{' || in[i] == '}') && !(in[i] == '}' && group))) { i++; continue; }
+        if (in[i] == '}' && group) { group = 0; script = 0; i++; continue; }
+        if ((in[i] == '_' || in[i] == '^') && in[i + 1]) {
+            script = in[i] == '_' ? 1 : 2;
+            i++;
+            if (in[i] == '{') { group = 1; i++; }
+            continue;
+        }
+        if (in[i] == '\\') {
+            size_t j = i + 1, len;
+            while (((in[j] | 0x20) >= 'a' && (in[j] | 0x20) <= 'z')) j++;
+            if (j == i + 1 && in[j]) j++;
+            len = j - i - 1;
+            for (k = 0; k < sizeof mac / sizeof mac[0]; k++)
+                if (strlen(mac[k][0]) == len && strncmp(mac[k][0], in + i + 1, len) == 0) put = mac[k][1];
+            if (put == NULL) { one[0] = in[i + 1]; put = one; len = in[i + 1] ? 1 : 0; j = i + 1 + len; }
+            i = j;
+            if (in[i] == ' ' && put != one) i++;   /* the blank ending a macro name */
+        } else if (script && in[i] >= '0' && in[i] <= '9') {
+            put = (script == 1 ? sub : sup)[in[i] - '0'];
+            i++;
+        } else if (script == 2 && in[i] == '-') { put = "\u207b"; i++; }
+        else if (script == 2 && in[i] == '+') { put = "\u207a"; i++; }
+        else if (script == 1 && strchr("aehijklmnoprstuvx", in[i]) != NULL && in[i] != '\0') {
+            static const char *const sl[] = {"\u2090", "\u2091", "\u2095", "\u1d62", "\u2c7c", "\u2096", "\u2097",
+                                             "\u2098", "\u2099", "\u2092", "\u209a", "\u1d63", "\u209b", "\u209c",
+                                             "\u1d64", "\u1d65", "\u2093"};
+            put = sl[strchr("aehijklmnoprstuvx", in[i]) - "aehijklmnoprstuvx"];
+            i++;
+        } else {
+            /* a character that has no sub/superscript form: written as it is */
+            size_t m = (size_t) rs_utf8_seq_len(in + i, strlen(in + i));
+            if (m == 0) m = 1;
+            if (o + m + 1 < n) { memcpy(out + o, in + i, m); o += m; }
+            i += m;
+            if (!group) script = 0;
+            continue;
+        }
+        if (!group) script = 0;
+        if (o + strlen(put) + 1 < n) { memcpy(out + o, put, strlen(put)); o += strlen(put); }
+    }
+    out[o] = '\0';
 }
 
+/* The label of a parameter or column name: the case's `label` text, else
+ * the name itself. */
+static void label_of(char *out, size_t n, const tab_t *t, const char *name)
+{
+    const char *l = t != NULL ? jstr(t->labels, name) : NULL;
+    if (l != NULL) latex_to_text(out, n, l);
+    else snprintf(out, n, "%s", name ? name : "");
+}
+
+/* A table's legend: the case's title (else its path), and the values the
+ * sweep was taken at (`sweep ... at NAME=VALUE`). */
 static const char *legend(const tab_t *t)
 {
-    return t->title ? t->title : t->case_path;
+    static __thread char buf[1024];
+    json_t *at = json_object_get(t->el, "at");
+    const char *key;
+    json_t *val;
+    size_t o;
+    snprintf(buf, sizeof buf, "%s", t->title ? t->title : t->case_path);
+    if (json_object_size(at) == 0) return buf;
+    o = strlen(buf);
+    json_object_foreach(at, key, val) {
+        char lab[256];
+        label_of(lab, sizeof lab, t, key);
+        if (o < sizeof buf)
+            o += (size_t) snprintf(buf + o, sizeof buf - o, ", %s = %s", lab,
+                                   json_string_value(val) ? json_string_value(val) : "?");
+    }
+    return buf;
 }
 
 static int col_index(const json_t *o, const char *name)
@@ -502,15 +675,17 @@ static void sweep_panel_start(FILE *g, const tab_t *tabs, size_t n, const char *
     size_t i;
     for (i = 0; i < n; i++) {
         const json_t *o = tabs[i].el;
-        const char *prm = jstr(o, "param");
+        char prm[256];
         if (strcmp(jstr(o, "analysis"), "sweep") != 0 || strcmp(jstr(o, "of"), kind) != 0) continue;
+        label_of(prm, sizeof prm, tabs + i, jstr(o, "param"));
         if (strcmp(jstr(o, "spacing"), "log") == 0) logx = 1;
         if (strstr(xl, prm) == NULL && strlen(xl) + strlen(prm) + 3 < sizeof xl) {
             if (xl[0]) strcat(xl, ", ");
             strcat(xl, prm);
         }
     }
-    fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
+    /* the legend right of the panel: never over the axis labels */
+    fputs("reset\nset datafile separator ','\nset key outside right top vertical\nset grid\n", g);
     fputs("set xlabel ", g);
     put_q(g, xl);
     fputc('\n', g);
@@ -582,17 +757,10 @@ static int plot_dir_make(plot_t *pl, char *err, size_t errlen)
  * the maps and the kinds of sweep. */
 static void plot_write_tables(plot_t *pl)
 {
-    char p[4096 + 64];
     size_t i;
     int k;
     for (i = 0; i < pl->n; i++) {
         const char *a = jstr(pl->tabs[i].el, "analysis"), *of = jstr(pl->tabs[i].el, "of");
-        snprintf(p, sizeof p, "%s/t%zu.csv", pl->dir, i);
-        write_file(p, jstr(pl->tabs[i].el, "table"));
-        if (jstr(pl->tabs[i].el, "boundary_table")) {
-            snprintf(p, sizeof p, "%s/b%zu.csv", pl->dir, i);
-            write_file(p, jstr(pl->tabs[i].el, "boundary_table"));
-        }
         if (strcmp(a, "map") == 0) pl->nmaps++;
         else for (k = 0; k < 3; k++) if (of && strcmp(of, plot_kinds[k]) == 0) pl->has_kind[k] = 1;
     }
@@ -617,20 +785,44 @@ static void plot_count_panels(plot_t *pl)
                   + (size_t) (pl->has_kind[2] ? 2 * (pl->nmodes > 0 ? pl->nmodes : 1) : 0);
 }
 
+/* The two axes of a map are the real and imaginary parts of one number:
+ * their labels start with Re and Im (`label lr1 = "Re \\Lambda_1"`), or
+ * their names differ only in r and i at one place (lr1, li1; xr, xi). */
+static int complex_plane(const tab_t *t, const char *a, const char *b, const char *la, const char *lb)
+{
+    size_t k, na = strlen(a), diff = 0, at = 0;
+    (void) t;
+    if (strncmp(la, "Re", 2) == 0 && strncmp(lb, "Im", 2) == 0) return 1;
+    if (na != strlen(b)) return 0;
+    for (k = 0; k < na; k++)
+        if (a[k] != b[k]) { diff++; at = k; }
+    return diff == 1 && a[at] == 'r' && b[at] == 'i';
+}
+
 /* a map: one panel, the verdict (or the radius capped at 2) over the grid */
 static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
 {
     json_t *tab = pl->tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
     int radius = strcmp(jstr(tab, "of"), "radius") == 0;
     int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
-    fputs("reset session\nset datafile separator ','\nset key outside bottom center horizontal\n", g);
+    char xl[256], yl[256];
+    /* the legend (the boundary) above the panel, the colour box right of
+     * it: neither covers an axis label */
+    fputs("reset\nset datafile separator ','\nset key outside top center horizontal\n", g);
     fputs("set title ", g);
     put_q(g, legend(pl->tabs + i));
+    label_of(xl, sizeof xl, pl->tabs + i, json_string_value(json_array_get(params, 0)));
+    label_of(yl, sizeof yl, pl->tabs + i, json_string_value(json_array_get(params, 1)));
     fputs("\nset xlabel ", g);
-    put_q(g, json_string_value(json_array_get(params, 0)));
+    put_q(g, xl);
     fputs("\nset ylabel ", g);
-    put_q(g, json_string_value(json_array_get(params, 1)));
+    put_q(g, yl);
     fputs("\nset autoscale fix\n", g);
+    /* a map over the complex plane (Re and Im of one number): one unit is
+     * the same length on both axes */
+    if (complex_plane(pl->tabs + i, json_string_value(json_array_get(params, 0)),
+                      json_string_value(json_array_get(params, 1)), xl, yl))
+        fputs("set size ratio -1\n", g);
     if (radius)
         fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
               "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
@@ -640,7 +832,7 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
               "1.5 '#d73027', 2.5 '#d73027')\n", g);
     fputs("plot ", g);
     put_table(g, pl->dir, 't', i);
-    fprintf(g, " skip 1 using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
+    fprintf(g, " using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
             col_index(tab, json_string_value(json_array_get(params, 1))));
     if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(tab, "radius"), col_index(tab, "radius"));
     else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(tab, "code"), col_index(tab, "code"));
@@ -649,7 +841,7 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
     {
         fputs(", ", g);
         put_table(g, pl->dir, 'b', i);
-        fputs(" skip 1 using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
+        fputs(" using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
               "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
     }
     fputc('\n', g);
@@ -662,20 +854,20 @@ static void plot_sweep_curve(FILE *g, const plot_t *pl, size_t i, int k)
     int x = col_index(tab, jstr(tab, "param"));
     put_table(g, pl->dir, 't', i);
     if (k == 0) {
-        fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "radius"));
+        fprintf(g, " using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "radius"));
         put_q(g, legend(pl->tabs + i));
     } else if (k == 1) {
-        fprintf(g, " skip 1 using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
+        fprintf(g, " using %d:($%d < 0 ? NaN : $%d) with steps title ", x,
                 col_index(tab, "code"), col_index(tab, "code"));
         put_q(g, legend(pl->tabs + i));
     } else {
         char t2[600];
-        fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "damping_ratio_1"));
+        fprintf(g, " using %d:%d with linespoints pt 7 ps 0.5 title ", x, col_index(tab, "damping_ratio_1"));
         snprintf(t2, sizeof t2, "%s: damping ratio", legend(pl->tabs + i));
         put_q(g, t2);
         fputs(", ", g);
         put_table(g, pl->dir, 't', i);
-        fprintf(g, " skip 1 using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(tab, "frequency_error_1"));
+        fprintf(g, " using %d:%d with linespoints pt 6 ps 0.5 title ", x, col_index(tab, "frequency_error_1"));
         snprintf(t2, sizeof t2, "%s: frequency error", legend(pl->tabs + i));
         put_q(g, t2);
     }
@@ -731,7 +923,7 @@ static void plot_mode_panels(FILE *g, const plot_t *pl)
                 if (!first) fputs(", ", g);
                 first = 0;
                 put_table(g, pl->dir, 't', i);
-                fprintf(g, " skip 1 using %d:%d with linespoints pt 7 ps 0.4 title ",
+                fprintf(g, " using %d:%d with linespoints pt 7 ps 0.4 title ",
                         col_index(tab, jstr(tab, "param")), col_index(tab, cname));
                 put_q(g, legend(pl->tabs + i));
             }
@@ -740,28 +932,39 @@ static void plot_mode_panels(FILE *g, const plot_t *pl)
         }
 }
 
-/* the gnuplot script: terminal and output (the staged file), then every panel */
-static void plot_write_script(const plot_t *pl, const rs_cli_out_t *o, const char *ext)
+/* The gnuplot script: the tables as datablocks, then for each output its
+ * terminal (from the extension: pdfcairo, pngcairo, svg; size w x h pixels,
+ * 0: 800 x 600 per panel; a PDF gets w/100 x h/100 inches) and every panel.
+ * paths[k]: where output k is written (the staged file, or the final path
+ * in a kept --plot-script). */
+static void plot_write_script(FILE *g, const plot_t *pl, rs_cli_out_t **plots, int nplots, const char *const *paths,
+                              long w, long h)
 {
-    char p[4096 + 64];
-    int cols = pl->npanels > 1 ? 2 : 1, rows = (int) ((pl->npanels + (size_t) cols - 1) / (size_t) cols);
-    FILE *g;
+    int cols = pl->npanels > 1 ? 2 : 1, rows = (int) ((pl->npanels + (size_t) cols - 1) / (size_t) cols), k;
     size_t i;
-    snprintf(p, sizeof p, "%s/plot.gp", pl->dir);
-    g = fopen(p, "w");
-    if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %d,%d noenhanced\n", 800 * cols, 600 * rows);
-    else fprintf(g, "set terminal svg size %d,%d noenhanced\n", 800 * cols, 600 * rows);
-    fputs("set output ", g);
-    put_path(g, o->tmp);
-    fputs("\nset datafile separator ','\nset key outside bottom center horizontal\nset grid\n", g);
-    if (pl->npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
-    for (i = 0; i < pl->n; i++)
-        if (strcmp(jstr(pl->tabs[i].el, "analysis"), "map") == 0) plot_map_panel(g, pl, i);
-    plot_sweep_panels(g, pl);
-    plot_mode_panels(g, pl);
-    if (pl->npanels > 1) fputs("unset multiplot\n", g);
-    fputs("set output\n", g);
-    fclose(g);
+    if (w <= 0) { w = 800L * cols; h = 600L * rows; }
+    fputs("# recstab plot script: the tables of the run as datablocks, then each --plot output\n", g);
+    for (i = 0; i < pl->n; i++) {
+        put_datablock(g, 't', i, jstr(pl->tabs[i].el, "table"));
+        if (jstr(pl->tabs[i].el, "boundary_table")) put_datablock(g, 'b', i, jstr(pl->tabs[i].el, "boundary_table"));
+    }
+    for (k = 0; k < nplots; k++) {
+        const char *ext = ext_of(plots[k]->path);
+        if (strcmp(ext, "png") == 0) fprintf(g, "set terminal pngcairo size %ld,%ld noenhanced\n", w, h);
+        else if (strcmp(ext, "pdf") == 0)
+            fprintf(g, "set terminal pdfcairo size %gin,%gin noenhanced\n", (double) w / 100, (double) h / 100);
+        else fprintf(g, "set terminal svg size %ld,%ld noenhanced\n", w, h);
+        fputs("set output ", g);
+        put_path(g, paths[k]);
+        fputc('\n', g);
+        if (pl->npanels > 1) fprintf(g, "set multiplot layout %d,%d\n", rows, cols);
+        for (i = 0; i < pl->n; i++)
+            if (strcmp(jstr(pl->tabs[i].el, "analysis"), "map") == 0) plot_map_panel(g, pl, i);
+        plot_sweep_panels(g, pl);
+        plot_mode_panels(g, pl);
+        if (pl->npanels > 1) fputs("unset multiplot\n", g);
+        fputs("set output\n", g);
+    }
 }
 
 /* Runs gnuplot on the script (registered for the signal handler while it
@@ -820,37 +1023,61 @@ static int plot_check_output(const rs_cli_out_t *o, char *err, size_t errlen)
     return 0;
 }
 
-int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen)
+int rs_cli_plot_stage(rs_cli_out_t **plots, int nplots, rs_cli_out_t *script, long w, long h, json_t *docs,
+                      char *err, size_t errlen)
 {
-    const char *ext = ext_of(o->path);
     plot_t pl;
-    int fd, rc = -1;
+    int fd, rc = 0, k;
+    const char **paths = calloc((size_t) nplots + 1, sizeof(char *));
+    char p[4096 + 64];
+    FILE *g;
     memset(&pl, 0, sizeof pl);
     pl.n = collect(docs, NULL);
     if (pl.n == 0) {
         snprintf(err, errlen, "--plot: the run has no sweep or map to plot");
-        return -1;
-    }
-    if (strcmp(ext, "png") != 0 && strcmp(ext, "svg") != 0) {
-        snprintf(err, errlen, "--plot: expected a file name ending in .png or .svg, found '%s'", o->path);
+        free(paths);
         return -1;
     }
     pl.tabs = calloc(pl.n + 1, sizeof(tab_t));
     collect(docs, pl.tabs);
-    if (plot_dir_make(&pl, err, errlen) != 0) {
-        free(pl.tabs);
-        return -1;
-    }
     plot_write_tables(&pl);
     plot_count_panels(&pl);
-    fd = stage_open(o, err, errlen);
-    if (fd >= 0) {
-        close(fd);
-        plot_write_script(&pl, o, ext);
-        if (plot_run_gnuplot(pl.dir, err, errlen) == 0 && plot_check_output(o, err, errlen) == 0) rc = 0;
-        else stage_drop(o);
+    if (script != NULL) {
+        /* the kept script writes the final files */
+        for (k = 0; k < nplots; k++) paths[k] = plots[k]->path;
+        fd = stage_open(script, err, errlen);
+        if (fd < 0) rc = -1;
+        else {
+            g = fdopen(fd, "w");
+            plot_write_script(g, &pl, plots, nplots, paths, w, h);
+            if (fclose(g) != 0) {
+                snprintf(err, errlen, "--plot-script: cannot write '%s': %s", script->tmp, strerror(errno));
+                stage_drop(script);
+                rc = -1;
+            }
+        }
     }
-    plot_dir_drop(pl.dir, pl.n);
+    if (rc == 0 && nplots > 0 && plot_dir_make(&pl, err, errlen) != 0) rc = -1;
+    else if (rc == 0 && nplots > 0) {
+        for (k = 0; k < nplots && rc == 0; k++) {
+            fd = stage_open(plots[k], err, errlen);
+            if (fd < 0) rc = -1;
+            else { close(fd); paths[k] = plots[k]->tmp; }
+        }
+        snprintf(p, sizeof p, "%s/plot.gp", pl.dir);
+        if (rc == 0 && (g = fopen(p, "w")) != NULL) {
+            plot_write_script(g, &pl, plots, nplots, paths, w, h);
+            fclose(g);
+            if (plot_run_gnuplot(pl.dir, err, errlen) != 0) rc = -1;
+            for (k = 0; k < nplots && rc == 0; k++) rc = plot_check_output(plots[k], err, errlen);
+        } else if (rc == 0) {
+            snprintf(err, errlen, "--plot: cannot write '%s': %s", p, strerror(errno));
+            rc = -1;
+        }
+        if (rc != 0) for (k = 0; k < nplots; k++) stage_drop(plots[k]);
+        plot_dir_drop(pl.dir, pl.n);
+    }
+    free(paths);
     free(pl.tabs);
     return rc;
 }

@@ -24,7 +24,16 @@ typedef struct {
     char *tmp;        /* the staged content (malloc'd name) */
     char *backup;     /* hard link to the replaced file until the run is final */
     int renamed;      /* tmp is at path; rs_cli_out_undo puts the old file back */
+    int owned;        /* made by the run (a further CSV file): path and the struct are malloc'd */
 } rs_cli_out_t;
+
+/* Every output file of a run: --csv (and the further CSV files it takes),
+ * each --plot, --plot-script. */
+#define RS_CLI_MAX_OUTS 256
+typedef struct {
+    rs_cli_out_t *o[RS_CLI_MAX_OUTS];
+    int n;
+} rs_cli_outs_t;
 
 /* Checks what is at path (before any work: errors come early); 0, or -1
  * with a message in err. */
@@ -32,14 +41,22 @@ int rs_cli_out_init(rs_cli_out_t *o, const char *option, const char *path, char 
 /* Removes a temporary or undoes a rename that rs_cli_out_done did not make final. */
 void rs_cli_out_clear(rs_cli_out_t *o);
 
-/* Writes every table of the run into o's stage.  shard_index/shard_count
- * add the "# shard" lines.  Sets "csv": path in every element written.  0 on
- * success, else -1 with a message in err. */
-int rs_cli_csv_stage(rs_cli_out_t *o, json_t *docs, long shard_index, long shard_count, char *err, size_t errlen);
+/* Writes the tables of the run, one per file: the first into o's stage,
+ * table t > 1 into STEM.t.csv and the exact boundary of a map into
+ * STEM.boundary.csv (STEM.t.boundary.csv) beside o's path STEM.csv, each
+ * with "# " comment lines before its one header line; the further files
+ * are added to set.  shard_index/shard_count add the "# shard" lines.  Sets
+ * "csv" (and "boundary_csv") in every element written.  0 on success, else
+ * -1 with a message in err (o written through, stdout, takes one table). */
+int rs_cli_csv_stage(rs_cli_out_t *o, rs_cli_outs_t *set, json_t *docs, long shard_index, long shard_count,
+                     char *err, size_t errlen);
 
-/* Renders the tables with gnuplot (terminal from the extension: .png
- * pngcairo, .svg svg) into o's stage. */
-int rs_cli_plot_stage(rs_cli_out_t *o, json_t *docs, char *err, size_t errlen);
+/* Renders the tables with gnuplot into the stage of every plot (terminal
+ * from the extension: .pdf pdfcairo, .png pngcairo, .svg svg; w x h pixels,
+ * 0: 800 x 600 per panel), in one gnuplot run; script (or NULL) receives
+ * the gnuplot script, data included, writing the final paths. */
+int rs_cli_plot_stage(rs_cli_out_t **plots, int nplots, rs_cli_out_t *script, long w, long h, json_t *docs,
+                      char *err, size_t errlen);
 
 /* The commit, all or nothing for the regular files: rs_cli_out_rename moves
  * every stage onto its path (keeping the old files as hard links), undoing

@@ -119,6 +119,9 @@ void rs_case_clear(rs_case_t c)
     slong i;
     flint_free(c->path);
     flint_free(c->title);
+    for (i = 0; i < c->nlabels; i++) { flint_free(c->label_names[i]); flint_free(c->label_texts[i]); }
+    flint_free(c->label_names);
+    flint_free(c->label_texts);
     CLEAR_ALL(c->params, c->nparams, rs_name_clear);
     CLEAR_ALL(c->unknowns, c->nunknowns, rs_name_clear);
     CLEAR_ALL(c->assume, c->nassume, rs_cond_clear);

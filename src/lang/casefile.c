@@ -179,6 +179,57 @@ static int st_char(rs_stmt_t *x, size_t i)
     return RS_OK;
 }
 
+/* label NAME = "TEXT": the axis and legend label of a parameter or table
+ * column in plots (LaTeX notation allowed; \\ and \" stand for \ and ",
+ * other backslashes are kept: "Re \Lambda_1" and "Re \\Lambda_1" are
+ * the same label). */
+static int st_label(rs_stmt_t *x, size_t i)
+{
+    const char *t = x->src.text;
+    rs_case_struct *c = x->c;
+    size_t at, k, n = 0;
+    char *name, *text;
+    slong j;
+    _rs_skip_ws(t, &i);
+    at = i;
+    name = _rs_read_ident(t, &i);
+    if (name == NULL) return _rs_name_err(x, at, "a parameter or column name (label NAME = \"TEXT\")");
+    _rs_skip_ws(t, &i);
+    if (t[i] != '=') { flint_free(name); return _rs_expect_err(x, i, "'=' after the name in label"); }
+    i++;
+    _rs_skip_ws(t, &i);
+    if (t[i] != '"') { flint_free(name); return _rs_expect_err(x, i, "a quoted label text (label NAME = \"TEXT\")"); }
+    text = flint_malloc(strlen(t + i) + 1);
+    for (k = i + 1; t[k] != '\0' && t[k] != '"'; k++) {
+        if (t[k] == '\\' && (t[k + 1] == '\\' || t[k + 1] == '"')) k++;
+        text[n++] = t[k];
+    }
+    text[n] = '\0';
+    if (t[k] != '"') {
+        flint_free(name);
+        flint_free(text);
+        return _rs_expect_err(x, k, "'\"' closing the label text");
+    }
+    i = k + 1;
+    _rs_skip_ws(t, &i);
+    if (t[i] != '\0') { flint_free(name); flint_free(text); return _rs_expect_err(x, i, "end of line after the label"); }
+    for (j = 0; j < c->nlabels; j++)
+        if (strcmp(c->label_names[j], name) == 0) {
+            /* a later label of the same name replaces the earlier one */
+            flint_free(c->label_names[j]);
+            flint_free(c->label_texts[j]);
+            break;
+        }
+    if (j == c->nlabels) {
+        RS_GROW(c->label_names, c->nlabels);
+        RS_GROW(c->label_texts, c->nlabels);
+        c->nlabels++;
+    }
+    c->label_names[j] = name;
+    c->label_texts[j] = text;
+    return RS_OK;
+}
+
 static int st_set(rs_stmt_t *x, size_t i)
 {
     const char *t = x->src.text;
@@ -329,7 +380,7 @@ static int statement(rs_stmt_t *x)
     kw = i;
     word = _rs_read_ident(t, &i);
     if (word == NULL)
-        return _rs_expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, analyse, expect, claim)");
+        return _rs_expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, label, analyse, expect, claim)");
     if (t[i] == '\'') {
         /* a state equation NAME' = EXPR of the current subsystem */
         r = _rs_st_state_equation(x, word, i);
@@ -360,6 +411,8 @@ static int statement(rs_stmt_t *x)
         r = st_char(x, i);
     } else if (strcmp(word, "set") == 0) {
         r = st_set(x, i);
+    } else if (strcmp(word, "label") == 0) {
+        r = st_label(x, i);
     } else if (strcmp(word, "analyse") == 0 || strcmp(word, "analyze") == 0) {
         _rs_skip_ws(t, &i);
         if (t[i] == '\0')
@@ -375,7 +428,7 @@ static int statement(rs_stmt_t *x)
     } else if (strcmp(word, "recurrence") == 0) {
         r = _rs_st_recurrence(x, i);
     } else {
-        r = _rs_expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, analyse, expect, claim)");
+        r = _rs_expect_err(x, kw, "a statement keyword (title, param, assume, unknown, let, eq, char, set, label, analyse, expect, claim)");
     }
     flint_free(word);
     return r;

@@ -70,6 +70,8 @@ void rs_engine_run(void *pts, size_t size, slong lo, slong hi, const rs_engine_t
     slong done = 0, mylo, myhi, k;
     double last = now_seconds();
     my_block(&mylo, &myhi, lo, hi, e->serial);
+    /* the start: the estimate of the time left counts from here */
+    if (e->progress != NULL && myhi > mylo) e->progress(e->progress_arg, e->what, 0, myhi - mylo);
 #pragma omp parallel for schedule(dynamic, 16) if (!e->serial)
     for (k = mylo; k < myhi; k++) {
         char *pt = (char *) pts + (size_t) (k - lo) * size;

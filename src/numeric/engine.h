@@ -23,7 +23,7 @@ typedef struct {
     void *arg;
     int serial;           /* one point after another, in every process (the callback
                              is not thread-safe, or its results hold pointers) */
-    rs_engine_progress_fn progress;   /* NULL: none; else at most every 0.2 s and at the end */
+    rs_engine_progress_fn progress;   /* NULL: none; else at the start (done 0), at most every 0.2 s, and at the end */
     void *progress_arg;
     const char *what;     /* "sweep w", "map x,y": for progress and budget messages */
 } rs_engine_t;

@@ -81,7 +81,7 @@ if [ -n "$SANFLAGS" ]; then
     echo "skip python: a sanitizer build of librecstab.so cannot be loaded by python3"
 elif [ -x "$PY" ] && "$PY" -c 'import pytest' 2>/dev/null; then
     pyd=$(ls -d "$P"/lib/python3*/dist-packages | head -1)
-    got=$(cd "$T" && PYTHONPATH="$pyd" "$PY" -c 'import recstab; d = recstab.analyse("unknown x\neq x[n+1] = x[n]/2\n"); print(recstab.library_path, d["unknowns"])' 2>&1)
+    got=$(cd "$T" && PYTHONPATH="$pyd" "$PY" -c 'import recstab; d = recstab.analyse("unknown x\neq x[n+1] = x[n]/2\n"); print(recstab.library_path, d["cases"][0]["unknowns"])' 2>&1)
     if [ "$got" = "$P/lib/librecstab.so.0 ['x']" ]; then ok "the installed Python module loads the installed library"
     else fail "installed Python module: $got"; fi
     if RECSTAB_LIBRARY="$(pwd)/$BUILD/librecstab.so" PYTHONPATH="$(pwd)/python" "$PY" -m pytest -q -p no:cacheprovider \

@@ -34,8 +34,17 @@ SW="sweep w from 0 to 4 steps 40"
 # --csv: a map and a sweep of two cases in one file
 "$RS" --csv "$T/run.csv" --set muh=1 --set wh=1 --analyse "$MAP" "$PARK" >"$T/out" 2>"$T/err"; rc=$?
 check_exit "--csv map exit" 0 "$rc"
+# one table per file: the map in run.csv, its exact boundary in run.boundary.csv,
+# each with "# " comments and then exactly one header line
 n=$(grep -c '^# recstab table ' "$T/run.csv" 2>/dev/null)
-if [ "$n" = 2 ]; then ok "--csv: map table and its boundary table"; else fail "--csv tables: $n"; fi
+hb=$(grep -v '^#' "$T/run.boundary.csv" 2>/dev/null | grep -c '^condition,alpha,m,scan$')
+if [ "$n" = 1 ] && [ "$hb" = 1 ]; then ok "--csv: map table in run.csv, its boundary in run.boundary.csv"
+else fail "--csv tables: $n in run.csv, boundary header $hb: $(ls "$T")"; fi
+# comments only before the header: after the first line not starting with '#', none does
+for f in "$T/run.csv" "$T/run.boundary.csv"; do
+    if awk 'BEGIN { h = 0 } /^#/ { if (h) bad = 1; next } { h = 1 } END { exit bad }' "$f"; then ok "--csv: comments only before the header ($(basename "$f"))"
+    else fail "--csv: a comment after the header in $f"; fi
+done
 rows=$(grep -v '^#' "$T/run.csv" | grep -c ',fast$\|,prec128$\|,prec256$\|,exact$')
 if [ "$rows" = 750 ]; then ok "--csv: 750 map rows"; else fail "--csv map rows: $rows"; fi
 if grep -q '^index,i,j,alpha,m,alpha_exact,m_exact,verdict,code,radius,radius_lower,radius_upper,decided_by$' "$T/run.csv"; then
@@ -44,8 +53,9 @@ if grep -q "csv  *$T/run.csv" "$T/out"; then ok "--csv: report names the file"; 
 
 "$RS" --json --csv "$T/two.csv" --analyse "$SW" cases/textbook/central-difference.case cases/textbook/trapezoidal.case >"$T/out.json" 2>"$T/err"; rc=$?
 check_exit "--csv two cases exit" 0 "$rc"
-n=$(grep -c '^# recstab table ' "$T/two.csv")
-if [ "$n" = 2 ]; then ok "--csv: one table per case"; else fail "--csv two cases: $n tables"; fi
+n=$(cat "$T/two.csv" "$T/two.2.csv" 2>/dev/null | grep -c '^# recstab table ')
+if [ "$n" = 2 ] && grep -q 'central-difference' "$T/two.csv" && grep -q 'trapezoidal' "$T/two.2.csv"; then
+    ok "--csv: one table per case, the second in two.2.csv"; else fail "--csv two cases: $n tables ($(ls "$T"))"; fi
 if grep -q '"table"' "$T/out.json"; then fail "--json with --csv still carries the table"; else ok "--json with --csv: table only in the file"; fi
 if grep -q '"points": 41' "$T/out.json" && grep -q '"decided_by": {' "$T/out.json"; then ok "--json sweep element"; else fail "--json sweep element"; fi
 
@@ -106,7 +116,7 @@ if command -v gnuplot >/dev/null 2>&1; then
         --analyse "sweep alpha from 0 to 3 steps 5 of radius" --set m=10 "$PARK" >/dev/null 2>"$T/err"; rc=$?
     check_exit "--plot map and sweep together exit" 0 "$rc"
     if grep -q 'spectral radius' "$T/mix.svg"; then ok "--plot map and sweep: both panels"; else fail "--plot map and sweep: $(cat "$T/err")"; fi
-    "$RS" --plot "$T/x.pdf" --analyse "$SW" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
+    "$RS" --plot "$T/x.jpg" --analyse "$SW" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
     check_exit "--plot unknown extension" 2 "$rc"
     "$RS" --plot "$T/none.png" cases/textbook/central-difference.case >/dev/null 2>&1; rc=$?
     check_exit "--plot without sweep or map" 2 "$rc"

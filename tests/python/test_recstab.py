@@ -39,15 +39,16 @@ def test_analyse_text_set_and_analyses():
     with open(CD, encoding="utf-8") as f:
         text = f.read()
     doc = recstab.analyse(text, set={"w": 3}, analyses=["charpoly", "stability"])
-    assert [r["analysis"] for r in doc["results"]] == ["charpoly", "stability"]
-    assert "lambda^2 + 7*lambda + 1" in json.dumps(doc["results"][0])
-    assert "unstable" in json.dumps(doc["results"][1])
+    res = doc["cases"][0]["results"]
+    assert [r["analysis"] for r in res] == ["charpoly", "stability"]
+    assert "lambda^2 + 7*lambda + 1" in json.dumps(res[0])
+    assert "unstable" in json.dumps(res[1])
 
 
 def test_failed_claim_is_a_document_with_status_1():
     status, doc = recstab.analyse_status(CD, analyses=["claim bounded when w < 3"])
     assert status == 1
-    assert doc["results"][0]["analysis"] == "claim"
+    assert doc["cases"][0]["results"][0]["analysis"] == "claim"
 
 
 def test_bad_input_raises_with_place():

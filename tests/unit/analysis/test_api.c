@@ -184,16 +184,18 @@ static void test_api_with_sets_and_analyses(void **state)
     assert_int_equal(rs_analyse_json_with(text, "cases/textbook/central-difference.case", sets, an, 0, -1, -1, &json), 0);
     j = json_loads(json, 0, NULL);
     assert_non_null(j);
-    r = json_array_get(json_object_get(j, "results"), 0);
+    /* one shape for every run: {"cases": [DOC]} */
+    assert_int_equal(json_array_size(json_object_get(j, "cases")), 1);
+    r = json_array_get(json_object_get(json_array_get(json_object_get(j, "cases"), 0), "results"), 0);
     assert_string_equal(json_string_value(json_object_get(r, "analysis")), "stability");
     assert_non_null(strstr(json, "\"unstable\""));
-    assert_null(json_object_get(j, "scheme"));
+    assert_null(json_object_get(json_array_get(json_object_get(j, "cases"), 0), "scheme"));
     json_decref(j);
     rs_free(json);
     /* RS_RUN_SCHEME: the document carries the scheme, as under --markdown */
     assert_int_equal(rs_analyse_json_with(text, "x.case", sets, an, RS_RUN_SCHEME, -1, -1, &json), 0);
     j = json_loads(json, 0, NULL);
-    assert_non_null(json_object_get(j, "scheme"));
+    assert_non_null(json_object_get(json_array_get(json_object_get(j, "cases"), 0), "scheme"));
     json_decref(j);
     rs_free(json);
     /* a name the case does not declare: exit 2, the error as a document */
