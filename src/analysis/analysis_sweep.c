@@ -1,7 +1,8 @@
 /* analysis_sweep.c -- the sweep analysis of the equations, certified per
  * point, and the table entries of sweep and map:
  *
- *   sweep NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]
+ *   sweep NAME from A to B steps K [log] [of radius|modes|stability] [at NAME=VALUE, ...]
+ *         [h=EXPR reference=EXPR[,EXPR]]
  *
  * The request is parsed by sweep_request.c, the points computed by the
  * engine (sweep_engine.c) with the model of the equations (sweep_poly.c);
@@ -112,7 +113,20 @@ static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     buf = sweep_table(cols, vals, rows, lo, hi, R->of, nref);
     rs_sweep_json_summary(o, rows, hi - lo, seconds);
     keep[0] = X[0].name;
-    json_object_set_new(o, "substituted", rs_sweep_json_sets(run, keep, 1));
+    {
+        json_t *sub = rs_sweep_json_sets(run, keep, 1), *at;
+        slong k;
+        /* the values of `at` replace the case's for this sweep */
+        if (R->nat > 0) {
+            at = json_object();
+            for (k = 0; k < R->nat; k++) {
+                json_object_set_new(at, R->at[k].name, rs_json_fmpq(R->at[k].value));
+                json_object_set_new(sub, R->at[k].name, rs_json_fmpq(R->at[k].value));
+            }
+            json_object_set_new(o, "at", at);
+        }
+        json_object_set_new(o, "substituted", sub);
+    }
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "table", json_string(buf));
     rs_sweep_json_rows(o, "rows", buf, run->opt->sweep.json_rows);
@@ -127,7 +141,7 @@ int rs_sweep_variant(rs_variant_t **v, rs_run_t *run, const rs_sweep_request_t *
     const char *keep[2];
     int r;
     for (k = 0; k < R->naxes; k++) keep[k] = run->c->params[R->axis[k].var].name;
-    rs_run_assignments(run, &a, &n, keep, R->naxes, NULL, 0);
+    rs_run_assignments(run, &a, &n, keep, R->naxes, R->at, R->nat);
     r = rs_run_variant(v, run, a, n);
     rs_assign_free(a, n);
     return r;

@@ -129,7 +129,7 @@ const rs_an_def_t rs_an_registry[] = {
      NULL, NULL, rs_an_modes, RS_AN_NOT_IN_P},
     {"simulate", NULL, EQ, "", simulate_opts, "the measured growth per step of the equations themselves",
      NULL, NULL, rs_an_simulate, RS_AN_NOT_IN_P},
-    {"sweep", NULL, EQ, "NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]",
+    {"sweep", NULL, EQ, "NAME from A to B steps K [log] [of radius|modes|stability] [at NAME=VALUE, ...] [h=EXPR reference=EXPR[,EXPR]]",
      NULL, "verdicts (and radius or modes) on a grid of one parameter", sweep_parse, sweep_req_clear, run_sweep, 0},
     {"map", NULL, EQ, "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
      "verdicts and radius on a grid of two parameters, with the exact boundary", map_parse, sweep_req_clear, run_map, 0},

@@ -8,7 +8,8 @@
  * on the request's syntax except for the `of modes` options h= and
  * reference=, whose expressions are evaluated per point at run time.
  *
- *   sweep NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]
+ *   sweep NAME from A to B steps K [log] [of radius|modes|stability] [at NAME=VALUE, ...]
+ *         [h=EXPR reference=EXPR[,EXPR]]
  *   map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]
  *
  * One engine computes every sweep and map (src/analysis/sweep_engine.c over
@@ -50,6 +51,8 @@ typedef struct {
     int logsp;            /* sweep: log spacing */
     int of;               /* RS_SWEEP_OF_* */
     const char *opts;     /* `of modes` options in the request text, or NULL */
+    rs_assign_t *at;      /* sweep ... at NAME=VALUE, ...: values for this sweep only */
+    slong nat;
 } rs_sweep_request_t;
 
 void rs_sweep_request_init(rs_sweep_request_t *r);

@@ -12,12 +12,16 @@ const char *const rs_sweep_of_names[3] = {"radius", "stability", "modes"};
 typedef struct { const char *s; size_t n; } tok_t;
 
 /* Splits at white space, ',' is a token of its own; stops at the first word
- * containing '=' (options), returned in *opts. */
-static slong tokenize(tok_t *t, slong max, const char *text, const char **opts)
+ * containing '=' (options), returned in *opts.  The words NAME=VALUE after
+ * the word `at` (separated by ',' or blanks; h= and reference= are options)
+ * go to at[0 .. *nat) instead (at most max of them). */
+static slong tokenize(tok_t *t, slong max, const char *text, const char **opts, tok_t *at, slong *nat)
 {
     slong n = 0;
     const char *p = text;
+    int in_at = 0;
     *opts = NULL;
+    *nat = 0;
     for (;;) {
         size_t len;
         while (*p == ' ' || *p == '\t') p++;
@@ -25,13 +29,61 @@ static slong tokenize(tok_t *t, slong max, const char *text, const char **opts)
         if (*p == ',') len = 1;
         else {
             len = strcspn(p, " \t,");
-            if (memchr(p, '=', len) != NULL) { *opts = p; break; }
+            if (memchr(p, '=', len) != NULL) {
+                int option = (strncmp(p, "h=", 2) == 0 || strncmp(p, "reference=", 10) == 0);
+                if (!in_at || option) { *opts = p; break; }
+                if (*nat < max) { at[*nat].s = p; at[*nat].n = len; }
+                (*nat)++;
+                p += len;
+                continue;
+            }
         }
+        if (in_at && len == 1 && *p == ',') { p++; continue; }
+        in_at = (len == 2 && strncmp(p, "at", 2) == 0);
+        if (in_at) { p += len; continue; }
         if (n < max) { t[n].s = p; t[n].n = len; }
         n++;
         p += len;
     }
     return n;
+}
+
+/* the NAME=VALUE words of `at` into R->at (every name a parameter other
+ * than the sweep's, each once) */
+static int parse_at(rs_sweep_request_t *R, rs_run_t *run, const rs_request_t *q, const tok_t *w, slong nw)
+{
+    slong k, j;
+    if (nw > SW_MAX_TOKENS) nw = SW_MAX_TOKENS;
+    R->at = calloc((size_t) nw + 1, sizeof(rs_assign_t));
+    for (k = 0; k < nw; k++) {
+        const char *eq = memchr(w[k].s, '=', w[k].n);
+        char name[80], num[200];
+        size_t nl = (size_t) (eq - w[k].s), vl = w[k].n - nl - 1;
+        slong idx;
+        rs_error_t e2;
+        if (nl >= sizeof name || vl >= sizeof num || nl == 0)
+            return rs_req_error(run, q, w[k].s, RS_ERR_INPUT, "expected NAME=VALUE after 'at', found '%s'", w[k].s);
+        memcpy(name, w[k].s, nl);
+        name[nl] = '\0';
+        memcpy(num, eq + 1, vl);
+        num[vl] = '\0';
+        idx = rs_case_param_index(run->c, name);
+        if (idx < 0) return rs_req_error(run, q, w[k].s, RS_ERR_INPUT, "'%s' is not a parameter", w[k].s);
+        for (j = 0; j < R->naxes; j++)
+            if (R->axis[j].var == idx)
+                return rs_req_error(run, q, w[k].s, RS_ERR_INPUT, "the swept parameter is also given a value at '%s'", w[k].s);
+        for (j = 0; j < R->nat; j++)
+            if (R->at[j].var == idx)
+                return rs_req_error(run, q, w[k].s, RS_ERR_INPUT, "a second value for the same parameter at '%s'", w[k].s);
+        R->at[R->nat].name = run->c->params[idx].name;
+        R->at[R->nat].var = idx;
+        fmpq_init(R->at[R->nat].value);
+        R->nat++;
+        rs_error_init(e2);
+        if (rs_expr_parse_number(R->at[R->nat - 1].value, num, e2) != RS_OK)
+            return rs_req_error(run, q, eq + 1, RS_ERR_INPUT, "expected a number: %s", e2->msg);
+    }
+    return RS_OK;
 }
 
 static int tok_is(const tok_t *t, const char *w)
@@ -142,6 +194,9 @@ void rs_sweep_request_init(rs_sweep_request_t *r)
 void rs_sweep_request_clear(rs_sweep_request_t *r)
 {
     slong ax;
+    if (r->at != NULL) rs_assign_free(r->at, r->nat);
+    r->at = NULL;
+    r->nat = 0;
     for (ax = 0; ax < 2; ax++) {
         fmpq_clear(r->axis[ax].from);
         fmpq_clear(r->axis[ax].to);
@@ -162,9 +217,9 @@ static int parse_param(rs_sweep_axis_t *ax, rs_run_t *run, const rs_request_t *q
 
 int rs_sweep_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_request_t *q, const char *rest)
 {
-    tok_t t[SW_MAX_TOKENS];
+    tok_t t[SW_MAX_TOKENS], at[SW_MAX_TOKENS];
     const char *opts;
-    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos;
+    slong nat, nt = tokenize(t, SW_MAX_TOKENS, rest, &opts, at, &nat), pos;
     rs_sweep_axis_t *ax = R->axis;
     int r;
     if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
@@ -172,9 +227,13 @@ int rs_sweep_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_reques
     R->naxes = 1;
     if (nt < 7 || !tok_is(t + 1, "from") || !tok_is(t + 3, "to") || !tok_is(t + 5, "steps"))
         return rs_req_error(run, q, rest, RS_ERR_INPUT,
-                            "expected 'sweep NAME from A to B steps K [log] [of radius|modes|stability]', found '%s'",
-                            rest);
+                            "expected 'sweep NAME from A to B steps K [log] [of radius|modes|stability] "
+                            "[at NAME=VALUE, ...]', found '%s'", rest);
     r = parse_param(ax, run, q, t);
+    if (r == RS_OK && nat > 0 && run->m->kind == RS_MODEL_COSIM)
+        r = rs_req_error(run, q, at[0].s, RS_ERR_INPUT, "'at' is for sweeps of equations; for this co-simulation "
+                         "give the values with set or --set, found '%s'", at[0].s);
+    if (r == RS_OK) r = parse_at(R, run, q, at, nat);
     if (r != RS_OK) return r;
     ax->from_at = t[2].s;
     if (tok_number(ax->from, t + 2) != RS_OK) return tok_error(run, q, t + 2, "expected a number after 'from', found '%s'");
@@ -197,15 +256,16 @@ int rs_sweep_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_reques
 
 int rs_map_request_parse(rs_sweep_request_t *R, rs_run_t *run, const rs_request_t *q, const char *rest)
 {
-    tok_t t[SW_MAX_TOKENS];
+    tok_t t[SW_MAX_TOKENS], at[SW_MAX_TOKENS];
     const char *opts;
-    slong nt = tokenize(t, SW_MAX_TOKENS, rest, &opts), pos, ax, max = run->opt->sweep.max_points;
+    slong nat, nt = tokenize(t, SW_MAX_TOKENS, rest, &opts, at, &nat), pos, ax, max = run->opt->sweep.max_points;
     rs_sweep_axis_t *X = R->axis;
     int r = RS_OK;
     if (nt > SW_MAX_TOKENS) nt = SW_MAX_TOKENS;
     R->kind = RS_SWEEP_KIND_MAP;
     R->naxes = 2;
     if (opts != NULL) return rs_req_error(run, q, opts, RS_ERR_INPUT, "unexpected option '%s' for map", opts);
+    if (nat > 0) return rs_req_error(run, q, at[0].s, RS_ERR_INPUT, "map takes no 'at' (give the values with set or --set), found '%s'", at[0].s);
     if (nt < 9 || !tok_is(t + 4, ","))
         return rs_req_error(run, q, rest, RS_ERR_INPUT,
                             "expected 'map NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]', found '%s'", rest);
