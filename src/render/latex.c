@@ -22,6 +22,13 @@ static void tex_name(FILE *out, const char *n, size_t len)
     for (i = 0; greek[i]; i++)
         if (strcmp(buf, greek[i]) == 0) { fprintf(out, "\\%s", buf); return; }
     if (len == 1) { fputs(buf, out); return; }
+    if (len > 2 && buf[0] == 's' && buf[1] == '_') {
+        /* the certificates' s_NAME: s with the parameter as its index */
+        fputs("s_{", out);
+        tex_name(out, buf + 2, len - 2);
+        fputc('}', out);
+        return;
+    }
     fputs("\\mathit{", out);
     for (i = 0; i < len; i++) {
         if (buf[i] == '_') fputs("\\_", out);
@@ -44,6 +51,10 @@ void rs_derivation_tex_poly(FILE *out, const char *s)
                 while (k < n && isdigit((unsigned char) s[k])) k++;
                 fprintf(out, "\\tfrac{%.*s}{%.*s}", (int) (j - i), s + i, (int) (k - j - 1), s + j + 1);
                 i = k;
+            } else if (j - i == 1 && s[i] == '1' && j < n && s[j] == '*'
+                       && (i == 0 || strchr(" (+-", s[i - 1]) != NULL)) {
+                i = j + 1;   /* 1*x is x */
+                continue;
             } else {
                 fprintf(out, "%.*s", (int) (j - i), s + i);
                 i = j;

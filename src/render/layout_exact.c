@@ -33,6 +33,27 @@ void rs_render_assigned(rs_render_t *r, const json_t *o)
     rs_render_textf(r, "\n");
 }
 
+/* The derivation's sentence of the values a result was taken at (its
+ * "substituted" values, and "at"): nothing when there are none. */
+static void taken_at(rs_render_t *r, const json_t *o)
+{
+    const json_t *sub = json_object_get(o, "substituted");
+    const char *key;
+    json_t *val;
+    int first = 1;
+    if (!json_is_object(sub) || json_object_size(sub) == 0) return;
+    rs_render_say(r, "Taken at ", "Taken at ");
+    json_object_foreach((json_t *) sub, key, val) {
+        rs_render_say(r, first ? "$" : ", $", first ? "$" : ", $");
+        rs_render_poly(r, key);
+        rs_render_say(r, " = ", " = ");
+        rs_render_poly(r, json_string_value(val));
+        rs_render_say(r, "$", "$");
+        first = 0;
+    }
+    rs_render_say(r, ".\n\n", ".\n\n");
+}
+
 /* A labelled line of the array's members joined by sep (strings as they are,
  * other values as compact JSON). */
 void rs_render_string_list(rs_render_t *r, const char *label, const json_t *arr, const char *sep)
@@ -111,8 +132,16 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
     rs_render_say(r, md, tex);
     rs_render_list_begin(r);
     for (i = 0; i < json_array_size(c); i++) {
+        const char *ci = json_string_value(json_array_get(c, i));
         rs_render_item_begin(r);
-        rs_render_math(r, json_string_value(json_array_get(c, i)));
+        /* a constant condition such as 0 > 0 is said in words: it fails
+         * for every value of the parameters */
+        if (ci != NULL && strncmp(ci, "0 > 0", 5) == 0 && ci[5] == '\0')
+            rs_render_say(r, "a condition that is identically false (its polynomial is the constant 0): no "
+                             "parameter value has every $|\\lambda| < 1$",
+                          "a condition that is identically false (its polynomial is the constant 0): no "
+                          "parameter value has every $|\\lambda| < 1$");
+        else rs_render_math(r, ci);
         rs_render_item_end(r);
     }
     if (json_array_size(c) == 0 && empty != NULL) {
@@ -152,9 +181,9 @@ void rs_render_charpoly(rs_render_t *r, const json_t *o)
     if (removed > 0)
         rs_render_sayf(r, ", lambda^%lld (roots at 0) divided out",
                        ", with the factor $\\lambda^{%lld}$ (roots at 0) divided out", removed);
-    rs_render_say(r, ":\n\n    p(lambda) = ", ":\n\n$p(\\lambda) = ");
+    rs_render_say(r, ":\n\n$$p(\\lambda) = ", ":\n\n$p(\\lambda) = ");
     rs_render_poly(r, js(o, "poly"));
-    rs_render_sayf(r, "\n\ndegree %lld, content %s.\n\n", "$\n\n(degree %lld, content %s).\n\n", ji(o, "degree"),
+    rs_render_sayf(r, "$$\n\ndegree %lld, content %s.\n\n", "$\n\n(degree %lld, content %s).\n\n", ji(o, "degree"),
                    js(o, "content"));
 }
 
@@ -169,15 +198,15 @@ static void claim_prose(rs_render_t *r, const json_t *o)
         const char *k;
         json_t *v;
         int first = 1;
-        rs_render_say(r, "Counterexample: ", "Counterexample: $");
+        rs_render_say(r, "Counterexample: $", "Counterexample: $");
         json_object_foreach((json_t *) ce, k, v) {
-            if (!first) rs_render_say(r, ", ", ",\\ ");
+            if (!first) rs_render_say(r, ",\\ ", ",\\ ");
             rs_render_poly(r, k);
             rs_render_say(r, " = ", " = ");
             rs_render_poly(r, json_string_value(v));
             first = 0;
         }
-        rs_render_say(r, ". ", "$. ");
+        rs_render_say(r, "$. ", "$. ");
         rs_render_count(r, json_object_get(o, "at_counterexample"), RS_RENDER_PROSE);
     }
     if (diff != NULL && strcmp(diff, "0") != 0) {
@@ -215,18 +244,18 @@ void rs_render_bilinear(rs_render_t *r, const json_t *o)
 
     rs_render_heading(r, "Bilinear transform", "Bilinear transform");
     rs_render_say(r, "lambda = (1+z)/(1-z) maps |lambda| < 1 onto Re z < 0; q(z) = (1-z)^n p((1+z)/(1-z)):\n\n"
-                     "    q(z) = ",
+                     "$$q(z) = ",
                   "With $\\lambda = \\frac{1+z}{1-z}$, $|\\lambda| < 1 \\iff \\operatorname{Re} z < 0$; "
                   "$q(z) = (1-z)^n\\, p\\!\\left(\\frac{1+z}{1-z}\\right)$:\n\n$q(z) = ");
     rs_render_poly(r, js(o, "poly"));
-    rs_render_sayf(r, "\n\ndegree drop %lld (roots at lambda = -1), z = 0 of multiplicity %lld (roots at "
-                      "lambda = 1); p(1) = `",
+    rs_render_sayf(r, "$$\n\ndegree drop %lld (roots at $\\lambda = -1$), $z = 0$ of multiplicity %lld (roots at "
+                      "$\\lambda = 1$); $p(1) = ",
                    "$\n\nDegree drop %lld (roots at $\\lambda=-1$), $z=0$ of multiplicity %lld (roots at "
                    "$\\lambda = 1$); $p(1) = ", ji(o, "degree_drop"), ji(o, "zero_mult"));
     rs_render_poly(r, js(o, "p_at_1"));
-    rs_render_say(r, "`, p(-1) = `", "$, $p(-1) = ");
+    rs_render_say(r, "$, $p(-1) = ", "$, $p(-1) = ");
     rs_render_poly(r, js(o, "p_at_minus_1"));
-    rs_render_say(r, "`.\n\n", "$.\n\n");
+    rs_render_say(r, "$.\n\n", "$.\n\n");
 }
 
 /* The first-column signs as eps -> 0+ (zero first entries replaced by eps). */
@@ -298,9 +327,9 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
         char lab[32];
         snprintf(lab, sizeof lab, "D_%zu", i + 1);
         rs_render_line(r, lab, "%s", m);
-        rs_render_sayf(r, "- D_%zu = `", "$D_{%zu} = ", i + 1);
+        rs_render_sayf(r, "- $D_{%zu} = ", "$D_{%zu} = ", i + 1);
         rs_render_poly(r, m);
-        rs_render_say(r, "`\n", "$\n\n");
+        rs_render_say(r, "$\n", "$\n\n");
     }
     rs_render_say(r, "\n", NULL);
     if (!branches(r, o)) {
@@ -404,9 +433,9 @@ static void region_intervals(rs_render_t *r, const json_t *o)
         if (strcmp(a, b) == 0) rs_render_textf(r, "  %-10s %s = %s\n", js(iv, "status"), param, a);
         else rs_render_textf(r, "  %-10s %s in %s%s, %s%s\n", js(iv, "status"), param, open, a, b, close);
         rs_render_item_begin(r);
-        rs_render_sayf(r, "**%s**: ", "%s: $", js(iv, "status"));
+        rs_render_sayf(r, "**%s**: $", "%s: $", js(iv, "status"));
         rs_render_poly(r, param);
-        rs_render_sayf(r, " in %s%s, %s%s", " \\in %s%s, %s%s$", open, a, b, close);
+        rs_render_sayf(r, " \\in %s%s, %s%s$", " \\in %s%s, %s%s$", open, a, strcmp(b, "inf") == 0 ? "\\infty" : b, close);
         if (json_is_object(hi)) {
             rs_render_say(r, " (upper end: a root of ", " (upper end: a root of ");
             rs_render_math(r, js(hi, "minpoly"));
@@ -508,10 +537,11 @@ void rs_render_region(rs_render_t *r, const json_t *o)
     }
     if (json_is_array(json_object_get(o, "params"))) { region2(r, o); return; }   /* region N1, N2 */
     rs_render_heading_begin(r);
-    rs_render_say(r, "Stability region in ", "Stability region in $");
+    rs_render_say(r, "Stability region in $", "Stability region in $");
     rs_render_poly(r, js(o, "param"));
-    rs_render_say(r, NULL, "$");
+    rs_render_say(r, "$", "$");
     rs_render_heading_end(r);
+    taken_at(r, o);
     if (json_is_true(json_object_get(o, "symbolic"))) {
         const json_t *c = json_object_get(o, "conditions");
         if (!branches(r, o)) {
@@ -549,11 +579,11 @@ void rs_render_limit(rs_render_t *r, const json_t *o)
     snprintf(lab, sizeof lab, "%s -> %s", js(o, "param"), to);
     rs_render_line(r, lab, "roots tend to the roots of %s", js(o, "limit_poly"));
     rs_render_heading_begin(r);
-    rs_render_say(r, "Limit ", "Limit $");
+    rs_render_say(r, "Limit $", "Limit $");
     rs_render_poly(r, js(o, "param"));
-    rs_render_say(r, " -> ", " \\to ");
-    rs_render_say(r, to, to && strcmp(to, "inf") == 0 ? "\\infty" : "0");
-    rs_render_say(r, NULL, "$");
+    rs_render_say(r, " \\to ", " \\to ");
+    rs_render_say(r, to && strcmp(to, "inf") == 0 ? "\\infty" : "0", to && strcmp(to, "inf") == 0 ? "\\infty" : "0");
+    rs_render_say(r, "$", "$");
     rs_render_heading_end(r);
     rs_render_say(r, "The roots tend to: ", "The roots tend to: ");
     for (i = 0; i < json_array_size(roots); i++) {
@@ -561,9 +591,9 @@ void rs_render_limit(rs_render_t *r, const json_t *o)
         const char *mp = js(z, "minpoly");
         rs_render_linef(r, "", "%s (multiplicity %lld)%s%s", js(z, "value"), ji(z, "multiplicity"),
                         mp ? ", root of " : "", mp ? mp : "");
-        rs_render_say(r, i ? ", " : "", i ? ", $" : "$");
+        rs_render_say(r, i ? ", $" : "$", i ? ", $" : "$");
         rs_render_poly(r, js(z, "value"));
-        rs_render_sayf(r, " (x%lld)", "$ ($\\times %lld$)", ji(z, "multiplicity"));
+        rs_render_sayf(r, "$ ($\\times %lld$)", "$ ($\\times %lld$)", ji(z, "multiplicity"));
     }
     rs_render_say(r, ".\n\n", ".\n\n");
     if (json_is_true(json_object_get(o, "all_roots_to_zero")))
@@ -606,28 +636,40 @@ static void certificate_lines(rs_render_t *r, const json_t *c)
     rs_render_line(r, "re-checked", "%s", "yes (independent evaluation at random points of the region)");
 }
 
-/* the derivation's proof of a claim: the substitutions of each condition */
+/* the derivation's proof of a claim: for each condition the substitution
+ * that makes it evident, typeset as equations ($w = \frac{2 s_w}{1 + s_w}$) */
 static void certificate_prose(rs_render_t *r, const json_t *c)
 {
     size_t i;
-    rs_render_say(r, "Certificate (after each substitution, s >= 0, every coefficient of the numerator is "
-                     "non-negative):\n\n",
+    rs_render_say(r, "Certificate: after the substitutions below (each $s \\geq 0$), every coefficient of the "
+                     "numerator is non-negative:\n\n",
                   "Certificate: after the substitutions below (each $s \\geq 0$), every coefficient of the "
                   "numerator is non-negative:\n");
     rs_render_list_begin(r);
     for (i = 0; i < json_array_size(c); i++) {
+        const json_t *e = json_array_get(c, i);
         const char *k;
         json_t *v;
+        int first = 1;
         rs_render_item_begin(r);
-        rs_render_math(r, js(json_array_get(c, i), "condition"));
-        rs_render_say(r, " > 0 with", " $> 0$ with ");
-        json_object_foreach(json_object_get(json_array_get(c, i), "substitution"), k, v) {
-            rs_render_say(r, " ", "$");
+        if (js(e, "text") != NULL) {
+            rs_render_esc(r, js(e, "text"));
+            rs_render_item_end(r);
+            continue;
+        }
+        rs_render_say(r, "$", "$");
+        rs_render_poly(r, js(e, "condition"));
+        rs_render_say(r, " > 0$ by ", " > 0$ by ");
+        json_object_foreach(json_object_get(e, "substitution"), k, v) {
+            rs_render_say(r, first ? "$" : ",\\quad ", first ? "$" : ",\\quad ");
             rs_render_poly(r, k);
             rs_render_say(r, " = ", " = ");
             rs_render_poly(r, json_string_value(v));
-            rs_render_say(r, ";", "$ ");
+            first = 0;
         }
+        if (!first) rs_render_say(r, "$", "$");
+        else rs_render_say(r, "no substitution (its coefficients are non-negative as they are)",
+                           "no substitution (its coefficients are non-negative as they are)");
         rs_render_item_end(r);
     }
     rs_render_list_end(r);
@@ -658,6 +700,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
     rs_render_linef(r, "search", "%lld points checked exactly", ji(o, "points_checked"));
     rs_render_assigned(r, o);
     rs_render_heading(r, "Claim", "Claim");
+    taken_at(r, o);
     claim_prose(r, o);
     if (json_is_array(json_object_get(o, "certificate"))) certificate_prose(r, json_object_get(o, "certificate"));
 }

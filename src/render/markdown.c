@@ -1,4 +1,5 @@
 /* markdown.c -- the Markdown derivation backend. */
+#include "recstab/derivation.h"
 #include "render_impl.h"
 
 static void md_raw(FILE *out, const char *s)
@@ -9,6 +10,19 @@ static void md_raw(FILE *out, const char *s)
 static void md_code(FILE *out, const char *s)
 {
     fprintf(out, "`%s`", s ? s : "");
+}
+
+/* math in $...$ (GitHub, Jupyter, pandoc), the LaTeX form of the derivation */
+static void md_poly(FILE *out, const char *s)
+{
+    rs_derivation_tex_poly(out, s ? s : "");
+}
+
+static void md_math(FILE *out, const char *s)
+{
+    fputc('$', out);
+    md_poly(out, s);
+    fputc('$', out);
 }
 
 static void md_count(FILE *out, const json_t *o)
@@ -34,10 +48,10 @@ static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
     fputc('\n', out);
     for (i = 0; i < json_array_size(rows); i++) {
         const json_t *row = json_array_get(rows, i);
-        fprintf(out, "| z^%ld |", rs_render_row_power(rows, powers, i));
+        fprintf(out, "| $z^{%ld}$ |", rs_render_row_power(rows, powers, i));
         for (j = 0; j < w; j++) {
             fputc(' ', out);
-            if (j < json_array_size(row)) md_code(out, json_string_value(json_array_get(row, j)));
+            if (j < json_array_size(row)) md_math(out, json_string_value(json_array_get(row, j)));
             fputs(" |", out);
         }
         fputc('\n', out);
@@ -46,6 +60,6 @@ static void md_rows(FILE *out, const json_t *rows, const json_t *powers)
 }
 
 const rs_render_backend_t rs_render_markdown_backend = {
-    RS_RENDER_MARKDOWN, NULL, NULL, NULL, md_raw, md_raw, md_code, md_code,
+    RS_RENDER_MARKDOWN, NULL, NULL, NULL, md_raw, md_poly, md_math, md_code,
     md_count, md_rows, "### ", "\n\n", "", "- ", "\n", "\n"
 };

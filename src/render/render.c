@@ -164,22 +164,21 @@ static void render_title(rs_render_t *r, const json_t *doc)
 static void render_matrix(rs_render_t *r, const json_t *M)
 {
     size_t i, j;
-    rs_render_say(r, "### The lambda-matrix\n\nx[n+k] -> lambda^k, each row shifted so that its lowest power is "
-                     "lambda^0:\n\n",
+    rs_render_say(r, "### The lambda-matrix\n\nWith $x_{n+k} \\mapsto \\lambda^k$ (each row shifted so that its "
+                     "lowest power is $\\lambda^0$):\n\n$$\n\\left(\\begin{array}{",
                   "\\subsection*{The $\\lambda$-matrix}\nWith $x_{n+k} \\mapsto \\lambda^k$ (each "
                   "row shifted so that its lowest power is $\\lambda^0$):\n{\\small\\[\\left(\\begin{array}{");
-    for (j = 0; j < json_array_size(M); j++) rs_render_say(r, NULL, "c");
-    rs_render_say(r, NULL, "}\n");
+    for (j = 0; j < json_array_size(M); j++) rs_render_say(r, "c", "c");
+    rs_render_say(r, "}\n", "}\n");
     for (i = 0; i < json_array_size(M); i++) {
         const json_t *row = json_array_get(M, i);
-        rs_render_say(r, "    [ ", NULL);
         for (j = 0; j < json_array_size(row); j++) {
-            if (j) rs_render_say(r, " | ", " & ");
+            if (j) rs_render_say(r, " & ", " & ");
             rs_render_poly(r, json_string_value(json_array_get(row, j)));
         }
-        rs_render_say(r, " ]\n", " \\\\\n");
+        rs_render_say(r, " \\\\\n", " \\\\\n");
     }
-    rs_render_say(r, "\n", "\\end{array}\\right)\\]}\n");
+    rs_render_say(r, "\\end{array}\\right)\n$$\n\n", "\\end{array}\\right)\\]}\n");
 }
 
 /* The scheme of a derivation: assumptions, difference equations, lambda-matrix. */
@@ -197,18 +196,25 @@ static void render_scheme(rs_render_t *r, const json_t *sc)
         rs_render_say(r, ".\n\n", ".\n\n");
     }
     if (json_array_size(eqs) == 0) return;
-    rs_render_say(r, "### Difference equations\n\n", "\\subsection*{Difference equations}\n\\begin{align*}\n");
-    for (i = 0; i < json_array_size(lets); i++) {
-        rs_render_say(r, "    let ", NULL);
-        rs_render_poly(r, json_string_value(json_array_get(lets, i)));
-        rs_render_say(r, "\n", " \\\\\n");
+    /* one display, every equation aligned at its = */
+    rs_render_say(r, "### Difference equations\n\n$$\n\\begin{aligned}\n",
+                  "\\subsection*{Difference equations}\n\\begin{align*}\n");
+    for (i = 0; i < json_array_size(lets) + json_array_size(eqs); i++) {
+        int is_let = i < json_array_size(lets);
+        const char *e = json_string_value(json_array_get(is_let ? lets : eqs, is_let ? i : i - json_array_size(lets)));
+        const char *eq = e != NULL ? strstr(e, " = ") : NULL;
+        int last = i + 1 == json_array_size(lets) + json_array_size(eqs);
+        if (eq != NULL) {
+            char *lhs = strndup(e, (size_t) (eq - e));
+            rs_render_poly(r, lhs);
+            free(lhs);
+            rs_render_say(r, " &= ", " &= ");
+            rs_render_poly(r, eq + 3);
+        } else rs_render_poly(r, e);
+        if (is_let) rs_render_say(r, " && \\text{(let)}", " && \\text{(let)}");
+        rs_render_say(r, last ? "\n" : " \\\\\n", last ? "\n" : " \\\\\n");
     }
-    for (i = 0; i < json_array_size(eqs); i++) {
-        rs_render_say(r, "    ", NULL);
-        rs_render_poly(r, json_string_value(json_array_get(eqs, i)));
-        rs_render_say(r, "\n", i + 1 < json_array_size(eqs) ? " \\\\\n" : "\n");
-    }
-    rs_render_say(r, "\n", "\\end{align*}\n");
+    rs_render_say(r, "\\end{aligned}\n$$\n\n", "\\end{align*}\n");
     render_matrix(r, json_object_get(sc, "matrix"));
 }
 
