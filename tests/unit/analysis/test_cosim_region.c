@@ -76,9 +76,10 @@ static json_t *run(const char *request, int *status)
     return doc;
 }
 
+/* the document is {"cases": [DOC]} (one shape for every run) */
 static const json_t *first_result(const json_t *doc)
 {
-    return json_array_get(json_object_get(doc, "results"), 0);
+    return json_array_get(json_object_get(json_array_get(json_object_get(doc, "cases"), 0), "results"), 0);
 }
 
 static double encl(const json_t *t, size_t i)
