@@ -137,7 +137,7 @@ radius_high() {
     "$RS" --json --analyse 'radius digits=20' "$T/hd.case" > "$T/out" 2>"$T/err"; rc=$?
     if [ "$rc" = 0 ] && python3 -c "
 import json, sys
-r = [x for x in json.load(open(sys.argv[1]))['results'] if x['analysis'] == 'radius'][0]
+r = [x for x in json.load(open(sys.argv[1]))['cases'][0]['results'] if x['analysis'] == 'radius'][0]
 $3" "$T/out"; then ok "radius $1"; else fail "radius $1: exit $rc $(head -c 300 "$T/out") $(cat "$T/err")"; fi
 }
 # 2^(-1/80) = 0.99137308746...
