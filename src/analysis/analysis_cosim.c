@@ -13,6 +13,7 @@
 #include "numeric/grid.h"
 #include "lower/cosim_model.h"
 #include "numeric/cosim_ball.h"
+#include "numeric/cosim_fast.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
@@ -284,6 +285,19 @@ static int cosim_fast_verdict(const rs_cosim_t cs)
     return v;
 }
 
+/* the verdict and the radius cells (bounds rounded outward, 17 digits) */
+static void radius_cells(rs_sweep_row_t *row, const rs_radius_t rr)
+{
+    char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
+         *hi = rs_radius_str_upper(rr->upper, 17);
+    row->d.verdict = radius_verdict(rr);
+    row->d.level = RS_LEVEL_CERTIFIED;
+    snprintf(row->cells, sizeof row->cells, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
+    flint_free(rho);
+    flint_free(lo);
+    flint_free(hi);
+}
+
 #define COSIM_CROSSCHECK_EVERY 64   /* fast verdicts re-derived from the certified radius */
 
 /* the model's callback: the verdict the certified radius gives (6 digits),
@@ -294,14 +308,15 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
 {
     const cosim_map_t *M = model;
     rs_cosim_t cs;
-    rs_radius_t rr;
+    rs_radius_t rr, rf;
     slong max_prec = M->run->opt->max_prec < 1024 ? M->run->opt->max_prec : 1024;
-    int fast = RS_SWEEP_UNDECIDED;
+    int fast = RS_SWEEP_UNDECIDED, have_fast = 0;
     memset(row, 0, sizeof *row);
     row->d.verdict = -1;
     row->inside = row->on = row->outside = -1;
     rs_cosim_init(cs, 1, 1);
     rs_radius_init(rr);
+    rs_radius_init(rf);
     row->d.status = cosim_map_build(cs, M, idx, err);
     if (row->d.status == RS_OK && M->R->of == RS_SWEEP_OF_STABILITY) {
         fast = cosim_fast_verdict(cs);
@@ -311,28 +326,41 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
             snprintf(row->cells, sizeof row->cells, ",,");
         }
     }
+    /* `of radius`: the fast certified radius (cosim_fast.h) first, the full
+     * one where its certificate fails and at every 64th point to cross-check */
+    if (row->d.status == RS_OK && M->R->of != RS_SWEEP_OF_STABILITY) {
+        rs_error_t e;
+        rs_error_init(e);
+        /* an interval containing 1 goes the full route, as before */
+        if (rs_cosim_fast_radius(rf, cs, 64, e) == RS_OK && (fast = radius_verdict(rf)) != RS_SWEEP_UNDECIDED)
+            have_fast = 1;
+        else
+            fast = RS_SWEEP_UNDECIDED;
+        rs_error_clear(e);
+    }
     /* RS_ERR_UNDECIDED (eigenvalues not isolated, e.g. two equal subsystems'
      * repeated eigenvalues): the enclosure certified so far still decides
      * when it excludes 1, else the point is undecided -- not undefined */
-    if (row->d.status == RS_OK && (fast == RS_SWEEP_UNDECIDED || idx % COSIM_CROSSCHECK_EVERY == 0)
+    if (row->d.status == RS_OK && (have_fast ? idx % COSIM_CROSSCHECK_EVERY == 0
+                                             : fast == RS_SWEEP_UNDECIDED || idx % COSIM_CROSSCHECK_EVERY == 0)
         && cosim_point_radius(rr, cs, max_prec, err) == RS_OK) {
         int v = radius_verdict(rr);
-        if (fast != RS_SWEEP_UNDECIDED) {
+        if (have_fast) {
+            /* both certified: the enclosures must meet, the verdicts agree */
+            if (arb_lt(rf->upper, rr->lower) || arb_gt(rf->lower, rr->upper)
+                || (v != RS_SWEEP_UNDECIDED && fast != RS_SWEEP_UNDECIDED && v != fast))
+                row->d.status = rs_error_set(err, RS_ERR_INCONSISTENT,
+                                             "the fast certified radius and the full certified radius disagree");
+        } else if (fast != RS_SWEEP_UNDECIDED) {
             if (v != RS_SWEEP_UNDECIDED && v != fast)
                 row->d.status = rs_error_set(err, RS_ERR_INCONSISTENT,
                                              "the Stein certificate (%s) and the certified radius (%s) disagree",
                                              rs_status_name((rs_status_t) fast), rs_status_name((rs_status_t) v));
-        } else {
-            char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
-                 *hi = rs_radius_str_upper(rr->upper, 17);
-            row->d.verdict = v;
-            row->d.level = RS_LEVEL_CERTIFIED;
-            snprintf(row->cells, sizeof row->cells, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
-            flint_free(rho);
-            flint_free(lo);
-            flint_free(hi);
-        }
+        } else
+            radius_cells(row, rr);
     }
+    if (row->d.status == RS_OK && have_fast) radius_cells(row, rf);
+    rs_radius_clear(rf);
     rs_radius_clear(rr);
     rs_cosim_clear(cs);
 }

@@ -1,0 +1,22 @@
+/* numeric/cosim_fast.h -- the fast certified spectral radius of a
+ * co-simulation's one-step map (issue 14 part 3, maps `of radius`): the
+ * map as a ball matrix at low precision (rs_cosim_ball_transition of the
+ * reduced realisation, as rs_cosim_radius uses), its eigenvectors in double
+ * (GSL), then one certification in Arb: Gershgorin discs of V^{-1} T V,
+ * V^{-1} enclosed by Arb, so every disc bound holds for the exact map.
+ * Private to the library (not installed). */
+#ifndef RECSTAB_NUMERIC_COSIM_FAST_H
+#define RECSTAB_NUMERIC_COSIM_FAST_H
+
+#include "recstab/cosim.h"
+#include "recstab/radius.h"
+
+/* r->lower <= rho(T) <= r->upper (r->rho a ball over both), T the exact
+ * one-step map of cs, certified at prec bits (64 suffices for double
+ * eigenvectors).  RS_ERR_UNDECIDED when the certificate fails (the discs of
+ * the dominant eigenvalues overlap: clusters, defective or nearly defective
+ * eigenvalues, an implicit Jacobian not certified invertible): the caller
+ * falls back to rs_cosim_radius.  Other codes: cs invalid (err set). */
+int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err);
+
+#endif
