@@ -1,9 +1,10 @@
 /* cosim_fast.c -- see numeric/cosim_fast.h.  Why Gershgorin on the
- * diagonalised map: with V the double eigenvectors and W an Arb enclosure of
- * V^{-1} (V is an exact point matrix), B = W T V is similar to every matrix
- * in T, so its Gershgorin discs (centre B_ii, radius sum_{j != i} |B_ij| plus
- * the centre's own radius) contain every eigenvalue, and a disc disjoint from
- * all others contains exactly one.  For a well-conditioned diagonalisable
+ * diagonalised map: with V the double eigenvectors (an exact point matrix)
+ * and W ~= V^{-1} in double, V^{-1} T V = W T V + F with F bounded through
+ * E = I - W V (rs_cosim_fast_radius); V^{-1} T V is similar to every matrix
+ * in T, so its Gershgorin discs (centre, radius the off-diagonal row sum
+ * plus the centre's own uncertainty and the bound of F's row) contain every
+ * eigenvalue, and a disc disjoint from all others contains exactly one.  For a well-conditioned diagonalisable
  * map the discs have radius ~1e-15 * cond(V): one O(d^3) pass at 64 bits,
  * no QR iteration and no precision doubling (what rs_cosim_radius spends its
  * time on, bench/README.md). */
@@ -11,6 +12,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
 #include <acb_mat.h>
 #include "numeric/cosim_ball.h"
 #include "numeric/cosim_fast.h"
@@ -42,8 +44,9 @@ static int fast_transition(arb_mat_t T, const rs_cosim_t cs, slong prec, rs_erro
     return rc;
 }
 
-/* V (point, complex) = the double eigenvectors of mid(T) (GSL); 0 when GSL fails */
-static int double_eigvecs(acb_mat_t V, const arb_mat_t T)
+/* V (point, complex) = the double eigenvectors of mid(T), W ~= V^{-1}
+ * (GSL, complex LU); 0 when GSL fails */
+static int double_eigvecs(acb_mat_t V, acb_mat_t W, const arb_mat_t T)
 {
     slong d = arb_mat_nrows(T), i, j;
     gsl_matrix *A = gsl_matrix_alloc((size_t) d, (size_t) d);
@@ -64,6 +67,21 @@ static int double_eigvecs(acb_mat_t V, const arb_mat_t T)
             if (!isfinite(GSL_REAL(z)) || !isfinite(GSL_IMAG(z))) ok = 0;
             acb_set_d_d(acb_mat_entry(V, i, j), GSL_REAL(z), GSL_IMAG(z));
         }
+    if (ok) {
+        gsl_matrix_complex *Y = gsl_matrix_complex_alloc((size_t) d, (size_t) d);
+        gsl_permutation *p = gsl_permutation_alloc((size_t) d);
+        int sgn;
+        ok = gsl_linalg_complex_LU_decomp(X, p, &sgn) == GSL_SUCCESS
+             && gsl_linalg_complex_LU_invert(X, p, Y) == GSL_SUCCESS;
+        for (i = 0; ok && i < d; i++)
+            for (j = 0; j < d; j++) {
+                gsl_complex z = gsl_matrix_complex_get(Y, (size_t) i, (size_t) j);
+                if (!isfinite(GSL_REAL(z)) || !isfinite(GSL_IMAG(z))) ok = 0;
+                acb_set_d_d(acb_mat_entry(W, i, j), GSL_REAL(z), GSL_IMAG(z));
+            }
+        gsl_permutation_free(p);
+        gsl_matrix_complex_free(Y);
+    }
     gsl_eigen_nonsymmv_free(w);
     gsl_matrix_complex_free(X);
     gsl_vector_complex_free(ev);
@@ -90,13 +108,33 @@ static int discs_apart(const acb_t ci, const arb_t Ri, const acb_t cj, const arb
     return apart;
 }
 
+/* an upper bound of the infinity norm (max row sum of |a_ij|) as an arb */
+static void inf_norm(arb_t nrm, const acb_mat_t A, slong prec)
+{
+    slong i, j;
+    arb_t s, a;
+    arb_init(s);
+    arb_init(a);
+    arb_zero(nrm);
+    for (i = 0; i < acb_mat_nrows(A); i++) {
+        arb_zero(s);
+        for (j = 0; j < acb_mat_ncols(A); j++) {
+            acb_abs(a, acb_mat_entry(A, i, j), prec);
+            arb_add(s, s, a, prec);
+        }
+        arb_max(nrm, nrm, s, prec);
+    }
+    arb_clear(s);
+    arb_clear(a);
+}
+
 int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err)
 {
     slong d, i, j;
     arb_mat_t T;
     acb_mat_t V, W, B, Tc;
     arb_ptr R, out, in;
-    arb_t t, up, lo;
+    arb_t t, up, lo, e, f, half;
     int rc, ok;
     rc = rs_cosim_check(cs, err);
     if (rc != RS_OK) return rc;
@@ -122,19 +160,36 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
     arb_init(t);
     arb_init(up);
     arb_init(lo);
-    /* B = V^{-1} T V, similar to every matrix in T (V exact, W encloses its inverse) */
-    ok = double_eigvecs(V, T) && acb_mat_inv(W, V, prec);
+    arb_init(e);
+    arb_init(f);
+    arb_init(half);
+    arb_set_d(half, 0.5);
+    /* B = W T V with W ~= V^{-1} (double): V^{-1} = (I - E)^{-1} W, E = I - W V,
+     * so V^{-1} T V = B + F with |F|_inf <= e/(1 - e) |B|_inf, e = |E|_inf < 1
+     * (Neumann series; no ball inverse, which cost more than the products) */
+    ok = double_eigvecs(V, W, T);
     if (ok) {
+        acb_mat_mul(B, W, V, prec);
+        acb_mat_one(Tc);
+        acb_mat_sub(B, Tc, B, prec);
+        inf_norm(e, B, prec);
         acb_mat_set_arb_mat(Tc, T);
         acb_mat_mul(B, W, Tc, prec);
         acb_mat_mul(B, B, V, prec);
-        ok = acb_mat_is_finite(B);
+        inf_norm(f, B, prec);
+        arb_sub_ui(t, e, 1, prec);
+        arb_neg(t, t);
+        ok = acb_mat_is_finite(B) && arb_is_positive(t) && arb_lt(e, half);
+        /* f = e |B|_inf / (1 - e) */
+        arb_mul(f, f, e, prec);
+        arb_div(f, f, t, prec);
     }
-    /* disc i: centre mid(B_ii), radius R_i = rad(B_ii) + sum_{j != i} |B_ij|;
-     * |lambda| in [|c_i| - R_i, |c_i| + R_i] for the eigenvalues in it */
+    /* disc i: centre mid(B_ii), radius R_i = rad(B_ii) + sum_{j != i} |B_ij| + f
+     * (f bounds row i of F, the diagonal shift included); |lambda| in
+     * [|c_i| - R_i, |c_i| + R_i] for the eigenvalues in it */
     for (i = 0; ok && i < d; i++) {
         acb_ptr c = acb_mat_entry(B, i, i);
-        arb_zero(R + i);
+        arb_set(R + i, f);
         for (j = 0; j < d; j++) {
             if (j == i) continue;
             acb_abs(t, acb_mat_entry(B, i, j), prec);
@@ -192,6 +247,9 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
     arb_clear(t);
     arb_clear(up);
     arb_clear(lo);
+    arb_clear(e);
+    arb_clear(f);
+    arb_clear(half);
     _arb_vec_clear(R, d);
     _arb_vec_clear(out, d);
     _arb_vec_clear(in, d);
