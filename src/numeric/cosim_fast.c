@@ -108,24 +108,28 @@ static int discs_apart(const acb_t ci, const arb_t Ri, const acb_t cj, const arb
     return apart;
 }
 
-/* an upper bound of the infinity norm (max row sum of |a_ij|) as an arb */
-static void inf_norm(arb_t nrm, const acb_mat_t A, slong prec)
+/* nrm = an upper bound of the infinity norm (max row sum of |a_ij|), a
+ * point; mag arithmetic (upper bounds only), no square roots */
+static void inf_norm(arb_t nrm, const acb_mat_t A)
 {
     slong i, j;
-    arb_t s, a;
-    arb_init(s);
-    arb_init(a);
-    arb_zero(nrm);
+    mag_t s, a, mx;
+    mag_init(s);
+    mag_init(a);
+    mag_init(mx);
     for (i = 0; i < acb_mat_nrows(A); i++) {
-        arb_zero(s);
+        mag_zero(s);
         for (j = 0; j < acb_mat_ncols(A); j++) {
-            acb_abs(a, acb_mat_entry(A, i, j), prec);
-            arb_add(s, s, a, prec);
+            acb_get_mag(a, acb_mat_entry(A, i, j));
+            mag_add(s, s, a);
         }
-        arb_max(nrm, nrm, s, prec);
+        mag_max(mx, mx, s);
     }
-    arb_clear(s);
-    arb_clear(a);
+    arf_set_mag(arb_midref(nrm), mx);
+    mag_zero(arb_radref(nrm));
+    mag_clear(s);
+    mag_clear(a);
+    mag_clear(mx);
 }
 
 int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err)
@@ -172,11 +176,11 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
         acb_mat_mul(B, W, V, prec);
         acb_mat_one(Tc);
         acb_mat_sub(B, Tc, B, prec);
-        inf_norm(e, B, prec);
+        inf_norm(e, B);
         acb_mat_set_arb_mat(Tc, T);
         acb_mat_mul(B, W, Tc, prec);
         acb_mat_mul(B, B, V, prec);
-        inf_norm(f, B, prec);
+        inf_norm(f, B);
         arb_sub_ui(t, e, 1, prec);
         arb_neg(t, t);
         ok = acb_mat_is_finite(B) && arb_is_positive(t) && arb_lt(e, half);
@@ -184,18 +188,26 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
         arb_mul(f, f, e, prec);
         arb_div(f, f, t, prec);
     }
-    /* disc i: centre mid(B_ii), radius R_i = rad(B_ii) + sum_{j != i} |B_ij| + f
+    /* disc i: centre B_ii (a ball), radius R_i = sum_{j != i} |B_ij| + f
      * (f bounds row i of F, the diagonal shift included); |lambda| in
      * [|c_i| - R_i, |c_i| + R_i] for the eigenvalues in it */
     for (i = 0; ok && i < d; i++) {
         acb_ptr c = acb_mat_entry(B, i, i);
+        mag_t m, sum;
+        mag_init(m);
+        mag_init(sum);
+        /* R_i is only used through its upper bound: the row sum as a radius */
         arb_set(R + i, f);
         for (j = 0; j < d; j++) {
             if (j == i) continue;
-            acb_abs(t, acb_mat_entry(B, i, j), prec);
-            arb_add(R + i, R + i, t, prec);
+            acb_get_mag(m, acb_mat_entry(B, i, j));
+            mag_add(sum, sum, m);
         }
-        /* the centre's own uncertainty: |c - mid c| <= hypot(rad re, rad im) <= rad re + rad im */
+        arb_add_error_mag(R + i, sum);
+        mag_clear(m);
+        mag_clear(sum);
+        /* the centre's ball is used as a ball below; its radius added again
+         * to R_i only widens the discs (cheap margin) */
         arb_add_error_mag(R + i, arb_radref(acb_realref(c)));
         arb_add_error_mag(R + i, arb_radref(acb_imagref(c)));
         acb_abs(t, c, prec);
