@@ -9,7 +9,7 @@
 # and checks that before and after give the same verdicts, codes and
 # decided_by at every point, and that their radius intervals meet (the fast
 # certified radius of maps of radius, src/numeric/cosim_fast.c, prints
-# narrower bounds than the full route, so the cells' digits differ).
+# other bounds than the full route (~1e-14 wide), so the cells' last digits differ).
 #   usage: BEFORE=/path/recstab sh bench/bench_cosim_map.sh [N] [THREADS]   (default 400, 2)
 BUILD=${BUILD:-build}
 RS="$BUILD/recstab"
