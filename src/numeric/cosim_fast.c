@@ -19,13 +19,20 @@
 
 /* T (ball) for the reduced realisation of cs at prec (rs_cosim_reduce drops
  * coupling directions that carry nothing, whose history slots would add
- * defective zero eigenvalues the discs cannot separate) */
+ * defective zero eigenvalues the discs cannot separate); the D-/I-extension
+ * couplings have their own n x n map */
 static int fast_transition(arb_mat_t T, const rs_cosim_t cs, slong prec, rs_error_t err)
 {
     fmpq_mat_t P1, P2, Q;
     rs_cosim_ball_t b;
     slong rk = 0;
     int rc;
+    if (cs->ext != RS_COSIM_EXT_NONE) {
+        /* D-/I-extension: the n x n map of z_N (rs_cosim_transition -> cosim_ext.c), as rs_cosim_radius */
+        arb_mat_clear(T);
+        arb_mat_init(T, rs_cosim_transition_dim(cs), rs_cosim_transition_dim(cs));
+        return rs_cosim_transition(T, cs, prec, err);
+    }
     fmpq_mat_init(P1, 0, 0);
     fmpq_mat_init(P2, 0, 0);
     fmpq_mat_init(Q, 0, 0);
