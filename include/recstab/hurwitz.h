@@ -44,12 +44,20 @@ typedef struct {
     int trivially_true;            /* every factor dropped, sign positive:
                                       condition always holds */
     int trivially_false;           /* reduced is a non-positive constant */
+    int not_expanded;              /* a minor D_k left unexpanded (its row did
+                                      not fit the per-row share of the budget):
+                                      poly, reduced are 0 and factors empty;
+                                      its sign at a point comes from the Hurwitz
+                                      matrix evaluated there (fmpq_mat_det) */
+    slong minor;                   /* k for a condition D_k, else 0 */
 } rs_hurwitz_cond_struct;
 
 typedef struct {
     slong n;                       /* degree of q in z */
     fmpz_mpoly_struct *coeffs;     /* a_0 .. a_n (length n+1), params only */
     fmpz_mpoly_struct *minors;     /* D_1 .. D_n stored at [0 .. n-1] */
+    slong expanded;                /* D_1 .. D_expanded are expanded; the later
+                                      minors are 0 here and not expanded */
     slong ncond;
     rs_hurwitz_cond_struct *cond;  /* Lienard-Chipart conditions, in order:
                                       a_n, a_0, a_2, ..., D_{n-1}, D_{n-3}, ... */
@@ -58,6 +66,19 @@ typedef struct {
                                       conditions are those of -q then */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
+
+/* Per-row share of the budget (seconds, default 10): a fraction-free Routh
+ * row whose estimated cost (rs_budget_mpoly_mul_seconds) exceeds it, or what
+ * is left of the budget, is not formed; that minor and the later ones stay
+ * unexpanded (issue 17).  Returns the previous value.  Documented global,
+ * like the budget itself (one run per process). */
+double rs_hurwitz_set_row_seconds(double seconds);
+
+/* Sign of the leading principal k x k minor of the Hurwitz matrix of h's
+ * coefficients at the rational point vals: substituted first, then an exact
+ * rational determinant (for the unexpanded minors). */
+int rs_hurwitz_minor_sign_at(const rs_hurwitz_t h, slong k, fmpq *const *vals,
+                             const fmpz_mpoly_ctx_t ctx);
 
 void rs_hurwitz_init(rs_hurwitz_t h);
 void rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx);

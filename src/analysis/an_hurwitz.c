@@ -1,5 +1,6 @@
 /* an_hurwitz.c -- `hurwitz`: the Hurwitz minors and Lienard-Chipart
  * conditions of q(z), factored, checked at sample points. */
+#include <stdio.h>
 #include <stdlib.h>
 #include "analysis/registry.h"
 
@@ -34,8 +35,19 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "p_at_1", rs_json_p_at(v, 1));
     json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
     minors = json_array();
-    for (i = 0; i < h->n; i++) json_array_append_new(minors, rs_json_zpoly(h->minors + i, s));
+    for (i = 0; i < h->n; i++)
+        json_array_append_new(minors, i < h->expanded ? rs_json_zpoly(h->minors + i, s)
+                                                      : json_string("not expanded"));
     json_object_set_new(o, "minors", minors);
+    if (hb->nbranch > 0 && h->expanded < h->n) {
+        json_t *ne = json_array();
+        for (i = h->expanded; i < h->n; i++) json_array_append_new(ne, json_integer(i + 1));
+        json_object_set_new(o, "not_expanded", ne);
+        json_object_set_new(o, "not_expanded_note", json_string(
+            "these Hurwitz minors were not expanded: the next fraction-free Routh row's estimated cost exceeded "
+            "its share of the time budget; their conditions D_k > 0 are decided at each sample point by the exact "
+            "rational determinant of the k x k Hurwitz matrix there"));
+    }
     conds = json_array();
     nonzero = json_array();
     dropped = json_array();
@@ -69,8 +81,13 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(d, "trivially_true", json_boolean(c->trivially_true));
         json_object_set_new(d, "trivially_false", json_boolean(c->trivially_false));
         json_array_append_new(details, d);
+        json_object_set_new(d, "not_expanded", json_boolean(c->not_expanded));
         if (c->trivially_true) {
             json_array_append_new(always, json_string(c->origin));
+        } else if (c->not_expanded) {
+            char line[64];
+            snprintf(line, sizeof line, "%s > 0 (not expanded)", c->origin);
+            json_array_append_new(conds, json_string(line));
         } else {
             char *line = rs_cond_string(c->reduced, s, "> 0");
             json_array_append_new(conds, json_string(line));

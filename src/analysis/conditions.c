@@ -68,6 +68,13 @@ static json_t *branch_json(const rs_hurwitz_t h, const rs_scheme_t s)
     for (i = 0; i < h->ncond; i++) {
         char *line;
         if (h->cond[i].trivially_true) continue;
+        if (h->cond[i].not_expanded) {
+            /* no polynomial to print (hurwitz.h) */
+            char buf[64];
+            snprintf(buf, sizeof buf, "%s > 0 (not expanded)", h->cond[i].origin);
+            rs_json_append_unique(a, buf);
+            continue;
+        }
         line = rs_cond_string(h->cond[i].reduced, s, "> 0");
         rs_json_append_unique(a, line);
         free(line);

@@ -126,6 +126,26 @@ static int branches(rs_render_t *r, const json_t *o)
 
 /* The derivation's list of conditions, after its sentence; empty (if given)
  * is the item for an empty list. */
+/* A condition as math, except a trailing " (not expanded)" (hurwitz.h), which
+ * is words and is printed as text. */
+static void condition_math(rs_render_t *r, const char *c)
+{
+    static const char tail[] = " (not expanded)";
+    size_t n = strlen(c), t = sizeof tail - 1;
+    if (n > t && strcmp(c + n - t, tail) == 0) {
+        char *head = malloc(n - t + 1);
+        if (head != NULL) {
+            memcpy(head, c, n - t);
+            head[n - t] = '\0';
+            rs_render_math(r, head);
+            free(head);
+            rs_render_say(r, tail, tail);
+            return;
+        }
+    }
+    rs_render_math(r, c);
+}
+
 static void condition_list(rs_render_t *r, const json_t *c, const char *md, const char *tex, const char *empty)
 {
     size_t i;
@@ -134,6 +154,7 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
     for (i = 0; i < json_array_size(c); i++) {
         const char *ci = json_string_value(json_array_get(c, i));
         rs_render_item_begin(r);
+<<<<<<< HEAD
         /* a constant condition such as 0 > 0 is said in words: it fails
          * for every value of the parameters */
         if (ci != NULL && strncmp(ci, "0 > 0", 5) == 0 && ci[5] == '\0')
@@ -141,7 +162,9 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
                              "parameter value has every $|\\lambda| < 1$",
                           "a condition that is identically false (its polynomial is the constant 0): no "
                           "parameter value has every $|\\lambda| < 1$");
-        else rs_render_math(r, ci);
+        else condition_math(r, ci);
+=======
+>>>>>>> bcc3831 (hurwitz: minors whose Routh row exceeds the per-row budget share stay 'not expanded'; their sign at sample points from the exact rational Hurwitz determinant; JSON not_expanded/not_expanded_note, renderers print it as text)
         rs_render_item_end(r);
     }
     if (json_array_size(c) == 0 && empty != NULL) {
@@ -327,6 +350,11 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
         char lab[32];
         snprintf(lab, sizeof lab, "D_%zu", i + 1);
         rs_render_line(r, lab, "%s", m);
+        if (strcmp(m, "not expanded") == 0) {
+            /* words, not a polynomial (hurwitz.h) */
+            rs_render_sayf(r, "- $D_{%zu}$: not expanded\n", "$D_{%zu}$: not expanded\n\n", i + 1);
+            continue;
+        }
         rs_render_sayf(r, "- $D_{%zu} = ", "$D_{%zu} = ", i + 1);
         rs_render_poly(r, m);
         rs_render_say(r, "$\n", "$\n\n");
@@ -344,6 +372,12 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
     rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
+    if (js(o, "not_expanded_note") != NULL) {
+        rs_render_line(r, "not expanded", "%s", js(o, "not_expanded_note"));
+        rs_render_say(r, "Not expanded: ", "Not expanded: ");
+        rs_render_esc(r, js(o, "not_expanded_note"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+    }
     rs_render_line(r, "p(1)", "%s (lambda = 1 is a root where this vanishes)", js(o, "p_at_1"));
     rs_render_line(r, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", js(o, "p_at_minus_1"));
     rs_render_line(r, "verdict", "%s", js(o, "verdict"));

@@ -36,6 +36,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpz_vec.h>
+#include <flint/fmpq_mat.h>
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 #include "recstab/positivity.h"
@@ -43,6 +44,17 @@
 /* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
  * not be computable anyway. */
 #define RS_HURWITZ_MAX_DEGREE 256
+
+/* per-row share of the budget, seconds (rs_hurwitz_set_row_seconds) */
+static double row_seconds = 10.0;
+
+double
+rs_hurwitz_set_row_seconds(double seconds)
+{
+    double old = row_seconds;
+    row_seconds = seconds;
+    return old;
+}
 
 /* ------------------------------------------------------------------ */
 /* sign test                                                           */
@@ -66,6 +78,7 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->n = 0;
     h->coeffs = NULL;
     h->minors = NULL;
+    h->expanded = 0;
     h->ncond = 0;
     h->cond = NULL;
     h->negated = 0;
@@ -299,7 +312,9 @@ _scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
  * half the time for a 5-mass chain, issue 17).  It
  * stops before a division by an identically-zero D_{m-3}, or (which
  * should not happen) at an inexact division, or with *status = RS_ERR_LIMIT
- * when a row does not fit into the budget (_row_estimate). */
+ * (err untouched) when a row does not fit its share of the budget
+ * (_row_estimate, rs_hurwitz_set_row_seconds), or with the error of an
+ * interrupted product. */
 static slong
 _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                       slong n, const fmpz_mpoly_ctx_t ctx, int *status,
@@ -338,10 +353,17 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         const fmpz_mpoly_struct *d = (m >= 4) ? D + (m - 4) : NULL;
         if (d != NULL && fmpz_mpoly_is_zero(d, ctx))
             break;
-        *status = rs_budget_estimate(err, "a row of the Hurwitz minors",
-                                     _row_estimate(r0, r1, len), 0.0);
-        if (*status != RS_OK)
-            break;
+        /* a row over its share (or what is left) is not formed: the
+         * minors from D_m on stay unexpanded, honestly marked */
+        {
+            double est = _row_estimate(r0, r1, len);
+            if (est > row_seconds
+                || rs_budget_estimate(NULL, "a row of the Hurwitz minors",
+                                      est, 0.0) != RS_OK) {
+                *status = RS_ERR_LIMIT;
+                break;
+            }
+        }
         fmpz_one(cd);
         if (d != NULL) {
             _fmpz_vec_content(cd, d->coeffs, d->length);
@@ -390,14 +412,21 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
  * determinant with pivoting, and D_n = a_0 D_{n-1} (the last column of H is
  * (0, ..., 0, a_0)). */
 static int
-_hurwitz_minors(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a, slong n,
+_hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded,
+                const fmpz_mpoly_struct *a, slong n,
                 const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
     int status = RS_OK;
     slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, err);
 
-    if (status != RS_OK)
-        return status;
+    *expanded = k;
+    if (status != RS_OK) {
+        /* over the row share: keep D_1..D_k; a limit hit inside a row
+         * (budget exceeded) stays an error */
+        if (rs_budget_exceeded())
+            return rs_budget_error(err);
+        return RS_OK;
+    }
 
     for (; k < n - 1; k++) {
         int r = _leading_minor_pivoting(D + k, a, n, k + 1, ctx, err);
@@ -406,6 +435,7 @@ _hurwitz_minors(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a, slong n,
     }
     if (k == n - 1 && n >= 2)
         fmpz_mpoly_mul(D + n - 1, a + 0, D + n - 2, ctx);
+    *expanded = n;
     return RS_OK;
 }
 
@@ -502,9 +532,21 @@ _add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
     c->dropped = NULL;
     c->even = NULL;
     c->trivially_true = c->trivially_false = 0;
+    c->minor = (letter == 'D') ? idx : 0;
+    c->not_expanded = (letter == 'D' && idx > h->expanded);
     h->ncond++;
 
     snprintf(origin, sizeof(origin), "%c_%ld", letter, (long) idx);
+    if (c->not_expanded) {
+        /* nothing to factor: poly and reduced stay 0, no factors */
+        c->origin = malloc(strlen(origin) + 1);
+        c->dropped = calloc(1, sizeof(int));
+        c->even = calloc(1, sizeof(int));
+        if (c->origin == NULL || c->dropped == NULL || c->even == NULL)
+            return rs_error_set(err, RS_ERR_LIMIT, "hurwitz: out of memory");
+        strcpy(c->origin, origin);
+        return RS_OK;
+    }
     return _cond_set(c, poly, origin, sign, ctx, err);
 }
 
@@ -616,7 +658,8 @@ rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         h->minors = flint_malloc(n * sizeof(fmpz_mpoly_struct));
         for (i = 0; i < n; i++)
             fmpz_mpoly_init(h->minors + i, ctx);
-        r = _hurwitz_minors(h->minors, h->coeffs, n, ctx, err);
+        r = _hurwitz_minors(h->minors, &h->expanded, h->coeffs, n, ctx,
+                            err);
     }
     if (r == RS_OK)
         r = _hurwitz_conditions(h, sign, ctx, err);
@@ -760,6 +803,37 @@ rs_hurwitz_sign_at(const fmpz_mpoly_t poly, fmpq *const *vals,
     return s;
 }
 
+int
+rs_hurwitz_minor_sign_at(const rs_hurwitz_t h, slong k, fmpq *const *vals,
+                         const fmpz_mpoly_ctx_t ctx)
+{
+    fmpq_mat_t H;
+    fmpq *a;
+    fmpq_t det;
+    slong i, j;
+    int s;
+
+    if (k < 1 || k > h->n)
+        return 0;
+    a = _fmpq_vec_init(h->n + 1);
+    for (i = 0; i <= h->n; i++)
+        rs_hurwitz_eval(a + i, h->coeffs + i, vals, ctx);
+    fmpq_mat_init(H, k, k);
+    for (i = 0; i < k; i++)
+        for (j = 0; j < k; j++) {
+            slong idx = h->n - (2 * (j + 1) - (i + 1));
+            if (idx >= 0 && idx <= h->n)
+                fmpq_set(fmpq_mat_entry(H, i, j), a + idx);
+        }
+    fmpq_init(det);
+    fmpq_mat_det(det, H);
+    s = fmpq_sgn(det);
+    fmpq_clear(det);
+    fmpq_mat_clear(H);
+    _fmpq_vec_clear(a, h->n + 1);
+    return s;
+}
+
 /* 1 / 0 as the stated conditions of h hold at vals, -1 if one vanishes */
 static int
 _branch_holds(const rs_hurwitz_t h, fmpq *const *vals,
@@ -773,7 +847,8 @@ _branch_holds(const rs_hurwitz_t h, fmpq *const *vals,
         int s;
         if (c->trivially_true)
             continue;
-        s = rs_hurwitz_sign_at(c->reduced, vals, ctx);
+        s = c->not_expanded ? rs_hurwitz_minor_sign_at(h, c->minor, vals, ctx)
+                            : rs_hurwitz_sign_at(c->reduced, vals, ctx);
         if (s == 0)
             return -1;
         if (s < 0)
