@@ -1364,6 +1364,79 @@ test_chain_positive(void **state)
     }
 }
 
+/* Issue 17: with a tiny per-row share of the budget the Routh recursion
+ * stops after D_1 and the later minors stay "not expanded"; their sign at a
+ * rational point then comes from the rational Hurwitz determinant there
+ * (rs_hurwitz_minor_sign_at).  Independent check: the fully expanded minors
+ * (fraction-free Routh rows over Z[c, k], themselves checked against Laplace
+ * expansions in test_chain) evaluated at the same points, for the 3- and
+ * 4-mass chains (chain_q), and the verdicts of both conditions sets agree. */
+static void
+test_chain_not_expanded(void **state)
+{
+    const char *vars4[] = {"c", "k1", "k2", "k3", "k4", "z"};
+    const char *vars3[] = {"c", "k1", "k2", "k3", "z"};
+    slong N;
+    (void) state;
+
+    rng_state = 4242;
+    for (N = 3; N <= 4; N++) {
+        tctx_struct t;
+        fmpz_mpoly_t q;
+        rs_hurwitz_or_t full, part;
+        rs_error_t err;
+        fmpq **vals;
+        slong nv = N + 2, i, k, trial, unexp = 0;
+        double old;
+
+        tctx_init(&t, N == 3 ? vars3 : vars4, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        rs_hurwitz_or_init(full);
+        rs_hurwitz_or_init(part);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        assert_int_equal(rs_hurwitz_or_compute(full, q, nv - 1, 2 * N, NULL,
+                                               t.ctx, err), RS_OK);
+        old = rs_hurwitz_set_row_seconds(0.0);
+        assert_int_equal(rs_hurwitz_or_compute(part, q, nv - 1, 2 * N, NULL,
+                                               t.ctx, err), RS_OK);
+        rs_hurwitz_set_row_seconds(old);
+        assert_int_equal(full->nbranch, part->nbranch);
+        assert_int_equal(full->branch[0].expanded, 2 * N);
+        assert_int_equal(part->branch[0].expanded, 1);
+        for (i = 0; i < part->branch[0].ncond; i++)
+            unexp += part->branch[0].cond[i].not_expanded;
+        assert_true(unexp >= N - 1);   /* D_{2N-1}, D_{2N-3}, ..., D_3 */
+
+        vals = flint_malloc(nv * sizeof(fmpq *));
+        for (i = 0; i < nv; i++) {
+            vals[i] = flint_malloc(sizeof(fmpq));
+            fmpq_init(vals[i]);
+        }
+        for (trial = 0; trial < 40; trial++) {
+            for (i = 0; i + 1 < nv; i++)
+                fmpq_set_si(vals[i], rng_range(-3, 12) | 1, rng_range(1, 5));
+            for (k = 2; k <= 2 * N; k++)
+                assert_int_equal(
+                    rs_hurwitz_minor_sign_at(part->branch + 0, k, vals, t.ctx),
+                    rs_hurwitz_sign_at(full->branch[0].minors + k - 1, vals,
+                                       t.ctx));
+            assert_int_equal(rs_hurwitz_or_holds(part, vals, t.ctx),
+                             rs_hurwitz_or_holds(full, vals, t.ctx));
+        }
+        for (i = 0; i < nv; i++) {
+            fmpq_clear(vals[i]);
+            flint_free(vals[i]);
+        }
+        flint_free(vals);
+        rs_hurwitz_or_clear(full, t.ctx);
+        rs_hurwitz_or_clear(part, t.ctx);
+        rs_error_clear(err);
+        fmpz_mpoly_clear(q, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
 int
 main(void)
 {
@@ -1384,6 +1457,7 @@ main(void)
         cmocka_unit_test(test_degree12),
         cmocka_unit_test(test_chain),
         cmocka_unit_test(test_chain_positive),
+        cmocka_unit_test(test_chain_not_expanded),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
