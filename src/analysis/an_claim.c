@@ -8,6 +8,7 @@
 #include <flint/fmpz_poly_factor.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
+#include "recstab/positivity.h"
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
 
@@ -109,49 +110,25 @@ static void cert_note(claim_cx_t *cx, const char *text)
     json_array_append_new(cx->cert, json_pack("{s:s}", "text", text));
 }
 
-/* every coefficient >= 0 and some positive term non-zero on the whole
- * domain (its variables all strictly positive there) */
-static int coeffs_certify(const fmpq_mpoly_t P, const int *strict, const rs_scheme_t s)
-{
-    slong i, len = fmpq_mpoly_length(P, s->ctx), v;
-    slong *e = flint_malloc(s->nvars * sizeof(slong));
-    int ok = len > 0, witness = 0;
-    fmpq_t c;
-    fmpq_init(c);
-    for (i = 0; i < len && ok; i++) {
-        fmpq_mpoly_get_term_coeff_fmpq(c, P, i, s->ctx);
-        if (fmpq_sgn(c) < 0) { ok = 0; break; }
-        if (fmpq_sgn(c) > 0 && !witness) {
-            int w = 1;
-            fmpq_mpoly_get_term_exp_si(e, P, i, s->ctx);
-            for (v = 0; v < s->nvars; v++)
-                if (e[v] > 0 && !strict[v]) w = 0;
-            witness = w;
-        }
-    }
-    fmpq_clear(c);
-    flint_free(e);
-    return ok && witness;
-}
-
-#define CLAIM_POLYA_MAX 40        /* (1 + sum s)^N multipliers tried */
-#define CLAIM_POLYA_TERMS 20000   /* give up when the product grows beyond this */
+#define CLAIM_POLYA_MAX RS_POLYA_MAX_POWER   /* Polya multipliers tried (positivity.h) */
 
 /* Certifies P > 0 for every s >= 0 (s_v > 0 where strict[v]).  A monomial
  * factor in strictly positive variables is divided out first: a condition
  * that vanishes at an open end of the interval (mapped to s_v = 0) has such
- * a factor, and the rest must be positive up to that end.  Then Polya: P > 0
- * if (1 + sum s_v)^N P has non-negative coefficients for some N (found for
- * every P positive on the closed domain, ends at infinity included).
- * *mono is the monomial divided out ("" if none), *polya the N used. */
+ * a factor, and the rest must be positive up to that end.  Then the one
+ * positivity routine of the Hurwitz stage (positivity.c): all coefficients
+ * of one sign with a monomial > 0, else Polya's multiplier (sum s_v)^N for a
+ * form, (1 + sum s_v)^N otherwise, after each s_v's exponents are divided by
+ * their gcd.  *mono is the monomial divided out ("" if none), *polya the N
+ * used (0: coefficients alone). */
 static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s, char **mono, slong *polya)
 {
-    fmpq_mpoly_t M, T;
-    slong v, k;
+    fmpq_mpoly_t M;
+    slong v;
     ulong *e = flint_malloc(s->nvars * sizeof(ulong));
+    rs_sign_t *sg = flint_malloc(s->nvars * sizeof(rs_sign_t));
     int ok, any = 0;
     fmpq_mpoly_init(M, s->ctx);
-    fmpq_mpoly_init(T, s->ctx);
     *mono = NULL;
     *polya = 0;
     fmpq_mpoly_term_content(M, P, s->ctx);
@@ -180,25 +157,13 @@ static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s
         }
         fmpq_clear(one);
     }
-    ok = coeffs_certify(P, strict, s);
-    if (!ok) {
-        /* T = 1 + sum of the variables of P */
-        fmpq_mpoly_one(T, s->ctx);
-        for (v = 0; v < s->nvars; v++)
-            if (fmpq_mpoly_degree_si(P, v, s->ctx) > 0) {
-                fmpq_mpoly_gen(M, v, s->ctx);
-                fmpq_mpoly_add(T, T, M, s->ctx);
-            }
-        fmpq_mpoly_set(M, P, s->ctx);
-        for (k = 1; k <= CLAIM_POLYA_MAX && !ok && fmpq_mpoly_length(M, s->ctx) < CLAIM_POLYA_TERMS
-                    && rs_budget_check(NULL, "the claim's certificate") == RS_OK; k++) {
-            fmpq_mpoly_mul(M, M, T, s->ctx);
-            ok = coeffs_certify(M, strict, s);
-            if (ok) *polya = k;
-        }
-    }
+    /* P = content * zpoly: the sign of the integer part decides */
+    for (v = 0; v < s->nvars; v++) sg[v] = strict[v] ? RS_SIGN_POSITIVE : RS_SIGN_NONNEGATIVE;
+    ok = !fmpq_mpoly_is_zero(P, s->ctx)
+         && fmpq_sgn(P->content) * rs_positivity_sign(P->zpoly, sg, s->ctx->zctx, polya) > 0;
+    if (!ok || *polya < 0) *polya = 0;
     fmpq_mpoly_clear(M, s->ctx);
-    fmpq_mpoly_clear(T, s->ctx);
+    flint_free(sg);
     flint_free(e);
     return ok;
 }
