@@ -46,7 +46,7 @@
 #define RS_HURWITZ_MAX_DEGREE 256
 
 /* per-row share of the budget, seconds (rs_hurwitz_set_row_seconds) */
-static double row_seconds = 10.0;
+static double row_seconds = 2.0;
 
 double
 rs_hurwitz_set_row_seconds(double seconds)
