@@ -1230,6 +1230,30 @@ chain_verdict(fmpq *const *vals, slong N)
  * independent determinant), and the stated conditions (no sign
  * assumptions: both branches) at random rational points against the
  * exact modal verdict above. */
+/* a point of nv rational coordinates, each its own fmpq */
+static fmpq **
+point_new(slong nv)
+{
+    fmpq **vals = flint_malloc(nv * sizeof(fmpq *));
+    slong i;
+    for (i = 0; i < nv; i++) {
+        vals[i] = flint_malloc(sizeof(fmpq));
+        fmpq_init(vals[i]);
+    }
+    return vals;
+}
+
+static void
+point_free(fmpq **vals, slong nv)
+{
+    slong i;
+    for (i = 0; i < nv; i++) {
+        fmpq_clear(vals[i]);
+        flint_free(vals[i]);
+    }
+    flint_free(vals);
+}
+
 static void
 test_chain(void **state)
 {
@@ -1258,11 +1282,7 @@ test_chain(void **state)
             assert_int_equal(hb->branch[b].n, 2 * N);
             check_minors_laplace(hb->branch + b, t.ctx);
         }
-        vals = flint_malloc(nv * sizeof(fmpq *));
-        for (i = 0; i < nv; i++) {
-            vals[i] = flint_malloc(sizeof(fmpq));
-            fmpq_init(vals[i]);
-        }
+        vals = point_new(nv);
         for (trial = 0; trial < 200; trial++) {
             int want, got;
             /* mostly positive values, some negative (K indefinite or
@@ -1280,11 +1300,7 @@ test_chain(void **state)
         print_message("N=%ld: %ld points, %ld stable\n", (long) N, (long) agree, (long) stable);
         assert_true(agree >= 150);
         assert_true(stable >= 30 && agree - stable >= 30);
-        for (i = 0; i < nv; i++) {
-            fmpq_clear(vals[i]);
-            flint_free(vals[i]);
-        }
-        flint_free(vals);
+        point_free(vals, nv);
         rs_hurwitz_or_clear(hb, t.ctx);
         fmpz_mpoly_clear(q, t.ctx);
         tctx_clear(&t);
@@ -1342,22 +1358,14 @@ test_chain_positive(void **state)
                       (long) ntrue, (long) hb->branch[0].ncond);
         if (N == 2)
             assert_int_equal(ntrue, hb->branch[0].ncond);
-        vals = flint_malloc(nv * sizeof(fmpq *));
-        for (i = 0; i < nv; i++) {
-            vals[i] = flint_malloc(sizeof(fmpq));
-            fmpq_init(vals[i]);
-        }
+        vals = point_new(nv);
         for (trial = 0; trial < 40; trial++) {
             for (i = 0; i + 1 < nv; i++)
                 fmpq_set_si(vals[i], rng_range(1, 40), rng_range(1, 7));
             assert_int_equal(chain_verdict(vals, N), 1);
             assert_int_equal(rs_hurwitz_or_holds(hb, vals, t.ctx), 1);
         }
-        for (i = 0; i < nv; i++) {
-            fmpq_clear(vals[i]);
-            flint_free(vals[i]);
-        }
-        flint_free(vals);
+        point_free(vals, nv);
         rs_hurwitz_or_clear(hb, t.ctx);
         fmpz_mpoly_clear(q, t.ctx);
         tctx_clear(&t);
@@ -1408,11 +1416,7 @@ test_chain_not_expanded(void **state)
             unexp += part->branch[0].cond[i].not_expanded;
         assert_true(unexp >= N - 1);   /* D_{2N-1}, D_{2N-3}, ..., D_3 */
 
-        vals = flint_malloc(nv * sizeof(fmpq *));
-        for (i = 0; i < nv; i++) {
-            vals[i] = flint_malloc(sizeof(fmpq));
-            fmpq_init(vals[i]);
-        }
+        vals = point_new(nv);
         for (trial = 0; trial < 40; trial++) {
             for (i = 0; i + 1 < nv; i++)
                 fmpq_set_si(vals[i], rng_range(-3, 12) | 1, rng_range(1, 5));
@@ -1424,11 +1428,7 @@ test_chain_not_expanded(void **state)
             assert_int_equal(rs_hurwitz_or_holds(part, vals, t.ctx),
                              rs_hurwitz_or_holds(full, vals, t.ctx));
         }
-        for (i = 0; i < nv; i++) {
-            fmpq_clear(vals[i]);
-            flint_free(vals[i]);
-        }
-        flint_free(vals);
+        point_free(vals, nv);
         rs_hurwitz_or_clear(full, t.ctx);
         rs_hurwitz_or_clear(part, t.ctx);
         rs_error_clear(err);
