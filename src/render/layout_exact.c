@@ -154,7 +154,6 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
     for (i = 0; i < json_array_size(c); i++) {
         const char *ci = json_string_value(json_array_get(c, i));
         rs_render_item_begin(r);
-<<<<<<< HEAD
         /* a constant condition such as 0 > 0 is said in words: it fails
          * for every value of the parameters */
         if (ci != NULL && strncmp(ci, "0 > 0", 5) == 0 && ci[5] == '\0')
@@ -163,8 +162,6 @@ static void condition_list(rs_render_t *r, const json_t *c, const char *md, cons
                           "a condition that is identically false (its polynomial is the constant 0): no "
                           "parameter value has every $|\\lambda| < 1$");
         else condition_math(r, ci);
-=======
->>>>>>> bcc3831 (hurwitz: minors whose Routh row exceeds the per-row budget share stay 'not expanded'; their sign at sample points from the exact rational Hurwitz determinant; JSON not_expanded/not_expanded_note, renderers print it as text)
         rs_render_item_end(r);
     }
     if (json_array_size(c) == 0 && empty != NULL) {
