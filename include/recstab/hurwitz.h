@@ -95,6 +95,13 @@ void rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx);
 int rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
                        const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
                        rs_error_t err);
+/* As rs_hurwitz_compute, but minors whose Routh row would exceed the per-row
+ * budget share stay unexpanded (h->expanded < h->n, their conditions marked
+ * not_expanded, decided at points by rs_hurwitz_minor_sign_at) instead of
+ * being a limit error; rs_hurwitz_compute returns RS_ERR_LIMIT then. */
+int rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                               const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                               rs_error_t err);
 
 /* 1 if poly is provably > 0 for all variable values allowed by sign[]
  * (sufficient test: every monomial's coefficient positive, every variable in

@@ -640,9 +640,9 @@ _hurwitz_degree(slong *n, const fmpz_mpoly_t q, slong zvar,
 }
 
 int
-rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
-                   const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
-                   rs_error_t err)
+rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                           const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                           rs_error_t err)
 {
     slong i, n = 0;
     int r;
@@ -665,6 +665,25 @@ rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         r = _hurwitz_conditions(h, sign, ctx, err);
     if (r != RS_OK)
         rs_hurwitz_clear(h, ctx);
+    return r;
+}
+
+/* Callers that use the minors as polynomials (critical values, projections,
+ * certificates) need every one of them: a minor left unexpanded is a limit. */
+int
+rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                   const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                   rs_error_t err)
+{
+    int r = rs_hurwitz_compute_partial(h, q, zvar, sign, ctx, err);
+    if (r == RS_OK && h->expanded < h->n) {
+        slong k = h->expanded + 1;
+        rs_hurwitz_clear(h, ctx);
+        return rs_error_set(err, RS_ERR_LIMIT,
+                            "the Hurwitz minor D_%ld was not expanded within the per-row budget share "
+                            "(%g s); this analysis needs every minor as a polynomial (`hurwitz` reports "
+                            "the unexpanded minors instead)", (long) k, row_seconds);
+    }
     return r;
 }
 
@@ -727,7 +746,7 @@ rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
             return RS_OK;
         }
     }
-    r = rs_hurwitz_compute(hb->branch + 0, q, zvar, sign, ctx, err);
+    r = rs_hurwitz_compute_partial(hb->branch + 0, q, zvar, sign, ctx, err);
     if (r != RS_OK)
         return r;
     hb->nbranch = 1;
@@ -735,7 +754,7 @@ rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
         fmpz_mpoly_t mq;
         fmpz_mpoly_init(mq, ctx);
         fmpz_mpoly_neg(mq, q, ctx);
-        r = rs_hurwitz_compute(hb->branch + 1, mq, zvar, sign, ctx, err);
+        r = rs_hurwitz_compute_partial(hb->branch + 1, mq, zvar, sign, ctx, err);
         fmpz_mpoly_clear(mq, ctx);
         if (r != RS_OK) {
             rs_hurwitz_or_clear(hb, ctx);

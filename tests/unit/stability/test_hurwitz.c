@@ -1408,6 +1408,18 @@ test_chain_not_expanded(void **state)
         old = rs_hurwitz_set_row_seconds(0.0);
         assert_int_equal(rs_hurwitz_or_compute(part, q, nv - 1, 2 * N, NULL,
                                                t.ctx, err), RS_OK);
+        {
+            /* the strict entry (regions, claims, map boundaries use the minors
+             * as polynomials) refuses instead of handing out zero minors */
+            rs_hurwitz_t strict;
+            rs_error_t e2;
+            rs_hurwitz_init(strict);
+            rs_error_init(e2);
+            assert_int_equal(rs_hurwitz_compute(strict, q, nv - 1, NULL, t.ctx, e2), RS_ERR_LIMIT);
+            assert_non_null(strstr(e2->msg, "not expanded"));
+            rs_hurwitz_clear(strict, t.ctx);
+            rs_error_clear(e2);
+        }
         rs_hurwitz_set_row_seconds(old);
         assert_int_equal(full->nbranch, part->nbranch);
         assert_int_equal(full->branch[0].expanded, 2 * N);
