@@ -11,6 +11,7 @@
 #include "recstab/positivity.h"
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
+#include "analysis/an_region.h"
 
 /* ---- claim ------------------------------------------------------------------- */
 
@@ -1126,6 +1127,177 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
     return r;
 }
 
+/* The parameter a one-part claim constrains by an interval: every comparison
+ * NAME op CONST (not !=) on the same unset NAME; -1 otherwise. */
+static slong claim_single_param(rs_run_t *run, const claim_dnf_t *d)
+{
+    slong tv = -1, j, k;
+    rs_src_t src;
+    memset(&src, 0, sizeof src);
+    src.file = run->c->path;
+    if (d->nparts != 1 || d->n[0] == 0) return -1;
+    for (j = 0; j < d->n[0]; j++) {
+        const rs_cond_t *cd = d->conds[0] + j;
+        for (k = 0; k + 1 < cd->n; k++) {
+            const rs_expr_t *l = cd->e[k], *rr = cd->e[k + 1], *nm = NULL, *cst = NULL;
+            slong p;
+            fmpq_t x;
+            rs_error_t scratch;
+            int ok;
+            if (l->kind == RS_EXPR_NAME && !l->shifted) { nm = l; cst = rr; }
+            else if (rr->kind == RS_EXPR_NAME && !rr->shifted) { nm = rr; cst = l; }
+            if (nm == NULL || cd->op[k] == RS_CMP_NE) return -1;
+            p = rs_case_param_index(run->c, nm->name);
+            if (p < 0 || param_is_set(run, p) || (tv >= 0 && p != tv)) return -1;
+            fmpq_init(x);
+            rs_error_init(scratch);
+            ok = rs_expr_eval_const(x, cst, &src, scratch) == RS_OK;
+            fmpq_clear(x);
+            if (!ok) return -1;
+            tv = p;
+        }
+    }
+    return tv;
+}
+
+static int region_good(claim_kind_t kind, const char *st)
+{
+    return st != NULL && (strcmp(st, "stable") == 0 || (kind == CLAIM_BOUNDED && strcmp(st, "marginal") == 0));
+}
+
+/* an interval end as text: "p/q", or ~approx for an algebraic one */
+static void end_text(char *buf, size_t n, const json_t *iv, const char *key, const char *approx)
+{
+    const json_t *e = json_object_get(iv, key);
+    if (json_is_string(e)) snprintf(buf, n, "%s", json_string_value(e));
+    else if (json_is_null(e) || e == NULL) snprintf(buf, n, "%s", strcmp(key, "lo") == 0 ? "-inf" : "inf");
+    else snprintf(buf, n, "~%.6g", json_real_value(json_object_get(iv, approx)));
+}
+
+static void interval_text(char *buf, size_t n, const json_t *iv)
+{
+    char lo[96], hi[96];
+    end_text(lo, sizeof lo, iv, "lo", "lo_approx");
+    end_text(hi, sizeof hi, iv, "hi", "hi_approx");
+    if (json_is_true(json_object_get(iv, "lo_closed")) && json_is_true(json_object_get(iv, "hi_closed"))
+        && strcmp(lo, hi) == 0)
+        snprintf(buf, n, "{%s}", lo);
+    else
+        snprintf(buf, n, "%s%s, %s%s", json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", lo, hi,
+                 json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")");
+}
+
+/* length of an interval for "largest" (infinite ends: infinite) */
+static double interval_length(const json_t *iv)
+{
+    const json_t *lo = json_object_get(iv, "lo_approx"), *hi = json_object_get(iv, "hi_approx");
+    if (!json_is_number(lo) || !json_is_number(hi)) return HUGE_VAL;
+    return json_number_value(hi) - json_number_value(lo);
+}
+
+/* The for-all region of the claim's parameter on the claim's interval (issue
+ * 13): cross-checks the claim's verdict (proved iff every interval is stable,
+ * resp. stable or marginal) and explains a claim not proved: the intervals
+ * that are not, with their counterexamples, and the largest proved one. */
+static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t kind, const claim_dnf_t *d,
+                              json_t *o)
+{
+    slong tv = claim_single_param(run, d), nparams = run->c->nparams, i;
+    const char *st = json_string_value(json_object_get(o, "status"));
+    json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex;
+    rs_bound_t *b;
+    int r, all_good = 1, some_bad = 0;
+    double best_len = -1;
+    char buf[1200], one[400];
+    size_t used;
+    if (tv < 0 || kind == CLAIM_UNSTABLE || st == NULL) return RS_OK;
+    b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
+    claim_bounds(b, run, d->conds[0], d->n[0]);
+    r = rs_bound_empty(b + tv) ? RS_OK : rs_an_region_forall_on(&reg, run, q, tv, b + tv);
+    rs_bounds_clear(b, nparams);
+    flint_free(b);
+    if (r == RS_ERR_LIMIT) {        /* keep the claim's own verdict */
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "not made", "reason",
+                                                         run->err->msg));
+        rs_error_init(run->err);
+        return RS_OK;
+    }
+    if (r != RS_OK || reg == NULL) return r;
+    ivs = json_object_get(reg, "intervals");
+    failing = json_array();
+    json_array_foreach(ivs, i, iv) {
+        const char *s = json_string_value(json_object_get(iv, "status"));
+        if (region_good(kind, s)) {
+            if (interval_length(iv) > best_len) { best_len = interval_length(iv); best = iv; }
+            continue;
+        }
+        all_good = 0;
+        if (s != NULL && strcmp(s, "undecided") == 0) continue;
+        some_bad = 1;
+        {
+            json_t *f = json_object(), *ev, *e;
+            size_t k;
+            json_object_set(f, "lo", json_object_get(iv, "lo"));
+            json_object_set(f, "hi", json_object_get(iv, "hi"));
+            json_object_set(f, "lo_closed", json_object_get(iv, "lo_closed"));
+            json_object_set(f, "hi_closed", json_object_get(iv, "hi_closed"));
+            json_object_set(f, "status", json_object_get(iv, "status"));
+            ev = json_object_get(iv, "evidence");
+            json_array_foreach(ev, k, e) {      /* the first cell's counterexample */
+                if (json_object_get(e, "counterexample") != NULL) {
+                    json_object_set(f, "counterexample", json_object_get(e, "counterexample"));
+                    json_object_set(f, "at_counterexample", json_object_get(e, "at_counterexample"));
+                    break;
+                }
+            }
+            json_array_append_new(failing, f);
+        }
+    }
+    /* proved <=> inside the good part; undecided cells decide nothing */
+    if ((strcmp(st, "proved") == 0 && some_bad) || (strcmp(st, "refuted") == 0 && all_good)) {
+        snprintf(buf, sizeof buf, "the claim is %s but the for-all region of %s says %s", st,
+                 run->c->params[tv].name, some_bad ? "it fails on part of the set" : "it holds on the whole set");
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "disagrees", "message", buf));
+        json_object_set_new(o, "status", json_string("inconsistent"));
+        run->outcome |= RS_OUTCOME_INCONSISTENT;
+    } else {
+        json_object_set_new(o, "cross_check", json_pack("{s:s}", "status",
+                                                        all_good || some_bad ? "agrees" : "region undecided"));
+    }
+    if (strcmp(st, "proved") != 0 && json_array_size(failing) > 0) {
+        ex = json_object();
+        json_object_set_new(ex, "param", json_string(run->c->params[tv].name));
+        json_object_set_new(ex, "failing", failing);
+        failing = NULL;
+        if (best != NULL) {
+            json_t *pp = json_object();
+            json_object_set(pp, "lo", json_object_get(best, "lo"));
+            json_object_set(pp, "hi", json_object_get(best, "hi"));
+            json_object_set(pp, "lo_closed", json_object_get(best, "lo_closed"));
+            json_object_set(pp, "hi_closed", json_object_get(best, "hi_closed"));
+            json_object_set(pp, "status", json_object_get(best, "status"));
+            json_object_set_new(ex, "proved_part", pp);
+            interval_text(one, sizeof one, best);
+            snprintf(buf, sizeof buf, "holds for %s in %s", run->c->params[tv].name, one);
+        } else {
+            json_object_set_new(ex, "proved_part", json_null());
+            snprintf(buf, sizeof buf, "holds on no interval of %s", run->c->params[tv].name);
+        }
+        json_array_foreach(json_object_get(ex, "failing"), i, iv) {
+            used = strlen(buf);
+            interval_text(one, sizeof one, iv);
+            snprintf(buf + used, sizeof buf - used, "; %s on %s", json_string_value(json_object_get(iv, "status")),
+                     one);
+        }
+        json_object_set_new(ex, "summary", json_string(buf));
+        json_object_set_new(ex, "for_all", json_deep_copy(json_object_get(reg, "for_all")));
+        json_object_set_new(o, "explanation", ex);
+    }
+    json_decref(failing);
+    json_decref(reg);
+    return RS_OK;
+}
+
 /* claim stable|bounded|unstable [when CONDITION ...]: the conditions parsed up front */
 int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run)
 {
@@ -1264,6 +1436,9 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
         }
         json_object_set_new(o, "points_checked", json_integer(ntried));
         json_object_set_new(o, "tried", json_string(tried));
+        r = claim_region_check(run, q, kind, d, o);
+    }
+    if (r == RS_OK) {
         rs_run_emit_exact(run, v, o);
     } else {
         json_decref(o);

@@ -837,6 +837,7 @@ typedef struct {
     const slong *qv;            /* ... over these parameters */
     slong nq;
     const char *projection;     /* which projection decided the cells */
+    const rs_bound_t *dom_tv;   /* a claim's interval of t (replaces the assumed one) */
 } region_t;
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
@@ -1430,6 +1431,12 @@ static int region_domain(region_t *rg)
     rs_bounds_init(rg->bounds, run->c->nparams);
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(rg->bounds, &run->c->assume[i], run->c, run->err);
     bt = rg->bounds + rg->tv;
+    if (rg->dom_tv != NULL) {   /* a claim's set: the assumptions already in it */
+        bt->has_lo = rg->dom_tv->has_lo; bt->has_hi = rg->dom_tv->has_hi;
+        bt->lo_closed = rg->dom_tv->lo_closed; bt->hi_closed = rg->dom_tv->hi_closed;
+        bt->fixed = rg->dom_tv->fixed;
+        fmpq_set(bt->lo, rg->dom_tv->lo); fmpq_set(bt->hi, rg->dom_tv->hi);
+    }
     if (rs_bound_empty(bt))
         return rs_req_error(run, rg->q, rg->rest, RS_ERR_INPUT,
                             "the assumptions are contradictory: no value of '%s' satisfies them", rg->name);
@@ -1496,6 +1503,54 @@ void rs_an_region_req_clear(rs_an_req_t *req)
     req->u.region.qv = NULL;
 }
 
+/* region NAME for all: the intervals into o; dom_tv (or NULL) replaces
+ * NAME's assumed interval */
+static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req, const rs_variant_t *v,
+                                const rs_bound_t *dom_tv)
+{
+    region_t rg;
+    int r;
+    region_init(&rg, run, req, v);
+    rg.dom_tv = dom_tv;
+    json_object_set_new(o, "symbolic", json_false());
+    r = region_domain(&rg);
+    if (r == RS_OK) r = region_forall_run(&rg);
+    if (r == RS_OK) region_json(&rg, o);
+    region_clear(&rg);
+    return r;
+}
+
+int rs_an_region_forall_on(json_t **out, rs_run_t *run, const rs_request_t *q, slong tv, const rs_bound_t *dom_tv)
+{
+    slong np = run->c->nparams, k;
+    rs_an_req_t req;
+    rs_assign_t *a = NULL;
+    slong na = 0;
+    const char *keep[1];
+    rs_variant_t *v;
+    int r;
+    memset(&req, 0, sizeof req);
+    req.q = q;
+    req.rest = q->text;
+    req.u.region.param = tv;
+    req.u.region.forall = 1;
+    req.u.region.qv = flint_malloc((np + 1) * sizeof(slong));
+    for (k = 0; k < np; k++)    /* as `for all` without a list */
+        if (k != tv && !param_is_set(run, k)) req.u.region.qv[req.u.region.nq++] = k;
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    *out = NULL;
+    if (r == RS_OK) {
+        *out = json_object();
+        r = region_forall_object(*out, run, &req, v, dom_tv);
+        if (r != RS_OK) { json_decref(*out); *out = NULL; }
+    }
+    flint_free(req.u.region.qv);
+    return r;
+}
+
 int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *name = run->c->params[req->u.region.param].name;
@@ -1518,17 +1573,9 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "param", json_string(name));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
     if (req->u.region.forall) {
-        region_init(&rg, run, req, v);
-        json_object_set_new(o, "symbolic", json_false());
-        r = region_domain(&rg);
-        if (r == RS_OK) r = region_forall_run(&rg);
-        if (r == RS_OK) {
-            region_json(&rg, o);
-            json_array_append_new(run->results, o);
-        } else {
-            json_decref(o);
-        }
-        region_clear(&rg);
+        r = region_forall_object(o, run, req, v, NULL);
+        if (r == RS_OK) json_array_append_new(run->results, o);
+        else json_decref(o);
         return r;
     }
     if (rs_run_count_free(v->cp->p, v->s, req->u.region.param) > 0) {

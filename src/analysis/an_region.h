@@ -58,6 +58,11 @@ void rs_alg_between(fmpq_t out, rs_alg_t *a, rs_alg_t *b);
  * parameter; 0 when undecided (a repeated non-real circle root of a system) */
 int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0, const rs_scheme_t s);
 
+/* The for-all region of parameter tv (every other parameter not set
+ * quantified) on the interval dom_tv: *out {"intervals", "for_all", ...}
+ * as `region NAME for all` prints them; a claim's cross-check. */
+int rs_an_region_forall_on(json_t **out, rs_run_t *run, const rs_request_t *q, slong tv, const rs_bound_t *dom_tv);
+
 /* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
 
