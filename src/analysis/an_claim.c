@@ -1202,7 +1202,8 @@ static double interval_length(const json_t *iv)
 static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t kind, const claim_dnf_t *d,
                               json_t *o)
 {
-    slong tv = claim_single_param(run, d), nparams = run->c->nparams, i;
+    slong tv = claim_single_param(run, d), nparams = run->c->nparams;
+    size_t i;
     const char *st = json_string_value(json_object_get(o, "status"));
     json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex;
     rs_bound_t *b;
@@ -1228,7 +1229,28 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
     json_array_foreach(ivs, i, iv) {
         const char *s = json_string_value(json_object_get(iv, "status"));
         if (region_good(kind, s)) {
-            if (interval_length(iv) > best_len) { best_len = interval_length(iv); best = iv; }
+            /* a run of adjacent good intervals (stable next to marginal for
+             * `claim bounded`) is one proved part */
+            json_t *run_iv = json_deep_copy(iv);
+            size_t k;
+            for (k = i + 1; k < json_array_size(ivs)
+                            && region_good(kind, json_string_value(json_object_get(json_array_get(ivs, k), "status")));
+                 k++) {
+                const json_t *nx = json_array_get(ivs, k);
+                json_object_set(run_iv, "hi", json_object_get(nx, "hi"));
+                json_object_set(run_iv, "hi_closed", json_object_get(nx, "hi_closed"));
+                json_object_set(run_iv, "hi_approx", json_object_get(nx, "hi_approx"));
+                if (strcmp(json_string_value(json_object_get(nx, "status")), "stable") != 0)
+                    json_object_set_new(run_iv, "status", json_string("marginal"));
+            }
+            i = k - 1;
+            if (interval_length(run_iv) > best_len) {
+                best_len = interval_length(run_iv);
+                json_decref(best);
+                best = run_iv;
+            } else {
+                json_decref(run_iv);
+            }
             continue;
         }
         all_good = 0;
@@ -1294,6 +1316,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         json_object_set_new(o, "explanation", ex);
     }
     json_decref(failing);
+    json_decref(best);
     json_decref(reg);
     return RS_OK;
 }

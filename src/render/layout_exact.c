@@ -706,6 +706,27 @@ static void certificate_prose(rs_render_t *r, const json_t *c)
     rs_render_list_end(r);
 }
 
+/* the for-all region's cross-check and explanation of a claim (issue 13) */
+static void explanation_lines(rs_render_t *r, const json_t *o)
+{
+    const json_t *cc = json_object_get(o, "cross_check"), *ex = json_object_get(o, "explanation");
+    if (cc != NULL)
+        rs_render_linef(r, "region check", "%s%s%s", js(cc, "status"),
+                        js(cc, "message") || js(cc, "reason") ? ": " : "",
+                        js(cc, "message") ? js(cc, "message") : js(cc, "reason") ? js(cc, "reason") : "");
+    if (ex != NULL) rs_render_line(r, "explanation", "%s", js(ex, "summary"));
+}
+
+static void explanation_prose(rs_render_t *r, const json_t *o)
+{
+    const json_t *ex = json_object_get(o, "explanation");
+    if (ex == NULL) return;
+    rs_render_say(r, "Region of the claim's parameter for all others: ",
+                  "Region of the claim's parameter for all others: ");
+    rs_render_code(r, js(ex, "summary"));
+    rs_render_say(r, ".\n\n", ".\n\n");
+}
+
 void rs_render_claim(rs_render_t *r, const json_t *o)
 {
     const char *st = js(o, "status");
@@ -729,9 +750,11 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         rs_render_line(r, "failed at", "%s", js(o, "failed_at"));
     }
     rs_render_linef(r, "search", "%lld points checked exactly", ji(o, "points_checked"));
+    explanation_lines(r, o);
     rs_render_assigned(r, o);
     rs_render_heading(r, "Claim", "Claim");
     taken_at(r, o);
     claim_prose(r, o);
+    explanation_prose(r, o);
     if (json_is_array(json_object_get(o, "certificate"))) certificate_prose(r, json_object_get(o, "certificate"));
 }
