@@ -1271,6 +1271,11 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
                     json_object_set(f, "at_counterexample", json_object_get(e, "at_counterexample"));
                     break;
                 }
+                if (json_object_get(e, "not_stable_at") != NULL) {   /* marginal: bounded, not stable there */
+                    json_object_set(f, "counterexample", json_object_get(e, "not_stable_at"));
+                    json_object_set_new(f, "at_counterexample", json_pack("{s:s}", "status", "marginal"));
+                    break;
+                }
             }
             json_array_append_new(failing, f);
         }
