@@ -253,6 +253,133 @@ static void test_limit_ends(void **state)
     json_decref(doc);
 }
 
+/* ---- claims decided again by the region engine (issue 13 part 1) ----------
+ * "cross_check" agrees with the claim's own verdict, and a failed claim's
+ * "explanation" lists the region intervals inside the claim's set that are
+ * not stable (bounded), with counterexamples, and the largest proved
+ * sub-interval.  Expected ranges: those derived at the top of this file
+ * (theta: stable iff th > 1/2, marginal at 1/2; central difference: marginal
+ * on (0, 2), unstable on [2, inf); Park: stable exactly on [0, 1]). */
+
+/* an interval object is lo..hi with the given closedness */
+static void check_iv(const json_t *iv, const char *lo, int lc, const char *hi, int hc, const char *what)
+{
+    assert_non_null(iv);
+    if (strcmp(end(iv, "lo"), lo) != 0 || strcmp(end(iv, "hi"), hi) != 0
+        || json_is_true(json_object_get(iv, "lo_closed")) != lc || json_is_true(json_object_get(iv, "hi_closed")) != hc)
+        fail_msg("%s: %s%s, %s%s, expected %s%s, %s%s", what, json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(",
+                 end(iv, "lo"), end(iv, "hi"), json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")",
+                 lc ? "[" : "(", lo, hi, hc ? "]" : ")");
+}
+
+/* a failing interval's counterexample: NAME's value inside [lo, hi] (rational
+ * ends, hi NULL: infinite) and an exact verdict that is not stable */
+static void check_cx(const json_t *f, const char *name, const char *lo, const char *hi)
+{
+    const json_t *cx = json_object_get(f, "counterexample");
+    fmpq_t x, a;
+    assert_non_null(cx);
+    fmpq_init(x);
+    fmpq_init(a);
+    assert_int_equal(fmpq_set_str(x, str(cx, name), 10), 0);
+    fmpq_set_str(a, lo, 10);
+    assert_true(fmpq_cmp(x, a) >= 0);
+    if (hi != NULL) {
+        fmpq_set_str(a, hi, 10);
+        assert_true(fmpq_cmp(x, a) <= 0);
+    }
+    assert_true(strcmp(str(json_object_get(f, "at_counterexample"), "status"), "stable") != 0);
+    fmpq_clear(x);
+    fmpq_clear(a);
+}
+
+#define THETA "param th w\nassume w > 0\nunknown x v\neq x[n+1] - x[n] = th*v[n+1] + (1 - th)*v[n]\n" \
+    "eq v[n+1] - v[n] = -w^2*(th*x[n+1] + (1 - th)*x[n])\n"
+
+static void test_claim_theta(void **state)
+{
+    int outcome;
+    const json_t *ex, *fl;
+    json_t *doc = run_ok(THETA "claim stable when th > 2/5\nclaim bounded when th >= 2/5\n"
+                                 "claim bounded when th >= 1/2\n", &outcome);
+    (void) state;
+    /* stable claim on (2/5, inf): unstable (2/5, 1/2), marginal {1/2}, proved (1/2, inf) */
+    assert_string_equal(str(result(doc, 0), "status"), "refuted");
+    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
+    ex = json_object_get(result(doc, 0), "explanation");
+    assert_string_equal(str(ex, "param"), "th");
+    check_iv(json_object_get(ex, "proved_part"), "1/2", 0, "inf", 0, "theta stable part");
+    fl = json_object_get(ex, "failing");
+    assert_int_equal(json_array_size(fl), 2);
+    check_iv(json_array_get(fl, 0), "2/5", 0, "1/2", 0, "theta unstable part");
+    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    check_cx(json_array_get(fl, 0), "th", "2/5", "1/2");
+    check_iv(json_array_get(fl, 1), "1/2", 1, "1/2", 1, "theta marginal point");
+    assert_string_equal(str(json_array_get(fl, 1), "status"), "marginal");
+    check_cx(json_array_get(fl, 1), "th", "1/2", "1/2");
+    /* bounded claim on [2/5, inf): proved part [1/2, inf) (marginal point and stable side merged) */
+    assert_string_equal(str(result(doc, 1), "status"), "refuted");
+    ex = json_object_get(result(doc, 1), "explanation");
+    check_iv(json_object_get(ex, "proved_part"), "1/2", 1, "inf", 0, "theta bounded part");
+    assert_int_equal(json_array_size(json_object_get(ex, "failing")), 1);
+    check_iv(json_array_get(json_object_get(ex, "failing"), 0), "2/5", 1, "1/2", 0, "theta bounded failing");
+    /* a true claim: proved, the region agrees, nothing to explain */
+    assert_string_equal(str(result(doc, 2), "status"), "proved");
+    assert_string_equal(str(json_object_get(result(doc, 2), "cross_check"), "status"), "agrees");
+    assert_null(json_object_get(result(doc, 2), "explanation"));
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+static void test_claim_central_difference(void **state)
+{
+    int outcome;
+    const json_t *ex, *fl;
+    json_t *doc = run_ok("param w\nassume w > 0\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\n"
+                           "claim bounded when w < 3\nclaim bounded when w < 2\nclaim stable when w < 1\n", &outcome);
+    (void) state;
+    assert_string_equal(str(result(doc, 0), "status"), "refuted");
+    ex = json_object_get(result(doc, 0), "explanation");
+    check_iv(json_object_get(ex, "proved_part"), "0", 0, "2", 0, "central difference bounded part");
+    fl = json_object_get(ex, "failing");
+    assert_int_equal(json_array_size(fl), 1);
+    check_iv(json_array_get(fl, 0), "2", 1, "3", 0, "central difference failing");
+    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    check_cx(json_array_get(fl, 0), "w", "2", "3");
+    assert_string_equal(str(result(doc, 1), "status"), "proved");
+    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
+    /* never stable (|lambda| = 1): no proved part, the whole set marginal */
+    assert_string_equal(str(result(doc, 2), "status"), "refuted");
+    ex = json_object_get(result(doc, 2), "explanation");
+    assert_true(json_is_null(json_object_get(ex, "proved_part")));
+    check_iv(json_array_get(json_object_get(ex, "failing"), 0), "0", 0, "1", 0, "central difference marginal");
+    assert_string_equal(str(json_array_get(json_object_get(ex, "failing"), 0), "status"), "marginal");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
+/* Park's printed "alpha <= 2": proved on [0, 1], fails on (1, 2] */
+static void test_claim_park(void **state)
+{
+    int outcome;
+    const json_t *ex, *fl;
+    json_t *doc = run_ok(PARK "claim stable when alpha <= 2\n", &outcome);
+    (void) state;
+    assert_string_equal(str(result(doc, 0), "status"), "refuted");
+    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
+    ex = json_object_get(result(doc, 0), "explanation");
+    check_iv(json_object_get(ex, "proved_part"), "0", 1, "1", 1, "park proved part");
+    assert_string_equal(str(json_object_get(ex, "proved_part"), "status"), "stable");
+    fl = json_object_get(ex, "failing");
+    assert_int_equal(json_array_size(fl), 1);
+    check_iv(json_array_get(fl, 0), "1", 0, "2", 1, "park failing part");
+    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    check_cx(json_array_get(fl, 0), "alpha", "1", "2");
+    assert_int_equal(json_array_size(json_object_get(ex, "for_all")), 3);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 /* bad requests: a clear error, no result */
 static void test_bad(void **state)
 {
@@ -291,6 +418,9 @@ int main(void)
         cmocka_unit_test(test_park_all),
         cmocka_unit_test(test_limit_ends),
         cmocka_unit_test(test_bad),
+        cmocka_unit_test(test_claim_theta),
+        cmocka_unit_test(test_claim_central_difference),
+        cmocka_unit_test(test_claim_park),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
