@@ -35,6 +35,7 @@ typedef struct {
     fmpq_mpoly_struct *M;       /* n*n row-major lambda-matrix */
     slong *row_shift;           /* lowest shift of each row before normalising */
     int from_char;              /* p given directly by `char` */
+    int complex_char;           /* a `char` line over Q(i): M is its real 2x2 block form */
     fmpq_mpoly_t charpoly;      /* the `char` polynomial when from_char */
     slong nnonzero;             /* assumptions made by multiplying through */
     fmpq_mpoly_struct *nonzero; /* each must be != 0 */

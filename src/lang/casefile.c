@@ -50,9 +50,18 @@ static int st_names(rs_stmt_t *x, size_t i, int unknowns)
             _rs_set_loc(x, &x->c->unknowns[x->c->nunknowns].loc, at);
             x->c->nunknowns++;
         } else {
+            size_t j = i;
             RS_GROW(x->c->params, x->c->nparams);
             x->c->params[x->c->nparams].name = name;
             _rs_set_loc(x, &x->c->params[x->c->nparams].loc, at);
+            /* `param NAME angle`: a wave-number angle, rewritten exactly with
+             * t = tan(NAME/2) wherever sin/cos of it appear (scheme.c) */
+            _rs_skip_ws(t, &j);
+            if (strncmp(t + j, "angle", 5) == 0 && (t[j + 5] == '\0' || t[j + 5] == ',' || t[j + 5] == ' '
+                                                   || t[j + 5] == '\t')) {
+                x->c->params[x->c->nparams].angle = 1;
+                i = j + 5;
+            }
             x->c->nparams++;
         }
         count++;
@@ -245,6 +254,13 @@ static int st_set(rs_stmt_t *x, size_t i)
         if (name == NULL) return _rs_name_err(x, at, "a parameter name (set NAME = NUMBER)");
         if (rs_case_param_index(x->c, name) < 0) {
             _rs_at_err(x, at, RS_ERR_INPUT, "'%s' is not a parameter (declare it with `param` first)", name);
+            flint_free(name);
+            return x->err->code;
+        }
+        if (x->c->params[rs_case_param_index(x->c, name)].angle) {
+            /* its exact variable is tan(NAME/2), so a number would be ambiguous */
+            _rs_at_err(x, at, RS_ERR_INPUT, "'%s' is an angle parameter: it ranges over every angle "
+                       "(write the value of sin/cos into the char line instead of set)", name);
             flint_free(name);
             return x->err->code;
         }

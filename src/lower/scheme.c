@@ -31,6 +31,7 @@ typedef struct {
     /* non-zero assumptions collected (points into the scheme being built) */
     rs_scheme_struct *collect;
     slong depth, steps;      /* evaluation limits */
+    slong ivar;              /* variable standing for the imaginary unit i, or -1 */
 } ev_t;
 
 static void lin_init(lin_t *v, slong ns, const fmpq_mpoly_ctx_t ctx)
@@ -289,6 +290,13 @@ static int eval_name(lin_t *out, const rs_expr_t *e, ev_t *x)
             out->low += e->shift - l->shift;
         return RS_OK;
     }
+    if (x->ivar >= 0 && strcmp(e->name, "i") == 0) {
+        /* the imaginary unit (a char line over Q(i)[params]; reduced by i^2 = -1 later) */
+        if (e->shifted)
+            return err_at(x, e, RS_ERR_INPUT, "shift on '%s' (the imaginary unit)", e->name);
+        fmpq_mpoly_gen(out->c + 0, x->ivar, s->ctx);
+        return RS_OK;
+    }
     if (x->allow_lambda == 2 && strcmp(e->name, "z") == 0) {
         /* `expect bilinear`: z takes the place of lambda */
         if (e->shifted)
@@ -368,6 +376,84 @@ static int lin_div(lin_t *out, lin_t *a, lin_t *b, const rs_expr_t *e, ev_t *x)
 
 static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x);
 
+/* sin(K*theta), cos(K*theta) for an angle parameter theta (its variable is
+ * t = tan(theta/2)) and an integer K: cos(K theta) + i sin(K theta) =
+ * (1 + i t)^(2K) / (1 + t^2)^K (de Moivre with e^(i theta) = (1 + i t)/(1 - i t)),
+ * so both are exact rational functions of t over the positive (1 + t^2)^K. */
+static int eval_trig(lin_t *out, const rs_expr_t *e, ev_t *x)
+{
+    const rs_scheme_struct *s = x->s;
+    const fmpq_mpoly_ctx_struct *ctx = s->ctx;
+    lin_t a;
+    slong v = -1, k = 0, K, j;
+    int r, is_sin = strcmp(e->name, "sin") == 0;
+    fmpq_t c;
+    fmpz_t bin;
+    lin_init(&a, out->ns, ctx);
+    r = eval(&a, e->a, x);
+    if (r == RS_OK) {
+        /* the argument must be K * theta exactly */
+        int ok = !lin_has_unknowns(&a, ctx) && fmpq_mpoly_is_fmpq(a.den, ctx)
+                 && fmpq_mpoly_length(a.c + 0, ctx) == 1 && fmpq_mpoly_total_degree_si(a.c + 0, ctx) == 1;
+        fmpq_init(c);
+        if (ok) {
+            fmpq_t d;
+            for (j = 0; j < s->lambda_var; j++)
+                if (fmpq_mpoly_degree_si(a.c + 0, j, ctx) == 1) v = j;
+            ok = v >= 0 && x->c->params[v].angle;
+            fmpq_init(d);
+            fmpq_mpoly_get_term_coeff_fmpq(c, a.c + 0, 0, ctx);
+            fmpq_mpoly_get_fmpq(d, a.den, ctx);
+            fmpq_div(c, c, d);
+            fmpq_clear(d);
+            ok = ok && fmpz_is_one(fmpq_denref(c)) && fmpz_bits(fmpq_numref(c)) <= 10 && FLINT_ABS(fmpz_get_si(fmpq_numref(c))) <= 1000;
+            if (ok) k = fmpz_get_si(fmpq_numref(c));
+        }
+        fmpq_clear(c);
+        if (!ok)
+            r = rs_error_set_at(x->err, RS_ERR_INPUT, rs_expr_file(e, x->c->path), e->a->line, e->a->col,
+                                "expected an angle parameter (param NAME angle) or an integer multiple of one "
+                                "(K*NAME, |K| <= 1000) inside %s(...)", e->name);
+    }
+    lin_clear(&a, ctx);
+    if (r != RS_OK) return r;
+    K = k < 0 ? -k : k;
+    fmpq_init(c);
+    fmpz_init(bin);
+    fmpq_mpoly_zero(out->c + 0, ctx);
+    for (j = 0; j <= 2 * K; j++) {
+        /* (i t)^j = i^j t^j: even j feed cos with sign (-1)^(j/2), odd j feed sin with (-1)^((j-1)/2) */
+        ulong *ex;
+        if ((j & 1) != is_sin) continue;
+        fmpz_bin_uiui(bin, (ulong) (2 * K), (ulong) j);
+        if (((is_sin ? j - 1 : j) / 2) & 1) fmpz_neg(bin, bin);
+        if (is_sin && k < 0) fmpz_neg(bin, bin);
+        fmpq_set_fmpz(c, bin);
+        ex = flint_calloc(s->nvars, sizeof(ulong));
+        ex[v] = (ulong) j;
+        {
+            fmpq_mpoly_t term;
+            fmpq_mpoly_init(term, ctx);
+            fmpq_mpoly_set_coeff_fmpq_ui(term, c, ex, ctx);
+            fmpq_mpoly_add(out->c + 0, out->c + 0, term, ctx);
+            fmpq_mpoly_clear(term, ctx);
+        }
+        flint_free(ex);
+    }
+    {
+        fmpq_mpoly_t one_t2;
+        fmpq_mpoly_init(one_t2, ctx);
+        fmpq_mpoly_gen(one_t2, v, ctx);
+        fmpq_mpoly_mul(one_t2, one_t2, one_t2, ctx);
+        fmpq_mpoly_add_si(one_t2, one_t2, 1, ctx);
+        fmpq_mpoly_pow_ui(out->den, one_t2, (ulong) K, ctx);
+        fmpq_mpoly_clear(one_t2, ctx);
+    }
+    fmpz_clear(bin);
+    fmpq_clear(c);
+    return RS_OK;
+}
+
 static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
 {
     int r;
@@ -411,6 +497,8 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
             || rs_case_param_index(x->c, e->name) >= 0)
             return err_at(x, e, RS_ERR_INPUT,
                           "expected a shift in square brackets after '%s', as in x[n+1], found '('", e->name);
+        if (strcmp(e->name, "sin") == 0 || strcmp(e->name, "cos") == 0)
+            return eval_trig(out, e, x);
         return err_at(x, e, RS_ERR_INPUT,
                       "the function %s(...) is not polynomial: exact analyses need polynomial entries "
                       "(a numeric `recurrence` case allows it for radius)", e->name);
@@ -583,6 +671,7 @@ static void ev_setup(ev_t *x, const rs_scheme_struct *s, const rs_case_struct *c
     x->collect = collect;
     x->depth = 0;
     x->steps = 0;
+    x->ivar = -1;
 }
 
 int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
@@ -606,6 +695,153 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     return r;
 }
 
+/* Divides out the factors 1 + t^2 of angle parameters (positive for every
+ * real t), so they are not recorded as assumptions. */
+static void strip_angle_den(fmpq_mpoly_t den, const rs_scheme_struct *s, const rs_case_struct *c)
+{
+    slong v;
+    fmpq_mpoly_t f, q;
+    fmpq_mpoly_init(f, s->ctx);
+    fmpq_mpoly_init(q, s->ctx);
+    for (v = 0; v < c->nparams; v++) {
+        if (!c->params[v].angle) continue;
+        fmpq_mpoly_gen(f, v, s->ctx);
+        fmpq_mpoly_mul(f, f, f, s->ctx);
+        fmpq_mpoly_add_si(f, f, 1, s->ctx);
+        while (!fmpq_mpoly_is_fmpq(den, s->ctx) && fmpq_mpoly_divides(q, den, f, s->ctx))
+            fmpq_mpoly_swap(den, q, s->ctx);
+    }
+    fmpq_mpoly_clear(f, s->ctx);
+    fmpq_mpoly_clear(q, s->ctx);
+}
+
+/* does the name i (not declared) appear in e or in a let? */
+static int uses_i(const rs_expr_t *e, const rs_case_struct *c)
+{
+    if (e == NULL) return 0;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0 && rs_case_param_index(c, "i") < 0
+        && rs_case_let_index(c, "i") < 0 && rs_case_unknown_index(c, "i") < 0)
+        return 1;
+    return uses_i(e->a, c) || uses_i(e->b, c);
+}
+
+static int lets_use_i(const rs_case_struct *c)
+{
+    slong k;
+    for (k = 0; k < c->nlets; k++)
+        if (uses_i(c->lets[k].e, c)) return 1;
+    return 0;
+}
+
+static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err);
+
+/* A `char` line with the imaginary unit: p = A + i B over Q[params][lambda]
+ * becomes the real 2x2 lambda-matrix [[A, -B], [B, A]] (the real and
+ * imaginary parts of the complex recurrence).  Its det is p conj(p) = A^2 + B^2
+ * (the roots of p and their conjugates: same moduli), and unlike the scalar
+ * p conj(p) it keeps p's Jordan structure (it is similar to diag(p, conj p)
+ * over C), so a simple root of p on the circle that is also a root of conj(p)
+ * (a real root, or a conjugate pair of roots of p) counts as semisimple, not
+ * as a double root. */
+static int build_char_complex(rs_scheme_t s, const rs_model_t m, rs_error_t err)
+{
+    const rs_case_struct *c = m->c;
+    rs_scheme_t s2;
+    ev_t x;
+    lin_t v;
+    slong i, np = c->nparams;
+    int r;
+    const char *file = c->charloc.file ? c->charloc.file : c->path;
+    /* evaluate in params, lambda, i */
+    rs_scheme_init(s2);
+    s2->nvars = np + 2;
+    s2->lambda_var = np;
+    s2->vars = flint_malloc(s2->nvars * sizeof(char *));
+    for (i = 0; i < s->nvars; i++) s2->vars[i] = rs_strdup(s->vars[i]);
+    s2->vars[np + 1] = rs_strdup("i");
+    fmpq_mpoly_ctx_init(s2->ctx, s2->nvars, ORD_LEX);
+    fmpz_mpoly_ctx_init(s2->zctx, s2->nvars, ORD_LEX);
+    fmpq_mpoly_init(s2->charpoly, s2->ctx);
+    ev_setup(&x, s2, c, 1, NULL, err);
+    x.ivar = np + 1;
+    lin_init(&v, 1, s2->ctx);
+    r = eval(&v, c->charexpr, &x);
+    if (r == RS_OK && fmpq_mpoly_degree_si(v.den, np + 1, s2->ctx) > 0)
+        r = rs_error_set_at(err, RS_ERR_INPUT, file, c->charloc.line, c->charloc.col,
+                            "expected a char line without division by a complex expression "
+                            "(multiply through by its conjugate)%s", "");
+    if (r == RS_OK) {
+        /* reduce by i^2 = -1 into A + i B, in the real context */
+        fmpq_mpoly_t A, B, den;
+        ulong *ex2 = flint_malloc(s2->nvars * sizeof(ulong));
+        fmpq_t q;
+        slong n = fmpq_mpoly_length(v.c + 0, s2->ctx);
+        fmpq_init(q);
+        fmpq_mpoly_init(A, s->ctx); fmpq_mpoly_init(B, s->ctx); fmpq_mpoly_init(den, s->ctx);
+        for (i = 0; i < n; i++) {
+            ulong ei;
+            fmpq_mpoly_get_term_coeff_fmpq(q, v.c + 0, i, s2->ctx);
+            fmpq_mpoly_get_term_exp_ui(ex2, v.c + 0, i, s2->ctx);
+            ei = ex2[np + 1];
+            if (ei & 2) fmpq_neg(q, q);
+            {
+                fmpq_mpoly_t term;
+                fmpq_mpoly_init(term, s->ctx);
+                fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);   /* the first np+1 exponents */
+                if (ei & 1) fmpq_mpoly_add(B, B, term, s->ctx);
+                else fmpq_mpoly_add(A, A, term, s->ctx);
+                fmpq_mpoly_clear(term, s->ctx);
+            }
+        }
+        n = fmpq_mpoly_length(v.den, s2->ctx);
+        for (i = 0; i < n; i++) {
+            fmpq_mpoly_t term;
+            fmpq_mpoly_get_term_coeff_fmpq(q, v.den, i, s2->ctx);
+            fmpq_mpoly_get_term_exp_ui(ex2, v.den, i, s2->ctx);
+            fmpq_mpoly_init(term, s->ctx);
+            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);
+            fmpq_mpoly_add(den, den, term, s->ctx);
+            fmpq_mpoly_clear(term, s->ctx);
+        }
+        if (fmpq_mpoly_is_zero(B, s->ctx)) {
+            /* i cancelled: an ordinary real char line */
+            fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
+            fmpq_clear(q);
+            flint_free(ex2);
+            lin_clear(&v, s2->ctx);
+            flint_free(x.visiting);
+            rs_scheme_clear(s2);
+            return build_char(s, m, err);
+        }
+        strip_angle_den(den, s, c);
+        x.s = s; x.collect = s;
+        record_nonzero(&x, den, file, c->charloc.line, c->charloc.col);
+        if (fmpq_mpoly_degree_si(A, np, s->ctx) < 1 && fmpq_mpoly_degree_si(B, np, s->ctx) < 1)
+            r = rs_error_set_at(err, RS_ERR_INPUT, file, c->charloc.line, c->charloc.col,
+                                "expected a polynomial in lambda, found one without lambda");
+        s->n = 2;
+        s->unknowns = flint_malloc(2 * sizeof(char *));
+        s->unknowns[0] = rs_strdup("re");
+        s->unknowns[1] = rs_strdup("im");
+        s->M = flint_malloc(4 * sizeof(fmpq_mpoly_struct));
+        for (i = 0; i < 4; i++) fmpq_mpoly_init(s->M + i, s->ctx);
+        fmpq_mpoly_set(s->M + 0, A, s->ctx);
+        fmpq_mpoly_neg(s->M + 1, B, s->ctx);
+        fmpq_mpoly_set(s->M + 2, B, s->ctx);
+        fmpq_mpoly_set(s->M + 3, A, s->ctx);
+        s->row_shift = flint_calloc(2, sizeof(slong));
+        s->from_char = 0;
+        s->complex_char = 1;
+        fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
+        fmpq_clear(q);
+        flint_free(ex2);
+    }
+    lin_clear(&v, s2->ctx);
+    flint_free(x.visiting);
+    rs_scheme_clear(s2);
+    return r;
+}
+
 static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err)
 {
     const rs_case_struct *c = m->c;
@@ -619,6 +855,7 @@ static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err)
     lin_init(&v, 1, s->ctx);
     r = eval(&v, c->charexpr, &x);
     if (r == RS_OK) {
+        strip_angle_den(v.den, s, c);
         record_nonzero(&x, v.den, c->charloc.file ? c->charloc.file : c->path, c->charloc.line, c->charloc.col);
         fmpq_mpoly_set(s->charpoly, v.c + 0, s->ctx);
         if (fmpq_mpoly_is_zero(s->charpoly, s->ctx))
@@ -645,8 +882,11 @@ int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
         return rs_error_set(err, RS_ERR_INTERNAL, "the lambda-matrix is built from an equations model "
                             "(rs_model_lower)%s", "");
     setup_ctx(s, c);
-    if (c->charexpr != NULL)
-        return build_char(s, m, err);
+    if (c->charexpr != NULL) {
+        if (m->neqs > 0 || m->nunknowns > 0)
+            return build_char(s, m, err);   /* reports the mix */
+        return uses_i(c->charexpr, c) || lets_use_i(c) ? build_char_complex(s, m, err) : build_char(s, m, err);
+    }
     if (n == 0)
         return rs_error_set_at(err, RS_ERR_INPUT, c->path, 1, 1,
                                "expected `unknown` and `eq` lines (or a `char` line), found none");
@@ -737,6 +977,7 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
     fmpq_mpoly_init(dst->charpoly, dst->ctx);
     fmpq_mpoly_set(dst->charpoly, src->charpoly, dst->ctx);   /* equal contexts */
     dst->from_char = src->from_char;
+    dst->complex_char = src->complex_char;
     dst->n = src->n;
     if (src->n > 0) {
         dst->unknowns = flint_malloc(src->n * sizeof(char *));
