@@ -391,6 +391,14 @@ static int eval_trig(lin_t *out, const rs_expr_t *e, ev_t *x)
     fmpz_t bin;
     lin_init(&a, out->ns, ctx);
     r = eval(&a, e->a, x);
+    if (r == RS_OK && !lin_has_unknowns(&a, ctx) && fmpq_mpoly_is_zero(a.c + 0, ctx)) {
+        /* sin(0) = 0, cos(0) = 1 */
+        lin_clear(&a, ctx);
+        if (is_sin) fmpq_mpoly_zero(out->c + 0, ctx);
+        else fmpq_mpoly_one(out->c + 0, ctx);
+        fmpq_mpoly_one(out->den, ctx);
+        return RS_OK;
+    }
     if (r == RS_OK) {
         /* the argument must be K * theta exactly */
         int ok = !lin_has_unknowns(&a, ctx) && fmpq_mpoly_is_fmpq(a.den, ctx)
