@@ -741,8 +741,6 @@ static int lets_use_i(const rs_case_struct *c)
     return 0;
 }
 
-static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err);
-
 /* A `char` line with the imaginary unit: p = A + i B over Q[params][lambda]
  * becomes the real 2x2 lambda-matrix [[A, -B], [B, A]] (the real and
  * imaginary parts of the complex recurrence).  Its det is p conj(p) = A^2 + B^2
@@ -811,35 +809,34 @@ static int build_char_complex(rs_scheme_t s, const rs_model_t m, rs_error_t err)
             fmpq_mpoly_add(den, den, term, s->ctx);
             fmpq_mpoly_clear(term, s->ctx);
         }
-        if (fmpq_mpoly_is_zero(B, s->ctx)) {
-            /* i cancelled: an ordinary real char line */
-            fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
-            fmpq_clear(q);
-            flint_free(ex2);
-            lin_clear(&v, s2->ctx);
-            flint_free(x.visiting);
-            rs_scheme_clear(s2);
-            return build_char(s, m, err);
-        }
         strip_angle_den(den, s, c);
         x.s = s; x.collect = s;
         record_nonzero(&x, den, file, c->charloc.line, c->charloc.col);
-        if (fmpq_mpoly_degree_si(A, np, s->ctx) < 1 && fmpq_mpoly_degree_si(B, np, s->ctx) < 1)
+        if (fmpq_mpoly_is_zero(A, s->ctx) && fmpq_mpoly_is_zero(B, s->ctx))
+            r = rs_error_set_at(err, RS_ERR_MATH, file, c->charloc.line, c->charloc.col,
+                                "the characteristic polynomial is identically zero%s", "");
+        else if (fmpq_mpoly_degree_si(A, np, s->ctx) < 1 && fmpq_mpoly_degree_si(B, np, s->ctx) < 1)
             r = rs_error_set_at(err, RS_ERR_INPUT, file, c->charloc.line, c->charloc.col,
-                                "expected a polynomial in lambda, found one without lambda");
-        s->n = 2;
-        s->unknowns = flint_malloc(2 * sizeof(char *));
-        s->unknowns[0] = rs_strdup("re");
-        s->unknowns[1] = rs_strdup("im");
-        s->M = flint_malloc(4 * sizeof(fmpq_mpoly_struct));
-        for (i = 0; i < 4; i++) fmpq_mpoly_init(s->M + i, s->ctx);
-        fmpq_mpoly_set(s->M + 0, A, s->ctx);
-        fmpq_mpoly_neg(s->M + 1, B, s->ctx);
-        fmpq_mpoly_set(s->M + 2, B, s->ctx);
-        fmpq_mpoly_set(s->M + 3, A, s->ctx);
-        s->row_shift = flint_calloc(2, sizeof(slong));
-        s->from_char = 0;
-        s->complex_char = 1;
+                                "expected a polynomial in lambda, found one without lambda%s", "");
+        if (fmpq_mpoly_is_zero(B, s->ctx)) {
+            /* i cancelled: an ordinary real char line */
+            fmpq_mpoly_set(s->charpoly, A, s->ctx);
+            s->from_char = 1;
+        } else {
+            s->n = 2;
+            s->unknowns = flint_malloc(2 * sizeof(char *));
+            s->unknowns[0] = rs_strdup("re");
+            s->unknowns[1] = rs_strdup("im");
+            s->M = flint_malloc(4 * sizeof(fmpq_mpoly_struct));
+            for (i = 0; i < 4; i++) fmpq_mpoly_init(s->M + i, s->ctx);
+            fmpq_mpoly_set(s->M + 0, A, s->ctx);
+            fmpq_mpoly_neg(s->M + 1, B, s->ctx);
+            fmpq_mpoly_set(s->M + 2, B, s->ctx);
+            fmpq_mpoly_set(s->M + 3, A, s->ctx);
+            s->row_shift = flint_calloc(2, sizeof(slong));
+            s->from_char = 0;
+            s->complex_char = 1;
+        }
         fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
         fmpq_clear(q);
         flint_free(ex2);

@@ -72,6 +72,23 @@ static void test_trig_multiples(void **state)
     }
 }
 
+/* i*i = -1 by hand: the line is real, a scalar char line lambda + nu - 1 */
+static void test_i_cancels(void **state)
+{
+    rs_case_t c; rs_model_t m; rs_scheme_t s; rs_error_t err;
+    fmpq_mpoly_t e;
+    (void) state;
+    rs_case_init(c); rs_model_init(m); rs_scheme_init(s); rs_error_init(err);
+    if (build(c, m, s, "param nu\nchar lambda - i*i*nu - 1\n", err) != RS_OK) fail_msg("%s", err->msg);
+    assert_int_equal(s->n, 0);
+    assert_int_equal(s->from_char, 1);
+    fmpq_mpoly_init(e, s->ctx);
+    assert_int_equal(fmpq_mpoly_set_str_pretty(e, "lambda + nu - 1", (const char **) s->vars, s->ctx), 0);
+    assert_true(fmpq_mpoly_equal(e, s->charpoly, s->ctx));
+    fmpq_mpoly_clear(e, s->ctx);
+    rs_scheme_clear(s); rs_model_clear(m); rs_case_clear(c);
+}
+
 static void test_leapfrog_block_form(void **state)
 {
     const char *text = "param nu\nparam theta angle\nchar lambda^2 + 2*i*nu*sin(theta)*lambda - 1\n";
@@ -149,6 +166,7 @@ static void test_bad_input(void **state)
         {"param theta angle\nchar lambda - sin(theta/2)\n", "expected an angle parameter"},
         {"param theta angle\nset theta = 1\nchar lambda - cos(theta)\n", "is an angle parameter"},
         {"param nu\nchar lambda - 1/(1 + i*nu)\n", "division by a complex expression"},
+        {"param nu\nchar nu + i\n", "without lambda"},
     };
     size_t k;
     (void) state;
@@ -167,6 +185,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_trig_multiples),
+        cmocka_unit_test(test_i_cancels),
         cmocka_unit_test(test_leapfrog_block_form),
         cmocka_unit_test(test_cfl_claims),
         cmocka_unit_test(test_leapfrog_counterexample),
