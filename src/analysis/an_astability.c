@@ -26,6 +26,7 @@
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_poly_factor.h>
 #include "analysis/registry.h"
+#include "analysis/an_region.h"
 #include "stability/schur_complex.h"
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
@@ -37,93 +38,31 @@ typedef struct {
     slong n;          /* degree in lambda */
 } zpoly_t;
 
-/* A real algebraic number: rational, or root idx (ascending) of the
- * irreducible f, enclosed by x. */
-typedef struct {
-    int rational;
-    fmpq_t q;
-    fmpz_poly_t f;
-    slong idx;
-    arb_t x;
-} ralg_t;
 
-static void ralg_init(ralg_t *a) { fmpq_init(a->q); fmpz_poly_init(a->f); arb_init(a->x); a->rational = 0; a->idx = 0; }
-static void ralg_clear(ralg_t *a) { fmpq_clear(a->q); fmpz_poly_clear(a->f); arb_clear(a->x); }
 
-static void ralg_refine(ralg_t *a, slong prec)
-{
-    if (a->rational) { arb_set_fmpq(a->x, a->q, prec); return; }
-    {
-        slong d = fmpz_poly_degree(a->f);
-        acb_ptr r = _acb_vec_init(d);
-        arb_fmpz_poly_complex_roots(r, a->f, 0, prec);
-        arb_set(a->x, acb_realref(r + a->idx));
-        _acb_vec_clear(r, d);
-    }
-}
 
-/* appends the real roots of f (non-zero) */
-static void ralg_roots_append(ralg_t **list, slong *n, const fmpz_poly_t f)
-{
-    fmpz_poly_factor_t fac;
-    slong i, k;
-    if (fmpz_poly_degree(f) < 1) return;
-    fmpz_poly_factor_init(fac);
-    fmpz_poly_factor(fac, f);
-    for (i = 0; i < fac->num; i++) {
-        const fmpz_poly_struct *g = fac->p + i;
-        slong d = fmpz_poly_degree(g);
-        acb_ptr r;
-        if (d < 1) continue;
-        r = _acb_vec_init(d);
-        if (d > 1) arb_fmpz_poly_complex_roots(r, g, 0, 128);
-        for (k = 0; k < d; k++) {
-            ralg_t *a;
-            if (d > 1 && !arb_is_zero(acb_imagref(r + k))) break;   /* real roots come first */
-            *list = realloc(*list, (size_t) (*n + 1) * sizeof(ralg_t));
-            a = *list + *n;
-            ralg_init(a);
-            if (d == 1) {
-                fmpq_t x;
-                fmpq_init(x);
-                fmpq_set_fmpz_frac(x, g->coeffs + 0, g->coeffs + 1);
-                fmpq_neg(x, x);
-                fmpq_swap(a->q, x);
-                fmpq_clear(x);
-                a->rational = 1;
-            } else {
-                fmpz_poly_set(a->f, g);
-                a->idx = k;
-            }
-            ralg_refine(a, 128);
-            (*n)++;
-        }
-        _acb_vec_clear(r, d);
-    }
-    fmpz_poly_factor_clear(fac);
-}
 
-static int ralg_same(const ralg_t *a, const ralg_t *b)
+static int ralg_same(const rs_alg_t *a, const rs_alg_t *b)
 {
     if (a->rational != b->rational) return 0;
     if (a->rational) return fmpq_equal(a->q, b->q);
-    return a->idx == b->idx && fmpz_poly_equal(a->f, b->f);
+    return a->idx == b->idx && fmpz_poly_equal(a->minpoly, b->minpoly);
 }
 
 static int ralg_cmp_mid(const void *x, const void *y)
 {
-    return arf_cmp(arb_midref(((const ralg_t *) x)->x), arb_midref(((const ralg_t *) y)->x));
+    return arf_cmp(arb_midref(((const rs_alg_t *) x)->x), arb_midref(((const rs_alg_t *) y)->x));
 }
 
 /* sorted, duplicates removed, enclosures pairwise disjoint */
-static void ralg_sort(ralg_t *a, slong *n)
+static void ralg_sort(rs_alg_t *a, slong *n)
 {
     slong prec = 128, i, k;
     int ok = 0;
     while (!ok) {
-        qsort(a, (size_t) *n, sizeof(ralg_t), ralg_cmp_mid);
+        qsort(a, (size_t) *n, sizeof(rs_alg_t), ralg_cmp_mid);
         for (i = k = 0; i < *n; i++) {
-            if (k > 0 && ralg_same(a + k - 1, a + i)) { ralg_clear(a + i); continue; }
+            if (k > 0 && ralg_same(a + k - 1, a + i)) { rs_alg_clear(a + i); continue; }
             if (k != i) a[k] = a[i];
             k++;
         }
@@ -133,14 +72,14 @@ static void ralg_sort(ralg_t *a, slong *n)
             if (arb_overlaps(a[i].x, a[i + 1].x)) ok = 0;
         if (!ok) {
             prec *= 2;
-            for (i = 0; i < *n; i++) ralg_refine(a + i, prec);
+            for (i = 0; i < *n; i++) rs_alg_refine(a + i, prec);
         }
     }
 }
 
 /* the rational with the smallest power-of-two denominator strictly between
  * the enclosures of a and b (disjoint; NULL: infinite); 0 when it fits */
-static void rational_between(fmpq_t out, const ralg_t *a, const ralg_t *b)
+static void rational_between(fmpq_t out, const rs_alg_t *a, const rs_alg_t *b)
 {
     arf_t u, l;
     fmpq_t x, y;
@@ -172,20 +111,20 @@ static void rational_between(fmpq_t out, const ralg_t *a, const ralg_t *b)
 
 /* JSON of an interval end: integers as numbers, other rationals and
  * algebraic numbers as {"exact", "approx"} (approx: certified digits). */
-static json_t *ralg_json(ralg_t *a, const char *var)
+static json_t *ralg_json(rs_alg_t *a, const char *var)
 {
     json_t *o;
     char *s;
     if (a->rational && fmpz_is_one(fmpq_denref(a->q)) && fmpz_fits_si(fmpq_numref(a->q)))
         return json_integer((json_int_t) fmpz_get_si(fmpq_numref(a->q)));
     o = json_object();
-    ralg_refine(a, 128);
+    rs_alg_refine(a, 128);
     if (a->rational) {
         s = fmpq_get_str(NULL, 10, a->q);
         json_object_set_new(o, "exact", json_string(s));
         flint_free(s);
     } else {
-        char *mp = rs_polyfmt_fmpz_poly(a->f, var);
+        char *mp = rs_polyfmt_fmpz_poly(a->minpoly, var);
         char *buf = malloc(strlen(mp) + 64);
         sprintf(buf, "real root %ld (ascending) of %s", (long) a->idx + 1, mp);
         json_object_set_new(o, "exact", json_string(buf));
@@ -302,7 +241,7 @@ static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_c
 
 /* The critical values on the line z = i^e s: where a root can reach the
  * unit circle or the leading coefficient vanish. */
-static void line_critical(ralg_t **crit, slong *ncrit, const zpoly_t *P, int e)
+static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e)
 {
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t A, B, G, R, T;
@@ -337,14 +276,14 @@ static void line_critical(ralg_t **crit, slong *ncrit, const zpoly_t *P, int e)
         fmpz_mpoly_divexact(B, B, G, ctx);
         if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) {
             mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
         }
         {
             ulong d0 = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
             slong v0 = 0;
             fmpz_mpoly_get_coeff_vars_ui(R, G, &v0, &d0, 1, ctx);
             mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
         }
     }
     if (fmpz_mpoly_is_zero(B, ctx) || fmpz_mpoly_is_zero(A, ctx)) {
@@ -352,19 +291,19 @@ static void line_critical(ralg_t **crit, slong *ncrit, const zpoly_t *P, int e)
         fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
         if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) {
             mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
         }
     } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
                && fmpz_mpoly_resultant(R, A, B, 0, ctx)) {
         mpoly_to_s(u, R, ctx);
-        if (!fmpz_poly_is_zero(u)) ralg_roots_append(crit, ncrit, u);
+        if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
     }
     /* lambda = -1 (t = inf) and the leading coefficient: common real roots of both parts */
     for (k = 0; k < 2; k++) {
         zcoeff(cb, P, k == 0 ? -1 : P->n);
         split_line(re, im, cb, e);
         fmpz_poly_gcd(g, re, im);
-        if (!fmpz_poly_is_zero(g)) ralg_roots_append(crit, ncrit, g);
+        if (!fmpz_poly_is_zero(g)) rs_alg_roots_append(crit, ncrit, g, 0);
     }
     fmpz_poly_clear(cb); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
     fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
@@ -407,7 +346,7 @@ static int vanishes_at(const fmpz_poly_t c, int e, const fmpz_poly_t f)
 /* An interval of the line: [lo, hi] with infinite ends NULL. */
 typedef struct {
     int empty;
-    ralg_t lo, hi;
+    rs_alg_t lo, hi;
     int lo_inf, hi_inf, lo_closed, hi_closed;
     int undecided;     /* an end whose closedness is not decided */
 } line_iv_t;
@@ -415,13 +354,13 @@ typedef struct {
 /* The bounded component of z = i^e s containing s = 0. */
 static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc, int e, rs_error_t err)
 {
-    ralg_t *crit = NULL;
+    rs_alg_t *crit = NULL;
     slong ncrit = 0, npc, i, j, start = -1;
     rs_status_t *pst;
     int *pdec, r = RS_OK;
     memset(iv, 0, sizeof *iv);
-    ralg_init(&iv->lo);
-    ralg_init(&iv->hi);
+    rs_alg_init(&iv->lo);
+    rs_alg_init(&iv->hi);
     line_critical(&crit, &ncrit, P, e);
     ralg_sort(crit, &ncrit);
     /* pieces: cell 0, point 0, cell 1, ..., cell ncrit */
@@ -439,7 +378,7 @@ static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc
         fmpq_clear(x);
     }
     for (i = 1; i < npc && r == RS_OK; i += 2) {
-        ralg_t *c = crit + i / 2;
+        rs_alg_t *c = crit + i / 2;
         if (c->rational) {
             r = status_line(pst + i, P, e, c->q, err);
             pdec[i] = 1;
@@ -448,8 +387,8 @@ static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc
             fmpz_poly_t lc;
             fmpz_poly_init(lc);
             zcoeff(lc, P, P->n);
-            if (vanishes_at(lc, e, c->f)) { pst[i] = RS_STATUS_SINGULAR; pdec[i] = 1; }
-            else if ((bounded(pst[i - 1]) || bounded(pst[i + 1])) && !vanishes_at(disc, e, c->f)) {
+            if (vanishes_at(lc, e, c->minpoly)) { pst[i] = RS_STATUS_SINGULAR; pdec[i] = 1; }
+            else if ((bounded(pst[i - 1]) || bounded(pst[i + 1])) && !vanishes_at(disc, e, c->minpoly)) {
                 /* the limit of bounded roots, all simple there */
                 pst[i] = RS_STATUS_MARGINAL; pdec[i] = 1;
             }
@@ -467,30 +406,30 @@ static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc
             iv->hi_inf = (j == npc - 1);
             if (!iv->lo_inf) {
                 slong c = (i % 2 == 1) ? i / 2 : i / 2 - 1;   /* point i itself, or the point before cell i */
-                ralg_t *a = crit + c;
-                iv->lo.rational = a->rational; fmpq_set(iv->lo.q, a->q); fmpz_poly_set(iv->lo.f, a->f);
+                rs_alg_t *a = crit + c;
+                iv->lo.rational = a->rational; fmpq_set(iv->lo.q, a->q); fmpz_poly_set(iv->lo.minpoly, a->minpoly);
                 iv->lo.idx = a->idx; arb_set(iv->lo.x, a->x);
                 iv->lo_closed = (i % 2 == 1);
                 if (i % 2 == 0 && !pdec[i - 1]) iv->undecided = 1;
             }
             if (!iv->hi_inf) {
                 slong c = j / 2;   /* point j, or the point after cell j */
-                ralg_t *a = crit + c;
-                iv->hi.rational = a->rational; fmpq_set(iv->hi.q, a->q); fmpz_poly_set(iv->hi.f, a->f);
+                rs_alg_t *a = crit + c;
+                iv->hi.rational = a->rational; fmpq_set(iv->hi.q, a->q); fmpz_poly_set(iv->hi.minpoly, a->minpoly);
                 iv->hi.idx = a->idx; arb_set(iv->hi.x, a->x);
                 iv->hi_closed = (j % 2 == 1);
                 if (j % 2 == 0 && !pdec[j + 1]) iv->undecided = 1;
             }
         }
     }
-    for (i = 0; i < ncrit; i++) ralg_clear(crit + i);
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
     free(crit);
     flint_free(pst);
     flint_free(pdec);
     return r;
 }
 
-static void line_iv_clear(line_iv_t *iv) { ralg_clear(&iv->lo); ralg_clear(&iv->hi); }
+static void line_iv_clear(line_iv_t *iv) { rs_alg_clear(&iv->lo); rs_alg_clear(&iv->hi); }
 
 static json_t *line_iv_json(line_iv_t *iv, const char *var)
 {
@@ -512,14 +451,14 @@ static json_t *line_iv_detail(line_iv_t *iv)
 static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
 {
     fmpz_poly_factor_t fac;
-    ralg_t *rts = NULL;
+    rs_alg_t *rts = NULL;
     slong nr = 0, i;
     int ok = 1;
     if (fmpz_poly_is_zero(f)) return 1;
     fmpz_poly_factor_init(fac);
     fmpz_poly_factor(fac, f);
     /* every real root bounds a cell, so no sample is a root */
-    for (i = 0; i < fac->num; i++) ralg_roots_append(&rts, &nr, fac->p + i);
+    for (i = 0; i < fac->num; i++) rs_alg_roots_append(&rts, &nr, fac->p + i, 0);
     ralg_sort(rts, &nr);
     /* sign in each cell between the odd roots */
     for (i = 0; i <= nr && ok; i++) {
@@ -531,7 +470,7 @@ static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
         if (fmpq_sgn(y) < 0) { ok = 0; fmpq_set(t0, x); }
         fmpz_clear(v); fmpq_clear(x); fmpq_clear(y);
     }
-    for (i = 0; i < nr; i++) ralg_clear(rts + i);
+    for (i = 0; i < nr; i++) rs_alg_clear(rts + i);
     free(rts);
     fmpz_poly_factor_clear(fac);
     return ok;
@@ -545,7 +484,7 @@ static char *poly_str(const fmpz_poly_t f, const char *var) { return rs_polyfmt_
 static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found, arb_t deg)
 {
     fmpz_poly_t C, t1, t2;
-    ralg_t *rts = NULL, *yr = NULL;
+    rs_alg_t *rts = NULL, *yr = NULL;
     slong nr = 0, ny = 0, i, best = -1, prec = 256;
     arb_t u, bu, xv, yv;
     json_t *o = NULL;
@@ -559,9 +498,9 @@ static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found
     fmpz_poly_mul(t2, t2, Y);
     fmpz_poly_sub(C, t1, t2);
     /* the locus on the negative real axis: Y = 0 with X < 0 */
-    if (!fmpz_poly_is_zero(Y)) ralg_roots_append(&yr, &ny, Y);
+    if (!fmpz_poly_is_zero(Y)) rs_alg_roots_append(&yr, &ny, Y, 0);
     for (i = 0; i < ny; i++) {
-        if (yr[i].rational) arb_set_fmpq(xv, yr[i].q, prec); else { ralg_refine(yr + i, prec); arb_set(xv, yr[i].x); }
+        if (yr[i].rational) arb_set_fmpq(xv, yr[i].q, prec); else { rs_alg_refine(yr + i, prec); arb_set(xv, yr[i].x); }
         arb_fmpz_poly_evaluate_arb(xv, X, xv, prec);
         if (arb_is_negative(xv)) {
             *found = 1;
@@ -570,9 +509,9 @@ static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found
             goto done;
         }
     }
-    if (!fmpz_poly_is_zero(C)) ralg_roots_append(&rts, &nr, C);
+    if (!fmpz_poly_is_zero(C)) rs_alg_roots_append(&rts, &nr, C, 0);
     for (i = 0; i < nr; i++) {
-        ralg_refine(rts + i, prec);
+        rs_alg_refine(rts + i, prec);
         arb_fmpz_poly_evaluate_arb(xv, X, rts[i].x, prec);
         if (!arb_is_negative(xv)) continue;
         arb_fmpz_poly_evaluate_arb(yv, Y, rts[i].x, prec);
@@ -601,7 +540,7 @@ static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found
         arb_div(u, yv, xv, prec);
         neg = arb_is_negative(u);
         if (rts[best].rational) { fmpz_poly_set_coeff_fmpz(f, 1, fmpq_denref(rts[best].q)); fmpz_poly_set_coeff_fmpz(f, 0, fmpq_numref(rts[best].q)); fmpz_neg(f->coeffs, f->coeffs); }
-        else fmpz_poly_set(f, rts[best].f);
+        else fmpz_poly_set(f, rts[best].minpoly);
         for (k = 0; k <= fmpz_poly_degree(f); k++) {
             ulong ex[2] = {(ulong) k, 0};
             fmpz_mpoly_set_coeff_fmpz_ui(F, f->coeffs + k, ex, ctx);
@@ -658,8 +597,8 @@ static json_t *alpha_linear(const fmpz_poly_t X, const fmpz_poly_t Y, int *found
         fmpz_mpoly_ctx_clear(ctx);
     }
 done:
-    for (i = 0; i < nr; i++) ralg_clear(rts + i);
-    for (i = 0; i < ny; i++) ralg_clear(yr + i);
+    for (i = 0; i < nr; i++) rs_alg_clear(rts + i);
+    for (i = 0; i < ny; i++) rs_alg_clear(yr + i);
     free(rts); free(yr);
     fmpz_poly_clear(C); fmpz_poly_clear(t1); fmpz_poly_clear(t2);
     arb_clear(u); arb_clear(bu); arb_clear(xv); arb_clear(yv);
@@ -786,7 +725,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "param", json_string(name));
     r = line_interval(&riv, &P, disc, 0, run->err);
     if (r == RS_OK) r = line_interval(&iiv, &P, disc, 1, run->err);
-    else ralg_init(&iiv.lo), ralg_init(&iiv.hi);
+    else rs_alg_init(&iiv.lo), rs_alg_init(&iiv.hi);
     if (r != RS_OK) goto out;
     json_object_set_new(o, "real_interval", line_iv_json(&riv, name));
     json_object_set_new(o, "imag_interval", line_iv_json(&iiv, name));
@@ -1032,13 +971,13 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                 }
             }
             if (all_rational) {
-                ralg_t a;
-                ralg_init(&a);
+                rs_alg_t a;
+                rs_alg_init(&a);
                 a.rational = 1;
                 fmpq_set(a.q, best);
                 lim = ralg_json(&a, "r");
                 l0 = fmpq_is_zero(best);
-                ralg_clear(&a);
+                rs_alg_clear(&a);
             } else {
                 char *cs = poly_str(c, "lambda"), *ms = rs_radius_arb_str(m, 20);
                 char *buf = malloc(strlen(cs) + 40);
