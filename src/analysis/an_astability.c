@@ -59,6 +59,7 @@ static void ralg_sort(rs_alg_t *a, slong *n)
 {
     slong prec = 128, i, k;
     int ok = 0;
+    if (*n == 0) return;   /* a may be NULL then (qsort must not see it) */
     while (!ok) {
         qsort(a, (size_t) *n, sizeof(rs_alg_t), ralg_cmp_mid);
         for (i = k = 0; i < *n; i++) {

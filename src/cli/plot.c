@@ -601,7 +601,8 @@ static void latex_to_text(char *out, size_t n, const char *in)
             i = j;
             if (in[i] == ' ' && put != one) i++;   /* the blank ending a macro name */
         } else if (script && in[i] >= '0' && in[i] <= '9') {
-            put = (script == 1 ? sub : sup)[in[i] - '0'];
+            const char *const *digits = script == 1 ? sub : sup;   /* not (c ? sub : sup)[k]: UBSan mis-sizes it */
+            put = digits[in[i] - '0'];
             i++;
         } else if (script == 2 && in[i] == '-') { put = "\u207b"; i++; }
         else if (script == 2 && in[i] == '+') { put = "\u207a"; i++; }
