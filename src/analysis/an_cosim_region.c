@@ -412,6 +412,9 @@ static json_t *point_json(const fmpq_t lo, const fmpq_t hi, slong digits, slong 
     return o;
 }
 
+static int centre_verdict(int *v, json_t **at, rs_run_t *run, const box_req_t *B, const fmpq *lo, const fmpq *hi);
+static int box_crosscheck(rs_run_t *run, const box_req_t *B, const fmpq *lo, const fmpq *hi, int v);
+
 int rs_an_cosim_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const box_req_t *B = req->u.cosim;
@@ -473,6 +476,13 @@ int rs_an_cosim_region(rs_run_t *run, const rs_an_req_t *req)
     }
     /* runs: maximal sequences of equal verdicts, in order */
     qsort(seg, (size_t) nseg, sizeof(seg_t), seg_cmp);
+    for (i = 0; r == RS_OK && i < nseg;) {   /* every certified run checked at its middle box */
+        slong e = i;
+        while (e + 1 < nseg && seg[e + 1].v == seg[i].v) e++;
+        if (seg[i].v != RS_COSIM_BALL_UNDECIDED)
+            r = box_crosscheck(run, B, seg[(i + e) / 2].lo, seg[(i + e) / 2].hi, seg[i].v);
+        i = e + 1;
+    }
     o = json_object();
     ivs = json_array();
     trans = json_array();
@@ -646,6 +656,22 @@ static int centre_verdict(int *v, json_t **at, rs_run_t *run, const box_req_t *B
     return r;
 }
 
+/* The second method (exit 3 on disagreement): a verdict certified over a box
+ * by its Stein certificate against the certified eigenvalues (rs_cosim_radius)
+ * of the exact model at the box's centre. */
+static int box_crosscheck(rs_run_t *run, const box_req_t *B, const fmpq *lo, const fmpq *hi, int v)
+{
+    int pv, r;
+    json_t *at;
+    r = centre_verdict(&pv, &at, run, B, lo, hi);
+    json_decref(at);
+    if (r == RS_OK && pv != RS_COSIM_BALL_UNDECIDED && pv != v)
+        r = rs_error_set(run->err, RS_ERR_INCONSISTENT,
+                         "co-simulation: the Stein certificate over a box (%s) and the certified eigenvalues at "
+                         "its centre (%s) disagree", verdict_name(v), verdict_name(pv));
+    return r;
+}
+
 int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
 {
     const box_req_t *B = req->u.cosim;
@@ -718,6 +744,16 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
         n++;
         fmpq_clear(wd);
         fmpq_clear(wmax);
+    }
+    if (r == RS_OK && status == 0) {   /* proved over every sub-box: the centre's eigenvalues agree */
+        fmpq *blo = _fmpq_vec_init(d), *bhi = _fmpq_vec_init(d);
+        for (i = 0; i < d; i++) {
+            fmpq_set(blo + i, B->lo[i]);
+            fmpq_set(bhi + i, B->hi[i]);
+        }
+        r = box_crosscheck(run, B, blo, bhi, want);
+        _fmpq_vec_clear(blo, d);
+        _fmpq_vec_clear(bhi, d);
     }
     if (r == RS_OK) {
         o = json_object();
