@@ -1195,6 +1195,53 @@ static double interval_length(const json_t *iv)
     return json_number_value(hi) - json_number_value(lo);
 }
 
+/* A claim its own certificate search left undecided, proved by the for-all
+ * region of its single parameter on its set (issue 15): every cell of the
+ * region good, each with a re-checked certificate (or an exact point
+ * verdict for a rational point cell); the cells are uniform because no
+ * critical value of the projection lies inside one.  1 when o was made
+ * "proved" with the cells' certificates as its own. */
+static int region_proof(rs_run_t *run, slong tv, claim_kind_t kind, const json_t *reg, json_t *o)
+{
+    const json_t *ivs = json_object_get(reg, "intervals"), *iv, *e;
+    json_t *cert = json_array();
+    size_t i, k, j;
+    char buf[600], one[400];
+    snprintf(buf, sizeof buf, "by the for-all region of %s on the claim's set (%s projection, %lld critical "
+             "values in the set; no cell contains one, so each is uniform and decided at one sample):", run->c->params[tv].name,
+             json_string_value(json_object_get(reg, "projection")) ? json_string_value(json_object_get(reg, "projection")) : "the",
+             (long long) json_integer_value(json_object_get(reg, "critical_values")));
+    json_array_append_new(cert, json_pack("{s:s}", "text", buf));
+    json_array_foreach(ivs, i, iv) {
+        const char *ivst = json_string_value(json_object_get(iv, "status"));
+        if (!region_good(kind, ivst)) { json_decref(cert); return 0; }
+        json_array_foreach(json_object_get(iv, "evidence"), k, e) {
+            const json_t *c = json_object_get(e, "certificate");
+            const char *smp = json_string_value(json_object_get(e, "sample"));
+            const char *cell = json_string_value(json_object_get(e, "cell"));
+            if (json_array_size(c) == 0 || !json_is_true(json_object_get(e, "certificate_rechecked"))) {
+                json_decref(cert);
+                return 0;
+            }
+            interval_text(one, sizeof one, iv);
+            snprintf(buf, sizeof buf, "%s %s in %s, sample %s = %s: %s for every value of the others, certificate:",
+                     cell ? cell : "cell", run->c->params[tv].name, one, run->c->params[tv].name,
+                     smp ? smp : "?", ivst);
+            json_array_append_new(cert, json_pack("{s:s}", "text", buf));
+            json_array_foreach(c, j, e) json_array_append(cert, (json_t *) e);
+        }
+    }
+    json_object_set_new(o, "status", json_string("proved"));
+    json_object_set_new(o, "proved_by", json_string("region for all"));
+    json_object_set_new(o, "certificate", cert);
+    json_object_set_new(o, "certificate_rechecked", json_true());
+    if (json_object_get(o, "failed_at") != NULL) {
+        json_object_set(o, "direct_failed_at", json_object_get(o, "failed_at"));
+        json_object_del(o, "failed_at");
+    }
+    return 1;
+}
+
 /* The for-all region of the claim's parameter on the claim's interval (issue
  * 13): cross-checks the claim's verdict (proved iff every interval is stable,
  * resp. stable or marginal) and explains a claim not proved: the intervals
@@ -1281,7 +1328,13 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         }
     }
     /* proved <=> inside the good part; undecided cells decide nothing */
-    if ((strcmp(st, "proved") == 0 && some_bad) || (strcmp(st, "refuted") == 0 && all_good)) {
+    if (strcmp(st, "undecided") == 0 && all_good && json_array_size(ivs) > 0
+        && region_proof(run, tv, kind, reg, o) == 1) {
+        st = "proved";
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "agrees", "note",
+            "proved by the for-all region (one certified sample per cell, no critical value inside a cell); "
+            "the exact point verdicts of the search found no counterexample"));
+    } else if ((strcmp(st, "proved") == 0 && some_bad) || (strcmp(st, "refuted") == 0 && all_good)) {
         snprintf(buf, sizeof buf, "the claim is %s but the for-all region of %s says %s", st,
                  run->c->params[tv].name, some_bad ? "it fails on part of the set" : "it holds on the whole set");
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "disagrees", "message", buf));

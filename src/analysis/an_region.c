@@ -1510,12 +1510,8 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
 {
     region_t rg;
     int r;
-    /* the for-all projection works on det M with scalar semantics: for the
-     * 2x2 block form of a complex char line the roots of p and conj(p) meet
-     * and look repeated, which would be a wrong verdict (Lax-Wendroff) */
-    if (v->s->complex_char)
-        return rs_error_set(run->err, RS_ERR_LIMIT, "region for all: not available for a char line with complex "
-                            "coefficients (its 2x2 block form is a system; use claim)");
+    /* a complex char line: the projection uses p's own conditions over Q(i)
+     * (an_region_forall.c), the cells are decided by the claim machinery */
     region_init(&rg, run, req, v);
     rg.dom_tv = dom_tv;
     json_object_set_new(o, "symbolic", json_false());

@@ -14,6 +14,7 @@
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
+#include "stability/schur_complex.h"
 #include "analysis/an_region.h"
 
 /* ---- the projection -------------------------------------------------------- */
@@ -258,6 +259,57 @@ int rs_proj_eliminate(rs_plist_t *out, rs_run_t *run, const rs_plist_t *in, slon
     return r;
 }
 
+/* A char line over Q(i), p = A + i B (the block form's M = [A -B; B A]):
+ * its own conditions, all in one group (full projection), since det M =
+ * p conj(p) has the wrong scalar semantics (p's simple circle roots z and
+ * conj(p)'s 1/z meet as a double root of det M): |a_n|^2 (degree drop), the
+ * Schur-Cohn deltas over Q(i) (stability is their conjunction), Res(p, p*)
+ * (a root on the circle), |disc p|^2 (a repeated root: the bounded/unbounded
+ * boundary on the circle).  Between their critical values no root crosses
+ * the circle, none escapes, and none merges with another, so the status is
+ * constant on the cell. */
+static int forall_conditions_complex(rs_plist_t **groups, slong *ng, rs_run_t *run, const rs_variant_t *v,
+                                     slong tv, const rs_bound_t *dom)
+{
+    const rs_scheme_struct *s = v->s;
+    const fmpq_mpoly_struct *A = s->M + 0, *B = s->M + 2;
+    fmpz_mpoly_t a, b, t;
+    fmpz_t w;
+    rs_schur_cx_conds_t c;
+    rs_plist_t *g;
+    slong k;
+    int ok;
+    fmpz_mpoly_init(a, s->zctx); fmpz_mpoly_init(b, s->zctx); fmpz_mpoly_init(t, s->zctx);
+    fmpz_init(w);
+    /* A + i B times den(c_A) den(c_B) > 0, integer coefficients */
+    fmpz_mul(w, fmpq_numref(A->content), fmpq_denref(B->content));
+    fmpz_mpoly_scalar_mul_fmpz(a, A->zpoly, w, s->zctx);
+    fmpz_mul(w, fmpq_numref(B->content), fmpq_denref(A->content));
+    fmpz_mpoly_scalar_mul_fmpz(b, B->zpoly, w, s->zctx);
+    rs_schur_cx_conds_init(&c);
+    ok = rs_schur_cx_conds(&c, a, b, s->lambda_var, s->zctx);
+    g = flint_malloc(sizeof(rs_plist_t));
+    rs_plist_init(g);
+    if (ok) {
+        rs_plist_add(g, c.lead, tv, dom, s->zctx);
+        for (k = 0; k < c.ndelta; k++) rs_plist_add(g, c.delta + k, tv, dom, s->zctx);
+        rs_plist_add(g, c.res, tv, dom, s->zctx);
+        fmpz_mpoly_mul(t, c.disc_re, c.disc_re, s->zctx);
+        fmpz_mpoly_mul(a, c.disc_im, c.disc_im, s->zctx);
+        fmpz_mpoly_add(t, t, a, s->zctx);
+        rs_plist_add(g, t, tv, dom, s->zctx);
+    }
+    rs_schur_cx_conds_clear(&c, s->zctx);
+    fmpz_mpoly_clear(a, s->zctx); fmpz_mpoly_clear(b, s->zctx); fmpz_mpoly_clear(t, s->zctx);
+    fmpz_clear(w);
+    *groups = g;
+    *ng = 1;
+    if (!ok)
+        return rs_error_set(run->err, RS_ERR_LIMIT, "region for all: the Schur-Cohn conditions over Q(i) of this "
+                            "complex char line grow too large");
+    return RS_OK;
+}
+
 /* The groups of conditions, each projected on its own.  full = 0: what
  * "stable for every value" and "singular for some value" depend on: p's
  * leading coefficient in lambda (one group) and each coefficient and
@@ -279,6 +331,10 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
     rs_hurwitz_t h;
     rs_plist_t *g;
     int r = RS_OK;
+    if (s->complex_char) {
+        *full = 1;
+        return forall_conditions_complex(groups, ng, run, v, tv, dom);
+    }
     fmpz_mpoly_init(sqf, s->zctx);
     fmpz_mpoly_init(qz, s->zctx);
     fmpz_mpoly_init(t, s->zctx);

@@ -2,6 +2,7 @@
  * Schur-Cohn recursion on complex coefficients (Marden, Geometry of
  * Polynomials, Thm 43.1; Henrici, Applied and Computational Complex
  * Analysis I, 6.8) and the real route p conj(p), which must agree. */
+#include <string.h>
 #include <flint/fmpq.h>
 #include "stability/schur_complex.h"
 
@@ -201,4 +202,180 @@ int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_po
     rs_rootcount_clear(rc);
     fmpz_poly_clear(P);
     return r;
+}
+
+/* ---- symbolic: coefficients in Z[params] + i Z[params] ----------------------
+ * p = re + I im lives in a context with one more variable I (the last),
+ * reduced by I^2 = -1 after every product: then resultants, discriminants and
+ * the Schur-Cohn recursion are FLINT's integer multivariate routines. */
+
+/* I^e -> I^(e mod 2) with the sign of I^2 = -1 */
+static void cx_reduce(fmpz_mpoly_t f, slong iv, const fmpz_mpoly_ctx_t cx)
+{
+    slong nv = cx->minfo->nvars, len = fmpz_mpoly_length(f, cx), k;
+    ulong *e = flint_malloc((size_t) nv * sizeof(ulong));
+    fmpz_mpoly_t g;
+    fmpz_t c;
+    fmpz_mpoly_init(g, cx);
+    fmpz_init(c);
+    for (k = 0; k < len; k++) {
+        fmpz_mpoly_get_term_coeff_fmpz(c, f, k, cx);
+        fmpz_mpoly_get_term_exp_ui(e, f, k, cx);
+        if (e[iv] & 2) fmpz_neg(c, c);
+        e[iv] &= 1;
+        fmpz_mpoly_push_term_fmpz_ui(g, c, e, cx);
+    }
+    fmpz_mpoly_sort_terms(g, cx);
+    fmpz_mpoly_combine_like_terms(g, cx);
+    fmpz_mpoly_swap(f, g, cx);
+    fmpz_mpoly_clear(g, cx);
+    fmpz_clear(c);
+    flint_free(e);
+}
+
+/* the complex conjugate of f (reduced): its odd powers of I negated; out may be f */
+static void cx_conj(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong iv, const fmpz_mpoly_ctx_t cx)
+{
+    fmpz_mpoly_t im, re, ig;
+    ulong zero = 0, one = 1;
+    fmpz_mpoly_init(im, cx); fmpz_mpoly_init(re, cx); fmpz_mpoly_init(ig, cx);
+    fmpz_mpoly_get_coeff_vars_ui(im, f, &iv, &one, 1, cx);
+    fmpz_mpoly_get_coeff_vars_ui(re, f, &iv, &zero, 1, cx);
+    fmpz_mpoly_gen(ig, iv, cx);
+    fmpz_mpoly_mul(im, im, ig, cx);
+    fmpz_mpoly_sub(out, re, im, cx);
+    fmpz_mpoly_clear(im, cx); fmpz_mpoly_clear(re, cx); fmpz_mpoly_clear(ig, cx);
+}
+
+/* the part free of I (e = 0) or the coefficient of I (e = 1), back in ctx */
+static void cx_part(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong iv, ulong e, const fmpz_mpoly_ctx_t cx,
+                    const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = cx->minfo->nvars, k;
+    slong *map = flint_malloc((size_t) nv * sizeof(slong));
+    fmpz_mpoly_t a;
+    fmpz_mpoly_init(a, cx);
+    fmpz_mpoly_get_coeff_vars_ui(a, f, &iv, &e, 1, cx);
+    for (k = 0; k < nv; k++) map[k] = k < iv ? k : 0;     /* I does not occur in a */
+    fmpz_mpoly_compose_fmpz_mpoly_gen(out, a, map, cx, ctx);
+    fmpz_mpoly_clear(a, cx);
+    flint_free(map);
+}
+
+void rs_schur_cx_conds_init(rs_schur_cx_conds_t *c)
+{
+    memset(c, 0, sizeof *c);
+}
+
+void rs_schur_cx_conds_clear(rs_schur_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx)
+{
+    slong k;
+    if (c->ndelta > 0 || c->have) {
+        for (k = 0; k < c->ndelta; k++) fmpz_mpoly_clear(c->delta + k, ctx);
+        fmpz_mpoly_clear(c->lead, ctx);
+        fmpz_mpoly_clear(c->disc_re, ctx);
+        fmpz_mpoly_clear(c->disc_im, ctx);
+        fmpz_mpoly_clear(c->res, ctx);
+    }
+    flint_free(c->delta);
+    memset(c, 0, sizeof *c);
+}
+
+int rs_schur_cx_conds(rs_schur_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong lv,
+                      const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = ctx->minfo->nvars, iv = nv, n, k, j;
+    slong *emb = flint_malloc((size_t) nv * sizeof(slong));
+    fmpz_mpoly_ctx_t cx;
+    fmpz_mpoly_t p, ps, an, a0, t, u, ig, lam;
+    int ok = 1;
+    n = FLINT_MAX(fmpz_mpoly_degree_si(re, lv, ctx), fmpz_mpoly_degree_si(im, lv, ctx));
+    if (n < 1) { flint_free(emb); return 0; }
+    fmpz_mpoly_ctx_init(cx, nv + 1, ORD_LEX);
+    for (k = 0; k < nv; k++) emb[k] = k;
+    fmpz_mpoly_init(p, cx); fmpz_mpoly_init(ps, cx); fmpz_mpoly_init(an, cx); fmpz_mpoly_init(a0, cx);
+    fmpz_mpoly_init(t, cx); fmpz_mpoly_init(u, cx); fmpz_mpoly_init(ig, cx); fmpz_mpoly_init(lam, cx);
+    fmpz_mpoly_gen(ig, iv, cx);
+    fmpz_mpoly_gen(lam, lv, cx);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(p, re, emb, ctx, cx);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(t, im, emb, ctx, cx);
+    fmpz_mpoly_mul(t, t, ig, cx);
+    fmpz_mpoly_add(p, p, t, cx);
+    c->have = 1;
+    c->ndelta = n;
+    c->delta = flint_malloc((size_t) n * sizeof(fmpz_mpoly_struct));
+    for (k = 0; k < n; k++) fmpz_mpoly_init(c->delta + k, ctx);
+    fmpz_mpoly_init(c->lead, ctx); fmpz_mpoly_init(c->disc_re, ctx);
+    fmpz_mpoly_init(c->disc_im, ctx); fmpz_mpoly_init(c->res, ctx);
+    /* |a_n|^2 */
+    {
+        ulong e = (ulong) n;
+        fmpz_mpoly_get_coeff_vars_ui(an, p, &lv, &e, 1, cx);
+        cx_conj(t, an, iv, cx);
+        fmpz_mpoly_mul(t, t, an, cx);
+        cx_reduce(t, iv, cx);
+        cx_part(c->lead, t, iv, 0, cx, ctx);
+    }
+    /* p* = lambda^n conj(p(1/conj lambda)), the resultant of p and p*
+     * (real: prod |a_n|^2 (1 - |z_i|^2) prod_{i<j} |1 - z_i conj z_j|^2, zero
+     * when a root is on the circle) and the discriminant of p */
+    fmpz_mpoly_zero(ps, cx);
+    for (k = 0; k <= n; k++) {
+        ulong e = (ulong) (n - k);
+        fmpz_mpoly_get_coeff_vars_ui(t, p, &lv, &e, 1, cx);
+        cx_conj(t, t, iv, cx);
+        fmpz_mpoly_pow_ui(u, lam, (ulong) k, cx);
+        fmpz_mpoly_mul(t, t, u, cx);
+        fmpz_mpoly_add(ps, ps, t, cx);
+    }
+    if (fmpz_mpoly_degree_si(ps, lv, cx) >= 1 && fmpz_mpoly_resultant(t, p, ps, lv, cx)) {
+        cx_reduce(t, iv, cx);
+        cx_part(c->res, t, iv, 0, cx, ctx);
+        cx_part(c->disc_im, t, iv, 1, cx, ctx);      /* real by the product above: a check */
+        ok = fmpz_mpoly_is_zero(c->disc_im, ctx);
+        fmpz_mpoly_zero(c->disc_im, ctx);
+    }
+    if (ok && n >= 2 && fmpz_mpoly_discriminant(t, p, lv, cx)) {
+        cx_reduce(t, iv, cx);
+        cx_part(c->disc_re, t, iv, 0, cx, ctx);
+        cx_part(c->disc_im, t, iv, 1, cx, ctx);
+    }
+    /* Schur-Cohn without divisions: p_{k-1} = (conj(a_k) p_k - a_0 p_k*)/lambda,
+     * delta_k = |a_k|^2 - |a_0|^2 its leading coefficient; all roots inside
+     * iff every delta_k > 0 (Marden, Thm 43.1) */
+    for (k = n; ok && k >= 1; k--) {
+        ulong e = (ulong) k, z = 0;
+        fmpz_mpoly_get_coeff_vars_ui(an, p, &lv, &e, 1, cx);
+        fmpz_mpoly_get_coeff_vars_ui(a0, p, &lv, &z, 1, cx);
+        fmpz_mpoly_zero(ps, cx);
+        for (j = 0; j <= k; j++) {
+            ulong f = (ulong) (k - j);
+            fmpz_mpoly_get_coeff_vars_ui(t, p, &lv, &f, 1, cx);
+            cx_conj(t, t, iv, cx);
+            fmpz_mpoly_pow_ui(u, lam, (ulong) j, cx);
+            fmpz_mpoly_mul(t, t, u, cx);
+            fmpz_mpoly_add(ps, ps, t, cx);
+        }
+        cx_conj(t, an, iv, cx);
+        fmpz_mpoly_mul(t, t, an, cx);
+        cx_conj(u, a0, iv, cx);
+        fmpz_mpoly_mul(u, u, a0, cx);
+        fmpz_mpoly_sub(t, t, u, cx);
+        cx_reduce(t, iv, cx);
+        cx_part(c->delta + (n - k), t, iv, 0, cx, ctx);
+        if (k == 1) break;
+        if (fmpz_mpoly_length(p, cx) > 20000) { ok = 0; break; }     /* too large: not handled */
+        cx_conj(t, an, iv, cx);
+        fmpz_mpoly_mul(t, t, p, cx);
+        fmpz_mpoly_mul(u, a0, ps, cx);
+        fmpz_mpoly_sub(t, t, u, cx);
+        cx_reduce(t, iv, cx);
+        ok = fmpz_mpoly_is_zero(t, cx) || fmpz_mpoly_divides(p, t, lam, cx);
+        if (fmpz_mpoly_is_zero(t, cx)) fmpz_mpoly_zero(p, cx);
+    }
+    fmpz_mpoly_clear(p, cx); fmpz_mpoly_clear(ps, cx); fmpz_mpoly_clear(an, cx); fmpz_mpoly_clear(a0, cx);
+    fmpz_mpoly_clear(t, cx); fmpz_mpoly_clear(u, cx); fmpz_mpoly_clear(ig, cx); fmpz_mpoly_clear(lam, cx);
+    fmpz_mpoly_ctx_clear(cx);
+    flint_free(emb);
+    return ok;
 }

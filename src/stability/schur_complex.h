@@ -8,6 +8,7 @@
 
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz_poly.h>
+#include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 #include "recstab/rootcount.h"
 
@@ -30,5 +31,26 @@ void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t ar
  * marginal.  deg is the degree p must have: a lower one is "singular". */
 int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,
                             rs_error_t err);
+
+/* The real conditions of p = re + i im (re, im in Z[params, lambda],
+ * lambda the variable lv of ctx) whose zeros bound the parameter cells where
+ * p's root count inside / on / outside the circle and the multiplicity of its
+ * roots are constant: lead = |a_n|^2 (degree drop), delta[k] the k-th
+ * Schur-Cohn leading coefficient |a_m|^2 - |a_0|^2 of the division-free
+ * recursion (all roots inside iff every delta > 0), res = Res(p, p*)
+ * (p* = lambda^n conj(p(1/conj lambda)): real, zero when a root is on the
+ * circle), disc_re + i disc_im = the discriminant of p (a repeated root). */
+typedef struct {
+    int have;
+    slong ndelta;
+    fmpz_mpoly_struct *delta;
+    fmpz_mpoly_t lead, res, disc_re, disc_im;
+} rs_schur_cx_conds_t;
+
+void rs_schur_cx_conds_init(rs_schur_cx_conds_t *c);
+void rs_schur_cx_conds_clear(rs_schur_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx);
+/* 0 when p has degree < 1 in lambda or the recursion grows too large */
+int rs_schur_cx_conds(rs_schur_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong lv,
+                      const fmpz_mpoly_ctx_t ctx);
 
 #endif
