@@ -331,8 +331,15 @@ int rs_schur_cx_conds(rs_schur_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_
     if (fmpz_mpoly_degree_si(ps, lv, cx) >= 1 && fmpz_mpoly_resultant(t, p, ps, lv, cx)) {
         cx_reduce(t, iv, cx);
         cx_part(c->res, t, iv, 0, cx, ctx);
-        cx_part(c->disc_im, t, iv, 1, cx, ctx);      /* real by the product above: a check */
-        ok = fmpz_mpoly_is_zero(c->disc_im, ctx);
+        cx_part(c->disc_im, t, iv, 1, cx, ctx);
+        /* real by the product above when deg p* = n; otherwise (a_0 = 0)
+         * FLINT's resultant has a complex factor a_n^(n - deg p*): |Res|^2,
+         * the same zeros */
+        if (!fmpz_mpoly_is_zero(c->disc_im, ctx)) {
+            fmpz_mpoly_mul(c->res, c->res, c->res, ctx);
+            fmpz_mpoly_mul(c->disc_im, c->disc_im, c->disc_im, ctx);
+            fmpz_mpoly_add(c->res, c->res, c->disc_im, ctx);
+        }
         fmpz_mpoly_zero(c->disc_im, ctx);
     }
     if (ok && n >= 2 && fmpz_mpoly_discriminant(t, p, lv, cx)) {

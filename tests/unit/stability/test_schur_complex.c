@@ -133,11 +133,153 @@ static void test_random_vs_arb(void **state)
     flint_randclear(rs);
 }
 
+/* ---- the symbolic conditions (rs_schur_cx_conds) --------------------------
+ * Hand derivations (checked with sympy's resultant/discriminant):
+ *   p = lambda^2 + i y lambda + x:  p* = x lambda^2 - i y lambda + 1,
+ *   delta_2 = 1 - x^2, p_1 = (conj(1) p - x p*)/lambda = (1 - x^2) lambda
+ *   + i y (1 + x), delta_1 = (1 - x^2)^2 - y^2 (1 + x)^2,
+ *   Res(p, p*) = (x + 1)^2 (x - y - 1)(x + y - 1), disc = -y^2 - 4 x.
+ *   Leapfrog with t = tan(theta/2): p = (1 + t^2) lambda^2 + 4 i nu t lambda
+ *   - (1 + t^2) is self-inversive (p* = -p): both deltas and Res(p, p*)
+ *   vanish identically, disc = 4 (1 + t^2)^2 - 16 nu^2 t^2, |a_2|^2 =
+ *   (1 + t^2)^2. */
+static void expect_poly(const fmpz_mpoly_t got, const char *want, const char **vars, const fmpz_mpoly_ctx_t ctx,
+                        int up_to_sign)
+{
+    fmpz_mpoly_t e;
+    fmpz_mpoly_init(e, ctx);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(e, want, vars, ctx), 0);
+    if (!fmpz_mpoly_equal(e, got, ctx)) {
+        fmpz_mpoly_neg(e, e, ctx);
+        if (!up_to_sign || !fmpz_mpoly_equal(e, got, ctx)) {
+            char *g = fmpz_mpoly_get_str_pretty(got, vars, ctx);
+            fail_msg("got %s, expected %s%s", g, want, up_to_sign ? " (up to sign)" : "");
+        }
+    }
+    fmpz_mpoly_clear(e, ctx);
+}
+
+static void test_symbolic_hand(void **state)
+{
+    const char *v1[] = {"x", "y", "lambda"}, *v2[] = {"nu", "t", "lambda"};
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t re, im;
+    rs_schur_cx_conds_t c;
+    (void) state;
+    fmpz_mpoly_ctx_init(ctx, 3, ORD_LEX);
+    fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx);
+    fmpz_mpoly_set_str_pretty(re, "lambda^2 + x", v1, ctx);
+    fmpz_mpoly_set_str_pretty(im, "y*lambda", v1, ctx);
+    rs_schur_cx_conds_init(&c);
+    assert_int_equal(rs_schur_cx_conds(&c, re, im, 2, ctx), 1);
+    assert_int_equal(c.ndelta, 2);
+    expect_poly(c.lead, "1", v1, ctx, 0);
+    expect_poly(c.delta + 0, "1 - x^2", v1, ctx, 0);
+    expect_poly(c.delta + 1, "(1 - x^2)^2 - y^2*(1 + x)^2", v1, ctx, 0);
+    expect_poly(c.res, "(x + 1)^2*(x - y - 1)*(x + y - 1)", v1, ctx, 1);
+    expect_poly(c.disc_re, "-y^2 - 4*x", v1, ctx, 0);
+    assert_true(fmpz_mpoly_is_zero(c.disc_im, ctx));
+    rs_schur_cx_conds_clear(&c, ctx);
+    /* leapfrog */
+    fmpz_mpoly_set_str_pretty(re, "(1 + t^2)*lambda^2 - (1 + t^2)", v2, ctx);
+    fmpz_mpoly_set_str_pretty(im, "4*nu*t*lambda", v2, ctx);
+    rs_schur_cx_conds_init(&c);
+    assert_int_equal(rs_schur_cx_conds(&c, re, im, 2, ctx), 1);
+    expect_poly(c.lead, "(1 + t^2)^2", v2, ctx, 0);
+    assert_true(fmpz_mpoly_is_zero(c.delta + 0, ctx));
+    assert_true(fmpz_mpoly_is_zero(c.delta + 1, ctx));
+    assert_true(fmpz_mpoly_is_zero(c.res, ctx));
+    expect_poly(c.disc_re, "4*(1 + t^2)^2 - 16*nu^2*t^2", v2, ctx, 0);
+    assert_true(fmpz_mpoly_is_zero(c.disc_im, ctx));
+    rs_schur_cx_conds_clear(&c, ctx);
+    fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+/* Property: for random p(lambda; x) over Z[i][x] (x in one random
+ * coefficient), at integer x every delta > 0 iff the numeric Schur-Cohn
+ * (itself checked against Arb above) says all roots inside; and at such an
+ * x where the delta conditions fail the verdict is not stable. */
+static void test_symbolic_random(void **state)
+{
+    const char *vars[] = {"x", "lambda"};
+    flint_rand_t rs;
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t re, im, t;
+    fmpq_poly_t pr, pi;
+    slong trial, inside_seen = 0, outside_seen = 0;
+    (void) state;
+    flint_randinit(rs);
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx); fmpz_mpoly_init(t, ctx);
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    for (trial = 0; trial < 60; trial++) {
+        slong n = 1 + (slong) n_randint(rs, 3), k, j = (slong) n_randint(rs, (ulong) n), xv;
+        rs_schur_cx_conds_t c;
+        fmpz_mpoly_zero(re, ctx);
+        fmpz_mpoly_zero(im, ctx);
+        for (k = 0; k <= n; k++) {
+            char buf[200];
+            slong a = k == n ? 8 + (slong) n_randint(rs, 4) : (slong) n_randint(rs, 7) - 3;
+            slong b = (slong) n_randint(rs, 7) - 3;
+            snprintf(buf, sizeof buf, "(%ld%s)*lambda^%ld", (long) a, k == j ? " + x" : "", (long) k);
+            fmpz_mpoly_set_str_pretty(t, buf, vars, ctx);
+            fmpz_mpoly_add(re, re, t, ctx);
+            snprintf(buf, sizeof buf, "(%ld)*lambda^%ld", (long) b, (long) k);
+            fmpz_mpoly_set_str_pretty(t, buf, vars, ctx);
+            fmpz_mpoly_add(im, im, t, ctx);
+        }
+        rs_schur_cx_conds_init(&c);
+        assert_int_equal(rs_schur_cx_conds(&c, re, im, 1, ctx), 1);
+        for (xv = -12; xv <= 12; xv += 3) {
+            fmpz_t X, val;
+            fmpz *vals, *pt[2];
+            int all = 1, want;
+            fmpz_init_set_si(X, xv);
+            fmpz_init(val);
+            vals = _fmpz_vec_init(2);
+            fmpz_set(vals + 0, X);
+            pt[0] = vals + 0;
+            pt[1] = vals + 1;
+            for (k = 0; k < c.ndelta; k++) {
+                fmpz_mpoly_evaluate_all_fmpz(val, c.delta + k, pt, ctx);
+                all = all && fmpz_sgn(val) > 0;
+            }
+            /* p at x = xv as fmpq_polys */
+            fmpq_poly_zero(pr); fmpq_poly_zero(pi);
+            for (k = 0; k <= n; k++) {
+                ulong e = (ulong) k;
+                slong lv = 1;
+                fmpz_mpoly_get_coeff_vars_ui(t, re, &lv, &e, 1, ctx);
+                fmpz_mpoly_evaluate_all_fmpz(val, t, pt, ctx);
+                fmpq_poly_set_coeff_fmpz(pr, k, val);
+                fmpz_mpoly_get_coeff_vars_ui(t, im, &lv, &e, 1, ctx);
+                fmpz_mpoly_evaluate_all_fmpz(val, t, pt, ctx);
+                fmpq_poly_set_coeff_fmpz(pi, k, val);
+            }
+            want = rs_schur_complex_inside(pr, pi);
+            if (all != want) fail_msg("trial %ld, x = %ld: deltas say %d, Schur-Cohn at the point %d", (long) trial,
+                                      (long) xv, all, want);
+            if (want) inside_seen++; else outside_seen++;
+            _fmpz_vec_clear(vals, 2);
+            fmpz_clear(X); fmpz_clear(val);
+        }
+        rs_schur_cx_conds_clear(&c, ctx);
+    }
+    assert_true(inside_seen > 10 && outside_seen > 10);
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx); fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    flint_randclear(rs);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_hand),
         cmocka_unit_test(test_random_vs_arb),
+        cmocka_unit_test(test_symbolic_hand),
+        cmocka_unit_test(test_symbolic_random),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
