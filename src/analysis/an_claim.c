@@ -1195,6 +1195,31 @@ static double interval_length(const json_t *iv)
     return json_number_value(hi) - json_number_value(lo);
 }
 
+/* An angle parameter's value in a counterexample is t = tan(NAME/2): say
+ * which angle that is, exactly when it is a rational multiple of pi (for
+ * rational t only t = 0, 1, -1: Niven), else as 2*atan(t).  NULL when the
+ * counterexample has no angle parameter. */
+static json_t *angle_note(rs_run_t *run, const json_t *cx)
+{
+    const char *key;
+    json_t *val;
+    char buf[600];
+    size_t used = 0;
+    buf[0] = '\0';
+    json_object_foreach((json_t *) cx, key, val) {
+        slong k = rs_case_param_index(run->c, key);
+        const char *t = json_string_value(val), *exact = NULL;
+        if (k < 0 || !run->c->params[k].angle || t == NULL) continue;
+        if (strcmp(t, "0") == 0) exact = "0";
+        else if (strcmp(t, "1") == 0) exact = "pi/2";
+        else if (strcmp(t, "-1") == 0) exact = "-pi/2";
+        used += (size_t) snprintf(buf + used, sizeof buf - used, "%s%s = 2*atan(%s)%s%s (t = tan(%s/2) = %s)",
+                                  used > 0 ? "; " : "", key, t, exact ? " = " : "", exact ? exact : "", key, t);
+        if (used >= sizeof buf) break;
+    }
+    return used > 0 ? json_string(buf) : NULL;
+}
+
 /* A claim its own certificate search left undecided, proved by the for-all
  * region of its single parameter on its set (issue 15): every cell of the
  * region good, each with a re-checked certificate (or an exact point
@@ -1500,7 +1525,9 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
             json_object_set_new(o, "at_counterexample", at);
             counter = at = NULL;
         } else if (counter != NULL) {
+            json_t *an = angle_note(run, counter);
             json_object_set_new(o, "status", json_string("refuted"));
+            if (an != NULL) json_object_set_new(o, "angles", an);
             json_object_set_new(o, "counterexample", counter);
             json_object_set_new(o, "at_counterexample", at);
             counter = at = NULL;

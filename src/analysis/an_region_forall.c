@@ -265,9 +265,14 @@ int rs_proj_eliminate(rs_plist_t *out, rs_run_t *run, const rs_plist_t *in, slon
  * conj(p)'s 1/z meet as a double root of det M): |a_n|^2 (degree drop), the
  * Schur-Cohn deltas over Q(i) (stability is their conjunction), Res(p, p*)
  * (a root on the circle), |disc p|^2 (a repeated root: the bounded/unbounded
- * boundary on the circle).  Between their critical values no root crosses
- * the circle, none escapes, and none merges with another, so the status is
- * constant on the cell. */
+ * boundary on the circle).  On a cell of the decomposition they are
+ * sign-invariant: with Res(p, p*) != 0 as a polynomial no root meets the
+ * circle inside an open cell (and a second root reaching it on a curve
+ * Res = 0 is a singular point or a crossing of two branches, a critical
+ * value); with Res = 0 identically and p self-inversive the roots are
+ * symmetric about the circle and one leaves it only by meeting another
+ * (disc p = 0).  So the status is constant on the cell, and one sample of
+ * NAME per cell decides "for all". */
 static int forall_conditions_complex(rs_plist_t **groups, slong *ng, rs_run_t *run, const rs_variant_t *v,
                                      slong tv, const rs_bound_t *dom)
 {
@@ -288,9 +293,15 @@ static int forall_conditions_complex(rs_plist_t **groups, slong *ng, rs_run_t *r
     fmpz_mpoly_scalar_mul_fmpz(b, B->zpoly, w, s->zctx);
     rs_schur_cx_conds_init(&c);
     ok = rs_schur_cx_conds(&c, a, b, s->lambda_var, s->zctx);
+    /* Res(p, p*) = 0 identically: p and p* share a factor.  Handled when p
+     * is self-inversive (its roots symmetric about the circle: a circle root
+     * leaves it only by meeting another, where disc p = 0, and a repeated
+     * root or a pair z, 1/conj z off the circle is unbounded either way);
+     * otherwise a root could cross the circle where nothing here vanishes */
+    if (ok && fmpz_mpoly_is_zero(c.res, s->zctx) && !c.self_inversive) ok = -1;
     g = flint_malloc(sizeof(rs_plist_t));
     rs_plist_init(g);
-    if (ok) {
+    if (ok == 1) {
         rs_plist_add(g, c.lead, tv, dom, s->zctx);
         for (k = 0; k < c.ndelta; k++) rs_plist_add(g, c.delta + k, tv, dom, s->zctx);
         rs_plist_add(g, c.res, tv, dom, s->zctx);
@@ -304,9 +315,13 @@ static int forall_conditions_complex(rs_plist_t **groups, slong *ng, rs_run_t *r
     fmpz_clear(w);
     *groups = g;
     *ng = 1;
-    if (!ok)
+    if (ok == 0)
         return rs_error_set(run->err, RS_ERR_LIMIT, "region for all: the Schur-Cohn conditions over Q(i) of this "
                             "complex char line grow too large");
+    if (ok < 0)
+        return rs_error_set(run->err, RS_ERR_LIMIT, "region for all: not available for a complex char line whose p "
+                            "shares a factor with p* = lambda^n conj(p(1/conj lambda)) without being self-inversive "
+                            "(Res(p, p*) = 0 identically: root crossings of the circle are not seen)");
     return RS_OK;
 }
 

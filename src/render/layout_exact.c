@@ -741,6 +741,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         rs_render_label(r, "counterexample");
         assignments(r, ce);
         rs_render_textf(r, "%s\n", json_object_size(ce) == 0 ? "the scheme as given (no free parameter)" : "");
+        if (js(o, "angles")) rs_render_line(r, "angles", "%s", js(o, "angles"));
         if (js(at, "reason")) rs_render_linef(r, "verdict", "%s: %s", js(at, "status"), js(at, "reason"));
         else rs_render_count(r, at, RS_RENDER_TEXT);
     } else if (st && strcmp(st, "proved") == 0) {

@@ -328,6 +328,16 @@ int rs_schur_cx_conds(rs_schur_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_
         fmpz_mpoly_mul(t, t, u, cx);
         fmpz_mpoly_add(ps, ps, t, cx);
     }
+    {   /* self-inversive: a_n p* = conj(a_0) p */
+        ulong z = 0;
+        fmpz_mpoly_get_coeff_vars_ui(a0, p, &lv, &z, 1, cx);
+        cx_conj(a0, a0, iv, cx);
+        fmpz_mpoly_mul(t, an, ps, cx);
+        fmpz_mpoly_mul(u, a0, p, cx);
+        fmpz_mpoly_sub(t, t, u, cx);
+        cx_reduce(t, iv, cx);
+        c->self_inversive = fmpz_mpoly_is_zero(t, cx);
+    }
     if (fmpz_mpoly_degree_si(ps, lv, cx) >= 1 && fmpz_mpoly_resultant(t, p, ps, lv, cx)) {
         cx_reduce(t, iv, cx);
         cx_part(c->res, t, iv, 0, cx, ctx);

@@ -39,9 +39,11 @@ int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_po
  * Schur-Cohn leading coefficient |a_m|^2 - |a_0|^2 of the division-free
  * recursion (all roots inside iff every delta > 0), res = Res(p, p*)
  * (p* = lambda^n conj(p(1/conj lambda)): real, zero when a root is on the
- * circle), disc_re + i disc_im = the discriminant of p (a repeated root). */
+ * circle), disc_re + i disc_im = the discriminant of p (a repeated root);
+ * self_inversive: a_n p* = conj(a_0) p (roots symmetric about the circle). */
 typedef struct {
     int have;
+    int self_inversive;
     slong ndelta;
     fmpz_mpoly_struct *delta;
     fmpz_mpoly_t lead, res, disc_re, disc_im;

@@ -153,12 +153,27 @@ static void test_leapfrog(void **state)
     json_decref(doc);
 }
 
+/* still refused, with the reason: p = (lambda - 2)(2 lambda - 1)(lambda -
+ * i x sin theta) shares the factor (lambda - 2)(2 lambda - 1) with p*
+ * (Res(p, p*) = 0 identically) and is not self-inversive, so a root of the
+ * last factor could cross the circle unseen by the conditions */
+static void test_refused(void **state)
+{
+    int outcome, code;
+    json_t *doc = tu_run_text("param x\nparam theta angle\nchar (lambda - 2)*(2*lambda - 1)*(lambda - i*x*sin(theta))\n"
+                              "analyse region x for all\n", NULL, &outcome, &code);
+    (void) state;
+    assert_int_equal(code, RS_ERR_LIMIT);
+    assert_null(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_regions),
         cmocka_unit_test(test_claims),
         cmocka_unit_test(test_leapfrog),
+        cmocka_unit_test(test_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -179,6 +179,7 @@ static void test_symbolic_hand(void **state)
     expect_poly(c.res, "(x + 1)^2*(x - y - 1)*(x + y - 1)", v1, ctx, 1);
     expect_poly(c.disc_re, "-y^2 - 4*x", v1, ctx, 0);
     assert_true(fmpz_mpoly_is_zero(c.disc_im, ctx));
+    assert_int_equal(c.self_inversive, 0);              /* p* != c p: x lambda^2 vs lambda^2 */
     rs_schur_cx_conds_clear(&c, ctx);
     /* leapfrog */
     fmpz_mpoly_set_str_pretty(re, "(1 + t^2)*lambda^2 - (1 + t^2)", v2, ctx);
@@ -191,6 +192,7 @@ static void test_symbolic_hand(void **state)
     assert_true(fmpz_mpoly_is_zero(c.res, ctx));
     expect_poly(c.disc_re, "4*(1 + t^2)^2 - 16*nu^2*t^2", v2, ctx, 0);
     assert_true(fmpz_mpoly_is_zero(c.disc_im, ctx));
+    assert_int_equal(c.self_inversive, 1);              /* p* = -p */
     rs_schur_cx_conds_clear(&c, ctx);
     fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx);
     fmpz_mpoly_ctx_clear(ctx);
