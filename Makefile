@@ -161,6 +161,7 @@ bench: all
 	$(call deb-install,bench,$(BENCH_WHY))
 	sh bench/run.sh
 	sh bench/bench_qepcad.sh
+	sh bench/bench_qepcad_cfl.sh
 
 # Python's site folder under PREFIX (Debian's python3 searches
 # PREFIX/lib/python3.X/dist-packages for PREFIX=/usr/local)
