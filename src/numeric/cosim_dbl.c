@@ -1,0 +1,641 @@
+/* cosim_dbl.c -- see numeric/cosim_dbl.h.  Error model (round to nearest,
+ * u = 2^-53, eta = 2^-1074 the smallest subnormal): a computed dot product
+ * of n terms is within gamma_n sum |a_k b_k| (+ n eta underflow) of the
+ * exact one (Higham, Accuracy and Stability, 2nd ed., eq. (3.5)); a
+ * computed sum of nonnegative terms underestimates the exact one by at most
+ * the factor 1 - gamma_n.  Every radius below is therefore formed as
+ * (computed bound) * (1 + slack) + eta-terms, slack >= 2 (n + 4) u, a
+ * generous a priori factor (no rounding-mode switches: thread safe).  An
+ * overflow or NaN anywhere ends in RS_ERR_UNDECIDED (checked at the end). */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include "numeric/cosim_dbl.h"
+
+#define U_ (0x1p-53)
+#define ETA_ (DBL_TRUE_MIN)
+
+/* the safety factor of a bound built from about n roundings */
+static inline double up_(double x, slong n)
+{
+    return x * (1.0 + 4.0 * (double) (n + 4) * U_) + 4.0 * (double) (n + 2) * ETA_;
+}
+
+/* ---- interval matrices: mid/rad arrays, row major ----------------------- */
+
+/* C (r x c) = A (r x k) B (k x c); Ar or Br NULL: a point matrix.  C may not
+ * alias A or B. */
+static void imul(double *Cm, double *Cr, const double *Am, const double *Ar, const double *Bm, const double *Br,
+                 slong r, slong k, slong c)
+{
+    slong i, j, l;
+    double g = 2.0 * (double) (k + 1) * U_;   /* >= gamma_k / (1 - gamma_k) */
+    for (i = 0; i < r; i++)
+        for (j = 0; j < c; j++) {
+            double s = 0, a = 0, rr = 0;
+            for (l = 0; l < k; l++) {
+                double x = Am[i * k + l], y = Bm[l * c + j];
+                s += x * y;
+                a += fabs(x * y);
+                if (Br != NULL) rr += fabs(x) * Br[l * c + j];
+                if (Ar != NULL) rr += Ar[i * k + l] * (fabs(y) + (Br != NULL ? Br[l * c + j] : 0));
+            }
+            Cm[i * c + j] = s;
+            Cr[i * c + j] = up_(g * a + rr, 2 * k + 2);
+        }
+}
+
+/* C = A + s B (s = +-1), entrywise */
+static void iadd(double *Cm, double *Cr, const double *Am, const double *Ar, const double *Bm, const double *Br,
+                 slong len, double s)
+{
+    slong i;
+    for (i = 0; i < len; i++) {
+        double x = Am[i] + s * Bm[i];
+        Cr[i] = up_(Ar[i] + Br[i] + U_ * fabs(x), 2);
+        Cm[i] = x;
+    }
+}
+
+/* C = a X, a = am +- ar an interval scalar (C may alias X) */
+static void iscal(double *Cm, double *Cr, const double *Xm, const double *Xr, double am, double ar, slong len)
+{
+    slong i;
+    for (i = 0; i < len; i++) {
+        double x = am * Xm[i];
+        Cr[i] = up_(fabs(am) * Xr[i] + ar * (fabs(Xm[i]) + Xr[i]) + U_ * fabs(x), 3);
+        Cm[i] = x;
+    }
+}
+
+/* an upper bound of the infinity norm of every matrix in (M, R), r x c */
+static double inorm(const double *Mm, const double *Mr, slong r, slong c)
+{
+    slong i, j;
+    double mx = 0;
+    for (i = 0; i < r; i++) {
+        double s = 0;
+        for (j = 0; j < c; j++) s += fabs(Mm[i * c + j]) + (Mr != NULL ? Mr[i * c + j] : 0);
+        s = up_(s, 2 * c);
+        if (!(s <= mx)) mx = s;   /* NaN propagates */
+    }
+    return mx;
+}
+
+static int all_finite(const double *x, slong len)
+{
+    slong i;
+    for (i = 0; i < len; i++)
+        if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* (Em, Er) = exp(X) for every X in (Xm, Xr), s x s: scaling so that
+ * ||X / 2^j|| <= 1/2, a Taylor polynomial of degree N in Horner form in
+ * interval arithmetic, plus the remainder bound on every entry, then j
+ * squarings.  0 on overflow / a norm too large. */
+static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slong s)
+{
+    slong len = s * s, i, k, N, j = 0;
+    double nu = inorm(Xm, Xr, s, s), sc, term, rem;
+    double *Ym, *Yr, *Pm, *Pr, *Qm, *Qr;
+    int ok = 1;
+    if (!isfinite(nu)) return 0;
+    while (nu > 0.5) {
+        nu *= 0.5;   /* exact */
+        if (++j > 200) return 0;
+    }
+    /* N: nu^{N+1} / (N+1)! below 2^-70 (term computed with upward slack) */
+    term = nu;
+    for (N = 1; N < 40; N++) {
+        term = up_(term * nu / (double) (N + 1), 4);
+        if (term < 0x1p-70) break;
+    }
+    /* remainder of every matrix Y with ||Y|| <= nu: term / (1 - nu / (N + 2)) */
+    rem = up_(term / (1.0 - nu / (double) (N + 2)), 6);
+    Ym = flint_malloc(6 * len * sizeof(double));
+    Yr = Ym + len;
+    Pm = Yr + len;
+    Pr = Pm + len;
+    Qm = Pr + len;
+    Qr = Qm + len;
+    sc = ldexp(1.0, (int) -j);
+    for (i = 0; i < len; i++) {
+        Ym[i] = Xm[i] * sc;
+        Yr[i] = Xr[i] * sc + 2 * ETA_;   /* exact unless subnormal */
+    }
+    /* P = I; for k = N..1: P = I + Y P / k */
+    for (i = 0; i < len; i++) Pm[i] = Pr[i] = 0;
+    for (i = 0; i < s; i++) Pm[i * s + i] = 1;
+    for (k = N; k >= 1; k--) {
+        imul(Qm, Qr, Ym, Yr, Pm, Pr, s, s, s);
+        for (i = 0; i < len; i++) {
+            double x = Qm[i] / (double) k;
+            Pr[i] = up_(Qr[i] / (double) k + U_ * fabs(x), 3);
+            Pm[i] = x;
+        }
+        for (i = 0; i < s; i++) {
+            double x = Pm[i * s + i] + 1.0;
+            Pr[i * s + i] = up_(Pr[i * s + i] + U_ * fabs(x), 2);
+            Pm[i * s + i] = x;
+        }
+    }
+    for (i = 0; i < len; i++) Pr[i] = up_(Pr[i] + rem, 2);
+    for (k = 0; k < j; k++) {
+        imul(Qm, Qr, Pm, Pr, Pm, Pr, s, s, s);
+        memcpy(Pm, Qm, len * sizeof(double));
+        memcpy(Pr, Qr, len * sizeof(double));
+    }
+    memcpy(Em, Pm, len * sizeof(double));
+    memcpy(Er, Pr, len * sizeof(double));
+    ok = all_finite(Em, len) && all_finite(Er, len);
+    flint_free(Ym);
+    return ok;
+}
+
+/* ---- the model ---------------------------------------------------------- */
+
+void rs_cosim_dbl_init(rs_cosim_dbl_t d)
+{
+    memset(d, 0, sizeof *d);
+}
+
+void rs_cosim_dbl_clear(rs_cosim_dbl_t d)
+{
+    flint_free(d->A1m);
+    memset(d, 0, sizeof *d);
+}
+
+slong rs_cosim_dbl_dim(const rs_cosim_dbl_t d)
+{
+    slong h = d->method == RS_COSIM_IMPLICIT ? (d->order > 1 ? d->order - 1 : 0) : d->order;
+    return d->n1 + d->n2 + h * d->m;
+}
+
+int rs_dbl_set_fmpq(double *mid, double *rad, const fmpq_t x)
+{
+    arb_t t;
+    arb_init(t);
+    arb_set_fmpq(t, x, 53);
+    *mid = arf_get_d(arb_midref(t), ARF_RND_NEAR);   /* exact: 53 bits */
+    *rad = mag_get_d(arb_radref(t));                  /* an upper bound */
+    arb_clear(t);
+    return isfinite(*mid) && isfinite(*rad);
+}
+
+int rs_cosim_dbl_set_dims(rs_cosim_dbl_t d, slong n1, slong n2, slong m, int method, slong order, rs_error_t err)
+{
+    slong n = n1 + n2, tot, j, k;
+    fmpq_mat_t L;
+    int rc;
+    if (order < 0 || order > RS_COSIM_MAX_ORDER || n1 < 1 || n2 < 1 || m < 0)
+        return rs_error_set(err, RS_ERR_INPUT, "cosim double: bad dimensions or order%s", "");
+    rs_cosim_dbl_clear(d);
+    d->n1 = n1;
+    d->n2 = n2;
+    d->m = m;
+    d->method = method;
+    d->order = order;
+    tot = 2 * (n1 * n1 + n2 * n2 + 2 * n * m);
+    d->A1m = flint_calloc(tot > 0 ? tot : 1, sizeof(double));
+    d->A1r = d->A1m + n1 * n1;
+    d->A2m = d->A1r + n1 * n1;
+    d->A2r = d->A2m + n2 * n2;
+    d->Bm = d->A2r + n2 * n2;
+    d->Br = d->Bm + n * m;
+    d->Cm = d->Br + n * m;
+    d->Cr = d->Cm + n * m;
+    d->Hm = 1;
+    d->Hr = 0;
+    fmpq_mat_init(L, order + 1, order + 1);
+    rc = rs_cosim_lagrange(L, method, order, err);
+    for (j = 0; rc == RS_OK && j <= order; j++)
+        for (k = 0; k <= order; k++)
+            rs_dbl_set_fmpq(d->Lm + j * (order + 1) + k, d->Lr + j * (order + 1) + k, fmpq_mat_entry(L, j, k));
+    d->haveL = rc == RS_OK;
+    fmpq_mat_clear(L);
+    return rc;
+}
+
+void rs_cosim_dbl_set_like(rs_cosim_dbl_t d, const rs_cosim_dbl_t src)
+{
+    slong n1 = src->n1, n2 = src->n2, n = n1 + n2, m = src->m, tot = 2 * (n1 * n1 + n2 * n2 + 2 * n * m);
+    rs_cosim_dbl_clear(d);
+    *d = *src;
+    d->A1m = flint_calloc(tot > 0 ? tot : 1, sizeof(double));
+    d->A1r = d->A1m + n1 * n1;
+    d->A2m = d->A1r + n1 * n1;
+    d->A2r = d->A2m + n2 * n2;
+    d->Bm = d->A2r + n2 * n2;
+    d->Br = d->Bm + n * m;
+    d->Cm = d->Br + n * m;
+    d->Cr = d->Cm + n * m;
+}
+
+static void set_block(double *Mm, double *Mr, const fmpq_mat_t X)
+{
+    slong i, j, c = fmpq_mat_ncols(X);
+    for (i = 0; i < fmpq_mat_nrows(X); i++)
+        for (j = 0; j < c; j++)
+            rs_dbl_set_fmpq(Mm + i * c + j, Mr + i * c + j, fmpq_mat_entry(X, i, j));
+}
+
+int rs_cosim_dbl_set_cosim(rs_cosim_dbl_t d, const rs_cosim_t cs, rs_error_t err)
+{
+    slong n1 = cs->n1, n = cs->n1 + cs->n2, m = cs->m, i, j;
+    int rc = rs_cosim_check(cs, err);
+    if (rc == RS_OK && cs->ext != RS_COSIM_EXT_NONE)
+        rc = rs_error_set(err, RS_ERR_INPUT, "cosim double: the D-/I-extension couplings are not covered%s", "");
+    if (rc == RS_OK) rc = rs_cosim_dbl_set_dims(d, cs->n1, cs->n2, m, cs->method, cs->order, err);
+    if (rc != RS_OK) return rc;
+    set_block(d->A1m, d->A1r, cs->A1);
+    set_block(d->A2m, d->A2r, cs->A2);
+    set_block(d->Cm, d->Cr, cs->C);
+    for (i = 0; i < n; i++)
+        for (j = 0; j < m; j++)
+            rs_dbl_set_fmpq(d->Bm + i * m + j, d->Br + i * m + j,
+                            i < n1 ? fmpq_mat_entry(cs->B1, i, j) : fmpq_mat_entry(cs->B2, i - n1, j));
+    rs_dbl_set_fmpq(&d->Hm, &d->Hr, cs->H);
+    return RS_OK;
+}
+
+/* ---- the one-step map ---------------------------------------------------- */
+
+/* subsystem (Ai, rows off.. of B): E_i into E (n x n) at (off, off), the
+ * gain columns Phi_k e_c into Phi (n x m (K+1)), col k m + c.  Exactly zero
+ * columns of B (midpoint and radius 0) get no chain: their Phi is 0. */
+static int exp_phi_sub(double *Em, double *Er, double *Phm, double *Phr, const rs_cosim_dbl_t d, slong off,
+                       slong ni, const double *Aim, const double *Air)
+{
+    slong n = d->n1 + d->n2, m = d->m, K = d->order, q = 0, sz, r, c, k, ch, *cols;
+    double *Mm, *Mr, *Xm, *Xr, fact;
+    int ok;
+    cols = flint_malloc((m + 1) * sizeof(slong));
+    for (c = 0; c < m; c++) {
+        int nz = 0;
+        for (r = 0; r < ni; r++)
+            if (d->Bm[(off + r) * m + c] != 0 || d->Br[(off + r) * m + c] != 0) nz = 1;
+        if (nz) cols[q++] = c;
+    }
+    sz = ni + q * (K + 1);
+    Mm = flint_calloc(4 * sz * sz, sizeof(double));
+    Mr = Mm + sz * sz;
+    Xm = Mr + sz * sz;
+    Xr = Xm + sz * sz;
+    /* Ma = [[A_i H, B_i H chains], [shift ones]] (interval H) */
+    for (r = 0; r < ni; r++) {
+        for (c = 0; c < ni; c++)
+            iscal(Mm + r * sz + c, Mr + r * sz + c, Aim + r * ni + c, Air + r * ni + c, d->Hm, d->Hr, 1);
+        for (ch = 0; ch < q; ch++)
+            iscal(Mm + r * sz + ni + ch * (K + 1), Mr + r * sz + ni + ch * (K + 1), d->Bm + (off + r) * m + cols[ch],
+                  d->Br + (off + r) * m + cols[ch], d->Hm, d->Hr, 1);
+    }
+    for (ch = 0; ch < q; ch++)
+        for (r = 0; r < K; r++) Mm[(ni + ch * (K + 1) + r) * sz + ni + ch * (K + 1) + r + 1] = 1;
+    ok = iexp(Xm, Xr, Mm, Mr, sz);
+    for (r = 0; ok && r < ni; r++)
+        for (c = 0; c < ni; c++) {
+            Em[(off + r) * n + off + c] = Xm[r * sz + c];
+            Er[(off + r) * n + off + c] = Xr[r * sz + c];
+        }
+    fact = 1;
+    for (k = 0; ok && k <= K; k++) {
+        if (k > 1) fact *= (double) k;   /* exact: k! <= 6 */
+        for (ch = 0; ch < q; ch++)
+            for (r = 0; r < ni; r++) {
+                slong pi = (off + r) * (m * (K + 1)) + k * m + cols[ch];
+                iscal(Phm + pi, Phr + pi, Xm + r * sz + ni + ch * (K + 1) + k, Xr + r * sz + ni + ch * (K + 1) + k,
+                      fact, 0, 1);
+            }
+    }
+    flint_free(Mm);
+    flint_free(cols);
+    return ok;
+}
+
+/* R ~= M^{-1} (m x m, point, Gauss-Jordan with partial pivoting); 0 if singular */
+static int approx_inv(double *R, const double *M, slong m)
+{
+    slong i, j, k, p;
+    double *A = flint_malloc(m * m * sizeof(double));
+    int ok = 1;
+    memcpy(A, M, m * m * sizeof(double));
+    for (i = 0; i < m * m; i++) R[i] = 0;
+    for (i = 0; i < m; i++) R[i * m + i] = 1;
+    for (k = 0; k < m && ok; k++) {
+        p = k;
+        for (i = k + 1; i < m; i++)
+            if (fabs(A[i * m + k]) > fabs(A[p * m + k])) p = i;
+        if (A[p * m + k] == 0) { ok = 0; break; }
+        for (j = 0; j < m; j++) {
+            double t = A[k * m + j]; A[k * m + j] = A[p * m + j]; A[p * m + j] = t;
+            t = R[k * m + j]; R[k * m + j] = R[p * m + j]; R[p * m + j] = t;
+        }
+        for (i = 0; i < m; i++) {
+            double f;
+            if (i == k) continue;
+            f = A[i * m + k] / A[k * m + k];
+            for (j = 0; j < m; j++) {
+                A[i * m + j] -= f * A[k * m + j];
+                R[i * m + j] -= f * R[k * m + j];
+            }
+        }
+    }
+    for (i = 0; ok && i < m; i++) {
+        double f = A[i * m + i];
+        for (j = 0; j < m; j++) R[i * m + j] /= f;
+    }
+    flint_free(A);
+    return ok && all_finite(R, m * m);
+}
+
+int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
+{
+    slong n = d->n1 + d->n2, m = d->m, K = d->order, w = m * (K + 1), dim = rs_cosim_dbl_dim(d), h, a, j, k, r, c;
+    double *Em, *Er, *Phm, *Phr, *Gm, *Gr, *Top, *Topr, *Xm, *Xr;
+    int ok, impl = d->method == RS_COSIM_IMPLICIT;
+    if (!d->haveL || !(d->Hm - d->Hr > 0)) return RS_ERR_UNDECIDED;
+    a = impl ? 1 : 0;
+    h = (dim - n) / (m > 0 ? m : 1);
+    Em = flint_calloc(2 * n * n + 4 * n * w + 2 * n * dim + 2 * n * n + 2, sizeof(double));
+    Er = Em + n * n;
+    Phm = Er + n * n;
+    Phr = Phm + n * w;
+    Gm = Phr + n * w;
+    Gr = Gm + n * w;
+    Top = Gr + n * w;
+    Topr = Top + n * dim;
+    Xm = Topr + n * dim;
+    Xr = Xm + n * n;
+    ok = exp_phi_sub(Em, Er, Phm, Phr, d, 0, d->n1, d->A1m, d->A1r)
+         && exp_phi_sub(Em, Er, Phm, Phr, d, d->n1, d->n2, d->A2m, d->A2r);
+    /* G_j = sum_k l_{j,k} Phi_k (blocks of m columns) */
+    for (j = 0; ok && j <= K; j++)
+        for (k = 0; k <= K; k++) {
+            double lm = d->Lm[j * (K + 1) + k], lr = d->Lr[j * (K + 1) + k];
+            if (lm == 0 && lr == 0) continue;
+            for (r = 0; r < n; r++)
+                for (c = 0; c < m; c++) {
+                    double tm, tr;
+                    slong pk = r * w + k * m + c, pj = r * w + j * m + c;
+                    iscal(&tm, &tr, Phm + pk, Phr + pk, lm, lr, 1);
+                    iadd(Gm + pj, Gr + pj, Gm + pj, Gr + pj, &tm, &tr, 1, 1.0);
+                }
+        }
+    /* Top = [E + G_a C | G_{a+1} ... G_K] (n x dim) */
+    if (ok) {
+        double *Ga = flint_malloc(2 * n * (m > 0 ? m : 1) * sizeof(double)), *Gar = Ga + n * (m > 0 ? m : 1);
+        for (r = 0; r < n; r++)
+            for (c = 0; c < n; c++) {
+                Xm[r * n + c] = 0;
+                Xr[r * n + c] = 0;
+            }
+        if (a <= K && m > 0) {
+            for (r = 0; r < n; r++)
+                for (c = 0; c < m; c++) {
+                    Ga[r * m + c] = Gm[r * w + a * m + c];
+                    Gar[r * m + c] = Gr[r * w + a * m + c];
+                }
+            imul(Xm, Xr, Ga, Gar, d->Cm, d->Cr, n, m, n);
+        }
+        for (r = 0; r < n; r++) {
+            iadd(Top + r * dim, Topr + r * dim, Xm + r * n, Xr + r * n, Em + r * n, Er + r * n, n, 1.0);
+            for (j = a + 1; j <= K; j++)
+                for (c = 0; c < m; c++) {
+                    Top[r * dim + n + (j - a - 1) * m + c] = Gm[r * w + j * m + c];
+                    Topr[r * dim + n + (j - a - 1) * m + c] = Gr[r * w + j * m + c];
+                }
+        }
+        if (impl && m > 0) {
+            /* Top <- Top + G_0 J^{-1} (C Top), J = I_m - C G_0 (Woodbury, as
+             * rs_cosim_ball_transition).  J^{-1} through R ~= mid(J)^{-1}:
+             * with F = I - R J, ||F|| <= e < 1, Y = J^{-1} CX = Z + (I - F)^{-1} F Z
+             * for Z = R CX, so column c of Y is Z's within e/(1-e) ||Z_c||. */
+            double *Jm = flint_malloc((6 * m * m + 4 * m * dim) * sizeof(double)), *Jr = Jm + m * m, *R = Jr + m * m,
+                   *Fm = R + m * m, *Fr = Fm + m * m, *Zero = Fr + m * m, *CXm = Zero + m * m, *CXr = CXm + m * dim,
+                   *Zm = CXr + m * dim, *Zr = Zm + m * dim, e;
+            for (r = 0; r < n; r++)
+                for (c = 0; c < m; c++) {
+                    Ga[r * m + c] = Gm[r * w + c];
+                    Gar[r * m + c] = Gr[r * w + c];
+                }
+            imul(Jm, Jr, d->Cm, d->Cr, Ga, Gar, m, n, m);
+            for (r = 0; r < m * m; r++) {
+                Jm[r] = -Jm[r];
+                Zero[r] = 0;
+            }
+            for (r = 0; r < m; r++) {
+                double x = Jm[r * m + r] + 1.0;
+                Jr[r * m + r] = up_(Jr[r * m + r] + U_ * fabs(x), 2);
+                Jm[r * m + r] = x;
+            }
+            ok = approx_inv(R, Jm, m);
+            if (ok) {
+                imul(Fm, Fr, R, NULL, Jm, Jr, m, m, m);
+                for (r = 0; r < m * m; r++) Fm[r] = -Fm[r];
+                for (r = 0; r < m; r++) {
+                    double x = Fm[r * m + r] + 1.0;
+                    Fr[r * m + r] = up_(Fr[r * m + r] + U_ * fabs(x), 2);
+                    Fm[r * m + r] = x;
+                }
+                e = inorm(Fm, Fr, m, m);
+                ok = e < 0.5;
+            }
+            if (ok) {
+                imul(CXm, CXr, d->Cm, d->Cr, Top, Topr, m, n, dim);
+                imul(Zm, Zr, R, NULL, CXm, CXr, m, m, dim);
+                for (c = 0; c < dim; c++) {
+                    double zc = 0, add;
+                    for (r = 0; r < m; r++) zc = fmax(zc, fabs(Zm[r * dim + c]) + Zr[r * dim + c]);
+                    add = up_(up_(e / (1.0 - e), 3) * zc, 2);
+                    for (r = 0; r < m; r++) Zr[r * dim + c] = up_(Zr[r * dim + c] + add, 2);
+                }
+                {
+                    double *Sm = flint_malloc(2 * n * dim * sizeof(double)), *Sr = Sm + n * dim;
+                    imul(Sm, Sr, Ga, Gar, Zm, Zr, n, m, dim);
+                    iadd(Top, Topr, Top, Topr, Sm, Sr, n * dim, 1.0);
+                    flint_free(Sm);
+                }
+            }
+            flint_free(Jm);
+        }
+        flint_free(Ga);
+    }
+    if (ok) {
+        for (r = 0; r < dim * dim; r++) Tm[r] = Tr[r] = 0;
+        memcpy(Tm, Top, n * dim * sizeof(double));
+        memcpy(Tr, Topr, n * dim * sizeof(double));
+        if (h > 0 && m > 0) {
+            /* new u_N = C z_N, older u's shift down one slot */
+            for (r = 0; r < m; r++)
+                for (c = 0; c < n; c++) {
+                    Tm[(n + r) * dim + c] = d->Cm[r * n + c];
+                    Tr[(n + r) * dim + c] = d->Cr[r * n + c];
+                }
+            for (j = 1; j < h; j++)
+                for (r = 0; r < m; r++) Tm[(n + j * m + r) * dim + n + (j - 1) * m + r] = 1;
+        }
+        ok = all_finite(Tm, dim * dim) && all_finite(Tr, dim * dim);
+    }
+    flint_free(Em);
+    return ok ? RS_OK : RS_ERR_UNDECIDED;
+}
+
+/* ---- the certified radius ------------------------------------------------ */
+
+/* V (complex point, re/im arrays) = double eigenvectors of T, W ~= V^{-1}
+ * (GSL, complex LU); 0 when GSL fails */
+static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double *T, slong dd)
+{
+    size_t d = (size_t) dd, i, j;
+    gsl_matrix_const_view A0 = gsl_matrix_const_view_array(T, d, d);
+    gsl_matrix *A = gsl_matrix_alloc(d, d);
+    gsl_vector_complex *ev = gsl_vector_complex_alloc(d);
+    gsl_matrix_complex *X = gsl_matrix_complex_alloc(d, d), *Y = gsl_matrix_complex_alloc(d, d);
+    gsl_eigen_nonsymmv_workspace *w = gsl_eigen_nonsymmv_alloc(d);
+    gsl_permutation *p = gsl_permutation_alloc(d);
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    int ok, sgn;
+    gsl_matrix_memcpy(A, &A0.matrix);
+    ok = gsl_eigen_nonsymmv(A, ev, X, w) == GSL_SUCCESS;
+    for (i = 0; ok && i < d; i++)
+        for (j = 0; j < d; j++) {
+            gsl_complex z = gsl_matrix_complex_get(X, i, j);
+            Vr[i * d + j] = GSL_REAL(z);
+            Vi[i * d + j] = GSL_IMAG(z);
+        }
+    ok = ok && gsl_linalg_complex_LU_decomp(X, p, &sgn) == GSL_SUCCESS
+         && gsl_linalg_complex_LU_invert(X, p, Y) == GSL_SUCCESS;
+    for (i = 0; ok && i < d; i++)
+        for (j = 0; j < d; j++) {
+            gsl_complex z = gsl_matrix_complex_get(Y, i, j);
+            Wr[i * d + j] = GSL_REAL(z);
+            Wi[i * d + j] = GSL_IMAG(z);
+        }
+    gsl_set_error_handler(old);
+    ok = ok && all_finite(Vr, dd * dd) && all_finite(Vi, dd * dd) && all_finite(Wr, dd * dd) && all_finite(Wi, dd * dd);
+    gsl_permutation_free(p);
+    gsl_eigen_nonsymmv_free(w);
+    gsl_matrix_complex_free(X);
+    gsl_matrix_complex_free(Y);
+    gsl_vector_complex_free(ev);
+    gsl_matrix_free(A);
+    return ok;
+}
+
+/* (Cr, Ci) = (Ar + i Ai)(Br + i Bi), intervals of d x d; radii NULL = point */
+static void icmul(double *Crm, double *Crr, double *Cim, double *Cir, const double *Arm, const double *Arr,
+                  const double *Aim, const double *Air, const double *Brm, const double *Brr, const double *Bim,
+                  const double *Bir, slong d, double *work)
+{
+    slong len = d * d;
+    double *P1m = work, *P1r = P1m + len, *P2m = P1r + len, *P2r = P2m + len;
+    imul(P1m, P1r, Arm, Arr, Brm, Brr, d, d, d);
+    imul(P2m, P2r, Aim, Air, Bim, Bir, d, d, d);
+    iadd(Crm, Crr, P1m, P1r, P2m, P2r, len, -1.0);
+    imul(P1m, P1r, Arm, Arr, Bim, Bir, d, d, d);
+    imul(P2m, P2r, Aim, Air, Brm, Brr, d, d, d);
+    iadd(Cim, Cir, P1m, P1r, P2m, P2r, len, 1.0);
+}
+
+/* an upper bound of |z| for every z in the complex interval */
+static double cabs_up(double re, double rr, double im, double ir)
+{
+    return up_(hypot(fabs(re) + rr, fabs(im) + ir), 4);
+}
+
+int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
+{
+    slong dim = rs_cosim_dbl_dim(d), len = dim * dim, i, j, top = 0;
+    double *buf, *Tm, *Tr, *Vr, *Vi, *Wr, *Wi, *Xrm, *Xrr, *Xim, *Xir, *Brm, *Brr, *Bim, *Bir, *Erm, *Err, *Eim, *Eir,
+        *work, *zero, *R, *out, *in, e, f, up, lo;
+    int ok;
+    if (dim < 1) return RS_ERR_UNDECIDED;
+    buf = flint_calloc(24 * len + 3 * dim, sizeof(double));
+    Tm = buf; Tr = Tm + len; Vr = Tr + len; Vi = Vr + len; Wr = Vi + len; Wi = Wr + len;
+    Xrm = Wi + len; Xrr = Xrm + len; Xim = Xrr + len; Xir = Xim + len;
+    Brm = Xir + len; Brr = Brm + len; Bim = Brr + len; Bir = Bim + len;
+    Erm = Bir + len; Err = Erm + len; Eim = Err + len; Eir = Eim + len;
+    work = Eir + len; zero = work + 4 * len;   /* zero: len entries, stays 0 */
+    R = zero + len;
+    out = R + dim;
+    in = out + dim;
+    ok = rs_cosim_dbl_transition(Tm, Tr, d) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, Tm, dim);
+    if (ok) {
+        /* E = I - W V (point W, V) */
+        icmul(Erm, Err, Eim, Eir, Wr, zero, Wi, zero, Vr, zero, Vi, zero, dim, work);
+        for (i = 0; i < len; i++) {
+            Erm[i] = -Erm[i];
+            Eim[i] = -Eim[i];
+        }
+        for (i = 0; i < dim; i++) {
+            double x = Erm[i * dim + i] + 1.0;
+            Err[i * dim + i] = up_(Err[i * dim + i] + U_ * fabs(x), 2);
+            Erm[i * dim + i] = x;
+        }
+        /* X = T V (interval real times point complex), B = W X */
+        imul(Xrm, Xrr, Tm, Tr, Vr, NULL, dim, dim, dim);
+        imul(Xim, Xir, Tm, Tr, Vi, NULL, dim, dim, dim);
+        icmul(Brm, Brr, Bim, Bir, Wr, zero, Wi, zero, Xrm, Xrr, Xim, Xir, dim, work);
+        /* e = ||E||, f = e/(1 - e) ||B|| bounds the rows of V^{-1} T V - B
+         * (cosim_fast.c: Neumann series of (I - E)^{-1}) */
+        e = 0;
+        f = 0;
+        for (i = 0; i < dim; i++) {
+            double se = 0, sb = 0;
+            for (j = 0; j < dim; j++) {
+                se += cabs_up(Erm[i * dim + j], Err[i * dim + j], Eim[i * dim + j], Eir[i * dim + j]);
+                sb += cabs_up(Brm[i * dim + j], Brr[i * dim + j], Bim[i * dim + j], Bir[i * dim + j]);
+            }
+            e = fmax(e, up_(se, 2 * dim));
+            f = fmax(f, up_(sb, 2 * dim));
+        }
+        ok = all_finite(Brm, len) && all_finite(Brr, len) && all_finite(Bim, len) && all_finite(Bir, len)
+             && e < 0.5;
+        f = up_(up_(f * e, 2) / (1.0 - e), 4);
+    }
+    /* disc i: centre mid B_ii, radius R_i = the off-diagonal row sum + f +
+     * the centre's own radii; |lambda| in [in_i, out_i] */
+    for (i = 0; ok && i < dim; i++) {
+        double s = f + Brr[i * dim + i] + Bir[i * dim + i], h;
+        for (j = 0; j < dim; j++)
+            if (j != i) s += cabs_up(Brm[i * dim + j], Brr[i * dim + j], Bim[i * dim + j], Bir[i * dim + j]);
+        R[i] = up_(s, 2 * dim + 2);
+        h = hypot(Brm[i * dim + i], Bim[i * dim + i]);   /* glibc: within 1 ulp */
+        out[i] = up_(h * (1.0 + 4 * U_) + R[i], 2);
+        in[i] = (h * (1.0 - 4 * U_) - R[i]) * (1.0 - 4 * U_);
+        if (!(in[i] > 0)) in[i] = 0;
+        if (!isfinite(out[i]) || !isfinite(R[i])) ok = 0;
+    }
+    if (ok) {
+        up = out[0];
+        for (i = 1; i < dim; i++)
+            if (out[i] > up) { up = out[i]; top = i; }
+        for (j = 0; ok && j < dim; j++) {
+            double dist, need;
+            if (j == top) continue;
+            dist = hypot(Brm[top * dim + top] - Brm[j * dim + j], Bim[top * dim + top] - Bim[j * dim + j]);
+            need = up_(R[top] + R[j], 2);
+            if (!(dist * (1.0 - 8 * U_) > need)) ok = 0;
+        }
+        lo = in[top];
+        /* the 6 digits of rs_cosim_radius's cells: wider -> its route */
+        if (ok && !(up - lo <= ldexp(lo, -20))) ok = 0;
+    }
+    if (ok) {
+        arb_set_d(r->lower, lo);
+        arb_set_d(r->upper, up);
+        arb_union(r->rho, r->lower, r->upper, 64);
+        r->prec = 53;
+        r->nroots = 0;
+        r->method_double = 0;
+        r->isolated = 1;
+        r->partial = 0;
+    }
+    flint_free(buf);
+    return ok ? RS_OK : RS_ERR_UNDECIDED;
+}
