@@ -14,6 +14,8 @@
 #include "lower/cosim_model.h"
 #include "numeric/cosim_ball.h"
 #include "numeric/cosim_fast.h"
+#include "numeric/cosim_dbl.h"
+#include "numeric/cosim_forms.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
@@ -223,6 +225,7 @@ typedef struct {
     const rs_sweep_request_t *R;
     const fmpq *x[2];                 /* the axis values: x[0][i] (and x[1][j] of a map) */
     const rs_cosim_model_struct *F;   /* the linear forms (the run's model) */
+    rs_cosim_nforms_struct *NF;       /* their numeric forms (cosim_forms.h; NULL: not applicable) */
 } cosim_map_t;
 
 /* the co-simulation at grid point idx (a sweep's index; a map's j*K1 + i) */
@@ -298,6 +301,23 @@ static void radius_cells(rs_sweep_row_t *row, const rs_radius_t rr)
     flint_free(hi);
 }
 
+/* the interval-double certified radius at grid point idx from the numeric
+ * forms; 1 when it decides the verdict (an interval excluding 1) */
+static int cosim_dbl_point(rs_radius_t rf, const cosim_map_t *M, slong idx)
+{
+    slong K1 = M->R->naxes == 2 ? M->R->axis[0].count : WORD_MAX;
+    fmpq vv[2];
+    rs_cosim_dbl_t d;
+    int ok;
+    vv[0] = M->x[0][idx % K1];
+    if (M->R->naxes == 2) vv[1] = M->x[1][idx / K1];
+    rs_cosim_dbl_init(d);
+    ok = rs_cosim_nforms_at(d, M->NF, vv) && rs_cosim_dbl_radius(rf, d) == RS_OK
+         && radius_verdict(rf) != RS_SWEEP_UNDECIDED;
+    rs_cosim_dbl_clear(d);
+    return ok;
+}
+
 #define COSIM_CROSSCHECK_EVERY 64   /* fast verdicts re-derived from the certified radius */
 
 /* the model's callback: the verdict the certified radius gives (6 digits),
@@ -317,6 +337,19 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     rs_cosim_init(cs, 1, 1);
     rs_radius_init(rr);
     rs_radius_init(rf);
+    /* `of radius`: the interval-double radius from the numeric forms first
+     * (cosim_dbl.h, no exact model built); the exact model only where it
+     * cannot decide and at every 64th point (the cross-check below) */
+    if (M->NF != NULL && M->R->of != RS_SWEEP_OF_STABILITY) {
+        have_fast = cosim_dbl_point(rf, M, idx);
+        if (have_fast && idx % COSIM_CROSSCHECK_EVERY != 0) {
+            radius_cells(row, rf);
+            rs_radius_clear(rf);
+            rs_radius_clear(rr);
+            rs_cosim_clear(cs);
+            return;
+        }
+    }
     row->d.status = cosim_map_build(cs, M, idx, err);
     if (row->d.status == RS_OK && M->R->of == RS_SWEEP_OF_STABILITY) {
         fast = cosim_fast_verdict(cs);
@@ -328,7 +361,7 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     }
     /* `of radius`: the fast certified radius (cosim_fast.h) first, the full
      * one where its certificate fails and at every 64th point to cross-check */
-    if (row->d.status == RS_OK && M->R->of != RS_SWEEP_OF_STABILITY) {
+    if (row->d.status == RS_OK && M->R->of != RS_SWEEP_OF_STABILITY && !have_fast) {
         rs_error_t e;
         rs_error_init(e);
         /* an interval containing 1 goes the full route, as before */
@@ -377,12 +410,19 @@ static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, c
     M->x[0] = x0;
     M->x[1] = x1;
     M->F = rs_model_cosim(run->m, run->err);
+    M->NF = NULL;
     r = M->F != NULL ? RS_OK : run->err->code;
     if (r == RS_OK) {
         rs_cosim_t cs;
         rs_cosim_init(cs, 1, 1);
         r = cosim_map_build(cs, M, 0, run->err);
         rs_cosim_clear(cs);
+    }
+    if (r == RS_OK && R->of != RS_SWEEP_OF_STABILITY) {
+        const char *names[2];
+        names[0] = R->axis[0].name;
+        names[1] = R->naxes == 2 ? R->axis[1].name : NULL;
+        M->NF = rs_cosim_nforms_new(M->F, run->c, names, R->naxes);
     }
     m->point = cosim_map_point;
     m->model = M;
@@ -403,6 +443,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
     r = cosim_grid_init(&M, &m, run, R, xs[0], xs[1]);
     if (r == RS_OK) r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
+    rs_cosim_nforms_free(M.NF);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
@@ -421,6 +462,7 @@ int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_
 
 void rs_cosim_sweep_model_free(rs_sweep_model_t *m)
 {
+    if (m->model != NULL) rs_cosim_nforms_free(((cosim_map_t *) m->model)->NF);
     flint_free(m->model);
     m->model = NULL;
 }

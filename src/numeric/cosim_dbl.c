@@ -109,11 +109,11 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
         nu *= 0.5;   /* exact */
         if (++j > 200) return 0;
     }
-    /* N: nu^{N+1} / (N+1)! below 2^-70 (term computed with upward slack) */
+    /* N: nu^{N+1} / (N+1)! below 2^-62 (term computed with upward slack) */
     term = nu;
     for (N = 1; N < 40; N++) {
         term = up_(term * nu / (double) (N + 1), 4);
-        if (term < 0x1p-70) break;
+        if (term < 0x1p-62) break;
     }
     /* remainder of every matrix Y with ||Y|| <= nu: term / (1 - nu / (N + 2)) */
     rem = up_(term / (1.0 - nu / (double) (N + 2)), 6);

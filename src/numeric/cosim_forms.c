@@ -215,7 +215,7 @@ rs_cosim_nforms_struct *rs_cosim_nforms_new(const rs_cosim_model_struct *F, cons
         }
         for (i = 0; i < nf; i++) N->in_var[m++] = n + i;
         N->m = m;
-        ok = m > 0 && rs_cosim_dbl_set_dims(N->tmpl, N->nstate[0], N->nstate[1], m, method, c->couple_order, err) == RS_OK;
+        ok = m > 0 && m <= RS_COSIM_MAX_INPUTS && n <= RS_COSIM_MAX_DIM && rs_cosim_dbl_set_dims(N->tmpl, N->nstate[0], N->nstate[1], m, method, c->couple_order, err) == RS_OK;
         if (ok) ok = rs_dbl_set_fmpq(&N->tmpl->Hm, &N->tmpl->Hr, h[0]);
     }
     fmpq_mpoly_clear(p, ts->ctx);
