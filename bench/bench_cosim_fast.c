@@ -8,7 +8,7 @@
  *
  * Li et al.'s force/force model, explicit k = 1, c1 = 101/100, d1 = 1/5,
  * every alpha 1 (cases/li-explicit-k1.case), acc1 on 64 values in [0, 3]:
- * median in-process time per point (one thread) of
+ * median in-process CPU time per point (one thread) of
  *   certified   rs_cosim_radius(6 digits): today's map point
  *   transition  the one-step map alone (matrix exponentials, Arb, 64 bits)
  *   double      transition at 64 bits -> doubles -> GSL eigenvalues: an
@@ -16,6 +16,12 @@
  *   eig64       transition at 64 bits -> acb_mat_approx_eig_qr and
  *               acb_mat_eig_simple at 64 bits: a low-precision certification
  *               of the eigenvalues
+ *   fast Arb    rs_cosim_fast_radius (64 bits: the Arb Gershgorin route)
+ *   dbl map     rs_cosim_dbl_transition: the one-step map in interval
+ *               double (cosim_dbl.h; the model set before the clock starts:
+ *               a map evaluates it from its numeric forms, cosim_forms.h)
+ *   dbl radius  rs_cosim_dbl_radius: the certified radius in interval
+ *               double (the maps' first route)
  * and how often the double estimate's verdict (rho < 1) agrees with the
  * certified one.  No assertions: this only measures. */
 #include <math.h>
@@ -26,11 +32,13 @@
 #include <gsl/gsl_complex_math.h>
 #include <gsl/gsl_eigen.h>
 #include "recstab/cosim.h"
+#include "numeric/cosim_fast.h"
+#include "numeric/cosim_dbl.h"
 
 static double now(void)
 {
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);   /* CPU: the machine is shared */
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
@@ -40,7 +48,7 @@ static int cmpd(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-enum { NPTS = 64, REPS = 5 };
+enum { NPTS = 64, REPS = 5, NST = 7 };
 
 /* the uncertified double radius of M (GSL Hessenberg-QR), or -1 */
 static double rho_double(const arb_mat_t M, gsl_matrix *G, gsl_vector_complex *ev, gsl_eigen_nonsymm_workspace *w)
@@ -63,7 +71,9 @@ int main(void)
     rs_radius_t r;
     rs_error_t err;
     fmpq_t c1, d1, one, acc;
-    double t[4][NPTS * REPS], sum_rho = 0;
+    double t[NST][NPTS * REPS], sum_rho = 0;
+    rs_cosim_dbl_t dm;
+    rs_radius_t rf;
     int k, p, agree = 0, certified = 0;
     slong d;
     fmpq_init(c1); fmpq_init(d1); fmpq_init(one); fmpq_init(acc);
@@ -72,6 +82,8 @@ int main(void)
     fmpq_one(one);
     rs_cosim_init(cs, 2, 2);
     rs_radius_init(r);
+    rs_radius_init(rf);
+    rs_cosim_dbl_init(dm);
     for (p = 0; p < NPTS; p++) {
         arb_mat_t M;
         acb_mat_t A, R;
@@ -111,6 +123,19 @@ int main(void)
             acb_mat_approx_eig_qr(Ea, NULL, R, A, NULL, 0, 64);
             acb_mat_eig_simple(E, NULL, NULL, A, Ea, R, 64);
             t[3][p * REPS + k] = now() - t0;
+            t0 = now();
+            rs_cosim_fast_radius(rf, cs, 64, err);
+            t[4][p * REPS + k] = now() - t0;
+            rs_cosim_dbl_set_cosim(dm, cs, err);   /* a map builds it from its numeric forms */
+            t0 = now();
+            {
+                double Tm[64], Tr[64];
+                rs_cosim_dbl_transition(Tm, Tr, dm);
+            }
+            t[5][p * REPS + k] = now() - t0;
+            t0 = now();
+            rs_cosim_dbl_radius(rf, dm);
+            t[6][p * REPS + k] = now() - t0;
             if (k == 0 && rc == RS_OK) {
                 arb_t o;
                 arb_init(o);
@@ -133,9 +158,10 @@ int main(void)
         arb_mat_clear(M);
     }
     {
-        const char *names[4] = {"certified (today's point)", "transition (64 bits)", "double estimate",
-                                "eig64 certification"};
-        for (k = 0; k < 4; k++) {
+        const char *names[NST] = {"certified (full radius)", "transition (64 bits)", "double estimate",
+                                  "eig64 certification", "fast Arb radius", "dbl map (interval double)",
+                                  "dbl radius (interval double)"};
+        for (k = 0; k < NST; k++) {
             qsort(t[k], NPTS * REPS, sizeof(double), cmpd);
             printf("%-28s median %8.1f us/point  (%7.0f points/s)\n", names[k], 1e6 * t[k][NPTS * REPS / 2],
                    1.0 / t[k][NPTS * REPS / 2]);
@@ -144,6 +170,8 @@ int main(void)
     printf("transition dimension %ld; double verdict agrees with the certified one at %d of %d decided points "
            "(mean double rho %.6f)\n", (long) d, agree, certified, sum_rho / NPTS);
     rs_radius_clear(r);
+    rs_radius_clear(rf);
+    rs_cosim_dbl_clear(dm);
     rs_cosim_clear(cs);
     fmpq_clear(c1); fmpq_clear(d1); fmpq_clear(one); fmpq_clear(acc);
     flint_cleanup();
