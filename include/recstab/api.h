@@ -51,6 +51,10 @@ json_t *rs_run_json_document(json_t *docs, int ncases);
  * two spaces, each row of "rows" and "boundary_rows" on one line, a final
  * newline; NULL when memory ran out. */
 char *rs_run_json_dumps(json_t *top);
+/* The same for documents whose maps were streamed to files
+ * (rs_sweep_options_t.table_spool): spool(arg, id) gives back the stream
+ * of table id (read from its start), whose rows are written as "rows". */
+char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), void *arg);
 
 /* The one-call API: runs case_text (named source_name in messages, includes
  * relative to it; NULL: "<string>") exactly as `recstab --json` would and

@@ -25,6 +25,7 @@
 #ifndef RECSTAB_SWEEP_H
 #define RECSTAB_SWEEP_H
 
+#include <stdio.h>
 #include <flint/flint.h>
 #include <flint/fmpz_poly.h>
 #include "recstab/error.h"
@@ -52,6 +53,16 @@ typedef struct {
      * "boundary_rows"): all when < 0 (the default), else the first json_rows
      * and "rows_omitted" (--json-rows N) */
     slong json_rows;
+    /* Maps streamed: when not NULL, called once per map; the map's CSV
+     * table (header line, then each block of rows as soon as it is
+     * computed) is written to the stream it returns (open for writing and
+     * reading, owned by the caller) instead of being held in memory: the
+     * map element then has "table_spool": the id the call stored in *id
+     * and no "table"; its "rows" is {"spool": id, "count": N}, the first N
+     * rows of the table, which rs_run_json_dumps_spool writes as the rows.
+     * NULL (the default): "table" and "rows" in the element. */
+    FILE *(*table_spool)(void *arg, slong *id);
+    void *table_spool_arg;
 } rs_sweep_options_t;
 
 /* shard 1/1, RS_SWEEP_MAX_POINTS_DEFAULT, no progress, RS_LEVEL_FAST, every row.  The

@@ -11,6 +11,7 @@
 #include "recstab/casefile.h"
 #include "recstab/model.h"
 #include "recstab/str.h"
+#include "analysis/sweep_impl.h"
 
 void rs_run_options_default(rs_run_options_t *ro)
 {
@@ -90,6 +91,7 @@ json_t *rs_run_json_document(json_t *docs, int ncases)
         /* the rows are in "rows": the CSV text for files and plots goes */
         for (k = 0; k < json_array_size(res); k++) {
             json_object_del(json_array_get(res, k), "table");
+            json_object_del(json_array_get(res, k), "table_spool");
             json_object_del(json_array_get(res, k), "boundary_table");
         }
     }
@@ -119,7 +121,8 @@ static void rowsets_swap(rowsets_t *rs, json_t *top)
             for (m = 0; m < 2; m++) {
                 json_t *r = json_object_get(o, keys[m]);
                 char ph[48];
-                if (!json_is_array(r)) continue;
+                /* an array, or a spooled table's {"spool": id, "count": n} */
+                if (!json_is_array(r) && !(json_is_object(r) && json_object_get(r, "spool") != NULL)) continue;
                 rs->arr = realloc(rs->arr, (rs->n + 1) * sizeof(json_t *));
                 rs->owner = realloc(rs->owner, (rs->n + 1) * sizeof(json_t *));
                 rs->key = realloc(rs->key, (rs->n + 1) * sizeof(char *));
@@ -134,7 +137,35 @@ static void rowsets_swap(rowsets_t *rs, json_t *top)
     }
 }
 
+/* The first count rows of the spooled table (its header line first) as
+ * rows of the document, each on its own line at indent + 2. */
+static void spool_rows(FILE *f, FILE *sp, slong count, size_t indent)
+{
+    char *line = NULL, *exact = NULL;
+    size_t cap = 0;
+    ssize_t n;
+    slong r = 0;
+    if (sp == NULL || fseek(sp, 0, SEEK_SET) != 0) return;
+    if ((n = getline(&line, &cap, sp)) > 0) exact = rs_sweep_exact_columns(line, (size_t) n - (line[n - 1] == '\n'));
+    while (r < count && (n = getline(&line, &cap, sp)) > 0) {
+        json_t *row = rs_sweep_json_row(line, (size_t) n - (line[n - 1] == '\n'), exact);
+        char *text = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
+        fprintf(f, "%s\n%*s%s", r ? "," : "", (int) indent + 2, "", text ? text : "null");
+        free(text);
+        json_decref(row);
+        r++;
+    }
+    if (r > 0) fprintf(f, "\n%*s", (int) indent, "");
+    free(line);
+    free(exact);
+}
+
 char *rs_run_json_dumps(json_t *top)
+{
+    return rs_run_json_dumps_spool(top, NULL, NULL);
+}
+
+char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
 {
     rowsets_t rs = {NULL, NULL, NULL, 0};
     char *s, *out = NULL;
@@ -157,6 +188,15 @@ char *rs_run_json_dumps(json_t *top)
             for (ls = q; ls > s && ls[-1] != '\n'; ls--) {}
             for (indent = 0; ls[indent] == ' '; indent++) {}
             fputc('[', f);
+            if (id < rs.n && json_is_object(rs.arr[id])) {
+                json_t *sp = rs.arr[id];
+                if (spool != NULL)
+                    spool_rows(f, spool(arg, (slong) json_integer_value(json_object_get(sp, "spool"))),
+                               (slong) json_integer_value(json_object_get(sp, "count")), indent);
+                fputc(']', f);
+                p = strchr(q + 1, '"') + 1;
+                continue;
+            }
             for (r = 0; id < rs.n && r < json_array_size(rs.arr[id]); r++) {
                 char *row = json_dumps(json_array_get(rs.arr[id], r), JSON_COMPACT | JSON_ENCODE_ANY);
                 fprintf(f, "%s\n%*s%s", r ? "," : "", (int) indent + 2, "", row ? row : "null");

@@ -2,6 +2,7 @@
  * (sweep_impl.h): the shard of the points, their computation (numeric/
  * engine.c: OpenMP, MPI, progress, budget), point errors, the limit
  * messages, the map's columns and table, the JSON summary. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +25,8 @@ void rs_sweep_options_default(rs_sweep_options_t *o)
     o->progress_arg = NULL;
     o->first_level = RS_LEVEL_FAST;
     o->json_rows = -1;
+    o->table_spool = NULL;
+    o->table_spool_arg = NULL;
 }
 
 void rs_sweep_shard_range(slong *lo, slong *hi, slong npoints, slong I, slong N)
@@ -110,6 +113,7 @@ int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run,
     e.progress = so->progress;
     e.progress_arg = so->progress_arg;
     e.what = what;
+    e.done0 = e.total = 0;
     rs_engine_run(*rows, sizeof(rs_sweep_row_t), *lo, *hi, &e);
     return point_errors(run, q, m, *rows, *lo, *hi - *lo, desc);
 }
@@ -148,42 +152,56 @@ static json_t *cell_json(const char *s, size_t n, int exact)
     return json_real(d);
 }
 
+char *rs_sweep_exact_columns(const char *header, size_t n)
+{
+    const char *c = header, *nl = header + n;
+    char *exact = calloc(n + 2, 1);
+    slong ncol = 0;
+    for (;;) {
+        const char *e = c;
+        while (e < nl && *e != ',') e++;
+        exact[ncol++] = (e - c > 6 && strncmp(e - 6, "_exact", 6) == 0);
+        if (e >= nl) break;
+        c = e + 1;
+    }
+    exact[ncol] = 2;   /* the end of the flags */
+    return exact;
+}
+
+json_t *rs_sweep_json_row(const char *p, size_t n, const char *exact)
+{
+    json_t *row = json_array();
+    const char *c = p, *nl = p + n;
+    int past = exact == NULL;   /* no header: no exact column */
+    slong k;
+    for (k = 0;; k++) {
+        const char *e = c;
+        if (!past && exact[k] == 2) past = 1;
+        while (e < nl && *e != ',') e++;
+        json_array_append_new(row, cell_json(c, (size_t) (e - c), !past && exact[k]));
+        if (e >= nl) break;
+        c = e + 1;
+    }
+    return row;
+}
+
 void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap)
 {
     json_t *rows = json_array();
     const char *p = table, *nl;
     char *exact = NULL;
-    slong nrow = 0, ncol = 0, k;
+    slong nrow = 0;
     char omitted[64];
     /* the header: which columns are exact */
     nl = strchr(p, '\n');
     if (nl != NULL) {
-        const char *c = p;
-        exact = calloc((size_t) (nl - p) + 2, 1);
-        for (;;) {
-            const char *e = c;
-            while (e < nl && *e != ',') e++;
-            exact[ncol++] = (e - c > 6 && strncmp(e - 6, "_exact", 6) == 0);
-            if (e >= nl) break;
-            c = e + 1;
-        }
+        exact = rs_sweep_exact_columns(p, (size_t) (nl - p));
         p = nl + 1;
     } else p = "";
     for (; *p; p = nl + 1, nrow++) {
         nl = strchr(p, '\n');
         if (nl == NULL) nl = p + strlen(p);
-        if (cap < 0 || nrow < cap) {
-            json_t *row = json_array();
-            const char *c = p;
-            for (k = 0;; k++) {
-                const char *e = c;
-                while (e < nl && *e != ',') e++;
-                json_array_append_new(row, cell_json(c, (size_t) (e - c), k < ncol && exact[k]));
-                if (e >= nl) break;
-                c = e + 1;
-            }
-            json_array_append_new(rows, row);
-        }
+        if (cap < 0 || nrow < cap) json_array_append_new(rows, rs_sweep_json_row(p, (size_t) (nl - p), exact));
         if (*nl == '\0') { nrow++; break; }
     }
     json_object_set_new(o, key, rows);
@@ -264,18 +282,27 @@ void rs_sweep_put_double_of(FILE *f, const fmpq_t x)
 
 /* ---- JSON ----------------------------------------------------------------------------------- */
 
-/* counts, seconds, etc. common to sweep and map elements */
-void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds)
-{
+/* the verdicts and deciding levels of rows counted, block by block */
+typedef struct {
     /* ver: stable, marginal, unstable, undefined, singular, undecided;
      * lev: RS_LEVEL_* (fast .. exact, double, certified) */
-    slong i, ver[6] = {0, 0, 0, 0, 0, 0}, lev[6] = {0, 0, 0, 0, 0, 0};
-    json_t *v, *d;
+    slong ver[6], lev[6];
+} tally_t;
+
+static void tally_add(tally_t *t, const rs_sweep_row_t *rows, slong n)
+{
+    slong i;
     for (i = 0; i < n; i++) {
         int c = rows[i].d.verdict;
-        ver[c < 0 ? 3 : c == RS_STATUS_SINGULAR ? 4 : c == RS_SWEEP_UNDECIDED ? 5 : c]++;
-        if (c >= 0) lev[rows[i].d.level]++;
+        t->ver[c < 0 ? 3 : c == RS_STATUS_SINGULAR ? 4 : c == RS_SWEEP_UNDECIDED ? 5 : c]++;
+        if (c >= 0) t->lev[rows[i].d.level]++;
     }
+}
+
+static void json_summary_of(json_t *o, const tally_t *t, double seconds)
+{
+    const slong *ver = t->ver, *lev = t->lev;
+    json_t *v, *d;
     v = json_pack("{s:I,s:I,s:I}", "stable", (json_int_t) ver[0], "marginal", (json_int_t) ver[1],
                   "unstable", (json_int_t) ver[2]);
     if (ver[3] > 0) json_object_set_new(v, "undefined", json_integer(ver[3]));
@@ -295,6 +322,15 @@ void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, doubl
     json_object_set_new(o, "threads", json_integer(1));
 #endif
     json_object_set_new(o, "csv", json_null());
+}
+
+/* counts, seconds, etc. common to sweep and map elements */
+void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds)
+{
+    tally_t t;
+    memset(&t, 0, sizeof t);
+    tally_add(&t, rows, n);
+    json_summary_of(o, &t, seconds);
 }
 
 json_t *rs_sweep_json_sets(rs_run_t *run, const char *const *keep, slong nkeep)
@@ -328,17 +364,20 @@ static json_t *map_columns(const rs_sweep_request_t *R)
     return cols;
 }
 
-/* the CSV text: the column header, then rows [lo, hi) (malloc'd) */
-static char *map_table(const json_t *cols, const rs_sweep_request_t *R, const fmpq *const *xs,
-                       const rs_sweep_row_t *rows, slong lo, slong hi)
+/* the CSV table: the column header line */
+static void map_table_header(FILE *f, const json_t *cols)
 {
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    slong k, i, K1 = R->axis[0].count;
+    slong k;
     for (k = 0; k < (slong) json_array_size(cols); k++)
         fprintf(f, "%s%s", k ? "," : "", json_string_value(json_array_get(cols, k)));
     fputc('\n', f);
+}
+
+/* the CSV table: rows [lo, hi), rows[0] being point lo */
+static void map_table_rows(FILE *f, const rs_sweep_request_t *R, const fmpq *const *xs, const rs_sweep_row_t *rows,
+                           slong lo, slong hi)
+{
+    slong i, K1 = R->axis[0].count;
     for (i = lo; i < hi; i++) {
         const rs_sweep_row_t *p = rows + (i - lo);
         slong ii = i % K1, jj = i / K1;
@@ -354,17 +393,19 @@ static char *map_table(const json_t *cols, const rs_sweep_request_t *R, const fm
         rs_sweep_put_radius(f, p);
         fprintf(f, ",%s\n", p->d.verdict < 0 ? "" : rs_sweep_level_names[p->d.level]);
     }
-    fclose(f);
-    return buf;
 }
 
-json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
-                          const rs_sweep_row_t *rows, slong lo, slong hi)
+/* The map element of rows [lo, hi) whose verdicts t counted, its table
+ * written to f (header and rows): the table text buf (the default) into
+ * "table" and "rows", else (spooled, id) {"spool": id, "count": N} as
+ * "rows".  Keys in the order readers have always seen. */
+static json_t *map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, json_t *cols,
+                        const tally_t *t, slong lo, slong hi, const char *buf, slong id)
 {
     const rs_sweep_axis_t *X = R->axis;
-    json_t *o = json_object(), *cols = map_columns(R);
+    json_t *o = json_object();
     const char *keep[2];
-    char *buf;
+    slong cap = run->opt->sweep.json_rows;
     keep[0] = X[0].name;
     keep[1] = X[1].name;
     json_object_set_new(o, "analysis", json_string("map"));
@@ -376,36 +417,102 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     json_object_set_new(o, "of", json_string(rs_sweep_of_names[R->of]));
     rs_sweep_json_shard(o, run, X[0].count * X[1].count, lo, hi);
     json_object_set_new(o, "columns", cols);
-    buf = map_table(cols, R, xs, rows, lo, hi);
-    rs_sweep_json_summary(o, rows, hi - lo, 0);
+    json_summary_of(o, t, 0);
     json_object_set_new(o, "substituted", rs_sweep_json_sets(run, keep, 2));
     json_object_set_new(o, "text", json_string(q->text));
-    json_object_set_new(o, "table", json_string(buf));
-    rs_sweep_json_rows(o, "rows", buf, run->opt->sweep.json_rows);
+    if (buf != NULL) {
+        json_object_set_new(o, "table", json_string(buf));
+        rs_sweep_json_rows(o, "rows", buf, cap);
+    } else {
+        slong n = hi - lo;
+        json_object_set_new(o, "table_spool", json_integer(id));
+        json_object_set_new(o, "rows", json_pack("{s:I,s:I}", "spool", (json_int_t) id, "count",
+                                                 (json_int_t) (cap >= 0 && n > cap ? cap : n)));
+        if (cap >= 0 && n > cap) json_object_set_new(o, "rows_omitted", json_integer(n - cap));
+    }
+    return o;
+}
+
+json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
+                          const rs_sweep_row_t *rows, slong lo, slong hi)
+{
+    json_t *cols = map_columns(R), *o;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    tally_t t;
+    memset(&t, 0, sizeof t);
+    tally_add(&t, rows, hi - lo);
+    map_table_header(f, cols);
+    map_table_rows(f, R, xs, rows, lo, hi);
+    fclose(f);
+    o = map_json(run, q, R, cols, &t, lo, hi, buf, 0);
     free(buf);
     return o;
 }
+
+/* Points per block of a map: the per-point results of one block only are
+ * held (rs_sweep_row_t is a few hundred bytes), each block's rows go to
+ * the table as soon as it is computed. */
+#define MAP_BLOCK 32768
 
 int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
                         const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg)
 {
     const rs_sweep_axis_t *X = R->axis;
-    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0;
-    rs_sweep_row_t *rows = NULL;
-    char what[200], desc[200];
+    const rs_sweep_options_t *so = &run->opt->sweep;
+    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0, b, id = 0;
+    rs_sweep_row_t *rows;
+    json_t *cols = map_columns(R);
+    char what[200], desc[200], *buf = NULL;
+    size_t len = 0;
     double t_points;
-    int r;
+    tally_t t;
+    rs_engine_t e;
+    FILE *f = NULL;
+    int r = RS_OK;
     snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
     snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
-    r = rs_sweep_compute(&rows, &lo, &hi, run, q, m, npoints, what, desc);
+    memset(&t, 0, sizeof t);
+    rs_grid_shard_range(&lo, &hi, npoints, so->shard_index, so->shard_count);
+    if (so->table_spool != NULL && (f = so->table_spool(so->table_spool_arg, &id)) == NULL)
+        r = rs_req_error(run, q, q->text, RS_ERR_IO, "%s", "cannot create a temporary file for the map's table");
+    if (f == NULL && r == RS_OK) f = open_memstream(&buf, &len);
+    rows = calloc((size_t) (hi > lo ? (hi - lo < MAP_BLOCK ? hi - lo : MAP_BLOCK) : 1), sizeof(rs_sweep_row_t));
+    e.point = engine_point;
+    e.arg = (void *) m;
+    e.serial = m->serial;
+    e.progress = so->progress;
+    e.progress_arg = so->progress_arg;
+    e.what = what;
+    e.total = hi - lo;
+    if (r == RS_OK) map_table_header(f, cols);
+    /* block after block: a point's error ends the map at the first block
+     * that has one (its first failing point, as when computed at once) */
+    for (b = lo; b < hi && r == RS_OK; b += MAP_BLOCK) {
+        slong bhi = hi - b < MAP_BLOCK ? hi : b + MAP_BLOCK;
+        e.done0 = b - lo;
+        rs_engine_run(rows, sizeof(rs_sweep_row_t), b, bhi, &e);
+        r = point_errors(run, q, m, rows, b, bhi - b, desc);
+        if (r != RS_OK) break;
+        tally_add(&t, rows, bhi - b);
+        map_table_rows(f, R, xs, rows, b, bhi);
+    }
+    free(rows);
     t_points = rs_sweep_now() - t0;
+    if (r == RS_OK && so->table_spool != NULL && (fflush(f) != 0 || ferror(f)))
+        r = rs_req_error(run, q, q->text, RS_ERR_IO, "cannot write the map's table to its temporary file: %s",
+                         strerror(errno));
+    /* the caller's spool stays open; the in-memory table is complete once closed */
+    if (so->table_spool == NULL && f != NULL) fclose(f);
     if (r == RS_OK) {
-        json_t *o = rs_sweep_map_json(run, q, R, xs, rows, lo, hi);
+        json_t *o = map_json(run, q, R, json_incref(cols), &t, lo, hi, so->table_spool == NULL ? buf : NULL, id);
         if (decorate != NULL) decorate(o, arg);
         json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
         json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));
         json_array_append_new(run->results, o);
     }
-    rs_sweep_rows_free(rows, hi - lo);
+    json_decref(cols);
+    free(buf);
     return r;
 }

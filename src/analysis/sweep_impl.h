@@ -120,6 +120,11 @@ void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo
  * strings for text and the exact NAME_exact columns); only the first cap
  * rows when cap >= 0, and then o[key + "_omitted"]: how many were left out. */
 void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap);
+/* The same one row at a time: the flags of a header line of n bytes (which
+ * columns are NAME_exact; malloc'd), and the row of the n bytes at line
+ * (no newline) as its JSON array. */
+char *rs_sweep_exact_columns(const char *header, size_t n);
+json_t *rs_sweep_json_row(const char *line, size_t n, const char *exact);
 /* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
 void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
 /* {NAME: value} of the case's set values except keep[] */

@@ -21,6 +21,7 @@
 #include "recstab/api.h"
 #include "recstab/sweep.h"
 #include "plot.h"
+#include "spool.h"
 #include "recstab/casefile.h"
 #include "recstab/model.h"
 #include "recstab/scheme.h"
@@ -389,6 +390,10 @@ static void sweep_setup(cli_t *cli, progress_t *pg)
     cli->opt.sweep.max_points = cli->max_points;
     cli->opt.sweep.first_level = cli->first_level;
     cli->opt.sweep.json_rows = cli->json_rows;
+    /* maps stream their tables to temporary files (spool.h), read back
+     * when the outputs are written: never a whole map in memory */
+    cli->opt.sweep.table_spool = rs_cli_spool_open;
+    cli->opt.sweep.table_spool_arg = NULL;
     memset(pg, 0, sizeof *pg);
     pg->tty = isatty(2);
     if (cli->rank == 0 && (pg->tty || cli->progress)) {
@@ -438,7 +443,7 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
         }
     } else if (cli->json) {
         json_t *top = rs_run_json_document(docs, cli->ncases);
-        char *text = rs_run_json_dumps(top);
+        char *text = rs_run_json_dumps_spool(top, rs_cli_spool_get, NULL);
         if (text != NULL) fputs(text, out);
         free(text);
         json_decref(top);
@@ -561,6 +566,7 @@ end:
         if (!owned) free(set.o[i]);
     }
     rs_cli_signals_stop();
+    rs_cli_spools_close();
     json_decref(docs);
     free(cli.sets); free(cli.analyses); free(cli.cases); free(cli.plot_paths);
 #ifdef RS_MPI

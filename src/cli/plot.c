@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <jansson.h>
 #include "plot.h"
+#include "spool.h"
 #include "recstab/casefile.h"
 
 typedef struct {
@@ -37,7 +38,7 @@ static size_t collect(json_t *docs, tab_t *out)
         for (k = 0; k < json_array_size(res); k++) {
             json_t *o = json_array_get(res, k);
             const char *a = jstr(o, "analysis");
-            if (a == NULL || (strcmp(a, "sweep") != 0 && strcmp(a, "map") != 0) || jstr(o, "table") == NULL)
+            if (a == NULL || (strcmp(a, "sweep") != 0 && strcmp(a, "map") != 0) || (jstr(o, "table") == NULL && rs_cli_spool_of(o) < 0))
                 continue;
             if (out) {
                 out[n].case_path = jstr(d, "case");
@@ -348,15 +349,18 @@ static char *csv_path_of(const char *path, size_t t, int boundary)
 }
 
 /* One table into its own staged file: "# " comment lines, then the
- * table (its header line first). */
-static int csv_write_one(rs_cli_out_t *o, const char *comments, const char *table, char *err, size_t errlen)
+ * table (its header line first), or the spooled table `spool` when table
+ * is NULL (copied: a map's table is never held in memory whole). */
+static int csv_write_one(rs_cli_out_t *o, const char *comments, const char *table, slong spool, char *err,
+                         size_t errlen)
 {
     int fd = stage_open(o, err, errlen), bad = 0;
     FILE *f;
     if (fd < 0) return -1;
     f = fdopen(fd, "w");
     fputs(comments, f);
-    fputs(table, f);
+    if (table != NULL) fputs(table, f);
+    else if (rs_cli_spool_copy(f, spool, 0) != 0) bad = 1;
     if (fflush(f) != 0 || ferror(f)) bad = 1;
     if (fclose(f) != 0) bad = 1;
     if (bad) {
@@ -407,7 +411,7 @@ int rs_cli_csv_stage(rs_cli_out_t *o, rs_cli_outs_t *set, json_t *docs, long sha
         free(tabs);
         return -1;
     }
-    if (n == 0) rc = csv_write_one(o, "# recstab: no sweep or map in this run\n", "", err, errlen);
+    if (n == 0) rc = csv_write_one(o, "# recstab: no sweep or map in this run\n", "", -1, err, errlen);
     for (i = 0; i < n && rc == 0; i++) {
         json_t *tab = tabs[i].el;
         const char *bt = jstr(tab, "boundary_table");
@@ -430,7 +434,7 @@ int rs_cli_csv_stage(rs_cli_out_t *o, rs_cli_outs_t *set, json_t *docs, long sha
         }
         fclose(c);
         if (to == NULL) rc = -1;
-        else rc = csv_write_one(to, cbuf, jstr(tab, "table"), err, errlen);
+        else rc = csv_write_one(to, cbuf, jstr(tab, "table"), rs_cli_spool_of(tab), err, errlen);
         free(cbuf);
         if (rc == 0) set_path_key(tab, "csv", i == 0 ? path : tpath);
         free(tpath);
@@ -454,7 +458,7 @@ int rs_cli_csv_stage(rs_cli_out_t *o, rs_cli_outs_t *set, json_t *docs, long sha
                 fprintf(c, "# shard %ld/%ld: boundary rows only in shard 1\n", shard_index, shard_count);
             fclose(c);
             to = csv_extra(set, bpath, err, errlen);
-            rc = to == NULL ? -1 : csv_write_one(to, cbuf, bt, err, errlen);
+            rc = to == NULL ? -1 : csv_write_one(to, cbuf, bt, -1, err, errlen);
             if (rc == 0) set_path_key(tab, "boundary_csv", bpath);
             free(cbuf);
             free(bpath);
@@ -471,8 +475,15 @@ void rs_cli_trim_tables(json_t *docs, int have_csv, size_t max_rows)
     collect(docs, tabs);
     for (i = 0; i < n; i++) {
         json_t *o = tabs[i].el;
-        size_t rows = count_rows(jstr(o, "table"));
+        slong sp = rs_cli_spool_of(o);
+        size_t rows = sp >= 0 ? (size_t) json_integer_value(json_object_get(o, "computed")) : count_rows(jstr(o, "table"));
         const char *bt = jstr(o, "boundary_table");
+        if (sp >= 0 && !have_csv && rows <= max_rows) {
+            /* a small spooled table is shown in the report, as one held in memory */
+            char *text = rs_cli_spool_text(sp);
+            json_object_set_new(o, "table", json_string(text != NULL ? text : ""));
+            free(text);
+        }
         if (have_csv || rows > max_rows || (bt && count_rows(bt) > max_rows)) {
             if (!have_csv) {
                 char note[160];
@@ -539,12 +550,14 @@ static void put_table(FILE *f, const char *dir, char kind, size_t i)
     fprintf(f, "$%c%zu", kind, i);
 }
 
-/* a table's rows (without its header line) as the datablock $KIND I */
-static void put_datablock(FILE *g, char kind, size_t i, const char *table)
+/* a table's rows (without its header line) as the datablock $KIND I;
+ * table NULL: the spooled table `spool`, copied */
+static void put_datablock(FILE *g, char kind, size_t i, const char *table, slong spool)
 {
-    const char *nl = strchr(table, '\n');
+    const char *nl = table != NULL ? strchr(table, '\n') : NULL;
     fprintf(g, "$%c%zu << EOD\n", kind, i);
     if (nl != NULL) fputs(nl + 1, g);
+    else if (table == NULL) rs_cli_spool_copy(g, spool, 1);
     fputs("EOD\n", g);
 }
 
@@ -946,8 +959,9 @@ static void plot_write_script(FILE *g, const plot_t *pl, rs_cli_out_t **plots, i
     if (w <= 0) { w = 800L * cols; h = 600L * rows; }
     fputs("# recstab plot script: the tables of the run as datablocks, then each --plot output\n", g);
     for (i = 0; i < pl->n; i++) {
-        put_datablock(g, 't', i, jstr(pl->tabs[i].el, "table"));
-        if (jstr(pl->tabs[i].el, "boundary_table")) put_datablock(g, 'b', i, jstr(pl->tabs[i].el, "boundary_table"));
+        put_datablock(g, 't', i, jstr(pl->tabs[i].el, "table"), rs_cli_spool_of(pl->tabs[i].el));
+        if (jstr(pl->tabs[i].el, "boundary_table"))
+            put_datablock(g, 'b', i, jstr(pl->tabs[i].el, "boundary_table"), -1);
     }
     for (k = 0; k < nplots; k++) {
         const char *ext = ext_of(plots[k]->path);

@@ -67,11 +67,16 @@ static void gather(void *pts, size_t size, slong lo, slong hi, int serial)
 
 void rs_engine_run(void *pts, size_t size, slong lo, slong hi, const rs_engine_t *e)
 {
-    slong done = 0, mylo, myhi, k;
-    double last = now_seconds();
+    slong done = 0, mylo, myhi, k, total;
+    double last = now_seconds(), scale;
     my_block(&mylo, &myhi, lo, hi, e->serial);
+    /* a block of a longer loop reports the whole loop's points: this
+     * process's share of the block scaled to the block */
+    total = e->total > 0 ? e->total : myhi - mylo;
+    scale = e->total > 0 && myhi > mylo ? (double) (hi - lo) / (double) (myhi - mylo) : 1.0;
+#define ENGINE_DONE(d) (e->total > 0 ? e->done0 + (slong) ((double) (d) * scale) : (d))
     /* the start: the estimate of the time left counts from here */
-    if (e->progress != NULL && myhi > mylo) e->progress(e->progress_arg, e->what, 0, myhi - mylo);
+    if (e->progress != NULL && myhi > mylo && (e->total <= 0 || e->done0 == 0)) e->progress(e->progress_arg, e->what, 0, total);
 #pragma omp parallel for schedule(dynamic, 16) if (!e->serial)
     for (k = mylo; k < myhi; k++) {
         char *pt = (char *) pts + (size_t) (k - lo) * size;
@@ -91,11 +96,13 @@ void rs_engine_run(void *pts, size_t size, slong lo, slong hi, const rs_engine_t
                 double t = now_seconds();
                 if (t - last > 0.2) {
                     last = t;
-                    e->progress(e->progress_arg, e->what, d, myhi - mylo);
+                    e->progress(e->progress_arg, e->what, ENGINE_DONE(d), total);
                 }
             }
         }
     }
     gather(pts, size, lo, hi, e->serial);
-    if (e->progress != NULL) e->progress(e->progress_arg, e->what, myhi - mylo, myhi - mylo);
+    if (e->progress != NULL && (e->total <= 0 || e->done0 + (hi - lo) >= e->total))
+        e->progress(e->progress_arg, e->what, total, total);
+#undef ENGINE_DONE
 }

@@ -26,6 +26,9 @@ typedef struct {
     rs_engine_progress_fn progress;   /* NULL: none; else at the start (done 0), at most every 0.2 s, and at the end */
     void *progress_arg;
     const char *what;     /* "sweep w", "map x,y": for progress and budget messages */
+    /* a block of a longer loop (maps computed block by block): progress
+     * counts done0 points before [lo, hi) out of total (0: [lo, hi) is all) */
+    slong done0, total;
 } rs_engine_t;
 
 /* Points [lo, hi) into pts[0 .. hi-lo) (size bytes each). */
