@@ -11,12 +11,16 @@ WARN    += -Wmissing-prototypes -Wstrict-prototypes -Wshadow
 WARN    += $(if $(findstring clang,$(CC)),,-Wno-stringop-overread)
 OPT     ?= -O2 -g
 SAN     ?=
-# FLINT 3 (Arb is part of it; flint.pc, headers in include/flint/) when
-# pkg-config finds it, else Debian's FLINT 2.9 + Arb 2.23 (no .pc files)
-FLINT3  := $(shell pkg-config --atleast-version=3 flint 2>/dev/null && echo yes)
+# FLINT 3 (Arb is part of it: no -larb; flint.pc, every header in
+# include/flint/, found as <flint/fmpz.h> and <arb.h>) when pkg-config finds
+# it, else Debian's FLINT 2.9 + Arb 2.23 (no .pc files; Arb's library is
+# -lflint-arb).  `make print-flint` shows the choice; tests/cli/suite_build.sh
+# runs it with fake pkg-config programs (PKG_CONFIG=...).
+PKG_CONFIG ?= pkg-config
+FLINT3  := $(shell $(PKG_CONFIG) --atleast-version=3 flint 2>/dev/null && echo yes)
 ifeq ($(FLINT3),yes)
-FLINT_CFLAGS := $(shell pkg-config --cflags flint) -I$(shell pkg-config --variable=includedir flint)/flint
-FLINT_LIBS   := $(shell pkg-config --libs flint)
+FLINT_CFLAGS := $(shell $(PKG_CONFIG) --cflags flint) -I$(shell $(PKG_CONFIG) --variable=includedir flint)/flint
+FLINT_LIBS   := $(shell $(PKG_CONFIG) --libs flint)
 else
 FLINT_CFLAGS := -I/usr/include/flint
 FLINT_LIBS   := -lflint-arb -lflint
@@ -38,7 +42,10 @@ DEB_WHY := \
   libflint-dev:exact_polynomials,_FLINT libflint-arb-dev:certified_balls,_Arb \
   libgsl-dev:the_double_root_finder_of_sweeps libgmp-dev:big_integers libmpfr-dev:the_floats_of_Arb \
   libjansson-dev:JSON_documents libcmocka-dev:unit_tests_of_make_check gnuplot-nox:--plot \
-  python3-pytest:make_check_tests_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python
+  python3-pytest:make_check_tests_the_Python_package python3-numpy:numpy_arrays_of_maps_in_Python \
+  python3-pandas:make_check_reads_every_CSV_file_with_pandas \
+  texlive-latex-base:make_check_compiles_the_--latex_derivation_with_pdflatex \
+  poppler-utils:make_check_reads_the_text_of_the_PDF_with_pdftotext
 FUZZ_WHY := libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz
 VALGRIND_WHY := valgrind:make_check-valgrind
 BENCH_WHY := qepcad:the_QEPCAD_B_peer_of_make_bench pari-gp:the_PARI_peer_of_make_bench mpsolve:the_MPSolve_peer_of_make_bench
@@ -84,7 +91,7 @@ LIBSO  := $(BUILD)/librecstab.so
 BIN    := $(BUILD)/recstab
 EXAMPLE_BIN := $(patsubst examples/%.c,$(BUILD)/examples/%,$(sort $(wildcard examples/*.c)))
 
-.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers examples deps-fuzz deps-valgrind deps-list
+.PHONY: all deps check test demo install clean check-sanitize bench figures mpi print-public-headers examples deps-fuzz deps-valgrind deps-list print-flint
 
 all: $(LIBRS) $(LIBSO) $(BIN) $(BUILD)/recstab.pc
 
@@ -97,6 +104,11 @@ deps-fuzz:
 
 deps-valgrind:
 	$(call deb-install,check-valgrind,$(VALGRIND_WHY))
+
+print-flint:
+	@echo "FLINT3=$(FLINT3)"
+	@echo "FLINT_CFLAGS=$(FLINT_CFLAGS)"
+	@echo "FLINT_LIBS=$(FLINT_LIBS)"
 
 deps-list:
 	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY) $(BENCH_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done

@@ -31,5 +31,5 @@ if command -v pdflatex >/dev/null 2>&1 && command -v pdftotext >/dev/null 2>&1; 
     pdftotext "$T/cd.pdf" "$T/cd.txt" 2>/dev/null
     grep -q 'Stability region in' "$T/cd.txt" && grep -q 'Central difference' "$T/cd.txt" && ok "pdflatex: the PDF has the derivation's text" || fail "pdflatex: $(tail -5 "$T/cd.log")"
 else
-    ok "skipped: pdflatex/pdftotext not installed (Debian: texlive-latex-base, poppler-utils)"
+    echo "skip pdflatex: pdflatex/pdftotext not installed (Debian: texlive-latex-base, poppler-utils; make deps installs them)"
 fi
