@@ -1,0 +1,71 @@
+#!/bin/sh
+# suite_stream.sh -- maps stream their tables (issue 16): a map of more
+# points than one block of the engine (32768) is written block by block to
+# an unlinked temporary file and read back for --csv, --json rows, --plot
+# and the report; nothing is left in TMPDIR, whether the run succeeds or
+# fails; progress counts the whole map, not each block.
+# Expected values, derived independently of recstab: x[n+1] = (a + b) x[n]
+# has the one root a + b, so at integer a, b a point is stable iff
+# a + b = 0, marginal iff |a + b| = 1 and unstable otherwise.  On the grid
+# a, b in -100..100 (201 x 201 = 40401 points, index = j*201 + i,
+# a = -100 + i, b = -100 + j) that is 201 stable points (the diagonal),
+# 2 * 200 = 400 marginal ones and 40401 - 601 = 39800 unstable ones.
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$(cd "$BUILD" 2>/dev/null && pwd)/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+check_exit() { if [ "$2" = "$3" ]; then ok "$1"; else fail "$1: exit $3, expected $2"; fi; }
+
+printf 'param a\nparam b\nunknown x\neq x[n+1] = (a+b)*x[n]\n' >"$T/ab.case"
+MAP="map a -100 100 201, b -100 100 201"
+mkdir "$T/tmp"
+
+TMPDIR="$T/tmp" "$RS" --threads 2 --progress --csv "$T/m.csv" --json --analyse "$MAP" "$T/ab.case" >"$T/m.json" 2>"$T/err"
+rc=$?
+check_exit "map of 40401 points, --csv and --json" 0 "$rc"
+# every row, in index order, each verdict the closed form's
+awk -F, '/^#/ || /^index/ {next}
+    { n++; if ($1 != n - 1 || $1 != $3 * 201 + $2 || $4 != -100 + $2 || $5 != -100 + $3) bad++
+      s = $4 + $5; v = (s == 0) ? "stable" : (s == 1 || s == -1) ? "marginal" : "unstable"
+      if ($8 != v) bad++; c[v]++ }
+    END { printf "%d %d %d %d %d\n", n, bad, c["stable"], c["marginal"], c["unstable"] }' "$T/m.csv" >"$T/count"
+[ "$(cat "$T/count")" = "40401 0 201 400 39800" ] && ok "streamed CSV: 40401 rows in order, verdicts |a+b| < 1, = 1, > 1" \
+    || fail "streamed CSV: rows, bad, stable, marginal, unstable = $(cat "$T/count")"
+grep -q '"stable": 201' "$T/m.json" && grep -q '"marginal": 400' "$T/m.json" && grep -q '"unstable": 39800' "$T/m.json" \
+    && ok "summary counted block by block" || fail "summary: $(grep -m3 '"stable"\|"marginal"\|"unstable"' "$T/m.json")"
+# the JSON rows are the CSV rows (read back from the same temporary file)
+if [ -x /usr/bin/python3 ]; then
+    /usr/bin/python3 - "$T/m.json" "$T/m.csv" >"$T/py" 2>&1 <<'EOP'
+import json, sys
+doc = json.load(open(sys.argv[1]))
+m = doc["cases"][0]["results"][0]
+rows = [l.rstrip("\n").split(",") for l in open(sys.argv[2]) if not l.startswith("#")][1:]
+ok = len(m["rows"]) == len(rows) == 40401 and "table_spool" not in m
+for r, c in zip(m["rows"], rows):
+    ok = ok and r[0] == int(c[0]) and r[7] == c[7] and str(r[5]) == c[5] and r[3] == float(c[3])
+print("same" if ok else "differ")
+EOP
+    grep -qx same "$T/py" && ok "JSON rows = CSV rows" || fail "JSON rows: $(cat "$T/py")"
+fi
+grep -q 'recstab: map a,b: 40401/40401 points done' "$T/err" && ok "progress counts the whole map" \
+    || fail "progress: $(tail -2 "$T/err")"
+grep -q 'recstab: map a,b: 32768/' "$T/err" && fail "progress restarted at a block" || ok "progress: one count across blocks"
+[ -z "$(ls -A "$T/tmp")" ] && ok "no temporary file left in TMPDIR" || fail "TMPDIR holds: $(ls "$T/tmp")"
+# --json-rows caps the rows read back
+"$RS" --json --json-rows 3 --analyse "$MAP" "$T/ab.case" >"$T/cap.json" 2>/dev/null
+# (3 rows of the map, 3 of its boundary: one array per line)
+grep -q '"rows_omitted": 40398' "$T/cap.json" && [ "$(grep -c '^ *\[-\?[0-9]*,' "$T/cap.json")" = 6 ] \
+    && ok "--json-rows 3: 3 rows and rows_omitted 40398" || fail "--json-rows: $(grep -c '^ *\[-\?[0-9]*,' "$T/cap.json") rows"
+# a failing run: no output file, and the spool is gone too
+TMPDIR="$T/tmp" "$RS" --time-limit 1 --csv "$T/late.csv" --analyse "map a -100 100 3000, b -100 100 1000" \
+    --max-points 4000000 "$T/ab.case" >/dev/null 2>"$T/err"; rc=$?
+check_exit "map past the time limit" 2 "$rc"
+[ ! -e "$T/late.csv" ] && [ -z "$(ls -A "$T/tmp")" ] && ok "failed map: no CSV, nothing in TMPDIR" \
+    || fail "failed map left: $(ls "$T" "$T/tmp")"
+# a small streamed map is still shown in the report (no --csv)
+"$RS" --analyse "map a -1 1 3, b 0 1 2" "$T/ab.case" >"$T/small.txt" 2>&1
+grep -q '^ *index  *i  *j  *a  *b ' "$T/small.txt" && [ "$(grep -c '^ *[0-5]  *[0-2]  *[01]  ' "$T/small.txt")" = 6 ] && ok "small map: table in the report" \
+    || fail "small map report: $(cat "$T/small.txt")"
