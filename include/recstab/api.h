@@ -55,6 +55,9 @@ char *rs_run_json_dumps(json_t *top);
  * (rs_sweep_options_t.table_spool): spool(arg, id) gives back the stream
  * of table id (read from its start), whose rows are written as "rows". */
 char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), void *arg);
+/* The same written to f (a map's rows go from its spool to f one at a
+ * time); 0, or -1 when memory ran out (f's own errors: ferror(f)). */
+int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg);
 
 /* The one-call API: runs case_text (named source_name in messages, includes
  * relative to it; NULL: "<string>") exactly as `recstab --json` would and

@@ -167,14 +167,31 @@ char *rs_run_json_dumps(json_t *top)
 
 char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
 {
+    char *out = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&out, &len);
+    int r;
+    if (f == NULL) return NULL;
+    r = rs_run_json_dumpf(f, top, spool, arg);
+    fclose(f);
+    if (r != 0) {
+        free(out);
+        return NULL;
+    }
+    return out;
+}
+
+int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
+{
     rowsets_t rs = {NULL, NULL, NULL, 0};
-    char *s, *out = NULL;
-    size_t len = 0, k;
-    FILE *f;
+    char *s;
+    size_t k;
+    int rc = -1;
     rowsets_swap(&rs, top);
+    /* the document without its rows, which go straight to f one by one */
     s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
     if (s == NULL) goto done;
-    f = open_memstream(&out, &len);
+    rc = 0;
     {
         const char *p = s;
         for (;;) {
@@ -209,7 +226,6 @@ char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), 
         fputs(p, f);
     }
     fputc('\n', f);
-    fclose(f);
     free(s);
 done:
     /* the document as it was */
@@ -217,7 +233,7 @@ done:
     free(rs.arr);
     free(rs.owner);
     free(rs.key);
-    return out;
+    return rc;
 }
 
 /* {"error": {...}} for a run that ended with err (the command prints the

@@ -470,14 +470,15 @@ int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     tally_t t;
     rs_engine_t e;
     FILE *f = NULL;
-    int r = RS_OK;
+    int r = RS_OK, spooled;
     snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
     snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
     memset(&t, 0, sizeof t);
     rs_grid_shard_range(&lo, &hi, npoints, so->shard_index, so->shard_count);
-    if (so->table_spool != NULL && (f = so->table_spool(so->table_spool_arg, &id)) == NULL)
-        r = rs_req_error(run, q, q->text, RS_ERR_IO, "%s", "cannot create a temporary file for the map's table");
-    if (f == NULL && r == RS_OK) f = open_memstream(&buf, &len);
+    /* no spool (none asked for, or no temporary file could be made): in memory */
+    if (so->table_spool != NULL) f = so->table_spool(so->table_spool_arg, &id);
+    spooled = f != NULL;
+    if (f == NULL) f = open_memstream(&buf, &len);
     rows = calloc((size_t) (hi > lo ? (hi - lo < MAP_BLOCK ? hi - lo : MAP_BLOCK) : 1), sizeof(rs_sweep_row_t));
     e.point = engine_point;
     e.arg = (void *) m;
@@ -500,13 +501,13 @@ int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     }
     free(rows);
     t_points = rs_sweep_now() - t0;
-    if (r == RS_OK && so->table_spool != NULL && (fflush(f) != 0 || ferror(f)))
+    if (r == RS_OK && spooled && (fflush(f) != 0 || ferror(f)))
         r = rs_req_error(run, q, q->text, RS_ERR_IO, "cannot write the map's table to its temporary file: %s",
                          strerror(errno));
     /* the caller's spool stays open; the in-memory table is complete once closed */
-    if (so->table_spool == NULL && f != NULL) fclose(f);
+    if (!spooled) fclose(f);
     if (r == RS_OK) {
-        json_t *o = map_json(run, q, R, json_incref(cols), &t, lo, hi, so->table_spool == NULL ? buf : NULL, id);
+        json_t *o = map_json(run, q, R, json_incref(cols), &t, lo, hi, spooled ? NULL : buf, id);
         if (decorate != NULL) decorate(o, arg);
         json_object_set_new(o, "seconds", json_real(floor((rs_sweep_now() - t0) * 1e4 + 0.5) / 1e4));
         json_object_set_new(o, "seconds_points", json_real(floor(t_points * 1e4 + 0.5) / 1e4));

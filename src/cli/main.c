@@ -1,5 +1,6 @@
-/* main.c -- the recstab command.  All output is buffered and written only
- * when every case succeeded, so a failing run leaves no partial output. */
+/* main.c -- the recstab command.  All output is staged (a temporary file,
+ * spool.h) and written only when every case succeeded, so a failing run
+ * leaves no partial output. */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -232,14 +233,15 @@ fail:
  * FIFOs and "-" written through, then the report; a failure at any step
  * puts the replaced files back (exit 2).  The report goes to stderr when
  * the CSV takes stdout. */
-static int outputs_commit(rs_cli_out_t **outs, int nouts, const char *report, size_t len, FILE *to)
+static int outputs_commit(rs_cli_out_t **outs, int nouts, slong report, const char *buf, size_t len, FILE *to)
 {
     char msg[1200];
     int k;
     if (rs_cli_out_rename(outs, nouts, msg, sizeof msg) != 0) goto fail;
     for (k = 0; k < nouts; k++)
         if (rs_cli_out_write_through(outs[k], msg, sizeof msg) != 0) goto undo;
-    if (fwrite(report, 1, len, to) != len || fflush(to) != 0) {
+    if ((report >= 0 && rs_cli_spool_copy(to, report, 0) != 0) || (buf != NULL && fwrite(buf, 1, len, to) != len)
+        || fflush(to) != 0) {
         snprintf(msg, sizeof msg, "cannot write output: %s%s", strerror(errno),
                  nouts > 0 ? " (no --csv/--plot file written)" : "");
         goto undo;
@@ -442,10 +444,9 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
                     json_string_value(json_object_get(e, "equations")));
         }
     } else if (cli->json) {
+        /* the rows of streamed maps go from their spools to out one by one */
         json_t *top = rs_run_json_document(docs, cli->ncases);
-        char *text = rs_run_json_dumps_spool(top, rs_cli_spool_get, NULL);
-        if (text != NULL) fputs(text, out);
-        free(text);
+        rs_run_json_dumpf(out, top, rs_cli_spool_get, NULL);
         json_decref(top);
     } else if (cli->markdown) {
         for (k = 0; k < json_array_size(docs); k++) rs_derivation_markdown(out, json_array_get(docs, k));
@@ -485,6 +486,7 @@ static int run_cases(const cli_t *cli, json_t *docs, int *worst)
 static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_outs_t *set, rs_cli_out_t *csv_out,
                          rs_cli_out_t *script_out, int worst)
 {
+    slong report = -1;
     char *outbuf = NULL;
     size_t outlen = 0;
     FILE *out;
@@ -502,11 +504,22 @@ static int write_outputs(const cli_t *cli, json_t *docs, rs_cli_outs_t *set, rs_
         }
     }
     if (!cli->json) rs_cli_trim_tables(docs, cli->csv_path != NULL, 200);
-    out = open_memstream(&outbuf, &outlen);
+    /* the report is staged like the files (a map's JSON rows can be
+     * hundreds of MB): an unlinked temporary file, copied out at the commit */
+    /* (in memory when no temporary file can be made) */
+    out = rs_cli_spool_open(NULL, &report);
+    if (out == NULL) out = open_memstream(&outbuf, &outlen);
     render(out, cli, docs);
-    fclose(out);
-    if (cli->rank != 0) outlen = 0;
-    rc = outputs_commit(set->o, cli->rank == 0 ? set->n : 0, outbuf, outlen,
+    if (report < 0) fclose(out);
+    else if (fflush(out) != 0 || ferror(out)) {
+        fprintf(stderr, "recstab: cannot write the report to its temporary file: %s\n", strerror(errno));
+        return 2;
+    }
+    if (cli->rank != 0) {
+        report = -1;
+        outlen = 0;
+    }
+    rc = outputs_commit(set->o, cli->rank == 0 ? set->n : 0, report, outbuf, outlen,
                         cli->csv_path != NULL && strcmp(cli->csv_path, "-") == 0 ? stderr : stdout) != 0 ? 2 : worst;
     free(outbuf);
     return rc;
