@@ -437,7 +437,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     rs_sweep_model_t m;
     fmpq *xs[2];
     double t0 = rs_sweep_now();
-    int r = rs_sweep_estimate(run, q, (double) X[0].count * (double) X[1].count, "the map");
+    int r = rs_sweep_estimate_map(run, q, (double) X[0].count * (double) X[1].count);
     if (r != RS_OK) return r;
     xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
     xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);

@@ -55,15 +55,27 @@ int rs_sweep_limit_error(rs_run_t *run, const rs_request_t *q, double npoints, c
 /* Before allocating: the points must fit into what is left of the budget.
  * 1 us and sizeof(rs_sweep_row_t) + two rationals per point are lower bounds (the
  * fastest sweep measured, degree 1 on one thread, takes about 4 us). */
-int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
+static int estimate(rs_run_t *run, const rs_request_t *q, double npoints, double bytes, const char *desc)
 {
     char msg[RS_ERROR_MSG_LEN];
     rs_error_t e;
     rs_error_init(e);
-    if (rs_budget_estimate(e, desc, npoints * 1e-6, npoints * (double) (sizeof(rs_sweep_row_t) + 2 * sizeof(fmpq))) == RS_OK)
-        return RS_OK;
+    if (rs_budget_estimate(e, desc, npoints * 1e-6, npoints * bytes) == RS_OK) return RS_OK;
     snprintf(msg, sizeof msg, "%s", e->msg);
     return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
+}
+
+int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
+{
+    return estimate(run, q, npoints, (double) (sizeof(rs_sweep_row_t) + 2 * sizeof(fmpq)), desc);
+}
+
+/* a streamed map holds one block of rows: a rational per point (the
+ * model's time steps) is what stays */
+int rs_sweep_estimate_map(rs_run_t *run, const rs_request_t *q, double npoints)
+{
+    if (run->opt->sweep.table_spool == NULL) return rs_sweep_estimate(run, q, npoints, "the map");
+    return estimate(run, q, npoints, (double) sizeof(fmpq), "the map");
 }
 
 /* the engine's callback: one point of the model */

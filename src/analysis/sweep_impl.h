@@ -107,6 +107,8 @@ double rs_sweep_now(void);
 /* errors at the request: more than --max-points points; more than the budget allows */
 int rs_sweep_limit_error(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
 int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
+/* the same for a map (less memory per point when streamed: table_spool) */
+int rs_sweep_estimate_map(rs_run_t *run, const rs_request_t *q, double npoints);
 /* The run's shard of npoints points computed by m: *rows[0 .. *hi - *lo)
  * (rs_sweep_rows_free).  A point's error is recomputed serially for its
  * message and put at the request ("at point N (desc): ..."). */
