@@ -69,3 +69,9 @@ check_exit "map past the time limit" 2 "$rc"
 "$RS" --analyse "map a -1 1 3, b 0 1 2" "$T/ab.case" >"$T/small.txt" 2>&1
 grep -q '^ *index  *i  *j  *a  *b ' "$T/small.txt" && [ "$(grep -c '^ *[0-5]  *[0-2]  *[01]  ' "$T/small.txt")" = 6 ] && ok "small map: table in the report" \
     || fail "small map report: $(cat "$T/small.txt")"
+# the up-front memory estimate of a streamed map counts what stays per point
+# (a rational), not a grid of per-point results: 250 x 250 = 62500 points
+# would be 62500 x 376 bytes (sizeof rs_sweep_row_t) = 23.5 MB > 20 MB
+"$RS" --memory-limit 20 --csv "$T/ml.csv" --analyse "map a -100 100 250, b -100 100 250" "$T/ab.case" >/dev/null 2>"$T/err"; rc=$?
+[ "$rc" = 0 ] && [ "$(grep -vc '^#\|^index' "$T/ml.csv")" = 62500 ] && ok "streamed map of 62500 points under --memory-limit 20" \
+    || fail "map under --memory-limit 20: exit $rc, $(cat "$T/err")"
