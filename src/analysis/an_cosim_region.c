@@ -39,7 +39,7 @@
 #include "recstab/cosim.h"
 
 #define BOX_MAX_AXES 8
-#define REGION_MAX_UNDECIDED 64   /* undecided boxes per bisection level */
+#define REGION_MAX_UNDECIDED 1024   /* undecided boxes per bisection level */
 #define CLAIM_MAX_BOXES 4096
 
 typedef struct {
@@ -267,6 +267,10 @@ static void ball_at(rs_cosim_ball_t b, box_ctx_t *X, const fmpq *lo, const fmpq 
     for (i = 0; i < nf; i++) in_var[m++] = n + i;
     rs_cosim_ball_set_dims(b, n1, F->nstate[1], m > 0 ? m : 1,
                            strcmp(c->couple, "implicit") == 0 ? RS_COSIM_IMPLICIT : RS_COSIM_EXPLICIT, c->couple_order);
+    /* the D-/I-extension (checked on the exact model by box_ctx_init): its n x n map over the ball */
+    rs_cosim_ball_set_ext(b, c->couple_ext == 'D' ? RS_COSIM_EXT_D : c->couple_ext == 'I' ? RS_COSIM_EXT_I
+                                                                                         : RS_COSIM_EXT_NONE,
+                          c->couple_alpha);
     for (j = 0; j < n; j++) {
         slong ja = j < n1 ? 0 : 1, jl = j - (ja ? n1 : 0);
         arb_mat_struct *A = ja == 0 ? b->A1 : b->A2, *Bm = ja == 0 ? b->B1 : b->B2;
@@ -323,12 +327,6 @@ static int box_ctx_init(box_ctx_t *X, rs_run_t *run, const box_req_t *B, slong p
     X->x = NULL;
     X->F = rs_model_cosim(run->m, run->err);
     if (X->F == NULL) return run->err->code;
-    /* the ball model over a box has no extension couplings (rs_cosim_ext_transition
-     * works on point models only): refuse rather than answer for the direct scheme */
-    if (run->c->couple_ext != 0)
-        return rs_error_set(run->err, RS_ERR_INPUT,
-                            "region and claim over a box are not available for the %c-Extension coupling "
-                            "(radius, stability, sweep and map are)", run->c->couple_ext);
     for (i = 0; i < B->naxes; i++) names[i] = B->name[i];
     rs_cosim_init(cs, 1, 1);
     r = rs_run_cosim_at(cs, run, names, B->lo[0], B->naxes);

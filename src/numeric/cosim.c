@@ -485,6 +485,11 @@ static void _exp_phi_r(arb_mat_t E, arb_mat_t Phi, const rs_cosim_ball_t b,
     _exp_phi_sub(E, Phi, b->n1, b->A2, b->B2, b->H, b->order, prec);
 }
 
+void rs_cosim_ball_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_ball_t b, slong prec)
+{
+    _exp_phi_r(E, Phi, b, prec);
+}
+
 /* The checks of the public E/Phi and E/G entry points: a valid cosim
  * and an n x n E beside an n x m(K+1) second matrix named xname. */
 static int _check_out(const arb_mat_t E, const arb_mat_t X, const char *xname,
@@ -718,6 +723,8 @@ static slong _hist(const rs_cosim_t cs)
 
 slong rs_cosim_ball_dim(const rs_cosim_ball_t b)
 {
+    if (b->ext != RS_COSIM_EXT_NONE)   /* state z_N only (cosim_ext.h) */
+        return b->n1 + b->n2;
     return b->n1 + b->n2 + _hist_of(b->method, b->order) * b->m;
 }
 
@@ -736,6 +743,8 @@ int rs_cosim_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec,
     slong n, K, h, dim, a, j, r, c, m = b->m;
     arb_mat_t E, G, Cb, Top, CX, J, Y;
     int rc = RS_OK, impl;
+    if (b->ext != RS_COSIM_EXT_NONE)
+        return rs_cosim_ext_ball_transition(M, b, prec, err);
     n = b->n1 + b->n2;
     K = b->order;
     impl = (b->method == RS_COSIM_IMPLICIT);

@@ -21,6 +21,16 @@ void rs_cosim_ball_init(rs_cosim_ball_t b)
     arb_init(b->H);
     b->method = RS_COSIM_EXPLICIT;
     b->order = 0;
+    b->ext = RS_COSIM_EXT_NONE;
+    fmpq_init(b->alpha_T);
+    fmpq_set_si(b->alpha_T, 1, 2);
+}
+
+void rs_cosim_ball_set_ext(rs_cosim_ball_t b, int ext, const fmpq_t alpha_T)
+{
+    b->ext = ext;
+    if (alpha_T != NULL) fmpq_set(b->alpha_T, alpha_T);
+    else fmpq_set_si(b->alpha_T, 1, 2);
 }
 
 void rs_cosim_ball_clear(rs_cosim_ball_t b)
@@ -31,11 +41,17 @@ void rs_cosim_ball_clear(rs_cosim_ball_t b)
     arb_mat_clear(b->B2);
     arb_mat_clear(b->C);
     arb_clear(b->H);
+    fmpq_clear(b->alpha_T);
 }
 
 void rs_cosim_ball_set_dims(rs_cosim_ball_t b, slong n1, slong n2, slong m, int method, slong order)
 {
-    rs_cosim_ball_clear(b);
+    /* the matrices only: ext and alpha_T are kept */
+    arb_mat_clear(b->A1);
+    arb_mat_clear(b->A2);
+    arb_mat_clear(b->B1);
+    arb_mat_clear(b->B2);
+    arb_mat_clear(b->C);
     b->n1 = n1;
     b->n2 = n2;
     b->m = m;
@@ -44,7 +60,7 @@ void rs_cosim_ball_set_dims(rs_cosim_ball_t b, slong n1, slong n2, slong m, int 
     arb_mat_init(b->B1, n1, m);
     arb_mat_init(b->B2, n2, m);
     arb_mat_init(b->C, m, n1 + n2);
-    arb_init(b->H);
+    arb_zero(b->H);
     b->method = method;
     b->order = order;
 }

@@ -17,6 +17,8 @@ typedef struct {
     arb_t H;
     int method;
     slong order;
+    int ext;                   /* RS_COSIM_EXT_* (NONE unless rs_cosim_ball_set_ext) */
+    fmpq_t alpha_T;            /* the extension's sample point (default 1/2) */
 } rs_cosim_ball_struct;
 typedef rs_cosim_ball_struct rs_cosim_ball_t[1];
 
@@ -28,10 +30,19 @@ void rs_cosim_ball_set(rs_cosim_ball_t b, const rs_cosim_t cs, const fmpq_mat_t 
                        const fmpq_mat_t C, slong m, slong prec);
 /* Re-dimension (entries zero) and copy method/order from cs. */
 void rs_cosim_ball_set_dims(rs_cosim_ball_t b, slong n1, slong n2, slong m, int method, slong order);
+/* The D-/I-extension coupling (cosim_ext.h) for the ball model: ext and
+ * alpha_T (NULL: 1/2).  rs_cosim_ball_set leaves ext NONE (its callers build
+ * reduced realisations, which the extension map does not use). */
+void rs_cosim_ball_set_ext(rs_cosim_ball_t b, int ext, const fmpq_t alpha_T);
+/* n1 + n2 + history (the extension map: n1 + n2). */
 slong rs_cosim_ball_dim(const rs_cosim_ball_t b);
 
+/* E = e^{A H} and Phi of the ball model (rs_cosim_exp_phi's layout, m =
+ * b->m, K = b->order), enclosing those of every model in b (cosim.c). */
+void rs_cosim_ball_exp_phi(arb_mat_t E, arb_mat_t Phi, const rs_cosim_ball_t b, slong prec);
+
 /* The one-step map (rs_cosim_transition) enclosing the maps of every model
- * in b (cosim.c).  RS_ERR_UNDECIDED when the implicit Jacobian J is not
+ * in b (cosim.c; with an extension, rs_cosim_ext_ball_transition).  RS_ERR_UNDECIDED when the implicit Jacobian J is not
  * certified invertible over the ball, RS_ERR_MATH when it is exactly 0. */
 int rs_cosim_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
 

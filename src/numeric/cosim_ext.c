@@ -90,17 +90,17 @@ static slong pieces(fmpq *frac, slong *deg, fmpq_mat_struct *L, slong K, const f
 }
 
 /* augmented position of z_j and of its integral q_j: (z1, q1, z2, q2) */
-static slong zi(const rs_cosim_t cs, slong j) { return j < cs->n1 ? j : 2 * cs->n1 + (j - cs->n1); }
-static slong qi(const rs_cosim_t cs, slong j) { return j < cs->n1 ? cs->n1 + j : 2 * cs->n1 + cs->n2 + (j - cs->n1); }
+static slong zi(const rs_cosim_ball_t b, slong j) { return j < b->n1 ? j : 2 * b->n1 + (j - b->n1); }
+static slong qi(const rs_cosim_ball_t b, slong j) { return j < b->n1 ? b->n1 + j : 2 * b->n1 + b->n2 + (j - b->n1); }
 
 /* subsystem i augmented with q' = z: [[A_i, 0], [I, 0]], [B_i; 0] */
-static void augment(fmpq_mat_t Aa, fmpq_mat_t Ba, const fmpq_mat_t A, const fmpq_mat_t B)
+static void augment(arb_mat_t Aa, arb_mat_t Ba, const arb_mat_t A, const arb_mat_t B)
 {
-    slong ni = fmpq_mat_nrows(A), r, c;
+    slong ni = arb_mat_nrows(A), r, c;
     for (r = 0; r < ni; r++) {
-        for (c = 0; c < ni; c++) fmpq_set(fmpq_mat_entry(Aa, r, c), fmpq_mat_entry(A, r, c));
-        for (c = 0; c < fmpq_mat_ncols(B); c++) fmpq_set(fmpq_mat_entry(Ba, r, c), fmpq_mat_entry(B, r, c));
-        fmpq_one(fmpq_mat_entry(Aa, ni + r, r));
+        for (c = 0; c < ni; c++) arb_set(arb_mat_entry(Aa, r, c), arb_mat_entry(A, r, c));
+        for (c = 0; c < arb_mat_ncols(B); c++) arb_set(arb_mat_entry(Ba, r, c), arb_mat_entry(B, r, c));
+        arb_one(arb_mat_entry(Aa, ni + r, r));
     }
 }
 
@@ -123,22 +123,42 @@ static void sample_rows(arb_mat_t Cw, const fmpq_mat_t L, slong k, const arb_mat
 
 int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_error_t err)
 {
-    slong n = cs->n1 + cs->n2, m = cs->m, nw = n + 2 * m, na = 2 * n, np, p, k, r, c;
-    slong deg[2];
-    fmpq frac[2];
-    fmpq_mat_struct L[2];
-    rs_cosim_t aug;
-    arb_mat_t Y, Y2, E, Phi, Cw, Pk, Cb, Ab, Bb, Z, Q, R, T, U, Rz, RX, S;
-    arb_t f;
+    slong n = cs->n1 + cs->n2;
+    rs_cosim_ball_t b;
     int rc = rs_cosim_check(cs, err);
     if (rc != RS_OK) return rc;
     if (cs->ext == RS_COSIM_EXT_NONE || arb_mat_nrows(M) != n || arb_mat_ncols(M) != n)
         return rs_error_set(err, RS_ERR_INPUT, "cosim: extension transition needs an extension and an %ldx%ld matrix",
                             (long) n, (long) n);
+    rs_cosim_ball_init(b);
+    rs_cosim_ball_set(b, cs, cs->B1, cs->B2, cs->C, cs->m, prec);
+    rs_cosim_ball_set_ext(b, cs->ext, cs->alpha_T);
+    rc = rs_cosim_ext_ball_transition(M, b, prec, err);
+    rs_cosim_ball_clear(b);
+    return rc;
+}
+
+int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t cs, slong prec, rs_error_t err)
+{
+    slong n = cs->n1 + cs->n2, m = cs->m, nw = n + 2 * m, na = 2 * n, np, p, k, r, c;
+    slong deg[2];
+    fmpq frac[2];
+    fmpq_mat_struct L[2];
+    rs_cosim_ball_t aug;
+    arb_mat_t Y, Y2, E, Phi, Cw, Pk, Cb, Ab, Bb, Z, Q, R, T, U, Rz, RX, S;
+    arb_t f, hp;
+    int rc = RS_OK;
+    if (cs->ext == RS_COSIM_EXT_NONE || cs->method != RS_COSIM_IMPLICIT || cs->order < 0
+        || cs->order > RS_COSIM_EXT_MAX_ORDER || fmpq_sgn(cs->alpha_T) <= 0 || fmpq_cmp_si(cs->alpha_T, 1) >= 0
+        || arb_mat_nrows(M) != n || arb_mat_ncols(M) != n)
+        return rs_error_set(err, RS_ERR_INPUT, "cosim: extension transition needs the implicit method with an "
+                            "extension, K <= 2, 0 < alpha_T < 1 and an %ldx%ld matrix", (long) n, (long) n);
     fmpq_init(frac);
     fmpq_init(frac + 1);
+    arb_init(hp);
     np = pieces(frac, deg, L, cs->order, cs->alpha_T);
-    rs_cosim_init_m(aug, 2 * cs->n1, 2 * cs->n2, m);
+    rs_cosim_ball_init(aug);
+    rs_cosim_ball_set_dims(aug, 2 * cs->n1, 2 * cs->n2, m, RS_COSIM_IMPLICIT, 0);
     augment(aug->A1, aug->B1, cs->A1, cs->B1);
     augment(aug->A2, aug->B2, cs->A2, cs->B2);
     arb_mat_init(Y, na, nw);
@@ -158,24 +178,29 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
     arb_mat_init(RX, 2 * m, 2 * m);
     arb_mat_init(S, 2 * m, n);
     arb_init(f);
-    arb_mat_set_fmpq_mat(Cb, cs->C, prec);
+    arb_mat_set(Cb, cs->C);
     for (r = 0; r < n; r++) {
         slong a1 = r < cs->n1;
         for (c = 0; c < n; c++)
             if ((c < cs->n1) == a1)
-                arb_set_fmpq(arb_mat_entry(Ab, r, c), a1 ? fmpq_mat_entry(cs->A1, r, c)
-                             : fmpq_mat_entry(cs->A2, r - cs->n1, c - cs->n1), prec);
+                arb_set(arb_mat_entry(Ab, r, c), a1 ? arb_mat_entry(cs->A1, r, c)
+                        : arb_mat_entry(cs->A2, r - cs->n1, c - cs->n1));
         for (c = 0; c < m; c++)
-            arb_set_fmpq(arb_mat_entry(Bb, r, c), a1 ? fmpq_mat_entry(cs->B1, r, c)
-                         : fmpq_mat_entry(cs->B2, r - cs->n1, c), prec);
+            arb_set(arb_mat_entry(Bb, r, c), a1 ? arb_mat_entry(cs->B1, r, c) : arb_mat_entry(cs->B2, r - cs->n1, c));
     }
     /* y(T_N) = (z_N, 0) */
     for (r = 0; r < n; r++) arb_one(arb_mat_entry(Y, zi(cs, r), r));
     for (p = 0; p < np && rc == RS_OK; p++) {
-        fmpq_mul(aug->H, cs->H, frac + p);
+        /* h_p = frac_p H (a ball over a box) */
+        arb_mul_fmpz(hp, cs->H, fmpq_numref(frac + p), prec);
+        arb_div_fmpz(hp, hp, fmpq_denref(frac + p), prec);
+        arb_set(aug->H, hp);
         aug->order = deg[p];
         arb_mat_init(Phi, na, m * (deg[p] + 1));
-        rc = rs_cosim_exp_phi(E, Phi, aug, prec, err);
+        rs_cosim_ball_exp_phi(E, Phi, aug, prec);
+        if (!arb_mat_is_finite(E) || !arb_mat_is_finite(Phi))
+            rc = rs_error_set(err, RS_ERR_UNDECIDED, "cosim: the extension's exponentials are not finite at %ld "
+                              "bits", (long) prec);
         if (rc == RS_OK) {
             arb_mat_mul(Y2, E, Y, prec);
             for (k = 0; k <= deg[p]; k++) {
@@ -191,8 +216,7 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
                 for (k = 0; k <= deg[p]; k++) {
                     /* h_p / (k + 1) * c_k */
                     sample_rows(Cw, L + p, k, Cb, n, m, prec);
-                    arb_set_fmpq(f, aug->H, prec);
-                    arb_div_ui(f, f, (ulong) (k + 1), prec);
+                    arb_div_ui(f, hp, (ulong) (k + 1), prec);
                     for (r = 0; r < m; r++)
                         for (c = 0; c < nw; c++)
                             arb_addmul(arb_mat_entry(R, m + r, c), arb_mat_entry(Cw, r, c), f, prec);
@@ -201,8 +225,7 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
                 for (k = 1; k <= deg[p]; k++) {
                     /* d/dt of c_k sigma^k at sigma = 1: k c_k / h_p */
                     sample_rows(Cw, L + p, k, Cb, n, m, prec);
-                    arb_set_fmpq(f, aug->H, prec);
-                    arb_inv(f, f, prec);
+                    arb_inv(f, hp, prec);
                     arb_mul_ui(f, f, (ulong) k, prec);
                     for (r = 0; r < m; r++)
                         for (c = 0; c < nw; c++)
@@ -260,11 +283,12 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
     for (p = 0; p < np; p++) fmpq_mat_clear(L + p);
     fmpq_clear(frac);
     fmpq_clear(frac + 1);
-    rs_cosim_clear(aug);
+    rs_cosim_ball_clear(aug);
     arb_mat_clear(Y); arb_mat_clear(Y2); arb_mat_clear(E); arb_mat_clear(Cw); arb_mat_clear(Pk);
     arb_mat_clear(Cb); arb_mat_clear(Ab); arb_mat_clear(Bb); arb_mat_clear(Z); arb_mat_clear(Q);
     arb_mat_clear(R); arb_mat_clear(T); arb_mat_clear(U); arb_mat_clear(Rz); arb_mat_clear(RX);
     arb_mat_clear(S);
     arb_clear(f);
+    arb_clear(hp);
     return rc;
 }

@@ -31,6 +31,7 @@
 #define RECSTAB_NUMERIC_COSIM_EXT_H
 
 #include "recstab/cosim.h"
+#include "numeric/cosim_ball.h"
 
 /* RS_ERR_INPUT unless cs->ext is none, or D/I with the implicit method,
  * K <= RS_COSIM_EXT_MAX_ORDER and 0 < alpha_T < 1 (cs itself checked by
@@ -41,5 +42,13 @@ int rs_cosim_ext_check(const rs_cosim_t cs, rs_error_t err);
  * Jacobian of the extended conditions is exactly singular, RS_ERR_UNDECIDED
  * if it is not certified invertible at prec. */
 int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_error_t err);
+
+/* The same map for the ball model b (b->ext D or I, b->method implicit,
+ * K <= 2, 0 < alpha_T < 1: the caller's checks): one evaluation encloses
+ * the maps of every model in b (the certified region and claim over a
+ * parameter box, src/analysis/an_cosim_region.c).  RS_ERR_UNDECIDED when
+ * the 2m x 2m Jacobian is not certified invertible over the ball (then a
+ * smaller box may certify), RS_ERR_MATH when it is exactly singular. */
+int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
 
 #endif

@@ -20,6 +20,9 @@
 #include <math.h>
 #include <string.h>
 #include <gsl/gsl_linalg.h>
+#include <stdlib.h>
+#include <jansson.h>
+#include "recstab/api.h"
 #include "recstab/cosim.h"
 #include "numeric/cosim_ext.h"
 
@@ -137,10 +140,12 @@ static void loop_run(const loop_t *L, double *z, int N)
         }
         residual(L, z, u0, Xp, g);
         for (j = 0; j < 2 * m; j++) {
+            /* the difference step relative to the values (long runs grow or decay) */
+            double hs = 1e-2 * (fabs(Xp[j]) > 1 ? fabs(Xp[j]) : 1);
             memcpy(X, Xp, sizeof X);
-            X[j] += 1e-2;
+            X[j] += hs;
             residual(L, z, u0, X, g2);
-            for (i = 0; i < 2 * m; i++) gsl_matrix_set(J, i, j, (g2[i] - g[i]) / 1e-2);
+            for (i = 0; i < 2 * m; i++) gsl_matrix_set(J, i, j, (g2[i] - g[i]) / hs);
         }
         for (i = 0; i < 2 * m; i++) gsl_vector_set(b, i, -g[i]);
         gsl_linalg_LU_decomp(J, P, &sg);
@@ -320,12 +325,157 @@ static void test_refusals(void **state)
     rs_cosim_clear(cs);
 }
 
+
+/* The ball map (rs_cosim_ext_ball_transition) over acc1 in [1/5, 21/100]
+ * must contain the point maps inside: the model's entries are affine in
+ * acc1 (C = (-acc1 c1, -adc1 d1, acc1 c1, adc1 d1)), so the union of the
+ * two end models' entries encloses every model between them. */
+static void test_ball_encloses(void **state)
+{
+    static const char *const acc[3] = {"1/5", "41/200", "21/100"};
+    int ext, K;
+    rs_error_t err;
+    (void) state;
+    for (ext = RS_COSIM_EXT_D; ext <= RS_COSIM_EXT_I; ext++)
+        for (K = 0; K <= 2; K++) {
+            rs_cosim_t cs[3];
+            rs_cosim_ball_t b, e;
+            arb_mat_t M, P;
+            int i;
+            slong r, c;
+            for (i = 0; i < 3; i++) {
+                rs_cosim_init(cs[i], 2, 2);
+                set_model(cs[i], 0, err);
+                fmpq_set_str(fmpq_mat_entry(cs[i]->C, 0, 0), "0", 10);
+                cs[i]->method = RS_COSIM_IMPLICIT;
+                cs[i]->order = K;
+                cs[i]->ext = ext;
+                /* C = (-acc1 c1, -d1, acc1 c1, d1) with c1 = 101/100, d1 = 1/5 */
+                {
+                    fmpq_t a;
+                    fmpq_init(a);
+                    fmpq_set_str(a, acc[i], 10);
+                    fmpq_mul(a, a, fmpq_mat_entry(cs[i]->A1, 1, 0));   /* -acc1 c1 */
+                    fmpq_set(fmpq_mat_entry(cs[i]->C, 0, 0), a);
+                    fmpq_neg(fmpq_mat_entry(cs[i]->C, 0, 2), a);
+                    fmpq_clear(a);
+                }
+            }
+            rs_cosim_ball_init(b);
+            rs_cosim_ball_init(e);
+            rs_cosim_ball_set(b, cs[0], cs[0]->B1, cs[0]->B2, cs[0]->C, 1, 128);
+            rs_cosim_ball_set(e, cs[2], cs[2]->B1, cs[2]->B2, cs[2]->C, 1, 128);
+            for (r = 0; r < 1; r++)
+                for (c = 0; c < 4; c++)
+                    arb_union(arb_mat_entry(b->C, r, c), arb_mat_entry(b->C, r, c), arb_mat_entry(e->C, r, c), 128);
+            rs_cosim_ball_set_ext(b, ext, NULL);
+            arb_mat_init(M, 4, 4);
+            arb_mat_init(P, 4, 4);
+            if (rs_cosim_ball_transition(M, b, 128, err) != RS_OK) fail_msg("ball map K %d ext %d: %s", K, ext, err->msg);
+            for (i = 0; i < 3; i++) {
+                assert_int_equal(rs_cosim_ext_transition(P, cs[i], 128, err), RS_OK);
+                if (!arb_mat_contains(M, P)) fail_msg("K %d ext %d: the ball map misses acc1 = %s", K, ext, acc[i]);
+            }
+            /* and it is a ball of positive width: the box is not a point */
+            assert_false(arb_mat_is_exact(M));
+            arb_mat_clear(M);
+            arb_mat_clear(P);
+            rs_cosim_ball_clear(b);
+            rs_cosim_ball_clear(e);
+            for (i = 0; i < 3; i++) rs_cosim_clear(cs[i]);
+        }
+}
+
+/* growth per macro step of the literal loop (steps 100..400) */
+static double loop_growth(const loop_t *L)
+{
+    double z[NMAX] = {1, -0.5, 0.25, 0.75}, n1 = 0, n2 = 0;
+    int i;
+    loop_run(L, z, 100);
+    for (i = 0; i < L->n; i++) n1 += z[i] * z[i];
+    loop_run(L, z, 300);
+    for (i = 0; i < L->n; i++) n2 += z[i] * z[i];
+    return exp(0.5 * log(n2 / n1) / 300);
+}
+
+static json_t *run_case(const char *file, const char *request, int *status)
+{
+    const char *an[2] = {request, NULL};
+    char *text, *out = NULL;
+    FILE *f = fopen(file, "r");
+    long n;
+    json_t *doc;
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    rewind(f);
+    text = calloc((size_t) n + 1, 1);
+    assert_true(fread(text, 1, (size_t) n, f) == (size_t) n);
+    fclose(f);
+    *status = rs_analyse_json_with(text, file, NULL, an, 0, 120, -1, &out);
+    doc = json_loads(out, 0, NULL);
+    rs_free(out);
+    free(text);
+    assert_non_null(doc);
+    return doc;
+}
+
+static const json_t *first_result(const json_t *doc)
+{
+    return json_array_get(json_object_get(json_array_get(json_object_get(doc, "cases"), 0), "results"), 0);
+}
+
+/* the certified region of the D-extension, K = 0, symmetric model over
+ * acc1 (cases/cosim/li-ext-d-k0-sym.case: c1 = 101/100, d1 = 1/5, adc1 = 1,
+ * H = 1): one transition stable -> unstable; the literal loop decays 0.03
+ * below the enclosure and grows 0.02 above it */
+static void test_region_vs_loop(void **state)
+{
+    int status;
+    json_t *doc = run_case(RS_SOURCE_DIR "/cases/cosim/li-ext-d-k0-sym.case", "region acc1 from 1/10 to 1/2", &status);
+    const json_t *o = first_result(doc), *tr = json_object_get(o, "transitions"), *t;
+    rs_cosim_t cs;
+    rs_error_t err;
+    loop_t L;
+    double lo, hi, g_below, g_above;
+    (void) state;
+    assert_int_equal(status, 0);
+    assert_true(json_is_true(json_object_get(o, "certified")));
+    assert_int_equal(json_array_size(tr), 1);
+    t = json_array_get(tr, 0);
+    assert_string_equal(json_string_value(json_object_get(t, "from")), "stable");
+    assert_string_equal(json_string_value(json_object_get(t, "to")), "unstable");
+    lo = atof(json_string_value(json_array_get(json_object_get(t, "enclosure"), 0)));
+    hi = atof(json_string_value(json_array_get(json_object_get(t, "enclosure"), 1)));
+    assert_true(hi > lo && hi - lo < 1e-15);
+    rs_cosim_init(cs, 2, 2);
+    set_model(cs, 0, err);
+    cs->method = RS_COSIM_IMPLICIT;
+    cs->order = 0;
+    cs->ext = RS_COSIM_EXT_D;
+    loop_from(&L, cs);
+    /* C = acc1 (-c1, 0, c1, 0) + (0, -d1, 0, d1) */
+    L.C[0][0] = -(lo - 0.03) * 1.01;
+    L.C[0][2] = (lo - 0.03) * 1.01;
+    g_below = loop_growth(&L);
+    L.C[0][0] = -(hi + 0.02) * 1.01;
+    L.C[0][2] = (hi + 0.02) * 1.01;
+    g_above = loop_growth(&L);
+    print_message("D k0: transition in [%.17g, %.17g]; loop growth %.6f below, %.6f above\n", lo, hi, g_below, g_above);
+    assert_true(g_below < 0.999);
+    assert_true(g_above > 1.001);
+    rs_cosim_clear(cs);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_loop),
         cmocka_unit_test(test_in_phase_mode),
         cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_ball_encloses),
+        cmocka_unit_test(test_region_vs_loop),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
