@@ -3,7 +3,7 @@
  * here is a certificate over a whole parameter box, never a sample):
  *
  *   region NAME from A to B [digits=N]
- *   claim stable|unstable when A <= NAME <= B [and A2 <= NAME2 <= B2 ...]
+ *   claim stable|bounded|unstable when A <= NAME <= B [and A2 <= NAME2 <= B2 ...]
  *
  * A box of parameter values is evaluated ONCE in ball arithmetic: the
  * linear forms of the model (lower/cosim_model.h) with the box's balls
@@ -26,7 +26,17 @@
  * claim: the box is bisected along its widest side; every sub-box certified
  * stable proves `claim stable`; a certified point (the exact model at a
  * rational point, rs_cosim_radius) refutes it; the first sub-box that is
- * still undecided at the depth limit is named. */
+ * still undecided at the depth limit is named.
+ *
+ * claim bounded: bounded also holds with rho = 1 when every unit-circle
+ * eigenvalue is semisimple, which no ball certificate can show (rho = 1 is
+ * not an open condition).  What is sound: proved when rho < 1 is certified
+ * on every sub-box (then bounded holds); refuted by a certified point with
+ * rho > 1 (checked at the centre of every undecided box); undecided, naming
+ * the sub-box, when its centre's certified radius contains 1 (rho = 1 there
+ * to 6 digits: no box around it certifies rho < 1, and whether the circle
+ * eigenvalues are semisimple is not decided here) or the box limit is
+ * reached. */
 #include <string.h>
 #include <stdlib.h>
 #include <flint/fmpq_mpoly.h>
@@ -49,6 +59,7 @@ typedef struct {
     fmpq_t lo[BOX_MAX_AXES], hi[BOX_MAX_AXES];
     slong digits;                   /* region */
     int unstable;                   /* claim: the claimed verdict is unstable */
+    int bounded;                    /* claim bounded: proved where rho < 1 is certified */
 } box_req_t;
 
 static box_req_t *box_req_new(rs_an_req_t *req)
@@ -140,7 +151,7 @@ int rs_an_cosim_region_parse(rs_an_req_t *req, rs_run_t *run)
     return r;
 }
 
-/* claim stable|unstable when A <= NAME <= B [and ...] */
+/* claim stable|bounded|unstable when A <= NAME <= B [and ...] */
 int rs_an_cosim_claim_parse(rs_an_req_t *req, rs_run_t *run)
 {
     box_req_t *b = box_req_new(req);
@@ -148,11 +159,13 @@ int rs_an_cosim_claim_parse(rs_an_req_t *req, rs_run_t *run)
     const char *p = req->rest, *at;
     char w[64];
     int r = RS_OK;
-    if (!next_word(w, sizeof w, &p, &at) || (strcmp(w, "stable") != 0 && strcmp(w, "unstable") != 0))
+    if (!next_word(w, sizeof w, &p, &at)
+        || (strcmp(w, "stable") != 0 && strcmp(w, "unstable") != 0 && strcmp(w, "bounded") != 0))
         return rs_req_error(run, q, at, RS_ERR_INPUT,
-                            "exact (analytic) subsystem integration: expected 'claim stable|unstable when A <= NAME "
-                            "<= B [and ...]', found '%s'", *at ? at : "end of line");
+                            "exact (analytic) subsystem integration: expected 'claim stable|bounded|unstable when A <= "
+                            "NAME <= B [and ...]', found '%s'", *at ? at : "end of line");
     b->unstable = strcmp(w, "unstable") == 0;
+    b->bounded = strcmp(w, "bounded") == 0;
     r = expect_word("when", run, q, &p, "expected 'when A <= NAME <= B', found '%s'");
     while (r == RS_OK) {
         slong i = b->naxes;
@@ -638,13 +651,20 @@ static int centre_verdict(int *v, json_t **at, rs_run_t *run, const box_req_t *B
     if (r == RS_OK) {
         rs_error_t e;
         rs_error_init(e);
-        if (rs_cosim_radius(rr, cs, 6, 1024, e) == RS_OK) {
+        int rc = rs_cosim_radius(rr, cs, 6, 1024, e);
+        /* RS_ERR_UNDECIDED (eigenvalues not isolated, e.g. equal subsystems): the
+         * enclosure certified so far still decides when it excludes 1 */
+        if (rc == RS_OK || (rc == RS_ERR_UNDECIDED && arb_is_finite(rr->lower) && arb_is_finite(rr->upper))) {
             arb_t one;
+            char *sl = rs_radius_str_lower(rr->lower, 8), *su = rs_radius_str_upper(rr->upper, 8);
             arb_init(one);
             arb_one(one);
             *v = arb_lt(rr->upper, one) ? RS_COSIM_BALL_STABLE : arb_gt(rr->lower, one) ? RS_COSIM_BALL_UNSTABLE
                                                                                       : RS_COSIM_BALL_UNDECIDED;
-            json_object_set_new(*at, "rho", rs_json_arb(rr->rho, 6));
+            if (rc == RS_OK) json_object_set_new(*at, "rho", rs_json_arb(rr->rho, 6));
+            else json_object_set_new(*at, "rho", json_pack("[s,s]", sl, su));
+            flint_free(sl);
+            flint_free(su);
             arb_clear(one);
         }
     }
@@ -677,7 +697,7 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
     int want = B->unstable ? RS_COSIM_BALL_UNSTABLE : RS_COSIM_BALL_STABLE, r, status = 0;   /* 0 proved */
     fmpq **lo, **hi;
     box_ctx_t X;
-    json_t *o, *fail = NULL, *counter = NULL;
+    json_t *o, *fail = NULL, *counter = NULL, *reason = NULL;
     r = box_ctx_init(&X, run, B, prec);
     if (r != RS_OK) { box_ctx_clear(&X); return r; }
     lo = flint_malloc(cap * sizeof(fmpq *));
@@ -702,6 +722,29 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
             n--;
             continue;
         }
+        if (B->bounded && v == RS_COSIM_BALL_UNDECIDED && done < CLAIM_MAX_BOXES) {
+            /* the centre decides early: rho > 1 refutes, rho = 1 to 6 digits stops (see the top) */
+            int pv;
+            json_t *at;
+            r = centre_verdict(&pv, &at, run, B, lo[k], hi[k]);
+            if (r != RS_OK) { json_decref(at); break; }
+            if (pv == RS_COSIM_BALL_UNSTABLE) {
+                status = 1;
+                counter = at;
+                break;
+            }
+            if (pv == RS_COSIM_BALL_UNDECIDED) {
+                status = 2;
+                fail = box_json(B, lo, hi, k);
+                reason = json_pack("{s:s,s:o}", "not_proved",
+                                   "rho < 1 on this sub-box: the certified enclosure of rho at its centre contains 1 "
+                                   "(asked to 6 digits), so no sub-box around it certifies rho < 1; boundedness with "
+                                   "rho = 1 (semisimple unit-circle eigenvalues) is not decided by ball certificates",
+                                   "centre", at);
+                break;
+            }
+            json_decref(at);
+        }
         if (v != RS_COSIM_BALL_UNDECIDED || done >= CLAIM_MAX_BOXES) {
             /* the opposite verdict certified over a box, or no more boxes: a certified point decides or not */
             int pv;
@@ -714,6 +757,12 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
                 json_decref(at);
                 status = 2;
                 fail = box_json(B, lo, hi, k);
+                if (B->bounded)
+                    reason = json_pack("{s:s}", "not_proved",
+                                       v == RS_COSIM_BALL_UNSTABLE
+                                           ? "this sub-box is certified rho > 1 but its centre's radius is not"
+                                           : "rho < 1 on this sub-box: not certified within the box limit (4096 "
+                                             "sub-boxes)");
             }
             break;
         }
@@ -757,7 +806,7 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
         o = json_object();
         json_object_set_new(o, "analysis", json_string("claim"));
         json_object_set_new(o, "text", json_string(req->q->text));
-        json_object_set_new(o, "claim", json_string(B->unstable ? "unstable" : "stable"));
+        json_object_set_new(o, "claim", json_string(B->unstable ? "unstable" : B->bounded ? "bounded" : "stable"));
         json_object_set_new(o, "status", json_string(status == 0 ? "proved" : status == 1 ? "refuted" : "undecided"));
         json_object_set_new(o, "boxes_checked", json_integer(done));
         if (status == 0)
@@ -767,6 +816,9 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
                                           "boxes", (json_int_t) done));
         if (counter != NULL) json_object_set_new(o, "counterexample", counter);
         if (fail != NULL) json_object_set_new(o, "failed_at", fail);
+        if (reason != NULL) json_object_update(o, reason);
+        if (status == 0 && B->bounded)
+            json_object_set_new(o, "proved_by", json_string("rho < 1 certified on every sub-box (stable, hence bounded)"));
         json_object_set_new(o, "substituted", sets_but_box(run->c, B));
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_array_append_new(run->results, o);
@@ -775,6 +827,7 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
         if (counter != NULL) json_decref(counter);
         if (fail != NULL) json_decref(fail);
     }
+    if (reason != NULL) json_decref(reason);
     for (i = 0; i < n; i++) {
         _fmpq_vec_clear(lo[i], d);
         _fmpq_vec_clear(hi[i], d);

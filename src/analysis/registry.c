@@ -145,7 +145,7 @@ const rs_an_def_t rs_an_registry[] = {
     {"region", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B", cosim_region_opts,
      "certified stable/unstable intervals; each transition enclosed narrower than 10^-N, unseparated ones named",
      rs_an_cosim_region_parse, rs_an_cosim_box_req_clear, rs_an_cosim_region, 0},
-    {"claim", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "stable|unstable when A <= NAME <= B [and ...]", NULL,
+    {"claim", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "stable|bounded|unstable when A <= NAME <= B [and ...]", NULL,
      "proved over the box (Stein certificates on sub-boxes), refuted (certified point) or undecided (the sub-box)",
      rs_an_cosim_claim_parse, rs_an_cosim_box_req_clear, rs_an_cosim_claim, 0},
     {"sweep", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B steps K [log] [of radius|stability]", NULL,

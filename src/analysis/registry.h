@@ -161,7 +161,7 @@ int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req);
 int rs_run_cosim(rs_cosim_t cs, rs_run_t *run);
 /* ... with names[i] = values[i] (i < n) overriding them */
 int rs_run_cosim_at(rs_cosim_t cs, rs_run_t *run, const char *const *names, const fmpq *values, slong n);
-/* region NAME from A to B [digits=N] and claim stable|unstable when A <= NAME <= B [and ...]
+/* region NAME from A to B [digits=N] and claim stable|bounded|unstable when A <= NAME <= B [and ...]
  * of exact integration (an_cosim_region.c): certified by Stein certificates over parameter boxes */
 int rs_an_cosim_region_parse(rs_an_req_t *req, rs_run_t *run);
 int rs_an_cosim_claim_parse(rs_an_req_t *req, rs_run_t *run);

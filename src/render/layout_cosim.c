@@ -88,6 +88,9 @@ void rs_render_cosim_claim(rs_render_t *r, const json_t *o)
     rs_render_line(r, "status", "%s", st);
     if (json_object_get(o, "counterexample")) box_line(r, "counterexample", json_object_get(o, "counterexample"));
     if (json_object_get(o, "failed_at")) box_line(r, "failed at", json_object_get(o, "failed_at"));
+    if (json_object_get(o, "centre")) box_line(r, "centre", json_object_get(o, "centre"));
+    if (json_object_get(o, "not_proved")) rs_render_line(r, "not proved", "%s", js(o, "not_proved"));
+    if (json_object_get(o, "proved_by")) rs_render_line(r, "proved by", "%s", js(o, "proved_by"));
     if (json_object_get(o, "certificate"))
         rs_render_line(r, "certificate", "%s", js(json_object_get(o, "certificate"), "kind"));
     rs_render_linef(r, "boxes", "%lld sub-boxes evaluated in ball arithmetic", rs_render_jint(o, "boxes_checked"));

@@ -54,11 +54,11 @@ static double time_loop_growth(const model_t *m)
     return 0;
 }
 
-static json_t *run(const char *request, int *status)
+static json_t *run_file(const char *file, const char *request, int *status)
 {
     const char *an[2] = {request, NULL};
     char *text = NULL, *out = NULL;
-    FILE *f = fopen(CASE, "r");
+    FILE *f = fopen(file, "r");
     long n;
     json_t *doc;
     assert_non_null(f);
@@ -68,12 +68,17 @@ static json_t *run(const char *request, int *status)
     text = calloc((size_t) n + 1, 1);
     assert_true(fread(text, 1, (size_t) n, f) == (size_t) n);
     fclose(f);
-    *status = rs_analyse_json_with(text, CASE, NULL, an, 0, 120, -1, &out);
+    *status = rs_analyse_json_with(text, file, NULL, an, 0, 120, -1, &out);
     doc = json_loads(out, 0, NULL);
     rs_free(out);
     free(text);
     assert_non_null(doc);
     return doc;
+}
+
+static json_t *run(const char *request, int *status)
+{
+    return run_file(CASE, request, status);
 }
 
 /* the document is {"cases": [DOC]} (one shape for every run) */
@@ -165,6 +170,61 @@ static void test_claims(void **state)
     json_decref(doc);
 }
 
+
+/* claim bounded: proved where rho < 1 is certified on every sub-box (the
+ * time loop decays at the box's end), refuted by a certified point rho > 1
+ * (the time loop grows there), and undecided where rho = 1: two uncoupled
+ * undamped oscillators (cases/cosim/undamped-bounded.case, k = 0) integrated
+ * exactly are two rotations [[cos w, sin w/w], [-w sin w, cos w]] (closed
+ * form): determinant cos^2 w + sin^2 w = 1 and |trace| = |2 cos w| < 2 for
+ * w in [1/2, 1], so the eigenvalues e^{+-i w} lie ON the circle, distinct
+ * within a block, semisimple: bounded, not stable -- neither "proved" (that
+ * would need rho < 1) nor "refuted" (rho > 1 nowhere) is a sound answer. */
+static void test_bounded(void **state)
+{
+    int status;
+    json_t *doc;
+    const json_t *o, *cx;
+    model_t m = {1.01, 0.2, 0, 1};
+    double w = 0.75, c = cos(w), sn = sin(w);
+    (void) state;
+    doc = run("claim bounded when 1/10 <= acc1 <= 1/2", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "claim")), "bounded");
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "proved");
+    assert_non_null(json_object_get(o, "proved_by"));
+    json_decref(doc);
+    m.acc1 = 0.5;
+    assert_true(time_loop_growth(&m) < 1);
+    doc = run("claim bounded when 1/2 <= acc1 <= 7/10", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 1);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "refuted");
+    cx = json_object_get(o, "counterexample");
+    assert_non_null(cx);
+    {
+        long a, b;
+        assert_int_equal(sscanf(json_string_value(json_object_get(cx, "acc1")), "%ld/%ld", &a, &b), 2);
+        m.acc1 = (double) a / (double) b;
+        /* rho = 1.00068 there (certified); the loop measures the growth over 3000 steps */
+        assert_true(time_loop_growth(&m) > 1.0003);
+    }
+    json_decref(doc);
+    doc = run_file(RS_SOURCE_DIR "/cases/cosim/undamped-bounded.case",
+                   "claim bounded when 1/2 <= w <= 1 and 0 <= k <= 0", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 1);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "undecided");
+    assert_non_null(json_object_get(o, "failed_at"));
+    assert_non_null(strstr(json_string_value(json_object_get(o, "not_proved")), "rho < 1"));
+    assert_null(json_object_get(o, "counterexample"));
+    /* the closed form at the named centre w = 3/4: |lambda| = 1 exactly */
+    assert_string_equal(json_string_value(json_object_get(json_object_get(o, "centre"), "w")), "3/4");
+    assert_true(fabs(c * c + sn * sn - 1) < 1e-15 && fabs(2 * c) < 2);
+    json_decref(doc);
+}
+
 static void test_errors(void **state)
 {
     int status;
@@ -188,6 +248,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_region_transition),
         cmocka_unit_test(test_claims),
+        cmocka_unit_test(test_bounded),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
