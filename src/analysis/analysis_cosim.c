@@ -16,6 +16,7 @@
 #include "numeric/cosim_fast.h"
 #include "numeric/cosim_dbl.h"
 #include "numeric/cosim_forms.h"
+#include "numeric/modes.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
@@ -226,6 +227,11 @@ typedef struct {
     const fmpq *x[2];                 /* the axis values: x[0][i] (and x[1][j] of a map) */
     const rs_cosim_model_struct *F;   /* the linear forms (the run's model) */
     rs_cosim_nforms_struct *NF;       /* their numeric forms (cosim_forms.h; NULL: not applicable) */
+    /* sweep ... of modes: per point the step h, the nref references
+     * (refval[idx * nref + k]) and the certified eigenvalues (eig[idx]) */
+    slong npoints, nref;
+    fmpq *hval, *refval;
+    json_t **eig;
 } cosim_map_t;
 
 /* the co-simulation at grid point idx (a sweep's index; a map's j*K1 + i) */
@@ -318,6 +324,57 @@ static int cosim_dbl_point(rs_radius_t rf, const cosim_map_t *M, slong idx)
     return ok;
 }
 
+/* [*lo, *hi] contains x (doubles rounded outward; +-inf when not finite) */
+static void arb_bounds_d(double *lo, double *hi, const arb_t x)
+{
+    arf_t t;
+    arf_init(t);
+    arb_get_lbound_arf(t, x, 64);
+    *lo = arf_is_nan(t) ? -INFINITY : arf_get_d(t, ARF_RND_FLOOR);
+    arb_get_ubound_arf(t, x, 64);
+    *hi = arf_is_nan(t) ? INFINITY : arf_get_d(t, ARF_RND_CEIL);
+    arf_clear(t);
+}
+
+/* sweep ... of modes at point idx: the certified eigenvalues of the
+ * one-step map (15 digits) into M->eig[idx], and per reference the damping
+ * ratio, frequency error and omega of its principal eigenvalue (Im >= 0),
+ * as the sweeps of modes of the equations (sweep_poly.c) report them.
+ * Only with every eigenvalue isolated (RS_OK): else the cells stay empty. */
+static void cosim_point_modes(rs_sweep_row_t *row, const cosim_map_t *M, slong idx, const rs_radius_t rr)
+{
+    slong prec = 128, k, i;
+    arb_t h, sig, om, mag, zeta;
+    arb_ptr refs = _arb_vec_init(M->nref);
+    int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
+    json_t *ev = json_array();
+    arb_init(h); arb_init(sig); arb_init(om); arb_init(mag); arb_init(zeta);
+    for (i = 0; i < rr->nroots; i++) {
+        json_array_append_new(ev, rs_json_acb(rr->roots + i, 15));
+    }
+    M->eig[idx] = ev;
+    arb_set_fmpq(h, M->hval + idx, prec);
+    for (k = 0; k < M->nref; k++) arb_set_fmpq(refs + k, M->refval + idx * M->nref + k, prec);
+    rs_modes_principal(principal, rr, h, refs, M->nref, prec);
+    for (k = 0; k < M->nref; k++)
+        for (i = 0; i < rr->nroots; i++) {
+            const acb_struct *z = rr->roots + i;
+            if (principal[i] != k + 1 || acb_is_zero(z)) continue;
+            if (arf_sgn(arb_midref(acb_imagref(z))) < 0 && !arb_is_zero(acb_imagref(z))) continue;
+            rs_modes_continuous(sig, om, mag, zeta, z, h, prec);
+            arb_bounds_d(row->mode_lo + 3 * k, row->mode_hi + 3 * k, zeta);
+            arb_sub(mag, mag, refs + k, prec);
+            arb_div(mag, mag, refs + k, prec);
+            arb_bounds_d(row->mode_lo + 3 * k + 1, row->mode_hi + 3 * k + 1, mag);
+            arb_bounds_d(row->mode_lo + 3 * k + 2, row->mode_hi + 3 * k + 2, om);
+            row->nmodes++;
+            break;
+        }
+    free(principal);
+    _arb_vec_clear(refs, M->nref);
+    arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(zeta);
+}
+
 #define COSIM_CROSSCHECK_EVERY 64   /* fast verdicts re-derived from the certified radius */
 
 /* the model's callback: the verdict the certified radius gives (6 digits),
@@ -330,17 +387,19 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     rs_cosim_t cs;
     rs_radius_t rr, rf;
     slong max_prec = M->run->opt->max_prec < 1024 ? M->run->opt->max_prec : 1024;
-    int fast = RS_SWEEP_UNDECIDED, have_fast = 0;
+    int fast = RS_SWEEP_UNDECIDED, have_fast = 0, modes = M->R->of == RS_SWEEP_OF_MODES;
+    slong c;
     memset(row, 0, sizeof *row);
     row->d.verdict = -1;
     row->inside = row->on = row->outside = -1;
     rs_cosim_init(cs, 1, 1);
     rs_radius_init(rr);
     rs_radius_init(rf);
+    for (c = 0; c < 3 * RS_SWEEP_MAX_REFS; c++) row->mode_lo[c] = row->mode_hi[c] = NAN;
     /* `of radius`: the interval-double radius from the numeric forms first
      * (cosim_dbl.h, no exact model built); the exact model only where it
      * cannot decide and at every 64th point (the cross-check below) */
-    if (M->NF != NULL && M->R->of != RS_SWEEP_OF_STABILITY) {
+    if (M->NF != NULL && M->R->of == RS_SWEEP_OF_RADIUS) {
         have_fast = cosim_dbl_point(rf, M, idx);
         if (have_fast && idx % COSIM_CROSSCHECK_EVERY != 0) {
             radius_cells(row, rf);
@@ -374,8 +433,27 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     /* RS_ERR_UNDECIDED (eigenvalues not isolated, e.g. two equal subsystems'
      * repeated eigenvalues): the enclosure certified so far still decides
      * when it excludes 1, else the point is undecided -- not undefined */
-    if (row->d.status == RS_OK && (have_fast ? idx % COSIM_CROSSCHECK_EVERY == 0
-                                             : fast == RS_SWEEP_UNDECIDED || idx % COSIM_CROSSCHECK_EVERY == 0)
+    /* `of modes`: the full certified eigenvalues at every point (15 digits),
+     * checked against the fast radius as above */
+    if (row->d.status == RS_OK && modes) {
+        rs_error_t e;
+        rs_error_init(e);
+        if (rs_cosim_radius(rr, cs, 15, max_prec, e) == RS_OK) {
+            cosim_point_modes(row, M, idx, rr);
+            if (have_fast && (arb_lt(rf->upper, rr->lower) || arb_gt(rf->lower, rr->upper)))
+                row->d.status = rs_error_set(err, RS_ERR_INCONSISTENT,
+                                             "the fast certified radius and the full certified radius disagree");
+            else if (!have_fast)
+                radius_cells(row, rr);
+            rs_radius_clear(rr);
+            rs_radius_init(rr);
+        } else if (!have_fast && cosim_point_radius(rr, cs, max_prec, err) == RS_OK)
+            radius_cells(row, rr);
+        rs_error_clear(e);
+    }
+    if (row->d.status == RS_OK && !modes
+        && (have_fast ? idx % COSIM_CROSSCHECK_EVERY == 0
+                      : fast == RS_SWEEP_UNDECIDED || idx % COSIM_CROSSCHECK_EVERY == 0)
         && cosim_point_radius(rr, cs, max_prec, err) == RS_OK) {
         int v = radius_verdict(rr);
         if (have_fast) {
@@ -411,6 +489,9 @@ static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, c
     M->x[1] = x1;
     M->F = rs_model_cosim(run->m, run->err);
     M->NF = NULL;
+    M->npoints = M->nref = 0;
+    M->hval = M->refval = NULL;
+    M->eig = NULL;
     r = M->F != NULL ? RS_OK : run->err->code;
     if (r == RS_OK) {
         rs_cosim_t cs;
@@ -418,7 +499,7 @@ static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, c
         r = cosim_map_build(cs, M, 0, run->err);
         rs_cosim_clear(cs);
     }
-    if (r == RS_OK && R->of != RS_SWEEP_OF_STABILITY) {
+    if (r == RS_OK && R->of == RS_SWEEP_OF_RADIUS) {
         const char *names[2];
         names[0] = R->axis[0].name;
         names[1] = R->naxes == 2 ? R->axis[1].name : NULL;
@@ -449,20 +530,124 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     return r;
 }
 
-int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_request_t *R, const fmpq *vals)
+static int cosim_eval_at(fmpq_t out, const char **end, rs_run_t *run, const rs_request_t *q,
+                         const rs_cosim_model_struct *F, const char *text, const char *name, const fmpq *vals,
+                         slong npoints, fmpq *dst, slong stride);
+
+/* the options of `of modes` (h=EXPR reference=EXPR[,EXPR]; keys checked by
+ * the request parser) at every point: h defaults to the macro step H */
+static int cosim_modes_opts(cosim_map_t *M, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                            slong npoints)
+{
+    const char *t = R->opts;
+    slong i;
+    int r = RS_OK, have_h = 0;
+    fmpq_t dummy;
+    fmpq_init(dummy);
+    M->npoints = npoints;
+    M->hval = _fmpq_vec_init(npoints);
+    M->eig = calloc((size_t) npoints, sizeof(json_t *));
+    while (r == RS_OK && t != NULL && *t) {
+        const char *end = t;
+        while (*t == ' ' || *t == '\t') t++;
+        if (*t == '\0') break;
+        if (strncmp(t, "h=", 2) == 0) {
+            have_h = 1;
+            r = cosim_eval_at(dummy, &end, run, q, M->F, t + 2, R->axis[0].name, M->x[0], npoints, M->hval, 1);
+            for (i = 0; i < npoints && r == RS_OK; i++)
+                if (fmpq_sgn(M->hval + i) <= 0)
+                    r = rs_req_error(run, q, t + 2, RS_ERR_INPUT,
+                                     "expected a time step h > 0 at every point, found '%s'", t + 2);
+        } else if (strncmp(t, "reference=", 10) == 0) {
+            const char *u = t + 10;
+            for (;;) {
+                fmpq *nr;
+                slong k, p;
+                if (M->nref >= RS_SWEEP_MAX_REFS)
+                    return rs_req_error(run, q, u, RS_ERR_LIMIT, "at most 4 references, found more at '%s'", u);
+                nr = _fmpq_vec_init(npoints * (M->nref + 1));
+                for (p = 0; p < npoints; p++)
+                    for (k = 0; k < M->nref; k++) fmpq_set(nr + p * (M->nref + 1) + k, M->refval + p * M->nref + k);
+                r = cosim_eval_at(dummy, &end, run, q, M->F, u, R->axis[0].name, M->x[0], npoints, nr + M->nref,
+                                  M->nref + 1);
+                if (M->refval != NULL) _fmpq_vec_clear(M->refval, npoints * M->nref);
+                M->refval = nr;
+                M->nref++;
+                if (r != RS_OK || *end != ',') break;
+                u = end + 1;
+            }
+        } else
+            r = rs_req_error(run, q, t, RS_ERR_INPUT, "expected an option (h=, reference=), found '%s'", t);
+        if (r != RS_OK) break;
+        /* the expression parser stops after trailing blanks */
+        if (end > t && (end[-1] == ' ' || end[-1] == '\t')) end--;
+        if (*end != '\0' && *end != ' ' && *end != '\t')
+            r = rs_req_error(run, q, end, RS_ERR_INPUT, "expected a space or the end after the value, found '%s'", end);
+        t = end;
+    }
+    if (r == RS_OK && !have_h) {
+        /* the macro step of the model at each point */
+        for (i = 0; i < npoints && r == RS_OK; i++) {
+            rs_cosim_t cs;
+            rs_cosim_init(cs, 1, 1);
+            r = cosim_map_build(cs, M, i, run->err);
+            if (r == RS_OK) fmpq_set(M->hval + i, cs->H);
+            rs_cosim_clear(cs);
+        }
+    }
+    fmpq_clear(dummy);
+    return r;
+}
+
+static void cosim_modes_free(cosim_map_t *M)
+{
+    slong i;
+    if (M->hval != NULL) _fmpq_vec_clear(M->hval, M->npoints);
+    if (M->refval != NULL) _fmpq_vec_clear(M->refval, M->npoints * M->nref);
+    if (M->eig != NULL) {
+        for (i = 0; i < M->npoints; i++)
+            if (M->eig[i] != NULL) json_decref(M->eig[i]);
+        free(M->eig);
+    }
+    M->hval = M->refval = NULL;
+    M->eig = NULL;
+}
+
+int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                             const fmpq *vals, slong npoints)
 {
     cosim_map_t *M = flint_malloc(sizeof *M);
     int r = cosim_grid_init(M, m, run, R, vals, NULL);
+    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) r = cosim_modes_opts(M, run, q, R, npoints);
     if (r != RS_OK) {
+        cosim_modes_free(M);
         flint_free(M);
         m->model = NULL;
     }
     return r;
 }
 
+slong rs_cosim_sweep_nref(const rs_sweep_model_t *m)
+{
+    return m->model == NULL ? 0 : ((const cosim_map_t *) m->model)->nref;
+}
+
+json_t *rs_cosim_sweep_eigenvalues(const rs_sweep_model_t *m, slong lo, slong hi)
+{
+    const cosim_map_t *M = m->model;
+    json_t *a = json_array();
+    slong i;
+    for (i = lo; i < hi; i++)
+        json_array_append_new(a, M->eig != NULL && M->eig[i] != NULL ? json_incref(M->eig[i]) : json_null());
+    return a;
+}
+
 void rs_cosim_sweep_model_free(rs_sweep_model_t *m)
 {
-    if (m->model != NULL) rs_cosim_nforms_free(((cosim_map_t *) m->model)->NF);
+    if (m->model != NULL) {
+        rs_cosim_nforms_free(((cosim_map_t *) m->model)->NF);
+        cosim_modes_free(m->model);
+    }
     flint_free(m->model);
     m->model = NULL;
 }
@@ -572,5 +757,59 @@ int rs_an_cosim_modes(rs_run_t *run, const rs_an_req_t *req)
     arb_clear(h);
     rs_radius_clear(rr);
     rs_cosim_clear(cs);
+    return r;
+}
+
+/* A request expression (sweep ... of modes: h=, reference=) at every point
+ * of the sweep: the case's set values and NAME = vals[i] substituted through
+ * the forms' context; the value into dst[i * stride]; *end after it. */
+static int cosim_eval_at(fmpq_t out, const char **end, rs_run_t *run, const rs_request_t *q,
+                         const rs_cosim_model_struct *F, const char *text, const char *name, const fmpq *vals,
+                         slong npoints, fmpq *dst, slong stride)
+{
+    const fmpq_mpoly_ctx_struct *ctx = F->ts->ctx;
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    fmpq_mpoly_t num, den, a, b;
+    size_t pos = (size_t) (text - q->text);
+    slong i, k;
+    int r;
+    rs_req_src(&src, q);
+    r = rs_expr_parse(&e, &src, &pos, run->err);
+    if (r != RS_OK) return r;
+    *end = q->text + pos;
+    fmpq_mpoly_init(num, ctx);
+    fmpq_mpoly_init(den, ctx);
+    fmpq_mpoly_init(a, ctx);
+    fmpq_mpoly_init(b, ctx);
+    r = rs_scheme_eval_poly(num, den, F->ts, F->tc, e, 0, run->err);
+    rs_expr_free(e);
+    for (i = 0; i < npoints && r == RS_OK; i++) {
+        rs_cosim_vals_t vv;
+        rs_cosim_vals_make(&vv, run->c, &name, vals + i, 1);
+        fmpq_mpoly_set(a, num, ctx);
+        fmpq_mpoly_set(b, den, ctx);
+        for (k = 0; k < vv.n; k++) {
+            slong v = rs_case_param_index(F->tc, vv.v[k].name);
+            fmpq_mpoly_evaluate_one_fmpq(a, a, v, vv.v[k].value, ctx);
+            fmpq_mpoly_evaluate_one_fmpq(b, b, v, vv.v[k].value, ctx);
+        }
+        flint_free(vv.v);
+        if (!fmpq_mpoly_is_fmpq(a, ctx) || !fmpq_mpoly_is_fmpq(b, ctx) || fmpq_mpoly_is_zero(b, ctx))
+            r = rs_req_error(run, q, text, RS_ERR_INPUT,
+                             "expected a value of set parameters and the swept one, found '%s'", text);
+        else {
+            fmpq_t bb;
+            fmpq_init(bb);
+            fmpq_mpoly_get_fmpq(out, a, ctx);
+            fmpq_mpoly_get_fmpq(bb, b, ctx);
+            fmpq_div(dst + i * stride, out, bb);
+            fmpq_clear(bb);
+        }
+    }
+    fmpq_mpoly_clear(num, ctx);
+    fmpq_mpoly_clear(den, ctx);
+    fmpq_mpoly_clear(a, ctx);
+    fmpq_mpoly_clear(b, ctx);
     return r;
 }

@@ -165,16 +165,20 @@ int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request
     for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
     /* the model kind supplies the point: the equations, or exact integration */
     m.model = NULL;
-    if (cosim) r = rs_cosim_sweep_model_new(&m, run, R, vals);
+    if (cosim) r = rs_cosim_sweep_model_new(&m, run, q, R, vals, npoints);
     else r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) &vals, npoints);
     if (r == RS_OK) {
         if (!cosim) rs_sweep_poly_model(&m, J);
         snprintf(what, sizeof what, "sweep %s", R->axis[0].name);
         r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, R->axis[0].name);
     }
-    if (r == RS_OK)
-        json_array_append_new(run->results, sweep_json(run, q, R, vals, rows, lo, hi, cosim ? 0 : rs_sweep_poly_nref(J),
-                                                       rs_sweep_now() - t0));
+    if (r == RS_OK) {
+        json_t *o = sweep_json(run, q, R, vals, rows, lo, hi, cosim ? rs_cosim_sweep_nref(&m) : rs_sweep_poly_nref(J),
+                               rs_sweep_now() - t0);
+        /* exact integration, `of modes`: the certified eigenvalues of each row's one-step map */
+        if (cosim && R->of == RS_SWEEP_OF_MODES) json_object_set_new(o, "eigenvalues", rs_cosim_sweep_eigenvalues(&m, lo, hi));
+        json_array_append_new(run->results, o);
+    }
     rs_sweep_rows_free(rows, hi - lo);
     rs_sweep_poly_free(J);
     if (cosim) rs_cosim_sweep_model_free(&m);

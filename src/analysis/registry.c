@@ -65,19 +65,6 @@ static void sweep_req_clear(rs_an_req_t *req)
     free(req->u.sweep);
 }
 static int map_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 1); }
-/* exact integration: no `of modes` (no exact roots to take ln(lambda)/h of) */
-static int cosim_sweep_parse(rs_an_req_t *req, rs_run_t *run)
-{
-    int r = sweep_parse_as(req, run, 0);
-    const rs_sweep_request_t *R = req->u.sweep;
-    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) {
-        const char *at = strstr(req->rest, "modes");
-        r = rs_req_error(run, req->q, at != NULL ? at : req->rest, RS_ERR_INPUT,
-                         "exact (analytic) subsystem integration: expected radius or stability after 'of', found '%s'",
-                         "modes");
-    }
-    return r;
-}
 
 static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 {
@@ -148,8 +135,10 @@ const rs_an_def_t rs_an_registry[] = {
     {"claim", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "stable|bounded|unstable when A <= NAME <= B [and ...]", NULL,
      "proved over the box (Stein certificates on sub-boxes), refuted (certified point) or undecided (the sub-box)",
      rs_an_cosim_claim_parse, rs_an_cosim_box_req_clear, rs_an_cosim_claim, 0},
-    {"sweep", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME from A to B steps K [log] [of radius|stability]", NULL,
-     "verdicts from the certified radius on a grid of one parameter", cosim_sweep_parse, sweep_req_clear, run_sweep, 0},
+    {"sweep", NULL, RS_AN_KINDS(RS_MODEL_COSIM),
+     "NAME from A to B steps K [log] [of radius|modes|stability] [h=EXPR reference=EXPR[,EXPR]]", NULL,
+     "verdicts from the certified radius (and modes of the certified eigenvalues) on a grid of one parameter",
+     sweep_parse, sweep_req_clear, run_sweep, 0},
     {"map", NULL, RS_AN_KINDS(RS_MODEL_COSIM), "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
      "verdicts from the certified radius on a grid of two parameters", map_parse, sweep_req_clear, run_cosim_map, 0},
     {NULL, NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL, 0}

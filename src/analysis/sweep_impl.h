@@ -155,8 +155,13 @@ void rs_sweep_put_double_of(FILE *f, const fmpq_t x);     /* %.15g */
 /* The co-simulation model of a sweep over vals[0 .. K] (read, not copied):
  * m->model allocated (rs_cosim_sweep_model_free), or an error in run->err
  * at its place in the case (forms not built, a parameter still symbolic). */
-int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_sweep_request_t *R, const fmpq *vals);
+int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                             const fmpq *vals, slong npoints);
 void rs_cosim_sweep_model_free(rs_sweep_model_t *m);
+/* `of modes`: the number of references, and the certified eigenvalues of
+ * points [lo, hi) (one array of strings per point, null where not isolated) */
+slong rs_cosim_sweep_nref(const rs_sweep_model_t *m);
+json_t *rs_cosim_sweep_eigenvalues(const rs_sweep_model_t *m, slong lo, slong hi);
 
 /* ---- the model of the equations (sweep_poly.c) ------------------------------------- */
 

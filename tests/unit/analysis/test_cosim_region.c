@@ -225,6 +225,70 @@ static void test_bounded(void **state)
     json_decref(doc);
 }
 
+
+/* sweep ... of modes (cases/cosim/undamped-sweep-modes.case): two undamped
+ * oscillators x'' = -w^2 x, lc = k (x2 - x1) held over the macro step 1
+ * (explicit order 0), k = 1/10.  Closed form, derived by hand: the in-phase
+ * motion is exact, eigenvalues e^{+-i w}; the anti-phase y = x2 - x1 obeys
+ * y'' = -w^2 y - 2 k y_N, so y_{N+1} = (cos w (1 + p) - p) y_N + sin w / w v_N,
+ * v_{N+1} = -w (1 + p) sin w y_N + cos w v_N, p = 2k/w^2.  Every one of the
+ * four eigenvalues must lie in a reported enclosure (15 digits), the radius
+ * columns enclose max |mu|, and reference=w names the in-phase mode:
+ * damping ratio 0, frequency error 0, omega = w. */
+static void test_sweep_modes(void **state)
+{
+    int status;
+    json_t *doc = run_file(RS_SOURCE_DIR "/cases/cosim/undamped-sweep-modes.case",
+                           "sweep w from 1/2 to 1 steps 5 of modes reference=w", &status);
+    const json_t *o = first_result(doc), *rows = json_object_get(o, "rows"), *cols = json_object_get(o, "columns");
+    const json_t *eig = json_object_get(o, "eigenvalues");
+    size_t i, j, c, ncol = json_array_size(cols), irad = 0, izeta = 0, ifreq = 0, iom = 0;
+    (void) state;
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "of")), "modes");
+    assert_int_equal(json_array_size(rows), 6);
+    assert_int_equal(json_array_size(eig), 6);
+    for (c = 0; c < ncol; c++) {
+        const char *n = json_string_value(json_array_get(cols, c));
+        if (strcmp(n, "radius_upper") == 0) irad = c;
+        if (strcmp(n, "damping_ratio_1") == 0) izeta = c;
+        if (strcmp(n, "frequency_error_1") == 0) ifreq = c;
+        if (strcmp(n, "omega_1") == 0) iom = c;
+    }
+    assert_true(irad > 0 && izeta > 0 && ifreq > 0 && iom > 0);
+    for (i = 0; i < 6; i++) {
+        const json_t *row = json_array_get(rows, i), *ev = json_array_get(eig, i);
+        double w = 0.5 + 0.1 * (double) i, k = 0.1, p = 2 * k / (w * w);
+        double a = cos(w) * (1 + p) - p, b = sin(w) / w, cc = -w * (1 + p) * sin(w), d = cos(w);
+        double tr = a + d, det = a * d - b * cc, disc = tr * tr / 4 - det;
+        double mre[4], mim[4], rho;
+        assert_true(disc < 0);   /* a complex pair */
+        mre[0] = mre[1] = tr / 2;
+        mim[0] = sqrt(-disc);
+        mim[1] = -mim[0];
+        mre[2] = mre[3] = cos(w);
+        mim[2] = sin(w);
+        mim[3] = -sin(w);
+        rho = sqrt(det);
+        assert_int_equal(json_array_size(ev), 4);
+        for (j = 0; j < 4; j++) {
+            int found = 0;
+            for (c = 0; c < 4; c++) {
+                const json_t *e = json_array_get(ev, c);
+                double re = atof(json_string_value(json_object_get(e, "re"))),
+                       im = atof(json_string_value(json_object_get(e, "im")));
+                if (hypot(re - mre[j], im - mim[j]) < 1e-12) found = 1;
+            }
+            if (!found) fail_msg("w = %g: closed-form eigenvalue %.15g%+.15gi not reported", w, mre[j], mim[j]);
+        }
+        assert_true(fabs(json_number_value(json_array_get(row, irad)) - rho) < 1e-12);
+        assert_true(fabs(json_number_value(json_array_get(row, izeta))) < 1e-12);
+        assert_true(fabs(json_number_value(json_array_get(row, ifreq))) < 1e-12);
+        assert_true(fabs(json_number_value(json_array_get(row, iom)) - w) < 1e-12);
+    }
+    json_decref(doc);
+}
+
 static void test_errors(void **state)
 {
     int status;
@@ -249,6 +313,7 @@ int main(void)
         cmocka_unit_test(test_region_transition),
         cmocka_unit_test(test_claims),
         cmocka_unit_test(test_bounded),
+        cmocka_unit_test(test_sweep_modes),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
