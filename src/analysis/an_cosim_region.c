@@ -750,7 +750,16 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
             int pv;
             json_t *at;
             r = centre_verdict(&pv, &at, run, B, lo[k], hi[k]);
-            if (r == RS_OK && pv != RS_COSIM_BALL_UNDECIDED && pv != want) {
+            if (r == RS_OK && v != RS_COSIM_BALL_UNDECIDED && pv != RS_COSIM_BALL_UNDECIDED && pv != v)
+                /* the second method: the box's Stein verdict against the centre's eigenvalues */
+                r = rs_error_set(run->err, RS_ERR_INCONSISTENT,
+                                 "co-simulation: the Stein certificate over a box (%s) and the certified eigenvalues "
+                                 "at its centre (%s) disagree", verdict_name(v), verdict_name(pv));
+            if (r != RS_OK) {
+                json_decref(at);
+                break;
+            }
+            if (pv != RS_COSIM_BALL_UNDECIDED && pv != want) {
                 status = 1;
                 counter = at;
             } else {
@@ -760,7 +769,8 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
                 if (B->bounded)
                     reason = json_pack("{s:s}", "not_proved",
                                        v == RS_COSIM_BALL_UNSTABLE
-                                           ? "this sub-box is certified rho > 1 but its centre's radius is not"
+                                           ? "this sub-box is certified rho > 1 but its centre's radius does not "
+                                             "exclude 1"
                                            : "rho < 1 on this sub-box: not certified within the box limit (4096 "
                                              "sub-boxes)");
             }

@@ -99,4 +99,6 @@ void rs_render_cosim_claim(rs_render_t *r, const json_t *o)
     rs_render_sayf(r, "`%s`: %s (%lld sub-boxes, Stein certificates over ball one-step maps).\n\n",
                    "\\texttt{%s}: %s (%lld sub-boxes, Stein certificates over ball one-step maps).\n\n",
                    js(o, "text"), st, rs_render_jint(o, "boxes_checked"));
+    if (json_object_get(o, "not_proved")) rs_render_sayf(r, "Not proved: %s.\n\n", "Not proved: \\texttt{%s}.\n\n",
+                                                          js(o, "not_proved"));
 }
