@@ -137,10 +137,9 @@ int rs_an_cosim_region_parse(rs_an_req_t *req, rs_run_t *run)
     box_req_t *b = box_req_new(req);
     const rs_request_t *q = req->q;
     const char *p = req->rest;
-    const rs_optval_t *o = rs_an_opt(req, "digits");
+    const rs_optval_t *o;
     int r;
     b->naxes = 1;
-    b->digits = o->at != NULL ? o->num : 15;
     r = parse_name(b, 0, run, q, &p);
     if (r == RS_OK) r = expect_word("from", run, q, &p, "expected 'region NAME from A to B [digits=N]', found '%s'");
     if (r == RS_OK) r = parse_num(b->lo[0], run, q, &p, "expected a number after 'from', found '%s'");
@@ -148,6 +147,10 @@ int rs_an_cosim_region_parse(rs_an_req_t *req, rs_run_t *run)
     if (r == RS_OK) r = parse_num(b->hi[0], run, q, &p, "expected a number after 'to', found '%s'");
     if (r == RS_OK && fmpq_cmp(b->lo[0], b->hi[0]) >= 0)
         r = rs_req_error(run, q, b->at[0], RS_ERR_INPUT, "expected A < B in '%s'", req->rest);
+    /* [digits=N] after the interval (anything else there is an error) */
+    if (r == RS_OK) r = rs_an_opts_parse(req, run, p);
+    o = rs_an_opt(req, "digits");
+    b->digits = o->at != NULL ? o->num : 15;
     return r;
 }
 

@@ -336,6 +336,11 @@ static int opts_parse(rs_an_req_t *req, rs_run_t *run, const char *t)
     }
 }
 
+int rs_an_opts_parse(rs_an_req_t *req, rs_run_t *run, const char *t)
+{
+    return opts_parse(req, run, t);
+}
+
 int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q)
 {
     int r;

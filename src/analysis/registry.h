@@ -96,6 +96,9 @@ extern const rs_an_def_t rs_an_registry[];
 /* Parses q against the registry for the case's model kind: unknown
  * analysis, wrong kind, unknown option, value out of range are input errors
  * at the offending word.  Clear with rs_an_req_clear (also after an error). */
+/* The key=value options of req's entry in t (for entries with their own
+ * parse function: the text after their grammar), into req->opt. */
+int rs_an_opts_parse(rs_an_req_t *req, rs_run_t *run, const char *t);
 int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q);
 void rs_an_req_clear(rs_an_req_t *req);
 /* Runs a parsed request. */

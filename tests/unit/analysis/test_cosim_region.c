@@ -126,6 +126,32 @@ static void test_region_transition(void **state)
     json_decref(doc);
 }
 
+/* digits=N is honoured (it was ignored: 15 always): the enclosure is
+ * narrower than 10^-6 and contains the transition found with 15 digits */
+static void test_region_digits(void **state)
+{
+    int status;
+    json_t *doc = run("region acc1 from 1/10 to 2 digits=6", &status), *doc15;
+    const json_t *o = first_result(doc), *t;
+    double lo, hi, lo15, hi15;
+    (void) state;
+    assert_int_equal(status, 0);
+    assert_int_equal(json_integer_value(json_object_get(o, "digits")), 6);
+    t = json_array_get(json_object_get(o, "transitions"), 0);
+    lo = encl(t, 0);
+    hi = encl(t, 1);
+    assert_true(hi > lo && hi - lo < 1e-6);
+    doc15 = run("region acc1 from 1/10 to 2", &status);
+    t = json_array_get(json_object_get(first_result(doc15), "transitions"), 0);
+    lo15 = encl(t, 0);
+    hi15 = encl(t, 1);
+    assert_true(lo <= lo15 && hi15 <= hi);
+    assert_true(json_integer_value(json_object_get(o, "boxes"))
+                < json_integer_value(json_object_get(first_result(doc15), "boxes")));
+    json_decref(doc);
+    json_decref(doc15);
+}
+
 static void test_claims(void **state)
 {
     int status;
@@ -305,12 +331,19 @@ static void test_errors(void **state)
     doc = run("claim stable when acc1 <= 1", &status);
     assert_int_equal(status, 2);
     json_decref(doc);
+    /* the text after the interval is options: unknown words are errors (they were ignored) */
+    doc = run("region acc1 from 1/10 to 2 garbage", &status);
+    assert_int_equal(status, 2);
+    assert_non_null(strstr(json_string_value(json_object_get(json_object_get(doc, "error"), "message")),
+                           "expected an option (digits=)"));
+    json_decref(doc);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_region_transition),
+        cmocka_unit_test(test_region_digits),
         cmocka_unit_test(test_claims),
         cmocka_unit_test(test_bounded),
         cmocka_unit_test(test_sweep_modes),
