@@ -468,6 +468,52 @@ static void test_region_vs_loop(void **state)
     json_decref(doc);
 }
 
+/* claims over boxes for the I-extension, K = 1, alpha_T = 3/4, symmetric
+ * model (cases/cosim/li-ext-i-k1-a3_4-sym.case): `claim stable` on
+ * acc1 in [3, 4] is proved, and the literal loop decays at both ends;
+ * `claim bounded` on [4, 5] is refuted by a certified point where the loop
+ * grows */
+static void test_claims_vs_loop(void **state)
+{
+    static const double ends[2] = {3.0, 4.0};
+    int status, i;
+    json_t *doc;
+    const json_t *o;
+    rs_cosim_t cs;
+    rs_error_t err;
+    loop_t L;
+    long a, b;
+    (void) state;
+    rs_cosim_init(cs, 2, 2);
+    set_model(cs, 0, err);
+    cs->method = RS_COSIM_IMPLICIT;
+    cs->order = 1;
+    cs->ext = RS_COSIM_EXT_I;
+    fmpq_set_si(cs->alpha_T, 3, 4);
+    loop_from(&L, cs);
+    doc = run_case(RS_SOURCE_DIR "/cases/cosim/li-ext-i-k1-a3_4-sym.case", "claim stable when 3 <= acc1 <= 4", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 0);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "proved");
+    json_decref(doc);
+    for (i = 0; i < 2; i++) {
+        L.C[0][0] = -ends[i] * 1.01;
+        L.C[0][2] = ends[i] * 1.01;
+        assert_true(loop_growth(&L) < 0.999);
+    }
+    doc = run_case(RS_SOURCE_DIR "/cases/cosim/li-ext-i-k1-a3_4-sym.case", "claim bounded when 4 <= acc1 <= 5", &status);
+    o = first_result(doc);
+    assert_int_equal(status, 1);
+    assert_string_equal(json_string_value(json_object_get(o, "status")), "refuted");
+    assert_int_equal(sscanf(json_string_value(json_object_get(json_object_get(o, "counterexample"), "acc1")), "%ld/%ld",
+                            &a, &b), 2);
+    L.C[0][0] = -(double) a / (double) b * 1.01;
+    L.C[0][2] = (double) a / (double) b * 1.01;
+    assert_true(loop_growth(&L) > 1.001);
+    json_decref(doc);
+    rs_cosim_clear(cs);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -476,6 +522,7 @@ int main(void)
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_ball_encloses),
         cmocka_unit_test(test_region_vs_loop),
+        cmocka_unit_test(test_claims_vs_loop),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
