@@ -255,14 +255,17 @@ else fail "cosim sweep of stability: '$got' vs '$exp'"; fi
 # sweep of modes: Li's symmetric in-phase mode (see the modes check below) is
 # lambda_c = -1/10 +- i at every acc1: reference=1 picks it in every row with
 # damping ratio 0.1/sqrt(1.01), frequency error sqrt(1.01) - 1, omega 1 (awk);
-# the radius columns are those of the radius sweep
+# the verdict columns are those of the radius sweep and the radius intervals
+# meet (the radius sweep takes the interval-double route, the modes sweep Arb)
 "$RS" --csv "$T/lisw4.csv" --analyse "$SW of modes reference=1" "$LI" >"$T/out" 2>"$T/err"; rc=$?
 check_exit "cosim sweep of modes exit" 0 "$rc"
 if [ "$(grep -vc '^#\|^index' "$T/lisw4.csv")" = 7 ] && grep -v '^#\|^index' "$T/lisw4.csv" | awk -F, '
     function ok(a, b) { return (a - b < 1e-12 && b - a < 1e-12) }
     { if (!(ok($10, 0.1 / sqrt(1.01)) && ok($11, sqrt(1.01) - 1) && ok($12, 1))) bad = 1 } END { exit bad }' \
-    && [ "$(grep -v '^#\|^index' "$T/lisw4.csv" | cut -d, -f1-9)" = "$(grep -v '^#\|^index' "$T/lisw2.csv" | cut -d, -f1-9)" ]
-then ok "cosim sweep of modes: the in-phase mode in every row, the radius sweep's columns"
+    && [ "$(grep -v '^#\|^index' "$T/lisw4.csv" | cut -d, -f1-3,7-9)" = "$(grep -v '^#\|^index' "$T/lisw2.csv" | cut -d, -f1-3,7-9)" ] \
+    && paste -d, "$T/lisw4.csv" "$T/lisw2.csv" | grep -v '^#\|^index' | awk -F, -v n=12 '
+        { if (!($5 <= $(n + 6) && $(n + 5) <= $6)) bad = 1 } END { exit bad }'
+then ok "cosim sweep of modes: the in-phase mode in every row, the radius sweep's verdicts, radius intervals meet"
 else fail "cosim sweep of modes: $(head -3 "$T/lisw4.csv") $(cat "$T/err")"; fi
 "$RS" --analyse "$SW of modes" "$LI" >"$T/out" 2>"$T/err"; rc=$?
 check_exit "cosim sweep of modes without reference exit" 2 "$rc"
