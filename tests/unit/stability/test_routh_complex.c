@@ -1,0 +1,221 @@
+/* test_routh_complex.c -- the Bilharz / generalised Routh-Hurwitz test over
+ * Q(i) (stability/routh_complex.c): half-plane counts of polynomials built
+ * from their roots by hand, the bilinear route against known unit-circle
+ * cases, and random polynomials against Arb's certified complex roots
+ * (acb_poly_find_roots, an independent root finder) and against complex
+ * Schur-Cohn. */
+#include "testutil.h"
+#include <acb_poly.h>
+#include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
+
+/* p from integer pairs (re, im) per coefficient, low degree first */
+static void set_poly(fmpq_poly_t re, fmpq_poly_t im, const slong *c, slong n, slong den)
+{
+    slong k;
+    fmpq_poly_zero(re);
+    fmpq_poly_zero(im);
+    for (k = 0; k < n; k++) {
+        fmpq_t x;
+        fmpq_init(x);
+        fmpq_set_si(x, c[2 * k], (ulong) den);
+        fmpq_poly_set_coeff_fmpq(re, k, x);
+        fmpq_set_si(x, c[2 * k + 1], (ulong) den);
+        fmpq_poly_set_coeff_fmpq(im, k, x);
+        fmpq_clear(x);
+    }
+}
+
+static void counts_of(const slong *c, slong n, slong want_left, slong want_right, slong want_axis, int want_rep)
+{
+    fmpq_poly_t re, im;
+    rs_routh_complex_t t;
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    rs_routh_complex_init(t);
+    set_poly(re, im, c, n, 1);
+    rs_routh_complex_count(t, re, im);
+    assert_int_equal(t->degree, n - 1);
+    assert_int_equal(t->left, want_left);
+    assert_int_equal(t->right, want_right);
+    assert_int_equal(t->axis, want_axis);
+    assert_int_equal(t->axis_repeated, want_rep);
+    rs_routh_complex_clear(t);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+}
+
+/* Each polynomial is the product of its roots' factors, multiplied out by
+ * hand (coefficients low degree first, pairs re, im). */
+static void test_hand_counts(void **state)
+{
+    /* s + 1: root -1 */
+    static const slong a[] = {1, 0, 1, 0};
+    /* s - 1: root 1 */
+    static const slong b[] = {-1, 0, 1, 0};
+    /* (s - (-1 + 2i))(s - (-2 - i)) = s^2 + (3 - i) s + (-1 + 2i)(-2 - i)... :
+     * sum of roots -3 + i, product (-1 + 2i)(-2 - i) = 2 + i - 4i - 2i^2 = 4 - 3i:
+     * s^2 + (3 - i) s + (4 - 3i); both roots in Re s < 0 */
+    static const slong c[] = {4, -3, 3, -1, 1, 0};
+    /* (s - (1 + i))(s + 1) = s^2 + (1 - 1 - i) s - (1 + i) = s^2 - i s - 1 - i:
+     * one root on each side */
+    static const slong d[] = {-1, -1, 0, -1, 1, 0};
+    /* (s - i)(s + 1) = s^2 + (1 - i) s - i: one root on the axis, one left */
+    static const slong e[] = {0, -1, 1, -1, 1, 0};
+    /* (s - i)^2 (s + 2) = (s^2 - 2i s - 1)(s + 2) = s^3 + (2 - 2i) s^2 + (-1 - 4i) s - 2:
+     * a double root on the axis */
+    static const slong f[] = {-2, 0, -1, -4, 2, -2, 1, 0};
+    /* s^2 - 1: roots +-1, mirror images across the axis; q(i w) = -w^2 - 1 is
+     * real, so gcd(A, B) = w^2 + 1 holds both (no real root: one per side) */
+    static const slong g[] = {-1, 0, 0, 0, 1, 0};
+    /* (s - (1 + i))(s - (-1 + i)) = s^2 - 2i s - 2: a mirror pair off the real axis */
+    static const slong h[] = {-2, 0, 0, -2, 1, 0};
+    /* s^2 + 1: roots +-i, both on the axis, simple */
+    static const slong k[] = {1, 0, 0, 0, 1, 0};
+    /* (s - 2i)(s + 3)(s - 5) = (s^2 - 2 s - 15)(s - 2i)
+     * = s^3 + (-2 - 2i) s^2 + (-15 + 4i) s + 30i: one of each */
+    static const slong l[] = {0, 30, -15, 4, -2, -2, 1, 0};
+    /* i s + 1 (root s = i): the axis */
+    static const slong m[] = {1, 0, 0, 1};
+    (void) state;
+    counts_of(a, 2, 1, 0, 0, 0);
+    counts_of(b, 2, 0, 1, 0, 0);
+    counts_of(c, 3, 2, 0, 0, 0);
+    counts_of(d, 3, 1, 1, 0, 0);
+    counts_of(e, 3, 1, 0, 1, 0);
+    counts_of(f, 4, 1, 0, 2, 1);
+    counts_of(g, 3, 1, 1, 0, 0);
+    counts_of(h, 3, 1, 1, 0, 0);
+    counts_of(k, 3, 0, 0, 2, 0);
+    counts_of(l, 4, 1, 1, 1, 0);
+    counts_of(m, 2, 0, 0, 1, 0);
+}
+
+static rs_status_t status_of(const slong *c, slong n, slong den)
+{
+    fmpq_poly_t re, im;
+    rs_status_t st, st2;
+    rs_error_t err;
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    rs_error_init(err);
+    set_poly(re, im, c, n, den);
+    assert_int_equal(rs_routh_complex_status(&st, NULL, re, im, n - 1, err), RS_OK);
+    assert_int_equal(rs_routh_complex_checked_status(&st2, re, im, n - 1, err), RS_OK);
+    assert_int_equal(st, st2);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return st;
+}
+
+/* unit-circle cases through the bilinear transform (the same hand examples
+ * as test_schur_complex.c, plus roots at lambda = -1, the degree drop) */
+static void test_bilinear_status(void **state)
+{
+    static const slong a[] = {0, -1, 2, 0};            /* lambda - i/2: inside */
+    static const slong b[] = {1, 0, 0, 0, 1, 0};        /* lambda^2 + 1: +-i simple */
+    static const slong c[] = {-1, 0, 0, -2, 1, 0};      /* (lambda - i)^2: double on the circle */
+    static const slong d[] = {-3, -4, 5, 0};            /* 5 lambda - (3 + 4i): on the circle */
+    static const slong e[] = {-3, -3, 2, 0};            /* lambda - 3(1 + i)/2: outside */
+    static const slong f[] = {1, 0, 1, 0};              /* lambda + 1: degree drop 1 */
+    static const slong g[] = {1, 0, 2, 0, 1, 0};        /* (lambda + 1)^2: drop 2, repeated */
+    /* BDF2 at z = -1/2 + 3/2 i: (3/2 - z) lambda^2 - 2 lambda + 1/2, times 2:
+     * (4 - 3i) lambda^2 - 4 lambda + 1; roots (4 +- sqrt(16 - 4(4 - 3i)))/(2(4 - 3i))
+     * = (2 +- sqrt(3i))/(4 - 3i), sqrt(3i) = sqrt(3/2)(1 + i); |4 - 3i| = 5,
+     * |2 + sqrt(3/2)(1 + i)|^2 = (2 + 1.2247)^2 + 1.5 = 11.90 < 25 and
+     * |2 - sqrt(3/2)(1 + i)|^2 = 0.6027 + 1.5 = 2.10 < 25: both inside */
+    static const slong h[] = {1, 0, -4, 0, 4, -3};
+    (void) state;
+    assert_int_equal(status_of(a, 2, 2), RS_STATUS_STABLE);
+    assert_int_equal(status_of(b, 3, 1), RS_STATUS_MARGINAL);
+    assert_int_equal(status_of(c, 3, 1), RS_STATUS_UNSTABLE);
+    assert_int_equal(status_of(d, 2, 5), RS_STATUS_MARGINAL);
+    assert_int_equal(status_of(e, 2, 2), RS_STATUS_UNSTABLE);
+    assert_int_equal(status_of(f, 2, 1), RS_STATUS_MARGINAL);
+    assert_int_equal(status_of(g, 3, 1), RS_STATUS_UNSTABLE);
+    assert_int_equal(status_of(h, 3, 1), RS_STATUS_STABLE);
+}
+
+/* the half-plane counts by certified Arb roots: 1 when every root's real
+ * part has a decided sign or is exactly the axis (not decided: -1) */
+static int arb_counts(slong *left, slong *right, const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k, prec;
+    int res = -1;
+    for (prec = 64; prec <= 1024 && res == -1; prec *= 2) {
+        acb_poly_t p;
+        acb_ptr r = _acb_vec_init(n);
+        acb_poly_init(p);
+        for (k = 0; k <= n; k++) {
+            acb_t c;
+            fmpq_t x;
+            acb_init(c);
+            fmpq_init(x);
+            fmpq_poly_get_coeff_fmpq(x, re, k);
+            arb_set_fmpq(acb_realref(c), x, prec);
+            fmpq_poly_get_coeff_fmpq(x, im, k);
+            arb_set_fmpq(acb_imagref(c), x, prec);
+            acb_poly_set_coeff_acb(p, k, c);
+            acb_clear(c);
+            fmpq_clear(x);
+        }
+        if (acb_poly_find_roots(r, p, NULL, 0, prec) == n) {
+            res = 1;
+            *left = *right = 0;
+            for (k = 0; k < n; k++) {
+                if (arb_is_negative(acb_realref(r + k))) (*left)++;
+                else if (arb_is_positive(acb_realref(r + k))) (*right)++;
+                else res = -1;
+            }
+        }
+        acb_poly_clear(p);
+        _acb_vec_clear(r, n);
+    }
+    return res;
+}
+
+static void test_random_vs_arb(void **state)
+{
+    flint_rand_t rs;
+    fmpq_poly_t re, im;
+    slong t, compared = 0;
+    (void) state;
+    flint_randinit(rs);
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    for (t = 0; t < 400; t++) {
+        slong n = 1 + (slong) n_randint(rs, 6), k, left, right;
+        slong c[14];
+        rs_routh_complex_t rt;
+        for (k = 0; k < 2 * (n + 1); k++) c[k] = (slong) n_randint(rs, 13) - 6;
+        if (c[2 * n] == 0 && c[2 * n + 1] == 0) c[2 * n] = 7 + (slong) n_randint(rs, 8);   /* exact degree n */
+        set_poly(re, im, c, n + 1, 1 + (slong) n_randint(rs, 4));
+        rs_routh_complex_init(rt);
+        rs_routh_complex_count(rt, re, im);
+        assert_int_equal(rt->left + rt->right + rt->axis, n);
+        if (arb_counts(&left, &right, re, im) == 1) {
+            assert_int_equal(rt->axis, 0);
+            assert_int_equal(rt->left, left);
+            assert_int_equal(rt->right, right);
+            compared++;
+        }
+        /* the unit-circle verdicts of both exact routes agree */
+        {
+            rs_status_t s1, s2;
+            rs_error_t err;
+            rs_error_init(err);
+            assert_int_equal(rs_schur_complex_status(&s1, re, im, n, err), RS_OK);
+            assert_int_equal(rs_routh_complex_status(&s2, NULL, re, im, n, err), RS_OK);
+            assert_int_equal(s1, s2);
+        }
+        rs_routh_complex_clear(rt);
+    }
+    assert_true(compared > 300);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    flint_randclear(rs);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_hand_counts),
+        cmocka_unit_test(test_bilinear_status),
+        cmocka_unit_test(test_random_vs_arb),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
