@@ -74,6 +74,16 @@ typedef struct {
     rs_loc_t loc;
 } rs_set_t;
 
+/* `set NAME = A + B*i` with B != 0 (or --set NAME=A+B*i): a complex value,
+ * kept apart from the real ones so that every real route sees NAME unset;
+ * the analyses that run over Q(i) (stability, radius, charpoly, bilinear,
+ * routh) substitute it, the others refuse. */
+typedef struct {
+    char *name;
+    fmpq_t re, im;
+    rs_loc_t loc;
+} rs_cset_t;
+
 /* An analysis request: the text after `analyse`, or a whole `expect ...` /
  * `claim ...` line (text starts with that keyword). */
 typedef struct {
@@ -138,6 +148,7 @@ typedef struct {
     rs_expr_t *charexpr;   /* `char EXPR`, or NULL */
     rs_loc_t charloc;
     slong nsets;     rs_set_t *sets;
+    slong ncsets;    rs_cset_t *csets;   /* complex set values (not in sets) */
     slong nrequests; rs_request_t *requests;
     /* builders */
     slong nsubs;     rs_subsystem_t *subs;
@@ -165,6 +176,7 @@ void rs_name_clear(rs_name_t *n);
 void rs_let_clear(rs_let_t *l);
 void rs_eq_clear(rs_eq_t *q);
 void rs_set_clear(rs_set_t *s);
+void rs_cset_clear(rs_cset_t *s);
 void rs_request_clear(rs_request_t *q);
 void rs_recterm_clear(rs_recterm_t *t);
 void rs_deq_clear(rs_deq_t *d);
@@ -183,7 +195,7 @@ slong rs_case_unknown_index(const rs_case_t c, const char *name);
 slong rs_case_let_index(const rs_case_t c, const char *name);
 
 /* Add or override `set NAME = VALUE` (from --set NAME=VALUE); errors if NAME
- * is not a parameter. */
+ * is not a parameter.  VALUE may be complex (A + B*i). */
 int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err);
 
 /* Drop every request (for --analyse) / append one. */

@@ -77,6 +77,14 @@ int rs_expr_parse_number(fmpq_t q, const char *s, rs_error_t err);
 int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src,
                        rs_error_t err);
 
+/* The same over Q(i): the name i (when the case declares nothing of that
+ * name: the caller checks) is the imaginary unit; q = re + i im. */
+int rs_expr_eval_const_complex(fmpq_t re, fmpq_t im, const rs_expr_t *e, const rs_src_t *src,
+                               rs_error_t err);
+
+/* rs_expr_parse_number over Q(i) (--set NAME=A+B*i). */
+int rs_expr_parse_complex(fmpq_t re, fmpq_t im, const char *s, rs_error_t err);
+
 void rs_expr_free(rs_expr_t *e);
 rs_expr_t *rs_expr_copy(const rs_expr_t *e);
 

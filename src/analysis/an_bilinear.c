@@ -5,7 +5,7 @@
 
 /* ---- bilinear ------------------------------------------------------------- */
 
-int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req)
+static int bilinear_real(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -37,4 +37,11 @@ int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_clear(qz, s->zctx);
     fmpz_mpoly_clear(t, s->zctx);
     return RS_OK;
+}
+
+int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req)
+{
+    /* at complex set values: over Q(i) (an_complex.c) */
+    if (rs_an_complex_mode(run)) return rs_an_complex_bilinear(run, req);
+    return bilinear_real(run, req);
 }

@@ -26,7 +26,7 @@ json_t *rs_charpoly_json(const rs_variant_t *v)
     return o;
 }
 
-int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req)
+static int charpoly_real(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_assign_t *a;
     slong n;
@@ -39,4 +39,11 @@ int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req)
     if (r != RS_OK) return r;
     json_array_append_new(run->results, rs_charpoly_json(v));
     return RS_OK;
+}
+
+int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req)
+{
+    /* at complex set values: over Q(i) (an_complex.c) */
+    if (rs_an_complex_mode(run)) return rs_an_complex_charpoly(run, req);
+    return charpoly_real(run, req);
 }

@@ -121,7 +121,7 @@ static void radius_outer_json(json_t *o, const rs_radius_t rr)
     arf_clear(lb);
 }
 
-int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
+static int radius_real(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
     const rs_optval_t *dg = rs_an_opt(req, "digits");
@@ -330,4 +330,11 @@ int rs_an_numeric_radius(rs_run_t *run, const rs_an_req_t *req)
 int rs_an_numeric_stability(rs_run_t *run, const rs_an_req_t *req)
 {
     return numeric(run, req, 1);
+}
+
+int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
+{
+    /* at complex set values: over Q(i) (an_complex.c) */
+    if (rs_an_complex_mode(run)) return rs_an_complex_radius(run, req);
+    return radius_real(run, req);
 }

@@ -149,7 +149,7 @@ static int routh_symbolic(rs_run_t *run, const rs_request_t *q, const rs_variant
     return r;
 }
 
-int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
+static int routh_real(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
     fmpz_poly_t p;
@@ -168,4 +168,11 @@ int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
     if (r != RS_OK) { json_decref(o); return r; }
     rs_run_emit_exact(run, v, o);
     return RS_OK;
+}
+
+int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
+{
+    /* at complex set values: over Q(i) (an_complex.c) */
+    if (rs_an_complex_mode(run)) return rs_an_complex_routh(run, req);
+    return routh_real(run, req);
 }

@@ -1,8 +1,9 @@
 /* an_stability.c -- `stability` of the equations: every parameter set,
- * the exact verdict with root counts (Routh and Schur-Cohn must agree). */
+ * the exact verdict with root counts (Routh and Schur-Cohn must agree; a
+ * char line over Q(i) also by the complex pair of an_complex.c). */
 #include "analysis/registry.h"
 
-int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
+static int stability_real(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
     rs_variant_t *v;
@@ -23,6 +24,10 @@ int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
             rs_status_t st;
             rs_json_add_count(o, rc);
             r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, o);
+            /* a char line over Q(i): its real block form decided; the complex
+             * pair (Schur-Cohn over Q(i), Bilharz) must agree */
+            if (r == RS_OK && v->s->complex_char && v->not_in_p == NULL)
+                r = rs_an_complex_char_check(run, req, st, o);
         }
         if (r == RS_OK) {
             rs_run_emit_exact(run, v, o);
@@ -33,4 +38,11 @@ int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
     }
     fmpz_poly_clear(p);
     return r;
+}
+
+int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
+{
+    /* at complex set values: over Q(i) (an_complex.c) */
+    if (rs_an_complex_mode(run)) return rs_an_complex_stability(run, req);
+    return stability_real(run, req);
 }

@@ -77,6 +77,76 @@ static int check_assumptions(const rs_case_t c, const rs_model_t m, rs_error_t e
     return RS_OK;
 }
 
+static int mentions(const rs_expr_t *e, const char *name)
+{
+    if (e == NULL) return 0;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, name) == 0) return 1;
+    return mentions(e->a, name) || mentions(e->b, name);
+}
+
+/* Complex set values: only for an equations case, on a parameter that is
+ * not an angle and that no assume line compares (a real is required
+ * there).  The error is at the set value when it is in the file, else at
+ * the place that requires a real. */
+static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t err)
+{
+    slong k, i, j;
+    for (k = 0; k < c->ncsets; k++) {
+        const rs_cset_t *x = c->csets + k;
+        slong pi = rs_case_param_index(c, x->name);
+        char *val = rs_complex_str(x->re, x->im);
+        const char *file = x->loc.line > 0 ? x->loc.file : NULL;
+        int r = RS_OK;
+        if (m->kind != RS_MODEL_EQUATIONS) {
+            if (file) r = rs_error_set_at(err, RS_ERR_INPUT, file, x->loc.line, x->loc.col, "'%s' is set to the "
+                                          "complex value %s, but this case's model is numeric (real entries only): "
+                                          "expected a real value", x->name, val);
+            else r = rs_error_set(err, RS_ERR_INPUT, "--set %s=%s: this case's model is numeric (real entries "
+                                  "only): expected a real value", x->name, val);
+        } else if (pi >= 0 && c->params[pi].angle) {
+            r = rs_error_set(err, RS_ERR_INPUT, "--set %s=%s: '%s' is an angle parameter (it ranges over every "
+                             "angle)", x->name, val, x->name);
+        }
+        for (i = 0; i < c->nassume && r == RS_OK; i++)
+            for (j = 0; j < c->assume[i].n && r == RS_OK; j++) {
+                const rs_cond_t *a = c->assume + i;
+                if (!mentions(a->e[j], x->name)) continue;
+                if (file)
+                    r = rs_error_set_at(err, RS_ERR_INPUT, file, x->loc.line, x->loc.col, "'%s' is set to the "
+                                        "complex value %s, but the assume line at %s:%d:%d compares it (a real "
+                                        "is required there)", x->name, val, a->loc.file ? a->loc.file : c->path,
+                                        a->loc.line, a->loc.col);
+                else
+                    r = rs_error_set_at(err, RS_ERR_INPUT, a->loc.file ? a->loc.file : c->path, a->loc.line,
+                                        a->loc.col, "expected a real '%s' in this assume line, but --set gives it "
+                                        "the complex value %s", x->name, val);
+            }
+        free(val);
+        if (r != RS_OK) return r;
+    }
+    return RS_OK;
+}
+
+/* The analyses that run over Q(i) at complex set values (an_complex.c). */
+static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
+{
+    static const char *const ok[] = {"charpoly", "bilinear", "routh", "stability", "radius", NULL};
+    const rs_cset_t *x = run->c->csets;
+    char *val, msg[RS_ERROR_MSG_LEN];
+    slong k;
+    if (run->c->ncsets == 0) return RS_OK;
+    for (k = 0; ok[k] != NULL; k++)
+        if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
+    val = rs_complex_str(x->re, x->im);
+    snprintf(msg, sizeof msg, "'%s' does not run at a complex set value (%s = %s)%s: over Q(i) recstab runs "
+             "charpoly, bilinear, routh, stability and radius", req->def->name, x->name, val,
+             strcmp(req->def->name, "hurwitz") == 0 || strcmp(req->def->name, "jury") == 0
+             ? " (its determinants are those of a real polynomial; routh gives the Bilharz chain and stability "
+               "both exact complex tests)" : "");
+    free(val);
+    return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+}
+
 static void free_requests(rs_request_t *q, slong n)
 {
     slong i;
@@ -104,6 +174,10 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     *out = NULL;
     *nout = 0;
     if (run->m->kind != RS_MODEL_EQUATIONS) {
+        names[n++] = "stability";
+    } else if (c->ncsets > 0) {
+        /* complex set values: the polynomial and its verdict over Q(i) */
+        names[n++] = "charpoly";
         names[n++] = "stability";
     } else {
         r = rs_run_numeric_variant(run, &v);
@@ -142,7 +216,10 @@ static int parse_requests(rs_an_req_t **out, rs_run_t *run, const rs_request_t *
     slong i;
     int r = RS_OK;
     *out = calloc((size_t) nq + 1, sizeof(rs_an_req_t));
-    for (i = 0; i < nq && r == RS_OK; i++) r = rs_an_req_parse(*out + i, run, q + i);
+    for (i = 0; i < nq && r == RS_OK; i++) {
+        r = rs_an_req_parse(*out + i, run, q + i);
+        if (r == RS_OK) r = check_complex_request(run, *out + i);
+    }
     return r;
 }
 
@@ -249,6 +326,7 @@ int rs_analysis_run(json_t **doc, int *outcome, const rs_case_t c,
     rs_scheme_init(run.sym);
     r = rs_model_lower(m, c, err);
     if (r == RS_OK) r = check_assumptions(c, m, err);
+    if (r == RS_OK) r = check_complex_sets(c, m, err);
     if (r == RS_OK && m->kind == RS_MODEL_EQUATIONS) {
         r = rs_scheme_build(run.sym, m, err);
         run.have_sym = (r == RS_OK);

@@ -153,6 +153,18 @@ int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run,
 int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const fmpq_t lo, const fmpq_t hi, int kind);
 void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const fmpq_t x, const fmpz_mpoly_ctx_t ctx);
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
+
+/* an_complex.c: the analyses at complex set values (run->c->ncsets > 0),
+ * over Q(i); rs_an_complex_char_check: a `char` line with i at real values,
+ * its complex verdict beside the real one (o gets "complex_check"). */
+int rs_an_complex_mode(const rs_run_t *run);
+char *rs_complex_str(const fmpq_t re, const fmpq_t im);
+int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_stability(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
 /* "h", "modes", "spurious", "note" of a modes element o from the certified
  * roots rr at time step h, references refs[0 .. nref) (an_modes.c) */

@@ -242,6 +242,11 @@ json_t *rs_json_sets(const rs_case_t c)
     slong i;
     for (i = 0; i < c->nsets; i++)
         json_object_set_new(sets, c->sets[i].name, rs_json_fmpq(c->sets[i].value));
+    for (i = 0; i < c->ncsets; i++) {
+        char *v = rs_complex_str(c->csets[i].re, c->csets[i].im);
+        json_object_set_new(sets, c->csets[i].name, json_string(v));
+        free(v);
+    }
     return sets;
 }
 

@@ -49,6 +49,15 @@ void rs_set_clear(rs_set_t *s)
     memset(s, 0, sizeof *s);
 }
 
+void rs_cset_clear(rs_cset_t *s)
+{
+    flint_free(s->name);
+    fmpq_clear(s->re);
+    fmpq_clear(s->im);
+    rs_loc_clear(&s->loc);
+    memset(s, 0, sizeof *s);
+}
+
 void rs_request_clear(rs_request_t *q)
 {
     flint_free(q->text);
@@ -130,6 +139,7 @@ void rs_case_clear(rs_case_t c)
     rs_expr_free(c->charexpr);
     rs_loc_clear(&c->charloc);
     CLEAR_ALL(c->sets, c->nsets, rs_set_clear);
+    CLEAR_ALL(c->csets, c->ncsets, rs_cset_clear);
     rs_case_clear_requests(c);
     CLEAR_ALL(c->subs, c->nsubs, rs_subsystem_clear);
     flint_free(c->couple);
@@ -186,9 +196,31 @@ void rs_case_add_request(rs_case_t c, const char *text, const char *file, int li
     c->nrequests++;
 }
 
+/* a value replaces the earlier one of the name, real or complex */
+static void drop_set(rs_case_struct *c, const char *name, int complex)
+{
+    slong k;
+    if (complex) {
+        for (k = 0; k < c->nsets; k++)
+            if (strcmp(c->sets[k].name, name) == 0) {
+                rs_set_clear(c->sets + k);
+                c->sets[k] = c->sets[--c->nsets];
+                return;
+            }
+    } else {
+        for (k = 0; k < c->ncsets; k++)
+            if (strcmp(c->csets[k].name, name) == 0) {
+                rs_cset_clear(c->csets + k);
+                c->csets[k] = c->csets[--c->ncsets];
+                return;
+            }
+    }
+}
+
 void _rs_case_set_one(rs_case_struct *c, const char *name, const fmpq_t v, const char *file, int line, int col)
 {
     slong k;
+    drop_set(c, name, 0);
     for (k = 0; k < c->nsets; k++)
         if (strcmp(c->sets[k].name, name) == 0) {
             fmpq_set(c->sets[k].value, v);
@@ -204,12 +236,38 @@ void _rs_case_set_one(rs_case_struct *c, const char *name, const fmpq_t v, const
     c->nsets++;
 }
 
+void _rs_case_set_complex(rs_case_struct *c, const char *name, const fmpq_t re, const fmpq_t im,
+                          const char *file, int line, int col)
+{
+    slong k;
+    rs_cset_t *x;
+    if (fmpq_is_zero(im)) { _rs_case_set_one(c, name, re, file, line, col); return; }
+    drop_set(c, name, 1);
+    for (k = 0; k < c->ncsets; k++)
+        if (strcmp(c->csets[k].name, name) == 0) break;
+    if (k == c->ncsets) {
+        RS_GROW(c->csets, c->ncsets);
+        x = c->csets + c->ncsets++;
+        x->name = rs_strdup(name);
+        fmpq_init(x->re);
+        fmpq_init(x->im);
+    } else {
+        x = c->csets + k;
+        rs_loc_clear(&x->loc);
+    }
+    fmpq_set(x->re, re);
+    fmpq_set(x->im, im);
+    x->loc.file = rs_strdup(file);
+    x->loc.line = line;
+    x->loc.col = col;
+}
+
 int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err)
 {
     const char *eq = strchr(assignment, '=');
     char *name;
     size_t n;
-    fmpq_t v;
+    fmpq_t v, w;
     int r;
     if (eq == NULL)
         return rs_error_set(err, RS_ERR_INPUT, "--set %s: expected NAME=VALUE", assignment);
@@ -222,15 +280,21 @@ int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err)
         return r;
     }
     fmpq_init(v);
-    r = rs_expr_parse_number(v, eq + 1, err);
+    fmpq_init(w);
+    /* i is the imaginary unit unless the case declares a name i */
+    if (rs_case_param_index(c, "i") < 0 && rs_case_let_index(c, "i") < 0 && rs_case_unknown_index(c, "i") < 0)
+        r = rs_expr_parse_complex(v, w, eq + 1, err);
+    else
+        r = rs_expr_parse_number(v, eq + 1, err);
     if (r != RS_OK) {
         char msg[RS_ERROR_MSG_LEN];
         snprintf(msg, sizeof msg, "%s", err->msg);
         rs_error_set(err, RS_ERR_INPUT, "--set %s: %s", assignment, msg);
     } else {
-        _rs_case_set_one(c, name, v, "--set", 0, 0);
+        _rs_case_set_complex(c, name, v, w, "--set", 0, 0);
     }
     fmpq_clear(v);
+    fmpq_clear(w);
     flint_free(name);
     return r;
 }

@@ -246,7 +246,7 @@ static int st_set(rs_stmt_t *x, size_t i)
         size_t at;
         char *name;
         rs_expr_t *e = NULL;
-        fmpq_t v;
+        fmpq_t v, w;
         int r, line, col;
         _rs_skip_ws(t, &i);
         at = i;
@@ -270,12 +270,19 @@ static int st_set(rs_stmt_t *x, size_t i)
         r = rs_expr_parse(&e, &x->src, &i, x->err);
         if (r != RS_OK) { flint_free(name); return r; }
         fmpq_init(v);
-        r = rs_expr_eval_const(v, e, &x->src, x->err);
+        fmpq_init(w);
+        /* i is the imaginary unit unless the case declares a name i */
+        if (rs_case_param_index(x->c, "i") < 0 && rs_case_let_index(x->c, "i") < 0
+            && rs_case_unknown_index(x->c, "i") < 0)
+            r = rs_expr_eval_const_complex(v, w, e, &x->src, x->err);
+        else
+            r = rs_expr_eval_const(v, e, &x->src, x->err);
         rs_expr_free(e);
-        if (r != RS_OK) { fmpq_clear(v); flint_free(name); return r; }
+        if (r != RS_OK) { fmpq_clear(v); fmpq_clear(w); flint_free(name); return r; }
         rs_src_pos(&x->src, at, &line, &col);
-        _rs_case_set_one(x->c, name, v, x->src.file, line, col);
+        _rs_case_set_complex(x->c, name, v, w, x->src.file, line, col);
         fmpq_clear(v);
+        fmpq_clear(w);
         flint_free(name);
         _rs_skip_ws(t, &i);
         if (t[i] == ',') { i++; continue; }

@@ -527,6 +527,129 @@ int rs_expr_eval_const(fmpq_t q, const rs_expr_t *e, const rs_src_t *src, rs_err
     return r;
 }
 
+/* (ar + i ai)(br + i bi), into (qr, qi) (may alias neither input) */
+static void cmul(fmpq_t qr, fmpq_t qi, const fmpq_t ar, const fmpq_t ai, const fmpq_t br, const fmpq_t bi)
+{
+    fmpq_mul(qr, ar, br);
+    fmpq_submul(qr, ai, bi);
+    fmpq_mul(qi, ar, bi);
+    fmpq_addmul(qi, ai, br);
+}
+
+static slong cbits(const fmpq_t r, const fmpq_t i)
+{
+    return (slong) (fmpz_bits(fmpq_numref(r)) + fmpz_bits(fmpq_denref(r))
+                    + fmpz_bits(fmpq_numref(i)) + fmpz_bits(fmpq_denref(i)));
+}
+
+int rs_expr_eval_const_complex(fmpq_t re, fmpq_t im, const rs_expr_t *e, const rs_src_t *src, rs_error_t err)
+{
+    fmpq_t ar, ai, br, bi, t;
+    int r = RS_OK;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0 && !e->shifted) {
+        fmpq_zero(re);
+        fmpq_one(im);
+        return RS_OK;
+    }
+    if (e->kind == RS_EXPR_NUM || e->kind == RS_EXPR_NAME || e->kind == RS_EXPR_CALL) {
+        fmpq_zero(im);
+        return rs_expr_eval_const(re, e, src, err);
+    }
+    fmpq_init(ar); fmpq_init(ai); fmpq_init(br); fmpq_init(bi); fmpq_init(t);
+    r = rs_expr_eval_const_complex(ar, ai, e->a, src, err);
+    if (r == RS_OK && e->b != NULL)
+        r = rs_expr_eval_const_complex(br, bi, e->b, src, err);
+    if (r == RS_OK) {
+        switch (e->kind) {
+        case RS_EXPR_ADD: fmpq_add(re, ar, br); fmpq_add(im, ai, bi); break;
+        case RS_EXPR_SUB: fmpq_sub(re, ar, br); fmpq_sub(im, ai, bi); break;
+        case RS_EXPR_NEG: fmpq_neg(re, ar); fmpq_neg(im, ai); break;
+        case RS_EXPR_MUL: cmul(re, im, ar, ai, br, bi); break;
+        case RS_EXPR_DIV:
+            /* a / b = a conj(b) / |b|^2 */
+            fmpq_mul(t, br, br);
+            fmpq_addmul(t, bi, bi);
+            if (fmpq_is_zero(t)) {
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col, "division by zero");
+                break;
+            }
+            fmpq_neg(bi, bi);
+            cmul(re, im, ar, ai, br, bi);
+            fmpq_div(re, re, t);
+            fmpq_div(im, im, t);
+            break;
+        case RS_EXPR_POW: {
+            slong k, n;
+            if (!fmpq_is_zero(bi) || !fmpz_is_one(fmpq_denref(br))) {
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                                    "expected an integer power, found %s", fmpq_is_zero(bi) ? "a fraction"
+                                    : "a complex number");
+                break;
+            }
+            if (fmpz_bits(fmpq_numref(br)) > 20 || fmpz_cmp_si(fmpq_numref(br), RS_EXPR_MAX_POW) > 0 || fmpz_cmp_si(fmpq_numref(br), -RS_EXPR_MAX_POW) < 0) {
+                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col, "power too large (limit %d)",
+                                    RS_EXPR_MAX_POW);
+                break;
+            }
+            n = fmpz_get_si(fmpq_numref(br));
+            if (fmpq_is_zero(ar) && fmpq_is_zero(ai) && n < 0) {
+                r = rs_error_set_at(err, RS_ERR_INPUT, src->file, e->line, e->col,
+                                    "division by zero (0 to a negative power)");
+                break;
+            }
+            if ((double) cbits(ar, ai) * (double) FLINT_ABS(n) > RS_EXPR_MAX_BITS) {
+                r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col,
+                                    "number too large: about %.0f bits (limit %d bits)",
+                                    (double) cbits(ar, ai) * (double) FLINT_ABS(n), RS_EXPR_MAX_BITS);
+                break;
+            }
+            if (n < 0) {
+                /* 1/a = conj(a)/|a|^2 */
+                fmpq_mul(t, ar, ar);
+                fmpq_addmul(t, ai, ai);
+                fmpq_div(ar, ar, t);
+                fmpq_neg(ai, ai);
+                fmpq_div(ai, ai, t);
+                n = -n;
+            }
+            fmpq_one(br); fmpq_zero(bi);   /* the power, by repeated squaring */
+            for (k = n; k > 0; k >>= 1) {
+                if (k & 1) { cmul(re, im, br, bi, ar, ai); fmpq_swap(re, br); fmpq_swap(im, bi); }
+                if (k > 1) { cmul(re, im, ar, ai, ar, ai); fmpq_swap(re, ar); fmpq_swap(im, ai); }
+            }
+            fmpq_swap(re, br);
+            fmpq_swap(im, bi);
+            break;
+        }
+        default:
+            r = rs_error_set(err, RS_ERR_INTERNAL, "bad node");
+        }
+        if (r == RS_OK && cbits(re, im) > 2 * RS_EXPR_MAX_BITS)
+            r = rs_error_set_at(err, RS_ERR_LIMIT, src->file, e->line, e->col,
+                                "number too large: %ld bits (limit %d bits)", (long) cbits(re, im),
+                                2 * RS_EXPR_MAX_BITS);
+    }
+    fmpq_clear(ar); fmpq_clear(ai); fmpq_clear(br); fmpq_clear(bi); fmpq_clear(t);
+    return r;
+}
+
+int rs_expr_parse_complex(fmpq_t re, fmpq_t im, const char *s, rs_error_t err)
+{
+    rs_src_t src;
+    rs_expr_t *e = NULL;
+    int r;
+    memset(&src, 0, sizeof src);
+    src.file = "";
+    src.text = s;
+    src.line = 1;
+    src.col = 1;
+    r = rs_expr_parse_all(&e, &src, err);
+    if (r == RS_OK)
+        r = rs_expr_eval_const_complex(re, im, e, &src, err);
+    rs_expr_free(e);
+    return r;
+}
+
 int rs_expr_parse_number(fmpq_t q, const char *s, rs_error_t err)
 {
     rs_src_t src;

@@ -53,6 +53,9 @@ rs_src_t _rs_src_from(const rs_src_t *src, size_t i, const char *text);
 
 /* `set NAME = v` (replacing an earlier value of NAME) */
 void _rs_case_set_one(rs_case_struct *c, const char *name, const fmpq_t v, const char *file, int line, int col);
+/* a complex value (a real one when im = 0), replacing any earlier value of name */
+void _rs_case_set_complex(rs_case_struct *c, const char *name, const fmpq_t re, const fmpq_t im,
+                          const char *file, int line, int col);
 
 /* statements of stmt_builder.c / stmt_recurrence.c (keyword read; i after it) */
 int _rs_builder_is_keyword(const char *word);

@@ -297,6 +297,19 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
     const json_t *ev = json_object_get(o, "events");
     int sym = json_is_true(json_object_get(o, "symbolic"));
     size_t i;
+    if (json_object_get(o, "chain") != NULL) {
+        /* over Q(i): the Bilharz chain (an_complex.c) */
+        rs_render_heading(r, "Bilharz chain of q(z) over Q(i)", "Bilharz chain of $q(z)$ over $\\mathbb{Q}(i)$");
+        rs_render_line(r, "p(lambda)", "%s", js(o, "p"));
+        rs_render_line(r, "q(z)", "%s", js(o, "q"));
+        rs_render_line(r, "q(i w)", "A + i B, A = %s", js(o, "A"));
+        rs_render_line(r, "", "B = %s", js(o, "B"));
+        rs_render_line(r, "gcd(A, B)", "%s", js(o, "G"));
+        rs_render_string_list(r, "chain", json_object_get(o, "chain"), "\n               ");
+        rs_render_count(r, o, RS_RENDER_ALL);
+        rs_render_assigned(r, o);
+        return;
+    }
     rs_render_heading(r, "Routh array of q(z)", "Routh array of $q(z)$");
     if (sym) rs_render_line(r, "array", "%s", "fraction-free, symbolic");
     rs_render_rows(r, json_object_get(o, "rows"), sym ? NULL : json_object_get(o, "powers"));
@@ -421,7 +434,11 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
 static void decided_by(rs_render_t *r, const json_t *o)
 {
     const json_t *agree = json_object_get(o, "agree");
-    if (json_is_boolean(agree))
+    if (json_is_boolean(agree) && js(o, "over") != NULL)
+        rs_render_linef(r, "decided by", "%s (%s)", js(o, "decided_by"),
+                        json_is_true(agree) ? "Schur-Cohn over Q(i) on p(lambda) and Bilharz on q(z) agree"
+                                            : "DISAGREEMENT between the complex tests: internal inconsistency");
+    else if (json_is_boolean(agree))
         rs_render_linef(r, "decided by", "%s (%s)", js(o, "decided_by"),
                         json_is_true(agree) ? "Routh on q(z) and Schur-Cohn on p(lambda) agree"
                                             : "DISAGREEMENT between Routh and Schur-Cohn: internal inconsistency");
@@ -438,8 +455,13 @@ void rs_render_stability(rs_render_t *r, const json_t *o)
         rs_render_count(r, o, sym ? 0 : RS_RENDER_PROSE);
         return;
     }
+    if (js(o, "over") != NULL) rs_render_line(r, "p(lambda)", "%s (over Q(i))", js(o, "p"));
     rs_render_count(r, o, RS_RENDER_TEXT | (sym ? 0 : RS_RENDER_PROSE));
     decided_by(r, o);
+    if (json_object_get(o, "complex_check") != NULL)
+        rs_render_linef(r, "over Q(i)", "%s by Schur-Cohn over Q(i) and Bilharz on p = %s (agrees)",
+                        js(json_object_get(o, "complex_check"), "status"),
+                        js(json_object_get(o, "complex_check"), "p"));
     rs_render_assigned(r, o);
 }
 

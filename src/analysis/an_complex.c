@@ -1,0 +1,600 @@
+/* an_complex.c -- the analyses at complex set values (`set z = -1/2 +
+ * 3/2*i`): p(lambda) evaluated exactly over Q(i) (the other parameters
+ * substituted as usual), then
+ *   charpoly   p over Q(i);
+ *   bilinear   q(s) = (1 - s)^n p((1 + s)/(1 - s)) over Q(i);
+ *   routh      the Bilharz chain of q (stability/routh_complex.c);
+ *   stability  complex Schur-Cohn and Bilharz on q, cross-checked (exit 3);
+ *   radius     certified: the roots of p conj(p) (same moduli as p's) by
+ *              the real radius code, p's own roots by acb_poly_find_roots,
+ *              checked against the exact counts.
+ * A `char` line with i (a real 2x2 block form in the scheme) is read back
+ * as A + i B from its block; there `stability` with every parameter real
+ * also runs the complex pair beside the real verdict (routh_complex.h). */
+#include <stdlib.h>
+#include <string.h>
+#include <acb_poly.h>
+#include "analysis/registry.h"
+#include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
+#include "recstab/radius.h"
+
+int rs_an_complex_mode(const rs_run_t *run) { return run->c->ncsets > 0; }
+
+/* "a+b*i", "b*i", "a" (malloc'd) */
+char *rs_complex_str(const fmpq_t re, const fmpq_t im)
+{
+    char *a = fmpq_get_str(NULL, 10, re), *b;
+    char *out;
+    fmpq_t t;
+    if (fmpq_is_zero(im)) {
+        out = malloc(strlen(a) + 1);
+        strcpy(out, a);
+        flint_free(a);
+        return out;
+    }
+    fmpq_init(t);
+    fmpq_abs(t, im);
+    b = fmpq_get_str(NULL, 10, t);
+    out = malloc(strlen(a) + strlen(b) + 8);
+    if (fmpq_is_zero(re))
+        sprintf(out, "%s%s%si", fmpq_sgn(im) < 0 ? "-" : "", fmpq_is_one(t) ? "" : b, fmpq_is_one(t) ? "" : "*");
+    else
+        sprintf(out, "%s%s%s%si", a, fmpq_sgn(im) < 0 ? "-" : "+", fmpq_is_one(t) ? "" : b,
+                fmpq_is_one(t) ? "" : "*");
+    fmpq_clear(t);
+    flint_free(a);
+    flint_free(b);
+    return out;
+}
+
+/* p = re + i im as text in var, highest power first */
+static char *cpoly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var)
+{
+    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k;
+    size_t cap = 64, len = 0;
+    char *out = malloc(cap);
+    fmpq_t a, b;
+    fmpq_init(a); fmpq_init(b);
+    out[0] = '\0';
+    for (k = n; k >= 0; k--) {
+        char *c, pw[64];
+        int paren, neg = 0;
+        size_t need;
+        fmpq_poly_get_coeff_fmpq(a, re, k);
+        fmpq_poly_get_coeff_fmpq(b, im, k);
+        if (fmpq_is_zero(a) && fmpq_is_zero(b)) continue;
+        paren = !fmpq_is_zero(a) && !fmpq_is_zero(b);
+        if (!paren) {
+            /* one part: print its sign as the term's */
+            if (fmpq_sgn(a) < 0 || fmpq_sgn(b) < 0) { neg = 1; fmpq_neg(a, a); fmpq_neg(b, b); }
+        }
+        c = rs_complex_str(a, b);
+        if (k == 0) pw[0] = '\0';
+        else if (k == 1) snprintf(pw, sizeof pw, "%s", var);
+        else snprintf(pw, sizeof pw, "%s^%ld", var, (long) k);
+        need = len + strlen(c) + strlen(pw) + 16;
+        if (need > cap) { cap = 2 * need; out = realloc(out, cap); }
+        if (len > 0) len += (size_t) sprintf(out + len, " %s ", neg ? "-" : "+");
+        else if (neg) len += (size_t) sprintf(out + len, "-");
+        if (k > 0 && !paren && fmpq_is_zero(b) && fmpq_is_one(a))
+            len += (size_t) sprintf(out + len, "%s", pw);
+        else if (k > 0 && !paren && fmpq_is_zero(a) && fmpq_is_one(b))
+            len += (size_t) sprintf(out + len, "i*%s", pw);
+        else
+            len += (size_t) sprintf(out + len, "%s%s%s%s%s", paren ? "(" : "", c, paren ? ")" : "",
+                                    k > 0 ? "*" : "", pw);
+        free(c);
+    }
+    if (len == 0) strcpy(out, "0");
+    fmpq_clear(a); fmpq_clear(b);
+    return out;
+}
+
+static json_t *cpoly_coeffs(const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    json_t *arr = json_array();
+    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k;
+    fmpq_t a, b;
+    fmpq_init(a); fmpq_init(b);
+    for (k = 0; k <= n; k++) {
+        char *c;
+        fmpq_poly_get_coeff_fmpq(a, re, k);
+        fmpq_poly_get_coeff_fmpq(b, im, k);
+        c = rs_complex_str(a, b);
+        json_array_append_new(arr, json_string(c));
+        free(c);
+    }
+    fmpq_clear(a); fmpq_clear(b);
+    return arr;
+}
+
+/* ---- p at the complex point --------------------------------------------------- */
+
+typedef struct {
+    rs_variant_t *v;
+    fmpq_poly_t re, im;   /* p(lambda) over Q(i) */
+    slong deg;            /* its degree over Q(params) (lower here: singular) */
+    json_t *at;           /* {"z": "-1/2+3/2*i", ...} */
+} cpoint_t;
+
+static void cpoint_clear(cpoint_t *cp)
+{
+    fmpq_poly_clear(cp->re);
+    fmpq_poly_clear(cp->im);
+    json_decref(cp->at);
+}
+
+/* the complex value of variable v (a parameter) or -1 when it has none */
+static slong cset_of(const rs_run_t *run, slong v)
+{
+    slong k;
+    if (v >= run->c->nparams) return -1;
+    for (k = 0; k < run->c->ncsets; k++)
+        if (strcmp(run->c->csets[k].name, run->c->params[v].name) == 0) return k;
+    return -1;
+}
+
+/* (fr, fi) = the product of z_v^e_v over the parameters with complex
+ * values; 0 when a parameter without a value occurs (*free_var: it) */
+static int term_factor(fmpq_t fr, fmpq_t fi, slong *free_var, const rs_run_t *run, const slong *ex,
+                       slong nvars, slong lv)
+{
+    slong v, k;
+    fmpq_t t;
+    fmpq_init(t);
+    fmpq_one(fr);
+    fmpq_zero(fi);
+    for (v = 0; v < nvars; v++) {
+        slong c;
+        if (v == lv || ex[v] == 0) continue;
+        c = cset_of(run, v);
+        if (c < 0) { *free_var = v; fmpq_clear(t); return 0; }
+        for (k = 0; k < ex[v]; k++) {
+            /* (fr + i fi)(a + i b) */
+            const fmpq *a = run->c->csets[c].re, *b = run->c->csets[c].im;
+            fmpq_mul(t, fr, a);
+            fmpq_submul(t, fi, b);
+            fmpq_mul(fi, fi, a);
+            fmpq_addmul(fi, fr, b);
+            fmpq_swap(fr, t);
+        }
+    }
+    fmpq_clear(t);
+    return 1;
+}
+
+/* adds (c * i^ib) * factor * lambda^e to re + i im */
+static void add_term(fmpq_poly_t re, fmpq_poly_t im, const fmpq_t c, int ib, const fmpq_t fr, const fmpq_t fi,
+                     slong e)
+{
+    fmpq_t x, y, old;
+    fmpq_init(x); fmpq_init(y); fmpq_init(old);
+    fmpq_mul(x, c, fr);
+    fmpq_mul(y, c, fi);
+    if (ib) { fmpq_swap(x, y); fmpq_neg(x, x); }   /* times i */
+    fmpq_poly_get_coeff_fmpq(old, re, e);
+    fmpq_add(old, old, x);
+    fmpq_poly_set_coeff_fmpq(re, e, old);
+    fmpq_poly_get_coeff_fmpq(old, im, e);
+    fmpq_add(old, old, y);
+    fmpq_poly_set_coeff_fmpq(im, e, old);
+    fmpq_clear(x); fmpq_clear(y); fmpq_clear(old);
+}
+
+/* an fmpq_mpoly (times i when ib) at the point, into re + i im; 0 when a
+ * parameter without a value occurs */
+static int eval_mpoly(fmpq_poly_t re, fmpq_poly_t im, slong *free_var, const rs_run_t *run,
+                      const fmpq_mpoly_t p, int ib, const rs_scheme_struct *s)
+{
+    slong i, n = fmpq_mpoly_length(p, s->ctx);
+    slong *ex = flint_malloc(s->nvars * sizeof(slong));
+    fmpq_t c, fr, fi;
+    int ok = 1;
+    fmpq_init(c); fmpq_init(fr); fmpq_init(fi);
+    for (i = 0; i < n && ok; i++) {
+        fmpq_mpoly_get_term_coeff_fmpq(c, p, i, s->ctx);
+        fmpq_mpoly_get_term_exp_si(ex, p, i, s->ctx);
+        ok = term_factor(fr, fi, free_var, run, ex, s->nvars, s->lambda_var);
+        if (ok) add_term(re, im, c, ib, fr, fi, ex[s->lambda_var]);
+    }
+    fmpq_clear(c); fmpq_clear(fr); fmpq_clear(fi);
+    flint_free(ex);
+    return ok;
+}
+
+static int eval_zpoly(fmpq_poly_t re, fmpq_poly_t im, slong *free_var, const rs_run_t *run,
+                      const fmpz_mpoly_t p, const rs_scheme_struct *s)
+{
+    slong i, n = fmpz_mpoly_length(p, s->zctx);
+    slong *ex = flint_malloc(s->nvars * sizeof(slong));
+    fmpq_t c, fr, fi;
+    int ok = 1;
+    fmpq_init(c); fmpq_init(fr); fmpq_init(fi);
+    for (i = 0; i < n && ok; i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), p, i, s->zctx);
+        fmpz_one(fmpq_denref(c));
+        fmpz_mpoly_get_term_exp_si(ex, p, i, s->zctx);
+        ok = term_factor(fr, fi, free_var, run, ex, s->nvars, s->lambda_var);
+        if (ok) add_term(re, im, c, 0, fr, fi, ex[s->lambda_var]);
+    }
+    fmpq_clear(c); fmpq_clear(fr); fmpq_clear(fi);
+    flint_free(ex);
+    return ok;
+}
+
+static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const char *what)
+{
+    rs_assign_t *a;
+    slong n, k, free_var = -1;
+    const rs_scheme_struct *s;
+    int r, ok;
+    fmpq_poly_init(cp->re);
+    fmpq_poly_init(cp->im);
+    cp->at = json_object();
+    cp->deg = 0;
+    for (k = 0; k < run->c->ncsets; k++) {
+        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
+        json_object_set_new(cp->at, run->c->csets[k].name, json_string(str));
+        free(str);
+    }
+    /* the real set values substituted; the complex ones stay symbolic */
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    r = rs_run_variant(&cp->v, run, a, n);
+    rs_assign_free(a, n);
+    if (r != RS_OK) return r;
+    s = cp->v->s;
+    if (s->complex_char) {
+        /* the block [[A, -B], [B, A]] of p = A + i B */
+        ok = eval_mpoly(cp->re, cp->im, &free_var, run, s->M + 0, 0, s)
+             && eval_mpoly(cp->re, cp->im, &free_var, run, s->M + 2, 1, s);
+        cp->deg = FLINT_MAX(fmpq_mpoly_degree_si(s->M + 0, s->lambda_var, s->ctx),
+                            fmpq_mpoly_degree_si(s->M + 2, s->lambda_var, s->ctx));
+    } else {
+        ok = eval_zpoly(cp->re, cp->im, &free_var, run, cp->v->cp->p, s);
+        cp->deg = fmpz_mpoly_degree_si(cp->v->cp->p, s->lambda_var, s->zctx);
+    }
+    if (!ok) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "%s needs every parameter set to a number (real or complex); still symbolic: %s",
+                 what, s->vars[free_var]);
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    /* a divisor the equations were multiplied through by must not vanish here */
+    for (k = 0; k < s->nnonzero; k++) {
+        fmpq_poly_t dr, di;
+        fmpq_poly_init(dr); fmpq_poly_init(di);
+        ok = eval_mpoly(dr, di, &free_var, run, s->nonzero + k, 0, s);
+        if (ok && fmpq_poly_is_zero(dr) && fmpq_poly_is_zero(di)) {
+            const rs_loc_t *l = s->nonzero_loc + k;
+            char *vals = json_dumps(cp->at, JSON_COMPACT);
+            r = rs_error_set_at(run->err, RS_ERR_INPUT, l->file ? l->file : run->c->path, l->line, l->col,
+                                "expected values that keep every divisor non-zero, found %s, where the "
+                                "equations were multiplied through assuming %s", vals, s->nonzero_text[k]);
+            free(vals);
+        }
+        fmpq_poly_clear(dr); fmpq_poly_clear(di);
+        if (r != RS_OK) return r;
+    }
+    if (fmpq_poly_is_zero(cp->re) && fmpq_poly_is_zero(cp->im))
+        return rs_req_error(run, q, q->text, RS_ERR_MATH, "%s: the characteristic polynomial vanishes at the "
+                            "complex set values", what);
+    return RS_OK;
+}
+
+static json_t *base_json(const char *name, const cpoint_t *cp)
+{
+    json_t *o = json_object();
+    char *p = cpoly_str(cp->re, cp->im, "lambda");
+    json_object_set_new(o, "analysis", json_string(name));
+    json_object_set_new(o, "over", json_string("Q(i)"));
+    json_object_set_new(o, "at", json_deep_copy(cp->at));
+    json_object_set_new(o, "p", json_string(p));
+    free(p);
+    return o;
+}
+
+static void emit(rs_run_t *run, const cpoint_t *cp, json_t *o)
+{
+    json_object_set_new(o, "substituted", json_deep_copy(cp->v->assigned));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+}
+
+/* ---- the analyses --------------------------------------------------------------- */
+
+int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req)
+{
+    cpoint_t cp;
+    json_t *o;
+    int r = cpoint_get(&cp, run, req->q, "charpoly");
+    if (r == RS_OK) {
+        o = base_json("charpoly", &cp);
+        json_object_set_new(o, "var", json_string("lambda"));
+        json_object_set_new(o, "degree", json_integer(FLINT_MAX(fmpq_poly_degree(cp.re), fmpq_poly_degree(cp.im))));
+        json_object_set_new(o, "coeffs", cpoly_coeffs(cp.re, cp.im));
+        json_object_set_new(o, "poly", json_string(json_string_value(json_object_get(o, "p"))));
+        emit(run, &cp, o);
+    }
+    cpoint_clear(&cp);
+    return r;
+}
+
+int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req)
+{
+    cpoint_t cp;
+    json_t *o;
+    int r = cpoint_get(&cp, run, req->q, "bilinear");
+    if (r == RS_OK) {
+        fmpq_poly_t qr, qi;
+        slong n = FLINT_MAX(fmpq_poly_degree(cp.re), fmpq_poly_degree(cp.im)), d;
+        char *str;
+        fmpq_poly_init(qr); fmpq_poly_init(qi);
+        rs_routh_complex_bilinear(qr, qi, cp.re, cp.im);
+        d = FLINT_MAX(fmpq_poly_degree(qr), fmpq_poly_degree(qi));
+        o = base_json("bilinear", &cp);
+        json_object_set_new(o, "var", json_string("z"));
+        json_object_set_new(o, "degree", json_integer(d));
+        json_object_set_new(o, "coeffs", cpoly_coeffs(qr, qi));
+        str = cpoly_str(qr, qi, "z");
+        json_object_set_new(o, "poly", json_string(str));
+        free(str);
+        json_object_set_new(o, "degree_drop", json_integer(n - d));
+        emit(run, &cp, o);
+        fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+    }
+    cpoint_clear(&cp);
+    return r;
+}
+
+static json_t *chain_json(const rs_routh_complex_t t)
+{
+    json_t *arr = json_array();
+    slong k;
+    for (k = 0; k < t->len; k++) {
+        char *str = fmpq_poly_get_str_pretty(t->chain + k, "w");
+        json_array_append_new(arr, json_string(str));
+        flint_free(str);
+    }
+    return arr;
+}
+
+/* the counts of lambda over the unit circle from those of q over the
+ * half-planes: inside = left, on = axis + degree drop (lambda = -1) */
+static void counts_json(json_t *o, const rs_routh_complex_t t, slong n)
+{
+    json_object_set_new(o, "degree", json_integer(n));
+    json_object_set_new(o, "inside", json_integer(t->left));
+    json_object_set_new(o, "on", json_integer(t->axis + (n - t->degree)));
+    json_object_set_new(o, "outside", json_integer(t->right));
+}
+
+int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req)
+{
+    cpoint_t cp;
+    json_t *o;
+    int r = cpoint_get(&cp, run, req->q, "routh");
+    if (r == RS_OK) {
+        fmpq_poly_t qr, qi;
+        rs_routh_complex_t t;
+        char *str;
+        slong n = FLINT_MAX(fmpq_poly_degree(cp.re), fmpq_poly_degree(cp.im));
+        fmpq_poly_init(qr); fmpq_poly_init(qi);
+        rs_routh_complex_init(t);
+        rs_status_t st;
+        rs_routh_complex_bilinear(qr, qi, cp.re, cp.im);
+        r = rs_routh_complex_status(&st, t, cp.re, cp.im, cp.v->singular ? n + 1 : cp.deg, run->err);
+        o = base_json("routh", &cp);
+        json_object_set_new(o, "status", json_string(rs_status_name(st)));
+        json_object_set_new(o, "method", json_string(
+            "Bilharz (generalised Routh-Hurwitz over Q(i)): q(i w) = A(w) + i B(w), the signed remainder "
+            "chain of A/G and B/G (G = gcd(A, B): the roots on the axis and mirror pairs) counts the roots "
+            "of q in Re z < 0 by its Cauchy index"));
+        str = cpoly_str(qr, qi, "z");
+        json_object_set_new(o, "q", json_string(str));
+        free(str);
+        str = fmpq_poly_get_str_pretty(t->A, "w");
+        json_object_set_new(o, "A", json_string(str));
+        flint_free(str);
+        str = fmpq_poly_get_str_pretty(t->B, "w");
+        json_object_set_new(o, "B", json_string(str));
+        flint_free(str);
+        str = fmpq_poly_get_str_pretty(t->G, "w");
+        json_object_set_new(o, "G", json_string(str));
+        flint_free(str);
+        json_object_set_new(o, "chain", chain_json(t));
+        json_object_set_new(o, "left", json_integer(t->left));
+        json_object_set_new(o, "right", json_integer(t->right));
+        json_object_set_new(o, "axis", json_integer(t->axis));
+        counts_json(o, t, n);
+        emit(run, &cp, o);
+        rs_routh_complex_clear(t);
+        fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+    }
+    cpoint_clear(&cp);
+    return r;
+}
+
+/* the exact verdict of p over Q(i) by both routes into o; *t the counts */
+static int complex_verdict(rs_status_t *st, rs_routh_complex_t t, rs_run_t *run, const cpoint_t *cp, json_t *o)
+{
+    rs_status_t s1, s2;
+    slong n = FLINT_MAX(fmpq_poly_degree(cp->re), fmpq_poly_degree(cp->im));
+    /* the real set values already lower the degree over Q(params) */
+    slong deg = cp->v->singular ? n + 1 : cp->deg;
+    int r = rs_schur_complex_status(&s1, cp->re, cp->im, deg, run->err);
+    if (r == RS_OK) r = rs_routh_complex_status(&s2, t, cp->re, cp->im, deg, run->err);
+    if (r != RS_OK) return r;
+    json_object_set_new(o, "methods", json_pack("[ss]", "schur-cohn over Q(i)", "bilharz (bilinear)"));
+    json_object_set_new(o, "agree", json_boolean(s1 == s2));
+    if (s1 != s2)
+        return rs_error_set(run->err, RS_ERR_INCONSISTENT, "complex Schur-Cohn says %s, the Bilharz test on the "
+                            "bilinear transform says %s", rs_status_name(s1), rs_status_name(s2));
+    *st = s1;
+    json_object_set_new(o, "status", json_string(rs_status_name(s1)));
+    counts_json(o, t, n);
+    if (s1 == RS_STATUS_SINGULAR)
+        json_object_set_new(o, "singular", json_string("the leading coefficient of p vanishes at these values: "
+                            "the step cannot be solved"));
+    return RS_OK;
+}
+
+int rs_an_complex_stability(rs_run_t *run, const rs_an_req_t *req)
+{
+    cpoint_t cp;
+    json_t *o = NULL;
+    rs_routh_complex_t t;
+    rs_status_t st;
+    int r = cpoint_get(&cp, run, req->q, "stability");
+    rs_routh_complex_init(t);
+    if (r == RS_OK) {
+        o = base_json("stability", &cp);
+        r = complex_verdict(&st, t, run, &cp, o);
+    }
+    if (r == RS_OK) emit(run, &cp, o);
+    else json_decref(o);
+    rs_routh_complex_clear(t);
+    cpoint_clear(&cp);
+    return r;
+}
+
+/* p's own roots as certified balls when acb_poly_find_roots isolates them
+ * (p squarefree); NULL when it does not within the precision */
+static json_t *croots_json(const fmpq_poly_t re, const fmpq_poly_t im, slong digits)
+{
+    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k, prec;
+    json_t *out = NULL;
+    for (prec = 3.33 * digits + 64; prec <= 8 * (3.33 * digits + 64) && out == NULL; prec *= 2) {
+        acb_poly_t p;
+        acb_ptr rt = _acb_vec_init(n);
+        acb_t c;
+        fmpq_t x;
+        acb_poly_init(p);
+        acb_init(c);
+        fmpq_init(x);
+        for (k = 0; k <= n; k++) {
+            fmpq_poly_get_coeff_fmpq(x, re, k);
+            arb_set_fmpq(acb_realref(c), x, prec);
+            fmpq_poly_get_coeff_fmpq(x, im, k);
+            arb_set_fmpq(acb_imagref(c), x, prec);
+            acb_poly_set_coeff_acb(p, k, c);
+        }
+        if (acb_poly_find_roots(rt, p, NULL, 0, prec) == n) {
+            int fine = 1;
+            for (k = 0; k < n; k++) fine &= acb_rel_accuracy_bits(rt + k) >= 3.33 * digits;
+            if (fine) {
+                out = json_array();
+                for (k = 0; k < n; k++) {
+                    json_t *z = rs_json_acb(rt + k, digits);
+                    arb_t ab;
+                    arb_init(ab);
+                    acb_abs(ab, rt + k, prec);
+                    json_object_set_new(z, "abs", rs_json_arb(ab, digits));
+                    arb_clear(ab);
+                    json_array_append_new(out, z);
+                }
+            }
+        }
+        fmpq_clear(x);
+        acb_clear(c);
+        acb_poly_clear(p);
+        _acb_vec_clear(rt, n);
+    }
+    return out;
+}
+
+int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_optval_t *dg = rs_an_opt(req, "digits");
+    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits;
+    cpoint_t cp;
+    json_t *o = NULL, *roots;
+    rs_routh_complex_t t;
+    rs_radius_t rr;
+    fmpz_poly_t N;
+    rs_status_t st;
+    int r;
+    if (strcmp(rs_an_opt_choice(req, "method"), "certified") != 0)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
+                            "radius at complex set values: only method=certified (found method=%s)",
+                            rs_an_opt_choice(req, "method"));
+    r = cpoint_get(&cp, run, req->q, "radius");
+    rs_routh_complex_init(t);
+    rs_radius_init(rr);
+    fmpz_poly_init(N);
+    if (r == RS_OK) {
+        o = base_json("radius", &cp);
+        rs_schur_complex_norm(N, cp.re, cp.im);
+        if (fmpz_poly_degree(N) < 1) {
+            r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
+                             "radius: p has no root at these values%s", "");
+        } else {
+            r = rs_radius_fmpz_poly(rr, N, digits, run->opt->max_prec, run->err);
+        }
+    }
+    if (r == RS_OK) {
+        const char *nv;
+        int consistent = 1;
+        json_object_set_new(o, "method", json_string(
+            "the roots of p conj(p) (an integer polynomial, the roots of p and their conjugates: the same "
+            "moduli), certified by the real radius code; p's own roots by acb_poly_find_roots"));
+        rs_json_radius(o, rr, digits);
+        roots = croots_json(cp.re, cp.im, digits);
+        json_object_set_new(o, "roots", roots != NULL ? roots : json_null());
+        if (roots == NULL)
+            json_object_set_new(o, "roots_note", json_string("p has a repeated root: its roots are not isolated "
+                                "(the radius above is certified from p conj(p))"));
+        r = complex_verdict(&st, t, run, &cp, o);
+        if (r == RS_OK) {
+            json_t *ex = json_object_get(o, "status");
+            json_object_set(o, "exact_status", ex);
+            json_object_del(o, "status");
+            /* only certified comparisons: an interval containing 1 decides nothing */
+            nv = rs_radius_verdict(rr);
+            if (strcmp(nv, "stable") == 0 && st != RS_STATUS_STABLE) consistent = 0;
+            if (strcmp(nv, "unstable") == 0 && t->right == 0) consistent = 0;
+            json_object_set_new(o, "verdict_from_radius", json_string(strcmp(nv, "undecided") != 0 ? nv :
+                "undecided numerically (the interval contains 1): the exact side decides"));
+            json_object_set_new(o, "consistent", json_boolean(consistent));
+            if (!consistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
+        }
+    }
+    if (r == RS_OK) emit(run, &cp, o);
+    else {
+        json_decref(o);
+        r = rs_req_relocate(run, req->q, r, "radius");
+    }
+    fmpz_poly_clear(N);
+    rs_radius_clear(rr);
+    rs_routh_complex_clear(t);
+    cpoint_clear(&cp);
+    return r;
+}
+
+/* a `char` line over Q(i) with every parameter real and set: the complex
+ * pair (Schur-Cohn over Q(i), Bilharz) beside the real verdict on the
+ * block form; RS_ERR_INCONSISTENT when they differ */
+int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o)
+{
+    cpoint_t cp;
+    rs_routh_complex_t t;
+    rs_status_t st;
+    json_t *c = json_object();
+    int r = cpoint_get(&cp, run, req->q, "stability");
+    rs_routh_complex_init(t);
+    if (r == RS_OK) r = complex_verdict(&st, t, run, &cp, c);
+    if (r == RS_OK) {
+        char *p = cpoly_str(cp.re, cp.im, "lambda");
+        json_object_set_new(c, "p", json_string(p));
+        free(p);
+        json_object_set_new(o, "complex_check", c);
+        c = NULL;
+        if (st != real_st)
+            r = rs_error_set(run->err, RS_ERR_INCONSISTENT, "the char line over Q(i): the real block form says %s, "
+                             "complex Schur-Cohn and Bilharz say %s", rs_status_name(real_st), rs_status_name(st));
+    }
+    json_decref(c);
+    rs_routh_complex_clear(t);
+    cpoint_clear(&cp);
+    return r;
+}
