@@ -538,8 +538,9 @@ static void cmul(fmpq_t qr, fmpq_t qi, const fmpq_t ar, const fmpq_t ai, const f
 
 static slong cbits(const fmpq_t r, const fmpq_t i)
 {
+    /* a real number counts as rs_expr_eval_const counts it */
     return (slong) (fmpz_bits(fmpq_numref(r)) + fmpz_bits(fmpq_denref(r))
-                    + fmpz_bits(fmpq_numref(i)) + fmpz_bits(fmpq_denref(i)));
+                    + (fmpq_is_zero(i) ? 0 : fmpz_bits(fmpq_numref(i)) + fmpz_bits(fmpq_denref(i))));
 }
 
 int rs_expr_eval_const_complex(fmpq_t re, fmpq_t im, const rs_expr_t *e, const rs_src_t *src, rs_error_t err)

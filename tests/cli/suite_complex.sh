@@ -1,0 +1,95 @@
+#!/bin/sh
+# suite_complex.sh -- complex set values (issue 15 section 1): the exact
+# verdicts and radii over Q(i) at points whose answer is known in closed
+# form (each value below is derived in the comment beside it), the
+# Schur-Cohn / Bilharz cross-check, and the refusals with file:line:col.
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$BUILD/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+
+# status of the stability result, from the compact JSON
+status_of() { # case [options...]
+    f=$1; shift
+    "$RS" --json "$@" --analyse stability "$f" 2>"$T/err" | tr -d ' \n' \
+        | sed -n 's/.*"analysis":"stability".*"status":"\([a-z]*\)".*/\1/p'
+}
+check_status() { # name want case [options...]
+    name=$1; want=$2; shift 2
+    got=$(status_of "$@")
+    if [ "$got" = "$want" ]; then ok "$name: $want"; else fail "$name: got '$got', expected $want ($(head -1 "$T/err"))"; fi
+}
+
+FE=cases/complex/forward-euler-complex-point.case
+TR=cases/complex/trapezoid-complex-point.case
+BD=cases/complex/bdf2-complex-point.case
+LF=cases/complex/leapfrog-point.case
+
+# forward Euler: lambda = 1 + z, stable iff |1 + z| < 1
+check_status "euler z=-1+i/2 (|1+z| = 1/2)" stable "$FE"
+check_status "euler z=-1+i (|1+z| = 1)" marginal "$FE" --set 'q=-1+i'
+check_status "euler z=-1/2+i (|1+z|^2 = 5/4)" unstable "$FE" --set 'q=-1/2+i'
+# trapezoid: stable iff Re z < 0, |R| = 1 on the imaginary axis
+check_status "trapezoid z=-1/10+5i" stable "$TR"
+check_status "trapezoid z=1/10+5i" unstable "$TR" --set 'q=1/10+5*i'
+check_status "trapezoid z=5i" marginal "$TR" --set 'q=5*i'
+check_status "trapezoid z=-1/10-5i (conjugate)" stable "$TR" --set 'q=-1/10-5*i'
+# BDF2: both roots inside at z = -1/2 + 3/2 i (case comment)
+check_status "bdf2 z=-1/2+3/2i" stable "$BD"
+# BDF2 at z = 3 i: the boundary locus z(phi) = rho/sigma at lambda = e^(i phi)
+# is 3/2 - 2 e^(-i phi) + 1/2 e^(-2 i phi), Re z = 3/2 - 2c + (2c^2 - 1)/2 =
+# (1 - c)^2 (c = cos phi): it meets Re z = 0 only at z = 0, so no root lies
+# on the circle at z = 3i, and A-stability (Dahlquist) makes it stable
+check_status "bdf2 z=3i" stable "$BD" --set 'q=3*i'
+# leapfrog amplification g^2 + 2 i a g - 1: a = 1/2 two simple circle roots;
+# a = 1: (g + i)^2 double on the circle; a = 1 + i: roots -i(1+i) +- sqrt(1 - (1+i)^2)
+# = 1 - i +- sqrt(1 - 2i); |1 - i + sqrt(1 - 2i)| > 1 (sqrt(1-2i) = 1.272 - 0.786i)
+check_status "leapfrog a=1/2" marginal "$LF"
+check_status "leapfrog a=1" unstable "$LF" --set a=1
+check_status "leapfrog a=1+i" unstable "$LF" --set 'a=1+i'
+
+# the real block form and the complex pair side by side (a char line over Q(i))
+"$RS" --json "$LF" | tr -d ' \n' >"$T/lf.json"
+if grep -q '"complex_check":{[^}]*"agree":true' "$T/lf.json" && grep -q '"status":"marginal"' "$T/lf.json"; then
+    ok "leapfrog: complex check beside the block form"; else fail "leapfrog complex check: $(cat "$T/lf.json")"; fi
+
+# radius: forward Euler at z = -1 + i/2 is |1 + z| = 1/2 exactly
+"$RS" --json "$FE" | tr -d ' \n' >"$T/fe.json"
+if grep -q '"rho":"0.500000000000000000000000000000"' "$T/fe.json" || grep -q '"rho":"0.5"' "$T/fe.json"; then
+    ok "euler radius 1/2"; else fail "euler radius: $(grep -o '"rho":"[^"]*"' "$T/fe.json")"; fi
+# BDF2 at z = -1/2 + 3/2 i: rho = (sqrt 6 + 1)/5 = 0.689897948556635619639456814941...
+"$RS" --json "$BD" | tr -d ' \n' >"$T/bd.json"
+if grep -q '"rho":"0.68989794855663561963945681494' "$T/bd.json"; then ok "bdf2 radius (sqrt 6 + 1)/5"
+else fail "bdf2 radius: $(grep -o '"rho":"[^"]*"' "$T/bd.json")"; fi
+# its charpoly over Q(i): 2p = (4 - 3i) l^2 - 4 l + 1 up to the sign the normalisation picks
+if grep -q '"p":"(-4+3\*i)\*lambda^2+4\*lambda-1"' "$T/bd.json"; then ok "bdf2 charpoly over Q(i)"
+else fail "bdf2 charpoly: $(grep -o '"p":"[^"]*"' "$T/bd.json" | head -1)"; fi
+# the Bilharz counts of the routh analysis: 2 inside
+if grep -q '"analysis":"routh"[^]]*\][^}]*"left":2,"right":0,"axis":0' "$T/bd.json"; then ok "bdf2 Bilharz counts"
+else fail "bdf2 Bilharz counts"; fi
+# the set value is shown in the document
+if grep -q '"set":{"q":"-1/2+3/2\*i"}' "$T/bd.json"; then ok "complex set value in the document"
+else fail "complex set value in the document"; fi
+
+# expression forms: 2*i/(1 - i) = -1 + i (|1 + z| = 1 for Euler: marginal), (1+i)^2 = 2i
+check_status "set value by division" marginal "$FE" --set 'q=2*i/(1-i)'
+check_status "set value by a power: (1+i)^2/4 - 1 = -1 + i/2" stable "$FE" --set 'q=(1+i)^2/4-1'
+
+# refusals: exit 2 with file:line:col
+printf 'param q\nassume q < 0\nsubsystem S state y\n  y%s = q*y\nintegrate S trapezoidal 1\n' "'" >"$T/a.case"
+"$RS" --set 'q=-1+2*i' "$T/a.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "a.case:2:8: expected a real 'q' in this assume line" "$T/err" && [ ! -s "$T/out" ]; then
+    ok "--set complex value of an assumed parameter: exit 2"; else fail "assume refusal: rc=$rc $(cat "$T/err")"; fi
+printf 'set q = 1 + i\nanalyse region q\n' >>"$T/a.case"
+sed -i '/^assume/d' "$T/a.case"
+"$RS" "$T/a.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "a.case:6:9: 'region' does not run at a complex set value (q = 1+i)" "$T/err"; then
+    ok "region at a complex value refused"; else fail "region refusal: rc=$rc $(cat "$T/err")"; fi
+printf 'param h w\nunknown x\neq x[n+1] = x[n] + h*w*x[n]\nset h = 1\nanalyse stability\n' >"$T/b.case"
+"$RS" --set 'h=i' "$T/b.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "b.case:5:9: stability needs every parameter set to a number (real or complex); still symbolic: w" "$T/err"; then
+    ok "a free parameter beside a complex one: exit 2"; else fail "free parameter: rc=$rc $(cat "$T/err")"; fi
