@@ -8,12 +8,18 @@
  *   radius     certified: the roots of p conj(p) (same moduli as p's) by
  *              the real radius code, p's own roots by acb_poly_find_roots,
  *              checked against the exact counts.
+ * and `map re(NAME) A B N, im(NAME) C D M`: the complex plane of one
+ * parameter (the test equation's z), every point exact by the same pair,
+ * with the boundary locus sampled for the plot.
  * A `char` line with i (a real 2x2 block form in the scheme) is read back
  * as A + i B from its block; there `stability` with every parameter real
  * also runs the complex pair beside the real verdict (routh_complex.h). */
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <acb_poly.h>
+#include <arb_poly.h>
+#include "recstab/budget.h"
 #include "analysis/registry.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
@@ -596,5 +602,353 @@ int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t 
     json_decref(c);
     rs_routh_complex_clear(t);
     cpoint_clear(&cp);
+    return r;
+}
+
+/* ---- map re(NAME) A B N, im(NAME) C D M: the z-plane ------------------------------ */
+
+/* the request: NAME's index, the ranges (exact), the grid */
+typedef struct {
+    slong param;
+    fmpq_t lo[2], hi[2];
+    slong n[2];
+} cmap_req_t;
+
+int rs_an_complex_map_is(const char *rest)
+{
+    while (*rest == ' ' || *rest == '\t') rest++;
+    return strncmp(rest, "re(", 3) == 0;
+}
+
+void rs_an_complex_map_clear(rs_an_req_t *req)
+{
+    cmap_req_t *m = req->u.sweep;
+    if (m == NULL) return;
+    fmpq_clear(m->lo[0]); fmpq_clear(m->lo[1]); fmpq_clear(m->hi[0]); fmpq_clear(m->hi[1]);
+    free(m);
+    req->u.sweep = NULL;
+}
+
+/* one whitespace-delimited word at *t (copied into w), *t moved past it */
+static int read_word(char *w, size_t len, const char **t)
+{
+    size_t k = 0;
+    while (**t == ' ' || **t == '\t') (*t)++;
+    while (**t && **t != ' ' && **t != '\t' && **t != ',' && k + 1 < len) w[k++] = *(*t)++;
+    w[k] = '\0';
+    return k > 0;
+}
+
+int rs_an_complex_map_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    const rs_request_t *q = req->q;
+    const char *t = req->rest;
+    cmap_req_t *m = calloc(1, sizeof *m);
+    char name[80], w[128];
+    int axis;
+    fmpq_init(m->lo[0]); fmpq_init(m->lo[1]); fmpq_init(m->hi[0]); fmpq_init(m->hi[1]);
+    req->u.sweep = m;
+    m->param = -1;
+    for (axis = 0; axis < 2; axis++) {
+        const char *kw = axis == 0 ? "re(" : "im(", *at, *close;
+        size_t nl;
+        rs_error_t e2;
+        int k;
+        while (*t == ' ' || *t == '\t') t++;
+        at = t;
+        if (strncmp(t, kw, 3) != 0 || (close = strchr(t + 3, ')')) == NULL || close == t + 3
+            || (size_t) (close - t - 3) >= sizeof name)
+            return rs_req_error(run, q, at, RS_ERR_INPUT, axis == 0 ? "expected re(NAME) A B N, im(NAME) C D M, found '%s'"
+                                : "expected im(NAME) C D M after the comma, found '%s'", at);
+        nl = (size_t) (close - t - 3);
+        memcpy(name, t + 3, nl);
+        name[nl] = '\0';
+        if (axis == 0) {
+            m->param = rs_case_param_index(run->c, name);
+            if (m->param < 0) return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "'%s' is not a parameter", name);
+        } else if (strcmp(name, run->c->params[m->param].name) != 0) {
+            return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "expected the same parameter in re(...) and im(...), "
+                                "found '%s'", name);
+        }
+        t = close + 1;
+        for (k = 0; k < 3; k++) {
+            const char *wat;
+            while (*t == ' ' || *t == '\t') t++;
+            wat = t;
+            if (!read_word(w, sizeof w, &t))
+                return rs_req_error(run, q, wat, RS_ERR_INPUT, k < 2 ? "expected a range end (a rational number), "
+                                    "found '%s'" : "expected the number of grid points, found '%s'", wat);
+            rs_error_init(e2);
+            if (k < 2) {
+                if (rs_expr_parse_number(k == 0 ? m->lo[axis] : m->hi[axis], w, e2) != RS_OK)
+                    return rs_req_error(run, q, wat, RS_ERR_INPUT, "expected a rational number, found '%s'", w);
+            } else {
+                char *end;
+                long v = strtol(w, &end, 10);
+                if (*end != '\0' || v < 1 || v > 2000)
+                    return rs_req_error(run, q, wat, RS_ERR_INPUT, "expected a number of grid points 1..2000, "
+                                        "found '%s'", w);
+                m->n[axis] = v;
+            }
+        }
+        while (*t == ' ' || *t == '\t') t++;
+        if (axis == 0) {
+            if (*t != ',') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ', im(NAME) C D M', found '%s'", t);
+            t++;
+        }
+    }
+    if (strncmp(t, "of", 2) == 0 && (t[2] == ' ' || t[2] == '\t')) {
+        const char *wat;
+        t += 2;
+        while (*t == ' ' || *t == '\t') t++;
+        wat = t;
+        read_word(w, sizeof w, &t);
+        if (strcmp(w, "stability") != 0)
+            return rs_req_error(run, q, wat, RS_ERR_INPUT, "a map of the complex plane is of stability (exact per "
+                                "point), found '%s'", wat);
+        while (*t == ' ' || *t == '\t') t++;
+    }
+    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line, found '%s'", t);
+    if (m->n[0] * m->n[1] > 250000)
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "expected at most 250000 points in a map of the complex "
+                            "plane%s", "");
+    return RS_OK;
+}
+
+static void grid_value(fmpq_t x, const fmpq_t lo, const fmpq_t hi, slong k, slong n)
+{
+    if (n < 2) { fmpq_set(x, lo); return; }
+    fmpq_sub(x, hi, lo);
+    fmpq_mul_si(x, x, k);
+    fmpz_mul_si(fmpq_denref(x), fmpq_denref(x), n - 1);
+    fmpq_canonicalise(x);
+    fmpq_add(x, x, lo);
+}
+
+/* p = sum_k C[k] z0^k at z0 = zr + i zi */
+static void eval_coeffs(fmpq_poly_t re, fmpq_poly_t im, const fmpq_poly_struct *C, slong K,
+                        const fmpq_t zr, const fmpq_t zi)
+{
+    fmpq_poly_t tr, ti, u;
+    slong k;
+    fmpq_poly_init(tr); fmpq_poly_init(ti); fmpq_poly_init(u);
+    fmpq_poly_zero(re);
+    fmpq_poly_zero(im);
+    for (k = K; k >= 0; k--) {
+        /* (re + i im)(zr + i zi) + C[k] (Horner) */
+        fmpq_poly_scalar_mul_fmpq(tr, re, zr);
+        fmpq_poly_scalar_mul_fmpq(u, im, zi);
+        fmpq_poly_sub(tr, tr, u);
+        fmpq_poly_scalar_mul_fmpq(ti, re, zi);
+        fmpq_poly_scalar_mul_fmpq(u, im, zr);
+        fmpq_poly_add(ti, ti, u);
+        fmpq_poly_add(re, tr, C + k);
+        fmpq_poly_swap(im, ti);
+    }
+    fmpq_poly_clear(tr); fmpq_poly_clear(ti); fmpq_poly_clear(u);
+}
+
+/* The boundary locus, sampled for the plot: for phi on a grid, the roots z
+ * of p(exp(i phi), z) = 0 (for p linear in z: z = -C0/C1 at lambda =
+ * exp(i phi)); "re,im,branch" rows in double, the exact parametrisation
+ * beside it in the result. */
+static char *locus_table(const fmpq_poly_struct *C, slong K, slong nphi)
+{
+    size_t cap = 4096, len = 0;
+    char *out = malloc(cap);
+    slong j, k, prec = 128;
+    len += (size_t) snprintf(out, cap, "re,im,branch\n");
+    for (j = 0; j <= nphi; j++) {
+        acb_t lam, c, x;
+        acb_poly_t pz;
+        acb_ptr rt = _acb_vec_init(K);
+        slong found;
+        acb_init(lam); acb_init(c); acb_init(x);
+        acb_poly_init(pz);
+        /* lambda = exp(2 pi i j / nphi) */
+        arb_set_si(acb_realref(x), 2 * j);
+        arb_div_si(acb_realref(x), acb_realref(x), nphi, prec);
+        arb_zero(acb_imagref(x));
+        acb_exp_pi_i(lam, x, prec);
+        for (k = 0; k <= K; k++) {
+            arb_poly_t ap;
+            acb_poly_t cp;
+            arb_poly_init(ap);
+            acb_poly_init(cp);
+            arb_poly_set_fmpq_poly(ap, C + k, prec);
+            acb_poly_set_arb_poly(cp, ap);
+            acb_poly_evaluate(c, cp, lam, prec);
+            acb_poly_set_coeff_acb(pz, k, c);
+            arb_poly_clear(ap);
+            acb_poly_clear(cp);
+        }
+        found = 0;
+        if (acb_poly_degree(pz) == K && K >= 1) {
+            if (K == 1) {
+                acb_poly_get_coeff_acb(c, pz, 0);
+                acb_poly_get_coeff_acb(x, pz, 1);
+                acb_div(rt, c, x, prec);
+                acb_neg(rt, rt);
+                found = acb_is_finite(rt) ? 1 : 0;
+            } else {
+                found = acb_poly_find_roots(rt, pz, NULL, 0, prec);
+            }
+        }
+        for (k = 0; k < found; k++) {
+            double a = arf_get_d(arb_midref(acb_realref(rt + k)), ARF_RND_NEAR);
+            double b = arf_get_d(arb_midref(acb_imagref(rt + k)), ARF_RND_NEAR);
+            if (len + 80 > cap) { cap *= 2; out = realloc(out, cap); }
+            len += (size_t) snprintf(out + len, cap - len, "%.10g,%.10g,%ld\n", a, b, (long) k);
+        }
+        _acb_vec_clear(rt, K);
+        acb_poly_clear(pz);
+        acb_clear(lam); acb_clear(c); acb_clear(x);
+    }
+    return out;
+}
+
+int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const cmap_req_t *m = req->u.sweep;
+    const char *name = run->c->params[m->param].name;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpq_poly_struct *C;
+    fmpq_poly_t re, im;
+    fmpq_t x, y;
+    slong K, n, k, i, j, counts[4] = {0, 0, 0, 0};
+    size_t cap = 4096, len = 0;
+    char *tab, pre[16], pim[16];
+    json_t *o, *rows = json_array();
+    double t0 = (double) clock() / CLOCKS_PER_SEC;
+    int r = rs_run_variant_one_free(&v, run, q, req->rest, m->param, "map");
+    if (r != RS_OK) { json_decref(rows); return r; }
+    s = v->s;
+    if (s->complex_char) {
+        json_decref(rows);
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "map re(%s), im(%s): the char line has i already; "
+                            "expected a polynomial with real coefficients in the parameter", name);
+    }
+    K = fmpz_mpoly_degree_si(v->cp->p, m->param, s->zctx);
+    n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    if (K < 1 || n < 1) {
+        json_decref(rows);
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "map re(%s), im(%s): the characteristic polynomial must "
+                            "depend on the parameter and on lambda", name);
+    }
+    C = flint_malloc((K + 1) * sizeof(fmpq_poly_struct));
+    for (k = 0; k <= K; k++) {
+        fmpz_poly_t c;
+        fmpz_poly_init(c);
+        fmpq_poly_init(C + k);
+        rs_run_coeff_in(c, v->cp->p, m->param, k, s);
+        fmpq_poly_set_fmpz_poly(C + k, c);
+        fmpz_poly_clear(c);
+    }
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    fmpq_init(x); fmpq_init(y);
+    snprintf(pre, sizeof pre, "re(%.10s)", name);
+    snprintf(pim, sizeof pim, "im(%.10s)", name);
+    tab = malloc(cap);
+    len += (size_t) snprintf(tab, cap, "index,i,j,%s,%s,%s_exact,%s_exact,verdict,code,decided_by\n", pre, pim, pre, pim);
+    /* every point exact: Schur-Cohn over Q(i) and Bilharz, cross-checked */
+    for (j = 0; j < m->n[1] && r == RS_OK; j++)
+        for (i = 0; i < m->n[0] && r == RS_OK; i++) {
+            rs_status_t st;
+            char *xs, *ys;
+            if (rs_budget_exceeded()) { r = rs_budget_error(run->err); break; }
+            grid_value(x, m->lo[0], m->hi[0], i, m->n[0]);
+            grid_value(y, m->lo[1], m->hi[1], j, m->n[1]);
+            eval_coeffs(re, im, C, K, x, y);
+            r = rs_routh_complex_checked_status(&st, re, im, n, run->err);
+            if (r != RS_OK) {
+                char *zs = rs_complex_str(x, y), msg[RS_ERROR_MSG_LEN + 64];
+                snprintf(msg, sizeof msg, "map at %s = %s: %s", name, zs, run->err->msg);
+                free(zs);
+                if (r == RS_ERR_INCONSISTENT) run->outcome |= RS_OUTCOME_INCONSISTENT;
+                r = rs_req_error(run, q, q->text, r, "%s", msg);
+                break;
+            }
+            counts[st]++;
+            xs = fmpq_get_str(NULL, 10, x);
+            ys = fmpq_get_str(NULL, 10, y);
+            if (len + strlen(xs) + strlen(ys) + 160 > cap) { cap = 2 * cap + strlen(xs) + strlen(ys); tab = realloc(tab, cap); }
+            len += (size_t) snprintf(tab + len, cap - len, "%ld,%ld,%ld,%.17g,%.17g,%s,%s,%s,%d,exact\n",
+                                     (long) (j * m->n[0] + i), (long) i, (long) j, fmpq_get_d(x), fmpq_get_d(y), xs, ys,
+                                     rs_status_name(st), (int) st);
+            json_array_append_new(rows, json_pack("[IIIffsssis]", (json_int_t) (j * m->n[0] + i), (json_int_t) i,
+                                  (json_int_t) j, fmpq_get_d(x), fmpq_get_d(y), xs, ys, rs_status_name(st), (int) st,
+                                  "exact"));
+            flint_free(xs);
+            flint_free(ys);
+        }
+    if (r == RS_OK) {
+        char *loc = locus_table(C, K, 720);
+        json_t *ranges = json_array();
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("map"));
+        json_object_set_new(o, "params", json_pack("[ss]", pre, pim));
+        for (k = 0; k < 2; k++) {
+            char *a = fmpq_get_str(NULL, 10, m->lo[k]), *b = fmpq_get_str(NULL, 10, m->hi[k]);
+            json_array_append_new(ranges, json_pack("[ssI]", a, b, (json_int_t) m->n[k]));
+            flint_free(a); flint_free(b);
+        }
+        json_object_set_new(o, "ranges", ranges);
+        /* the plot keeps to the grid (the locus may leave it) */
+        json_object_set_new(o, "plot_ranges", json_pack("[[ff][ff]]", fmpq_get_d(m->lo[0]), fmpq_get_d(m->hi[0]),
+                            fmpq_get_d(m->lo[1]), fmpq_get_d(m->hi[1])));
+        json_object_set_new(o, "grid", json_pack("[II]", (json_int_t) m->n[0], (json_int_t) m->n[1]));
+        json_object_set_new(o, "of", json_string("stability"));
+        json_object_set_new(o, "complex_plane", json_string(name));
+        json_object_set_new(o, "points", json_integer(m->n[0] * m->n[1]));
+        json_object_set_new(o, "computed", json_integer(m->n[0] * m->n[1]));
+        json_object_set_new(o, "verdicts", json_pack("{sIsIsIsI}", "stable", (json_int_t) counts[0], "marginal",
+                            (json_int_t) counts[1], "unstable", (json_int_t) counts[2], "singular", (json_int_t) counts[3]));
+        json_object_set_new(o, "decided_by", json_pack("{sI}", "exact", (json_int_t) (m->n[0] * m->n[1])));
+        json_object_set_new(o, "methods", json_pack("[ss]", "schur-cohn over Q(i)", "bilharz (bilinear)"));
+        json_object_set_new(o, "seconds", json_real((double) clock() / CLOCKS_PER_SEC - t0));
+        json_object_set_new(o, "csv", json_null());
+        if (K == 1) {
+            char *p0 = fmpq_poly_get_str_pretty(C + 0, "lambda"), *p1 = fmpq_poly_get_str_pretty(C + 1, "lambda");
+            char *buf = malloc(strlen(p0) + strlen(p1) + 120);
+            sprintf(buf, "%s = -(%s)/(%s), lambda = exp(i*phi), 0 <= phi < 2*pi", name, p0, p1);
+            json_object_set_new(o, "boundary_locus", json_string(buf));
+            free(buf);
+            flint_free(p0);
+            flint_free(p1);
+        } else {
+            char buf[200];
+            snprintf(buf, sizeof buf, "the roots %s of p(exp(i*phi), %s) = 0, 0 <= phi < 2*pi", name, name);
+            json_object_set_new(o, "boundary_locus", json_string(buf));
+        }
+        json_object_set_new(o, "locus_note", json_string("locus_table: the exact parametrisation evaluated in "
+                            "floating point at 721 angles (for the plot); the verdicts are exact"));
+        json_object_set_new(o, "locus_table", json_string(loc));
+        free(loc);
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_object_set_new(o, "text", json_string(q->text));
+        json_object_set_new(o, "columns", json_pack("[sssssssssss]", "index", "i", "j", pre, pim, "", "", "verdict",
+                            "code", "decided_by", ""));
+        {
+            /* the exact columns' names */
+            char a[32], b[32];
+            snprintf(a, sizeof a, "%s_exact", pre);
+            snprintf(b, sizeof b, "%s_exact", pim);
+            json_array_set_new(json_object_get(o, "columns"), 5, json_string(a));
+            json_array_set_new(json_object_get(o, "columns"), 6, json_string(b));
+            json_array_remove(json_object_get(o, "columns"), 10);
+        }
+        json_object_set_new(o, "table", json_string(tab));
+        json_object_set_new(o, "rows", rows);
+        rows = NULL;
+        json_array_append_new(run->results, o);
+    }
+    json_decref(rows);
+    free(tab);
+    for (k = 0; k <= K; k++) fmpq_poly_clear(C + k);
+    flint_free(C);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    fmpq_clear(x); fmpq_clear(y);
     return r;
 }

@@ -93,6 +93,8 @@ json_t *rs_run_json_document(json_t *docs, int ncases)
             json_object_del(json_array_get(res, k), "table");
             json_object_del(json_array_get(res, k), "table_spool");
             json_object_del(json_array_get(res, k), "boundary_table");
+            json_object_del(json_array_get(res, k), "locus_table");
+            json_object_del(json_array_get(res, k), "plot_ranges");
         }
     }
     return json_pack("{s:O}", "cases", docs);

@@ -65,6 +65,17 @@ static void sweep_req_clear(rs_an_req_t *req)
     free(req->u.sweep);
 }
 static int map_parse(rs_an_req_t *req, rs_run_t *run) { return sweep_parse_as(req, run, 1); }
+/* the equations' map: `map re(NAME) ..., im(NAME) ...` is the complex plane of
+ * one parameter (an_complex.c), other maps the engine's */
+static int eq_map_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    return rs_an_complex_map_is(req->rest) ? rs_an_complex_map_parse(req, run) : map_parse(req, run);
+}
+static void eq_map_clear(rs_an_req_t *req)
+{
+    if (rs_an_complex_map_is(req->rest)) rs_an_complex_map_clear(req);
+    else sweep_req_clear(req);
+}
 
 static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 {
@@ -73,6 +84,10 @@ static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 static int run_map(rs_run_t *run, const rs_an_req_t *req)
 {
     return rs_an_map_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
+}
+static int run_eq_map(rs_run_t *run, const rs_an_req_t *req)
+{
+    return rs_an_complex_map_is(req->rest) ? rs_an_complex_map(run, req) : run_map(run, req);
 }
 static int run_cosim_map(rs_run_t *run, const rs_an_req_t *req)
 {
@@ -118,8 +133,9 @@ const rs_an_def_t rs_an_registry[] = {
      NULL, NULL, rs_an_simulate, RS_AN_NOT_IN_P},
     {"sweep", NULL, EQ, "NAME from A to B steps K [log] [of radius|modes|stability] [at NAME=VALUE, ...] [h=EXPR reference=EXPR[,EXPR]]",
      NULL, "verdicts (and radius or modes) on a grid of one parameter", sweep_parse, sweep_req_clear, run_sweep, 0},
-    {"map", NULL, EQ, "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability]", NULL,
-     "verdicts and radius on a grid of two parameters, with the exact boundary", map_parse, sweep_req_clear, run_map, 0},
+    {"map", NULL, EQ, "NAME1 A1 B1 K1, NAME2 A2 B2 K2 [of radius|stability] | re(NAME) A B N, im(NAME) C D M", NULL,
+     "verdicts and radius on a grid of two parameters, with the exact boundary; re(NAME), im(NAME): the complex "
+     "plane of NAME with its boundary locus", eq_map_parse, eq_map_clear, run_eq_map, 0},
     {"expect", NULL, EQ, "charpoly|bilinear POLY", NULL, "compares a printed polynomial with the derived one",
      rs_an_expect_parse, rs_an_expect_req_clear, rs_an_expect, 0},
     {"radius", NULL, NUM, "", digits_opts, "the certified spectral radius of the one-step map",

@@ -165,6 +165,11 @@ int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
+/* `map re(NAME) A B N, im(NAME) C D M [of stability]` (req->u.sweep holds its request) */
+int rs_an_complex_map_is(const char *rest);
+int rs_an_complex_map_parse(rs_an_req_t *req, rs_run_t *run);
+void rs_an_complex_map_clear(rs_an_req_t *req);
+int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
 /* "h", "modes", "spurious", "note" of a modes element o from the certified
  * roots rr at time step h, references refs[0 .. nref) (an_modes.c) */

@@ -807,6 +807,8 @@ static int complex_plane(const tab_t *t, const char *a, const char *b, const cha
     size_t k, na = strlen(a), diff = 0, at = 0;
     (void) t;
     if (strncmp(la, "Re", 2) == 0 && strncmp(lb, "Im", 2) == 0) return 1;
+    /* map re(z) ..., im(z) ... */
+    if (strncmp(a, "re(", 3) == 0 && strncmp(b, "im(", 3) == 0 && strcmp(a + 3, b + 3) == 0) return 1;
     if (na != strlen(b)) return 0;
     for (k = 0; k < na; k++)
         if (a[k] != b[k]) { diff++; at = k; }
@@ -837,6 +839,15 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
     if (complex_plane(pl->tabs + i, json_string_value(json_array_get(params, 0)),
                       json_string_value(json_array_get(params, 1)), xl, yl))
         fputs("set size ratio -1\n", g);
+    if (json_is_array(json_object_get(tab, "plot_ranges"))) {
+        /* a complex-plane map: the boundary locus may leave the grid; keep to it */
+        json_t *pr = json_object_get(tab, "plot_ranges");
+        fprintf(g, "set xrange [%.17g:%.17g]\nset yrange [%.17g:%.17g]\n",
+                json_number_value(json_array_get(json_array_get(pr, 0), 0)),
+                json_number_value(json_array_get(json_array_get(pr, 0), 1)),
+                json_number_value(json_array_get(json_array_get(pr, 1), 0)),
+                json_number_value(json_array_get(json_array_get(pr, 1), 1)));
+    }
     if (radius)
         fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
               "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
@@ -857,6 +868,12 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
         put_table(g, pl->dir, 'b', i);
         fputs(" using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
               "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
+    }
+    if (jstr(tab, "locus_table")) {
+        /* the complex plane of one parameter: its boundary locus on top */
+        fputs(", ", g);
+        put_table(g, pl->dir, 'l', i);
+        fputs(" using 1:2 with points pt 7 ps 0.3 lc rgb 'black' title 'boundary locus (exact parametrisation)'", g);
     }
     fputc('\n', g);
 }
@@ -962,6 +979,7 @@ static void plot_write_script(FILE *g, const plot_t *pl, rs_cli_out_t **plots, i
         put_datablock(g, 't', i, jstr(pl->tabs[i].el, "table"), rs_cli_spool_of(pl->tabs[i].el));
         if (jstr(pl->tabs[i].el, "boundary_table"))
             put_datablock(g, 'b', i, jstr(pl->tabs[i].el, "boundary_table"), -1);
+        if (jstr(pl->tabs[i].el, "locus_table")) put_datablock(g, 'l', i, jstr(pl->tabs[i].el, "locus_table"), -1);
     }
     for (k = 0; k < nplots; k++) {
         const char *ext = ext_of(plots[k]->path);

@@ -93,3 +93,22 @@ printf 'param h w\nunknown x\neq x[n+1] = x[n] + h*w*x[n]\nset h = 1\nanalyse st
 "$RS" --set 'h=i' "$T/b.case" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "b.case:5:9: stability needs every parameter set to a number (real or complex); still symbolic: w" "$T/err"; then
     ok "a free parameter beside a complex one: exit 2"; else fail "free parameter: rc=$rc $(cat "$T/err")"; fi
+
+# the z-plane map (map re(q) ..., im(q) ...): counts derived in the case file
+"$RS" --json cases/complex/forward-euler-zplane.case | tr -d ' \n' >"$T/zp.json"
+if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T/zp.json"; then
+    ok "z-plane map of forward Euler: 9 stable, 4 marginal, 12 unstable"
+else fail "z-plane map counts: $(grep -o '"verdicts":{[^}]*}' "$T/zp.json")"; fi
+if grep -q '"locus_table"' "$T/zp.json"; then fail "locus_table left in the JSON"; else ok "locus_table not in the JSON"; fi
+"$RS" --analyse "map re(q) -2 0 5, im(w) -1 1 5" cases/complex/forward-euler-zplane.case >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "\-\-analyse: expected the same parameter in re(...) and im(...), found 'w'" "$T/err"; then
+    ok "map re(q), im(w): exit 2"; else fail "map re/im mismatch: rc=$rc $(cat "$T/err")"; fi
+# the plot: equal axes and the boundary locus on top (gnuplot only)
+if command -v gnuplot >/dev/null 2>&1; then
+    "$RS" --plot "$T/z.svg" --plot-script "$T/z.gp" cases/complex/forward-euler-zplane.case >/dev/null 2>"$T/err"; rc=$?
+    if [ "$rc" = 0 ] && grep -q '^set size ratio -1$' "$T/z.gp" && grep -q "boundary locus" "$T/z.gp" \
+       && grep -q '^\$l0 << EOD$' "$T/z.gp" && grep -q '<svg' "$T/z.svg"; then
+        ok "z-plane plot: equal axes, locus overlaid"; else fail "z-plane plot: rc=$rc $(cat "$T/err")"; fi
+else
+    ok "skipped z-plane plot: no gnuplot"
+fi
