@@ -39,6 +39,8 @@ typedef struct {
     char *name;
     rs_loc_t loc;
     int angle;             /* `param NAME angle`: the exact variable is t = tan(NAME/2) */
+    int complex;           /* `param NAME complex`: Re and Im are two real directions (z of y' = z y
+                              may be named z here) */
 } rs_name_t;
 
 typedef enum { RS_CMP_LT, RS_CMP_LE, RS_CMP_GT, RS_CMP_GE, RS_CMP_NE, RS_CMP_EQ } rs_cmp_t;

@@ -647,6 +647,13 @@ int rs_an_astability_parse(rs_an_req_t *req, rs_run_t *run)
     if (*rest == '\0') {
         if (run->c->nparams == 1) { req->u.astab.param = 0; return RS_OK; }
         {
+            /* the one parameter declared complex (param z complex) */
+            slong i, nc = 0, last = -1;
+            for (i = 0; i < run->c->nparams; i++)
+                if (run->c->params[i].complex) { nc++; last = i; }
+            if (nc == 1) { req->u.astab.param = last; return RS_OK; }
+        }
+        {
             slong i, nfree = 0, last = -1;
             for (i = 0; i < run->c->nparams; i++) {
                 slong k;

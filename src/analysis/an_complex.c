@@ -288,6 +288,9 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     return RS_OK;
 }
 
+/* the bilinear variable: z, or s when a parameter is named z (param z complex) */
+static const char *qvar(const rs_run_t *run) { return rs_case_param_index(run->c, "z") >= 0 ? "s" : "z"; }
+
 static json_t *base_json(const char *name, const cpoint_t *cp)
 {
     json_t *o = json_object();
@@ -339,10 +342,10 @@ int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req)
         rs_routh_complex_bilinear(qr, qi, cp.re, cp.im);
         d = FLINT_MAX(fmpq_poly_degree(qr), fmpq_poly_degree(qi));
         o = base_json("bilinear", &cp);
-        json_object_set_new(o, "var", json_string("z"));
+        json_object_set_new(o, "var", json_string(qvar(run)));
         json_object_set_new(o, "degree", json_integer(d));
         json_object_set_new(o, "coeffs", cpoly_coeffs(qr, qi));
-        str = cpoly_str(qr, qi, "z");
+        str = cpoly_str(qr, qi, qvar(run));
         json_object_set_new(o, "poly", json_string(str));
         free(str);
         json_object_set_new(o, "degree_drop", json_integer(n - d));
@@ -396,7 +399,7 @@ int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req)
             "Bilharz (generalised Routh-Hurwitz over Q(i)): q(i w) = A(w) + i B(w), the signed remainder "
             "chain of A/G and B/G (G = gcd(A, B): the roots on the axis and mirror pairs) counts the roots "
             "of q in Re z < 0 by its Cauchy index"));
-        str = cpoly_str(qr, qi, "z");
+        str = cpoly_str(qr, qi, qvar(run));
         json_object_set_new(o, "q", json_string(str));
         free(str);
         str = fmpq_poly_get_str_pretty(t->A, "w");

@@ -77,6 +77,23 @@ static int check_assumptions(const rs_case_t c, const rs_model_t m, rs_error_t e
     return RS_OK;
 }
 
+/* a `param NAME complex` without a value (neither set nor --set) */
+static int complex_unset(const rs_case_struct *c, slong k)
+{
+    slong j;
+    if (!c->params[k].complex) return 0;
+    for (j = 0; j < c->nsets; j++) if (strcmp(c->sets[j].name, c->params[k].name) == 0) return 0;
+    for (j = 0; j < c->ncsets; j++) if (strcmp(c->csets[j].name, c->params[k].name) == 0) return 0;
+    return 1;
+}
+
+static slong first_complex_unset(const rs_case_struct *c)
+{
+    slong k;
+    for (k = 0; k < c->nparams; k++) if (complex_unset(c, k)) return k;
+    return -1;
+}
+
 static int mentions(const rs_expr_t *e, const char *name)
 {
     if (e == NULL) return 0;
@@ -124,16 +141,49 @@ static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t 
         free(val);
         if (r != RS_OK) return r;
     }
+    /* a complex parameter is never compared */
+    for (k = 0; k < c->nparams; k++) {
+        if (!c->params[k].complex) continue;
+        for (i = 0; i < c->nassume; i++)
+            for (j = 0; j < c->assume[i].n; j++)
+                if (mentions(c->assume[i].e[j], c->params[k].name))
+                    return rs_error_set_at(err, RS_ERR_INPUT, c->assume[i].loc.file ? c->assume[i].loc.file : c->path,
+                                           c->assume[i].loc.line, c->assume[i].loc.col, "expected real parameters in "
+                                           "an assume line, found '%s', declared complex (param %s complex)",
+                                           c->params[k].name, c->params[k].name);
+    }
     return RS_OK;
 }
 
-/* The analyses that run over Q(i) at complex set values (an_complex.c). */
+/* The analyses that run over Q(i) at complex set values (an_complex.c),
+ * and those that take an unset complex parameter as complex. */
 static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
 {
     static const char *const ok[] = {"charpoly", "bilinear", "routh", "stability", "radius", NULL};
     const rs_cset_t *x = run->c->csets;
+    const char *nm = req->def->name;
     char *val, msg[RS_ERROR_MSG_LEN];
     slong k;
+    if (strcmp(nm, "expect") == 0 && req->u.expect.bilinear && rs_case_param_index(run->c, "z") >= 0)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expect bilinear: z is the bilinear variable "
+                            "and also the parameter z (param z complex): compare the charpoly instead%s", "");
+    for (k = 0; k < run->c->nparams; k++) {
+        const char *pn = run->c->params[k].name;
+        if (!complex_unset(run->c, k)) continue;
+        if (strcmp(nm, "charpoly") == 0 || strcmp(nm, "astability") == 0
+            || (strcmp(nm, "expect") == 0 && !req->u.expect.bilinear)
+            || (strcmp(nm, "map") == 0 && rs_an_complex_map_is(req->rest)))
+            continue;
+        if (strcmp(nm, "region") == 0)
+            snprintf(msg, sizeof msg, "region over the complex parameter '%s' (param %s complex): the 2-D region in "
+                     "(Re %s, Im %s) is not computed; use astability (its axis intervals and A-stability, exact) or "
+                     "map re(%s) A B N, im(%s) C D M (the plane, exact per point)", pn, pn, pn, pn, pn, pn);
+        else
+            snprintf(msg, sizeof msg, "'%s' takes its parameters as real, but '%s' is complex (param %s complex) and "
+                     "has no value: set it (set %s = A + B*i), or use charpoly, astability or map re(%s) A B N, "
+                     "im(%s) C D M", nm, pn, pn, pn, pn, pn);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
     if (run->c->ncsets == 0) return RS_OK;
     for (k = 0; ok[k] != NULL; k++)
         if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
@@ -168,7 +218,7 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     const rs_loc_t *at = run->m->neqs > 0 ? &run->m->eqs[0].loc : c->charexpr != NULL ? &c->charloc : NULL;
     const char *names[3];
     char region[80 + RS_CASE_MAX_NAMES];
-    slong n = 0, i, nfree = 0, last = -1;
+    slong n = 0, i, nfree = 0, last = -1, cpar;
     rs_variant_t *v;
     int r;
     *out = NULL;
@@ -179,6 +229,11 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
         /* complex set values: the polynomial and its verdict over Q(i) */
         names[n++] = "charpoly";
         names[n++] = "stability";
+    } else if ((cpar = first_complex_unset(c)) >= 0) {
+        /* a complex parameter without a value: its stability region */
+        names[n++] = "charpoly";
+        snprintf(region, sizeof region, "astability %s", c->params[cpar].name);
+        names[n++] = region;
     } else {
         r = rs_run_numeric_variant(run, &v);
         if (r != RS_OK) return r;

@@ -43,7 +43,21 @@ static int st_names(rs_stmt_t *x, size_t i, int unknowns)
         name = _rs_read_ident(t, &i);
         if (name == NULL)
             return _rs_name_err(x, at, unknowns ? "an unknown's name" : "a parameter name");
-        if (check_new_name(x, at, name) != RS_OK) { flint_free(name); return x->err->code; }
+        {
+            /* `param z complex`: the test equation's z may keep its name */
+            size_t j = i;
+            _rs_skip_ws(t, &j);
+            if (!unknowns && strcmp(name, "z") == 0 && strncmp(t + j, "complex", 7) == 0
+                && (t[j + 7] == '\0' || t[j + 7] == ',' || t[j + 7] == ' ' || t[j + 7] == '\t')) {
+                if (name_taken(x->c, name)) {
+                    flint_free(name);
+                    return _rs_at_err(x, at, RS_ERR_INPUT, "'%s' is already declared", "z");
+                }
+            } else if (check_new_name(x, at, name) != RS_OK) {
+                flint_free(name);
+                return x->err->code;
+            }
+        }
         if (unknowns) {
             RS_GROW(x->c->unknowns, x->c->nunknowns);
             x->c->unknowns[x->c->nunknowns].name = name;
@@ -61,6 +75,11 @@ static int st_names(rs_stmt_t *x, size_t i, int unknowns)
                                                    || t[j + 5] == '\t')) {
                 x->c->params[x->c->nparams].angle = 1;
                 i = j + 5;
+            } else if (strncmp(t + j, "complex", 7) == 0 && (t[j + 7] == '\0' || t[j + 7] == ',' || t[j + 7] == ' '
+                                                            || t[j + 7] == '\t')) {
+                /* `param NAME complex`: a complex parameter (analyses take Re and Im apart) */
+                x->c->params[x->c->nparams].complex = 1;
+                i = j + 7;
             }
             x->c->nparams++;
         }

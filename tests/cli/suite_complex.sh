@@ -112,3 +112,21 @@ if command -v gnuplot >/dev/null 2>&1; then
 else
     ok "skipped z-plane plot: no gnuplot"
 fi
+
+# param z complex: astability by default, the map exact per point, a set value over Q(i)
+PZ=cases/complex/bdf2-param-complex.case
+"$RS" --json "$PZ" | tr -d ' \n' >"$T/pz.json"
+if grep -q '"a_stable":true' "$T/pz.json" && grep -q '"verdicts":{"stable":8,"marginal":1,"unstable":0,"singular":0}' "$T/pz.json"; then
+    ok "param z complex: A-stable, z-plane 8 stable + 1 marginal"; else fail "param z complex: $(head -c 300 "$T/pz.json")"; fi
+check_status "param z complex at z=-1/2+3/2i" stable "$PZ" --set 'z=-1/2+3/2*i'
+"$RS" --analyse "region z" "$PZ" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "region over the complex parameter 'z'" "$T/err"; then ok "region over a complex parameter refused"
+else fail "region over z: rc=$rc $(cat "$T/err")"; fi
+printf 'param z complex\nassume z < 0\nunknown x\neq x[n+1] = x[n] + z*x[n]\n' >"$T/za.case"
+"$RS" "$T/za.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "za.case:2:8: expected real parameters in an assume line, found 'z'" "$T/err"; then
+    ok "assume on a complex parameter: exit 2"; else fail "assume on complex z: rc=$rc $(cat "$T/err")"; fi
+printf 'param z\nunknown x\neq x[n+1] = x[n] + z*x[n]\n' >"$T/zr.case"
+"$RS" "$T/zr.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "zr.case:1:7: 'z' is reserved" "$T/err"; then ok "param z (not complex) still reserved"
+else fail "param z reserved: rc=$rc $(cat "$T/err")"; fi
