@@ -323,6 +323,9 @@ int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "degree", json_integer(FLINT_MAX(fmpq_poly_degree(cp.re), fmpq_poly_degree(cp.im))));
         json_object_set_new(o, "coeffs", cpoly_coeffs(cp.re, cp.im));
         json_object_set_new(o, "poly", json_string(json_string_value(json_object_get(o, "p"))));
+        /* the rational content split off the symbolic p (1 for a char line over Q(i)) */
+        if (cp.v->s->complex_char) json_object_set_new(o, "content", json_string("1"));
+        else json_object_set_new(o, "content", rs_json_fmpq(cp.v->cp->content));
         emit(run, &cp, o);
     }
     cpoint_clear(&cp);
@@ -349,6 +352,22 @@ int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "poly", json_string(str));
         free(str);
         json_object_set_new(o, "degree_drop", json_integer(n - d));
+        {
+            /* p(1) and p(-1) over Q(i) */
+            fmpq_t a, b, one;
+            int sg;
+            fmpq_init(a); fmpq_init(b); fmpq_init(one);
+            for (sg = 1; sg >= -1; sg -= 2) {
+                fmpq_set_si(one, sg, 1);
+                fmpq_poly_evaluate_fmpq(a, cp.re, one);
+                fmpq_poly_evaluate_fmpq(b, cp.im, one);
+                str = rs_complex_str(a, b);
+                json_object_set_new(o, sg > 0 ? "p_at_1" : "p_at_minus_1", json_string(str));
+                free(str);
+            }
+            fmpq_clear(a); fmpq_clear(b); fmpq_clear(one);
+        }
+        json_object_set_new(o, "zero_mult", json_integer(0));
         emit(run, &cp, o);
         fmpq_poly_clear(qr); fmpq_poly_clear(qi);
     }

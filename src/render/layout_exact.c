@@ -306,6 +306,16 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
         rs_render_line(r, "", "B = %s", js(o, "B"));
         rs_render_line(r, "gcd(A, B)", "%s", js(o, "G"));
         rs_render_string_list(r, "chain", json_object_get(o, "chain"), "\n               ");
+        rs_render_say(r, "With $z = i w$, $q(i w) = A(w) + i B(w)$, $A = ", "With $z = i w$, $q(i w) = A(w) + i B(w)$, $A = ");
+        rs_render_poly(r, js(o, "A"));
+        rs_render_say(r, "$, $B = ", "$, $B = ");
+        rs_render_poly(r, js(o, "B"));
+        rs_render_say(r, "$, $\\gcd(A, B) = ", "$, $\\gcd(A, B) = ");
+        rs_render_poly(r, js(o, "G"));
+        rs_render_say(r, "$ (its real roots: the roots on the axis). The signed remainder chain of A/G and B/G "
+                      "counts the roots in Re z < 0 by its Cauchy index (Bilharz).\n\n",
+                      "$ (its real roots: the roots on the axis). The signed remainder chain of $A/G$ and $B/G$ "
+                      "counts the roots in $\\mathrm{Re}\\, z < 0$ by its Cauchy index (Bilharz).\n\n");
         rs_render_count(r, o, RS_RENDER_ALL);
         rs_render_assigned(r, o);
         return;
