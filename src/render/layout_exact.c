@@ -299,7 +299,7 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
     size_t i;
     if (json_object_get(o, "chain") != NULL) {
         /* over Q(i): the Bilharz chain (an_complex.c) */
-        rs_render_heading(r, "Bilharz chain of q(z) over Q(i)", "Bilharz chain of $q(z)$ over $\\mathbb{Q}(i)$");
+        rs_render_heading(r, "Bilharz chain of q(z) over Q(i)", "Bilharz chain of $q(z)$ over $Q(i)$");
         rs_render_line(r, "p(lambda)", "%s", js(o, "p"));
         rs_render_line(r, "q(z)", "%s", js(o, "q"));
         rs_render_line(r, "q(i w)", "A + i B, A = %s", js(o, "A"));

@@ -130,3 +130,12 @@ printf 'param z\nunknown x\neq x[n+1] = x[n] + z*x[n]\n' >"$T/zr.case"
 "$RS" "$T/zr.case" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "zr.case:1:7: 'z' is reserved" "$T/err"; then ok "param z (not complex) still reserved"
 else fail "param z reserved: rc=$rc $(cat "$T/err")"; fi
+
+# the derivation of a complex point compiles (pdflatex when installed)
+if command -v pdflatex >/dev/null 2>&1; then
+    "$RS" --latex "$BD" >"$T/d.tex" 2>"$T/err"
+    if (cd "$T" && timeout 120 pdflatex -interaction=nonstopmode -halt-on-error d.tex >/dev/null 2>&1) && [ -s "$T/d.pdf" ]; then
+        ok "latex derivation over Q(i) compiles"; else fail "latex derivation over Q(i) does not compile"; fi
+else
+    ok "skipped latex: no pdflatex"
+fi
