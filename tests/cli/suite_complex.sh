@@ -139,3 +139,28 @@ if command -v pdflatex >/dev/null 2>&1; then
 else
     ok "skipped latex: no pdflatex"
 fi
+
+# two routes, one plane: the Q(i) map of BDF2 against the engine's map of the
+# real block form of the same polynomial (char with i over params x, y):
+# every point's verdict must agree
+if command -v python3 >/dev/null 2>&1; then
+    printf 'param q\nsubsystem S state y\n  y%s = q*y\nintegrate S bdf 2 1\nanalyse map re(q) -5 1 21, im(q) -3 3 21\n' "'" >"$T/zq.case"
+    printf 'param x y\nchar (3/2 - x - i*y)*lambda^2 - 2*lambda + 1/2\nanalyse map x -5 1 21, y -3 3 21 of stability\n' >"$T/zb.case"
+    "$RS" --json "$T/zq.case" >"$T/zq.json" 2>/dev/null
+    "$RS" --json "$T/zb.case" >"$T/zb.json" 2>/dev/null
+    diffs=$(python3 - "$T/zq.json" "$T/zb.json" <<'PY'
+import json, sys
+def rows(path, xs, ys):
+    r = json.load(open(path))['cases'][0]['results'][0]
+    c = r['columns']
+    return {(w[c.index(xs)], w[c.index(ys)]): w[c.index('verdict')] for w in r['rows']}
+a = rows(sys.argv[1], 're(q)_exact', 'im(q)_exact')
+b = rows(sys.argv[2], 'x_exact', 'y_exact')
+print(len(a) if len(a) != 441 or set(a) != set(b) else sum(a[k] != b[k] for k in a))
+PY
+)
+    if [ "$diffs" = 0 ]; then ok "z-plane map over Q(i) = engine map of the block form at 441 points"
+    else fail "z-plane map vs block form: $diffs differences"; fi
+else
+    ok "skipped map comparison: no python3"
+fi
