@@ -7,7 +7,8 @@
  *    (q the bilinear transform of p, lambda = (1 + i t)/(1 - i t)) has a
  *    real root t where Res_t(A, B)(s) = 0; lambda = -1 (t = inf) and the
  *    leading coefficient add theirs.  Each cell is decided at a rational
- *    point by complex Schur-Cohn (cross-checked, stability/schur_complex.c);
+ *    point by complex Schur-Cohn (cross-checked, stability/schur_complex.c)
+ *    and by the Bilharz test on the bilinear transform (routh_complex.c);
  *  - A-stability: for p linear in z (multistep: z = -P0/P1 on the circle)
  *    the boundary locus Re z(t) = X(t)/W(t) must stay in Re z >= 0, and
  *    z = -1 be stable; for one-step methods (p = D(z) lambda - N(z)) the
@@ -28,6 +29,7 @@
 #include "analysis/registry.h"
 #include "analysis/an_region.h"
 #include "stability/schur_complex.h"
+#include "stability/routh_complex.h"
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
 
@@ -324,7 +326,8 @@ static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0
     fmpq_init(zr); fmpq_init(zi);
     fmpq_set(e ? zi : zr, s0);
     eval_at(re, im, P, zr, zi);
-    r = rs_schur_complex_status(st, re, im, P->n, err);
+    /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if they differ) */
+    r = rs_routh_complex_checked_status(st, re, im, P->n, err);
     fmpq_poly_clear(re); fmpq_poly_clear(im);
     fmpq_clear(zr); fmpq_clear(zi);
     return r;

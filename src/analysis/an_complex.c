@@ -324,8 +324,12 @@ int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "coeffs", cpoly_coeffs(cp.re, cp.im));
         json_object_set_new(o, "poly", json_string(json_string_value(json_object_get(o, "p"))));
         /* the rational content split off the symbolic p (1 for a char line over Q(i)) */
-        if (cp.v->s->complex_char) json_object_set_new(o, "content", json_string("1"));
-        else json_object_set_new(o, "content", rs_json_fmpq(cp.v->cp->content));
+        if (cp.v->s->complex_char) {
+            json_object_set_new(o, "content", json_string("1"));
+        } else {
+            json_object_set_new(o, "content", rs_json_fmpq(cp.v->cp->content));
+            json_object_set_new(o, "removed_lambda_power", json_integer(cp.v->cp->removed_lambda_power));
+        }
         emit(run, &cp, o);
     }
     cpoint_clear(&cp);
