@@ -556,20 +556,22 @@ done:
  * Gauss-Lucas): marginal, else a pair off the circle: unstable.  A system
  * with a repeated circle root: marginal iff semisimple (semisimple_pm1);
  * returns 0 (undecided) only for a repeated non-real circle root there. */
+static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
+                     const fmpq_poly_t m, const rs_scheme_t s);
+
 static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
 {
-    int decided = 1;
+    int decided;
     slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j;
     fmpq_poly_t m;
     fmpz_mpoly_t c;
     fmpz_poly_t u;
-    kpoly_t P, R, G, H, D;
-    rs_status_t st;
+    kpoly_t P;
     fmpq_poly_init(m);
     fmpq_poly_set_fmpz_poly(m, t0->minpoly);
     fmpz_mpoly_init(c, s->zctx);
     fmpz_poly_init(u);
-    kp_init(&P, n + 1); kp_init(&R, n + 1); kp_init(&G, n + 1); kp_init(&H, n + 1); kp_init(&D, n + 1);
+    kp_init(&P, n + 1);
     for (j = 0; j <= n; j++) {
         ulong e = (ulong) j;
         fmpz_mpoly_get_coeff_vars_ui(c, p, &lv, &e, 1, s->zctx);
@@ -577,6 +579,26 @@ static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv,
         fmpq_poly_set_fmpz_poly(P.c + j, u);
         fmpq_poly_rem(P.c + j, P.c + j, m);
     }
+    decided = status_kp(out, &P, n, p, tv, t0, m, s);
+    kp_clear(&P);
+    fmpq_poly_clear(m);
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpz_poly_clear(u);
+    return decided;
+}
+
+/* the status of P0 = sum c_j lambda^j of formal degree n over K = Q[t]/(m);
+ * p, tv: the scheme's polynomial with t0 for tv (the semisimplicity test of
+ * a system's repeated circle root); p == NULL: that case left undecided */
+static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
+                     const fmpq_poly_t m, const rs_scheme_t s)
+{
+    int decided = 1;
+    slong j;
+    kpoly_t P, R, G, H, D;
+    rs_status_t st;
+    kp_init(&P, n + 1); kp_init(&R, n + 1); kp_init(&G, n + 1); kp_init(&H, n + 1); kp_init(&D, n + 1);
+    for (j = 0; j <= n; j++) fmpq_poly_set(P.c + j, P0->c + j);
     P.deg = n;
     kp_normalise(&P);
     if (P.deg < n) {
@@ -610,17 +632,16 @@ static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv,
                     for (j = G.deg; j < D.cap; j++) fmpq_poly_zero(D.c + j);
                     D.deg = G.deg - 1;
                     kp_normalise(&D);
-                    if (kp_all_inside(&D, m, t0))
-                        st = semisimple_pm1(&decided, &P, &R, p, tv, t0, m, s);
+                    if (kp_all_inside(&D, m, t0)) {
+                        if (p != NULL) st = semisimple_pm1(&decided, &P, &R, p, tv, t0, m, s);
+                        else decided = 0;
+                    }
                 }
             }
         }
     }
     *out = st;
     kp_clear(&P); kp_clear(&R); kp_clear(&G); kp_clear(&H); kp_clear(&D);
-    fmpq_poly_clear(m);
-    fmpz_mpoly_clear(c, s->zctx);
-    fmpz_poly_clear(u);
     return decided;
 }
 
@@ -1625,4 +1646,164 @@ void rs_alg_between(fmpq_t out, rs_alg_t *a, rs_alg_t *b) { rational_between(out
 int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0, const rs_scheme_t s)
 {
     return status_at_algebraic(out, p, tv, t0, s);
+}
+
+int rs_alg_sign(const fmpq_poly_t x, rs_alg_t *t0) { return k_sign(x, t0); }
+
+int rs_alg_status_coeffs(rs_status_t *out, const fmpq_poly_struct *c, slong n, rs_alg_t *t0, const rs_scheme_t s)
+{
+    fmpq_poly_t m;
+    kpoly_t P;
+    slong j;
+    int decided;
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    kp_init(&P, n + 1);
+    for (j = 0; j <= n; j++) fmpq_poly_rem(P.c + j, c + j, m);
+    decided = status_kp(out, &P, n, NULL, -1, t0, m, s);
+    kp_clear(&P);
+    fmpq_poly_clear(m);
+    return decided;
+}
+
+/* m_b(w - k x) in Z[x, w] (ctx: x = var 0, w = var 1) */
+static void prim_shift(fmpz_mpoly_t out, const fmpz_poly_t mb, slong k, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t lin, t;
+    slong i;
+    fmpz_mpoly_init(lin, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_gen(lin, 0, ctx);
+    fmpz_mpoly_scalar_mul_si(lin, lin, -k, ctx);
+    fmpz_mpoly_gen(t, 1, ctx);
+    fmpz_mpoly_add(lin, lin, t, ctx);
+    fmpz_mpoly_zero(out, ctx);
+    for (i = fmpz_poly_degree(mb); i >= 0; i--) {
+        fmpz_mpoly_mul(out, out, lin, ctx);
+        fmpz_mpoly_add_fmpz(out, out, mb->coeffs + i, ctx);
+    }
+    fmpz_mpoly_clear(lin, ctx);
+    fmpz_mpoly_clear(t, ctx);
+}
+
+/* gamma = beta + k alpha for the first k in 1, -1, 2, -2, ... with
+ * Q(gamma) = Q(alpha, beta): gamma's minimal polynomial is a factor of
+ * Res_x(m_a(x), m_b(w - k x)) (the root whose enclosure meets beta + k
+ * alpha's), and k separates iff gcd(m_a(x), m_b(gamma - k x)) over
+ * Q(gamma) is linear (only x = alpha is common): then alpha = A(gamma) from
+ * that gcd and beta = gamma - k alpha. */
+int rs_alg_primitive(rs_alg_t *gamma, fmpq_poly_t A, fmpq_poly_t B, rs_alg_t *alpha, rs_alg_t *beta)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t ma, mb, res;
+    fmpz_poly_t u;
+    slong t, k, i;
+    int ok = 0;
+    if (alpha->rational || beta->rational) {
+        /* the field is the other one's */
+        alg_t *g = alpha->rational ? beta : alpha;
+        fmpz_poly_set(gamma->minpoly, g->minpoly);
+        gamma->idx = g->idx;
+        gamma->rational = g->rational;
+        fmpq_set(gamma->q, g->q);
+        gamma->prec = 0;
+        alg_refine(gamma, 128);
+        if (g->rational) { fmpq_poly_set_fmpq(A, alpha->q); fmpq_poly_set_fmpq(B, beta->q); return 1; }
+        fmpq_poly_zero(A); fmpq_poly_zero(B);
+        if (alpha->rational) { fmpq_poly_set_fmpq(A, alpha->q); fmpq_poly_set_coeff_si(B, 1, 1); }
+        else { fmpq_poly_set_fmpq(B, beta->q); fmpq_poly_set_coeff_si(A, 1, 1); }
+        return 1;
+    }
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(ma, ctx); fmpz_mpoly_init(mb, ctx); fmpz_mpoly_init(res, ctx);
+    fmpz_poly_init(u);
+    fmpz_mpoly_set_fmpz_poly(ma, alpha->minpoly, 0, ctx);
+    for (t = 0; t < 12 && !ok; t++) {
+        alg_t *roots = NULL;
+        slong nroots = 0, hit = -1, prec;
+        k = t % 2 == 0 ? t / 2 + 1 : -(t / 2 + 1);
+        if (rs_budget_check(NULL, "a primitive element") != RS_OK) break;
+        prim_shift(mb, beta->minpoly, k, ctx);
+        if (!fmpz_mpoly_resultant(res, ma, mb, 0, ctx) || !fmpz_mpoly_get_fmpz_poly(u, res, 1, ctx)
+            || fmpz_poly_degree(u) < 1)
+            continue;
+        alg_roots_append(&roots, &nroots, u, 0);
+        /* the root of the resultant that is beta + k alpha (distinct roots:
+         * refining separates them, exactly one is gamma) */
+        for (prec = 64; prec < (1L << 16) && hit < 0; prec *= 2) {
+            arb_t g;
+            slong nhit = 0;
+            arb_init(g);
+            alg_refine(alpha, prec);
+            alg_refine(beta, prec);
+            arb_mul_si(g, alpha->x, k, prec);
+            arb_add(g, g, beta->x, prec);
+            for (i = 0; i < nroots; i++) {
+                alg_refine(roots + i, prec);
+                if (arb_overlaps(g, roots[i].x)) { nhit++; hit = i; }
+            }
+            if (nhit != 1) hit = -1;
+            arb_clear(g);
+        }
+        if (hit >= 0) {
+            /* gcd(m_a(x), m_b(gamma - k x)) in Q(gamma)[x] */
+            kpoly_t P, Q, G;
+            fmpq_poly_t m, z, lin;
+            slong da = fmpz_poly_degree(alpha->minpoly), db = fmpz_poly_degree(beta->minpoly);
+            fmpq_poly_init(m); fmpq_poly_init(z); fmpq_poly_init(lin);
+            fmpq_poly_set_fmpz_poly(m, roots[hit].minpoly);
+            kp_init(&P, da + 1); kp_init(&Q, db + 1); kp_init(&G, FLINT_MAX(da, db) + 1);
+            for (i = 0; i <= da; i++) fmpq_poly_set_fmpz(P.c + i, alpha->minpoly->coeffs + i);
+            P.deg = da;
+            {
+                /* Horner in x with coefficients in Q(gamma): lin = gamma - k x */
+                kpoly_t acc, nx;
+                slong j;
+                kp_init(&acc, db + 1); kp_init(&nx, db + 1);
+                fmpq_poly_set_coeff_si(z, 1, 1);
+                fmpq_poly_rem(z, z, m);
+                for (i = db; i >= 0; i--) {
+                    /* acc = acc * (z - k x) + c_i */
+                    for (j = 0; j < nx.cap; j++) fmpq_poly_zero(nx.c + j);
+                    for (j = 0; j <= acc.deg; j++) {
+                        fmpq_poly_mul(lin, acc.c + j, z);
+                        fmpq_poly_add(nx.c + j, nx.c + j, lin);
+                        fmpq_poly_scalar_mul_si(lin, acc.c + j, -k);
+                        fmpq_poly_add(nx.c + j + 1, nx.c + j + 1, lin);
+                    }
+                    for (j = 0; j < nx.cap; j++) fmpq_poly_rem(nx.c + j, nx.c + j, m);
+                    fmpq_poly_set_fmpz(lin, beta->minpoly->coeffs + i);
+                    fmpq_poly_add(nx.c + 0, nx.c + 0, lin);
+                    nx.deg = nx.cap - 1;
+                    kp_normalise(&nx);
+                    kp_set(&acc, &nx);
+                }
+                kp_set(&Q, &acc);
+                kp_clear(&acc); kp_clear(&nx);
+            }
+            kp_gcd(&G, &P, &Q, m);
+            if (G.deg == 1) {
+                /* monic: x + g0, alpha = -g0; beta = gamma - k alpha */
+                fmpq_poly_neg(A, G.c + 0);
+                fmpq_poly_scalar_mul_si(B, A, -k);
+                fmpq_poly_add(B, B, z);
+                fmpq_poly_rem(B, B, m);
+                fmpz_poly_set(gamma->minpoly, roots[hit].minpoly);
+                gamma->idx = roots[hit].idx;
+                gamma->rational = roots[hit].rational;
+                fmpq_set(gamma->q, roots[hit].q);
+                arb_set(gamma->x, roots[hit].x);
+                gamma->prec = roots[hit].prec;
+                ok = 1;
+            }
+            kp_clear(&P); kp_clear(&Q); kp_clear(&G);
+            fmpq_poly_clear(m); fmpq_poly_clear(z); fmpq_poly_clear(lin);
+        }
+        for (i = 0; i < nroots; i++) alg_clear(roots + i);
+        free(roots);
+    }
+    fmpz_mpoly_clear(ma, ctx); fmpz_mpoly_clear(mb, ctx); fmpz_mpoly_clear(res, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    fmpz_poly_clear(u);
+    return ok;
 }

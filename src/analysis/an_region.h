@@ -5,6 +5,7 @@
 #ifndef RECSTAB_AN_REGION_H
 #define RECSTAB_AN_REGION_H
 #include <arb.h>
+#include <flint/fmpq_poly.h>
 #include "analysis/registry.h"
 
 /* a set of irreducible polynomials, each up to sign once */
@@ -57,6 +58,17 @@ void rs_alg_between(fmpq_t out, rs_alg_t *a, rs_alg_t *b);
 /* The exact status of p(lambda; tv = t0), p depending on no other
  * parameter; 0 when undecided (a repeated non-real circle root of a system) */
 int rs_alg_status(rs_status_t *out, const fmpz_mpoly_t p, slong tv, rs_alg_t *t0, const rs_scheme_t s);
+
+/* Exact arithmetic in K = Q(t0) = Q[t]/(minpoly): elements are fmpq_polys
+ * reduced mod the minimal polynomial.  The sign of x(t0); the status of
+ * sum c_j lambda^j (j <= n, c_j in K), 0 when undecided (as rs_alg_status;
+ * a system's repeated circle root is left undecided). */
+int rs_alg_sign(const fmpq_poly_t x, rs_alg_t *t0);
+int rs_alg_status_coeffs(rs_status_t *out, const fmpq_poly_struct *c, slong n, rs_alg_t *t0, const rs_scheme_t s);
+/* A primitive element of Q(alpha, beta): gamma = beta + k alpha (small k),
+ * alpha = A(gamma), beta = B(gamma), A, B reduced mod gamma's minimal
+ * polynomial; gamma initialised by the caller.  0 when none found (budget). */
+int rs_alg_primitive(rs_alg_t *gamma, fmpq_poly_t A, fmpq_poly_t B, rs_alg_t *alpha, rs_alg_t *beta);
 
 /* The for-all region of parameter tv (every other parameter not set
  * quantified) on the interval dom_tv: *out {"intervals", "for_all", ...}

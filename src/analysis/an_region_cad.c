@@ -374,6 +374,200 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
     return r;
 }
 
+/* f (in N1, N2 only) at (A(gamma), B(gamma)) in Q(gamma) = Q[z]/(m) */
+static void cad_eval_field(fmpq_poly_t out, const cad_t *c, const fmpz_mpoly_t f, const fmpq_poly_t A,
+                           const fmpq_poly_t B, const fmpq_poly_t m)
+{
+    slong da = fmpz_mpoly_degree_si(f, c->av, c->s->zctx), db = fmpz_mpoly_degree_si(f, c->bv, c->s->zctx), i;
+    fmpq_poly_struct *pa = flint_malloc((FLINT_MAX(da, 0) + 1) * sizeof(fmpq_poly_struct));
+    fmpq_poly_struct *pb = flint_malloc((FLINT_MAX(db, 0) + 1) * sizeof(fmpq_poly_struct));
+    fmpq_poly_t t;
+    fmpz_t cf;
+    fmpq_poly_init(t);
+    fmpz_init(cf);
+    for (i = 0; i <= FLINT_MAX(da, 0); i++) {
+        fmpq_poly_init(pa + i);
+        if (i == 0) fmpq_poly_one(pa); else { fmpq_poly_mul(pa + i, pa + i - 1, A); fmpq_poly_rem(pa + i, pa + i, m); }
+    }
+    for (i = 0; i <= FLINT_MAX(db, 0); i++) {
+        fmpq_poly_init(pb + i);
+        if (i == 0) fmpq_poly_one(pb); else { fmpq_poly_mul(pb + i, pb + i - 1, B); fmpq_poly_rem(pb + i, pb + i, m); }
+    }
+    fmpq_poly_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(f, c->s->zctx); i++) {
+        slong ea = fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx);
+        slong eb = fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx);
+        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, c->s->zctx);
+        fmpq_poly_mul(t, pa + ea, pb + eb);
+        fmpq_poly_scalar_mul_fmpz(t, t, cf);
+        fmpq_poly_add(out, out, t);
+    }
+    fmpq_poly_rem(out, out, m);
+    for (i = 0; i <= FLINT_MAX(da, 0); i++) fmpq_poly_clear(pa + i);
+    for (i = 0; i <= FLINT_MAX(db, 0); i++) fmpq_poly_clear(pb + i);
+    flint_free(pa);
+    flint_free(pb);
+    fmpq_poly_clear(t);
+    fmpz_clear(cf);
+}
+
+/* the signs at (alpha, b0), b0 rational, and the status there (exact in
+ * Q(alpha)); returns the status's decidedness */
+static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
+{
+    const rs_scheme_struct *s = c->s;
+    fmpz_mpoly_t t;
+    fmpz_poly_t u;
+    slong k;
+    int dec = 0;
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_poly_init(u);
+    for (k = 0; k < c->nf; k++) {
+        rs_an_forall_subst(t, c->f + k, c->bv, b0, s->zctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, t, c->av, s->zctx)) fmpz_poly_zero(u);
+        e->sg[k] = (signed char) upoly_sign_at(u, al);
+    }
+    e->outside = cad_outside(c, e->sg);
+    if (!e->outside) {
+        rs_an_forall_subst(t, c->v->cp->p, c->bv, b0, s->zctx);
+        if (!fmpz_mpoly_is_zero(t, s->zctx)) dec = rs_alg_status(&e->st, t, c->av, al, s);
+    }
+    fmpz_mpoly_clear(t, s->zctx);
+    fmpz_poly_clear(u);
+    return dec;
+}
+
+/* step 3 for a column over an irrational N1 = alpha (a two-level tower):
+ * the candidate N2 values are the real roots of Res_{N1}(m_alpha, f_k)
+ * (the norms of f_k(alpha, N2)); a candidate beta is a section where some
+ * f_k(alpha, N2) not identically 0 vanishes, decided exactly in
+ * Q(alpha, beta) = Q(gamma) (rs_alg_primitive).  Sectors between have
+ * rational N2 samples, decided in Q(alpha). */
+static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
+{
+    const rs_scheme_struct *s = c->s;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx);
+    rs_alg_t *cand = NULL;
+    slong ncand = 0, i, j, k, nsec = 0, *sec = NULL;
+    signed char **sgs = NULL;
+    int *zero_line = flint_calloc(c->nf, sizeof(int)), r = RS_OK;
+    fmpz_mpoly_t ma, t;
+    fmpz_poly_t u;
+    fmpq_poly_t m, A, B, v;
+    fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
+    fmpz_mpoly_init(ma, s->zctx);
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_poly_init(u);
+    fmpq_poly_init(m); fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(v);
+    for (j = 0; j <= n; j++) fmpq_poly_init(pc + j);
+    fmpz_mpoly_set_fmpz_poly(ma, al->minpoly, c->av, s->zctx);
+    for (k = 0; k < c->nf && r == RS_OK; k++) {
+        slong d = fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx);
+        if (d <= 0) continue;
+        r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
+        if (r == RS_OK && fmpz_mpoly_resultant(t, ma, c->f + k, c->av, s->zctx)
+            && fmpz_mpoly_get_fmpz_poly(u, t, c->bv, s->zctx)) {
+            if (fmpz_poly_is_zero(u)) zero_line[k] = 1;   /* m_alpha divides f_k */
+            else rs_alg_roots_append(&cand, &ncand, u, 0);
+        }
+    }
+    rs_alg_sort(cand, ncand);
+    for (i = 0, j = 0; i < ncand; i++) {
+        if (j > 0 && rs_alg_cmp(cand + j - 1, cand + i) == 0) { rs_alg_clear(cand + i); continue; }
+        if (j != i) cand[j] = cand[i];
+        j++;
+    }
+    ncand = j;
+    /* which candidates are sections, and their signs (exact in Q(gamma)) */
+    sec = flint_malloc((ncand + 1) * sizeof(slong));
+    sgs = flint_calloc(ncand + 1, sizeof(signed char *));
+    for (i = 0; i < ncand && r == RS_OK; i++) {
+        rs_alg_t g;
+        int is_sec = 0;
+        r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
+        if (r != RS_OK) break;
+        sgs[i] = flint_calloc(c->nf, 1);
+        rs_alg_init(&g);
+        if (!rs_alg_primitive(&g, A, B, al, cand + i)) {
+            rs_alg_clear(&g);
+            r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
+            if (r == RS_OK) r = RS_ERR_MATH;
+            break;
+        }
+        fmpq_poly_set_fmpz_poly(m, g.minpoly);
+        for (k = 0; k < c->nf; k++) {
+            cad_eval_field(v, c, c->f + k, A, B, m);
+            sgs[i][k] = (signed char) rs_alg_sign(v, &g);
+            if (sgs[i][k] == 0 && !zero_line[k] && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0) is_sec = 1;
+        }
+        if (is_sec) {
+            cell_t *e = cad_new_cell(c, 0, col);   /* placed below, in order */
+            memcpy(e->sg, sgs[i], c->nf);
+            for (k = 0; k < c->nf && e->sec < 0; k++)
+                if (e->sg[k] == 0 && !zero_line[k] && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0) e->sec = k;
+            e->a = rs_alg_json(al, c->an);
+            e->b = rs_alg_json(cand + i, c->bn);
+            e->outside = cad_outside(c, e->sg);
+            if (!e->outside) {
+                for (j = 0; j <= n; j++) {
+                    ulong ex = (ulong) j;
+                    fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
+                    cad_eval_field(pc + j, c, t, A, B, m);
+                }
+                e->decided = rs_alg_status_coeffs(&e->st, pc, n, &g, s);
+            }
+            sec[nsec] = c->ncells - 1;
+            cand[nsec++] = cand[i];   /* the sections first, in order (i >= nsec - 1) */
+        } else {
+            rs_alg_clear(cand + i);
+        }
+        rs_alg_clear(&g);
+    }
+    for (j = i; j < ncand; j++) rs_alg_clear(cand + j);   /* not reached: a budget stop */
+    if (r == RS_OK) {
+        /* interleave: sector, section, ..., sector (the sections were made
+         * in increasing order; move them after their sectors) */
+        cell_t *secs = flint_malloc((nsec + 1) * sizeof(cell_t));
+        for (i = 0; i < nsec; i++) secs[i] = c->cells[sec[i]];
+        c->ncells -= nsec;
+        for (i = 0; i <= nsec && r == RS_OK; i++) {
+            fmpq_t b0;
+            cell_t *e;
+            fmpq_init(b0);
+            rs_alg_between(b0, i > 0 ? cand + i - 1 : NULL, i < nsec ? cand + i : NULL);
+            e = cad_new_cell(c, 1, col);
+            e->a = rs_alg_json(al, c->an);
+            e->b = rs_json_fmpq(b0);
+            e->decided = cad_alg_rational(c, e, al, b0);
+            if (!e->outside && !e->decided) c->undecided_lines++;
+            if (nsec > 0 && i < nsec) {
+                e = cad_new_cell(c, 0, col);
+                flint_free(e->sg);
+                *e = secs[i];
+                if (!e->outside && !e->decided) c->undecided_lines++;
+            }
+            fmpq_clear(b0);
+            r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
+        }
+        flint_free(secs);
+        for (i = 0; i < nsec; i++) rs_alg_clear(cand + i);
+    } else {
+        for (i = 0; i < nsec; i++) rs_alg_clear(cand + i);
+    }
+    for (i = 0; i < ncand + 1; i++) flint_free(sgs[i]);
+    flint_free(sgs);
+    flint_free(sec);
+    free(cand);
+    flint_free(zero_line);
+    for (j = 0; j <= n; j++) fmpq_poly_clear(pc + j);
+    flint_free(pc);
+    fmpz_mpoly_clear(ma, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
+    fmpz_poly_clear(u);
+    fmpq_poly_clear(m); fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(v);
+    return r;
+}
+
 /* every column: sectors between the critical N1 values, sections at them */
 static int cad_lift(cad_t *c)
 {
@@ -394,12 +588,7 @@ static int cad_lift(cad_t *c)
             int in = 1;
             if (b->has_lo) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->lo); in &= rs_alg_cmp(al, &e) > 0; rs_alg_clear(&e); }
             if (b->has_hi) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->hi); in &= rs_alg_cmp(al, &e) < 0; rs_alg_clear(&e); }
-            if (in) {
-                cell_t *e = cad_new_cell(c, 1, i);
-                e->a = rs_alg_json(al, c->an);
-                e->b = json_null();
-                c->undecided_lines++;
-            }
+            if (in) r = cad_column_alg(c, al, i);
         }
         fmpq_clear(a0);
     }
@@ -668,28 +857,43 @@ static void cad_boundary(json_t *o, const cad_t *c)
         const cell_t *e = c->cells + i;
         rs_status_t side[2];
         fmpq vals[2];
-        fmpq_t d;
+        fmpq_t d, a0;
         double gap = 1;
         slong ci = e->col / 2, j;
         int ok = 1;
         if (e->dim != 1 || e->col % 2 == 0 || e->outside || !json_is_string(e->b)) continue;
         if (ci > 0) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci) - rs_alg_double(c->crit + ci - 1));
         if (ci + 1 < c->ncrit) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci + 1) - rs_alg_double(c->crit + ci));
-        fmpq_init(vals + 0); fmpq_init(vals + 1); fmpq_init(d);
-        fmpq_set(vals + 1, c->crit[ci].q);   /* scratch: a0 */
+        fmpq_init(vals + 0); fmpq_init(vals + 1); fmpq_init(d); fmpq_init(a0);
         fmpq_one(d);
         while (fmpq_get_d(d) > gap / 1024) fmpq_div_2exp(d, d, 1);
+        if (c->crit[ci].rational) {
+            fmpq_set(a0, c->crit[ci].q);
+        } else {
+            /* an irrational line: a0 within d/2 of it (a0 -+ d on its two sides) */
+            arf_t mid;
+            slong prec = 64;
+            arf_init(mid);
+            for (;;) {
+                rs_alg_refine(c->crit + ci, prec);
+                if (mag_get_d(arb_radref(c->crit[ci].x)) < fmpq_get_d(d) / 2) break;
+                prec *= 2;
+            }
+            arf_set(mid, arb_midref(c->crit[ci].x));
+            arf_get_fmpq(a0, mid);
+            arf_clear(mid);
+        }
         fmpq_set_str(vals + 1, json_string_value(e->b), 10);
         fmpq_canonicalise(vals + 1);
         for (j = 0; j < 2 && ok; j++) {
             rs_rootcount_t rc;
-            if (j == 0) fmpq_sub(vals + 0, c->crit[ci].q, d); else fmpq_add(vals + 0, c->crit[ci].q, d);
+            if (j == 0) fmpq_sub(vals + 0, a0, d); else fmpq_add(vals + 0, a0, d);
             rs_rootcount_init(rc);
             ok = rs_run_point_status(side + j, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2) == RS_OK;
             rs_rootcount_clear(rc);
         }
         rs_error_init(c->run->err);
-        fmpq_clear(vals + 0); fmpq_clear(vals + 1); fmpq_clear(d);
+        fmpq_clear(vals + 0); fmpq_clear(vals + 1); fmpq_clear(d); fmpq_clear(a0);
         if (!ok) continue;
         for (k = 0; k < c->nf; k++) {
             if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY || fmpz_mpoly_degree_si(c->f + k, c->bv, c->s->zctx) > 0)

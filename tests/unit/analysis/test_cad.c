@@ -14,6 +14,7 @@
 #include "testutil.h"
 #include <string.h>
 #include <flint/fmpq_mpoly.h>
+#include <flint/fmpq_poly.h>
 #include <arf.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
@@ -401,6 +402,187 @@ static void test_map_arcs(void **state)
     json_decref(doc);
 }
 
+/* ---- corners over irrational values: lambda^2 + (a + b) lambda + a^2 - 1 -------
+ * The closed form (derived by hand in cases/region2/sqrt2-quadratic.case from
+ * Jury's triangle with c0 = a^2 - 1, c1 = a + b): stable iff 0 < a^2 < 2 and
+ * |a + b| < a^2; marginal iff a^2 = 2 and |a + b| < 2, or |a + b| = a^2 < 2. */
+static int sqrt2_closed(const fmpq_t a, const fmpq_t b)
+{
+    fmpq_t c0, c1;
+    int k;
+    fmpq_init(c0); fmpq_init(c1);
+    fmpq_mul(c0, a, a);
+    fmpq_sub_si(c0, c0, 1);
+    fmpq_add(c1, a, b);
+    k = jury_closed(c1, c0);
+    fmpq_clear(c0); fmpq_clear(c1);
+    return k;
+}
+
+/* 300 points in [-3, 3]^2, 100 on the lines a + b = +-a^2, 50 near a = +-sqrt 2 */
+static void sqrt2_points(fmpq *xs, fmpq *ys, slong n, flint_rand_t st)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        if (i < 300) { rand_q(xs + i, st, -3, 3); rand_q(ys + i, st, -3, 3); continue; }
+        if (i < 400) {
+            rand_q(xs + i, st, -2, 2);
+            fmpq_mul(ys + i, xs + i, xs + i);               /* b = +-a^2 - a */
+            if (i % 2) fmpq_neg(ys + i, ys + i);
+            fmpq_sub(ys + i, ys + i, xs + i);
+            continue;
+        }
+        /* 1.414 < sqrt 2 < 1.415: just inside and just outside the strip */
+        fmpq_set_si(xs + i, (i % 2 ? 1414 : 1415) * (i % 4 < 2 ? 1 : -1), 1000);
+        rand_q(ys + i, st, -4, 4);
+    }
+}
+
+/* sign of u + v sqrt 2 (exact) */
+static int sign_sqrt2(const fmpq_t u, const fmpq_t v)
+{
+    fmpq_t l, r;
+    int su = fmpq_sgn(u), sv = fmpq_sgn(v), c;
+    if (su == 0 || sv == 0 || su == sv) return su != 0 ? su : sv;
+    fmpq_init(l); fmpq_init(r);
+    fmpq_mul(l, u, u);
+    fmpq_mul(r, v, v);
+    fmpq_mul_si(r, r, 2);
+    c = fmpq_cmp(l, r);                 /* |u| vs |v| sqrt 2 */
+    fmpq_clear(l); fmpq_clear(r);
+    return c > 0 ? su : (c < 0 ? sv : 0);
+}
+
+/* "POLY REL 0" at (s sqrt 2, y), exactly in Q(sqrt 2) */
+static int cond_holds_sqrt2(const char *cond, int s, const fmpq_t y)
+{
+    const char *vars[2] = {"a", "b"};
+    char poly[1024], rel[4];
+    const char *sp = strrchr(cond, ' ');
+    fmpq_mpoly_ctx_t ctx;
+    fmpq_mpoly_t P;
+    fmpq_poly_t u, m;
+    fmpq_t c0, c1;
+    size_t n;
+    int sg, h;
+    assert_non_null(sp);
+    n = (size_t) (sp - cond);
+    memcpy(poly, cond, n);
+    poly[n] = '\0';
+    sp = strrchr(poly, ' ');
+    snprintf(rel, sizeof rel, "%s", sp + 1);
+    poly[sp - poly] = '\0';
+    fmpq_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpq_mpoly_init(P, ctx);
+    fmpq_poly_init(u); fmpq_poly_init(m);
+    fmpq_init(c0); fmpq_init(c1);
+    if (fmpq_mpoly_set_str_pretty(P, poly, vars, ctx) != 0) fail_msg("cannot parse '%s'", poly);
+    assert_true(fmpq_mpoly_evaluate_one_fmpq(P, P, 1, y, ctx));
+    assert_true(fmpq_mpoly_get_fmpq_poly(u, P, 0, ctx));
+    fmpq_poly_set_coeff_si(m, 2, 1);
+    fmpq_poly_set_coeff_si(m, 0, -2);
+    fmpq_poly_rem(u, u, m);                 /* u0 + u1 a, a = s sqrt 2 */
+    fmpq_poly_get_coeff_fmpq(c0, u, 0);
+    fmpq_poly_get_coeff_fmpq(c1, u, 1);
+    if (s < 0) fmpq_neg(c1, c1);
+    sg = sign_sqrt2(c0, c1);
+    if (strcmp(rel, ">") == 0) h = sg > 0;
+    else if (strcmp(rel, ">=") == 0) h = sg >= 0;
+    else if (strcmp(rel, "<") == 0) h = sg < 0;
+    else if (strcmp(rel, "<=") == 0) h = sg <= 0;
+    else if (strcmp(rel, "=") == 0) h = sg == 0;
+    else h = sg != 0;
+    fmpq_mpoly_clear(P, ctx);
+    fmpq_mpoly_ctx_clear(ctx);
+    fmpq_poly_clear(u); fmpq_poly_clear(m);
+    fmpq_clear(c0); fmpq_clear(c1);
+    return h;
+}
+
+static int dnf_holds_sqrt2(const json_t *dnf, int s, const fmpq_t y)
+{
+    size_t i, j;
+    for (i = 0; i < json_array_size(dnf); i++) {
+        const json_t *c = json_array_get(dnf, i);
+        int all = 1;
+        for (j = 0; j < json_array_size(c) && all; j++)
+            all = cond_holds_sqrt2(json_string_value(json_array_get(c, j)), s, y);
+        if (all) return 1;
+    }
+    return 0;
+}
+
+static void test_irrational_lines(void **state)
+{
+    const char *rel = "cases/region2/sqrt2-quadratic.case";
+    int outcome;
+    json_t *doc;
+    const json_t *o, *fo, *cells, *b;
+    flint_rand_t st;
+    fmpq_t y, t;
+    slong i, nline = 0, nsec = 0;
+    (void) state;
+    /* formula_complete (no undecided cell) and the run-time cross-check: region_of */
+    region_test(rel, 450, sqrt2_points, sqrt2_closed, 3, NULL);
+    doc = region_of(rel, &outcome);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    fo = json_object_get(o, "formula");
+    cells = json_object_get(o, "cells");
+    b = json_object_get(o, "boundary");
+    assert_int_equal(json_integer_value(json_object_get(o, "undecided_lines")), 0);
+    /* a^2 - 2 separates (marginal on the lines, unstable beyond, stable inside) */
+    assert_string_equal(json_string_value(json_array_get(b, 2)), "a^2 - 2");
+    /* on the lines a = +-sqrt 2 exactly: marginal iff |a + b| < 2, i.e.
+     * (a + b)^2 - 4 = b^2 + 2 a b - 2 < 0, sign of (b^2 - 2) + 2 s b sqrt 2 */
+    flint_randinit(st);
+    fmpq_init(y); fmpq_init(t);
+    for (i = 0; i < 200; i++) {
+        int s = i % 2 ? 1 : -1, want, got;
+        fmpq_t u, v;
+        rand_q(y, st, -5, 5);
+        fmpq_init(u); fmpq_init(v);
+        fmpq_mul(u, y, y);
+        fmpq_sub_si(u, u, 2);
+        fmpq_mul_si(v, y, 2 * s);
+        want = sign_sqrt2(u, v) < 0 ? 1 : 0;
+        got = dnf_holds_sqrt2(json_object_get(fo, "stable"), s, y) ? 2
+              : (dnf_holds_sqrt2(json_object_get(fo, "marginal"), s, y) ? 1 : 0);
+        if (got != want) {
+            char *ys = fmpq_get_str(NULL, 10, y);
+            fail_msg("at (%dsqrt2, %s) the formula says %d, the closed form %d", s, ys, got, want);
+        }
+        fmpq_clear(u); fmpq_clear(v);
+    }
+    /* the cells over the irrational lines: sectors as the closed form, the
+     * four corners (sections: a + b = +-2 there) unstable */
+    for (i = 0; i < (slong) json_array_size(cells); i++) {
+        const json_t *e = json_array_get(cells, i), *ca = json_object_get(e, "a"), *cb = json_object_get(e, "b");
+        const char *stc = json_string_value(json_object_get(e, "status"));
+        if (json_is_string(ca)) continue;
+        nline++;
+        assert_string_equal(json_string_value(json_object_get(ca, "minpoly")), "a^2 - 2");
+        if (!json_is_string(cb)) {
+            nsec++;
+            assert_string_equal(stc, "unstable");
+        } else {
+            int s = json_integer_value(json_object_get(ca, "root_index")) == 0 ? -1 : 1;
+            fmpq_t u, v;
+            fmpq_init(u); fmpq_init(v);
+            assert_int_equal(fmpq_set_str(y, json_string_value(cb), 10), 0);
+            fmpq_mul(u, y, y);
+            fmpq_sub_si(u, u, 2);
+            fmpq_mul_si(v, y, 2 * s);
+            assert_string_equal(stc, sign_sqrt2(u, v) < 0 ? "marginal" : "unstable");
+            fmpq_clear(u); fmpq_clear(v);
+        }
+    }
+    assert_int_equal(nline, 10);
+    assert_int_equal(nsec, 4);
+    fmpq_clear(y); fmpq_clear(t);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 static void test_bad(void **state)
@@ -434,6 +616,7 @@ int main(void)
         cmocka_unit_test(test_jury),
         cmocka_unit_test(test_theta),
         cmocka_unit_test(test_newmark),
+        cmocka_unit_test(test_irrational_lines),
         cmocka_unit_test(test_qepcad),
         cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
