@@ -1160,6 +1160,27 @@ static slong claim_single_param(rs_run_t *run, const claim_dnf_t *d)
     return tv;
 }
 
+/* 1 when e names the parameter name (a call's own name is a function) */
+static int expr_mentions(const rs_expr_t *e, const char *name)
+{
+    if (e == NULL) return 0;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, name) == 0) return 1;
+    return expr_mentions(e->a, name) || expr_mentions(e->b, name);
+}
+
+/* The parameter every comparison of cd bounds by a constant (NAME op CONST,
+ * not !=, the same unset NAME); -1 otherwise. */
+static slong cond_simple_param(rs_run_t *run, const rs_cond_t *cd)
+{
+    claim_dnf_t one;
+    slong n = 1;
+    rs_cond_t *c1 = (rs_cond_t *) cd;
+    one.nparts = 1;
+    one.n = &n;
+    one.conds = &c1;
+    return claim_single_param(run, &one);
+}
+
 static int region_good(claim_kind_t kind, const char *st)
 {
     return st != NULL && (strcmp(st, "stable") == 0 || (kind == CLAIM_BOUNDED && strcmp(st, "marginal") == 0));
@@ -1271,33 +1292,83 @@ static int region_proof(rs_run_t *run, slong tv, claim_kind_t kind, const json_t
  * 13): cross-checks the claim's verdict (proved iff every interval is stable,
  * resp. stable or marginal) and explains a claim not proved: the intervals
  * that are not, with their counterexamples, and the largest proved one. */
+/* The for-all region of tv on one part's interval, the part's conditions
+ * without tv restricting the quantified parameters (added to the assume
+ * lines while the region runs: its projection, proofs and counterexample
+ * search all read them there). *reg NULL: an empty interval. */
+static int claim_part_region(json_t **reg, rs_run_t *run, const rs_request_t *q, slong tv, const rs_cond_t *conds,
+                             slong n)
+{
+    rs_case_struct *cm = (rs_case_struct *) run->c;   /* restored below */
+    rs_cond_t *keep = cm->assume, *all;
+    slong nkeep = cm->nassume, nparams = run->c->nparams, k, ne = 0;
+    rs_bound_t *b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
+    int r;
+    *reg = NULL;
+    claim_bounds(b, run, conds, n);
+    all = malloc((size_t) (nkeep + n + 1) * sizeof(rs_cond_t));
+    if (nkeep > 0) memcpy(all, keep, (size_t) nkeep * sizeof(rs_cond_t));
+    for (k = 0; k < n; k++)
+        if (cond_simple_param(run, conds + k) != tv) all[nkeep + ne++] = conds[k];   /* shallow: not freed */
+    cm->assume = all;
+    cm->nassume = nkeep + ne;
+    r = rs_bound_empty(b + tv) ? RS_OK : rs_an_region_forall_on(reg, run, q, tv, b + tv);
+    cm->assume = keep;
+    cm->nassume = nkeep;
+    free(all);
+    rs_bounds_clear(b, nparams);
+    flint_free(b);
+    return r;
+}
+
 static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t kind, const claim_dnf_t *d,
                               json_t *o)
 {
-    slong tv = claim_single_param(run, d), nparams = run->c->nparams;
+    slong tv = -1, part, j;
     size_t i;
     const char *st = json_string_value(json_object_get(o, "status"));
-    json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex;
-    rs_bound_t *b;
-    int r, all_good = 1, some_bad = 0;
+    json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex, *forall = NULL;
+    int r = RS_OK, all_good = 1, some_bad = 0, nregions = 0;
     double best_len = -1;
     char buf[1200], one[400];
+    const char *why = NULL;
     size_t used;
-    if (tv < 0 || kind == CLAIM_UNSTABLE || st == NULL) return RS_OK;
-    b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
-    claim_bounds(b, run, d->conds[0], d->n[0]);
-    r = rs_bound_empty(b + tv) ? RS_OK : rs_an_region_forall_on(&reg, run, q, tv, b + tv);
-    rs_bounds_clear(b, nparams);
-    flint_free(b);
+    if (kind == CLAIM_UNSTABLE || st == NULL) return RS_OK;
+    /* the parameter: the first one a condition bounds by constants; every
+     * other condition must leave it alone (it then restricts the quantified
+     * parameters) */
+    for (part = 0; part < d->nparts && tv < 0; part++)
+        for (j = 0; j < d->n[part] && tv < 0; j++) tv = cond_simple_param(run, d->conds[part] + j);
+    if (tv < 0) why = "no condition bounds one parameter by constants (NAME op CONST)";
+    for (part = 0; part < d->nparts && why == NULL; part++)
+        for (j = 0; j < d->n[part] && why == NULL; j++)
+            if (cond_simple_param(run, d->conds[part] + j) != tv) {
+                const rs_cond_t *cd = d->conds[part] + j;
+                slong k;
+                for (k = 0; k < cd->n; k++)
+                    if (expr_mentions(cd->e[k], run->c->params[tv].name)) {
+                        why = "a condition ties the claim's parameter to other parameters (the for-all region "
+                              "quantifies the others over intervals)";
+                        break;
+                    }
+            }
+    if (why != NULL) {
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "not made", "reason", why));
+        return RS_OK;
+    }
+    failing = json_array();
+    for (part = 0; part < d->nparts && r == RS_OK; part++) {
+    r = claim_part_region(&reg, run, q, tv, d->conds[part], d->n[part]);
     if (r == RS_ERR_LIMIT) {        /* keep the claim's own verdict */
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "not made", "reason",
                                                          run->err->msg));
         rs_error_init(run->err);
+        json_decref(failing);
+        json_decref(best);
         return RS_OK;
     }
-    if (r != RS_OK || reg == NULL) return r;
+    if (r != RS_OK || reg == NULL) continue;
     ivs = json_object_get(reg, "intervals");
-    failing = json_array();
     json_array_foreach(ivs, i, iv) {
         const char *s = json_string_value(json_object_get(iv, "status"));
         if (region_good(kind, s)) {
@@ -1352,6 +1423,17 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
             json_array_append_new(failing, f);
         }
     }
+    if (forall == NULL) forall = json_deep_copy(json_object_get(reg, "for_all"));
+    json_decref(reg);
+    reg = NULL;
+    nregions++;
+    }
+    if (r != RS_OK || nregions == 0) {   /* an error, or every part's interval empty: no check */
+        json_decref(failing);
+        json_decref(best);
+        json_decref(forall);
+        return r;
+    }
     /* proved <=> inside the good part; undecided cells decide nothing */
     if (strcmp(st, "undecided") == 0 && all_good && json_array_size(ivs) > 0
         && region_proof(run, tv, kind, reg, o) == 1) {
@@ -1395,12 +1477,13 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
                      one);
         }
         json_object_set_new(ex, "summary", json_string(buf));
-        json_object_set_new(ex, "for_all", json_deep_copy(json_object_get(reg, "for_all")));
+        json_object_set_new(ex, "for_all", forall);
+        forall = NULL;
         json_object_set_new(o, "explanation", ex);
     }
     json_decref(failing);
     json_decref(best);
-    json_decref(reg);
+    json_decref(forall);
     return RS_OK;
 }
 

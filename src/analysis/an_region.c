@@ -1261,6 +1261,70 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
 
 #define FORALL_MAX_ALG_DEGREE 8
 
+/* The cell at tv = x unstable by the quantified values of the neighbouring
+ * cell's counterexample: one exact point verdict instead of a proof attempt
+ * and a search (the unstable side of a bound usually has one counterexample
+ * that works throughout).  *ev stays NULL unless that point is admissible
+ * (the assume lines) and unstable there. */
+static int forall_neighbour_counter(json_t **ev, region_t *rg, const json_t *nev, const fmpq_t x)
+{
+    rs_run_t *run = rg->run;
+    const rs_scheme_struct *s = rg->s;
+    const json_t *cx = json_object_get(nev, "counterexample"), *val;
+    const char *key;
+    slong nv = 0, i, ncps = 0;
+    slong *vars = flint_malloc((run->c->nparams + 1) * sizeof(slong));
+    fmpq *vals = _fmpq_vec_init(run->c->nparams + 1), *pt = _fmpq_vec_init(s->nvars), **pp;
+    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
+    int r = RS_OK, ok = json_is_object(cx) && json_object_get(cx, run->c->params[rg->tv].name) != NULL;
+    *ev = NULL;
+    pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
+    /* the set values (substituted in s already; the assume lines may name them) */
+    json_object_foreach((json_t *) rg->v->assigned, key, val) {
+        slong k = rs_case_param_index(run->c, key);
+        if (k >= 0 && k < s->nvars && json_is_string(val)) fmpq_set_str(pt + k, json_string_value(val), 10);
+    }
+    json_object_foreach((json_t *) cx, key, val) {
+        slong k = rs_case_param_index(run->c, key);
+        if (!ok) break;
+        if (k < 0 || k >= s->nvars || !json_is_string(val) || fmpq_set_str(vals + nv, json_string_value(val), 10) != 0) {
+            ok = 0;
+            break;
+        }
+        fmpq_canonicalise(vals + nv);
+        if (k == rg->tv) fmpq_set(vals + nv, x);
+        vars[nv] = k;
+        fmpq_set(pt + k, vals + nv);
+        nv++;
+    }
+    for (i = 0; ok && i < run->c->nassume && r == RS_OK; i++)
+        r = rs_condpoly_compile(cps + ncps++, &run->c->assume[i], s, run->c, run->err);
+    if (r != RS_OK) { rs_error_init(run->err); r = RS_OK; ok = 0; }
+    if (ok && rs_run_point_admissible(cps, ncps, pp, s)) {
+        rs_rootcount_t rc;
+        rs_status_t st;
+        r = rs_run_point_status(&st, rc, run, rg->v, vars, vals, nv);
+        if (r == RS_OK && st == RS_STATUS_UNSTABLE) {
+            json_t *at = json_object(), *c2 = json_object();
+            rs_json_add_count(at, rc);
+            json_object_set_new(at, "status", json_string(rs_status_name(st)));
+            json_object_set_new(at, "decided_by", json_string("exact"));
+            for (i = 0; i < nv; i++) json_object_set_new(c2, run->c->params[vars[i]].name, rs_json_fmpq(vals + i));
+            *ev = json_pack("{s:o,s:o,s:I,s:s}", "counterexample", c2, "at_counterexample", at,
+                            "points_checked", (json_int_t) 1, "found_by", "the neighbouring cell's counterexample");
+        }
+        rs_rootcount_clear(rc);
+    }
+    for (i = 0; i < ncps; i++) rs_condpoly_clear(cps + i, s);
+    free(cps);
+    flint_free(vars);
+    _fmpq_vec_clear(vals, run->c->nparams + 1);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    return r;
+}
+
 static int region_forall_decide(region_t *rg)
 {
     slong i;
@@ -1273,6 +1337,16 @@ static int region_forall_decide(region_t *rg)
         if (pc->is_point) fmpq_set(x, pc->lo->q);
         else rational_between(x, pc->lo, pc->hi);
         r = rs_budget_check(rg->run->err, "region ... for all (deciding its cells)");
+        if (r == RS_OK && i > 0 && pc[-1].decided && pc[-1].status == RS_STATUS_UNSTABLE && pc[-1].ev != NULL) {
+            r = forall_neighbour_counter(&pc->ev, rg, pc[-1].ev, x);
+            if (r == RS_OK && pc->ev != NULL) {
+                pc->decided = 1;
+                pc->status = RS_STATUS_UNSTABLE;
+                json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
+                fmpq_clear(x);
+                continue;
+            }
+        }
         if (r == RS_OK) r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x);
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);

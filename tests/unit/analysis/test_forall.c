@@ -358,6 +358,59 @@ static void test_claim_central_difference(void **state)
     json_decref(doc);
 }
 
+/* Claims of other forms are cross-checked too: `or` (each part's interval
+ * against the region), and conditions on the quantified parameters (they
+ * restrict the for-all).  Expected by hand: theta as above; the quadratic
+ * lambda^2 + a lambda + b is stable iff |b| < 1 and |a| < 1 + b (Jury), so for
+ * every b in (0, 1/2) iff |a| <= 1, and for a in (1, 5/4] some b in
+ * (0, a - 1) there is unstable. */
+static void test_claim_forms(void **state)
+{
+    int outcome;
+    const json_t *ex, *fl, *cx;
+    fmpq_t x, lo, hi;
+    json_t *doc = run_ok(THETA "claim stable when th > 1 or 1/2 < th < 3/4\nclaim stable when th > 1 or th < 1/4\n"
+                                 "claim stable when th > w\n", &outcome);
+    (void) state;
+    assert_string_equal(str(result(doc, 0), "status"), "proved");
+    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
+    assert_string_equal(str(result(doc, 1), "status"), "refuted");
+    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
+    ex = json_object_get(result(doc, 1), "explanation");
+    check_iv(json_object_get(ex, "proved_part"), "1", 0, "inf", 0, "or: proved part");
+    fl = json_object_get(ex, "failing");
+    assert_int_equal(json_array_size(fl), 1);
+    check_iv(json_array_get(fl, 0), "inf", 0, "1/4", 0, "or: failing part");   /* null lo: -inf */
+    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    /* th tied to w: the region cannot say; the claim keeps its verdict */
+    assert_string_equal(str(json_object_get(result(doc, 2), "cross_check"), "status"), "not made");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+
+    doc = run_ok("param a b\nchar lambda^2 + a*lambda + b\nclaim stable when -1 <= a <= 1, 0 < b < 1/2\n"
+                 "claim stable when 0 <= a <= 5/4, 0 < b < 1/2\n", &outcome);
+    assert_string_equal(str(result(doc, 0), "status"), "proved");
+    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
+    assert_string_equal(str(result(doc, 1), "status"), "refuted");
+    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
+    ex = json_object_get(result(doc, 1), "explanation");
+    /* without the restriction on b every a fails (b = 2): [0, 1] proves it was applied */
+    check_iv(json_object_get(ex, "proved_part"), "0", 1, "1", 1, "restricted b: proved part");
+    fl = json_object_get(ex, "failing");
+    assert_int_equal(json_array_size(fl), 1);
+    check_iv(json_array_get(fl, 0), "1", 0, "5/4", 1, "restricted b: failing part");
+    check_cx(json_array_get(fl, 0), "a", "1", "5/4");
+    /* the counterexample's b inside the claim's (0, 1/2) */
+    cx = json_object_get(json_array_get(fl, 0), "counterexample");
+    fmpq_init(x); fmpq_init(lo); fmpq_init(hi);
+    assert_int_equal(fmpq_set_str(x, str(cx, "b"), 10), 0);
+    fmpq_set_si(hi, 1, 2);
+    assert_true(fmpq_sgn(x) > 0 && fmpq_cmp(x, hi) < 0);
+    fmpq_clear(x); fmpq_clear(lo); fmpq_clear(hi);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 /* Park's printed "alpha <= 2": proved on [0, 1], fails on (1, 2] */
 static void test_claim_park(void **state)
 {
@@ -421,6 +474,7 @@ int main(void)
         cmocka_unit_test(test_claim_theta),
         cmocka_unit_test(test_claim_central_difference),
         cmocka_unit_test(test_claim_park),
+        cmocka_unit_test(test_claim_forms),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
