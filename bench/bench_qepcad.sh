@@ -17,7 +17,7 @@
 # Goal (issue 13): recstab at least 2x faster on Park and on HHT-alpha.
 set -u
 cd "$(dirname "$0")/.." || exit 2
-BIN=build/recstab
+BIN=${RECSTAB:-build/recstab}   # RECSTAB=path: another build, side by side
 RUNS=${BENCH_RUNS:-5}
 # QEPCAD's default garbage-collected space (+N1000000 cells); a larger +N costs
 # start-up time (100M cells: about 1.8 s) and none of these cases needs it
@@ -55,15 +55,27 @@ print("%.4f %.4f" % (statistics.median(cpu), statistics.median(wall)))
 PYEOF
 }
 
-printf '%-34s %10s %10s %10s %10s %8s %8s\n' case rs_cpu_s rs_wall_s qe_cpu_s qe_wall_s cpu_x wall_x
+# The fixed cost of each process, measured the same way: recstab --version
+# (dynamic loading of FLINT, Arb, NTL, libstdc++: no analysis) and QEPCAD B
+# on a trivial input (its start-up, Saclib's space).  Both programs' times on
+# these small cases are mostly this; "work" = total - start-up, its ratio
+# printed as work_x (a difference of medians: rough).
+printf '[ trivial ]\n(x)\n1\n[ x > 0 ].\nfinish\n' >"$T/trivial.qe"
+rs0=$(timeit recstab /dev/null "$T/recstab" --version)
+qe0=$(timeit qepcad "$T/trivial.qe" qepcad $QE_OPTS)
+echo "$rs0 $qe0" | awk '{ printf "start-up: recstab %.4f s CPU (%.4f wall), QEPCAD %.4f s CPU (%.4f wall)\n", $1, $2, $3, $4 }'
+printf '%-34s %10s %10s %10s %10s %8s %8s %8s\n' case rs_cpu_s rs_wall_s qe_cpu_s qe_wall_s cpu_x wall_x work_x
 run_case() { # label case P Q sets...
     label=$1; case=$2; p=$3; q=$4; shift 4
     "$T/recstab" --json "$@" --analyse "region $p, $q" "$case" >"$T/r2.json" 2>/dev/null
-    "$PY" -c "import json,sys; print(json.load(open(sys.argv[1]))['results'][0]['qepcad_input_for_all'])" \
+    # the JSON document: {"cases": [{"results": [...]}]} (one case)
+    "$PY" -c "import json,sys; d=json.load(open(sys.argv[1])); d=d['cases'][0] if 'cases' in d else d; print(d['results'][0]['qepcad_input_for_all'])" \
         "$T/r2.json" >"$T/in.qe" || { echo "$label: no QEPCAD input"; return; }
     rs=$(timeit recstab /dev/null "$T/recstab" "$@" --analyse "region $p for all [$q]" "$case")
     qe=$(timeit qepcad "$T/in.qe" qepcad $QE_OPTS)
-    echo "$rs $qe" | awk -v l="$label" '{ printf "%-34s %10.4f %10.4f %10.4f %10.4f %8.1f %8.1f\n", l, $1, $2, $3, $4, $3 / $1, $4 / $2 }'
+    echo "$rs $qe $rs0 $qe0" | awk -v l="$label" '{ w1 = $1 - $5; w2 = $3 - $7;
+        printf "%-34s %10.4f %10.4f %10.4f %10.4f %8.2f %8.2f %8s\n", l, $1, $2, $3, $4, $3 / $1, $4 / $2,
+               (w1 > 0 && w2 > 0) ? sprintf("%.1f", w2 / w1) : "n/a" }'
     ans_rs=$("$T/recstab" "$@" --analyse "region $p for all [$q]" "$case" 2>&1 | grep -E '^  (stable|marginal|unstable|singular|undecided) ' | tr -s ' ' | tr '\n' ';')
     ans_qe=$(qepcad $QE_OPTS <"$T/in.qe" 2>&1 | sed -n '/equivalent quantifier-free/{n;n;p}')
     echo "    recstab: $ans_rs"

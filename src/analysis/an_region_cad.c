@@ -9,9 +9,11 @@
  *      the bilinear q, the discriminant), factored; the assume lines' ends;
  *   2. projection onto N1: leading coefficients, discriminants, pairwise
  *      resultants in N2; their real roots cut the N1 axis into columns;
- *   3. in each column with a rational N1 sample, the roots in N2 cut it
- *      into cells; each cell's status is decided exactly at its sample
- *      (rational: the point verdict; algebraic N2: in Q(N2)[lambda]);
+ *   3. in each column the roots in N2 cut it into cells; each cell's
+ *      status is decided exactly at its sample (rational: the point
+ *      verdict; algebraic N2: in Q(N2)[lambda]; over an irrational N1 =
+ *      alpha: in Q(alpha) at rational N2, in Q(alpha, beta) = Q(gamma) by a
+ *      primitive element at a section N2 = beta);
  *   4. the formula: an OR of ANDs of sign conditions of the polynomials,
  *      built from the cells' sign vectors (Hong's solution formula
  *      construction, simplified greedily while no cell of another status
@@ -21,9 +23,8 @@
  *      have different statuses.
  *
  * Limit: two parameters; every other one must be set (`at` or `set`).
- * Columns over irrational N1 values (roots of the projection) are not
- * decided (a two-level algebraic tower): they are listed, and
- * "formula_complete" is false when one exists. */
+ * A system's repeated circle root over an irrational N1 is left undecided
+ * (counted in "undecided_lines"; "formula_complete" false). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
@@ -1330,8 +1331,8 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
         if (!complete)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
-                : "some cells (on lines over irrational critical values of the first parameter) are not decided: "
-                  "the formula is exact off those lines"));
+                : "some cells are not decided (a system's repeated circle root over an irrational critical value "
+                  "of the first parameter): the formula is exact off those cells"));
         cad_boundary(o, &c);
         cad_qepcad(o, &c);
         json_object_set_new(o, "cells", cad_cells_json(&c));
