@@ -23,8 +23,10 @@
  *      have different statuses.
  *
  * Limit: two parameters; every other one must be set (`at` or `set`).
- * A system's repeated circle root over an irrational N1 is left undecided
- * (counted in "undecided_lines"; "formula_complete" false). */
+ * Over an irrational N1 = alpha a column is left undecided (counted in
+ * "undecided_lines"; "formula_complete" false) when deg alpha > 8 or a
+ * section needs a tower Q(alpha, beta) of degree > 12, and a cell when a
+ * system has a repeated circle root there. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
@@ -39,6 +41,12 @@
 #include "util/polyfmt.h"
 
 #define CAD_CHECK_POINTS 64
+/* deg alpha * deg beta above this: a column over an irrational alpha with a
+ * section there is left undecided (the primitive element's resultant and the
+ * gcd over Q(gamma) grow with it: Park's (alpha, m) plane has degree-6 alphas) */
+#define CAD_MAX_TOWER_DEGREE 12
+/* deg alpha above this: the column is not decided at all */
+#define CAD_MAX_LINE_DEGREE 8
 
 enum { K_BOUNDARY = 0, K_DOMAIN = 1, K_PROJ = 2 };
 
@@ -412,6 +420,34 @@ static void cad_eval_field(fmpq_poly_t out, const cad_t *c, const fmpz_mpoly_t f
     fmpz_clear(cf);
 }
 
+/* 1 when f(alpha, beta) may vanish: its Arb enclosure still contains 0 at
+ * 256 bits (exactly zero or very small: decided in the tower then) */
+static int cad_may_vanish(const cad_t *c, const fmpz_mpoly_t f, rs_alg_t *al, rs_alg_t *be)
+{
+    slong prec, i;
+    int may = 1;
+    arb_t y, t, u;
+    fmpz_t cf;
+    arb_init(y); arb_init(t); arb_init(u);
+    fmpz_init(cf);
+    for (prec = 64; prec <= 256 && may; prec *= 2) {
+        rs_alg_refine(al, prec);
+        rs_alg_refine(be, prec);
+        arb_zero(y);
+        for (i = 0; i < fmpz_mpoly_length(f, c->s->zctx); i++) {
+            fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, c->s->zctx);
+            arb_pow_ui(t, al->x, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx), prec);
+            arb_pow_ui(u, be->x, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx), prec);
+            arb_mul(t, t, u, prec);
+            arb_addmul_fmpz(y, t, cf, prec);
+        }
+        may = arb_contains_zero(y);
+    }
+    arb_clear(y); arb_clear(t); arb_clear(u);
+    fmpz_clear(cf);
+    return may;
+}
+
 /* the signs at (alpha, b0), b0 rational, and the status there (exact in
  * Q(alpha)); returns the status's decidedness */
 static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
@@ -451,7 +487,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
     rs_alg_t *cand = NULL;
     slong ncand = 0, i, j, k, nsec = 0, *sec = NULL;
     signed char **sgs = NULL;
-    int *zero_line = flint_calloc(c->nf, sizeof(int)), r = RS_OK;
+    int *zero_line = flint_calloc(c->nf, sizeof(int)), r = RS_OK, too_big = 0;
     fmpz_mpoly_t ma, t;
     fmpz_poly_t u;
     fmpq_poly_t m, A, B, v;
@@ -488,6 +524,18 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
         r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
         if (r != RS_OK) break;
         sgs[i] = flint_calloc(c->nf, 1);
+        /* not a section of this line (no f_k(alpha, .) vanishes at beta,
+         * certified by Arb): no tower needed */
+        for (k = 0; k < c->nf && !is_sec; k++)
+            if (!zero_line[k] && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0)
+                is_sec = cad_may_vanish(c, c->f + k, al, cand + i);
+        if (!is_sec) { rs_alg_clear(cand + i); continue; }
+        is_sec = 0;
+        /* the tower's degree bounds the cost (resultants and gcds over Q(gamma)) */
+        if (fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) > CAD_MAX_TOWER_DEGREE) {
+            too_big = 1;
+            break;
+        }
         rs_alg_init(&g);
         if (!rs_alg_primitive(&g, A, B, al, cand + i)) {
             rs_alg_clear(&g);
@@ -524,8 +572,23 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
         }
         rs_alg_clear(&g);
     }
-    for (j = i; j < ncand; j++) rs_alg_clear(cand + j);   /* not reached: a budget stop */
-    if (r == RS_OK) {
+    for (j = i; j < ncand; j++) rs_alg_clear(cand + j);   /* not reached: a budget stop or too big */
+    if (r == RS_OK && too_big) {
+        /* the column is left undecided as a whole (one cell, N2 null) */
+        cell_t *e;
+        for (i = 0; i < nsec; i++) {
+            cell_t *x = c->cells + sec[i];
+            flint_free(x->sg);
+            json_decref(x->a);
+            json_decref(x->b);
+            rs_alg_clear(cand + i);
+        }
+        c->ncells -= nsec;
+        e = cad_new_cell(c, 1, col);
+        e->a = rs_alg_json(al, c->an);
+        e->b = json_null();
+        c->undecided_lines++;
+    } else if (r == RS_OK) {
         /* interleave: sector, section, ..., sector (the sections were made
          * in increasing order; move them after their sectors) */
         cell_t *secs = flint_malloc((nsec + 1) * sizeof(cell_t));
@@ -589,7 +652,14 @@ static int cad_lift(cad_t *c)
             int in = 1;
             if (b->has_lo) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->lo); in &= rs_alg_cmp(al, &e) > 0; rs_alg_clear(&e); }
             if (b->has_hi) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->hi); in &= rs_alg_cmp(al, &e) < 0; rs_alg_clear(&e); }
-            if (in) r = cad_column_alg(c, al, i);
+            if (in && fmpz_poly_degree(al->minpoly) <= CAD_MAX_LINE_DEGREE) {
+                r = cad_column_alg(c, al, i);
+            } else if (in) {
+                cell_t *e = cad_new_cell(c, 1, i);
+                e->a = rs_alg_json(al, c->an);
+                e->b = json_null();
+                c->undecided_lines++;
+            }
         }
         fmpq_clear(a0);
     }
@@ -1331,8 +1401,9 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
         if (!complete)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
-                : "some cells are not decided (a system's repeated circle root over an irrational critical value "
-                  "of the first parameter): the formula is exact off those cells"));
+                : "some cells over irrational critical values of the first parameter are not decided (an "
+                  "algebraic tower of degree above 12, a line of degree above 8, or a system's repeated circle "
+                  "root): the formula is exact off those cells"));
         cad_boundary(o, &c);
         cad_qepcad(o, &c);
         json_object_set_new(o, "cells", cad_cells_json(&c));
