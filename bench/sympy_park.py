@@ -168,6 +168,8 @@ def check_against_recstab(p, q, minors, syms):
         r = subprocess.run(cmd + [CASE], cwd=ROOT, capture_output=True, text=True)
         try:
             doc = json.loads(r.stdout)
+            if "cases" in doc:   # one document for every case on the command line
+                doc = doc["cases"][0]
             results = {x.get("analysis"): x for x in doc["results"]}
             coeffs = results["charpoly"]["coeffs"]
             break

@@ -28,6 +28,7 @@
 #include "recstab/scheme.h"
 #include "recstab/report.h"
 #include "recstab/derivation.h"
+#include "recstab/hurwitz.h"
 
 #ifndef RS_VERSION
 #define RS_VERSION "0.0.0"
@@ -58,6 +59,8 @@ static void usage(FILE *f)
           "  --emit equations               print the unknowns and equations the builders generated\n"
           "  --time-limit SECONDS           wall time for the whole run (default 600; 0 = none)\n"
           "  --memory-limit MB              memory for the computation (default half of the RAM; 0 = none)\n"
+          "  --row-share SECONDS            estimated seconds one row of the Hurwitz minors may take before\n"
+          "                                 hurwitz leaves the minors from it on not expanded (default 2)\n"
           "  --list-analyses                the analyses, their options and the models they apply to\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
@@ -359,6 +362,16 @@ static int parse_arg(cli_t *cli, int argc, char **argv, int *i)
                                *i + 1 < argc ? argv[*i + 1] : "nothing", 0);
         if (a[2] == 't') cli->opt.time_limit = (double) v;
         else cli->opt.memory_limit = v;
+        (*i)++;
+    } else if (strcmp(a, "--row-share") == 0) {
+        /* the per-row share of the not-expanded mode of `hurwitz` (issue 17) */
+        char *end = NULL;
+        double v = 0.0;
+        if (*i + 1 < argc) v = strtod(argv[*i + 1], &end);
+        if (*i + 1 >= argc || argv[*i + 1][0] == '\0' || *end != '\0' || !(v >= 0.0 && v <= 1e8))
+            return usage_error("%s expects seconds between 0 and 100000000, found '%s'", a,
+                               *i + 1 < argc ? argv[*i + 1] : "nothing", 0);
+        rs_hurwitz_set_row_seconds(v);
         (*i)++;
     } else if (strncmp(a, "--set=", 6) == 0) cli->sets[cli->nsets++] = a + 6;
     else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)

@@ -681,8 +681,8 @@ rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         rs_hurwitz_clear(h, ctx);
         return rs_error_set(err, RS_ERR_LIMIT,
                             "the Hurwitz minor D_%ld was not expanded within the per-row budget share "
-                            "(%g s); this analysis needs every minor as a polynomial (`hurwitz` reports "
-                            "the unexpanded minors instead)", (long) k, row_seconds);
+                            "(%g s; raise it with --row-share); this analysis needs every minor as a polynomial "
+                            "(`hurwitz` reports the unexpanded minors instead)", (long) k, row_seconds);
     }
     return r;
 }
