@@ -70,3 +70,17 @@ done
 if "$RS" --time-limit 0 --memory-limit 0 cases/recurrence-forward-euler.case >/dev/null 2>&1; then
     ok "--time-limit 0 --memory-limit 0 run"
 else fail "--time-limit 0 --memory-limit 0 run"; fi
+
+# --row-share SECONDS (issue 17): the per-row share of hurwitz's not-expanded
+# mode.  With 0 every row from D_2 on is over its share; by default the
+# 3-mass chain (bench/make_chain_case.sh) expands every minor (0.06 s).
+for bad in "--row-share" "--row-share -1" "--row-share x" "--row-share nan" "--row-share 1e9"; do
+    # shellcheck disable=SC2086
+    check "usage: $bad" 1 "^recstab: --row-share expects seconds between 0 and 100000000" -- $bad cases/park-staggered.case
+done
+sh "$(dirname "$0")/../../bench/make_chain_case.sh" 3 "$T/chain3.case"
+"$RS" --row-share 0 "$T/chain3.case" >"$T/rs0" 2>&1; rc0=$?
+"$RS" --row-share 0.5 "$T/chain3.case" >"$T/rs1" 2>&1; rc1=$?
+if [ "$rc0" = 0 ] && grep -q 'D_5 > 0 (not expanded)' "$T/rs0" && [ "$rc1" = 0 ] && ! grep -q 'not expanded' "$T/rs1"; then
+    ok "--row-share 0 leaves the chain's minors not expanded, 0.5 expands them"
+else fail "--row-share: exit $rc0/$rc1, $(grep -c 'not expanded' "$T/rs0")/$(grep -c 'not expanded' "$T/rs1") not-expanded lines"; fi
