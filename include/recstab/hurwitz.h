@@ -102,6 +102,14 @@ int rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
 int rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
                                const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
                                rs_error_t err);
+/* As rs_hurwitz_compute_partial, and the factors' sign tests also use the
+ * intervals bounds[0..nbounds-1] of the first variables (the parameters; the
+ * interval mapping of rs_positivity_sign_bounds, issue 17).  bounds may be
+ * NULL. */
+int rs_hurwitz_compute_partial_bounds(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                                      const rs_sign_t *sign, const rs_bound_t *bounds,
+                                      slong nbounds, const fmpz_mpoly_ctx_t ctx,
+                                      rs_error_t err);
 
 /* 1 if poly is provably > 0 for all variable values allowed by sign[]
  * (sufficient test: every monomial's coefficient positive, every variable in
@@ -141,6 +149,11 @@ void rs_hurwitz_or_clear(rs_hurwitz_or_t hb, const fmpz_mpoly_ctx_t ctx);
 int rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
                           slong degree, const rs_sign_t *sign,
                           const fmpz_mpoly_ctx_t ctx, rs_error_t err);
+/* The same with the parameters' intervals (rs_hurwitz_compute_partial_bounds). */
+int rs_hurwitz_or_compute_bounds(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
+                                 slong degree, const rs_sign_t *sign,
+                                 const rs_bound_t *bounds, slong nbounds,
+                                 const fmpz_mpoly_ctx_t ctx, rs_error_t err);
 
 /* The stated conditions (reduced > 0, kept even factors != 0, trivially
  * true ones skipped) at a rational point vals[v] (all variables; z's entry
@@ -148,6 +161,15 @@ int rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
  * -1 if a condition of a live branch vanishes there (a boundary point). */
 int rs_hurwitz_or_holds(const rs_hurwitz_or_t hb, fmpq *const *vals,
                         const fmpz_mpoly_ctx_t ctx);
+
+/* Hurwitz's criterion itself at a rational point (every D_1..D_n of the
+ * rational Hurwitz matrix > 0 after making a_n > 0, by one elimination),
+ * independent of the Lienard-Chipart selection, the factors and the symbolic
+ * minors: 1 stable, 0 not, -1 if a_n vanishes there.  The hurwitz analysis
+ * compares it with rs_hurwitz_or_holds at its sample points (exit 3 on
+ * disagreement). */
+int rs_hurwitz_or_full_at(const rs_hurwitz_or_t hb, fmpq *const *vals,
+                          const fmpz_mpoly_ctx_t ctx);
 
 /* poly at the rational point vals[v] (all variables), exactly. */
 void rs_hurwitz_eval(fmpq_t out, const fmpz_mpoly_t poly, fmpq *const *vals,

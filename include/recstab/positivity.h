@@ -36,6 +36,23 @@ int rs_positivity_coeff_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
 int rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                        const fmpz_mpoly_ctx_t ctx, slong *power);
 
+/* Interval mapping first (issue 17's cheap sufficient test for bounded
+ * parameters): each variable v < nbounds with bounds b[v] other than
+ * "v > 0" / "v >= 0" is replaced by a variable t >= 0 (t > 0 for an open
+ * end) mapping [0, inf) onto a superset of its admissible interval:
+ *     lo <(=) v <  hi:  v = (lo + hi t) / (1 + t)      (onto [lo, hi))
+ *     lo <(=) v (<= hi): v = lo + t                    (a closed upper end is
+ *                                                     not an image point)
+ *     v <(=) hi:        v = hi - t
+ * and G = B^d f(A / B) (v = A / B, B > 0, d = deg_v f) goes to
+ * rs_positivity_sign with t's sign.  G > 0 for every admissible t implies
+ * f > 0 for every admissible v, so the test stays sufficient.  Variables
+ * without bounds, or >= nbounds, keep sign[v].  b may be NULL: then this is
+ * rs_positivity_sign. */
+int rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                              const rs_bound_t *b, slong nbounds,
+                              const fmpz_mpoly_ctx_t ctx, slong *power);
+
 #ifdef __cplusplus
 }
 #endif

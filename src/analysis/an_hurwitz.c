@@ -4,6 +4,35 @@
 #include <stdlib.h>
 #include "analysis/registry.h"
 
+/* Lienard-Chipart (the stated conditions) and Hurwitz's full criterion (every
+ * D_k of the rational Hurwitz matrix at the point, rs_hurwitz_or_full_at)
+ * side by side at the sample points; the first disagreement is kept. */
+typedef struct {
+    const rs_hurwitz_or_struct *hb;
+    const rs_run_t *run;
+    slong points;
+    json_t *bad;
+    int lc_says;
+} full_check_t;
+
+static int holds_both(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    full_check_t *fc = (full_check_t *) data;   /* our own, writable */
+    int lc = rs_hurwitz_or_holds(fc->hb, pt, s->zctx), full;
+    slong k;
+    if (lc < 0) return lc;
+    full = rs_hurwitz_or_full_at(fc->hb, pt, s->zctx);
+    if (full < 0) return lc;
+    fc->points++;
+    if (full != lc && fc->bad == NULL) {
+        fc->bad = json_object();
+        fc->lc_says = lc;
+        for (k = 0; k < fc->run->c->nparams && k < s->nvars; k++)
+            json_object_set_new(fc->bad, fc->run->c->params[k].name, rs_json_fmpq(pt[k]));
+    }
+    return lc;
+}
+
 int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
@@ -109,7 +138,27 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
                                                   : verdict < 0 ? "never stable"
                                                   : hb->nbranch == 2 ? "stable iff one branch holds"
                                                   : "stable iff the conditions hold"));
-    r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
+    {
+        full_check_t fc = {hb, run, 0, NULL, 0};
+        json_t *chk;
+        r = rs_run_sample_check(run, v, holds_both, &fc, o);
+        chk = json_object_get(o, "sample_check");
+        if (r == RS_OK && chk != NULL) {
+            json_object_set_new(chk, "full_hurwitz_points", json_integer(fc.points));
+            if (fc.bad != NULL && json_is_true(json_object_get(chk, "agree"))) {
+                /* the two criteria are theorems about the same q: a bug */
+                json_object_set_new(chk, "agree", json_false());
+                json_object_set_new(chk, "point", fc.bad);
+                fc.bad = NULL;
+                json_object_set_new(chk, "conditions_say", json_string(fc.lc_says ? "stable" : "not stable"));
+                json_object_set_new(chk, "exact_verdict", json_string(
+                    fc.lc_says ? "not stable by Hurwitz's full criterion (D_1..D_n at the point)"
+                               : "stable by Hurwitz's full criterion (D_1..D_n at the point)"));
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
+            }
+        }
+        if (fc.bad != NULL) json_decref(fc.bad);
+    }
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
     rs_hurwitz_or_clear(hb, s->zctx);

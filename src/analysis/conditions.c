@@ -47,10 +47,20 @@ int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mp
 int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
 {
     const rs_scheme_struct *s = v->s;
+    const rs_case_struct *c = run->c;
     int *sign = rs_run_signs(run, s);
+    rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
+    slong i;
     int r;
+    /* the parameters' intervals for the factors' sign tests (interval
+     * mapping before Polya, issue 17); params are the first variables */
+    rs_bounds_init(b, c->nparams);
+    for (i = 0; i < c->nassume; i++) rs_bounds_add(b, &c->assume[i], c, run->err);
     rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
-    r = rs_hurwitz_or_compute(hb, qz, s->lambda_var, v->cp->degree, (const rs_sign_t *) sign, s->zctx, run->err);
+    r = rs_hurwitz_or_compute_bounds(hb, qz, s->lambda_var, v->cp->degree, (const rs_sign_t *) sign, b,
+                                     FLINT_MIN(c->nparams, s->nvars), s->zctx, run->err);
+    rs_bounds_clear(b, c->nparams);
+    flint_free(b);
     flint_free(sign);
     return r;
 }

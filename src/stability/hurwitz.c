@@ -69,6 +69,21 @@ rs_hurwitz_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     return rs_positivity_sign(poly, sign, ctx, NULL);
 }
 
+/* What the assumptions say of the variables: signs, and (may be NULL) the
+ * intervals of the first nb variables for the interval mapping of
+ * rs_positivity_sign_bounds. */
+typedef struct {
+    const rs_sign_t *sign;
+    const rs_bound_t *b;
+    slong nb;
+} _assume_t;
+
+static int
+_sign(const fmpz_mpoly_t poly, const _assume_t *as, const fmpz_mpoly_ctx_t ctx)
+{
+    return rs_positivity_sign_bounds(poly, as->sign, as->b, as->nb, ctx, NULL);
+}
+
 /* ------------------------------------------------------------------ */
 /* init / clear                                                        */
 
@@ -446,7 +461,7 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded,
  * non-zero, read off a factorisation: +1/-1 if every odd-exponent factor has
  * a provable sign, 0 otherwise (or if poly = 0). */
 static int
-_factored_sign(const fmpz_mpoly_factor_t f, const rs_sign_t *sign,
+_factored_sign(const fmpz_mpoly_factor_t f, const _assume_t *as,
                const fmpz_mpoly_ctx_t ctx)
 {
     slong i;
@@ -455,14 +470,14 @@ _factored_sign(const fmpz_mpoly_factor_t f, const rs_sign_t *sign,
     for (i = 0; i < f->num && s != 0; i++) {
         if (fmpz_is_even(f->exp + i))
             continue;
-        s *= rs_hurwitz_sign(f->poly + i, sign, ctx);
+        s *= _sign(f->poly + i, as, ctx);
     }
     return s;
 }
 
 static int
 _cond_set(rs_hurwitz_cond_struct *c, const fmpz_mpoly_t poly,
-          const char *origin, const rs_sign_t *sign,
+          const char *origin, const _assume_t *as,
           const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
     slong i, num, kept = 0, kept_odd = 0;
@@ -493,7 +508,7 @@ _cond_set(rs_hurwitz_cond_struct *c, const fmpz_mpoly_t poly,
     for (i = 0; i < num; i++) {
         const fmpz_mpoly_struct *f = c->factors->poly + i;
         int even = fmpz_is_even(c->factors->exp + i);
-        int fs = rs_hurwitz_sign(f, sign, ctx);
+        int fs = _sign(f, as, ctx);
 
         c->even[i] = even;
         if (fs != 0) {
@@ -520,7 +535,7 @@ _cond_set(rs_hurwitz_cond_struct *c, const fmpz_mpoly_t poly,
 
 static int
 _add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
-          const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+          const _assume_t *as, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
     rs_hurwitz_cond_struct *c = h->cond + h->ncond;
     char origin[32];
@@ -547,14 +562,14 @@ _add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
         strcpy(c->origin, origin);
         return RS_OK;
     }
-    return _cond_set(c, poly, origin, sign, ctx, err);
+    return _cond_set(c, poly, origin, as, ctx, err);
 }
 
 /* Coefficients a_0..a_n of q in z, negated when a_n is provably negative
  * (wherever non-zero). */
 static int
 _hurwitz_coeffs(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
-                const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
+                const _assume_t *as, const fmpz_mpoly_ctx_t ctx,
                 rs_error_t err)
 {
     slong i, n = h->n;
@@ -574,7 +589,7 @@ _hurwitz_coeffs(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         return rs_error_set(err, RS_ERR_LIMIT,
                             "hurwitz: could not factor the leading coefficient");
     }
-    s = _factored_sign(f, sign, ctx);
+    s = _factored_sign(f, as, ctx);
     fmpz_mpoly_factor_clear(f, ctx);
 
     if (s < 0) {
@@ -586,7 +601,7 @@ _hurwitz_coeffs(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
 }
 
 static int
-_hurwitz_conditions(rs_hurwitz_t h, const rs_sign_t *sign,
+_hurwitz_conditions(rs_hurwitz_t h, const _assume_t *as,
                     const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
     slong n = h->n, k, maxc = n + 2;
@@ -594,11 +609,11 @@ _hurwitz_conditions(rs_hurwitz_t h, const rs_sign_t *sign,
 
     h->cond = flint_malloc(maxc * sizeof(rs_hurwitz_cond_struct));
 
-    r = _add_cond(h, h->coeffs + n, 'a', n, sign, ctx, err);
+    r = _add_cond(h, h->coeffs + n, 'a', n, as, ctx, err);
     for (k = 0; k < n && r == RS_OK; k += 2)
-        r = _add_cond(h, h->coeffs + k, 'a', k, sign, ctx, err);
+        r = _add_cond(h, h->coeffs + k, 'a', k, as, ctx, err);
     for (k = n - 1; k >= 1 && r == RS_OK; k -= 2)
-        r = _add_cond(h, h->minors + (k - 1), 'D', k, sign, ctx, err);
+        r = _add_cond(h, h->minors + (k - 1), 'D', k, as, ctx, err);
     return r;
 }
 
@@ -644,8 +659,22 @@ rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
                            const rs_sign_t *sign, const fmpz_mpoly_ctx_t ctx,
                            rs_error_t err)
 {
+    return rs_hurwitz_compute_partial_bounds(h, q, zvar, sign, NULL, 0, ctx, err);
+}
+
+int
+rs_hurwitz_compute_partial_bounds(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
+                                  const rs_sign_t *sign, const rs_bound_t *bounds,
+                                  slong nbounds, const fmpz_mpoly_ctx_t ctx,
+                                  rs_error_t err)
+{
     slong i, n = 0;
     int r;
+    _assume_t as;
+
+    as.sign = sign;
+    as.b = bounds;
+    as.nb = bounds == NULL ? 0 : nbounds;
 
     rs_hurwitz_clear(h, ctx);
     r = _hurwitz_degree(&n, q, zvar, ctx, err);
@@ -653,7 +682,7 @@ rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
         return r;
 
     h->n = n;
-    r = _hurwitz_coeffs(h, q, zvar, sign, ctx, err);
+    r = _hurwitz_coeffs(h, q, zvar, &as, ctx, err);
     if (r == RS_OK) {
         h->minors = flint_malloc(n * sizeof(fmpz_mpoly_struct));
         for (i = 0; i < n; i++)
@@ -662,7 +691,7 @@ rs_hurwitz_compute_partial(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
                             err);
     }
     if (r == RS_OK)
-        r = _hurwitz_conditions(h, sign, ctx, err);
+        r = _hurwitz_conditions(h, &as, ctx, err);
     if (r != RS_OK)
         rs_hurwitz_clear(h, ctx);
     return r;
@@ -724,6 +753,15 @@ rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
                       slong degree, const rs_sign_t *sign,
                       const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
+    return rs_hurwitz_or_compute_bounds(hb, q, zvar, degree, sign, NULL, 0, ctx, err);
+}
+
+int
+rs_hurwitz_or_compute_bounds(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
+                             slong degree, const rs_sign_t *sign,
+                             const rs_bound_t *bounds, slong nbounds,
+                             const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
     slong i, n = 0, lo = WORD_MAX;
     int r;
 
@@ -746,7 +784,8 @@ rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
             return RS_OK;
         }
     }
-    r = rs_hurwitz_compute_partial(hb->branch + 0, q, zvar, sign, ctx, err);
+    r = rs_hurwitz_compute_partial_bounds(hb->branch + 0, q, zvar, sign, bounds, nbounds,
+                                          ctx, err);
     if (r != RS_OK)
         return r;
     hb->nbranch = 1;
@@ -754,7 +793,8 @@ rs_hurwitz_or_compute(rs_hurwitz_or_t hb, const fmpz_mpoly_t q, slong zvar,
         fmpz_mpoly_t mq;
         fmpz_mpoly_init(mq, ctx);
         fmpz_mpoly_neg(mq, q, ctx);
-        r = rs_hurwitz_compute_partial(hb->branch + 1, mq, zvar, sign, ctx, err);
+        r = rs_hurwitz_compute_partial_bounds(hb->branch + 1, mq, zvar, sign, bounds,
+                                              nbounds, ctx, err);
         fmpz_mpoly_clear(mq, ctx);
         if (r != RS_OK) {
             rs_hurwitz_or_clear(hb, ctx);
@@ -897,5 +937,67 @@ rs_hurwitz_or_holds(const rs_hurwitz_or_t hb, fmpq *const *vals,
         if (b > 0)
             res = 1;
     }
+    return res;
+}
+
+/* Hurwitz's own criterion at the point (Gantmacher XV sec. 6): with
+ * a_n > 0, stable iff D_1, ..., D_n > 0.  Gaussian elimination on the
+ * rational Hurwitz matrix without row exchanges: D_k = D_{k-1} pivot_k,
+ * so all D_k > 0 iff every pivot is > 0 (a zero pivot is D_k = 0: not
+ * stable).  Only the coefficients of branch 0 are used (branch 1 is its
+ * negation): none of the stated conditions, factors or minors. */
+int
+rs_hurwitz_or_full_at(const rs_hurwitz_or_t hb, fmpq *const *vals,
+                      const fmpz_mpoly_ctx_t ctx)
+{
+    const rs_hurwitz_struct *h;
+    fmpq_mat_t H;
+    fmpq *a;
+    fmpq_t f, t;
+    slong i, j, k, n;
+    int res = 1;
+
+    if (hb->nbranch < 1)
+        return 0;   /* lambda = -1 or 1 a root for every value */
+    h = hb->branch + 0;
+    n = h->n;
+    a = _fmpq_vec_init(n + 1);
+    for (i = 0; i <= n; i++)
+        rs_hurwitz_eval(a + i, h->coeffs + i, vals, ctx);
+    if (fmpq_is_zero(a + n)) {
+        _fmpq_vec_clear(a, n + 1);
+        return -1;
+    }
+    if (fmpq_sgn(a + n) < 0)
+        for (i = 0; i <= n; i++)
+            fmpq_neg(a + i, a + i);
+    fmpq_mat_init(H, n, n);
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) {
+            slong idx = n - (2 * (j + 1) - (i + 1));
+            if (idx >= 0 && idx <= n)
+                fmpq_set(fmpq_mat_entry(H, i, j), a + idx);
+        }
+    fmpq_init(f);
+    fmpq_init(t);
+    for (k = 0; k < n && res; k++) {
+        if (fmpq_sgn(fmpq_mat_entry(H, k, k)) <= 0) {
+            res = 0;
+            break;
+        }
+        for (i = k + 1; i < n; i++) {
+            if (fmpq_is_zero(fmpq_mat_entry(H, i, k)))
+                continue;
+            fmpq_div(f, fmpq_mat_entry(H, i, k), fmpq_mat_entry(H, k, k));
+            for (j = k; j < n; j++) {
+                fmpq_mul(t, f, fmpq_mat_entry(H, k, j));
+                fmpq_sub(fmpq_mat_entry(H, i, j), fmpq_mat_entry(H, i, j), t);
+            }
+        }
+    }
+    fmpq_clear(f);
+    fmpq_clear(t);
+    fmpq_mat_clear(H);
+    _fmpq_vec_clear(a, n + 1);
     return res;
 }

@@ -10,6 +10,7 @@
  * positive monomial is > 0).  Variables of unknown sign that occur only in
  * even powers become non-negative after exponent reduction (x^2 -> X). */
 #include <stdlib.h>
+#include <flint/fmpq.h>
 #include "recstab/positivity.h"
 
 /* Classify term i with its coefficient sign replaced by +1: 2 if the
@@ -169,6 +170,121 @@ rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     fmpz_mpoly_clear(s, ctx);
     fmpz_mpoly_clear(x, ctx);
     flint_free(g);
+    flint_free(sg);
+    return res;
+}
+
+/* v = A / B for the bound b (see positivity.h) with A, B in Z[v] (v now
+ * standing for t), and t's sign into *ts; 0 if v keeps its own sign (no
+ * bound, or only the bound v > 0 / v >= 0 that sign[] already says). */
+static int
+_interval_map(fmpz_mpoly_t A, fmpz_mpoly_t B, rs_sign_t *ts, const rs_bound_t *b,
+              slong v, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t t;
+    int lo = b->has_lo, hi = b->has_hi;
+
+    if (!lo && !hi)
+        return 0;
+    if (lo && fmpq_is_zero(b->lo) && (!hi || b->hi_closed))
+        return 0;   /* v = 0 + t: the sign test as it is */
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_gen(t, v, ctx);
+    if (lo && hi && !b->hi_closed && fmpq_cmp(b->lo, b->hi) < 0) {
+        /* (lo + hi t) / (1 + t) = (ln hd + hn ld t) / (ld hd (1 + t)) */
+        fmpz_t c;
+        fmpz_init(c);
+        fmpz_mul(c, fmpq_numref(b->hi), fmpq_denref(b->lo));
+        fmpz_mpoly_scalar_mul_fmpz(A, t, c, ctx);
+        fmpz_mul(c, fmpq_numref(b->lo), fmpq_denref(b->hi));
+        fmpz_mpoly_add_fmpz(A, A, c, ctx);
+        fmpz_mul(c, fmpq_denref(b->lo), fmpq_denref(b->hi));
+        fmpz_mpoly_add_ui(B, t, 1, ctx);
+        fmpz_mpoly_scalar_mul_fmpz(B, B, c, ctx);
+        fmpz_clear(c);
+        *ts = b->lo_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;
+    } else if (lo) {
+        /* lo + t = (ln + ld t) / ld */
+        fmpz_mpoly_scalar_mul_fmpz(A, t, fmpq_denref(b->lo), ctx);
+        fmpz_mpoly_add_fmpz(A, A, fmpq_numref(b->lo), ctx);
+        fmpz_mpoly_set_fmpz(B, fmpq_denref(b->lo), ctx);
+        *ts = b->lo_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;
+    } else {
+        /* hi - t = (hn - hd t) / hd */
+        fmpz_mpoly_scalar_mul_fmpz(A, t, fmpq_denref(b->hi), ctx);
+        fmpz_mpoly_neg(A, A, ctx);
+        fmpz_mpoly_add_fmpz(A, A, fmpq_numref(b->hi), ctx);
+        fmpz_mpoly_set_fmpz(B, fmpq_denref(b->hi), ctx);
+        *ts = b->hi_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;
+    }
+    fmpz_mpoly_clear(t, ctx);
+    return 1;
+}
+
+/* g = B^d f(A / B) in the variable v, d = deg_v f (Horner:
+ * H = f_d, H = H A + f_e B^(d-e) for e = d-1..0); 0 if it grew past
+ * RS_POLYA_MAX_TERMS. */
+static int
+_substitute(fmpz_mpoly_t g, const fmpz_mpoly_t f, slong v, const fmpz_mpoly_t A,
+            const fmpz_mpoly_t B, const fmpz_mpoly_ctx_t ctx)
+{
+    slong d = fmpz_mpoly_degree_si(f, v, ctx), e;
+    fmpz_mpoly_t h, fe, Bp;
+    int ok = 1;
+
+    fmpz_mpoly_init(h, ctx);
+    fmpz_mpoly_init(fe, ctx);
+    fmpz_mpoly_init(Bp, ctx);
+    fmpz_mpoly_get_coeff_vars_ui(h, f, &v, (ulong *) &d, 1, ctx);
+    fmpz_mpoly_one(Bp, ctx);
+    for (e = d - 1; e >= 0 && ok; e--) {
+        ulong ue = (ulong) e;
+        fmpz_mpoly_mul(h, h, A, ctx);
+        fmpz_mpoly_mul(Bp, Bp, B, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(fe, f, &v, &ue, 1, ctx);
+        fmpz_mpoly_mul(fe, fe, Bp, ctx);
+        fmpz_mpoly_add(h, h, fe, ctx);
+        ok = fmpz_mpoly_length(h, ctx) <= RS_POLYA_MAX_TERMS;
+    }
+    fmpz_mpoly_swap(g, h, ctx);
+    fmpz_mpoly_clear(h, ctx);
+    fmpz_mpoly_clear(fe, ctx);
+    fmpz_mpoly_clear(Bp, ctx);
+    return ok;
+}
+
+int
+rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                          const rs_bound_t *b, slong nbounds,
+                          const fmpz_mpoly_ctx_t ctx, slong *power)
+{
+    slong v, nvars = fmpz_mpoly_ctx_nvars(ctx);
+    rs_sign_t *sg;
+    fmpz_mpoly_t g, A, B;
+    int res, mapped = 0, ok = 1;
+
+    res = rs_positivity_sign(poly, sign, ctx, power);
+    if (res != 0 || b == NULL || !fmpz_mpoly_degrees_fit_si(poly, ctx))
+        return res;
+    sg = flint_malloc(nvars * sizeof(rs_sign_t));
+    fmpz_mpoly_init(g, ctx);
+    fmpz_mpoly_init(A, ctx);
+    fmpz_mpoly_init(B, ctx);
+    fmpz_mpoly_set(g, poly, ctx);
+    for (v = 0; v < nvars; v++)
+        sg[v] = sign == NULL ? RS_SIGN_UNKNOWN : sign[v];
+    for (v = 0; v < nvars && v < nbounds && ok; v++) {
+        if (fmpz_mpoly_degree_si(g, v, ctx) <= 0
+            || !_interval_map(A, B, sg + v, b + v, v, ctx))
+            continue;
+        ok = _substitute(g, g, v, A, B, ctx);
+        mapped = 1;
+    }
+    if (ok && mapped)
+        res = rs_positivity_sign(g, sg, ctx, power);
+    fmpz_mpoly_clear(g, ctx);
+    fmpz_mpoly_clear(A, ctx);
+    fmpz_mpoly_clear(B, ctx);
     flint_free(sg);
     return res;
 }

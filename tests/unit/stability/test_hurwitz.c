@@ -1294,6 +1294,10 @@ test_chain(void **state)
             if (want < 0 || got < 0)
                 continue;
             assert_int_equal(got, want);
+            /* Hurwitz's full criterion at the point (every D_k of the
+             * rational matrix, no stated condition used) against the same
+             * modal verdict */
+            assert_int_equal(rs_hurwitz_or_full_at(hb, vals, t.ctx), want);
             agree++;
             stable += want;
         }

@@ -150,6 +150,88 @@ test_not_proved(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* the interval mapping (rs_positivity_sign_bounds): f > 0 on the box
+ * given by b[] for x, y; the expected signs by hand substitution, stated per
+ * case.  Variables: x, y, c, k as above; only x and y get bounds. */
+static void
+set_bound(rs_bound_t *b, const char *lo, int lo_closed, const char *hi, int hi_closed)
+{
+    b->has_lo = lo != NULL;
+    b->has_hi = hi != NULL;
+    b->lo_closed = lo_closed;
+    b->hi_closed = hi_closed;
+    if (lo != NULL) assert_int_equal(fmpq_set_str(b->lo, lo, 10), 0);
+    if (hi != NULL) assert_int_equal(fmpq_set_str(b->hi, hi, 10), 0);
+}
+
+static int
+sign_box(const char *text, rs_bound_t *b)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    rs_sign_t sg[4] = {RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN};
+    slong v;
+    int got;
+    /* the signs rs_bounds_signs would give */
+    for (v = 0; v < 2; v++)
+        if (b[v].has_lo && fmpq_sgn(b[v].lo) >= 0)
+            sg[v] = (fmpq_sgn(b[v].lo) > 0 || !b[v].lo_closed) ? RS_SIGN_POSITIVE : RS_SIGN_NONNEGATIVE;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(p, text, vars, ctx), 0);
+    got = rs_positivity_sign_bounds(p, sg, b, 2, ctx, NULL);
+    print_message("%s on the box: sign %d\n", text, got);
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return got;
+}
+
+static void
+test_interval_mapping(void **state)
+{
+    rs_bound_t b[2];
+    (void) state;
+    rs_bounds_init(b, 2);
+    /* 0 < x < 1, x = t/(1+t): (1+t)^2 (1 - x^2) = 1 + 2t > 0; 1 - x^2 is
+     * -3 at x = 2, so the sign test alone cannot (and must not) prove it */
+    set_bound(b, "0", 0, "1", 0);
+    assert_int_equal(sign_box("1 - x^2", b), 1);
+    {
+        const rs_sign_t pos[4] = {RS_SIGN_POSITIVE, RS_SIGN_POSITIVE,
+                                  RS_SIGN_POSITIVE, RS_SIGN_POSITIVE};
+        check("1 - x^2", pos, 0, -1);
+    }
+    /* 0 < x <= 1: 1 - x^2 vanishes at x = 1: not proved (a closed upper
+     * end is not in the image of t >= 0) */
+    set_bound(b, "0", 0, "1", 1);
+    assert_int_equal(sign_box("1 - x^2", b), 0);
+    /* x > 1: x = 1 + t, x - 1 = t > 0; x >= 1: t >= 0 vanishes */
+    set_bound(b, "1", 0, NULL, 0);
+    assert_int_equal(sign_box("x - 1", b), 1);
+    set_bound(b, "1", 1, NULL, 0);
+    assert_int_equal(sign_box("x - 1", b), 0);
+    /* x < 3 (no lower end): x = 3 - t, 3 - x = t > 0; x <= 3: vanishes */
+    set_bound(b, NULL, 0, "3", 0);
+    assert_int_equal(sign_box("3 - x", b), 1);
+    assert_int_equal(sign_box("-3 + x", b), -1);
+    set_bound(b, NULL, 0, "3", 1);
+    assert_int_equal(sign_box("3 - x", b), 0);
+    /* 1/2 < x < 3/2, x = (1 + 3t)/(2(1 + t)): 4x - 1 = (1 + 5t)/(1 + t),
+     * 7 - 4x = (5 + t)/(1 + t): the product is > 0 (zeros 1/4, 7/4
+     * outside); with 5 - 4x = (3 - t)/(1 + t) it vanishes at x = 5/4 */
+    set_bound(b, "1/2", 0, "3/2", 0);
+    assert_int_equal(sign_box("(4*x - 1)*(7 - 4*x)", b), 1);
+    assert_int_equal(sign_box("(4*x - 1)*(5 - 4*x)", b), 0);
+    /* two variables: 0 < x < 1, y > 1 (y = 1 + u):
+     * (1 + t)(y - x) = (1 + u)(1 + t) - t = 1 + u + u t > 0 */
+    set_bound(b, "0", 0, "1", 0);
+    set_bound(b + 1, "1", 0, NULL, 0);
+    assert_int_equal(sign_box("y - x", b), 1);
+    /* y - 2 x is 0 at x = 3/4, y = 3/2 inside the box: not proved */
+    assert_int_equal(sign_box("y - 2*x", b), 0);
+    rs_bounds_clear(b, 2);
+}
+
 int
 main(void)
 {
@@ -157,6 +239,7 @@ main(void)
         cmocka_unit_test(test_coefficients),
         cmocka_unit_test(test_polya),
         cmocka_unit_test(test_not_proved),
+        cmocka_unit_test(test_interval_mapping),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();

@@ -1,0 +1,42 @@
+#!/bin/sh
+# suite_chain.sh -- issue 17 at the command level: the interval mapping of
+# the positivity prover decides `hurwitz` conditions on bounded parameters
+# (expected verdicts by hand in cases/euler-interval.case: stable iff
+# 0 < h < 2), and the Lienard-Chipart conditions are cross-checked against
+# Hurwitz's full criterion at the sample points ("full_hurwitz_points").
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$(cd "$BUILD" 2>/dev/null && pwd)/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+cd "$(dirname "$0")/../.." || exit 2
+
+"$RS" cases/euler-interval.case >"$T/out" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '^  verdict *stable under the assumptions$' "$T/out"; then
+    ok "0 < h < 1: stable under the assumptions (2 - h proved > 0 by h = t/(1+t))"
+else fail "0 < h < 1: exit $rc, $(grep verdict "$T/out")"; fi
+
+# 1/2 < h < 5/2 contains h = 2 (the root -1): 2 - h stays a condition
+sed 's/^assume .*/assume h > 1\/2, h < 5\/2/' cases/euler-interval.case >"$T/wide.case"
+"$RS" "$T/wide.case" >"$T/out" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '^  conditions *-h + 2 > 0$' "$T/out" \
+   && grep -q '^  verdict *stable iff the conditions hold$' "$T/out"; then
+    ok "1/2 < h < 5/2: -h + 2 > 0 stays a condition"
+else fail "1/2 < h < 5/2: exit $rc, $(grep -E 'conditions|verdict' "$T/out" | tr '\n' ' ')"; fi
+
+# 0 < h <= 2: h = 2 is admissible and unstable (root -1): not proved
+sed 's/^assume .*/assume h > 0, h <= 2/' cases/euler-interval.case >"$T/closed.case"
+"$RS" "$T/closed.case" >"$T/out" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '^  conditions *-h + 2 > 0$' "$T/out"; then
+    ok "0 < h <= 2: the closed end is not proved away"
+else fail "0 < h <= 2: exit $rc, $(grep -E 'conditions|verdict' "$T/out" | tr '\n' ' ')"; fi
+
+# the full-criterion cross-check ran at every sample point of a 3-mass chain
+sh bench/make_chain_case.sh 3 "$T/chain3.case"
+"$RS" --json "$T/chain3.case" >"$T/out.json" 2>&1; rc=$?
+n=$(sed -n 's/.*"full_hurwitz_points": *\([0-9]*\).*/\1/p' "$T/out.json" | head -1)
+if [ "$rc" = 0 ] && [ "${n:-0}" -ge 10 ]; then
+    ok "3-mass chain: Lienard-Chipart and full Hurwitz agree at $n points"
+else fail "3-mass chain: exit $rc, full_hurwitz_points '${n:-none}'"; fi
