@@ -11,6 +11,7 @@
  * even powers become non-negative after exponent reduction (x^2 -> X). */
 #include <stdlib.h>
 #include <flint/fmpq.h>
+#include <flint/fmpz_vec.h>
 #include "recstab/positivity.h"
 
 /* Classify term i with its coefficient sign replaced by +1: 2 if the
@@ -81,6 +82,38 @@ _reduce_exponents(fmpz_mpoly_t r, const fmpz_mpoly_t poly, const ulong *g,
     flint_free(e);
 }
 
+/* 1 if f has the sign target at the points with one variable 7 and the
+ * others 1, and one variable 1 and the others 7; 0 otherwise. */
+static int
+_positive_at_probes(const fmpz_mpoly_t f, int target, const fmpz_mpoly_ctx_t ctx)
+{
+    slong v, w, nvars = fmpz_mpoly_ctx_nvars(ctx);
+    fmpz *pt = _fmpz_vec_init(nvars);
+    fmpz_t ev;
+    int ok = 1, hi;
+
+    fmpz_init(ev);
+    for (v = 0; v < nvars && ok; v++)
+        for (hi = 0; hi < 2 && ok; hi++) {
+            for (w = 0; w < nvars; w++)
+                fmpz_set_ui(pt + w, ((w == v) == hi) ? 7 : 1);
+            {
+                fmpz *vals[64];
+                fmpz **vp = nvars <= 64 ? vals : flint_malloc(nvars * sizeof(fmpz *));
+                for (w = 0; w < nvars; w++)
+                    vp[w] = pt + w;
+                if (fmpz_mpoly_evaluate_all_fmpz(ev, f, vp, ctx)
+                    && fmpz_sgn(ev) != target)
+                    ok = 0;
+                if (vp != vals)
+                    flint_free(vp);
+            }
+        }
+    fmpz_clear(ev);
+    _fmpz_vec_clear(pt, nvars);
+    return ok;
+}
+
 int
 rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                    const fmpz_mpoly_ctx_t ctx, slong *power)
@@ -137,6 +170,18 @@ rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     fmpz_mpoly_init(s, ctx);
     fmpz_mpoly_init(x, ctx);
     _reduce_exponents(f, poly, g, ctx);
+    /* cheap refutation before the expensive multiplier: a point with every
+     * variable > 0 is admissible (X = x^2 > 0 for the free-sign ones), and
+     * f of the wrong sign or zero there means no certificate exists; the
+     * indefinite factors of the Park case ran Polya to its term limit */
+    if (!_positive_at_probes(f, target, ctx)) {
+        fmpz_mpoly_clear(f, ctx);
+        fmpz_mpoly_clear(s, ctx);
+        fmpz_mpoly_clear(x, ctx);
+        flint_free(g);
+        flint_free(sg);
+        return 0;
+    }
     for (i = 0; i < fmpz_mpoly_length(f, ctx); i++) {
         slong d = 0;
         for (v = 0; v < nvars; v++)
