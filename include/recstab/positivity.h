@@ -1,7 +1,9 @@
 /* positivity.h -- sufficient tests that a polynomial in the parameters has
  * one strict sign wherever the sign assumptions (`assume` lines) allow.
  * Cheap tests first: every coefficient of one sign (monomials non-negative
- * under the assumptions); then Polya's certificate: (s)^m f with all
+ * under the assumptions); then a refutation at 2 n integer points with every
+ * variable > 0 (a wrong sign there: no certificate can exist, 0 at once);
+ * then Polya's certificate: (s)^m f with all
  * coefficients of one sign, s = x_1 + ... + x_k for a homogeneous f and
  * 1 + x_1 + ... + x_k otherwise, after each variable's exponents are divided
  * by their gcd (c^2 -> C makes the chain minors homogeneous, issue 17).
