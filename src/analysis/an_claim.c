@@ -1247,12 +1247,15 @@ static json_t *angle_note(rs_run_t *run, const json_t *cx)
  * verdict for a rational point cell); the cells are uniform because no
  * critical value of the projection lies inside one.  1 when o was made
  * "proved" with the cells' certificates as its own. */
-static int region_proof(rs_run_t *run, slong tv, claim_kind_t kind, const json_t *reg, json_t *o)
+static int region_proof(rs_run_t *run, slong tv, claim_kind_t kind, const json_t *regs, json_t *o)
 {
-    const json_t *ivs = json_object_get(reg, "intervals"), *iv, *e;
+    const json_t *ivs, *iv, *e, *reg;
     json_t *cert = json_array();
-    size_t i, k, j;
+    size_t i, k, j, p, nivs = 0;
     char buf[600], one[400];
+    json_array_foreach(regs, p, reg) {      /* one region per part of the claim's set */
+    ivs = json_object_get(reg, "intervals");
+    nivs += json_array_size(ivs);
     snprintf(buf, sizeof buf, "by the for-all region of %s on the claim's set (%s projection, %lld critical "
              "values in the set; no cell contains one, so each is uniform and decided at one sample):", run->c->params[tv].name,
              json_string_value(json_object_get(reg, "projection")) ? json_string_value(json_object_get(reg, "projection")) : "the",
@@ -1277,6 +1280,8 @@ static int region_proof(rs_run_t *run, slong tv, claim_kind_t kind, const json_t
             json_array_foreach(c, j, e) json_array_append(cert, (json_t *) e);
         }
     }
+    }
+    if (nivs == 0) { json_decref(cert); return 0; }   /* no cell: nothing proved */
     json_object_set_new(o, "status", json_string("proved"));
     json_object_set_new(o, "proved_by", json_string("region for all"));
     json_object_set_new(o, "certificate", cert);
@@ -1327,7 +1332,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
     slong tv = -1, part, j;
     size_t i;
     const char *st = json_string_value(json_object_get(o, "status"));
-    json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex, *forall = NULL;
+    json_t *reg = NULL, *ivs, *iv, *failing, *best = NULL, *ex, *forall = NULL, *regs = NULL;
     int r = RS_OK, all_good = 1, some_bad = 0, nregions = 0;
     double best_len = -1;
     char buf[1200], one[400];
@@ -1357,6 +1362,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         return RS_OK;
     }
     failing = json_array();
+    regs = json_array();
     for (part = 0; part < d->nparts && r == RS_OK; part++) {
     r = claim_part_region(&reg, run, q, tv, d->conds[part], d->n[part]);
     if (r == RS_ERR_LIMIT) {        /* keep the claim's own verdict */
@@ -1365,6 +1371,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         rs_error_init(run->err);
         json_decref(failing);
         json_decref(best);
+        json_decref(regs);
         return RS_OK;
     }
     if (r != RS_OK || reg == NULL) continue;
@@ -1424,7 +1431,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         }
     }
     if (forall == NULL) forall = json_deep_copy(json_object_get(reg, "for_all"));
-    json_decref(reg);
+    json_array_append_new(regs, reg);     /* kept for region_proof */
     reg = NULL;
     nregions++;
     }
@@ -1432,11 +1439,11 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         json_decref(failing);
         json_decref(best);
         json_decref(forall);
+        json_decref(regs);
         return r;
     }
     /* proved <=> inside the good part; undecided cells decide nothing */
-    if (strcmp(st, "undecided") == 0 && all_good && json_array_size(ivs) > 0
-        && region_proof(run, tv, kind, reg, o) == 1) {
+    if (strcmp(st, "undecided") == 0 && all_good && region_proof(run, tv, kind, regs, o) == 1) {
         st = "proved";
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "agrees", "note",
             "proved by the for-all region (one certified sample per cell, no critical value inside a cell); "
@@ -1484,6 +1491,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
     json_decref(failing);
     json_decref(best);
     json_decref(forall);
+    json_decref(regs);
     return RS_OK;
 }
 
