@@ -166,6 +166,21 @@ int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
  * src/numeric/aberth.c; the certified routes only use z as seeds. */
 int rs_radius_aberth_d(double *z, const double *a, slong d, slong maxiter);
 
+/* Certified isolating balls E of the d roots of f (squarefree, integer,
+ * deg >= 2) from approximations z0 (2d doubles) and a (f in double, as for
+ * rs_radius_aberth_d): Aberth-Ehrlich steps on Arb midpoints at a
+ * precision per root (carried to the bits wanted plus that root's measured
+ * evaluation loss, so that only ill-conditioned roots -- clusters -- pay
+ * high precision), then one inclusion disc per root (d |p/p'| at the
+ * midpoint), all pairwise disjoint.  Every root to prec bits; with
+ * 0 < coarse < prec, all to coarse bits first and then only those whose
+ * ball may hold the largest modulus to prec (*nouter = their number, else
+ * -1).  *wp = the highest precision used.  Returns 1, or 0 (E undefined)
+ * when the iteration does not settle or the discs overlap: the caller
+ * falls back.  src/numeric/aberth.c. */
+int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_poly_t f,
+                             const double *a, const double *z0, slong prec, slong coarse);
+
 /* arb_fmpz_poly_complex_roots (f squarefree, same root order) solved on
  * f(2^s mu) when the roots' magnitudes are far from 1 (2^s their geometric
  * mean, |s| >= 32), which keeps extreme coefficients from taking hours. */

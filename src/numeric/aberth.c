@@ -110,3 +110,390 @@ int rs_radius_aberth_d(double *zr, const double *a, slong d, slong maxiter)
     flint_free(done);
     return ok ? (int) it : -1;
 }
+
+/* ------------------------------------------------------------------ */
+/* Aberth-Ehrlich in Arb midpoints at a precision per root, then one
+ * certification by inclusion discs (MPSolve's plan, Bini-Robol 2014).
+ *
+ * Each root i carries its own working precision w_i.  The bits a step can
+ * gain are limited by the evaluation of p at z_i, whose rounding error is
+ * about 2^-w S_i (S_i = sum |a_k| |z_i|^k) against |p'(z_i)|: the loss
+ * L_i = log2(S_i / (|z_i| |p'(z_i)|)) is measured at every step from the
+ * ball p'(z_i), and a root is carried only to goal_i + L_i (+ guard) bits.
+ * Well-separated roots stop after a step or two at about goal_i + 20 bits;
+ * only the roots of a cluster (large L_i) pay high precision, and only
+ * they: the precision is per root, not per polynomial.  The Aberth sum
+ * S = sum_j 1/(z_i - z_j) is formed in double from double copies of the
+ * other approximations (it only steers the step, N / (1 - N S); near
+ * convergence N S -> 0), except for the terms of approximations closer
+ * than 2^-40 |z_i|, which double cannot separate: those are taken in Arb.
+ *
+ * Certification: each midpoint m_i gets the disc of radius d |p(m_i) /
+ * p'(m_i)| at precision w_i (_acb_poly_root_inclusion: holds at least one
+ * root); d pairwise disjoint discs hold exactly one root each. */
+
+static double _rs_ab_log2sum(const double *a, slong d, double complex x)
+{
+    double ax = cabs(x), s = 0, w;
+    slong i;
+    if (ax <= 1.0) {
+        for (i = d; i >= 0; i--)
+            s = s * ax + fabs(a[i]);
+        return log2(s);
+    }
+    w = 1.0 / ax;
+    for (i = 0; i <= d; i++)
+        s = s * w + fabs(a[i]);
+    return log2(s) + (double) d * log2(ax);
+}
+
+static double _rs_ab_log2mag(const acb_t x)
+{
+    mag_t m;
+    double r;
+    mag_init(m);
+    acb_get_mag(m, x);
+    r = mag_is_zero(m) ? -1e300 : mag_get_d_log2_approx(m);
+    mag_clear(m);
+    return r;
+}
+
+static double complex _rs_ab_get_d(const acb_t x)
+{
+    return arf_get_d(arb_midref(acb_realref(x)), ARF_RND_NEAR)
+           + I * arf_get_d(arb_midref(acb_imagref(x)), ARF_RND_NEAR);
+}
+
+typedef struct {
+    acb_poly_t P;        /* f, exact */
+    slong d;
+    acb_ptr z;           /* approximations (exact midpoints) */
+    double complex *zd;  /* their double copies */
+    double *logS;        /* log2 sum |a_k| |z_i|^k */
+    slong *w;            /* working precision per root */
+    slong *goal;         /* bits wanted per root */
+    double *loss;        /* measured L_i */
+    char *done;
+    slong wcap;          /* no root goes beyond this */
+    slong nnz;           /* > 0: evaluate term by term, exponents in nz */
+    slong *nz;
+} _rs_ab_struct;
+
+/* Horner for y = p(x), dy = p'(x) with exact coefficients and exact x,
+ * the rounding errors carried as DISC radii: multiplying a ball by x in
+ * Arb's rectangular form grows its radius by (|Re x| + |Im x|) / |x|, up
+ * to sqrt 2, per step -- about d/2 bits lost at degree d (measured: the
+ * radius of p(x) at 128 bits was 2^11 at degree 500, 2^-117 at 256).  Here
+ * each step works on midpoints, and the error bound is r <- r |x| + (the
+ * new rounding error), which a disc obeys exactly. */
+static void _rs_ab_horner2(acb_t y, acb_t dy, acb_srcptr a, slong len, const acb_t x, slong w)
+{
+    acb_t u, v;
+    mag_t ru, rv, e, ax;
+    slong k;
+    acb_init(u);
+    acb_init(v);
+    mag_init(ru);
+    mag_init(rv);
+    mag_init(e);
+    mag_init(ax);
+    acb_get_mag(ax, x);
+    acb_set(u, a + len - 1);
+    acb_zero(v);
+    for (k = len - 2; k >= 0; k--) {
+        acb_mul(v, v, x, w);
+        acb_add(v, v, u, w);
+        mag_mul(rv, rv, ax);
+        mag_add(rv, rv, ru);
+        mag_add(e, arb_radref(acb_realref(v)), arb_radref(acb_imagref(v)));
+        mag_add(rv, rv, e);
+        acb_get_mid(v, v);
+        acb_mul(u, u, x, w);
+        acb_add(u, u, a + k, w);
+        mag_mul(ru, ru, ax);
+        mag_add(e, arb_radref(acb_realref(u)), arb_radref(acb_imagref(u)));
+        mag_add(ru, ru, e);
+        acb_get_mid(u, u);
+    }
+    acb_set(y, u);
+    acb_add_error_mag(y, ru);
+    acb_set(dy, v);
+    acb_add_error_mag(dy, rv);
+    acb_clear(u);
+    acb_clear(v);
+    mag_clear(ru);
+    mag_clear(rv);
+    mag_clear(e);
+    mag_clear(ax);
+}
+
+/* y = p(x), dy = p'(x) at precision w.  A sparse p (lambda^n - c, few
+ * terms) by powers between its terms, O(terms log d) products instead of
+ * Horner's d: x p'(x) = sum k a_k x^k. */
+static void _rs_ab_eval2(acb_t y, acb_t dy, const _rs_ab_struct *s, const acb_t x, slong w)
+{
+    acb_t pw, t;
+    slong j, last = 0;
+    if (s->nnz == 0) {
+        _rs_ab_horner2(y, dy, s->P->coeffs, s->d + 1, x, w);
+        return;
+    }
+    acb_init(pw);
+    acb_init(t);
+    acb_one(pw);
+    acb_zero(y);
+    acb_zero(dy);
+    for (j = 0; j < s->nnz; j++) {
+        slong k = s->nz[j];
+        if (k > last) {
+            acb_pow_ui(t, x, (ulong) (k - last), w);
+            acb_mul(pw, pw, t, w);
+            last = k;
+        }
+        acb_mul(t, pw, s->P->coeffs + k, w);
+        acb_add(y, y, t, w);
+        acb_mul_ui(t, t, (ulong) k, w);
+        acb_add(dy, dy, t, w);
+    }
+    acb_div(dy, dy, x, w);
+    acb_clear(pw);
+    acb_clear(t);
+}
+
+/* D = the box around m holding the disc of radius d |p(m) / p'(m)|, which
+ * contains a root of p (the Newton inclusion of _acb_poly_root_inclusion). */
+static void _rs_ab_disc(acb_t D, const _rs_ab_struct *s, const acb_t m, slong w)
+{
+    acb_t y, dy;
+    mag_t r, l;
+    acb_init(y);
+    acb_init(dy);
+    mag_init(r);
+    mag_init(l);
+    _rs_ab_eval2(y, dy, s, m, w);
+    acb_get_mag(r, y);
+    acb_get_mag_lower(l, dy);
+    mag_div(r, r, l);
+    mag_mul_ui(r, r, (ulong) s->d);
+    acb_set(D, m);
+    acb_get_mid(D, D);
+    acb_add_error_mag(D, r);
+    acb_clear(y);
+    acb_clear(dy);
+    mag_clear(r);
+    mag_clear(l);
+}
+
+/* One Aberth step on root i.  Returns 0 to give up (precision cap). */
+static int _rs_ab_step(_rs_ab_struct *s, slong i)
+{
+    slong d = s->d, j, w = s->w[i], wmax, lg = (slong) ceil(log2((double) d + 1));
+    acb_t y, dy, N, t, u;
+    double complex S = 0;
+    double rel, lz;
+    int ok = 1;
+
+    acb_init(y);
+    acb_init(dy);
+    acb_init(N);
+    acb_init(t);
+    acb_init(u);
+    _rs_ab_eval2(y, dy, s, s->z + i, w);
+    if (acb_contains_zero(dy)) {
+        /* p' not even resolved: the root sits in a cluster finer than w */
+        if (w >= s->wcap) { ok = 0; goto cleanup; }
+        s->w[i] = FLINT_MIN(2 * w, s->wcap);
+        goto cleanup;
+    }
+    lz = _rs_ab_log2mag(s->z + i);
+    s->loss[i] = FLINT_MAX(0.0, s->logS[i] - _rs_ab_log2mag(dy) - lz);
+    wmax = s->goal[i] + (slong) ceil(s->loss[i]) + 2 * lg + 16;
+    if (wmax > s->wcap) { ok = 0; goto cleanup; }
+    if (acb_contains_zero(y)) {
+        /* p(z_i) is rounding noise at w: z_i is as good as w allows */
+        if (w >= wmax) s->done[i] = 1;
+        else s->w[i] = FLINT_MIN(FLINT_MAX(2 * w, 64), wmax);
+        goto cleanup;
+    }
+    acb_div(N, y, dy, w);
+    for (j = 0; j < d; j++) {
+        double complex df;
+        if (j == i) continue;
+        df = s->zd[i] - s->zd[j];
+        if (cabs(df) > ldexp(cabs(s->zd[i]), -40)) {
+            S += 1.0 / df;
+        } else {
+            acb_sub(t, s->z + i, s->z + j, w);
+            acb_inv(t, t, w);
+            S += _rs_ab_get_d(t);
+        }
+    }
+    /* c = N / (1 - N S) */
+    acb_set_d_d(t, creal(S), cimag(S));
+    acb_mul(u, N, t, w);
+    acb_sub_ui(u, u, 1, w);
+    acb_neg(u, u);
+    acb_div(t, N, u, w);
+    acb_get_mid(t, t);
+    if (!acb_is_finite(t)) { ok = 0; goto cleanup; }
+    rel = _rs_ab_log2mag(t) - lz;
+    acb_sub(s->z + i, s->z + i, t, w);
+    acb_get_mid(s->z + i, s->z + i);
+    s->zd[i] = _rs_ab_get_d(s->z + i);
+    /* quadratic convergence: about -2 rel bits are right after this step */
+    if (-2.0 * rel >= (double) (s->goal[i] + lg + 24) && w >= wmax)
+        s->done[i] = 1;
+    else if (-rel > 8.0)
+        s->w[i] = FLINT_MIN(wmax, FLINT_MAX(w, (slong) (-2.0 * rel) + (slong) ceil(s->loss[i]) + 32));
+cleanup:
+    acb_clear(y);
+    acb_clear(dy);
+    acb_clear(N);
+    acb_clear(t);
+    acb_clear(u);
+    return ok;
+}
+
+/* Sweeps over the roots not done; 0 when some root gave up or the sweeps
+ * ran out. */
+static int _rs_ab_iterate(_rs_ab_struct *s, slong maxsweep)
+{
+    slong it, i, left;
+    for (it = 0; it < maxsweep; it++) {
+        left = 0;
+        for (i = 0; i < s->d; i++) {
+            if (s->done[i]) continue;
+            if (!_rs_ab_step(s, i)) return 0;
+            left += !s->done[i];
+        }
+        if (left == 0) return 1;
+    }
+    return 0;
+}
+
+/* Inclusion discs of the roots flagged in which (all when NULL) into D;
+ * 1 when every disc is finite and no two of all d overlap. */
+static int _rs_ab_discs(acb_ptr D, _rs_ab_struct *s, const char *which)
+{
+    slong d = s->d, i, j;
+    for (i = 0; i < d; i++) {
+        if (which != NULL && !which[i]) continue;
+        _rs_ab_disc(D + i, s, s->z + i, s->w[i]);
+        if (!acb_is_finite(D + i)) return 0;
+    }
+    for (i = 0; i < d; i++)
+        for (j = i + 1; j < d; j++)
+            if ((which == NULL || which[i] || which[j]) && acb_overlaps(D + i, D + j))
+                return 0;
+    return 1;
+}
+
+int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_poly_t f,
+                             const double *a, const double *z0, slong prec, slong coarse)
+{
+    _rs_ab_struct s;
+    slong d = fmpz_poly_degree(f), i, j, nref = 0;
+    double lad;
+    char *cand = NULL, *fresh = NULL;
+    arb_t m;
+    arf_t M, lb;
+    int ok = 0;
+
+    if (d < 2)
+        return 0;
+    acb_poly_init(s.P);
+    acb_poly_set_fmpz_poly(s.P, f, fmpz_poly_max_bits(f) < 0 ? -fmpz_poly_max_bits(f) + 8
+                                                             : fmpz_poly_max_bits(f) + 8);
+    s.nz = flint_malloc((d + 1) * sizeof(slong));
+    s.nnz = 0;
+    for (i = 0; i <= d; i++)
+        if (!fmpz_is_zero(f->coeffs + i)) s.nz[s.nnz++] = i;
+    if (s.nnz * ((slong) FLINT_BIT_COUNT(d) + 2) > d)
+        s.nnz = 0;   /* dense: Horner */
+    s.d = d;
+    s.z = _acb_vec_init(d);
+    s.zd = flint_malloc(d * sizeof(double complex));
+    s.logS = flint_malloc(d * sizeof(double));
+    s.loss = flint_malloc(d * sizeof(double));
+    s.w = flint_malloc(d * sizeof(slong));
+    s.goal = flint_malloc(d * sizeof(slong));
+    s.done = flint_calloc(d, 1);
+    s.wcap = 8 * prec + 4 * d + 256;
+    arb_init(m);
+    arf_init(M);
+    arf_init(lb);
+    coarse = (coarse > 0 && coarse < prec) ? coarse : prec;
+    lad = log2(fabs(a[d]));
+    for (i = 0; i < d; i++) {
+        s.zd[i] = z0[2 * i] + I * z0[2 * i + 1];
+        if (!isfinite(creal(s.zd[i])) || !isfinite(cimag(s.zd[i])) || s.zd[i] == 0)
+            goto cleanup;
+        acb_set_d_d(s.z + i, z0[2 * i], z0[2 * i + 1]);
+    }
+    for (i = 0; i < d; i++) {
+        double lp = lad;
+        s.logS[i] = _rs_ab_log2sum(a, d, s.zd[i]);
+        /* |p'| at a root = |a_d| prod |z_i - z_j|: the starting loss */
+        for (j = 0; j < d; j++)
+            if (j != i) lp += log2(cabs(s.zd[i] - s.zd[j]) + 1e-300);
+        s.loss[i] = FLINT_MAX(0.0, s.logS[i] - lp - log2(cabs(s.zd[i])));
+        s.goal[i] = coarse;
+        s.w[i] = FLINT_MIN(64 + (slong) ceil(s.loss[i]), s.wcap);
+    }
+    if (!_rs_ab_iterate(&s, 64) || !_rs_ab_discs(E, &s, NULL))
+        goto cleanup;
+    if (coarse < prec) {
+        /* only the balls that may hold the largest modulus go on to prec;
+         * repeat while a refined ball lets another one reach the top */
+        cand = flint_calloc(d, 1);
+        fresh = flint_calloc(d, 1);
+        for (;;) {
+            slong add = 0;
+            arf_zero(M);
+            for (i = 0; i < d; i++) {
+                acb_abs(m, E + i, 2 * MAG_BITS);
+                arb_get_lbound_arf(lb, m, 2 * MAG_BITS);
+                if (arf_cmp(lb, M) > 0) arf_set(M, lb);
+            }
+            for (i = 0; i < d; i++) {
+                acb_abs(m, E + i, 2 * MAG_BITS);
+                arb_get_ubound_arf(lb, m, 2 * MAG_BITS);
+                if (!cand[i] && arf_cmp(lb, M) >= 0) {
+                    cand[i] = 2;   /* new */
+                    s.goal[i] = prec;
+                    s.done[i] = 0;
+                    add++;
+                }
+            }
+            if (add == 0) break;
+            nref += add;
+            if (!_rs_ab_iterate(&s, 64))
+                goto cleanup;
+            for (i = 0; i < d; i++) fresh[i] = cand[i] == 2;
+            if (!_rs_ab_discs(E, &s, fresh))
+                goto cleanup;
+            for (i = 0; i < d; i++) cand[i] = cand[i] != 0;
+        }
+    }
+    *wp = 0;
+    for (i = 0; i < d; i++)
+        *wp = FLINT_MAX(*wp, s.w[i]);
+    *nouter = (coarse < prec && nref < d) ? nref : -1;
+    ok = 1;
+cleanup:
+    acb_poly_clear(s.P);
+    flint_free(s.nz);
+    _acb_vec_clear(s.z, d);
+    flint_free(s.zd);
+    flint_free(s.logS);
+    flint_free(s.loss);
+    flint_free(s.w);
+    flint_free(s.goal);
+    flint_free(s.done);
+    flint_free(cand);
+    flint_free(fresh);
+    arb_clear(m);
+    arf_clear(M);
+    arf_clear(lb);
+    return ok;
+}

@@ -18,7 +18,8 @@
 
 #define RS_LOG2_10 3.32192809488736234787
 #define RS_RADIUS_MIN_PREC 16
-#define RS_RADIUS_MAX_DIM 4096  /* largest companion / block companion size */
+#define RS_RADIUS_MAX_DIM 4096
+#define RS_RADIUS_ABERTH_MIN_DEGREE 2  /* first degree of _rs_factor_roots_aberth */  /* largest companion / block companion size */
 
 /* ------------------------------------------------------------------ */
 /* result bookkeeping                                                  */
@@ -458,6 +459,41 @@ static slong _rs_radius_rescale(fmpz_poly_t g, const fmpz_poly_t f)
     return sc;
 }
 
+/* The first route from degree RS_RADIUS_ABERTH_MIN_DEGREE: seeds in double
+ * (Aberth from Newton-polygon points above degree 64, GSL's QR below, so
+ * that the roots keep their order), then rs_radius_aberth_certify (Aberth
+ * on Arb midpoints at a precision per root, inclusion discs).  Above
+ * degree 64 and 160 bits, every root at 64 bits and only the possibly
+ * largest ones at prec.  0: not certified, the caller goes on to
+ * acb_poly_find_roots. */
+static int _rs_factor_roots_aberth(acb_ptr E, const fmpz_poly_t f0, slong *wp, slong *nouter)
+{
+    slong d = fmpz_poly_degree(f0), sc, i, w = 0, no = -1;
+    double *a = flint_malloc((d + 1) * sizeof(double));
+    double *z = flint_malloc(2 * d * sizeof(double));
+    fmpz_poly_t f;
+    int ok = 0;
+
+    fmpz_poly_init(f);
+    sc = _rs_radius_rescale(f, f0);
+    if (_rs_radius_to_double(a, f, NULL) == RS_OK && a[0] != 0.0 &&
+        ((d > 64 && rs_radius_aberth_d(z, a, d, 100) >= 0) ||
+         _rs_radius_gsl_solve(z, a, d) == GSL_SUCCESS ||
+         rs_radius_aberth_d(z, a, d, 200) >= 0) &&
+        rs_radius_aberth_certify(E, &w, &no, f, a, z, *wp,
+                                 (d > RS_RADIUS_HIGH_DEGREE && *wp > 96) ? 64 : 0)) {
+        for (i = 0; i < d && sc != 0; i++)
+            acb_mul_2exp_si(E + i, E + i, sc);
+        *wp = FLINT_MAX(*wp, w);
+        *nouter = no;
+        ok = 1;
+    }
+    fmpz_poly_clear(f);
+    flint_free(a);
+    flint_free(z);
+    return ok;
+}
+
 /* acb_poly_find_roots seeded with the GSL double roots (when the
  * coefficients fit in double and GSL converges); certified when all d
  * output balls are isolated (then each holds exactly one root); otherwise
@@ -473,6 +509,8 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp, slo
     *nouter = -1;
     if (d == 1)
         return _rs_factor_roots_companion(E, f0, wp, nouter);
+    if (d >= RS_RADIUS_ABERTH_MIN_DEGREE && _rs_factor_roots_aberth(E, f0, wp, nouter))
+        return RS_EIG_SIMPLE;
     /* above degree 64 and well beyond 64 bits: every root at 64 bits (+ d/2,
      * below), then only the possibly largest ones to prec (outer.c); the
      * full route at prec when that does not certify */
