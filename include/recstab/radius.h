@@ -178,6 +178,12 @@ int rs_radius_aberth_d(double *z, const double *a, slong d, slong maxiter);
  * -1).  *wp = the highest precision used.  Returns 1, or 0 (E undefined)
  * when the iteration does not settle or the discs overlap: the caller
  * falls back.  src/numeric/aberth.c. */
+/* y = p(x), dy = p'(x) for exact coefficients a[0..len) and exact x, by
+ * Horner at precision w with the rounding errors bounded as disc radii
+ * (Arb's rectangular balls grow by up to sqrt 2 per Horner step: about
+ * len/2 bits lost).  src/numeric/aberth.c. */
+void rs_radius_horner2(acb_t y, acb_t dy, acb_srcptr a, slong len, const acb_t x, slong w);
+
 int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_poly_t f,
                              const double *a, const double *z0, slong prec, slong coarse);
 
@@ -230,6 +236,16 @@ int rs_radius_count_balls(slong *inside, slong *outside, const rs_radius_t r, sl
  * still lie below the refined ones; else 0, E unchanged (also when more
  * than a quarter of the roots are candidates: nothing to save). */
 int rs_radius_outer_refine(acb_ptr E, slong *nouter, const fmpz_poly_t f, slong prec);
+
+/* The balls of r (isolating, of the squarefree p: every mult 1, nroots =
+ * deg p) that meet the unit circle are refined -- Newton on the midpoint,
+ * a new inclusion disc d |p/p'| at doubling precision up to max_prec, kept
+ * only when inside the old ball (so it holds the same root) -- until they
+ * lie off the circle.  rho, lower, upper are not touched.  Returns 1 when
+ * afterwards no ball meets the circle (rs_radius_count_balls then
+ * counts), else 0.  A root ON the circle never separates: the exact count
+ * decides then.  src/numeric/outer.c. */
+int rs_radius_refine_circle(rs_radius_t r, const fmpz_poly_t p, slong max_prec);
 
 /* "stable" (upper < 1), "unstable" (lower > 1) or "undecided". */
 const char *rs_radius_verdict(const rs_radius_t rr);

@@ -186,7 +186,7 @@ typedef struct {
  * radius of p(x) at 128 bits was 2^11 at degree 500, 2^-117 at 256).  Here
  * each step works on midpoints, and the error bound is r <- r |x| + (the
  * new rounding error), which a disc obeys exactly. */
-static void _rs_ab_horner2(acb_t y, acb_t dy, acb_srcptr a, slong len, const acb_t x, slong w)
+void rs_radius_horner2(acb_t y, acb_t dy, acb_srcptr a, slong len, const acb_t x, slong w)
 {
     acb_t u, v;
     mag_t ru, rv, e, ax;
@@ -235,7 +235,7 @@ static void _rs_ab_eval2(acb_t y, acb_t dy, const _rs_ab_struct *s, const acb_t 
     acb_t pw, t;
     slong j, last = 0;
     if (s->nnz == 0) {
-        _rs_ab_horner2(y, dy, s->P->coeffs, s->d + 1, x, w);
+        rs_radius_horner2(y, dy, s->P->coeffs, s->d + 1, x, w);
         return;
     }
     acb_init(pw);

@@ -148,3 +148,11 @@ assert r['rho'].startswith('0.99137308746'), r['rho']"
 radius_high "degree 66 on the circle: Routh + Schur-Cohn decide" "lambda^66 - 1" "
 assert r['count_methods'] == ['routh (bilinear)', 'schur-cohn'], r
 assert r['count_agree'] is True and r['exact_status'] == 'marginal', r"
+# (closed form) roots 1 + 10^-40 and 2 outside, 70 at 10^(-6/70) inside: the
+# ~64-bit ball of 1 + 10^-40 meets the circle; rho = 2 is certified away from
+# 1, so that ball is refined (issue 18) and the balls count, not Routh
+radius_high "degree 72, a root 10^-40 outside: refined ball counts" \
+    "(10^40*lambda - (10^40 + 1))*(10^6*lambda^70 - 1)*(lambda - 2)" "
+assert r['count_methods'] == ['certified root balls', 'schur-cohn'], r
+assert r.get('count_balls_refined') is True and r['count_agree'] is True, r
+assert r['exact_status'] == 'unstable' and r['rho'].startswith('2.0000000000'), r"

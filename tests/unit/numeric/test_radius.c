@@ -944,6 +944,141 @@ static void test_count_balls(void **state)
     fmpz_poly_clear(f);
 }
 
+/* rs_radius_aberth_certify itself (the first route), from the double seeds
+ * of rs_radius_aberth_d, on the rows issue 18 found slow:
+ * - a tight cluster: (10^12 (10x - 9)^4 - 1)(10^6 x^70 - 1), degree 74.
+ *   Closed form: (10x - 9)^4 = 10^-12 gives x = 9/10 + 10^-4 w, w^4 = 1, so
+ *   the largest modulus is 9/10 + 10^-4 = 9001/10000 (|9/10 +- 10^-4 i| is
+ *   smaller), and 10^(-6/70) = 0.8209... < 0.9001 for the other 70 roots;
+ * - Wilkinson-type prod_{k=1..40} (41 x - k): rho = 40/41 (closed form);
+ * - 2 x^500 - 1: rho = 2^(-1/500) (closed form), sparse evaluation.
+ * Each at 30 and 128 digits: certified (returns 1), rho from the balls
+ * contains the closed form and is as narrow as asked. */
+static void check_certify(const fmpz_poly_t p, const arb_t truth, slong digits)
+{
+    slong d = fmpz_poly_degree(p), i, w = 0, no = -1;
+    slong prec = (slong) (digits * 3.3219280948873623) + 32;
+    double *a = flint_malloc((d + 1) * sizeof(double));
+    double *z = flint_malloc(2 * d * sizeof(double));
+    acb_ptr E = _acb_vec_init(d);
+    arb_t rho, t;
+    arb_init(rho);
+    arb_init(t);
+    for (i = 0; i <= d; i++)
+        a[i] = fmpz_get_d(p->coeffs + i);
+    rs_radius_aberth_d(z, a, d, 100);   /* seeds, converged or not */
+    assert_int_equal(rs_radius_aberth_certify(E, &w, &no, p, a, z, prec, d > 64 ? 64 : 0), 1);
+    assert_true(w >= prec);
+    arb_zero(rho);
+    for (i = 0; i < d; i++) {
+        acb_abs(t, E + i, w);
+        arb_max(rho, rho, t, w);
+    }
+    assert_true(arb_contains(rho, truth));
+    assert_true(arb_rel_accuracy_bits(rho) >= (slong) (digits * 3.32));
+    _acb_vec_clear(E, d);
+    arb_clear(rho);
+    arb_clear(t);
+    flint_free(a);
+    flint_free(z);
+}
+
+static void test_aberth_certify_hard(void **state)
+{
+    fmpz_poly_t p, q;
+    arb_t truth;
+    slong digits[2] = { 30, 128 }, k, j;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(q);
+    arb_init(truth);
+    for (k = 0; k < 2; k++) {
+        slong prec = truth_prec(digits[k]);
+        /* cluster: (10^12 (10x - 9)^4 - 1)(10^6 x^70 - 1) */
+        fmpz_poly_zero(p);
+        fmpz_poly_set_coeff_si(p, 0, -9);
+        fmpz_poly_set_coeff_si(p, 1, 10);
+        fmpz_poly_pow(p, p, 4);
+        fmpz_poly_scalar_mul_ui(p, p, 1000000);
+        fmpz_poly_scalar_mul_ui(p, p, 1000000);
+        fmpz_poly_zero(q);
+        fmpz_poly_set_coeff_si(q, 0, -1);
+        fmpz_poly_add(p, p, q);   /* p - 1: q = -1 */
+        fmpz_poly_set_coeff_si(q, 70, 1000000);
+        fmpz_poly_mul(p, p, q);
+        arb_set_ui(truth, 9001);
+        arb_div_ui(truth, truth, 10000, prec);
+        check_certify(p, truth, digits[k]);
+        /* Wilkinson-type, degree 40 */
+        fmpz_poly_one(p);
+        for (j = 1; j <= 40; j++) {
+            fmpz_poly_zero(q);
+            fmpz_poly_set_coeff_si(q, 0, -j);
+            fmpz_poly_set_coeff_si(q, 1, 41);
+            fmpz_poly_mul(p, p, q);
+        }
+        arb_set_ui(truth, 40);
+        arb_div_ui(truth, truth, 41, prec);
+        check_certify(p, truth, digits[k]);
+        /* 2 x^500 - 1 */
+        fmpz_poly_zero(p);
+        fmpz_poly_set_coeff_si(p, 0, -1);
+        fmpz_poly_set_coeff_si(p, 500, 2);
+        arb_set_ui(truth, 2);
+        arb_root_ui(truth, truth, 500, prec);
+        arb_inv(truth, truth, prec);
+        check_certify(p, truth, digits[k]);
+    }
+    arb_clear(truth);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(q);
+}
+
+/* rs_radius_horner2 against the exact value: p = (x - 1)^3 (x^2 + 1) at
+ * x = 3/4 + i/8 (exact dyadic), p and p' from the factored form in exact
+ * rational arithmetic (Arb at 2000 bits: exact here); the balls at 64 bits
+ * must contain them, and be narrow (the disc bound, 2^-50 relative). */
+static void test_horner2(void **state)
+{
+    fmpz_poly_t p, q;
+    acb_poly_t P;
+    acb_t x, y, dy, t, u, v;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(q);
+    acb_poly_init(P);
+    acb_init(x); acb_init(y); acb_init(dy); acb_init(t); acb_init(u); acb_init(v);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    fmpz_poly_set_coeff_si(p, 1, 1);
+    fmpz_poly_pow(p, p, 3);
+    fmpz_poly_set_coeff_si(q, 0, 1);
+    fmpz_poly_set_coeff_si(q, 2, 1);
+    fmpz_poly_mul(p, p, q);
+    acb_poly_set_fmpz_poly(P, p, 64);
+    acb_set_d_d(x, 0.75, 0.125);
+    rs_radius_horner2(y, dy, P->coeffs, 6, x, 64);
+    /* exact: (x-1)^3 (x^2+1) and 3 (x-1)^2 (x^2+1) + 2x (x-1)^3 */
+    acb_sub_ui(t, x, 1, 2000);
+    acb_mul(u, x, x, 2000);
+    acb_add_ui(u, u, 1, 2000);
+    acb_pow_ui(v, t, 3, 2000);
+    acb_mul(v, v, u, 2000);
+    assert_true(acb_contains(y, v));
+    acb_pow_ui(v, t, 2, 2000);
+    acb_mul(v, v, u, 2000);
+    acb_mul_ui(v, v, 3, 2000);
+    acb_pow_ui(u, t, 3, 2000);
+    acb_mul(u, u, x, 2000);
+    acb_mul_2exp_si(u, u, 1);
+    acb_add(v, v, u, 2000);
+    assert_true(acb_contains(dy, v));
+    assert_true(acb_rel_accuracy_bits(y) >= 50 && acb_rel_accuracy_bits(dy) >= 50);
+    acb_clear(x); acb_clear(y); acb_clear(dy); acb_clear(t); acb_clear(u); acb_clear(v);
+    acb_poly_clear(P);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(q);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -972,6 +1107,8 @@ int main(void)
         cmocka_unit_test(test_high_degree_binomial),
         cmocka_unit_test(test_random_degree100),
         cmocka_unit_test(test_count_balls),
+        cmocka_unit_test(test_aberth_certify_hard),
+        cmocka_unit_test(test_horner2),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
