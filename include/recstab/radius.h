@@ -61,7 +61,9 @@ typedef struct {
                              whose balls may hold the largest modulus, were
                              refined to the requested digits; the other balls
                              are certified and isolating but coarser (about 60
-                             bits; rs_radius_outer_refine).  0: every root */
+                             bits; rs_radius_aberth_certify, or
+                             rs_radius_outer_refine on the fallback route).
+                             0: every root */
 } rs_radius_struct;
 typedef rs_radius_struct rs_radius_t[1];
 
@@ -89,7 +91,12 @@ int rs_radius_fmpz_poly(rs_radius_t r, const fmpz_poly_t p, slong digits,
  * squarefree (fmpz_poly_factor_squarefree), enclose the simple roots of each
  * factor (linear factors: -f0/f1 directly), list every root e times for a
  * factor of exponent e, and double the precision until the goal is met:
- * _find_roots: acb_poly_find_roots seeded with the GSL double roots; certified
+ * _find_roots: first rs_radius_aberth_certify (Aberth-Ehrlich on Arb
+ *   midpoints at a precision per root, from GSL double seeds below degree 65
+ *   and Aberth-in-double seeds from Newton-polygon points above; one
+ *   inclusion disc per root; above degree 64 only the possibly largest
+ *   roots to full precision).  When that does not certify:
+ *   acb_poly_find_roots seeded with the GSL double roots; certified
  *   when all deg f output balls are isolated (Arb validates each ball with a
  *   root-inclusion test, disjoint balls => exactly one root each), at most
  *   32 iterations; when that does not isolate all roots (bad seeds) or

@@ -185,7 +185,7 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
             json_object_set_new(o, "method", json_string(
                 rr->method == RS_RADIUS_METHOD_COMPANION ? "companion matrix, acb_mat_eig_simple/multiple (certified)"
                 : rr->method == RS_RADIUS_METHOD_COMPLEX_ROOTS ? "arb_fmpz_poly_complex_roots on squarefree factors (certified)"
-                : rr->method == RS_RADIUS_METHOD_FIND_ROOTS ? "acb_poly_find_roots + validation on squarefree factors (certified)"
+                : rr->method == RS_RADIUS_METHOD_FIND_ROOTS ? "Aberth-Ehrlich + inclusion discs, acb_poly_find_roots as fallback, on squarefree factors (certified)"
                 : "certified enclosure"));
             rs_json_radius(o, rr, digits);
             roots = json_array();
