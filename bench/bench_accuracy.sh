@@ -42,7 +42,8 @@ trap 'exit 130' INT TERM
 cp build/librecstab.a "$snap/librecstab.a" || exit 2
 
 LIBS=$(sed -n 's/^LIBS *:= *//p' Makefile 2>/dev/null)
-[ -n "$LIBS" ] || LIBS="-fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm"
+# the Makefile's LIBS may be made of other variables ($(DEP_LIBS)): then the list
+case "$LIBS" in ''|*'$('*) LIBS="-fopenmp -lflint-arb -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm" ;; esac
 # shellcheck disable=SC2086
 if ! ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -O2 -Iinclude \
         -I/usr/include/flint bench/bench_radius.c "$snap/librecstab.a" \
