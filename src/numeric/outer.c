@@ -21,7 +21,9 @@ int rs_radius_count_balls(slong *inside, slong *outside, const rs_radius_t r, sl
     arb_init(one);
     arb_one(one);
     for (i = 0; i < r->nroots && ok; i++) {
-        acb_abs(a, r->roots + i, prec);
+        /* at the ball's own precision: a refined ball (rs_radius_refine_circle)
+         * may be finer than r->prec */
+        acb_abs(a, r->roots + i, FLINT_MAX(prec, acb_bits(r->roots + i) + 32));
         if (arb_lt(a, one))
             in++;
         else if (arb_gt(a, one))
