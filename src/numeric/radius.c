@@ -511,6 +511,8 @@ static int _rs_factor_roots_find(acb_ptr E, const fmpz_poly_t f0, slong *wp, slo
         return _rs_factor_roots_companion(E, f0, wp, nouter);
     if (d >= RS_RADIUS_ABERTH_MIN_DEGREE && _rs_factor_roots_aberth(E, f0, wp, nouter))
         return RS_EIG_SIMPLE;
+    if (rs_budget_exceeded())   /* no fallback past --time-limit: the loop reports it */
+        return RS_EIG_FAIL;
     /* above degree 64 and well beyond 64 bits: every root at 64 bits (+ d/2,
      * below), then only the possibly largest ones to prec (outer.c); the
      * full route at prec when that does not certify */
