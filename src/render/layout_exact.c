@@ -776,6 +776,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         if (js(o, "angles")) rs_render_line(r, "angles", "%s", js(o, "angles"));
         if (js(at, "reason")) rs_render_linef(r, "verdict", "%s: %s", js(at, "status"), js(at, "reason"));
         else rs_render_count(r, at, RS_RENDER_TEXT);
+        if (js(at, "counts_of")) rs_render_line(r, "counts of", "%s", js(at, "counts_of"));
     } else if (st && strcmp(st, "proved") == 0) {
         certificate_lines(r, json_object_get(o, "certificate"));
     } else {

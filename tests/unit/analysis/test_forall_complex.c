@@ -148,6 +148,11 @@ static void test_leapfrog(void **state)
     assert_string_equal(str(json_object_get(b, "counterexample"), "nu"), "1");
     assert_string_equal(str(json_object_get(b, "counterexample"), "theta"), "1");
     assert_string_equal(str(json_object_get(b, "at_counterexample"), "status"), "unstable");
+    /* p = (lambda + i)^2 there: 2 roots of p on the circle, the block form
+     * det M = p conj(p) = (lambda + i)^2 (lambda - i)^2 has 4, and the
+     * report says whose counts it prints */
+    assert_int_equal(json_integer_value(json_object_get(json_object_get(b, "at_counterexample"), "on")), 4);
+    assert_non_null(strstr(str(json_object_get(b, "at_counterexample"), "counts_of"), "p conj(p)"));
     assert_int_equal(outcome & RS_OUTCOME_FAILED, RS_OUTCOME_FAILED);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
