@@ -324,55 +324,17 @@ static int cosim_dbl_point(rs_radius_t rf, const cosim_map_t *M, slong idx)
     return ok;
 }
 
-/* [*lo, *hi] contains x (doubles rounded outward; +-inf when not finite) */
-static void arb_bounds_d(double *lo, double *hi, const arb_t x)
-{
-    arf_t t;
-    arf_init(t);
-    arb_get_lbound_arf(t, x, 64);
-    *lo = arf_is_nan(t) ? -INFINITY : arf_get_d(t, ARF_RND_FLOOR);
-    arb_get_ubound_arf(t, x, 64);
-    *hi = arf_is_nan(t) ? INFINITY : arf_get_d(t, ARF_RND_CEIL);
-    arf_clear(t);
-}
-
 /* sweep ... of modes at point idx: the certified eigenvalues of the
- * one-step map (15 digits) into M->eig[idx], and per reference the damping
- * ratio, frequency error and omega of its principal eigenvalue (Im >= 0),
- * as the sweeps of modes of the equations (sweep_poly.c) report them.
+ * one-step map (15 digits) into M->eig[idx], and the modes columns as the
+ * sweeps of modes of the equations report them (rs_sweep_row_modes).
  * Only with every eigenvalue isolated (RS_OK): else the cells stay empty. */
 static void cosim_point_modes(rs_sweep_row_t *row, const cosim_map_t *M, slong idx, const rs_radius_t rr)
 {
-    slong prec = 128, k, i;
-    arb_t h, sig, om, mag, zeta;
-    arb_ptr refs = _arb_vec_init(M->nref);
-    int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
+    slong i;
     json_t *ev = json_array();
-    arb_init(h); arb_init(sig); arb_init(om); arb_init(mag); arb_init(zeta);
-    for (i = 0; i < rr->nroots; i++) {
-        json_array_append_new(ev, rs_json_acb(rr->roots + i, 15));
-    }
+    for (i = 0; i < rr->nroots; i++) json_array_append_new(ev, rs_json_acb(rr->roots + i, 15));
     M->eig[idx] = ev;
-    arb_set_fmpq(h, M->hval + idx, prec);
-    for (k = 0; k < M->nref; k++) arb_set_fmpq(refs + k, M->refval + idx * M->nref + k, prec);
-    rs_modes_principal(principal, rr, h, refs, M->nref, prec);
-    for (k = 0; k < M->nref; k++)
-        for (i = 0; i < rr->nroots; i++) {
-            const acb_struct *z = rr->roots + i;
-            if (principal[i] != k + 1 || acb_is_zero(z)) continue;
-            if (arf_sgn(arb_midref(acb_imagref(z))) < 0 && !arb_is_zero(acb_imagref(z))) continue;
-            rs_modes_continuous(sig, om, mag, zeta, z, h, prec);
-            arb_bounds_d(row->mode_lo + 3 * k, row->mode_hi + 3 * k, zeta);
-            arb_sub(mag, mag, refs + k, prec);
-            arb_div(mag, mag, refs + k, prec);
-            arb_bounds_d(row->mode_lo + 3 * k + 1, row->mode_hi + 3 * k + 1, mag);
-            arb_bounds_d(row->mode_lo + 3 * k + 2, row->mode_hi + 3 * k + 2, om);
-            row->nmodes++;
-            break;
-        }
-    free(principal);
-    _arb_vec_clear(refs, M->nref);
-    arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(zeta);
+    rs_sweep_row_modes(row, rr, M->hval + idx, M->refval + idx * M->nref, M->nref);
 }
 
 #define COSIM_CROSSCHECK_EVERY 64   /* fast verdicts re-derived from the certified radius */

@@ -31,6 +31,7 @@
 #include <flint/fmpq.h>
 #include "analysis/impl.h"
 #include "recstab/sweep.h"
+#include "recstab/radius.h"
 
 enum { RS_SWEEP_OF_RADIUS = 0, RS_SWEEP_OF_STABILITY = 1, RS_SWEEP_OF_MODES = 2 };
 enum { RS_SWEEP_KIND_SWEEP = 0, RS_SWEEP_KIND_MAP = 1 };
@@ -104,6 +105,11 @@ typedef struct {
 } rs_sweep_model_t;
 
 double rs_sweep_now(void);
+/* The modes columns of a sweep row from the certified roots rr of one point
+ * (sweep_poly.c): per reference the damping ratio, frequency error and
+ * omega of its principal root (Im >= 0) for the step h, bounds rounded
+ * outward; the polynomial and the co-simulation sweeps of modes share it */
+void rs_sweep_row_modes(rs_sweep_row_t *row, const rs_radius_t rr, const fmpq_t h, const fmpq *refs, slong nref);
 /* errors at the request: more than --max-points points; more than the budget allows */
 int rs_sweep_limit_error(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
 int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);

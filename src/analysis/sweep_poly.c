@@ -109,20 +109,18 @@ static void arb_bounds_d(double *lo, double *hi, const arb_t x)
     arf_clear(t);
 }
 
-/* Damping ratio, frequency error and omega of the principal root (Im >= 0)
- * of each reference at point idx, as `modes` reports them. */
-static void point_modes(rs_sweep_row_t *pt, const job_t *J, slong idx, const rs_radius_t rr)
+void rs_sweep_row_modes(rs_sweep_row_t *pt, const rs_radius_t rr, const fmpq_t hq, const fmpq *refq, slong nref)
 {
     slong prec = 128, k, i;
     arb_t h, sig, om, mag, zeta;
-    arb_ptr refs = _arb_vec_init(J->nref);
+    arb_ptr refs = _arb_vec_init(nref);
     int *principal = calloc((size_t) rr->nroots + 1, sizeof(int));
     arb_init(h); arb_init(sig); arb_init(om); arb_init(mag); arb_init(zeta);
-    arb_set_fmpq(h, J->hval + idx, prec);
-    for (k = 0; k < J->nref; k++) arb_set_fmpq(refs + k, J->refval + idx * J->nref + k, prec);
-    rs_modes_principal(principal, rr, h, refs, J->nref, prec);
+    arb_set_fmpq(h, hq, prec);
+    for (k = 0; k < nref; k++) arb_set_fmpq(refs + k, refq + k, prec);
+    rs_modes_principal(principal, rr, h, refs, nref, prec);
     for (k = 0; k < 3 * RS_SWEEP_MAX_REFS; k++) pt->mode_lo[k] = pt->mode_hi[k] = NAN;
-    for (k = 0; k < J->nref; k++)
+    for (k = 0; k < nref; k++)
         for (i = 0; i < rr->nroots; i++) {
             const acb_struct *z = rr->roots + i;
             if (principal[i] != k + 1 || acb_is_zero(z)) continue;
@@ -137,7 +135,7 @@ static void point_modes(rs_sweep_row_t *pt, const job_t *J, slong idx, const rs_
             break;
         }
     free(principal);
-    _arb_vec_clear(refs, J->nref);
+    _arb_vec_clear(refs, nref);
     arb_clear(h); arb_clear(sig); arb_clear(om); arb_clear(mag); arb_clear(zeta);
 }
 
@@ -225,7 +223,7 @@ static int point_radius(rs_sweep_row_t *pt, const job_t *J, slong idx, const fmp
             pt->d.rho_lower = lo;
             pt->d.rho_upper = hi;
         }
-        if (J->kind == RS_SWEEP_OF_MODES) point_modes(pt, J, idx, rr);
+        if (J->kind == RS_SWEEP_OF_MODES) rs_sweep_row_modes(pt, rr, J->hval + idx, J->refval + idx * J->nref, J->nref);
     }
     rs_radius_clear(rr);
     return r;
