@@ -10,7 +10,9 @@
  *              checked against the exact counts.
  * and `map re(NAME) A B N, im(NAME) C D M`: the complex plane of one
  * parameter (the test equation's z), every point exact by the same pair,
- * with the boundary locus sampled for the plot.
+ * with the boundary locus sampled for the plot; `region re(NAME), im(NAME)`:
+ * its stable set exact (z = x + i y, the Schur-Cohn conditions of p over
+ * Q(i)[x, y] decomposed by an_region_cad.c).
  * A `char` line with i (a real 2x2 block form in the scheme) is read back
  * as A + i B from its block; there `stability` with every parameter real
  * also runs the complex pair beside the real verdict (routh_complex.h). */
@@ -21,6 +23,7 @@
 #include <arb_poly.h>
 #include "recstab/budget.h"
 #include "analysis/registry.h"
+#include "analysis/an_region.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
 #include "recstab/radius.h"
@@ -976,5 +979,164 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     flint_free(C);
     fmpq_poly_clear(re); fmpq_poly_clear(im);
     fmpq_clear(x); fmpq_clear(y);
+    return r;
+}
+
+/* ---- region re(NAME), im(NAME): the exact stable set in the z-plane ------------- */
+
+int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    const rs_request_t *q = req->q;
+    const char *t = req->rest;
+    cmap_req_t *m = calloc(1, sizeof *m);
+    char name[80];
+    int axis;
+    fmpq_init(m->lo[0]); fmpq_init(m->lo[1]); fmpq_init(m->hi[0]); fmpq_init(m->hi[1]);
+    req->u.sweep = m;
+    m->param = -1;
+    for (axis = 0; axis < 2; axis++) {
+        const char *kw = axis == 0 ? "re(" : "im(", *close;
+        size_t nl;
+        while (*t == ' ' || *t == '\t') t++;
+        if (strncmp(t, kw, 3) != 0 || (close = strchr(t + 3, ')')) == NULL || close == t + 3
+            || (size_t) (close - t - 3) >= sizeof name)
+            return rs_req_error(run, q, t, RS_ERR_INPUT, axis == 0 ? "expected region re(NAME), im(NAME), found '%s'"
+                                : "expected im(NAME) after the comma, found '%s'", t);
+        nl = (size_t) (close - t - 3);
+        memcpy(name, t + 3, nl);
+        name[nl] = '\0';
+        if (axis == 0) {
+            m->param = rs_case_param_index(run->c, name);
+            if (m->param < 0) return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "'%s' is not a parameter", name);
+        } else if (strcmp(name, run->c->params[m->param].name) != 0) {
+            return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "expected the same parameter in re(...) and im(...), "
+                                "found '%s'", name);
+        }
+        t = close + 1;
+        while (*t == ' ' || *t == '\t') t++;
+        if (axis == 0) {
+            if (*t != ',') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ', im(NAME)', found '%s'", t);
+            t++;
+        }
+    }
+    if (*t != '\0') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected end of line, found '%s'", t);
+    return RS_OK;
+}
+
+typedef struct {
+    const fmpq_poly_struct *C;
+    slong K, n;
+    rs_run_t *run;
+} cregion_pt_t;
+
+/* the exact point verdict at z = x + i y: Schur-Cohn over Q(i) and Bilharz */
+static int cregion_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void *arg)
+{
+    const cregion_pt_t *a = arg;
+    fmpq_poly_t re, im;
+    int r;
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    eval_coeffs(re, im, a->C, a->K, x, y);
+    r = rs_routh_complex_checked_status(st, re, im, a->n, a->run->err);
+    if (r == RS_ERR_INCONSISTENT) a->run->outcome |= RS_OUTCOME_INCONSISTENT;
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return r;
+}
+
+int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const cmap_req_t *m = req->u.sweep;
+    const char *name = run->c->params[m->param].name;
+    char xn[24], yn[24];
+    char *vars[3];
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    rs_scheme_struct xs;
+    fmpq_poly_struct *C;
+    fmpz_mpoly_t re, im, zr, zi, t, u, x, y;
+    rs_schur_cx_conds_t cc;
+    rs_region_cx_t cx;
+    cregion_pt_t pt;
+    slong K, n, k;
+    int r = rs_run_variant_one_free(&v, run, q, req->rest, m->param, "region");
+    if (r != RS_OK) return r;
+    s = v->s;
+    if (s->complex_char)
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "region re(%s), im(%s): the char line has i already; "
+                            "expected a polynomial with real coefficients in the parameter", name);
+    K = fmpz_mpoly_degree_si(v->cp->p, m->param, s->zctx);
+    n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    if (K < 1 || n < 1)
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "region re(%s), im(%s): the characteristic polynomial "
+                            "must depend on the parameter and on lambda", name);
+    /* the plane: variables x = re(NAME), y = im(NAME), lambda */
+    snprintf(xn, sizeof xn, "re(%.16s)", name);
+    snprintf(yn, sizeof yn, "im(%.16s)", name);
+    vars[0] = xn; vars[1] = yn; vars[2] = (char *) "lambda";
+    memset(&xs, 0, sizeof xs);
+    fmpq_mpoly_ctx_init(xs.ctx, 3, ORD_LEX);
+    fmpz_mpoly_ctx_init(xs.zctx, 3, ORD_LEX);
+    xs.nvars = 3;
+    xs.lambda_var = 2;
+    xs.vars = vars;
+    fmpz_mpoly_init(re, xs.zctx); fmpz_mpoly_init(im, xs.zctx); fmpz_mpoly_init(zr, xs.zctx);
+    fmpz_mpoly_init(zi, xs.zctx); fmpz_mpoly_init(t, xs.zctx); fmpz_mpoly_init(u, xs.zctx);
+    fmpz_mpoly_init(x, xs.zctx); fmpz_mpoly_init(y, xs.zctx);
+    fmpz_mpoly_gen(x, 0, xs.zctx);
+    fmpz_mpoly_gen(y, 1, xs.zctx);
+    fmpz_mpoly_one(zr, xs.zctx);
+    C = flint_malloc((K + 1) * sizeof(fmpq_poly_struct));
+    /* p(x + i y) = sum_k C_k(lambda) (x + i y)^k = re + i im in Z[x, y, lambda] */
+    for (k = 0; k <= K; k++) {
+        fmpz_poly_t c;
+        fmpz_poly_init(c);
+        fmpq_poly_init(C + k);
+        rs_run_coeff_in(c, v->cp->p, m->param, k, s);
+        fmpq_poly_set_fmpz_poly(C + k, c);
+        fmpz_mpoly_set_fmpz_poly(t, c, 2, xs.zctx);
+        fmpz_mpoly_mul(u, t, zr, xs.zctx);
+        fmpz_mpoly_add(re, re, u, xs.zctx);
+        fmpz_mpoly_mul(u, t, zi, xs.zctx);
+        fmpz_mpoly_add(im, im, u, xs.zctx);
+        /* (zr + i zi)(x + i y) */
+        fmpz_mpoly_mul(t, zr, x, xs.zctx);
+        fmpz_mpoly_mul(u, zi, y, xs.zctx);
+        fmpz_mpoly_sub(t, t, u, xs.zctx);
+        fmpz_mpoly_mul(u, zr, y, xs.zctx);
+        fmpz_mpoly_mul(zi, zi, x, xs.zctx);
+        fmpz_mpoly_add(zi, zi, u, xs.zctx);
+        fmpz_mpoly_swap(zr, t, xs.zctx);
+        fmpz_poly_clear(c);
+    }
+    rs_schur_cx_conds_init(&cc);
+    if (!rs_schur_cx_conds(&cc, re, im, 2, xs.zctx)) {
+        r = rs_budget_check(run->err, "region re(z), im(z) (Schur-Cohn conditions)");
+        if (r == RS_OK)
+            r = rs_req_error(run, q, req->rest, RS_ERR_LIMIT, "region re(%s), im(...): the Schur-Cohn conditions over "
+                             "Q(i) grow too large", name);
+    } else {
+        pt.C = C;
+        pt.K = K;
+        pt.n = n;
+        pt.run = run;
+        cx.s = &xs;
+        cx.lead = cc.lead;
+        cx.delta = cc.delta;
+        cx.ndelta = cc.ndelta;
+        cx.status = cregion_status;
+        cx.arg = &pt;
+        cx.name = name;
+        cx.substituted = v->assigned;
+        r = rs_an_region_cad_cx(run, &cx);
+    }
+    rs_schur_cx_conds_clear(&cc, xs.zctx);
+    for (k = 0; k <= K; k++) fmpq_poly_clear(C + k);
+    flint_free(C);
+    fmpz_mpoly_clear(re, xs.zctx); fmpz_mpoly_clear(im, xs.zctx); fmpz_mpoly_clear(zr, xs.zctx);
+    fmpz_mpoly_clear(zi, xs.zctx); fmpz_mpoly_clear(t, xs.zctx); fmpz_mpoly_clear(u, xs.zctx);
+    fmpz_mpoly_clear(x, xs.zctx); fmpz_mpoly_clear(y, xs.zctx);
+    fmpz_mpoly_ctx_clear(xs.zctx);
+    fmpq_mpoly_ctx_clear(xs.ctx);
     return r;
 }

@@ -78,6 +78,23 @@ int rs_an_region_forall_on(json_t **out, rs_run_t *run, const rs_request_t *q, s
 /* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
 
+/* region re(z), im(z) (an_complex.c): the plane of z = x + i y from given
+ * conditions.  s: a context of x, y, lambda (variables 0, 1, 2; ctx, zctx,
+ * nvars, vars, lambda_var used); stable iff lead > 0 and every delta > 0;
+ * status: the exact point verdict at rational (x, y) (re-checks every
+ * rational sample and the formula). */
+typedef int (*rs_region_cx_status_fn)(rs_status_t *st, const fmpq_t x, const fmpq_t y, void *arg);
+typedef struct {
+    const rs_scheme_struct *s;
+    const fmpz_mpoly_struct *lead, *delta;
+    slong ndelta;
+    rs_region_cx_status_fn status;
+    void *arg;
+    const char *name;
+    json_t *substituted;
+} rs_region_cx_t;
+int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx);
+
 /* The map's exact boundary drawn only where it separates (issue 13 part 3):
  * the decomposition of the (v1, v2) plane of variant v, then per boundary
  * point of a condition whether its arc separates two statuses. */

@@ -77,7 +77,108 @@ typedef struct {
     slong ncells;
     slong undecided_lines;
     double blo, bhi;         /* the span of N2 roots seen (for random points) */
+    const rs_region_cx_t *cx; /* region re(z), im(z): given conditions, stable / not stable */
+    slong nb;                /* length of bounds */
 } cad_t;
+
+/* complex mode (region re(z), im(z)): a point's signs of lead and the
+ * Schur-Cohn deltas say stable (all > 0) or not; pt: where they are taken */
+typedef struct {
+    const fmpq *a0, *b0;     /* rational coordinates (or NULL) */
+    rs_alg_t *al, *be;       /* algebraic ones */
+    const fmpq_poly_struct *A, *B, *m;   /* a tower Q(gamma): (A, B)(gamma) */
+    rs_alg_t *g;
+} cx_pt_t;
+
+static void cad_eval_field(fmpq_poly_t out, const cad_t *c, const fmpz_mpoly_t f, const fmpq_poly_t A,
+                           const fmpq_poly_t B, const fmpq_poly_t m);
+static int upoly_sign_at(const fmpz_poly_t g, rs_alg_t *b);
+
+static int cx_sign(const cad_t *c, const fmpz_mpoly_t f, const cx_pt_t *pt)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    fmpz_mpoly_t t;
+    fmpz_poly_t u;
+    int sg;
+    if (pt->g != NULL) {
+        fmpq_poly_t v;
+        fmpq_poly_init(v);
+        cad_eval_field(v, c, f, pt->A, pt->B, pt->m);
+        sg = rs_alg_sign(v, pt->g);
+        fmpq_poly_clear(v);
+        return sg;
+    }
+    fmpz_mpoly_init(t, ctx);
+    fmpz_poly_init(u);
+    if (pt->a0 != NULL && pt->b0 != NULL) {
+        fmpz_mpoly_t w;
+        fmpz_mpoly_init(w, ctx);
+        rs_an_forall_subst(w, f, c->av, pt->a0, ctx);   /* not in place: out is zeroed first */
+        rs_an_forall_subst(t, w, c->bv, pt->b0, ctx);
+        fmpz_mpoly_clear(w, ctx);
+        sg = fmpz_mpoly_is_zero(t, ctx) ? 0 : fmpz_sgn(t->coeffs + 0);
+    } else {
+        rs_alg_t *x = pt->a0 != NULL ? pt->be : pt->al;
+        rs_an_forall_subst(t, f, pt->a0 != NULL ? c->av : c->bv, pt->a0 != NULL ? pt->a0 : pt->b0, ctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, t, pt->a0 != NULL ? c->bv : c->av, ctx)) fmpz_poly_zero(u);
+        sg = upoly_sign_at(u, x);
+    }
+    fmpz_mpoly_clear(t, ctx);
+    fmpz_poly_clear(u);
+    return sg;
+}
+
+static rs_status_t cx_status(const cad_t *c, const cx_pt_t *pt)
+{
+    slong k;
+    if (cx_sign(c, c->cx->lead, pt) <= 0) return RS_STATUS_UNSTABLE;
+    for (k = 0; k < c->cx->ndelta; k++)
+        if (cx_sign(c, c->cx->delta + k, pt) <= 0) return RS_STATUS_UNSTABLE;
+    return RS_STATUS_STABLE;
+}
+
+/* the exact point verdict at rational (N1, N2); in complex mode the Q(i)
+ * verdict collapsed to stable / not stable (UNSTABLE) */
+static int cad_point_status(rs_status_t *st, const cad_t *c, fmpq *vals)
+{
+    rs_rootcount_t rc;
+    int r;
+    if (c->cx != NULL) {
+        r = c->cx->status(st, vals + 0, vals + 1, c->cx->arg);
+        if (r == RS_OK && *st != RS_STATUS_STABLE) *st = RS_STATUS_UNSTABLE;
+        return r;
+    }
+    rs_rootcount_init(rc);
+    r = rs_run_point_status(st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
+    rs_rootcount_clear(rc);
+    return r;
+}
+
+/* complex mode at a rational sample: the sign verdict, checked against
+ * the point verdict over Q(i) (two methods: exit 3 when they differ) */
+static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
+{
+    cx_pt_t pt = {vals + 0, vals + 1, NULL, NULL, NULL, NULL, NULL, NULL};
+    rs_status_t ps;
+    int r = cad_point_status(&ps, c, vals);
+    if (r != RS_OK) return r;
+    *st = cx_status(c, &pt);
+    if (*st != ps) {
+        char *a = fmpq_get_str(NULL, 10, vals + 0), *b = fmpq_get_str(NULL, 10, vals + 1);
+        c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+        r = rs_error_set(c->run->err, RS_ERR_INCONSISTENT, "region re(%s), im(%s): at (%s, %s) the Schur-Cohn "
+                         "conditions say %s, the point verdict over Q(i) %s", c->cx->name, c->cx->name, a, b,
+                         *st == RS_STATUS_STABLE ? "stable" : "not stable", ps == RS_STATUS_STABLE ? "stable" : "not stable");
+        flint_free(a);
+        flint_free(b);
+    }
+    return r;
+}
+
+static const char *cad_st_name(const cad_t *c, rs_status_t st)
+{
+    return c->cx != NULL && st != RS_STATUS_STABLE ? "not_stable" : rs_status_name(st);
+}
 
 /* appends h (taken: swapped out) */
 static void cad_push(cad_t *c, fmpz_mpoly_t h, int kind, int closed)
@@ -146,12 +247,18 @@ static void cad_add_end(cad_t *c, slong var, const fmpq_t e, int upper, int clos
 static int cad_critical(cad_t *c)
 {
     const rs_scheme_struct *s = c->s;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), k;
+    slong lv = s->lambda_var, n = c->cx != NULL ? 0 : fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), k;
     ulong nn = (ulong) n;
     fmpz_mpoly_t sqf, t;
     fmpz_mpoly_factor_t fac;
     fmpz_t pm;
     int r = RS_OK;
+    if (c->cx != NULL) {
+        /* the given conditions: lead and the Schur-Cohn deltas */
+        cad_add_factors(c, c->cx->lead, K_BOUNDARY);
+        for (k = 0; k < c->cx->ndelta; k++) cad_add_factors(c, c->cx->delta + k, K_BOUNDARY);
+        return rs_budget_check(c->run->err, "region re(z), im(z) (critical polynomials)");
+    }
     fmpz_mpoly_init(sqf, s->zctx);
     fmpz_mpoly_init(t, s->zctx);
     fmpz_init(pm);
@@ -326,7 +433,7 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
         if (lo < c->blo) c->blo = lo;
         if (hi > c->bhi) c->bhi = hi;
     }
-    rs_an_forall_subst(pa, c->v->cp->p, c->av, a0, s->zctx);
+    if (c->cx == NULL) rs_an_forall_subst(pa, c->v->cp->p, c->av, a0, s->zctx);
     /* cells from below: sector, root, sector, ..., sector */
     for (i = 0; i <= 2 * nroots && r == RS_OK; i++) {
         int on_root = i % 2 == 1;
@@ -344,28 +451,26 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
             e->outside = cad_outside(c, e->sg);
             if (!e->outside && r == RS_OK) {
                 if (rt->rational) {
-                    rs_rootcount_t rc;
-                    rs_rootcount_init(rc);
                     fmpq_set(vals + 1, rt->q);
-                    r = rs_run_point_status(&e->st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
-                    rs_rootcount_clear(rc);
+                    r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
                     e->decided = r == RS_OK;
+                } else if (c->cx != NULL) {
+                    cx_pt_t pt = {a0, NULL, NULL, rt, NULL, NULL, NULL, NULL};
+                    e->st = cx_status(c, &pt);
+                    e->decided = 1;
                 } else if (!fmpz_mpoly_is_zero(pa, s->zctx)) {
                     e->decided = rs_alg_status(&e->st, pa, c->bv, rt, s);
                 }
             }
         } else {
-            rs_rootcount_t rc;
             bs.rational = 1;
             rs_alg_between(bs.q, lo, hi);
             for (k = 0; k < c->nf; k++) e->sg[k] = (signed char) upoly_sign_at(g + k, &bs);
             e->b = rs_json_fmpq(bs.q);
             e->outside = cad_outside(c, e->sg);
             if (!e->outside && r == RS_OK) {
-                rs_rootcount_init(rc);
                 fmpq_set(vals + 1, bs.q);
-                r = rs_run_point_status(&e->st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
-                rs_rootcount_clear(rc);
+                r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
                 e->decided = r == RS_OK;
             }
         }
@@ -465,7 +570,11 @@ static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
         e->sg[k] = (signed char) upoly_sign_at(u, al);
     }
     e->outside = cad_outside(c, e->sg);
-    if (!e->outside) {
+    if (!e->outside && c->cx != NULL) {
+        cx_pt_t pt = {NULL, b0, al, NULL, NULL, NULL, NULL, NULL};
+        e->st = cx_status(c, &pt);
+        dec = 1;
+    } else if (!e->outside) {
         rs_an_forall_subst(t, c->v->cp->p, c->bv, b0, s->zctx);
         if (!fmpz_mpoly_is_zero(t, s->zctx)) dec = rs_alg_status(&e->st, t, c->av, al, s);
     }
@@ -483,7 +592,7 @@ static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
 static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
 {
     const rs_scheme_struct *s = c->s;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx);
+    slong lv = s->lambda_var, n = c->cx != NULL ? 0 : fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx);
     rs_alg_t *cand = NULL;
     slong ncand = 0, i, j, k, nsec = 0, *sec = NULL;
     signed char **sgs = NULL;
@@ -557,7 +666,11 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             e->a = rs_alg_json(al, c->an);
             e->b = rs_alg_json(cand + i, c->bn);
             e->outside = cad_outside(c, e->sg);
-            if (!e->outside) {
+            if (!e->outside && c->cx != NULL) {
+                cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
+                e->st = cx_status(c, &pt);
+                e->decided = 1;
+            } else if (!e->outside) {
                 for (j = 0; j <= n; j++) {
                     ulong ex = (ulong) j;
                     fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
@@ -863,18 +976,16 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
     flint_randinit(st);
     fmpq_init(vals + 0); fmpq_init(vals + 1);
     for (i = 0; i < CAD_CHECK_POINTS && r == RS_OK; i++) {
-        rs_rootcount_t rc;
         rs_status_t ps;
         int hs, hm;
         r = rs_budget_check(c->run->err, "region N1, N2 (cross-check)");
         if (r != RS_OK) break;
         rand_in(vals + 0, st, c->bounds + c->av, alo, ahi);
         rand_in(vals + 1, st, c->bounds + c->bv, c->blo, c->bhi);
-        rs_rootcount_init(rc);
-        r = rs_run_point_status(&ps, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
-        rs_rootcount_clear(rc);
+        r = cad_point_status(&ps, c, vals);
         if (r != RS_OK) break;
-        if (!dnf_holds(&hs, stable, c, vals + 0, vals + 1) || !dnf_holds(&hm, marginal, c, vals + 0, vals + 1)) {
+        if (!dnf_holds(&hs, stable, c, vals + 0, vals + 1)
+            || (marginal != NULL ? !dnf_holds(&hm, marginal, c, vals + 0, vals + 1) : (hm = 0, 0))) {
             hs = -1;
             hm = -1;
         }
@@ -883,14 +994,16 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
             agree++;
         } else {
             json_array_append_new(bad, json_pack("{s:o,s:o,s:s}", c->an, rs_json_fmpq(vals + 0), c->bn,
-                                                 rs_json_fmpq(vals + 1), "status", rs_status_name(ps)));
+                                                 rs_json_fmpq(vals + 1), "status", cad_st_name(c, ps)));
         }
     }
     /* disagreement where the formula claims completeness: a bug (exit 3) */
     if (r == RS_OK && agree != tried && complete) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
     json_object_set_new(o, "cross_check", json_pack("{s:I,s:I,s:o,s:s}", "points", (json_int_t) tried,
         "agree", (json_int_t) agree, "disagree_at", bad, "method",
-        "the formula re-parsed from its text and evaluated exactly at random rational points of the domain, "
+        c->cx != NULL ? "the stable formula re-parsed from its text and evaluated exactly at random rational points, "
+        "against the exact point verdict over Q(i) (Schur-Cohn over Q(i) and Bilharz)"
+        : "the formula re-parsed from its text and evaluated exactly at random rational points of the domain, "
         "against the exact point verdict (Routh and Schur-Cohn counts)"));
     fmpq_clear(vals + 0); fmpq_clear(vals + 1);
     flint_randclear(st);
@@ -917,7 +1030,7 @@ static void cad_boundary(json_t *o, const cad_t *c)
         if (sep) {
             char *ps = cad_polystr(c, e->sec);
             json_array_append_new(arcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
-                                                  "below", rs_status_name(lo->st), "above", rs_status_name(hi->st)));
+                                                  "below", cad_st_name(c, lo->st), "above", cad_st_name(c, hi->st)));
             free(ps);
         }
     }
@@ -957,11 +1070,8 @@ static void cad_boundary(json_t *o, const cad_t *c)
         fmpq_set_str(vals + 1, json_string_value(e->b), 10);
         fmpq_canonicalise(vals + 1);
         for (j = 0; j < 2 && ok; j++) {
-            rs_rootcount_t rc;
             if (j == 0) fmpq_sub(vals + 0, a0, d); else fmpq_add(vals + 0, a0, d);
-            rs_rootcount_init(rc);
-            ok = rs_run_point_status(side + j, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2) == RS_OK;
-            rs_rootcount_clear(rc);
+            ok = cad_point_status(side + j, c, vals) == RS_OK;
         }
         rs_error_init(c->run->err);
         fmpq_clear(vals + 0); fmpq_clear(vals + 1); fmpq_clear(d); fmpq_clear(a0);
@@ -974,7 +1084,7 @@ static void cad_boundary(json_t *o, const cad_t *c)
                 char *ps = cad_polystr(c, k);
                 nsep[k]++;
                 json_array_append_new(arcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
-                                                      "left", rs_status_name(side[0]), "right", rs_status_name(side[1])));
+                                                      "left", cad_st_name(c, side[0]), "right", cad_st_name(c, side[1])));
                 free(ps);
             }
         }
@@ -1106,7 +1216,7 @@ static void cad_clear(cad_t *c)
     }
     flint_free(c->cells);
     if (c->bounds != NULL) {
-        rs_bounds_clear(c->bounds, c->run->c->nparams);
+        rs_bounds_clear(c->bounds, c->nb);
         flint_free(c->bounds);
     }
 }
@@ -1117,7 +1227,7 @@ static json_t *cad_cells_json(const cad_t *c)
     slong i;
     for (i = 0; i < c->ncells; i++) {
         const cell_t *e = c->cells + i;
-        const char *st = e->outside ? "outside" : (e->decided ? rs_status_name(e->st) : "undecided");
+        const char *st = e->outside ? "outside" : (e->decided ? cad_st_name(c, e->st) : "undecided");
         json_array_append_new(a, json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn,
                                            e->b, "status", st));
     }
@@ -1200,6 +1310,7 @@ int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t
     c->bn = run->c->params[v2].name;
     c->blo = -1;
     c->bhi = 1;
+    c->nb = run->c->nparams;
     c->bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
     rs_bounds_init(c->bounds, run->c->nparams);   /* no assumptions: the whole plane */
     for (i = 0; i < run->c->nparams; i++)
@@ -1333,6 +1444,91 @@ json_t *rs_region_arcs_json(const rs_region_arcs_t *A)
     return a;
 }
 
+/* steps 1-5 and the result object (c set up; c cleared by the caller) */
+static int cad_solve(cad_t *c, json_t *substituted)
+{
+    int r = cad_critical(c);
+    json_t *o;
+    if (r == RS_OK) r = cad_project(c);
+    if (r == RS_OK) r = cad_lift(c);
+    if (r != RS_OK) return r;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "params", json_pack("[s,s]", c->an, c->bn));
+    json_object_set_new(o, "substituted", substituted != NULL ? json_deep_copy(substituted) : json_object());
+    json_object_set_new(o, "symbolic", json_false());
+    {
+        unsigned char **Fs, **Fm;
+        slong ns, nm, k;
+        int conflict = 0, complete;
+        json_t *fo = json_object(), *proj = json_array(), *cv = json_array();
+        Fs = cad_formula(&ns, &conflict, c, RS_STATUS_STABLE);
+        /* complex mode: the cells are stable or not (the marginal set is not separated) */
+        Fm = c->cx != NULL ? NULL : cad_formula(&nm, &conflict, c, RS_STATUS_MARGINAL);
+        if (c->cx != NULL) nm = 0;
+        json_object_set_new(fo, "stable", cad_formula_json(c, Fs, ns));
+        json_object_set_new(fo, "marginal", c->cx != NULL ? json_null() : cad_formula_json(c, Fm, nm));
+        for (k = 0; k < ns; k++) flint_free(Fs[k]);
+        for (k = 0; k < nm; k++) flint_free(Fm[k]);
+        flint_free(Fs);
+        flint_free(Fm);
+        complete = !conflict && c->undecided_lines == 0;
+        for (k = 0; k < c->ncells; k++) if (!c->cells[k].decided && !c->cells[k].outside) complete = 0;
+        json_object_set_new(o, "formula", fo);
+        json_object_set_new(o, "formula_complete", json_boolean(complete));
+        if (!complete)
+            json_object_set_new(o, "formula_note", json_string(conflict
+                ? "two cells of different status have the same signs: the formula is exact except there"
+                : "some cells over irrational critical values of the first parameter are not decided (an "
+                  "algebraic tower of degree above 12, a line of degree above 8, or a system's repeated circle "
+                  "root): the formula is exact off those cells"));
+        cad_boundary(o, c);
+        if (c->cx == NULL) cad_qepcad(o, c);
+        json_object_set_new(o, "cells", cad_cells_json(c));
+        for (k = 0; k < c->ncrit; k++) json_array_append_new(cv, rs_alg_json(c->crit + k, c->an));
+        json_object_set_new(o, "critical_values", cv);
+        for (k = 0; k < c->nf; k++) {
+            char *ps = cad_polystr(c, k);
+            json_array_append_new(proj, json_pack("{s:s,s:s}", "poly", ps, "kind",
+                c->kind[k] == K_BOUNDARY ? "critical" : (c->kind[k] == K_DOMAIN ? "assumption" : "projection")));
+            free(ps);
+        }
+        json_object_set_new(o, "projection", proj);
+        {
+            /* the formula speaks of the admissible points only */
+            json_t *dom = json_array();
+            for (k = 0; k < c->nf; k++) {
+                char *ps, buf[600];
+                if (c->kind[k] != K_DOMAIN) continue;
+                ps = cad_polystr(c, k);
+                snprintf(buf, sizeof buf, "%s %s 0", ps, c->closed[k] ? ">=" : ">");
+                json_array_append_new(dom, json_string(buf));
+                free(ps);
+            }
+            json_object_set_new(o, "domain", dom);
+        }
+        json_object_set_new(o, "undecided_lines", json_integer(c->undecided_lines));
+        json_object_set_new(o, "method", json_string(c->cx != NULL
+            ? "cylindrical algebraic decomposition of the plane (Collins) of z = x + i y: critical polynomials "
+              "|a_n|^2 and the division-free Schur-Cohn deltas of p over Q(i)[x, y] (stable iff all > 0), their "
+              "projection onto x, each cell's signs; rational samples re-decided by the point verdict over Q(i)"
+            : "cylindrical algebraic decomposition of the plane (Collins): critical polynomials (leading "
+            "coefficient, p(1), p(-1), D_{n-1} of the bilinear q, discriminant), their projection onto the "
+            "first parameter (leading coefficients, discriminants, resultants), one exact verdict per cell"));
+        if (c->cx != NULL) {
+            json_object_set_new(o, "complex_plane", json_string(c->cx->name));
+            json_object_set_new(o, "marginal_note", json_string("region re(z), im(z) separates stable from not "
+                                "stable; the marginal set (roots on the circle) lies on the boundary and is not "
+                                "computed here: map re(z) ..., im(z) ... decides it per point"));
+        }
+        r = cad_cross_check(o, c, json_object_get(fo, "stable"), json_object_get(fo, "marginal"), complete);
+    }
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    if (r == RS_OK) json_array_append_new(c->run->results, o);
+    else json_decref(o);
+    return r;
+}
+
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *keep[2];
@@ -1340,7 +1536,6 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
     slong na = 0, i;
     rs_variant_t *v;
     cad_t c;
-    json_t *o;
     int r;
     memset(&c, 0, sizeof c);
     c.av = req->u.region.param;
@@ -1364,6 +1559,7 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
                      "(region %s, %s at %s=VALUE)", run->c->params[i].name, c.an, c.bn, run->c->params[i].name);
             return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
         }
+    c.nb = run->c->nparams;
     c.bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
     rs_bounds_init(c.bounds, run->c->nparams);
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c.bounds, &run->c->assume[i], run->c, run->err);
@@ -1372,73 +1568,29 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
         cad_clear(&c);
         return r;
     }
-    r = cad_critical(&c);
-    if (r == RS_OK) r = cad_project(&c);
-    if (r == RS_OK) r = cad_lift(&c);
-    if (r != RS_OK) { cad_clear(&c); return r; }
-    o = json_object();
-    json_object_set_new(o, "analysis", json_string("region"));
-    json_object_set_new(o, "params", json_pack("[s,s]", c.an, c.bn));
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_object_set_new(o, "symbolic", json_false());
-    {
-        unsigned char **Fs, **Fm;
-        slong ns, nm, k;
-        int conflict = 0, complete;
-        json_t *fo = json_object(), *proj = json_array(), *cv = json_array();
-        Fs = cad_formula(&ns, &conflict, &c, RS_STATUS_STABLE);
-        Fm = cad_formula(&nm, &conflict, &c, RS_STATUS_MARGINAL);
-        json_object_set_new(fo, "stable", cad_formula_json(&c, Fs, ns));
-        json_object_set_new(fo, "marginal", cad_formula_json(&c, Fm, nm));
-        for (k = 0; k < ns; k++) flint_free(Fs[k]);
-        for (k = 0; k < nm; k++) flint_free(Fm[k]);
-        flint_free(Fs);
-        flint_free(Fm);
-        complete = !conflict && c.undecided_lines == 0;
-        for (k = 0; k < c.ncells; k++) if (!c.cells[k].decided && !c.cells[k].outside) complete = 0;
-        json_object_set_new(o, "formula", fo);
-        json_object_set_new(o, "formula_complete", json_boolean(complete));
-        if (!complete)
-            json_object_set_new(o, "formula_note", json_string(conflict
-                ? "two cells of different status have the same signs: the formula is exact except there"
-                : "some cells over irrational critical values of the first parameter are not decided (an "
-                  "algebraic tower of degree above 12, a line of degree above 8, or a system's repeated circle "
-                  "root): the formula is exact off those cells"));
-        cad_boundary(o, &c);
-        cad_qepcad(o, &c);
-        json_object_set_new(o, "cells", cad_cells_json(&c));
-        for (k = 0; k < c.ncrit; k++) json_array_append_new(cv, rs_alg_json(c.crit + k, c.an));
-        json_object_set_new(o, "critical_values", cv);
-        for (k = 0; k < c.nf; k++) {
-            char *ps = cad_polystr(&c, k);
-            json_array_append_new(proj, json_pack("{s:s,s:s}", "poly", ps, "kind",
-                c.kind[k] == K_BOUNDARY ? "critical" : (c.kind[k] == K_DOMAIN ? "assumption" : "projection")));
-            free(ps);
-        }
-        json_object_set_new(o, "projection", proj);
-        {
-            /* the formula speaks of the admissible points only */
-            json_t *dom = json_array();
-            for (k = 0; k < c.nf; k++) {
-                char *ps, buf[600];
-                if (c.kind[k] != K_DOMAIN) continue;
-                ps = cad_polystr(&c, k);
-                snprintf(buf, sizeof buf, "%s %s 0", ps, c.closed[k] ? ">=" : ">");
-                json_array_append_new(dom, json_string(buf));
-                free(ps);
-            }
-            json_object_set_new(o, "domain", dom);
-        }
-        json_object_set_new(o, "undecided_lines", json_integer(c.undecided_lines));
-        json_object_set_new(o, "method", json_string(
-            "cylindrical algebraic decomposition of the plane (Collins): critical polynomials (leading "
-            "coefficient, p(1), p(-1), D_{n-1} of the bilinear q, discriminant), their projection onto the "
-            "first parameter (leading coefficients, discriminants, resultants), one exact verdict per cell"));
-        r = cad_cross_check(o, &c, json_object_get(fo, "stable"), json_object_get(fo, "marginal"), complete);
-    }
-    json_object_set_new(o, "decided_by", json_string("exact"));
-    if (r == RS_OK) json_array_append_new(run->results, o);
-    else json_decref(o);
+    r = cad_solve(&c, v->assigned);
+    cad_clear(&c);
+    return r;
+}
+
+int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx)
+{
+    cad_t c;
+    int r;
+    memset(&c, 0, sizeof c);
+    c.run = run;
+    c.s = cx->s;
+    c.cx = cx;
+    c.av = 0;
+    c.bv = 1;
+    c.an = cx->s->vars[0];
+    c.bn = cx->s->vars[1];
+    c.blo = -1;
+    c.bhi = 1;
+    c.nb = 2;
+    c.bounds = flint_malloc(3 * sizeof(rs_bound_t));
+    rs_bounds_init(c.bounds, 2);   /* the whole plane */
+    r = cad_solve(&c, cx->substituted);
     cad_clear(&c);
     return r;
 }

@@ -172,7 +172,7 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         if (!complex_unset(run->c, k)) continue;
         if (strcmp(nm, "charpoly") == 0 || strcmp(nm, "astability") == 0
             || (strcmp(nm, "expect") == 0 && !req->u.expect.bilinear)
-            || (strcmp(nm, "map") == 0 && rs_an_complex_map_is(req->rest)))
+            || ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)))
             continue;
         if (strcmp(nm, "region") == 0)
             snprintf(msg, sizeof msg, "region over the complex parameter '%s' (param %s complex): the 2-D region in "

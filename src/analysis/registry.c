@@ -77,6 +77,21 @@ static void eq_map_clear(rs_an_req_t *req)
     else sweep_req_clear(req);
 }
 
+/* region re(NAME), im(NAME): the z-plane (an_complex.c); else region.c */
+static int eq_region_parse(rs_an_req_t *req, rs_run_t *run)
+{
+    return rs_an_complex_map_is(req->rest) ? rs_an_complex_region_parse(req, run) : rs_an_region_parse(req, run);
+}
+static void eq_region_clear(rs_an_req_t *req)
+{
+    if (rs_an_complex_map_is(req->rest)) rs_an_complex_map_clear(req);
+    else rs_an_region_req_clear(req);
+}
+static int run_eq_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    return rs_an_complex_map_is(req->rest) ? rs_an_complex_region(run, req) : rs_an_region(run, req);
+}
+
 static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 {
     return rs_an_sweep_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
@@ -114,9 +129,9 @@ const rs_an_def_t rs_an_registry[] = {
      NULL, NULL, rs_an_jury, 0},
     {"stability", NULL, EQ, "", NULL, "all parameters set: stable / marginal / unstable / singular with root counts",
      NULL, NULL, rs_an_stability, RS_AN_NOT_IN_P},
-    {"region", NULL, EQ, "NAME [at P=V, ...] | NAME for all [P, ...] | NAME1, NAME2 [at P=V, ...]", NULL,
-     "the exact set of NAME values where the scheme is stable, marginal, unstable",
-     rs_an_region_parse, rs_an_region_req_clear, rs_an_region, 0},
+    {"region", NULL, EQ, "NAME [at P=V, ...] | NAME for all [P, ...] | NAME1, NAME2 [at P=V, ...] | re(NAME), im(NAME)",
+     NULL, "the exact set of NAME values where the scheme is stable, marginal, unstable; re(NAME), im(NAME): the "
+     "stable set in the complex plane of NAME", eq_region_parse, eq_region_clear, run_eq_region, 0},
     {"limit", NULL, EQ, "NAME -> 0|inf", NULL, "the limits of the roots with multiplicities",
      rs_an_limit_parse, NULL, rs_an_limit, 0},
     {"astability", NULL, EQ, "[NAME]", NULL,

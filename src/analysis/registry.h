@@ -169,6 +169,8 @@ int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t 
 int rs_an_complex_map_is(const char *rest);
 int rs_an_complex_map_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_complex_map_clear(rs_an_req_t *req);
+int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run);
+int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req);
 /* "h", "modes", "spurious", "note" of a modes element o from the certified
