@@ -175,8 +175,8 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
             || ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)))
             continue;
         if (strcmp(nm, "region") == 0)
-            snprintf(msg, sizeof msg, "region over the complex parameter '%s' (param %s complex): the 2-D region in "
-                     "(Re %s, Im %s) is not computed; use astability (its axis intervals and A-stability, exact) or "
+            snprintf(msg, sizeof msg, "region over the complex parameter '%s' (param %s complex): use region re(%s), "
+                     "im(%s) (the stable set in the plane, exact), astability (its axis intervals and A-stability) or "
                      "map re(%s) A B N, im(%s) C D M (the plane, exact per point)", pn, pn, pn, pn, pn, pn);
         else
             snprintf(msg, sizeof msg, "'%s' takes its parameters as real, but '%s' is complex (param %s complex) and "

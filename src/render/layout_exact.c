@@ -532,6 +532,11 @@ static void region2_dnf(rs_render_t *r, const json_t *dnf, const char *label, co
 {
     char buf[4096] = "";
     size_t i, j;
+    if (json_is_null(dnf)) {
+        /* region re(z), im(z): stable / not stable only */
+        rs_render_line(r, label, "%s", "not computed (on the boundary; map re(z), im(z) decides it per point)");
+        return;
+    }
     for (i = 0; i < json_array_size(dnf); i++) {
         const json_t *cj = json_array_get(dnf, i);
         size_t n = strlen(buf);

@@ -164,3 +164,86 @@ PY
 else
     ok "skipped map comparison: no python3"
 fi
+
+# ---- region re(z), im(z): the exact stable set in the z-plane (issue 15 §1-2) ----
+# the stable formula of the compact JSON's region result
+zregion_stable() { # case
+    "$RS" --json "$1" 2>"$T/err" | python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+r = [x for x in d["cases"][0]["results"] if x["analysis"] == "region"][0]
+print(" or ".join(" and ".join(c) for c in r["formula"]["stable"]))'
+}
+if command -v python3 >/dev/null 2>&1; then
+    cat >"$T/fez.case" <<'CASE'
+# expect-exit: 0
+param z complex
+subsystem S state y
+  y' = z*y
+integrate S rk euler 1
+analyse region re(z), im(z)
+CASE
+    sed 's/rk euler 1/trapezoidal 1/' "$T/fez.case" >"$T/trz.case"
+    # forward Euler: lambda = 1 + z, |1 + z|^2 < 1 <=> x^2 + 2x + y^2 < 0 (by hand)
+    got=$(zregion_stable "$T/fez.case")
+    if [ "$got" = "re(z)^2 + 2*re(z) + im(z)^2 < 0" ]; then ok "region re(z), im(z): forward Euler |1+z| < 1"
+    else fail "region re(z), im(z) forward Euler: got '$got' ($(head -1 "$T/err"))"; fi
+    # trapezoid: R = (1 + z/2)/(1 - z/2), |R| < 1 <=> |2 + z| < |2 - z| <=> x < 0 (by hand)
+    got=$(zregion_stable "$T/trz.case")
+    if [ "$got" = "re(z) < 0" ]; then ok "region re(z), im(z): trapezoid Re z < 0"
+    else fail "region re(z), im(z) trapezoid: got '$got' ($(head -1 "$T/err"))"; fi
+    # BDF2: the printed boundary vanishes on the boundary locus z = 3/2 - 2 u + u^2/2,
+    # u = exp(-i phi) (p(lambda) = (3/2 - z) lambda^2 - 2 lambda + 1/2 at |lambda| = 1),
+    # evaluated in floating point at 24 angles (independent of the decomposition)
+    "$RS" --json cases/complex/bdf2-zregion.case >"$T/bz.json" 2>"$T/err"
+    res=$(python3 - "$T/bz.json" <<'PY'
+import json, sys, cmath, math
+r = [x for x in json.load(open(sys.argv[1]))["cases"][0]["results"] if x["analysis"] == "region"][0]
+b = r["boundary"]
+if len(b) != 1: print("boundary %r" % b); sys.exit()
+P = lambda x, y: eval(b[0].replace("re(z)", "(%r)" % x).replace("im(z)", "(%r)" % y).replace("^", "**"))
+worst = 0.0
+for k in range(24):
+    u = cmath.exp(-1j * (2 * math.pi * k / 24 + 0.1))
+    z = 1.5 - 2 * u + u * u / 2
+    worst = max(worst, abs(P(z.real, z.imag)) / (1 + abs(z)) ** 4)
+print("ok" if worst < 1e-9 else "worst %g" % worst)
+PY
+)
+    if [ "$res" = ok ]; then ok "region re(z), im(z): BDF2 boundary on its locus at 24 angles"
+    else fail "region re(z), im(z) BDF2 boundary: $res"; fi
+    # the formula against `stability` at set z = x + y*i (a separate run per point)
+    # at 12 rational points of a fixed pseudo-random sequence (skipping the boundary)
+    nbad=0; nok=0
+    for pt in $(python3 - "$T/bz.json" <<'PY'
+import json, sys, random
+from fractions import Fraction as F
+r = [x for x in json.load(open(sys.argv[1]))["cases"][0]["results"] if x["analysis"] == "region"][0]
+dnf = r["formula"]["stable"]
+def val(p, x, y):
+    return eval(p.replace("re(z)", "F(%d,%d)" % (x.numerator, x.denominator))
+                 .replace("im(z)", "F(%d,%d)" % (y.numerator, y.denominator)).replace("^", "**"))
+def holds(c, x, y):
+    p, rel = c.rsplit(" ", 2)[0], c.rsplit(" ", 2)[1]
+    v = val(p, x, y)
+    return {"<": v < 0, "<=": v <= 0, ">": v > 0, ">=": v >= 0, "=": v == 0, "!=": v != 0}[rel]
+rnd = random.Random(15)
+n = 0
+while n < 12:
+    x, y = F(rnd.randint(-24, 40), 8), F(rnd.randint(-24, 24), 8)
+    if val(r["boundary"][0], x, y) == 0: continue
+    s = any(all(holds(c, x, y) for c in conj) for conj in dnf)
+    print("%s+%s*i:%s" % (x, y, "stable" if s else "not"))
+    n += 1
+PY
+); do
+        z=${pt%%:*}; want=${pt##*:}
+        got=$(status_of cases/complex/bdf2-zregion.case --set "z=$z")
+        [ "$got" = stable ] || got=not
+        if [ "$got" = "$want" ]; then nok=$((nok + 1)); else nbad=$((nbad + 1)); echo "  z=$z: formula $want, stability $got"; fi
+    done
+    if [ "$nbad" = 0 ] && [ "$nok" = 12 ]; then ok "region re(z), im(z): BDF2 formula = stability at 12 rational points"
+    else fail "region re(z), im(z) BDF2 formula vs stability: $nbad disagree, $nok agree"; fi
+else
+    ok "skipped region re(z), im(z) checks: no python3"
+fi
