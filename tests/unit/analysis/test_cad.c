@@ -610,6 +610,73 @@ static void test_bad(void **state)
     }
 }
 
+/* ---- region re(z), im(z): the plane of a complex parameter --------------- */
+
+/* forward Euler: stable iff |1 + z| < 1, i.e. (x + 1)^2 + y^2 < 1 (by hand) */
+static int euler_z_stable(const fmpq_t x, const fmpq_t y)
+{
+    fmpq_t t, u;
+    int k;
+    fmpq_init(t); fmpq_init(u);
+    fmpq_add_si(t, x, 1);
+    fmpq_mul(t, t, t);
+    fmpq_mul(u, y, y);
+    fmpq_add(t, t, u);
+    k = fmpq_cmp_si(t, 1) < 0;
+    fmpq_clear(t); fmpq_clear(u);
+    return k;
+}
+
+/* trapezoid: |2 + z| < |2 - z| iff x < 0 (by hand) */
+static int trap_z_stable(const fmpq_t x, const fmpq_t y) { (void) y; return fmpq_sgn(x) < 0; }
+
+static void zregion_check(const char *rel, closed_fn cf)
+{
+    int outcome;
+    json_t *doc = region_of(rel, &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    const json_t *fo = json_object_get(o, "formula");
+    flint_rand_t st;
+    fmpq_t x, y, t;
+    slong i;
+    assert_string_equal(json_string_value(json_array_get(json_object_get(o, "params"), 0)), "re(z)");
+    assert_string_equal(json_string_value(json_array_get(json_object_get(o, "params"), 1)), "im(z)");
+    assert_true(json_is_null(json_object_get(fo, "marginal")));   /* stable / not stable only */
+    flint_randinit(st);
+    fmpq_init(x); fmpq_init(y); fmpq_init(t);
+    for (i = 0; i < 400; i++) {
+        if (i < 300) {
+            rand_q(x, st, -3, 1);
+            rand_q(y, st, -2, 2);
+        } else {
+            /* on the circle |1 + z| = 1: (1 - t^2, 2 t)/(1 + t^2) - (1, 0) (rational points) */
+            rand_q(t, st, -4, 4);
+            fmpq_mul(x, t, t);
+            fmpq_add_si(y, x, 1);
+            fmpq_neg(x, x);
+            fmpq_add_si(x, x, 1);
+            fmpq_div(x, x, y);
+            fmpq_sub_si(x, x, 1);
+            fmpq_mul_si(t, t, 2);
+            fmpq_div(y, t, y);
+        }
+        if (dnf_holds(json_object_get(fo, "stable"), "re(z)", "im(z)", x, y) != cf(x, y)) {
+            char *a = fmpq_get_str(NULL, 10, x), *b = fmpq_get_str(NULL, 10, y);
+            fail_msg("%s: at z = %s + %s i the formula differs from the closed form %d", rel, a, b, cf(x, y));
+        }
+    }
+    fmpq_clear(x); fmpq_clear(y); fmpq_clear(t);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
+static void test_zregion(void **state)
+{
+    (void) state;
+    zregion_check("cases/complex/forward-euler-zregion.case", euler_z_stable);
+    zregion_check("cases/complex/trapezoid-zregion.case", trap_z_stable);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -620,6 +687,7 @@ int main(void)
         cmocka_unit_test(test_qepcad),
         cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
+        cmocka_unit_test(test_zregion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
