@@ -138,7 +138,7 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
     return rc;
 }
 
-int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t cs, slong prec, rs_error_t err)
+int rs_cosim_ext_ball_transition_naive(arb_mat_t M, const rs_cosim_ball_t cs, slong prec, rs_error_t err)
 {
     slong n = cs->n1 + cs->n2, m = cs->m, nw = n + 2 * m, na = 2 * n, np, p, k, r, c;
     slong deg[2];
@@ -291,4 +291,154 @@ int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t cs, slong pr
     arb_clear(f);
     arb_clear(hp);
     return rc;
+}
+
+/* ---- the centred (mean-value) form over a box ------------------------------
+ * The naive ball map above loses every dependency between the entries (two
+ * exponentials, a Jacobian inverse), so its width grows far faster than the
+ * box.  Mean-value form over the entries e of (A1, A2, B1, B2, C) whose balls
+ * are wide (the box's parameters; H and exact constants stay balls in every
+ * evaluation): for each model x in b, with x' = x but the wide entries at
+ * their midpoints, T(x) - T(x') = int_0^1 sum_e dT/de(x' + t (x - x'))
+ * (x_e - mid_e) dt, so T(b) is enclosed in T(mid) + sum_e dT/de(b) [+-rad_e].
+ * dT/de(b) comes from the same engine on the dual-number model: X + eps Y ->
+ * [[X, Y], [0, X]] is an algebra homomorphism (products, inverses, solves,
+ * exponentials and the Phi integrals all commute with it), so the map of the
+ * 2n-state / 2m-variable model with A'' = [[A, dA], [0, A]] (per subsystem),
+ * B'' = [[B, dB], [0, B]], C'' = [[C, dC], [0, C]] is [[T, dT], [0, T]] with
+ * the states reordered per subsystem; dX = the unit matrix at e. */
+
+/* position of global state j (n = n1 + n2) in the dual model: top or bottom copy */
+static slong dual_top(const rs_cosim_ball_t b, slong j) { return j < b->n1 ? j : 2 * b->n1 + (j - b->n1); }
+static slong dual_bot(const rs_cosim_ball_t b, slong j) { return j < b->n1 ? b->n1 + j : 2 * b->n1 + b->n2 + (j - b->n1); }
+
+/* the entry e of b: 0 A1, 1 A2, 2 B1, 3 B2, 4 C */
+static arb_mat_struct *ball_mat(const rs_cosim_ball_t b, int which)
+{
+    const arb_mat_struct *t[5] = {b->A1, b->A2, b->B1, b->B2, b->C};
+    return (arb_mat_struct *) t[which];
+}
+
+/* X'' = [[X, dX], [0, X]] with dX the unit matrix at (er, ec) when dir, else 0 */
+static void dual_block(arb_mat_t X2, const arb_mat_t X, int dir, slong er, slong ec)
+{
+    slong R = arb_mat_nrows(X), C = arb_mat_ncols(X), r, c;
+    for (r = 0; r < R; r++)
+        for (c = 0; c < C; c++) {
+            arb_set(arb_mat_entry(X2, r, c), arb_mat_entry(X, r, c));
+            arb_set(arb_mat_entry(X2, R + r, C + c), arb_mat_entry(X, r, c));
+        }
+    if (dir) arb_one(arb_mat_entry(X2, er, C + ec));
+}
+
+/* d = the derivative of the map of b with respect to entry (which, er, ec), over b */
+static int ext_dual(arb_mat_t d, const rs_cosim_ball_t b, int which, slong er, slong ec, slong prec, rs_error_t err)
+{
+    slong n = b->n1 + b->n2, m = b->m, r, c;
+    rs_cosim_ball_t b2;
+    arb_mat_t M2;
+    int rc;
+    rs_cosim_ball_init(b2);
+    rs_cosim_ball_set_dims(b2, 2 * b->n1, 2 * b->n2, 2 * m, b->method, b->order);
+    rs_cosim_ball_set_ext(b2, b->ext, b->alpha_T);
+    arb_set(b2->H, b->H);
+    dual_block(b2->A1, b->A1, which == 0, er, ec);
+    dual_block(b2->A2, b->A2, which == 1, er, ec);
+    dual_block(b2->B1, b->B1, which == 2, er, ec);
+    dual_block(b2->B2, b->B2, which == 3, er, ec);
+    /* C'' columns in the per-subsystem order of the states */
+    for (r = 0; r < m; r++)
+        for (c = 0; c < n; c++) {
+            arb_set(arb_mat_entry(b2->C, r, dual_top(b, c)), arb_mat_entry(b->C, r, c));
+            arb_set(arb_mat_entry(b2->C, m + r, dual_bot(b, c)), arb_mat_entry(b->C, r, c));
+        }
+    if (which == 4) arb_one(arb_mat_entry(b2->C, er, dual_bot(b, ec)));
+    arb_mat_init(M2, 2 * n, 2 * n);
+    rc = rs_cosim_ext_ball_transition_naive(M2, b2, prec, err);
+    if (rc == RS_OK)
+        for (r = 0; r < n; r++)
+            for (c = 0; c < n; c++) arb_set(arb_mat_entry(d, r, c), arb_mat_entry(M2, dual_top(b, r), dual_bot(b, c)));
+    arb_mat_clear(M2);
+    rs_cosim_ball_clear(b2);
+    return rc;
+}
+
+/* a box coordinate: an entry wider than half the working precision (exact
+ * constants rounded to prec are not, and stay balls in every evaluation) */
+static int is_wide(const arb_t x, slong prec)
+{
+    return !mag_is_zero(arb_radref(x)) && arb_rel_accuracy_bits(x) < prec / 2;
+}
+
+int rs_cosim_ext_ball_transition_centred(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err)
+{
+    slong n = b->n1 + b->n2, r, c, i, j, nd = 0;
+    rs_cosim_ball_t bm;
+    arb_mat_t D;
+    arb_t dev;
+    int which, rc;
+    if (b->ext == RS_COSIM_EXT_NONE || arb_mat_nrows(M) != n || arb_mat_ncols(M) != n)
+        return rs_cosim_ext_ball_transition_naive(M, b, prec, err);   /* its input error */
+    /* the midpoint model: the wide entries at their midpoints */
+    rs_cosim_ball_init(bm);
+    rs_cosim_ball_set_dims(bm, b->n1, b->n2, b->m, b->method, b->order);
+    rs_cosim_ball_set_ext(bm, b->ext, b->alpha_T);
+    arb_set(bm->H, b->H);
+    for (which = 0; which < 5; which++) {
+        arb_mat_struct *X = ball_mat(b, which), *Y = ball_mat(bm, which);
+        for (i = 0; i < arb_mat_nrows(X); i++)
+            for (j = 0; j < arb_mat_ncols(X); j++) {
+                arb_set(arb_mat_entry(Y, i, j), arb_mat_entry(X, i, j));
+                if (is_wide(arb_mat_entry(X, i, j), prec)) {
+                    mag_zero(arb_radref(arb_mat_entry(Y, i, j)));
+                    nd++;
+                }
+            }
+    }
+    rc = rs_cosim_ext_ball_transition_naive(M, bm, prec, err);
+    arb_mat_init(D, n, n);
+    arb_init(dev);
+    for (which = 0; which < 5 && rc == RS_OK && nd > 0; which++) {
+        arb_mat_struct *X = ball_mat(b, which);
+        for (i = 0; i < arb_mat_nrows(X) && rc == RS_OK; i++)
+            for (j = 0; j < arb_mat_ncols(X) && rc == RS_OK; j++) {
+                if (!is_wide(arb_mat_entry(X, i, j), prec)) continue;
+                rc = ext_dual(D, b, which, i, j, prec, err);
+                /* + dT/de(b) [+- rad_e] */
+                arb_zero(dev);
+                mag_set(arb_radref(dev), arb_radref(arb_mat_entry(X, i, j)));
+                for (r = 0; r < n && rc == RS_OK; r++)
+                    for (c = 0; c < n; c++)
+                        arb_addmul(arb_mat_entry(M, r, c), arb_mat_entry(D, r, c), dev, prec);
+            }
+    }
+    arb_clear(dev);
+    arb_mat_clear(D);
+    rs_cosim_ball_clear(bm);
+    return rc;
+}
+
+int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err)
+{
+    slong n = b->n1 + b->n2, r, c;
+    arb_mat_t Mc;
+    rs_error_t e2;
+    int rc = rs_cosim_ext_ball_transition_naive(M, b, prec, err);
+    if (rc != RS_OK) return rc;
+    /* both enclose the same maps: keep their intersection (the centred form
+     * failing, e.g. a Jacobian not certified over the box, leaves the naive) */
+    arb_mat_init(Mc, n, n);
+    rs_error_init(e2);
+    if (rs_cosim_ext_ball_transition_centred(Mc, b, prec, e2) == RS_OK)
+        for (r = 0; r < n; r++)
+            for (c = 0; c < n; c++) {
+                arb_ptr x = arb_mat_entry(M, r, c);
+                arb_t t;
+                arb_init(t);
+                if (arb_intersection(t, x, arb_mat_entry(Mc, r, c), prec)) arb_swap(x, t);
+                arb_clear(t);
+            }
+    arb_mat_clear(Mc);
+    rs_error_clear(e2);
+    return RS_OK;
 }

@@ -50,5 +50,13 @@ int rs_cosim_ext_transition(arb_mat_t M, const rs_cosim_t cs, slong prec, rs_err
  * the 2m x 2m Jacobian is not certified invertible over the ball (then a
  * smaller box may certify), RS_ERR_MATH when it is exactly singular. */
 int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
+/* Its two enclosures, which rs_cosim_ext_ball_transition intersects
+ * entrywise.  _naive: one ball evaluation of the map (every dependency
+ * lost: wide once the box is).  _centred: the mean-value form T(mid) +
+ * sum_e dT/de(b) [+- rad_e] over the entries e of A1, A2, B1, B2, C wider
+ * than prec/2 bits (the box's coordinates), dT/de from the dual-number
+ * model (cosim_ext.c); width ~ |dT/de| rad_e + O(rad^2).  Same contract. */
+int rs_cosim_ext_ball_transition_naive(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
+int rs_cosim_ext_ball_transition_centred(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
 
 #endif

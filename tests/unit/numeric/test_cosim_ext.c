@@ -386,6 +386,162 @@ static void test_ball_encloses(void **state)
         }
 }
 
+/* sum of the radii of M's entries (the width the region's certificates see) */
+static double rad_sum(const arb_mat_t M)
+{
+    double w = 0;
+    slong r, c;
+    for (r = 0; r < arb_mat_nrows(M); r++)
+        for (c = 0; c < arb_mat_ncols(M); c++) w += mag_get_d(arb_radref(arb_mat_entry(M, r, c)));
+    return w;
+}
+
+/* entry k already among the first k axes */
+static int picked(const int *which, const slong *er, const slong *ec, int k)
+{
+    int i;
+    for (i = 0; i < k; i++)
+        if (which[i] == which[k] && er[i] == er[k] && ec[i] == ec[k]) return 1;
+    return 0;
+}
+
+/* The centred form (rs_cosim_ext_ball_transition_centred) over random
+ * boxes: 1 to 3 random nonzero entries of (A1, A2, B1, B2, C) of the three
+ * models each vary over [v - w v, v + w v].  The exact point maps
+ * (rs_cosim_ext_transition, which the loop test checks against the literal
+ * time loop) at the corners and random rational points of the box must lie
+ * in the centred, the naive and the intersected enclosures (the mean-value
+ * theorem: nothing to derive by hand); on small boxes (w = 2^-20) the
+ * centred enclosure must be narrower than the naive one (the point of the
+ * form: its excess is O(w^2), the naive one's grows with the exponentials'
+ * squarings and the Jacobian inverse). */
+static void test_centred_encloses(void **state)
+{
+    flint_rand_t rs;
+    int model, K, ext, trial, cnt = 0, narrower = 0, small_cnt = 0;
+    rs_error_t err;
+    (void) state;
+    flint_randinit(rs);
+    for (model = 0; model < 3; model++)
+        for (K = 0; K <= 2; K++)
+            for (ext = RS_COSIM_EXT_D; ext <= RS_COSIM_EXT_I; ext++)
+                for (trial = 0; trial < 2; trial++) {
+                    rs_cosim_t cs, pt;
+                    rs_cosim_ball_t b;
+                    arb_mat_t Mn, Mc, Mi, P;
+                    fmpq_t w, t;
+                    fmpq_mat_struct *mats[5];
+                    int which[3], nax = 1 + (int) n_randint(rs, 3), i, k, ok = 1;
+                    slong er[3], ec[3], n;
+                    rs_cosim_init(cs, 2, 2);
+                    set_model(cs, model, err);
+                    cs->method = RS_COSIM_IMPLICIT;
+                    cs->order = K;
+                    cs->ext = ext;
+                    if (ext == RS_COSIM_EXT_I && trial == 1) fmpq_set_si(cs->alpha_T, 3, 4);
+                    n = cs->n1 + cs->n2;
+                    arb_mat_init(P, n, n);
+                    if (rs_cosim_ext_transition(P, cs, 128, err) != RS_OK) {
+                        /* D, K = 0 on FD: refused at the point already (test_loop) */
+                        arb_mat_clear(P);
+                        rs_cosim_clear(cs);
+                        continue;
+                    }
+                    mats[0] = cs->A1; mats[1] = cs->A2; mats[2] = cs->B1; mats[3] = cs->B2; mats[4] = cs->C;
+                    for (k = 0; k < nax; k++) {
+                        do {
+                            which[k] = (int) n_randint(rs, 5);
+                            if (fmpq_mat_nrows(mats[which[k]]) == 0 || fmpq_mat_ncols(mats[which[k]]) == 0) continue;
+                            er[k] = (slong) n_randint(rs, (ulong) fmpq_mat_nrows(mats[which[k]]));
+                            ec[k] = (slong) n_randint(rs, (ulong) fmpq_mat_ncols(mats[which[k]]));
+                        } while (fmpq_mat_nrows(mats[which[k]]) == 0 || fmpq_mat_ncols(mats[which[k]]) == 0
+                                 || fmpq_is_zero(fmpq_mat_entry(mats[which[k]], er[k], ec[k]))
+                                 || picked(which, er, ec, k));
+                    }
+                    fmpq_init(w);
+                    fmpq_init(t);
+                    /* relative half-width 2^-20 (small) or 1/50 */
+                    if (trial == 0) fmpq_set_si(w, 1, 1 << 20);
+                    else fmpq_set_si(w, 1, 50);
+                    rs_cosim_ball_init(b);
+                    rs_cosim_ball_set(b, cs, cs->B1, cs->B2, cs->C, cs->m, 128);
+                    rs_cosim_ball_set_ext(b, ext, cs->alpha_T);
+                    {
+                        arb_mat_struct *bm[5] = {b->A1, b->A2, b->B1, b->B2, b->C};
+                        for (k = 0; k < nax; k++) {
+                            arb_t lo, hi;
+                            arb_init(lo);
+                            arb_init(hi);
+                            fmpq_mul(t, fmpq_mat_entry(mats[which[k]], er[k], ec[k]), w);
+                            fmpq_abs(t, t);
+                            fmpq_sub(t, fmpq_mat_entry(mats[which[k]], er[k], ec[k]), t);
+                            arb_set_fmpq(lo, t, 128);
+                            fmpq_mul(t, fmpq_mat_entry(mats[which[k]], er[k], ec[k]), w);
+                            fmpq_abs(t, t);
+                            fmpq_add(t, fmpq_mat_entry(mats[which[k]], er[k], ec[k]), t);
+                            arb_set_fmpq(hi, t, 128);
+                            arb_union(arb_mat_entry(bm[which[k]], er[k], ec[k]), lo, hi, 128);
+                            arb_clear(lo);
+                            arb_clear(hi);
+                        }
+                    }
+                    arb_mat_init(Mn, n, n);
+                    arb_mat_init(Mc, n, n);
+                    arb_mat_init(Mi, n, n);
+                    if (rs_cosim_ext_ball_transition_naive(Mn, b, 128, err) != RS_OK
+                        || rs_cosim_ext_ball_transition_centred(Mc, b, 128, err) != RS_OK
+                        || rs_cosim_ext_ball_transition(Mi, b, 128, err) != RS_OK)
+                        ok = 0;   /* the wide box: the Jacobian not certified over it (allowed) */
+                    if (!ok && trial == 0) fail_msg("model %d K %d ext %d: small box refused: %s", model, K, ext, err->msg);
+                    /* 8 points: the corners of the first axis, then random rationals in the box */
+                    for (i = 0; ok && i < 8; i++) {
+                        rs_cosim_init(pt, 2, 2);
+                        set_model(pt, model, err);
+                        pt->method = RS_COSIM_IMPLICIT;
+                        pt->order = K;
+                        pt->ext = ext;
+                        fmpq_set(pt->alpha_T, cs->alpha_T);
+                        {
+                            fmpq_mat_struct *pm[5] = {pt->A1, pt->A2, pt->B1, pt->B2, pt->C};
+                            for (k = 0; k < nax; k++) {
+                                fmpq *e = fmpq_mat_entry(pm[which[k]], er[k], ec[k]);
+                                /* e (1 + s w), s in [-1, 1] */
+                                if (i < 2) fmpq_set_si(t, i == 0 ? -1 : 1, 1);
+                                else fmpq_set_si(t, (slong) n_randint(rs, 2001) - 1000, 1000);
+                                fmpq_mul(t, t, w);
+                                fmpq_add_si(t, t, 1);
+                                fmpq_mul(e, e, t);
+                            }
+                        }
+                        assert_int_equal(rs_cosim_ext_transition(P, pt, 128, err), RS_OK);
+                        if (!arb_mat_contains(Mc, P)) fail_msg("model %d K %d ext %d: centred misses point %d", model, K, ext, i);
+                        if (!arb_mat_contains(Mn, P)) fail_msg("model %d K %d ext %d: naive misses point %d", model, K, ext, i);
+                        if (!arb_mat_contains(Mi, P)) fail_msg("model %d K %d ext %d: intersection misses point %d", model, K, ext, i);
+                        rs_cosim_clear(pt);
+                        cnt++;
+                    }
+                    if (ok && trial == 0) {
+                        small_cnt++;
+                        if (rad_sum(Mc) < rad_sum(Mn)) narrower++;
+                        else print_message("model %d K %d ext %d: centred %g naive %g\n", model, K, ext, rad_sum(Mc), rad_sum(Mn));
+                        assert_true(rad_sum(Mi) <= rad_sum(Mn));
+                    }
+                    arb_mat_clear(Mn);
+                    arb_mat_clear(Mc);
+                    arb_mat_clear(Mi);
+                    arb_mat_clear(P);
+                    fmpq_clear(w);
+                    fmpq_clear(t);
+                    rs_cosim_ball_clear(b);
+                    rs_cosim_clear(cs);
+                }
+    flint_randclear(rs);
+    /* every small box is narrower centred */
+    assert_true(small_cnt >= 15);
+    assert_int_equal(narrower, small_cnt);
+    assert_true(cnt >= 200);
+}
+
 /* growth per macro step of the literal loop (steps 100..400) */
 static double loop_growth(const loop_t *L)
 {
@@ -521,6 +677,7 @@ int main(void)
         cmocka_unit_test(test_in_phase_mode),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_ball_encloses),
+        cmocka_unit_test(test_centred_encloses),
         cmocka_unit_test(test_region_vs_loop),
         cmocka_unit_test(test_claims_vs_loop),
     };
