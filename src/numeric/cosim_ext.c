@@ -418,13 +418,27 @@ int rs_cosim_ext_ball_transition_centred(arb_mat_t M, const rs_cosim_ball_t b, s
     return rc;
 }
 
+/* the number of wide entries of b (the box's coordinates) */
+static slong count_wide(const rs_cosim_ball_t b, slong prec)
+{
+    slong nd = 0, i, j;
+    int which;
+    for (which = 0; which < 5; which++) {
+        arb_mat_struct *X = ball_mat(b, which);
+        for (i = 0; i < arb_mat_nrows(X); i++)
+            for (j = 0; j < arb_mat_ncols(X); j++) nd += is_wide(arb_mat_entry(X, i, j), prec);
+    }
+    return nd;
+}
+
 int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err)
 {
     slong n = b->n1 + b->n2, r, c;
     arb_mat_t Mc;
     rs_error_t e2;
     int rc = rs_cosim_ext_ball_transition_naive(M, b, prec, err);
-    if (rc != RS_OK) return rc;
+    /* a point model (rs_cosim_ext_transition): nothing to centre */
+    if (rc != RS_OK || count_wide(b, prec) == 0) return rc;
     /* both enclose the same maps: keep their intersection (the centred form
      * failing, e.g. a Jacobian not certified over the box, leaves the naive) */
     arb_mat_init(Mc, n, n);
