@@ -440,19 +440,22 @@ int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong pre
     /* a point model (rs_cosim_ext_transition): nothing to centre */
     if (rc != RS_OK || count_wide(b, prec) == 0) return rc;
     /* both enclose the same maps: keep their intersection (the centred form
-     * failing, e.g. a Jacobian not certified over the box, leaves the naive) */
+     * failing, e.g. a Jacobian not certified over the box, leaves the naive);
+     * disjoint enclosures mean one of the two is wrong */
     arb_mat_init(Mc, n, n);
     rs_error_init(e2);
     if (rs_cosim_ext_ball_transition_centred(Mc, b, prec, e2) == RS_OK)
-        for (r = 0; r < n; r++)
-            for (c = 0; c < n; c++) {
+        for (r = 0; r < n && rc == RS_OK; r++)
+            for (c = 0; c < n && rc == RS_OK; c++) {
                 arb_ptr x = arb_mat_entry(M, r, c);
                 arb_t t;
                 arb_init(t);
                 if (arb_intersection(t, x, arb_mat_entry(Mc, r, c), prec)) arb_swap(x, t);
+                else rc = rs_error_set(err, RS_ERR_INCONSISTENT, "cosim: the naive and the centred enclosures of "
+                                       "the extension's box map are disjoint at entry (%ld, %ld)", (long) r, (long) c);
                 arb_clear(t);
             }
     arb_mat_clear(Mc);
     rs_error_clear(e2);
-    return RS_OK;
+    return rc;
 }

@@ -55,7 +55,9 @@ int rs_cosim_ext_ball_transition(arb_mat_t M, const rs_cosim_ball_t b, slong pre
  * lost: wide once the box is).  _centred: the mean-value form T(mid) +
  * sum_e dT/de(b) [+- rad_e] over the entries e of A1, A2, B1, B2, C wider
  * than prec/2 bits (the box's coordinates), dT/de from the dual-number
- * model (cosim_ext.c); width ~ |dT/de| rad_e + O(rad^2).  Same contract. */
+ * model (cosim_ext.c); width ~ |dT/de| rad_e + O(rad^2).  Same contract;
+ * rs_cosim_ext_ball_transition returns RS_ERR_INCONSISTENT if the two are
+ * disjoint somewhere (one of them is wrong). */
 int rs_cosim_ext_ball_transition_naive(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
 int rs_cosim_ext_ball_transition_centred(arb_mat_t M, const rs_cosim_ball_t b, slong prec, rs_error_t err);
 
