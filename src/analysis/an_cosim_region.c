@@ -322,6 +322,8 @@ static int box_verdict(box_ctx_t *X, const fmpq *lo, const fmpq *hi)
     ball_at(b, X, lo, hi);
     arb_mat_init(M, rs_cosim_ball_dim(b), rs_cosim_ball_dim(b));
     if (rs_cosim_ball_transition(M, b, X->prec, e) == RS_OK) v = rs_cosim_ball_stein(M, X->prec);
+    else if (e->code == RS_ERR_INCONSISTENT && X->run->err->code == RS_OK)   /* two enclosures disjoint: exit 3 */
+        rs_error_set(X->run->err, RS_ERR_INCONSISTENT, "%s", e->msg);
     arb_mat_clear(M);
     rs_cosim_ball_clear(b);
     return v;
@@ -461,6 +463,7 @@ int rs_an_cosim_region(rs_run_t *run, const rs_an_req_t *req)
             if (seg[i].v >= 0) continue;
             if ((r = rs_budget_check(run->err, "the certified region")) != RS_OK) break;
             seg[i].v = box_verdict(&X, seg[i].lo, seg[i].hi);
+            if (run->err->code != RS_OK) { r = run->err->code; break; }
             if (seg[i].v == RS_COSIM_BALL_UNDECIDED) nundec++;
         }
         if (r != RS_OK || nundec == 0 || nundec > REGION_MAX_UNDECIDED) break;
@@ -718,6 +721,7 @@ int rs_an_cosim_claim(rs_run_t *run, const rs_an_req_t *req)
         fmpq_t wd, wmax;
         if ((r = rs_budget_check(run->err, "the claim")) != RS_OK) break;
         v = box_verdict(&X, lo[k], hi[k]);
+        if (run->err->code != RS_OK) { r = run->err->code; break; }
         done++;
         if (v == want) {
             _fmpq_vec_clear(lo[k], d);
