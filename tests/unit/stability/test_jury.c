@@ -4,6 +4,7 @@
 #include <flint/fmpz_poly.h>
 #include "recstab/jury.h"
 #include "recstab/rootcount.h"
+#include "recstab/routh.h"
 
 
 /* Same closed forms as test_rootcount.c (roots worked out there):
@@ -198,6 +199,81 @@ static void test_zero_input(void **state)
     fmpz_poly_clear(p);
 }
 
+/* Degree 65-200 (the exact-division table, rows not made primitive above
+ * degree 64).  Independent routes: (1) the classical table with every row
+ * made primitive, f_{k+1} = prim(f_k(0) f_k - lc(f_k) f_k*), computed here;
+ * each stored row must be a positive multiple of it (Rouche needs no more);
+ * (2) the count of rs_routh_int_count (Routh on the bilinear transform, a
+ * different algorithm on a different polynomial). */
+static void test_high_degree_property(void **state)
+{
+    fmpz_poly_t p, f, fr, t, a, b;
+    fmpz_t c;
+    flint_rand_t st;
+    rs_jury_t j;
+    rs_rootcount_t rc;
+    rs_error_t err;
+    slong it, k, checked = 0;
+    (void) state;
+    fmpz_poly_init(p); fmpz_poly_init(f); fmpz_poly_init(fr); fmpz_poly_init(t);
+    fmpz_poly_init(a); fmpz_poly_init(b);
+    fmpz_init(c);
+    flint_randinit(st);
+    for (it = 0; it < 8; it++) {
+        slong d = 65 + (it * 135) / 7;
+        do
+            fmpz_poly_randtest(p, st, d + 1, 4 + 12 * (it % 3));
+        while (fmpz_poly_degree(p) != d || fmpz_is_zero(p->coeffs));
+        rs_jury_init(j);
+        rs_error_init(err);
+        assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+        if (j->table_regular) {
+            fmpz_poly_set(f, p);
+            for (k = 1; k < j->nrows; k++) {
+                slong len = fmpz_poly_length(f);
+                fmpz_poly_reverse(fr, f, len);
+                fmpz_poly_scalar_mul_fmpz(t, f, f->coeffs + 0);
+                fmpz_poly_scalar_submul_fmpz(t, fr, f->coeffs + len - 1);
+                fmpz_poly_content(c, t);
+                fmpz_poly_scalar_divexact_fmpz(f, t, c);
+                fmpz_poly_content(c, j->rows + k);
+                assert_true(fmpz_sgn(c) > 0);
+                fmpz_poly_scalar_divexact_fmpz(a, j->rows + k, c);
+                assert_true(fmpz_poly_equal(a, f));
+            }
+            assert_int_equal(fmpz_poly_degree(f), 0);
+            checked++;
+        }
+        rs_rootcount_init(rc);
+        if (rs_routh_int_count(rc, p, err) == RS_OK) {
+            assert_int_equal(rc->inside, j->count->inside);
+            assert_int_equal(rc->outside, j->count->outside);
+        }
+        rs_rootcount_clear(rc);
+        rs_jury_clear(j);
+    }
+    assert_true(checked >= 6);
+    /* closed form: (2l - 1)^40 (l - 3)^30, roots 1/2 (x40) inside, 3 (x30)
+     * outside, none on the circle */
+    fmpz_poly_set_coeff_si(a, 0, -1); fmpz_poly_set_coeff_si(a, 1, 2);
+    fmpz_poly_truncate(a, 2);
+    fmpz_poly_zero(b);
+    fmpz_poly_set_coeff_si(b, 0, -3); fmpz_poly_set_coeff_si(b, 1, 1);
+    fmpz_poly_pow(a, a, 40);
+    fmpz_poly_pow(b, b, 30);
+    fmpz_poly_mul(p, a, b);
+    rs_jury_init(j);
+    assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 40);
+    assert_int_equal(j->count->on, 0);
+    assert_int_equal(j->count->outside, 30);
+    rs_jury_clear(j);
+    flint_randclear(st);
+    fmpz_clear(c);
+    fmpz_poly_clear(p); fmpz_poly_clear(f); fmpz_poly_clear(fr); fmpz_poly_clear(t);
+    fmpz_poly_clear(a); fmpz_poly_clear(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -207,6 +283,7 @@ int main(void)
         cmocka_unit_test(test_singular),
         cmocka_unit_test(test_extreme_coefficients),
         cmocka_unit_test(test_zero_input),
+        cmocka_unit_test(test_high_degree_property),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
