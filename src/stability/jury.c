@@ -50,7 +50,7 @@ static void jury_push_row(rs_jury_t j, const fmpz_poly_t f)
  *
  * Rouche only needs each row up to a positive factor.  The unreduced rows
  * F_{k+1} = F_k(0) F_k - lc(F_k) F_k* grow like 2^k; as in Bareiss'
- * elimination F_{k+1} is divisible by F_{k-1}(0) (k >= 1; Sylvester's
+ * elimination F_{k+1} is divisible by F_{k-1}(0) (k >= 2; Sylvester's
  * identity on the Schur-Cohn determinants), which keeps the entries at the
  * size of those determinants without taking a gcd per coefficient (the
  * contents cost most of the 20 s at degree 500 with 60-bit coefficients).
@@ -61,7 +61,8 @@ static int jury_table(rs_jury_t j, const fmpz_poly_t p, slong *inside)
     fmpz_poly_t f, fr, t;
     fmpz_t c, prev, r;
     slong k, in;
-    int regular = 1, have_prev = 0;
+    int regular = 1;
+    slong steps = 0;
 
     fmpz_poly_init(f);
     fmpz_poly_init(fr);
@@ -73,7 +74,7 @@ static int jury_table(rs_jury_t j, const fmpz_poly_t p, slong *inside)
     jury_push_row(j, f);
     while (fmpz_poly_degree(f) > 0) {
         slong len = fmpz_poly_length(f), i;
-        int exact = have_prev && !fmpz_is_zero(prev) && !fmpz_is_pm1(prev);
+        int exact = steps >= 2 && !fmpz_is_zero(prev) && !fmpz_is_pm1(prev);
         fmpz_poly_reverse(fr, f, len);
         fmpz_poly_scalar_mul_fmpz(t, f, f->coeffs + 0);
         fmpz_poly_scalar_submul_fmpz(t, fr, f->coeffs + len - 1);
@@ -100,7 +101,7 @@ static int jury_table(rs_jury_t j, const fmpz_poly_t p, slong *inside)
             fmpz_poly_scalar_divexact_fmpz(f, t, r);
         }
         fmpz_swap(prev, c);
-        have_prev = 1;
+        steps++;
         jury_push_row(j, f);
         /* the reported row is primitive (the recursion keeps f as is) up to
          * degree 64; above, the gcds would cost as much as the table
