@@ -668,38 +668,50 @@ static int read_word(char *w, size_t len, const char **t)
     return k > 0;
 }
 
+/* One axis of the complex plane, `re(NAME)` (axis 0) or `im(NAME)` (axis 1,
+ * the same parameter), at *t; *t moves past the ')'.  expect: the message
+ * when the text is not of that form. */
+static int cx_axis_read(rs_run_t *run, const rs_request_t *q, const char **tp, int axis, slong *param,
+                        const char *expect)
+{
+    const char *t = *tp, *close;
+    char name[80];
+    size_t nl;
+    while (*t == ' ' || *t == '\t') t++;
+    if (strncmp(t, axis == 0 ? "re(" : "im(", 3) != 0 || (close = strchr(t + 3, ')')) == NULL || close == t + 3
+        || (size_t) (close - t - 3) >= sizeof name)
+        return rs_req_error(run, q, t, RS_ERR_INPUT, expect, t);
+    nl = (size_t) (close - t - 3);
+    memcpy(name, t + 3, nl);
+    name[nl] = '\0';
+    if (axis == 0) {
+        *param = rs_case_param_index(run->c, name);
+        if (*param < 0) return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "'%s' is not a parameter", name);
+    } else if (strcmp(name, run->c->params[*param].name) != 0) {
+        return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "expected the same parameter in re(...) and im(...), "
+                            "found '%s'", name);
+    }
+    *tp = close + 1;
+    return RS_OK;
+}
+
 int rs_an_complex_map_parse(rs_an_req_t *req, rs_run_t *run)
 {
     const rs_request_t *q = req->q;
     const char *t = req->rest;
     cmap_req_t *m = calloc(1, sizeof *m);
-    char name[80], w[128];
+    char w[128];
     int axis;
     fmpq_init(m->lo[0]); fmpq_init(m->lo[1]); fmpq_init(m->hi[0]); fmpq_init(m->hi[1]);
     req->u.sweep = m;
     m->param = -1;
     for (axis = 0; axis < 2; axis++) {
-        const char *kw = axis == 0 ? "re(" : "im(", *at, *close;
-        size_t nl;
         rs_error_t e2;
         int k;
-        while (*t == ' ' || *t == '\t') t++;
-        at = t;
-        if (strncmp(t, kw, 3) != 0 || (close = strchr(t + 3, ')')) == NULL || close == t + 3
-            || (size_t) (close - t - 3) >= sizeof name)
-            return rs_req_error(run, q, at, RS_ERR_INPUT, axis == 0 ? "expected re(NAME) A B N, im(NAME) C D M, found '%s'"
-                                : "expected im(NAME) C D M after the comma, found '%s'", at);
-        nl = (size_t) (close - t - 3);
-        memcpy(name, t + 3, nl);
-        name[nl] = '\0';
-        if (axis == 0) {
-            m->param = rs_case_param_index(run->c, name);
-            if (m->param < 0) return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "'%s' is not a parameter", name);
-        } else if (strcmp(name, run->c->params[m->param].name) != 0) {
-            return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "expected the same parameter in re(...) and im(...), "
-                                "found '%s'", name);
-        }
-        t = close + 1;
+        int r = cx_axis_read(run, q, &t, axis, &m->param,
+                             axis == 0 ? "expected re(NAME) A B N, im(NAME) C D M, found '%s'"
+                                       : "expected im(NAME) C D M after the comma, found '%s'");
+        if (r != RS_OK) return r;
         for (k = 0; k < 3; k++) {
             const char *wat;
             while (*t == ' ' || *t == '\t') t++;
@@ -989,30 +1001,15 @@ int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run)
     const rs_request_t *q = req->q;
     const char *t = req->rest;
     cmap_req_t *m = calloc(1, sizeof *m);
-    char name[80];
     int axis;
     fmpq_init(m->lo[0]); fmpq_init(m->lo[1]); fmpq_init(m->hi[0]); fmpq_init(m->hi[1]);
     req->u.sweep = m;
     m->param = -1;
     for (axis = 0; axis < 2; axis++) {
-        const char *kw = axis == 0 ? "re(" : "im(", *close;
-        size_t nl;
-        while (*t == ' ' || *t == '\t') t++;
-        if (strncmp(t, kw, 3) != 0 || (close = strchr(t + 3, ')')) == NULL || close == t + 3
-            || (size_t) (close - t - 3) >= sizeof name)
-            return rs_req_error(run, q, t, RS_ERR_INPUT, axis == 0 ? "expected region re(NAME), im(NAME), found '%s'"
-                                : "expected im(NAME) after the comma, found '%s'", t);
-        nl = (size_t) (close - t - 3);
-        memcpy(name, t + 3, nl);
-        name[nl] = '\0';
-        if (axis == 0) {
-            m->param = rs_case_param_index(run->c, name);
-            if (m->param < 0) return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "'%s' is not a parameter", name);
-        } else if (strcmp(name, run->c->params[m->param].name) != 0) {
-            return rs_req_error(run, q, t + 3, RS_ERR_INPUT, "expected the same parameter in re(...) and im(...), "
-                                "found '%s'", name);
-        }
-        t = close + 1;
+        int r = cx_axis_read(run, q, &t, axis, &m->param,
+                             axis == 0 ? "expected region re(NAME), im(NAME), found '%s'"
+                                       : "expected im(NAME) after the comma, found '%s'");
+        if (r != RS_OK) return r;
         while (*t == ' ' || *t == '\t') t++;
         if (axis == 0) {
             if (*t != ',') return rs_req_error(run, q, t, RS_ERR_INPUT, "expected ', im(NAME)', found '%s'", t);
