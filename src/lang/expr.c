@@ -634,16 +634,22 @@ int rs_expr_eval_const_complex(fmpq_t re, fmpq_t im, const rs_expr_t *e, const r
     return r;
 }
 
+/* a source over the string s alone (no file, line 1) */
+static void src_of_string(rs_src_t *src, const char *s)
+{
+    memset(src, 0, sizeof *src);
+    src->file = "";
+    src->text = s;
+    src->line = 1;
+    src->col = 1;
+}
+
 int rs_expr_parse_complex(fmpq_t re, fmpq_t im, const char *s, rs_error_t err)
 {
     rs_src_t src;
     rs_expr_t *e = NULL;
     int r;
-    memset(&src, 0, sizeof src);
-    src.file = "";
-    src.text = s;
-    src.line = 1;
-    src.col = 1;
+    src_of_string(&src, s);
     r = rs_expr_parse_all(&e, &src, err);
     if (r == RS_OK)
         r = rs_expr_eval_const_complex(re, im, e, &src, err);
@@ -656,11 +662,7 @@ int rs_expr_parse_number(fmpq_t q, const char *s, rs_error_t err)
     rs_src_t src;
     rs_expr_t *e = NULL;
     int r;
-    memset(&src, 0, sizeof src);
-    src.file = "";
-    src.text = s;
-    src.line = 1;
-    src.col = 1;
+    src_of_string(&src, s);
     r = rs_expr_parse_all(&e, &src, err);
     if (r == RS_OK)
         r = rs_expr_eval_const(q, e, &src, err);
