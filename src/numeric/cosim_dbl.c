@@ -198,9 +198,23 @@ int rs_dbl_set_fmpq(double *mid, double *rad, const fmpq_t x)
     return isfinite(*mid) && isfinite(*rad);
 }
 
+/* one zeroed block for the midpoints and radii of A1, A2, B, C (n1, n2, m set) */
+static void dbl_alloc(rs_cosim_dbl_t d)
+{
+    slong n1 = d->n1, n2 = d->n2, n = n1 + n2, m = d->m, tot = 2 * (n1 * n1 + n2 * n2 + 2 * n * m);
+    d->A1m = flint_calloc(tot > 0 ? tot : 1, sizeof(double));
+    d->A1r = d->A1m + n1 * n1;
+    d->A2m = d->A1r + n1 * n1;
+    d->A2r = d->A2m + n2 * n2;
+    d->Bm = d->A2r + n2 * n2;
+    d->Br = d->Bm + n * m;
+    d->Cm = d->Br + n * m;
+    d->Cr = d->Cm + n * m;
+}
+
 int rs_cosim_dbl_set_dims(rs_cosim_dbl_t d, slong n1, slong n2, slong m, int method, slong order, rs_error_t err)
 {
-    slong n = n1 + n2, tot, j, k;
+    slong j, k;
     fmpq_mat_t L;
     int rc;
     if (order < 0 || order > RS_COSIM_MAX_ORDER || n1 < 1 || n2 < 1 || m < 0)
@@ -211,15 +225,7 @@ int rs_cosim_dbl_set_dims(rs_cosim_dbl_t d, slong n1, slong n2, slong m, int met
     d->m = m;
     d->method = method;
     d->order = order;
-    tot = 2 * (n1 * n1 + n2 * n2 + 2 * n * m);
-    d->A1m = flint_calloc(tot > 0 ? tot : 1, sizeof(double));
-    d->A1r = d->A1m + n1 * n1;
-    d->A2m = d->A1r + n1 * n1;
-    d->A2r = d->A2m + n2 * n2;
-    d->Bm = d->A2r + n2 * n2;
-    d->Br = d->Bm + n * m;
-    d->Cm = d->Br + n * m;
-    d->Cr = d->Cm + n * m;
+    dbl_alloc(d);
     d->Hm = 1;
     d->Hr = 0;
     fmpq_mat_init(L, order + 1, order + 1);
@@ -234,17 +240,9 @@ int rs_cosim_dbl_set_dims(rs_cosim_dbl_t d, slong n1, slong n2, slong m, int met
 
 void rs_cosim_dbl_set_like(rs_cosim_dbl_t d, const rs_cosim_dbl_t src)
 {
-    slong n1 = src->n1, n2 = src->n2, n = n1 + n2, m = src->m, tot = 2 * (n1 * n1 + n2 * n2 + 2 * n * m);
     rs_cosim_dbl_clear(d);
     *d = *src;
-    d->A1m = flint_calloc(tot > 0 ? tot : 1, sizeof(double));
-    d->A1r = d->A1m + n1 * n1;
-    d->A2m = d->A1r + n1 * n1;
-    d->A2r = d->A2m + n2 * n2;
-    d->Bm = d->A2r + n2 * n2;
-    d->Br = d->Bm + n * m;
-    d->Cm = d->Br + n * m;
-    d->Cr = d->Cm + n * m;
+    dbl_alloc(d);
 }
 
 static void set_block(double *Mm, double *Mr, const fmpq_mat_t X)
