@@ -6,6 +6,7 @@
 #include <string.h>
 #include <math.h>
 #include <flint/fmpz_poly_factor.h>
+#include <fmpq_vec.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/positivity.h"

@@ -5,6 +5,7 @@
 #include <arb.h>
 #include <acb.h>
 #include <arb_fmpz_poly.h>
+#include <math.h>
 #include "analysis/registry.h"
 #include "util/polyfmt.h"
 

@@ -9,6 +9,8 @@
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>
+#include <arb_poly.h>
+#include <fmpq_vec.h>
 #include "analysis/registry.h"
 #include "analysis/an_region.h"
 #include "recstab/bilinear.h"

@@ -35,6 +35,7 @@
 #include <flint/fmpq_mpoly.h>
 #include <arb_fmpz_poly.h>
 #include <gsl/gsl_poly.h>
+#include <fmpq_vec.h>
 #include "analysis/an_region.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"

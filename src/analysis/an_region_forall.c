@@ -11,6 +11,8 @@
  * claim machinery (a re-checked certificate, or an exact counterexample). */
 #include <stdlib.h>
 #include <string.h>
+#include <fmpz_vec.h>
+#include <ulong_extras.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <ctype.h>
+#include <fmpq_vec.h>
+#include <fmpz_vec.h>
 #include "analysis/impl.h"
 #include "analysis/registry.h"
 #include "util/polyfmt.h"

@@ -2,6 +2,7 @@
  * look-ups, and the command line's additions (--set, --analyse). */
 #include <stdio.h>
 #include <string.h>
+#include <fmpq_vec.h>
 #include "parse.h"
 
 void rs_case_init(rs_case_t c)

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fmpq_vec.h>
 #include "lower/builder.h"
 #include "lower/lower.h"
 #include "lower/methods.h"

@@ -4,6 +4,7 @@
  * realizations are computed. */
 #include <string.h>
 #include <flint/fmpq_mat.h>
+#include <fmpq_vec.h>
 #include "lower/methods.h"
 
 void rs_tableau_init(rs_tableau_t t, slong s)

@@ -7,6 +7,7 @@
 #include <acb_poly.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
+#include <fmpq.h>
 #include "recstab/ladder.h"
 
 /* the rs_status_t values (rootcount.h, a stage the numeric one does not include) */

@@ -6,11 +6,11 @@
  * ball engine (acb_poly and matrix polynomials), and the GSL baseline. */
 #include <math.h>
 #include <string.h>
+#include <mpfr.h> /* before Arb's headers: FLINT 3 declares arf_get_mpfr only after mpfr.h */
 #include <flint/fmpz_poly_factor.h>
 #include <arb_fmpz_poly.h>
 #include <acb_mat.h>
 #include <stdio.h>
-#include <mpfr.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_poly.h>
 #include "recstab/budget.h"

@@ -4,6 +4,7 @@
  * no rational function is ever formed. */
 #include "recstab/bilinear.h"
 #include "recstab/budget.h"
+#include <fmpz.h>
 
 void rs_bilinear_fmpz_poly(fmpz_poly_t q, const fmpz_poly_t p)
 {

@@ -18,6 +18,8 @@
 #include <string.h>
 #include <flint/fmpz_mat.h>
 #include <flint/fmpz_poly_factor.h>
+#include <fmpz.h>
+#include <fmpz_vec.h>
 #include "recstab/budget.h"
 #include "recstab/jury.h"
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <flint/fmpq.h>
 #include <flint/fmpz_vec.h>
+#include <ulong_extras.h>
 #include "recstab/positivity.h"
 
 /* Classify term i with its coefficient sign replaced by +1: 2 if the

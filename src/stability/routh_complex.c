@@ -15,6 +15,7 @@
  * Algorithms in Real Algebraic Geometry, Theorem 2.58); that sequence is
  * the Routh array of the complex polynomial. */
 #include <flint/fmpz_poly_factor.h>
+#include <fmpq.h>
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
 

@@ -65,7 +65,7 @@ done
 ls "$P"/lib/python3*/dist-packages/recstab/__init__.py >/dev/null 2>&1 && ok "installed the Python module" || fail "Python module not installed"
 if cc $SANFLAGS $(PKG_CONFIG_PATH="$P/lib/pkgconfig" pkg-config --cflags recstab) -o "$T/one_call" examples/one_call.c \
       $(PKG_CONFIG_PATH="$P/lib/pkgconfig" pkg-config --libs recstab) 2>"$T/cc.log" \
-   && LD_LIBRARY_PATH="$P/lib" "$T/one_call" >/dev/null 2>&1; then
+   && LD_LIBRARY_PATH="$P/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$T/one_call" >/dev/null 2>&1; then
     ok "an example links with pkg-config --cflags --libs recstab and runs"
 else fail "pkg-config link"; cat "$T/cc.log"; fi
 if LD_LIBRARY_PATH="$P/lib" ldd "$T/one_call" 2>/dev/null | grep -q "$P/lib/librecstab.so.0"; then ok "the program uses the installed librecstab.so.0"

@@ -7,8 +7,8 @@
 # The expected flags follow from the layouts: FLINT 3 installs every header
 # in PREFIX/include/flint/ and one library libflint; Debian's libflint-dev
 # has /usr/include/flint/, libflint-arb-dev /usr/include/arb.h and
-# libflint-arb.so.  Only the choice is tested: no FLINT 3 is installed here
-# (Debian bookworm has FLINT 2.9 only) to build against.
+# libflint-arb.so.  Only the choice is tested here; `make check-flint3`
+# (tests/flint3.sh, run by CI) builds and tests against a real FLINT 3.
 # Prints "ok ..." or "FAIL ..." per check.
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT

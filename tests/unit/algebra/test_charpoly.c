@@ -4,6 +4,7 @@
 #include "testutil.h"
 #include <string.h>
 #include <flint/fmpq_mat.h>
+#include <fmpq_vec.h>
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"

@@ -17,6 +17,7 @@
 #include <complex.h>
 #include <arb_fmpz_poly.h>
 #include <flint/fmpq_poly.h>
+#include <acb.h>
 #include "recstab/analysis.h"
 
 #define PI_D 3.14159265358979323846

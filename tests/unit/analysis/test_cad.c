@@ -16,6 +16,7 @@
 #include <flint/fmpq_mpoly.h>
 #include <flint/fmpq_poly.h>
 #include <arf.h>
+#include <fmpq_vec.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <flint/fmpq_poly.h>
 #include <arb_fmpz_poly.h>
+#include <acb.h>
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
 #include "recstab/analysis.h"

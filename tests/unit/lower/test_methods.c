@@ -16,6 +16,7 @@
 #include "testutil.h"
 #include <string.h>
 #include <acb_poly.h>
+#include <fmpq_vec.h>
 #include "recstab/model.h"
 #include "recstab/charpoly.h"
 #include "lower/methods.h"

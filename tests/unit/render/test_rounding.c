@@ -18,6 +18,7 @@
 #include <string.h>
 #include <stdlib.h>
 #include <arb.h>
+#include <ulong_extras.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 #include "recstab/radius.h"

@@ -13,6 +13,7 @@
 #include <flint/fmpq_mat.h>
 #include <acb.h>
 #include <arb_fmpz_poly.h>
+#include <fmpz_vec.h>
 #include "recstab/hurwitz.h"
 
 /* ------------------------------------------------------------------ */

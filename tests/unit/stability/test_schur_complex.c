@@ -4,6 +4,7 @@
  * exact Gaussian-rational coefficients), an independent root finder. */
 #include "testutil.h"
 #include <acb_poly.h>
+#include <fmpz_vec.h>
 #include "stability/schur_complex.h"
 
 /* p from integer pairs (re, im) per coefficient, low degree first */

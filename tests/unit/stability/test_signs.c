@@ -13,6 +13,7 @@
 #include <string.h>
 #include <flint/fmpz_poly.h>
 #include <flint/fmpq_poly.h>
+#include <fmpq_vec.h>
 #include "recstab/hurwitz.h"
 #include "recstab/bilinear.h"
 #include "recstab/routh.h"
