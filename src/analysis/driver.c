@@ -141,14 +141,17 @@ static void rowsets_swap(rowsets_t *rs, json_t *top)
 
 /* The first count rows of the spooled table (its header line first) as
  * rows of the document, each on its own line at indent + 2. */
-static void spool_rows(FILE *f, FILE *sp, slong count, size_t indent)
+static void spool_rows(FILE *f, FILE *sp, slong count, size_t indent, const json_t *real)
 {
     char *line = NULL, *exact = NULL;
     size_t cap = 0;
     ssize_t n;
     slong r = 0;
     if (sp == NULL || fseek(sp, 0, SEEK_SET) != 0) return;
-    if ((n = getline(&line, &cap, sp)) > 0) exact = rs_sweep_exact_columns(line, (size_t) n - (line[n - 1] == '\n'));
+    if ((n = getline(&line, &cap, sp)) > 0) {
+        exact = rs_sweep_exact_columns(line, (size_t) n - (line[n - 1] == '\n'));
+        if (real != NULL) rs_sweep_flag_real(exact, real);
+    }
     while (r < count && (n = getline(&line, &cap, sp)) > 0) {
         json_t *row = rs_sweep_json_row(line, (size_t) n - (line[n - 1] == '\n'), exact);
         char *text = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
@@ -211,7 +214,8 @@ int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id),
                 json_t *sp = rs.arr[id];
                 if (spool != NULL)
                     spool_rows(f, spool(arg, (slong) json_integer_value(json_object_get(sp, "spool"))),
-                               (slong) json_integer_value(json_object_get(sp, "count")), indent);
+                               (slong) json_integer_value(json_object_get(sp, "count")), indent,
+                               json_object_get(sp, "real"));
                 fputc(']', f);
                 p = strchr(q + 1, '"') + 1;
                 continue;

@@ -157,10 +157,12 @@ static json_t *cell_json(const char *s, size_t n, int exact)
     if (n >= sizeof tmp) return json_stringn(s, n);
     memcpy(tmp, s, n);
     tmp[n] = '\0';
-    if (exact) return json_string(tmp);
+    if (exact == 1) return json_string(tmp);
     d = strtod(tmp, &end);
     if (*end != '\0' || !isfinite(d)) return json_string(tmp);
-    if (strpbrk(tmp, ".eE") == NULL && fabs(d) < 9007199254740992.0) return json_integer((json_int_t) d);
+    /* a column of reals (RS_SWEEP_COL_REAL): "-2" is -2.0 as its other cells */
+    if (exact != RS_SWEEP_COL_REAL && strpbrk(tmp, ".eE") == NULL && fabs(d) < 9007199254740992.0)
+        return json_integer((json_int_t) d);
     return json_real(d);
 }
 
@@ -190,14 +192,29 @@ json_t *rs_sweep_json_row(const char *p, size_t n, const char *exact)
         const char *e = c;
         if (!past && exact[k] == 2) past = 1;
         while (e < nl && *e != ',') e++;
-        json_array_append_new(row, cell_json(c, (size_t) (e - c), !past && exact[k]));
+        json_array_append_new(row, cell_json(c, (size_t) (e - c), past ? 0 : exact[k]));
         if (e >= nl) break;
         c = e + 1;
     }
     return row;
 }
 
+void rs_sweep_flag_real(char *flags, const json_t *real)
+{
+    size_t k, n = 0;
+    while (flags[n] != 2) n++;
+    for (k = 0; k < json_array_size(real); k++) {
+        json_int_t c = json_integer_value(json_array_get(real, k));
+        if (c >= 0 && (size_t) c < n) flags[c] = RS_SWEEP_COL_REAL;
+    }
+}
+
 void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap)
+{
+    rs_sweep_json_rows_typed(o, key, table, cap, NULL);
+}
+
+void rs_sweep_json_rows_typed(json_t *o, const char *key, const char *table, slong cap, const json_t *real)
 {
     json_t *rows = json_array();
     const char *p = table, *nl;
@@ -208,6 +225,7 @@ void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap
     nl = strchr(p, '\n');
     if (nl != NULL) {
         exact = rs_sweep_exact_columns(p, (size_t) (nl - p));
+        if (real != NULL) rs_sweep_flag_real(exact, real);
         p = nl + 1;
     } else p = "";
     for (; *p; p = nl + 1, nrow++) {
@@ -468,30 +486,31 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
  * the table as soon as it is computed. */
 #define MAP_BLOCK 32768
 
-int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
-                        const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg)
+/* The table's stream: the run's spool (*id) when it has one, else in
+ * memory (*buf, complete once closed); *spooled which. */
+static FILE *table_open(const rs_sweep_options_t *so, slong *id, char **buf, size_t *len, int *spooled)
 {
-    const rs_sweep_axis_t *X = R->axis;
-    const rs_sweep_options_t *so = &run->opt->sweep;
-    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0, b, id = 0;
-    rs_sweep_row_t *rows;
-    json_t *cols = map_columns(R);
-    char what[200], desc[200], *buf = NULL;
-    size_t len = 0;
-    double t_points;
-    tally_t t;
-    rs_engine_t e;
     FILE *f = NULL;
-    int r = RS_OK, spooled;
-    snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
-    snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
-    memset(&t, 0, sizeof t);
-    rs_grid_shard_range(&lo, &hi, npoints, so->shard_index, so->shard_count);
     /* no spool (none asked for, or no temporary file could be made): in memory */
-    if (so->table_spool != NULL) f = so->table_spool(so->table_spool_arg, &id);
-    spooled = f != NULL;
-    if (f == NULL) f = open_memstream(&buf, &len);
-    rows = calloc((size_t) (hi > lo ? (hi - lo < MAP_BLOCK ? hi - lo : MAP_BLOCK) : 1), sizeof(rs_sweep_row_t));
+    if (so->table_spool != NULL) f = so->table_spool(so->table_spool_arg, id);
+    *spooled = f != NULL;
+    if (f == NULL) f = open_memstream(buf, len);
+    return f;
+}
+
+/* Points [lo, hi) computed by m block by block, counted into t, each
+ * block's rows written by put(f, rows, b, bhi, arg) once computed: a
+ * point's error ends the map at the first block that has one (its first
+ * failing point, as when computed at once). */
+static int map_blocks(rs_run_t *run, const rs_request_t *q, const rs_sweep_model_t *m, slong lo, slong hi,
+                      const char *what, const char *desc, FILE *f, tally_t *t, rs_sweep_rows_fn put, void *arg)
+{
+    const rs_sweep_options_t *so = &run->opt->sweep;
+    rs_sweep_row_t *rows = calloc((size_t) (hi > lo ? (hi - lo < MAP_BLOCK ? hi - lo : MAP_BLOCK) : 1),
+                                  sizeof(rs_sweep_row_t));
+    rs_engine_t e;
+    slong b;
+    int r = RS_OK;
     e.point = engine_point;
     e.arg = (void *) m;
     e.serial = m->serial;
@@ -499,19 +518,53 @@ int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     e.progress_arg = so->progress_arg;
     e.what = what;
     e.total = hi - lo;
-    if (r == RS_OK) map_table_header(f, cols);
-    /* block after block: a point's error ends the map at the first block
-     * that has one (its first failing point, as when computed at once) */
     for (b = lo; b < hi && r == RS_OK; b += MAP_BLOCK) {
         slong bhi = hi - b < MAP_BLOCK ? hi : b + MAP_BLOCK;
         e.done0 = b - lo;
         rs_engine_run(rows, sizeof(rs_sweep_row_t), b, bhi, &e);
         r = point_errors(run, q, m, rows, b, bhi - b, desc);
         if (r != RS_OK) break;
-        tally_add(&t, rows, bhi - b);
-        map_table_rows(f, R, xs, rows, b, bhi);
+        tally_add(t, rows, bhi - b);
+        put(f, rows, b, bhi, arg);
     }
     free(rows);
+    return r;
+}
+
+typedef struct {
+    const rs_sweep_request_t *R;
+    const fmpq *const *xs;
+} map_rows_arg_t;
+
+static void map_rows_put(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, void *arg)
+{
+    const map_rows_arg_t *a = arg;
+    map_table_rows(f, a->R, a->xs, rows, lo, hi);
+}
+
+int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
+                        const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg)
+{
+    const rs_sweep_axis_t *X = R->axis;
+    const rs_sweep_options_t *so = &run->opt->sweep;
+    slong npoints = X[0].count * X[1].count, lo = 0, hi = 0, id = 0;
+    json_t *cols = map_columns(R);
+    char what[200], desc[200], *buf = NULL;
+    size_t len = 0;
+    double t_points;
+    tally_t t;
+    map_rows_arg_t ra;
+    FILE *f;
+    int r, spooled;
+    snprintf(what, sizeof what, "map %s,%s", X[0].name, X[1].name);
+    snprintf(desc, sizeof desc, "index = j*%ld + i of %s[i], %s[j]", (long) X[0].count, X[0].name, X[1].name);
+    memset(&t, 0, sizeof t);
+    rs_grid_shard_range(&lo, &hi, npoints, so->shard_index, so->shard_count);
+    f = table_open(so, &id, &buf, &len, &spooled);
+    map_table_header(f, cols);
+    ra.R = R;
+    ra.xs = xs;
+    r = map_blocks(run, q, m, lo, hi, what, desc, f, &t, map_rows_put, &ra);
     t_points = rs_sweep_now() - t0;
     if (r == RS_OK && spooled && (fflush(f) != 0 || ferror(f)))
         r = rs_req_error(run, q, q->text, RS_ERR_IO, "cannot write the map's table to its temporary file: %s",
@@ -527,5 +580,37 @@ int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     }
     json_decref(cols);
     free(buf);
+    return r;
+}
+
+void rs_sweep_table_clear(rs_sweep_table_t *T)
+{
+    free(T->text);
+    T->text = NULL;
+}
+
+int rs_sweep_map_table(rs_sweep_table_t *T, rs_run_t *run, const rs_request_t *q, const rs_sweep_model_t *m,
+                       slong npoints, const char *what, const char *desc, const char *header, rs_sweep_rows_fn put,
+                       void *arg)
+{
+    const rs_sweep_options_t *so = &run->opt->sweep;
+    size_t len = 0;
+    slong id = 0;
+    tally_t t;
+    FILE *f;
+    int r, spooled;
+    memset(T, 0, sizeof *T);
+    memset(&t, 0, sizeof t);
+    T->spool = -1;
+    rs_grid_shard_range(&T->lo, &T->hi, npoints, so->shard_index, so->shard_count);
+    f = table_open(so, &id, &T->text, &len, &spooled);
+    fputs(header, f);
+    r = map_blocks(run, q, m, T->lo, T->hi, what, desc, f, &t, put, arg);
+    if (r == RS_OK && spooled && (fflush(f) != 0 || ferror(f)))
+        r = rs_req_error(run, q, q->text, RS_ERR_IO, "cannot write the map's table to its temporary file: %s",
+                         strerror(errno));
+    if (!spooled) fclose(f);
+    else T->spool = id;
+    memcpy(T->verdicts, t.ver, sizeof T->verdicts);
     return r;
 }

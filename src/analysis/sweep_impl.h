@@ -133,6 +133,15 @@ void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap
  * (no newline) as its JSON array. */
 char *rs_sweep_exact_columns(const char *header, size_t n);
 json_t *rs_sweep_json_row(const char *line, size_t n, const char *exact);
+/* Columns of reals: the flags of rs_sweep_exact_columns with the columns
+ * listed in real (a JSON array of 0-based indices) marked
+ * RS_SWEEP_COL_REAL, whose numeric cells are JSON reals even when written
+ * without a point ("-2": -2.0).  A spooled table's "rows" {"spool": id,
+ * "count": N, "real": [...]} carries them to rs_run_json_dumps_spool;
+ * rs_sweep_json_rows_typed is rs_sweep_json_rows with them. */
+#define RS_SWEEP_COL_REAL 3
+void rs_sweep_flag_real(char *flags, const json_t *real);
+void rs_sweep_json_rows_typed(json_t *o, const char *key, const char *table, slong cap, const json_t *real);
 /* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
 void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
 /* {NAME: value} of the case's set values except keep[] */
@@ -149,6 +158,24 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
 typedef void (*rs_sweep_decorate_fn)(json_t *o, void *arg);
 int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
                         const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg);
+/* A map with its own columns (the z-plane map of an_complex.c) on the same
+ * engine: the run's shard [lo, hi) of npoints points computed by m block
+ * by block (OpenMP, budget, progress; a point's error at the request as in
+ * rs_sweep_compute), header (a CSV line with its newline) then each block
+ * written by put(f, rows, b, bhi, arg) to the run's table spool (spool: its
+ * id, text NULL) or in memory (text, spool -1); verdicts: stable, marginal,
+ * unstable, undefined, singular, undecided. */
+typedef void (*rs_sweep_rows_fn)(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, void *arg);
+typedef struct {
+    slong lo, hi;
+    slong verdicts[6];
+    char *text;
+    slong spool;
+} rs_sweep_table_t;
+int rs_sweep_map_table(rs_sweep_table_t *T, rs_run_t *run, const rs_request_t *q, const rs_sweep_model_t *m,
+                       slong npoints, const char *what, const char *desc, const char *header, rs_sweep_rows_fn put,
+                       void *arg);
+void rs_sweep_table_clear(rs_sweep_table_t *T);
 /* table cells */
 void rs_sweep_put_radius(FILE *f, const rs_sweep_row_t *row);
 void rs_sweep_put_certified(FILE *f, double lo, double hi);

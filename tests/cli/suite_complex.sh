@@ -103,6 +103,59 @@ if grep -q '"locus_table"' "$T/zp.json"; then fail "locus_table left in the JSON
 "$RS" --analyse "map re(q) -2 0 5, im(w) -1 1 5" cases/complex/forward-euler-zplane.case >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "\-\-analyse: expected the same parameter in re(...) and im(...), found 'w'" "$T/err"; then
     ok "map re(q), im(w): exit 2"; else fail "map re/im mismatch: rc=$rc $(cat "$T/err")"; fi
+# the z-plane map on the sweep engine (h-zmap): a char line over Q(i), the
+# point limit of every map instead of a fixed cap, threads and shards
+RZ=cases/complex/rotated-euler-zplane.case
+"$RS" --json "$RZ" | tr -d ' \n' >"$T/rz.json"
+if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T/rz.json" \
+   && grep -q '"cross_check":{"points":25' "$T/rz.json"; then
+    ok "z-plane map of a char line over Q(i): 9 stable, 4 marginal, 12 unstable, 25 cross-checked"
+else fail "char line over Q(i) map: $(grep -o '"verdicts":{[^}]*}' "$T/rz.json")"; fi
+# the same plane point by point: p = lambda - 1 - i q is forward Euler's
+# lambda - 1 - z at z = i q, so the verdict at q = x + i y is forward
+# Euler's at z = -y + i x (the map of forward-euler-zplane.case on the
+# grid turned a quarter)
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json cases/complex/forward-euler-zplane.case >"$T/fe.json" 2>/dev/null
+    "$RS" --json "$RZ" >"$T/rz2.json" 2>/dev/null
+    res=$(python3 - "$T/fe.json" "$T/rz2.json" <<'PY'
+import json, sys
+from fractions import Fraction as F
+def rows(path):
+    r = json.load(open(path))['cases'][0]['results'][0]
+    c = r['columns']
+    return {(F(w[c.index('re(q)_exact')]), F(w[c.index('im(q)_exact')])): w[c.index('verdict')] for w in r['rows']}
+fe, rz = rows(sys.argv[1]), rows(sys.argv[2])
+bad = [k for k in rz if fe.get((-k[1], k[0])) != rz[k]]
+print("ok" if len(rz) == 25 and not bad else "bad %r" % bad[:3])
+PY
+)
+    if [ "$res" = ok ]; then ok "char line over Q(i): every point = forward Euler at z = i q"
+    else fail "char line over Q(i) vs forward Euler: $res"; fi
+else
+    ok "skipped rotation comparison: no python3"
+fi
+# more than the old 2000 points per axis, and the --max-points limit
+printf 'param q\nchar lambda - 1 - q\nanalyse map re(q) -2 0 2001, im(q) 0 0 1\n' >"$T/wide.case"
+"$RS" --json "$T/wide.case" 2>"$T/err" | tr -d ' \n' >"$T/wide.json"
+# lambda = 1 + x on the real axis: stable for -2 < x < 0 (1999 points), marginal at both ends
+if grep -q '"verdicts":{"stable":1999,"marginal":2,"unstable":0,"singular":0}' "$T/wide.json"; then
+    ok "z-plane map of 2001 x 1 points: 1999 stable, 2 marginal"
+else fail "wide z-plane map: $(head -c 200 "$T/err") $(grep -o '"verdicts":{[^}]*}' "$T/wide.json")"; fi
+"$RS" --max-points 100 --analyse "map re(q) -2 0 11, im(q) -1 1 11" cases/complex/forward-euler-zplane.case \
+    >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "has 121 points, more than the limit of 100 points" "$T/err"; then
+    ok "z-plane map: --max-points limit, exit 2"; else fail "z-plane map limit: rc=$rc $(cat "$T/err")"; fi
+# threads and shards: the same rows
+"$RS" --threads 1 --csv "$T/z1.csv" --analyse "map re(q) -3 1 17, im(q) -2 2 13" "$RZ" >/dev/null 2>&1
+"$RS" --threads 2 --csv "$T/z2.csv" --analyse "map re(q) -3 1 17, im(q) -2 2 13" "$RZ" >/dev/null 2>&1
+"$RS" --shard 1/2 --csv "$T/s1.csv" --analyse "map re(q) -3 1 17, im(q) -2 2 13" "$RZ" >/dev/null 2>&1
+"$RS" --shard 2/2 --csv "$T/s2.csv" --analyse "map re(q) -3 1 17, im(q) -2 2 13" "$RZ" >/dev/null 2>&1
+if [ -s "$T/z1.csv" ] && cmp -s "$T/z1.csv" "$T/z2.csv" \
+   && [ "$( (grep -v '^#' "$T/s1.csv"; grep -v '^#' "$T/s2.csv" | tail -n +2) | md5sum)" = "$(grep -v '^#' "$T/z1.csv" | md5sum)" ]; then
+    ok "z-plane map: 1 and 2 threads, 2 shards, the same table"
+else fail "z-plane map threads/shards differ"; fi
+
 # the plot: equal axes and the boundary locus on top (gnuplot only)
 if command -v gnuplot >/dev/null 2>&1; then
     "$RS" --plot "$T/z.svg" --plot-script "$T/z.gp" cases/complex/forward-euler-zplane.case >/dev/null 2>"$T/err"; rc=$?
