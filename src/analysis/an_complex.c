@@ -28,6 +28,7 @@
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
 #include "recstab/radius.h"
+#include "recstab/bilinear.h"
 
 int rs_an_complex_mode(const rs_run_t *run) { return run->c->ncsets > 0; }
 
@@ -1211,6 +1212,120 @@ static int cregion_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void 
     return r;
 }
 
+/* ---- the marginal set: where a root can reach the circle or double ------------ */
+
+/* In Z[x, y, lambda, I, w] (ctx4) i is the variable I, reduced by I^2 = -1
+ * afterwards: the resultants and discriminants of polynomials over
+ * Q(i)[x, y] are those over Z[x, y, I] mapped by I -> i.  (re, im) = f
+ * reduced, moved to ctx3 (x, y, lambda). */
+enum { C4_X = 0, C4_Y = 1, C4_L = 2, C4_I = 3, C4_W = 4 };
+
+static void c4_split(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx4,
+                     const fmpz_mpoly_ctx_t ctx3)
+{
+    slong d = fmpz_mpoly_degree_si(f, C4_I, ctx4), k;
+    slong gen[5] = {0, 1, 2, 2, 2};   /* I and w are gone (degree 0) */
+    fmpz_mpoly_t a, b, t;
+    fmpz_mpoly_init(a, ctx4); fmpz_mpoly_init(b, ctx4); fmpz_mpoly_init(t, ctx4);
+    for (k = 0; k <= d; k++) {
+        ulong e = (ulong) k;
+        slong v = C4_I;
+        fmpz_mpoly_get_coeff_vars_ui(t, f, &v, &e, 1, ctx4);
+        /* I^k = (-1)^(k/2) I^(k mod 2) */
+        if ((k / 2) % 2) fmpz_mpoly_neg(t, t, ctx4);
+        fmpz_mpoly_add(k % 2 ? b : a, k % 2 ? b : a, t, ctx4);
+    }
+    fmpz_mpoly_compose_fmpz_mpoly_gen(re, a, gen, ctx4, ctx3);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(im, b, gen, ctx4, ctx3);
+    fmpz_mpoly_clear(a, ctx4); fmpz_mpoly_clear(b, ctx4); fmpz_mpoly_clear(t, ctx4);
+}
+
+/* The polynomials in (x, y) of p = re + i im whose zero sets contain every
+ * point where the roots' relation to the circle or their multiplicity can
+ * change (into E[0 .. *ne), at most 5, initialised in ctx3):
+ *   Res_w(A, B) where q(i w) = A(w) + i B(w), q the bilinear transform
+ *   (Bilharz): a root on the circle other than -1 is a real common root w;
+ *   Re p(-1), Im p(-1): the root -1 (q's degree drops there);
+ *   Re, Im of disc_lambda(p): a double root.
+ * 0 when Res_w(A, B) vanishes identically (A, B share a factor in w). */
+static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
+                         const fmpz_mpoly_ctx_t ctx3)
+{
+    fmpz_mpoly_ctx_t ctx4;
+    fmpz_mpoly_t P, Q, t, A, B, sub[5];
+    slong up[5] = {C4_X, C4_Y, C4_L, 0, 0}, k;
+    fmpz_t m1;
+    int ok = 1;
+    fmpz_mpoly_ctx_init(ctx4, 5, ORD_LEX);
+    fmpz_mpoly_init(P, ctx4); fmpz_mpoly_init(Q, ctx4); fmpz_mpoly_init(t, ctx4);
+    fmpz_mpoly_init(A, ctx3); fmpz_mpoly_init(B, ctx3);
+    fmpz_init(m1);
+    /* P = re + I im in ctx4 */
+    fmpz_mpoly_compose_fmpz_mpoly_gen(P, re, up, ctx3, ctx4);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(t, im, up, ctx3, ctx4);
+    fmpz_mpoly_gen(Q, C4_I, ctx4);
+    fmpz_mpoly_mul(t, t, Q, ctx4);
+    fmpz_mpoly_add(P, P, t, ctx4);
+    *ne = 0;
+    /* q(s) at s = I w: lambda -> I w after the bilinear map */
+    rs_bilinear_fmpz_mpoly(Q, P, C4_L, ctx4);
+    for (k = 0; k < 5; k++) {
+        fmpz_mpoly_init(sub[k], ctx4);
+        fmpz_mpoly_gen(sub[k], k, ctx4);
+    }
+    fmpz_mpoly_gen(t, C4_W, ctx4);
+    fmpz_mpoly_mul(sub[C4_L], sub[C4_I], t, ctx4);
+    {
+        fmpz_mpoly_struct *vals[5];
+        for (k = 0; k < 5; k++) vals[k] = sub[k];
+        ok = fmpz_mpoly_compose_fmpz_mpoly(t, Q, vals, ctx4, ctx4);
+    }
+    for (k = 0; k < 5; k++) fmpz_mpoly_clear(sub[k], ctx4);
+    if (ok) {
+        /* A + I B with w as the variable: split keeping w (moved to lambda's place) */
+        slong d = fmpz_mpoly_degree_si(t, C4_I, ctx4), j;
+        slong gen[5] = {0, 1, 2, 2, 2};
+        fmpz_mpoly_t a, b, c;
+        fmpz_mpoly_init(a, ctx4); fmpz_mpoly_init(b, ctx4); fmpz_mpoly_init(c, ctx4);
+        for (j = 0; j <= d; j++) {
+            ulong e = (ulong) j;
+            slong v = C4_I;
+            fmpz_mpoly_get_coeff_vars_ui(c, t, &v, &e, 1, ctx4);
+            if ((j / 2) % 2) fmpz_mpoly_neg(c, c, ctx4);
+            fmpz_mpoly_add(j % 2 ? b : a, j % 2 ? b : a, c, ctx4);
+        }
+        gen[C4_W] = 2;   /* w in lambda's place of ctx3 */
+        fmpz_mpoly_compose_fmpz_mpoly_gen(A, a, gen, ctx4, ctx3);
+        fmpz_mpoly_compose_fmpz_mpoly_gen(B, b, gen, ctx4, ctx3);
+        fmpz_mpoly_clear(a, ctx4); fmpz_mpoly_clear(b, ctx4); fmpz_mpoly_clear(c, ctx4);
+        fmpz_mpoly_init(E + 0, ctx3);
+        ok = !fmpz_mpoly_is_zero(A, ctx3) && !fmpz_mpoly_is_zero(B, ctx3)
+             && fmpz_mpoly_resultant(E + 0, A, B, 2, ctx3) && !fmpz_mpoly_is_zero(E + 0, ctx3);
+        *ne = 1;
+    }
+    if (ok) {
+        /* p(-1) */
+        fmpz_set_si(m1, -1);
+        fmpz_mpoly_init(E + 1, ctx3);
+        fmpz_mpoly_init(E + 2, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(E + 1, re, 2, m1, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(E + 2, im, 2, m1, ctx3);
+        *ne = 3;
+        /* disc_lambda(p) */
+        if (fmpz_mpoly_degree_si(P, C4_L, ctx4) >= 2 && fmpz_mpoly_discriminant(t, P, C4_L, ctx4)) {
+            fmpz_mpoly_init(E + 3, ctx3);
+            fmpz_mpoly_init(E + 4, ctx3);
+            c4_split(E + 3, E + 4, t, ctx4, ctx3);
+            *ne = 5;
+        }
+    }
+    fmpz_clear(m1);
+    fmpz_mpoly_clear(A, ctx3); fmpz_mpoly_clear(B, ctx3);
+    fmpz_mpoly_clear(P, ctx4); fmpz_mpoly_clear(Q, ctx4); fmpz_mpoly_clear(t, ctx4);
+    fmpz_mpoly_ctx_clear(ctx4);
+    return ok;
+}
+
 int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -1222,7 +1337,9 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     const rs_scheme_struct *s;
     rs_scheme_struct xs;
     fmpq_poly_struct *C;
-    fmpz_mpoly_t re, im, zr, zi, t, u, x, y;
+    fmpz_mpoly_t re, im, zr, zi, t, u, x, y, N;
+    fmpz_mpoly_struct E[5];
+    slong ne = 0;
     rs_schur_cx_conds_t cc;
     rs_region_cx_t cx;
     cregion_pt_t pt;
@@ -1251,6 +1368,7 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_init(re, xs.zctx); fmpz_mpoly_init(im, xs.zctx); fmpz_mpoly_init(zr, xs.zctx);
     fmpz_mpoly_init(zi, xs.zctx); fmpz_mpoly_init(t, xs.zctx); fmpz_mpoly_init(u, xs.zctx);
     fmpz_mpoly_init(x, xs.zctx); fmpz_mpoly_init(y, xs.zctx);
+    fmpz_mpoly_init(N, xs.zctx);
     fmpz_mpoly_gen(x, 0, xs.zctx);
     fmpz_mpoly_gen(y, 1, xs.zctx);
     fmpz_mpoly_one(zr, xs.zctx);
@@ -1288,6 +1406,17 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
         pt.K = K;
         pt.n = n;
         pt.run = run;
+        memset(&cx, 0, sizeof cx);
+        /* the marginal set: the circle locus beside the conditions, and
+         * p conj(p) for the exact verdicts at algebraic samples */
+        if (zregion_extra(E, &ne, re, im, xs.zctx)) {
+            fmpz_mpoly_mul(N, re, re, xs.zctx);
+            fmpz_mpoly_mul(t, im, im, xs.zctx);
+            fmpz_mpoly_add(N, N, t, xs.zctx);
+            cx.extra = E;
+            cx.nextra = ne;
+            cx.norm = N;
+        }
         cx.s = &xs;
         cx.lead = cc.lead;
         cx.delta = cc.delta;
@@ -1299,6 +1428,8 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
         r = rs_an_region_cad_cx(run, &cx);
     }
     rs_schur_cx_conds_clear(&cc, xs.zctx);
+    for (k = 0; k < ne; k++) fmpz_mpoly_clear(E + k, xs.zctx);
+    fmpz_mpoly_clear(N, xs.zctx);
     for (k = 0; k <= K; k++) fmpq_poly_clear(C + k);
     flint_free(C);
     fmpz_mpoly_clear(re, xs.zctx); fmpz_mpoly_clear(im, xs.zctx); fmpz_mpoly_clear(zr, xs.zctx);

@@ -92,6 +92,15 @@ typedef struct {
     void *arg;
     const char *name;
     json_t *substituted;
+    /* the marginal set (NULL norm: stable / not stable only): extra
+     * polynomials in (x, y) whose zero sets hold every point where a root
+     * reaches the circle or doubles, and norm = p conj(p) in Z[x, y, lambda]
+     * (roots: p's and their conjugates) for exact verdicts at algebraic
+     * samples (its marginal is p's; its unstable is p's or a circle root
+     * of p with its conjugate: left undecided) */
+    const fmpz_mpoly_struct *extra;
+    slong nextra;
+    const fmpz_mpoly_struct *norm;
 } rs_region_cx_t;
 int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx);
 

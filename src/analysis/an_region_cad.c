@@ -80,6 +80,7 @@ typedef struct {
     double blo, bhi;         /* the span of N2 roots seen (for random points) */
     const rs_region_cx_t *cx; /* region re(z), im(z): given conditions, stable / not stable */
     slong nb;                /* length of bounds */
+    slong marginal_undecided; /* complex mode: circle-locus cells norm's verdict leaves open */
 } cad_t;
 
 /* complex mode (region re(z), im(z)): a point's signs of lead and the
@@ -146,7 +147,8 @@ static int cad_point_status(rs_status_t *st, const cad_t *c, fmpq *vals)
     int r;
     if (c->cx != NULL) {
         r = c->cx->status(st, vals + 0, vals + 1, c->cx->arg);
-        if (r == RS_OK && *st != RS_STATUS_STABLE) *st = RS_STATUS_UNSTABLE;
+        if (r == RS_OK && *st != RS_STATUS_STABLE && !(c->cx->norm != NULL && *st == RS_STATUS_MARGINAL))
+            *st = RS_STATUS_UNSTABLE;
         return r;
     }
     rs_rootcount_init(rc);
@@ -164,7 +166,7 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
     int r = cad_point_status(&ps, c, vals);
     if (r != RS_OK) return r;
     *st = cx_status(c, &pt);
-    if (*st != ps) {
+    if ((*st == RS_STATUS_STABLE) != (ps == RS_STATUS_STABLE)) {
         char *a = fmpq_get_str(NULL, 10, vals + 0), *b = fmpq_get_str(NULL, 10, vals + 1);
         c->run->outcome |= RS_OUTCOME_INCONSISTENT;
         r = rs_error_set(c->run->err, RS_ERR_INCONSISTENT, "region re(%s), im(%s): at (%s, %s) the Schur-Cohn "
@@ -173,12 +175,58 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
         flint_free(a);
         flint_free(b);
     }
+    if (r == RS_OK && ps == RS_STATUS_MARGINAL) *st = RS_STATUS_MARGINAL;
     return r;
+}
+
+/* complex mode with the marginal set: a not-stable cell e at the algebraic
+ * sample pt.  Off the circle locus (extra[0] != 0 and p(-1) != 0: no root
+ * on the circle) it is unstable; on it, norm = p conj(p) decides exactly
+ * in the sample's field: marginal (its circle roots simple, none outside)
+ * makes p marginal; unstable leaves p open (a root outside, or p's circle
+ * root beside its conjugate); stable contradicts the signs (exit 3). */
+static void cx_marginal_at(cad_t *c, cell_t *e, const cx_pt_t *pt)
+{
+    const rs_region_cx_t *X = c->cx;
+    const rs_scheme_struct *s = c->s;
+    const fmpz_mpoly_ctx_struct *ctx = s->zctx;
+    rs_status_t nst = RS_STATUS_UNSTABLE;
+    fmpz_mpoly_t t;
+    int dec = 0;
+    if (X->norm == NULL || e->st == RS_STATUS_STABLE) return;
+    if (cx_sign(c, X->extra + 0, pt) != 0
+        && (X->nextra < 3 || cx_sign(c, X->extra + 1, pt) != 0 || cx_sign(c, X->extra + 2, pt) != 0))
+        return;
+    fmpz_mpoly_init(t, ctx);
+    if (pt->g != NULL) {
+        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(X->norm, lv, ctx), j;
+        fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
+        for (j = 0; j <= n; j++) {
+            ulong ex = (ulong) j;
+            fmpq_poly_init(pc + j);
+            fmpz_mpoly_get_coeff_vars_ui(t, X->norm, &lv, &ex, 1, ctx);
+            cad_eval_field(pc + j, c, t, pt->A, pt->B, pt->m);
+        }
+        dec = rs_alg_status_coeffs(&nst, pc, n, pt->g, s);
+        for (j = 0; j <= n; j++) fmpq_poly_clear(pc + j);
+        flint_free(pc);
+    } else if (pt->a0 != NULL) {
+        rs_an_forall_subst(t, X->norm, c->av, pt->a0, ctx);
+        dec = rs_alg_status(&nst, t, c->bv, pt->be, s);
+    } else {
+        rs_an_forall_subst(t, X->norm, c->bv, pt->b0, ctx);
+        dec = rs_alg_status(&nst, t, c->av, pt->al, s);
+    }
+    fmpz_mpoly_clear(t, ctx);
+    if (dec && nst == RS_STATUS_MARGINAL) e->st = RS_STATUS_MARGINAL;
+    else if (dec && nst == RS_STATUS_STABLE) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+    else c->marginal_undecided++;
 }
 
 static const char *cad_st_name(const cad_t *c, rs_status_t st)
 {
-    return c->cx != NULL && st != RS_STATUS_STABLE ? "not_stable" : rs_status_name(st);
+    return c->cx != NULL && st != RS_STATUS_STABLE && !(c->cx->norm != NULL && st == RS_STATUS_MARGINAL)
+           ? "not_stable" : rs_status_name(st);
 }
 
 /* appends h (taken: swapped out) */
@@ -258,6 +306,8 @@ static int cad_critical(cad_t *c)
         /* the given conditions: lead and the Schur-Cohn deltas */
         cad_add_factors(c, c->cx->lead, K_BOUNDARY);
         for (k = 0; k < c->cx->ndelta; k++) cad_add_factors(c, c->cx->delta + k, K_BOUNDARY);
+        /* the marginal set: where a root reaches the circle or doubles */
+        for (k = 0; k < c->cx->nextra && c->cx->norm != NULL; k++) cad_add_factors(c, c->cx->extra + k, K_PROJ);
         return rs_budget_check(c->run->err, "region re(z), im(z) (critical polynomials)");
     }
     fmpz_mpoly_init(sqf, s->zctx);
@@ -458,6 +508,7 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
                 } else if (c->cx != NULL) {
                     cx_pt_t pt = {a0, NULL, NULL, rt, NULL, NULL, NULL, NULL};
                     e->st = cx_status(c, &pt);
+                    cx_marginal_at(c, e, &pt);
                     e->decided = 1;
                 } else if (!fmpz_mpoly_is_zero(pa, s->zctx)) {
                     e->decided = rs_alg_status(&e->st, pa, c->bv, rt, s);
@@ -574,6 +625,7 @@ static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
     if (!e->outside && c->cx != NULL) {
         cx_pt_t pt = {NULL, b0, al, NULL, NULL, NULL, NULL, NULL};
         e->st = cx_status(c, &pt);
+        cx_marginal_at(c, e, &pt);
         dec = 1;
     } else if (!e->outside) {
         rs_an_forall_subst(t, c->v->cp->p, c->bv, b0, s->zctx);
@@ -670,6 +722,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             if (!e->outside && c->cx != NULL) {
                 cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
                 e->st = cx_status(c, &pt);
+                cx_marginal_at(c, e, &pt);
                 e->decided = 1;
             } else if (!e->outside) {
                 for (j = 0; j <= n; j++) {
@@ -1464,11 +1517,12 @@ static int cad_solve(cad_t *c, json_t *substituted)
         int conflict = 0, complete;
         json_t *fo = json_object(), *proj = json_array(), *cv = json_array();
         Fs = cad_formula(&ns, &conflict, c, RS_STATUS_STABLE);
-        /* complex mode: the cells are stable or not (the marginal set is not separated) */
-        Fm = c->cx != NULL ? NULL : cad_formula(&nm, &conflict, c, RS_STATUS_MARGINAL);
-        if (c->cx != NULL) nm = 0;
+        /* complex mode without norm: the cells are stable or not (the marginal set is not separated) */
+        int cxm = c->cx == NULL || c->cx->norm != NULL;
+        Fm = !cxm ? NULL : cad_formula(&nm, &conflict, c, RS_STATUS_MARGINAL);
+        if (!cxm) nm = 0;
         json_object_set_new(fo, "stable", cad_formula_json(c, Fs, ns));
-        json_object_set_new(fo, "marginal", c->cx != NULL ? json_null() : cad_formula_json(c, Fm, nm));
+        json_object_set_new(fo, "marginal", !cxm ? json_null() : cad_formula_json(c, Fm, nm));
         for (k = 0; k < ns; k++) flint_free(Fs[k]);
         for (k = 0; k < nm; k++) flint_free(Fm[k]);
         flint_free(Fs);
@@ -1516,7 +1570,17 @@ static int cad_solve(cad_t *c, json_t *substituted)
             : "cylindrical algebraic decomposition of the plane (Collins): critical polynomials (leading "
             "coefficient, p(1), p(-1), D_{n-1} of the bilinear q, discriminant), their projection onto the "
             "first parameter (leading coefficients, discriminants, resultants), one exact verdict per cell"));
-        if (c->cx != NULL) {
+        if (c->cx != NULL && c->cx->norm != NULL) {
+            json_object_set_new(o, "complex_plane", json_string(c->cx->name));
+            json_object_set_new(o, "marginal_complete", json_boolean(complete && c->marginal_undecided == 0));
+            json_object_set_new(o, "marginal_undecided_cells", json_integer(c->marginal_undecided));
+            json_object_set_new(o, "marginal_note", json_string("marginal: roots on the circle, all simple, the "
+                                "others inside; cells cut also by the circle locus (Res_w(A, B) of q(i w) = A + i B, "
+                                "p(-1)) and the discriminant of p; decided by the point verdict over Q(i) at "
+                                "rational samples, by p conj(p) in the sample's field at algebraic ones (cells where "
+                                "that cannot separate marginal from unstable are left out of the marginal formula "
+                                "and counted in marginal_undecided_cells)"));
+        } else if (c->cx != NULL) {
             json_object_set_new(o, "complex_plane", json_string(c->cx->name));
             json_object_set_new(o, "marginal_note", json_string("region re(z), im(z) separates stable from not "
                                 "stable; the marginal set (roots on the circle) lies on the boundary and is not "

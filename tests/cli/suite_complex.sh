@@ -245,6 +245,17 @@ CASE
     got=$(zregion_stable "$T/trz.case")
     if [ "$got" = "re(z) < 0" ]; then ok "region re(z), im(z): trapezoid Re z < 0"
     else fail "region re(z), im(z) trapezoid: got '$got' ($(head -1 "$T/err"))"; fi
+    # the marginal sets (h-zmap): forward Euler |1 + z| = 1, trapezoid Re z = 0 (by hand, as above)
+    zregion_marginal() { "$RS" --json "$1" 2>"$T/err" | python3 -c '
+import json, sys
+r = [x for x in json.load(sys.stdin)["cases"][0]["results"] if x["analysis"] == "region"][0]
+print(" or ".join(" and ".join(c) for c in r["formula"]["marginal"]), r["marginal_complete"])'; }
+    got=$(zregion_marginal "$T/fez.case")
+    if [ "$got" = "re(z)^2 + 2*re(z) + im(z)^2 = 0 True" ]; then ok "region re(z), im(z): forward Euler marginal |1+z| = 1"
+    else fail "region re(z), im(z) forward Euler marginal: got '$got' ($(head -1 "$T/err"))"; fi
+    got=$(zregion_marginal "$T/trz.case")
+    if [ "$got" = "re(z) = 0 True" ]; then ok "region re(z), im(z): trapezoid marginal Re z = 0"
+    else fail "region re(z), im(z) trapezoid marginal: got '$got' ($(head -1 "$T/err"))"; fi
     # BDF2: the printed boundary vanishes on the boundary locus z = 3/2 - 2 u + u^2/2,
     # u = exp(-i phi) (p(lambda) = (3/2 - z) lambda^2 - 2 lambda + 1/2 at |lambda| = 1),
     # evaluated in floating point at 24 angles (independent of the decomposition)
@@ -297,6 +308,39 @@ PY
     done
     if [ "$nbad" = 0 ] && [ "$nok" = 12 ]; then ok "region re(z), im(z): BDF2 formula = stability at 12 rational points"
     else fail "region re(z), im(z) BDF2 formula vs stability: $nbad disagree, $nok agree"; fi
+    # BDF2's marginal formula on its locus: z = (u - 1)(u - 3)/2 at rational
+    # points u = ((1 - t^2) + 2 t i)/(1 + t^2) of the unit circle.  By hand:
+    # there 3/2 - z = u (4 - u)/2, p(lambda) = (3/2 - z) lambda^2 - 2 lambda
+    # + 1/2 has the root 1/u (on the circle, simple) and, the product of the
+    # roots being 1/(u (4 - u)), the root 1/(4 - u) with |4 - u| >= 3:
+    # inside.  So every such point is marginal:
+    # the formula must hold there and the point verdict must say marginal
+    nbad=0; nok=0
+    for pt in $(python3 - "$T/bz.json" <<'PY'
+import json, sys
+from fractions import Fraction as F
+r = [x for x in json.load(open(sys.argv[1]))["cases"][0]["results"] if x["analysis"] == "region"][0]
+def holds(dnf, x, y):
+    def one(c):
+        p, rel = c.rsplit(" ", 2)[0], c.rsplit(" ", 2)[1]
+        v = eval(p.replace("re(z)", "F(%d,%d)" % (x.numerator, x.denominator))
+                  .replace("im(z)", "F(%d,%d)" % (y.numerator, y.denominator)).replace("^", "**"))
+        return {"<": v < 0, "<=": v <= 0, ">": v > 0, ">=": v >= 0, "=": v == 0, "!=": v != 0}[rel]
+    return any(all(one(c) for c in conj) for conj in dnf)
+for t in [F(0), F(1, 3), F(-1, 2), F(2), F(-3), F(5, 7)]:
+    ur, ui = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+    # (u - 1)(u - 3)/2 = (u^2 - 4 u + 3)/2
+    x, y = (ur * ur - ui * ui - 4 * ur + 3) / 2, (2 * ur * ui - 4 * ui) / 2
+    m = holds(r["formula"]["marginal"], x, y) and not holds(r["formula"]["stable"], x, y)
+    print("%s%s%s*i:%s" % (x, "-" if y < 0 else "+", abs(y), "marginal" if m else "formula-not-marginal"))
+PY
+); do
+        z=${pt%%:*}; want=${pt##*:}
+        got=$(status_of cases/complex/bdf2-zregion.case --set "z=$z")
+        if [ "$want" = marginal ] && [ "$got" = marginal ]; then nok=$((nok + 1)); else nbad=$((nbad + 1)); echo "  z=$z: $want, stability $got"; fi
+    done
+    if [ "$nbad" = 0 ] && [ "$nok" = 6 ]; then ok "region re(z), im(z): BDF2 marginal formula = marginal at 6 points of the locus"
+    else fail "region re(z), im(z) BDF2 marginal: $nbad wrong, $nok right"; fi
 else
     ok "skipped region re(z), im(z) checks: no python3"
 fi

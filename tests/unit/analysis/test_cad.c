@@ -613,8 +613,9 @@ static void test_bad(void **state)
 
 /* ---- region re(z), im(z): the plane of a complex parameter --------------- */
 
-/* forward Euler: stable iff |1 + z| < 1, i.e. (x + 1)^2 + y^2 < 1 (by hand) */
-static int euler_z_stable(const fmpq_t x, const fmpq_t y)
+/* forward Euler: lambda = 1 + z, stable iff |1 + z| < 1, marginal iff
+ * |1 + z| = 1 (one simple root), i.e. (x + 1)^2 + y^2 against 1 (by hand) */
+static int euler_z(const fmpq_t x, const fmpq_t y)
 {
     fmpq_t t, u;
     int k;
@@ -623,14 +624,60 @@ static int euler_z_stable(const fmpq_t x, const fmpq_t y)
     fmpq_mul(t, t, t);
     fmpq_mul(u, y, y);
     fmpq_add(t, t, u);
-    k = fmpq_cmp_si(t, 1) < 0;
+    k = fmpq_cmp_si(t, 1);
     fmpq_clear(t); fmpq_clear(u);
+    return k < 0 ? 2 : (k == 0 ? 1 : 0);
+}
+
+/* trapezoid: |2 + z| < |2 - z| iff x < 0, equal (the root on the circle,
+ * simple) iff x = 0 (by hand) */
+static int trap_z(const fmpq_t x, const fmpq_t y) { (void) y; return fmpq_sgn(x) < 0 ? 2 : (fmpq_is_zero(x) ? 1 : 0); }
+
+/* leapfrog lambda^2 - 2 z lambda - 1: never stable, marginal iff x = 0 and
+ * |y| < 1 (derived in cases/complex/leapfrog-zregion.case) */
+static int leapfrog_z(const fmpq_t x, const fmpq_t y)
+{
+    return fmpq_is_zero(x) && fmpz_cmpabs(fmpq_numref(y), fmpq_denref(y)) < 0 ? 1 : 0;
+}
+
+/* the exact point verdict at z = x + i y (`set z = x+y*i`, stability) */
+static int cx_point_verdict(const char *text, const fmpq_t x, const fmpq_t y)
+{
+    rs_case_t c;
+    rs_error_t err;
+    rs_options_t opt;
+    json_t *doc = NULL;
+    char set[300], *xs = fmpq_get_str(NULL, 10, x), *ys;
+    const char *st;
+    int outcome, k;
+    fmpq_t ay;
+    fmpq_init(ay);
+    fmpq_abs(ay, y);
+    ys = fmpq_get_str(NULL, 10, ay);
+    rs_case_init(c);
+    rs_error_init(err);
+    rs_options_default(&opt);
+    assert_int_equal(rs_case_parse_string(c, "point.case", text, strlen(text), err), RS_OK);
+    rs_case_clear_requests(c);
+    rs_case_add_request(c, "stability", "test", 1, 1);
+    snprintf(set, sizeof set, "z=%s%s%s*i", xs, fmpq_sgn(y) < 0 ? "-" : "+", ys);
+    assert_int_equal(rs_case_set_value(c, set, err), RS_OK);
+    if (rs_analysis_run(&doc, &outcome, c, &opt, err) != RS_OK) fail_msg("point %s: %s", set, err->msg);
+    st = json_string_value(json_object_get(json_array_get(json_object_get(doc, "results"), 0), "status"));
+    assert_non_null(st);
+    k = strcmp(st, "stable") == 0 ? 2 : (strcmp(st, "marginal") == 0 ? 1 : 0);
+    json_decref(doc);
+    rs_case_clear(c);
+    flint_free(xs);
+    flint_free(ys);
+    fmpq_clear(ay);
     return k;
 }
 
-/* trapezoid: |2 + z| < |2 - z| iff x < 0 (by hand) */
-static int trap_z_stable(const fmpq_t x, const fmpq_t y) { (void) y; return fmpq_sgn(x) < 0; }
-
+/* the stable and marginal formulas of region re(z), im(z) against the
+ * closed form cf at 400 rational points: 250 anywhere, 75 on the circle
+ * |1 + z| = 1, 75 on the imaginary axis; the exact point verdict at every
+ * fifth point of the last 150 */
 static void zregion_check(const char *rel, closed_fn cf)
 {
     int outcome;
@@ -638,18 +685,22 @@ static void zregion_check(const char *rel, closed_fn cf)
     const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
     const json_t *fo = json_object_get(o, "formula");
     flint_rand_t st;
-    fmpq_t x, y, t;
-    slong i;
+    fmpq *xs = _fmpq_vec_init(400), *ys = _fmpq_vec_init(400);
+    fmpq_t t;
+    slong i, n = 0;
     assert_string_equal(json_string_value(json_array_get(json_object_get(o, "params"), 0)), "re(z)");
     assert_string_equal(json_string_value(json_array_get(json_object_get(o, "params"), 1)), "im(z)");
-    assert_true(json_is_null(json_object_get(fo, "marginal")));   /* stable / not stable only */
+    assert_true(json_is_array(json_object_get(fo, "marginal")));
+    assert_true(json_is_true(json_object_get(o, "marginal_complete")));
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     flint_randinit(st);
-    fmpq_init(x); fmpq_init(y); fmpq_init(t);
+    fmpq_init(t);
     for (i = 0; i < 400; i++) {
-        if (i < 300) {
+        fmpq *x = xs + i, *y = ys + i;
+        if (i < 250) {
             rand_q(x, st, -3, 1);
             rand_q(y, st, -2, 2);
-        } else {
+        } else if (i < 325) {
             /* on the circle |1 + z| = 1: (1 - t^2, 2 t)/(1 + t^2) - (1, 0) (rational points) */
             rand_q(t, st, -4, 4);
             fmpq_mul(x, t, t);
@@ -660,13 +711,23 @@ static void zregion_check(const char *rel, closed_fn cf)
             fmpq_sub_si(x, x, 1);
             fmpq_mul_si(t, t, 2);
             fmpq_div(y, t, y);
-        }
-        if (dnf_holds(json_object_get(fo, "stable"), "re(z)", "im(z)", x, y) != cf(x, y)) {
-            char *a = fmpq_get_str(NULL, 10, x), *b = fmpq_get_str(NULL, 10, y);
-            fail_msg("%s: at z = %s + %s i the formula differs from the closed form %d", rel, a, b, cf(x, y));
+        } else {
+            /* on the imaginary axis, |y| = 1 now and then */
+            fmpq_zero(x);
+            if (i % 10 == 0) fmpq_set_si(y, i % 20 == 0 ? 1 : -1, 1);
+            else rand_q(y, st, -2, 2);
         }
     }
-    fmpq_clear(x); fmpq_clear(y); fmpq_clear(t);
+    check_points(o, case_text(rel), xs, ys, 400, cf, 0, rel);
+    for (i = 250; i < 400; i += 5, n++)
+        if (cx_point_verdict(case_text(rel), xs + i, ys + i) != cf(xs + i, ys + i)) {
+            char *a = fmpq_get_str(NULL, 10, xs + i), *b = fmpq_get_str(NULL, 10, ys + i);
+            fail_msg("%s: at z = %s + (%s) i the point verdict differs from the closed form", rel, a, b);
+        }
+    assert_int_equal(n, 30);
+    _fmpq_vec_clear(xs, 400);
+    _fmpq_vec_clear(ys, 400);
+    fmpq_clear(t);
     flint_randclear(st);
     json_decref(doc);
 }
@@ -674,8 +735,9 @@ static void zregion_check(const char *rel, closed_fn cf)
 static void test_zregion(void **state)
 {
     (void) state;
-    zregion_check("cases/complex/forward-euler-zregion.case", euler_z_stable);
-    zregion_check("cases/complex/trapezoid-zregion.case", trap_z_stable);
+    zregion_check("cases/complex/forward-euler-zregion.case", euler_z);
+    zregion_check("cases/complex/trapezoid-zregion.case", trap_z);
+    zregion_check("cases/complex/leapfrog-zregion.case", leapfrog_z);
 }
 
 int main(void)
