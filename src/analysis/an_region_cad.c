@@ -1055,7 +1055,10 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
     if (r == RS_OK && agree != tried && complete) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
     json_object_set_new(o, "cross_check", json_pack("{s:I,s:I,s:o,s:s}", "points", (json_int_t) tried,
         "agree", (json_int_t) agree, "disagree_at", bad, "method",
-        c->cx != NULL ? "the stable formula re-parsed from its text and evaluated exactly at random rational points, "
+        c->cx != NULL && c->cx->norm != NULL ? "the stable and marginal formulas re-parsed from their text and "
+        "evaluated exactly at random rational points, against the exact point verdict over Q(i) (Schur-Cohn over "
+        "Q(i) and Bilharz)"
+        : c->cx != NULL ? "the stable formula re-parsed from its text and evaluated exactly at random rational points, "
         "against the exact point verdict over Q(i) (Schur-Cohn over Q(i) and Bilharz)"
         : "the formula re-parsed from its text and evaluated exactly at random rational points of the domain, "
         "against the exact point verdict (Routh and Schur-Cohn counts)"));
