@@ -15,6 +15,7 @@
 #include <gsl/gsl_poly.h>
 #include "recstab/budget.h"
 #include "recstab/radius.h"
+#include "util/dblstr.h"
 
 #define RS_LOG2_10 3.32192809488736234787
 #define RS_RADIUS_MIN_PREC 16
@@ -1220,42 +1221,24 @@ cleanup:
 
 /* Decimal text of sign * 0.D * 10^e (D = the digits, k of them).  Fixed
  * notation when -4 <= e <= k, else d.ddde+X; trim drops trailing zeros
- * (only when the decimal is exact, so that no shown zero is a claim). */
+ * (only when the decimal is exact, so that no shown zero is a claim).
+ * One formatter with the double route (util/dblstr.c). */
 static char *_rs_str_format(int neg, const char *D, slong e, int trim)
 {
-    slong k = (slong) strlen(D), i, len = 0;
-    char *out;
-    if (trim)
-        while (k > 1 && D[k - 1] == '0')
-            k--;
-    out = flint_malloc(k + 48 + (e < 0 ? -e : 0));
-    if (neg)
-        out[len++] = '-';
-    if (e >= -4 && e <= k) {
-        if (e <= 0) {
-            out[len++] = '0';
-            out[len++] = '.';
-            for (i = 0; i < -e; i++)
-                out[len++] = '0';
-            for (i = 0; i < k; i++)
-                out[len++] = D[i];
-        } else {
-            for (i = 0; i < k; i++) {
-                if (i == e)
-                    out[len++] = '.';
-                out[len++] = D[i];
-            }
-        }
-        out[len] = '\0';
-    } else {
-        out[len++] = D[0];
-        if (k > 1)
-            out[len++] = '.';
-        for (i = 1; i < k; i++)
-            out[len++] = D[i];
-        sprintf(out + len, "e%+ld", (long) (e - 1));
-    }
+    slong k = (slong) strlen(D);
+    char *out = flint_malloc(k + 48 + (e < 0 ? -e : 0));
+    rs_dblstr_format(out, neg, D, (long) k, (long) e, trim);
     return out;
+}
+
+/* x as a double when that is exact and of moderate exponent (the double
+ * route of util/dblstr.c applies), else 0 */
+static int _rs_str_dbl(double *d, const arf_t x)
+{
+    if (arf_bits(x) > 53 || arf_cmpabs_2exp_si(x, 1000) >= 0 || arf_cmpabs_2exp_si(x, -1000) <= 0)
+        return 0;
+    *d = arf_get_d(x, ARF_RND_NEAR);   /* exact */
+    return 1;
 }
 
 /* x rounded to n significant decimal digits in direction rnd (MPFR_RNDD,
@@ -1325,6 +1308,16 @@ char *rs_radius_arf_str(const arf_t x, slong n, arf_rnd_t rnd)
             arb_clear(b);
             return s;
         }
+    }
+    {   /* a double: digits by printf, the direction certified exactly
+         * (util/dblstr.c; the same string as below, without MPFR) */
+        double xd;
+        char b[RS_DBLSTR_SIZE];
+        int pos = arf_sgn(x) > 0,
+            dir = m == MPFR_RNDD ? -1 : m == MPFR_RNDU ? 1 : m == MPFR_RNDZ ? (pos ? -1 : 1)
+                : m == MPFR_RNDA ? (pos ? 1 : -1) : 0;
+        if (n <= 17 && _rs_str_dbl(&xd, x) && rs_dblstr_round(b, xd, (int) n, dir) >= 0)
+            return _rs_str_dup(b);
     }
     /* the n-digit decimal is exact iff rounding down and up agree */
     D = _rs_str_digits(&e, &neg, x, n, MPFR_RNDD);
@@ -1404,6 +1397,12 @@ char *rs_radius_interval_str(const arf_t lo, const arf_t hi, slong n)
         return _rs_str_dup("nan");
     if (arf_equal(lo, hi) && (arf_is_zero(lo) || arf_is_inf(lo)))
         return rs_radius_arf_str(lo, n, ARF_RND_NEAR);
+    {   /* doubles: util/dblstr.c (the same string as below, without MPFR) */
+        double a, b;
+        char buf[RS_DBLSTR_SIZE];
+        if (n <= 17 && _rs_str_dbl(&a, lo) && _rs_str_dbl(&b, hi) && rs_dblstr_interval(buf, a, b, (int) n) >= 0)
+            return _rs_str_dup(buf);
+    }
     if (arf_sgn(lo) * arf_sgn(hi) > 0 && !arf_is_inf(lo) && !arf_is_inf(hi) &&
         _rs_str_in_range(lo) && _rs_str_in_range(hi)) {
         k = _rs_str_agree(lo, hi, n);
