@@ -153,11 +153,16 @@ static void spool_rows(FILE *f, FILE *sp, slong count, size_t indent, const json
         if (real != NULL) rs_sweep_flag_real(exact, real);
     }
     while (r < count && (n = getline(&line, &cap, sp)) > 0) {
-        json_t *row = rs_sweep_json_row(line, (size_t) n - (line[n - 1] == '\n'), exact);
-        char *text = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
-        fprintf(f, "%s\n%*s%s", r ? "," : "", (int) indent + 2, "", text ? text : "null");
-        free(text);
-        json_decref(row);
+        size_t len = (size_t) n - (line[n - 1] == '\n');
+        fprintf(f, "%s\n%*s", r ? "," : "", (int) indent + 2, "");
+        /* the row's text directly (the same bytes as the jansson dump) */
+        if (rs_sweep_json_row_put(f, line, len, exact) != 0) {
+            json_t *row = rs_sweep_json_row(line, len, exact);
+            char *text = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
+            fputs(text ? text : "null", f);
+            free(text);
+            json_decref(row);
+        }
         r++;
     }
     if (r > 0) fprintf(f, "\n%*s", (int) indent, "");

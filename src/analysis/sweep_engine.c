@@ -209,6 +209,91 @@ void rs_sweep_flag_real(char *flags, const json_t *real)
     }
 }
 
+/* jansson's text of json_real(d) (jsonp_dtostr, precision 17): "%.17g",
+ * ".0" when neither '.' nor 'e' shows, the exponent without '+' and
+ * leading zeros */
+static size_t put_real(char *out, double d)
+{
+    char b[64], *e;
+    size_t len = (size_t) snprintf(b, sizeof b, "%.17g", d), i, j;
+    if (strchr(b, '.') == NULL && strchr(b, 'e') == NULL) {
+        b[len++] = '.';
+        b[len++] = '0';
+        b[len] = '\0';
+    }
+    e = strchr(b, 'e');
+    if (e != NULL) {
+        i = j = (size_t) (e - b) + 1;
+        if (b[j] == '-') i = ++j;
+        else if (b[j] == '+') j++;
+        while (b[j] == '0') j++;
+        memmove(b + i, b + j, len + 1 - j);
+        len -= j - i;
+    }
+    memcpy(out, b, len);
+    return len;
+}
+
+int rs_sweep_json_row_put(FILE *f, const char *p, size_t n, const char *exact)
+{
+    char stack[2048], *out = stack;
+    const char *c = p, *nl = p + n;
+    size_t len = 0, cap = n + 4, i;
+    int past = exact == NULL, rc = 0;
+    slong k;
+    /* a cell of w bytes prints at most max(w + 2, 32) */
+    for (i = 0; i < n; i++) cap += p[i] == ',' ? 36 : 0;
+    cap += 36;
+    if (cap > sizeof stack) out = malloc(cap);
+    out[len++] = '[';
+    for (k = 0;; k++) {
+        const char *e = c;
+        size_t w;
+        int ex, fl;
+        if (!past && exact[k] == 2) past = 1;
+        fl = past ? 0 : exact[k];
+        ex = fl == 1;
+        while (e < nl && *e != ',') e++;
+        w = (size_t) (e - c);
+        if (k > 0) out[len++] = ',';
+        if (w == 0) {
+            memcpy(out + len, "null", 4);
+            len += 4;
+        } else {
+            char tmp[160], *end;
+            double d = 0;
+            int num = 0;
+            if (w < sizeof tmp && !ex) {
+                memcpy(tmp, c, w);
+                tmp[w] = '\0';
+                d = strtod(tmp, &end);
+                num = *end == '\0' && isfinite(d);
+            }
+            /* a column of reals (RS_SWEEP_COL_REAL) as in cell_json */
+            if (num && fl != RS_SWEEP_COL_REAL && strpbrk(tmp, ".eE") == NULL && fabs(d) < 9007199254740992.0)
+                len += (size_t) snprintf(out + len, 32, "%" JSON_INTEGER_FORMAT, (json_int_t) d);
+            else if (num)
+                len += put_real(out + len, d);
+            else {
+                for (i = 0; i < w; i++)
+                    if ((unsigned char) c[i] < 0x20 || (unsigned char) c[i] >= 0x80 || c[i] == '"' || c[i] == '\\')
+                        rc = -1;
+                if (rc != 0) break;
+                out[len++] = '"';
+                memcpy(out + len, c, w);
+                len += w;
+                out[len++] = '"';
+            }
+        }
+        if (e >= nl) break;
+        c = e + 1;
+    }
+    out[len++] = ']';
+    if (rc == 0) fwrite(out, 1, len, f);
+    if (out != stack) free(out);
+    return rc;
+}
+
 void rs_sweep_json_rows(json_t *o, const char *key, const char *table, slong cap)
 {
     rs_sweep_json_rows_typed(o, key, table, cap, NULL);

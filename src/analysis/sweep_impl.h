@@ -142,6 +142,11 @@ json_t *rs_sweep_json_row(const char *line, size_t n, const char *exact);
 #define RS_SWEEP_COL_REAL 3
 void rs_sweep_flag_real(char *flags, const json_t *real);
 void rs_sweep_json_rows_typed(json_t *o, const char *key, const char *table, slong cap, const json_t *real);
+/* The compact JSON text of rs_sweep_json_row(line, n, exact) (what
+ * json_dumps(JSON_COMPACT) prints for it, byte for byte) written to f
+ * without building the jansson values: 0, or -1 with nothing written when
+ * a text cell would need escaping or a UTF-8 check (then dump the row). */
+int rs_sweep_json_row_put(FILE *f, const char *line, size_t n, const char *exact);
 /* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
 void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
 /* {NAME: value} of the case's set values except keep[] */

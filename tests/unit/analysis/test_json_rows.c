@@ -1,0 +1,113 @@
+/* test_json_rows.c -- the rows of sweeps and maps written as JSON text
+ * directly (rs_sweep_json_row_put, issue 14 part 3) are the bytes jansson
+ * dumps for the same row (rs_sweep_json_row + json_dumps(JSON_COMPACT)):
+ * 20000 random rows of map-like cells (integers, decimals in every printf
+ * form, exponents, inf/nan, verdict words, fractions in NAME_exact columns,
+ * empty and long cells); rows with cells that need JSON escaping are
+ * refused (-1, nothing written).  jansson is the reference. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <cmocka.h>
+#include <jansson.h>
+#include "analysis/sweep_impl.h"
+
+static uint64_t st = 0x243f6a8885a308d3ULL;
+
+static uint64_t rng(void)   /* xorshift64*: reproducible */
+{
+    st ^= st >> 12;
+    st ^= st << 25;
+    st ^= st >> 27;
+    return st * 2685821657736338717ULL;
+}
+
+static double unif(void)
+{
+    return (double) (rng() >> 11) * 0x1p-53;
+}
+
+/* one random cell (no comma, no newline) into c */
+static void cell(char *c, size_t cap)
+{
+    static const char *const words[] = {"stable", "unstable", "undecided", "certified", "fast", "inf", "-inf",
+                                        "nan", "3/59", "-1/2", "0x1A", " 12", "1e400", "12abc", ".5", "5.",
+                                        "-0", "0", "1e5", "1E5", "9007199254740993", "-9007199254740992",
+                                        "+7", "1/3"};
+    double x = (unif() - 0.5) * pow(10.0, (double) ((long) (rng() % 80) - 40));
+    switch (rng() % 10) {
+    case 0: snprintf(c, cap, "%s", words[rng() % (sizeof words / sizeof words[0])]); break;
+    case 1: snprintf(c, cap, "%ld", (long) (rng() % 2000000) - 1000000); break;
+    case 2: snprintf(c, cap, "%.17g", x); break;
+    case 3: snprintf(c, cap, "%.15g", x); break;
+    case 4: snprintf(c, cap, "%.3e", x); break;
+    case 5: snprintf(c, cap, "%g", floor(x)); break;
+    case 6: c[0] = '\0'; break;
+    case 7: snprintf(c, cap, "%.17g", 1.0 + unif() * 1e-12); break;
+    case 8: memset(c, '7', 170); c[170] = '\0'; break;   /* a long cell stays a string */
+    default: snprintf(c, cap, "%.6f", x); break;
+    }
+}
+
+static void test_rows_as_jansson(void **state)
+{
+    const char *header = "index,i,j,acc1,c1,acc1_exact,c1_exact,verdict,code,radius,radius_lower,radius_upper,decided_by";
+    char *exact = rs_sweep_exact_columns(header, strlen(header));
+    char line[4096], c[256];
+    long r, k, ncols;
+    (void) state;
+    for (r = 0; r < 20000; r++) {
+        char *mine = NULL, *ref;
+        size_t mlen = 0;
+        FILE *f;
+        json_t *row;
+        ncols = r % 7 == 0 ? 1 + (long) (rng() % 20) : 13;   /* other widths than the header's too */
+        line[0] = '\0';
+        for (k = 0; k < ncols; k++) {
+            cell(c, sizeof c);
+            if (k) strcat(line, ",");
+            strcat(line, c);
+        }
+        f = open_memstream(&mine, &mlen);
+        assert_int_equal(rs_sweep_json_row_put(f, line, strlen(line), r % 11 == 0 ? NULL : exact), 0);
+        fclose(f);
+        row = rs_sweep_json_row(line, strlen(line), r % 11 == 0 ? NULL : exact);
+        ref = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
+        if (strcmp(mine, ref) != 0) fail_msg("row '%s':\n mine %s\n jansson %s", line, mine, ref);
+        free(ref);
+        free(mine);
+        json_decref(row);
+    }
+    free(exact);
+}
+
+/* cells that need escaping or a UTF-8 check: refused, nothing written */
+static void test_refused(void **state)
+{
+    static const char *const rows[] = {"1,a\"b,2", "1,a\\b", "x\ty", "caf\xc3\xa9"};
+    size_t i;
+    (void) state;
+    for (i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        char *buf = NULL;
+        size_t len = 0;
+        FILE *f = open_memstream(&buf, &len);
+        assert_int_equal(rs_sweep_json_row_put(f, rows[i], strlen(rows[i]), NULL), -1);
+        fclose(f);
+        assert_int_equal(len, 0);
+        free(buf);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rows_as_jansson),
+        cmocka_unit_test(test_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
