@@ -294,17 +294,26 @@ static int cosim_fast_verdict(const rs_cosim_t cs)
     return v;
 }
 
-/* the verdict and the radius cells (bounds rounded outward, 17 digits) */
-static void radius_cells(rs_sweep_row_t *row, const rs_radius_t rr)
+/* the verdict and the radius cells (bounds rounded outward, 17 digits);
+ * the estimate's certified digits are those of rho, or with bounds set
+ * (the interval-double radius: lower and upper are doubles, rho their
+ * 64-bit union ball, a little wider) those of [lower, upper] itself */
+static void radius_cells_of(rs_sweep_row_t *row, const rs_radius_t rr, int bounds)
 {
-    char *rho = rs_radius_arb_str(rr->rho, 17), *lo = rs_radius_str_lower(rr->lower, 17),
-         *hi = rs_radius_str_upper(rr->upper, 17);
+    char *rho = bounds ? rs_radius_interval_str(arb_midref(rr->lower), arb_midref(rr->upper), 17)
+                       : rs_radius_arb_str(rr->rho, 17),
+         *lo = rs_radius_str_lower(rr->lower, 17), *hi = rs_radius_str_upper(rr->upper, 17);
     row->d.verdict = radius_verdict(rr);
     row->d.level = RS_LEVEL_CERTIFIED;
     snprintf(row->cells, sizeof row->cells, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
     flint_free(rho);
     flint_free(lo);
     flint_free(hi);
+}
+
+static void radius_cells(rs_sweep_row_t *row, const rs_radius_t rr)
+{
+    radius_cells_of(row, rr, 0);
 }
 
 /* the interval-double certified radius at grid point idx from the numeric
@@ -349,7 +358,7 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     rs_cosim_t cs;
     rs_radius_t rr, rf;
     slong max_prec = M->run->opt->max_prec < 1024 ? M->run->opt->max_prec : 1024;
-    int fast = RS_SWEEP_UNDECIDED, have_fast = 0, modes = M->R->of == RS_SWEEP_OF_MODES;
+    int fast = RS_SWEEP_UNDECIDED, have_fast = 0, from_dbl = 0, modes = M->R->of == RS_SWEEP_OF_MODES;
     slong c;
     memset(row, 0, sizeof *row);
     row->d.verdict = -1;
@@ -362,9 +371,9 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
      * (cosim_dbl.h, no exact model built); the exact model only where it
      * cannot decide and at every 64th point (the cross-check below) */
     if (M->NF != NULL && M->R->of == RS_SWEEP_OF_RADIUS) {
-        have_fast = cosim_dbl_point(rf, M, idx);
+        have_fast = from_dbl = cosim_dbl_point(rf, M, idx);
         if (have_fast && idx % COSIM_CROSSCHECK_EVERY != 0) {
-            radius_cells(row, rf);
+            radius_cells_of(row, rf, 1);
             rs_radius_clear(rf);
             rs_radius_clear(rr);
             rs_cosim_clear(cs);
@@ -432,7 +441,7 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
         } else
             radius_cells(row, rr);
     }
-    if (row->d.status == RS_OK && have_fast) radius_cells(row, rf);
+    if (row->d.status == RS_OK && have_fast) radius_cells_of(row, rf, from_dbl);
     rs_radius_clear(rf);
     rs_radius_clear(rr);
     rs_cosim_clear(cs);
