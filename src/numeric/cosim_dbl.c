@@ -106,14 +106,17 @@ static int all_finite(const double *x, slong len)
 }
 
 /* (Em, Er) = exp(X) for every X in (Xm, Xr), s x s: scaling so that
- * ||X / 2^j|| <= 1/2, a Taylor polynomial of degree N in Horner form in
- * interval arithmetic, plus the remainder bound on every entry, then j
- * squarings.  0 on overflow / a norm too large. */
+ * ||X / 2^j|| <= 1/2, the Taylor polynomial of degree N in interval
+ * arithmetic, plus the remainder bound on every entry, then j squarings.
+ * The polynomial by Paterson-Stockmeyer: the powers Y^2 .. Y^t (t =
+ * ceil sqrt(N + 1)), blocks B_b = sum_a c_{bt+a} Y^a (c_i = 1/i! as
+ * intervals), Horner in Z = Y^t: t - 1 + N/t products instead of N.
+ * 0 on overflow / a norm too large. */
 static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slong s)
 {
-    slong len = s * s, i, k, N, j = 0;
-    double nu = inorm(Xm, Xr, s, s), sc, term, rem;
-    double *Ym, *Yr, *Pm, *Pr, *Qm, *Qr;
+    slong len = s * s, i, k, N, j = 0, t, a, b, nb;
+    double nu = inorm(Xm, Xr, s, s), sc, term, rem, cm[41], cr[41];
+    double *buf, *Pm, *Pr, *Qm, *Qr, *Bm, *Br, *Wm, *Wr, *Ym[8], *Yr[8];
     int ok = 1;
     if (!isfinite(nu)) return 0;
     while (nu > 0.5) {
@@ -128,31 +131,54 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
     }
     /* remainder of every matrix Y with ||Y|| <= nu: term / (1 - nu / (N + 2)) */
     rem = up_(term / (1.0 - nu / (double) (N + 2)), 6);
-    Ym = flint_malloc(6 * len * sizeof(double));
-    Yr = Ym + len;
-    Pm = Yr + len;
+    for (t = 1; t * t < N + 1; t++) {}
+    /* c_i = 1/i!: the computed quotient within u of the exact one of the
+     * previous interval's midpoint */
+    cm[0] = 1;
+    cr[0] = 0;
+    for (i = 1; i <= N; i++) {
+        cm[i] = cm[i - 1] / (double) i;
+        cr[i] = up_(cr[i - 1] / (double) i + U_ * cm[i], 3);
+    }
+    buf = flint_malloc((2 * (t + 1) + 8) * len * sizeof(double));
+    for (a = 0; a <= t; a++) {
+        Ym[a] = buf + 2 * a * len;
+        Yr[a] = Ym[a] + len;
+    }
+    Pm = buf + 2 * (t + 1) * len;
     Pr = Pm + len;
     Qm = Pr + len;
     Qr = Qm + len;
+    Bm = Qr + len;
+    Br = Bm + len;
+    Wm = Br + len;
+    Wr = Wm + len;
     sc = ldexp(1.0, (int) -j);
     for (i = 0; i < len; i++) {
-        Ym[i] = Xm[i] * sc;
-        Yr[i] = Xr[i] * sc + 2 * ETA_;   /* exact unless subnormal */
+        Ym[1][i] = Xm[i] * sc;
+        Yr[1][i] = Xr[i] * sc + 2 * ETA_;   /* exact unless subnormal */
     }
-    /* P = I; for k = N..1: P = I + Y P / k */
-    for (i = 0; i < len; i++) Pm[i] = Pr[i] = 0;
-    for (i = 0; i < s; i++) Pm[i * s + i] = 1;
-    for (k = N; k >= 1; k--) {
-        imul(Qm, Qr, Ym, Yr, Pm, Pr, s, s, s);
-        for (i = 0; i < len; i++) {
-            double x = Qm[i] / (double) k;
-            Pr[i] = up_(Qr[i] / (double) k + U_ * fabs(x), 3);
-            Pm[i] = x;
+    for (a = 2; a <= t; a++) imul(Ym[a], Yr[a], Ym[a - 1], Yr[a - 1], Ym[1], Yr[1], s, s, s);
+    /* P = B_nb; for b = nb - 1 .. 0: P = P Z + B_b */
+    nb = N / t;
+    for (b = nb; b >= 0; b--) {
+        /* B = sum_{a < t, bt + a <= N} c_{bt+a} Y^a */
+        for (i = 0; i < len; i++) Bm[i] = Br[i] = 0;
+        for (a = 1; a < t && b * t + a <= N; a++) {
+            iscal(Wm, Wr, Ym[a], Yr[a], cm[b * t + a], cr[b * t + a], len);
+            iadd(Bm, Br, Bm, Br, Wm, Wr, len, 1.0);
         }
         for (i = 0; i < s; i++) {
-            double x = Pm[i * s + i] + 1.0;
-            Pr[i * s + i] = up_(Pr[i * s + i] + U_ * fabs(x), 2);
-            Pm[i * s + i] = x;
+            double x = Bm[i * s + i] + cm[b * t];
+            Br[i * s + i] = up_(Br[i * s + i] + cr[b * t] + U_ * fabs(x), 2);
+            Bm[i * s + i] = x;
+        }
+        if (b == nb) {
+            memcpy(Pm, Bm, len * sizeof(double));
+            memcpy(Pr, Br, len * sizeof(double));
+        } else {
+            imul(Qm, Qr, Pm, Pr, Ym[t], Yr[t], s, s, s);
+            iadd(Pm, Pr, Qm, Qr, Bm, Br, len, 1.0);
         }
     }
     for (i = 0; i < len; i++) Pr[i] = up_(Pr[i] + rem, 2);
@@ -164,7 +190,7 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
     memcpy(Em, Pm, len * sizeof(double));
     memcpy(Er, Pr, len * sizeof(double));
     ok = all_finite(Em, len) && all_finite(Er, len);
-    flint_free(Ym);
+    flint_free(buf);
     return ok;
 }
 
