@@ -363,8 +363,6 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     memset(row, 0, sizeof *row);
     row->d.verdict = -1;
     row->inside = row->on = row->outside = -1;
-    rs_cosim_init(cs, 1, 1);
-    rs_radius_init(rr);
     rs_radius_init(rf);
     for (c = 0; c < 3 * RS_SWEEP_MAX_REFS; c++) row->mode_lo[c] = row->mode_hi[c] = NAN;
     /* `of radius`: the interval-double radius from the numeric forms first
@@ -375,11 +373,11 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
         if (have_fast && idx % COSIM_CROSSCHECK_EVERY != 0) {
             radius_cells_of(row, rf, 1);
             rs_radius_clear(rf);
-            rs_radius_clear(rr);
-            rs_cosim_clear(cs);
             return;
         }
     }
+    rs_cosim_init(cs, 1, 1);
+    rs_radius_init(rr);
     row->d.status = cosim_map_build(cs, M, idx, err);
     if (row->d.status == RS_OK && M->R->of == RS_SWEEP_OF_STABILITY) {
         fast = cosim_fast_verdict(cs);

@@ -13,7 +13,6 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
 #include "numeric/cosim_dbl.h"
 
 #define U_ (0x1p-53)
@@ -522,19 +521,73 @@ int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
 
 /* ---- the certified radius ------------------------------------------------ */
 
-/* V (complex point, re/im arrays) = double eigenvectors of T, W ~= V^{-1}
- * (GSL, complex LU); 0 when GSL fails */
-static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double *T, slong dd)
+/* (Wr, Wi) ~= (Vr + i Vi)^{-1}, d x d: Gauss-Jordan with partial pivoting
+ * in complex double (an approximation: the certificate bounds I - W V);
+ * 0 if a pivot vanishes.  A (2 d^2 scratch) is overwritten. */
+static int cinv(double *Wr, double *Wi, const double *Vr, const double *Vi, double *Ar, slong d)
+{
+    double *Ai = Ar + d * d;
+    slong i, j, k, p;
+    memcpy(Ar, Vr, d * d * sizeof(double));
+    memcpy(Ai, Vi, d * d * sizeof(double));
+    for (i = 0; i < d * d; i++) Wr[i] = Wi[i] = 0;
+    for (i = 0; i < d; i++) Wr[i * d + i] = 1;
+    for (k = 0; k < d; k++) {
+        double best = 0, pr, pi, den;
+        p = -1;
+        for (i = k; i < d; i++) {
+            double a = fabs(Ar[i * d + k]) + fabs(Ai[i * d + k]);
+            if (a > best) { best = a; p = i; }
+        }
+        if (p < 0) return 0;
+        if (p != k)
+            for (j = 0; j < d; j++) {
+                double t;
+                t = Ar[k * d + j]; Ar[k * d + j] = Ar[p * d + j]; Ar[p * d + j] = t;
+                t = Ai[k * d + j]; Ai[k * d + j] = Ai[p * d + j]; Ai[p * d + j] = t;
+                t = Wr[k * d + j]; Wr[k * d + j] = Wr[p * d + j]; Wr[p * d + j] = t;
+                t = Wi[k * d + j]; Wi[k * d + j] = Wi[p * d + j]; Wi[p * d + j] = t;
+            }
+        /* row k /= pivot */
+        den = Ar[k * d + k] * Ar[k * d + k] + Ai[k * d + k] * Ai[k * d + k];
+        pr = Ar[k * d + k] / den;
+        pi = -Ai[k * d + k] / den;
+        for (j = 0; j < d; j++) {
+            double xr = Ar[k * d + j], xi = Ai[k * d + j], yr = Wr[k * d + j], yi = Wi[k * d + j];
+            Ar[k * d + j] = xr * pr - xi * pi;
+            Ai[k * d + j] = xr * pi + xi * pr;
+            Wr[k * d + j] = yr * pr - yi * pi;
+            Wi[k * d + j] = yr * pi + yi * pr;
+        }
+        for (i = 0; i < d; i++) {
+            double fr, fi;
+            if (i == k) continue;
+            fr = Ar[i * d + k];
+            fi = Ai[i * d + k];
+            if (fr == 0 && fi == 0) continue;
+            for (j = 0; j < d; j++) {
+                Ar[i * d + j] -= fr * Ar[k * d + j] - fi * Ai[k * d + j];
+                Ai[i * d + j] -= fr * Ai[k * d + j] + fi * Ar[k * d + j];
+                Wr[i * d + j] -= fr * Wr[k * d + j] - fi * Wi[k * d + j];
+                Wi[i * d + j] -= fr * Wi[k * d + j] + fi * Wr[k * d + j];
+            }
+        }
+    }
+    return all_finite(Wr, d * d) && all_finite(Wi, d * d);
+}
+
+/* V (complex point, re/im arrays) = double eigenvectors of T (GSL), W ~=
+ * V^{-1} (cinv; scratch: 2 d^2); 0 when either fails */
+static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double *T, slong dd, double *scratch)
 {
     size_t d = (size_t) dd, i, j;
     gsl_matrix_const_view A0 = gsl_matrix_const_view_array(T, d, d);
     gsl_matrix *A = gsl_matrix_alloc(d, d);
     gsl_vector_complex *ev = gsl_vector_complex_alloc(d);
-    gsl_matrix_complex *X = gsl_matrix_complex_alloc(d, d), *Y = gsl_matrix_complex_alloc(d, d);
+    gsl_matrix_complex *X = gsl_matrix_complex_alloc(d, d);
     gsl_eigen_nonsymmv_workspace *w = gsl_eigen_nonsymmv_alloc(d);
-    gsl_permutation *p = gsl_permutation_alloc(d);
     gsl_error_handler_t *old = gsl_set_error_handler_off();
-    int ok, sgn;
+    int ok;
     gsl_matrix_memcpy(A, &A0.matrix);
     ok = gsl_eigen_nonsymmv(A, ev, X, w) == GSL_SUCCESS;
     for (i = 0; ok && i < d; i++)
@@ -543,20 +596,10 @@ static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double 
             Vr[i * d + j] = GSL_REAL(z);
             Vi[i * d + j] = GSL_IMAG(z);
         }
-    ok = ok && gsl_linalg_complex_LU_decomp(X, p, &sgn) == GSL_SUCCESS
-         && gsl_linalg_complex_LU_invert(X, p, Y) == GSL_SUCCESS;
-    for (i = 0; ok && i < d; i++)
-        for (j = 0; j < d; j++) {
-            gsl_complex z = gsl_matrix_complex_get(Y, i, j);
-            Wr[i * d + j] = GSL_REAL(z);
-            Wi[i * d + j] = GSL_IMAG(z);
-        }
     gsl_set_error_handler(old);
-    ok = ok && all_finite(Vr, dd * dd) && all_finite(Vi, dd * dd) && all_finite(Wr, dd * dd) && all_finite(Wi, dd * dd);
-    gsl_permutation_free(p);
+    ok = ok && all_finite(Vr, dd * dd) && all_finite(Vi, dd * dd) && cinv(Wr, Wi, Vr, Vi, scratch, dd);
     gsl_eigen_nonsymmv_free(w);
     gsl_matrix_complex_free(X);
-    gsl_matrix_complex_free(Y);
     gsl_vector_complex_free(ev);
     gsl_matrix_free(A);
     return ok;
@@ -589,22 +632,23 @@ int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
 {
     slong dim = rs_cosim_dbl_dim(d), len = dim * dim, i, j, top = 0;
     double *buf, *Tm, *Tr, *Vr, *Vi, *Wr, *Wi, *Xrm, *Xrr, *Xim, *Xir, *Brm, *Brr, *Bim, *Bir, *Erm, *Err, *Eim, *Eir,
-        *work, *zero, *R, *out, *in, e, f, up, lo;
+        *work, *R, *out, *in, e, f, up, lo;
     int ok;
     if (dim < 1) return RS_ERR_UNDECIDED;
-    buf = flint_calloc(24 * len + 3 * dim, sizeof(double));
+    /* every array is written before it is read; point factors pass NULL radii */
+    buf = flint_malloc((24 * len + 3 * dim) * sizeof(double));
     Tm = buf; Tr = Tm + len; Vr = Tr + len; Vi = Vr + len; Wr = Vi + len; Wi = Wr + len;
     Xrm = Wi + len; Xrr = Xrm + len; Xim = Xrr + len; Xir = Xim + len;
     Brm = Xir + len; Brr = Brm + len; Bim = Brr + len; Bir = Bim + len;
     Erm = Bir + len; Err = Erm + len; Eim = Err + len; Eir = Eim + len;
-    work = Eir + len; zero = work + 4 * len;   /* zero: len entries, stays 0 */
-    R = zero + len;
+    work = Eir + len;
+    R = work + 5 * len;
     out = R + dim;
     in = out + dim;
-    ok = rs_cosim_dbl_transition(Tm, Tr, d) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, Tm, dim);
+    ok = rs_cosim_dbl_transition(Tm, Tr, d) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, Tm, dim, work);
     if (ok) {
         /* E = I - W V (point W, V) */
-        icmul(Erm, Err, Eim, Eir, Wr, zero, Wi, zero, Vr, zero, Vi, zero, dim, work);
+        icmul(Erm, Err, Eim, Eir, Wr, NULL, Wi, NULL, Vr, NULL, Vi, NULL, dim, work);
         for (i = 0; i < len; i++) {
             Erm[i] = -Erm[i];
             Eim[i] = -Eim[i];
@@ -617,7 +661,7 @@ int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
         /* X = T V (interval real times point complex), B = W X */
         imul(Xrm, Xrr, Tm, Tr, Vr, NULL, dim, dim, dim);
         imul(Xim, Xir, Tm, Tr, Vi, NULL, dim, dim, dim);
-        icmul(Brm, Brr, Bim, Bir, Wr, zero, Wi, zero, Xrm, Xrr, Xim, Xir, dim, work);
+        icmul(Brm, Brr, Bim, Bir, Wr, NULL, Wi, NULL, Xrm, Xrr, Xim, Xir, dim, work);
         /* e = ||E||, f = e/(1 - e) ||B|| bounds the rows of V^{-1} T V - B
          * (cosim_fast.c: Neumann series of (I - E)^{-1}) */
         e = 0;
