@@ -17,6 +17,7 @@
 #include "numeric/cosim_dbl.h"
 #include "numeric/cosim_forms.h"
 #include "numeric/modes.h"
+#include "util/dblstr.h"
 #include "recstab/cosim.h"
 #include "recstab/radius.h"
 
@@ -298,13 +299,33 @@ static int cosim_fast_verdict(const rs_cosim_t cs)
  * the estimate's certified digits are those of rho, or with bounds set
  * (the interval-double radius: lower and upper are doubles, rho their
  * 64-bit union ball, a little wider) those of [lower, upper] itself */
+/* an exact double (the interval-double radius's bounds): 1 and *d */
+static int exact_dbl(double *d, const arb_t x)
+{
+    const arf_struct *m = arb_midref(x);
+    if (!mag_is_zero(arb_radref(x)) || arf_bits(m) > 53 || arf_cmpabs_2exp_si(m, 1000) >= 0
+        || arf_cmpabs_2exp_si(m, -1000) <= 0)
+        return 0;
+    *d = arf_get_d(m, ARF_RND_NEAR);
+    return 1;
+}
+
 static void radius_cells_of(rs_sweep_row_t *row, const rs_radius_t rr, int bounds)
 {
-    char *rho = bounds ? rs_radius_interval_str(arb_midref(rr->lower), arb_midref(rr->upper), 17)
-                       : rs_radius_arb_str(rr->rho, 17),
-         *lo = rs_radius_str_lower(rr->lower, 17), *hi = rs_radius_str_upper(rr->upper, 17);
+    char a[RS_DBLSTR_SIZE], b[RS_DBLSTR_SIZE], c[RS_DBLSTR_SIZE], *rho, *lo, *hi;
+    double l, u;
     row->d.verdict = radius_verdict(rr);
     row->d.level = RS_LEVEL_CERTIFIED;
+    /* doubles: the three cells from two conversions (util/dblstr.h, the
+     * same strings as below) */
+    if (bounds && exact_dbl(&l, rr->lower) && exact_dbl(&u, rr->upper) && rs_dblstr_bounds(a, b, c, l, u, 17) == 0) {
+        snprintf(row->cells, sizeof row->cells, "%s,%s,%s", a, b, c);
+        return;
+    }
+    rho = bounds ? rs_radius_interval_str(arb_midref(rr->lower), arb_midref(rr->upper), 17)
+                 : rs_radius_arb_str(rr->rho, 17);
+    lo = rs_radius_str_lower(rr->lower, 17);
+    hi = rs_radius_str_upper(rr->upper, 17);
     snprintf(row->cells, sizeof row->cells, "%s,%s,%s", rho[0] == '[' ? "" : rho, lo, hi);
     flint_free(rho);
     flint_free(lo);

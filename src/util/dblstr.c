@@ -87,6 +87,17 @@ static int near_digits(uint64_t *d, int *q, double ax, int n)
     return 1;
 }
 
+/* the n decimal digits of d (d < 10^n) into D, NUL-terminated */
+static void put_digits(char *D, uint64_t d, int n)
+{
+    int i;
+    for (i = n - 1; i >= 0; i--) {
+        D[i] = (char) ('0' + d % 10);
+        d /= 10;
+    }
+    D[n] = '\0';
+}
+
 int rs_dblstr_round(char *buf, double x, int n, int dir)
 {
     uint64_t d, lo10 = 1, hi10;
@@ -112,7 +123,7 @@ int rs_dblstr_round(char *buf, double x, int n, int dir)
         }
     }
     if (it == 4) return -1;
-    snprintf(D, sizeof D, "%llu", (unsigned long long) d);
+    put_digits(D, d, n);
     rs_dblstr_format(buf, neg, D, n, (long) q + n, c == 0);
     return (int) strlen(buf);
 }
@@ -152,4 +163,99 @@ int rs_dblstr_interval(char *buf, double lo, double hi, int n)
     }
     if (k < 1) return -1;
     return rs_dblstr_round(buf, fabs(lo) <= fabs(hi) ? lo : hi, (int) k, 0);
+}
+
+/* ---- the three cells of one interval from two conversions --------------- */
+
+static uint64_t pow10u(int k)
+{
+    uint64_t p = 1;
+    while (k-- > 0) p *= 10;
+    return p;
+}
+
+/* the nearest n-digit decimal d 10^q of x > 0 by printf, checked exactly to
+ * lie within half a unit of its last digit of x; 0 if not (or out of range) */
+static int near_checked(uint64_t *d, int *q, double x, int n)
+{
+    if (!near_digits(d, q, x, n)) return 0;
+    /* (10 d -+ 5) 10^(q-1) = d 10^q -+ half a unit */
+    return cmp_dec(10 * *d - 5, *q - 1, x) <= 0 && cmp_dec(10 * *d + 5, *q - 1, x) >= 0;
+}
+
+/* x's nearest k-digit decimal from its nearest n-digit one d 10^q (k < n):
+ * the same unless d's dropped tail is exactly half a unit (then 0: x may
+ * lie on either side); else |x - d 10^q| <= half a unit of digit n keeps x's
+ * tail on d's side of the k-digit midpoint */
+static int reround(uint64_t *dk, int *qk, uint64_t d, int q, int n, int k)
+{
+    uint64_t p = pow10u(n - k), hi = d / p, rem = d % p;
+    if (rem * 2 == p) return 0;
+    if (rem * 2 > p) hi++;
+    *qk = q + (n - k);
+    if (hi == pow10u(k)) {
+        hi /= 10;
+        ++*qk;
+    }
+    *dk = hi;
+    return 1;
+}
+
+/* the directed n-digit bound of x from its checked nearest d 10^q: one step
+ * outward when on the wrong side; exact: the decimal equals x */
+static int directed(char *buf, uint64_t d, int q, double x, int n, int dir)
+{
+    char D[24];
+    uint64_t lo10 = pow10u(n - 1);
+    int c = cmp_dec(d, q, x);
+    if (c == 2) return -1;
+    if (c != 0 && (dir < 0) != (c < 0)) {
+        if (dir < 0) {
+            if (d == lo10) { d = 10 * lo10 - 1; q--; }
+            else d--;
+        } else {
+            if (d == 10 * lo10 - 1) { d = lo10; q++; }
+            else d++;
+        }
+    }
+    put_digits(D, d, n);
+    rs_dblstr_format(buf, 0, D, n, (long) q + n, c == 0);
+    return 0;
+}
+
+int rs_dblstr_bounds(char *rho, char *lower, char *upper, double lo, double hi, int n)
+{
+    uint64_t dl, dh, a, b;
+    int ql, qh, qa, qb, k, k0, c;
+    char D[24];
+    if (n < 1 || n > 17 || !(lo > 0) || !(lo <= hi) || !isfinite(hi)) return -1;
+    if (!near_checked(&dl, &ql, lo, n) || !near_checked(&dh, &qh, hi, n)) return -1;
+    if (directed(lower, dl, ql, lo, n, -1) != 0 || directed(upper, dh, qh, hi, n, 1) != 0) return -1;
+    /* the digit count of rs_dblstr_interval */
+    if (lo == hi)
+        k0 = n;
+    else {
+        double s = hi - lo, bp = s - hi, ap = s - bp, t = (hi - ap) + (-lo - bp);
+        int ew = ebound(s);
+        if (t < 0 && frexp(s, &ew) == 0.5) ew--;
+        else ew = ebound(s);
+        k0 = (int) ((double) (ebound(lo) - ew) * 0.30103) + 3;
+    }
+    if (k0 < 1) k0 = 1;
+    if (k0 > n) k0 = n;
+    for (k = k0; k >= 1; k--) {
+        if (k == n) {
+            a = dl; qa = ql;
+            b = dh; qb = qh;
+        } else if ((!reround(&a, &qa, dl, ql, n, k) && !near_checked(&a, &qa, lo, k))
+                   || (!reround(&b, &qb, dh, qh, n, k) && !near_checked(&b, &qb, hi, k)))
+            return -1;   /* a half-unit tail: printf at k digits decides */
+        if (a == b && qa == qb) break;
+    }
+    if (k < 1) return -1;
+    c = cmp_dec(a, qa, lo);
+    if (c == 2) return -1;
+    put_digits(D, a, k);
+    rs_dblstr_format(rho, 0, D, k, (long) qa + k, c == 0);
+    return 0;
 }

@@ -30,6 +30,14 @@ int rs_dblstr_round(char *buf, double x, int n, int dir);
  * which every point of [lo, hi] rounds alike, printed */
 int rs_dblstr_interval(char *buf, double lo, double hi, int n);
 
+/* The three map cells of an interval 0 < lo <= hi at once, from one printf
+ * of each end: rho = rs_dblstr_interval(lo, hi, n), lower =
+ * rs_dblstr_round(lo, n, -1), upper = rs_dblstr_round(hi, n, +1) (each
+ * buffer RS_DBLSTR_SIZE).  The shorter roundings of the interval's digit
+ * count are derived from the n-digit ones (exact unless a dropped tail is
+ * exactly half a unit: then printf at that count).  0, or -1 as above. */
+int rs_dblstr_bounds(char *rho, char *lower, char *upper, double lo, double hi, int n);
+
 /* sign * 0.D * 10^e (D: k digits) as rs_radius_arf_str prints it (trim:
  * drop trailing zeros); out needs k + 48 + max(0, -e) bytes */
 void rs_dblstr_format(char *out, int neg, const char *D, long k, long e, int trim);

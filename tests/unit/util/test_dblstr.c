@@ -9,7 +9,9 @@
  *   - rs_dblstr_interval(lo, hi, 17) prints the digits MPFR's nearest
  *     rounding of lo and hi agree on (same digit count rule as radius.c),
  *     and both lo and hi lie within half a unit of its last digit;
- *   - the formatting is the one of a formatter written here independently.
+ *   - the formatting is the one of a formatter written here independently;
+ *   - rs_dblstr_bounds (the three map cells from two conversions) prints
+ *     the same three strings as the functions checked above.
  * The MPFR reference and the rational checks are this file's own code. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -169,6 +171,8 @@ static double unif(void)
     return (double) (rng() >> 11) * 0x1p-53;
 }
 
+static long bounds_done, bounds_refused;
+
 /* one interval: strings equal to the reference and outward by rationals;
  * returns how many of the three strings the double route printed */
 static int check_interval(double lo, double hi, int n)
@@ -223,6 +227,19 @@ static int check_interval(double lo, double hi, int n)
         assert_true(fmpq_cmp(t, u) <= 0);
         done++;
     }
+    /* the three cells at once (positive intervals): the same strings, or
+     * -1 only when the interval has no certain digit */
+    if (lo > 0) {
+        char r1[RS_DBLSTR_SIZE], r2[RS_DBLSTR_SIZE], r3[RS_DBLSTR_SIZE];
+        if (rs_dblstr_bounds(r1, r2, r3, lo, hi, n) == 0) {
+            assert_true(k > 0);
+            assert_string_equal(r1, c);
+            assert_string_equal(r2, a);
+            assert_string_equal(r3, b);
+            bounds_done++;
+        } else if (k > 0)
+            bounds_refused++;
+    }
     fmpq_clear(q);
     fmpq_clear(u);
     fmpq_clear(x);
@@ -256,6 +273,9 @@ static void test_random_intervals(void **state)
     /* every bound (2 x 10^5) and most intervals (widths below 10^-1, about
      * 16/17 of them, always have a certain digit) */
     assert_true(handled > 280000);
+    /* rs_dblstr_bounds: every positive interval with a certain digit */
+    assert_true(bounds_done > 75000);
+    assert_int_equal(bounds_refused, 0);
 }
 
 /* exact decimals (trimmed), ties to even, decade boundaries, powers of 2 */
