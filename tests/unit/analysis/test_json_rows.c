@@ -58,14 +58,19 @@ static void test_rows_as_jansson(void **state)
 {
     const char *header = "index,i,j,acc1,c1,acc1_exact,c1_exact,verdict,code,radius,radius_lower,radius_upper,decided_by";
     char *exact = rs_sweep_exact_columns(header, strlen(header));
+    char *typed = rs_sweep_exact_columns(header, strlen(header));
+    json_t *real = json_pack("[i, i]", 3, 4);   /* acc1, c1 as columns of reals (z-plane maps) */
     char line[4096], c[256];
     long r, k, ncols;
     (void) state;
+    rs_sweep_flag_real(typed, real);
+    json_decref(real);
     for (r = 0; r < 20000; r++) {
         char *mine = NULL, *ref;
         size_t mlen = 0;
         FILE *f;
         json_t *row;
+        const char *flags;
         ncols = r % 7 == 0 ? 1 + (long) (rng() % 20) : 13;   /* other widths than the header's too */
         line[0] = '\0';
         for (k = 0; k < ncols; k++) {
@@ -74,9 +79,10 @@ static void test_rows_as_jansson(void **state)
             strcat(line, c);
         }
         f = open_memstream(&mine, &mlen);
-        assert_int_equal(rs_sweep_json_row_put(f, line, strlen(line), r % 11 == 0 ? NULL : exact), 0);
+        flags = r % 11 == 0 ? NULL : r % 3 == 0 ? typed : exact;
+        assert_int_equal(rs_sweep_json_row_put(f, line, strlen(line), flags), 0);
         fclose(f);
-        row = rs_sweep_json_row(line, strlen(line), r % 11 == 0 ? NULL : exact);
+        row = rs_sweep_json_row(line, strlen(line), flags);
         ref = json_dumps(row, JSON_COMPACT | JSON_ENCODE_ANY);
         if (strcmp(mine, ref) != 0) fail_msg("row '%s':\n mine %s\n jansson %s", line, mine, ref);
         free(ref);
@@ -84,6 +90,7 @@ static void test_rows_as_jansson(void **state)
         json_decref(row);
     }
     free(exact);
+    free(typed);
 }
 
 /* cells that need escaping or a UTF-8 check: refused, nothing written */
