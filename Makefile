@@ -179,7 +179,12 @@ demo: deps
 	@$(MAKE) --no-print-directory all
 	@$(BIN) cases/park-staggered.case; rc=$$?; [ $$rc -le 1 ] || exit $$rc
 
-bench: all
+# the in-process Park bench (issue 17): the one-call API N times in one
+# process, beside SymPy's in-process figure (bench/run.sh, part (c'))
+$(BUILD)/park_inprocess: bench/park_inprocess.c $(LIBRS) $(HDRS)
+	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIBRS) $(LIBS)
+
+bench: all $(BUILD)/park_inprocess
 	$(call deb-install,bench,$(BENCH_WHY))
 	sh bench/run.sh
 	sh bench/bench_qepcad.sh
