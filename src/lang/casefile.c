@@ -519,7 +519,7 @@ static int parse_text(rs_parser_t *p, const char *path, const char *text, size_t
     int lineno = 0, r = RS_OK;
     char *buf;
     int *lmap, *cmap;
-    size_t blen = 0;
+    size_t blen = 0, cap;
     int stmt_line = 0;
     const char *file;
 
@@ -531,9 +531,13 @@ static int parse_text(rs_parser_t *p, const char *path, const char *text, size_t
         return r;
     file = intern_file(p->c, path);
 
-    buf = flint_malloc(RS_CASE_MAX_LINE + 2);
-    lmap = flint_malloc((RS_CASE_MAX_LINE + 2) * sizeof(int));
-    cmap = flint_malloc((RS_CASE_MAX_LINE + 2) * sizeof(int));
+    /* a statement is at most the text (a joined continuation's space
+     * replaces its backslash) and RS_CASE_MAX_LINE: no 576 kB of buffers
+     * (fresh pages, trimmed again on free) for a case of a few lines */
+    cap = (len < (size_t) RS_CASE_MAX_LINE ? len : (size_t) RS_CASE_MAX_LINE) + 2;
+    buf = flint_malloc(cap);
+    lmap = flint_malloc(cap * sizeof(int));
+    cmap = flint_malloc(cap * sizeof(int));
 
     while (i < len && r == RS_OK) {
         size_t s = i, ls = i, e, k, cend;
