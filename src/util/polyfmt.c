@@ -27,12 +27,111 @@ char *rs_polyfmt_spaced(const char *s)
     return out;
 }
 
-char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+/* FLINT's pretty string then rs_polyfmt_spaced: the reference route, for
+ * what the direct printer below does not handle */
+static char *fmpz_mpoly_str_flint(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
 {
     char *s = fmpz_mpoly_get_str_pretty(p, vars, ctx);
     char *r = rs_polyfmt_spaced(s);
     flint_free(s);
     return r;
+}
+
+/* the decimal digits of u at out (no NUL); their number */
+static size_t put_ulong(char *out, ulong u)
+{
+    char t[24];
+    size_t n = 0, k;
+    do { t[n++] = (char) ('0' + u % 10); u /= 10; } while (u != 0);
+    for (k = 0; k < n; k++) out[k] = t[n - 1 - k];
+    return n;
+}
+
+/* a name the spacing pass leaves alone: non-empty, none of ( ) + - ^ * / or
+ * a blank (names are identifiers; this only guards the equivalence) */
+static int plain_name(const char *v)
+{
+    return v != NULL && *v != '\0' && strpbrk(v, "()+-^*/ ") == NULL;
+}
+
+/* The string of fmpz_mpoly_get_str_pretty after rs_polyfmt_spaced, written
+ * in one pass: FLINT's printer goes through flint_sprintf for every
+ * coefficient, name and exponent, which was a sixth of the in-process Park
+ * pipeline (issue 17).  Same text: terms in p's order, " + "/" - " between
+ * them, a leading "-", coefficients +-1 left out (a constant term of +-1
+ * printed as 1), "*" between factors, "NAME^E" for E > 1.
+ * tests/unit/util/test_polyfmt.c compares it with FLINT's route. */
+char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+{
+    slong len = p->length, nv = ctx->minfo->nvars, i, j;
+    size_t bound = 2, vlen_sum = 0, off = 0;
+    size_t *vlen;
+    ulong *e;
+    char *out;
+
+    if (vars == NULL || p->bits > FLINT_BITS)
+        return fmpz_mpoly_str_flint(p, vars, ctx);
+    if (len == 0) {
+        out = malloc(2);
+        if (out != NULL) strcpy(out, "0");
+        return out;
+    }
+    vlen = flint_malloc((nv + 1) * sizeof(size_t));
+    for (j = 0; j < nv; j++) {
+        if (!plain_name(vars[j])) {
+            flint_free(vlen);
+            return fmpz_mpoly_str_flint(p, vars, ctx);
+        }
+        vlen[j] = strlen(vars[j]);
+        vlen_sum += vlen[j] + 2 + 20;   /* "*NAME^" and up to 20 digits */
+    }
+    for (i = 0; i < len; i++)
+        bound += fmpz_sizeinbase(p->coeffs + i, 10) + 2 + 3 + 1 + vlen_sum;
+    out = malloc(bound);
+    e = flint_malloc((nv + 1) * sizeof(ulong));
+    if (out == NULL) {
+        flint_free(vlen);
+        flint_free(e);
+        return NULL;
+    }
+    for (i = 0; i < len; i++) {
+        const fmpz *c = p->coeffs + i;
+        int neg = fmpz_sgn(c) < 0, unit = fmpz_is_pm1(c), first = 1, constant = 1;
+        if (i > 0) {
+            memcpy(out + off, neg ? " - " : " + ", 3);
+            off += 3;
+        } else if (neg) {
+            out[off++] = '-';
+        }
+        if (!unit) {
+            if (!COEFF_IS_MPZ(*c)) {
+                off += put_ulong(out + off, FLINT_ABS(*c));
+            } else {
+                char *d = out + off;
+                fmpz_get_str(d, 10, c);
+                if (neg) memmove(d, d + 1, strlen(d));   /* the sign is written */
+                off += strlen(d);
+            }
+        }
+        fmpz_mpoly_get_term_exp_ui(e, p, i, ctx);
+        for (j = 0; j < nv; j++) {
+            if (e[j] == 0) continue;
+            constant = 0;
+            if (!first || !unit) out[off++] = '*';
+            memcpy(out + off, vars[j], vlen[j]);
+            off += vlen[j];
+            if (e[j] > 1) {
+                out[off++] = '^';
+                off += put_ulong(out + off, e[j]);
+            }
+            first = 0;
+        }
+        if (constant && unit) out[off++] = '1';
+    }
+    out[off] = '\0';
+    flint_free(vlen);
+    flint_free(e);
+    return out;
 }
 
 char *rs_polyfmt_fmpq_mpoly(const fmpq_mpoly_t p, const char **vars, const fmpq_mpoly_ctx_t ctx)

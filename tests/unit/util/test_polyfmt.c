@@ -1,0 +1,105 @@
+/* test_polyfmt.c -- rs_polyfmt_fmpz_mpoly, the direct printer of issue 17,
+ * against the route it replaced (FLINT's fmpz_mpoly_get_str_pretty, then
+ * rs_polyfmt_spaced): random polynomials over every ordering, with units,
+ * constants, huge coefficients and exponents; and strings written by hand. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include <flint/fmpz_mpoly.h>
+#include "util/polyfmt.h"
+
+/* the reference: what rs_polyfmt_fmpz_mpoly returned before issue 17 */
+static char *reference(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+{
+    char *s = fmpz_mpoly_get_str_pretty(p, vars, ctx);
+    char *r = rs_polyfmt_spaced(s);
+    flint_free(s);
+    return r;
+}
+
+static void check_same(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+{
+    char *want = reference(p, vars, ctx), *got = rs_polyfmt_fmpz_mpoly(p, vars, ctx);
+    assert_non_null(got);
+    assert_string_equal(got, want);
+    free(want);
+    free(got);
+}
+
+/* 4000 random polynomials: 1-5 variables, each ordering, coefficients of
+ * up to 200 bits (so both small and GMP coefficients, +-1 often enough:
+ * coefficient bits 1-2), exponents up to 2^70 now and then (bits > 64:
+ * the FLINT route) */
+static void test_random_against_flint(void **state)
+{
+    static const char *names[] = {"m", "muh", "wh", "alpha", "lambda"};
+    static const ordering_t ords[] = {ORD_LEX, ORD_DEGLEX, ORD_DEGREVLEX};
+    flint_rand_t rs;
+    slong it;
+    (void) state;
+    flint_randinit(rs);
+    for (it = 0; it < 4000; it++) {
+        slong nv = 1 + (slong) n_randint(rs, 5);
+        fmpz_mpoly_ctx_t ctx;
+        fmpz_mpoly_t p;
+        slong len = (slong) n_randint(rs, 12);
+        flint_bitcnt_t cb = (it % 4 == 0) ? 1 + n_randint(rs, 2) : 1 + n_randint(rs, 200);
+        ulong eb = (it % 50 == 0) ? 70 : 1 + n_randint(rs, 8);
+        fmpz_mpoly_ctx_init(ctx, nv, ords[it % 3]);
+        fmpz_mpoly_init(p, ctx);
+        fmpz_mpoly_randtest_bits(p, rs, len, cb, eb, ctx);
+        if (it % 7 == 0) fmpz_mpoly_add_si(p, p, (it % 2) ? 1 : -1, ctx);   /* a unit constant term */
+        check_same(p, names, ctx);
+        if (it % 100 == 0) check_same(p, NULL, ctx);   /* x1, x2, ...: the FLINT route */
+        fmpz_mpoly_clear(p, ctx);
+        fmpz_mpoly_ctx_clear(ctx);
+    }
+    flint_randclear(rs);
+}
+
+/* Strings written out by hand for polynomials set from text. */
+static void test_by_hand(void **state)
+{
+    static const char *names[] = {"m", "muh", "wh", "alpha"};
+    static const char *odd[] = {"re(z)", "muh", "wh", "alpha"};   /* a name the fast path refuses */
+    static const struct { const char *in, *out; } cases[] = {
+        {"0", "0"},
+        {"1", "1"},
+        {"-1", "-1"},
+        {"-m", "-m"},
+        {"m - 1", "m - 1"},
+        {"-2*m^2*muh + 3*alpha - 5", "-2*m^2*muh + 3*alpha - 5"},
+        {"muh*wh^2 - wh + 1", "muh*wh^2 - wh + 1"},
+        {"123456789012345678901234567890*m - 98765432109876543210987654321",
+         "123456789012345678901234567890*m - 98765432109876543210987654321"},
+        {"-123456789012345678901234567890*alpha^12", "-123456789012345678901234567890*alpha^12"},
+    };
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    size_t k;
+    (void) state;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char *got;
+        assert_int_equal(fmpz_mpoly_set_str_pretty(p, cases[k].in, names, ctx), 0);
+        got = rs_polyfmt_fmpz_mpoly(p, names, ctx);
+        assert_string_equal(got, cases[k].out);
+        free(got);
+        check_same(p, odd, ctx);
+    }
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_random_against_flint),
+        cmocka_unit_test(test_by_hand),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
