@@ -95,7 +95,7 @@ LIBSO  := $(BUILD)/librecstab.so
 BIN    := $(BUILD)/recstab
 EXAMPLE_BIN := $(patsubst examples/%.c,$(BUILD)/examples/%,$(sort $(wildcard examples/*.c)))
 
-.PHONY: all deps check test demo install clean check-sanitize check-flint3 bench figures mpi print-public-headers examples deps-fuzz deps-valgrind deps-list print-flint
+.PHONY: all deps check test demo install clean check-sanitize check-flint3 bench static figures mpi print-public-headers examples deps-fuzz deps-valgrind deps-list print-flint
 
 all: $(LIBRS) $(LIBSO) $(BIN) $(BUILD)/recstab.pc
 
@@ -179,12 +179,24 @@ demo: deps
 	@$(MAKE) --no-print-directory all
 	@$(BIN) cases/park-staggered.case; rc=$$?; [ $$rc -le 1 ] || exit $$rc
 
+# build/recstab-static (`make static`, issue 17): the command with GSL, its
+# CBLAS and jansson linked statically -- three shared objects fewer to map and
+# relocate at start-up (bench/README.md has the figures).  Debian ships no
+# static FLINT or Arb, and GMP/MPFR stay shared: libflint.so loads them anyway,
+# and a second, static copy would have its own allocator (budget.c counts
+# through GMP's).  build/recstab itself is unchanged.
+STATIC_DEP_LIBS := $(FLINT_LIBS) -Wl,-Bstatic -lgsl -lgslcblas -ljansson -Wl,-Bdynamic -lmpfr -lgmp -lm
+static: $(BUILD)/recstab-static
+
+$(BUILD)/recstab-static: $(CLI_OBJ) $(LIBRS)
+	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) -fopenmp $(STATIC_DEP_LIBS)
+
 # the in-process Park bench (issue 17): the one-call API N times in one
 # process, beside SymPy's in-process figure (bench/run.sh, part (c'))
 $(BUILD)/park_inprocess: bench/park_inprocess.c $(LIBRS) $(HDRS)
 	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIBRS) $(LIBS)
 
-bench: all $(BUILD)/park_inprocess
+bench: all $(BUILD)/park_inprocess $(BUILD)/recstab-static
 	$(call deb-install,bench,$(BENCH_WHY))
 	sh bench/run.sh
 	sh bench/bench_qepcad.sh

@@ -12,6 +12,9 @@
 #       recstab knows those analyses (skipped otherwise)
 #   (d) bench/sympy_park.py, the SymPy peer, SYMPY_RUNS fresh processes
 #   (e) build/bench_radius (compiled from bench/bench_radius.c when present)
+#   (f) in-process: build/park_inprocess (the one-call API, N calls, CPU per
+#       call) beside bench/sympy_park.py --repeat SYMPY_REPEAT (default 5)
+#   (g) build/recstab-static --version (make static: GSL, CBLAS, jansson static)
 #   and a summary line: recstab median ms vs SymPy total seconds, ratio.
 #
 # Environment: BENCH_N (runs per command line, default 200), SYMPY_RUNS
@@ -135,6 +138,38 @@ else
 fi
 echo
 
+echo "== (f) in-process: charpoly + bilinear + hurwitz through rs_analyse_json_with, beside SymPy's"
+echo "   stages repeated in one Python process (issue 17: no exec, no dynamic loading, no import)"
+ip_first=""; ip_med=""; sym_rep=""
+if [ -x build/park_inprocess ]; then
+    out_f=$(build/park_inprocess -n "$N" "$CASE")
+    echo "$out_f"
+    ip_first=$(echo "$out_f" | sed -n 's/^inprocess_first_cpu_ms: *//p')
+    ip_med=$(echo "$out_f" | sed -n 's/^inprocess_median_cpu_ms: *//p')
+else
+    echo "skipped: no build/park_inprocess (make build/park_inprocess)"
+fi
+if command -v "$PY" >/dev/null 2>&1; then
+    out_r=$("$PY" bench/sympy_park.py --repeat "${SYMPY_REPEAT:-5}" | grep '^sympy_')
+    echo "$out_r"
+    sym_first_cpu=$(echo "$out_r" | sed -n 's/^sympy_total_cpu_s: *//p')
+    sym_rep=$(echo "$out_r" | sed -n 's/^sympy_repeat_median_cpu_s: *//p')
+fi
+echo
+
+echo "== (g) start-up with GSL, CBLAS and jansson linked statically (make static)"
+med_s=""; cpu_s=""
+if [ -x build/recstab-static ]; then
+    cp build/recstab-static "$snap/recstab-static" || exit 2
+    out_s=$(sh bench/bench_cli.sh -n "$N" -- "$snap/recstab-static" --version)
+    echo "$out_s"
+    med_s=$(echo "$out_s" | median_of)
+    cpu_s=$(echo "$out_s" | cpu_of)
+else
+    echo "skipped: no build/recstab-static (make static)"
+fi
+echo
+
 echo "== (e) bench_radius"
 if [ "${BENCH_RADIUS:-1}" = 0 ]; then
     echo "skipped (BENCH_RADIUS=0)"
@@ -190,6 +225,12 @@ if [ -n "$sym_tot" ]; then
     echo "SymPy vs recstab p(lambda): ${sym_check}"
 else
     echo "SymPy: skipped"
+fi
+[ -n "$med_s" ] && echo "recstab-static --version (start-up): ${med_s} ms${cpu_s}"
+if [ -n "$ip_med" ] && [ -n "$sym_rep" ]; then
+    echo "in-process, CPU per call: recstab ${ip_med} ms (first call ${ip_first} ms)," \
+         "SymPy ${sym_rep} s (first run ${sym_first_cpu} s)" \
+         "-> $(ratio "$sym_rep" "$ip_med")x (first calls: $(ratio "$sym_first_cpu" "$ip_first")x; goal >= 700x)"
 fi
 case $sym_check in DISAGREE*) exit 1 ;; esac
 exit 0

@@ -16,6 +16,11 @@ Does by hand in SymPy what recstab does for the Park (2005) staggered scheme
             each det(method='bareiss') and expand
   factor    factor() of D1..D4 (skip with --no-factor)
 
+--repeat N runs the timed stages N more times in the same process, SymPy's
+cache cleared before each, and prints their median CPU seconds
+(sympy_repeat_median_cpu_s): the in-process steady state, the peer of
+bench/park_inprocess.c.
+
 Then, outside the timed total, it checks that SymPy's p equals recstab's up to
 a constant factor: it runs `build/recstab --json --analyse charpoly
 cases/park-staggered.case` (if the binary exists; with --analyse bilinear
@@ -86,8 +91,19 @@ def build_matrix():
     return sp.Matrix(rows), (m, muh, wh, alpha, lam)
 
 
+def arg_repeat():
+    """--repeat N: N more runs of the timed stages in this process."""
+    a = sys.argv[1:]
+    if "--repeat" in a:
+        i = a.index("--repeat")
+        if i + 1 < len(a):
+            return max(0, int(a[i + 1]))
+    return 0
+
+
 def main():
     do_factor = "--no-factor" not in sys.argv[1:]
+    repeat = arg_repeat()
     stages = []
 
     cpu = []
@@ -151,6 +167,35 @@ def main():
     verdict = check_against_recstab(p, q, minors, (m, muh, wh, alpha, lam))
     print("sympy_total_s: %.6f" % total)
     print("sympy_total_cpu_s: %.6f" % sum(cpu))
+    if repeat > 0:
+        # the same stages again in this process, SymPy's cache cleared before
+        # each run (so a run does not reuse the previous run's results): the
+        # steady state beside recstab's in-process figure (park_inprocess.c)
+        from sympy.core.cache import clear_cache
+        runs = []
+        for _ in range(repeat):
+            clear_cache()
+            c0 = time.process_time()
+            M2, _syms = build_matrix()
+            d = sp.expand(M2.det(method="bareiss"))
+            low = min(mon[0] for mon in sp.Poly(d, lam).monoms())
+            p2 = sp.expand(sp.cancel(d / lam**low))
+            n2 = sp.degree(p2, lam)
+            q2 = sp.expand(sp.cancel((1 - z)**n2 * p2.subs(lam, (1 + z) / (1 - z))))
+            c = sp.Poly(q2, z).all_coeffs()
+            nq = len(c) - 1
+            H2 = sp.Matrix(nq, nq, lambda i, j: c[2*(j + 1) - (i + 1)]
+                           if 0 <= 2*(j + 1) - (i + 1) <= nq else 0)
+            D2 = [sp.expand(H2[:k, :k].det(method="bareiss")) for k in range(1, nq + 1)]
+            if do_factor:
+                [sp.factor(D) for D in D2]
+            runs.append(time.process_time() - c0)
+            if sp.expand(p2 - p) != 0:
+                print("repeat: a different p(lambda)")
+        runs.sort()
+        print("sympy_repeat_runs: %d" % len(runs))
+        print("sympy_repeat_median_cpu_s: %.6f" % runs[len(runs) // 2])
+        print("sympy_repeat_min_cpu_s: %.6f" % runs[0])
     print("sympy_charpoly_s: %.6f" % sum(t for n, t in stages
                                          if n in ("matrix", "det")))
     print("check: %s" % verdict)
