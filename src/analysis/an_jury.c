@@ -4,6 +4,7 @@
 #include "analysis/registry.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
+#include "recstab/positivity.h"
 #include "util/polyfmt.h"
 
 /* Symbolic Schur-Cohn (Jury) conditions: with p_n = p and
@@ -66,6 +67,14 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     int *sign = rs_run_signs(run, s);
     int r = RS_OK;
     jury_conds_t jc;
+    /* the parameters' intervals for the factors' sign tests (interval
+     * mapping before Polya, issue 17, as hurwitz does): a factor of one sign
+     * on 0 < h < 1 but not for every h > 0 is dropped; params come first */
+    const rs_case_struct *c = run->c;
+    rs_bound_t *bd = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
+    slong nb = FLINT_MIN(c->nparams, s->nvars);
+    rs_bounds_init(bd, c->nparams);
+    for (j = 0; j < c->nassume; j++) rs_bounds_add(bd, &c->assume[j], c, run->err);
     jc.n = 0; jc.poly = NULL; jc.ne = NULL; jc.ctx = s->zctx;
     for (j = 0; j <= n; j++) {
         fmpz_mpoly_init(a + j, s->zctx);
@@ -106,7 +115,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             fmpz_mpoly_init(kept, s->zctx);
             fmpz_mpoly_one(kept, s->zctx);
             for (i = 0; i < f->num; i++) {
-                int sg = rs_hurwitz_sign(f->poly + i, (const rs_sign_t *) sign, s->zctx);
+                int sg = rs_positivity_sign_bounds(f->poly + i, (const rs_sign_t *) sign, bd, nb, s->zctx, NULL);
                 slong e = fmpz_get_si(f->exp + i);
                 if (sg != 0) {
                     if (sg < 0 && (e & 1)) neg = !neg;
@@ -158,6 +167,8 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
     fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
     flint_free(sign);
+    rs_bounds_clear(bd, c->nparams);
+    flint_free(bd);
     if (r == RS_OK) {
         json_object_set_new(o, "symbolic", json_true());
         json_object_set_new(o, "rows", rows);

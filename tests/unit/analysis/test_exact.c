@@ -353,6 +353,48 @@ static void test_park_symbolic_jury(void **state)
     json_decref(doc);
 }
 
+/* Symbolic Jury conditions with an interval assumption (issue 17: the
+ * interval mapping of rs_positivity_sign_bounds in `jury`).  Forward Euler on
+ * y' = -y with step h: p = lambda - (1 - h), by hand delta_1 = 1 - (1 - h)^2
+ * = -h (h - 2), so |root| = |1 - h| < 1 iff 0 < h < 2.  On 0 < h < 1 both
+ * factors have one sign (h > 0, h - 2 < 0): no condition is left, stable.
+ * On 2 < h < 3 both have one sign again (h > 0, h - 2 > 0): delta < 0
+ * throughout, the condition "-1 > 0" (never stable; |1 - h| > 1 there).
+ * On 1 < h < 3, h - 2 changes sign at 2: it must stay a condition (the
+ * mapping may not drop an indefinite factor); with h > 0 only it stays too
+ * (the sign test alone cannot bound h - 2). */
+static void test_jury_interval_assumptions(void **state)
+{
+    static const struct { const char *assume; int nconds; const char *cond; int ndropped; } cases[] = {
+        {"0 < h < 1", 0, NULL, 2},
+        {"2 < h < 3", 1, "-1 > 0", 2},
+        {"1 < h < 3", 1, "-h + 2 > 0", 1},
+        {"h > 0", 1, "-h + 2 > 0", 1},
+    };
+    size_t k;
+    (void) state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char text[256];
+        int outcome = 0;
+        json_t *doc;
+        const json_t *o, *conds, *chk;
+        snprintf(text, sizeof text, "param h\nassume %s\nunknown y\neq y[n+1] - y[n] = -h*y[n]\nanalyse jury\n",
+                 cases[k].assume);
+        doc = tu_run_text(text, NULL, &outcome, NULL);
+        o = result(doc, 0);
+        conds = json_object_get(o, "conditions");
+        assert_int_equal(json_array_size(conds), cases[k].nconds);
+        if (cases[k].cond != NULL) assert_string_equal(json_string_value(json_array_get(conds, 0)), cases[k].cond);
+        assert_int_equal(json_array_size(json_object_get(o, "dropped")), cases[k].ndropped);
+        /* and the conditions agree with the exact verdict at sample points */
+        chk = json_object_get(o, "sample_check");
+        assert_true(json_is_true(json_object_get(chk, "agree")));
+        assert_true(json_integer_value(json_object_get(chk, "points")) > 0);
+        assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+        json_decref(doc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -364,6 +406,7 @@ int main(void)
         cmocka_unit_test(test_park_proof_and_region),
         cmocka_unit_test(test_park_printed_bilinear),
         cmocka_unit_test(test_park_symbolic_jury),
+        cmocka_unit_test(test_jury_interval_assumptions),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);
 }
