@@ -40,3 +40,15 @@ n=$(sed -n 's/.*"full_hurwitz_points": *\([0-9]*\).*/\1/p' "$T/out.json" | head 
 if [ "$rc" = 0 ] && [ "${n:-0}" -ge 10 ]; then
     ok "3-mass chain: Lienard-Chipart and full Hurwitz agree at $n points"
 else fail "3-mass chain: exit $rc, full_hurwitz_points '${n:-none}'"; fi
+
+# the same interval mapping in `jury` (cases/euler-interval-jury.case: the
+# Schur-Cohn condition -h (h - 2) > 0 by hand)
+"$RS" cases/euler-interval-jury.case >"$T/out" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '^  conditions *none left' "$T/out"; then
+    ok "jury, 0 < h < 1: no Schur-Cohn condition left (h - 2 < 0 proved)"
+else fail "jury, 0 < h < 1: exit $rc, $(grep -E 'conditions|stable iff' "$T/out" | tr '\n' ' ')"; fi
+sed 's/^assume .*/assume h > 2, h < 3/' cases/euler-interval-jury.case >"$T/jury-out.case"
+"$RS" "$T/jury-out.case" >"$T/out" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '^  stable iff *-1 > 0$' "$T/out"; then
+    ok "jury, 2 < h < 3: never stable (-1 > 0: |1 - h| > 1 there)"
+else fail "jury, 2 < h < 3: exit $rc, $(grep -E 'conditions|stable iff' "$T/out" | tr '\n' ' ')"; fi
