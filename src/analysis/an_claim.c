@@ -1049,9 +1049,13 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
 }
 
 /* Searches one part for a counterexample, exactly, on a deterministic set of
- * points.  On success *counter is {NAME: value} and *at the verdict there. */
+ * points.  On success *counter is {NAME: value} and *at the verdict there.
+ * det_only: nothing is searched (*skipped = 1) when the points would be drawn
+ * from st (too many candidates): a search made before the proof must not
+ * change the random state the proof's re-checks use. */
 static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, const rs_cond_t *conds,
-                        slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at)
+                        slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at,
+                        int det_only, int *skipped)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -1079,7 +1083,8 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
     for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
     vars = flint_malloc((nparams + 1) * sizeof(slong));
     for (i = 0; i < nparams; i++) vars[i] = i;
-    for (j = 0; r == RS_OK && *counter == NULL && j < CLAIM_MAX_POINTS && j < ncand_total; j++) {
+    if (skipped != NULL) *skipped = det_only && ncand_total >= CLAIM_MAX_POINTS;
+    for (j = 0; r == RS_OK && !(det_only && ncand_total >= CLAIM_MAX_POINTS) && *counter == NULL && j < CLAIM_MAX_POINTS && j < ncand_total; j++) {
         slong k, rem = j;
         int ok = 1;
         if ((r = rs_budget_check(run->err, "the claim's search for a counterexample")) != RS_OK) break;
@@ -1580,7 +1585,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
             for (k = 0; k < nparams; k++) empty |= rs_bound_empty(b + k);
             if (empty) cert_note(&cx, "an empty set (the bounds of a parameter exclude each other): nothing to prove");
             if (!empty) {
-                r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at);
+                r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at, 0, NULL);
                 if (r == RS_OK && (counter != NULL || proved)) {
                     int pr;
                     if (dnf.nparts > 1) {
@@ -1657,20 +1662,27 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
 /* One set for `region NAME for all`: b as claim_bounds makes it (NAME fixed
  * at a number).  Returns RS_OK and *verdict 1 proved (certificate in *ev),
  * -1 refuted (the counterexample and its exact verdict in *ev), 0 undecided
- * (where the proof stopped in *ev), 2 proved and refuted (inconsistent). */
+ * (where the proof stopped in *ev), 2 proved and refuted (inconsistent).
+ * search: 0 the proof, then the search if it failed; 1 both; 2 the search
+ * first (where its points are deterministic) and the proof only if it finds
+ * nothing: the same answer as 0 without the failed proof attempt on a set
+ * that is not good (the caller cross-checks the counterexample instead). */
 int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const rs_bound_t *b, int search)
 {
     claim_cx_t cx;
     json_t *counter = NULL, *at = NULL;
     slong ntried = 0;
-    int r = RS_OK, split = 0, pr;
+    int r = RS_OK, split = 0, pr = 0, skipped = 1;
     memset(cx.fail, 0, sizeof cx.fail);
     cx.fail_progress = 0;
     cx.cert = json_array();
     flint_randinit(cx.st);
-    pr = claim_prove(run, (claim_kind_t) kind, b, &cx, 0, &split);
-    if (!pr || search)
-        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at);
+    if (search == 2)
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 1, &skipped);
+    if (r == RS_OK && counter == NULL)
+        pr = claim_prove(run, (claim_kind_t) kind, b, &cx, 0, &split);
+    if (r == RS_OK && skipped && (!pr || search == 1))
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL);
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
     *ev = NULL;
     *verdict = 0;

@@ -1349,7 +1349,15 @@ static int region_forall_decide(region_t *rg)
                 continue;
             }
         }
-        if (r == RS_OK) r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x);
+        if (r == RS_OK) {
+            /* after an unstable cell the next one usually is unstable too:
+             * look for its bad point before attempting a proof (else a
+             * one-point probe guesses) */
+            slong j = i - 1;
+            while (j >= 0 && !rg->pieces[j].decided) j--;
+            r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x,
+                                  j >= 0 && rg->pieces[j].status == RS_STATUS_UNSTABLE ? 1 : -1);
+        }
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);
     }

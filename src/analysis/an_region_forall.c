@@ -9,6 +9,7 @@
  * projection the sign pattern of the conditions over the quantified box
  * does not change, so one rational sample per cell decides it, with the
  * claim machinery (a re-checked certificate, or an exact counterexample). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <fmpz_vec.h>
@@ -451,36 +452,46 @@ int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, co
     return ok;
 }
 
-/* The exact verdict at the counterexample, recomputed from scratch with every
- * parameter substituted: it must violate what the search said it violates. */
+/* The exact verdict at the counterexample, recomputed on another route: the
+ * characteristic polynomial derived once per run with only the case's set
+ * values substituted (the run's cached variant), every other parameter
+ * substituted at the point, Routh and Schur-Cohn counted on it (the
+ * search's verdict came from the cell's own variant, derived with NAME
+ * substituted first).  It must violate what the search said it violates. */
 static int forall_recheck(int *agrees, rs_run_t *run, const json_t *ev)
 {
     const json_t *cx = json_object_get(ev, "counterexample");
     const char *said = json_string_value(json_object_get(json_object_get(ev, "at_counterexample"), "status"));
     const char *key;
     json_t *val;
-    rs_assign_t *extra = calloc((size_t) run->c->nparams + 1, sizeof(rs_assign_t)), *a = NULL;
-    slong n = 0, na = 0;
+    slong np = run->c->nparams, n = 0, na = 0;
+    slong *vars = flint_malloc((np + 1) * sizeof(slong));
+    fmpq *vals = _fmpq_vec_init(np + 1);
+    rs_assign_t *a = NULL;
     rs_variant_t *v;
     rs_status_t st;
     rs_rootcount_t rc;
-    int r;
+    int r, ok = 1;
     json_object_foreach((json_t *) cx, key, val) {
-        extra[n].var = rs_case_param_index(run->c, key);
-        extra[n].name = run->c->params[extra[n].var].name;
-        fmpq_init(extra[n].value);
-        fmpq_set_str(extra[n].value, json_string_value(val), 10);
-        n++;
+        slong k = rs_case_param_index(run->c, key);
+        if (k < 0 || !json_is_string(val) || fmpq_set_str(vals + n, json_string_value(val), 10) != 0) {
+            ok = 0;
+            break;
+        }
+        fmpq_canonicalise(vals + n);
+        vars[n++] = k;
     }
-    rs_run_assignments(run, &a, &na, NULL, 0, extra, n);
+    rs_run_assignments(run, &a, &na, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, na);
-    if (r == RS_OK) {
-        r = rs_run_point_status(&st, rc, run, v, NULL, NULL, 0);
+    *agrees = 0;
+    if (r == RS_OK && ok) {
+        r = rs_run_point_status(&st, rc, run, v, vars, vals, n);
         if (r == RS_OK) *agrees = said != NULL && strcmp(said, rs_status_name(st)) == 0;
         rs_rootcount_clear(rc);
     }
     rs_assign_free(a, na);
-    rs_assign_free(extra, n);
+    flint_free(vars);
+    _fmpq_vec_clear(vals, np + 1);
     return r;
 }
 
@@ -526,9 +537,107 @@ int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const 
     return r;
 }
 
+/* 1 when the real polynomial c[0..n] (c[n] != 0) has every root strictly
+ * inside the unit circle by the Schur-Cohn recursion in double precision:
+ * |c_n| > |c_0| and the same for (c_n p - c_0 p*)/lambda.  A guess only
+ * (rounding can flip a borderline answer); it never decides a verdict. */
+static int schur_double_stable(double *c, double *d, slong n)
+{
+    slong k;
+    while (n > 0) {
+        double m = 0;
+        if (!(fabs(c[n]) > fabs(c[0]))) return 0;
+        for (k = 0; k < n; k++) d[k] = c[n] * c[k + 1] - c[0] * c[n - 1 - k];
+        n--;
+        for (k = 0; k <= n; k++) m = fmax(m, fabs(d[k]));
+        if (!(m > 0) || !isfinite(m)) return 0;
+        for (k = 0; k <= n; k++) c[k] = d[k] / m;
+    }
+    return 1;
+}
+
+/* 1 when the scheme looks not stable at tv = t with every other free
+ * parameter at one simple admissible value of its interval b (the midpoint,
+ * an end plus or minus 1, or 1): the characteristic polynomial derived once
+ * per run (the set values substituted) evaluated there, its roots located in
+ * double precision.  A cheap guess of the cell's status that only orders the
+ * work (search or proof first), never evidence; 0 when the point is not
+ * admissible. */
+static int forall_probe_bad(rs_run_t *run, slong tv, const fmpq_t t, const rs_bound_t *b)
+{
+    slong np = run->c->nparams, na = 0, ncps = 0, k;
+    rs_assign_t *a = NULL;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpq *pt, **pp;
+    rs_condpoly_t *cps;
+    int r, bad = 0;
+    rs_run_assignments(run, &a, &na, NULL, 0, NULL, 0);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK || v->singular || v->s->complex_char) { rs_error_init(run->err); return 0; }
+    s = v->s;
+    pt = _fmpq_vec_init(s->nvars);
+    pp = flint_malloc(s->nvars * sizeof(fmpq *));
+    cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
+    for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+    for (k = 0; k < np && k < s->nvars; k++) {
+        const rs_bound_t *bk = b + k;
+        if (k == tv) fmpq_set(pt + k, t);
+        else if (bk->fixed) fmpq_set(pt + k, bk->lo);
+        else if (bk->has_lo && bk->has_hi) { fmpq_add(pt + k, bk->lo, bk->hi); fmpq_div_2exp(pt + k, pt + k, 1); }
+        else if (bk->has_lo) fmpq_add_si(pt + k, bk->lo, 1);
+        else if (bk->has_hi) fmpq_sub_si(pt + k, bk->hi, 1);
+        else fmpq_one(pt + k);
+    }
+    for (k = 0; r == RS_OK && k < run->c->nassume; k++)
+        r = rs_condpoly_compile(cps + ncps++, &run->c->assume[k], s, run->c, run->err);
+    if (r == RS_OK && rs_run_point_admissible(cps, ncps, pp, s)) {
+        fmpq_mpoly_t q;
+        fmpq_poly_t w;
+        fmpz_poly_t u;
+        fmpq_mpoly_init(q, s->ctx);
+        fmpq_poly_init(w);
+        fmpz_poly_init(u);
+        fmpq_one(q->content);
+        fmpz_mpoly_set(q->zpoly, v->cp->p, s->zctx);
+        fmpq_mpoly_reduce(q, s->ctx);
+        for (k = 0; k < np && k < s->nvars; k++)
+            if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
+                fmpq_mpoly_evaluate_one_fmpq(q, q, k, pt + k, s->ctx);
+        if (fmpq_mpoly_get_fmpq_poly(w, q, s->lambda_var, s->ctx)) {
+            slong n = fmpq_poly_degree(w);
+            if (n < v->cp->degree) {
+                bad = 1;                              /* singular there */
+            } else {
+                double *c = flint_malloc(2 * (n + 1) * sizeof(double));
+                fmpq_poly_get_numerator(u, w);
+                for (k = 0; k <= n; k++) c[k] = fmpz_get_d(u->coeffs + k);
+                bad = !schur_double_stable(c, c + n + 1, n);
+                flint_free(c);
+            }
+        }
+        fmpq_mpoly_clear(q, s->ctx);
+        fmpq_poly_clear(w);
+        fmpz_poly_clear(u);
+    }
+    if (r != RS_OK) rs_error_init(run->err);
+    for (k = 0; k < ncps; k++) rs_condpoly_clear(cps + k, s);
+    free(cps);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    return bad;
+}
+
 /* The cell at tv = t: stable for all (a certificate), else a point that is
- * not stable; marginal if bounded is proved, unstable at a counterexample. */
-int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t)
+ * not stable; marginal if bounded is proved, unstable at a counterexample.
+ * search_first (1: the caller expects a bad cell, after an unstable one; -1:
+ * no guess, the cell probed at one point, forall_probe_bad): the
+ * deterministic search for a point that is not stable runs before the proof,
+ * which is then not attempted when it finds one (same answer, same evidence;
+ * the point is re-checked by forall_recheck as every counterexample is). */
+int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t,
+                      int search_first)
 {
     slong np = run->c->nparams;
     rs_bound_t *b = forall_bounds(run, tv, t, t);
@@ -536,7 +645,8 @@ int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run,
     int vs = 0, vb = 0, agrees = 1, r;
     *decided = 0;
     *ev = NULL;
-    r = rs_an_claim_decide(&vs, &e1, run, 0, b, 0);
+    if (search_first < 0) search_first = forall_probe_bad(run, tv, t, b);
+    r = rs_an_claim_decide(&vs, &e1, run, 0, b, search_first ? 2 : 0);
     if (r == RS_OK && vs == 1) {
         *decided = 1; *st = RS_STATUS_STABLE; *ev = e1; e1 = NULL;
     } else if (r == RS_OK && vs == -1) {

@@ -139,7 +139,8 @@ int rs_an_limit(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_astability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_claim(rs_run_t *run, const rs_an_req_t *req);
 /* an_claim.c: prove or refute a claim of kind (0 stable, 1 bounded) on the
- * set b; region NAME for all uses it cell by cell */
+ * set b; region NAME for all uses it cell by cell (search 0: prove, then
+ * search if not proved; 1: both; 2: search first, prove if nothing found) */
 int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const rs_bound_t *b, int search);
 /* an_region_forall.c: the critical values of parameter tv for `for all`
  * over the variables qv[0..nq-1] (univariate in tv, appended to *out); the
@@ -149,7 +150,8 @@ int rs_an_forall_critical(fmpz_poly_struct **out, slong *nout, rs_run_t *run, co
 /* 1 when q's leading coefficient (lambda = -1 a root where it vanishes) has
  * no zero on the domain b with tv = t */
 int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, const fmpq_t t, const rs_bound_t *b);
-int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t);
+int rs_an_forall_cell(rs_status_t *st, int *decided, json_t **ev, rs_run_t *run, slong tv, const fmpq_t t,
+                      int search_first);
 int rs_an_forall_prove(int *proved, json_t **ev, rs_run_t *run, slong tv, const fmpq_t lo, const fmpq_t hi, int kind);
 void rs_an_forall_subst(fmpz_mpoly_t out, const fmpz_mpoly_t f, slong u, const fmpq_t x, const fmpz_mpoly_ctx_t ctx);
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req);
