@@ -186,13 +186,21 @@ static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int bo
             continue;
         }
         nreal = fmpz_poly_num_real_roots(g);
-        for (k = 0; k < nreal; k++) {
-            *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
-            alg_init(*list + *n);
-            fmpz_poly_set((*list)[*n].minpoly, g);
-            (*list)[*n].idx = k;
-            alg_refine(*list + *n, 128);
-            (*n)++;
+        if (nreal > 0) {
+            /* the roots once per factor, each real one's enclosure as
+             * alg_refine(., 128) would compute it (real roots first) */
+            acb_ptr r = _acb_vec_init(d);
+            rs_radius_complex_roots(r, g, 128);
+            for (k = 0; k < nreal; k++) {
+                *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
+                alg_init(*list + *n);
+                fmpz_poly_set((*list)[*n].minpoly, g);
+                (*list)[*n].idx = k;
+                arb_set((*list)[*n].x, acb_realref(r + k));
+                (*list)[*n].prec = 128;
+                (*n)++;
+            }
+            _acb_vec_clear(r, d);
         }
     }
     for (i = n0; i < *n; i++) (*list)[i].boundary = boundary;
