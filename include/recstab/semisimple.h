@@ -86,6 +86,13 @@ int rs_semisimple_verdict(rs_status_t *st, rs_semisimple_t ss, const rs_scheme_s
  * roots) to *out (flint_realloc'd, *nout entries, each initialised). */
 int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
                              const fmpz_mpoly_t f);
+/* The same multipliers with every parameter of s symbolic: polynomials in
+ * the parameters (in s->zctx; each initialised, appended to *out,
+ * flint_realloc'd) whose zero sets hold every point where the rank of A
+ * modulo f can fall below its rank over Q(params)[lambda]/(f), i.e. where a
+ * repeated root of f can become semisimple (the for-all projection). */
+int rs_semisimple_rank_drops_mpoly(fmpz_mpoly_struct **out, slong *nout, const rs_scheme_t s,
+                                   const fmpz_mpoly_t f);
 
 /* Over Q(params): every repeated factor f^e of p (det A, the parameters of s
  * symbolic) has dim ker A = e over Q(params)[lambda]/(f).  Then at every

@@ -18,6 +18,7 @@
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
 #include "stability/schur_complex.h"
+#include "recstab/semisimple.h"
 #include "analysis/an_region.h"
 
 /* ---- the projection -------------------------------------------------------- */
@@ -346,6 +347,8 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
     ulong nn = (ulong) n;
     fmpz_mpoly_t sqf, qz, t;
     fmpz_mpoly_factor_t fac;
+    fmpz_mpoly_struct *drops = NULL;
+    slong ndrops = 0;
     rs_hurwitz_t h;
     rs_plist_t *g;
     int r = RS_OK;
@@ -360,8 +363,19 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
     fmpz_mpoly_factor_init(fac, s->zctx);
     if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
         for (k = 0; k < fac->num; k++)
-            if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) > 0)
+            if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) > 0) {
                 fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
+                /* a repeated factor f^e of det A: a circle root of f is
+                 * bounded iff dim ker A = e there, which changes only where
+                 * the rank of A modulo f drops (two identical oscillators,
+                 * one driving the other: a Jordan block except where the
+                 * coupling vanishes).  Those polynomials join the full
+                 * projection, with the discriminant and the resultants. */
+                if (fmpz_cmp_ui(fac->exp + k, 2) >= 0 && !s->from_char && s->n >= 1) {
+                    *full = 1;
+                    rs_semisimple_rank_drops_mpoly(&drops, &ndrops, s, fac->poly + k);
+                }
+            }
     } else {
         fmpz_mpoly_set(sqf, v->cp->p, s->zctx);
     }
@@ -385,6 +399,11 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
         rs_plist_add(g + (*full ? 0 : 1 + k), h->coeffs + k, tv, dom, s->zctx);
     for (k = 0; r == RS_OK && fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 1 && k < h->n; k++)
         rs_plist_add(g + (*full ? 0 : 2 + h->n + k), h->minors + k, tv, dom, s->zctx);
+    for (k = 0; k < ndrops; k++) {
+        rs_plist_add(g, drops + k, tv, dom, s->zctx);
+        fmpz_mpoly_clear(drops + k, s->zctx);
+    }
+    flint_free(drops);
     rs_hurwitz_clear(h, s->zctx);
     fmpz_mpoly_clear(sqf, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);

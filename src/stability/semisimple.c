@@ -196,26 +196,43 @@ static void prem_lambda(fmpz_mpoly_t a, const fmpz_mpoly_t f, slong lv, const fm
     fmpz_mpoly_clear(lf, ctx); fmpz_mpoly_clear(la, ctx); fmpz_mpoly_clear(t, ctx);
 }
 
-/* Appends R (a polynomial in tv only, if non-zero and non-constant) to the
- * list of univariate polynomials. */
-static void push_tpoly(fmpz_poly_struct **out, slong *nout, const fmpz_mpoly_t R, slong tv,
-                       const fmpz_mpoly_ctx_t ctx)
+/* Where rank_generic puts its multipliers: univariate polynomials in tv
+ * (u != NULL), or the polynomials themselves in every parameter (m != NULL). */
+typedef struct {
+    fmpz_poly_struct **u;
+    slong *nu;
+    fmpz_mpoly_struct **m;
+    slong *nm;
+    slong tv;
+} drop_sink_t;
+
+/* Appends R (if non-zero and non-constant; for u: a polynomial in tv only)
+ * to the sink's list. */
+static void push_tpoly(const drop_sink_t *out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
 {
     fmpz_poly_t u;
+    if (out->m != NULL) {
+        if (fmpz_mpoly_is_zero(R, ctx) || fmpz_mpoly_is_fmpz(R, ctx)) return;
+        *out->m = flint_realloc(*out->m, (*out->nm + 1) * sizeof(fmpz_mpoly_struct));
+        fmpz_mpoly_init(*out->m + *out->nm, ctx);
+        fmpz_mpoly_set(*out->m + *out->nm, R, ctx);
+        (*out->nm)++;
+        return;
+    }
     fmpz_poly_init(u);
-    if (!fmpz_mpoly_is_zero(R, ctx) && fmpz_mpoly_get_fmpz_poly(u, R, tv, ctx) && fmpz_poly_degree(u) >= 1) {
-        *out = flint_realloc(*out, (*nout + 1) * sizeof(fmpz_poly_struct));
-        fmpz_poly_init(*out + *nout);
-        fmpz_poly_swap(*out + *nout, u);
-        (*nout)++;
+    if (!fmpz_mpoly_is_zero(R, ctx) && fmpz_mpoly_get_fmpz_poly(u, R, out->tv, ctx) && fmpz_poly_degree(u) >= 1) {
+        *out->u = flint_realloc(*out->u, (*out->nu + 1) * sizeof(fmpz_poly_struct));
+        fmpz_poly_init(*out->u + *out->nu);
+        fmpz_poly_swap(*out->u + *out->nu, u);
+        (*out->nu)++;
     }
     fmpz_poly_clear(u);
 }
 
 /* The elimination multiplier m vanishes at a root of f for t where
  * Res_lambda(m, f)(t) = 0 (or lc(f)(t) = 0, recorded separately). */
-static void push_multiplier(fmpz_poly_struct **out, slong *nout, const fmpz_mpoly_t m,
-                            const fmpz_mpoly_t f, slong tv, slong lv, const fmpz_mpoly_ctx_t ctx)
+static void push_multiplier(const drop_sink_t *out, const fmpz_mpoly_t m, const fmpz_mpoly_t f, slong lv,
+                            const fmpz_mpoly_ctx_t ctx)
 {
     fmpz_mpoly_t R;
     fmpz_mpoly_init(R, ctx);
@@ -223,7 +240,7 @@ static void push_multiplier(fmpz_poly_struct **out, slong *nout, const fmpz_mpol
         fmpz_mpoly_set(R, m, ctx);
     else if (!fmpz_mpoly_resultant(R, m, f, lv, ctx))
         fmpz_mpoly_zero(R, ctx);
-    push_tpoly(out, nout, R, tv, ctx);
+    push_tpoly(out, R, ctx);
     fmpz_mpoly_clear(R, ctx);
 }
 
@@ -233,8 +250,7 @@ static void push_multiplier(fmpz_poly_struct **out, slong *nout, const fmpz_mpol
  * the number of pivots is the rank over that field.  With out != NULL the
  * multipliers used (pivots, row contents, lc(f)) are turned into polynomials
  * in tv whose roots hold every value where the rank at a point can drop. */
-static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
-                          const fmpz_mpoly_t f)
+static slong rank_generic(const drop_sink_t *out, const rs_scheme_t s, const fmpz_mpoly_t f)
 {
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
     slong n = s->n, lv = s->lambda_var, i, j, col, rank = 0;
@@ -245,7 +261,7 @@ static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t
     fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(g, ctx); fmpz_mpoly_init(lf, ctx);
     e = (ulong) fmpz_mpoly_degree_si(f, lv, ctx);
     fmpz_mpoly_get_coeff_vars_ui(lf, f, &lv, &e, 1, ctx);
-    if (out != NULL) push_tpoly(out, nout, lf, tv, ctx);
+    if (out != NULL) push_tpoly(out, lf, ctx);
     for (i = 0; i < n * n; i++) fmpz_mpoly_init(a + i, ctx);
     for (i = 0; i < n; i++) {
         /* row i over Z (scaled by a unit), reduced modulo f */
@@ -262,7 +278,7 @@ static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t
         if (piv < 0) continue;
         if (piv != rank)
             for (j = 0; j < n; j++) fmpz_mpoly_swap(a + piv * n + j, a + rank * n + j, ctx);
-        if (out != NULL) push_multiplier(out, nout, a + rank * n + col, f, tv, lv, ctx);
+        if (out != NULL) push_multiplier(out, a + rank * n + col, f, lv, ctx);
         for (i = rank + 1; i < n; i++) {
             if (fmpz_mpoly_is_zero(a + i * n + col, ctx)) continue;
             fmpz_mpoly_set(g, a + i * n + col, ctx);
@@ -278,7 +294,7 @@ static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t
             for (j = col; j < n; j++) fmpz_mpoly_gcd(g, g, a + i * n + j, ctx);
             if (!fmpz_mpoly_is_zero(g, ctx) && !fmpz_mpoly_is_fmpz(g, ctx)) {
                 for (j = col; j < n; j++) fmpz_mpoly_divexact(a + i * n + j, a + i * n + j, g, ctx);
-                if (out != NULL) push_multiplier(out, nout, g, f, tv, lv, ctx);
+                if (out != NULL) push_multiplier(out, g, f, lv, ctx);
             }
         }
         rank++;
@@ -292,8 +308,18 @@ static slong rank_generic(fmpz_poly_struct **out, slong *nout, const rs_scheme_t
 int rs_semisimple_rank_drops(fmpz_poly_struct **out, slong *nout, const rs_scheme_t s, slong tv,
                              const fmpz_mpoly_t f)
 {
+    drop_sink_t sink = {out, nout, NULL, NULL, tv};
     if (s->n < 1 || s->from_char) return RS_OK;
-    rank_generic(out, nout, s, tv, f);
+    rank_generic(&sink, s, f);
+    return RS_OK;
+}
+
+int rs_semisimple_rank_drops_mpoly(fmpz_mpoly_struct **out, slong *nout, const rs_scheme_t s,
+                                   const fmpz_mpoly_t f)
+{
+    drop_sink_t sink = {NULL, NULL, out, nout, -1};
+    if (s->n < 1 || s->from_char) return RS_OK;
+    rank_generic(&sink, s, f);
     return RS_OK;
 }
 
@@ -312,7 +338,7 @@ int rs_semisimple_generic(int *all, const rs_scheme_t s, const fmpz_mpoly_t p)
         slong e;
         if (fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) < 1 || fmpz_cmp_ui(fac->exp + k, 2) < 0) continue;
         e = fmpz_get_si(fac->exp + k);
-        if (s->from_char || s->n < 1 || s->n - rank_generic(NULL, NULL, s, -1, f) != e) *all = 0;
+        if (s->from_char || s->n < 1 || s->n - rank_generic(NULL, s, f) != e) *all = 0;
     }
     fmpz_mpoly_factor_clear(fac, s->zctx);
     return RS_OK;

@@ -33,7 +33,21 @@
  *     here by hand); at alpha = 1 + e, m = 1, D3 is a
  *     cubic in muh with leading coefficient -16384 W (W (3e^2 + e - 4) + 8 e),
  *     negative for small W: D3 < 0 for muh large, unstable for every
- *     alpha > 1, the bound reached only as muh -> inf. */
+ *     alpha > 1, the bound reached only as muh -> inf;
+ *   - two identical central-difference oscillators (h < 1, so each mode has
+ *     h^2 w^2 < 4), y driving x with strength eps
+ *     (cases/forall/driven-oscillators.case): det A = g^2, g = l^2 - (2 - h^2) l
+ *     + 1, for every eps; A modulo g is [[0, -eps h^2 l], [0, 0]], of rank 1
+ *     unless eps = 0: a Jordan block (x is driven at its own frequency and
+ *     grows like n) for eps != 0, two decoupled bounded oscillators at eps = 0.
+ *     So for all 0 < h < 1: unstable for eps < 0 and eps > 0, marginal at 0
+ *     (the critical value comes only from the rank of A, not from det A);
+ *   - the same oscillators coupled symmetrically (x'' = -x + eps y, y'' = -y +
+ *     eps x): modes w^2 = 1 +- eps; bounded for every 0 < h < 1 iff both are in
+ *     (0, 4) for h^2 w^2 (h^2 (1 + eps) < 4 holds for eps < 3) and 1 - eps > 0,
+ *     1 + eps > 0; at eps = +-1 a zero mode (double root lambda = 1, a Jordan
+ *     block: linear drift): marginal exactly on (-1, 1), unstable elsewhere;
+ *     at eps = 0 det A = g^2 again but A = g I is semisimple. */
 #include "testutil.h"
 #include <string.h>
 #include "recstab/casefile.h"
@@ -461,6 +475,28 @@ static void test_bad(void **state)
     }
 }
 
+static void test_jordan(void **state)
+{
+    static const struct iv driven[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+                                       {"0", 0, "inf", 0, "unstable"}};
+    static const struct iv coupled[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
+                                        {"1", 1, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = tu_run_case("cases/forall/driven-oscillators.case", NULL, -1, &outcome);
+    (void) state;
+    check_region(result(doc, 0), driven, 3, "driven oscillators");
+    assert_string_equal(str(result(doc, 0), "projection"), "full");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+    doc = run_ok("param eps h\nassume 0 < h < 1\nunknown x y\n"
+                 "eq x[n+1] - 2*x[n] + x[n-1] = h^2*(-x[n] + eps*y[n])\n"
+                 "eq y[n+1] - 2*y[n] + y[n-1] = h^2*(-y[n] + eps*x[n])\n"
+                 "analyse region eps for all [h]\n", &outcome);
+    check_region(result(doc, 0), coupled, 3, "coupled oscillators");
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -469,6 +505,7 @@ int main(void)
         cmocka_unit_test(test_newmark),
         cmocka_unit_test(test_park),
         cmocka_unit_test(test_park_all),
+        cmocka_unit_test(test_jordan),
         cmocka_unit_test(test_limit_ends),
         cmocka_unit_test(test_bad),
         cmocka_unit_test(test_claim_theta),
