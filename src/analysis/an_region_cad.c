@@ -39,6 +39,7 @@
 #include "analysis/an_region.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
+#include "recstab/semisimple.h"
 #include "util/polyfmt.h"
 
 #define CAD_CHECK_POINTS 64
@@ -316,8 +317,24 @@ static int cad_critical(cad_t *c)
     fmpz_mpoly_one(sqf, s->zctx);
     fmpz_mpoly_factor_init(fac, s->zctx);
     if (fmpz_mpoly_factor(fac, c->v->cp->p, s->zctx)) {
-        for (k = 0; k < fac->num; k++)
-            if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) > 0) fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
+        for (k = 0; k < fac->num; k++) {
+            if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) <= 0) continue;
+            fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
+            /* a repeated factor f^e of det A: its circle roots are bounded
+             * iff dim ker A = e, which changes only where the rank of A
+             * modulo f drops (not seen by det A: a Jordan block except on
+             * such a curve) */
+            if (fmpz_cmp_ui(fac->exp + k, 2) >= 0 && !s->from_char && s->n >= 1) {
+                fmpz_mpoly_struct *drops = NULL;
+                slong nd = 0, j;
+                rs_semisimple_rank_drops_mpoly(&drops, &nd, s, fac->poly + k);
+                for (j = 0; j < nd; j++) {
+                    cad_add_factors(c, drops + j, K_BOUNDARY);
+                    fmpz_mpoly_clear(drops + j, s->zctx);
+                }
+                flint_free(drops);
+            }
+        }
     } else {
         fmpz_mpoly_set(sqf, c->v->cp->p, s->zctx);
     }

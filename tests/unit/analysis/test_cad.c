@@ -8,6 +8,10 @@
  *   - theta method (th, w), w > 0: stable iff th > 1/2, marginal iff th = 1/2;
  *   - Newmark gamma = 1/2 (b, w), w > 0 (Hughes ch. 9): never stable,
  *     marginal iff 4 + (4 b - 1) w^2 > 0;
+ *   - two identical central-difference oscillators, y driving x with
+ *     strength eps (eps, h), 0 < h < 1: det A = g^2 for every eps and A
+ *     modulo g has rank 1 unless eps = 0 (a Jordan block): never stable,
+ *     marginal iff eps = 0;
  * (b) the exact point verdict (`analyse stability` with both parameters set);
  * (c) QEPCAD B's answer to the same question (its input and output below:
  *     test_qepcad). */
@@ -294,6 +298,31 @@ static void test_newmark(void **state)
     (void) state;
     /* never asymptotically stable: the stable formula is empty (checked by the points too) */
     region_test("cases/region2/newmark-beta-w.case", 250, newmark_points, newmark_closed, 1, "4*b*w^2 - w^2 + 4");
+}
+
+/* ---- driven oscillators: a Jordan block off the line eps = 0 ------------------ */
+
+static int driven_closed(const fmpq_t eps, const fmpq_t h)
+{
+    (void) h;
+    return fmpq_is_zero(eps) ? 1 : 0;
+}
+
+static void driven_points(fmpq *xs, fmpq *ys, slong n, flint_rand_t st)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        if (i % 3 == 0) fmpq_zero(xs + i); else rand_q(xs + i, st, -2, 2);
+        do rand_q(ys + i, st, 0, 1); while (fmpq_sgn(ys + i) <= 0 || fmpq_cmp_si(ys + i, 1) >= 0);
+    }
+}
+
+static void test_driven(void **state)
+{
+    (void) state;
+    /* no boundary: the stable set is empty (the marginal line lies between
+     * two unstable sides) */
+    region_test("cases/region2/driven-oscillators.case", 90, driven_points, driven_closed, 0, NULL);
 }
 
 /* ---- QEPCAD B ------------------------------------------------------------------
@@ -746,6 +775,7 @@ int main(void)
         cmocka_unit_test(test_jury),
         cmocka_unit_test(test_theta),
         cmocka_unit_test(test_newmark),
+        cmocka_unit_test(test_driven),
         cmocka_unit_test(test_irrational_lines),
         cmocka_unit_test(test_qepcad),
         cmocka_unit_test(test_map_arcs),
