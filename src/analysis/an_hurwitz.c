@@ -43,7 +43,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
     slong i, k;
     int r, verdict;
-    (void) req;
+    if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;

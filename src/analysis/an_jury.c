@@ -197,7 +197,7 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
     json_t *o, *rows;
     slong i;
     int r;
-    (void) req;
+    if (rs_an_complex_conds_applies(run)) return rs_an_complex_jury(run, req);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);

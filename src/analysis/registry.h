@@ -166,6 +166,12 @@ int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req);
+/* an_complex_conds.c: hurwitz (Bilharz) and jury (Schur-Cohn) conditions
+ * of p over Q(i)[real params], at complex set values or from a char line
+ * with i; _applies: the run's p has complex coefficients */
+int rs_an_complex_conds_applies(rs_run_t *run);
+int rs_an_complex_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
 /* `map re(NAME) A B N, im(NAME) C D M [of stability]` (req->u.sweep holds its request) */
 int rs_an_complex_map_is(const char *rest);

@@ -358,13 +358,38 @@ static void dropped_factors(rs_render_t *r, const json_t *dropped)
     rs_render_say(r, "\n", NULL);
 }
 
+/* p = A + i B over Q(i)[params] (an_complex_conds.c) */
+static void complex_p(rs_render_t *r, const json_t *o)
+{
+    const json_t *at = json_object_get(o, "at");
+    const char *key;
+    json_t *val;
+    rs_render_linef(r, "p(lambda)", "%s + i*(%s) (over Q(i))", js(o, "p_re"), js(o, "p_im"));
+    json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
+}
+
 void rs_render_hurwitz(rs_render_t *r, const json_t *o)
 {
     const json_t *minors = json_object_get(o, "minors");
     const json_t *conds = json_object_get(o, "conditions");
     size_t i;
-    rs_render_heading(r, "Hurwitz minors and Lienard-Chipart conditions",
-                      "Hurwitz minors and Li\\'enard--Chipart conditions");
+    if (js(o, "over") != NULL) {
+        /* over Q(i): the Bilharz conditions (an_complex_conds.c) */
+        rs_render_heading(r, "Bilharz conditions of q(z) over Q(i)", "Bilharz conditions of $q(z)$ over $Q(i)$");
+        complex_p(r, o);
+        rs_render_line(r, "q(i w)", "conj(c) i^-n q(i w) = P + i Q, P = %s", js(o, "P"));
+        rs_render_line(r, "", "Q = %s", js(o, "Q"));
+        rs_render_say(r, "With $c$ the leading coefficient of $q$, $\\bar c\\, i^{-n} q(i w) = P(w) + i Q(w)$, $P = ",
+                      "With $c$ the leading coefficient of $q$, $\\bar c\\, i^{-n} q(i w) = P(w) + i Q(w)$, $P = ");
+        rs_render_poly(r, js(o, "P"));
+        rs_render_say(r, "$, $Q = ", "$, $Q = ");
+        rs_render_poly(r, js(o, "Q"));
+        rs_render_say(r, "$; the fraction-free signed remainder chain of $P$ and $Q$ (Bilharz) gives:\n\n",
+                      "$; the fraction-free signed remainder chain of $P$ and $Q$ (Bilharz) gives:\n\n");
+    } else {
+        rs_render_heading(r, "Hurwitz minors and Lienard-Chipart conditions",
+                          "Hurwitz minors and Li\\'enard--Chipart conditions");
+    }
     for (i = 0; i < json_array_size(minors); i++) {
         const char *m = json_string_value(json_array_get(minors, i));
         char lab[32];
@@ -421,6 +446,7 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
     int sym = schur_cohn_prose(r, o, "Schur-Cohn test on p(lambda)", "Schur--Cohn test on $p(\\lambda)$");
     rs_render_line(r, "method", "%s", js(o, "method"));
     if (sym) {
+        if (js(o, "over") != NULL) complex_p(r, o);
         if (json_array_size(json_object_get(o, "conditions")) == 0)
             rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
                                                   "assumptions");

@@ -251,3 +251,184 @@ int rs_routh_complex_checked_status(rs_status_t *st, const fmpq_poly_t re, const
     *st = s1;
     return RS_OK;
 }
+
+/* ---- symbolic: the Bilharz conditions in real parameters -------------------- */
+
+void rs_routh_cx_conds_init(rs_routh_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx)
+{
+    c->n = c->ncond = 0;
+    c->cond = NULL;
+    fmpz_mpoly_init(c->P, ctx);
+    fmpz_mpoly_init(c->Q, ctx);
+}
+
+void rs_routh_cx_conds_clear(rs_routh_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx)
+{
+    slong k;
+    for (k = 0; k < c->ncond; k++) fmpz_mpoly_clear(c->cond + k, ctx);
+    flint_free(c->cond);
+    c->cond = NULL;
+    c->ncond = 0;
+    fmpz_mpoly_clear(c->P, ctx);
+    fmpz_mpoly_clear(c->Q, ctx);
+}
+
+static fmpz_mpoly_struct *mvec_init(slong n, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_struct *a = flint_malloc((size_t) (n + 1) * sizeof(fmpz_mpoly_struct));
+    slong k;
+    for (k = 0; k < n; k++) fmpz_mpoly_init(a + k, ctx);
+    return a;
+}
+
+static void mvec_clear(fmpz_mpoly_struct *a, slong n, const fmpz_mpoly_ctx_t ctx)
+{
+    slong k;
+    for (k = 0; k < n; k++) fmpz_mpoly_clear(a + k, ctx);
+    flint_free(a);
+}
+
+/* sum a[k] w^k with w the variable lv */
+static void mvec_collect(fmpz_mpoly_t out, const fmpz_mpoly_struct *a, slong n, slong lv,
+                         const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t w, t;
+    slong k;
+    fmpz_mpoly_init(w, ctx); fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_zero(out, ctx);
+    for (k = 0; k < n; k++) {
+        fmpz_mpoly_gen(w, lv, ctx);
+        fmpz_mpoly_pow_ui(w, w, (ulong) k, ctx);
+        fmpz_mpoly_mul(t, a + k, w, ctx);
+        fmpz_mpoly_add(out, out, t, ctx);
+    }
+    fmpz_mpoly_clear(w, ctx); fmpz_mpoly_clear(t, ctx);
+}
+
+static int mvec_too_large(const fmpz_mpoly_struct *a, slong n, const fmpz_mpoly_ctx_t ctx, slong max_terms)
+{
+    slong k;
+    for (k = 0; k < n; k++) if (fmpz_mpoly_length(a + k, ctx) > max_terms) return 1;
+    return 0;
+}
+
+static void push_cond(rs_routh_cx_conds_t *c, const fmpz_mpoly_t f, int neg, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_init(c->cond + c->ncond, ctx);
+    if (neg) fmpz_mpoly_neg(c->cond + c->ncond, f, ctx);
+    else fmpz_mpoly_set(c->cond + c->ncond, f, ctx);
+    c->ncond++;
+}
+
+int rs_routh_cx_conds(rs_routh_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong lv,
+                      const fmpz_mpoly_ctx_t ctx, slong max_terms)
+{
+    slong n = FLINT_MAX(fmpz_mpoly_degree_si(re, lv, ctx), fmpz_mpoly_degree_si(im, lv, ctx)), k, j;
+    fmpz_mpoly_struct *ar, *ai, *fr, *fi, *A, *B, *R;
+    fmpz_mpoly_t t, u, cr, ci, lb, la, beta;
+    fmpz_poly_t up, dn, m1, m2;
+    int ok = 1;
+    if (n < 1) return 0;
+    c->n = n;
+    c->cond = flint_malloc((size_t) (n + 1) * sizeof(fmpz_mpoly_struct));
+    ar = mvec_init(n + 1, ctx); ai = mvec_init(n + 1, ctx);
+    fr = mvec_init(n + 1, ctx); fi = mvec_init(n + 1, ctx);
+    fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(u, ctx); fmpz_mpoly_init(cr, ctx); fmpz_mpoly_init(ci, ctx);
+    fmpz_mpoly_init(lb, ctx); fmpz_mpoly_init(la, ctx); fmpz_mpoly_init(beta, ctx);
+    fmpz_poly_init(up); fmpz_poly_init(dn); fmpz_poly_init(m1); fmpz_poly_init(m2);
+    for (k = 0; k <= n; k++) {
+        ulong e = (ulong) k;
+        fmpz_mpoly_get_coeff_vars_ui(ar + k, re, &lv, &e, 1, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(ai + k, im, &lv, &e, 1, ctx);
+    }
+    /* q_j = sum_k c_k [s^j] (1 + s)^k (1 - s)^(n - k), into fr/fi */
+    fmpz_poly_set_coeff_si(up, 0, 1); fmpz_poly_set_coeff_si(up, 1, 1);
+    fmpz_poly_set_coeff_si(dn, 0, 1); fmpz_poly_set_coeff_si(dn, 1, -1);
+    for (k = 0; k <= n; k++) {
+        fmpz_poly_pow(m1, up, (ulong) k);
+        fmpz_poly_pow(m2, dn, (ulong) (n - k));
+        fmpz_poly_mul(m1, m1, m2);
+        for (j = 0; j <= n; j++) {
+            const fmpz *b = fmpz_poly_get_coeff_ptr(m1, j);
+            if (b == NULL || fmpz_is_zero(b)) continue;
+            fmpz_mpoly_scalar_mul_fmpz(t, ar + k, b, ctx);
+            fmpz_mpoly_add(fr + j, fr + j, t, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(t, ai + k, b, ctx);
+            fmpz_mpoly_add(fi + j, fi + j, t, ctx);
+        }
+    }
+    /* f_j = q_j i^(j - n) */
+    for (j = 0; j <= n; j++) {
+        switch ((unsigned) ((j - n) % 4 + 4) % 4) {
+        case 0: break;
+        case 1: fmpz_mpoly_swap(fr + j, fi + j, ctx); fmpz_mpoly_neg(fr + j, fr + j, ctx); break;
+        case 2: fmpz_mpoly_neg(fr + j, fr + j, ctx); fmpz_mpoly_neg(fi + j, fi + j, ctx); break;
+        default: fmpz_mpoly_swap(fr + j, fi + j, ctx); fmpz_mpoly_neg(fi + j, fi + j, ctx); break;
+        }
+    }
+    /* times conj(c), c = f_n: P_j = cr fr_j + ci fi_j, Q_j = cr fi_j - ci fr_j */
+    fmpz_mpoly_set(cr, fr + n, ctx);
+    fmpz_mpoly_set(ci, fi + n, ctx);
+    A = mvec_init(n + 1, ctx);
+    B = mvec_init(n + 1, ctx);
+    R = mvec_init(n + 1, ctx);
+    for (j = 0; j <= n; j++) {
+        fmpz_mpoly_mul(A + j, cr, fr + j, ctx);
+        fmpz_mpoly_mul(t, ci, fi + j, ctx);
+        fmpz_mpoly_add(A + j, A + j, t, ctx);
+        fmpz_mpoly_mul(B + j, cr, fi + j, ctx);
+        fmpz_mpoly_mul(t, ci, fr + j, ctx);
+        fmpz_mpoly_sub(B + j, B + j, t, ctx);
+    }
+    mvec_collect(c->P, A, n + 1, lv, ctx);
+    mvec_collect(c->Q, B, n, lv, ctx);     /* B_n = 0 */
+    push_cond(c, A + n, 0, ctx);
+    if (fmpz_mpoly_is_zero(A + n, ctx)) goto done;
+    /* the chain: A = T_(k-1) (formal degree m = n - k + 1), B = T_k (m - 1) */
+    fmpz_mpoly_one(beta, ctx);
+    for (k = 1; k <= n && ok; k++) {
+        slong m = n - k + 1;
+        fmpz_mpoly_set(lb, B + m - 1, ctx);
+        push_cond(c, lb, k & 1, ctx);
+        if (fmpz_mpoly_is_zero(lb, ctx) || k == n) break;
+        fmpz_mpoly_set(la, A + m, ctx);
+        /* R1 = lb A - la w B (degree m - 1), then R2 = lb R1 - R1_(m-1) B (m - 2) */
+        for (j = 0; j <= m - 1; j++) {
+            fmpz_mpoly_mul(R + j, lb, A + j, ctx);
+            if (j >= 1) {
+                fmpz_mpoly_mul(t, la, B + j - 1, ctx);
+                fmpz_mpoly_sub(R + j, R + j, t, ctx);
+            }
+        }
+        fmpz_mpoly_set(u, R + m - 1, ctx);
+        for (j = 0; j <= m - 2; j++) {
+            fmpz_mpoly_mul(R + j, lb, R + j, ctx);
+            fmpz_mpoly_mul(t, u, B + j, ctx);
+            fmpz_mpoly_sub(R + j, R + j, t, ctx);
+            fmpz_mpoly_neg(R + j, R + j, ctx);
+        }
+        /* / lc(T_(k-1))^2 (k >= 2): exact for the subresultant chain */
+        if (k >= 2) {
+            fmpz_mpoly_mul(beta, la, la, ctx);
+            for (j = 0; j <= m - 2 && ok; j++) ok = fmpz_mpoly_divides(t, R + j, beta, ctx);
+            if (ok) for (j = 0; j <= m - 2; j++) fmpz_mpoly_divides(R + j, R + j, beta, ctx);
+            ok = 1;
+        }
+        if (mvec_too_large(R, m - 1, ctx, max_terms)) { ok = 0; break; }
+        /* shift: A <- B, B <- R */
+        for (j = 0; j <= n; j++) {
+            fmpz_mpoly_swap(A + j, B + j, ctx);
+            fmpz_mpoly_swap(B + j, R + j, ctx);
+            fmpz_mpoly_zero(R + j, ctx);
+        }
+        for (j = m - 1; j <= n; j++) fmpz_mpoly_zero(B + j, ctx);
+    }
+done:
+    mvec_clear(ar, n + 1, ctx); mvec_clear(ai, n + 1, ctx);
+    mvec_clear(fr, n + 1, ctx); mvec_clear(fi, n + 1, ctx);
+    mvec_clear(A, n + 1, ctx); mvec_clear(B, n + 1, ctx); mvec_clear(R, n + 1, ctx);
+    fmpz_mpoly_clear(t, ctx); fmpz_mpoly_clear(u, ctx); fmpz_mpoly_clear(cr, ctx); fmpz_mpoly_clear(ci, ctx);
+    fmpz_mpoly_clear(lb, ctx); fmpz_mpoly_clear(la, ctx); fmpz_mpoly_clear(beta, ctx);
+    fmpz_poly_clear(up); fmpz_poly_clear(dn); fmpz_poly_clear(m1); fmpz_poly_clear(m2);
+    return ok;
+}

@@ -13,6 +13,7 @@
 #define RECSTAB_ROUTH_COMPLEX_H
 
 #include <flint/fmpq_poly.h>
+#include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 #include "recstab/rootcount.h"
 
@@ -48,5 +49,34 @@ int rs_routh_complex_status(rs_status_t *st, rs_routh_complex_t t, const fmpq_po
  * transform: the verdict when they agree, RS_ERR_INCONSISTENT when not. */
 int rs_routh_complex_checked_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im,
                                     slong deg, rs_error_t err);
+
+/* The Bilharz conditions with symbolic real parameters: p = re + i im with
+ * re, im in Z[params][lambda] (lambda the variable lv of ctx, formal degree
+ * n = the larger lambda-degree).  With q(s) = (1 - s)^n p((1 + s)/(1 - s)),
+ * c = its s^n coefficient ((-1)^n p(-1)) and f(w) = conj(c) i^(-n) q(i w)
+ * = P(w) + i Q(w) (P, Q real, P of degree n with leading coefficient
+ * |c|^2, stored with w in lambda's slot), every root of p lies inside the
+ * unit circle iff every cond[k] > 0, k = 0..n: cond[0] = |c|^2 (q keeps
+ * degree n: lambda = -1 is no root) and cond[k] = (-1)^k lc(T_k), where
+ * T_0 = P, T_1 = Q and T_(k+1) = -prem(T_(k-1), T_k) / lc(T_(k-1))^2
+ * (1 for k = 1) is the fraction-free signed remainder chain of P and Q (the
+ * subresultant chain: its leading coefficients are Bilharz's determinants up
+ * to positive factors).  All roots of f in Im w > 0 (Re s < 0) iff the
+ * Cauchy index Ind(Q/P) = -n iff that chain is regular with alternating
+ * leading signs.  The divisions are exact (subresultants); a division that
+ * is not (never expected) is skipped, which keeps every sign where the
+ * earlier conditions hold.  ncond < n + 1 when a leading coefficient is
+ * identically zero (cond[ncond - 1] = 0: never stable).  Returns 0 when p
+ * has degree < 1 or an intermediate exceeds max_terms. */
+typedef struct {
+    slong n, ncond;
+    fmpz_mpoly_struct *cond;
+    fmpz_mpoly_t P, Q;
+} rs_routh_cx_conds_t;
+
+void rs_routh_cx_conds_init(rs_routh_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx);
+void rs_routh_cx_conds_clear(rs_routh_cx_conds_t *c, const fmpz_mpoly_ctx_t ctx);
+int rs_routh_cx_conds(rs_routh_cx_conds_t *c, const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong lv,
+                      const fmpz_mpoly_ctx_t ctx, slong max_terms);
 
 #endif
