@@ -210,12 +210,218 @@ static void test_random_vs_arb(void **state)
     flint_randclear(rs);
 }
 
+
+/* ---- the symbolic Bilharz conditions (rs_routh_cx_conds) beside complex
+ * Schur-Cohn's (rs_schur_cx_conds), variables (a, lambda) ---------------------- */
+
+static const char *cx_vars[] = {"a", "lambda"};
+
+/* 1 when every condition is > 0 at a = x (lambda anything), else 0 */
+static int bilharz_holds(const rs_routh_cx_conds_t *c, slong x, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz vals[2];
+    fmpz_t v;
+    slong k;
+    int ok = c->ncond == c->n + 1;
+    fmpz_init(v);
+    vals[0] = x; vals[1] = 0;       /* small values: fmpz holds them directly */
+    for (k = 0; k < c->ncond; k++) {
+        fmpz *vp[2] = {vals + 0, vals + 1};
+        fmpz_mpoly_evaluate_all_fmpz(v, c->cond + k, vp, ctx);
+        if (fmpz_sgn(v) <= 0) ok = 0;
+    }
+    fmpz_clear(v);
+    return ok;
+}
+
+static int schur_holds(const rs_schur_cx_conds_t *c, slong x, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz vals[2];
+    fmpz_t v;
+    slong k;
+    int ok = 1;
+    fmpz_init(v);
+    vals[0] = x; vals[1] = 0;
+    for (k = 0; k < c->ndelta; k++) {
+        fmpz *vp[2] = {vals + 0, vals + 1};
+        fmpz_mpoly_evaluate_all_fmpz(v, c->delta + k, vp, ctx);
+        if (fmpz_sgn(v) <= 0) ok = 0;
+    }
+    fmpz_clear(v);
+    return ok;
+}
+
+/* re + i im at a = num/den as polynomials in lambda */
+static void eval_a(fmpq_poly_t out, const fmpz_mpoly_t p, slong num, slong den, const fmpz_mpoly_ctx_t ctx)
+{
+    slong len = fmpz_mpoly_length(p, ctx), i;
+    ulong ex[2];
+    fmpq_t c, x, old;
+    fmpq_init(c); fmpq_init(x); fmpq_init(old);
+    fmpq_poly_zero(out);
+    for (i = 0; i < len; i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), p, i, ctx);
+        fmpz_one(fmpq_denref(c));
+        fmpz_mpoly_get_term_exp_ui(ex, p, i, ctx);
+        fmpq_set_si(x, num, (ulong) den);
+        fmpq_pow_si(x, x, (slong) ex[0]);
+        fmpq_mul(c, c, x);
+        fmpq_poly_get_coeff_fmpq(old, out, (slong) ex[1]);
+        fmpq_add(old, old, c);
+        fmpq_poly_set_coeff_fmpq(out, (slong) ex[1], old);
+    }
+    fmpq_clear(c); fmpq_clear(x); fmpq_clear(old);
+}
+
+/* the Bilharz conditions of re + i im (strings in a, lambda) at integer a = x */
+static int cx_stable_at(const char *sre, const char *sim, slong x, int *schur)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t re, im;
+    rs_routh_cx_conds_t c;
+    rs_schur_cx_conds_t sc;
+    int ok;
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(re, sre, cx_vars, ctx), 0);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(im, sim, cx_vars, ctx), 0);
+    rs_routh_cx_conds_init(&c, ctx);
+    rs_schur_cx_conds_init(&sc);
+    assert_true(rs_routh_cx_conds(&c, re, im, 1, ctx, 100000));
+    assert_true(rs_schur_cx_conds(&sc, re, im, 1, ctx));
+    ok = bilharz_holds(&c, x, ctx);
+    *schur = schur_holds(&sc, x, ctx);
+    rs_schur_cx_conds_clear(&sc, ctx);
+    rs_routh_cx_conds_clear(&c, ctx);
+    fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return ok;
+}
+
+static void test_cx_conds_hand(void **state)
+{
+    int sc;
+    (void) state;
+    /* forward Euler at z = -1/2 + i/2: p = lambda - (1 + z), times 2:
+     * (2 lambda - 1) - i; |1 + z|^2 = 1/4 + 1/4 = 1/2 < 1 by hand: stable */
+    assert_int_equal(cx_stable_at("2*lambda - 1", "-1", 0, &sc), 1);
+    assert_int_equal(sc, 1);
+    /* z = -1/2 + i: |1 + z|^2 = 1/4 + 1 = 5/4 > 1: unstable */
+    assert_int_equal(cx_stable_at("2*lambda - 1", "-2", 0, &sc), 0);
+    assert_int_equal(sc, 0);
+    /* forward Euler with step a at z = -1 + i: p = lambda - 1 - a z =
+     * (lambda - 1 + a) - i a; |1 + a z|^2 = (1 - a)^2 + a^2 < 1 iff
+     * 2 a (a - 1) < 0 iff 0 < a < 1 (by hand).  Integer a: none inside
+     * (a = 0, 1 marginal); the factor 4 below puts 0 < a < 4 inside:
+     * p = lambda - 1 - (a/4) z, times 4: (4 lambda - 4 + a) - i a */
+    {
+        static const slong xs[] = {-2, -1, 0, 1, 2, 3, 4, 5, 8};
+        static const int want[] = {0, 0, 0, 1, 1, 1, 0, 0, 0};
+        slong k;
+        for (k = 0; k < 9; k++) {
+            assert_int_equal(cx_stable_at("4*lambda - 4 + a", "-a", xs[k], &sc), want[k]);
+            assert_int_equal(sc, want[k]);
+        }
+    }
+    /* leapfrog g^2 + 2 i a g - 1: the product of the roots is -1, so never
+     * all inside (|a| < 1: both on the circle, by the quadratic formula
+     * g = -i a +- sqrt(1 - a^2)) */
+    {
+        slong x;
+        for (x = -3; x <= 3; x++) {
+            assert_int_equal(cx_stable_at("lambda^2 - 1", "2*a*lambda", x, &sc), 0);
+            assert_int_equal(sc, 0);
+        }
+    }
+    /* (lambda - i/2)(lambda + a/4): roots i/2 and -a/4, all inside iff
+     * |a| < 4 (by hand); times 8: 8 lambda^2 + (2a - 4i) lambda - i a */
+    {
+        slong x;
+        for (x = -6; x <= 6; x++) {
+            assert_int_equal(cx_stable_at("8*lambda^2 + 2*a*lambda", "-4*lambda - a", x, &sc), x > -4 && x < 4);
+            assert_int_equal(sc, x > -4 && x < 4);
+        }
+    }
+}
+
+/* random p with coefficients linear in a: the Bilharz conditions, the
+ * complex Schur-Cohn conditions, numeric complex Schur-Cohn on p at the
+ * point and Arb's certified roots (independent) all agree */
+static void test_cx_conds_random(void **state)
+{
+    flint_rand_t rs;
+    fmpz_mpoly_ctx_t ctx;
+    slong t, compared = 0, stable = 0;
+    (void) state;
+    flint_randinit(rs);
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    for (t = 0; t < 120; t++) {
+        slong n = 1 + (slong) n_randint(rs, 4), k, x;
+        fmpz_mpoly_t re, im, term;
+        rs_routh_cx_conds_t c;
+        rs_schur_cx_conds_t sc;
+        fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx); fmpz_mpoly_init(term, ctx);
+        for (k = 0; k <= n; k++) {
+            /* c_k = u + v a + i (w + y a); the leading one dominant so that
+             * stable cases occur */
+            char buf[160];
+            slong u = (slong) n_randint(rs, 7) - 3, v = (slong) n_randint(rs, 3) - 1;
+            slong w = (slong) n_randint(rs, 7) - 3, y = (slong) n_randint(rs, 3) - 1;
+            if (k == n) u += 8 + (slong) n_randint(rs, 6);
+            snprintf(buf, sizeof buf, "(%ld + %ld*a)*lambda^%ld", (long) u, (long) v, (long) k);
+            fmpz_mpoly_set_str_pretty(term, buf, cx_vars, ctx);
+            fmpz_mpoly_add(re, re, term, ctx);
+            snprintf(buf, sizeof buf, "(%ld + %ld*a)*lambda^%ld", (long) w, (long) y, (long) k);
+            fmpz_mpoly_set_str_pretty(term, buf, cx_vars, ctx);
+            fmpz_mpoly_add(im, im, term, ctx);
+        }
+        rs_routh_cx_conds_init(&c, ctx);
+        rs_schur_cx_conds_init(&sc);
+        assert_true(rs_routh_cx_conds(&c, re, im, 1, ctx, 100000));
+        assert_true(rs_schur_cx_conds(&sc, re, im, 1, ctx));
+        for (x = -2; x <= 2; x++) {
+            fmpq_poly_t pr, pi;
+            slong l, r;
+            int b = bilharz_holds(&c, x, ctx), s = schur_holds(&sc, x, ctx), num;
+            fmpq_poly_init(pr); fmpq_poly_init(pi);
+            eval_a(pr, re, x, 1, ctx);
+            eval_a(pi, im, x, 1, ctx);
+            num = FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) == n && rs_schur_complex_inside(pr, pi);
+            assert_int_equal(b, s);
+            assert_int_equal(b, num);
+            /* Arb: the roots of p(lambda) mapped to s = (lambda - 1)/(lambda + 1) are
+             * those of q; all inside the circle iff all in Re s < 0 */
+            if (FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) == n) {
+                fmpq_poly_t qr, qi;
+                fmpq_poly_init(qr); fmpq_poly_init(qi);
+                rs_routh_complex_bilinear(qr, qi, pr, pi);
+                if (FLINT_MAX(fmpq_poly_degree(qr), fmpq_poly_degree(qi)) == n && arb_counts(&l, &r, qr, qi) == 1) {
+                    assert_int_equal(b, l == n);
+                    compared++;
+                    stable += b;
+                }
+                fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+            }
+            fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+        }
+        rs_schur_cx_conds_clear(&sc, ctx);
+        rs_routh_cx_conds_clear(&c, ctx);
+        fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx); fmpz_mpoly_clear(term, ctx);
+    }
+    assert_true(compared > 400);
+    assert_true(stable > 20);
+    fmpz_mpoly_ctx_clear(ctx);
+    flint_randclear(rs);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_hand_counts),
         cmocka_unit_test(test_bilinear_status),
         cmocka_unit_test(test_random_vs_arb),
+        cmocka_unit_test(test_cx_conds_hand),
+        cmocka_unit_test(test_cx_conds_random),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
