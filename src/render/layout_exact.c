@@ -426,6 +426,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
     rs_render_line(r, "p(1)", "%s (lambda = 1 is a root where this vanishes)", js(o, "p_at_1"));
     rs_render_line(r, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", js(o, "p_at_minus_1"));
     rs_render_line(r, "verdict", "%s", js(o, "verdict"));
+    if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
     rs_render_sample_check(r, o);
     rs_render_assigned(r, o);
 }
@@ -451,6 +452,7 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
             rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
                                                   "assumptions");
         condition_lines(r, o, "stable iff", "and", 0);
+        if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
         rs_render_line(r, "note", "%s", js(o, "note"));
         rs_render_sample_check(r, o);
         rs_render_assigned(r, o);

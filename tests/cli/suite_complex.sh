@@ -344,3 +344,34 @@ PY
 else
     ok "skipped region re(z), im(z) checks: no python3"
 fi
+
+# hurwitz and jury over Q(i) (issue 15, h-cxan): conditions in the real
+# parameters, derived by hand in the case file (forward Euler with step h at
+# q = -1 + i: |1 + h q|^2 = 1 - 2 h (1 - h) < 1 iff 0 < h < 1)
+SC=cases/complex/forward-euler-step-conditions.case
+"$RS" --json "$SC" | tr -d ' \n' >"$T/sc.json"; rc=$?
+if [ "$rc" = 0 ] && grep -q '"analysis":"hurwitz","over":"Q(i)"' "$T/sc.json" \
+   && grep -q '"conditions":\["h^2-2\*h+2!=0","-h^2+h>0"\]' "$T/sc.json" \
+   && grep -q '"analysis":"jury","over":"Q(i)"' "$T/sc.json" && grep -q '"conditions":\["-h^2+h>0"\]' "$T/sc.json" \
+   && [ "$(grep -o '"agree":true' "$T/sc.json" | wc -l)" = 2 ]; then
+    ok "hurwitz (Bilharz) and jury (complex Schur-Cohn): -h^2 + h > 0, checked at rational points"
+else fail "hurwitz/jury over Q(i): rc=$rc $(head -c 400 "$T/sc.json")"; fi
+# numbers: forward Euler at z = -1 + i/2 (|1 + z| = 1/2: stable); leapfrog
+# g^2 + 2 i a g - 1 at a = 1/2 (two simple roots on the circle: never
+# asymptotically stable) and a = 1 + i (product of the roots -1, one of
+# modulus > 1 (above): 1 inside, 1 outside)
+"$RS" --json --analyse hurwitz --analyse jury "$FE" | tr -d ' \n' >"$T/h1.json"
+if grep -q '"verdict":"stableundertheassumptions","status":"stable"' "$T/h1.json" \
+   && [ "$(grep -o '"status":"stable"' "$T/h1.json" | wc -l)" -ge 2 ]; then
+    ok "hurwitz/jury at z = -1 + i/2: stable"; else fail "hurwitz/jury at z = -1 + i/2: $(head -c 400 "$T/h1.json")"; fi
+"$RS" --json --analyse hurwitz "$LF" | tr -d ' \n' >"$T/h2.json"
+if grep -q '"verdict":"neverstable","status":"marginal","inside":0,"on":2,"outside":0' "$T/h2.json"; then
+    ok "hurwitz over Q(i), leapfrog a = 1/2: never stable, 2 on the circle"; else fail "leapfrog hurwitz: $(head -c 600 "$T/h2.json")"; fi
+"$RS" --json --set 'a=1+i' --analyse jury "$LF" | tr -d ' \n' >"$T/h3.json"
+if grep -q '"verdict":"neverstable","status":"unstable","inside":1,"on":0,"outside":1' "$T/h3.json"; then
+    ok "jury over Q(i), leapfrog a = 1 + i: 1 inside, 1 outside"; else fail "leapfrog jury a=1+i: $(head -c 600 "$T/h3.json")"; fi
+# a free real parameter beside a complex value: p = lambda - 1 - h w at w = i:
+# |1 + i h|^2 = 1 + h^2 >= 1, never stable; the conditions say so
+"$RS" --json --set 'h=i' --analyse hurwitz --analyse jury "$T/b.case" | tr -d ' \n' >"$T/h4.json"; rc=$?
+if [ "$rc" = 0 ] && [ "$(grep -o '"verdict":"neverstable"' "$T/h4.json" | wc -l)" = 2 ]; then
+    ok "hurwitz/jury with a free real w at h = i: never stable"; else fail "free w at h = i: rc=$rc $(head -c 600 "$T/h4.json")"; fi
