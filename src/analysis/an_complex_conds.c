@@ -560,3 +560,43 @@ int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     return r;
 }
+
+/* ---- p at a point: every parameter a number ------------------------------------ */
+
+int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_variant_t **vp, rs_run_t *run,
+                             const rs_an_req_t *req)
+{
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t re, im;
+    slong n = 0, k;
+    int r = rs_run_default_variant(run, vp);
+    if (r != RS_OK) return r;
+    s = (*vp)->s;
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    r = cx_symbolic(re, im, &n, vp, run, req);
+    for (k = 0; r == RS_OK && k < s->nvars; k++) {
+        char msg[300];
+        if (k == s->lambda_var || (fmpz_mpoly_degree_si(re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(im, k, s->zctx) <= 0))
+            continue;
+        snprintf(msg, sizeof msg, "%s needs every parameter set to a number (real or complex); still symbolic: %s",
+                 req->def->name, s->vars[k]);
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    if (r == RS_OK) {
+        fmpq *pt = _fmpq_vec_init(s->nvars);
+        fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+        for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+        eval_at(pr, re, pp, s);
+        eval_at(pi, im, pp, s);
+        _fmpq_vec_clear(pt, s->nvars);
+        flint_free(pp);
+        *at = json_object();
+        for (k = 0; k < run->c->ncsets; k++) {
+            char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
+            json_object_set_new(*at, run->c->csets[k].name, json_string(str));
+            free(str);
+        }
+    }
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return r;
+}

@@ -3,8 +3,11 @@
  * reference frequency, the relative frequency error. */
 #include <math.h>
 #include <stdlib.h>
+#include <acb_poly.h>
 #include "analysis/registry.h"
 #include "numeric/modes.h"
+#include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
 
 /* ---- modes ------------------------------------------------------------------------ */
 
@@ -65,6 +68,145 @@ void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_
     free(principal);
 }
 
+/* ---- p over Q(i): its own roots -------------------------------------------------- */
+
+static slong cdeg(const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    return FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im));
+}
+
+/* the distinct roots of a squarefree a = ar + i ai, certified isolating balls
+ * of relative accuracy >= bits, into out[0..deg a); 0 when the precision
+ * limit is reached first */
+static int isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong bits, slong max_prec)
+{
+    slong d = cdeg(ar, ai), k, prec;
+    int done = 0;
+    for (prec = 2 * bits + 64; prec <= max_prec && !done; prec *= 2) {
+        acb_poly_t p;
+        acb_t c;
+        fmpq_t x;
+        acb_poly_init(p);
+        acb_init(c);
+        fmpq_init(x);
+        for (k = 0; k <= d; k++) {
+            fmpq_poly_get_coeff_fmpq(x, ar, k);
+            arb_set_fmpq(acb_realref(c), x, prec);
+            fmpq_poly_get_coeff_fmpq(x, ai, k);
+            arb_set_fmpq(acb_imagref(c), x, prec);
+            acb_poly_set_coeff_acb(p, k, c);
+        }
+        if (acb_poly_find_roots(out, p, NULL, 0, prec) == d) {
+            done = 1;
+            for (k = 0; k < d; k++)
+                if (!acb_is_exact(out + k) && acb_rel_accuracy_bits(out + k) < bits) done = 0;
+        }
+        fmpq_clear(x);
+        acb_clear(c);
+        acb_poly_clear(p);
+    }
+    return done;
+}
+
+/* rr's roots (with multiplicity) of p = pr + i pi over Q(i): Yun's squarefree
+ * decomposition p = prod a_k^k over Q(i) (exact), then each a_k's roots
+ * isolated by acb_poly_find_roots (certified) */
+static int complex_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong max_prec,
+                         rs_error_t err)
+{
+    slong n = cdeg(pr, pi), k = 1, at = 0, j;
+    fmpq_poly_t br, bi, dr, di, gr, gi, ar, ai, tr, ti;
+    int r = RS_OK;
+    fmpq_poly_init(br); fmpq_poly_init(bi); fmpq_poly_init(dr); fmpq_poly_init(di);
+    fmpq_poly_init(gr); fmpq_poly_init(gi); fmpq_poly_init(ar); fmpq_poly_init(ai);
+    fmpq_poly_init(tr); fmpq_poly_init(ti);
+    rr->nroots = n;
+    rr->roots = _acb_vec_init(n);
+    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
+    rr->isolated = 1;
+    /* g = gcd(p, p'), b = p/g, d = p'/g - b' */
+    fmpq_poly_derivative(dr, pr);
+    fmpq_poly_derivative(di, pi);
+    rs_schur_complex_gcd(gr, gi, pr, pi, dr, di);
+    rs_schur_complex_div(br, bi, pr, pi, gr, gi);
+    rs_schur_complex_div(tr, ti, dr, di, gr, gi);
+    fmpq_poly_derivative(dr, br);
+    fmpq_poly_derivative(di, bi);
+    fmpq_poly_sub(dr, tr, dr);
+    fmpq_poly_sub(di, ti, di);
+    while (cdeg(br, bi) >= 1 && r == RS_OK) {
+        slong da;
+        rs_schur_complex_gcd(ar, ai, br, bi, dr, di);
+        da = cdeg(ar, ai);
+        if (da >= 1) {
+            if (at + k * da > n || !isolate_sqfree(rr->roots + at, ar, ai, bits, max_prec)) {
+                r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
+                                 "precision limit (%ld bits)", (long) max_prec);
+                break;
+            }
+            /* each root k times */
+            for (j = da - 1; j >= 0; j--) {
+                slong m;
+                for (m = 0; m < k; m++) {
+                    acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
+                    rr->mult[at + j * k + m] = k;
+                }
+            }
+            at += k * da;
+        }
+        /* b = b/a, c = d/a, d = c - b' */
+        rs_schur_complex_div(tr, ti, br, bi, ar, ai);
+        fmpq_poly_swap(br, tr); fmpq_poly_swap(bi, ti);
+        rs_schur_complex_div(tr, ti, dr, di, ar, ai);
+        fmpq_poly_derivative(dr, br);
+        fmpq_poly_derivative(di, bi);
+        fmpq_poly_sub(dr, tr, dr);
+        fmpq_poly_sub(di, ti, di);
+        k++;
+    }
+    if (r == RS_OK && at != n)
+        r = rs_error_set(err, RS_ERR_INCONSISTENT, "modes over Q(i): the squarefree decomposition has %ld roots, "
+                         "p has degree %ld", (long) at, (long) n);
+    fmpq_poly_clear(br); fmpq_poly_clear(bi); fmpq_poly_clear(dr); fmpq_poly_clear(di);
+    fmpq_poly_clear(gr); fmpq_poly_clear(gi); fmpq_poly_clear(ar); fmpq_poly_clear(ai);
+    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    return r;
+}
+
+/* the certified moduli against the exact counts over Q(i) (Schur-Cohn and
+ * Bilharz): a root certified inside (outside) needs one counted there */
+static int complex_check(rs_run_t *run, const rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, json_t *o)
+{
+    rs_routh_complex_t t;
+    rs_status_t st;
+    slong n = cdeg(pr, pi), k, in = 0, out = 0, open = 0;
+    int r, agree;
+    rs_routh_complex_init(t);
+    r = rs_routh_complex_checked_status(&st, pr, pi, n, run->err);
+    if (r == RS_OK) r = rs_routh_complex_status(&st, t, pr, pi, n, run->err);
+    if (r == RS_OK) {
+        arb_t m, one;
+        arb_init(m); arb_init(one);
+        arb_one(one);
+        for (k = 0; k < rr->nroots; k++) {
+            acb_abs(m, rr->roots + k, 128);
+            if (arb_lt(m, one)) in++;
+            else if (arb_gt(m, one)) out++;
+            else open++;
+        }
+        arb_clear(m); arb_clear(one);
+        agree = in <= t->left && out <= t->right && (open > 0 || (in == t->left && out == t->right));
+        json_object_set_new(o, "exact_check", json_pack("{s:s,s:I,s:I,s:I,s:I,s:I,s:I,s:b}", "status",
+                            rs_status_name(st), "inside", (json_int_t) t->left,
+                            "on", (json_int_t) (t->axis + (n - t->degree)), "outside", (json_int_t) t->right,
+                            "certified_inside", (json_int_t) in, "certified_outside", (json_int_t) out,
+                            "modulus_undecided", (json_int_t) open, "agree", agree));
+        if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    }
+    rs_routh_complex_clear(t);
+    return r;
+}
+
 int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -77,11 +219,24 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     slong nref = 0, i, prec = 128, digits = 15;
     json_t *o;
     int r;
-    r = rs_run_numeric_variant(run, &v);
-    if (r != RS_OK) return r;
+    int cx = rs_an_complex_conds_applies(run);
+    fmpq_poly_t pr, pi;
+    json_t *at = NULL;
     fmpz_poly_init(p);
-    r = rs_run_numeric_poly(p, run, q, v, "modes");
-    if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    if (cx) {
+        /* p over Q(i): its own roots, not those of the real block form p conj(p) */
+        r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
+    } else {
+        r = rs_run_numeric_variant(run, &v);
+        if (r == RS_OK) r = rs_run_numeric_poly(p, run, q, v, "modes");
+    }
+    if (r != RS_OK) {
+        fmpz_poly_clear(p);
+        fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+        json_decref(at);
+        return r;
+    }
     arb_init(h);
     arb_one(h);
     /* options: h=EXPR (time step; default 1 for schemes scaled by h), reference=EXPR[,EXPR...] */
@@ -100,33 +255,38 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
             nref++;
         }
     }
-    if (r != RS_OK) {
-        for (i = 0; i < nref; i++) arb_clear(refs[i]);
-        free(refs);
-        arb_clear(h);
-        fmpz_poly_clear(p);
-        return r;
-    }
     rs_radius_init(rr);
-    r = rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
-    if (r != RS_OK) {
-        for (i = 0; i < nref; i++) arb_clear(refs[i]);
-        free(refs);
-        arb_clear(h);
-        rs_radius_clear(rr);
-        fmpz_poly_clear(p);
-        return r;
+    o = NULL;
+    if (r == RS_OK)
+        r = cx ? complex_roots(rr, pr, pi, 100, run->opt->max_prec, run->err)
+               : rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("modes"));
+        if (cx) {
+            json_object_set_new(o, "over", json_string("Q(i)"));
+            json_object_set_new(o, "at", at);
+            at = NULL;
+            json_object_set_new(o, "roots_of", json_string(
+                "p over Q(i) itself (Yun's squarefree decomposition over Q(i), each factor's roots isolated by "
+                "acb_poly_find_roots), not the real block form p conj(p)"));
+        }
+        rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
+        if (cx) r = complex_check(run, rr, pr, pi, o);
     }
-    o = json_object();
-    json_object_set_new(o, "analysis", json_string("modes"));
-    rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
-    json_object_set_new(o, "decided_by", json_string("certified"));
-    json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
-    json_array_append_new(run->results, o);
+    if (r == RS_OK) {
+        json_object_set_new(o, "decided_by", json_string("certified"));
+        json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+    }
     for (i = 0; i < nref; i++) arb_clear(refs[i]);
     free(refs);
     arb_clear(h);
     rs_radius_clear(rr);
     fmpz_poly_clear(p);
-    return RS_OK;
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    json_decref(at);
+    return r;
 }

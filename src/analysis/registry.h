@@ -6,6 +6,7 @@
 #ifndef RECSTAB_ANALYSIS_REGISTRY_H
 #define RECSTAB_ANALYSIS_REGISTRY_H
 
+#include <flint/fmpq_poly.h>
 #include "analysis/impl.h"
 #include "recstab/model.h"
 #include "recstab/cosim.h"
@@ -172,6 +173,10 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_conds_applies(rs_run_t *run);
 int rs_an_complex_hurwitz(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req);
+/* p over Q(i) with every parameter a number (an input error naming one still
+ * free); *at the complex set values (a new JSON object) */
+int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_variant_t **vp, rs_run_t *run,
+                             const rs_an_req_t *req);
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
 /* `map re(NAME) A B N, im(NAME) C D M [of stability]` (req->u.sweep holds its request) */
 int rs_an_complex_map_is(const char *rest);

@@ -64,6 +64,7 @@ void rs_render_radius(rs_render_t *r, const json_t *o)
 void rs_render_modes(rs_render_t *r, const json_t *o)
 {
     const char *groups[] = {"modes", "spurious"};
+    char buf2[300];
     size_t g, i;
     rs_render_line(r, "h", "%s", rs_render_jstr(o, "h"));
     for (g = 0; g < 2; g++) {
@@ -77,6 +78,18 @@ void rs_render_modes(rs_render_t *r, const json_t *o)
                      rs_render_jstr(e, "frequency_error") ? rs_render_jstr(e, "frequency_error") : "");
             rs_render_line(r, i == 0 ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
         }
+    }
+    if (json_object_get(o, "exact_check") != NULL) {
+        /* over Q(i): p's own roots, their moduli against the exact counts */
+        const json_t *ck = json_object_get(o, "exact_check"), *at = json_object_get(o, "at");
+        const char *key;
+        json_t *val;
+        json_object_foreach((json_t *) at, key, val)
+            rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
+        snprintf(buf2, sizeof buf2, "%s over Q(i) (%lld inside, %lld on, %lld outside); certified moduli %s",
+                 rs_render_jstr(ck, "status"), rs_render_jint(ck, "inside"), rs_render_jint(ck, "on"),
+                 rs_render_jint(ck, "outside"), json_is_true(json_object_get(ck, "agree")) ? "agree" : "DISAGREE");
+        rs_render_line(r, "exact", "%s", buf2);
     }
     rs_render_assigned(r, o);
 }

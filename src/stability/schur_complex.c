@@ -157,6 +157,40 @@ void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t ar
     fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci);
 }
 
+void rs_schur_complex_div(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly_t are, const fmpq_poly_t aim,
+                          const fmpq_poly_t bre, const fmpq_poly_t bim)
+{
+    fmpq_poly_t ar, ai, tr, ti, qr, qi;
+    fmpq_t lr, li, cr, ci, xr, xi;
+    slong db = cdeg(bre, bim);
+    fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(tr); fmpq_poly_init(ti);
+    fmpq_poly_init(qr); fmpq_poly_init(qi);
+    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci); fmpq_init(xr); fmpq_init(xi);
+    fmpq_poly_set(ar, are); fmpq_poly_set(ai, aim);
+    cinv_lead(lr, li, bre, bim);
+    while (cdeg(ar, ai) >= db) {
+        slong da = cdeg(ar, ai);
+        /* c = lead(a) / lead(b), q += c x^(da - db), a -= c x^(da - db) b */
+        fmpq_poly_get_coeff_fmpq(xr, ar, da);
+        fmpq_poly_get_coeff_fmpq(xi, ai, da);
+        fmpq_mul(cr, xr, lr); fmpq_submul(cr, xi, li);
+        fmpq_mul(ci, xr, li); fmpq_addmul(ci, xi, lr);
+        fmpq_poly_set_coeff_fmpq(qr, da - db, cr);
+        fmpq_poly_set_coeff_fmpq(qi, da - db, ci);
+        cscale(tr, ti, cr, ci, bre, bim);
+        fmpq_poly_shift_left(tr, tr, da - db);
+        fmpq_poly_shift_left(ti, ti, da - db);
+        fmpq_poly_sub(ar, ar, tr);
+        fmpq_poly_sub(ai, ai, ti);
+        fmpq_poly_set_coeff_si(ar, da, 0);
+        fmpq_poly_set_coeff_si(ai, da, 0);
+    }
+    fmpq_poly_swap(qre, qr); fmpq_poly_swap(qim, qi);
+    fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(xr); fmpq_clear(xi);
+}
+
 int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,
                             rs_error_t err)
 {

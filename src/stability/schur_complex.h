@@ -24,6 +24,10 @@ void rs_schur_complex_norm(fmpz_poly_t P, const fmpq_poly_t re, const fmpq_poly_
 void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t are, const fmpq_poly_t aim,
                           const fmpq_poly_t bre, const fmpq_poly_t bim);
 
+/* q = the quotient of a by b over Q(i) (b not zero; the remainder dropped). */
+void rs_schur_complex_div(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly_t are, const fmpq_poly_t aim,
+                          const fmpq_poly_t bre, const fmpq_poly_t bim);
+
 /* The exact verdict of the scalar recurrence with characteristic polynomial
  * re + i im: stable (Schur-Cohn, cross-checked against the count of
  * p conj(p): RS_ERR_INCONSISTENT when they disagree), unstable (a root

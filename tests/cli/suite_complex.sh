@@ -375,3 +375,16 @@ if grep -q '"verdict":"neverstable","status":"unstable","inside":1,"on":0,"outsi
 "$RS" --json --set 'h=i' --analyse hurwitz --analyse jury "$T/b.case" | tr -d ' \n' >"$T/h4.json"; rc=$?
 if [ "$rc" = 0 ] && [ "$(grep -o '"verdict":"neverstable"' "$T/h4.json" | wc -l)" = 2 ]; then
     ok "hurwitz/jury with a free real w at h = i: never stable"; else fail "free w at h = i: rc=$rc $(head -c 600 "$T/h4.json")"; fi
+# modes over Q(i): p's own roots (not those of p conj(p)).  Forward Euler at
+# z = -1 + i/2: the root 1 + z = i/2, ln(i/2) = -ln 2 + i pi/2 (by hand)
+"$RS" --json --analyse modes "$FE" | tr -d ' \n' >"$T/m1.json"
+if grep -q '"modes":\[{"root":{[^}]*},"sigma":"-0.693147180559945","omega":"1.57079632679490"' "$T/m1.json" \
+   && grep -q '"exact_check":{"status":"stable","inside":1,"on":0,"outside":0,"certified_inside":1' "$T/m1.json"; then
+    ok "modes at z = -1 + i/2: one root i/2, sigma = -ln 2, omega = pi/2"; else fail "modes over Q(i): $(head -c 600 "$T/m1.json")"; fi
+# leapfrog a = 1: (g + i)^2, the double root -i twice (omega = -pi/2)
+"$RS" --json --set a=1 --analyse modes "$LF" | tr -d ' \n' >"$T/m2.json"
+if [ "$(grep -o '"omega":"-1.57079632679490"' "$T/m2.json" | wc -l)" = 2 ] && grep -q '"status":"unstable","inside":0,"on":2' "$T/m2.json"; then
+    ok "modes, leapfrog a = 1: the double root -i twice"; else fail "modes leapfrog a=1: $(head -c 600 "$T/m2.json")"; fi
+"$RS" --analyse modes "$SC" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "modes needs every parameter set to a number (real or complex); still symbolic: h" "$T/err"; then
+    ok "modes with a free real parameter beside a complex value: exit 2"; else fail "modes free h: rc=$rc $(cat "$T/err")"; fi

@@ -276,6 +276,36 @@ static void test_symbolic_random(void **state)
     flint_randclear(rs);
 }
 
+/* rs_schur_complex_div: products multiplied out by hand, divided back */
+static void test_div(void **state)
+{
+    /* (lambda - i)(lambda + 2) = lambda^2 + (2 - i) lambda - 2i */
+    static const slong a[] = {0, -2, 2, -1, 1, 0};
+    static const slong b[] = {0, -1, 1, 0};          /* lambda - i */
+    static const slong q[] = {2, 0, 1, 0};           /* lambda + 2 */
+    /* (2i lambda + 1)(lambda - 1/2) = 2i lambda^2 + (1 - i) lambda - 1/2, times 2:
+     * 4i lambda^2 + (2 - 2i) lambda - 1, divided by 2i lambda + 1: 2 lambda - 1 */
+    static const slong c[] = {-1, 0, 2, -2, 0, 4};
+    static const slong d[] = {1, 0, 0, 2};
+    static const slong e[] = {-1, 0, 2, 0};
+    fmpq_poly_t ar, ai, br, bi, qr, qi, wr, wi;
+    (void) state;
+    fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(br); fmpq_poly_init(bi);
+    fmpq_poly_init(qr); fmpq_poly_init(qi); fmpq_poly_init(wr); fmpq_poly_init(wi);
+    set_poly(ar, ai, a, 3, 1);
+    set_poly(br, bi, b, 2, 1);
+    set_poly(wr, wi, q, 2, 1);
+    rs_schur_complex_div(qr, qi, ar, ai, br, bi);
+    assert_true(fmpq_poly_equal(qr, wr) && fmpq_poly_equal(qi, wi));
+    set_poly(ar, ai, c, 3, 1);
+    set_poly(br, bi, d, 2, 1);
+    set_poly(wr, wi, e, 2, 1);
+    rs_schur_complex_div(qr, qi, ar, ai, br, bi);
+    assert_true(fmpq_poly_equal(qr, wr) && fmpq_poly_equal(qi, wi));
+    fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(br); fmpq_poly_clear(bi);
+    fmpq_poly_clear(qr); fmpq_poly_clear(qi); fmpq_poly_clear(wr); fmpq_poly_clear(wi);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -283,6 +313,7 @@ int main(void)
         cmocka_unit_test(test_random_vs_arb),
         cmocka_unit_test(test_symbolic_hand),
         cmocka_unit_test(test_symbolic_random),
+        cmocka_unit_test(test_div),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
