@@ -40,107 +40,17 @@ static int const_positive(const fmpz_mpoly_t f, const rs_scheme_struct *s)
 
 /* ---- p over Q(i)[real params] -------------------------------------------------- */
 
-/* the complex value of variable var (a parameter), or -1 */
-static slong cset_of(const rs_run_t *run, slong var)
-{
-    slong k;
-    if (var >= run->c->nparams) return -1;
-    for (k = 0; k < run->c->ncsets; k++)
-        if (strcmp(run->c->csets[k].name, run->c->params[var].name) == 0) return k;
-    return -1;
-}
-
-/* adds c i^ib times the term with exponents ex to qr + i qi, the complex
- * set values substituted (their exponents zeroed) */
-static void add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,
-                     const rs_scheme_struct *s)
-{
-    fmpq_t fr, fi, t;
-    slong v, k;
-    ulong *ue = flint_malloc((size_t) s->nvars * sizeof(ulong));
-    fmpq_init(fr); fmpq_init(fi); fmpq_init(t);
-    fmpq_set(fr, c);
-    for (v = 0; v < s->nvars; v++) {
-        slong cs = v == s->lambda_var ? -1 : cset_of(run, v);
-        if (cs >= 0) {
-            const fmpq *a = run->c->csets[cs].re, *b = run->c->csets[cs].im;
-            for (k = 0; k < ex[v]; k++) {   /* (fr + i fi)(a + i b) */
-                fmpq_mul(t, fr, a);
-                fmpq_submul(t, fi, b);
-                fmpq_mul(fi, fi, a);
-                fmpq_addmul(fi, fr, b);
-                fmpq_swap(fr, t);
-            }
-            ex[v] = 0;
-        }
-        ue[v] = (ulong) ex[v];
-    }
-    if (ib) { fmpq_swap(fr, fi); fmpq_neg(fr, fr); }   /* times i */
-    if (!fmpq_is_zero(fr)) fmpq_mpoly_push_term_fmpq_ui(qr, fr, ue, s->ctx);
-    if (!fmpq_is_zero(fi)) fmpq_mpoly_push_term_fmpq_ui(qi, fi, ue, s->ctx);
-    fmpq_clear(fr); fmpq_clear(fi); fmpq_clear(t);
-    flint_free(ue);
-}
-
-/* re + i im = p over Q(i)[real params], made integral and primitive
- * together (a positive rational factor: the same roots); *n its degree in
- * lambda */
+/* re + i im = p over Q(i)[real params] (rs_run_cx_poly); *n its degree in
+ * lambda; errors at the request where p cannot be analysed */
 static int cx_symbolic(fmpz_mpoly_t re, fmpz_mpoly_t im, slong *n, rs_variant_t **vp, rs_run_t *run,
                        const rs_an_req_t *req)
 {
     const rs_scheme_struct *s;
-    fmpq_mpoly_t qr, qi;
-    slong *ex, i, len;
-    fmpq_t c;
-    fmpz_t d, g;
     int r = rs_run_default_variant(run, vp);
     if (r != RS_OK) return r;
     s = (*vp)->s;
-    fmpq_mpoly_init(qr, s->ctx); fmpq_mpoly_init(qi, s->ctx);
-    fmpq_init(c);
-    fmpz_init(d); fmpz_init(g);
-    ex = flint_malloc((size_t) s->nvars * sizeof(slong));
-    if (s->complex_char) {
-        /* the block [[A, -B], [B, A]] of p = A + i B */
-        int part;
-        for (part = 0; part < 2; part++) {
-            const fmpq_mpoly_struct *m = s->M + 2 * part;
-            len = fmpq_mpoly_length(m, s->ctx);
-            for (i = 0; i < len; i++) {
-                fmpq_mpoly_get_term_coeff_fmpq(c, m, i, s->ctx);
-                fmpq_mpoly_get_term_exp_si(ex, m, i, s->ctx);
-                add_term(qr, qi, c, part, ex, run, s);
-            }
-        }
-    } else {
-        len = fmpz_mpoly_length((*vp)->cp->p, s->zctx);
-        for (i = 0; i < len; i++) {
-            fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), (*vp)->cp->p, i, s->zctx);
-            fmpz_one(fmpq_denref(c));
-            fmpz_mpoly_get_term_exp_si(ex, (*vp)->cp->p, i, s->zctx);
-            add_term(qr, qi, c, 0, ex, run, s);
-        }
-    }
-    fmpq_mpoly_sort_terms(qr, s->ctx); fmpq_mpoly_combine_like_terms(qr, s->ctx);
-    fmpq_mpoly_sort_terms(qi, s->ctx); fmpq_mpoly_combine_like_terms(qi, s->ctx);
-    /* common denominator, then the common integer content */
-    fmpz_lcm(d, fmpq_denref(qr->content), fmpq_denref(qi->content));
-    fmpq_mpoly_scalar_mul_fmpz(qr, qr, d, s->ctx);
-    fmpq_mpoly_scalar_mul_fmpz(qi, qi, d, s->ctx);
-    fmpz_mpoly_scalar_mul_fmpz(re, qr->zpoly, fmpq_numref(qr->content), s->zctx);
-    fmpz_mpoly_scalar_mul_fmpz(im, qi->zpoly, fmpq_numref(qi->content), s->zctx);
-    _fmpz_vec_content(g, re->coeffs, re->length);
-    _fmpz_vec_content(d, im->coeffs, im->length);
-    fmpz_gcd(g, g, d);
-    if (!fmpz_is_zero(g) && !fmpz_is_one(g)) {
-        fmpz_mpoly_scalar_divexact_fmpz(re, re, g, s->zctx);
-        fmpz_mpoly_scalar_divexact_fmpz(im, im, g, s->zctx);
-    }
+    rs_run_cx_poly(re, im, run, *vp);
     *n = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
-    flint_free(ex);
-    fmpq_clear(c);
-    fmpz_clear(d); fmpz_clear(g);
-    fmpq_mpoly_clear(qr, s->ctx); fmpq_mpoly_clear(qi, s->ctx);
     if (*n < 0)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_MATH, "%s: the characteristic polynomial vanishes at "
                             "the complex set values", req->def->name);
@@ -248,31 +158,6 @@ static int cond_add(cx_conds_t *jc, json_t *conds, json_t *dropped, const fmpz_m
     return always;
 }
 
-/* p's coefficients at the point pt (every variable but lambda) */
-static void eval_at(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s)
-{
-    slong len = fmpz_mpoly_length(p, s->zctx), i, v;
-    ulong *ex = flint_malloc((size_t) s->nvars * sizeof(ulong));
-    fmpq_t c, x, old;
-    fmpq_init(c); fmpq_init(x); fmpq_init(old);
-    fmpq_poly_zero(out);
-    for (i = 0; i < len; i++) {
-        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), p, i, s->zctx);
-        fmpz_one(fmpq_denref(c));
-        fmpz_mpoly_get_term_exp_ui(ex, p, i, s->zctx);
-        for (v = 0; v < s->nvars; v++) {
-            if (v == s->lambda_var || ex[v] == 0) continue;
-            fmpq_pow_si(x, pt[v], (slong) ex[v]);
-            fmpq_mul(c, c, x);
-        }
-        fmpq_poly_get_coeff_fmpq(old, out, (slong) ex[s->lambda_var]);
-        fmpq_add(old, old, c);
-        fmpq_poly_set_coeff_fmpq(out, (slong) ex[s->lambda_var], old);
-    }
-    fmpq_clear(c); fmpq_clear(x); fmpq_clear(old);
-    flint_free(ex);
-}
-
 #define CX_SAMPLE_POINTS 12
 #define CX_SAMPLE_TRIES 200
 
@@ -316,8 +201,8 @@ static int cx_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
             fmpq_set_si(pt + free_vars[k], c[0], (ulong) c[1]);
         }
         if (!rs_run_point_admissible(cps, ncp, pp, s)) continue;
-        eval_at(pr, re, pp, s);
-        eval_at(pi, im, pp, s);
+        rs_run_cx_eval(pr, re, pp, s);
+        rs_run_cx_eval(pi, im, pp, s);
         if (fmpq_poly_is_zero(pr) && fmpq_poly_is_zero(pi)) continue;
         says = conds_hold(jc, pp);
         r = rs_routh_complex_checked_status(&st, pr, pi, n, run->err);
@@ -412,8 +297,8 @@ static int cx_finish(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re
         for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
         fmpq_poly_init(pr); fmpq_poly_init(pi);
         rs_routh_complex_init(t);
-        eval_at(pr, re, pp, s);
-        eval_at(pi, im, pp, s);
+        rs_run_cx_eval(pr, re, pp, s);
+        rs_run_cx_eval(pi, im, pp, s);
         r = rs_routh_complex_status(&st, t, pr, pi, n, run->err);
         if (r == RS_OK) {
             json_object_set_new(o, "status", json_string(rs_status_name(st)));
@@ -586,8 +471,8 @@ int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_var
         fmpq *pt = _fmpq_vec_init(s->nvars);
         fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
         for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
-        eval_at(pr, re, pp, s);
-        eval_at(pi, im, pp, s);
+        rs_run_cx_eval(pr, re, pp, s);
+        rs_run_cx_eval(pi, im, pp, s);
         _fmpq_vec_clear(pt, s->nvars);
         flint_free(pp);
         *at = json_object();

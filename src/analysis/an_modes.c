@@ -114,62 +114,37 @@ static int isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t a
 static int complex_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong max_prec,
                          rs_error_t err)
 {
-    slong n = cdeg(pr, pi), k = 1, at = 0, j;
-    fmpq_poly_t br, bi, dr, di, gr, gi, ar, ai, tr, ti;
+    slong n = cdeg(pr, pi), k, at = 0, j;
+    rs_cx_sqfree_t f;
     int r = RS_OK;
-    fmpq_poly_init(br); fmpq_poly_init(bi); fmpq_poly_init(dr); fmpq_poly_init(di);
-    fmpq_poly_init(gr); fmpq_poly_init(gi); fmpq_poly_init(ar); fmpq_poly_init(ai);
-    fmpq_poly_init(tr); fmpq_poly_init(ti);
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, pr, pi);
     rr->nroots = n;
     rr->roots = _acb_vec_init(n);
     rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
     rr->isolated = 1;
-    /* g = gcd(p, p'), b = p/g, d = p'/g - b' */
-    fmpq_poly_derivative(dr, pr);
-    fmpq_poly_derivative(di, pi);
-    rs_schur_complex_gcd(gr, gi, pr, pi, dr, di);
-    rs_schur_complex_div(br, bi, pr, pi, gr, gi);
-    rs_schur_complex_div(tr, ti, dr, di, gr, gi);
-    fmpq_poly_derivative(dr, br);
-    fmpq_poly_derivative(di, bi);
-    fmpq_poly_sub(dr, tr, dr);
-    fmpq_poly_sub(di, ti, di);
-    while (cdeg(br, bi) >= 1 && r == RS_OK) {
-        slong da;
-        rs_schur_complex_gcd(ar, ai, br, bi, dr, di);
-        da = cdeg(ar, ai);
-        if (da >= 1) {
-            if (at + k * da > n || !isolate_sqfree(rr->roots + at, ar, ai, bits, max_prec)) {
-                r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
-                                 "precision limit (%ld bits)", (long) max_prec);
-                break;
-            }
-            /* each root k times */
-            for (j = da - 1; j >= 0; j--) {
-                slong m;
-                for (m = 0; m < k; m++) {
-                    acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
-                    rr->mult[at + j * k + m] = k;
-                }
-            }
-            at += k * da;
+    for (k = 1; k <= f.n && r == RS_OK; k++) {
+        slong da = cdeg(f.re + k - 1, f.im + k - 1);
+        if (da < 1) continue;
+        if (at + k * da > n || !isolate_sqfree(rr->roots + at, f.re + k - 1, f.im + k - 1, bits, max_prec)) {
+            r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
+                             "precision limit (%ld bits)", (long) max_prec);
+            break;
         }
-        /* b = b/a, c = d/a, d = c - b' */
-        rs_schur_complex_div(tr, ti, br, bi, ar, ai);
-        fmpq_poly_swap(br, tr); fmpq_poly_swap(bi, ti);
-        rs_schur_complex_div(tr, ti, dr, di, ar, ai);
-        fmpq_poly_derivative(dr, br);
-        fmpq_poly_derivative(di, bi);
-        fmpq_poly_sub(dr, tr, dr);
-        fmpq_poly_sub(di, ti, di);
-        k++;
+        /* each root k times (from the top: the sources below are not yet overwritten) */
+        for (j = da - 1; j >= 0; j--) {
+            slong m;
+            for (m = 0; m < k; m++) {
+                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
+                rr->mult[at + j * k + m] = k;
+            }
+        }
+        at += k * da;
     }
     if (r == RS_OK && at != n)
         r = rs_error_set(err, RS_ERR_INCONSISTENT, "modes over Q(i): the squarefree decomposition has %ld roots, "
                          "p has degree %ld", (long) at, (long) n);
-    fmpq_poly_clear(br); fmpq_poly_clear(bi); fmpq_poly_clear(dr); fmpq_poly_clear(di);
-    fmpq_poly_clear(gr); fmpq_poly_clear(gi); fmpq_poly_clear(ar); fmpq_poly_clear(ai);
-    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    rs_cx_sqfree_clear(&f);
     return r;
 }
 

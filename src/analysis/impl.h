@@ -8,6 +8,7 @@
 
 #include <jansson.h>
 #include <flint/fmpq.h>
+#include <flint/fmpq_poly.h>
 #include "recstab/analysis.h"
 #include "recstab/scheme.h"
 #include "recstab/charpoly.h"
@@ -195,5 +196,12 @@ void rs_run_coeff_in(fmpz_poly_t out, const fmpz_mpoly_t p, slong tv, slong j, c
 void rs_variant_free(rs_variant_t *v);
 json_t *rs_json_acb(const acb_t z, slong digits);
 json_t *rs_json_p_at(const rs_variant_t *v, slong x);
+
+/* complex_poly.c: p over Q(i)[real params] = re + i im (integral, primitive
+ * together; the complex set values substituted, or a `char` line with i
+ * read back from its block form), returns its degree in lambda (-1: zero);
+ * rs_run_cx_eval: re or im at the point pt (every variable but lambda). */
+slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v);
+void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s);
 
 #endif

@@ -237,6 +237,52 @@ int rs_routh_complex_status(rs_status_t *st, rs_routh_complex_t t, const fmpq_po
     return RS_OK;
 }
 
+/* the multiplicity of x (1 or -1) as a root of the squarefree a: 0 or 1 */
+static int cx_root_at(const fmpq_poly_t re, const fmpq_poly_t im, slong x)
+{
+    fmpq_t a, b, t;
+    int z;
+    fmpq_init(a); fmpq_init(b); fmpq_init(t);
+    fmpq_set_si(t, x, 1);
+    fmpq_poly_evaluate_fmpq(a, re, t);
+    fmpq_poly_evaluate_fmpq(b, im, t);
+    z = fmpq_is_zero(a) && fmpq_is_zero(b);
+    fmpq_clear(a); fmpq_clear(b); fmpq_clear(t);
+    return z;
+}
+
+void rs_routh_complex_rootcount(rs_rootcount_t rc, const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    rs_cx_sqfree_t f;
+    fmpq_poly_t qr, qi;
+    rs_routh_complex_t t;
+    slong k;
+    rs_rootcount_clear(rc);
+    rs_rootcount_init(rc);
+    rc->degree = cdeg(re, im);
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, re, im);
+    fmpq_poly_init(qr); fmpq_poly_init(qi);
+    rs_routh_complex_init(t);
+    for (k = 1; k <= f.n; k++) {
+        const fmpq_poly_struct *ar = f.re + k - 1, *ai = f.im + k - 1;
+        slong d = cdeg(ar, ai), on;
+        if (d < 1) continue;
+        rs_routh_complex_bilinear(qr, qi, ar, ai);
+        rs_routh_complex_count(t, qr, qi);
+        /* a_k squarefree: Re s < 0 <-> inside; the axis and the degree drop (lambda = -1) <-> on */
+        on = t->axis + (d - t->degree);
+        rc->inside += k * t->left;
+        rc->outside += k * t->right;
+        if (on > 0) rs_rootcount_add_on(rc, k, on);
+        if (cx_root_at(ar, ai, 1)) rc->at_one = k;
+        if (cx_root_at(ar, ai, -1)) rc->at_minus_one = k;
+    }
+    rs_routh_complex_clear(t);
+    fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+    rs_cx_sqfree_clear(&f);
+}
+
 int rs_routh_complex_checked_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im,
                                     slong deg, rs_error_t err)
 {

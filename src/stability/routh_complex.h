@@ -45,6 +45,12 @@ void rs_routh_complex_bilinear(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly
 int rs_routh_complex_status(rs_status_t *st, rs_routh_complex_t t, const fmpq_poly_t re,
                             const fmpq_poly_t im, slong deg, rs_error_t err);
 
+/* p's own root counts over Q(i) into rc (inside / on / outside the unit
+ * circle, lambda = +-1 and the circle roots by multiplicity): Yun's
+ * squarefree decomposition over Q(i), then the Bilharz count of each
+ * factor's bilinear image. */
+void rs_routh_complex_rootcount(rs_rootcount_t rc, const fmpq_poly_t re, const fmpq_poly_t im);
+
 /* Both exact routes, Schur-Cohn over Q(i) and Bilharz on the bilinear
  * transform: the verdict when they agree, RS_ERR_INCONSISTENT when not. */
 int rs_routh_complex_checked_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im,

@@ -191,6 +191,62 @@ void rs_schur_complex_div(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly_t ar
     fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(xr); fmpq_clear(xi);
 }
 
+void rs_cx_sqfree_init(rs_cx_sqfree_t *f)
+{
+    f->n = 0;
+    f->re = f->im = NULL;
+}
+
+void rs_cx_sqfree_clear(rs_cx_sqfree_t *f)
+{
+    slong k;
+    for (k = 0; k < f->n; k++) {
+        fmpq_poly_clear(f->re + k);
+        fmpq_poly_clear(f->im + k);
+    }
+    flint_free(f->re);
+    flint_free(f->im);
+    rs_cx_sqfree_init(f);
+}
+
+void rs_schur_complex_sqfree(rs_cx_sqfree_t *f, const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    fmpq_poly_t br, bi, dr, di, gr, gi, tr, ti;
+    slong cap = FLINT_MAX(cdeg(re, im), 1);
+    rs_cx_sqfree_clear(f);
+    f->re = flint_malloc((size_t) cap * sizeof(fmpq_poly_struct));
+    f->im = flint_malloc((size_t) cap * sizeof(fmpq_poly_struct));
+    if (cdeg(re, im) < 1) return;
+    fmpq_poly_init(br); fmpq_poly_init(bi); fmpq_poly_init(dr); fmpq_poly_init(di);
+    fmpq_poly_init(gr); fmpq_poly_init(gi); fmpq_poly_init(tr); fmpq_poly_init(ti);
+    /* g = gcd(p, p'), b = p/g, d = p'/g - b' */
+    fmpq_poly_derivative(dr, re);
+    fmpq_poly_derivative(di, im);
+    rs_schur_complex_gcd(gr, gi, re, im, dr, di);
+    rs_schur_complex_div(br, bi, re, im, gr, gi);
+    rs_schur_complex_div(tr, ti, dr, di, gr, gi);
+    fmpq_poly_derivative(dr, br);
+    fmpq_poly_derivative(di, bi);
+    fmpq_poly_sub(dr, tr, dr);
+    fmpq_poly_sub(di, ti, di);
+    while (cdeg(br, bi) >= 1 && f->n < cap) {
+        /* a_k = gcd(b, d); b = b/a_k, d = d/a_k - b' */
+        fmpq_poly_init(f->re + f->n);
+        fmpq_poly_init(f->im + f->n);
+        rs_schur_complex_gcd(f->re + f->n, f->im + f->n, br, bi, dr, di);
+        rs_schur_complex_div(tr, ti, br, bi, f->re + f->n, f->im + f->n);
+        fmpq_poly_swap(br, tr); fmpq_poly_swap(bi, ti);
+        rs_schur_complex_div(tr, ti, dr, di, f->re + f->n, f->im + f->n);
+        fmpq_poly_derivative(dr, br);
+        fmpq_poly_derivative(di, bi);
+        fmpq_poly_sub(dr, tr, dr);
+        fmpq_poly_sub(di, ti, di);
+        f->n++;
+    }
+    fmpq_poly_clear(br); fmpq_poly_clear(bi); fmpq_poly_clear(dr); fmpq_poly_clear(di);
+    fmpq_poly_clear(gr); fmpq_poly_clear(gi); fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+}
+
 int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_poly_t im, slong deg,
                             rs_error_t err)
 {

@@ -28,6 +28,16 @@ void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t ar
 void rs_schur_complex_div(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly_t are, const fmpq_poly_t aim,
                           const fmpq_poly_t bre, const fmpq_poly_t bim);
 
+/* Yun's squarefree decomposition over Q(i): p = c prod_k a_k^k (k = 1..n),
+ * a_k monic, squarefree, pairwise coprime (1 when absent). */
+typedef struct {
+    slong n;
+    fmpq_poly_struct *re, *im;   /* a_(k+1) = re[k] + i im[k] */
+} rs_cx_sqfree_t;
+void rs_cx_sqfree_init(rs_cx_sqfree_t *f);
+void rs_cx_sqfree_clear(rs_cx_sqfree_t *f);
+void rs_schur_complex_sqfree(rs_cx_sqfree_t *f, const fmpq_poly_t re, const fmpq_poly_t im);
+
 /* The exact verdict of the scalar recurrence with characteristic polynomial
  * re + i im: stable (Schur-Cohn, cross-checked against the count of
  * p conj(p): RS_ERR_INCONSISTENT when they disagree), unstable (a root

@@ -414,6 +414,75 @@ static void test_cx_conds_random(void **state)
     flint_randclear(rs);
 }
 
+/* (ar + i ai) *= (br + i bi) */
+static void cmul(fmpq_poly_t ar, fmpq_poly_t ai, const fmpq_poly_t br, const fmpq_poly_t bi)
+{
+    fmpq_poly_t x, y, t;
+    fmpq_poly_init(x); fmpq_poly_init(y); fmpq_poly_init(t);
+    fmpq_poly_mul(x, ar, br);
+    fmpq_poly_mul(t, ai, bi);
+    fmpq_poly_sub(x, x, t);
+    fmpq_poly_mul(y, ar, bi);
+    fmpq_poly_mul(t, ai, br);
+    fmpq_poly_add(y, y, t);
+    fmpq_poly_swap(ar, x); fmpq_poly_swap(ai, y);
+    fmpq_poly_clear(x); fmpq_poly_clear(y); fmpq_poly_clear(t);
+}
+
+/* p's own counts over Q(i) from its roots chosen by hand: p = prod (lambda - r) */
+static void test_rootcount(void **state)
+{
+    /* roots (re, im) over den 2: -i twice, 1/2, 2 */
+    static const slong r1[][2] = {{0, -2}, {0, -2}, {1, 0}, {4, 0}};
+    /* 1 once, -1 three times, i/2 once */
+    static const slong r2[][2] = {{2, 0}, {-2, 0}, {-2, 0}, {-2, 0}, {0, 1}};
+    const slong (*rs[2])[2] = {r1, r2};
+    const slong nr[2] = {4, 5};
+    slong t, k;
+    (void) state;
+    for (t = 0; t < 2; t++) {
+        fmpq_poly_t pr, pi, fr, fi;
+        rs_rootcount_t rc;
+        fmpq_t x;
+        fmpq_poly_init(pr); fmpq_poly_init(pi); fmpq_poly_init(fr); fmpq_poly_init(fi);
+        fmpq_init(x);
+        fmpq_poly_one(pr);
+        for (k = 0; k < nr[t]; k++) {
+            fmpq_poly_zero(fr); fmpq_poly_zero(fi);
+            fmpq_poly_set_coeff_si(fr, 1, 1);
+            fmpq_set_si(x, -rs[t][k][0], 2);
+            fmpq_poly_set_coeff_fmpq(fr, 0, x);
+            fmpq_set_si(x, -rs[t][k][1], 2);
+            fmpq_poly_set_coeff_fmpq(fi, 0, x);
+            cmul(pr, pi, fr, fi);
+        }
+        rs_rootcount_init(rc);
+        rs_routh_complex_rootcount(rc, pr, pi);
+        assert_int_equal(rc->degree, nr[t]);
+        if (t == 0) {
+            /* -i double on the circle, 1/2 inside, 2 outside: unstable (defective) */
+            assert_int_equal(rc->inside, 1);
+            assert_int_equal(rc->on, 2);
+            assert_int_equal(rc->outside, 1);
+            assert_int_equal(rc->on_mult[2], 1);
+            assert_int_equal(rc->at_one + rc->at_minus_one, 0);
+        } else {
+            /* 1 simple, -1 triple, i/2 inside */
+            assert_int_equal(rc->inside, 1);
+            assert_int_equal(rc->on, 4);
+            assert_int_equal(rc->outside, 0);
+            assert_int_equal(rc->on_mult[1], 1);
+            assert_int_equal(rc->on_mult[3], 1);
+            assert_int_equal(rc->at_one, 1);
+            assert_int_equal(rc->at_minus_one, 3);
+        }
+        assert_int_equal(rs_rootcount_status(rc), RS_STATUS_UNSTABLE);
+        rs_rootcount_clear(rc);
+        fmpq_clear(x);
+        fmpq_poly_clear(pr); fmpq_poly_clear(pi); fmpq_poly_clear(fr); fmpq_poly_clear(fi);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -422,6 +491,7 @@ int main(void)
         cmocka_unit_test(test_random_vs_arb),
         cmocka_unit_test(test_cx_conds_hand),
         cmocka_unit_test(test_cx_conds_random),
+        cmocka_unit_test(test_rootcount),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,127 @@
+/* complex_poly.c -- p with coefficients in Q(i), shared by the analyses
+ * that run over Q(i) with real parameters left (hurwitz, jury, modes) and by
+ * the point verdict of run.c: complex set values substituted into p (or a
+ * `char` line with i read back from its real 2x2 block form [[A, -B], [B, A]]),
+ * p = re + i im with re, im in Z[real params][lambda]. */
+#include <string.h>
+#include "analysis/impl.h"
+
+/* the complex value of variable var (a parameter), or -1 */
+static slong cset_of(const rs_run_t *run, slong var)
+{
+    slong k;
+    if (var >= run->c->nparams) return -1;
+    for (k = 0; k < run->c->ncsets; k++)
+        if (strcmp(run->c->csets[k].name, run->c->params[var].name) == 0) return k;
+    return -1;
+}
+
+/* adds c i^ib times the term with exponents ex to qr + i qi, the complex
+ * set values substituted (their exponents zeroed) */
+static void add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,
+                     const rs_scheme_struct *s)
+{
+    fmpq_t fr, fi, t;
+    slong v, k;
+    ulong *ue = flint_malloc((size_t) s->nvars * sizeof(ulong));
+    fmpq_init(fr); fmpq_init(fi); fmpq_init(t);
+    fmpq_set(fr, c);
+    for (v = 0; v < s->nvars; v++) {
+        slong cs = v == s->lambda_var ? -1 : cset_of(run, v);
+        if (cs >= 0) {
+            const fmpq *a = run->c->csets[cs].re, *b = run->c->csets[cs].im;
+            for (k = 0; k < ex[v]; k++) {   /* (fr + i fi)(a + i b) */
+                fmpq_mul(t, fr, a);
+                fmpq_submul(t, fi, b);
+                fmpq_mul(fi, fi, a);
+                fmpq_addmul(fi, fr, b);
+                fmpq_swap(fr, t);
+            }
+            ex[v] = 0;
+        }
+        ue[v] = (ulong) ex[v];
+    }
+    if (ib) { fmpq_swap(fr, fi); fmpq_neg(fr, fr); }   /* times i */
+    if (!fmpq_is_zero(fr)) fmpq_mpoly_push_term_fmpq_ui(qr, fr, ue, s->ctx);
+    if (!fmpq_is_zero(fi)) fmpq_mpoly_push_term_fmpq_ui(qi, fi, ue, s->ctx);
+    fmpq_clear(fr); fmpq_clear(fi); fmpq_clear(t);
+    flint_free(ue);
+}
+
+slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpq_mpoly_t qr, qi;
+    slong *ex, i, len;
+    fmpq_t c;
+    fmpz_t d, g;
+    fmpq_mpoly_init(qr, s->ctx); fmpq_mpoly_init(qi, s->ctx);
+    fmpq_init(c);
+    fmpz_init(d); fmpz_init(g);
+    ex = flint_malloc((size_t) s->nvars * sizeof(slong));
+    if (s->complex_char) {
+        /* the block [[A, -B], [B, A]] of p = A + i B */
+        int part;
+        for (part = 0; part < 2; part++) {
+            const fmpq_mpoly_struct *m = s->M + 2 * part;
+            len = fmpq_mpoly_length(m, s->ctx);
+            for (i = 0; i < len; i++) {
+                fmpq_mpoly_get_term_coeff_fmpq(c, m, i, s->ctx);
+                fmpq_mpoly_get_term_exp_si(ex, m, i, s->ctx);
+                add_term(qr, qi, c, part, ex, run, s);
+            }
+        }
+    } else {
+        len = fmpz_mpoly_length(v->cp->p, s->zctx);
+        for (i = 0; i < len; i++) {
+            fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), v->cp->p, i, s->zctx);
+            fmpz_one(fmpq_denref(c));
+            fmpz_mpoly_get_term_exp_si(ex, v->cp->p, i, s->zctx);
+            add_term(qr, qi, c, 0, ex, run, s);
+        }
+    }
+    fmpq_mpoly_sort_terms(qr, s->ctx); fmpq_mpoly_combine_like_terms(qr, s->ctx);
+    fmpq_mpoly_sort_terms(qi, s->ctx); fmpq_mpoly_combine_like_terms(qi, s->ctx);
+    /* common denominator, then the common integer content */
+    fmpz_lcm(d, fmpq_denref(qr->content), fmpq_denref(qi->content));
+    fmpq_mpoly_scalar_mul_fmpz(qr, qr, d, s->ctx);
+    fmpq_mpoly_scalar_mul_fmpz(qi, qi, d, s->ctx);
+    fmpz_mpoly_scalar_mul_fmpz(re, qr->zpoly, fmpq_numref(qr->content), s->zctx);
+    fmpz_mpoly_scalar_mul_fmpz(im, qi->zpoly, fmpq_numref(qi->content), s->zctx);
+    _fmpz_vec_content(g, re->coeffs, re->length);
+    _fmpz_vec_content(d, im->coeffs, im->length);
+    fmpz_gcd(g, g, d);
+    if (!fmpz_is_zero(g) && !fmpz_is_one(g)) {
+        fmpz_mpoly_scalar_divexact_fmpz(re, re, g, s->zctx);
+        fmpz_mpoly_scalar_divexact_fmpz(im, im, g, s->zctx);
+    }
+    flint_free(ex);
+    fmpq_clear(c);
+    fmpz_clear(d); fmpz_clear(g);
+    fmpq_mpoly_clear(qr, s->ctx); fmpq_mpoly_clear(qi, s->ctx);
+    return FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
+}
+
+void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    slong len = fmpz_mpoly_length(p, s->zctx), i, v;
+    ulong *ex = flint_malloc((size_t) s->nvars * sizeof(ulong));
+    fmpq_t c, x, old;
+    fmpq_init(c); fmpq_init(x); fmpq_init(old);
+    fmpq_poly_zero(out);
+    for (i = 0; i < len; i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), p, i, s->zctx);
+        fmpz_one(fmpq_denref(c));
+        fmpz_mpoly_get_term_exp_ui(ex, p, i, s->zctx);
+        for (v = 0; v < s->nvars; v++) {
+            if (v == s->lambda_var || ex[v] == 0) continue;
+            fmpq_pow_si(x, pt[v], (slong) ex[v]);
+            fmpq_mul(c, c, x);
+        }
+        fmpq_poly_get_coeff_fmpq(old, out, (slong) ex[s->lambda_var]);
+        fmpq_add(old, old, c);
+        fmpq_poly_set_coeff_fmpq(out, (slong) ex[s->lambda_var], old);
+    }
+    fmpq_clear(c); fmpq_clear(x); fmpq_clear(old);
+    flint_free(ex);
+}
