@@ -1111,10 +1111,6 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
                 *at = json_object();
                 rs_json_add_count(*at, rc);
                 json_object_set_new(*at, "status", json_string(rs_status_name(stp)));
-                if (s->complex_char)   /* the status is p's; the counts are the block form's */
-                    json_object_set_new(*at, "counts_of", json_string(
-                        "det M = p conj(p), the real 2x2 block form of the complex char line p: each root of p "
-                        "counted with its conjugate"));
             }
             rs_rootcount_clear(rc);
         }

@@ -5,6 +5,7 @@
  * p = re + i im with re, im in Z[real params][lambda]. */
 #include <string.h>
 #include "analysis/impl.h"
+#include "stability/routh_complex.h"
 
 /* the complex value of variable var (a parameter), or -1 */
 static slong cset_of(const rs_run_t *run, slong var)
@@ -124,4 +125,49 @@ void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, cons
     }
     fmpq_clear(c); fmpq_clear(x); fmpq_clear(old);
     flint_free(ex);
+}
+
+int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
+                           const slong *vars, const fmpq *vals, slong nv, int real_st)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t re, im;
+    fmpq_poly_t pr, pi;
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    slong n, k;
+    rs_status_t s1;
+    int r = RS_OK;
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+    for (k = 0; k < nv; k++) fmpq_set(pt + vars[k], vals + k);
+    n = rs_run_cx_poly(re, im, run, v);
+    rs_run_cx_eval(pr, re, pp, s);
+    rs_run_cx_eval(pi, im, pp, s);
+    rs_rootcount_clear(rc);
+    rs_rootcount_init(rc);
+    if (v->singular || n < 1 || FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) < n
+        || (!s->complex_char && n < v->cp->degree)) {
+        /* the leading coefficient of p vanishes here: no step can be solved */
+        *st = RS_STATUS_SINGULAR;
+    } else {
+        r = rs_routh_complex_checked_status(&s1, pr, pi, n, run->err);
+        if (r == RS_OK) {
+            rs_routh_complex_rootcount(rc, pr, pi);
+            if (rs_rootcount_status(rc) != s1)
+                r = rs_error_set(run->err, RS_ERR_INCONSISTENT, "over Q(i): complex Schur-Cohn and Bilharz say %s, "
+                                 "p's root counts say %s", rs_status_name(s1), rs_status_name(rs_rootcount_status(rc)));
+            else if (real_st >= 0 && (rs_status_t) real_st != s1)
+                r = rs_error_set(run->err, RS_ERR_INCONSISTENT, "the char line over Q(i): the real block form says "
+                                 "%s, complex Schur-Cohn and Bilharz say %s", rs_status_name((rs_status_t) real_st),
+                                 rs_status_name(s1));
+            else *st = s1;
+        }
+    }
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    return r;
 }

@@ -203,5 +203,11 @@ json_t *rs_json_p_at(const rs_variant_t *v, slong x);
  * rs_run_cx_eval: re or im at the point pt (every variable but lambda). */
 slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v);
 void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s);
+/* The verdict over Q(i) at vars[i] = vals[i] (i < nv, every real parameter
+ * still free in v): complex Schur-Cohn and Bilharz (must agree), rc p's own
+ * counts (rs_routh_complex_rootcount, whose status must agree); real_st >= 0:
+ * the real block form's verdict, which must agree too (RS_ERR_INCONSISTENT). */
+int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
+                           const slong *vars, const fmpq *vals, slong nv, int real_st);
 
 #endif

@@ -754,6 +754,8 @@ int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const
     fmpz_poly_t u;
     slong k;
     int r = RS_OK;
+    /* complex set values: p over Q(i) decides (complex_poly.c) */
+    if (run->c->ncsets > 0) return rs_run_cx_point_status(st, rc, run, v, vars, vals, nv, -1);
     fmpq_mpoly_init(q, s->ctx);
     fmpq_poly_init(w);
     fmpz_poly_init(u);
@@ -773,6 +775,9 @@ int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const
         fmpz_poly_primitive_part(u, u);
         r = rs_run_exact_count(rc, run, u, NULL);
         if (r == RS_OK) r = rs_run_verdict(st, run, s, vars, vals, nv, u, rc, 0, NULL);
+        /* a char line over Q(i): p's own counts (not p conj(p)'s), its verdict
+         * checked against the block form's */
+        if (r == RS_OK && s->complex_char) r = rs_run_cx_point_status(st, rc, run, v, vars, vals, nv, (int) *st);
     }
     fmpz_poly_clear(u);
     fmpq_poly_clear(w);
