@@ -388,3 +388,14 @@ if [ "$(grep -o '"omega":"-1.57079632679490"' "$T/m2.json" | wc -l)" = 2 ] && gr
 "$RS" --analyse modes "$SC" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "modes needs every parameter set to a number (real or complex); still symbolic: h" "$T/err"; then
     ok "modes with a free real parameter beside a complex value: exit 2"; else fail "modes free h: rc=$rc $(cat "$T/err")"; fi
+# sweep of a real parameter at complex set values: forward Euler with step h
+# at q = -1 + i, radius |1 + h q| = sqrt((1 - h)^2 + h^2) (by hand): h = 1/2
+# gives sqrt(2)/2, h = 0 and h = 1 lie on the circle, h = 2 gives sqrt(5)
+"$RS" --json --analyse "sweep h from 0 to 2 steps 4 of stability" --analyse "sweep h from 0 to 2 steps 4" "$SC" \
+    | tr -d ' \n' >"$T/sw.json"
+if grep -q '"rows":\[\[0,0,"0","marginal",1,0,1,0,"exact"\],\[1,0.5,"1/2","stable",0,1,0,0,"exact"\],\[2,1,"1","marginal",1,0,1,0,"exact"\],\[3,1.5,"3/2","unstable",2,0,0,1,"exact"\]' "$T/sw.json" \
+   && grep -q '\[1,0.5,"1/2",0.70710678118655' "$T/sw.json" && grep -q '\[4,2,"2",2.2360679774997' "$T/sw.json"; then
+    ok "sweep h at q = -1 + i: 0 < h < 1 stable, radius sqrt((1-h)^2 + h^2)"; else fail "sweep at complex q: $(head -c 900 "$T/sw.json")"; fi
+"$RS" --analyse "sweep h from 0 to 2 steps 4 of modes reference=1" "$SC" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "of modes does not run at complex set values" "$T/err"; then
+    ok "sweep of modes at complex values: exit 2"; else fail "sweep of modes: rc=$rc $(cat "$T/err")"; fi
