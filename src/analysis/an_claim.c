@@ -13,6 +13,7 @@
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
 #include "analysis/an_region.h"
+#include "stability/routh_complex.h"
 
 /* ---- claim ------------------------------------------------------------------- */
 
@@ -631,13 +632,22 @@ static int violates(claim_kind_t k, rs_status_t st)
 /* The variant with every parameter the bounds fix (`set` values and claim
  * conditions NAME = VALUE) substituted, so that the proof works on the
  * polynomial of that subset (its factors, gcds and degree). */
+/* a parameter with a complex set value (the claim runs over Q(i) there) */
+static int param_is_cset(const rs_run_t *run, slong k)
+{
+    slong i;
+    for (i = 0; i < run->c->ncsets; i++)
+        if (strcmp(run->c->csets[i].name, run->c->params[k].name) == 0) return 1;
+    return 0;
+}
+
 static int claim_variant(rs_variant_t **v, rs_run_t *run, const rs_bound_t *b)
 {
     slong i, n = 0, na;
     rs_assign_t *extra = calloc((size_t) run->c->nparams + 1, sizeof(rs_assign_t)), *a;
     int r;
     for (i = 0; i < run->c->nparams; i++)
-        if (b[i].fixed) {
+        if (b[i].fixed && !param_is_cset(run, i)) {   /* a complex value stays for rs_run_cx_poly */
             extra[n].name = run->c->params[i].name;
             extra[n].var = i;
             fmpq_init(extra[n].value);
@@ -714,7 +724,43 @@ static int param_is_set(const rs_run_t *run, slong k)
     slong i;
     for (i = 0; i < run->c->nsets; i++)
         if (strcmp(run->c->sets[i].name, run->c->params[k].name) == 0) return 1;
-    return 0;
+    return param_is_cset(run, k);
+}
+
+/* `claim stable` at complex set values: every Bilharz condition of p over
+ * Q(i)[real params] (rs_routh_cx_conds) proved positive on the box; the
+ * other kinds have no certificate over Q(i) (refuted or undecided only) */
+static int claim_prove_complex(rs_run_t *run, claim_kind_t kind, const rs_variant_t *v, const rs_bound_t *b,
+                               claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t re, im;
+    rs_routh_cx_conds_t bc;
+    slong n, k;
+    int ok = 1;
+    size_t n0 = json_array_size(cx->cert);
+    if (kind != CLAIM_STABLE) {
+        claim_fail(cx, "at complex set values only `claim stable` has a certificate (the Bilharz conditions over "
+                   "Q(i)); bounded and unstable are refuted by a point or left undecided", NULL, NULL);
+        return 0;
+    }
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    rs_routh_cx_conds_init(&bc, s->zctx);
+    n = rs_run_cx_poly(re, im, run, v);
+    if (n < 1 || (!s->complex_char && n < v->cp->degree) || v->singular
+        || !rs_routh_cx_conds(&bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS) || bc.ncond < n + 1) {
+        claim_fail(cx, "p over Q(i) has no Bilharz conditions here (degree drop, a condition identically zero, or "
+                   "too large)", NULL, NULL);
+        ok = 0;
+    } else {
+        cert_note(cx, "p over Q(i) at the complex set values; every root inside iff each Bilharz condition of its "
+                  "bilinear image is > 0 (hurwitz over Q(i)):");
+        for (k = 0; k < bc.ncond && ok; k++) ok = prove_sign(bc.cond + k, 1, b, s, cx);
+    }
+    if (!ok) cert_truncate(cx, n0);
+    rs_routh_cx_conds_clear(&bc, s->zctx);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return ok;
 }
 
 /* One certificate on the box, no subdivision. */
@@ -858,6 +904,7 @@ static int claim_prove(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, cl
         claim_fail(cx, "the characteristic polynomial could not be formed on this part", NULL, NULL);
         return 0;
     }
+    if (run->c->ncsets > 0) return claim_prove_complex(run, kind, v, b, cx);
     ok = claim_prove_direct(run, kind, v, b, cx);
     for (i = 0; i < np && !ok && depth < CLAIM_SPLIT_DEPTH; i++) {
         if (b[i].fixed || fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) <= 0) continue;
@@ -1045,6 +1092,14 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
         b[k].has_lo = b[k].has_hi = b[k].lo_closed = b[k].hi_closed = b[k].fixed = 1;
         fmpq_set(b[k].lo, run->c->sets[i].value);
         fmpq_set(b[k].hi, run->c->sets[i].value);
+    }
+    /* a complex set value: fixed (no search over it; 0 is a placeholder, the
+     * value itself is substituted over Q(i) by rs_run_cx_poly) */
+    for (i = 0; i < run->c->ncsets; i++) {
+        slong k = rs_case_param_index(run->c, run->c->csets[i].name);
+        b[k].has_lo = b[k].has_hi = b[k].lo_closed = b[k].hi_closed = b[k].fixed = 1;
+        fmpq_zero(b[k].lo);
+        fmpq_zero(b[k].hi);
     }
 }
 
@@ -1345,6 +1400,8 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
     const char *why = NULL;
     size_t used;
     if (kind == CLAIM_UNSTABLE || st == NULL) return RS_OK;
+    /* the region is of real parameters only: not at complex set values */
+    if (run->c->ncsets > 0) return RS_OK;
     /* the parameter: the first one a condition bounds by constants; every
      * other condition must leave it alone (it then restricts the quantified
      * parameters) */
@@ -1526,8 +1583,15 @@ int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run)
         r = claim_dnf_parse(dnf, run, q, t + 4);
         for (i = 0; r == RS_OK && i < dnf->nparts; i++)
             for (j = 0; r == RS_OK && j < dnf->n[i]; j++)
-                for (k = 0; r == RS_OK && k < dnf->conds[i][j].n; k++)
+                for (k = 0; r == RS_OK && k < dnf->conds[i][j].n; k++) {
+                    slong c;
                     r = rs_an_check_names(run, q, dnf->conds[i][j].e[k]);
+                    /* at complex set values the sets are in the real parameters */
+                    for (c = 0; r == RS_OK && c < run->c->ncsets; c++)
+                        if (expr_mentions(dnf->conds[i][j].e[k], run->c->csets[c].name))
+                            r = rs_req_error(run, q, rs_req_skip_blanks(t + 4), RS_ERR_INPUT, "expected conditions on real parameters, "
+                                             "found '%s', which has a complex set value", run->c->csets[c].name);
+                }
         if (r != RS_OK) return r;
     } else {
         dnf->nparts = 1;
@@ -1614,6 +1678,13 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
             : "stability as for `claim stable`; then q = G H with G = gcd(q(z), q(-z)): H Hurwitz-stable and "
               "G's roots simple on the imaginary axis (degree <= 2 in z^2); closed interval ends and inner "
               "points with a root at lambda = +-1 split off and substituted";
+    if (run->c->ncsets > 0)
+        tried = kind == CLAIM_STABLE
+                ? "over Q(i) at the complex set values: every Bilharz condition of p's bilinear image (hurwitz over "
+                  "Q(i)) proved positive on the set by mapping each parameter interval onto [0, inf) and checking "
+                  "coefficient signs; counterexamples searched with the exact Q(i) verdict"
+                : "over Q(i) at the complex set values: counterexamples searched with the exact Q(i) verdict (no "
+                  "certificate for bounded or unstable there)";
     if (r == RS_OK) {
         if (inconsistent) {
             run->outcome |= RS_OUTCOME_INCONSISTENT;

@@ -159,9 +159,8 @@ static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t 
  * and those that take an unset complex parameter as complex. */
 static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
 {
-    static const char *const ok[] = {"charpoly", "bilinear", "routh", "hurwitz", "jury", "stability", "radius", "modes",
-                                      "sweep",
-                                      NULL};
+    static const char *const ok[] = {"charpoly", "bilinear", "routh", "hurwitz", "jury", "stability", "radius",
+                                      "modes", "claim", "sweep", NULL};
     const rs_cset_t *x = run->c->csets;
     const char *nm = req->def->name;
     char *val, msg[RS_ERROR_MSG_LEN];
@@ -190,11 +189,9 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
     for (k = 0; ok[k] != NULL; k++)
         if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
     val = rs_complex_str(x->re, x->im);
-    snprintf(msg, sizeof msg, "'%s' does not run at a complex set value (%s = %s)%s: over Q(i) recstab runs "
-             "charpoly, bilinear, routh, stability and radius", req->def->name, x->name, val,
-             strcmp(req->def->name, "hurwitz") == 0 || strcmp(req->def->name, "jury") == 0
-             ? " (its determinants are those of a real polynomial; routh gives the Bilharz chain and stability "
-               "both exact complex tests)" : "");
+    snprintf(msg, sizeof msg, "'%s' does not run at a complex set value (%s = %s): over Q(i) recstab runs "
+             "charpoly, bilinear, routh, hurwitz, jury, stability, radius, modes, sweep and claim", req->def->name,
+             x->name, val);
     free(val);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
 }

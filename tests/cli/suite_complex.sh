@@ -399,3 +399,14 @@ if grep -q '"rows":\[\[0,0,"0","marginal",1,0,1,0,"exact"\],\[1,0.5,"1/2","stabl
 "$RS" --analyse "sweep h from 0 to 2 steps 4 of modes reference=1" "$SC" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "of modes does not run at complex set values" "$T/err"; then
     ok "sweep of modes at complex values: exit 2"; else fail "sweep of modes: rc=$rc $(cat "$T/err")"; fi
+# claims in a real parameter at complex set values (the case file derives each by hand)
+CL=cases/complex/forward-euler-step-claims.case
+"$RS" --json "$CL" >"$T/cl.raw"; rc=$?
+tr -d ' \n' <"$T/cl.raw" >"$T/cl.json"
+st=$(grep -o '"claim":"[a-z]*","status":"[a-z]*"' "$T/cl.json" | sed 's/.*"status":"\([a-z]*\)"/\1/' | tr '\n' ' ')
+if [ "$rc" = 1 ] && [ "$st" = "proved refuted undecided undecided " ] && grep -q '"counterexample":{"h":"1"}' "$T/cl.json"; then
+    ok "claims at q = -1 + i: h < 1 proved (Bilharz), h <= 1 refuted at h = 1"; else fail "claims over Q(i): rc=$rc $st"; fi
+printf 'param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nclaim stable when q < 0\n' >"$T/cq.case"
+"$RS" "$T/cq.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "cq.case:4:19: expected conditions on real parameters, found 'q', which has a complex set value" "$T/err"; then
+    ok "a claim on the complex parameter: exit 2"; else fail "claim on q: rc=$rc $(cat "$T/err")"; fi
