@@ -1589,8 +1589,9 @@ int rs_an_claim_parse(rs_an_req_t *req, rs_run_t *run)
                     /* at complex set values the sets are in the real parameters */
                     for (c = 0; r == RS_OK && c < run->c->ncsets; c++)
                         if (expr_mentions(dnf->conds[i][j].e[k], run->c->csets[c].name))
-                            r = rs_req_error(run, q, rs_req_skip_blanks(t + 4), RS_ERR_INPUT, "expected conditions on real parameters, "
-                                             "found '%s', which has a complex set value", run->c->csets[c].name);
+                            r = rs_req_error(run, q, rs_req_skip_blanks(t + 4), RS_ERR_INPUT,
+                                             "expected conditions on real parameters, found '%s', which has a "
+                                             "complex set value", run->c->csets[c].name);
                 }
         if (r != RS_OK) return r;
     } else {

@@ -185,7 +185,8 @@ static int cx_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
     fmpq_poly_init(pr); fmpq_poly_init(pi);
     for (k = 0; k < s->nvars; k++) {
         pp[k] = pt + k;
-        if (k != s->lambda_var && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
+        if (k != s->lambda_var
+            && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
             free_vars[nfree++] = k;
     }
     for (k = 0; k < run->c->nassume; k++) {
@@ -364,7 +365,8 @@ int rs_an_complex_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             else snprintf(buf, sizeof buf, "%slc(T_%ld)", (k & 1) ? "-" : "", (long) k);
             json_array_append_new(raw, json_pack("{s:s,s:o}", "origin", buf, "poly", rs_json_zpoly(bc.cond + k, s)));
             if (fmpz_mpoly_is_zero(bc.cond + k, s->zctx)) never = 1;
-            if (cond_add(&jc, conds, dropped, bc.cond + k, buf, sign, s, k == 0)) json_array_append_new(always, json_string(buf));
+            if (cond_add(&jc, conds, dropped, bc.cond + k, buf, sign, s, k == 0))
+                json_array_append_new(always, json_string(buf));
         }
         /* a negative constant is a condition that fails everywhere */
         for (k = 0; k < jc.n; k++)
@@ -422,7 +424,8 @@ int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req)
             snprintf(buf, sizeof buf, "delta_%ld", (long) (n - k));
             json_array_append_new(raw, json_pack("{s:s,s:o}", "origin", buf, "poly", rs_json_zpoly(sc.delta + k, s)));
             if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) never = 1;
-            if (cond_add(&jc, conds, dropped, sc.delta + k, buf, sign, s, 0)) json_array_append_new(always, json_string(buf));
+            if (cond_add(&jc, conds, dropped, sc.delta + k, buf, sign, s, 0))
+                json_array_append_new(always, json_string(buf));
             if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) break;   /* the recursion stops there */
         }
         for (k = 0; k < jc.n; k++)
@@ -461,7 +464,8 @@ int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_var
     r = cx_symbolic(re, im, &n, vp, run, req);
     for (k = 0; r == RS_OK && k < s->nvars; k++) {
         char msg[300];
-        if (k == s->lambda_var || (fmpz_mpoly_degree_si(re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(im, k, s->zctx) <= 0))
+        if (k == s->lambda_var
+            || (fmpz_mpoly_degree_si(re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(im, k, s->zctx) <= 0))
             continue;
         snprintf(msg, sizeof msg, "%s needs every parameter set to a number (real or complex); still symbolic: %s",
                  req->def->name, s->vars[k]);

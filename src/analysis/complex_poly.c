@@ -100,7 +100,8 @@ slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, cons
     fmpq_clear(c);
     fmpz_clear(d); fmpz_clear(g);
     fmpq_mpoly_clear(qr, s->ctx); fmpq_mpoly_clear(qi, s->ctx);
-    return FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
+    return FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx),
+                     fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
 }
 
 void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s)
