@@ -64,6 +64,10 @@ typedef struct {
     int negated;                   /* 1 if q was negated (a_n provably < 0
                                       wherever non-zero); coeffs, minors and
                                       conditions are those of -q then */
+    int route;                     /* how the minors were formed: 0 directly
+                                      over Z[params], 1 over the smaller
+                                      coefficient ring of the substitution
+                                      route (issue 17) */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 
@@ -73,6 +77,14 @@ typedef rs_hurwitz_struct rs_hurwitz_t[1];
  * unexpanded (issue 17).  Returns the previous value.  Documented global,
  * like the budget itself (one run per process). */
 double rs_hurwitz_set_row_seconds(double seconds);
+
+/* The substitution route of the minors (issue 17): when the coefficients of
+ * q with respect to one parameter span a small space, the minors are formed
+ * over Z[that parameter, a basis of the span] and composed back; chosen by
+ * its cost estimate (1, the default), never (0: the direct route only,
+ * for cross-checks) or whenever it applies (2, for tests).  Returns the previous value.  Documented global
+ * like rs_hurwitz_set_row_seconds. */
+int rs_hurwitz_set_subst(int on);
 
 /* Sign of the leading principal k x k minor of the Hurwitz matrix of h's
  * coefficients at the rational point vals: substituted first, then an exact

@@ -41,6 +41,7 @@
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 #include "recstab/positivity.h"
+#include "stability/hurwitz_subst.h"
 
 /* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
  * not be computable anyway. */
@@ -54,6 +55,18 @@ rs_hurwitz_set_row_seconds(double seconds)
 {
     double old = row_seconds;
     row_seconds = seconds;
+    return old;
+}
+
+/* the substitution route: 0 never, 1 by its cost estimate, 2 whenever it
+ * applies (rs_hurwitz_set_subst) */
+static int subst_on = 1;
+
+int
+rs_hurwitz_set_subst(int on)
+{
+    int old = subst_on;
+    subst_on = on;
     return old;
 }
 
@@ -98,6 +111,7 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->ncond = 0;
     h->cond = NULL;
     h->negated = 0;
+    h->route = 0;
 }
 
 static void
@@ -428,7 +442,7 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
  * determinant with pivoting, and D_n = a_0 D_{n-1} (the last column of H is
  * (0, ..., 0, a_0)). */
 static int
-_hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded,
+_hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
                 const fmpz_mpoly_struct *a, slong n,
                 const fmpz_mpoly_ctx_t ctx, rs_error_t err)
 {
@@ -453,6 +467,81 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded,
         fmpz_mpoly_mul(D + n - 1, a + 0, D + n - 2, ctx);
     *expanded = n;
     return RS_OK;
+}
+
+/* D = (1/L^m) Dg(x_v, G(x)), one power of x_v at a time: the G_r do not
+ * contain x_v, so the slices are disjoint and the budget is checked between
+ * them (one composition of D_11 of a 6-mass chain is 637 163 terms). */
+static int
+_subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
+            const rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx,
+            rs_error_t err)
+{
+    slong e, d = fmpz_mpoly_degree_si(Dg, 0, hs->gctx), zero = 0;
+    fmpz_mpoly_t sl, im, xe;
+    int r = RS_OK;
+
+    fmpz_mpoly_init(sl, hs->gctx);
+    fmpz_mpoly_init(im, ctx);
+    fmpz_mpoly_init(xe, ctx);
+    fmpz_mpoly_zero(D, ctx);
+    for (e = 0; e <= d && r == RS_OK; e++) {
+        ulong ee = e;
+        fmpz_mpoly_get_coeff_vars_ui(sl, Dg, &zero, &ee, 1, hs->gctx);
+        if (fmpz_mpoly_is_zero(sl, hs->gctx))
+            continue;
+        if (!rs_hurwitz_subst_back(im, sl, m, hs, ctx)) {
+            r = rs_error_set(err, RS_ERR_LIMIT,
+                             "hurwitz: exponents too large composing D_%ld", (long) m);
+            break;
+        }
+        fmpz_mpoly_gen(xe, hs->var, ctx);
+        fmpz_mpoly_pow_ui(xe, xe, e, ctx);
+        fmpz_mpoly_mul(im, im, xe, ctx);
+        fmpz_mpoly_add(D, D, im, ctx);
+        r = rs_budget_check(err, "the composition of the Hurwitz minors");
+    }
+    fmpz_mpoly_clear(sl, hs->gctx);
+    fmpz_mpoly_clear(im, ctx);
+    fmpz_mpoly_clear(xe, ctx);
+    return r;
+}
+
+/* All leading principal minors D_1..D_n into D[0..n-1] (*expanded of them;
+ * the later ones zero and not expanded), over the smaller coefficient ring
+ * of hurwitz_subst.c when its cost estimate is lower, otherwise directly. */
+static int
+_hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
+                const fmpz_mpoly_struct *a, slong n,
+                const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    rs_hurwitz_subst_t hs;
+    fmpz_mpoly_struct *Dg;
+    slong k, i;
+    int r;
+
+    rs_hurwitz_subst_init(hs);
+    if (subst_on)
+        rs_hurwitz_subst_find(hs, a, n, subst_on == 2, ctx);
+    *route = hs->active;
+    if (!hs->active) {
+        rs_hurwitz_subst_clear(hs, ctx);
+        return _hurwitz_minors_direct(D, expanded, a, n, ctx, err);
+    }
+    Dg = flint_malloc(n * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i < n; i++)
+        fmpz_mpoly_init(Dg + i, hs->gctx);
+    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, err);
+    *expanded = 0;
+    for (i = 0; i < k && r == RS_OK; i++)
+        r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
+    if (r == RS_OK)
+        *expanded = k;
+    for (i = 0; i < n; i++)
+        fmpz_mpoly_clear(Dg + i, hs->gctx);
+    flint_free(Dg);
+    rs_hurwitz_subst_clear(hs, ctx);
+    return r;
 }
 
 /* ------------------------------------------------------------------ */
@@ -699,8 +788,8 @@ rs_hurwitz_compute_partial_bounds(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zv
         h->minors = flint_malloc(n * sizeof(fmpz_mpoly_struct));
         for (i = 0; i < n; i++)
             fmpz_mpoly_init(h->minors + i, ctx);
-        r = _hurwitz_minors(h->minors, &h->expanded, h->coeffs, n, ctx,
-                            err);
+        r = _hurwitz_minors(h->minors, &h->expanded, &h->route, h->coeffs,
+                            n, ctx, err);
     }
     if (r == RS_OK)
         r = _hurwitz_conditions(h, &as, ctx, err);

@@ -1454,6 +1454,111 @@ test_chain_not_expanded(void **state)
     }
 }
 
+/* The substitution route (hurwitz_subst.c, issue 17) against the direct
+ * fraction-free Routh route: for the 2-, 3- and 4-mass chains both must give
+ * the same polynomials D_1..D_n (the direct route is itself checked against
+ * Laplace expansions above); for the 5-mass chain (the direct route takes
+ * about 1 s there) every D_k at integer points against fmpz_mat_det of the
+ * numeric Hurwitz matrix (check_minors_at). */
+static void
+test_chain_routes(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    slong N;
+    (void) state;
+
+    rng_state = 1717;
+    for (N = 2; N <= 5; N++) {
+        const char *v[8];
+        tctx_struct t;
+        fmpz_mpoly_t q;
+        rs_hurwitz_t hs, hd;
+        rs_error_t err;
+        slong nv = N + 2, i, k;
+        int old;
+
+        for (i = 0; i + 1 < nv; i++)
+            v[i] = vars[i];
+        v[nv - 1] = "z";
+        tctx_init(&t, v, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        rs_hurwitz_init(hs);
+        rs_hurwitz_init(hd);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        /* the cost estimate takes the route from N = 4 on; forced below */
+        old = rs_hurwitz_set_subst(N <= 3 ? 2 : 1);
+        assert_int_equal(rs_hurwitz_compute(hs, q, nv - 1, NULL, t.ctx, err), RS_OK);
+        rs_hurwitz_set_subst(old);
+        assert_int_equal(hs->route, 1);
+        assert_int_equal(hs->expanded, 2 * N);
+        if (N <= 4) {
+            old = rs_hurwitz_set_subst(0);
+            assert_int_equal(rs_hurwitz_compute(hd, q, nv - 1, NULL, t.ctx, err), RS_OK);
+            rs_hurwitz_set_subst(old);
+            assert_int_equal(hd->route, 0);
+            for (k = 0; k < 2 * N; k++)
+                assert_true(fmpz_mpoly_equal(hs->minors + k, hd->minors + k, t.ctx));
+        } else {
+            slong vals[8], trial;
+            for (trial = 0; trial < 4; trial++) {
+                for (i = 0; i < nv; i++)
+                    vals[i] = rng_range(-9, 9);
+                check_minors_at(hs, vals, t.ctx);
+            }
+        }
+        rs_hurwitz_clear(hs, t.ctx);
+        rs_hurwitz_clear(hd, t.ctx);
+        rs_error_clear(err);
+        fmpz_mpoly_clear(q, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
+/* The substitution route on a non-chain q whose coefficients with respect
+ * to t are 2 E1, 3 E1 (= 3/2 of the first: common denominator L = 2), the
+ * constant 1 (kept as a number) and E2: the route is taken and its minors
+ * equal the Laplace expansions of q's own coefficients (check_minors_laplace)
+ * and those of the direct route. */
+static void
+test_subst_rational(void **state)
+{
+    const char *vars[] = {"t", "x", "y", "z"};
+    const char *E1 = "(x^2 + x*y + y^2 + x + y)", *E2 = "(x*y^3 + 2*x^3 - y + 7)";
+    char buf[512];
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t hs, hd;
+    rs_error_t err;
+    slong k;
+    int old;
+    (void) state;
+
+    tctx_init(&t, vars, 4);
+    fmpz_mpoly_init(q, t.ctx);
+    snprintf(buf, sizeof buf,
+             "4*z^4 + (2*t*%s + 1)*z^3 + (3*%s + t^2*%s + 5)*z^2 + (t*%s)*z + 5*t*%s",
+             E1, E1, E2, E2, E2);
+    set_str(q, buf, &t);
+    rs_hurwitz_init(hs);
+    rs_hurwitz_init(hd);
+    rs_error_init(err);
+    assert_int_equal(rs_hurwitz_compute(hs, q, 3, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(hs->route, 1);
+    check_minors_laplace(hs, t.ctx);
+    old = rs_hurwitz_set_subst(0);
+    assert_int_equal(rs_hurwitz_compute(hd, q, 3, NULL, t.ctx, err), RS_OK);
+    rs_hurwitz_set_subst(old);
+    assert_int_equal(hd->route, 0);
+    for (k = 0; k < 4; k++)
+        assert_true(fmpz_mpoly_equal(hs->minors + k, hd->minors + k, t.ctx));
+    rs_hurwitz_clear(hs, t.ctx);
+    rs_hurwitz_clear(hd, t.ctx);
+    rs_error_clear(err);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
 int
 main(void)
 {
@@ -1475,6 +1580,8 @@ main(void)
         cmocka_unit_test(test_chain),
         cmocka_unit_test(test_chain_positive),
         cmocka_unit_test(test_chain_not_expanded),
+        cmocka_unit_test(test_chain_routes),
+        cmocka_unit_test(test_subst_rational),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();

@@ -1,0 +1,321 @@
+/* hurwitz_subst.c -- the Hurwitz minors over a smaller coefficient ring
+ * (issue 17).
+ *
+ * Why.  For the N-mass chain q(z) = r(4 z^2 + 2 c z) with r(w) = det(w I + K)
+ * = sum_j E_j w^{N-j}: each coefficient of a_i with respect to c is an
+ * integer multiple of one E_j (a polynomial of up to 20 terms in the k's).
+ * The minors are polynomials in the a_i, so they can be formed over
+ * Z[c, E_1..E_N] with the E_j as independent variables and composed with
+ * E_j(k) once at the end.  Measured (bench/chain_minor_size.c, N = 6): the
+ * whole recursion over Z[c, E] takes about 1 s and D_11 has 2 573 terms
+ * there, against 637 163 terms in c, k (the recursion in c, k needs hours
+ * for rows 10 and 11).
+ *
+ * How, in general (nothing here knows of chains).  For one variable x_v,
+ * the coefficients C_{i,e} of x_v^e in a_i (polynomials in the other
+ * variables) span a Q-vector space; a basis G_1..G_s is chosen among them
+ * (the pivot columns of the reduced row echelon form of the matrix of their
+ * monomial coordinates) and every C_{i,e} is its rational combination read
+ * off the same echelon form.  With L the common denominator,
+ * A_i = L a_i = sum_e x_v^e sum_r L R_{r,(i,e)} G_r is a polynomial over Z in
+ * x_v and G (a constant basis element is kept as a number).  The rewrite is
+ * checked exactly by composing A_i back.  D_m is homogeneous of degree m in
+ * the coefficients, so D_m(a) = D_m(A)(x_v, G(x)) / L^m exactly.
+ *
+ * Cost estimate.  Every product of the Routh recursion starts from the
+ * coefficients, so the variable whose rewrite has the fewest terms in all
+ * A_i is taken, and the reduction is used only when that is less than half
+ * the terms of the a_i and it does not add variables. */
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpq_mat.h>
+#include "stability/hurwitz_subst.h"
+
+/* coordinates of all coefficients are kept below this many entries */
+#define SUBST_MAX_ENTRIES 4000000
+
+void
+rs_hurwitz_subst_init(rs_hurwitz_subst_t hs)
+{
+    hs->A = NULL;
+    hs->img = NULL;
+    hs->gens = NULL;
+    fmpz_init(hs->L);
+    fmpz_one(hs->L);
+    hs->n = hs->s = 0;
+    hs->var = -1;
+    hs->active = 0;
+}
+
+void
+rs_hurwitz_subst_clear(rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    if (hs->active) {
+        for (i = 0; i <= hs->n; i++)
+            fmpz_mpoly_clear(hs->A + i, hs->gctx);
+        for (i = 0; i <= hs->s; i++)
+            fmpz_mpoly_clear(hs->img + i, ctx);
+        flint_free(hs->A);
+        flint_free(hs->img);
+        flint_free(hs->gens);
+        fmpz_mpoly_ctx_clear(hs->gctx);
+    }
+    fmpz_clear(hs->L);
+    rs_hurwitz_subst_init(hs);
+}
+
+/* packed exponent vectors, compared word by word (any fixed order will do) */
+static slong cmp_nv;
+
+static int
+_exp_cmp(const void *x, const void *y)
+{
+    const ulong *a = x, *b = y;
+    slong k;
+    for (k = 0; k < cmp_nv; k++)
+        if (a[k] != b[k])
+            return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+/* One candidate variable v: the coefficients C_{i,e}, their basis and the
+ * rewritten A_i.  Returns the total terms of the A_i (WORD_MAX if the
+ * candidate does not apply); on success with keep != 0 fills hs. */
+static slong
+_try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
+         slong v, int keep, const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = fmpz_mpoly_ctx_nvars(ctx), i, e, j, k, t, M = 0, T = 0;
+    slong *ci = NULL, *ce = NULL, *pivots = NULL, rank, s, nconst;
+    slong total = WORD_MAX, *gvar = NULL;
+    fmpz_mpoly_struct *C = NULL;
+    ulong *mono = NULL, *ex;
+    fmpq_mat_t At, R;
+    fmpz_t L, den, cval;
+    int ok = 1;
+
+    /* the coefficients with respect to x_v */
+    for (i = 0; i <= n; i++)
+        if (!fmpz_mpoly_is_zero(a + i, ctx))
+            M += fmpz_mpoly_degree_si(a + i, v, ctx) + 1;
+    if (M == 0)
+        return WORD_MAX;
+    C = flint_malloc(M * sizeof(fmpz_mpoly_struct));
+    ci = flint_malloc(M * sizeof(slong));
+    ce = flint_malloc(M * sizeof(slong));
+    M = 0;
+    for (i = 0; i <= n; i++) {
+        slong d;
+        if (fmpz_mpoly_is_zero(a + i, ctx))
+            continue;
+        d = fmpz_mpoly_degree_si(a + i, v, ctx);
+        for (e = 0; e <= d; e++) {
+            ulong ee = e;
+            fmpz_mpoly_init(C + M, ctx);
+            fmpz_mpoly_get_coeff_vars_ui(C + M, a + i, &v, &ee, 1, ctx);
+            if (fmpz_mpoly_is_zero(C + M, ctx)) {
+                fmpz_mpoly_clear(C + M, ctx);
+                continue;
+            }
+            ci[M] = i;
+            ce[M] = e;
+            T += fmpz_mpoly_length(C + M, ctx);
+            M++;
+        }
+    }
+
+    /* the distinct monomials: coordinates */
+    mono = flint_malloc((T > 0 ? T : 1) * nv * sizeof(ulong));
+    for (j = 0, t = 0; j < M; j++)
+        for (k = 0; k < fmpz_mpoly_length(C + j, ctx); k++, t++)
+            fmpz_mpoly_get_term_exp_ui(mono + t * nv, C + j, k, ctx);
+    cmp_nv = nv;
+    qsort(mono, T, nv * sizeof(ulong), _exp_cmp);
+    for (k = 0, t = 0; k < T; k++)
+        if (t == 0 || _exp_cmp(mono + (t - 1) * nv, mono + k * nv) != 0) {
+            if (t != k)
+                memmove(mono + t * nv, mono + k * nv, nv * sizeof(ulong));
+            t++;
+        }
+    T = t;
+    if ((double) T * (double) M > SUBST_MAX_ENTRIES) {
+        ok = 0;
+        goto cleanup_c;
+    }
+
+    fmpq_mat_init(At, T, M);
+    fmpq_mat_init(R, T, M);
+    ex = flint_malloc(nv * sizeof(ulong));
+    for (j = 0; j < M; j++)
+        for (k = 0; k < fmpz_mpoly_length(C + j, ctx); k++) {
+            ulong *pos;
+            fmpz_mpoly_get_term_exp_ui(ex, C + j, k, ctx);
+            pos = bsearch(ex, mono, T, nv * sizeof(ulong), _exp_cmp);
+            fmpz_set(fmpq_mat_entry_num(At, (pos - mono) / nv, j), C[j].coeffs + k);
+        }
+    flint_free(ex);
+    rank = fmpq_mat_rref(R, At);
+
+    /* pivot column of each row of R; column j = sum_r R[r][j] C_{pivot r} */
+    pivots = flint_malloc((rank > 0 ? rank : 1) * sizeof(slong));
+    gvar = flint_malloc((rank > 0 ? rank : 1) * sizeof(slong));
+    for (t = 0, j = 0; t < rank; t++) {
+        while (fmpq_is_zero(fmpq_mat_entry(R, t, j)))
+            j++;
+        pivots[t] = j;
+    }
+    /* a constant basis element is kept as a number, not a variable */
+    s = 0;
+    nconst = 0;
+    for (t = 0; t < rank; t++) {
+        const fmpz_mpoly_struct *g = C + pivots[t];
+        if (fmpz_mpoly_is_fmpz(g, ctx)) {
+            gvar[t] = -1;
+            nconst++;
+        } else
+            gvar[t] = ++s;
+    }
+    /* more variables than before: no gain */
+    if (1 + s > nv || rank == M) {
+        ok = 0;
+        goto cleanup_m;
+    }
+
+    fmpz_init(L);
+    fmpz_init(den);
+    fmpz_init(cval);
+    fmpz_one(L);
+    for (t = 0; t < rank; t++)
+        for (j = 0; j < M; j++)
+            fmpz_lcm(L, L, fmpq_mat_entry_den(R, t, j));
+    total = 0;
+    for (j = 0; j < M; j++)
+        for (t = 0; t < rank; t++)
+            if (!fmpq_is_zero(fmpq_mat_entry(R, t, j)))
+                total++;
+
+    if (keep) {
+        ulong *gex;
+        fmpz_mpoly_t back;
+        fmpz_mpoly_ctx_init(hs->gctx, 1 + s, ORD_LEX);
+        hs->n = n;
+        hs->s = s;
+        hs->var = v;
+        fmpz_set(hs->L, L);
+        hs->A = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+        for (i = 0; i <= n; i++)
+            fmpz_mpoly_init(hs->A + i, hs->gctx);
+        gex = flint_calloc(1 + s, sizeof(ulong));
+        for (j = 0; j < M; j++)
+            for (t = 0; t < rank; t++) {
+                const fmpq *r = fmpq_mat_entry(R, t, j);
+                if (fmpq_is_zero(r))
+                    continue;
+                /* L r (an integer) times the basis element */
+                fmpz_divexact(den, L, fmpq_denref(r));
+                fmpz_mul(den, den, fmpq_numref(r));
+                memset(gex, 0, (1 + s) * sizeof(ulong));
+                gex[0] = ce[j];
+                if (gvar[t] < 0) {
+                    fmpz_mpoly_get_fmpz(cval, C + pivots[t], ctx);
+                    fmpz_mul(den, den, cval);
+                } else
+                    gex[gvar[t]] = 1;
+                fmpz_mpoly_push_term_fmpz_ui(hs->A + ci[j], den, gex, hs->gctx);
+            }
+        flint_free(gex);
+        for (i = 0; i <= n; i++) {
+            fmpz_mpoly_sort_terms(hs->A + i, hs->gctx);
+            fmpz_mpoly_combine_like_terms(hs->A + i, hs->gctx);
+        }
+        /* images: x_v -> x_v, G_r -> its coefficient polynomial */
+        hs->img = flint_malloc((1 + s) * sizeof(fmpz_mpoly_struct));
+        hs->gens = flint_malloc((1 + s) * sizeof(fmpz_mpoly_struct *));
+        for (k = 0; k <= s; k++) {
+            fmpz_mpoly_init(hs->img + k, ctx);
+            hs->gens[k] = hs->img + k;
+        }
+        fmpz_mpoly_gen(hs->img + 0, v, ctx);
+        for (t = 0; t < rank; t++)
+            if (gvar[t] > 0)
+                fmpz_mpoly_set(hs->img + gvar[t], C + pivots[t], ctx);
+        hs->active = 1;
+        /* the rewrite checked exactly: A_i(x_v, G(x)) = L a_i */
+        fmpz_mpoly_init(back, ctx);
+        for (i = 0; i <= n && ok; i++) {
+            fmpz_mpoly_t la;
+            fmpz_mpoly_init(la, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(la, a + i, L, ctx);
+            ok = fmpz_mpoly_compose_fmpz_mpoly(back, hs->A + i, hs->gens,
+                                               hs->gctx, ctx)
+                 && fmpz_mpoly_equal(back, la, ctx);
+            fmpz_mpoly_clear(la, ctx);
+        }
+        fmpz_mpoly_clear(back, ctx);
+        if (!ok) {
+            rs_hurwitz_subst_clear(hs, ctx);
+            total = WORD_MAX;
+        }
+    }
+    fmpz_clear(L);
+    fmpz_clear(den);
+    fmpz_clear(cval);
+
+cleanup_m:
+    flint_free(pivots);
+    flint_free(gvar);
+    fmpq_mat_clear(At);
+    fmpq_mat_clear(R);
+cleanup_c:
+    flint_free(mono);
+    for (j = 0; j < M; j++)
+        fmpz_mpoly_clear(C + j, ctx);
+    flint_free(C);
+    flint_free(ci);
+    flint_free(ce);
+    return ok ? total : WORD_MAX;
+}
+
+void
+rs_hurwitz_subst_find(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a,
+                      slong n, int force, const fmpz_mpoly_ctx_t ctx)
+{
+    slong nv = fmpz_mpoly_ctx_nvars(ctx), v, best = -1, i;
+    slong direct = 0, cost, best_cost = WORD_MAX;
+
+    rs_hurwitz_subst_clear(hs, ctx);
+    for (i = 0; i <= n; i++)
+        direct += fmpz_mpoly_length(a + i, ctx);
+    for (v = 0; v < nv; v++) {
+        int used = 0;
+        for (i = 0; i <= n && !used; i++)
+            used = fmpz_mpoly_degree_si(a + i, v, ctx) > 0;
+        if (!used)
+            continue;
+        cost = _try_var(hs, a, n, v, 0, ctx);
+        if (cost < best_cost) {
+            best_cost = cost;
+            best = v;
+        }
+    }
+    if (best < 0 || (!force && 2 * best_cost >= direct))
+        return;
+    _try_var(hs, a, n, best, 1, ctx);
+}
+
+int
+rs_hurwitz_subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
+                      const rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx)
+{
+    if (!fmpz_mpoly_compose_fmpz_mpoly(D, Dg, hs->gens, hs->gctx, ctx))
+        return 0;
+    if (!fmpz_is_one(hs->L)) {
+        fmpz_t p;
+        fmpz_init(p);
+        fmpz_pow_ui(p, hs->L, m);
+        fmpz_mpoly_scalar_divexact_fmpz(D, D, p, ctx);
+        fmpz_clear(p);
+    }
+    return 1;
+}
