@@ -17,9 +17,14 @@
  * bench/bench_routes.sh).  Stops after the row whose (Z) time exceeds
  * BENCH_ROW_LIMIT seconds (argv[1], default 60).
  *
+ * "est s" is recstab's estimate of the row (src/util/budget.c,
+ * rs_budget_mpoly_mul_seconds summed over the row's products, as
+ * hurwitz.c's _row_estimate), "Z cpu s" the process CPU seconds (clock())
+ * of the Z route, to calibrate the estimate on a loaded machine.
+ *
  * Build (after make all):
- *   cc -O2 -Iinclude -I/usr/include/flint bench/bench_routh_routes.c \
- *      -o build/bench_routh_routes -lflint -lgmp -lm
+ *   cc -O2 -Iinclude -Isrc -I/usr/include/flint bench/bench_routh_routes.c \
+ *      src/util/budget.c src/util/error.c -o build/bench_routh_routes -lflint -lgmp -lm
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,6 +34,7 @@
 #include <flint/nmod_mpoly.h>
 #include <flint/fmpz_vec.h>
 #include <flint/ulong_extras.h>
+#include "recstab/budget.h"
 
 #define MAXV 32
 #define MAXN 64
@@ -116,14 +122,15 @@ main(int argc, char **argv)
     }
     printf("prime p = %lu, degree n = %ld, %ld parameters\n", (unsigned long) p,
            (long) n, (long) nv);
-    printf("%-4s %9s %6s %8s %10s %10s %11s %12s %14s %12s\n", "D_m", "terms", "bits",
-           "images", "Z s", "one p s", "p route s", "point us", "dense probes",
+    printf("%-4s %9s %6s %8s %10s %10s %10s %10s %11s %12s %14s %12s\n", "D_m", "terms", "bits",
+           "images", "Z s", "Z cpu s", "est s", "one p s", "p route s", "point us", "dense probes",
            "sparse probes");
     for (m = 2; m < n; m++) {
         fmpz_mpoly_t t, u, pd;
         nmod_mpoly_t tp, up;
         fmpz_t cd;
-        double t0, tz, tpp, tpt, dense = 1.0;
+        double t0, tz, tzc, tpp, tpt, dense = 1.0, est = 0.0;
+        clock_t c0;
         slong bits, k, reps = 0;
         int ok = 1;
 
@@ -137,7 +144,11 @@ main(int argc, char **argv)
             _fmpz_vec_content(cd, R[m - 3][0].coeffs, R[m - 3][0].length);
             fmpz_mpoly_scalar_divexact_fmpz(pd, R[m - 3] + 0, cd, zc);
         }
+        for (j = 0; j + 1 < len; j++)
+            est += rs_budget_mpoly_mul_seconds(R[m - 1] + 0, R[m - 2] + j + 1)
+                   + rs_budget_mpoly_mul_seconds(R[m - 2] + 0, R[m - 1] + j + 1);
         t0 = now();
+        c0 = clock();
         for (j = 0; j + 1 < len && ok; j++) {
             fmpz_mpoly_mul(t, R[m - 1] + 0, R[m - 2] + j + 1, zc);
             fmpz_mpoly_mul(u, R[m - 2] + 0, R[m - 1] + j + 1, zc);
@@ -149,6 +160,7 @@ main(int argc, char **argv)
         }
         z_primitive(R[m], len, zc);
         tz = now() - t0;
+        tzc = (double) (clock() - c0) / CLOCKS_PER_SEC;
         t0 = now();
         for (j = 0; j + 1 < len && ok; j++) {
             nmod_mpoly_mul(tp, P[m - 1] + 0, P[m - 2] + j + 1, pc);
@@ -187,9 +199,9 @@ main(int argc, char **argv)
             dense *= (double) (d + 1);
         }
         k = bits / 62 + 1;
-        printf("D_%-2ld %9ld %6ld %8ld %10.3f %10.3f %11.3f %12.3f %14.3g %12.3g\n",
+        printf("D_%-2ld %9ld %6ld %8ld %10.3f %10.3f %10.3f %10.3f %11.3f %12.3f %14.3g %12.3g\n",
                (long) m, (long) fmpz_mpoly_length(R[m] + 0, zc), (long) bits,
-               (long) k, tz, tpp, tpp * k, tpt * 1e6, dense,
+               (long) k, tz, tzc, est, tpp, tpp * k, tpt * 1e6, dense,
                (double) fmpz_mpoly_length(R[m] + 0, zc) * (nv + 1));
         fflush(stdout);
         fmpz_mpoly_clear(t, zc);
@@ -198,7 +210,7 @@ main(int argc, char **argv)
         nmod_mpoly_clear(tp, pc);
         nmod_mpoly_clear(up, pc);
         fmpz_clear(cd);
-        if (tz > limit)
+        if (tzc > limit)
             break;
     }
     return 0;
