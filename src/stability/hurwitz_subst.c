@@ -65,15 +65,15 @@ rs_hurwitz_subst_clear(rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx)
     rs_hurwitz_subst_init(hs);
 }
 
-/* packed exponent vectors, compared word by word (any fixed order will do) */
-static slong cmp_nv;
-
+/* exponent vectors stored as (nv, e_0, ..., e_{nv-1}), so that the
+ * comparison needs no outside state; compared word by word (any fixed
+ * order will do) */
 static int
 _exp_cmp(const void *x, const void *y)
 {
     const ulong *a = x, *b = y;
-    slong k;
-    for (k = 0; k < cmp_nv; k++)
+    ulong k;
+    for (k = 1; k <= a[0]; k++)
         if (a[k] != b[k])
             return a[k] < b[k] ? -1 : 1;
     return 0;
@@ -88,7 +88,7 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
 {
     slong nv = fmpz_mpoly_ctx_nvars(ctx), i, e, j, k, t, M = 0, T = 0;
     slong *ci = NULL, *ce = NULL, *pivots = NULL, rank, s, nconst;
-    slong total = WORD_MAX, *gvar = NULL;
+    slong total = WORD_MAX, *gvar = NULL, st;
     fmpz_mpoly_struct *C = NULL;
     ulong *mono = NULL, *ex;
     fmpq_mat_t At, R;
@@ -126,16 +126,18 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
     }
 
     /* the distinct monomials: coordinates */
-    mono = flint_malloc((T > 0 ? T : 1) * nv * sizeof(ulong));
+    st = nv + 1;
+    mono = flint_malloc((T > 0 ? T : 1) * st * sizeof(ulong));
     for (j = 0, t = 0; j < M; j++)
-        for (k = 0; k < fmpz_mpoly_length(C + j, ctx); k++, t++)
-            fmpz_mpoly_get_term_exp_ui(mono + t * nv, C + j, k, ctx);
-    cmp_nv = nv;
-    qsort(mono, T, nv * sizeof(ulong), _exp_cmp);
+        for (k = 0; k < fmpz_mpoly_length(C + j, ctx); k++, t++) {
+            mono[t * st] = nv;
+            fmpz_mpoly_get_term_exp_ui(mono + t * st + 1, C + j, k, ctx);
+        }
+    qsort(mono, T, st * sizeof(ulong), _exp_cmp);
     for (k = 0, t = 0; k < T; k++)
-        if (t == 0 || _exp_cmp(mono + (t - 1) * nv, mono + k * nv) != 0) {
+        if (t == 0 || _exp_cmp(mono + (t - 1) * st, mono + k * st) != 0) {
             if (t != k)
-                memmove(mono + t * nv, mono + k * nv, nv * sizeof(ulong));
+                memmove(mono + t * st, mono + k * st, st * sizeof(ulong));
             t++;
         }
     T = t;
@@ -146,13 +148,14 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
 
     fmpq_mat_init(At, T, M);
     fmpq_mat_init(R, T, M);
-    ex = flint_malloc(nv * sizeof(ulong));
+    ex = flint_malloc(st * sizeof(ulong));
+    ex[0] = nv;
     for (j = 0; j < M; j++)
         for (k = 0; k < fmpz_mpoly_length(C + j, ctx); k++) {
             ulong *pos;
-            fmpz_mpoly_get_term_exp_ui(ex, C + j, k, ctx);
-            pos = bsearch(ex, mono, T, nv * sizeof(ulong), _exp_cmp);
-            fmpz_set(fmpq_mat_entry_num(At, (pos - mono) / nv, j), C[j].coeffs + k);
+            fmpz_mpoly_get_term_exp_ui(ex + 1, C + j, k, ctx);
+            pos = bsearch(ex, mono, T, st * sizeof(ulong), _exp_cmp);
+            fmpz_set(fmpq_mat_entry_num(At, (pos - mono) / st, j), C[j].coeffs + k);
         }
     flint_free(ex);
     rank = fmpq_mat_rref(R, At);
