@@ -29,12 +29,20 @@ typedef struct {
     slong nrows;             /* rows of the Schur-Cohn table (when regular) */
     fmpz_poly_struct *rows;  /* successive reduced polynomials (fraction-free) */
     slong gcd_degree;        /* degree of gcd(p, p*) split off */
+    slong modular_primes;    /* rs_jury_count_fmpz_poly: primes of the regular
+                                table's minors (0: the integer table ran) */
 } rs_jury_struct;
 typedef rs_jury_struct rs_jury_t[1];
 
 void rs_jury_init(rs_jury_t j);
 void rs_jury_clear(rs_jury_t j);
 int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
+/* The same count without the rows (nrows, rows: the sign of each row's
+ * constant term and its degree only).  Above degree 64 a regular table is
+ * counted from the signs of the Schur-Cohn minors D_1..D_n, rebuilt from
+ * word-size primes under a Hadamard bound (jury.c); a table singular or
+ * defective modulo the first prime goes to the integer table. */
+int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
 
 #ifdef __cplusplus
 }

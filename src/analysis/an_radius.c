@@ -78,12 +78,18 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
         return r;
     }
     rs_jury_init(ju);
-    r = rs_jury_fmpz_poly(ju, p, run->err);
+    r = rs_jury_count_fmpz_poly(ju, p, run->err);
     if (r == RS_OK) {
         agree = rs_rootcount_equal(rb, ju->count);
         *rc = *ju->count;
         json_object_set_new(o, "count_methods", json_pack("[ss]", "certified root balls", "schur-cohn"));
         json_object_set_new(o, "count_agree", json_boolean(agree));
+        /* which exact route counted: the minors' signs from word-size
+         * primes (jury.c), or the integer table */
+        json_object_set_new(o, "schur_cohn_route", ju->modular_primes > 0
+            ? json_pack("{s:s,s:I}", "method", "Schur-Cohn minors modulo primes (Hadamard bound, CRT)",
+                        "primes", (json_int_t) ju->modular_primes)
+            : json_pack("{s:s}", "method", "integer Schur-Cohn table"));
         if (!agree) {
             json_t *d = json_object();
             run->outcome |= RS_OUTCOME_INCONSISTENT;

@@ -661,7 +661,7 @@ int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, js
     if (fmpz_poly_degree(p) > RS_RADIUS_HIGH_DEGREE)
         r = rs_routh_int_count(ro->count, p, run->err);
     if (r == RS_ERR_UNDECIDED) r = rs_routh_fmpz_poly(ro, p, run->err);
-    if (r == RS_OK) r = rs_jury_fmpz_poly(ju, p, run->err);
+    if (r == RS_OK) r = rs_jury_count_fmpz_poly(ju, p, run->err);
     if (r == RS_OK) {
         agree = rs_rootcount_equal(ro->count, ju->count);
         *rc = *ro->count;

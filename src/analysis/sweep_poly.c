@@ -52,7 +52,7 @@ static int exact_count(rs_rootcount_t rc, const fmpz_poly_t p, rs_error_t err)
     rs_routh_init(ro);
     rs_jury_init(ju);
     r = rs_routh_fmpz_poly(ro, p, err);
-    if (r == RS_OK) r = rs_jury_fmpz_poly(ju, p, err);
+    if (r == RS_OK) r = rs_jury_count_fmpz_poly(ju, p, err);
     if (r == RS_OK) {
         *rc = *ro->count;
         if (!rs_rootcount_equal(ro->count, ju->count))

@@ -274,6 +274,138 @@ static void test_high_degree_property(void **state)
     fmpz_poly_clear(a); fmpz_poly_clear(b);
 }
 
+
+/* rs_jury_count_fmpz_poly: above degree 64 the minors' signs modulo primes
+ * (jury.c).  Property: on random dense polynomials of degree 65-160 and 3-48
+ * bit coefficients the count equals the integer table's (rs_jury_fmpz_poly,
+ * Rouche on exactly divided rows) and Routh's on the bilinear transform
+ * (rs_routh_int_count, another algorithm on another polynomial), and the
+ * modular route is the one that ran. */
+static void test_count_modular_property(void **state)
+{
+    fmpz_poly_t p;
+    flint_rand_t st;
+    rs_jury_t j, jc;
+    rs_rootcount_t rc;
+    rs_error_t err;
+    slong it, modular = 0;
+    (void) state;
+    fmpz_poly_init(p);
+    flint_randinit(st);
+    for (it = 0; it < 10; it++) {
+        slong d = 65 + (it * 95) / 9;
+        do
+            fmpz_poly_randtest(p, st, d + 1, 3 + 5 * (it % 10));
+        while (fmpz_poly_degree(p) != d || fmpz_is_zero(p->coeffs));
+        rs_jury_init(j);
+        rs_jury_init(jc);
+        rs_error_init(err);
+        assert_int_equal(rs_jury_fmpz_poly(j, p, err), RS_OK);
+        assert_int_equal(rs_jury_count_fmpz_poly(jc, p, err), RS_OK);
+        assert_true(rs_rootcount_equal(j->count, jc->count));
+        assert_int_equal(j->table_regular, jc->table_regular);
+        if (jc->modular_primes > 0)
+            modular++;
+        rs_rootcount_init(rc);
+        if (rs_routh_int_count(rc, p, err) == RS_OK) {
+            assert_int_equal(rc->inside, jc->count->inside);
+            assert_int_equal(rc->outside, jc->count->outside);
+        }
+        rs_rootcount_clear(rc);
+        rs_jury_clear(j);
+        rs_jury_clear(jc);
+    }
+    assert_true(modular >= 8);
+    flint_randclear(st);
+    fmpz_poly_clear(p);
+}
+
+/* p = prod (c_i lambda - r_i)^e_i (and cyclotomic factors) counted by
+ * construction: a root 1/2 or -1/3 inside, 3 or -2 outside, the roots of
+ * Phi_7 (six primitive 7th roots of unity) and of lambda^2 + 1 on the
+ * circle.  2 lambda^n - 1 (all n roots of modulus 2^(-1/n)) and
+ * lambda^n - 2 (modulus 2^(1/n)): sparse, their table is defective modulo
+ * the first prime and the integer table counts them. */
+static void test_count_modular_closed_forms(void **state)
+{
+    fmpz_poly_t p, t;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(t);
+    rs_jury_init(j);
+    rs_error_init(err);
+    /* (2l - 1)^50 (l - 3)^30 (l + 2)^20: 50 in, 50 out, regular */
+    fmpz_poly_set_str(p, "2  -1 2");
+    fmpz_poly_pow(p, p, 50);
+    fmpz_poly_set_str(t, "2  -3 1");
+    fmpz_poly_pow(t, t, 30);
+    fmpz_poly_mul(p, p, t);
+    fmpz_poly_set_str(t, "2  2 1");
+    fmpz_poly_pow(t, t, 20);
+    fmpz_poly_mul(p, p, t);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 50);
+    assert_int_equal(j->count->on, 0);
+    assert_int_equal(j->count->outside, 50);
+    assert_true(j->modular_primes > 0);
+    /* (3l + 1)^70 Phi_7(l): 70 in, 6 simple on; gcd(p, p*) = Phi_7, the
+     * table of p is singular and h = (3l + 1)^70 (degree 70) goes modular */
+    fmpz_poly_set_str(p, "2  1 3");
+    fmpz_poly_pow(p, p, 70);
+    fmpz_poly_set_str(t, "7  1 1 1 1 1 1 1");
+    fmpz_poly_mul(p, p, t);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 70);
+    assert_int_equal(j->count->on, 6);
+    assert_int_equal(j->count->on_mult[1], 6);
+    assert_int_equal(j->count->outside, 0);
+    assert_int_equal(j->table_regular, 0);
+    /* (2l - 1)^40 (l + 2)^30 (l^2 + 1)^2: 40 in, +-i double, 30 out */
+    fmpz_poly_set_str(p, "2  -1 2");
+    fmpz_poly_pow(p, p, 40);
+    fmpz_poly_set_str(t, "2  2 1");
+    fmpz_poly_pow(t, t, 30);
+    fmpz_poly_mul(p, p, t);
+    fmpz_poly_set_str(t, "3  1 0 1");
+    fmpz_poly_pow(t, t, 2);
+    fmpz_poly_mul(p, p, t);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 40);
+    assert_int_equal(j->count->on, 4);
+    assert_int_equal(j->count->on_mult[2], 2);
+    assert_int_equal(j->count->outside, 30);
+    assert_int_equal(rs_rootcount_status(j->count), RS_STATUS_UNSTABLE);
+    /* 2 l^300 - 1: 300 in; l^300 - 2: 300 out; both by the integer table */
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 300, 2);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 300);
+    assert_int_equal(j->modular_primes, 0);
+    fmpz_poly_set_coeff_si(p, 300, 1);
+    fmpz_poly_set_coeff_si(p, 0, -2);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->outside, 300);
+    assert_int_equal(j->modular_primes, 0);
+    /* (l - 2) (2l - 1)^80 (l^80 + 2)... kept small: l^1 shift (a root at
+     * 0) on a dense regular part: (2l - 1)^45 (l - 3)^30 l^2: 47 in, 30 out */
+    fmpz_poly_set_str(p, "2  -1 2");
+    fmpz_poly_pow(p, p, 45);
+    fmpz_poly_set_str(t, "2  -3 1");
+    fmpz_poly_pow(t, t, 30);
+    fmpz_poly_mul(p, p, t);
+    fmpz_poly_shift_left(p, p, 2);
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 47);
+    assert_int_equal(j->count->outside, 30);
+    assert_int_equal(j->count->on, 0);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -284,6 +416,8 @@ int main(void)
         cmocka_unit_test(test_extreme_coefficients),
         cmocka_unit_test(test_zero_input),
         cmocka_unit_test(test_high_degree_property),
+        cmocka_unit_test(test_count_modular_property),
+        cmocka_unit_test(test_count_modular_closed_forms),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
