@@ -38,7 +38,7 @@ void rs_jury_init(rs_jury_t j);
 void rs_jury_clear(rs_jury_t j);
 int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
 /* The same count without the rows (nrows, rows: the sign of each row's
- * constant term and its degree only).  Above degree 64 a regular table is
+ * constant term and its degree only).  Above degree 32 a regular table is
  * counted from the signs of the Schur-Cohn minors D_1..D_n, rebuilt from
  * word-size primes under a Hadamard bound (jury.c); a table singular or
  * defective modulo the first prime goes to the integer table. */

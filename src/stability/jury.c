@@ -302,29 +302,35 @@ static int jury_count_schur_cohn(rs_rootcount_t rc, const fmpz_poly_t h,
  * One more prime than the bound needs re-checks every reconstructed D_k
  * (a failed identity or bound would be caught there with probability
  * 1 - 2^-61 per value): a mismatch is an error, never a count.
- * Cost: n^2/2 word operations per prime, n (2 log2 |a| + log2 n / 2 + 1)
+ * Cost: 2 n^2 word products per prime, n (2 log2 |a| + log2 n / 2 + 1)
  * / 61 primes, against n^2/2 products of up to that many bits in the
- * integer table (cluster-500: about 1100 primes, 0.5 s against 15 s). */
+ * integer table (cluster-500: 1138 primes, 0.5 s against 15 s). */
 
-#define JURY_MODULAR_MIN_DEGREE 64
+/* below this the integer table is as fast (random-50: the same; Wilkinson
+ * degree 20: 0.25 against 0.7 ms; degree 40: 12 against 5.9 ms) */
+#define JURY_MODULAR_MIN_DEGREE 32
 #define JURY_PRIME_BITS 61
 
 /* F_1(0) .. F_n(0) modulo prime (r[0..n-1]); 0 when a divisor or a nominal
  * leading coefficient vanishes mod prime (a bad prime, a singular or a
- * defective table: the caller decides), else 1.  f: n + 1 words of work. */
-static int jury_table_mod(mp_ptr r, mp_ptr f, const fmpz_poly_t p, mp_limb_t prime)
+ * defective table: the caller decides), else 1.  f: n + 1 words, w: 3n.
+ * No inversion per step: the rows G_s = mu_s F_s are not divided,
+ * G_s = G_{s-1}(0) G_{s-1} - lc(G_{s-1}) G_{s-1}*, so mu_s = mu_{s-1}^2 div_s
+ * with div_s = F_{s-2}(0) = G_{s-2}(0) / mu_{s-2} (1 for s <= 2); mu_s is
+ * kept as a fraction num/den and the nums are inverted together at the end
+ * (one inversion per prime instead of one per row). */
+static int jury_table_mod(mp_ptr r, mp_ptr f, mp_ptr w, const fmpz_poly_t p, mp_limb_t prime)
 {
     slong n = fmpz_poly_degree(p), m, s, i;
+    mp_ptr num = w, den = w + n, pre = w + 2 * n;
+    mp_limb_t nprev = 1, dprev = 1, inv;
     nmod_t mod;
     nmod_init(&mod, prime);
     _fmpz_vec_get_nmod_vec(f, p->coeffs, n + 1, mod);
     for (s = 1, m = n; s <= n; s++, m--) {
-        mp_limb_t div = s <= 2 ? 1 : r[s - 3], dinv, sc, tl, scp, tlp;
-        if (div == 0 || f[m] == 0)
+        mp_limb_t sc = f[0], tl = f[m], scp, tlp, ns, ds;
+        if (tl == 0 || (s >= 3 && r[s - 3] == 0))
             return 0;
-        dinv = n_invmod(div, prime);
-        sc = n_mulmod2_preinv(f[0], dinv, prime, mod.ninv);
-        tl = n_mulmod2_preinv(f[m], dinv, prime, mod.ninv);
         scp = n_mulmod_precomp_shoup(sc, prime);
         tlp = n_mulmod_precomp_shoup(tl, prime);
         /* (f_i, f_{m-i}) -> (sc f_i - tl f_{m-i}, sc f_{m-i} - tl f_i): in
@@ -336,7 +342,29 @@ static int jury_table_mod(mp_ptr r, mp_ptr f, const fmpz_poly_t p, mp_limb_t pri
         }
         if (2 * i == m)
             f[i] = n_mulmod2_preinv(f[i], nmod_sub(sc, tl, mod), prime, mod.ninv);
-        r[s - 1] = f[0];
+        r[s - 1] = f[0];                         /* G_s(0) for now */
+        ns = n_mulmod2_preinv(nprev, nprev, prime, mod.ninv);
+        ds = n_mulmod2_preinv(dprev, dprev, prime, mod.ninv);
+        if (s >= 3) {
+            ns = n_mulmod2_preinv(ns, n_mulmod2_preinv(r[s - 3], den[s - 3], prime, mod.ninv),
+                                  prime, mod.ninv);
+            ds = n_mulmod2_preinv(ds, num[s - 3], prime, mod.ninv);
+        }
+        num[s - 1] = nprev = ns;
+        den[s - 1] = dprev = ds;
+    }
+    /* F_s(0) = G_s(0) den_s / num_s, the nums inverted in one batch */
+    pre[0] = num[0];
+    for (s = 1; s < n; s++)
+        pre[s] = n_mulmod2_preinv(pre[s - 1], num[s], prime, mod.ninv);
+    if (pre[n - 1] == 0)
+        return 0;
+    inv = n_invmod(pre[n - 1], prime);
+    for (s = n - 1; s >= 0; s--) {
+        mp_limb_t is = s > 0 ? n_mulmod2_preinv(inv, pre[s - 1], prime, mod.ninv) : inv;
+        if (s > 0)
+            inv = n_mulmod2_preinv(inv, num[s], prime, mod.ninv);
+        r[s] = n_mulmod2_preinv(n_mulmod2_preinv(r[s], den[s], prime, mod.ninv), is, prime, mod.ninv);
     }
     return 1;
 }
@@ -352,7 +380,7 @@ static int jury_count_modular(slong *inside, int *regular, slong *nprimes,
     slong *need;
     fmpz_t a2, x;
     double lb;
-    mp_ptr primes, res, f, r;
+    mp_ptr primes, res, f, r, w;
     mp_limb_t q;
     fmpz_comb_struct *comb;
     fmpz_comb_temp_struct *tmp;
@@ -387,10 +415,11 @@ static int jury_count_modular(slong *inside, int *regular, slong *nprimes,
     res = flint_malloc(np * n * sizeof(mp_limb_t));   /* res[k * np + j] */
     f = flint_malloc((n + 1) * sizeof(mp_limb_t));
     r = flint_malloc(n * sizeof(mp_limb_t));
+    w = flint_malloc(3 * n * sizeof(mp_limb_t));
     q = UWORD(1) << (JURY_PRIME_BITS - 1);
     for (j = 0; j < np && st == RS_OK; ) {
         q = n_nextprime(q, 1);
-        if (!jury_table_mod(r, f, p, q)) {
+        if (!jury_table_mod(r, f, w, p, q)) {
             /* the first prime sees a singular or defective table as it is
              * over Z (barring a 2^-61 chance): the integer table, which
              * follows actual degrees, is the cheaper route then */
@@ -407,6 +436,7 @@ static int jury_count_modular(slong *inside, int *regular, slong *nprimes,
     }
     flint_free(f);
     flint_free(r);
+    flint_free(w);
     if (st != RS_OK || j < np) {
         flint_free(primes);
         flint_free(res);
@@ -469,7 +499,7 @@ static int jury_count_modular(slong *inside, int *regular, slong *nprimes,
     return st;
 }
 
-/* The regular table's count of p: modulo primes above degree 64 when no
+/* The regular table's count of p: modulo primes above degree 32 when no
  * row is kept, else (or when that route cannot decide) the integer table. */
 static int jury_table_count(rs_jury_t j, const fmpz_poly_t p, slong *inside, int *regular,
                             int keep, rs_error_t err)
