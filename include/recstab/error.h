@@ -55,6 +55,16 @@ void rs_error_format(char *buf, size_t len, const rs_error_t err);
 /* Short name of a code, e.g. "input". */
 const char *rs_error_code_name(int code);
 
+/* GSL's error handler switched off for the whole process, once and
+ * thread-safely (pthread_once): GSL's default handler aborts the process
+ * when a routine fails (a root finder that does not converge, a singular
+ * LU), and a handler saved and restored around each call races between
+ * threads.  rs_analyse_json and the co-simulation's double eigenvectors
+ * call it; a program that uses the typed API from several threads calls
+ * it (or gsl_set_error_handler_off) before starting them.  A program that
+ * wants its own GSL handler sets it after the first call. */
+void rs_gsl_quiet(void);
+
 #ifdef __cplusplus
 }
 #endif

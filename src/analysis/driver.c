@@ -278,6 +278,8 @@ int rs_analyse_json_opt(const char *case_text, const char *source_name,
         ro = &dflt;
     }
     if (source_name == NULL) source_name = "<string>";
+    /* GSL's default handler would abort the caller's process (error.h) */
+    rs_gsl_quiet();
     rs_error_init(err);
     if (case_text == NULL) r = rs_error_set(err, RS_ERR_INPUT, "no case text (NULL)");
     else r = rs_run_case(&doc, &outcome, source_name, case_text, ro, err);

@@ -582,21 +582,29 @@ static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double 
 {
     size_t d = (size_t) dd, i, j;
     gsl_matrix_const_view A0 = gsl_matrix_const_view_array(T, d, d);
-    gsl_matrix *A = gsl_matrix_alloc(d, d);
-    gsl_vector_complex *ev = gsl_vector_complex_alloc(d);
-    gsl_matrix_complex *X = gsl_matrix_complex_alloc(d, d);
-    gsl_eigen_nonsymmv_workspace *w = gsl_eigen_nonsymmv_alloc(d);
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    gsl_matrix *A;
+    gsl_vector_complex *ev;
+    gsl_matrix_complex *X;
+    gsl_eigen_nonsymmv_workspace *w;
     int ok;
-    gsl_matrix_memcpy(A, &A0.matrix);
-    ok = gsl_eigen_nonsymmv(A, ev, X, w) == GSL_SUCCESS;
+    /* GSL reports a failure (no convergence) through its process-wide
+     * handler: off once for the process, never swapped per call (a saved
+     * and restored handler races between threads) */
+    rs_gsl_quiet();
+    A = gsl_matrix_alloc(d, d);
+    ev = gsl_vector_complex_alloc(d);
+    X = gsl_matrix_complex_alloc(d, d);
+    w = gsl_eigen_nonsymmv_alloc(d);
+    /* an allocation that failed is reported as NULL (the handler is off) */
+    ok = A != NULL && ev != NULL && X != NULL && w != NULL;
+    ok = ok && gsl_matrix_memcpy(A, &A0.matrix) == GSL_SUCCESS;
+    ok = ok && gsl_eigen_nonsymmv(A, ev, X, w) == GSL_SUCCESS;
     for (i = 0; ok && i < d; i++)
         for (j = 0; j < d; j++) {
             gsl_complex z = gsl_matrix_complex_get(X, i, j);
             Vr[i * d + j] = GSL_REAL(z);
             Vi[i * d + j] = GSL_IMAG(z);
         }
-    gsl_set_error_handler(old);
     ok = ok && all_finite(Vr, dd * dd) && all_finite(Vi, dd * dd) && cinv(Wr, Wi, Vr, Vi, scratch, dd);
     gsl_eigen_nonsymmv_free(w);
     gsl_matrix_complex_free(X);

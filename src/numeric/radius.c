@@ -1132,10 +1132,9 @@ static int _rs_radius_to_double(double *a, const fmpz_poly_t q, rs_error_t err)
 }
 
 /* GSL companion-QR roots of a[0..d] (d >= 1, a[d] != 0) into z[0..2d);
- * the GSL error handler is off during the call.  Returns a GSL status. */
+ * GSL's error handler is off (rs_gsl_quiet).  Returns a GSL status. */
 static int _rs_radius_gsl_solve(double *z, const double *a, slong d)
 {
-    gsl_error_handler_t *old;
     gsl_poly_complex_workspace *w;
     int st;
 
@@ -1146,12 +1145,13 @@ static int _rs_radius_gsl_solve(double *z, const double *a, slong d)
         z[1] = 0.0;
         return GSL_SUCCESS;
     }
-    old = gsl_set_error_handler_off();
+    /* GSL's handler off once for the process (error.h), not swapped per
+     * call: a saved and restored handler races between threads */
+    rs_gsl_quiet();
     w = gsl_poly_complex_workspace_alloc(d + 1);
     st = (w == NULL) ? GSL_ENOMEM : gsl_poly_complex_solve(a, d + 1, w, z);
     if (w != NULL)
         gsl_poly_complex_workspace_free(w);
-    gsl_set_error_handler(old);
     return st;
 }
 

@@ -1,6 +1,8 @@
 /* error.c -- see include/recstab/error.h */
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
 #include "recstab/error.h"
 
 void rs_error_init(rs_error_t err)
@@ -72,4 +74,16 @@ const char *rs_error_code_name(int code)
     case RS_ERR_UNDECIDED: return "undecided";
     default: return "unknown";
     }
+}
+
+static pthread_once_t gsl_once = PTHREAD_ONCE_INIT;
+
+static void gsl_off(void)
+{
+    gsl_set_error_handler_off();
+}
+
+void rs_gsl_quiet(void)
+{
+    pthread_once(&gsl_once, gsl_off);
 }
