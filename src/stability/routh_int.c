@@ -3,14 +3,17 @@
  *
  * The rational array of rs_routh_fmpz_poly keeps every row as a remainder
  * over Q: at degree 500 the gcds of its ever longer fractions take about a
- * minute.  Here the rows are the fraction-free ones, T_0, T_1 = the two
- * halves of q, then
- *     T_i[j] = (T_{i-1}[0] T_{i-2}[j+1] - T_{i-2}[0] T_{i-1}[j+1]) / T_{i-3}[0]
- * (no division for i = 2), an exact division because every entry is a minor
- * of the Hurwitz matrix (Bareiss; T_i[0] = Delta_i, the Hurwitz minors), so
- * the coefficients grow like the minors and no gcd is ever taken.  The
- * textbook first column is r_i = Delta_i / Delta_{i-1}: its sign changes are
- * the roots of q with Re z > 0, i.e. of p with |lambda| > 1.  Only the
+ * minute.  Here the rows are integer vectors, T_0, T_1 = the two halves of
+ * q, then
+ *     U[j]    = T_{i-1}[0] T_{i-2}[j+1] - T_{i-2}[0] T_{i-1}[j+1]
+ *     T_i     = U / content(U)
+ * (a primitive PRS: each new row is made primitive by the gcd of its
+ * entries, an exact division; no Bareiss division by an earlier pivot is
+ * used).  T_i = c_i r_i with r_i the rational Routh row and c_i a nonzero
+ * rational whose sign is tracked from the pivots, so the signs of r_i[0]
+ * are known without fractions.  The textbook first column is
+ * r_i[0] = Delta_i / Delta_{i-1} (Delta_i the Hurwitz minors): its sign
+ * changes are the roots of q with Re z > 0, i.e. of p with |lambda| > 1.  Only the
  * regular case is done here (every Delta_i != 0, deg q = deg p, q(0) != 0):
  * anything else is left to the exact generalised array. */
 #include <flint/fmpz_vec.h>
