@@ -21,6 +21,7 @@
 #include <time.h>
 #include <acb_poly.h>
 #include <arb_poly.h>
+#include <fmpq_vec.h>
 #include "recstab/budget.h"
 #include "analysis/registry.h"
 #include "analysis/sweep_impl.h"

@@ -13,6 +13,7 @@
  * the point's polynomial, which must agree): a disagreement is exit 3. */
 #include <stdlib.h>
 #include <string.h>
+#include <fmpq_vec.h>
 #include "analysis/registry.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"

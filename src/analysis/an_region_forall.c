@@ -14,6 +14,7 @@
 #include <string.h>
 #include <fmpz_vec.h>
 #include <ulong_extras.h>
+#include <fmpq_vec.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"

@@ -4,6 +4,8 @@
  * `char` line with i read back from its real 2x2 block form [[A, -B], [B, A]]),
  * p = re + i im with re, im in Z[real params][lambda]. */
 #include <string.h>
+#include <fmpq_vec.h>
+#include <fmpz_vec.h>
 #include "analysis/impl.h"
 #include "stability/routh_complex.h"
 

@@ -29,6 +29,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpq_mat.h>
+#include <fmpq.h>
+#include <fmpz.h>
 #include "stability/hurwitz_subst.h"
 
 /* coordinates of all coefficients are kept below this many entries */
