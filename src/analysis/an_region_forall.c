@@ -613,19 +613,11 @@ static int forall_probe_bad(rs_run_t *run, slong tv, const fmpq_t t, const rs_bo
     for (k = 0; r == RS_OK && k < run->c->nassume; k++)
         r = rs_condpoly_compile(cps + ncps++, &run->c->assume[k], s, run->c, run->err);
     if (r == RS_OK && rs_run_point_admissible(cps, ncps, pp, s)) {
-        fmpq_mpoly_t q;
         fmpq_poly_t w;
         fmpz_poly_t u;
-        fmpq_mpoly_init(q, s->ctx);
         fmpq_poly_init(w);
         fmpz_poly_init(u);
-        fmpq_one(q->content);
-        fmpz_mpoly_set(q->zpoly, v->cp->p, s->zctx);
-        fmpq_mpoly_reduce(q, s->ctx);
-        for (k = 0; k < np && k < s->nvars; k++)
-            if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
-                fmpq_mpoly_evaluate_one_fmpq(q, q, k, pt + k, s->ctx);
-        if (fmpq_mpoly_get_fmpq_poly(w, q, s->lambda_var, s->ctx)) {
+        if (rs_run_charpoly_at(w, v, NULL, pt, np < s->nvars ? np : s->nvars)) {
             slong n = fmpq_poly_degree(w);
             if (n < v->cp->degree) {
                 bad = 1;                              /* singular there */
@@ -637,7 +629,6 @@ static int forall_probe_bad(rs_run_t *run, slong tv, const fmpq_t t, const rs_bo
                 flint_free(c);
             }
         }
-        fmpq_mpoly_clear(q, s->ctx);
         fmpq_poly_clear(w);
         fmpz_poly_clear(u);
     }

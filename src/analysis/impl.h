@@ -88,6 +88,10 @@ int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *p
  * where its degree in lambda drops or it vanishes identically, else the
  * counts rc (Routh and Schur-Cohn, which must agree)
  * judged by rs_run_verdict. */
+/* w = v's characteristic polynomial with vars[k] = vals[k] (k < nv; vars
+ * NULL: the variables 0..nv-1) as a polynomial in lambda; 0 when a
+ * parameter is still symbolic. */
+int rs_run_charpoly_at(fmpq_poly_t w, const rs_variant_t *v, const slong *vars, const fmpq *vals, slong nv);
 int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                         const slong *vars, const fmpq *vals, slong nv);
 

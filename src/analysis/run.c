@@ -745,27 +745,39 @@ int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *p
     return ok;
 }
 
+int rs_run_charpoly_at(fmpq_poly_t w, const rs_variant_t *v, const slong *vars, const fmpq *vals, slong nv)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpq_mpoly_t q;
+    slong k;
+    int ok;
+    fmpq_mpoly_init(q, s->ctx);
+    fmpq_one(q->content);
+    fmpz_mpoly_set(q->zpoly, v->cp->p, s->zctx);
+    fmpq_mpoly_reduce(q, s->ctx);
+    for (k = 0; k < nv; k++) {
+        slong x = vars != NULL ? vars[k] : k;
+        if (fmpz_mpoly_degree_si(v->cp->p, x, s->zctx) > 0)
+            fmpq_mpoly_evaluate_one_fmpq(q, q, x, vals + k, s->ctx);
+    }
+    ok = fmpq_mpoly_get_fmpq_poly(w, q, s->lambda_var, s->ctx);
+    fmpq_mpoly_clear(q, s->ctx);
+    return ok;
+}
+
 int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                         const slong *vars, const fmpq *vals, slong nv)
 {
     const rs_scheme_struct *s = v->s;
-    fmpq_mpoly_t q;
     fmpq_poly_t w;
     fmpz_poly_t u;
-    slong k;
     int r = RS_OK;
     /* complex set values: p over Q(i) decides (complex_poly.c) */
     if (run->c->ncsets > 0) return rs_run_cx_point_status(st, rc, run, v, vars, vals, nv, -1);
-    fmpq_mpoly_init(q, s->ctx);
     fmpq_poly_init(w);
     fmpz_poly_init(u);
-    fmpq_one(q->content);
-    fmpz_mpoly_set(q->zpoly, v->cp->p, s->zctx);
-    fmpq_mpoly_reduce(q, s->ctx);
-    for (k = 0; k < nv; k++)
-        fmpq_mpoly_evaluate_one_fmpq(q, q, vars[k], vals + k, s->ctx);
     rs_rootcount_init(rc);
-    if (!fmpq_mpoly_get_fmpq_poly(w, q, s->lambda_var, s->ctx)) {
+    if (!rs_run_charpoly_at(w, v, vars, vals, nv)) {
         r = rs_error_set(run->err, RS_ERR_INTERNAL, "point verdict: a parameter is still symbolic");
     } else if (v->singular || fmpq_poly_is_zero(w) || fmpq_poly_degree(w) < v->cp->degree) {
         /* the leading coefficient of det A vanishes here: no step can be solved */
@@ -781,7 +793,6 @@ int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const
     }
     fmpz_poly_clear(u);
     fmpq_poly_clear(w);
-    fmpq_mpoly_clear(q, s->ctx);
     return r;
 }
 
