@@ -112,38 +112,52 @@ static void cinv_lead(fmpq_t lr, fmpq_t li, const fmpq_poly_t re, const fmpq_pol
     fmpq_clear(d);
 }
 
+/* a = a mod b (b != 0) by exact long division over Q(i); the quotient is
+ * added to q = qr + i qi when qr is not NULL */
+static void cx_divrem(fmpq_poly_t qr, fmpq_poly_t qi, fmpq_poly_t ar, fmpq_poly_t ai,
+                      const fmpq_poly_t br, const fmpq_poly_t bi)
+{
+    fmpq_poly_t tr, ti;
+    fmpq_t lr, li, cr, ci, xr, xi;
+    slong db = cdeg(br, bi);
+    fmpq_poly_init(tr); fmpq_poly_init(ti);
+    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci); fmpq_init(xr); fmpq_init(xi);
+    cinv_lead(lr, li, br, bi);
+    while (cdeg(ar, ai) >= db) {
+        slong da = cdeg(ar, ai);
+        /* c = lead(a) / lead(b), q += c x^(da - db), a -= c x^(da - db) b */
+        fmpq_poly_get_coeff_fmpq(xr, ar, da);
+        fmpq_poly_get_coeff_fmpq(xi, ai, da);
+        fmpq_mul(cr, xr, lr); fmpq_submul(cr, xi, li);
+        fmpq_mul(ci, xr, li); fmpq_addmul(ci, xi, lr);
+        if (qr != NULL) {
+            fmpq_poly_set_coeff_fmpq(qr, da - db, cr);
+            fmpq_poly_set_coeff_fmpq(qi, da - db, ci);
+        }
+        cscale(tr, ti, cr, ci, br, bi);
+        fmpq_poly_shift_left(tr, tr, da - db);
+        fmpq_poly_shift_left(ti, ti, da - db);
+        fmpq_poly_sub(ar, ar, tr);
+        fmpq_poly_sub(ai, ai, ti);
+        /* exact cancellation of the top coefficient */
+        fmpq_poly_set_coeff_si(ar, da, 0);
+        fmpq_poly_set_coeff_si(ai, da, 0);
+    }
+    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
+    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(xr); fmpq_clear(xi);
+}
+
 void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t are, const fmpq_poly_t aim,
                           const fmpq_poly_t bre, const fmpq_poly_t bim)
 {
-    fmpq_poly_t ar, ai, br, bi, tr, ti;
-    fmpq_t lr, li, cr, ci;
+    fmpq_poly_t ar, ai, br, bi;
+    fmpq_t lr, li;
     fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(br); fmpq_poly_init(bi);
-    fmpq_poly_init(tr); fmpq_poly_init(ti);
-    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci);
+    fmpq_init(lr); fmpq_init(li);
     fmpq_poly_set(ar, are); fmpq_poly_set(ai, aim);
     fmpq_poly_set(br, bre); fmpq_poly_set(bi, bim);
     while (cdeg(br, bi) >= 0) {
-        slong db = cdeg(br, bi);
-        cinv_lead(lr, li, br, bi);
-        /* a = a mod b */
-        while (cdeg(ar, ai) >= db) {
-            slong da = cdeg(ar, ai);
-            fmpq_t xr, xi;
-            fmpq_init(xr); fmpq_init(xi);
-            fmpq_poly_get_coeff_fmpq(xr, ar, da);
-            fmpq_poly_get_coeff_fmpq(xi, ai, da);
-            fmpq_mul(cr, xr, lr); fmpq_submul(cr, xi, li);
-            fmpq_mul(ci, xr, li); fmpq_addmul(ci, xi, lr);
-            cscale(tr, ti, cr, ci, br, bi);
-            fmpq_poly_shift_left(tr, tr, da - db);
-            fmpq_poly_shift_left(ti, ti, da - db);
-            fmpq_poly_sub(ar, ar, tr);
-            fmpq_poly_sub(ai, ai, ti);
-            /* exact cancellation of the top coefficient */
-            fmpq_poly_set_coeff_si(ar, da, 0);
-            fmpq_poly_set_coeff_si(ai, da, 0);
-            fmpq_clear(xr); fmpq_clear(xi);
-        }
+        cx_divrem(NULL, NULL, ar, ai, br, bi);
         fmpq_poly_swap(ar, br); fmpq_poly_swap(ai, bi);
     }
     /* a is the gcd: make it monic */
@@ -153,42 +167,18 @@ void rs_schur_complex_gcd(fmpq_poly_t gre, fmpq_poly_t gim, const fmpq_poly_t ar
     }
     fmpq_poly_swap(gre, ar); fmpq_poly_swap(gim, ai);
     fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(br); fmpq_poly_clear(bi);
-    fmpq_poly_clear(tr); fmpq_poly_clear(ti);
-    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci);
+    fmpq_clear(lr); fmpq_clear(li);
 }
 
 void rs_schur_complex_div(fmpq_poly_t qre, fmpq_poly_t qim, const fmpq_poly_t are, const fmpq_poly_t aim,
                           const fmpq_poly_t bre, const fmpq_poly_t bim)
 {
-    fmpq_poly_t ar, ai, tr, ti, qr, qi;
-    fmpq_t lr, li, cr, ci, xr, xi;
-    slong db = cdeg(bre, bim);
-    fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(tr); fmpq_poly_init(ti);
-    fmpq_poly_init(qr); fmpq_poly_init(qi);
-    fmpq_init(lr); fmpq_init(li); fmpq_init(cr); fmpq_init(ci); fmpq_init(xr); fmpq_init(xi);
+    fmpq_poly_t ar, ai, qr, qi;
+    fmpq_poly_init(ar); fmpq_poly_init(ai); fmpq_poly_init(qr); fmpq_poly_init(qi);
     fmpq_poly_set(ar, are); fmpq_poly_set(ai, aim);
-    cinv_lead(lr, li, bre, bim);
-    while (cdeg(ar, ai) >= db) {
-        slong da = cdeg(ar, ai);
-        /* c = lead(a) / lead(b), q += c x^(da - db), a -= c x^(da - db) b */
-        fmpq_poly_get_coeff_fmpq(xr, ar, da);
-        fmpq_poly_get_coeff_fmpq(xi, ai, da);
-        fmpq_mul(cr, xr, lr); fmpq_submul(cr, xi, li);
-        fmpq_mul(ci, xr, li); fmpq_addmul(ci, xi, lr);
-        fmpq_poly_set_coeff_fmpq(qr, da - db, cr);
-        fmpq_poly_set_coeff_fmpq(qi, da - db, ci);
-        cscale(tr, ti, cr, ci, bre, bim);
-        fmpq_poly_shift_left(tr, tr, da - db);
-        fmpq_poly_shift_left(ti, ti, da - db);
-        fmpq_poly_sub(ar, ar, tr);
-        fmpq_poly_sub(ai, ai, ti);
-        fmpq_poly_set_coeff_si(ar, da, 0);
-        fmpq_poly_set_coeff_si(ai, da, 0);
-    }
+    cx_divrem(qr, qi, ar, ai, bre, bim);
     fmpq_poly_swap(qre, qr); fmpq_poly_swap(qim, qi);
-    fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(tr); fmpq_poly_clear(ti);
-    fmpq_poly_clear(qr); fmpq_poly_clear(qi);
-    fmpq_clear(lr); fmpq_clear(li); fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(xr); fmpq_clear(xi);
+    fmpq_poly_clear(ar); fmpq_poly_clear(ai); fmpq_poly_clear(qr); fmpq_poly_clear(qi);
 }
 
 void rs_cx_sqfree_init(rs_cx_sqfree_t *f)
