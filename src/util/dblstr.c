@@ -136,13 +136,12 @@ static int ebound(double x)
     return e;
 }
 
-int rs_dblstr_interval(char *buf, double lo, double hi, int n)
+/* The most significant digits worth trying for [lo, hi] (lo, hi of one
+ * sign, finite, at most n): about the digits where lo and hi first differ,
+ * plus 3; n when lo = hi. */
+static long first_digits(double lo, double hi, long n)
 {
-    long k, k0;
-    char a[48], b[48];
-    if (n < 1) n = 1;
-    if (n > 17 || !isfinite(lo) || !isfinite(hi) || !(lo <= hi) || lo == 0 || hi == 0 || (lo < 0) != (hi < 0))
-        return -1;
+    long k0;
     if (lo == hi)
         k0 = n;
     else {
@@ -156,6 +155,17 @@ int rs_dblstr_interval(char *buf, double lo, double hi, int n)
     }
     if (k0 < 1) k0 = 1;
     if (k0 > n) k0 = n;
+    return k0;
+}
+
+int rs_dblstr_interval(char *buf, double lo, double hi, int n)
+{
+    long k, k0;
+    char a[48], b[48];
+    if (n < 1) n = 1;
+    if (n > 17 || !isfinite(lo) || !isfinite(hi) || !(lo <= hi) || lo == 0 || hi == 0 || (lo < 0) != (hi < 0))
+        return -1;
+    k0 = first_digits(lo, hi, n);
     for (k = k0; k >= 1; k--) {
         snprintf(a, sizeof a, "%.*e", (int) k - 1, lo);
         snprintf(b, sizeof b, "%.*e", (int) k - 1, hi);
@@ -231,18 +241,7 @@ int rs_dblstr_bounds(char *rho, char *lower, char *upper, double lo, double hi, 
     if (n < 1 || n > 17 || !(lo > 0) || !(lo <= hi) || !isfinite(hi)) return -1;
     if (!near_checked(&dl, &ql, lo, n) || !near_checked(&dh, &qh, hi, n)) return -1;
     if (directed(lower, dl, ql, lo, n, -1) != 0 || directed(upper, dh, qh, hi, n, 1) != 0) return -1;
-    /* the digit count of rs_dblstr_interval */
-    if (lo == hi)
-        k0 = n;
-    else {
-        double s = hi - lo, bp = s - hi, ap = s - bp, t = (hi - ap) + (-lo - bp);
-        int ew = ebound(s);
-        if (t < 0 && frexp(s, &ew) == 0.5) ew--;
-        else ew = ebound(s);
-        k0 = (int) ((double) (ebound(lo) - ew) * 0.30103) + 3;
-    }
-    if (k0 < 1) k0 = 1;
-    if (k0 > n) k0 = n;
+    k0 = (int) first_digits(lo, hi, n);   /* as rs_dblstr_interval */
     for (k = k0; k >= 1; k--) {
         if (k == n) {
             a = dl; qa = ql;
