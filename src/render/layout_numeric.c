@@ -139,23 +139,35 @@ void rs_render_sweep(rs_render_t *r, const json_t *o)
     rs_render_line(r, "csv", "%s", rs_render_jstr(o, "csv"));
     rs_render_line(r, "note", "%s", rs_render_jstr(o, "table_note"));
     if (tab != NULL) {
-        /* the table, columns aligned */
-        const char *p = tab;
-        int rowsn = 0;
-        while (*p && rowsn < 60) {
-            const char *nl = strchr(p, '\n');
-            size_t len = nl ? (size_t) (nl - p) : strlen(p);
-            size_t i = 0;
-            rs_render_textf(r, "    ");
-            while (i < len) {
-                size_t j = i;
-                while (j < len && p[j] != ',') j++;
-                rs_render_textf(r, "%-18.*s", (int) (j - i > 17 ? 17 : j - i), p + i);
-                i = j + 1;
+        /* the table, columns aligned; a cell is never cut (a cut decimal
+         * is a different number: an outward-rounded bound cut short is no
+         * longer a bound), its column widens instead */
+        enum { MAXCOL = 128, MAXROWS = 60 };
+        size_t width[MAXCOL];
+        const char *p;
+        int rowsn, pass;
+        for (pass = 0; pass < MAXCOL; pass++) width[pass] = 17;
+        for (pass = 0; pass < 2; pass++) {
+            p = tab;
+            rowsn = 0;
+            while (*p && rowsn < MAXROWS) {
+                const char *nl = strchr(p, '\n');
+                size_t len = nl ? (size_t) (nl - p) : strlen(p);
+                size_t i = 0, col = 0;
+                if (pass) rs_render_textf(r, "    ");
+                while (i < len) {
+                    size_t j = i, w;
+                    while (j < len && p[j] != ',') j++;
+                    w = col < MAXCOL ? width[col] : 17;
+                    if (!pass && col < MAXCOL && j - i > w) width[col] = j - i;
+                    if (pass) rs_render_textf(r, "%-*.*s ", (int) w, (int) (j - i), p + i);
+                    i = j + 1;
+                    col++;
+                }
+                if (pass) rs_render_textf(r, "\n");
+                rowsn++;
+                p += len + (nl ? 1 : 0);
             }
-            rs_render_textf(r, "\n");
-            rowsn++;
-            p += len + (nl ? 1 : 0);
         }
         if (*p) rs_render_textf(r, "    ... (all rows: --csv FILE)\n");
     }

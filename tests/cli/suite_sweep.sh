@@ -305,3 +305,20 @@ if command -v mpirun >/dev/null 2>&1 && [ -x "$BUILD/recstab-mpi" ]; then
 else
     echo "skip MPI (needs mpirun and $BUILD/recstab-mpi: make mpi)"
 fi
+
+# The text table never cuts a cell: the outward-rounded bounds of the CSV
+# appear whole in the text report (sqrt(1/2) = 0.70710678118654752...: a
+# bound cut to 0.707106781186547 would lie below the true radius).
+cat >"$T/half.case" <<'EOS'
+param h
+char lambda^2 - h/2
+analyse sweep h from 1 to 2 steps 2 of radius
+EOS
+"$RS" "$T/half.case" >"$T/half.txt" 2>"$T/err"; rc=$?
+check_exit "text table of a sweep exit" 0 "$rc"
+"$RS" --csv "$T/half.csv" "$T/half.case" >/dev/null 2>&1
+lo=$(awk -F, '$1 == "0" {print $5}' "$T/half.csv"); hi=$(awk -F, '$1 == "0" {print $6}' "$T/half.csv")
+if [ -n "$lo" ] && [ -n "$hi" ] && grep -q -- " $lo  *$hi " "$T/half.txt" \
+   && awk -v l="$lo" -v h="$hi" 'BEGIN { exit !(l + 0 < 0.7071067811865475 && h + 0 > 0.7071067811865476) }'; then
+    ok "text table: the radius bounds whole, as in the CSV ($lo, $hi)"
+else fail "text table: bounds '$lo' '$hi' not whole in: $(grep '^    0 ' "$T/half.txt")"; fi
