@@ -27,7 +27,10 @@ typedef struct {
     rs_rootcount_t count;
     int table_regular;       /* 1 if the classical Jury table had no singular step */
     slong nrows;             /* rows of the Schur-Cohn table (when regular) */
-    fmpz_poly_struct *rows;  /* successive reduced polynomials (fraction-free) */
+    fmpz_poly_struct *rows;  /* successive rows F_k, each divided exactly by
+                                |F_{k-2}(0)| (Bareiss-like, jury.c) and made
+                                primitive up to degree 64 (the report's rows;
+                                rs_jury_count_fmpz_poly keeps only signs) */
     slong gcd_degree;        /* degree of gcd(p, p*) split off */
     slong modular_primes;    /* rs_jury_count_fmpz_poly: primes of the regular
                                 table's minors (0: the integer table ran) */
