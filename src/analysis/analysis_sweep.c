@@ -70,36 +70,59 @@ static void sweep_row(FILE *f, const rs_sweep_row_t *p, int of, slong nref)
     fputc('\n', f);
 }
 
-/* the CSV text of rows [lo, hi) (malloc'd) */
-static char *sweep_table(const json_t *cols, const fmpq *vals, const rs_sweep_row_t *rows, slong lo, slong hi,
-                         int of, slong nref)
+/* the CSV rows [lo, hi) of a block (rows[0] is point lo), written to the
+ * table as each block is computed */
+typedef struct {
+    const fmpq *vals;
+    int of;
+    slong nref;
+} sweep_rows_arg_t;
+
+static void sweep_rows_put(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, void *arg)
 {
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    slong k, i;
-    for (k = 0; k < (slong) json_array_size(cols); k++)
-        fprintf(f, "%s%s", k ? "," : "", json_string_value(json_array_get(cols, k)));
-    fputc('\n', f);
+    const sweep_rows_arg_t *a = arg;
+    slong i;
     for (i = lo; i < hi; i++) {
         fprintf(f, "%ld,", (long) i);
-        rs_sweep_put_double_of(f, vals + i);
+        rs_sweep_put_double_of(f, a->vals + i);
         fputc(',', f);
-        rs_sweep_put_fmpq(f, vals + i);
+        rs_sweep_put_fmpq(f, a->vals + i);
         fputc(',', f);
-        sweep_row(f, rows + (i - lo), of, nref);
+        sweep_row(f, rows + (i - lo), a->of, a->nref);
     }
-    fclose(f);
-    return buf;
 }
 
-static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *vals,
-                          const rs_sweep_row_t *rows, slong lo, slong hi, slong nref, double seconds)
+/* The run's shard of the sweep over vals computed by m into T (the maps'
+ * block loop: one block of rows held, each written at once to the spool
+ * or memory); *cols its columns (json_decref) */
+static int sweep_table(rs_sweep_table_t *T, json_t **cols, rs_run_t *run, const rs_request_t *q,
+                       const rs_sweep_request_t *R, const rs_sweep_model_t *m, const fmpq *vals, slong npoints,
+                       slong nref)
+{
+    sweep_rows_arg_t a;
+    char what[120], *header;
+    int r;
+    memset(T, 0, sizeof *T);
+    T->spool = -1;
+    *cols = sweep_columns(R->axis[0].name, R->of, nref);
+    header = rs_sweep_header_line(*cols);
+    if (header == NULL) return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", "out of memory for the table");
+    a.vals = vals;
+    a.of = R->of;
+    a.nref = nref;
+    snprintf(what, sizeof what, "sweep %s", R->axis[0].name);
+    r = rs_sweep_map_table(T, run, q, m, npoints, what, R->axis[0].name, header, sweep_rows_put, &a);
+    free(header);
+    return r;
+}
+
+/* the sweep element of the table T with columns cols (a reference taken) */
+static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, json_t *cols,
+                          const rs_sweep_table_t *T, double seconds)
 {
     const rs_sweep_axis_t *X = R->axis;
-    json_t *o = json_object(), *cols = sweep_columns(X[0].name, R->of, nref);
+    json_t *o = json_object();
     const char *keep[1];
-    char *buf;
     json_object_set_new(o, "analysis", json_string("sweep"));
     json_object_set_new(o, "param", json_string(X[0].name));
     json_object_set_new(o, "from", rs_json_fmpq(X[0].from));
@@ -111,10 +134,9 @@ static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
             "interior points are the simplest rationals within 1e-13 relative of A*(B/A)^(i/K); "
             "the exact values are in the NAME_exact column"));
     json_object_set_new(o, "of", json_string(rs_sweep_of_names[R->of]));
-    rs_sweep_json_shard(o, run, X[0].count + 1, lo, hi);
-    json_object_set_new(o, "columns", cols);
-    buf = sweep_table(cols, vals, rows, lo, hi, R->of, nref);
-    rs_sweep_json_summary(o, rows, hi - lo, seconds);
+    rs_sweep_json_shard(o, run, X[0].count + 1, T->lo, T->hi);
+    json_object_set_new(o, "columns", json_incref(cols));
+    rs_sweep_json_summary(o, T, seconds);
     keep[0] = X[0].name;
     {
         json_t *sub = rs_sweep_json_sets(run, keep, 1), *at;
@@ -131,9 +153,7 @@ static json_t *sweep_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
         json_object_set_new(o, "substituted", sub);
     }
     json_object_set_new(o, "text", json_string(q->text));
-    json_object_set_new(o, "table", json_string(buf));
-    rs_sweep_json_rows(o, "rows", buf, run->opt->sweep.json_rows);
-    free(buf);
+    rs_sweep_table_json(o, T, run->opt->sweep.json_rows);
     return o;
 }
 
@@ -232,16 +252,16 @@ static void cx_sweep_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_
 /* a sweep of a real parameter with the complex set values fixed */
 static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
-    slong K = R->axis[0].count, npoints = K + 1, lo = 0, hi = 0, i, k;
+    slong K = R->axis[0].count, npoints = K + 1, i, k;
     rs_variant_t *v = NULL;
     const rs_scheme_struct *s;
     fmpz_mpoly_t re, im;
-    rs_sweep_row_t *rows = NULL;
+    rs_sweep_table_t T;
+    json_t *cols = NULL;
     rs_sweep_model_t m;
     cx_sweep_t J;
     fmpq *vals;
     double t0 = rs_sweep_now();
-    char what[120];
     int r = rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep");
     if (r == RS_OK && R->of == RS_SWEEP_OF_MODES)
         r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep ... of modes does not run at complex set values: use "
@@ -275,11 +295,9 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
         m.point = cx_sweep_point;
         m.model = &J;
         m.serial = 0;
-        snprintf(what, sizeof what, "sweep %s", R->axis[0].name);
-        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, R->axis[0].name);
-    }
-    if (r == RS_OK) {
-        json_t *o = sweep_json(run, q, R, vals, rows, lo, hi, 0, rs_sweep_now() - t0), *at = json_object();
+        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, 0);
+        if (r == RS_OK) {
+        json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0), *at = json_object();
         for (k = 0; k < run->c->ncsets; k++) {
             char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
             json_object_set_new(at, run->c->csets[k].name, json_string(str));
@@ -291,8 +309,10 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
             "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
             "p's own root counts; the radius certified from p conj(p) (the same moduli)"));
         json_array_append_new(run->results, o);
+        }
+        rs_sweep_table_clear(&T);
+        json_decref(cols);
     }
-    rs_sweep_rows_free(rows, hi - lo);
     _fmpq_vec_clear(vals, npoints);
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     return r;
@@ -300,14 +320,14 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
 
 int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
-    slong K = R->axis[0].count, npoints = K + 1, lo = 0, hi = 0, i;
+    slong K = R->axis[0].count, npoints = K + 1, i;
     rs_variant_t *v = NULL;
     rs_sweep_poly_t *J = NULL;
     rs_sweep_model_t m;
-    rs_sweep_row_t *rows = NULL;
+    rs_sweep_table_t T;
+    json_t *cols = NULL;
     fmpq *vals;
     double t0 = rs_sweep_now();
-    char what[120];
     int cosim = run->m->kind == RS_MODEL_COSIM;
     int r;
     if (!cosim && run->c->ncsets > 0) return cx_sweep_run(run, q, R);
@@ -322,17 +342,17 @@ int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request
     else r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) &vals, npoints);
     if (r == RS_OK) {
         if (!cosim) rs_sweep_poly_model(&m, J);
-        snprintf(what, sizeof what, "sweep %s", R->axis[0].name);
-        r = rs_sweep_compute(&rows, &lo, &hi, run, q, &m, npoints, what, R->axis[0].name);
+        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, cosim ? rs_cosim_sweep_nref(&m) : rs_sweep_poly_nref(J));
+        if (r == RS_OK) {
+            json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0);
+            /* exact integration, `of modes`: the certified eigenvalues of each row's one-step map */
+            if (cosim && R->of == RS_SWEEP_OF_MODES)
+                json_object_set_new(o, "eigenvalues", rs_cosim_sweep_eigenvalues(&m, T.lo, T.hi));
+            json_array_append_new(run->results, o);
+        }
+        rs_sweep_table_clear(&T);
+        json_decref(cols);
     }
-    if (r == RS_OK) {
-        json_t *o = sweep_json(run, q, R, vals, rows, lo, hi, cosim ? rs_cosim_sweep_nref(&m) : rs_sweep_poly_nref(J),
-                               rs_sweep_now() - t0);
-        /* exact integration, `of modes`: the certified eigenvalues of each row's one-step map */
-        if (cosim && R->of == RS_SWEEP_OF_MODES) json_object_set_new(o, "eigenvalues", rs_cosim_sweep_eigenvalues(&m, lo, hi));
-        json_array_append_new(run->results, o);
-    }
-    rs_sweep_rows_free(rows, hi - lo);
     rs_sweep_poly_free(J);
     if (cosim) rs_cosim_sweep_model_free(&m);
     _fmpq_vec_clear(vals, npoints);

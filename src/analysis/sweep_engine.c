@@ -65,16 +65,25 @@ static int estimate(rs_run_t *run, const rs_request_t *q, double npoints, double
     return rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
 }
 
-int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
+/* in memory every row of results stays to the end */
+static int estimate_rows(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
 {
     return estimate(run, q, npoints, (double) (sizeof(rs_sweep_row_t) + 2 * sizeof(fmpq)), desc);
+}
+
+/* a streamed sweep holds one block of rows: its values and the model's
+ * per-point numbers (powers, time steps), two rationals a point, stay */
+int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc)
+{
+    if (run->opt->sweep.table_spool == NULL) return estimate_rows(run, q, npoints, desc);
+    return estimate(run, q, npoints, (double) (2 * sizeof(fmpq)), desc);
 }
 
 /* a streamed map holds one block of rows: a rational per point (the
  * model's time steps) is what stays */
 int rs_sweep_estimate_map(rs_run_t *run, const rs_request_t *q, double npoints)
 {
-    if (run->opt->sweep.table_spool == NULL) return rs_sweep_estimate(run, q, npoints, "the map");
+    if (run->opt->sweep.table_spool == NULL) return estimate_rows(run, q, npoints, "the map");
     return estimate(run, q, npoints, (double) sizeof(fmpq), "the map");
 }
 
@@ -110,30 +119,6 @@ static int point_errors(rs_run_t *run, const rs_request_t *q, const rs_sweep_mod
             return rs_req_error(run, q, q->text, code, "%s", msg);
         }
     return RS_OK;
-}
-
-int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run, const rs_request_t *q,
-                     const rs_sweep_model_t *m, slong npoints, const char *what, const char *desc)
-{
-    const rs_sweep_options_t *so = &run->opt->sweep;
-    rs_engine_t e;
-    rs_grid_shard_range(lo, hi, npoints, so->shard_index, so->shard_count);
-    *rows = calloc((size_t) (*hi - *lo + 1), sizeof(rs_sweep_row_t));
-    e.point = engine_point;
-    e.arg = (void *) m;
-    e.serial = m->serial;
-    e.progress = so->progress;
-    e.progress_arg = so->progress_arg;
-    e.what = what;
-    e.done0 = e.total = 0;
-    rs_engine_run(*rows, sizeof(rs_sweep_row_t), *lo, *hi, &e);
-    return point_errors(run, q, m, *rows, *lo, *hi - *lo, desc);
-}
-
-void rs_sweep_rows_free(rs_sweep_row_t *rows, slong n)
-{
-    (void) n;
-    free(rows);
 }
 
 void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo, slong hi)
@@ -440,11 +425,11 @@ static void json_summary_of(json_t *o, const tally_t *t, double seconds)
 }
 
 /* counts, seconds, etc. common to sweep and map elements */
-void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds)
+void rs_sweep_json_summary(json_t *o, const rs_sweep_table_t *T, double seconds)
 {
     tally_t t;
-    memset(&t, 0, sizeof t);
-    tally_add(&t, rows, n);
+    memcpy(t.ver, T->verdicts, sizeof t.ver);
+    memcpy(t.lev, T->levels, sizeof t.lev);
     json_summary_of(o, &t, seconds);
 }
 
@@ -488,6 +473,17 @@ static void map_table_header(FILE *f, const json_t *cols)
     fputc('\n', f);
 }
 
+char *rs_sweep_header_line(const json_t *cols)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    if (f == NULL) return NULL;
+    map_table_header(f, cols);
+    fclose(f);
+    return buf;
+}
+
 /* the CSV table: rows [lo, hi), rows[0] being point lo */
 static void map_table_rows(FILE *f, const rs_sweep_request_t *R, const fmpq *const *xs, const rs_sweep_row_t *rows,
                            slong lo, slong hi)
@@ -508,6 +504,28 @@ static void map_table_rows(FILE *f, const rs_sweep_request_t *R, const fmpq *con
         rs_sweep_put_radius(f, p);
         fprintf(f, ",%s\n", p->d.verdict < 0 ? "" : rs_sweep_level_names[p->d.level]);
     }
+}
+
+/* The table of n rows: its text buf (the default) into "table" and "rows"
+ * (the first cap), else (spooled, id) "table_spool" and {"spool": id,
+ * "count": N} as "rows" (rs_run_json_dumps_spool writes them), and
+ * "rows_omitted" past cap. */
+static void table_json(json_t *o, const char *buf, slong id, slong cap, slong n)
+{
+    if (buf != NULL) {
+        json_object_set_new(o, "table", json_string(buf));
+        rs_sweep_json_rows(o, "rows", buf, cap);
+        return;
+    }
+    json_object_set_new(o, "table_spool", json_integer(id));
+    json_object_set_new(o, "rows", json_pack("{s:I,s:I}", "spool", (json_int_t) id, "count",
+                                             (json_int_t) (cap >= 0 && n > cap ? cap : n)));
+    if (cap >= 0 && n > cap) json_object_set_new(o, "rows_omitted", json_integer(n - cap));
+}
+
+void rs_sweep_table_json(json_t *o, const rs_sweep_table_t *T, slong cap)
+{
+    table_json(o, T->spool >= 0 ? NULL : (T->text != NULL ? T->text : ""), T->spool, cap, T->hi - T->lo);
 }
 
 /* The map element of rows [lo, hi) whose verdicts t counted, its table
@@ -535,16 +553,7 @@ static json_t *map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     json_summary_of(o, t, 0);
     json_object_set_new(o, "substituted", rs_sweep_json_sets(run, keep, 2));
     json_object_set_new(o, "text", json_string(q->text));
-    if (buf != NULL) {
-        json_object_set_new(o, "table", json_string(buf));
-        rs_sweep_json_rows(o, "rows", buf, cap);
-    } else {
-        slong n = hi - lo;
-        json_object_set_new(o, "table_spool", json_integer(id));
-        json_object_set_new(o, "rows", json_pack("{s:I,s:I}", "spool", (json_int_t) id, "count",
-                                                 (json_int_t) (cap >= 0 && n > cap ? cap : n)));
-        if (cap >= 0 && n > cap) json_object_set_new(o, "rows_omitted", json_integer(n - cap));
-    }
+    table_json(o, buf, id, cap, hi - lo);
     return o;
 }
 
@@ -566,9 +575,9 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
     return o;
 }
 
-/* Points per block of a map: the per-point results of one block only are
- * held (rs_sweep_row_t is a few hundred bytes), each block's rows go to
- * the table as soon as it is computed. */
+/* Points per block of a map or sweep: the per-point results of one block
+ * only are held (rs_sweep_row_t is a few hundred bytes), each block's rows
+ * go to the table as soon as it is computed. */
 #define MAP_BLOCK 32768
 
 /* The table's stream: the run's spool (*id) when it has one, else in
@@ -585,8 +594,8 @@ static FILE *table_open(const rs_sweep_options_t *so, slong *id, char **buf, siz
 
 /* Points [lo, hi) computed by m block by block, counted into t, each
  * block's rows written by put(f, rows, b, bhi, arg) once computed: a
- * point's error ends the map at the first block that has one (its first
- * failing point, as when computed at once). */
+ * point's error ends the map or sweep at the first block that has one
+ * (its first failing point, as when computed at once). */
 static int map_blocks(rs_run_t *run, const rs_request_t *q, const rs_sweep_model_t *m, slong lo, slong hi,
                       const char *what, const char *desc, FILE *f, tally_t *t, rs_sweep_rows_fn put, void *arg)
 {
@@ -689,13 +698,19 @@ int rs_sweep_map_table(rs_sweep_table_t *T, rs_run_t *run, const rs_request_t *q
     T->spool = -1;
     rs_grid_shard_range(&T->lo, &T->hi, npoints, so->shard_index, so->shard_count);
     f = table_open(so, &id, &T->text, &len, &spooled);
+    if (f == NULL)
+        return rs_req_error(run, q, q->text, RS_ERR_IO, "cannot open a stream for the table: %s", strerror(errno));
     fputs(header, f);
     r = map_blocks(run, q, m, T->lo, T->hi, what, desc, f, &t, put, arg);
-    if (r == RS_OK && spooled && (fflush(f) != 0 || ferror(f)))
-        r = rs_req_error(run, q, q->text, RS_ERR_IO, "cannot write the map's table to its temporary file: %s",
-                         strerror(errno));
+    if (r == RS_OK && spooled && (fflush(f) != 0 || ferror(f))) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "cannot write the %s table to its temporary file: %s",
+                 strncmp(what, "sweep", 5) == 0 ? "sweep's" : "map's", strerror(errno));
+        r = rs_req_error(run, q, q->text, RS_ERR_IO, "%s", msg);
+    }
     if (!spooled) fclose(f);
     else T->spool = id;
     memcpy(T->verdicts, t.ver, sizeof T->verdicts);
+    memcpy(T->levels, t.lev, sizeof T->levels);
     return r;
 }

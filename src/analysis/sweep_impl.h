@@ -115,12 +115,6 @@ int rs_sweep_limit_error(rs_run_t *run, const rs_request_t *q, double npoints, c
 int rs_sweep_estimate(rs_run_t *run, const rs_request_t *q, double npoints, const char *desc);
 /* the same for a map (less memory per point when streamed: table_spool) */
 int rs_sweep_estimate_map(rs_run_t *run, const rs_request_t *q, double npoints);
-/* The run's shard of npoints points computed by m: *rows[0 .. *hi - *lo)
- * (rs_sweep_rows_free).  A point's error is recomputed serially for its
- * message and put at the request ("at point N (desc): ..."). */
-int rs_sweep_compute(rs_sweep_row_t **rows, slong *lo, slong *hi, rs_run_t *run, const rs_request_t *q,
-                     const rs_sweep_model_t *m, slong npoints, const char *what, const char *desc);
-void rs_sweep_rows_free(rs_sweep_row_t *rows, slong n);
 /* "points", "computed", "shard", "row_range" ([lo, hi) of the shard) */
 void rs_sweep_json_shard(json_t *o, const rs_run_t *run, slong npoints, slong lo, slong hi);
 /* o[key]: the rows of a CSV table (header line, then rows) as arrays of
@@ -147,8 +141,10 @@ void rs_sweep_json_rows_typed(json_t *o, const char *key, const char *table, slo
  * without building the jansson values: 0, or -1 with nothing written when
  * a text cell would need escaping or a UTF-8 check (then dump the row). */
 int rs_sweep_json_row_put(FILE *f, const char *line, size_t n, const char *exact);
-/* "verdicts", "decided_by", "seconds", "threads", "csv" of rows[0 .. n) */
-void rs_sweep_json_summary(json_t *o, const rs_sweep_row_t *rows, slong n, double seconds);
+/* "verdicts", "decided_by", "seconds", "threads", "csv" of the rows of T
+ * (rs_sweep_map_table, which counts them block by block) */
+typedef struct rs_sweep_table_struct rs_sweep_table_t;
+void rs_sweep_json_summary(json_t *o, const rs_sweep_table_t *T, double seconds);
 /* {NAME: value} of the case's set values except keep[] */
 json_t *rs_sweep_json_sets(rs_run_t *run, const char *const *keep, slong nkeep);
 /* The map element of a parsed map request (every model kind): header,
@@ -163,24 +159,34 @@ json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_r
 typedef void (*rs_sweep_decorate_fn)(json_t *o, void *arg);
 int rs_sweep_map_finish(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_sweep_model_t *m,
                         const fmpq *const *xs, double t0, rs_sweep_decorate_fn decorate, void *arg);
-/* A map with its own columns (the z-plane map of an_complex.c) on the same
- * engine: the run's shard [lo, hi) of npoints points computed by m block
- * by block (OpenMP, budget, progress; a point's error at the request as in
- * rs_sweep_compute), header (a CSV line with its newline) then each block
- * written by put(f, rows, b, bhi, arg) to the run's table spool (spool: its
- * id, text NULL) or in memory (text, spool -1); verdicts: stable, marginal,
- * unstable, undefined, singular, undecided. */
+/* A table with its own columns (a 1-D sweep, the z-plane map of
+ * an_complex.c) on the maps' engine and block loop: the run's shard
+ * [lo, hi) of npoints points computed by m block by block (OpenMP, budget,
+ * progress; a point's error is recomputed serially for its message and put
+ * at the request, "at point N (desc): ..."), header (a CSV line with its
+ * newline) then each block written by put(f, rows, b, bhi, arg) to the
+ * run's table spool (spool: its id, text NULL) or in memory (text, spool
+ * -1); verdicts: stable, marginal, unstable, undefined, singular,
+ * undecided; levels: the deciding levels RS_LEVEL_* of the defined ones.
+ * Only one block of rows is held, whatever npoints. */
 typedef void (*rs_sweep_rows_fn)(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, void *arg);
-typedef struct {
+struct rs_sweep_table_struct {
     slong lo, hi;
     slong verdicts[6];
+    slong levels[6];
     char *text;
     slong spool;
-} rs_sweep_table_t;
+};
 int rs_sweep_map_table(rs_sweep_table_t *T, rs_run_t *run, const rs_request_t *q, const rs_sweep_model_t *m,
                        slong npoints, const char *what, const char *desc, const char *header, rs_sweep_rows_fn put,
                        void *arg);
 void rs_sweep_table_clear(rs_sweep_table_t *T);
+/* T's "table" and "rows" (the first cap, rs_sweep_json_rows) in memory, or
+ * spooled "table_spool" and "rows" {"spool": id, "count": N}, with
+ * "rows_omitted" past cap (as a map's) */
+void rs_sweep_table_json(json_t *o, const rs_sweep_table_t *T, slong cap);
+/* the CSV header line of the column names cols, with its newline (malloc'd; NULL: no memory) */
+char *rs_sweep_header_line(const json_t *cols);
 /* table cells */
 void rs_sweep_put_radius(FILE *f, const rs_sweep_row_t *row);
 void rs_sweep_put_certified(FILE *f, double lo, double hi);
