@@ -557,24 +557,6 @@ static json_t *map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     return o;
 }
 
-json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
-                          const rs_sweep_row_t *rows, slong lo, slong hi)
-{
-    json_t *cols = map_columns(R), *o;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    tally_t t;
-    memset(&t, 0, sizeof t);
-    tally_add(&t, rows, hi - lo);
-    map_table_header(f, cols);
-    map_table_rows(f, R, xs, rows, lo, hi);
-    fclose(f);
-    o = map_json(run, q, R, cols, &t, lo, hi, buf, 0);
-    free(buf);
-    return o;
-}
-
 /* Points per block of a map or sweep: the per-point results of one block
  * only are held (rs_sweep_row_t is a few hundred bytes), each block's rows
  * go to the table as soon as it is computed. */

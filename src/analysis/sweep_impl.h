@@ -147,13 +147,8 @@ typedef struct rs_sweep_table_struct rs_sweep_table_t;
 void rs_sweep_json_summary(json_t *o, const rs_sweep_table_t *T, double seconds);
 /* {NAME: value} of the case's set values except keep[] */
 json_t *rs_sweep_json_sets(rs_run_t *run, const char *const *keep, slong nkeep);
-/* The map element of a parsed map request (every model kind): header,
- * columns, the table of rows [lo, hi) over the axis values xs[0], xs[1],
- * summary, "substituted", "text" (the boundary and timings are the caller's). */
-json_t *rs_sweep_map_json(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const fmpq *const *xs,
-                          const rs_sweep_row_t *rows, slong lo, slong hi);
 /* The rest of a map run for every model kind: the shard of the grid
- * xs[0] x xs[1] computed by m, its map element (rs_sweep_map_json), then
+ * xs[0] x xs[1] computed by m block by block, its map element, then
  * decorate(o, arg) when not NULL (the boundary), the timings since t0, and
  * the element appended to the run's results. */
 typedef void (*rs_sweep_decorate_fn)(json_t *o, void *arg);
