@@ -30,7 +30,10 @@ record)
         timeout "$to" "$bin" --latex --threads 1 "$f" >"$out/$name.tex" 2>"$out/$name.tex.err"
         echo "exit $?" >>"$out/$name.tex.err"
         sed -i -e 's/"seconds": *[-0-9.eE+]*/"seconds": S/g' \
+               -e 's/"seconds_points": *[-0-9.eE+]*/"seconds_points": S/g' \
                -e 's/"threads": *[0-9]*/"threads": T/g' "$out/$name.json"
+        # the reports' timings ("computed N points in X s")
+        sed -i -e 's/points in [0-9.]* s/points in S s/' "$out/$name.txt" "$out/$name.md" "$out/$name.tex"
     done
     # analyses no case requests: NAME|CASE|SET|ANALYSIS (SET: --set values
     # separated by spaces, or empty; the text report's "computed ... s" is normalised)
@@ -47,7 +50,7 @@ record)
         sed -i -e 's/"seconds": *[-0-9.eE+]*/"seconds": S/g' \
                -e 's/"seconds_points": *[-0-9.eE+]*/"seconds_points": S/g' \
                -e 's/"threads": *[0-9]*/"threads": T/g' "$out/extra-$name.json"
-        sed -i -e 's/points in [0-9.]* s/points in S s/' "$out/extra-$name.txt"
+        sed -i -e 's/points in [0-9.]* s/points in S s/' "$out/extra-$name.txt" "$out/extra-$name.md" "$out/extra-$name.tex"
     done <<EXTRA
 sweep|$cd_||sweep w from 0 to 4 steps 8
 sweep-long|$cd_||sweep w from 0 to 4 steps 70
