@@ -1225,7 +1225,7 @@ static void c4_split(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpz_mpoly_t f, con
                      const fmpz_mpoly_ctx_t ctx3)
 {
     slong d = fmpz_mpoly_degree_si(f, C4_I, ctx4), k;
-    slong gen[5] = {0, 1, 2, 2, 2};   /* I and w are gone (degree 0) */
+    slong gen[5] = {0, 1, 2, 2, 2};   /* I is gone; lambda or w (one of them, the other of degree 0) -> 2 */
     fmpz_mpoly_t a, b, t;
     fmpz_mpoly_init(a, ctx4); fmpz_mpoly_init(b, ctx4); fmpz_mpoly_init(t, ctx4);
     for (k = 0; k <= d; k++) {
@@ -1283,22 +1283,8 @@ static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re,
     }
     for (k = 0; k < 5; k++) fmpz_mpoly_clear(sub[k], ctx4);
     if (ok) {
-        /* A + I B with w as the variable: split keeping w (moved to lambda's place) */
-        slong d = fmpz_mpoly_degree_si(t, C4_I, ctx4), j;
-        slong gen[5] = {0, 1, 2, 2, 2};
-        fmpz_mpoly_t a, b, c;
-        fmpz_mpoly_init(a, ctx4); fmpz_mpoly_init(b, ctx4); fmpz_mpoly_init(c, ctx4);
-        for (j = 0; j <= d; j++) {
-            ulong e = (ulong) j;
-            slong v = C4_I;
-            fmpz_mpoly_get_coeff_vars_ui(c, t, &v, &e, 1, ctx4);
-            if ((j / 2) % 2) fmpz_mpoly_neg(c, c, ctx4);
-            fmpz_mpoly_add(j % 2 ? b : a, j % 2 ? b : a, c, ctx4);
-        }
-        gen[C4_W] = 2;   /* w in lambda's place of ctx3 */
-        fmpz_mpoly_compose_fmpz_mpoly_gen(A, a, gen, ctx4, ctx3);
-        fmpz_mpoly_compose_fmpz_mpoly_gen(B, b, gen, ctx4, ctx3);
-        fmpz_mpoly_clear(a, ctx4); fmpz_mpoly_clear(b, ctx4); fmpz_mpoly_clear(c, ctx4);
+        /* A + I B with w as the variable (c4_split puts w in lambda's place) */
+        c4_split(A, B, t, ctx4, ctx3);
         fmpz_mpoly_init(E + 0, ctx3);
         ok = !fmpz_mpoly_is_zero(A, ctx3) && !fmpz_mpoly_is_zero(B, ctx3)
              && fmpz_mpoly_resultant(E + 0, A, B, 2, ctx3) && !fmpz_mpoly_is_zero(E + 0, ctx3);
