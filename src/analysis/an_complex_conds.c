@@ -262,6 +262,27 @@ static json_t *cx_p_at(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong x, co
     return j;
 }
 
+/* One condition f > 0 named origin: raw entry, then the lists (cond_add);
+ * f = 0 identically can never hold (*never) */
+static void cond_entry(cx_conds_t *jc, json_t *raw, json_t *conds, json_t *dropped, json_t *always, int *never,
+                       const fmpz_mpoly_t f, const char *origin, const int *sign, const rs_scheme_struct *s, int nz)
+{
+    json_array_append_new(raw, json_pack("{s:s,s:o}", "origin", origin, "poly", rs_json_zpoly(f, s)));
+    if (fmpz_mpoly_is_zero(f, s->zctx)) *never = 1;
+    if (cond_add(jc, conds, dropped, f, origin, sign, s, nz))
+        json_array_append_new(always, json_string(origin));
+}
+
+/* 1 when a kept condition is a constant that is not positive: it fails
+ * everywhere */
+static int never_by_constant(const cx_conds_t *jc, const rs_scheme_struct *s)
+{
+    slong k;
+    for (k = 0; k < jc->n; k++)
+        if (!jc->ne[k] && fmpz_mpoly_is_fmpz(jc->poly + k, s->zctx) && !const_positive(jc->poly + k, s)) return 1;
+    return 0;
+}
+
 /* the parts of the result both analyses share */
 static json_t *cx_base(rs_run_t *run, const char *name, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
                        const rs_scheme_struct *s)
@@ -364,14 +385,9 @@ int rs_an_complex_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         for (k = 0; k < bc.ncond; k++) {
             if (k == 0) snprintf(buf, sizeof buf, "|c|^2");
             else snprintf(buf, sizeof buf, "%slc(T_%ld)", (k & 1) ? "-" : "", (long) k);
-            json_array_append_new(raw, json_pack("{s:s,s:o}", "origin", buf, "poly", rs_json_zpoly(bc.cond + k, s)));
-            if (fmpz_mpoly_is_zero(bc.cond + k, s->zctx)) never = 1;
-            if (cond_add(&jc, conds, dropped, bc.cond + k, buf, sign, s, k == 0))
-                json_array_append_new(always, json_string(buf));
+            cond_entry(&jc, raw, conds, dropped, always, &never, bc.cond + k, buf, sign, s, k == 0);
         }
-        /* a negative constant is a condition that fails everywhere */
-        for (k = 0; k < jc.n; k++)
-            if (!jc.ne[k] && fmpz_mpoly_is_fmpz(jc.poly + k, s->zctx) && !const_positive(jc.poly + k, s)) never = 1;
+        if (never_by_constant(&jc, s)) never = 1;
         json_object_set_new(o, "bilharz", raw);
         json_object_set_new(o, "conditions", conds);
         json_object_set_new(o, "nonzero", json_array());
@@ -423,14 +439,10 @@ int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req)
         raw = json_array();
         for (k = 0; k < sc.ndelta; k++) {
             snprintf(buf, sizeof buf, "delta_%ld", (long) (n - k));
-            json_array_append_new(raw, json_pack("{s:s,s:o}", "origin", buf, "poly", rs_json_zpoly(sc.delta + k, s)));
-            if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) never = 1;
-            if (cond_add(&jc, conds, dropped, sc.delta + k, buf, sign, s, 0))
-                json_array_append_new(always, json_string(buf));
+            cond_entry(&jc, raw, conds, dropped, always, &never, sc.delta + k, buf, sign, s, 0);
             if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) break;   /* the recursion stops there */
         }
-        for (k = 0; k < jc.n; k++)
-            if (!jc.ne[k] && fmpz_mpoly_is_fmpz(jc.poly + k, s->zctx) && !const_positive(jc.poly + k, s)) never = 1;
+        if (never_by_constant(&jc, s)) never = 1;
         json_object_set_new(o, "deltas", raw);
         json_object_set_new(o, "conditions", conds);
         json_object_set_new(o, "dropped", dropped);
