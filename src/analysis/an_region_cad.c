@@ -23,23 +23,30 @@
  *      have different statuses.
  *
  * Limit: two parameters; every other one must be set (`at` or `set`).
- * Over an irrational N1 = alpha a column is left undecided (counted in
- * "undecided_lines"; "formula_complete" false) when deg alpha > 8 or a
- * section needs a tower Q(alpha, beta) of degree > 12, and a cell when a
- * system has a repeated circle root there. */
+ * Over an irrational N1 = alpha, a section whose tower Q(alpha, beta) has
+ * degree > 12 gets its signs from the norms Res(m_alpha, f_k) and balls
+ * (cad_sign_norm, exact), its status from root balls where no root is on
+ * the circle (cad_status_balls, certified) and otherwise from the tower up
+ * to degree 64.  Left undecided (counted in "undecided_lines";
+ * "formula_complete" false): a column when deg alpha > 8 or a sign the
+ * balls do not separate, a cell when none of those decides it or a system
+ * has a repeated circle root there. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
 #include <flint/fmpz_mpoly_factor.h>
 #include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_poly.h>
 #include <arb_fmpz_poly.h>
+#include <acb_poly.h>
 #include <gsl/gsl_poly.h>
 #include <fmpq_vec.h>
 #include "analysis/an_region.h"
 #include "recstab/bilinear.h"
 #include "recstab/hurwitz.h"
 #include "recstab/semisimple.h"
+#include "recstab/radius.h"
 #include "util/polyfmt.h"
 
 #define CAD_CHECK_POINTS 64
@@ -47,6 +54,12 @@
  * section there is left undecided (the primitive element's resultant and the
  * gcd over Q(gamma) grow with it: Park's (alpha, m) plane has degree-6 alphas) */
 #define CAD_MAX_TOWER_DEGREE 12
+/* above CAD_MAX_TOWER_DEGREE the signs come from norms and the status from
+ * root balls; a cell inside the domain that the balls leave open (a root on
+ * the circle) still gets its tower up to this degree (Park's (alpha, muh)
+ * plane: four cells of degrees 18 to 50, about 5 s of the 9 s all its
+ * towers took) */
+#define CAD_MAX_TOWER_DEGREE_CELL 64
 /* deg alpha above this: the column is not decided at all */
 #define CAD_MAX_LINE_DEGREE 8
 
@@ -60,6 +73,7 @@ typedef struct {
     signed char *sg;         /* sign of each polynomial */
     json_t *a, *b;           /* the sample */
     slong sec;               /* for sections: the polynomials vanishing (first index) */
+    int balls;               /* status decided by root balls (no tower: cad_status_balls) */
 } cell_t;
 
 typedef struct {
@@ -653,6 +667,192 @@ static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
     return dec;
 }
 
+/* f(x, y) in ball arithmetic (terms summed as cad_may_vanish does) */
+static void cad_eval_acb(acb_t out, const cad_t *c, const fmpz_mpoly_t f, const acb_t x, const acb_t y, slong prec)
+{
+    slong i;
+    acb_t t, u;
+    fmpz_t cf;
+    acb_init(t); acb_init(u);
+    fmpz_init(cf);
+    acb_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(f, c->s->zctx); i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, c->s->zctx);
+        acb_pow_ui(t, x, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx), prec);
+        acb_pow_ui(u, y, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx), prec);
+        acb_mul(t, t, u, prec);
+        acb_addmul_fmpz(out, t, cf, prec);
+    }
+    acb_clear(t); acb_clear(u);
+    fmpz_clear(cf);
+}
+
+/* The sign of f(alpha, beta) without a tower (the tower's degree is over
+ * CAD_MAX_TOWER_DEGREE).  u = Res_x(m_alpha, f) = lc^d prod_i f(alpha_i, y)
+ * over the conjugates alpha_i, so the multiplicity e of m_beta in u is the
+ * sum over i of beta's multiplicity mu_i as a root of f(alpha_i, y).  With
+ * balls: mu_i = 0 where f(alpha_i, beta) excludes 0; elsewhere mu_i <= j_i,
+ * the first order of y-derivative whose ball excludes 0.  When those j_i
+ * sum to e, every mu_i = j_i >= 1: f(alpha_i, beta) = 0 exactly for them
+ * (a fold of the curve, a double root in y, included), zero iff alpha is
+ * one of them.  Nonzero signs by refining the real enclosures.  Returns 0
+ * when the balls do not separate by 4096 bits. */
+static int cad_sign_norm(int *sg, const cad_t *c, const fmpz_mpoly_t f, const fmpz_poly_t u, rs_alg_t *al,
+                         rs_alg_t *be)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    slong da = fmpz_poly_degree(al->minpoly), e = 0, prec, i, j;
+    int done = 0, zero = 0;
+    fmpz_poly_t q, r;
+    fmpz_mpoly_struct *df;
+    acb_ptr ra = _acb_vec_init(da);
+    acb_t y, v;
+    fmpz_poly_init(q); fmpz_poly_init(r);
+    acb_init(y); acb_init(v);
+    fmpz_poly_set(r, u);
+    while (!fmpz_poly_is_zero(r) && fmpz_poly_divides(q, r, be->minpoly)) { e++; fmpz_poly_swap(q, r); }
+    /* df[j] = the j-th y-derivative, j = 0..e */
+    df = flint_malloc((e + 1) * sizeof(fmpz_mpoly_struct));
+    for (j = 0; j <= e; j++) {
+        fmpz_mpoly_init(df + j, ctx);
+        if (j == 0) fmpz_mpoly_set(df, f, ctx);
+        else fmpz_mpoly_derivative(df + j, df + j - 1, c->bv, ctx);
+    }
+    if (e == 0) done = 1;   /* no conjugate vanishes: f(alpha, beta) != 0 */
+    for (prec = 64; !done && prec <= 4096; prec *= 2) {
+        slong sum = 0, ok = 1, self = 0;
+        rs_radius_complex_roots(ra, al->minpoly, prec);
+        rs_alg_refine(be, prec);
+        acb_set_arb(y, be->x);
+        for (i = 0; i < da && ok; i++) {
+            cad_eval_acb(v, c, f, ra + i, y, prec);
+            if (!acb_contains_zero(v)) continue;
+            for (j = 1; j <= e; j++) {
+                cad_eval_acb(v, c, df + j, ra + i, y, prec);
+                if (!acb_contains_zero(v)) break;
+            }
+            if (j > e) ok = 0;
+            sum += j;
+            if (i == al->idx) self = 1;
+        }
+        if (ok && sum == e) { done = 1; zero = self; }
+    }
+    *sg = 0;
+    if (done && !zero) {
+        /* f(alpha, beta) != 0: refine until the real ball has a sign */
+        for (prec = 64; *sg == 0 && prec <= (1L << 16); prec *= 2) {
+            acb_t x;
+            acb_init(x);
+            rs_alg_refine(al, prec);
+            rs_alg_refine(be, prec);
+            acb_set_arb(x, al->x);
+            acb_set_arb(y, be->x);
+            cad_eval_acb(v, c, f, x, y, prec);
+            if (arb_is_positive(acb_realref(v))) *sg = 1;
+            else if (arb_is_negative(acb_realref(v))) *sg = -1;
+            acb_clear(x);
+        }
+        if (*sg == 0) done = 0;
+    }
+    for (j = 0; j <= e; j++) fmpz_mpoly_clear(df + j, ctx);
+    flint_free(df);
+    _acb_vec_clear(ra, da);
+    acb_clear(y); acb_clear(v);
+    fmpz_poly_clear(q); fmpz_poly_clear(r);
+    return done;
+}
+
+/* Every root of sum a_j lambda^j (real balls, degree n) strictly inside
+ * the unit circle: Schur's recursion p_{k-1} = (a_k p_k - a_0 p_k^*)/lambda
+ * with a_k^2 - a_0^2 > 0 at every step (as kp_all_inside of an_region.c,
+ * each sign certified on the balls, so it holds for the exact values
+ * inside them); a repeated root inside does not stop it. */
+static int balls_all_inside(arb_srcptr c, slong n, slong prec)
+{
+    arb_ptr a = _arb_vec_init(n + 1), b = _arb_vec_init(n + 1);
+    arb_t d, t;
+    slong k, j;
+    int ok = 1;
+    arb_init(d); arb_init(t);
+    _arb_vec_set(a, c, n + 1);
+    for (k = n; k >= 1 && ok; k--) {
+        arb_sqr(d, a + k, prec);
+        arb_submul(d, a + 0, a + 0, prec);
+        if (!arb_is_positive(d)) { ok = 0; break; }
+        for (j = 0; j < k; j++) {
+            arb_mul(b + j, a + k, a + j + 1, prec);
+            arb_submul(b + j, a + 0, a + k - 1 - j, prec);
+        }
+        /* divided by d > 0: the signs stay, the sizes do not grow */
+        for (j = 0; j < k; j++) arb_div(a + j, b + j, d, prec);
+    }
+    _arb_vec_clear(a, n + 1); _arb_vec_clear(b, n + 1);
+    arb_clear(d); arb_clear(t);
+    return ok;
+}
+
+/* The status at (alpha, beta) without a tower, where balls decide it (p's
+ * coefficients as real balls at the refined enclosures, leading one
+ * excluding 0): stable when Schur's recursion certifies every root inside
+ * (balls_all_inside); unstable when |a_0| > |a_n| (the product of the
+ * roots' moduli exceeds 1) or acb_poly_find_roots isolates every root and
+ * one ball lies strictly outside.  A root on the circle (marginal or not)
+ * is never decided here: returns 0 then (after 2048 bits). */
+static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_alg_t *be)
+{
+    const rs_scheme_struct *s = c->s;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), j, prec;
+    fmpz_mpoly_t t;
+    acb_poly_t P;
+    acb_ptr rt = _acb_vec_init(FLINT_MAX(n, 1));
+    acb_t x, y, v;
+    arb_t a, b;
+    arb_ptr re = _arb_vec_init(n + 1);
+    int dec = 0;
+    fmpz_mpoly_init(t, s->zctx);
+    arb_init(b);
+    acb_poly_init(P);
+    acb_init(x); acb_init(y); acb_init(v);
+    arb_init(a);
+    for (prec = 128; !dec && n >= 1 && prec <= 2048; prec *= 2) {
+        slong in = 0, out = 0;
+        rs_alg_refine(al, prec);
+        rs_alg_refine(be, prec);
+        acb_set_arb(x, al->x);
+        acb_set_arb(y, be->x);
+        acb_poly_zero(P);
+        for (j = 0; j <= n; j++) {
+            ulong ex = (ulong) j;
+            fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
+            cad_eval_acb(v, c, t, x, y, prec);
+            acb_poly_set_coeff_acb(P, j, v);
+        }
+        if (acb_poly_length(P) != n + 1 || acb_contains_zero(P->coeffs + n)) continue;
+        for (j = 0; j <= n; j++) arb_set(re + j, acb_realref(P->coeffs + j));
+        if (balls_all_inside(re, n, prec)) { *st = RS_STATUS_STABLE; dec = 1; break; }
+        arb_abs(a, re + 0);
+        arb_abs(b, re + n);
+        if (arb_gt(a, b)) { *st = RS_STATUS_UNSTABLE; dec = 1; break; }
+        if (acb_poly_find_roots(rt, P, NULL, 0, prec) != n) continue;
+        for (j = 0; j < n; j++) {
+            acb_abs(a, rt + j, prec);
+            arb_sub_ui(a, a, 1, prec);
+            if (arb_is_negative(a)) in++;
+            else if (arb_is_positive(a)) out++;
+        }
+        if (out > 0) { *st = RS_STATUS_UNSTABLE; dec = 1; }
+        else if (in == n) { *st = RS_STATUS_STABLE; dec = 1; }
+        /* else a ball meets the circle: refined, then left undecided */
+    }
+    fmpz_mpoly_clear(t, s->zctx);
+    acb_poly_clear(P);
+    _acb_vec_clear(rt, FLINT_MAX(n, 1));
+    acb_clear(x); acb_clear(y); acb_clear(v);
+    arb_clear(a); arb_clear(b);
+    _arb_vec_clear(re, n + 1);
+    return dec;
+}
+
 /* step 3 for a column over an irrational N1 = alpha (a two-level tower):
  * the candidate N2 values are the real roots of Res_{N1}(m_alpha, f_k)
  * (the norms of f_k(alpha, N2)); a candidate beta is a section where some
@@ -666,17 +866,19 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
     rs_alg_t *cand = NULL;
     slong ncand = 0, i, j, k, nsec = 0, *sec = NULL;
     signed char **sgs = NULL;
-    int *zero_line = flint_calloc(c->nf, sizeof(int)), r = RS_OK, too_big = 0;
+    int *zero_line = flint_calloc(c->nf, sizeof(int)), r = RS_OK, too_big = 0, tower;
     fmpz_mpoly_t ma, t;
     fmpz_poly_t u;
     fmpq_poly_t m, A, B, v;
     fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
+    fmpz_poly_struct *norms = flint_malloc(c->nf * sizeof(fmpz_poly_struct));
     fmpz_mpoly_init(ma, s->zctx);
     fmpz_mpoly_init(t, s->zctx);
     fmpz_poly_init(u);
     fmpq_poly_init(m); fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(v);
     for (j = 0; j <= n; j++) fmpq_poly_init(pc + j);
     fmpz_mpoly_set_fmpz_poly(ma, al->minpoly, c->av, s->zctx);
+    for (k = 0; k < c->nf; k++) fmpz_poly_init(norms + k);
     for (k = 0; k < c->nf && r == RS_OK; k++) {
         slong d = fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx);
         if (d <= 0) continue;
@@ -685,6 +887,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             && fmpz_mpoly_get_fmpz_poly(u, t, c->bv, s->zctx)) {
             if (fmpz_poly_is_zero(u)) zero_line[k] = 1;   /* m_alpha divides f_k */
             else rs_alg_roots_append(&cand, &ncand, u, 0);
+            fmpz_poly_set(norms + k, u);
         }
     }
     rs_alg_sort(cand, ncand);
@@ -710,23 +913,39 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                 is_sec = cad_may_vanish(c, c->f + k, al, cand + i);
         if (!is_sec) { rs_alg_clear(cand + i); continue; }
         is_sec = 0;
-        /* the tower's degree bounds the cost (resultants and gcds over Q(gamma)) */
-        if (fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) > CAD_MAX_TOWER_DEGREE) {
-            too_big = 1;
-            break;
-        }
+        /* the tower's degree bounds the cost (resultants and gcds over
+         * Q(gamma)); above it the signs come from the norms (cad_sign_norm)
+         * and the status from root balls where they decide it */
+        tower = fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE;
         rs_alg_init(&g);
-        if (!rs_alg_primitive(&g, A, B, al, cand + i)) {
+        if (tower && !rs_alg_primitive(&g, A, B, al, cand + i)) {
             rs_alg_clear(&g);
             r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
             if (r == RS_OK) r = RS_ERR_MATH;
             break;
         }
-        fmpq_poly_set_fmpz_poly(m, g.minpoly);
+        if (tower) fmpq_poly_set_fmpz_poly(m, g.minpoly);
         for (k = 0; k < c->nf; k++) {
-            cad_eval_field(v, c, c->f + k, A, B, m);
-            sgs[i][k] = (signed char) rs_alg_sign(v, &g);
+            int sk = 0;
+            if (tower) {
+                cad_eval_field(v, c, c->f + k, A, B, m);
+                sk = rs_alg_sign(v, &g);
+            } else if (zero_line[k]) {
+                sk = 0;
+            } else if (fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) <= 0) {
+                if (!fmpz_mpoly_get_fmpz_poly(u, c->f + k, c->av, s->zctx)) fmpz_poly_zero(u);
+                sk = upoly_sign_at(u, al);
+            } else if (!cad_sign_norm(&sk, c, c->f + k, norms + k, al, cand + i)) {
+                break;
+            }
+            sgs[i][k] = (signed char) sk;
             if (sgs[i][k] == 0 && !zero_line[k] && fmpz_mpoly_degree_si(c->f + k, c->bv, s->zctx) > 0) is_sec = 1;
+        }
+        if (k < c->nf) {
+            /* a sign the balls did not separate: the column as before */
+            rs_alg_clear(&g);
+            too_big = 1;
+            break;
         }
         if (is_sec) {
             cell_t *e = cad_new_cell(c, 0, col);   /* placed below, in order */
@@ -736,7 +955,24 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             e->a = rs_alg_json(al, c->an);
             e->b = rs_alg_json(cand + i, c->bn);
             e->outside = cad_outside(c, e->sg);
-            if (!e->outside && c->cx != NULL) {
+            if (!e->outside && !tower) {
+                /* no tower: balls decide stable / unstable; a root on the
+                 * circle needs the tower after all, when it is not too big */
+                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, al, cand + i);
+                e->balls = e->decided;
+                if (!e->decided && c->cx == NULL
+                    && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
+                    && rs_alg_primitive(&g, A, B, al, cand + i)) {
+                    fmpq_poly_set_fmpz_poly(m, g.minpoly);
+                    for (j = 0; j <= n; j++) {
+                        ulong ex = (ulong) j;
+                        fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
+                        cad_eval_field(pc + j, c, t, A, B, m);
+                    }
+                    e->decided = rs_alg_status_coeffs(&e->st, pc, n, &g, s);
+                }
+                r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
+            } else if (!e->outside && c->cx != NULL) {
                 cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
                 e->st = cx_status(c, &pt);
                 cx_marginal_at(c, e, &pt);
@@ -807,6 +1043,8 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
     flint_free(sec);
     free(cand);
     flint_free(zero_line);
+    for (k = 0; k < c->nf; k++) fmpz_poly_clear(norms + k);
+    flint_free(norms);
     for (j = 0; j <= n; j++) fmpq_poly_clear(pc + j);
     flint_free(pc);
     fmpz_mpoly_clear(ma, s->zctx);
@@ -1302,8 +1540,10 @@ static json_t *cad_cells_json(const cad_t *c)
     for (i = 0; i < c->ncells; i++) {
         const cell_t *e = c->cells + i;
         const char *st = e->outside ? "outside" : (e->decided ? cad_st_name(c, e->st) : "undecided");
-        json_array_append_new(a, json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn,
-                                           e->b, "status", st));
+        json_t *o = json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn, e->b, "status", st);
+        /* a section without a tower: its status is certified by root balls (strictly inside / outside) */
+        if (e->balls && !e->outside) json_object_set_new(o, "decided_by", json_string("root balls"));
+        json_array_append_new(a, o);
     }
     return a;
 }
@@ -1554,8 +1794,9 @@ static int cad_solve(cad_t *c, json_t *substituted)
         if (!complete)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
-                : "some cells over irrational critical values of the first parameter are not decided (an "
-                  "algebraic tower of degree above 12, a line of degree above 8, or a system's repeated circle "
+                : "some cells over irrational critical values of the first parameter are not decided (a "
+                  "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
+                  "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "
                   "root): the formula is exact off those cells"));
         cad_boundary(o, c);
         if (c->cx == NULL) cad_qepcad(o, c);
@@ -1608,7 +1849,20 @@ static int cad_solve(cad_t *c, json_t *substituted)
         }
         r = cad_cross_check(o, c, json_object_get(fo, "stable"), json_object_get(fo, "marginal"), complete);
     }
-    json_object_set_new(o, "decided_by", json_string("exact"));
+    {
+        /* the report says which side decided: cells whose status came from
+         * root balls (no tower) are counted */
+        slong k, nb = 0;
+        for (k = 0; k < c->ncells; k++) nb += c->cells[k].balls && !c->cells[k].outside;
+        if (nb == 0) {
+            json_object_set_new(o, "decided_by", json_string("exact"));
+        } else {
+            char buf[200];
+            snprintf(buf, sizeof buf, "exact, but %ld section cells over irrational lines by certified root balls "
+                     "(Arb: every root strictly inside, or one strictly outside)", (long) nb);
+            json_object_set_new(o, "decided_by", json_string(buf));
+        }
+    }
     if (r == RS_OK) json_array_append_new(c->run->results, o);
     else json_decref(o);
     return r;

@@ -613,6 +613,87 @@ static void test_irrational_lines(void **state)
     json_decref(doc);
 }
 
+/* ---- lines over irrational alpha with big towers (Park, alpha x wh) --------- */
+
+/* g = wh^2 (4 alpha + 1)(alpha - 3) + 4 (2 alpha - 3): stable iff g < 0,
+ * marginal iff g = 0 (cases/region2/park-alpha-wh.case).  Independent of
+ * the decomposition: for 0 <= alpha <= 3/2 g < 0 for every wh > 0, QEPCAD
+ * B's answer "alpha >= 0 /\ 2 alpha - 3 <= 0" for all wh on recstab's
+ * Routh-Hurwitz conditions (bench/README.md); every point below is also
+ * checked against the exact point verdict (check_points). */
+static int park_closed(const fmpq_t al, const fmpq_t wh)
+{
+    fmpq_t g, t, u;
+    int k;
+    fmpq_init(g); fmpq_init(t); fmpq_init(u);
+    fmpq_mul_si(t, al, 4);
+    fmpq_add_si(t, t, 1);
+    fmpq_sub_si(u, al, 3);
+    fmpq_mul(t, t, u);
+    fmpq_mul(u, wh, wh);
+    fmpq_mul(g, t, u);
+    fmpq_mul_si(t, al, 8);
+    fmpq_sub_si(t, t, 12);
+    fmpq_add(g, g, t);
+    k = fmpq_sgn(g) < 0 ? 2 : (fmpq_sgn(g) == 0 ? 1 : 0);
+    fmpq_clear(g); fmpq_clear(t); fmpq_clear(u);
+    return k;
+}
+
+/* 150 points in [0, 4] x (0, 4], 50 near the lines alpha = 0.1299 and
+ * alpha = 3/2 */
+static void park_points(fmpq *xs, fmpq *ys, slong n, flint_rand_t st)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        rand_q(ys + i, st, 0, 4);
+        if (fmpq_is_zero(ys + i)) fmpq_set_si(ys + i, 1, 7);
+        if (i < 150) { rand_q(xs + i, st, 0, 4); continue; }
+        fmpq_set_si(xs + i, i % 2 ? 1299 : 1300, 10000);
+        if (i % 4 >= 2) fmpq_set_si(xs + i, i % 2 ? 1499 : 1501, 1000);
+    }
+}
+
+static void test_irrational_big_towers(void **state)
+{
+    const char *rel = "cases/region2/park-alpha-wh.case";
+    int outcome;
+    json_t *doc;
+    const json_t *o, *cells;
+    slong i, nline = 0, nballs = 0;
+    (void) state;
+    /* formula_complete and the run-time cross-check (region_of), the closed
+     * form and the point verdict at 200 points */
+    region_test(rel, 200, park_points, park_closed, 1, "4*wh^2*alpha^2 - 11*wh^2*alpha - 3*wh^2 + 8*alpha - 12");
+    doc = region_of(rel, &outcome);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    cells = json_object_get(o, "cells");
+    /* was 1 (the column over alpha = 0.1299 needed a tower of degree 4 * 24) */
+    assert_int_equal(json_integer_value(json_object_get(o, "undecided_lines")), 0);
+    for (i = 0; i < (slong) json_array_size(cells); i++) {
+        const json_t *e = json_array_get(cells, i), *ca = json_object_get(e, "alpha"), *cb = json_object_get(e, "wh");
+        const char *stc = json_string_value(json_object_get(e, "status"));
+        if (json_is_string(ca)) continue;
+        nline++;
+        assert_string_not_equal(stc, "undecided");
+        if (json_object_get(e, "decided_by") == NULL) continue;
+        nballs++;
+        /* the section at (0.1299..., 1.5915...) on the discriminant's curve:
+         * p has a double root 0.4597 and a pair of modulus 0.8626 there
+         * (Durand-Kerner in double precision on p(lambda) of the case's
+         * comment, far from the circle): stable */
+        assert_string_equal(json_string_value(json_object_get(ca, "minpoly")),
+                            "112*alpha^4 - 744*alpha^3 + 1752*alpha^2 - 1116*alpha + 117");
+        assert_int_equal(json_integer_value(json_object_get(ca, "root_index")), 0);
+        assert_true(strncmp(json_string_value(json_object_get(cb, "approx")), "1.5915", 6) == 0);
+        assert_string_equal(stc, "stable");
+        assert_string_equal(json_string_value(json_object_get(e, "decided_by")), "root balls");
+    }
+    assert_true(nline > 0);
+    assert_int_equal(nballs, 1);
+    json_decref(doc);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 static void test_bad(void **state)
@@ -777,6 +858,7 @@ int main(void)
         cmocka_unit_test(test_newmark),
         cmocka_unit_test(test_driven),
         cmocka_unit_test(test_irrational_lines),
+        cmocka_unit_test(test_irrational_big_towers),
         cmocka_unit_test(test_qepcad),
         cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
