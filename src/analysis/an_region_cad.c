@@ -20,7 +20,9 @@
  *      satisfies it), re-parsed and checked at random rational points
  *      against the exact point verdict (exit 3 on disagreement);
  *   5. the boundary: the polynomials with at least one arc whose two sides
- *      have different statuses.
+ *      have different statuses (a vertical arc's side points proved to lie
+ *      in its adjacent cells, cad_side_proved); apart from it the curves
+ *      marginal between two sides of one other status (marginal_curves).
  *
  * Limit: two parameters; every other one must be set (`at` or `set`).
  * Over an irrational N1 = alpha, a section whose tower Q(alpha, beta) has
@@ -1323,21 +1325,131 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
 }
 
 /* step 5: arcs (1-D sections in 2-D columns) and whether they separate */
+/* the sign variations of (1 + t)^n e((xl + xr t)/(1 + t)): an upper bound
+ * on the roots of e in (xl, xr) with the same parity (Descartes' rule on the
+ * interval mapped onto t > 0), exact when 0 or 1 */
+static slong upoly_variations(const fmpz_poly_t e, const fmpq_t xl, const fmpq_t xr)
+{
+    fmpq_poly_t lin, q;
+    fmpz_poly_t z;
+    fmpz_t one;
+    fmpq_t w;
+    slong i, nv = 0;
+    int last = 0;
+    fmpq_poly_init(lin); fmpq_poly_init(q);
+    fmpz_poly_init(z);
+    fmpz_init_set_ui(one, 1);
+    fmpq_init(w);
+    /* x = xl + (xr - xl) s maps s in (0, 1) onto (xl, xr); s = 1/(1 + t) */
+    fmpq_poly_set_coeff_fmpq(lin, 0, xl);
+    fmpq_sub(w, xr, xl);
+    fmpq_poly_set_coeff_fmpq(lin, 1, w);
+    fmpq_poly_set_fmpz_poly(q, e);
+    fmpq_poly_compose(q, q, lin);
+    fmpq_poly_get_numerator(z, q);
+    fmpz_poly_reverse(z, z, fmpz_poly_length(z));
+    fmpz_poly_taylor_shift(z, z, one);
+    for (i = 0; i < fmpz_poly_length(z); i++) {
+        int sg = fmpz_sgn(z->coeffs + i);
+        if (sg == 0) continue;
+        if (last != 0 && sg != last) nv++;
+        last = sg;
+    }
+    fmpq_poly_clear(lin); fmpq_poly_clear(q);
+    fmpz_poly_clear(z);
+    fmpz_clear(one);
+    fmpq_clear(w);
+    return nv;
+}
+
+/* e has no real root in [xl, xr] (exact) */
+static int upoly_no_root_in(const fmpz_poly_t e, const fmpq_t xl, const fmpq_t xr)
+{
+    fmpq_t v;
+    int ok;
+    fmpq_init(v);
+    fmpz_poly_evaluate_fmpq(v, e, xl);
+    ok = !fmpq_is_zero(v);
+    fmpz_poly_evaluate_fmpq(v, e, xr);
+    ok = ok && !fmpq_is_zero(v);
+    fmpq_clear(v);
+    return ok && (fmpz_poly_degree(e) < 1 || upoly_variations(e, xl, xr) == 0);
+}
+
+/* Exactly: xl < al < xr, al is the only root of its minimal polynomial in
+ * [xl, xr], and the horizontal segment y = b0, xl <= x <= xr meets the zero
+ * set of no polynomial except on the line x = al.  Then (xl, b0) and
+ * (xr, b0) lie in the 2-D cells left and right of the vertical arc through
+ * (al, b0): the segment's halves are connected and meet no section. */
+static int cad_side_proved(const cad_t *c, const fmpq_t xl, const fmpq_t xr, const fmpq_t b0, rs_alg_t *al)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    fmpz_poly_t m, u, g, d;
+    fmpz_mpoly_t t;
+    slong k;
+    int ok = 1;
+    fmpz_poly_init(m); fmpz_poly_init(u); fmpz_poly_init(g); fmpz_poly_init(d);
+    fmpz_mpoly_init(t, ctx);
+    if (al->rational) {
+        fmpz_t nn;                      /* m = den x - num */
+        fmpz_init(nn);
+        fmpz_neg(nn, fmpq_numref(al->q));
+        fmpz_poly_set_coeff_fmpz(m, 1, fmpq_denref(al->q));
+        fmpz_poly_set_coeff_fmpz(m, 0, nn);
+        fmpz_clear(nn);
+        ok = fmpq_cmp(xl, al->q) < 0 && fmpq_cmp(al->q, xr) < 0;
+    } else {
+        arb_t bl, br;
+        arb_init(bl); arb_init(br);
+        arb_set_fmpq(bl, xl, al->prec + 64);
+        arb_set_fmpq(br, xr, al->prec + 64);
+        fmpz_poly_set(m, al->minpoly);
+        ok = arb_lt(bl, al->x) && arb_lt(al->x, br) && upoly_variations(m, xl, xr) == 1;
+        arb_clear(bl); arb_clear(br);
+    }
+    for (k = 0; k < c->nf && ok; k++) {
+        rs_an_forall_subst(t, c->f + k, c->bv, b0, ctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, t, c->av, ctx) || fmpz_poly_is_zero(u)) { ok = 0; break; }
+        if (fmpz_poly_degree(u) < 1) continue;
+        /* the squarefree part without the line's own factor */
+        fmpz_poly_derivative(d, u);
+        fmpz_poly_gcd(g, u, d);
+        fmpz_poly_div(u, u, g);
+        if (fmpz_poly_divides(g, u, m)) fmpz_poly_swap(u, g);
+        ok = upoly_no_root_in(u, xl, xr);
+    }
+    fmpz_poly_clear(m); fmpz_poly_clear(u); fmpz_poly_clear(g); fmpz_poly_clear(d);
+    fmpz_mpoly_clear(t, ctx);
+    return ok;
+}
+
 static void cad_boundary(json_t *o, const cad_t *c)
 {
-    json_t *arcs = json_array(), *bnd = json_array();
+    json_t *arcs = json_array(), *bnd = json_array(), *marcs = json_array(), *mcur = json_array();
     slong *nsep = flint_calloc(c->nf, sizeof(slong)), *ntot = flint_calloc(c->nf, sizeof(slong)), i, k;
+    slong *nmarg = flint_calloc(c->nf, sizeof(slong));
     for (i = 1; i + 1 < c->ncells; i++) {
         const cell_t *e = c->cells + i, *lo = e - 1, *hi = e + 1;
-        int sep;
+        int sep, marg;
         if (e->dim != 1 || e->sec < 0 || lo->col != e->col || hi->col != e->col || lo->dim != 2 || hi->dim != 2)
             continue;
         if (e->outside || lo->outside || hi->outside || !lo->decided || !hi->decided) continue;
         sep = lo->st != hi->st;
+        /* a marginal arc between two sides of one other status: where the
+         * status changes without bounding the stable set (issue 13: listed
+         * apart from the boundary) */
+        marg = !sep && e->decided && e->st == RS_STATUS_MARGINAL && lo->st != RS_STATUS_MARGINAL;
         for (k = 0; k < c->nf; k++) {
             if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY) continue;
             ntot[k]++;
             if (sep) nsep[k]++;
+            if (marg) nmarg[k]++;
+        }
+        if (marg) {
+            char *ps = cad_polystr(c, e->sec);
+            json_array_append_new(marcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
+                                                   "on", cad_st_name(c, e->st), "sides", cad_st_name(c, lo->st)));
+            free(ps);
         }
         if (sep) {
             char *ps = cad_polystr(c, e->sec);
@@ -1346,47 +1458,58 @@ static void cad_boundary(json_t *o, const cad_t *c)
             free(ps);
         }
     }
-    /* vertical arcs: segments of a column over a rational critical value,
-     * their sides decided exactly at (a0 -+ delta, b0), delta below a
-     * thousandth of the distance to the next critical values */
+    /* vertical arcs: segments of a column over a critical value, their
+     * sides decided exactly at (a0 -+ delta, b0), delta halved until the
+     * segment between them provably meets no other zero set
+     * (cad_side_proved): the two points lie in the adjacent cells */
     for (i = 0; i < c->ncells; i++) {
         const cell_t *e = c->cells + i;
         rs_status_t side[2];
         fmpq vals[2];
-        fmpq_t d, a0;
+        fmpq_t d, a0, xl, xr;
         double gap = 1;
-        slong ci = e->col / 2, j;
+        slong ci = e->col / 2, j, tries;
         int ok = 1;
         if (e->dim != 1 || e->col % 2 == 0 || e->outside || !json_is_string(e->b)) continue;
         if (ci > 0) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci) - rs_alg_double(c->crit + ci - 1));
         if (ci + 1 < c->ncrit) gap = FLINT_MIN(gap, rs_alg_double(c->crit + ci + 1) - rs_alg_double(c->crit + ci));
         fmpq_init(vals + 0); fmpq_init(vals + 1); fmpq_init(d); fmpq_init(a0);
+        fmpq_init(xl); fmpq_init(xr);
         fmpq_one(d);
         while (fmpq_get_d(d) > gap / 1024) fmpq_div_2exp(d, d, 1);
-        if (c->crit[ci].rational) {
-            fmpq_set(a0, c->crit[ci].q);
-        } else {
-            /* an irrational line: a0 within d/2 of it (a0 -+ d on its two sides) */
-            arf_t mid;
-            slong prec = 64;
-            arf_init(mid);
-            for (;;) {
-                rs_alg_refine(c->crit + ci, prec);
-                if (mag_get_d(arb_radref(c->crit[ci].x)) < fmpq_get_d(d) / 2) break;
-                prec *= 2;
-            }
-            arf_set(mid, arb_midref(c->crit[ci].x));
-            arf_get_fmpq(a0, mid);
-            arf_clear(mid);
-        }
         fmpq_set_str(vals + 1, json_string_value(e->b), 10);
         fmpq_canonicalise(vals + 1);
+        for (tries = 0; ; tries++) {
+            if (c->crit[ci].rational) {
+                fmpq_set(a0, c->crit[ci].q);
+            } else {
+                /* an irrational line: a0 within d/2 of it (a0 -+ d on its two sides) */
+                arf_t mid;
+                slong prec = 64;
+                arf_init(mid);
+                for (;;) {
+                    rs_alg_refine(c->crit + ci, prec);
+                    if (mag_cmp_2exp_si(arb_radref(c->crit[ci].x), -1) < 0
+                        && mag_get_d(arb_radref(c->crit[ci].x)) < fmpq_get_d(d) / 4) break;
+                    prec *= 2;
+                }
+                arf_set(mid, arb_midref(c->crit[ci].x));
+                arf_get_fmpq(a0, mid);
+                arf_clear(mid);
+            }
+            fmpq_sub(xl, a0, d);
+            fmpq_add(xr, a0, d);
+            if (cad_side_proved(c, xl, xr, vals + 1, c->crit + ci)) break;
+            if (tries == 60) { ok = 0; break; }
+            fmpq_div_2exp(d, d, 1);
+        }
         for (j = 0; j < 2 && ok; j++) {
-            if (j == 0) fmpq_sub(vals + 0, a0, d); else fmpq_add(vals + 0, a0, d);
+            fmpq_set(vals + 0, j == 0 ? xl : xr);
             ok = cad_point_status(side + j, c, vals) == RS_OK;
         }
         rs_error_init(c->run->err);
         fmpq_clear(vals + 0); fmpq_clear(vals + 1); fmpq_clear(d); fmpq_clear(a0);
+        fmpq_clear(xl); fmpq_clear(xr);
         if (!ok) continue;
         for (k = 0; k < c->nf; k++) {
             if (e->sg[k] != 0 || c->kind[k] != K_BOUNDARY || fmpz_mpoly_degree_si(c->f + k, c->bv, c->s->zctx) > 0)
@@ -1398,6 +1521,13 @@ static void cad_boundary(json_t *o, const cad_t *c)
                 json_array_append_new(arcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn, e->b,
                                                       "left", cad_st_name(c, side[0]), "right", cad_st_name(c, side[1])));
                 free(ps);
+            } else if (e->decided && e->st == RS_STATUS_MARGINAL && side[0] != RS_STATUS_MARGINAL) {
+                char *ps = cad_polystr(c, k);
+                nmarg[k]++;
+                json_array_append_new(marcs, json_pack("{s:s,s:O,s:O,s:s,s:s}", "poly", ps, c->an, e->a, c->bn,
+                                                       e->b, "on", cad_st_name(c, e->st), "sides",
+                                                       cad_st_name(c, side[0])));
+                free(ps);
             }
         }
     }
@@ -1408,8 +1538,17 @@ static void cad_boundary(json_t *o, const cad_t *c)
         json_array_append_new(bnd, json_string(ps));
         free(ps);
     }
+    for (k = 0; k < c->nf; k++) {
+        char *ps;
+        if (c->kind[k] != K_BOUNDARY || nmarg[k] == 0 || nsep[k] > 0) continue;
+        ps = cad_polystr(c, k);
+        json_array_append_new(mcur, json_string(ps));
+        free(ps);
+    }
     json_object_set_new(o, "boundary", bnd);
     json_object_set_new(o, "arcs", arcs);
+    json_object_set_new(o, "marginal_curves", mcur);
+    json_object_set_new(o, "marginal_arcs", marcs);
     {
         json_t *cand = json_array();
         for (k = 0; k < c->nf; k++) {
@@ -1424,6 +1563,7 @@ static void cad_boundary(json_t *o, const cad_t *c)
     }
     flint_free(nsep);
     flint_free(ntot);
+    flint_free(nmarg);
 }
 
 /* a polynomial in QEPCAD B's syntax: products by juxtaposition */

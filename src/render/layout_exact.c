@@ -614,6 +614,12 @@ static void region2(rs_render_t *r, const json_t *o)
         rs_render_line(r, i ? "" : "where", "%s (assumed)", json_string_value(json_array_get(json_object_get(o, "domain"), i)));
     for (i = 0; i < json_array_size(b); i++)
         rs_render_line(r, i ? "" : "boundary", "%s = 0", json_string_value(json_array_get(b, i)));
+    /* curves marginal between two sides of one status: no boundary of the
+     * stable set, but where the status changes */
+    b = json_object_get(o, "marginal_curves");
+    for (i = 0; i < json_array_size(b); i++)
+        rs_render_line(r, i ? "" : "marginal on", "%s = 0 (a curve, no boundary: one status on both sides)",
+                       json_string_value(json_array_get(b, i)));
     rs_render_linef(r, "cells", "%zu (%lld critical values of %s)", json_array_size(json_object_get(o, "cells")),
                     (long long) json_array_size(json_object_get(o, "critical_values")),
                     json_string_value(json_array_get(pa, 0)));

@@ -694,6 +694,101 @@ static void test_irrational_big_towers(void **state)
     json_decref(doc);
 }
 
+/* ---- vertical arcs' sides proved; marginal-only curves ------------------- */
+
+/* cases/region2/steep-wedge.case, by hand: p = (lambda - c1)(lambda - c2),
+ * c1 = b - 10000 a, c2 = a + 1/2: stable iff |c1| < 1 and |c2| < 1;
+ * marginal iff both <= 1 in modulus, one = 1, and not c1 = c2 (a double
+ * root on the circle of a char line is unstable) */
+static int wedge_closed(const fmpq_t a, const fmpq_t b)
+{
+    fmpq_t c1, c2;
+    int k, in1, in2, on1, on2;
+    fmpq_init(c1); fmpq_init(c2);
+    fmpq_mul_si(c1, a, 10000);
+    fmpq_sub(c1, b, c1);
+    fmpq_set_si(c2, 1, 2);
+    fmpq_add(c2, a, c2);
+    in1 = fmpq_cmp_si(c1, 1) < 0 && fmpq_cmp_si(c1, -1) > 0;
+    in2 = fmpq_cmp_si(c2, 1) < 0 && fmpq_cmp_si(c2, -1) > 0;
+    on1 = fmpq_cmp_si(c1, 1) == 0 || fmpq_cmp_si(c1, -1) == 0;
+    on2 = fmpq_cmp_si(c2, 1) == 0 || fmpq_cmp_si(c2, -1) == 0;
+    if (in1 && in2) k = 2;
+    else if ((in1 || on1) && (in2 || on2) && !(on1 && on2 && fmpq_equal(c1, c2))) k = 1;
+    else k = 0;
+    fmpq_clear(c1); fmpq_clear(c2);
+    return k;
+}
+
+/* 100 points near the strip b = 10000 a + r, |r| <= 2; 60 on a = 1/2 and
+ * a = -3/2; 40 on c1 = +-1 */
+static void wedge_points(fmpq *xs, fmpq *ys, slong n, flint_rand_t st)
+{
+    slong i;
+    fmpq_t r;
+    fmpq_init(r);
+    for (i = 0; i < n; i++) {
+        rand_q(r, st, -2, 2);
+        if (i < 100) rand_q(xs + i, st, -2, 1);
+        else if (i < 160) fmpq_set_si(xs + i, i % 2 ? 1 : -3, 2);
+        else { rand_q(xs + i, st, -2, 1); fmpq_set_si(r, i % 2 ? 1 : -1, 1); }
+        fmpq_mul_si(ys + i, xs + i, 10000);
+        fmpq_add(ys + i, ys + i, r);
+    }
+    fmpq_clear(r);
+}
+
+static void test_vertical_sides(void **state)
+{
+    const char *rel = "cases/region2/steep-wedge.case";
+    int outcome, found = 0;
+    json_t *doc;
+    const json_t *o, *arcs, *b;
+    size_t i;
+    (void) state;
+    region_test(rel, 200, wedge_points, wedge_closed, 4, NULL);
+    doc = region_of(rel, &outcome);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    b = json_object_get(o, "boundary");
+    arcs = json_object_get(o, "arcs");
+    /* the lines a = 1/2 and a = -3/2 bound the strip (were missing: their
+     * side points a0 -+ 1/1024 fell outside the 2/10000-wide strip) */
+    for (i = 0; i < json_array_size(b); i++)
+        found |= (strcmp(json_string_value(json_array_get(b, i)), "2*a - 1") == 0)
+                 | (strcmp(json_string_value(json_array_get(b, i)), "2*a + 3") == 0) << 1;
+    assert_int_equal(found, 3);
+    found = 0;
+    for (i = 0; i < json_array_size(arcs); i++) {
+        const json_t *e = json_array_get(arcs, i);
+        if (strcmp(json_string_value(json_object_get(e, "poly")), "2*a - 1") != 0) continue;
+        /* left of a = 1/2 inside the strip: stable; right: c2 > 1 */
+        assert_string_equal(json_string_value(json_object_get(e, "left")), "stable");
+        assert_string_equal(json_string_value(json_object_get(e, "right")), "unstable");
+        found++;
+    }
+    assert_int_equal(found, 1);
+    assert_int_equal(json_array_size(json_object_get(o, "marginal_curves")), 0);
+    json_decref(doc);
+}
+
+static void test_marginal_curves(void **state)
+{
+    int outcome;
+    json_t *doc = region_of("cases/region2/driven-oscillators.case", &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0), *m = json_object_get(o, "marginal_curves");
+    const json_t *ma = json_object_get(o, "marginal_arcs");
+    (void) state;
+    /* by hand (the case's comment): marginal iff eps = 0, unstable on both
+     * sides: no boundary of a stable set, but where the status changes */
+    assert_int_equal(json_array_size(json_object_get(o, "boundary")), 0);
+    assert_int_equal(json_array_size(m), 1);
+    assert_string_equal(json_string_value(json_array_get(m, 0)), "eps");
+    assert_true(json_array_size(ma) >= 1);
+    assert_string_equal(json_string_value(json_object_get(json_array_get(ma, 0), "on")), "marginal");
+    assert_string_equal(json_string_value(json_object_get(json_array_get(ma, 0), "sides")), "unstable");
+    json_decref(doc);
+}
+
 /* ---- errors ------------------------------------------------------------------ */
 
 static void test_bad(void **state)
@@ -859,6 +954,8 @@ int main(void)
         cmocka_unit_test(test_driven),
         cmocka_unit_test(test_irrational_lines),
         cmocka_unit_test(test_irrational_big_towers),
+        cmocka_unit_test(test_vertical_sides),
+        cmocka_unit_test(test_marginal_curves),
         cmocka_unit_test(test_qepcad),
         cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
