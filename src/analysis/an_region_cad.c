@@ -1998,8 +1998,8 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "decided_by", json_string("exact"));
         } else {
             char buf[200];
-            snprintf(buf, sizeof buf, "exact, but %ld section cells over irrational lines by certified root balls "
-                     "(Arb: every root strictly inside, or one strictly outside)", (long) nb);
+            snprintf(buf, sizeof buf, "exact, but %ld section cell%s over irrational lines by certified root balls "
+                     "(Arb: every root strictly inside, or one strictly outside)", (long) nb, nb == 1 ? "" : "s");
             json_object_set_new(o, "decided_by", json_string(buf));
         }
     }
