@@ -1583,6 +1583,10 @@ static int cad_solve(cad_t *c, json_t *substituted)
         if (!complete)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
+                : c->cx != NULL
+                ? "some cells over irrational critical values of the first parameter are not decided (an "
+                  "algebraic tower of degree above 24 or a line of degree above 8): the formula is exact off "
+                  "those cells"
                 : "some cells over irrational critical values of the first parameter are not decided (an "
                   "algebraic tower of degree above 12, a line of degree above 8, or a system's repeated circle "
                   "root): the formula is exact off those cells"));
