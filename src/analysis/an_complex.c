@@ -1242,13 +1242,35 @@ static void c4_split(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpz_mpoly_t f, con
     fmpz_mpoly_clear(a, ctx4); fmpz_mpoly_clear(b, ctx4); fmpz_mpoly_clear(t, ctx4);
 }
 
+/* the points where a = b = 0 (a, b in Z[x, y]): into u, v the curve a and
+ * the lines Res_y(a, b)(x) (b when that resultant is unusable: a or b free
+ * of y, a common factor) */
+static void zregion_points(fmpz_mpoly_t u, fmpz_mpoly_t v, const fmpz_mpoly_t a, const fmpz_mpoly_t b,
+                           const fmpz_mpoly_ctx_t ctx3)
+{
+    if (fmpz_mpoly_is_zero(a, ctx3) || fmpz_mpoly_is_zero(b, ctx3)) {
+        fmpz_mpoly_set(u, a, ctx3);
+        fmpz_mpoly_set(v, b, ctx3);
+        return;
+    }
+    fmpz_mpoly_set(u, a, ctx3);
+    if (fmpz_mpoly_degree_si(a, 1, ctx3) < 1 || fmpz_mpoly_degree_si(b, 1, ctx3) < 1
+        || !fmpz_mpoly_resultant(v, a, b, 1, ctx3) || fmpz_mpoly_is_zero(v, ctx3))
+        fmpz_mpoly_set(v, b, ctx3);
+}
+
 /* The polynomials in (x, y) of p = re + i im whose zero sets contain every
  * point where the roots' relation to the circle or their multiplicity can
  * change (into E[0 .. *ne), at most 5, initialised in ctx3):
  *   Res_w(A, B) where q(i w) = A(w) + i B(w), q the bilinear transform
  *   (Bilharz): a root on the circle other than -1 is a real common root w;
- *   Re p(-1), Im p(-1): the root -1 (q's degree drops there);
- *   Re, Im of disc_lambda(p): a double root.
+ *   p(-1) = 0: the root -1 (q's degree drops there);
+ *   disc_lambda(p) = 0: a double root.
+ * The last two hold at points only (Re = Im = 0): each is cut out by the
+ * curve Re = 0 and the vertical lines Res_y(Re, Im)(x) = 0 through those
+ * points (zregion_points), not by the two curves Re = 0, Im = 0 whose
+ * every crossing and fold made columns and cells that decide nothing
+ * (AB3: 957 cells).  Where Re f != 0 or Res_y(Re, Im) != 0, f != 0.
  * 0 when Res_w(A, B) vanishes identically (A, B share a factor in w). */
 static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
                          const fmpz_mpoly_ctx_t ctx3)
@@ -1296,14 +1318,16 @@ static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re,
         fmpz_set_si(m1, -1);
         fmpz_mpoly_init(E + 1, ctx3);
         fmpz_mpoly_init(E + 2, ctx3);
-        fmpz_mpoly_evaluate_one_fmpz(E + 1, re, 2, m1, ctx3);
-        fmpz_mpoly_evaluate_one_fmpz(E + 2, im, 2, m1, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(A, re, 2, m1, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(B, im, 2, m1, ctx3);
+        zregion_points(E + 1, E + 2, A, B, ctx3);
         *ne = 3;
         /* disc_lambda(p) */
         if (fmpz_mpoly_degree_si(P, C4_L, ctx4) >= 2 && fmpz_mpoly_discriminant(t, P, C4_L, ctx4)) {
             fmpz_mpoly_init(E + 3, ctx3);
             fmpz_mpoly_init(E + 4, ctx3);
-            c4_split(E + 3, E + 4, t, ctx4, ctx3);
+            c4_split(A, B, t, ctx4, ctx3);
+            zregion_points(E + 3, E + 4, A, B, ctx3);
             *ne = 5;
         }
     }
