@@ -21,6 +21,7 @@
 #include <time.h>
 #include <acb_poly.h>
 #include <arb_poly.h>
+#include <fmpz_vec.h>
 #include <fmpq_vec.h>
 #include "recstab/budget.h"
 #include "analysis/registry.h"
@@ -1194,7 +1195,7 @@ int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run)
 }
 
 typedef struct {
-    const fmpq_poly_struct *C;
+    const fmpq_poly_struct *CR, *CI;   /* CI NULL: real coefficients */
     slong K, n;
     rs_run_t *run;
 } cregion_pt_t;
@@ -1206,7 +1207,7 @@ static int cregion_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void 
     fmpq_poly_t re, im;
     int r;
     fmpq_poly_init(re); fmpq_poly_init(im);
-    eval_coeffs(re, im, a->C, NULL, a->K, x, y);
+    eval_coeffs(re, im, a->CR, a->CI, a->K, x, y);
     r = rs_routh_complex_checked_status(st, re, im, a->n, a->run->err);
     if (r == RS_ERR_INCONSISTENT) a->run->outcome |= RS_OUTCOME_INCONSISTENT;
     fmpq_poly_clear(re); fmpq_poly_clear(im);
@@ -1241,13 +1242,35 @@ static void c4_split(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpz_mpoly_t f, con
     fmpz_mpoly_clear(a, ctx4); fmpz_mpoly_clear(b, ctx4); fmpz_mpoly_clear(t, ctx4);
 }
 
+/* the points where a = b = 0 (a, b in Z[x, y]): into u, v the curve a and
+ * the lines Res_y(a, b)(x) (b when that resultant is unusable: a or b free
+ * of y, a common factor) */
+static void zregion_points(fmpz_mpoly_t u, fmpz_mpoly_t v, const fmpz_mpoly_t a, const fmpz_mpoly_t b,
+                           const fmpz_mpoly_ctx_t ctx3)
+{
+    if (fmpz_mpoly_is_zero(a, ctx3) || fmpz_mpoly_is_zero(b, ctx3)) {
+        fmpz_mpoly_set(u, a, ctx3);
+        fmpz_mpoly_set(v, b, ctx3);
+        return;
+    }
+    fmpz_mpoly_set(u, a, ctx3);
+    if (fmpz_mpoly_degree_si(a, 1, ctx3) < 1 || fmpz_mpoly_degree_si(b, 1, ctx3) < 1
+        || !fmpz_mpoly_resultant(v, a, b, 1, ctx3) || fmpz_mpoly_is_zero(v, ctx3))
+        fmpz_mpoly_set(v, b, ctx3);
+}
+
 /* The polynomials in (x, y) of p = re + i im whose zero sets contain every
  * point where the roots' relation to the circle or their multiplicity can
  * change (into E[0 .. *ne), at most 5, initialised in ctx3):
  *   Res_w(A, B) where q(i w) = A(w) + i B(w), q the bilinear transform
  *   (Bilharz): a root on the circle other than -1 is a real common root w;
- *   Re p(-1), Im p(-1): the root -1 (q's degree drops there);
- *   Re, Im of disc_lambda(p): a double root.
+ *   p(-1) = 0: the root -1 (q's degree drops there);
+ *   disc_lambda(p) = 0: a double root.
+ * The last two hold at points only (Re = Im = 0): each is cut out by the
+ * curve Re = 0 and the vertical lines Res_y(Re, Im)(x) = 0 through those
+ * points (zregion_points), not by the two curves Re = 0, Im = 0 whose
+ * every crossing and fold made columns and cells that decide nothing
+ * (AB3: 957 cells).  Where Re f != 0 or Res_y(Re, Im) != 0, f != 0.
  * 0 when Res_w(A, B) vanishes identically (A, B share a factor in w). */
 static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
                          const fmpz_mpoly_ctx_t ctx3)
@@ -1295,14 +1318,16 @@ static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re,
         fmpz_set_si(m1, -1);
         fmpz_mpoly_init(E + 1, ctx3);
         fmpz_mpoly_init(E + 2, ctx3);
-        fmpz_mpoly_evaluate_one_fmpz(E + 1, re, 2, m1, ctx3);
-        fmpz_mpoly_evaluate_one_fmpz(E + 2, im, 2, m1, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(A, re, 2, m1, ctx3);
+        fmpz_mpoly_evaluate_one_fmpz(B, im, 2, m1, ctx3);
+        zregion_points(E + 1, E + 2, A, B, ctx3);
         *ne = 3;
         /* disc_lambda(p) */
         if (fmpz_mpoly_degree_si(P, C4_L, ctx4) >= 2 && fmpz_mpoly_discriminant(t, P, C4_L, ctx4)) {
             fmpz_mpoly_init(E + 3, ctx3);
             fmpz_mpoly_init(E + 4, ctx3);
-            c4_split(E + 3, E + 4, t, ctx4, ctx3);
+            c4_split(A, B, t, ctx4, ctx3);
+            zregion_points(E + 3, E + 4, A, B, ctx3);
             *ne = 5;
         }
     }
@@ -1313,6 +1338,81 @@ static int zregion_extra(fmpz_mpoly_struct *E, slong *ne, const fmpz_mpoly_t re,
     return ok;
 }
 
+/* norms[k] = |c^n p(rho_k lambda)|^2 / content, k = 0 .. cnt-1, for p =
+ * re + i im of degree n in lambda (variable lv), rho_0 = 1 and rho_k =
+ * (a + b i)/c with a = (k+1)^2 - 1, b = 2(k+1), c = (k+1)^2 + 1 (|rho| = 1,
+ * argument 2 atan(1/(k+1)) strictly decreasing in (0, pi/2): the rho_k^2
+ * are distinct).  The roots of norms[k] are p's divided by rho_k and their
+ * conjugates (an_region.h: rs_region_cx_t). */
+static void zregion_norms(fmpz_mpoly_struct *norms, slong cnt, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
+                          slong lv, const fmpz_mpoly_ctx_t ctx)
+{
+    slong n = FLINT_MAX(fmpz_mpoly_degree_si(re, lv, ctx), fmpz_mpoly_degree_si(im, lv, ctx)), k, j;
+    fmpz_mpoly_t Fr, Fi, rj, ij, t, u, L;
+    fmpz_t a, b, c, ur, ui, w, cpow;
+    fmpz_mpoly_init(Fr, ctx); fmpz_mpoly_init(Fi, ctx); fmpz_mpoly_init(rj, ctx); fmpz_mpoly_init(ij, ctx);
+    fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(u, ctx); fmpz_mpoly_init(L, ctx);
+    fmpz_init(a); fmpz_init(b); fmpz_init(c); fmpz_init(ur); fmpz_init(ui); fmpz_init(w); fmpz_init(cpow);
+    for (k = 0; k < cnt; k++) {
+        fmpz_mpoly_init(norms + k, ctx);
+        if (k == 0) { fmpz_one(a); fmpz_zero(b); fmpz_one(c); }
+        else { fmpz_set_si(a, (k + 1) * (k + 1) - 1); fmpz_set_si(b, 2 * (k + 1)); fmpz_set_si(c, (k + 1) * (k + 1) + 1); }
+        fmpz_mpoly_zero(Fr, ctx);
+        fmpz_mpoly_zero(Fi, ctx);
+        /* (ur + i ui) = (a + b i)^j, times c^(n - j) */
+        fmpz_one(ur); fmpz_zero(ui);
+        fmpz_mpoly_one(L, ctx);
+        for (j = 0; j <= n; j++) {
+            ulong e = (ulong) j;
+            fmpz_pow_ui(cpow, c, (ulong) (n - j));
+            fmpz_mpoly_get_coeff_vars_ui(rj, re, &lv, &e, 1, ctx);
+            fmpz_mpoly_get_coeff_vars_ui(ij, im, &lv, &e, 1, ctx);
+            fmpz_mpoly_mul(rj, rj, L, ctx);
+            fmpz_mpoly_mul(ij, ij, L, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(rj, rj, cpow, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(ij, ij, cpow, ctx);
+            /* (rj + i ij)(ur + i ui) */
+            fmpz_mpoly_scalar_mul_fmpz(t, rj, ur, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(u, ij, ui, ctx);
+            fmpz_mpoly_sub(t, t, u, ctx);
+            fmpz_mpoly_add(Fr, Fr, t, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(t, rj, ui, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(u, ij, ur, ctx);
+            fmpz_mpoly_add(t, t, u, ctx);
+            fmpz_mpoly_add(Fi, Fi, t, ctx);
+            /* next power of a + b i and of lambda */
+            fmpz_mul(w, ur, a);
+            fmpz_submul(w, ui, b);
+            fmpz_mul(ui, ui, a);
+            fmpz_addmul(ui, ur, b);
+            fmpz_swap(ur, w);
+            fmpz_mpoly_gen(t, lv, ctx);
+            fmpz_mpoly_mul(L, L, t, ctx);
+        }
+        fmpz_mpoly_mul(norms + k, Fr, Fr, ctx);
+        fmpz_mpoly_mul(t, Fi, Fi, ctx);
+        fmpz_mpoly_add(norms + k, norms + k, t, ctx);
+        if (!fmpz_mpoly_is_zero(norms + k, ctx)) {
+            _fmpz_vec_content(w, norms[k].coeffs, norms[k].length);
+            fmpz_mpoly_scalar_divexact_fmpz(norms + k, norms + k, w, ctx);
+        }
+    }
+    fmpz_mpoly_clear(Fr, ctx); fmpz_mpoly_clear(Fi, ctx); fmpz_mpoly_clear(rj, ctx); fmpz_mpoly_clear(ij, ctx);
+    fmpz_mpoly_clear(t, ctx); fmpz_mpoly_clear(u, ctx); fmpz_mpoly_clear(L, ctx);
+    fmpz_clear(a); fmpz_clear(b); fmpz_clear(c); fmpz_clear(ur); fmpz_clear(ui); fmpz_clear(w); fmpz_clear(cpow);
+}
+
+/* c * D as an integer polynomial (D a multiple of c's denominator) */
+static void scaled_num(fmpz_poly_t out, const fmpq_poly_t c, const fmpz_t D)
+{
+    fmpz_t f;
+    fmpz_init(f);
+    fmpz_divexact(f, D, fmpq_poly_denref(c));
+    fmpq_poly_get_numerator(out, c);
+    fmpz_poly_scalar_mul_fmpz(out, out, f);
+    fmpz_clear(f);
+}
+
 int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -1321,27 +1421,33 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     char xn[24], yn[24];
     char *vars[3];
     rs_variant_t *v;
-    const rs_scheme_struct *s;
     rs_scheme_struct xs;
-    fmpq_poly_struct *C;
-    fmpz_mpoly_t re, im, zr, zi, t, u, x, y, N;
-    fmpz_mpoly_struct E[5];
-    slong ne = 0;
+    fmpq_poly_struct *CR = NULL, *CI = NULL;
+    fmpz_mpoly_t re, im, zr, zi, t, u, x, y;
+    fmpz_mpoly_struct E[5], *NR = NULL;
+    fmpz_poly_t c;
+    fmpz_t D;
+    slong ne = 0, nn = 0;
     rs_schur_cx_conds_t cc;
     rs_region_cx_t cx;
     cregion_pt_t pt;
-    slong K, n, k;
+    slong K = 0, n = 0, k;
     int r = rs_run_variant_one_free(&v, run, q, req->rest, m->param, "region");
     if (r != RS_OK) return r;
-    s = v->s;
-    if (s->complex_char)
-        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "region re(%s), im(%s): the char line has i already; "
-                            "expected a polynomial with real coefficients in the parameter", name);
-    K = fmpz_mpoly_degree_si(v->cp->p, m->param, s->zctx);
-    n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
-    if (K < 1 || n < 1)
+    /* p = sum_k (CR_k + i CI_k)(lambda) NAME^k (CI NULL: real coefficients;
+     * a char line with i: p = A + i B from its block) */
+    if (!zplane_coeffs(&CR, &CI, &K, &n, v, m->param)) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "region re(%s), im(%s): the char line depends on a parameter other than %s", name,
+                 name, name);
+        zplane_coeffs_clear(CR, CI, K);
+        return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "%s", msg);
+    }
+    if (K < 1 || n < 1) {
+        zplane_coeffs_clear(CR, CI, K);
         return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "region re(%s), im(%s): the characteristic polynomial "
                             "must depend on the parameter and on lambda", name);
+    }
     /* the plane: variables x = re(NAME), y = im(NAME), lambda */
     snprintf(xn, sizeof xn, "re(%.16s)", name);
     snprintf(yn, sizeof yn, "im(%.16s)", name);
@@ -1355,23 +1461,30 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_init(re, xs.zctx); fmpz_mpoly_init(im, xs.zctx); fmpz_mpoly_init(zr, xs.zctx);
     fmpz_mpoly_init(zi, xs.zctx); fmpz_mpoly_init(t, xs.zctx); fmpz_mpoly_init(u, xs.zctx);
     fmpz_mpoly_init(x, xs.zctx); fmpz_mpoly_init(y, xs.zctx);
-    fmpz_mpoly_init(N, xs.zctx);
+    fmpz_poly_init(c);
+    fmpz_init(D);
     fmpz_mpoly_gen(x, 0, xs.zctx);
     fmpz_mpoly_gen(y, 1, xs.zctx);
     fmpz_mpoly_one(zr, xs.zctx);
-    C = flint_malloc((K + 1) * sizeof(fmpq_poly_struct));
-    /* p(x + i y) = sum_k C_k(lambda) (x + i y)^k = re + i im in Z[x, y, lambda] */
+    /* a common denominator: p times D > 0 has integer coefficients */
+    fmpz_one(D);
     for (k = 0; k <= K; k++) {
-        fmpz_poly_t c;
-        fmpz_poly_init(c);
-        fmpq_poly_init(C + k);
-        rs_run_coeff_in(c, v->cp->p, m->param, k, s);
-        fmpq_poly_set_fmpz_poly(C + k, c);
-        fmpz_mpoly_set_fmpz_poly(t, c, 2, xs.zctx);
-        fmpz_mpoly_mul(u, t, zr, xs.zctx);
-        fmpz_mpoly_add(re, re, u, xs.zctx);
-        fmpz_mpoly_mul(u, t, zi, xs.zctx);
-        fmpz_mpoly_add(im, im, u, xs.zctx);
+        fmpz_lcm(D, D, fmpq_poly_denref(CR + k));
+        if (CI != NULL) fmpz_lcm(D, D, fmpq_poly_denref(CI + k));
+    }
+    /* D p(x + i y) = sum_k (CR_k + i CI_k)(lambda) (x + i y)^k = re + i im in Z[x, y, lambda] */
+    for (k = 0; k <= K; k++) {
+        int part;
+        for (part = 0; part < (CI != NULL ? 2 : 1); part++) {
+            /* part 1: i CI_k (zr + i zi) = -CI_k zi + i CI_k zr */
+            scaled_num(c, part == 0 ? CR + k : CI + k, D);
+            fmpz_mpoly_set_fmpz_poly(t, c, 2, xs.zctx);
+            fmpz_mpoly_mul(u, t, part == 0 ? zr : zi, xs.zctx);
+            if (part == 0) fmpz_mpoly_add(re, re, u, xs.zctx);
+            else fmpz_mpoly_sub(re, re, u, xs.zctx);
+            fmpz_mpoly_mul(u, t, part == 0 ? zi : zr, xs.zctx);
+            fmpz_mpoly_add(im, im, u, xs.zctx);
+        }
         /* (zr + i zi)(x + i y) */
         fmpz_mpoly_mul(t, zr, x, xs.zctx);
         fmpz_mpoly_mul(u, zi, y, xs.zctx);
@@ -1380,7 +1493,6 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
         fmpz_mpoly_mul(zi, zi, x, xs.zctx);
         fmpz_mpoly_add(zi, zi, u, xs.zctx);
         fmpz_mpoly_swap(zr, t, xs.zctx);
-        fmpz_poly_clear(c);
     }
     rs_schur_cx_conds_init(&cc);
     if (!rs_schur_cx_conds(&cc, re, im, 2, xs.zctx)) {
@@ -1389,20 +1501,22 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
             r = rs_req_error(run, q, req->rest, RS_ERR_LIMIT, "region re(%s), im(...): the Schur-Cohn conditions over "
                              "Q(i) grow too large", name);
     } else {
-        pt.C = C;
+        pt.CR = CR;
+        pt.CI = CI;
         pt.K = K;
         pt.n = n;
         pt.run = run;
         memset(&cx, 0, sizeof cx);
-        /* the marginal set: the circle locus beside the conditions, and
-         * p conj(p) for the exact verdicts at algebraic samples */
+        /* the marginal set: the circle locus beside the conditions, and the
+         * norms |p(rho lambda)|^2 for the exact verdicts at algebraic samples */
         if (zregion_extra(E, &ne, re, im, xs.zctx)) {
-            fmpz_mpoly_mul(N, re, re, xs.zctx);
-            fmpz_mpoly_mul(t, im, im, xs.zctx);
-            fmpz_mpoly_add(N, N, t, xs.zctx);
+            nn = n * (n + 1) / 2 + 1;
+            NR = flint_malloc(nn * sizeof(fmpz_mpoly_struct));
+            zregion_norms(NR, nn, re, im, 2, xs.zctx);
             cx.extra = E;
             cx.nextra = ne;
-            cx.norm = N;
+            cx.norm = NR;
+            cx.nnorm = nn;
         }
         cx.s = &xs;
         cx.lead = cc.lead;
@@ -1416,9 +1530,11 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     }
     rs_schur_cx_conds_clear(&cc, xs.zctx);
     for (k = 0; k < ne; k++) fmpz_mpoly_clear(E + k, xs.zctx);
-    fmpz_mpoly_clear(N, xs.zctx);
-    for (k = 0; k <= K; k++) fmpq_poly_clear(C + k);
-    flint_free(C);
+    for (k = 0; k < nn; k++) fmpz_mpoly_clear(NR + k, xs.zctx);
+    flint_free(NR);
+    zplane_coeffs_clear(CR, CI, K);
+    fmpz_poly_clear(c);
+    fmpz_clear(D);
     fmpz_mpoly_clear(re, xs.zctx); fmpz_mpoly_clear(im, xs.zctx); fmpz_mpoly_clear(zr, xs.zctx);
     fmpz_mpoly_clear(zi, xs.zctx); fmpz_mpoly_clear(t, xs.zctx); fmpz_mpoly_clear(u, xs.zctx);
     fmpz_mpoly_clear(x, xs.zctx); fmpz_mpoly_clear(y, xs.zctx);

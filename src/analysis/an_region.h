@@ -97,10 +97,13 @@ typedef struct {
      * reaches the circle or doubles, and norm = p conj(p) in Z[x, y, lambda]
      * (roots: p's and their conjugates) for exact verdicts at algebraic
      * samples (its marginal is p's; its unstable is p's or a circle root
-     * of p with its conjugate: left undecided) */
+     * of p with its conjugate); norm[0 .. nnorm): norm[k] = |p(rho_k
+     * lambda)|^2 up to a positive factor, |rho_k| = 1, rho_0 = 1, the
+     * rho_k^2 distinct: nnorm > n(n+1)/2 (n = deg p) decides every cell */
     const fmpz_mpoly_struct *extra;
     slong nextra;
     const fmpz_mpoly_struct *norm;
+    slong nnorm;
 } rs_region_cx_t;
 int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx);
 

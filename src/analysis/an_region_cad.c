@@ -26,10 +26,11 @@
  *
  * Limit: two parameters; every other one must be set (`at` or `set`).
  * Over an irrational N1 = alpha, a section whose tower Q(alpha, beta) has
- * degree > 12 gets its signs from the norms Res(m_alpha, f_k) and balls
- * (cad_sign_norm, exact), its status from root balls where no root is on
- * the circle (cad_status_balls, certified) and otherwise from the tower up
- * to degree 64.  Left undecided (counted in "undecided_lines";
+ * degree > 12 (24 in the plane of a complex parameter) gets its signs from
+ * the norms Res(m_alpha, f_k) and balls (cad_sign_norm, exact), its status
+ * from root balls where no root is on the circle (cad_status_balls,
+ * certified; real parameters only) and otherwise from the tower up to
+ * degree 64.  Left undecided (counted in "undecided_lines";
  * "formula_complete" false): a column when deg alpha > 8 or a sign the
  * balls do not separate, a cell when none of those decides it or a system
  * has a repeated circle root there. */
@@ -56,12 +57,13 @@
  * section there is left undecided (the primitive element's resultant and the
  * gcd over Q(gamma) grow with it: Park's (alpha, m) plane has degree-6 alphas) */
 #define CAD_MAX_TOWER_DEGREE 12
-/* above CAD_MAX_TOWER_DEGREE the signs come from norms and the status from
+/* above cad_max_tower the signs come from norms and the status from
  * root balls; a cell inside the domain that the balls leave open (a root on
  * the circle) still gets its tower up to this degree (Park's (alpha, muh)
  * plane: four cells of degrees 18 to 50, about 5 s of the 9 s all its
  * towers took) */
 #define CAD_MAX_TOWER_DEGREE_CELL 64
+#define CAD_MAX_TOWER_DEGREE_CX 24
 /* deg alpha above this: the column is not decided at all */
 #define CAD_MAX_LINE_DEGREE 8
 
@@ -99,6 +101,14 @@ typedef struct {
     slong nb;                /* length of bounds */
     slong marginal_undecided; /* complex mode: circle-locus cells norm's verdict leaves open */
 } cad_t;
+
+/* the plane of a complex parameter allows a larger tower: its sections are
+ * few per line (BDF3: 4 -> 2 undecided lines, RK4 10 -> 9, AB3 28 -> 26 at
+ * about +0.1 .. 0.3 s CPU; 36 cost AB3 4.5 s for 7 more lines) */
+static slong cad_max_tower(const cad_t *c)
+{
+    return c->cx != NULL ? CAD_MAX_TOWER_DEGREE_CX : CAD_MAX_TOWER_DEGREE;
+}
 
 /* complex mode (region re(z), im(z)): a point's signs of lead and the
  * Schur-Cohn deltas say stable (all > 0) or not; pt: where they are taken */
@@ -196,47 +206,66 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
     return r;
 }
 
-/* complex mode with the marginal set: a not-stable cell e at the algebraic
- * sample pt.  Off the circle locus (extra[0] != 0 and p(-1) != 0: no root
- * on the circle) it is unstable; on it, norm = p conj(p) decides exactly
- * in the sample's field: marginal (its circle roots simple, none outside)
- * makes p marginal; unstable leaves p open (a root outside, or p's circle
- * root beside its conjugate); stable contradicts the signs (exit 3). */
-static void cx_marginal_at(cad_t *c, cell_t *e, const cx_pt_t *pt)
+/* the status of one norm (a polynomial in Z[x, y, lambda]) at the
+ * algebraic sample pt; 0 when undecided */
+static int cx_norm_status(rs_status_t *nst, cad_t *c, const fmpz_mpoly_t N, const cx_pt_t *pt)
 {
-    const rs_region_cx_t *X = c->cx;
     const rs_scheme_struct *s = c->s;
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
-    rs_status_t nst = RS_STATUS_UNSTABLE;
     fmpz_mpoly_t t;
-    int dec = 0;
-    if (X->norm == NULL || e->st == RS_STATUS_STABLE) return;
-    if (cx_sign(c, X->extra + 0, pt) != 0
-        && (X->nextra < 3 || cx_sign(c, X->extra + 1, pt) != 0 || cx_sign(c, X->extra + 2, pt) != 0))
-        return;
+    int dec;
     fmpz_mpoly_init(t, ctx);
     if (pt->g != NULL) {
-        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(X->norm, lv, ctx), j;
+        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(N, lv, ctx), j;
         fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
         for (j = 0; j <= n; j++) {
             ulong ex = (ulong) j;
             fmpq_poly_init(pc + j);
-            fmpz_mpoly_get_coeff_vars_ui(t, X->norm, &lv, &ex, 1, ctx);
+            fmpz_mpoly_get_coeff_vars_ui(t, N, &lv, &ex, 1, ctx);
             cad_eval_field(pc + j, c, t, pt->A, pt->B, pt->m);
         }
-        dec = rs_alg_status_coeffs(&nst, pc, n, pt->g, s);
+        dec = rs_alg_status_coeffs(nst, pc, n, pt->g, s);
         for (j = 0; j <= n; j++) fmpq_poly_clear(pc + j);
         flint_free(pc);
     } else if (pt->a0 != NULL) {
-        rs_an_forall_subst(t, X->norm, c->av, pt->a0, ctx);
-        dec = rs_alg_status(&nst, t, c->bv, pt->be, s);
+        rs_an_forall_subst(t, N, c->av, pt->a0, ctx);
+        dec = rs_alg_status(nst, t, c->bv, pt->be, s);
     } else {
-        rs_an_forall_subst(t, X->norm, c->bv, pt->b0, ctx);
-        dec = rs_alg_status(&nst, t, c->av, pt->al, s);
+        rs_an_forall_subst(t, N, c->bv, pt->b0, ctx);
+        dec = rs_alg_status(nst, t, c->av, pt->al, s);
     }
     fmpz_mpoly_clear(t, ctx);
+    return dec;
+}
+
+/* complex mode with the marginal set: a not-stable cell e at the algebraic
+ * sample pt.  Off the circle locus (extra[0] != 0 and p(-1) != 0: no root
+ * on the circle) it is unstable; on it, the norms N_k = |p(rho_k lambda)|^2
+ * (|rho_k| = 1, rho_0 = 1, distinct rho_k^2) decide exactly in the
+ * sample's field.  N_k's roots are p's rotated by 1/rho_k and their
+ * conjugates: the same moduli and multiplicities.  N_k marginal makes p
+ * marginal; stable contradicts the signs (exit 3); unstable is p's (a root
+ * outside, a repeated circle root) or a coincidence w_j/rho = conj(w_l/rho)
+ * of two circle roots of p, i.e. rho^2 = w_j w_l: at most n(n+1)/2 values
+ * of rho^2, so with nnorm > n(n+1)/2 norms all unstable, p is unstable. */
+static void cx_marginal_at(cad_t *c, cell_t *e, const cx_pt_t *pt)
+{
+    const rs_region_cx_t *X = c->cx;
+    rs_status_t nst = RS_STATUS_UNSTABLE;
+    slong k, nn = FLINT_MAX(X->nnorm, 1), n;
+    int dec = 0;
+    if (X->norm == NULL || e->st == RS_STATUS_STABLE) return;
+    n = fmpz_mpoly_degree_si(X->norm, c->s->lambda_var, c->s->zctx) / 2;
+    if (cx_sign(c, X->extra + 0, pt) != 0
+        && (X->nextra < 3 || cx_sign(c, X->extra + 1, pt) != 0 || cx_sign(c, X->extra + 2, pt) != 0))
+        return;
+    for (k = 0; k < nn; k++) {
+        dec = cx_norm_status(&nst, c, X->norm + k, pt);
+        if (!dec || nst != RS_STATUS_UNSTABLE) break;
+    }
     if (dec && nst == RS_STATUS_MARGINAL) e->st = RS_STATUS_MARGINAL;
     else if (dec && nst == RS_STATUS_STABLE) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+    else if (dec && nst == RS_STATUS_UNSTABLE && nn > n * (n + 1) / 2) return;   /* every rotation: p's own */
     else c->marginal_undecided++;
 }
 
@@ -918,7 +947,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
         /* the tower's degree bounds the cost (resultants and gcds over
          * Q(gamma)); above it the signs come from the norms (cad_sign_norm)
          * and the status from root balls where they decide it */
-        tower = fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE;
+        tower = fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= cad_max_tower(c);
         rs_alg_init(&g);
         if (tower && !rs_alg_primitive(&g, A, B, al, cand + i)) {
             rs_alg_clear(&g);
@@ -1934,6 +1963,10 @@ static int cad_solve(cad_t *c, json_t *substituted)
         if (!complete)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
+                : c->cx != NULL
+                ? "some cells over irrational critical values of the first parameter are not decided (an "
+                  "algebraic tower of degree above 24, a sign the norms and balls did not separate or a line "
+                  "of degree above 8): the formula is exact off those cells"
                 : "some cells over irrational critical values of the first parameter are not decided (a "
                   "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
                   "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "
@@ -1978,9 +2011,10 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "marginal_note", json_string("marginal: roots on the circle, all simple, the "
                                 "others inside; cells cut also by the circle locus (Res_w(A, B) of q(i w) = A + i B, "
                                 "p(-1)) and the discriminant of p; decided by the point verdict over Q(i) at "
-                                "rational samples, by p conj(p) in the sample's field at algebraic ones (cells where "
-                                "that cannot separate marginal from unstable are left out of the marginal formula "
-                                "and counted in marginal_undecided_cells)"));
+                                "rational samples, at algebraic ones by the norms |p(rho lambda)|^2 in the sample's field "
+                                "(rho = 1 and n(n+1)/2 rotations with |rho| = 1: a marginal norm makes p marginal, all "
+                                "unstable make p unstable; cells a norm cannot decide are counted in "
+                                "marginal_undecided_cells)"));
         } else if (c->cx != NULL) {
             json_object_set_new(o, "complex_plane", json_string(c->cx->name));
             json_object_set_new(o, "marginal_note", json_string("region re(z), im(z) separates stable from not "

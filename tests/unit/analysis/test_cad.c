@@ -20,6 +20,7 @@
 #include <flint/fmpq_mpoly.h>
 #include <flint/fmpq_poly.h>
 #include <arf.h>
+#include <acb_poly.h>
 #include <fmpq_vec.h>
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
@@ -937,12 +938,202 @@ static void zregion_check(const char *rel, closed_fn cf)
     json_decref(doc);
 }
 
+/* a char line with i, lambda - 1 - i z: the root 1 - y + i x, stable iff
+ * x^2 + y^2 - 2 y < 0, marginal iff = 0 (by hand, in the case file) */
+static int rotated_z(const fmpq_t x, const fmpq_t y)
+{
+    fmpq_t t, u;
+    int k;
+    fmpq_init(t); fmpq_init(u);
+    fmpq_mul(t, x, x);
+    fmpq_mul(u, y, y);
+    fmpq_add(t, t, u);
+    fmpq_mul_si(u, y, 2);
+    fmpq_sub(t, t, u);
+    k = fmpq_sgn(t);
+    fmpq_clear(t); fmpq_clear(u);
+    return k < 0 ? 2 : (k == 0 ? 1 : 0);
+}
+
 static void test_zregion(void **state)
 {
     (void) state;
     zregion_check("cases/complex/forward-euler-zregion.case", euler_z);
     zregion_check("cases/complex/trapezoid-zregion.case", trap_z);
     zregion_check("cases/complex/leapfrog-zregion.case", leapfrog_z);
+    zregion_check("cases/complex/rotated-euler-zregion.case", rotated_z);
+}
+
+/* The cells on x = x0, y = +-sqrt(num/den) that the norm p conj(p) alone left
+ * open (marginal_undecided_cells 2 before the rotated norms), decided now:
+ * each must be not_stable, and a root of p of modulus > 1 there, certified
+ * by Arb from p's coefficients (a route independent of the decomposition:
+ * acb_poly_find_roots on p at the Arb ball of z), must exist.  p is given by
+ * its coefficients c_k = a_k + b_k z (k = 0..3, lambda^k). */
+static void open_cells_check(const char *method, const char *x0, slong num, slong den, const char *minpoly,
+                             const slong *a, const slong *b, slong scale)
+{
+    char text[400];
+    int outcome, code, found = 0;
+    json_t *doc;
+    const json_t *o, *cells;
+    size_t i;
+    snprintf(text, sizeof text, "param z complex\nsubsystem S state y\n  y' = z*y\nintegrate S %s 1\n"
+             "analyse region re(z), im(z)\n", method);
+    doc = tu_run_text(text, NULL, &outcome, &code);
+    assert_int_equal(code, RS_OK);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    assert_int_equal(json_integer_value(json_object_get(o, "marginal_undecided_cells")), 0);
+    cells = json_object_get(o, "cells");
+    for (i = 0; i < json_array_size(cells); i++) {
+        const json_t *e = json_array_get(cells, i), *im = json_object_get(e, "im(z)");
+        const char *re = json_string_value(json_object_get(e, "re(z)"));
+        if (re == NULL || strcmp(re, x0) != 0 || !json_is_object(im)
+            || strcmp(json_string_value(json_object_get(im, "minpoly")), minpoly) != 0) continue;
+        found++;
+        assert_string_equal(json_string_value(json_object_get(e, "status")), "not_stable");
+    }
+    assert_int_equal(found, 2);
+    {
+        slong prec = 128, k, n;
+        int outside = 0, sg;
+        fmpq_t q;
+        acb_t z, c;
+        acb_poly_t p;
+        acb_ptr rt = _acb_vec_init(3);
+        fmpq_init(q);
+        acb_init(z); acb_init(c);
+        acb_poly_init(p);
+        for (sg = -1; sg <= 1; sg += 2) {
+            assert_int_equal(fmpq_set_str(q, x0, 10), 0);
+            arb_set_fmpq(acb_realref(z), q, prec);
+            arb_set_si(acb_imagref(z), num);
+            arb_div_si(acb_imagref(z), acb_imagref(z), den, prec);
+            arb_sqrt(acb_imagref(z), acb_imagref(z), prec);
+            if (sg < 0) arb_neg(acb_imagref(z), acb_imagref(z));
+            for (k = 0; k <= 3; k++) {
+                acb_mul_si(c, z, b[k], prec);
+                acb_add_si(c, c, a[k], prec);
+                acb_div_si(c, c, scale, prec);
+                acb_poly_set_coeff_acb(p, k, c);
+            }
+            n = acb_poly_find_roots(rt, p, NULL, 0, prec);
+            assert_int_equal(n, 3);
+            for (k = 0; k < 3; k++) {
+                arb_t m;
+                arb_init(m);
+                acb_abs(m, rt + k, prec);
+                arb_sub_si(m, m, 1, prec);
+                outside += arb_is_positive(m);
+                arb_clear(m);
+            }
+        }
+        assert_int_equal(outside, 2);   /* one root outside at each of the two points */
+        _acb_vec_clear(rt, 3);
+        acb_poly_clear(p);
+        acb_clear(z); acb_clear(c);
+        fmpq_clear(q);
+    }
+    json_decref(doc);
+}
+
+/* lambda^2 + c lambda + 1, c = z^3 - 2 z: never stable, marginal iff c is
+ * real with |c| < 2 (cases/complex/conjugate-pair-zregion.case, by hand) */
+static int conjpair_z(const fmpq_t x, const fmpq_t y)
+{
+    fmpq_t cr, ci, t;
+    int k;
+    fmpq_init(cr); fmpq_init(ci); fmpq_init(t);
+    /* Re c = x^3 - 3 x y^2 - 2 x, Im c = 3 x^2 y - y^3 - 2 y */
+    fmpq_mul(cr, x, x);
+    fmpq_mul(t, y, y);
+    fmpq_mul_si(t, t, 3);
+    fmpq_sub(cr, cr, t);
+    fmpq_sub_si(cr, cr, 2);
+    fmpq_mul(cr, cr, x);
+    fmpq_mul(ci, x, x);
+    fmpq_mul_si(ci, ci, 3);
+    fmpq_mul(t, y, y);
+    fmpq_sub(ci, ci, t);
+    fmpq_sub_si(ci, ci, 2);
+    fmpq_mul(ci, ci, y);
+    fmpq_abs(cr, cr);
+    k = fmpq_is_zero(ci) && fmpq_cmp_si(cr, 2) < 0;
+    fmpq_clear(cr); fmpq_clear(ci); fmpq_clear(t);
+    return k;
+}
+
+/* the marginal hyperbola 3 x^2 - y^2 = 2 reached only through irrational
+ * samples: both formulas against the closed form at 300 rational points
+ * (100 anywhere, 100 on the real axis, 100 on the hyperbola: the line
+ * through (1, 1) of slope t meets it again at x = 1 + u, y = 1 + t u,
+ * u = (2 t - 6)/(3 - t^2)), the point verdict at every tenth */
+static void test_zregion_conjugate_pair(void **state)
+{
+    const char *rel = "cases/complex/conjugate-pair-zregion.case";
+    int outcome;
+    json_t *doc = tu_run_case(rel, NULL, -1, &outcome);
+    const json_t *o = json_array_get(json_object_get(doc, "results"), 0);
+    flint_rand_t st;
+    fmpq *xs = _fmpq_vec_init(300), *ys = _fmpq_vec_init(300);
+    fmpq_t t, u;
+    slong i, hyp = 0, marg = 0;
+    (void) state;
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    assert_int_equal(json_integer_value(json_object_get(o, "marginal_undecided_cells")), 0);
+    flint_randinit(st);
+    fmpq_init(t); fmpq_init(u);
+    for (i = 0; i < 300; i++) {
+        fmpq *x = xs + i, *y = ys + i;
+        if (i < 100) {
+            rand_q(x, st, -2, 2);
+            rand_q(y, st, -2, 2);
+        } else if (i < 200) {
+            rand_q(x, st, -2, 2);
+            fmpq_zero(y);
+        } else {
+            do rand_q(t, st, -4, 4); while (fmpq_cmp_si(t, 3) == 0);
+            fmpq_mul(u, t, t);
+            fmpq_neg(u, u);
+            fmpq_add_si(u, u, 3);            /* 3 - t^2 != 0: t rational */
+            fmpq_mul_si(x, t, 2);
+            fmpq_sub_si(x, x, 6);
+            fmpq_div(u, x, u);
+            fmpq_add_si(x, u, 1);
+            fmpq_mul(y, t, u);
+            fmpq_add_si(y, y, 1);
+            hyp++;
+        }
+        marg += conjpair_z(xs + i, ys + i) == 1 && i >= 200;
+    }
+    assert_int_equal(hyp, 100);
+    assert_true(marg >= 10);   /* the hyperbola's marginal arcs are hit, not only its unstable parts */
+    check_points(o, case_text(rel), xs, ys, 300, conjpair_z, 0, rel);
+    for (i = 0; i < 300; i += 10)
+        if (cx_point_verdict(case_text(rel), xs + i, ys + i) != conjpair_z(xs + i, ys + i)) {
+            char *a = fmpq_get_str(NULL, 10, xs + i), *b = fmpq_get_str(NULL, 10, ys + i);
+            fail_msg("%s: at z = %s + (%s) i the point verdict differs from the closed form", rel, a, b);
+        }
+    _fmpq_vec_clear(xs, 300);
+    _fmpq_vec_clear(ys, 300);
+    fmpq_clear(t); fmpq_clear(u);
+    flint_randclear(st);
+    json_decref(doc);
+}
+
+static void test_zregion_open_cells(void **state)
+{
+    (void) state;
+    /* BDF3 on y' = z y, h = 1: (11/6 - z) lambda^3 - 3 lambda^2 + 3/2 lambda - 1/3
+     * (times 6); at z = 25/24 +- i sqrt(15)/8 the root moduli are 0.3564, 0.3592,
+     * 2.8059 (mpmath polyroots, 40 digits) */
+    open_cells_check("bdf 3", "25/24", 15, 64, "64*im(z)^2 - 15", (slong[]) {-2, 9, -18, 11},
+                     (slong[]) {0, 0, 0, -6}, 6);
+    /* AB3: lambda^3 - lambda^2 - z (23 lambda^2 - 16 lambda + 5)/12 (times 12); at
+     * z = 288/1495 +- i sqrt(1567536/2235025) the moduli are 0.3581, 0.6851, 1.4597 */
+    open_cells_check("adams-bashforth 3", "288/1495", 1567536, 2235025, "2235025*im(z)^2 - 1567536",
+                     (slong[]) {0, 0, -12, 12}, (slong[]) {-5, 16, -23, 0}, 12);
 }
 
 int main(void)
@@ -960,6 +1151,8 @@ int main(void)
         cmocka_unit_test(test_map_arcs),
         cmocka_unit_test(test_bad),
         cmocka_unit_test(test_zregion),
+        cmocka_unit_test(test_zregion_open_cells),
+        cmocka_unit_test(test_zregion_conjugate_pair),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
