@@ -55,7 +55,7 @@ fi
 # the random planted parts (tests/truth/truth.py PART SEED COUNT)
 if command -v python3 >/dev/null 2>&1; then
     for spec in "qi 1 20" "jordan 1 12" "jordan-param 1 3" "pade 1 24" "lmm 1 6" \
-                "region2 1 6" "sweep 1 6" "forall 1 8"; do
+                "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done

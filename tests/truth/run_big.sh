@@ -9,7 +9,7 @@ SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
 export RS
 total_fail=0
-for part in qi jordan jordan-param pade lmm region2 sweep forall; do
+for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     okc=0; fc=0

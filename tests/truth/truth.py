@@ -24,6 +24,13 @@ rational arithmetic with fractions.Fraction only, no recstab code):
           quadratic in (a, b): the region formula vs an exact own verdict at
           random rational points and at rational points on p(1) = 0, p(-1) = 0.
   sweep   sweep of a parameter vs the own verdict at each grid point.
+  forall  `region A for all [w]` of planted products whose uniform range is derived by hand.
+  qi-region  `region a`, `hurwitz` and `jury` conditions of Q(i) polynomials with roots
+          a m u (u on the circle, m rational) and planted fixed roots vs the exact truth.
+  zregion `region re(z), im(z)` of Q(z) lambda - P(z) vs |P(z)|^2 < |Q(z)|^2 at Gaussian
+          rational z, including points on the boundary (roots of P - e Q, |e| = 1).
+  claimreg  `claim stable when` each rational interval of `region a`: never refuted on a
+          stable interval, refuted on an unstable one; the own verdict at its midpoint.
 
 Usage: truth.py PART SEED COUNT [RECSTAB]   prints "ok ..." / "FAIL ..." lines.
 """
@@ -224,6 +231,8 @@ def part_qi(rng, count):
             body = ("char (lambda - a)" + "".join("*(lambda - %s)" % r.fmt() for r in roots[1:])
                     + "\nset a = %s%s%s*i" % (roots[0].re, "+" if roots[0].im >= 0 else "-", abs(roots[0].im)))
         text = head + body + "\nanalyse stability\nanalyse radius\nanalyse modes\nanalyse jury\nanalyse hurwitz\n"
+        if form != "set":               # simulate refuses complex set values (documented)
+            text += "analyse simulate steps=400\n"
         tag = "qi-%d-%s" % (k, form)
         rc, doc, err = run(text)
         if rc != 0 or doc is None:
@@ -255,6 +264,9 @@ def part_qi(rng, count):
                 bad.append("%s counts %s/%s/%s" % (name, j["inside"], j["on"], j["outside"]))
             if j.get("verdict") == "never stable" and st == "stable":
                 bad.append("%s says never stable at a stable point" % name)
+        sim = find(doc, "simulate")
+        if sim is not None and isinstance(sim.get("verdict"), dict) and sim["verdict"].get("status") not in (None, st):
+            bad.append("simulate's verdict %s" % sim["verdict"])
         m = find(doc, "modes")
         if m is not None:
             ec = m.get("exact_check")     # over Q(i) only (a real p: the real route's modes)
@@ -396,10 +408,11 @@ def part_jordan(rng, count):
             body = "unknown " + " ".join(names) + "\n" + "".join(
                 "eq %s[n+1] = %s\n" % (names[i], " + ".join("(%s)*%s[n]" % (M[i][j], names[j]) for j in range(n)))
                 for i in range(n))
-        text = "title planted Jordan structure %s\n%sanalyse stability\nanalyse jury\n" % (kinds, body)
+        text = ("title planted Jordan structure %s\n%sanalyse stability\nanalyse jury\nanalyse routh\n"
+                "analyse simulate\nclaim bounded\n" % (kinds, body))
         tag = "jordan-%d-%s" % (k, form)
         rc, doc, err = run(text)
-        if rc != 0 or doc is None:
+        if rc not in (0, 1) or doc is None or (rc == 1 and truth in ("stable", "marginal")):
             fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(text, tag)))
             continue
         s = find(doc, "stability")
@@ -409,6 +422,15 @@ def part_jordan(rng, count):
             bad.append("stability %s, planted %s" % (s["status"], truth))
         if j is not None and j.get("status") not in (None, truth):
             bad.append("jury %s, planted %s" % (j.get("status"), truth))
+        ro = find(doc, "routh")
+        if ro is not None and ro.get("status") not in (None, truth):
+            bad.append("routh %s, planted %s" % (ro.get("status"), truth))
+        cl = find(doc, "claim")
+        want_claim = "proved" if truth in ("stable", "marginal") else "refuted"
+        if cl is None or cl.get("status") != want_claim:
+            bad.append("claim bounded %s, planted %s" % (cl and cl.get("status"), want_claim))
+        if rc == 1 and want_claim == "proved":
+            bad.append("exit 1 with a bounded scheme")
         if bad:
             fail("%s: %s (J blocks %s); case %s" % (tag, "; ".join(bad), blocks, save_failing(text, tag)))
         else:
@@ -435,11 +457,17 @@ def part_jordan_param(rng, count):
             "eq %s[n+1] = %s\n" % (names[i], " + ".join("((%s) - (%s)*a)*%s[n]" % (M0[i][j], M1[i][j], names[j])
                                                         for j in range(n)))
             for i in range(n))
-        text = "title Jordan block at a = 0 only\n%sanalyse region a\n" % body
+        text = ("title Jordan block at a = 0 only\n%sanalyse region a\nclaim bounded when 0 < a <= 2\n"
+                "claim bounded when 0 <= a <= 2\nclaim bounded when 1 <= a <= 5/2\n" % body)
         tag = "jordan-param-%d" % k
         rc, doc, err = run(text)
-        if rc != 0 or doc is None:
+        if rc != 1 or doc is None:      # exit 1: two claims are false
             fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(text, tag)))
+            continue
+        cl = [r.get("status") for r in doc["cases"][0]["results"] if r.get("analysis") == "claim"]
+        if cl[0] == "refuted" or cl[1:] != ["refuted", "refuted"]:
+            fail("%s: claims %s, planted [proved, refuted (Jordan block at a = 0), refuted (a > 2)]; case %s"
+                 % (tag, cl, save_failing(text, tag)))
             continue
         reg = find(doc, "region")
         got = summarize_region(reg)
@@ -910,8 +938,194 @@ def part_forall(rng, count):
                                                      " undecided at " + ", ".join(und) if und else ""))
 
 
+# ---------------------------------------------------------------- part qi-region
+def part_qi_region(rng, count):
+    """region a of p = prod_j (lambda - a m_j u_j) prod_k (lambda - r_k) over Q(i): u_j circle
+    points (rational tan), m_j > 0 rational, r_k planted Gaussian rationals.  At a rational
+    a every root is a known Gaussian rational: the truth at a probe is planted_truth of
+    them (|a m_j u_j| = |a| m_j: crossings at |a| = 1/m_j, coincidences a m_j u_j = r_k
+    where r_k/(m_j u_j) is real)."""
+    for k in range(count):
+        scaled = [(rand_frac(rng, 1, 3, (1, 2, 3)) or F(1), circle_point(rng)) for _ in range(rng.randint(1, 2))]
+        fixed = []
+        for _ in range(rng.randint(0, 2)):
+            c = rng.random()
+            fixed.append(inside_point(rng) if c < 0.5 else circle_point(rng) if c < 0.85 else outside_point(rng))
+        probes = {F(0)}
+        for m, u in scaled:
+            probes |= {1 / m, -1 / m}
+            for r in fixed:
+                q = r / (u * G(m))
+                if q.im == 0:
+                    probes.add(q.re)
+        for m1, u1 in scaled:
+            for m2, u2 in scaled:
+                pass
+        br = sorted(probes)
+        probes = br + [(x + y) / 2 for x, y in zip(br, br[1:])] + [br[0] - 1, br[-1] + 1]
+
+        def truth(a):
+            return planted_truth([u * G(a * m) for m, u in scaled] + fixed)[0]
+        text = ("title planted Q(i) region\nparam a\nchar "
+                + "*".join(["(lambda - a*%s*%s)" % (m, u.fmt()) for m, u in scaled] +
+                           ["(lambda - %s)" % r.fmt() for r in fixed])
+                + "\nanalyse region a\nanalyse hurwitz\nanalyse jury\nanalyse sweep a from -3 to 3 steps 24\n")
+        tag = "qi-region-%d" % k
+        rc, doc, err = run(text, ["--time-limit", "30"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(text, tag)))
+            continue
+        reg = find(doc, "region")
+        bad, und = [], []
+        for v in probes:
+            got = region_status_at(reg, v)
+            if got in ("undecided", None):
+                und.append(str(v))
+                continue
+            if got != truth(v):
+                bad.append("a=%s: region %s, planted %s" % (v, got, truth(v)))
+        # the sweep's rows (grid -3, -11/4, ..., 3: hits the breakpoints +-1/m for m in {1, 2, 4, 4/3, ...})
+        sw = find(doc, "sweep")
+        for row in (sw or {}).get("rows", []):
+            row = dict(zip(sw["columns"], row)) if isinstance(row, list) else row
+            v = F(str(row.get("a_exact") or row.get("a")))
+            if row.get("verdict") != truth(v):
+                bad.append("sweep a=%s: %s, planted %s" % (v, row.get("verdict"), truth(v)))
+        # hurwitz (Bilharz) and jury (complex Schur-Cohn) conditions: stable iff all hold
+        for name in ("hurwitz", "jury"):
+            h = find(doc, name)
+            if h is None or h.get("verdict") != "stable iff the conditions hold":
+                if h is not None and h.get("verdict") == "never stable" and any(truth(v) == "stable" for v in probes):
+                    bad.append("%s: never stable, but planted stable somewhere" % name)
+                continue
+            conds = h.get("conditions") or []
+            if not all(isinstance(c, str) for c in conds):
+                continue
+            for v in probes:
+                holds = all(ev_cond(c, v, F(0)) for c in conds)
+                if holds != (truth(v) == "stable"):
+                    bad.append("%s conditions %s at a=%s, planted %s" % (name, holds, v, truth(v)))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:4]), save_failing(text, tag)))
+        else:
+            ok("%s: %d probes agree%s" % (tag, len(probes) - len(und), " undecided at " + ", ".join(und) if und else ""))
+
+
+# ---------------------------------------------------------------- part zregion
+def part_zregion(rng, count):
+    """`region re(z), im(z)` of a one-step map Q(z) lambda - P(z), P and Q random of degree <= 2:
+    at a Gaussian rational z (Q(z) != 0) the single root P(z)/Q(z) is exactly known, stable iff
+    |P(z)|^2 < |Q(z)|^2, marginal iff equal.  Probes: random Gaussian rationals and, on the
+    boundary, z where |P| = |Q| is forced: the roots of P - e Q for circle points e (when rational)."""
+    for k in range(count):
+        dp, dq = rng.randint(0, 2), rng.randint(1, 2)
+        P = [rand_frac(rng, -2, 2, (1, 2, 3)) for _ in range(dp + 1)]
+        Q = [rand_frac(rng, -2, 2, (1, 2, 3)) for _ in range(dq + 1)]
+        P[0] = P[0] or F(1)
+        Q[0] = Q[0] or F(1)
+        if Q[-1] == 0:
+            Q[-1] = F(1)
+        text = ("title planted z-plane region\nparam z complex\nchar (%s)*lambda - (%s)\n"
+                "analyse region re(z), im(z)\n" % (ptext(Q, "z"), ptext(P, "z")))
+        tag = "zregion-%d" % k
+        rc, doc, err = run(text, ["--time-limit", "30"])
+        if rc == 2 and err.strip():
+            ok("%s: refused (%s)" % (tag, err.strip()[:120]))
+            continue
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(text, tag)))
+            continue
+        reg = find(doc, "region")
+        form = reg.get("formula", {})
+
+        def cv(poly, z):
+            acc = G(0)
+            for c in reversed(poly):
+                acc = acc * z + G(c)
+            return acc
+        pts = [G(rand_frac(rng, -3, 3), rand_frac(rng, -3, 3)) for _ in range(30)]
+        # boundary points: degree-1 P - e Q with e = +-1, +-i gives z = -(P0 - e Q0)/(P1 - e Q1)
+        for e in (G(1), G(-1), G(0, 1), G(0, -1), circle_point(rng)):
+            a0 = G(P[0]) - e * G(Q[0])
+            a1 = G(P[1] if len(P) > 1 else 0) - e * G(Q[1])
+            a2 = G(P[2] if len(P) > 2 else 0) - e * G(Q[2] if len(Q) > 2 else 0)
+            if a2 == G(0) and not a1 == G(0):
+                pts.append(-(a0 / a1))
+        bad = []
+        for z in pts:
+            qz, pz = cv(Q, z), cv(P, z)
+            if qz.abs2() == 0:
+                continue
+            st = "stable" if pz.abs2() < qz.abs2() else "marginal" if pz.abs2() == qz.abs2() else "unstable"
+            x, y = z.re, z.im
+            fs = ev_formula([[c.replace("re(z)", "a").replace("im(z)", "b") for c in cj] for cj in form.get("stable", [])], x, y)
+            if fs != (st == "stable"):
+                bad.append("z=%s: own %s, formula stable=%s" % (z, st, fs))
+            if reg.get("marginal_complete", reg.get("formula_complete")):
+                fm = ev_formula([[c.replace("re(z)", "a").replace("im(z)", "b") for c in cj] for cj in form.get("marginal", [])], x, y)
+                if fm != (st == "marginal"):
+                    bad.append("z=%s: own %s, formula marginal=%s" % (z, st, fm))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), save_failing(text, tag)))
+        else:
+            ok("%s: %d points agree" % (tag, len(pts)))
+
+
+# ---------------------------------------------------------------- part claimreg
+def part_claimreg(rng, count):
+    """claim vs region on random real schemes p(lambda; a) (degree 2-3, coefficients affine in a):
+    for each interval of `region a` with rational ends, `claim stable when` its interior must
+    not be refuted when the region says stable (and must be refuted when it says unstable);
+    the own exact verdict at the interval's midpoint is checked against the region too."""
+    for k in range(count):
+        deg = rng.choice([2, 3])
+        coefs = ["(%s) + (%s)*a" % (rand_frac(rng, -1, 1, (1, 2, 4)), rand_frac(rng, -1, 1, (1, 2, 4)))
+                 for _ in range(deg)] + ["1"]
+        ptxt = " + ".join("(%s)*lambda^%d" % (cf, i) for i, cf in enumerate(coefs))
+        base = "title claim vs region\nparam a\nchar %s\n" % ptxt
+        tag = "claimreg-%d" % k
+        rc, doc, err = run(base + "analyse region a\n")
+        if rc != 0 or doc is None:
+            fail("%s: region exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(base, tag)))
+            continue
+        reg = find(doc, "region")
+        claims, bad = [], []
+        for x in reg.get("intervals", []):
+            lo, hi = x.get("lo"), x.get("hi")
+            if isinstance(lo, dict) or isinstance(hi, dict) or x.get("status") not in ("stable", "unstable"):
+                continue
+            lo = None if lo in (None, "-inf") else F(lo)
+            hi = None if hi in (None, "inf") else F(hi)
+            if lo is not None and hi is not None and lo == hi:
+                continue
+            mid = (lo + hi) / 2 if lo is not None and hi is not None else (hi - 1 if lo is None and hi is not None
+                                                                          else lo + 1 if lo is not None else F(0))
+            own = exact_status([ev(ratify(cf), mid, F(0)) for cf in coefs])
+            if own is not None and own != x["status"]:
+                bad.append("a=%s: own %s, region %s" % (mid, own, x["status"]))
+            cond = " and ".join(([("a > %s" % lo)] if lo is not None else []) + ([("a < %s" % hi)] if hi is not None else []))
+            if cond:
+                claims.append((x["status"], cond))
+        if claims:
+            text = base + "".join("claim stable when %s\n" % c for _, c in claims)
+            rc2, doc2, err2 = run(text)
+            if doc2 is None:
+                bad.append("claims exit %d (%s)" % (rc2, err2.strip()[:150]))
+            else:
+                res = [r for r in doc2["cases"][0]["results"] if r.get("analysis") == "claim"]
+                for (st, cond), r in zip(claims, res):
+                    if st == "stable" and r.get("status") == "refuted":
+                        bad.append("claim stable when %s refuted (%s) on a region-stable interval" % (cond, r.get("counterexample")))
+                    if st == "unstable" and r.get("status") != "refuted":
+                        bad.append("claim stable when %s %s on a region-unstable interval" % (cond, r.get("status")))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), save_failing(base + "analyse region a\n", tag)))
+        else:
+            ok("%s: %d intervals, claims agree" % (tag, len(claims)))
+
+
 PARTS = {"qi": part_qi, "jordan": part_jordan, "jordan-param": part_jordan_param, "pade": part_pade,
-         "lmm": part_lmm, "region2": part_region2, "sweep": part_sweep, "forall": part_forall}
+         "lmm": part_lmm, "region2": part_region2, "sweep": part_sweep, "forall": part_forall, "qi-region": part_qi_region, "zregion": part_zregion, "claimreg": part_claimreg}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
