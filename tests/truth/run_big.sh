@@ -4,6 +4,9 @@
 #   sh tests/truth/run_big.sh [COUNT] [SEEDS]      (defaults: 200 per part, seeds 101 102 103)
 # Prints one summary line per part and every FAIL line; failing cases are kept
 # in ${TRUTH_KEEP:-/tmp/truth-failures}.
+# Measured 2026-11-26 (2 shared cores, loaded): `sh tests/truth/run_big.sh 100 "101 102"`
+# ran 1833 planted cases, 0 failed, 94.2 s user + 45.5 s sys CPU (jordan skips
+# matrices above 6 x 6; pade has 24 distinct (m, n) per seed).
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
