@@ -233,7 +233,9 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
         rs_json_add_count(o, ju->count);
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:b}", "with", "routh (bilinear)", "agree", agree));
         if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
-        rs_run_emit_exact(run, v, o);
+        r = rs_run_numeric_verdict(run, p, ju->count, o);
+        if (r == RS_OK) rs_run_emit_exact(run, v, o);
+        else json_decref(o);
     }
     rs_jury_clear(ju);
     rs_routh_clear(ro);

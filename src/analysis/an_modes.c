@@ -3,6 +3,8 @@
  * reference frequency, the relative frequency error. */
 #include <math.h>
 #include <stdlib.h>
+#include <fmpz.h>
+#include <fmpq_poly.h>
 #include <acb_poly.h>
 #include "analysis/registry.h"
 #include "numeric/modes.h"
@@ -82,6 +84,21 @@ static int isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t a
 {
     slong d = cdeg(ar, ai), k, prec;
     int done = 0;
+    /* a root at 0 (once: a is squarefree) is exact; Arb's ball around it has no
+     * relative accuracy at any precision, so it is split off first */
+    if (d >= 1 && (fmpq_poly_is_zero(ar) || fmpz_is_zero(ar->coeffs))
+        && (fmpq_poly_is_zero(ai) || fmpz_is_zero(ai->coeffs))) {
+        fmpq_poly_t sr, si;
+        fmpq_poly_init(sr);
+        fmpq_poly_init(si);
+        fmpq_poly_shift_right(sr, ar, 1);
+        fmpq_poly_shift_right(si, ai, 1);
+        acb_zero(out);
+        done = d == 1 || isolate_sqfree(out + 1, sr, si, bits, max_prec);
+        fmpq_poly_clear(sr);
+        fmpq_poly_clear(si);
+        return done;
+    }
     for (prec = 2 * bits + 64; prec <= max_prec && !done; prec *= 2) {
         acb_poly_t p;
         acb_t c;
@@ -232,7 +249,9 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     }
     rs_radius_init(rr);
     o = NULL;
-    if (r == RS_OK)
+    /* a real dead-beat p = c (det A = c lambda^k, the roots at 0 divided out):
+     * no mode, as `stability` and `radius` accept it */
+    if (r == RS_OK && (cx || fmpz_poly_degree(p) >= 1))
         r = cx ? complex_roots(rr, pr, pi, 100, run->opt->max_prec, run->err)
                : rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
     if (r == RS_OK) {

@@ -75,8 +75,9 @@ static int routh_numeric(rs_run_t *run, const fmpz_poly_t p, json_t *o)
     json_object_set_new(o, "events", ev);
     json_object_set_new(o, "sign_changes", json_integer(ro->sign_changes));
     rs_json_add_count(o, ro->count);
+    r = rs_run_numeric_verdict(run, p, ro->count, o);
     rs_routh_clear(ro);
-    return RS_OK;
+    return r;
 }
 
 /* The events of a symbolic array: a degree drop of q for every value, a

@@ -79,6 +79,12 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
                    const fmpq *vals, slong nv, const fmpz_poly_t p, const rs_rootcount_t rc,
                    int singular, json_t *o);
 
+/* rs_run_verdict at the case's values for the counts rc of the numeric p:
+ * the "status" of `jury` and `routh` as `stability` decides it (a system's
+ * semisimple repeated circle root is marginal; a singular point singular),
+ * not the scalar rule of the counts alone. */
+int rs_run_numeric_verdict(rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc, json_t *o);
+
 /* 1 when the point pp (every variable of s) satisfies the compiled
  * conditions cps and keeps every divisor of the equations non-zero. */
 int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *pp, const rs_scheme_t s);

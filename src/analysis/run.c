@@ -730,6 +730,15 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
     return r;
 }
 
+int rs_run_numeric_verdict(rs_run_t *run, const fmpz_poly_t p, const rs_rootcount_t rc, json_t *o)
+{
+    rs_variant_t *v;
+    rs_status_t st;
+    int r = rs_run_numeric_variant(run, &v);
+    if (r == RS_OK) r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, o);
+    return r;
+}
+
 int rs_run_point_admissible(const rs_condpoly_t *cps, slong ncps, fmpq *const *pp, const rs_scheme_t s)
 {
     slong k;

@@ -1,0 +1,64 @@
+#!/bin/sh
+# suite_truth.sh -- planted truths against the newest verdicts (h-truth):
+# random cases whose verdicts are known by construction (tests/truth/truth.py
+# derives each independently, in exact rational / Gaussian rational
+# arithmetic) and the regressions found that way (cases/truth/*.case, each
+# expected value derived by hand in the case's comment).  Fixed seeds, small
+# counts (each part well under 2 s CPU); larger runs: tests/truth/run_big.sh.
+# Prints "ok ..." or "FAIL ..." per check.
+BUILD=${BUILD:-build}
+RS="$BUILD/recstab"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+ok()   { echo "ok $*"; }
+fail() { echo "FAIL $*"; }
+
+# field of the n-th result (0-based) of a case, compact JSON
+jfield() { # case index filter
+    "$RS" --json "$1" 2>/dev/null | jq -c ".cases[0].results[$2]$3" 2>/dev/null
+}
+check() { # name want got
+    if [ "$2" = "$3" ]; then ok "$1: $2"; else fail "$1: got '$3', expected '$2'"; fi
+}
+
+if command -v jq >/dev/null 2>&1; then
+    # semisimple double root -1 of a system: stability, jury and routh all marginal
+    C=cases/truth/jury-semisimple-minus-one.case
+    check "semisimple -1: stability" '"marginal"' "$(jfield $C 0 .status)"
+    check "semisimple -1: jury (was unstable)" '"marginal"' "$(jfield $C 1 .status)"
+    check "semisimple -1: routh (was unstable)" '"marginal"' "$(jfield $C 2 .status)"
+    check "semisimple -1: jury kernel" '2' "$(jfield $C 1 '.circle_roots[0].kernel_dim')"
+    # the same det with a Jordan block: unstable everywhere
+    C=cases/truth/jury-jordan-minus-one.case
+    check "Jordan -1: stability" '"unstable"' "$(jfield $C 0 .status)"
+    check "Jordan -1: jury" '"unstable"' "$(jfield $C 1 .status)"
+    check "Jordan -1: routh" '"unstable"' "$(jfield $C 2 .status)"
+    # modes over Q(i) with a root at 0 and a double root (was exit 2)
+    C=cases/truth/modes-zero-and-double-root.case
+    check "modes Q(i) 0 and double root: roots" \
+        '[["0","0"],["0.333333333333333","0.142857142857143"],["-0.857142857142857","0"],["-0.857142857142857","0"]]' \
+        "$(jfield $C 1 '.modes | map([.root.re, .root.im])')"
+    check "modes Q(i) 0 and double root: exact check" '"stable"' "$(jfield $C 1 .exact_check.status)"
+    # dead-beat modes (was exit 2): no mode
+    C=cases/truth/modes-dead-beat.case
+    check "modes dead-beat" '[]' "$(jfield $C 1 .modes)"
+    # uniform range of a planted family (by hand in the case's comment)
+    C=cases/truth/forall-planted-double-minus-one.case
+    check "forall planted: intervals" \
+        '[["unstable",null,"-2",false,true],["stable","-2","2",false,false],["marginal","2","2",true,true],["unstable","2",null,false,false]]' \
+        "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .lo_closed, .hi_closed])')"
+else
+    ok "skipped the cases/truth field checks: no jq"
+fi
+
+# the random planted parts (tests/truth/truth.py PART SEED COUNT)
+if command -v python3 >/dev/null 2>&1; then
+    for spec in "qi 1 20" "jordan 1 12" "jordan-param 1 3" "pade 1 24" "lmm 1 6" \
+                "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+else
+    ok "skipped the random planted truths: no python3"
+fi
