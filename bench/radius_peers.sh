@@ -32,8 +32,11 @@ sbin=${STATIC_BIN:-$(dirname "$bin")/recstab-static}
 [ -x "$sbin" ] || sbin="" 
 mkdir -p "$dir"
 python3 "$here/radius_peers_gen.py" "$dir" $polys || exit 1
-have_gp=0; command -v gp > /dev/null 2>&1 && have_gp=1
-have_mps=0; command -v mpsolve > /dev/null 2>&1 && have_mps=1
+# PEERS: which peers run (default "gp mpsolve"; "" times recstab alone,
+# e.g. to re-measure recstab on rows whose peer times are already known)
+peers=" ${PEERS-gp mpsolve} "
+have_gp=0; case $peers in *" gp "*) command -v gp > /dev/null 2>&1 && have_gp=1 ;; esac
+have_mps=0; case $peers in *" mpsolve "*) command -v mpsolve > /dev/null 2>&1 && have_mps=1 ;; esac
 
 # run OUT CMD...: prints "wall cpu" (or "limit").  A command under 0.3 s
 # CPU is run again PEER_REPS times (default 10) in one timed shell loop and
