@@ -23,6 +23,15 @@
 extern "C" {
 #endif
 
+/* Which exact route counted the roots of p (of h = p0 / gcd(p0, p0*) when
+ * that gcd is not 1) off the unit circle. */
+typedef enum {
+    RS_JURY_ROUTE_TABLE = 0,   /* the integer Schur-Cohn table (Rouche) */
+    RS_JURY_ROUTE_MODULAR,     /* the minors' signs modulo primes (CRT) */
+    RS_JURY_ROUTE_MATRIX,      /* inertia of the Schur-Cohn matrix */
+    RS_JURY_ROUTE_GCD          /* nothing left off gcd(p0, p0*) */
+} rs_jury_route_t;
+
 typedef struct {
     rs_rootcount_t count;
     int table_regular;       /* 1 if the classical Jury table had no singular step */
@@ -34,6 +43,8 @@ typedef struct {
     slong gcd_degree;        /* degree of gcd(p, p*) split off */
     slong modular_primes;    /* rs_jury_count_fmpz_poly: primes of the regular
                                 table's minors (0: the integer table ran) */
+    int route;               /* rs_jury_route_t: what counted the roots off
+                                the circle (of p, or of h = p0 / gcd) */
 } rs_jury_struct;
 typedef rs_jury_struct rs_jury_t[1];
 

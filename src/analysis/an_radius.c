@@ -71,6 +71,7 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
         if (r == RS_OK) {
             json_object_set(o, "count_methods", json_object_get(t, "methods"));
             json_object_set(o, "count_agree", json_object_get(t, "agree"));
+            json_object_set(o, "schur_cohn_route", json_object_get(t, "schur_cohn_route"));
             if (json_object_get(t, "schur_cohn_count") != NULL)
                 json_object_set(o, "schur_cohn_count", json_object_get(t, "schur_cohn_count"));
         }
@@ -86,10 +87,7 @@ static int radius_count_high(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t
         json_object_set_new(o, "count_agree", json_boolean(agree));
         /* which exact route counted: the minors' signs from word-size
          * primes (jury.c), or the integer table */
-        json_object_set_new(o, "schur_cohn_route", ju->modular_primes > 0
-            ? json_pack("{s:s,s:I}", "method", "Schur-Cohn minors modulo primes (Hadamard bound, CRT)",
-                        "primes", (json_int_t) ju->modular_primes)
-            : json_pack("{s:s}", "method", "integer Schur-Cohn table"));
+        json_object_set_new(o, "schur_cohn_route", rs_json_jury_route(ju));
         if (!agree) {
             json_t *d = json_object();
             run->outcome |= RS_OUTCOME_INCONSISTENT;

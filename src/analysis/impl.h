@@ -14,6 +14,7 @@
 #include "recstab/charpoly.h"
 #include "recstab/radius.h"
 #include "recstab/rootcount.h"
+#include "recstab/jury.h"
 #include "recstab/cond.h"
 #include "recstab/hurwitz.h"
 
@@ -179,6 +180,7 @@ int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, con
                         const char *what);
 int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
 void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
+json_t *rs_json_jury_route(const rs_jury_t ju);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
 /* conditions.c: the OR of Hurwitz branches of qz (over the sign of its

@@ -288,9 +288,32 @@ static int jury_count_schur_cohn(rs_rootcount_t rc, const fmpz_poly_t h,
  * polynomial identity over Z[a_0, ..., a_n], and F_k(0) = (-1)^k D_k with
  * D_k the leading principal minor of order k of the Schur-Cohn matrix S
  * (the header's S_jk): the Schur algorithm for S, whose displacement rank
- * is 2.  Both checked symbolically for generic coefficients, n = 4 and 5
- * (sympy, every minor and every division), and at every point of the unit
- * tests against the integer table.  Consequences:
+ * is 2.  Proof (identities in the field Q(a_0..a_n), then specialised):
+ *  (i) S = P^T P - Q^T Q with P, Q upper triangular Toeplitz, first rows
+ *      x = (a_n, ..., a_1) and y = (a_0, ..., a_{n-1}); Z the down shift,
+ *      S - Z S Z^T = x x^T - y y^T, and a matrix is fixed by this
+ *      displacement (Z nilpotent).
+ * (ii) With D_1 = S_00 = a_n^2 - a_0^2, u = a_n x - a_0 y, v = a_0 x - a_n y:
+ *      u u^T - v v^T = D_1 (x x^T - y y^T) and v_0 = 0, so the Schur
+ *      complement C of S_00 (Schur's algorithm, one hyperbolic step) has
+ *      D_1 (C - Z C Z^T) = u' u'^T - v' v'^T, u' = u_0..u_{n-2},
+ *      v' = v_1..v_{n-1}.  T f = a_0 f - a_n f* (degree n - 1) has
+ *      coefficients c_i = a_0 a_i - a_n a_{n-i}, i.e. x(Tf) = v' and
+ *      y(Tf) = -u': S(Tf) = -D_1 C.
+ * (iii) Minors of a Schur complement: D_k(f) = D_1 det C[0..k-2], hence
+ *      D_{k-1}(Tf) = -sigma^{k-2} D_k(f), sigma = F_1(0) = -D_1.
+ * (iv) Induction on n: run the table on g = Tf = F_1 (divisors 1, 1,
+ *      G_1(0), ...).  T is homogeneous of degree 2, so G_{k-1} =
+ *      sigma^{k-2} F_k for k >= 2 (G_1 = F_2, G_2 = T F_2 = sigma F_3, and
+ *      e_{k+1} = 2 e_k - e_{k-1} for the exponents); with the hypothesis
+ *      G_{k-1}(0) = (-1)^{k-1} D_{k-1}(g) and (iii),
+ *      F_k(0) = (-1)^{k-1} D_{k-1}(g) / sigma^{k-2} = (-1)^k D_k(f).
+ * Only these rational identities are used below, at points where every
+ * divisor is non-zero (checked); that the divisions are even exact over
+ * Z[a] (the integer table relies on it, and checks each one) is Bareiss'
+ * argument.  tests/unit/stability/test_jury.c checks both symbolically,
+ * with independent a_i, for n = 2..6, and the counts at every point of its
+ * property tests against the integer table and Routh.  Consequences:
  *  - modulo a prime where F_1(0) .. F_{n-2}(0) do not vanish, the same
  *    recursion in F_p gives the images of the integer F_k(0);
  *  - |S_jk| <= 2 |a|^2 (Cauchy-Schwarz on both sums), so Hadamard gives
@@ -553,6 +576,7 @@ static int jury_run(rs_jury_t j, const fmpz_poly_t p, int keep, rs_error_t err)
          * independent count is Routh's on the bilinear transform */
         j->count->inside = tin;
         j->count->outside = j->count->degree - tin;
+        j->route = j->modular_primes > 0 ? RS_JURY_ROUTE_MODULAR : RS_JURY_ROUTE_TABLE;
     } else if (status == RS_OK) {
         /* the circle part is counted from g; h = p0/g has none, and when
          * its own table is regular Rouche counts it without the matrix */
@@ -562,11 +586,18 @@ static int jury_run(rs_jury_t j, const fmpz_poly_t p, int keep, rs_error_t err)
         rs_jury_init(th);
         if (fmpz_poly_degree(h) >= 1)
             status = jury_table_count(th, h, &hin, &hreg, keep, err);
+        /* the route reported is h's (p's own table was singular) */
+        j->modular_primes = 0;
         if (status == RS_OK && hreg) {
             j->count->inside += hin;
             j->count->outside += fmpz_poly_degree(h) - hin;
-        } else if (status == RS_OK) {
+            j->modular_primes = th->modular_primes;
+            j->route = th->modular_primes > 0 ? RS_JURY_ROUTE_MODULAR : RS_JURY_ROUTE_TABLE;
+        } else if (status == RS_OK && fmpz_poly_degree(h) >= 1) {
             status = jury_count_schur_cohn(j->count, h, err);
+            j->route = RS_JURY_ROUTE_MATRIX;
+        } else {
+            j->route = RS_JURY_ROUTE_GCD;
         }
         rs_jury_clear(th);
     }

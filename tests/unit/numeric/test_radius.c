@@ -21,6 +21,8 @@
 #include <time.h>
 #include <arb_fmpz_poly.h>
 #include "recstab/radius.h"
+#include "recstab/jury.h"
+#include "recstab/routh.h"
 
 typedef int (*radius_fn)(rs_radius_t, const fmpz_poly_t, slong, slong,
                          rs_error_t);
@@ -870,7 +872,12 @@ static void test_high_degree_binomial(void **state)
  *   mpmath.mp.dps = 60; r = mpmath.polyroots(c[::-1], maxsteps=400,
  *   extraprec=400); mpmath.nstr(max(abs(z) for z in r), 45)
  * = 1.27236328894060322414207260929988041492729486 (45 digits, +-1 in the
- * last); checked at 40 digits. */
+ * last); checked at 40 digits.  The same mpmath roots give the count: 60
+ * of modulus < 1, 40 > 1 (the nearest modulus 8.98e-4 from 1:
+ * sum(abs(z) < 1 for z in r), min(abs(abs(z) - 1) for z in r)); the three
+ * high-degree counts are checked against it: the certified balls
+ * (rs_radius_count_balls), Schur-Cohn by the minors modulo primes
+ * (rs_jury_count_fmpz_poly, degree > 32) and Routh's integer PRS. */
 static void test_random_degree100(void **state)
 {
     static const slong c[101] = {
@@ -902,6 +909,25 @@ static void test_random_degree100(void **state)
     /* the certified interval is 40 digits wide at most and meets the
      * reference ball */
     assert_true(!arb_lt(r->upper, truth) && !arb_gt(r->lower, truth));
+    {
+        slong in, out;
+        rs_jury_t j;
+        rs_rootcount_t rc;
+        assert_int_equal(rs_radius_count_balls(&in, &out, r, 100), 1);
+        assert_int_equal(in, 60);
+        assert_int_equal(out, 40);
+        rs_jury_init(j);
+        assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+        assert_int_equal(j->route, RS_JURY_ROUTE_MODULAR);
+        assert_int_equal(j->count->inside, 60);
+        assert_int_equal(j->count->outside, 40);
+        rs_jury_clear(j);
+        rs_rootcount_init(rc);
+        assert_int_equal(rs_routh_int_count(rc, p, err), RS_OK);
+        assert_int_equal(rc->inside, 60);
+        assert_int_equal(rc->outside, 40);
+        rs_rootcount_clear(rc);
+    }
     rs_radius_clear(r);
     arb_clear(truth);
     fmpz_poly_clear(p);

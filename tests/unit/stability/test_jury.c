@@ -2,6 +2,7 @@
 #include "testutil.h"
 #include "closed_forms.h"
 #include <flint/fmpz_poly.h>
+#include <flint/fmpz_mpoly.h>
 #include "recstab/jury.h"
 #include "recstab/rootcount.h"
 #include "recstab/routh.h"
@@ -350,6 +351,7 @@ static void test_count_modular_closed_forms(void **state)
     assert_int_equal(j->count->on, 0);
     assert_int_equal(j->count->outside, 50);
     assert_true(j->modular_primes > 0);
+    assert_int_equal(j->route, RS_JURY_ROUTE_MODULAR);
     /* (3l + 1)^70 Phi_7(l): 70 in, 6 simple on; gcd(p, p*) = Phi_7, the
      * table of p is singular and h = (3l + 1)^70 (degree 70) goes modular */
     fmpz_poly_set_str(p, "2  1 3");
@@ -362,6 +364,8 @@ static void test_count_modular_closed_forms(void **state)
     assert_int_equal(j->count->on_mult[1], 6);
     assert_int_equal(j->count->outside, 0);
     assert_int_equal(j->table_regular, 0);
+    assert_int_equal(j->route, RS_JURY_ROUTE_MODULAR);   /* h's table */
+    assert_int_equal(j->gcd_degree, 6);
     /* (2l - 1)^40 (l + 2)^30 (l^2 + 1)^2: 40 in, +-i double, 30 out */
     fmpz_poly_set_str(p, "2  -1 2");
     fmpz_poly_pow(p, p, 40);
@@ -406,6 +410,141 @@ static void test_count_modular_closed_forms(void **state)
     fmpz_poly_clear(t);
 }
 
+/* The two identities under the modular count (jury.c, proved there from the
+ * displacement structure of the Schur-Cohn matrix S): with the divisors
+ * 1, 1, F_1(0), F_2(0), ... every division of the table
+ *   F_s = (F_{s-1}(0) F_{s-1} - lc(F_{s-1}) F_{s-1}*) / F_{s-3}(0)
+ * is exact over Z[a_0, ..., a_n], and F_k(0) = (-1)^k D_k with D_k the
+ * leading principal minor of order k of S.  Checked here symbolically, with
+ * the a_i independent variables, for n = 2..6 (n = 7 takes 10 s, too slow
+ * for the suite).  The D_k come from Bareiss' fraction-free elimination of S
+ * (its k-th pivot is D_k by Sylvester's identity; every division checked
+ * exact), an algorithm independent of the table. */
+static int jury_identities_hold(slong n)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_struct *F, *G, *P, *M;
+    fmpz_mpoly_t t, u, piv;
+    slong s, i, j, k, l, m;
+    int ok = 1;
+    fmpz_mpoly_ctx_init(ctx, n + 1, ORD_DEGREVLEX);
+    F = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    G = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    P = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    M = flint_malloc(n * n * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i <= n; i++) {
+        fmpz_mpoly_init(F + i, ctx);
+        fmpz_mpoly_init(G + i, ctx);
+        fmpz_mpoly_init(P + i, ctx);
+        fmpz_mpoly_gen(F + i, i, ctx);           /* a_i */
+    }
+    for (i = 0; i < n * n; i++)
+        fmpz_mpoly_init(M + i, ctx);
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_init(u, ctx);
+    fmpz_mpoly_init(piv, ctx);
+    /* S_jk = sum_{l <= min(j,k)} a_{n-j+l} a_{n-k+l} - a_{j-l} a_{k-l} */
+    for (j = 0; j < n; j++)
+        for (k = 0; k < n; k++)
+            for (l = 0; l <= FLINT_MIN(j, k); l++) {
+                fmpz_mpoly_mul(t, F + n - j + l, F + n - k + l, ctx);
+                fmpz_mpoly_add(M + j * n + k, M + j * n + k, t, ctx);
+                fmpz_mpoly_mul(t, F + j - l, F + k - l, ctx);
+                fmpz_mpoly_sub(M + j * n + k, M + j * n + k, t, ctx);
+            }
+    /* the table at nominal degrees m = n - s + 1 -> n - s */
+    for (s = 1, m = n; s <= n && ok; s++, m--) {
+        for (i = 0; i < m; i++) {
+            fmpz_mpoly_mul(t, F + 0, F + i, ctx);
+            fmpz_mpoly_mul(u, F + m, F + m - i, ctx);
+            fmpz_mpoly_sub(G + i, t, u, ctx);
+            if (s >= 3 && !fmpz_mpoly_divides(G + i, G + i, P + s - 3, ctx))
+                ok = 0;
+        }
+        for (i = 0; i < m; i++)
+            fmpz_mpoly_swap(F + i, G + i, ctx);
+        fmpz_mpoly_zero(F + m, ctx);
+        fmpz_mpoly_set(P + s - 1, F + 0, ctx);  /* F_s(0) */
+    }
+    /* Bareiss on S: pivot k is D_{k+1}; F_{k+1}(0) = (-1)^(k+1) D_{k+1} */
+    fmpz_mpoly_one(piv, ctx);
+    for (k = 0; k < n && ok; k++) {
+        if (k % 2 == 0)
+            fmpz_mpoly_neg(t, M + k * n + k, ctx);
+        else
+            fmpz_mpoly_set(t, M + k * n + k, ctx);
+        if (!fmpz_mpoly_equal(t, P + k, ctx))
+            ok = 0;
+        for (i = k + 1; i < n && ok; i++)
+            for (j = k + 1; j < n && ok; j++) {
+                fmpz_mpoly_mul(t, M + k * n + k, M + i * n + j, ctx);
+                fmpz_mpoly_mul(u, M + i * n + k, M + k * n + j, ctx);
+                fmpz_mpoly_sub(t, t, u, ctx);
+                if (!fmpz_mpoly_divides(M + i * n + j, t, piv, ctx))
+                    ok = 0;
+            }
+        fmpz_mpoly_set(piv, M + k * n + k, ctx);
+    }
+    for (i = 0; i <= n; i++) {
+        fmpz_mpoly_clear(F + i, ctx);
+        fmpz_mpoly_clear(G + i, ctx);
+        fmpz_mpoly_clear(P + i, ctx);
+    }
+    for (i = 0; i < n * n; i++)
+        fmpz_mpoly_clear(M + i, ctx);
+    fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_clear(u, ctx);
+    fmpz_mpoly_clear(piv, ctx);
+    flint_free(F);
+    flint_free(G);
+    flint_free(P);
+    flint_free(M);
+    fmpz_mpoly_ctx_clear(ctx);
+    return ok;
+}
+
+static void test_count_identities_symbolic(void **state)
+{
+    slong n;
+    (void) state;
+    for (n = 2; n <= 6; n++)
+        assert_true(jury_identities_hold(n));
+}
+
+/* Which route counted (rs_jury_t.route, reported as "schur_cohn_route"):
+ * lambda^2 + 3 lambda - 1 (roots (-3 +- sqrt 13) / 2: 0.30 inside, -3.30
+ * outside) has a singular table (|a_0| = |a_2|) and gcd(p, p*) = 1 (p + p*
+ * = 6 lambda shares no root with p): the Schur-Cohn matrix counts;
+ * lambda^2 + 1 (+-i) leaves nothing off gcd(p, p*) = p. */
+static void test_count_routes(void **state)
+{
+    fmpz_poly_t p;
+    rs_jury_t j;
+    rs_error_t err;
+    (void) state;
+    fmpz_poly_init(p);
+    rs_jury_init(j);
+    rs_error_init(err);
+    fmpz_poly_set_str(p, "3  -1 3 1");
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 1);
+    assert_int_equal(j->count->outside, 1);
+    assert_int_equal(j->route, RS_JURY_ROUTE_MATRIX);
+    assert_int_equal(j->gcd_degree, 0);
+    fmpz_poly_set_str(p, "3  1 0 1");
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->on, 2);
+    assert_int_equal(j->route, RS_JURY_ROUTE_GCD);
+    assert_int_equal(j->gcd_degree, 2);
+    /* 2 lambda - 1 (regular, degree 1 < 33): the integer table */
+    fmpz_poly_set_str(p, "2  -1 2");
+    assert_int_equal(rs_jury_count_fmpz_poly(j, p, err), RS_OK);
+    assert_int_equal(j->count->inside, 1);
+    assert_int_equal(j->route, RS_JURY_ROUTE_TABLE);
+    rs_jury_clear(j);
+    fmpz_poly_clear(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -418,6 +557,8 @@ int main(void)
         cmocka_unit_test(test_high_degree_property),
         cmocka_unit_test(test_count_modular_property),
         cmocka_unit_test(test_count_modular_closed_forms),
+        cmocka_unit_test(test_count_identities_symbolic),
+        cmocka_unit_test(test_count_routes),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
