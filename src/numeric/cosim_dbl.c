@@ -880,8 +880,11 @@ static int invit(double *Vr, double *Vi, slong col, const double *T, slong d, do
 }
 
 /* V (complex point, re/im arrays) = double eigenvectors of T, W ~= V^{-1}
- * (cinv); scratch: 4 d^2 + 6 d doubles; 0 when either fails */
-static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double *T, slong d, double *scratch)
+ * (cinv); cj[k] = 1 where column k is exactly the conjugate of column
+ * k - 1 (a pair), the other columns' eigenvalues real and the columns
+ * exactly real; scratch: 4 d^2 + 6 d doubles; 0 when either fails */
+static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, unsigned char *cj, const double *T, slong d,
+                   double *scratch)
 {
     double *A = scratch, *wr = A + d * d, *wi = wr + d, *v = wi + d, *lu = v + d, tn = 0;
     slong pstk[64], *piv = d <= 64 ? pstk : flint_malloc(d * sizeof(slong)), k, i;
@@ -892,32 +895,54 @@ static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double 
     ok = tn > 0 && hqr(wr, wi, A, d);
     tn *= (double) d * DBL_EPSILON;
     for (k = 0; ok && k < d; k++) {
-        if (k > 0 && wi[k] < 0 && wi[k - 1] == -wi[k] && wr[k - 1] == wr[k]) {
-            for (i = 0; i < d; i++) {   /* the conjugate pair's vector */
+        cj[k] = 0;
+        if (wi[k] < 0) {
+            /* hqr puts a pair at k - 1, k */
+            ok = k > 0 && wi[k - 1] == -wi[k] && wr[k - 1] == wr[k];
+            for (i = 0; ok && i < d; i++) {   /* the conjugate pair's vector */
                 Vr[i * d + k] = Vr[i * d + k - 1];
                 Vi[i * d + k] = -Vi[i * d + k - 1];
             }
+            cj[k] = 1;
             continue;
         }
-        ok = invit(Vr, Vi, k, T, d, wr[k], wi[k], tn, lu, piv);
+        if (wi[k] > 0) ok = k + 1 < d && wi[k + 1] == -wi[k] && wr[k + 1] == wr[k];
+        if (ok) ok = invit(Vr, Vi, k, T, d, wr[k], wi[k], tn, lu, piv);
+        for (i = 0; ok && wi[k] == 0 && i < d; i++) Vi[i * d + k] = 0;   /* real: the LU kept it real */
     }
     if (piv != pstk) flint_free(piv);
     return ok && cinv(Wr, Wi, Vr, Vi, scratch, d);
 }
 
-/* (Cr, Ci) = (Ar + i Ai)(Br + i Bi), intervals of d x d; radii NULL = point */
+/* (Cr, Ci) = (Ar + i Ai)(Br + i Bi), intervals, A r x k, B k x c; radii
+ * NULL = point; work: 4 r c */
 static void icmul(double *Crm, double *Crr, double *Cim, double *Cir, const double *Arm, const double *Arr,
                   const double *Aim, const double *Air, const double *Brm, const double *Brr, const double *Bim,
-                  const double *Bir, slong d, double *work)
+                  const double *Bir, slong r, slong k, slong c, double *work)
 {
-    slong len = d * d;
+    slong len = r * c;
     double *P1m = work, *P1r = P1m + len, *P2m = P1r + len, *P2r = P2m + len;
-    imul(P1m, P1r, Arm, Arr, Brm, Brr, d, d, d);
-    imul(P2m, P2r, Aim, Air, Bim, Bir, d, d, d);
+    imul(P1m, P1r, Arm, Arr, Brm, Brr, r, k, c);
+    imul(P2m, P2r, Aim, Air, Bim, Bir, r, k, c);
     iadd(Crm, Crr, P1m, P1r, P2m, P2r, len, -1.0);
-    imul(P1m, P1r, Arm, Arr, Bim, Bir, d, d, d);
-    imul(P2m, P2r, Aim, Air, Brm, Brr, d, d, d);
+    imul(P1m, P1r, Arm, Arr, Bim, Bir, r, k, c);
+    imul(P2m, P2r, Aim, Air, Brm, Brr, r, k, c);
     iadd(Cim, Cir, P1m, P1r, P2m, P2r, len, 1.0);
+}
+
+/* row k of (Mrm, Mrr, Mim, Mir), d x d, from row i of the nr x d (Rrm, ...);
+ * conj: the conjugate with columns j and part(j) swapped */
+static void put_row(double *Mrm, double *Mrr, double *Mim, double *Mir, slong k, const double *Rrm, const double *Rrr,
+                    const double *Rim, const double *Rir, slong i, const slong *part, int conj, slong d)
+{
+    slong j;
+    for (j = 0; j < d; j++) {
+        slong jj = conj ? part[j] : j;
+        Mrm[k * d + j] = Rrm[i * d + jj];
+        Mrr[k * d + j] = Rrr[i * d + jj];
+        Mim[k * d + j] = conj ? -Rim[i * d + jj] : Rim[i * d + jj];
+        Mir[k * d + j] = Rir[i * d + jj];
+    }
 }
 
 /* an upper bound of |z| for every z in the complex interval: |re| + |im|
@@ -937,12 +962,19 @@ int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double 
 {
     slong dim = rs_cosim_dbl_dim(d), len = dim * dim, i, j, top = 0;
     double *buf, *Tm, *Tr, *Vr, *Vi, *Wr, *Wi, *Xrm, *Xrr, *Xim, *Xir, *Brm, *Brr, *Bim, *Bir, *Erm, *Err, *Eim, *Eir,
-        *work, *R, *out, *in, e, f, up, lo, stk[STK_];
+        *work, *R, *out, *in, e, f, up, lo, stk[STK_], *WRr, *WRi, *VRr, *VRi, *Q;
+    slong istk[2 * 64], *rep, *part, nr = 0, k;
+    unsigned char cstk[64], *cj;
     int ok;
     if (dim < 1) return RS_ERR_UNDECIDED;
-    /* every array is written before it is read; point factors pass NULL
-     * radii; work: 5 len + 5 dim (eigvecs: 3 len + 5 dim, icmul: 4 len) */
-    buf = scratch_get(stk, 24 * len + 8 * dim);
+    /* every array is written before it is read (X's and the rows' every
+     * entry by the pairs below); point factors pass NULL radii; 20 len for
+     * T .. E, work: 5 len + 5 dim (eigvecs: 3 len + 5 dim, icmul: 4 len),
+     * R, out, in: 3 dim, WR, VR: 4 len, Q: 12 len */
+    buf = scratch_get(stk, 41 * len + 8 * dim);
+    rep = dim <= 64 ? istk : flint_malloc(2 * dim * sizeof(slong));
+    part = rep + dim;
+    cj = dim <= 64 ? cstk : flint_malloc(dim);
     Tm = buf; Tr = Tm + len; Vr = Tr + len; Vi = Vr + len; Wr = Vi + len; Wi = Wr + len;
     Xrm = Wi + len; Xrr = Xrm + len; Xim = Xrr + len; Xir = Xim + len;
     Brm = Xir + len; Brr = Brm + len; Bim = Brr + len; Bir = Bim + len;
@@ -951,10 +983,44 @@ int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double 
     R = work + 5 * len + 5 * dim;
     out = R + dim;
     in = out + dim;
-    ok = rs_cosim_dbl_transition_pre(Tm, Tr, d, pre) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, Tm, dim, work);
+    WRr = in + dim; WRi = WRr + len; VRr = WRi + len; VRi = VRr + len;
+    Q = VRi + len;   /* 12 len: the computed rows of E and B, T V's computed columns */
+    ok = rs_cosim_dbl_transition_pre(Tm, Tr, d, pre) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, cj, Tm, dim, work);
     if (ok) {
-        /* E = I - W V (point W, V) */
-        icmul(Erm, Err, Eim, Eir, Wr, NULL, Wi, NULL, Vr, NULL, Vi, NULL, dim, work);
+        /* Conjugate pairs: with W's row k + 1 set to the conjugate of row k
+         * (cj[k + 1]: V's column k + 1 is column k's conjugate, the other
+         * columns real), row k + 1 of W V and of W T V (T real) is row k's
+         * conjugate with columns j and part(j) swapped, for every T in the
+         * interval: only the rows rep[] (nr of them) are multiplied, and of
+         * T V only the columns rep[] (the others conjugates). */
+        double *ERm = Q, *ERr = ERm + len, *EIm = ERr + len, *EIr = EIm + len, *BRm = EIr + len, *BRr = BRm + len,
+               *BIm = BRr + len, *BIr = BIm + len, *XRm = BIr + len, *XRr = XRm + len, *XIm = XRr + len,
+               *XIr = XIm + len;
+        for (k = 0; k < dim; k++) {
+            part[k] = k + 1 < dim && cj[k + 1] ? k + 1 : cj[k] ? k - 1 : k;
+            if (cj[k])
+                for (j = 0; j < dim; j++) {
+                    Wr[k * dim + j] = Wr[(k - 1) * dim + j];
+                    Wi[k * dim + j] = -Wi[(k - 1) * dim + j];
+                }
+            else
+                rep[nr++] = k;
+        }
+        for (i = 0; i < nr; i++) {
+            memcpy(WRr + i * dim, Wr + rep[i] * dim, dim * sizeof(double));
+            memcpy(WRi + i * dim, Wi + rep[i] * dim, dim * sizeof(double));
+        }
+        for (i = 0; i < dim; i++)
+            for (j = 0; j < nr; j++) {
+                VRr[i * nr + j] = Vr[i * dim + rep[j]];
+                VRi[i * nr + j] = Vi[i * dim + rep[j]];
+            }
+        /* W V, rows rep[] (point W, V); then E = I - W V */
+        icmul(ERm, ERr, EIm, EIr, WRr, NULL, WRi, NULL, Vr, NULL, Vi, NULL, nr, dim, dim, work);
+        for (i = 0; i < nr; i++) {
+            put_row(Erm, Err, Eim, Eir, rep[i], ERm, ERr, EIm, EIr, i, part, 0, dim);
+            if (part[rep[i]] != rep[i]) put_row(Erm, Err, Eim, Eir, part[rep[i]], ERm, ERr, EIm, EIr, i, part, 1, dim);
+        }
         for (i = 0; i < len; i++) {
             Erm[i] = -Erm[i];
             Eim[i] = -Eim[i];
@@ -964,10 +1030,29 @@ int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double 
             Err[i * dim + i] = up_(Err[i * dim + i] + U_ * fabs(x), 2);
             Erm[i * dim + i] = x;
         }
-        /* X = T V (interval real times point complex), B = W X */
-        imul(Xrm, Xrr, Tm, Tr, Vr, NULL, dim, dim, dim);
-        imul(Xim, Xir, Tm, Tr, Vi, NULL, dim, dim, dim);
-        icmul(Brm, Brr, Bim, Bir, Wr, NULL, Wi, NULL, Xrm, Xrr, Xim, Xir, dim, work);
+        /* X = T V (interval real times point complex): columns rep[], the
+         * others their conjugates; B = W X, rows rep[] */
+        imul(XRm, XRr, Tm, Tr, VRr, NULL, dim, dim, nr);
+        imul(XIm, XIr, Tm, Tr, VRi, NULL, dim, dim, nr);
+        for (i = 0; i < dim; i++)
+            for (j = 0; j < nr; j++) {
+                slong c = rep[j], p = part[c];
+                Xrm[i * dim + c] = XRm[i * nr + j];
+                Xrr[i * dim + c] = XRr[i * nr + j];
+                Xim[i * dim + c] = XIm[i * nr + j];
+                Xir[i * dim + c] = XIr[i * nr + j];
+                if (p != c) {
+                    Xrm[i * dim + p] = XRm[i * nr + j];
+                    Xrr[i * dim + p] = XRr[i * nr + j];
+                    Xim[i * dim + p] = -XIm[i * nr + j];
+                    Xir[i * dim + p] = XIr[i * nr + j];
+                }
+            }
+        icmul(BRm, BRr, BIm, BIr, WRr, NULL, WRi, NULL, Xrm, Xrr, Xim, Xir, nr, dim, dim, work);
+        for (i = 0; i < nr; i++) {
+            put_row(Brm, Brr, Bim, Bir, rep[i], BRm, BRr, BIm, BIr, i, part, 0, dim);
+            if (part[rep[i]] != rep[i]) put_row(Brm, Brr, Bim, Bir, part[rep[i]], BRm, BRr, BIm, BIr, i, part, 1, dim);
+        }
         /* e = ||E||, f = e/(1 - e) ||B|| bounds the rows of V^{-1} T V - B
          * (cosim_fast.c: Neumann series of (I - E)^{-1}) */
         e = 0;
@@ -1023,6 +1108,8 @@ int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double 
         r->isolated = 1;
         r->partial = 0;
     }
+    if (rep != istk) flint_free(rep);
+    if (cj != cstk) flint_free(cj);
     scratch_put(buf, stk);
     return ok ? RS_OK : RS_ERR_UNDECIDED;
 }
