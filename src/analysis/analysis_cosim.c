@@ -228,6 +228,13 @@ typedef struct {
     const fmpq *x[2];                 /* the axis values: x[0][i] (and x[1][j] of a map) */
     const rs_cosim_model_struct *F;   /* the linear forms (the run's model) */
     rs_cosim_nforms_struct *NF;       /* their numeric forms (cosim_forms.h; NULL: not applicable) */
+    /* with NF: subsystem s's block of the one-step map (rs_cosim_dbl_sub),
+     * once per value of the one axis its rows depend on (preax[s]; -1: on
+     * none, one block), preok[s][v] where it was computed; pre[s] NULL:
+     * every point computes its own */
+    double *pre[2];
+    unsigned char *preok[2];
+    slong preax[2], prelen[2];
     /* sweep ... of modes: per point the step h, the nref references
      * (refval[idx * nref + k]) and the certified eigenvalues (eig[idx]) */
     slong npoints, nref;
@@ -260,6 +267,23 @@ static int cosim_point_radius(rs_radius_t rr, const rs_cosim_t cs, slong max_pre
     int r = rs_cosim_radius(rr, cs, 6, max_prec, err);
     if (r == RS_ERR_UNDECIDED && arb_is_finite(rr->lower) && arb_is_finite(rr->upper)) r = RS_OK;
     return r;
+}
+
+/* the radius a point decided by a fast route is checked against (check
+ * set): van der Hoeven-Mourrain on the Arb map (rs_cosim_check_radius),
+ * where it certifies; else, and for the cells of an undecided point, the
+ * full certified radius */
+static int cosim_check_radius(rs_radius_t rr, const rs_cosim_t cs, int check, slong max_prec, rs_error_t err)
+{
+    if (check) {
+        rs_error_t e;
+        int r;
+        rs_error_init(e);
+        r = rs_cosim_check_radius(rr, cs, 64, e);
+        rs_error_clear(e);
+        if (r == RS_OK) return r;
+    }
+    return cosim_point_radius(rr, cs, max_prec, err);
 }
 
 /* the verdict (RS_STATUS_* or RS_SWEEP_UNDECIDED) from a certified radius */
@@ -337,6 +361,68 @@ static void radius_cells(rs_sweep_row_t *row, const rs_radius_t rr)
     radius_cells_of(row, rr, 0);
 }
 
+#define COSIM_PRE_MAX_DOUBLES (1L << 20)   /* 8 MB a subsystem */
+
+/* M->pre: a subsystem whose rows depend on no axis, or (a map) on one axis
+ * only, gets its exponential and gains once per value of that axis: the
+ * doubles every point of that value would compute (rs_cosim_nforms_at
+ * gives its A_s and B_s the same doubles along the other axis) */
+static void cosim_pre_build(cosim_map_t *M)
+{
+    const rs_sweep_request_t *R = M->R;
+    rs_cosim_dbl_t d;
+    int s;
+    rs_cosim_dbl_init(d);
+    for (s = 0; s < 2; s++) {
+        unsigned mask = rs_cosim_nforms_sub_axes(M->NF, s);
+        slong ax, cnt = 1, v, len = 0;
+        fmpq vv[2];
+        if (mask == 0) ax = -1;
+        else if (R->naxes == 2 && (mask == 1u || mask == 2u)) {
+            ax = mask == 1u ? 0 : 1;
+            cnt = R->axis[ax].count;
+        } else
+            continue;
+        vv[0] = M->x[0][0];
+        if (R->naxes == 2) vv[1] = M->x[1][0];
+        for (v = 0; v < cnt && !rs_budget_exceeded(); v++) {
+            int ok;
+            if (ax >= 0) vv[ax] = M->x[ax][v];
+            ok = rs_cosim_nforms_at(d, M->NF, vv);
+            if (M->pre[s] == NULL) {
+                len = rs_cosim_dbl_sub_len(d, s);
+                if (len < 1 || cnt * len > COSIM_PRE_MAX_DOUBLES) break;
+                M->pre[s] = flint_malloc(cnt * len * sizeof(double));
+                M->preok[s] = flint_calloc(cnt, 1);
+                M->preax[s] = ax;
+                M->prelen[s] = len;
+            }
+            M->preok[s][v] = ok && rs_cosim_dbl_sub(M->pre[s] + v * len, d, s);
+        }
+    }
+    rs_cosim_dbl_clear(d);
+}
+
+static void cosim_pre_free(cosim_map_t *M)
+{
+    int s;
+    for (s = 0; s < 2; s++) {
+        flint_free(M->pre[s]);
+        flint_free(M->preok[s]);
+        M->pre[s] = NULL;
+        M->preok[s] = NULL;
+    }
+}
+
+/* subsystem s's precomputed block at grid point idx, or NULL */
+static const double *cosim_pre_at(const cosim_map_t *M, int s, slong idx)
+{
+    slong K1 = M->R->naxes == 2 ? M->R->axis[0].count : WORD_MAX, v;
+    if (M->pre[s] == NULL) return NULL;
+    v = M->preax[s] < 0 ? 0 : M->preax[s] == 0 ? idx % K1 : idx / K1;
+    return M->preok[s][v] ? M->pre[s] + v * M->prelen[s] : NULL;
+}
+
 /* the interval-double certified radius at grid point idx from the numeric
  * forms; 1 when it decides the verdict (an interval excluding 1) */
 static int cosim_dbl_point(rs_radius_t rf, const cosim_map_t *M, slong idx)
@@ -344,11 +430,14 @@ static int cosim_dbl_point(rs_radius_t rf, const cosim_map_t *M, slong idx)
     slong K1 = M->R->naxes == 2 ? M->R->axis[0].count : WORD_MAX;
     fmpq vv[2];
     rs_cosim_dbl_t d;
+    const double *pre[2];
     int ok;
     vv[0] = M->x[0][idx % K1];
     if (M->R->naxes == 2) vv[1] = M->x[1][idx / K1];
     rs_cosim_dbl_init(d);
-    ok = rs_cosim_nforms_at(d, M->NF, vv) && rs_cosim_dbl_radius(rf, d) == RS_OK
+    pre[0] = cosim_pre_at(M, 0, idx);
+    pre[1] = cosim_pre_at(M, 1, idx);
+    ok = rs_cosim_nforms_at(d, M->NF, vv) && rs_cosim_dbl_radius_pre(rf, d, pre) == RS_OK
          && radius_verdict(rf) != RS_SWEEP_UNDECIDED;
     rs_cosim_dbl_clear(d);
     return ok;
@@ -444,7 +533,7 @@ static void cosim_map_point(rs_sweep_row_t *row, slong idx, void *model, rs_erro
     if (row->d.status == RS_OK && !modes
         && (have_fast ? idx % COSIM_CROSSCHECK_EVERY == 0
                       : fast == RS_SWEEP_UNDECIDED || idx % COSIM_CROSSCHECK_EVERY == 0)
-        && cosim_point_radius(rr, cs, max_prec, err) == RS_OK) {
+        && cosim_check_radius(rr, cs, have_fast || fast != RS_SWEEP_UNDECIDED, max_prec, err) == RS_OK) {
         int v = radius_verdict(rr);
         if (have_fast) {
             /* both certified: the enclosures must meet, the verdicts agree */
@@ -479,6 +568,8 @@ static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, c
     M->x[1] = x1;
     M->F = rs_model_cosim(run->m, run->err);
     M->NF = NULL;
+    M->pre[0] = M->pre[1] = NULL;
+    M->preok[0] = M->preok[1] = NULL;
     M->npoints = M->nref = 0;
     M->hval = M->refval = NULL;
     M->eig = NULL;
@@ -494,6 +585,7 @@ static int cosim_grid_init(cosim_map_t *M, rs_sweep_model_t *m, rs_run_t *run, c
         names[0] = R->axis[0].name;
         names[1] = R->naxes == 2 ? R->axis[1].name : NULL;
         M->NF = rs_cosim_nforms_new(M->F, run->c, names, R->naxes);
+        if (M->NF != NULL) cosim_pre_build(M);
     }
     m->point = cosim_map_point;
     m->model = M;
@@ -515,6 +607,7 @@ int rs_an_cosim_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     r = cosim_grid_init(&M, &m, run, R, xs[0], xs[1]);
     if (r == RS_OK) r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, NULL, NULL);
     rs_cosim_nforms_free(M.NF);
+    cosim_pre_free(&M);
     _fmpq_vec_clear(xs[0], X[0].count);
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
@@ -610,6 +703,8 @@ int rs_cosim_sweep_model_new(rs_sweep_model_t *m, rs_run_t *run, const rs_reques
     int r = cosim_grid_init(M, m, run, R, vals, NULL);
     if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) r = cosim_modes_opts(M, run, q, R, npoints);
     if (r != RS_OK) {
+        rs_cosim_nforms_free(M->NF);
+        cosim_pre_free(M);
         cosim_modes_free(M);
         flint_free(M);
         m->model = NULL;
@@ -636,6 +731,7 @@ void rs_cosim_sweep_model_free(rs_sweep_model_t *m)
 {
     if (m->model != NULL) {
         rs_cosim_nforms_free(((cosim_map_t *) m->model)->NF);
+        cosim_pre_free(m->model);
         cosim_modes_free(m->model);
     }
     flint_free(m->model);

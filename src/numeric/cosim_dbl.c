@@ -10,9 +10,6 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
-#include <gsl/gsl_errno.h>
 #include "numeric/cosim_dbl.h"
 
 #define U_ (0x1p-53)
@@ -22,6 +19,20 @@
 static inline double up_(double x, slong n)
 {
     return x * (1.0 + 4.0 * (double) (n + 4) * U_) + 4.0 * (double) (n + 2) * ETA_;
+}
+
+/* Scratch of a map point: the caller's stack array when n doubles fit (a
+ * point of the bench maps needs a few hundred; no malloc per point and no
+ * shared state between threads), else the heap. */
+#define STK_ 2048
+static double *scratch_get(double *stk, slong n)
+{
+    return n <= STK_ ? stk : flint_malloc((size_t) n * sizeof(double));
+}
+
+static void scratch_put(double *p, const double *stk)
+{
+    if (p != stk) flint_free(p);
 }
 
 /* ---- interval matrices: mid/rad arrays, row major ----------------------- */
@@ -115,7 +126,7 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
 {
     slong len = s * s, i, k, N, j = 0, t, a, b, nb;
     double nu = inorm(Xm, Xr, s, s), sc, term, rem, cm[41], cr[41];
-    double *buf, *Pm, *Pr, *Qm, *Qr, *Bm, *Br, *Wm, *Wr, *Ym[8], *Yr[8];
+    double *buf, *Pm, *Pr, *Qm, *Qr, *Bm, *Br, *Wm, *Wr, *Ym[8], *Yr[8], stk[STK_];
     int ok = 1;
     if (!isfinite(nu)) return 0;
     while (nu > 0.5) {
@@ -139,7 +150,7 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
         cm[i] = cm[i - 1] / (double) i;
         cr[i] = up_(cr[i - 1] / (double) i + U_ * cm[i], 3);
     }
-    buf = flint_malloc((2 * (t + 1) + 8) * len * sizeof(double));
+    buf = scratch_get(stk, (2 * (t + 1) + 8) * len);
     for (a = 0; a <= t; a++) {
         Ym[a] = buf + 2 * a * len;
         Yr[a] = Ym[a] + len;
@@ -189,7 +200,7 @@ static int iexp(double *Em, double *Er, const double *Xm, const double *Xr, slon
     memcpy(Em, Pm, len * sizeof(double));
     memcpy(Er, Pr, len * sizeof(double));
     ok = all_finite(Em, len) && all_finite(Er, len);
-    flint_free(buf);
+    scratch_put(buf, stk);
     return ok;
 }
 
@@ -299,16 +310,25 @@ int rs_cosim_dbl_set_cosim(rs_cosim_dbl_t d, const rs_cosim_t cs, rs_error_t err
 
 /* ---- the one-step map ---------------------------------------------------- */
 
-/* subsystem (Ai, rows off.. of B): E_i into E (n x n) at (off, off), the
- * gain columns Phi_k e_c into Phi (n x m (K+1)), col k m + c.  Exactly zero
- * columns of B (midpoint and radius 0) get no chain: their Phi is 0. */
-static int exp_phi_sub(double *Em, double *Er, double *Phm, double *Phr, const rs_cosim_dbl_t d, slong off,
-                       slong ni, const double *Aim, const double *Air)
+
+slong rs_cosim_dbl_sub_len(const rs_cosim_dbl_t d, int s)
 {
-    slong n = d->n1 + d->n2, m = d->m, K = d->order, q = 0, sz, r, c, k, ch, *cols;
-    double *Mm, *Mr, *Xm, *Xr, fact;
+    slong ni = s ? d->n2 : d->n1;
+    return 2 * (ni * ni + ni * d->m * (d->order + 1));
+}
+
+/* Subsystem s (A_s, its rows of B) into S: E_s (ni x ni), then the gain
+ * columns Phi_k e_c (ni x m (K+1), column k m + c), midpoints then radii of
+ * each.  Exactly zero columns of B (midpoint and radius 0) get no chain:
+ * their Phi is 0. */
+int rs_cosim_dbl_sub(double *S, const rs_cosim_dbl_t d, int s)
+{
+    slong m = d->m, K = d->order, w = m * (K + 1), ni = s ? d->n2 : d->n1, off = s ? d->n1 : 0, q = 0, sz, r, c, k,
+          ch, colstk[64], *cols;
+    const double *Aim = s ? d->A2m : d->A1m, *Air = s ? d->A2r : d->A1r;
+    double *Em = S, *Er = Em + ni * ni, *Phm = Er + ni * ni, *Phr = Phm + ni * w, *Mm, *Mr, *Xm, *Xr, fact, stk[STK_];
     int ok;
-    cols = flint_malloc((m + 1) * sizeof(slong));
+    cols = m < 64 ? colstk : flint_malloc((m + 1) * sizeof(slong));
     for (c = 0; c < m; c++) {
         int nz = 0;
         for (r = 0; r < ni; r++)
@@ -316,7 +336,8 @@ static int exp_phi_sub(double *Em, double *Er, double *Phm, double *Phr, const r
         if (nz) cols[q++] = c;
     }
     sz = ni + q * (K + 1);
-    Mm = flint_calloc(4 * sz * sz, sizeof(double));
+    Mm = scratch_get(stk, 4 * sz * sz);
+    memset(Mm, 0, 2 * sz * sz * sizeof(double));
     Mr = Mm + sz * sz;
     Xm = Mr + sz * sz;
     Xr = Xm + sz * sz;
@@ -333,21 +354,22 @@ static int exp_phi_sub(double *Em, double *Er, double *Phm, double *Phr, const r
     ok = iexp(Xm, Xr, Mm, Mr, sz);
     for (r = 0; ok && r < ni; r++)
         for (c = 0; c < ni; c++) {
-            Em[(off + r) * n + off + c] = Xm[r * sz + c];
-            Er[(off + r) * n + off + c] = Xr[r * sz + c];
+            Em[r * ni + c] = Xm[r * sz + c];
+            Er[r * ni + c] = Xr[r * sz + c];
         }
+    memset(Phm, 0, 2 * ni * w * sizeof(double));
     fact = 1;
     for (k = 0; ok && k <= K; k++) {
         if (k > 1) fact *= (double) k;   /* exact: k! <= 6 */
         for (ch = 0; ch < q; ch++)
             for (r = 0; r < ni; r++) {
-                slong pi = (off + r) * (m * (K + 1)) + k * m + cols[ch];
+                slong pi = r * w + k * m + cols[ch];
                 iscal(Phm + pi, Phr + pi, Xm + r * sz + ni + ch * (K + 1) + k, Xr + r * sz + ni + ch * (K + 1) + k,
                       fact, 0, 1);
             }
     }
-    flint_free(Mm);
-    flint_free(cols);
+    scratch_put(Mm, stk);
+    if (cols != colstk) flint_free(cols);
     return ok;
 }
 
@@ -389,13 +411,20 @@ static int approx_inv(double *R, const double *M, slong m)
 
 int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
 {
-    slong n = d->n1 + d->n2, m = d->m, K = d->order, w = m * (K + 1), dim = rs_cosim_dbl_dim(d), h, a, j, k, r, c;
-    double *Em, *Er, *Phm, *Phr, *Gm, *Gr, *Top, *Topr, *Xm, *Xr;
-    int ok, impl = d->method == RS_COSIM_IMPLICIT;
+    return rs_cosim_dbl_transition_pre(Tm, Tr, d, NULL);
+}
+
+int rs_cosim_dbl_transition_pre(double *Tm, double *Tr, const rs_cosim_dbl_t d, const double *const *pre)
+{
+    slong n = d->n1 + d->n2, m = d->m, K = d->order, w = m * (K + 1), dim = rs_cosim_dbl_dim(d), h, a, j, k, r, c, s,
+          tot = 2 * n * n + 4 * n * w + 2 * n * dim + 2 * n * n + 2 + 2 * n * (m > 0 ? m : 1);
+    double *Em, *Er, *Phm, *Phr, *Gm, *Gr, *Top, *Topr, *Xm, *Xr, *Ga, *Gar, stk[STK_];
+    int ok = 1, impl = d->method == RS_COSIM_IMPLICIT;
     if (!d->haveL || !(d->Hm - d->Hr > 0)) return RS_ERR_UNDECIDED;
     a = impl ? 1 : 0;
     h = (dim - n) / (m > 0 ? m : 1);
-    Em = flint_calloc(2 * n * n + 4 * n * w + 2 * n * dim + 2 * n * n + 2, sizeof(double));
+    Em = scratch_get(stk, tot);
+    memset(Em, 0, tot * sizeof(double));
     Er = Em + n * n;
     Phm = Er + n * n;
     Phr = Phm + n * w;
@@ -405,8 +434,23 @@ int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
     Topr = Top + n * dim;
     Xm = Topr + n * dim;
     Xr = Xm + n * n;
-    ok = exp_phi_sub(Em, Er, Phm, Phr, d, 0, d->n1, d->A1m, d->A1r)
-         && exp_phi_sub(Em, Er, Phm, Phr, d, d->n1, d->n2, d->A2m, d->A2r);
+    Ga = Xr + n * n;
+    Gar = Ga + n * (m > 0 ? m : 1);
+    /* the subsystems' blocks: given (pre[s], rs_cosim_dbl_sub of this model) or computed here */
+    for (s = 0; s < 2 && ok; s++) {
+        slong ni = s ? d->n2 : d->n1, off = s ? d->n1 : 0, len = rs_cosim_dbl_sub_len(d, s);
+        int own = pre == NULL || pre[s] == NULL;
+        double sstk[STK_], *S = own ? scratch_get(sstk, len) : (double *) pre[s];
+        const double *SEm = S, *SEr = SEm + ni * ni, *SPm = SEr + ni * ni, *SPr = SPm + ni * w;
+        if (own) ok = rs_cosim_dbl_sub(S, d, (int) s);
+        for (r = 0; ok && r < ni; r++) {
+            memcpy(Em + (off + r) * n + off, SEm + r * ni, ni * sizeof(double));
+            memcpy(Er + (off + r) * n + off, SEr + r * ni, ni * sizeof(double));
+            memcpy(Phm + (off + r) * w, SPm + r * w, w * sizeof(double));
+            memcpy(Phr + (off + r) * w, SPr + r * w, w * sizeof(double));
+        }
+        if (own) scratch_put(S, sstk);
+    }
     /* G_j = sum_k l_{j,k} Phi_k (blocks of m columns) */
     for (j = 0; ok && j <= K; j++)
         for (k = 0; k <= K; k++) {
@@ -422,7 +466,6 @@ int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
         }
     /* Top = [E + G_a C | G_{a+1} ... G_K] (n x dim) */
     if (ok) {
-        double *Ga = flint_malloc(2 * n * (m > 0 ? m : 1) * sizeof(double)), *Gar = Ga + n * (m > 0 ? m : 1);
         for (r = 0; r < n; r++)
             for (c = 0; c < n; c++) {
                 Xm[r * n + c] = 0;
@@ -497,7 +540,6 @@ int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
             }
             flint_free(Jm);
         }
-        flint_free(Ga);
     }
     if (ok) {
         for (r = 0; r < dim * dim; r++) Tm[r] = Tr[r] = 0;
@@ -515,7 +557,7 @@ int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d)
         }
         ok = all_finite(Tm, dim * dim) && all_finite(Tr, dim * dim);
     }
-    flint_free(Em);
+    scratch_put(Em, stk);
     return ok ? RS_OK : RS_ERR_UNDECIDED;
 }
 
@@ -576,56 +618,331 @@ static int cinv(double *Wr, double *Wi, const double *Vr, const double *Vi, doub
     return all_finite(Wr, d * d) && all_finite(Wi, d * d);
 }
 
-/* V (complex point, re/im arrays) = double eigenvectors of T (GSL), W ~=
- * V^{-1} (cinv; scratch: 2 d^2); 0 when either fails */
-static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, const double *T, slong dd, double *scratch)
+/* ---- eigenvectors in double ----------------------------------------------
+ * A map point's one-step map is small (5 x 5 for Li's k = 1): GSL's general
+ * eigenvector solver (balancing, Schur vectors, its allocations) cost more
+ * than the certificate.  Here: Householder Hessenberg form, Francis
+ * double-shift QR on the active window for the eigenvalues only (Golub & Van
+ * Loan, Matrix Computations, 4th ed., Alg. 7.4.2 and 7.5.1), then each
+ * eigenvector by two steps of inverse iteration on the complex LU of
+ * T - lambda I (one per conjugate pair).  All of it is an approximation:
+ * the certificate below bounds I - W V and W T V whatever V is. */
+
+#define H_(i, j) A[(i) * d + (j)]
+
+/* (I - beta v v^T) u = alpha e_1 for u of length len (2 or 3); 0 when u = 0 */
+static int house(double *v, double *beta, const double *u, int len)
 {
-    size_t d = (size_t) dd, i, j;
-    gsl_matrix_const_view A0 = gsl_matrix_const_view_array(T, d, d);
-    gsl_matrix *A;
-    gsl_vector_complex *ev;
-    gsl_matrix_complex *X;
-    gsl_eigen_nonsymmv_workspace *w;
-    int ok;
-    /* GSL reports a failure (no convergence) through its process-wide
-     * handler: off once for the process, never swapped per call (a saved
-     * and restored handler races between threads) */
-    rs_gsl_quiet();
-    A = gsl_matrix_alloc(d, d);
-    ev = gsl_vector_complex_alloc(d);
-    X = gsl_matrix_complex_alloc(d, d);
-    w = gsl_eigen_nonsymmv_alloc(d);
-    /* an allocation that failed is reported as NULL (the handler is off) */
-    ok = A != NULL && ev != NULL && X != NULL && w != NULL;
-    ok = ok && gsl_matrix_memcpy(A, &A0.matrix) == GSL_SUCCESS;
-    ok = ok && gsl_eigen_nonsymmv(A, ev, X, w) == GSL_SUCCESS;
-    for (i = 0; ok && i < d; i++)
-        for (j = 0; j < d; j++) {
-            gsl_complex z = gsl_matrix_complex_get(X, i, j);
-            Vr[i * d + j] = GSL_REAL(z);
-            Vi[i * d + j] = GSL_IMAG(z);
-        }
-    ok = ok && all_finite(Vr, dd * dd) && all_finite(Vi, dd * dd) && cinv(Wr, Wi, Vr, Vi, scratch, dd);
-    gsl_eigen_nonsymmv_free(w);
-    gsl_matrix_complex_free(X);
-    gsl_vector_complex_free(ev);
-    gsl_matrix_free(A);
-    return ok;
+    double nrm = 0, vv = 0;
+    int i;
+    for (i = 0; i < len; i++) nrm += u[i] * u[i];
+    if (!(nrm > 0)) return 0;
+    nrm = sqrt(nrm);
+    for (i = 0; i < len; i++) v[i] = u[i];
+    v[0] -= u[0] > 0 ? -nrm : nrm;
+    for (i = 0; i < len; i++) vv += v[i] * v[i];
+    if (!(vv > 0)) return 0;
+    *beta = 2.0 / vv;
+    return 1;
 }
 
-/* (Cr, Ci) = (Ar + i Ai)(Br + i Bi), intervals of d x d; radii NULL = point */
+/* A (d x d, row major) to upper Hessenberg form by Householder similarities
+ * (v: d scratch) */
+static void hessenberg(double *A, slong d, double *v)
+{
+    slong k, i, j;
+    for (k = 0; k + 2 < d; k++) {
+        slong len = d - k - 1;
+        double nrm = 0, alpha, vv = 0, beta;
+        for (i = 0; i < len; i++) {
+            v[i] = H_(k + 1 + i, k);
+            nrm += v[i] * v[i];
+        }
+        if (!(nrm > 0)) continue;
+        nrm = sqrt(nrm);
+        alpha = v[0] > 0 ? -nrm : nrm;
+        v[0] -= alpha;
+        for (i = 0; i < len; i++) vv += v[i] * v[i];
+        if (!(vv > 0)) continue;
+        beta = 2.0 / vv;
+        for (j = k + 1; j < d; j++) {
+            double t = 0;
+            for (i = 0; i < len; i++) t += v[i] * H_(k + 1 + i, j);
+            t *= beta;
+            for (i = 0; i < len; i++) H_(k + 1 + i, j) -= t * v[i];
+        }
+        H_(k + 1, k) = alpha;   /* the reflected column, exactly */
+        for (i = 1; i < len; i++) H_(k + 1 + i, k) = 0;
+        for (i = 0; i < d; i++) {
+            double t = 0, *row = A + i * d + k + 1;
+            for (j = 0; j < len; j++) t += row[j] * v[j];
+            t *= beta;
+            for (j = 0; j < len; j++) row[j] -= t * v[j];
+        }
+    }
+}
+
+/* the eigenvalues (wr + i wi) of the Hessenberg matrix A (overwritten):
+ * a conjugate pair at k, k + 1 with wi[k] > 0; 0 when QR does not converge */
+static int hqr(double *wr, double *wi, double *A, slong d)
+{
+    slong hi = d - 1, l, k, i, j, iter = 0, total = 0;
+    double nrm = 0;
+    for (i = 0; i < d * d; i++) nrm = fmax(nrm, fabs(A[i]));
+    if (!isfinite(nrm)) return 0;
+    while (hi >= 0) {
+        double sh, tt, x, y, z, u[3], v[3], beta;
+        for (l = hi; l > 0; l--) {
+            double sc = fabs(H_(l - 1, l - 1)) + fabs(H_(l, l));
+            if (sc == 0) sc = nrm;
+            if (fabs(H_(l, l - 1)) <= DBL_EPSILON * sc) {
+                H_(l, l - 1) = 0;
+                break;
+            }
+        }
+        if (l == hi) {
+            wr[hi] = H_(hi, hi);
+            wi[hi] = 0;
+            hi--;
+            iter = 0;
+            continue;
+        }
+        if (l == hi - 1) {
+            double p = 0.5 * (H_(hi - 1, hi - 1) - H_(hi, hi)), w = H_(hi, hi - 1) * H_(hi - 1, hi), q = p * p + w;
+            x = H_(hi, hi);
+            z = sqrt(fabs(q));
+            if (q >= 0) {
+                z = p >= 0 ? p + z : p - z;
+                wr[hi - 1] = wr[hi] = x + z;
+                if (z != 0) wr[hi] = x - w / z;
+                wi[hi - 1] = wi[hi] = 0;
+            } else {
+                wr[hi - 1] = wr[hi] = x + p;
+                wi[hi - 1] = z;
+                wi[hi] = -z;
+            }
+            hi -= 2;
+            iter = 0;
+            continue;
+        }
+        if (++iter > 60 || ++total > 60 * d) return 0;
+        if (iter % 10 == 0) {
+            /* exceptional shift (LAPACK dlahqr) after 10 and 20 steps without deflation */
+            double e = fabs(H_(hi, hi - 1)) + fabs(H_(hi - 1, hi - 2)), h11 = 0.75 * e + H_(hi, hi), h12 = -0.4375 * e;
+            sh = 2 * h11;
+            tt = h11 * h11 - h12 * e;
+        } else {
+            sh = H_(hi - 1, hi - 1) + H_(hi, hi);
+            tt = H_(hi - 1, hi - 1) * H_(hi, hi) - H_(hi - 1, hi) * H_(hi, hi - 1);
+        }
+        /* the first column of (H - s1)(H - s2) on the window [l, hi], chased down */
+        x = H_(l, l) * H_(l, l) + H_(l, l + 1) * H_(l + 1, l) - sh * H_(l, l) + tt;
+        y = H_(l + 1, l) * (H_(l, l) + H_(l + 1, l + 1) - sh);
+        z = H_(l + 1, l) * H_(l + 2, l + 1);
+        for (k = l; k <= hi - 2; k++) {
+            slong q = k > l ? k - 1 : l, rmax = k + 3 < hi ? k + 3 : hi;
+            u[0] = x;
+            u[1] = y;
+            u[2] = z;
+            if (house(v, &beta, u, 3)) {
+                for (j = q; j <= hi; j++) {
+                    double t = beta * (v[0] * H_(k, j) + v[1] * H_(k + 1, j) + v[2] * H_(k + 2, j));
+                    H_(k, j) -= t * v[0];
+                    H_(k + 1, j) -= t * v[1];
+                    H_(k + 2, j) -= t * v[2];
+                }
+                for (i = l; i <= rmax; i++) {
+                    double t = beta * (H_(i, k) * v[0] + H_(i, k + 1) * v[1] + H_(i, k + 2) * v[2]);
+                    H_(i, k) -= t * v[0];
+                    H_(i, k + 1) -= t * v[1];
+                    H_(i, k + 2) -= t * v[2];
+                }
+            }
+            x = H_(k + 1, k);
+            y = H_(k + 2, k);
+            if (k < hi - 2) z = H_(k + 3, k);
+        }
+        u[0] = x;
+        u[1] = y;
+        if (house(v, &beta, u, 2)) {
+            k = hi - 1;
+            for (j = hi - 2; j <= hi; j++) {
+                double t = beta * (v[0] * H_(k, j) + v[1] * H_(k + 1, j));
+                H_(k, j) -= t * v[0];
+                H_(k + 1, j) -= t * v[1];
+            }
+            for (i = l; i <= hi; i++) {
+                double t = beta * (H_(i, k) * v[0] + H_(i, k + 1) * v[1]);
+                H_(i, k) -= t * v[0];
+                H_(i, k + 1) -= t * v[1];
+            }
+        }
+        if (!isfinite(H_(hi, hi)) || !isfinite(H_(hi, hi - 1))) return 0;
+    }
+    return 1;
+}
+
+#undef H_
+
+/* column col of (Vr, Vi) = an eigenvector of T for lambda = lr + i li: two
+ * steps of inverse iteration on the LU of T - lambda I with partial
+ * pivoting (a pivot below tiny replaced by tiny), the first from U x = b
+ * (b varied with col, so that a repeated eigenvalue gets other vectors),
+ * scaled to max |re| + |im| = 1.  Scratch: 2 d^2 + 2 d doubles, d slongs. */
+static int invit(double *Vr, double *Vi, slong col, const double *T, slong d, double lr, double li, double tiny,
+                 double *Ar, slong *piv)
+{
+    double *Ai = Ar + d * d, *xr = Ai + d * d, *xi = xr + d, mx;
+    slong i, j, k, p, step;
+    for (i = 0; i < d * d; i++) {
+        Ar[i] = T[i];
+        Ai[i] = 0;
+    }
+    for (i = 0; i < d; i++) {
+        Ar[i * d + i] -= lr;
+        Ai[i * d + i] = -li;
+    }
+    for (k = 0; k < d; k++) {
+        double best = -1, pr, pi, den, ir, ii;
+        p = k;
+        for (i = k; i < d; i++) {
+            double a = fabs(Ar[i * d + k]) + fabs(Ai[i * d + k]);
+            if (a > best) { best = a; p = i; }
+        }
+        piv[k] = p;
+        if (p != k)
+            for (j = 0; j < d; j++) {
+                double t;
+                t = Ar[k * d + j]; Ar[k * d + j] = Ar[p * d + j]; Ar[p * d + j] = t;
+                t = Ai[k * d + j]; Ai[k * d + j] = Ai[p * d + j]; Ai[p * d + j] = t;
+            }
+        if (!(best >= tiny)) {
+            Ar[k * d + k] = tiny;
+            Ai[k * d + k] = 0;
+        }
+        pr = Ar[k * d + k];
+        pi = Ai[k * d + k];
+        den = pr * pr + pi * pi;
+        ir = pr / den;
+        ii = -pi / den;
+        for (i = k + 1; i < d; i++) {
+            double fr = Ar[i * d + k] * ir - Ai[i * d + k] * ii, fi = Ar[i * d + k] * ii + Ai[i * d + k] * ir;
+            Ar[i * d + k] = fr;
+            Ai[i * d + k] = fi;
+            if (fr == 0 && fi == 0) continue;
+            for (j = k + 1; j < d; j++) {
+                Ar[i * d + j] -= fr * Ar[k * d + j] - fi * Ai[k * d + j];
+                Ai[i * d + j] -= fr * Ai[k * d + j] + fi * Ar[k * d + j];
+            }
+        }
+    }
+    for (i = 0; i < d; i++) {
+        xr[i] = 1.0 + (double) ((i * 7 + col * 3) % 11) / 16.0;
+        xi[i] = 0;
+    }
+    for (step = 0; step < 2; step++) {
+        if (step > 0) {
+            /* P and L of the LU (unit lower triangle) */
+            for (k = 0; k < d; k++) {
+                double t;
+                p = piv[k];
+                t = xr[k]; xr[k] = xr[p]; xr[p] = t;
+                t = xi[k]; xi[k] = xi[p]; xi[p] = t;
+            }
+            for (i = 1; i < d; i++)
+                for (j = 0; j < i; j++) {
+                    xr[i] -= Ar[i * d + j] * xr[j] - Ai[i * d + j] * xi[j];
+                    xi[i] -= Ar[i * d + j] * xi[j] + Ai[i * d + j] * xr[j];
+                }
+        }
+        for (i = d - 1; i >= 0; i--) {
+            double sr = xr[i], si = xi[i], pr = Ar[i * d + i], pi = Ai[i * d + i], den = pr * pr + pi * pi;
+            for (j = i + 1; j < d; j++) {
+                sr -= Ar[i * d + j] * xr[j] - Ai[i * d + j] * xi[j];
+                si -= Ar[i * d + j] * xi[j] + Ai[i * d + j] * xr[j];
+            }
+            xr[i] = (sr * pr + si * pi) / den;
+            xi[i] = (si * pr - sr * pi) / den;
+        }
+        mx = 0;
+        for (i = 0; i < d; i++) mx = fmax(mx, fabs(xr[i]) + fabs(xi[i]));
+        if (!(mx > 0) || !isfinite(mx)) return 0;
+        for (i = 0; i < d; i++) {
+            xr[i] /= mx;
+            xi[i] /= mx;
+        }
+    }
+    for (i = 0; i < d; i++) {
+        Vr[i * d + col] = xr[i];
+        Vi[i * d + col] = xi[i];
+    }
+    return 1;
+}
+
+/* V (complex point, re/im arrays) = double eigenvectors of T, W ~= V^{-1}
+ * (cinv); cj[k] = 1 where column k is exactly the conjugate of column
+ * k - 1 (a pair), the other columns' eigenvalues real and the columns
+ * exactly real; scratch: 4 d^2 + 6 d doubles; 0 when either fails */
+static int eigvecs(double *Vr, double *Vi, double *Wr, double *Wi, unsigned char *cj, const double *T, slong d,
+                   double *scratch)
+{
+    double *A = scratch, *wr = A + d * d, *wi = wr + d, *v = wi + d, *lu = v + d, tn = 0;
+    slong pstk[64], *piv = d <= 64 ? pstk : flint_malloc(d * sizeof(slong)), k, i;
+    int ok;
+    memcpy(A, T, d * d * sizeof(double));
+    for (i = 0; i < d * d; i++) tn = fmax(tn, fabs(T[i]));
+    hessenberg(A, d, v);
+    ok = tn > 0 && hqr(wr, wi, A, d);
+    tn *= (double) d * DBL_EPSILON;
+    for (k = 0; ok && k < d; k++) {
+        cj[k] = 0;
+        if (wi[k] < 0) {
+            /* hqr puts a pair at k - 1, k */
+            ok = k > 0 && wi[k - 1] == -wi[k] && wr[k - 1] == wr[k];
+            for (i = 0; ok && i < d; i++) {   /* the conjugate pair's vector */
+                Vr[i * d + k] = Vr[i * d + k - 1];
+                Vi[i * d + k] = -Vi[i * d + k - 1];
+            }
+            cj[k] = 1;
+            continue;
+        }
+        if (wi[k] > 0) ok = k + 1 < d && wi[k + 1] == -wi[k] && wr[k + 1] == wr[k];
+        if (ok) ok = invit(Vr, Vi, k, T, d, wr[k], wi[k], tn, lu, piv);
+        for (i = 0; ok && wi[k] == 0 && i < d; i++) Vi[i * d + k] = 0;   /* real: the LU kept it real */
+    }
+    if (piv != pstk) flint_free(piv);
+    return ok && cinv(Wr, Wi, Vr, Vi, scratch, d);
+}
+
+/* (Cr, Ci) = (Ar + i Ai)(Br + i Bi), intervals, A r x k, B k x c; radii
+ * NULL = point; work: 4 r c */
 static void icmul(double *Crm, double *Crr, double *Cim, double *Cir, const double *Arm, const double *Arr,
                   const double *Aim, const double *Air, const double *Brm, const double *Brr, const double *Bim,
-                  const double *Bir, slong d, double *work)
+                  const double *Bir, slong r, slong k, slong c, double *work)
 {
-    slong len = d * d;
+    slong len = r * c;
     double *P1m = work, *P1r = P1m + len, *P2m = P1r + len, *P2r = P2m + len;
-    imul(P1m, P1r, Arm, Arr, Brm, Brr, d, d, d);
-    imul(P2m, P2r, Aim, Air, Bim, Bir, d, d, d);
+    imul(P1m, P1r, Arm, Arr, Brm, Brr, r, k, c);
+    imul(P2m, P2r, Aim, Air, Bim, Bir, r, k, c);
     iadd(Crm, Crr, P1m, P1r, P2m, P2r, len, -1.0);
-    imul(P1m, P1r, Arm, Arr, Bim, Bir, d, d, d);
-    imul(P2m, P2r, Aim, Air, Brm, Brr, d, d, d);
+    imul(P1m, P1r, Arm, Arr, Bim, Bir, r, k, c);
+    imul(P2m, P2r, Aim, Air, Brm, Brr, r, k, c);
     iadd(Cim, Cir, P1m, P1r, P2m, P2r, len, 1.0);
+}
+
+/* row k of (Mrm, Mrr, Mim, Mir), d x d, from row i of the nr x d (Rrm, ...);
+ * conj: the conjugate with columns j and part(j) swapped */
+static void put_row(double *Mrm, double *Mrr, double *Mim, double *Mir, slong k, const double *Rrm, const double *Rrr,
+                    const double *Rim, const double *Rir, slong i, const slong *part, int conj, slong d)
+{
+    slong j;
+    for (j = 0; j < d; j++) {
+        slong jj = conj ? part[j] : j;
+        Mrm[k * d + j] = Rrm[i * d + jj];
+        Mrr[k * d + j] = Rrr[i * d + jj];
+        Mim[k * d + j] = conj ? -Rim[i * d + jj] : Rim[i * d + jj];
+        Mir[k * d + j] = Rir[i * d + jj];
+    }
 }
 
 /* an upper bound of |z| for every z in the complex interval: |re| + |im|
@@ -638,25 +955,72 @@ static double cabs_up(double re, double rr, double im, double ir)
 
 int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
 {
+    return rs_cosim_dbl_radius_pre(r, d, NULL);
+}
+
+int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double *const *pre)
+{
     slong dim = rs_cosim_dbl_dim(d), len = dim * dim, i, j, top = 0;
     double *buf, *Tm, *Tr, *Vr, *Vi, *Wr, *Wi, *Xrm, *Xrr, *Xim, *Xir, *Brm, *Brr, *Bim, *Bir, *Erm, *Err, *Eim, *Eir,
-        *work, *R, *out, *in, e, f, up, lo;
+        *work, *R, *out, *in, e, f, up, lo, stk[STK_], *WRr, *WRi, *VRr, *VRi, *Q;
+    slong istk[2 * 64], *rep, *part, nr = 0, k;
+    unsigned char cstk[64], *cj;
     int ok;
     if (dim < 1) return RS_ERR_UNDECIDED;
-    /* every array is written before it is read; point factors pass NULL radii */
-    buf = flint_malloc((24 * len + 3 * dim) * sizeof(double));
+    /* every array is written before it is read (X's and the rows' every
+     * entry by the pairs below); point factors pass NULL radii; 20 len for
+     * T .. E, work: 5 len + 5 dim (eigvecs: 3 len + 5 dim, icmul: 4 len),
+     * R, out, in: 3 dim, WR, VR: 4 len, Q: 12 len */
+    buf = scratch_get(stk, 41 * len + 8 * dim);
+    rep = dim <= 64 ? istk : flint_malloc(2 * dim * sizeof(slong));
+    part = rep + dim;
+    cj = dim <= 64 ? cstk : flint_malloc(dim);
     Tm = buf; Tr = Tm + len; Vr = Tr + len; Vi = Vr + len; Wr = Vi + len; Wi = Wr + len;
     Xrm = Wi + len; Xrr = Xrm + len; Xim = Xrr + len; Xir = Xim + len;
     Brm = Xir + len; Brr = Brm + len; Bim = Brr + len; Bir = Bim + len;
     Erm = Bir + len; Err = Erm + len; Eim = Err + len; Eir = Eim + len;
     work = Eir + len;
-    R = work + 5 * len;
+    R = work + 5 * len + 5 * dim;
     out = R + dim;
     in = out + dim;
-    ok = rs_cosim_dbl_transition(Tm, Tr, d) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, Tm, dim, work);
+    WRr = in + dim; WRi = WRr + len; VRr = WRi + len; VRi = VRr + len;
+    Q = VRi + len;   /* 12 len: the computed rows of E and B, T V's computed columns */
+    ok = rs_cosim_dbl_transition_pre(Tm, Tr, d, pre) == RS_OK && eigvecs(Vr, Vi, Wr, Wi, cj, Tm, dim, work);
     if (ok) {
-        /* E = I - W V (point W, V) */
-        icmul(Erm, Err, Eim, Eir, Wr, NULL, Wi, NULL, Vr, NULL, Vi, NULL, dim, work);
+        /* Conjugate pairs: with W's row k + 1 set to the conjugate of row k
+         * (cj[k + 1]: V's column k + 1 is column k's conjugate, the other
+         * columns real), row k + 1 of W V and of W T V (T real) is row k's
+         * conjugate with columns j and part(j) swapped, for every T in the
+         * interval: only the rows rep[] (nr of them) are multiplied, and of
+         * T V only the columns rep[] (the others conjugates). */
+        double *ERm = Q, *ERr = ERm + len, *EIm = ERr + len, *EIr = EIm + len, *BRm = EIr + len, *BRr = BRm + len,
+               *BIm = BRr + len, *BIr = BIm + len, *XRm = BIr + len, *XRr = XRm + len, *XIm = XRr + len,
+               *XIr = XIm + len;
+        for (k = 0; k < dim; k++) {
+            part[k] = k + 1 < dim && cj[k + 1] ? k + 1 : cj[k] ? k - 1 : k;
+            if (cj[k])
+                for (j = 0; j < dim; j++) {
+                    Wr[k * dim + j] = Wr[(k - 1) * dim + j];
+                    Wi[k * dim + j] = -Wi[(k - 1) * dim + j];
+                }
+            else
+                rep[nr++] = k;
+        }
+        for (i = 0; i < nr; i++) {
+            memcpy(WRr + i * dim, Wr + rep[i] * dim, dim * sizeof(double));
+            memcpy(WRi + i * dim, Wi + rep[i] * dim, dim * sizeof(double));
+        }
+        for (i = 0; i < dim; i++)
+            for (j = 0; j < nr; j++) {
+                VRr[i * nr + j] = Vr[i * dim + rep[j]];
+                VRi[i * nr + j] = Vi[i * dim + rep[j]];
+            }
+        /* W V, rows rep[] (point W, V); then E = I - W V */
+        icmul(ERm, ERr, EIm, EIr, WRr, NULL, WRi, NULL, Vr, NULL, Vi, NULL, nr, dim, dim, work);
+        for (i = 0; i < nr; i++) {
+            put_row(Erm, Err, Eim, Eir, rep[i], ERm, ERr, EIm, EIr, i, part, 0, dim);
+            if (part[rep[i]] != rep[i]) put_row(Erm, Err, Eim, Eir, part[rep[i]], ERm, ERr, EIm, EIr, i, part, 1, dim);
+        }
         for (i = 0; i < len; i++) {
             Erm[i] = -Erm[i];
             Eim[i] = -Eim[i];
@@ -666,10 +1030,29 @@ int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
             Err[i * dim + i] = up_(Err[i * dim + i] + U_ * fabs(x), 2);
             Erm[i * dim + i] = x;
         }
-        /* X = T V (interval real times point complex), B = W X */
-        imul(Xrm, Xrr, Tm, Tr, Vr, NULL, dim, dim, dim);
-        imul(Xim, Xir, Tm, Tr, Vi, NULL, dim, dim, dim);
-        icmul(Brm, Brr, Bim, Bir, Wr, NULL, Wi, NULL, Xrm, Xrr, Xim, Xir, dim, work);
+        /* X = T V (interval real times point complex): columns rep[], the
+         * others their conjugates; B = W X, rows rep[] */
+        imul(XRm, XRr, Tm, Tr, VRr, NULL, dim, dim, nr);
+        imul(XIm, XIr, Tm, Tr, VRi, NULL, dim, dim, nr);
+        for (i = 0; i < dim; i++)
+            for (j = 0; j < nr; j++) {
+                slong c = rep[j], p = part[c];
+                Xrm[i * dim + c] = XRm[i * nr + j];
+                Xrr[i * dim + c] = XRr[i * nr + j];
+                Xim[i * dim + c] = XIm[i * nr + j];
+                Xir[i * dim + c] = XIr[i * nr + j];
+                if (p != c) {
+                    Xrm[i * dim + p] = XRm[i * nr + j];
+                    Xrr[i * dim + p] = XRr[i * nr + j];
+                    Xim[i * dim + p] = -XIm[i * nr + j];
+                    Xir[i * dim + p] = XIr[i * nr + j];
+                }
+            }
+        icmul(BRm, BRr, BIm, BIr, WRr, NULL, WRi, NULL, Xrm, Xrr, Xim, Xir, nr, dim, dim, work);
+        for (i = 0; i < nr; i++) {
+            put_row(Brm, Brr, Bim, Bir, rep[i], BRm, BRr, BIm, BIr, i, part, 0, dim);
+            if (part[rep[i]] != rep[i]) put_row(Brm, Brr, Bim, Bir, part[rep[i]], BRm, BRr, BIm, BIr, i, part, 1, dim);
+        }
         /* e = ||E||, f = e/(1 - e) ||B|| bounds the rows of V^{-1} T V - B
          * (cosim_fast.c: Neumann series of (I - E)^{-1}) */
         e = 0;
@@ -725,6 +1108,8 @@ int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d)
         r->isolated = 1;
         r->partial = 0;
     }
-    flint_free(buf);
+    if (rep != istk) flint_free(rep);
+    if (cj != cstk) flint_free(cj);
+    scratch_put(buf, stk);
     return ok ? RS_OK : RS_ERR_UNDECIDED;
 }

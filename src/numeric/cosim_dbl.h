@@ -6,7 +6,8 @@
  * nearest only, no fesetround), the exponentials of the Van Loan matrices
  * by scaling and squaring of a Taylor polynomial whose remainder
  * ||Y||^{N+1}/(N+1)! / (1 - ||Y||/(N+2)) is added to every entry, then
- * cosim_fast.c's Gershgorin certificate on W T V, also in interval double.
+ * cosim_fast.c's Gershgorin certificate on W T V, also in interval double
+ * (V from a Hessenberg QR and inverse iteration, no GSL).
  * Every enclosure holds for the exact map; where the bounds are too wide to
  * decide, RS_ERR_UNDECIDED and the caller takes the Arb route
  * (rs_cosim_fast_radius, then rs_cosim_radius).  Private (not installed). */
@@ -49,9 +50,20 @@ slong rs_cosim_dbl_dim(const rs_cosim_dbl_t d);
  * model inside d's intervals).  RS_ERR_UNDECIDED when a bound overflows or
  * the implicit Jacobian is not certified invertible. */
 int rs_cosim_dbl_transition(double *Tm, double *Tr, const rs_cosim_dbl_t d);
+/* The part of the map subsystem s (0, 1) alone sets: its exponential E_s
+ * (n_s x n_s) and gain columns Phi (n_s x m (K + 1)), midpoints then radii,
+ * rs_cosim_dbl_sub_len(d, s) doubles; 0 on overflow.  A map whose axes leave
+ * A_s and B_s unchanged along a row computes it once per row value
+ * (analysis_cosim.c): the same doubles as at every point. */
+slong rs_cosim_dbl_sub_len(const rs_cosim_dbl_t d, int s);
+int rs_cosim_dbl_sub(double *S, const rs_cosim_dbl_t d, int s);
+/* as rs_cosim_dbl_transition with pre[s] (when pre and pre[s] are not NULL)
+ * the block rs_cosim_dbl_sub gives for a model with d's A_s, B_s and H */
+int rs_cosim_dbl_transition_pre(double *Tm, double *Tr, const rs_cosim_dbl_t d, const double *const *pre);
 /* r->lower <= rho(T) <= r->upper, T the exact one-step map of every model
  * in d; RS_ERR_UNDECIDED as rs_cosim_fast_radius (dominant disc not
  * isolated, enclosure wider than 2^-20 relative, or a failure above). */
 int rs_cosim_dbl_radius(rs_radius_t r, const rs_cosim_dbl_t d);
+int rs_cosim_dbl_radius_pre(rs_radius_t r, const rs_cosim_dbl_t d, const double *const *pre);
 
 #endif

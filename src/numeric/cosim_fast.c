@@ -52,8 +52,9 @@ static int fast_transition(arb_mat_t T, const rs_cosim_t cs, slong prec, rs_erro
 }
 
 /* V (point, complex) = the double eigenvectors of mid(T), W ~= V^{-1}
- * (GSL, complex LU); 0 when GSL fails */
-static int double_eigvecs(acb_mat_t V, acb_mat_t W, const arb_mat_t T)
+ * (GSL, complex LU; skipped when W is NULL), E (when not NULL) the double
+ * eigenvalues; 0 when GSL fails */
+static int double_eigvecs(acb_mat_t V, acb_mat_t W, acb_ptr E, const arb_mat_t T)
 {
     slong d = arb_mat_nrows(T), i, j;
     gsl_matrix *A = gsl_matrix_alloc((size_t) d, (size_t) d);
@@ -74,7 +75,12 @@ static int double_eigvecs(acb_mat_t V, acb_mat_t W, const arb_mat_t T)
             if (!isfinite(GSL_REAL(z)) || !isfinite(GSL_IMAG(z))) ok = 0;
             acb_set_d_d(acb_mat_entry(V, i, j), GSL_REAL(z), GSL_IMAG(z));
         }
-    if (ok) {
+    for (i = 0; ok && E != NULL && i < d; i++) {
+        gsl_complex z = gsl_vector_complex_get(ev, (size_t) i);
+        if (!isfinite(GSL_REAL(z)) || !isfinite(GSL_IMAG(z))) ok = 0;
+        acb_set_d_d(E + i, GSL_REAL(z), GSL_IMAG(z));
+    }
+    if (ok && W != NULL) {
         gsl_matrix_complex *Y = gsl_matrix_complex_alloc((size_t) d, (size_t) d);
         gsl_permutation *p = gsl_permutation_alloc((size_t) d);
         int sgn;
@@ -178,7 +184,7 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
     /* B = W T V with W ~= V^{-1} (double): V^{-1} = (I - E)^{-1} W, E = I - W V,
      * so V^{-1} T V = B + F with |F|_inf <= e/(1 - e) |B|_inf, e = |E|_inf < 1
      * (Neumann series; no ball inverse, which cost more than the products) */
-    ok = double_eigvecs(V, W, T);
+    ok = double_eigvecs(V, W, NULL, T);
     if (ok) {
         acb_mat_mul(B, W, V, prec);
         acb_mat_one(Tc);
@@ -275,6 +281,73 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
     acb_mat_clear(V);
     acb_mat_clear(W);
     acb_mat_clear(B);
+    acb_mat_clear(Tc);
+    arb_mat_clear(T);
+    return rc;
+}
+
+int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err)
+{
+    slong d, i;
+    arb_mat_t T;
+    acb_mat_t V, Tc;
+    acb_ptr E, Ec;
+    arb_t t, up, lo;
+    int rc, ok;
+    rc = rs_cosim_check(cs, err);
+    if (rc != RS_OK) return rc;
+    arb_mat_init(T, 0, 0);
+    rc = fast_transition(T, cs, prec, err);
+    d = arb_mat_nrows(T);
+    if (rc != RS_OK || d == 0 || !arb_mat_is_finite(T)) {
+        arb_mat_clear(T);
+        return rc != RS_OK ? rc : rs_error_set(err, RS_ERR_UNDECIDED, "cosim check radius: no finite one-step map%s", "");
+    }
+    acb_mat_init(V, d, d);
+    acb_mat_init(Tc, d, d);
+    E = _acb_vec_init(d);
+    Ec = _acb_vec_init(d);
+    arb_init(t);
+    arb_init(up);
+    arb_init(lo);
+    ok = double_eigvecs(V, NULL, E, T);
+    if (ok) {
+        acb_mat_set_arb_mat(Tc, T);
+        ok = acb_mat_eig_simple_vdhoeven_mourrain(Ec, NULL, NULL, Tc, E, V, prec);
+    }
+    /* rho = max |lambda_i|: its bounds from every eigenvalue's ball */
+    for (i = 0; ok && i < d; i++) {
+        acb_abs(t, Ec + i, prec);
+        if (!arb_is_finite(t)) ok = 0;
+        else if (i == 0) arb_set(up, t);
+        else arb_max(up, up, t, prec);
+    }
+    if (ok) {
+        arf_t b;
+        arf_init(b);
+        arb_get_lbound_arf(b, up, prec);
+        if (arf_sgn(b) < 0) arf_zero(b);
+        arb_set_arf(lo, b);
+        arb_get_ubound_arf(b, up, prec);
+        arb_set_arf(r->upper, b);
+        arb_set(r->lower, lo);
+        arb_union(r->rho, r->lower, r->upper, prec);
+        r->prec = prec;
+        r->nroots = 0;
+        r->method_double = 0;
+        r->isolated = 1;
+        r->partial = 0;
+        arf_clear(b);
+        rc = RS_OK;
+    } else
+        rc = rs_error_set(err, RS_ERR_UNDECIDED, "cosim check radius: eigenvalues not certified simple at %ld bits",
+                          (long) prec);
+    arb_clear(t);
+    arb_clear(up);
+    arb_clear(lo);
+    _acb_vec_clear(E, d);
+    _acb_vec_clear(Ec, d);
+    acb_mat_clear(V);
     acb_mat_clear(Tc);
     arb_mat_clear(T);
     return rc;

@@ -19,4 +19,16 @@
  * falls back to rs_cosim_radius.  Other codes: cs invalid (err set). */
 int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err);
 
+/* The cross-check of a map's fast radii (analysis_cosim.c, every 64th
+ * point): the same ball map of the reduced realisation at prec, GSL's double
+ * eigenvalues and eigenvectors as approximations, every eigenvalue
+ * certified in a ball by van der Hoeven & Mourrain
+ * (acb_mat_eig_simple_vdhoeven_mourrain), r->lower <= rho <= r->upper from
+ * those balls.  Independent of the interval-double radius (cosim_dbl.c:
+ * numeric forms, Taylor exponential in double, Gershgorin on W T V) but for
+ * the case text; cheaper than rs_cosim_radius (no Arb QR, no precision
+ * loop).  RS_ERR_UNDECIDED when an eigenvalue is not certified simple: the
+ * caller takes rs_cosim_radius. */
+int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err);
+
 #endif

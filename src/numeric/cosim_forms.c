@@ -305,3 +305,19 @@ int rs_cosim_nforms_at(rs_cosim_dbl_t d, const rs_cosim_nforms_struct *N, const 
     flint_free(pw);
     return ok;
 }
+
+unsigned rs_cosim_nforms_sub_axes(const rs_cosim_nforms_struct *N, int s)
+{
+    slong n = N->n, nf = N->nf, n0 = N->nstate[0], j, q, t, k;
+    unsigned mask = 0;
+    for (j = s ? n0 : 0; j < (s ? n : n0); j++) {
+        if (N->second[j]) continue;   /* a constant row */
+        for (q = -1; q < n + nf; q++) {
+            range_t g = q < 0 ? N->den[j] : N->W[j * (n + nf) + q];
+            for (t = g.start; t < g.end; t++)
+                for (k = 0; k < N->naxes; k++)
+                    if (N->ex[t * MAXAX + k] > 0) mask |= 1u << k;
+        }
+    }
+    return mask;
+}

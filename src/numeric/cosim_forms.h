@@ -32,4 +32,8 @@ void rs_cosim_nforms_free(rs_cosim_nforms_struct *N);
  * contains 0 or a value is not finite: the caller takes the exact route. */
 int rs_cosim_nforms_at(rs_cosim_dbl_t d, const rs_cosim_nforms_struct *N, const fmpq *x);
 
+/* the axes (bit k: axis k) that subsystem s's rows (A_s, B_s) depend on:
+ * along the others rs_cosim_nforms_at gives them the same doubles */
+unsigned rs_cosim_nforms_sub_axes(const rs_cosim_nforms_struct *N, int s);
+
 #endif

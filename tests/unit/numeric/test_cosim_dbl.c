@@ -14,6 +14,10 @@
  *     certified eigenvalues) must lie inside it;
  *   - the closed form of uncoupled oscillators x'' + d x' + c x = 0 over
  *     H = 1: rho = e^{-d/2} of the least damped one (underdamped);
+ *   - the subsystems' blocks computed apart (a map's per-row precomputation)
+ *     against the point's own computation, bit for bit;
+ *   - the bench map's region: the double route certifies at every point of a
+ *     grid and meets the full certified radius (rs_cosim_radius);
  *   - the numeric forms of cases/li-explicit-k1.case over (acc1, c1) against
  *     rs_cosim_li_ff (the paper's matrices written out in cosim.c, not the
  *     case file's lowering): every exact entry inside its interval.
@@ -215,6 +219,111 @@ static void test_uncoupled_closed_form(void **state)
     rs_cosim_clear(cs);
 }
 
+/* the subsystems' blocks computed apart (rs_cosim_dbl_sub, as a map
+ * precomputes them per row) give the same doubles as the point's own
+ * computation: transition and radius bit for bit */
+static void test_pre_blocks_identical(void **state)
+{
+    flint_rand_t st;
+    rs_cosim_t cs;
+    rs_cosim_dbl_t d;
+    rs_error_t err;
+    int kind, meth, it, radii = 0;
+    slong K, dim;
+    (void) state;
+    flint_randinit(st);
+    rs_cosim_init(cs, 2, 2);
+    rs_cosim_dbl_init(d);
+    for (kind = 0; kind < 3; kind++)
+        for (meth = 0; meth < 2; meth++)
+            for (K = 0; K <= 3; K++)
+                for (it = 0; it < 2; it++) {
+                    double *T1, *T2, *S[2];
+                    const double *pre[2];
+                    rs_radius_t f, g;
+                    int s, r1, r2;
+                    rand_li(cs, st, kind, meth ? RS_COSIM_IMPLICIT : RS_COSIM_EXPLICIT, K);
+                    assert_int_equal(rs_cosim_dbl_set_cosim(d, cs, err), RS_OK);
+                    dim = rs_cosim_dbl_dim(d);
+                    T1 = flint_calloc(4 * dim * dim, sizeof(double));
+                    T2 = T1 + 2 * dim * dim;
+                    for (s = 0; s < 2; s++) {
+                        S[s] = flint_malloc(rs_cosim_dbl_sub_len(d, s) * sizeof(double));
+                        assert_int_equal(rs_cosim_dbl_sub(S[s], d, s), 1);
+                        pre[s] = S[s];
+                    }
+                    r1 = rs_cosim_dbl_transition(T1, T1 + dim * dim, d);
+                    r2 = rs_cosim_dbl_transition_pre(T2, T2 + dim * dim, d, pre);
+                    assert_int_equal(r1, r2);
+                    if (r1 == RS_OK) assert_memory_equal(T1, T2, 2 * dim * dim * sizeof(double));
+                    rs_radius_init(f);
+                    rs_radius_init(g);
+                    r1 = rs_cosim_dbl_radius(f, d);
+                    r2 = rs_cosim_dbl_radius_pre(g, d, pre);
+                    assert_int_equal(r1, r2);
+                    if (r1 == RS_OK) {
+                        radii++;
+                        assert_true(arb_equal(f->lower, g->lower));
+                        assert_true(arb_equal(f->upper, g->upper));
+                    }
+                    rs_radius_clear(f);
+                    rs_radius_clear(g);
+                    flint_free(S[0]);
+                    flint_free(S[1]);
+                    flint_free(T1);
+                }
+    assert_true(radii >= 20);
+    rs_cosim_dbl_clear(d);
+    rs_cosim_clear(cs);
+    flint_randclear(st);
+}
+
+/* the bench map's region (cases/li-explicit-k1.case: acc1 in [0, 3], c1 in
+ * [1/2, 2], d1 = 1/5, alphas 1, adc1 = 1), explicit and implicit k = 1:
+ * the double route (Hessenberg QR + inverse iteration eigenvectors)
+ * certifies at every point of a 7 x 6 grid, as GSL's eigenvectors did, and
+ * meets the full certified radius (rs_cosim_radius, 6 digits) */
+static void test_grid_certifies(void **state)
+{
+    static const char *acc[7] = { "0", "1/3", "1", "3/2", "2", "5/2", "3" };
+    static const char *c1[6] = { "1/2", "3/4", "101/100", "3/2", "7/4", "2" };
+    rs_cosim_t cs;
+    rs_cosim_dbl_t d;
+    rs_error_t err;
+    fmpq_t v[7];
+    int i, j, k, meth, ok = 0, total = 0;
+    (void) state;
+    rs_cosim_init(cs, 2, 2);
+    rs_cosim_dbl_init(d);
+    for (k = 0; k < 7; k++) fmpq_init(v[k]);
+    for (meth = 0; meth < 2; meth++)
+        for (i = 0; i < 7; i++)
+            for (j = 0; j < 6; j++) {
+                rs_radius_t f, g;
+                const char *sv[7] = { c1[j], "1/5", "1", "1", "1", acc[i], "1" };
+                for (k = 0; k < 7; k++) assert_int_equal(fmpq_set_str(v[k], sv[k], 10), 0);
+                assert_int_equal(rs_cosim_li_ff(cs, v[0], v[1], v[2], v[3], v[4], v[5], v[6], err), RS_OK);
+                cs->method = meth ? RS_COSIM_IMPLICIT : RS_COSIM_EXPLICIT;
+                cs->order = 1;
+                assert_int_equal(rs_cosim_dbl_set_cosim(d, cs, err), RS_OK);
+                rs_radius_init(f);
+                rs_radius_init(g);
+                total++;
+                if (rs_cosim_dbl_radius(f, d) == RS_OK) {
+                    ok++;
+                    assert_int_equal(rs_cosim_radius(g, cs, 6, 1024, err), RS_OK);
+                    assert_true(arb_le(f->lower, g->upper));
+                    assert_true(arb_le(g->lower, f->upper));
+                }
+                rs_radius_clear(f);
+                rs_radius_clear(g);
+            }
+    assert_int_equal(ok, total);
+    for (k = 0; k < 7; k++) fmpq_clear(v[k]);
+    rs_cosim_dbl_clear(d);
+    rs_cosim_clear(cs);
+}
+
 static int in_ival(const fmpq_t q, double m, double r)
 {
     arb_t a, b;
@@ -249,6 +358,11 @@ static void test_forms_vs_li(void **state)
     assert_int_equal(rs_cosim_model_init(&F, c, err), RS_OK);
     N = rs_cosim_nforms_new(&F, c, axis, 2);
     assert_non_null(N);
+    /* S1: v1' = -c1 x1 - d1 v1 + lc, S2: v2' = -ac21/am21 c1 x2 - ...: the
+     * subsystems' rows (A_s, B_s) depend on c1 (axis 1) only, not on acc1
+     * (it enters through the force, C) */
+    assert_int_equal(rs_cosim_nforms_sub_axes(N, 0), 2u);
+    assert_int_equal(rs_cosim_nforms_sub_axes(N, 1), 2u);
     rs_cosim_init(cs, 2, 2);
     rs_cosim_dbl_init(d);
     fmpq_init(x + 0);
@@ -296,6 +410,8 @@ int main(void)
         cmocka_unit_test(test_transition_vs_arb),
         cmocka_unit_test(test_radius_vs_arb),
         cmocka_unit_test(test_uncoupled_closed_form),
+        cmocka_unit_test(test_pre_blocks_identical),
+        cmocka_unit_test(test_grid_certifies),
         cmocka_unit_test(test_forms_vs_li),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);

@@ -11,7 +11,7 @@
  *     so rho = e^{-d/2} of the least damped subsystem;
  *   - two equal uncoupled subsystems: every eigenvalue double, so no disc
  *     can be isolated and the fast path must decline (the caller falls back).
- */
+ * The same references for rs_cosim_check_radius (the maps' cross-check). */
 #include "testutil.h"
 #include <string.h>
 #include "recstab/cosim.h"
@@ -44,7 +44,7 @@ static void test_grid_vs_full(void **state)
     rs_radius_t f, g;
     rs_error_t err;
     arb_t w, lo, hi;
-    int i, j, meth, fast_ok = 0, total = 0;
+    int i, j, meth, fast_ok = 0, check_ok = 0, total = 0;
     (void) state;
     rs_cosim_init(cs, 2, 2);
     arb_init(w);
@@ -75,11 +75,27 @@ static void test_grid_vs_full(void **state)
                     arb_mul_2exp_si(lo, f->lower, -20);
                     assert_true(arb_le(w, lo));
                 }
+                /* the maps' cross-check (van der Hoeven-Mourrain on the same
+                 * ball map): certifies here, meets the full radius and holds
+                 * its midpoint up to its width */
+                rs_radius_clear(f);
+                rs_radius_init(f);
+                if (rs_cosim_check_radius(f, cs, 64, err) == RS_OK) {
+                    check_ok++;
+                    assert_true(arb_le(f->lower, g->upper));
+                    assert_true(arb_le(g->lower, f->upper));
+                    arb_sub(w, g->upper, g->lower, 128);
+                    arb_sub(lo, f->lower, w, 128);
+                    arb_add(hi, f->upper, w, 128);
+                    assert_true(arf_cmp(arb_midref(g->rho), arb_midref(lo)) >= 0);
+                    assert_true(arf_cmp(arb_midref(g->rho), arb_midref(hi)) <= 0);
+                }
                 rs_radius_clear(f);
                 rs_radius_clear(g);
             }
     /* generic models: simple, separated eigenvalues everywhere on this grid */
     assert_int_equal(fast_ok, total);
+    assert_int_equal(check_ok, total);
     arb_clear(w);
     arb_clear(lo);
     arb_clear(hi);
@@ -106,6 +122,14 @@ static void test_uncoupled_closed_form(void **state)
     assert_true(arb_le(f->lower, t));
     assert_true(arb_ge(f->upper, t));
     assert_true(arb_contains(f->rho, t));
+    /* the cross-check's radius too, within 2^-40 */
+    rs_radius_clear(f);
+    rs_radius_init(f);
+    assert_int_equal(rs_cosim_check_radius(f, cs, 64, err), RS_OK);
+    assert_true(arb_le(f->lower, t));
+    assert_true(arb_ge(f->upper, t));
+    arb_sub(t, f->upper, f->lower, 128);
+    assert_true(arf_cmpabs_2exp_si(arb_midref(t), -40) < 0);
     arb_clear(t);
     rs_radius_clear(f);
     rs_cosim_clear(cs);
@@ -122,6 +146,8 @@ static void test_double_eigenvalues_decline(void **state)
     rs_radius_init(f);
     set_li(cs, "1", "1/5", "1", "0", "0", RS_COSIM_EXPLICIT, 1);
     assert_int_equal(rs_cosim_fast_radius(f, cs, 64, err), RS_ERR_UNDECIDED);
+    /* not simple: van der Hoeven-Mourrain declines as well */
+    assert_int_equal(rs_cosim_check_radius(f, cs, 64, err), RS_ERR_UNDECIDED);
     rs_radius_clear(f);
     rs_cosim_clear(cs);
 }
