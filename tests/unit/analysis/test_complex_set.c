@@ -1,0 +1,159 @@
+/* test_complex_set.c -- the analyses at complex set values that were refused
+ * before (issue 15 §1): `region NAME` of a real parameter with p over Q(i).
+ * Every expected interval is derived by hand in the comment beside it. */
+#include "testutil.h"
+#include <string.h>
+#include <math.h>
+#include "recstab/analysis.h"
+
+static const json_t *result(const json_t *doc, size_t i)
+{
+    return json_array_get(json_object_get(doc, "results"), i);
+}
+
+static const char *str(const json_t *o, const char *k)
+{
+    return json_string_value(json_object_get(o, k));
+}
+
+static const char *end(const json_t *iv, const char *k)
+{
+    const json_t *e = json_object_get(iv, k);
+    if (json_is_null(e)) return "inf";
+    return json_is_string(e) ? json_string_value(e) : "algebraic";
+}
+
+struct iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
+
+static void check_region(const json_t *o, const struct iv *want, size_t n, const char *what)
+{
+    const json_t *ivs = json_object_get(o, "intervals");
+    size_t i;
+    if (o == NULL) fail_msg("%s: no result", what);
+    assert_string_equal(str(o, "analysis"), "region");
+    assert_string_equal(str(o, "over"), "Q(i)");
+    assert_true(json_integer_value(json_object_get(o, "cross_checked_samples")) > 0);
+    if (json_array_size(ivs) != n) fail_msg("%s: %zu intervals, expected %zu", what, json_array_size(ivs), n);
+    for (i = 0; i < n; i++) {
+        const json_t *iv = json_array_get(ivs, i);
+        if (strcmp(end(iv, "lo"), want[i].lo) != 0 || strcmp(end(iv, "hi"), want[i].hi) != 0
+            || json_is_true(json_object_get(iv, "lo_closed")) != want[i].lo_closed
+            || json_is_true(json_object_get(iv, "hi_closed")) != want[i].hi_closed
+            || strcmp(str(iv, "status"), want[i].status) != 0)
+            fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
+                     json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", end(iv, "lo"), end(iv, "hi"),
+                     json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", str(iv, "status"),
+                     want[i].lo_closed ? "[" : "(", want[i].lo, want[i].hi, want[i].hi_closed ? "]" : ")",
+                     want[i].status);
+    }
+}
+
+static json_t *run(const char *text, int *outcome)
+{
+    int code;
+    json_t *doc = tu_run_text(text, NULL, outcome, &code);
+    if (doc == NULL) fail_msg("case failed with code %d:\n%s", code, text);
+    assert_int_equal(*outcome & RS_OUTCOME_INCONSISTENT, 0);
+    return doc;
+}
+
+/* forward Euler lambda = 1 + h q at q = -1 + i: by hand |1 + h q|^2 =
+ * (1 - h)^2 + h^2 = 1 - 2 h (1 - h): stable on (0, 1), on the circle at h = 0
+ * and h = 1, outside beyond (h < 0 too: 1 - 2h(1 - h) > 1). */
+static void test_region_euler(void **state)
+{
+    static const struct iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+                                     {"0", 0, "1", 0, "stable"}, {"1", 1, "1", 1, "marginal"},
+                                     {"1", 0, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = run("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nanalyse region h\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 5, "forward Euler at q = -1 + i");
+    assert_string_equal(str(json_object_get(result(doc, 0), "substituted"), "q"), "-1+i");
+    json_decref(doc);
+}
+
+/* leapfrog lambda^2 + 2 q a lambda - 1 at q = i: by the quadratic formula
+ * lambda = -i a +- sqrt(1 - a^2); |a| < 1: two distinct roots of modulus 1
+ * (a^2 + 1 - a^2); a = +-1: the double root -+i on the circle (unstable);
+ * |a| > 1: -i (a +- sqrt(a^2 - 1)), one of modulus > 1. */
+static void test_region_leapfrog(void **state)
+{
+    static const struct iv want[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
+                                     {"1", 1, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = run("param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\nanalyse region a\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 3, "leapfrog at q = i");
+    json_decref(doc);
+}
+
+/* RK4 (the builder) on y' = q y at q = -1/2 + 3/2 i, step h >= 0:
+ * lambda = R(h q), R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24.  Expanding
+ * Re R(h q)^2 + Im R(h q)^2 - 1 with exact fractions (Python's Fraction,
+ * outside recstab) gives h g(h)/9216 with g = 625 h^7 - 1000 h^6 - 800 h^5
+ * + 1440 h^4 + 384 h^3 - 1536 h^2 + 4608 h - 9216, irreducible, whose one
+ * positive root is where |R| = 1: a double-precision bisection of
+ * |R(h q)| = 1 (Python cmath) gives 1.7791064124296434.  g(0) < 0: stable
+ * just right of 0; h = 0: lambda = 1, marginal. */
+static void test_region_rk4_irrational(void **state)
+{
+    static const struct iv want[] = {{"0", 1, "0", 1, "marginal"}, {"0", 0, "algebraic", 0, "stable"},
+                                     {"algebraic", 1, "algebraic", 1, "marginal"},
+                                     {"algebraic", 0, "inf", 0, "unstable"}};
+    int outcome;
+    const json_t *iv;
+    json_t *doc = run("param h q\nassume h >= 0\nsubsystem S state y\n  y' = q*y\nintegrate S rk rk4 h\n"
+                      "set q = -1/2 + 3/2*i\nanalyse region h\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 4, "rk4 at q = -1/2 + 3/2 i");
+    iv = json_array_get(json_object_get(result(doc, 0), "intervals"), 2);
+    assert_true(fabs(json_real_value(json_object_get(iv, "lo_approx")) - 1.7791064124296434) < 1e-12);
+    assert_string_equal(str(json_object_get(iv, "lo"), "minpoly"),
+                        "625*h^7 - 1000*h^6 - 800*h^5 + 1440*h^4 + 384*h^3 - 1536*h^2 + 4608*h - 9216");
+    json_decref(doc);
+}
+
+/* p = (lambda - x)(lambda - i/2) at real x with the set value c = i/2:
+ * gcd(Re p, Im p) = lambda - x is real (the real route's gcd step); the root
+ * i/2 stays inside, so the status is that of lambda - x: stable on (-1, 1),
+ * marginal at +-1, unstable beyond. */
+static void test_region_real_factor(void **state)
+{
+    static const struct iv want[] = {{"inf", 0, "-1", 0, "unstable"}, {"-1", 1, "-1", 1, "marginal"},
+                                     {"-1", 0, "1", 0, "stable"}, {"1", 1, "1", 1, "marginal"},
+                                     {"1", 0, "inf", 0, "unstable"}};
+    int outcome;
+    json_t *doc = run("param x c\nchar (lambda - x)*(lambda - c)\nset c = 1/2*i\nanalyse region x\n", &outcome);
+    (void) state;
+    check_region(result(doc, 0), want, 5, "(lambda - x)(lambda - i/2)");
+    json_decref(doc);
+}
+
+/* refused with a clear message: the region parameter itself complex, and a
+ * parameter left symbolic */
+static void test_region_refused(void **state)
+{
+    int outcome, code;
+    json_t *doc = tu_run_text("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nanalyse region q\n", NULL,
+                              &outcome, &code);
+    (void) state;
+    assert_null(doc);
+    assert_int_equal(code, RS_ERR_INPUT);
+    doc = tu_run_text("param h q w\nchar lambda - 1 - h*q*w\nset q = -1 + i\nanalyse region h\n", NULL, &outcome,
+                      &code);
+    assert_null(doc);
+    assert_int_equal(code, RS_ERR_INPUT);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_region_euler),
+        cmocka_unit_test(test_region_leapfrog),
+        cmocka_unit_test(test_region_rk4_irrational),
+        cmocka_unit_test(test_region_real_factor),
+        cmocka_unit_test(test_region_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
