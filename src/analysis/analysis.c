@@ -186,6 +186,14 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     if (run->c->ncsets == 0) return RS_OK;
+    if (strcmp(nm, "region") == 0 && (req->u.region.forall || req->u.region.twod)) {
+        val = rs_complex_str(x->re, x->im);
+        snprintf(msg, sizeof msg, "'region %s' does not run at a complex set value (%s = %s): over Q(i) recstab "
+                 "runs region NAME of one real parameter, the others set", req->u.region.forall ? "NAME for all"
+                 : "N1, N2", x->name, val);
+        free(val);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
     for (k = 0; ok[k] != NULL; k++)
         if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
     val = rs_complex_str(x->re, x->im);

@@ -144,6 +144,15 @@ static void test_region_refused(void **state)
                       &code);
     assert_null(doc);
     assert_int_equal(code, RS_ERR_INPUT);
+    /* for all and the plane: their projections take every parameter real */
+    doc = tu_run_text("param h w q\nassume w > 0\nchar lambda - 1 - h*q*w\nset q = -1 + i\nanalyse region h for all\n",
+                      NULL, &outcome, &code);
+    assert_null(doc);
+    assert_int_equal(code, RS_ERR_INPUT);
+    doc = tu_run_text("param h w q\nchar lambda - 1 - h*q*w\nset q = -1 + i\nanalyse region h, w\n", NULL, &outcome,
+                      &code);
+    assert_null(doc);
+    assert_int_equal(code, RS_ERR_INPUT);
 }
 
 int main(void)
