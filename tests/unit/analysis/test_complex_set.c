@@ -155,6 +155,28 @@ static void test_region_refused(void **state)
     assert_int_equal(code, RS_ERR_INPUT);
 }
 
+/* map over two real parameters at q = -1 + i: forward Euler lambda = 1 + h w q,
+ * by hand |lambda|^2 = 1 - 2 u (1 - u) with u = h w: stable iff 0 < u < 1,
+ * marginal at u = 0 and u = 1.  Grid h = 0, 1/2, 1, 3/2, 2 and w = 0, 1/2, 1:
+ * w = 0: u = 0 five times (marginal); w = 1/2: u = 0, 1/4, 1/2, 3/4, 1 (M S S S
+ * M); w = 1: u = 0, 1/2, 1, 3/2, 2 (M S M U U): stable 4, marginal 9, unstable 2. */
+static void test_map(void **state)
+{
+    int outcome;
+    json_t *doc = run("param h w q\nchar lambda - 1 - h*q*w\nset q = -1 + i\nanalyse map h 0 2 5, w 0 1 3\n",
+                      &outcome);
+    const json_t *o = result(doc, 0), *vd = json_object_get(o, "verdicts");
+    (void) state;
+    assert_string_equal(str(o, "analysis"), "map");
+    assert_string_equal(str(o, "over"), "Q(i)");
+    assert_string_equal(str(json_object_get(o, "complex"), "q"), "-1+i");
+    assert_int_equal(json_integer_value(json_object_get(vd, "stable")), 4);
+    assert_int_equal(json_integer_value(json_object_get(vd, "marginal")), 9);
+    assert_int_equal(json_integer_value(json_object_get(vd, "unstable")), 2);
+    assert_int_equal(json_integer_value(json_object_get(json_object_get(o, "cross_check"), "stride")), 1);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -163,6 +185,7 @@ int main(void)
         cmocka_unit_test(test_region_rk4_irrational),
         cmocka_unit_test(test_region_real_factor),
         cmocka_unit_test(test_region_refused),
+        cmocka_unit_test(test_map),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
