@@ -177,6 +177,40 @@ static void test_map(void **state)
     json_decref(doc);
 }
 
+/* simulate at complex values: lambda = 1 + q, so x[n] = (1 + q)^n x[0]; by
+ * hand |1 + q| = 1/2 at q = -1 + i/2, 1 at q = -1 + i, sqrt(5)/2 =
+ * 1.1180339887... at q = -1/2 + i.  Leapfrog at a = 1 (q = i): p = (lambda +
+ * i)^2 (quadratic formula), x[n] = (A + B n)(-i)^n grows linearly: unstable
+ * with no root outside, the run's growth tends to 1 (consistent). */
+static void test_simulate(void **state)
+{
+    static const struct { const char *q; double growth; const char *status; } t[] = {
+        {"-1 + 1/2*i", 0.5, "stable"}, {"-1 + i", 1.0, "marginal"}, {"-1/2 + i", 1.1180339887498949, "unstable"}};
+    char text[200];
+    size_t i;
+    int outcome;
+    json_t *doc;
+    const json_t *o;
+    (void) state;
+    for (i = 0; i < 3; i++) {
+        snprintf(text, sizeof text, "param q\nchar lambda - 1 - q\nset q = %s\nanalyse simulate\n", t[i].q);
+        doc = run(text, &outcome);
+        o = result(doc, 0);
+        assert_string_equal(str(o, "over"), "Q(i)");
+        assert_true(fabs(json_real_value(json_object_get(o, "growth_approx")) - t[i].growth) < 1e-9);
+        assert_string_equal(str(json_object_get(o, "verdict"), "status"), t[i].status);
+        assert_true(json_is_true(json_object_get(json_object_get(o, "check"), "consistent")));
+        json_decref(doc);
+    }
+    doc = run("param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\nset a = 1\nanalyse simulate\n", &outcome);
+    o = result(doc, 0);
+    assert_string_equal(str(json_object_get(o, "verdict"), "status"), "unstable");
+    assert_int_equal(json_integer_value(json_object_get(json_object_get(o, "verdict"), "outside")), 0);
+    assert_true(fabs(json_real_value(json_object_get(o, "growth_approx")) - 1.0) < 1e-2);
+    assert_true(json_is_true(json_object_get(json_object_get(o, "check"), "consistent")));
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -186,6 +220,7 @@ int main(void)
         cmocka_unit_test(test_region_real_factor),
         cmocka_unit_test(test_region_refused),
         cmocka_unit_test(test_map),
+        cmocka_unit_test(test_simulate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
