@@ -211,6 +211,41 @@ static void test_simulate(void **state)
     json_decref(doc);
 }
 
+/* limit at complex values.  Trapezoid on y' = q y: lambda = (1 + h q/2)/(1 -
+ * h q/2), so by hand lambda -> 1 as h -> 0 and -> -1 as h -> inf (any q != 0).
+ * p = lambda^3 - h q lambda^2 - lambda + h q (1 + i) at q = 1 + i: h -> 0 gives
+ * lambda^3 - lambda (roots 0, 1, -1); h -> inf the coefficient of h,
+ * -q lambda^2 + q (1 + i), so lambda^2 = 1 + i, |lambda| = 2^(1/4) =
+ * 1.18920711500272..., and one root escapes (the degree drops 3 -> 2). */
+static void test_limit(void **state)
+{
+    int outcome;
+    json_t *doc = run("param h q\nsubsystem S state y\n  y' = q*y\nintegrate S trapezoidal h\nset q = -1 + i\n"
+                      "analyse limit h -> inf\nanalyse limit h -> 0\n", &outcome);
+    const json_t *o, *rts;
+    (void) state;
+    o = result(doc, 0);
+    assert_string_equal(str(o, "over"), "Q(i)");
+    rts = json_object_get(o, "roots");
+    assert_int_equal(json_array_size(rts), 1);
+    assert_string_equal(str(json_array_get(rts, 0), "value"), "-1");
+    rts = json_object_get(result(doc, 1), "roots");
+    assert_int_equal(json_array_size(rts), 1);
+    assert_string_equal(str(json_array_get(rts, 0), "value"), "1");
+    json_decref(doc);
+    doc = run("param h q\nchar lambda^3 - h*q*lambda^2 - lambda + h*q*(1 + i)\nset q = 1 + i\n"
+              "analyse limit h -> inf\nanalyse limit h -> 0\n", &outcome);
+    o = result(doc, 0);
+    assert_int_equal(json_integer_value(json_object_get(o, "roots_to_infinity")), 1);
+    assert_true(fabs(json_real_value(json_object_get(o, "max_abs")) - 1.189207115002721) < 1e-12);
+    o = result(doc, 1);
+    assert_string_equal(str(o, "limit_poly"), "lambda^3 - lambda");
+    assert_int_equal(json_array_size(json_object_get(o, "roots")), 3);
+    assert_string_equal(str(json_array_get(json_object_get(o, "roots"), 0), "value"), "0");
+    assert_true(fabs(json_real_value(json_object_get(o, "max_abs")) - 1.0) < 1e-15);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -221,6 +256,7 @@ int main(void)
         cmocka_unit_test(test_region_refused),
         cmocka_unit_test(test_map),
         cmocka_unit_test(test_simulate),
+        cmocka_unit_test(test_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
