@@ -160,7 +160,7 @@ static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t 
 static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
 {
     static const char *const ok[] = {"charpoly", "bilinear", "routh", "hurwitz", "jury", "stability", "radius",
-                                      "modes", "claim", "sweep", "region", "map", "simulate", "limit", NULL};
+                                      "modes", "claim", "sweep", "region", "map", "simulate", "limit", "expect", NULL};
     const rs_cset_t *x = run->c->csets;
     const char *nm = req->def->name;
     char *val, msg[RS_ERROR_MSG_LEN];

@@ -246,6 +246,23 @@ static void test_limit(void **state)
     json_decref(doc);
 }
 
+/* expect at complex values: the printed polynomial is an identity in the
+ * parameters, q compared as a symbol.  Forward Euler p = lambda - 1 - h q;
+ * by hand q(z) = (1 - z) p((1 + z)/(1 - z)) = (1 + z) - (1 - z) - h q (1 - z)
+ * = z (2 + h q) - h q; a wrong sign is "different" (exit 1). */
+static void test_expect(void **state)
+{
+    int outcome;
+    json_t *doc = run("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nexpect bilinear z*(2 + h*q) - h*q\n"
+                      "expect charpoly lambda - 1 + h*q\n", &outcome);
+    (void) state;
+    assert_string_equal(str(result(doc, 0), "status"), "equal");
+    assert_string_equal(json_string_value(json_array_get(json_object_get(result(doc, 0), "kept_symbolic"), 0)), "q");
+    assert_string_equal(str(result(doc, 1), "status"), "different");
+    assert_int_equal(outcome & RS_OUTCOME_FAILED, RS_OUTCOME_FAILED);
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -257,6 +274,7 @@ int main(void)
         cmocka_unit_test(test_map),
         cmocka_unit_test(test_simulate),
         cmocka_unit_test(test_limit),
+        cmocka_unit_test(test_expect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
