@@ -182,28 +182,27 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     fmpq *vals;
     double t0 = rs_sweep_now();
     int r = rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep");
-    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES)
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep ... of modes does not run at complex set values: use "
-                         "of radius or of stability (or modes at one point)%s", "");
     if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;
     r = rs_sweep_cx_init(&J, run, q, R, v);
     vals = _fmpq_vec_init(npoints);
     for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
+    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) r = rs_sweep_cx_modes(&J, run, q, R, v, vals, npoints);
     if (r == RS_OK) {
         J.vals[0] = vals;
         J.stride = npoints > 256 ? npoints / 256 : 1;   /* about 256 points certified beside the exact verdict */
         m.point = rs_sweep_cx_point;
         m.model = &J;
         m.serial = 0;
-        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, 0);
+        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, J.nref);
         if (r == RS_OK) {
             json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0);
             json_object_set_new(o, "over", json_string("Q(i)"));
             json_object_set_new(o, "complex", rs_sweep_cx_at(run));
             json_object_set_new(o, "method", json_string(
                 "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
-                "p's own root counts; the radius certified from p conj(p) (the same moduli)"));
+                "p's own root counts; the radius certified from p conj(p) (the same moduli); modes from p's own "
+                "roots (Yun over Q(i), each factor's roots isolated by acb_poly_find_roots)"));
             json_object_set_new(o, "cross_check", json_pack("{s:I,s:s}", "stride", (json_int_t) J.stride, "method",
                 "every stride-th point also by the certified ladder on p conj(p) (stable iff p is, unstable where p "
                 "is; exit 3 on disagreement)"));

@@ -205,12 +205,19 @@ typedef struct {
     const char *names[2];
     int of;
     json_t *csat;             /* the complex set values (rs_sweep_cx_at), for the JSON */
+    /* `of modes` (sweeps): per point the step and the references, p's own roots over Q(i) */
+    slong npoints, nref;
+    fmpq *hval, *refval;
 } rs_sweep_cx_t;
 /* p over Q(i) of v, checked: no axis has a complex value, every other
  * parameter is set, the degree does not drop for every point; errors at q */
 int rs_sweep_cx_init(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
                      const rs_variant_t *v);
 void rs_sweep_cx_clear(rs_sweep_cx_t *J);
+/* `of modes`: the options h= and reference= of R at the npoints values vals
+ * of the swept parameter (as for real sweeps) */
+int rs_sweep_cx_modes(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                      const rs_variant_t *v, const fmpq *vals, slong npoints);
 void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err);
 /* {NAME: "a+b*i"} of the complex set values */
 json_t *rs_sweep_cx_at(const rs_run_t *run);

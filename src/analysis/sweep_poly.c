@@ -23,6 +23,7 @@
 #include "analysis/registry.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
+#include <acb_poly.h>
 
 struct rs_sweep_poly_struct {
     rs_run_t *run;
@@ -448,8 +449,26 @@ int rs_sweep_cx_init(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, con
     return r;
 }
 
+int rs_sweep_cx_modes(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                      const rs_variant_t *v, const fmpq *vals, slong npoints)
+{
+    job_t *T = calloc(1, sizeof *T);   /* parse_modes_opts' fields only */
+    int r;
+    T->npoints = npoints;
+    r = parse_modes_opts(T, run, q, v, R->opts, R->axis[0].var, vals);
+    J->npoints = npoints;
+    J->hval = T->hval;
+    J->refval = T->refval;
+    J->nref = T->nref;
+    free(T);
+    return r;
+}
+
 void rs_sweep_cx_clear(rs_sweep_cx_t *J)
 {
+    if (J->hval != NULL) _fmpq_vec_clear(J->hval, J->npoints);
+    if (J->refval != NULL) _fmpq_vec_clear(J->refval, J->npoints * J->nref);
+    J->hval = J->refval = NULL;
     if (J->s == NULL) return;
     fmpz_mpoly_clear(J->re, J->s->zctx);
     fmpz_mpoly_clear(J->im, J->s->zctx);
@@ -465,6 +484,61 @@ json_t *rs_sweep_cx_at(const rs_run_t *run)
         free(str);
     }
     return at;
+}
+
+/* rr's roots (with multiplicity) of p = pr + i pi of degree n: Yun over
+ * Q(i) (exact multiplicities), each squarefree factor's roots isolated by
+ * acb_poly_find_roots (certified when it isolates all of them) to 60
+ * relative bits; 0 when the precision limit came first.  (an_modes.c does
+ * the same for one point.) */
+static int cx_point_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong n, slong max_prec)
+{
+    rs_cx_sqfree_t f;
+    slong k, at = 0, j, m;
+    int ok = 1;
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, pr, pi);
+    rr->nroots = n;
+    rr->roots = _acb_vec_init(n);
+    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
+    rr->isolated = 1;
+    for (k = 1; k <= f.n && ok; k++) {
+        slong da = FLINT_MAX(fmpq_poly_degree(f.re + k - 1), fmpq_poly_degree(f.im + k - 1)), prec;
+        int done = 0;
+        if (da < 1) continue;
+        if (at + k * da > n) { ok = 0; break; }
+        for (prec = 128; prec <= max_prec && !done; prec *= 2) {
+            acb_poly_t a;
+            acb_t c;
+            fmpq_t x;
+            acb_poly_init(a); acb_init(c); fmpq_init(x);
+            for (j = 0; j <= da; j++) {
+                fmpq_poly_get_coeff_fmpq(x, f.re + k - 1, j);
+                arb_set_fmpq(acb_realref(c), x, prec);
+                fmpq_poly_get_coeff_fmpq(x, f.im + k - 1, j);
+                arb_set_fmpq(acb_imagref(c), x, prec);
+                acb_poly_set_coeff_acb(a, j, c);
+            }
+            if (acb_poly_find_roots(rr->roots + at, a, NULL, 0, prec) == da) {
+                done = 1;
+                for (j = 0; j < da; j++)
+                    if (!acb_is_exact(rr->roots + at + j) && acb_rel_accuracy_bits(rr->roots + at + j) < 60
+                        && !acb_contains_zero(rr->roots + at + j))
+                        done = 0;
+            }
+            fmpq_clear(x); acb_clear(c); acb_poly_clear(a);
+        }
+        if (!done) { ok = 0; break; }
+        /* each root k times (from the top: the sources below are not yet overwritten) */
+        for (j = da - 1; j >= 0; j--)
+            for (m = 0; m < k; m++) {
+                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
+                rr->mult[at + j * k + m] = k;
+            }
+        at += k * da;
+    }
+    rs_cx_sqfree_clear(&f);
+    return ok && at == n;
 }
 
 /* The certified side at one point: the ladder on N = p conj(p), whose roots
@@ -532,7 +606,17 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
         pt->outside = (int) rc->outside;
         pt->d.repeated_on = rs_rootcount_max_on_mult(rc) > 1;
         if (rc->on > 0 && rc->outside == 0) pt->d.rho_lower = pt->d.rho_upper = 1.0;   /* exact */
-        if (r == RS_OK && J->of == RS_SWEEP_OF_RADIUS && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
+        if (r == RS_OK && J->of == RS_SWEEP_OF_MODES && J->n >= 1) {
+            rs_radius_t rr;
+            rs_radius_init(rr);
+            if (cx_point_roots(rr, pr, pi, J->n, J->max_prec))
+                rs_sweep_row_modes(pt, rr, J->hval + idx, J->refval + idx * J->nref, J->nref);
+            else
+                r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
+                                 "precision limit (%ld bits)", (long) J->max_prec);
+            rs_radius_clear(rr);
+        }
+        if (r == RS_OK && J->of != RS_SWEEP_OF_STABILITY && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
             fmpz_poly_t N;
             fmpz_poly_init(N);
             rs_schur_complex_norm(N, pr, pi);

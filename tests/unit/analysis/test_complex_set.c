@@ -263,6 +263,36 @@ static void test_expect(void **state)
     json_decref(doc);
 }
 
+/* sweep of modes at complex values: the trapezoid on y' = q w y at q = i,
+ * w = 2: lambda = (1 + i h)/(1 - i h), by hand |lambda| = 1 and arg lambda =
+ * 2 atan(h), so omega = 2 atan(h)/h (h = 1: pi/2), damping 0, frequency
+ * error (omega - 2)/2. */
+static void test_sweep_modes(void **state)
+{
+    int outcome;
+    json_t *doc = run("param h w q\nsubsystem S state y\n  y' = q*w*y\nintegrate S trapezoidal h\nset q = i\n"
+                      "set w = 2\nanalyse sweep h from 1/10 to 1 steps 3 of modes h=h reference=2\n", &outcome);
+    const json_t *o = result(doc, 0), *cols = json_object_get(o, "columns"), *rows = json_object_get(o, "rows");
+    size_t k, iom = 0, ifr = 0, ih = 0;
+    (void) state;
+    assert_string_equal(str(o, "over"), "Q(i)");
+    for (k = 0; k < json_array_size(cols); k++) {
+        const char *c = json_string_value(json_array_get(cols, k));
+        if (strcmp(c, "omega_1") == 0) iom = k;
+        if (strcmp(c, "frequency_error_1") == 0) ifr = k;
+        if (strcmp(c, "h") == 0) ih = k;
+    }
+    assert_true(iom > 0 && ifr > 0 && ih > 0);
+    assert_int_equal(json_array_size(rows), 4);
+    for (k = 0; k < 4; k++) {
+        const json_t *row = json_array_get(rows, k);
+        double h = json_number_value(json_array_get(row, ih)), om = 2 * atan(h) / h;
+        assert_true(fabs(json_number_value(json_array_get(row, iom)) - om) < 1e-12);
+        assert_true(fabs(json_number_value(json_array_get(row, ifr)) - (om - 2) / 2) < 1e-12);
+    }
+    json_decref(doc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -275,6 +305,7 @@ int main(void)
         cmocka_unit_test(test_simulate),
         cmocka_unit_test(test_limit),
         cmocka_unit_test(test_expect),
+        cmocka_unit_test(test_sweep_modes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
