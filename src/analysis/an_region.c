@@ -1989,6 +1989,44 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
+int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong tv, const rs_bound_t *dom_tv)
+{
+    char text[] = "region";
+    rs_request_t dq;
+    rs_an_req_t req;
+    region_t rg;
+    int r;
+    memset(&dq, 0, sizeof dq);
+    memset(&req, 0, sizeof req);
+    dq.text = text;
+    dq.loc.file = run->c->path;
+    dq.loc.line = 1;
+    dq.loc.col = 1;
+    req.q = &dq;
+    req.rest = dq.text;
+    req.u.region.param = tv;
+    *out = NULL;
+    region_init(&rg, run, &req, v);
+    rg.dom_tv = dom_tv;
+    r = region_domain(&rg);
+    if (r == RS_OK) r = region_cx_prepare(&rg);
+    if (r == RS_OK) {
+        region_critical(&rg);
+        rs_error_init(run->err);
+        region_crit_prune(&rg);
+        region_pieces(&rg);
+        r = region_decide(&rg);
+    }
+    if (r == RS_OK) {
+        region_check(&rg);
+        *out = json_object();
+        region_json(&rg, *out);
+        json_object_set_new(*out, "cross_checked_samples", json_integer(rg.ncx_checked));
+    }
+    region_clear(&rg);
+    return r;
+}
+
 /* ---- shared with an_region_cad.c (an_region.h) ---------------------------- */
 
 void rs_alg_init(rs_alg_t *a) { alg_init(a); }

@@ -293,6 +293,36 @@ static void test_sweep_modes(void **state)
     json_decref(doc);
 }
 
+/* claims bounded / unstable at complex values through the exact region.
+ * Leapfrog lambda^2 + 2 q a lambda - 1 at q = i: by the quadratic formula
+ * lambda = -i a +- sqrt(1 - a^2): |a| < 1 two distinct roots on the circle
+ * (bounded), |a| = 1 the double root -+i (unstable), |a| > 1 a root of
+ * modulus |a| + sqrt(a^2 - 1) > 1 (unstable).  So bounded on -1 < a < 1 and
+ * unstable on a >= 1 are proved; unstable on a >= 1/2 and bounded on
+ * a <= 1 are false (a = 1/2 marginal; a = 1 unstable). */
+static void test_claims(void **state)
+{
+    static const struct { const char *claim, *status; } t[] = {
+        {"claim bounded when -1 < a < 1", "proved"}, {"claim unstable when a >= 1", "proved"},
+        {"claim unstable when a >= 1/2", "refuted"}, {"claim bounded when 0 <= a <= 1", "refuted"}};
+    char text[300];
+    size_t i;
+    int outcome;
+    (void) state;
+    for (i = 0; i < 4; i++) {
+        json_t *doc;
+        const json_t *o;
+        snprintf(text, sizeof text, "param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\n%s\n", t[i].claim);
+        doc = run(text, &outcome);
+        o = result(doc, 0);
+        if (strcmp(str(o, "status"), t[i].status) != 0)
+            fail_msg("%s: %s, expected %s (%s)", t[i].claim, str(o, "status"), t[i].status, str(o, "failed_at"));
+        if (strcmp(t[i].status, "proved") == 0)
+            assert_non_null(json_object_get(json_array_get(json_object_get(o, "certificate"), 0), "region"));
+        json_decref(doc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -306,6 +336,7 @@ int main(void)
         cmocka_unit_test(test_limit),
         cmocka_unit_test(test_expect),
         cmocka_unit_test(test_sweep_modes),
+        cmocka_unit_test(test_claims),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
