@@ -186,6 +186,14 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     if (run->c->ncsets == 0) return RS_OK;
+    if ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)) {
+        val = rs_complex_str(x->re, x->im);
+        snprintf(msg, sizeof msg, "'%s re(NAME), im(NAME)' does not run at a complex set value (%s = %s): the plane "
+                 "of a complex parameter is mapped without set values; over Q(i) recstab runs %s of real "
+                 "parameters", nm, x->name, val, strcmp(nm, "map") == 0 ? "map N1 ..., N2 ..." : "region NAME");
+        free(val);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
     if (strcmp(nm, "region") == 0 && (req->u.region.forall || req->u.region.twod)) {
         val = rs_complex_str(x->re, x->im);
         snprintf(msg, sizeof msg, "'region %s' does not run at a complex set value (%s = %s): over Q(i) recstab "

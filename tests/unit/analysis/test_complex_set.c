@@ -153,6 +153,11 @@ static void test_region_refused(void **state)
                       &code);
     assert_null(doc);
     assert_int_equal(code, RS_ERR_INPUT);
+    /* the plane of q while q has a value: the set value would be ignored */
+    doc = tu_run_text("param q\nchar lambda - 1 - q\nset q = -1 + i\nanalyse map re(q) -2 0 3, im(q) -1 1 3\n", NULL,
+                      &outcome, &code);
+    assert_null(doc);
+    assert_int_equal(code, RS_ERR_INPUT);
 }
 
 /* map over two real parameters at q = -1 + i: forward Euler lambda = 1 + h w q,
