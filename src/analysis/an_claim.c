@@ -727,9 +727,83 @@ static int param_is_set(const rs_run_t *run, slong k)
     return param_is_cset(run, k);
 }
 
+/* A claim at complex set values with at most one real parameter t left in
+ * p over Q(i): the exact point verdict, or the exact region of t on the set
+ * (rs_an_region_cx_on: cells cut at the real roots of |p|^2's critical
+ * polynomials, each decided at a rational sample by complex Schur-Cohn and
+ * Bilharz and again by the real gcd route, irrational critical values over
+ * Q(t0)); proved when every cell satisfies the claim. */
+static int claim_prove_complex_region(rs_run_t *run, claim_kind_t kind, const rs_variant_t *v, const rs_bound_t *b,
+                                      claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t re, im;
+    slong k, tv = -1, nfree = 0;
+    int ok = 0;
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    rs_run_cx_poly(re, im, run, v);
+    for (k = 0; k < s->nvars; k++)
+        if (k != s->lambda_var
+            && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(im, k, s->zctx) > 0)) {
+            tv = k;
+            nfree++;
+        }
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    if (nfree > 1) {
+        claim_fail(cx, "over Q(i) `claim bounded` and `claim unstable` have a certificate with one real parameter "
+                   "left (its exact region on the set); here more are free", NULL, NULL);
+    } else if (nfree == 0) {
+        rs_rootcount_t rc;
+        rs_status_t st;
+        if (rs_run_point_status(&st, rc, run, v, NULL, NULL, 0) == RS_OK) {
+            char msg[200];
+            ok = !violates(kind, st);
+            snprintf(msg, sizeof msg, "p over Q(i) with every parameter fixed here: %s (the exact Q(i) verdict)",
+                     rs_status_name(st));
+            if (ok) cert_note(cx, msg);
+            else claim_fail(cx, msg, NULL, NULL);
+        } else {
+            rs_error_init(run->err);
+        }
+        rs_rootcount_clear(rc);
+    } else {
+        json_t *o = NULL;
+        int r = rs_an_region_cx_on(&o, run, v, tv, b + tv);
+        if (r != RS_OK) {
+            if (r == RS_ERR_INCONSISTENT) run->outcome |= RS_OUTCOME_INCONSISTENT;
+            claim_fail(cx, run->err->msg, NULL, NULL);
+            rs_error_init(run->err);
+        } else {
+            const json_t *ivs = json_object_get(o, "intervals"), *iv;
+            size_t i;
+            char msg[600];
+            ok = json_array_size(ivs) > 0 && json_array_size(json_object_get(o, "undecided_points")) == 0;
+            json_array_foreach(ivs, i, iv) {
+                const char *stn = json_string_value(json_object_get(iv, "status"));
+                if (stn == NULL || (kind == CLAIM_BOUNDED && strcmp(stn, "stable") != 0 && strcmp(stn, "marginal") != 0)
+                    || (kind == CLAIM_UNSTABLE && strcmp(stn, "unstable") != 0)
+                    || (kind == CLAIM_STABLE && strcmp(stn, "stable") != 0))
+                    ok = 0;
+            }
+            snprintf(msg, sizeof msg, "p over Q(i) with only %s left: its exact region on the set, cells cut at the "
+                     "real roots of the critical polynomials of |p|^2 (leading coefficient, lambda = +-1, D_{n-1} of "
+                     "the bilinear image, discriminant), each cell decided at a rational sample by complex "
+                     "Schur-Cohn and Bilharz and again by the real route gcd(Re p, Im p) |p/gcd|^2 (%lld samples), "
+                     "irrational critical values over Q(t0): every cell %s", s->vars[tv],
+                     (long long) json_integer_value(json_object_get(o, "cross_checked_samples")),
+                     kind == CLAIM_UNSTABLE ? "unstable" : kind == CLAIM_STABLE ? "stable" : "stable or marginal");
+            if (ok) json_array_append_new(cx->cert, json_pack("{s:s,s:O}", "text", msg, "region", ivs));
+            else claim_fail(cx, "the exact region over Q(i) has a cell that violates the claim", NULL, NULL);
+        }
+        json_decref(o);
+    }
+    return ok;
+}
+
 /* `claim stable` at complex set values: every Bilharz condition of p over
- * Q(i)[real params] (rs_routh_cx_conds) proved positive on the box; the
- * other kinds have no certificate over Q(i) (refuted or undecided only) */
+ * Q(i)[real params] (rs_routh_cx_conds) proved positive on the box, else
+ * (and for bounded and unstable) the exact region of the one real parameter
+ * left (claim_prove_complex_region) */
 static int claim_prove_complex(rs_run_t *run, claim_kind_t kind, const rs_variant_t *v, const rs_bound_t *b,
                                claim_cx_t *cx)
 {
@@ -739,11 +813,7 @@ static int claim_prove_complex(rs_run_t *run, claim_kind_t kind, const rs_varian
     slong n, k;
     int ok = 1;
     size_t n0 = json_array_size(cx->cert);
-    if (kind != CLAIM_STABLE) {
-        claim_fail(cx, "at complex set values only `claim stable` has a certificate (the Bilharz conditions over "
-                   "Q(i)); bounded and unstable are refuted by a point or left undecided", NULL, NULL);
-        return 0;
-    }
+    if (kind != CLAIM_STABLE) return claim_prove_complex_region(run, kind, v, b, cx);
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
     rs_routh_cx_conds_init(&bc, s->zctx);
     n = rs_run_cx_poly(re, im, run, v);
@@ -760,6 +830,10 @@ static int claim_prove_complex(rs_run_t *run, claim_kind_t kind, const rs_varian
     if (!ok) cert_truncate(cx, n0);
     rs_routh_cx_conds_clear(&bc, s->zctx);
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    if (!ok) {
+        ok = claim_prove_complex_region(run, kind, v, b, cx);
+        if (!ok) cert_truncate(cx, n0);
+    }
     return ok;
 }
 
@@ -1683,9 +1757,10 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
         tried = kind == CLAIM_STABLE
                 ? "over Q(i) at the complex set values: every Bilharz condition of p's bilinear image (hurwitz over "
                   "Q(i)) proved positive on the set by mapping each parameter interval onto [0, inf) and checking "
-                  "coefficient signs; counterexamples searched with the exact Q(i) verdict"
-                : "over Q(i) at the complex set values: counterexamples searched with the exact Q(i) verdict (no "
-                  "certificate for bounded or unstable there)";
+                  "coefficient signs, else the exact region of the one real parameter left; counterexamples "
+                  "searched with the exact Q(i) verdict"
+                : "over Q(i) at the complex set values: with one real parameter left, its exact region on the set "
+                  "(every cell must satisfy the claim); counterexamples searched with the exact Q(i) verdict";
     if (r == RS_OK) {
         if (inconsistent) {
             run->outcome |= RS_OUTCOME_INCONSISTENT;

@@ -127,6 +127,14 @@ int rs_an_expect(rs_run_t *run, const rs_an_req_t *req)
             rs_compare_poly(o, num, norm, raw, v->s->lambda_var, v->s, bil ? "z" : "lambda");
         }
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        if (run->c->ncsets > 0) {
+            /* an identity in the parameters: the complex-valued ones compared as symbols */
+            json_t *ks = json_array();
+            for (i = 0; i < run->c->ncsets; i++) json_array_append_new(ks, json_string(run->c->csets[i].name));
+            json_object_set_new(o, "kept_symbolic", ks);
+            json_object_set_new(o, "note", json_string("parameters with a complex set value are compared as symbols "
+                                                       "(the printed polynomial is an identity in them)"));
+        }
         if (strcmp(json_string_value(json_object_get(o, "status")), "different") == 0)
             run->outcome |= RS_OUTCOME_FAILED;
         json_array_append_new(run->results, o);

@@ -6,7 +6,10 @@
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include <math.h>
+#include <acb_poly.h>
+#include <fmpq_poly.h>
 #include "analysis/registry.h"
+#include "stability/schur_complex.h"
 #include "util/polyfmt.h"
 
 /* ---- limit ------------------------------------------------------------------- */
@@ -60,6 +63,247 @@ static void roots_json(json_t *arr, const fmpz_poly_t f)
     fmpz_poly_factor_clear(fac);
 }
 
+/* ---- limit at complex set values ------------------------------------------------ */
+
+/* the distinct roots of the squarefree ar + i ai (degree d >= 2) as certified
+ * isolating balls (acb_poly_find_roots: isolated only when it returns d) */
+static int cx_isolate(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong d, slong max_prec)
+{
+    slong prec, k;
+    int done = 0;
+    for (prec = 128; prec <= max_prec && !done; prec *= 2) {
+        acb_poly_t p;
+        acb_t c;
+        fmpq_t x;
+        acb_poly_init(p); acb_init(c); fmpq_init(x);
+        for (k = 0; k <= d; k++) {
+            fmpq_poly_get_coeff_fmpq(x, ar, k);
+            arb_set_fmpq(acb_realref(c), x, prec);
+            fmpq_poly_get_coeff_fmpq(x, ai, k);
+            arb_set_fmpq(acb_imagref(c), x, prec);
+            acb_poly_set_coeff_acb(p, k, c);
+        }
+        if (acb_poly_find_roots(out, p, NULL, 0, prec) == d) {
+            done = 1;
+            for (k = 0; k < d; k++)
+                if (!acb_is_exact(out + k) && acb_rel_accuracy_bits(out + k) < 70
+                    && !(mag_cmp_2exp_si(arb_radref(acb_realref(out + k)), -80) <= 0
+                         && mag_cmp_2exp_si(arb_radref(acb_imagref(out + k)), -80) <= 0))
+                    done = 0;   /* neither 70 relative nor 80 absolute bits (a root at 0) */
+        }
+        fmpq_clear(x); acb_clear(c); acb_poly_clear(p);
+    }
+    return done;
+}
+
+/* c = re + i im as text in var, highest power first: "c_k*var^k + ..." with
+ * a coefficient of two parts in parentheses */
+static char *lim_cpoly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var)
+{
+    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k;
+    size_t cap = 64, len = 0;
+    char *out = malloc(cap);
+    fmpq_t a, b;
+    fmpq_init(a); fmpq_init(b);
+    strcpy(out, n < 0 ? "0" : "");
+    for (k = n; k >= 0; k--) {
+        char *c, pw[64];
+        int paren, neg;
+        fmpq_poly_get_coeff_fmpq(a, re, k);
+        fmpq_poly_get_coeff_fmpq(b, im, k);
+        if (fmpq_is_zero(a) && fmpq_is_zero(b)) continue;
+        paren = !fmpq_is_zero(a) && !fmpq_is_zero(b);
+        neg = !paren && (fmpq_sgn(a) < 0 || fmpq_sgn(b) < 0);   /* one part: its sign is the term's */
+        if (neg) { fmpq_neg(a, a); fmpq_neg(b, b); }
+        c = rs_complex_str(a, b);
+        if (k == 0) pw[0] = '\0';
+        else if (k == 1) snprintf(pw, sizeof pw, "%s", var);
+        else snprintf(pw, sizeof pw, "%s^%ld", var, (long) k);
+        if (len + strlen(c) + strlen(pw) + 16 > cap) { cap = 2 * (len + strlen(c) + strlen(pw) + 16); out = realloc(out, cap); }
+        if (len > 0) len += (size_t) sprintf(out + len, " %s ", neg ? "-" : "+");
+        else if (neg) len += (size_t) sprintf(out + len, "-");
+        if (k > 0 && strcmp(c, "1") == 0) len += (size_t) sprintf(out + len, "%s", pw);
+        else len += (size_t) sprintf(out + len, "%s%s%s%s%s", paren ? "(" : "", c, paren ? ")" : "", k > 0 ? "*" : "", pw);
+        free(c);
+    }
+    fmpq_clear(a); fmpq_clear(b);
+    return out;
+}
+
+/* the roots of c = cr + i ci over Q(i) with multiplicity: Yun's squarefree
+ * decomposition over Q(i) (exact multiplicities), linear factors exactly,
+ * the others as certified balls (20 digits; "abs" their modulus) */
+static int cx_roots_json(json_t *arr, const fmpq_poly_t cr, const fmpq_poly_t ci, slong max_prec)
+{
+    rs_cx_sqfree_t f;
+    slong k, j;
+    int ok = 1;
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, cr, ci);
+    for (k = 0; k < f.n; k++) {
+        slong d = FLINT_MAX(fmpq_poly_degree(f.re + k), fmpq_poly_degree(f.im + k));
+        if (d < 1) continue;
+        {
+            fmpq_t c0, c1;
+            fmpq_init(c0); fmpq_init(c1);
+            fmpq_poly_get_coeff_fmpq(c0, f.re + k, 0);
+            fmpq_poly_get_coeff_fmpq(c1, f.im + k, 0);
+            if (fmpq_is_zero(c0) && fmpq_is_zero(c1)) {   /* the root 0, exactly (at most once: squarefree) */
+                json_array_append_new(arr, json_pack("{s:s,s:I,s:f}", "value", "0", "multiplicity",
+                                                     (json_int_t) k + 1, "abs", 0.0));
+                fmpq_poly_shift_right(f.re + k, f.re + k, 1);
+                fmpq_poly_shift_right(f.im + k, f.im + k, 1);
+                d--;
+            }
+            fmpq_clear(c0); fmpq_clear(c1);
+        }
+        if (d < 1) continue;
+        if (d == 1) {   /* monic: lambda + b, the root -b */
+            fmpq_t br, bi;
+            char *val;
+            fmpq_init(br); fmpq_init(bi);
+            fmpq_poly_get_coeff_fmpq(br, f.re + k, 0);
+            fmpq_poly_get_coeff_fmpq(bi, f.im + k, 0);
+            fmpq_neg(br, br); fmpq_neg(bi, bi);
+            val = rs_complex_str(br, bi);
+            json_array_append_new(arr, json_pack("{s:s,s:I,s:f}", "value", val, "multiplicity", (json_int_t) k + 1,
+                                                 "abs", sqrt(fmpq_get_d(br) * fmpq_get_d(br)
+                                                             + fmpq_get_d(bi) * fmpq_get_d(bi))));
+            free(val);
+            fmpq_clear(br); fmpq_clear(bi);
+        } else {
+            acb_ptr r = _acb_vec_init(d);
+            if (!cx_isolate(r, f.re + k, f.im + k, d, max_prec)) ok = 0;
+            for (j = 0; j < d && ok; j++) {
+                char *re = arb_get_str(acb_realref(r + j), 20, 0), *im = arb_get_str(acb_imagref(r + j), 20, 0);
+                char *val = malloc(strlen(re) + strlen(im) + 8);
+                arb_t ab;
+                arb_init(ab);
+                acb_abs(ab, r + j, 128);
+                sprintf(val, "%s + (%s)i", re, im);
+                json_array_append_new(arr, json_pack("{s:s,s:I,s:f}", "value", val, "multiplicity",
+                                                     (json_int_t) k + 1, "abs",
+                                                     arf_get_d(arb_midref(ab), ARF_RND_NEAR)));
+                arb_clear(ab);
+                free(val);
+                flint_free(re);
+                flint_free(im);
+            }
+            _acb_vec_clear(r, d);
+        }
+    }
+    rs_cx_sqfree_clear(&f);
+    return ok;
+}
+
+/* limit NAME -> 0|inf with p over Q(i) (complex set values): the lowest
+ * (highest) coefficient in NAME of p = re + i im, a polynomial in lambda
+ * over Q(i), and its roots */
+static int cx_limit(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    slong tv = req->u.limit.param, d, j, k, n;
+    const char *name = run->c->params[tv].name, *keep[1];
+    rs_assign_t *a = NULL;
+    slong na = 0;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t re, im;
+    fmpz_poly_t cr, ci;
+    fmpq_poly_t qr, qi;
+    json_t *o, *roots, *sub;
+    int r;
+    keep[0] = name;
+    for (k = 0; k < run->c->ncsets; k++)
+        if (strcmp(run->c->csets[k].name, name) == 0)
+            return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "limit: '%s' has a complex set value: the limit is "
+                                "taken in a parameter without one", name);
+    rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+    r = rs_run_variant(&v, run, a, na);
+    rs_assign_free(a, na);
+    if (r != RS_OK) return r;
+    s = v->s;
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    n = rs_run_cx_poly(re, im, run, v);
+    for (k = 0; k < s->nvars && r == RS_OK; k++) {
+        char msg[300];
+        if (k == s->lambda_var || k == tv) continue;
+        if (fmpz_mpoly_degree_si(re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(im, k, s->zctx) <= 0) continue;
+        snprintf(msg, sizeof msg, "limit needs every other parameter set to a number (real or complex); still "
+                 "symbolic: %s", s->vars[k]);
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    if (r != RS_OK) {
+        fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+        return r;
+    }
+    fmpz_poly_init(cr); fmpz_poly_init(ci);
+    fmpq_poly_init(qr); fmpq_poly_init(qi);
+    d = FLINT_MAX(fmpz_mpoly_degree_si(re, tv, s->zctx), fmpz_mpoly_degree_si(im, tv, s->zctx));
+    if (req->u.limit.to_inf) {
+        rs_run_coeff_in(cr, re, tv, d < 0 ? 0 : d, s);
+        rs_run_coeff_in(ci, im, tv, d < 0 ? 0 : d, s);
+    } else {
+        for (j = 0; j <= d; j++) {
+            rs_run_coeff_in(cr, re, tv, j, s);
+            rs_run_coeff_in(ci, im, tv, j, s);
+            if (!fmpz_poly_is_zero(cr) || !fmpz_poly_is_zero(ci)) break;
+        }
+    }
+    fmpq_poly_set_fmpz_poly(qr, cr);
+    fmpq_poly_set_fmpz_poly(qi, ci);
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("limit"));
+    json_object_set_new(o, "param", json_string(name));
+    json_object_set_new(o, "to", json_string(req->u.limit.to_inf ? "inf" : "0"));
+    json_object_set_new(o, "over", json_string("Q(i)"));
+    {
+        char *lp = lim_cpoly_str(qr, qi, "lambda");
+        json_object_set_new(o, "limit_poly", json_string(lp));
+        free(lp);
+    }
+    roots = json_array();
+    if (!fmpq_poly_is_zero(qr) || !fmpq_poly_is_zero(qi)) {
+        if (!cx_roots_json(roots, qr, qi, run->opt->max_prec)) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "limit: the roots of the limit polynomial were not isolated within %ld bits "
+                     "(raise --max-prec)", (long) run->opt->max_prec);
+            r = rs_req_error(run, q, q->text, RS_ERR_LIMIT, "%s", msg);
+        }
+    }
+    k = n - FLINT_MAX(fmpq_poly_degree(qr), fmpq_poly_degree(qi));
+    if (k > 0) json_array_append_new(roots, json_pack("{s:s,s:I}", "value", "inf", "multiplicity", (json_int_t) k));
+    json_object_set_new(o, "roots", roots);
+    {
+        size_t i;
+        int all_zero = (k == 0);
+        double maxabs = 0;
+        for (i = 0; i < json_array_size(roots); i++) {
+            json_t *ab = json_object_get(json_array_get(roots, i), "abs");
+            if (ab == NULL) { all_zero = 0; continue; }
+            if (json_real_value(ab) != 0.0) all_zero = 0;
+            if (json_real_value(ab) > maxabs) maxabs = json_real_value(ab);
+        }
+        json_object_set_new(o, "all_roots_to_zero", json_boolean(all_zero));
+        json_object_set_new(o, "roots_to_infinity", json_integer(k));
+        json_object_set_new(o, "max_abs", json_real(maxabs));
+    }
+    sub = json_deep_copy(v->assigned);
+    for (j = 0; j < run->c->ncsets; j++) {
+        char *val = rs_complex_str(run->c->csets[j].re, run->c->csets[j].im);
+        json_object_set_new(sub, run->c->csets[j].name, json_string(val));
+        free(val);
+    }
+    json_object_set_new(o, "substituted", sub);
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    if (r == RS_OK) json_array_append_new(run->results, o);
+    else json_decref(o);
+    fmpz_poly_clear(cr); fmpz_poly_clear(ci);
+    fmpq_poly_clear(qr); fmpq_poly_clear(qi);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return r;
+}
+
 /* limit NAME -> 0|inf */
 int rs_an_limit_parse(rs_an_req_t *req, rs_run_t *run)
 {
@@ -93,6 +337,7 @@ int rs_an_limit(rs_run_t *run, const rs_an_req_t *req)
     int to_inf = req->u.limit.to_inf, r;
     fmpz_poly_t c;
     json_t *o, *roots;
+    if (run->c->ncsets > 0) return cx_limit(run, req);
     r = rs_run_variant_one_free(&v, run, q, rest, tv, "limit");
     if (r != RS_OK) return r;
     s = v->s;

@@ -568,6 +568,8 @@ done:
  * returns 0 (undecided) only for a repeated non-real circle root there. */
 static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
                      const fmpq_poly_t m, const rs_scheme_t s);
+static int status_kp_mode(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
+                          const fmpq_poly_t m, const rs_scheme_t s, int scalar);
 
 static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
 {
@@ -603,6 +605,14 @@ static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv,
 static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
                      const fmpq_poly_t m, const rs_scheme_t s)
 {
+    return status_kp_mode(out, P0, n, p, tv, t0, m, s, 0);
+}
+
+/* scalar: P0 is one scalar recurrence's polynomial (a repeated circle root
+ * is unstable), whatever the scheme */
+static int status_kp_mode(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
+                          const fmpq_poly_t m, const rs_scheme_t s, int scalar)
+{
     int decided = 1;
     slong j;
     kpoly_t P, R, G, H, D;
@@ -632,7 +642,7 @@ static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t 
                 kp_gcd(&R, &G, &D, m);
                 if (R.deg == 0 && kp_all_inside(&D, m, t0)) {
                     st = RS_STATUS_MARGINAL;
-                } else if (R.deg > 0 && s->n >= 2 && !s->from_char) {
+                } else if (R.deg > 0 && !scalar && s->n >= 2 && !s->from_char) {
                     /* a repeated root of g: if every root of g is on the
                      * circle (its squarefree part G/R passes Cohn's test) a
                      * system may still be bounded: semisimple roots */
@@ -869,6 +879,11 @@ typedef struct {
     slong nq;
     const char *projection;     /* which projection decided the cells */
     const rs_bound_t *dom_tv;   /* a claim's interval of t (replaces the assumed one) */
+    int cx;                     /* complex set values: p = cre + i cim over Q(i)[t] */
+    fmpz_mpoly_t cre, cim;
+    const fmpz_mpoly_struct *pj;   /* the polynomial judged: v's p, or |p|^2 over Q(i) */
+    fmpz_mpoly_t pabs;          /* |p|^2 = cre^2 + cim^2 (cx only) */
+    slong ncx_checked;          /* samples decided by both Q(i) routes */
 } region_t;
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
@@ -1015,6 +1030,204 @@ static void region_pieces(region_t *rg)
     rg->npieces = npieces;
 }
 
+/* ---- complex set values: p = A + i B over Q(i)[t] ---------------------------- */
+
+/* out = a b in K[lambda] (out distinct from a and b) */
+static void kp_mul(kpoly_t *out, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    slong i, j;
+    fmpq_poly_t t;
+    fmpq_poly_init(t);
+    for (i = 0; i < out->cap; i++) fmpq_poly_zero(out->c + i);
+    out->deg = (a->deg < 0 || b->deg < 0) ? -1 : a->deg + b->deg;
+    for (i = 0; i <= a->deg; i++)
+        for (j = 0; j <= b->deg; j++) {
+            k_mul(t, a->c + i, b->c + j, m);
+            fmpq_poly_add(out->c + i + j, out->c + i + j, t);
+        }
+    kp_normalise(out);
+    fmpq_poly_clear(t);
+}
+
+/* coefficient j in lambda of f (in t only) as an element of K = Q[t]/(m) */
+static void kp_from_mpoly(kpoly_t *a, const fmpz_mpoly_t f, slong n, slong tv, const fmpq_poly_t m,
+                          const rs_scheme_struct *s)
+{
+    slong j, lv = s->lambda_var;
+    fmpz_mpoly_t c;
+    fmpz_poly_t u;
+    fmpz_mpoly_init(c, s->zctx);
+    fmpz_poly_init(u);
+    for (j = 0; j <= n; j++) {
+        ulong e = (ulong) j;
+        fmpz_mpoly_get_coeff_vars_ui(c, f, &lv, &e, 1, s->zctx);
+        if (!fmpz_mpoly_get_fmpz_poly(u, c, tv, s->zctx)) fmpz_poly_zero(u);
+        fmpq_poly_set_fmpz_poly(a->c + j, u);
+        fmpq_poly_rem(a->c + j, a->c + j, m);
+    }
+    a->deg = n;
+    kp_normalise(a);
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpz_poly_clear(u);
+}
+
+/* The status of p = A + i B at t0 (real algebraic, or rational with a
+ * linear minpoly) with real arithmetic in K = Q(t0) only: G = gcd(A, B) is
+ * gcd(p, conj p) (real); p1 = p/G = A1 + i B1 has no root in common with
+ * conj(p1) (a common root would be one of A1 and B1).  T = G (A1^2 + B1^2)
+ * has the roots of p and their conjugates; a circle root mu of T has the
+ * multiplicity of mu or of conj(mu) in p (both circle roots), so T's scalar
+ * status (a repeated circle root unstable) is p's.  Never undecided. */
+static void status_cx_alg(rs_status_t *out, const region_t *rg, alg_t *t0)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong lv = s->lambda_var, n, cap;
+    fmpq_poly_t m;
+    kpoly_t A, B, G, A1, B1, T, U, R;
+    n = FLINT_MAX(fmpz_mpoly_degree_si(rg->cre, lv, s->zctx), fmpz_mpoly_degree_si(rg->cim, lv, s->zctx));
+    cap = 2 * n + 2;
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    kp_init(&A, cap); kp_init(&B, cap); kp_init(&G, cap); kp_init(&A1, cap); kp_init(&B1, cap);
+    kp_init(&T, cap); kp_init(&U, cap); kp_init(&R, cap);
+    kp_from_mpoly(&A, rg->cre, n, rg->tv, m, s);
+    kp_from_mpoly(&B, rg->cim, n, rg->tv, m, s);
+    if (n < 0 || (A.deg < n && B.deg < n)) {
+        *out = RS_STATUS_SINGULAR;      /* the leading coefficient vanishes at t0 */
+    } else if (B.deg < 0) {
+        status_kp_mode(out, &A, A.deg, NULL, rg->tv, t0, m, s, 1);   /* p real at t0 */
+    } else if (A.deg < 0) {
+        status_kp_mode(out, &B, B.deg, NULL, rg->tv, t0, m, s, 1);   /* p = i B */
+    } else {
+        kp_gcd(&G, &A, &B, m);
+        kp_divrem(&A1, &R, &A, &G, m);
+        kp_divrem(&B1, &R, &B, &G, m);
+        kp_mul(&T, &A1, &A1, m);
+        kp_mul(&U, &B1, &B1, m);
+        {
+            slong j;
+            for (j = 0; j <= U.deg; j++) fmpq_poly_add(T.c + j, T.c + j, U.c + j);
+            if (U.deg > T.deg) T.deg = U.deg;
+            kp_normalise(&T);
+        }
+        kp_mul(&U, &G, &T, m);
+        status_kp_mode(out, &U, U.deg, NULL, rg->tv, t0, m, s, 1);
+    }
+    kp_clear(&A); kp_clear(&B); kp_clear(&G); kp_clear(&A1); kp_clear(&B1);
+    kp_clear(&T); kp_clear(&U); kp_clear(&R);
+    fmpq_poly_clear(m);
+}
+
+/* Complex set values: p = cre + i cim in Z[t, lambda] (the values
+ * substituted, every other parameter set), |p|^2 = cre^2 + cim^2 the real
+ * polynomial whose critical values are cut: it has p's roots and their
+ * conjugates (same moduli), so where its squarefree part keeps its roots
+ * distinct, off +-1 and off the circle (the real region's critical values)
+ * p's roots keep their multiplicities and sides: one status per cell. */
+static int region_cx_prepare(region_t *rg)
+{
+    const rs_scheme_struct *s = rg->s;
+    slong k, lv = s->lambda_var;
+    fmpz_mpoly_t g, sq;
+    fmpz_mpoly_factor_t fac;
+    int r = RS_OK;
+    rs_run_cx_poly(rg->cre, rg->cim, rg->run, rg->v);
+    for (k = 0; k < s->nvars; k++) {
+        if (k == lv || k == rg->tv) continue;
+        if (fmpz_mpoly_degree_si(rg->cre, k, s->zctx) > 0 || fmpz_mpoly_degree_si(rg->cim, k, s->zctx) > 0)
+        {
+            char msg[RS_ERROR_MSG_LEN];
+            snprintf(msg, sizeof msg, "region %s at complex set values needs every other parameter set: '%s' has "
+                     "no value (set it, or give it with `at %s=VALUE`)", rg->name, s->vars[k], s->vars[k]);
+            return rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_INPUT, "%s", msg);
+        }
+    }
+    rg->cx = 1;
+    fmpz_mpoly_init(sq, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpz_mpoly_mul(rg->pabs, rg->cre, rg->cre, s->zctx);
+    fmpz_mpoly_mul(sq, rg->cim, rg->cim, s->zctx);
+    fmpz_mpoly_add(rg->pabs, rg->pabs, sq, s->zctx);
+    rg->pj = rg->pabs;
+    if (fmpz_mpoly_is_zero(rg->pabs, s->zctx)) {
+        r = rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_MATH, "the characteristic polynomial vanishes "
+                         "identically at the complex set values%s", "");
+    } else {
+        if (!fmpz_mpoly_content_vars(g, rg->pabs, &rg->tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
+            fmpz_mpoly_one(g, s->zctx);
+        fmpz_mpoly_divexact(rg->pt, rg->pabs, g, s->zctx);
+        /* squarefree parts as region_squarefree, scalar (no Jordan structure) */
+        fmpz_mpoly_one(rg->sqf, s->zctx);
+        fmpz_mpoly_one(rg->sqf_t, s->zctx);
+        fmpz_mpoly_factor_init(fac, s->zctx);
+        if (fmpz_mpoly_factor(fac, rg->pabs, s->zctx)) {
+            for (k = 0; k < fac->num; k++) {
+                fmpz_mpoly_struct *f = fac->poly + k;
+                if (fmpz_mpoly_degree_si(f, lv, s->zctx) > 0) fmpz_mpoly_mul(rg->sqf, rg->sqf, f, s->zctx);
+                if (fmpz_mpoly_degree_si(f, rg->tv, s->zctx) > 0) fmpz_mpoly_mul(rg->sqf_t, rg->sqf_t, f, s->zctx);
+            }
+        } else {
+            fmpz_mpoly_set(rg->sqf, rg->pt, s->zctx);
+            fmpz_mpoly_set(rg->sqf_t, rg->pt, s->zctx);
+        }
+        fmpz_mpoly_factor_clear(fac, s->zctx);
+    }
+    fmpz_mpoly_clear(sq, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    return r;
+}
+
+/* The Q(i) point verdict at the rational t = x (complex Schur-Cohn and
+ * Bilharz, agreeing) checked against status_cx_alg over K = Q (the real
+ * gcd route): a disagreement is exit 3. */
+static int status_at_cx(rs_status_t *st, region_t *rg, const fmpq_t x)
+{
+    const rs_scheme_struct *s = rg->s;
+    rs_rootcount_t rc;
+    rs_status_t st2;
+    alg_t a;
+    slong tv = rg->tv;
+    int r;
+    fmpq_poly_t pr, pi;
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    slong k;
+    for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+    fmpq_set(pt + tv, x);
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    rs_run_cx_eval(pr, rg->cre, pp, s);
+    rs_run_cx_eval(pi, rg->cim, pp, s);
+    r = (fmpq_poly_is_zero(pr) && fmpq_poly_is_zero(pi)) ? RS_ERR_MATH : RS_OK;
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    if (r != RS_OK) return r;
+    r = rs_run_point_status(st, rc, rg->run, rg->v, &tv, x, 1);
+    rs_rootcount_clear(rc);
+    if (r != RS_OK) return r;
+    alg_init(&a);
+    a.rational = 1;
+    fmpq_set(a.q, x);
+    fmpz_poly_set_coeff_fmpz(a.minpoly, 1, fmpq_denref(x));   /* den t - num */
+    fmpz_poly_set_coeff_fmpz(a.minpoly, 0, fmpq_numref(x));
+    fmpz_neg(a.minpoly->coeffs + 0, a.minpoly->coeffs + 0);
+    alg_refine(&a, 128);
+    status_cx_alg(&st2, rg, &a);
+    alg_clear(&a);
+    if (st2 != *st) {
+        char *xs = fmpq_get_str(NULL, 10, x);
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "region %s over Q(i) at %s = %s: complex Schur-Cohn and Bilharz say %s, the real "
+                 "route (gcd(Re p, Im p), |p/gcd|^2) says %s", rg->name, rg->name, xs, rs_status_name(*st),
+                 rs_status_name(st2));
+        r = rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_INCONSISTENT, "%s", msg);
+        flint_free(xs);
+    } else {
+        rg->ncx_checked++;
+    }
+    return r;
+}
+
 /* decide each piece exactly at a rational point */
 static int region_decide(region_t *rg)
 {
@@ -1024,12 +1237,15 @@ static int region_decide(region_t *rg)
         piece_t *pc = rg->pieces + i;
         fmpq_t x;
         fmpq_init(x);
-        if (pc->is_point && !pc->lo->rational) {
+        if (pc->is_point && !pc->lo->rational && rg->cx) {
+            status_cx_alg(&pc->status, rg, pc->lo);
+            pc->decided = 1;
+        } else if (pc->is_point && !pc->lo->rational) {
             pc->decided = status_at_algebraic(&pc->status, rg->v->cp->p, rg->tv, pc->lo, rg->s);
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
-            r = status_at(&pc->status, rg->run, rg->v, rg->tv, x);
+            r = rg->cx ? status_at_cx(&pc->status, rg, x) : status_at(&pc->status, rg->run, rg->v, rg->tv, x);
             if (r == RS_ERR_MATH) {
                 char *xs = fmpq_get_str(NULL, 10, x);
                 r = rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_MATH,
@@ -1447,7 +1663,7 @@ static void region_check(region_t *rg)
         } else if (!(fl & (CRIT_LC | CRIT_DISC)) && !rg->repeated_always
                    /* a repeated factor (a system's identical modes) may be a Jordan block */
                    && fmpz_mpoly_degree_si(rg->sqf, s->lambda_var, s->zctx)
-                      == fmpz_mpoly_degree_si(rg->v->cp->p, s->lambda_var, s->zctx)
+                      == fmpz_mpoly_degree_si(rg->pj, s->lambda_var, s->zctx)
                    && ((pieces[i - 1].decided && pieces[i - 1].status == RS_STATUS_STABLE)
                        || (pieces[i + 1].decided && pieces[i + 1].status == RS_STATUS_STABLE))) {
             if (pc->status != RS_STATUS_MARGINAL)
@@ -1582,6 +1798,10 @@ static void region_init(region_t *rg, rs_run_t *run, const rs_an_req_t *req, con
     fmpz_mpoly_init(rg->pt, s->zctx);
     fmpz_mpoly_init(rg->sqf, s->zctx);
     fmpz_mpoly_init(rg->sqf_t, s->zctx);
+    fmpz_mpoly_init(rg->cre, s->zctx);
+    fmpz_mpoly_init(rg->cim, s->zctx);
+    fmpz_mpoly_init(rg->pabs, s->zctx);
+    rg->pj = v->cp->p;
     /* the part of p that depends on t */
     fmpz_mpoly_init(g, s->zctx);
     if (!fmpz_mpoly_content_vars(g, v->cp->p, &rg->tv, 1, s->zctx) || fmpz_mpoly_is_zero(g, s->zctx))
@@ -1607,6 +1827,9 @@ static void region_clear(region_t *rg)
     fmpz_mpoly_clear(rg->pt, s->zctx);
     fmpz_mpoly_clear(rg->sqf, s->zctx);
     fmpz_mpoly_clear(rg->sqf_t, s->zctx);
+    fmpz_mpoly_clear(rg->cre, s->zctx);
+    fmpz_mpoly_clear(rg->cim, s->zctx);
+    fmpz_mpoly_clear(rg->pabs, s->zctx);
 }
 
 void rs_an_region_req_clear(rs_an_req_t *req)
@@ -1693,6 +1916,51 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
         else json_decref(o);
         return r;
     }
+    if (run->c->ncsets > 0) {
+        /* complex set values: over Q(i), |p|^2 cut into cells */
+        slong k;
+        for (k = 0; k < run->c->ncsets; k++)
+            if (strcmp(run->c->csets[k].name, name) == 0) {
+                char msg[RS_ERROR_MSG_LEN];
+                json_decref(o);
+                snprintf(msg, sizeof msg, "region %s: '%s' has a complex set value; its plane is region re(%s), "
+                         "im(%s) (without the set value)", name, name, name, name);
+                return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
+            }
+        region_init(&rg, run, req, v);
+        r = region_domain(&rg);
+        if (r == RS_OK) r = region_cx_prepare(&rg);
+        if (r == RS_OK) {
+            region_critical(&rg);
+            rs_error_init(run->err);
+            region_crit_prune(&rg);
+            region_pieces(&rg);
+            r = region_decide(&rg);
+        }
+        if (r == RS_OK) {
+            json_t *sub = json_object_get(o, "substituted");
+            region_check(&rg);
+            region_json(&rg, o);
+            for (k = 0; k < run->c->ncsets && json_is_object(sub); k++) {
+                char *val = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
+                json_object_set_new(sub, run->c->csets[k].name, json_string(val));
+                free(val);
+            }
+            json_object_set_new(o, "over", json_string("Q(i)"));
+            json_object_set_new(o, "method", json_string(
+                "cells cut at the real roots of the critical polynomials of |p|^2 = Re(p)^2 + Im(p)^2 (p's roots "
+                "and their conjugates: leading coefficient, lambda = +-1, D_{n-1} of its bilinear image, "
+                "discriminant); each rational sample decided by complex Schur-Cohn and Bilharz over Q(i) and "
+                "by the real route gcd(Re p, Im p) |p/gcd|^2 (all must agree, else exit 3); irrational "
+                "critical values by the real route over Q(t0)"));
+            json_object_set_new(o, "cross_checked_samples", json_integer(rg.ncx_checked));
+            json_array_append_new(run->results, o);
+        } else {
+            json_decref(o);
+        }
+        region_clear(&rg);
+        return r;
+    }
     if (rs_run_count_free(v->cp->p, v->s, req->u.region.param) > 0) {
         r = region_symbolic(run, v, o);
         if (r != RS_OK) { json_decref(o); return r; }
@@ -1716,6 +1984,44 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
         json_array_append_new(run->results, o);
     } else {
         json_decref(o);
+    }
+    region_clear(&rg);
+    return r;
+}
+
+int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong tv, const rs_bound_t *dom_tv)
+{
+    char text[] = "region";
+    rs_request_t dq;
+    rs_an_req_t req;
+    region_t rg;
+    int r;
+    memset(&dq, 0, sizeof dq);
+    memset(&req, 0, sizeof req);
+    dq.text = text;
+    dq.loc.file = run->c->path;
+    dq.loc.line = 1;
+    dq.loc.col = 1;
+    req.q = &dq;
+    req.rest = dq.text;
+    req.u.region.param = tv;
+    *out = NULL;
+    region_init(&rg, run, &req, v);
+    rg.dom_tv = dom_tv;
+    r = region_domain(&rg);
+    if (r == RS_OK) r = region_cx_prepare(&rg);
+    if (r == RS_OK) {
+        region_critical(&rg);
+        rs_error_init(run->err);
+        region_crit_prune(&rg);
+        region_pieces(&rg);
+        r = region_decide(&rg);
+    }
+    if (r == RS_OK) {
+        region_check(&rg);
+        *out = json_object();
+        region_json(&rg, *out);
+        json_object_set_new(*out, "cross_checked_samples", json_integer(rg.ncx_checked));
     }
     region_clear(&rg);
     return r;

@@ -75,6 +75,13 @@ int rs_alg_primitive(rs_alg_t *gamma, fmpq_poly_t A, fmpq_poly_t B, rs_alg_t *al
  * as `region NAME for all` prints them; a claim's cross-check. */
 int rs_an_region_forall_on(json_t **out, rs_run_t *run, const rs_request_t *q, slong tv, const rs_bound_t *dom_tv);
 
+/* The region of the one real parameter tv left in v's p over Q(i) (complex
+ * set values substituted, every other parameter fixed in v) on the interval
+ * dom_tv: *out {"intervals", "undecided_points", ...} as `region NAME` at
+ * complex set values prints them (cells of |p|^2's critical values, each
+ * decided over Q(i) and by the real gcd route); a claim's certificate. */
+int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong tv, const rs_bound_t *dom_tv);
+
 /* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
 

@@ -5,7 +5,10 @@
 #include <string.h>
 #include <stdio.h>
 #include <arb_mat.h>
+#include <acb.h>
+#include <fmpq_poly.h>
 #include "analysis/registry.h"
+#include "stability/schur_complex.h"
 
 /* ---- simulate: cross-check against the exact verdict ---------------------------- */
 
@@ -296,6 +299,169 @@ static int simulate_growth(rs_run_t *run, json_t *o, const rs_variant_t *v, cons
     return r;
 }
 
+/* ---- simulate at complex set values ------------------------------------------------- */
+
+/* The scalar recurrence of p over Q(i), c_n x[k+n] = -sum_{j<n} c_j x[k+j],
+ * with complex coefficients (acb midpoints at prec bits) from a seeded random
+ * complex start in [-1, 1]^2; growth measured as for real cases and checked
+ * against the exact Q(i) verdict (rs_simulate_disagreement: exit 3). */
+static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong seed, slong prec)
+{
+    fmpq_poly_t pr, pi;
+    json_t *at = NULL, *o, *vd, *chk;
+    rs_variant_t *v = NULL;
+    slong n, j, step;
+    acb_ptr c, x;
+    acb_t lcinv, t;
+    arb_t norm, a, lm, le, t1, t2;
+    fmpq_t qr, qi;
+    flint_rand_t st;
+    int r;
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
+    n = FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi));
+    if (r == RS_OK && n < 1) {
+        r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "simulate: p has degree %s in lambda at the complex "
+                         "set values: no recurrence to run", n < 0 ? "-inf (it vanishes)" : "0");
+    }
+    if (r != RS_OK) {
+        fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+        json_decref(at);
+        return r;
+    }
+    c = _acb_vec_init(n + 1);
+    x = _acb_vec_init(n + 1);
+    acb_init(lcinv); acb_init(t);
+    arb_init(norm); arb_init(a); arb_init(lm); arb_init(le); arb_init(t1); arb_init(t2);
+    fmpq_init(qr); fmpq_init(qi);
+    for (j = 0; j <= n; j++) {
+        fmpq_poly_get_coeff_fmpq(qr, pr, j);
+        fmpq_poly_get_coeff_fmpq(qi, pi, j);
+        arb_set_fmpq(acb_realref(c + j), qr, prec);
+        arb_set_fmpq(acb_imagref(c + j), qi, prec);
+    }
+    acb_inv(lcinv, c + n, prec);
+    flint_randinit(st);
+    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+    for (j = 0; j < n; j++) {                   /* seeded random start in [-1, 1]^2 */
+        fmpq_set_si(qr, (slong) n_randint(st, 2001) - 1000, 1000);
+        fmpq_set_si(qi, (slong) n_randint(st, 2001) - 1000, 1000);
+        arb_set_fmpq(acb_realref(x + j), qr, prec);
+        arb_set_fmpq(acb_imagref(x + j), qi, prec);
+    }
+    /* the same cost model as the real scalar recurrence, four real products per complex one */
+    r = rs_budget_estimate(run->err, "simulate", (double) steps * 4.0 * (double) (n + 1) * 0.5e-9
+                           * pow(prec / 64.0 > 1 ? prec / 64.0 : 1, 1.6), (double) (n + 1) * (double) prec / 2.0);
+    if (r != RS_OK) {
+        char msg[RS_ERROR_MSG_LEN];
+        snprintf(msg, sizeof msg, "%s", run->err->msg);
+        r = rs_req_error(run, req->q, req->rest, RS_ERR_LIMIT, "%s", msg);
+    }
+    for (step = 1; step <= steps && r == RS_OK; step++) {
+        if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
+        acb_zero(x + n);
+        for (j = 0; j < n; j++) acb_addmul(x + n, c + j, x + j, prec);
+        acb_mul(x + n, x + n, lcinv, prec);
+        acb_neg(x + n, x + n);
+        /* midpoints: the growth is a measurement (see sim_step) */
+        mag_zero(arb_radref(acb_realref(x + n)));
+        mag_zero(arb_radref(acb_imagref(x + n)));
+        arb_zero(norm);
+        for (j = 1; j <= n; j++) {
+            acb_abs(a, x + j, prec);
+            arb_max(norm, norm, a, prec);
+        }
+        for (j = 0; j < n; j++) acb_swap(x + j, x + j + 1);
+        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lm, lm, t2, 64); }
+        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(le, le, t2, 64); }
+    }
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("simulate"));
+        json_object_set_new(o, "steps", json_integer(steps));
+        json_object_set_new(o, "seed", json_integer(seed));
+        json_object_set_new(o, "precision_bits", json_integer(prec));
+        json_object_set_new(o, "over", json_string("Q(i)"));
+        json_object_set_new(o, "recurrence", json_string("scalar recurrence of p(lambda) over Q(i): complex "
+                                                         "coefficients, complex states"));
+        json_object_set_new(o, "arithmetic", json_string("Arb complex midpoints at the working precision"));
+        if (steps >= 8 && arb_is_finite(le) && arb_is_finite(lm)) {
+            slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
+            rs_rootcount_t rc;
+            rs_status_t vst;
+            double tau, lg;
+            const char *why;
+            arb_div_si(lm, lm, b1 - a1 + 1, prec);
+            arb_div_si(le, le, b2 - a2 + 1, prec);
+            arb_sub(t1, le, lm, prec);
+            arb_mul_si(t1, t1, 2, prec);
+            arb_div_si(t1, t1, (a2 + b2) - (a1 + b1), prec);
+            arb_exp(t2, t1, prec);
+            json_object_set_new(o, "growth", rs_json_arb(t2, 15));
+            json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
+            if (steps >= SIM_CHECK_MIN_STEPS) {
+                r = rs_run_point_status(&vst, rc, run, v, NULL, NULL, 0);
+                if (r == RS_OK) {
+                    lg = arf_get_d(arb_midref(t1), ARF_RND_NEAR);
+                    why = rs_simulate_disagreement(&tau, vst, rc->outside, lg, n, steps);
+                    vd = json_object();
+                    rs_json_add_count(vd, rc);
+                    json_object_set_new(vd, "status", json_string(rs_status_name(vst)));
+                    json_object_set_new(vd, "decided_by", json_string("exact (complex Schur-Cohn and Bilharz over Q(i))"));
+                    json_object_set_new(o, "verdict", vd);
+                    chk = json_object();
+                    json_object_set_new(chk, "log_growth", json_real(lg));
+                    json_object_set_new(chk, "threshold", json_real(tau));
+                    json_object_set_new(chk, "rule", json_string("|log growth| beyond (deg p * ln(7/3) + ln 1e6) / "
+                                                                 "(steps/2): polynomial growth of defective circle "
+                                                                 "roots and bounded oscillation stay below it"));
+                    json_object_set_new(chk, "consistent", json_boolean(why == NULL));
+                    if (why != NULL) {
+                        json_object_set_new(chk, "disagreement", json_string(why));
+                        run->outcome |= RS_OUTCOME_INCONSISTENT;
+                    }
+                    json_object_set_new(o, "check", chk);
+                }
+                rs_rootcount_clear(rc);
+            }
+        } else {
+            json_object_set_new(o, "growth", json_null());
+            json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
+        }
+        if (r == RS_OK) {
+            /* the radius: p conj(p) has p's moduli */
+            fmpz_poly_t N;
+            rs_radius_t rr;
+            fmpz_poly_init(N);
+            rs_radius_init(rr);
+            rs_schur_complex_norm(N, pr, pi);
+            if (rs_radius_fmpz_poly(rr, N, 15, run->opt->max_prec, run->err) == RS_OK)
+                json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
+            else
+                rs_error_init(run->err);
+            rs_radius_clear(rr);
+            fmpz_poly_clear(N);
+        }
+        json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
+        {
+            json_t *sub = json_deep_copy(v->assigned);
+            json_object_update(sub, at);
+            json_object_set_new(o, "substituted", sub);
+        }
+        if (r == RS_OK) json_array_append_new(run->results, o);
+        else json_decref(o);
+    }
+    flint_randclear(st);
+    _acb_vec_clear(c, n + 1);
+    _acb_vec_clear(x, n + 1);
+    acb_clear(lcinv); acb_clear(t);
+    arb_clear(norm); arb_clear(a); arb_clear(lm); arb_clear(le); arb_clear(t1); arb_clear(t2);
+    fmpq_clear(qr); fmpq_clear(qi);
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    json_decref(at);
+    return r;
+}
+
 int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_optval_t *o_steps = rs_an_opt(req, "steps"), *o_seed = rs_an_opt(req, "seed"),
@@ -308,7 +474,9 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
     json_t *o;
     arb_t norm, lognorm_mid, lognorm_end, t1, t2;
     flint_rand_t st;
-    int r = rs_run_numeric_variant(run, &v);
+    int r;
+    if (run->c->ncsets > 0) return cx_simulate(run, req, steps, seed, prec);
+    r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, req->q, v, "simulate");

@@ -160,7 +160,7 @@ static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t 
 static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
 {
     static const char *const ok[] = {"charpoly", "bilinear", "routh", "hurwitz", "jury", "stability", "radius",
-                                      "modes", "claim", "sweep", NULL};
+                                      "modes", "claim", "sweep", "region", "map", "simulate", "limit", "expect", NULL};
     const rs_cset_t *x = run->c->csets;
     const char *nm = req->def->name;
     char *val, msg[RS_ERROR_MSG_LEN];
@@ -186,11 +186,27 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     if (run->c->ncsets == 0) return RS_OK;
+    if ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)) {
+        val = rs_complex_str(x->re, x->im);
+        snprintf(msg, sizeof msg, "'%s re(NAME), im(NAME)' does not run at a complex set value (%s = %s): the plane "
+                 "of a complex parameter is mapped without set values; over Q(i) recstab runs %s of real "
+                 "parameters", nm, x->name, val, strcmp(nm, "map") == 0 ? "map N1 ..., N2 ..." : "region NAME");
+        free(val);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    if (strcmp(nm, "region") == 0 && (req->u.region.forall || req->u.region.twod)) {
+        val = rs_complex_str(x->re, x->im);
+        snprintf(msg, sizeof msg, "'region %s' does not run at a complex set value (%s = %s): over Q(i) recstab "
+                 "runs region NAME of one real parameter, the others set", req->u.region.forall ? "NAME for all"
+                 : "N1, N2", x->name, val);
+        free(val);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
     for (k = 0; ok[k] != NULL; k++)
         if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
     val = rs_complex_str(x->re, x->im);
     snprintf(msg, sizeof msg, "'%s' does not run at a complex set value (%s = %s): over Q(i) recstab runs "
-             "charpoly, bilinear, routh, hurwitz, jury, stability, radius, modes, sweep and claim", req->def->name,
+             "charpoly, bilinear, routh, hurwitz, jury, stability, radius, modes, sweep, map, simulate, limit, claim and region NAME", req->def->name,
              x->name, val);
     free(val);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);

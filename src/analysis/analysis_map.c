@@ -236,6 +236,43 @@ static void map_decorate(json_t *o, void *arg)
         map_boundary(o, d->run, d->v, d->R, d->xs[0], d->xs[1]);
 }
 
+/* the map's element at complex set values: over Q(i), no boundary overlay */
+static void cx_map_decorate(json_t *o, void *arg)
+{
+    const rs_sweep_cx_t *J = arg;
+    json_object_set_new(o, "over", json_string("Q(i)"));
+    json_object_set(o, "complex", J->csat);
+    json_object_set_new(o, "method", json_string(
+        "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), p's own "
+        "root counts; the radius certified from p conj(p) (the same moduli)"));
+    json_object_set_new(o, "cross_check", json_pack("{s:I,s:s}", "stride", (json_int_t) J->stride, "method",
+        "every stride-th point also by the certified ladder on p conj(p) (stable iff p is, unstable where p is; "
+        "exit 3 on disagreement)"));
+}
+
+/* a map of two real parameters with the complex set values fixed */
+static int cx_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R, const rs_variant_t *v,
+                      fmpq *const *xs, double t0)
+{
+    slong npoints = R->axis[0].count * R->axis[1].count;
+    rs_sweep_model_t m;
+    rs_sweep_cx_t J;
+    int r = rs_sweep_cx_init(&J, run, q, R, v);
+    if (r == RS_OK) {
+        J.vals[0] = xs[0];
+        J.vals[1] = xs[1];
+        J.stride = npoints > 256 ? npoints / 256 : 1;
+        J.csat = rs_sweep_cx_at(run);
+        m.point = rs_sweep_cx_point;
+        m.model = &J;
+        m.serial = 0;
+        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, cx_map_decorate, &J);
+        json_decref(J.csat);
+    }
+    rs_sweep_cx_clear(&J);
+    return r;
+}
+
 int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     const rs_sweep_axis_t *X = R->axis;
@@ -250,6 +287,12 @@ int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t
     if (r != RS_OK) return r;
     xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
     xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
+    if (run->c->ncsets > 0) {
+        r = cx_map_run(run, q, R, v, xs, t0);
+        _fmpq_vec_clear(xs[0], X[0].count);
+        _fmpq_vec_clear(xs[1], X[1].count);
+        return r;
+    }
     r = rs_sweep_poly_new(&J, run, q, R, v, (const fmpq *const *) xs, npoints);
     if (r == RS_OK) {
         map_deco_t d;

@@ -170,151 +170,49 @@ int rs_sweep_variant(rs_variant_t **v, rs_run_t *run, const rs_sweep_request_t *
     return r;
 }
 
-/* ---- complex set values: p over Q(i) at each point ----------------------------------- */
-
-typedef struct {
-    const rs_scheme_struct *s;
-    const fmpz_mpoly_struct *re, *im;   /* p over Q(i)[axis] (rs_run_cx_poly) */
-    slong n, var, max_prec;
-    const fmpq *vals;
-    int of;
-} cx_sweep_t;
-
-/* the model's callback: the exact pair over Q(i) (complex Schur-Cohn and
- * Bilharz, which must agree, and p's own counts), and for `of radius` the
- * certified radius of p conj(p) (the same moduli) */
-static void cx_sweep_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err)
-{
-    const cx_sweep_t *J = model;
-    const rs_scheme_struct *s = J->s;
-    fmpq *x = _fmpq_vec_init(s->nvars);
-    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
-    fmpq_poly_t pr, pi;
-    rs_rootcount_t rc;
-    rs_status_t st;
-    slong k;
-    int r = RS_OK;
-    memset(pt, 0, sizeof *pt);
-    pt->inside = pt->on = pt->outside = -1;
-    pt->d.verdict = -1;
-    pt->d.rho_lower = 0;
-    pt->d.rho_upper = INFINITY;
-    pt->d.level = RS_LEVEL_EXACT;
-    for (k = 0; k < s->nvars; k++) pp[k] = x + k;
-    fmpq_set(x + J->var, J->vals + idx);
-    fmpq_poly_init(pr); fmpq_poly_init(pi);
-    rs_rootcount_init(rc);
-    rs_run_cx_eval(pr, J->re, pp, s);
-    rs_run_cx_eval(pi, J->im, pp, s);
-    if (fmpq_poly_is_zero(pr) && fmpq_poly_is_zero(pi)) {
-        /* undefined: p vanishes identically here */
-    } else if (FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) < J->n) {
-        pt->d.verdict = RS_STATUS_SINGULAR;
-    } else if ((r = rs_routh_complex_checked_status(&st, pr, pi, J->n, err)) == RS_OK) {
-        rs_routh_complex_rootcount(rc, pr, pi);
-        if (rs_rootcount_status(rc) != st)
-            r = rs_error_set(err, RS_ERR_INCONSISTENT, "over Q(i): complex Schur-Cohn and Bilharz say %s, p's "
-                             "root counts say %s", rs_status_name(st), rs_status_name(rs_rootcount_status(rc)));
-        pt->d.verdict = (int) st;
-        pt->inside = (int) rc->inside;
-        pt->on = (int) rc->on;
-        pt->outside = (int) rc->outside;
-        pt->d.repeated_on = rs_rootcount_max_on_mult(rc) > 1;
-        if (rc->on > 0 && rc->outside == 0) pt->d.rho_lower = pt->d.rho_upper = 1.0;   /* exact */
-        if (r == RS_OK && J->of == RS_SWEEP_OF_RADIUS && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
-            fmpz_poly_t N;
-            fmpz_poly_init(N);
-            rs_schur_complex_norm(N, pr, pi);
-            for (k = 0; k < fmpz_poly_length(N) && fmpz_is_zero(N->coeffs + k); k++) ;
-            if (fmpz_poly_degree(N) - k <= 0) {
-                pt->d.rho_lower = pt->d.rho_upper = 0;
-            } else {
-                rs_radius_t rr;
-                rs_radius_init(rr);
-                r = rs_radius_fmpz_poly(rr, N, 15, J->max_prec, err);
-                if (r == RS_OK) {
-                    pt->d.rho_lower = rs_ladder_lower_d(rr->lower);
-                    pt->d.rho_upper = rs_ladder_upper_d(rr->upper);
-                    pt->d.isolated = 1;
-                }
-                rs_radius_clear(rr);
-            }
-            fmpz_poly_clear(N);
-        }
-    }
-    pt->d.status = r;
-    rs_rootcount_clear(rc);
-    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
-    _fmpq_vec_clear(x, s->nvars);
-    flint_free(pp);
-}
-
 /* a sweep of a real parameter with the complex set values fixed */
 static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
-    slong K = R->axis[0].count, npoints = K + 1, i, k;
+    slong K = R->axis[0].count, npoints = K + 1, i;
     rs_variant_t *v = NULL;
-    const rs_scheme_struct *s;
-    fmpz_mpoly_t re, im;
     rs_sweep_table_t T;
     json_t *cols = NULL;
     rs_sweep_model_t m;
-    cx_sweep_t J;
+    rs_sweep_cx_t J;
     fmpq *vals;
     double t0 = rs_sweep_now();
     int r = rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep");
-    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES)
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep ... of modes does not run at complex set values: use "
-                         "of radius or of stability (or modes at one point)%s", "");
-    for (k = 0; r == RS_OK && k < run->c->ncsets; k++)
-        if (strcmp(run->c->csets[k].name, R->axis[0].name) == 0)
-            r = rs_req_error(run, q, R->axis[0].at, RS_ERR_INPUT, "expected a real parameter to sweep, found '%s', "
-                             "which has a complex set value", R->axis[0].name);
     if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;
-    s = v->s;
-    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    J.n = rs_run_cx_poly(re, im, run, v);
-    for (k = 0; r == RS_OK && k < s->nvars; k++) {
-        char msg[300];
-        if (k == s->lambda_var || k == R->axis[0].var
-            || (fmpz_mpoly_degree_si(re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(im, k, s->zctx) <= 0))
-            continue;
-        snprintf(msg, sizeof msg, "sweep needs every other parameter set to a number (real or complex); still "
-                 "symbolic: %s (use set or --set)", s->vars[k]);
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
-    }
-    if (r == RS_OK && (J.n < 1 || (!s->complex_char && J.n < v->cp->degree)))
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep: the leading coefficient of p vanishes at the complex "
-                         "set values for every %s: the implicit step cannot be solved", R->axis[0].name);
+    r = rs_sweep_cx_init(&J, run, q, R, v);
     vals = _fmpq_vec_init(npoints);
     for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
+    if (r == RS_OK && R->of == RS_SWEEP_OF_MODES) r = rs_sweep_cx_modes(&J, run, q, R, v, vals, npoints);
     if (r == RS_OK) {
-        J.s = s; J.re = re; J.im = im; J.var = R->axis[0].var; J.vals = vals; J.of = R->of;
-        J.max_prec = run->opt->max_prec;
-        m.point = cx_sweep_point;
+        J.vals[0] = vals;
+        J.stride = npoints > 256 ? npoints / 256 : 1;   /* about 256 points certified beside the exact verdict */
+        m.point = rs_sweep_cx_point;
         m.model = &J;
         m.serial = 0;
-        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, 0);
+        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, J.nref);
         if (r == RS_OK) {
-        json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0), *at = json_object();
-        for (k = 0; k < run->c->ncsets; k++) {
-            char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-            json_object_set_new(at, run->c->csets[k].name, json_string(str));
-            free(str);
-        }
-        json_object_set_new(o, "over", json_string("Q(i)"));
-        json_object_set_new(o, "complex", at);
-        json_object_set_new(o, "method", json_string(
-            "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
-            "p's own root counts; the radius certified from p conj(p) (the same moduli)"));
-        json_array_append_new(run->results, o);
+            json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0);
+            json_object_set_new(o, "over", json_string("Q(i)"));
+            json_object_set_new(o, "complex", rs_sweep_cx_at(run));
+            json_object_set_new(o, "method", json_string(
+                "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
+                "p's own root counts; the radius certified from p conj(p) (the same moduli); modes from p's own "
+                "roots (Yun over Q(i), each factor's roots isolated by acb_poly_find_roots)"));
+            json_object_set_new(o, "cross_check", json_pack("{s:I,s:s}", "stride", (json_int_t) J.stride, "method",
+                "every stride-th point also by the certified ladder on p conj(p) (stable iff p is, unstable where p "
+                "is; exit 3 on disagreement)"));
+            json_array_append_new(run->results, o);
         }
         rs_sweep_table_clear(&T);
         json_decref(cols);
     }
     _fmpq_vec_clear(vals, npoints);
-    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    rs_sweep_cx_clear(&J);
     return r;
 }
 

@@ -189,6 +189,39 @@ const char *rs_sweep_verdict_name(int code);
 void rs_sweep_put_fmpq(FILE *f, const fmpq_t x);          /* exact: p/q */
 void rs_sweep_put_double_of(FILE *f, const fmpq_t x);     /* %.15g */
 
+/* ---- complex set values: p over Q(i) per point (sweep_poly.c) ------------------------ */
+
+/* The model of a sweep or map at complex set values: p = re + i im with the
+ * values substituted (rs_run_cx_poly), the axes left.  A point: complex
+ * Schur-Cohn and Bilharz (rs_routh_complex_checked_status, must agree) and
+ * p's own counts (must agree); at every stride-th point (0: none) also the
+ * certified ladder on p conj(p) (stable iff p is; unstable when p is),
+ * a disagreement exit 3; `of radius`: the certified radius of p conj(p). */
+typedef struct {
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t re, im;
+    slong n, naxes, var[2], K1, max_prec, stride;
+    const fmpq *vals[2];      /* axis values (read, not copied) */
+    const char *names[2];
+    int of;
+    json_t *csat;             /* the complex set values (rs_sweep_cx_at), for the JSON */
+    /* `of modes` (sweeps): per point the step and the references, p's own roots over Q(i) */
+    slong npoints, nref;
+    fmpq *hval, *refval;
+} rs_sweep_cx_t;
+/* p over Q(i) of v, checked: no axis has a complex value, every other
+ * parameter is set, the degree does not drop for every point; errors at q */
+int rs_sweep_cx_init(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                     const rs_variant_t *v);
+void rs_sweep_cx_clear(rs_sweep_cx_t *J);
+/* `of modes`: the options h= and reference= of R at the npoints values vals
+ * of the swept parameter (as for real sweeps) */
+int rs_sweep_cx_modes(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                      const rs_variant_t *v, const fmpq *vals, slong npoints);
+void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err);
+/* {NAME: "a+b*i"} of the complex set values */
+json_t *rs_sweep_cx_at(const rs_run_t *run);
+
 /* ---- the model of exact integration (analysis_cosim.c) ------------------------------ */
 
 /* The co-simulation model of a sweep over vals[0 .. K] (read, not copied):

@@ -20,6 +20,10 @@
 #include "recstab/semisimple.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
+#include "analysis/registry.h"
+#include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
+#include <acb_poly.h>
 
 struct rs_sweep_poly_struct {
     rs_run_t *run;
@@ -396,4 +400,246 @@ void rs_sweep_poly_model(rs_sweep_model_t *m, rs_sweep_poly_t *J)
 slong rs_sweep_poly_nref(const rs_sweep_poly_t *J)
 {
     return J->nref;
+}
+
+/* ---- complex set values: p over Q(i) per point ------------------------------------------ */
+
+int rs_sweep_cx_init(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                     const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    slong k, a;
+    int r = RS_OK;
+    memset(J, 0, sizeof *J);
+    J->s = s;
+    J->naxes = R->naxes;
+    J->of = R->of;
+    J->max_prec = run->opt->max_prec;
+    J->K1 = R->axis[0].count;
+    fmpz_mpoly_init(J->re, s->zctx);
+    fmpz_mpoly_init(J->im, s->zctx);
+    for (a = 0; a < R->naxes; a++) {
+        J->var[a] = R->axis[a].var;
+        J->names[a] = R->axis[a].name;
+        for (k = 0; r == RS_OK && k < run->c->ncsets; k++)
+            if (strcmp(run->c->csets[k].name, R->axis[a].name) == 0) {
+                char msg[300];
+                snprintf(msg, sizeof msg, "expected a real parameter to %s, found '%s', which has a complex set "
+                         "value", R->kind == RS_SWEEP_KIND_MAP ? "map" : "sweep", R->axis[a].name);
+                r = rs_req_error(run, q, R->axis[a].at, RS_ERR_INPUT, "%s", msg);
+            }
+    }
+    if (r != RS_OK) return r;
+    J->n = rs_run_cx_poly(J->re, J->im, run, v);
+    for (k = 0; r == RS_OK && k < s->nvars; k++) {
+        char msg[300];
+        if (k == s->lambda_var || k == J->var[0] || (J->naxes > 1 && k == J->var[1])
+            || (fmpz_mpoly_degree_si(J->re, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(J->im, k, s->zctx) <= 0))
+            continue;
+        snprintf(msg, sizeof msg, "%s needs every other parameter set to a number (real or complex); still "
+                 "symbolic: %s (use set or --set)", R->kind == RS_SWEEP_KIND_MAP ? "map" : "sweep", s->vars[k]);
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    if (r == RS_OK && (J->n < 1 || (!s->complex_char && J->n < v->cp->degree))) {
+        char msg[300];
+        snprintf(msg, sizeof msg, "%s: the leading coefficient of p vanishes at the complex set values at every "
+                 "point: the implicit step cannot be solved", R->kind == RS_SWEEP_KIND_MAP ? "map" : "sweep");
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    return r;
+}
+
+int rs_sweep_cx_modes(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                      const rs_variant_t *v, const fmpq *vals, slong npoints)
+{
+    job_t *T = calloc(1, sizeof *T);   /* parse_modes_opts' fields only */
+    int r;
+    T->npoints = npoints;
+    r = parse_modes_opts(T, run, q, v, R->opts, R->axis[0].var, vals);
+    J->npoints = npoints;
+    J->hval = T->hval;
+    J->refval = T->refval;
+    J->nref = T->nref;
+    free(T);
+    return r;
+}
+
+void rs_sweep_cx_clear(rs_sweep_cx_t *J)
+{
+    if (J->hval != NULL) _fmpq_vec_clear(J->hval, J->npoints);
+    if (J->refval != NULL) _fmpq_vec_clear(J->refval, J->npoints * J->nref);
+    J->hval = J->refval = NULL;
+    if (J->s == NULL) return;
+    fmpz_mpoly_clear(J->re, J->s->zctx);
+    fmpz_mpoly_clear(J->im, J->s->zctx);
+}
+
+json_t *rs_sweep_cx_at(const rs_run_t *run)
+{
+    json_t *at = json_object();
+    slong k;
+    for (k = 0; k < run->c->ncsets; k++) {
+        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
+        json_object_set_new(at, run->c->csets[k].name, json_string(str));
+        free(str);
+    }
+    return at;
+}
+
+/* rr's roots (with multiplicity) of p = pr + i pi of degree n: Yun over
+ * Q(i) (exact multiplicities), each squarefree factor's roots isolated by
+ * acb_poly_find_roots (certified when it isolates all of them) to 60
+ * relative bits; 0 when the precision limit came first.  (an_modes.c does
+ * the same for one point.) */
+static int cx_point_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong n, slong max_prec)
+{
+    rs_cx_sqfree_t f;
+    slong k, at = 0, j, m;
+    int ok = 1;
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, pr, pi);
+    rr->nroots = n;
+    rr->roots = _acb_vec_init(n);
+    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
+    rr->isolated = 1;
+    for (k = 1; k <= f.n && ok; k++) {
+        slong da = FLINT_MAX(fmpq_poly_degree(f.re + k - 1), fmpq_poly_degree(f.im + k - 1)), prec;
+        int done = 0;
+        if (da < 1) continue;
+        if (at + k * da > n) { ok = 0; break; }
+        for (prec = 128; prec <= max_prec && !done; prec *= 2) {
+            acb_poly_t a;
+            acb_t c;
+            fmpq_t x;
+            acb_poly_init(a); acb_init(c); fmpq_init(x);
+            for (j = 0; j <= da; j++) {
+                fmpq_poly_get_coeff_fmpq(x, f.re + k - 1, j);
+                arb_set_fmpq(acb_realref(c), x, prec);
+                fmpq_poly_get_coeff_fmpq(x, f.im + k - 1, j);
+                arb_set_fmpq(acb_imagref(c), x, prec);
+                acb_poly_set_coeff_acb(a, j, c);
+            }
+            if (acb_poly_find_roots(rr->roots + at, a, NULL, 0, prec) == da) {
+                done = 1;
+                for (j = 0; j < da; j++)
+                    if (!acb_is_exact(rr->roots + at + j) && acb_rel_accuracy_bits(rr->roots + at + j) < 60
+                        && !acb_contains_zero(rr->roots + at + j))
+                        done = 0;
+            }
+            fmpq_clear(x); acb_clear(c); acb_poly_clear(a);
+        }
+        if (!done) { ok = 0; break; }
+        /* each root k times (from the top: the sources below are not yet overwritten) */
+        for (j = da - 1; j >= 0; j--)
+            for (m = 0; m < k; m++) {
+                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
+                rr->mult[at + j * k + m] = k;
+            }
+        at += k * da;
+    }
+    rs_cx_sqfree_clear(&f);
+    return ok && at == n;
+}
+
+/* The certified side at one point: the ladder on N = p conj(p), whose roots
+ * are p's and their conjugates (same moduli): stable iff p is stable; p
+ * unstable keeps N unstable (a root outside, or a repeated circle root);
+ * p marginal may give N unstable (a circle root and its conjugate). */
+static int cx_cross_check(rs_status_t st, const fmpq_poly_t pr, const fmpq_poly_t pi, rs_error_t err)
+{
+    fmpz_poly_t N;
+    rs_sweep_point_t pt;
+    int r;
+    fmpz_poly_init(N);
+    memset(&pt, 0, sizeof pt);
+    rs_schur_complex_norm(N, pr, pi);
+    r = rs_sweep_decide(&pt, N, err);
+    if (r == RS_OK && (pt.verdict < 0 || (st == RS_STATUS_STABLE) != (pt.verdict == RS_STATUS_STABLE)
+                       || (st == RS_STATUS_UNSTABLE && pt.verdict != RS_STATUS_UNSTABLE)))
+        r = rs_error_set(err, RS_ERR_INCONSISTENT, "the exact verdict over Q(i) is %s, the certified verdict of "
+                         "p conj(p) is %s", rs_status_name(st), rs_sweep_verdict_name(pt.verdict));
+    fmpz_poly_clear(N);
+    return r;
+}
+
+void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err)
+{
+    const rs_sweep_cx_t *J = model;
+    const rs_scheme_struct *s = J->s;
+    fmpq *x = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    fmpq_poly_t pr, pi;
+    rs_rootcount_t rc;
+    rs_status_t st;
+    slong k;
+    int r = RS_OK;
+    memset(pt, 0, sizeof *pt);
+    pt->inside = pt->on = pt->outside = -1;
+    pt->d.verdict = -1;
+    pt->d.rho_lower = 0;
+    pt->d.rho_upper = INFINITY;
+    pt->d.level = RS_LEVEL_EXACT;
+    for (k = 0; k < s->nvars; k++) pp[k] = x + k;
+    if (J->naxes == 1) {
+        fmpq_set(x + J->var[0], J->vals[0] + idx);
+    } else {
+        fmpq_set(x + J->var[0], J->vals[0] + idx % J->K1);
+        fmpq_set(x + J->var[1], J->vals[1] + idx / J->K1);
+    }
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    rs_rootcount_init(rc);
+    rs_run_cx_eval(pr, J->re, pp, s);
+    rs_run_cx_eval(pi, J->im, pp, s);
+    if (fmpq_poly_is_zero(pr) && fmpq_poly_is_zero(pi)) {
+        /* undefined: p vanishes identically here */
+    } else if (FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) < J->n) {
+        pt->d.verdict = RS_STATUS_SINGULAR;
+    } else if ((r = rs_routh_complex_checked_status(&st, pr, pi, J->n, err)) == RS_OK) {
+        rs_routh_complex_rootcount(rc, pr, pi);
+        if (rs_rootcount_status(rc) != st)
+            r = rs_error_set(err, RS_ERR_INCONSISTENT, "over Q(i): complex Schur-Cohn and Bilharz say %s, p's "
+                             "root counts say %s", rs_status_name(st), rs_status_name(rs_rootcount_status(rc)));
+        if (r == RS_OK && J->stride > 0 && idx % J->stride == 0) r = cx_cross_check(st, pr, pi, err);
+        pt->d.verdict = (int) st;
+        pt->inside = (int) rc->inside;
+        pt->on = (int) rc->on;
+        pt->outside = (int) rc->outside;
+        pt->d.repeated_on = rs_rootcount_max_on_mult(rc) > 1;
+        if (rc->on > 0 && rc->outside == 0) pt->d.rho_lower = pt->d.rho_upper = 1.0;   /* exact */
+        if (r == RS_OK && J->of == RS_SWEEP_OF_MODES && J->n >= 1) {
+            rs_radius_t rr;
+            rs_radius_init(rr);
+            if (cx_point_roots(rr, pr, pi, J->n, J->max_prec))
+                rs_sweep_row_modes(pt, rr, J->hval + idx, J->refval + idx * J->nref, J->nref);
+            else
+                r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
+                                 "precision limit (%ld bits)", (long) J->max_prec);
+            rs_radius_clear(rr);
+        }
+        if (r == RS_OK && J->of != RS_SWEEP_OF_STABILITY && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
+            fmpz_poly_t N;
+            fmpz_poly_init(N);
+            rs_schur_complex_norm(N, pr, pi);
+            for (k = 0; k < fmpz_poly_length(N) && fmpz_is_zero(N->coeffs + k); k++) ;
+            if (fmpz_poly_degree(N) - k <= 0) {
+                pt->d.rho_lower = pt->d.rho_upper = 0;
+            } else {
+                rs_radius_t rr;
+                rs_radius_init(rr);
+                r = rs_radius_fmpz_poly(rr, N, 15, J->max_prec, err);
+                if (r == RS_OK) {
+                    pt->d.rho_lower = rs_ladder_lower_d(rr->lower);
+                    pt->d.rho_upper = rs_ladder_upper_d(rr->upper);
+                    pt->d.isolated = 1;
+                }
+                rs_radius_clear(rr);
+            }
+            fmpz_poly_clear(N);
+        }
+    }
+    pt->d.status = r;
+    rs_rootcount_clear(rc);
+    fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+    _fmpq_vec_clear(x, s->nvars);
+    flint_free(pp);
 }

@@ -87,8 +87,8 @@ if [ "$rc" = 2 ] && grep -q "a.case:2:8: expected a real 'q' in this assume line
 printf 'set q = 1 + i\nanalyse region q\n' >>"$T/a.case"
 sed -i '/^assume/d' "$T/a.case"
 "$RS" "$T/a.case" >"$T/out" 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "a.case:6:9: 'region' does not run at a complex set value (q = 1+i)" "$T/err"; then
-    ok "region at a complex value refused"; else fail "region refusal: rc=$rc $(cat "$T/err")"; fi
+if [ "$rc" = 2 ] && grep -q "a.case:6:16: region q: 'q' has a complex set value; its plane is region re(q), im(q)" "$T/err"; then
+    ok "region of the complex-valued parameter itself refused"; else fail "region refusal: rc=$rc $(cat "$T/err")"; fi
 printf 'param h w\nunknown x\neq x[n+1] = x[n] + h*w*x[n]\nset h = 1\nanalyse stability\n' >"$T/b.case"
 "$RS" --set 'h=i' "$T/b.case" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "b.case:5:9: stability needs every parameter set to a number (real or complex); still symbolic: w" "$T/err"; then
@@ -396,16 +396,20 @@ if [ "$rc" = 2 ] && grep -q "modes needs every parameter set to a number (real o
 if grep -q '"rows":\[\[0,0,"0","marginal",1,0,1,0,"exact"\],\[1,0.5,"1/2","stable",0,1,0,0,"exact"\],\[2,1,"1","marginal",1,0,1,0,"exact"\],\[3,1.5,"3/2","unstable",2,0,0,1,"exact"\]' "$T/sw.json" \
    && grep -q '\[1,0.5,"1/2",0.70710678118655' "$T/sw.json" && grep -q '\[4,2,"2",2.2360679774997' "$T/sw.json"; then
     ok "sweep h at q = -1 + i: 0 < h < 1 stable, radius sqrt((1-h)^2 + h^2)"; else fail "sweep at complex q: $(head -c 900 "$T/sw.json")"; fi
-"$RS" --analyse "sweep h from 0 to 2 steps 4 of modes reference=1" "$SC" >"$T/out" 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "of modes does not run at complex set values" "$T/err"; then
-    ok "sweep of modes at complex values: exit 2"; else fail "sweep of modes: rc=$rc $(cat "$T/err")"; fi
+# of modes from p's own roots: at h = 1/2, lambda = 1/2 + i/2 = (sqrt 2/2) e^(i pi/4), so
+# omega = pi/4 and zeta = ln(sqrt 2)/|ln lambda| = 0.4037...; at h = 1, lambda = i: omega = pi/2, zeta 0
+"$RS" --json --analyse "sweep h from 0 to 2 steps 4 of modes reference=1" "$SC" 2>"$T/err" | tr -d ' \n' >"$T/swm.json"
+if grep -q '\[1,0.5,"1/2",[^]]*"stable",0,"exact",0.403712751943[0-9]*,-0.14153420071[0-9]*,0.785398163397[0-9]*\]' "$T/swm.json" \
+   && grep -q '\[2,1,"1",1,1,1,"marginal",1,"exact",0,0.57079632679[0-9]*,1.5707963267949[0-9]*\]' "$T/swm.json"; then
+    ok "sweep of modes at complex values: p's own roots (omega = pi/4, pi/2)"; else fail "sweep of modes: $(head -c 900 "$T/swm.json") $(cat "$T/err")"; fi
 # claims in a real parameter at complex set values (the case file derives each by hand)
 CL=cases/complex/forward-euler-step-claims.case
 "$RS" --json "$CL" >"$T/cl.raw"; rc=$?
 tr -d ' \n' <"$T/cl.raw" >"$T/cl.json"
 st=$(grep -o '"claim":"[a-z]*","status":"[a-z]*"' "$T/cl.json" | sed 's/.*"status":"\([a-z]*\)"/\1/' | tr '\n' ' ')
-if [ "$rc" = 1 ] && [ "$st" = "proved refuted undecided undecided " ] && grep -q '"counterexample":{"h":"1"}' "$T/cl.json"; then
-    ok "claims at q = -1 + i: h < 1 proved (Bilharz), h <= 1 refuted at h = 1"; else fail "claims over Q(i): rc=$rc $st"; fi
+if [ "$rc" = 1 ] && [ "$st" = "proved refuted proved proved " ] && grep -q '"counterexample":{"h":"1"}' "$T/cl.json"; then
+    ok "claims at q = -1 + i: h < 1 proved (Bilharz), h <= 1 refuted at h = 1, bounded h <= 1 and unstable h > 1 proved (exact region)"
+else fail "claims over Q(i): rc=$rc $st"; fi
 printf 'param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nclaim stable when q < 0\n' >"$T/cq.case"
 "$RS" "$T/cq.case" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "cq.case:4:19: expected conditions on real parameters, found 'q', which has a complex set value" "$T/err"; then
