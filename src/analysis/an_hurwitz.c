@@ -111,6 +111,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(d, "trivially_false", json_boolean(c->trivially_false));
         json_array_append_new(details, d);
         json_object_set_new(d, "not_expanded", json_boolean(c->not_expanded));
+        if (!c->factored) json_object_set_new(d, "factored", json_false());
         if (c->trivially_true) {
             json_array_append_new(always, json_string(c->origin));
         } else if (c->not_expanded) {
@@ -118,7 +119,9 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             snprintf(line, sizeof line, "%s > 0 (not expanded)", c->origin);
             json_array_append_new(conds, json_string(line));
         } else {
-            char *line = rs_cond_string(c->reduced, s, "> 0");
+            /* the cofactor of a condition too large for a full factorisation
+             * (hurwitz.h): said in words, it may hide positive factors */
+            char *line = rs_cond_string(c->reduced, s, c->factored ? "> 0" : "> 0 (not factored)");
             json_array_append_new(conds, json_string(line));
             free(line);
         }
