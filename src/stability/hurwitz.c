@@ -768,10 +768,10 @@ _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
     c->factored = 1;
     if (pre != NULL) {
         fmpz_mpoly_factor_swap(c->factors, pre, ctx);
-    } else if (len <= 64 || (len <= factor_terms
-               && _factor_estimate(len) <= row_seconds
+    } else if (len <= factor_terms && (len <= 64
+               || (_factor_estimate(len) <= row_seconds
                && rs_budget_estimate(NULL, "the factorisation of a Hurwitz condition",
-                                     _factor_estimate(len), 0.0) == RS_OK)) {
+                                     _factor_estimate(len), 0.0) == RS_OK))) {
     /* gcc 12 inlines this into _add_cond and then reports FLINT 3's array
        parameters as a 48-byte access to an 8-byte region (the struct member
        is a full fmpz_mpoly_factor_t): a false positive, silenced here only */
