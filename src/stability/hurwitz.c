@@ -496,7 +496,7 @@ _hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
     return RS_OK;
 }
 
-/* D = (1/L^m) Dg(x_v, G(x)), one power of x_v at a time: the G_r do not
+/* D = (1/L^m) Dg(x_v, G(x)) (rs_hurwitz_subst_back), one power of x_v at a time: the G_r do not
  * contain x_v, so the slices are disjoint and the budget is checked between
  * them (one composition of D_11 of a 6-mass chain is 637 163 terms). */
 static int
@@ -509,17 +509,26 @@ _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
     fmpz_mpoly_struct *part;
     int r = RS_OK;
 
+    fmpz_t g;
+
     fmpz_mpoly_init(sl, hs->gctx);
     fmpz_mpoly_init(xe, ctx);
+    fmpz_init(g);
     part = flint_malloc((FLINT_MAX(d, 0) + 1) * sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_zero(D, ctx);
+    /* composed from the primitive part and scaled once at the end: the
+     * integer content (2^200 in D_11 of a 6-mass chain) would otherwise make
+     * every coefficient of every slice a GMP integer */
+    _fmpz_vec_content(g, Dg->coeffs, Dg->length);
     for (e = 0; e <= d && r == RS_OK; e++) {
         ulong ee = e;
         fmpz_mpoly_get_coeff_vars_ui(sl, Dg, &zero, &ee, 1, hs->gctx);
+        if (!fmpz_is_zero(g))
+            fmpz_mpoly_scalar_divexact_fmpz(sl, sl, g, hs->gctx);
         if (fmpz_mpoly_is_zero(sl, hs->gctx))
             continue;
         fmpz_mpoly_init(part + np, ctx);
-        if (!rs_hurwitz_subst_back(part + np, sl, m, hs, ctx)) {
+        if (!fmpz_mpoly_compose_fmpz_mpoly(part + np, sl, hs->gens, hs->gctx, ctx)) {
             np++;
             r = rs_error_set(err, RS_ERR_LIMIT,
                              "hurwitz: exponents too large composing D_%ld", (long) m);
@@ -539,11 +548,19 @@ _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
             fmpz_mpoly_add(part + e, part + e, part + e + w, ctx);
         r = rs_budget_check(err, "the composition of the Hurwitz minors");
     }
-    if (r == RS_OK && np > 0)
+    if (r == RS_OK && np > 0) {
+        /* D = (g / L^m) sum of the slices, exact (rs_hurwitz_subst_back) */
         fmpz_mpoly_swap(D, part + 0, ctx);
+        fmpz_mpoly_scalar_mul_fmpz(D, D, g, ctx);
+        if (!fmpz_is_one(hs->L)) {
+            fmpz_pow_ui(g, hs->L, (ulong) m);
+            fmpz_mpoly_scalar_divexact_fmpz(D, D, g, ctx);
+        }
+    }
     for (e = 0; e < np; e++)
         fmpz_mpoly_clear(part + e, ctx);
     flint_free(part);
+    fmpz_clear(g);
     fmpz_mpoly_clear(sl, hs->gctx);
     fmpz_mpoly_clear(xe, ctx);
     return r;
