@@ -50,6 +50,14 @@ typedef struct {
                                       its sign at a point comes from the Hurwitz
                                       matrix evaluated there (fmpq_mat_det) */
     slong minor;                   /* k for a condition D_k, else 0 */
+    int factored;                  /* 1: factors is FLINT's full factorisation;
+                                      0: only the cheap steps were affordable
+                                      (integer content, monomial factors, trial
+                                      division by the factors of the other
+                                      conditions): the last factor is the
+                                      cofactor, not factored, possibly reducible
+                                      or with square factors -- the condition is
+                                      still equivalent (issue 17) */
 } rs_hurwitz_cond_struct;
 
 typedef struct {
@@ -85,6 +93,13 @@ double rs_hurwitz_set_row_seconds(double seconds);
  * for cross-checks) or whenever it applies (2, for tests).  Returns the previous value.  Documented global
  * like rs_hurwitz_set_row_seconds. */
 int rs_hurwitz_set_subst(int on);
+
+/* A condition of more than this many terms (default 200 000), or whose full
+ * factorisation's estimate does not fit the per-row share or what is left of
+ * the budget, gets only the cheap factoring steps (issue 17; cond->factored
+ * = 0).  0 forces the cheap steps everywhere (tests).  Returns the previous
+ * value.  Documented global like rs_hurwitz_set_row_seconds. */
+slong rs_hurwitz_set_factor_terms(slong terms);
 
 /* Sign of the leading principal k x k minor of the Hurwitz matrix of h's
  * coefficients at the rational point vals: substituted first, then an exact

@@ -84,12 +84,23 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     details = json_array();
     for (i = 0; i < h->ncond; i++) {
         const rs_hurwitz_cond_struct *c = h->cond + i;
-        json_t *d = json_object(), *fl = json_array();
+        json_t *d = json_object(), *fl = json_array(), *jred;
         json_object_set_new(d, "origin", json_string(c->origin));
-        json_object_set_new(d, "poly", rs_json_zpoly(c->poly, s));
+        /* the same strings shared, not printed again (jansson counts the
+         * references): a minor's condition is the minor itself, and a lone
+         * kept factor is the reduced condition -- each 60 MB of text for the
+         * 637 163-term D_11 of a 6-mass chain (issue 17) */
+        if (c->minor >= 1 && c->minor <= h->expanded && !c->not_expanded)
+            json_object_set(d, "poly", json_array_get(minors, (size_t) (c->minor - 1)));
+        else
+            json_object_set_new(d, "poly", rs_json_zpoly(c->poly, s));
+        jred = rs_json_zpoly(c->reduced, s);
         for (k = 0; k < c->factors->num; k++) {
             json_t *f = json_object();
-            json_object_set_new(f, "factor", rs_json_factor(c->factors->poly + k, s));
+            if (fmpz_mpoly_equal(c->factors->poly + k, c->reduced, s->zctx))
+                json_object_set(f, "factor", jred);
+            else
+                json_object_set_new(f, "factor", rs_json_factor(c->factors->poly + k, s));
             json_object_set_new(f, "exponent", json_integer(fmpz_get_si(c->factors->exp + k)));
             json_object_set_new(f, "dropped", json_boolean(c->dropped[k]));
             json_array_append_new(fl, f);
@@ -106,11 +117,12 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             }
         }
         json_object_set_new(d, "factors", fl);
-        json_object_set_new(d, "reduced", rs_json_zpoly(c->reduced, s));
+        json_object_set_new(d, "reduced", jred);
         json_object_set_new(d, "trivially_true", json_boolean(c->trivially_true));
         json_object_set_new(d, "trivially_false", json_boolean(c->trivially_false));
         json_array_append_new(details, d);
         json_object_set_new(d, "not_expanded", json_boolean(c->not_expanded));
+        if (!c->factored) json_object_set_new(d, "factored", json_false());
         if (c->trivially_true) {
             json_array_append_new(always, json_string(c->origin));
         } else if (c->not_expanded) {
@@ -118,9 +130,11 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             snprintf(line, sizeof line, "%s > 0 (not expanded)", c->origin);
             json_array_append_new(conds, json_string(line));
         } else {
-            char *line = rs_cond_string(c->reduced, s, "> 0");
-            json_array_append_new(conds, json_string(line));
-            free(line);
+            /* rs_cond_string's text, from the string already made; the
+             * cofactor of a condition too large for a full factorisation
+             * (hurwitz.h) is said to be one in words */
+            json_array_append_new(conds, json_sprintf("%s %s", json_string_value(jred),
+                                                      c->factored ? "> 0" : "> 0 (not factored)"));
         }
     }
     if (hb->nbranch == 1) {

@@ -446,6 +446,9 @@ json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s)
     fmpz_mpoly_t c;
     fmpz_mpoly_init(c, s->zctx);
     for (k = 0; k <= d; k++) {
+        /* as rs_polyfmt_collected: large symbolic coefficients take seconds
+         * (the degree-58 fuzz seed); the sticky budget makes the run report */
+        if (rs_budget_check(NULL, "printing a polynomial") != RS_OK) break;
         rs_charpoly_coeff(c, p, k, var, s->zctx);
         json_array_append_new(arr, rs_json_zpoly(c, s));
     }

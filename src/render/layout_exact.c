@@ -126,12 +126,14 @@ static int branches(rs_render_t *r, const json_t *o)
 
 /* The derivation's list of conditions, after its sentence; empty (if given)
  * is the item for an empty list. */
-/* A condition as math, except a trailing " (not expanded)" (hurwitz.h), which
- * is words and is printed as text. */
+/* A condition as math, except a trailing " (not expanded)" or " (not
+ * factored)" (hurwitz.h), which is words and is printed as text. */
 static void condition_math(rs_render_t *r, const char *c)
 {
-    static const char tail[] = " (not expanded)";
-    size_t n = strlen(c), t = sizeof tail - 1;
+    const char *tail = " (not expanded)";
+    size_t n = strlen(c), t;
+    if (n > 15 && strcmp(c + n - 15, " (not factored)") == 0) tail = " (not factored)";
+    t = strlen(tail);
     if (n > t && strcmp(c + n - t, tail) == 0) {
         char *head = malloc(n - t + 1);
         if (head != NULL) {

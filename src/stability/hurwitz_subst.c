@@ -31,6 +31,7 @@
 #include <flint/fmpq_mat.h>
 #include <fmpq.h>
 #include <fmpz.h>
+#include "recstab/budget.h"
 #include "stability/hurwitz_subst.h"
 
 /* coordinates of all coefficients are kept below this many entries */
@@ -103,29 +104,62 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
             M += fmpz_mpoly_degree_si(a + i, v, ctx) + 1;
     if (M == 0)
         return WORD_MAX;
+    /* refused before extracting them when the matrix is surely too large:
+     * T >= the terms of the longest coefficient, counted in one pass (the
+     * extraction and sorting took 2 s of a dense degree-58 polynomial in 3
+     * parameters, outside the budget checks; tests/fuzz/regress) */
+    {
+        slong most = 0, *cnt;
+        for (i = 0; i <= n; i++) {
+            slong d = fmpz_mpoly_degree_si(a + i, v, ctx);
+            if (d < 0)
+                continue;
+            cnt = flint_calloc(d + 1, sizeof(slong));
+            for (k = 0; k < fmpz_mpoly_length(a + i, ctx); k++) {
+                slong ek = fmpz_mpoly_get_term_var_exp_si(a + i, k, v, ctx);
+                most = FLINT_MAX(most, ++cnt[ek]);
+            }
+            flint_free(cnt);
+        }
+        if ((double) most * (double) M > SUBST_MAX_ENTRIES)
+            return WORD_MAX;
+    }
     C = flint_malloc(M * sizeof(fmpz_mpoly_struct));
     ci = flint_malloc(M * sizeof(slong));
     ce = flint_malloc(M * sizeof(slong));
+    /* every coefficient of a_i in one pass over its terms (one
+     * fmpz_mpoly_get_coeff_vars_ui per power of x_v read a_i once per power) */
+    ex = flint_malloc(nv * sizeof(ulong));
     M = 0;
     for (i = 0; i <= n; i++) {
-        slong d;
+        slong d, m0 = M;
         if (fmpz_mpoly_is_zero(a + i, ctx))
             continue;
         d = fmpz_mpoly_degree_si(a + i, v, ctx);
+        for (e = 0; e <= d; e++)
+            fmpz_mpoly_init(C + m0 + e, ctx);
+        for (k = 0; k < fmpz_mpoly_length(a + i, ctx); k++) {
+            fmpz_mpoly_get_term_exp_ui(ex, a + i, k, ctx);
+            e = (slong) ex[v];
+            ex[v] = 0;
+            fmpz_mpoly_push_term_fmpz_ui(C + m0 + e, a[i].coeffs + k, ex, ctx);
+        }
         for (e = 0; e <= d; e++) {
-            ulong ee = e;
-            fmpz_mpoly_init(C + M, ctx);
-            fmpz_mpoly_get_coeff_vars_ui(C + M, a + i, &v, &ee, 1, ctx);
-            if (fmpz_mpoly_is_zero(C + M, ctx)) {
-                fmpz_mpoly_clear(C + M, ctx);
+            fmpz_mpoly_struct *c = C + m0 + e;
+            if (fmpz_mpoly_is_zero(c, ctx)) {
+                fmpz_mpoly_clear(c, ctx);
                 continue;
             }
+            fmpz_mpoly_sort_terms(c, ctx);
+            if (M != m0 + e)
+                C[M] = *c;   /* moved down over the empty ones */
             ci[M] = i;
             ce[M] = e;
             T += fmpz_mpoly_length(C + M, ctx);
             M++;
         }
     }
+    flint_free(ex);
 
     /* the distinct monomials: coordinates */
     st = nv + 1;
@@ -298,6 +332,9 @@ rs_hurwitz_subst_find(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a,
             used = fmpz_mpoly_degree_si(a + i, v, ctx) > 0;
         if (!used)
             continue;
+        /* the caller's next budget check reports a limit hit here */
+        if (rs_budget_check(NULL, "the substitution route") != RS_OK)
+            return;
         cost = _try_var(hs, a, n, v, 0, ctx);
         if (cost < best_cost) {
             best_cost = cost;

@@ -162,6 +162,8 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
     sbuf_t b = {NULL, 0, 0};
     slong d = fmpz_mpoly_degree_si(p, var, ctx), k;
     fmpz_mpoly_t c;
+    fmpz_mpoly_struct *cf;
+    ulong *ex;
     int first = 1;
     char pw[64];
     sb_add(&b, "");
@@ -169,15 +171,30 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
         sb_add(&b, "0");
         return b.s;
     }
+    /* the coefficients of every power in one pass over p's terms (one
+     * fmpz_mpoly_get_coeff_vars_ui per power read p d + 1 times: seconds on
+     * the degree-58 fuzz seed in tests/fuzz/regress, issue 17) */
+    cf = flint_malloc((d + 1) * sizeof(fmpz_mpoly_struct));
+    ex = flint_malloc((ctx->minfo->nvars + 1) * sizeof(ulong));
+    for (k = 0; k <= d; k++)
+        fmpz_mpoly_init(cf + k, ctx);
+    for (k = 0; k < p->length; k++) {
+        ulong e;
+        fmpz_mpoly_get_term_exp_ui(ex, p, k, ctx);
+        e = ex[var];
+        ex[var] = 0;
+        fmpz_mpoly_push_term_fmpz_ui(cf + e, p->coeffs + k, ex, ctx);
+    }
+    for (k = 0; k <= d; k++)
+        fmpz_mpoly_sort_terms(cf + k, ctx);
     fmpz_mpoly_init(c, ctx);
     for (k = d; k >= 0; k--) {
-        ulong kk = (ulong) k;
         char *cs;
         int neg = 0, single;
         /* decimal printing of large symbolic coefficients takes seconds:
          * stop with the budget (sticky: the run reports it, drops the text) */
         if (rs_budget_check(NULL, "printing a polynomial") != RS_OK) break;
-        fmpz_mpoly_get_coeff_vars_ui(c, p, &var, &kk, 1, ctx);
+        fmpz_mpoly_swap(c, cf + k, ctx);
         if (fmpz_mpoly_is_zero(c, ctx)) continue;
         single = (fmpz_mpoly_length(c, ctx) == 1);
         if (single && fmpz_sgn(c->coeffs + 0) < 0) {
@@ -199,6 +216,10 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
         if (k > 0) { sb_add(&b, "*"); sb_add(&b, pw); }
     }
     fmpz_mpoly_clear(c, ctx);
+    for (k = 0; k <= d; k++)
+        fmpz_mpoly_clear(cf + k, ctx);
+    flint_free(cf);
+    flint_free(ex);
     return b.s;
 }
 

@@ -1515,6 +1515,95 @@ test_chain_routes(void **state)
     }
 }
 
+/* Budgeted factoring (issue 17): the 4- and 5-mass chains' conditions with
+ * FLINT's full factorisation (the default at this size) and with only the
+ * cheap steps (rs_hurwitz_set_factor_terms(0): content, monomial factors,
+ * trial division by the other conditions' factors, the cofactor "not
+ * factored").  Each factorisation multiplies back to its condition exactly;
+ * the cheap one flags at least one condition (the D_k with a cofactor of
+ * many terms); and at 120 random rational points of mixed signs both sets of
+ * conditions give the exact modal verdict of chain_verdict (independent of
+ * Hurwitz: c > 0 and K positive definite by Sylvester's minors). */
+static void
+test_chain_unfactored(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    slong N;
+    (void) state;
+
+    rng_state = 4242;
+    for (N = 4; N <= 5; N++) {
+        const char *v[8];
+        tctx_struct t;
+        fmpz_mpoly_t q, prod, fe;
+        rs_hurwitz_or_t hf, hc;
+        rs_error_t err;
+        fmpq **vals;
+        slong nv = N + 2, i, k, b, trial, agree = 0, stable = 0, flagged = 0;
+        slong old;
+
+        for (i = 0; i + 1 < nv; i++)
+            v[i] = vars[i];
+        v[nv - 1] = "z";
+        tctx_init(&t, v, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        fmpz_mpoly_init(prod, t.ctx);
+        fmpz_mpoly_init(fe, t.ctx);
+        rs_hurwitz_or_init(hf);
+        rs_hurwitz_or_init(hc);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        assert_int_equal(rs_hurwitz_or_compute(hf, q, nv - 1, 2 * N, NULL, t.ctx, err), RS_OK);
+        old = rs_hurwitz_set_factor_terms(0);
+        assert_int_equal(rs_hurwitz_or_compute(hc, q, nv - 1, 2 * N, NULL, t.ctx, err), RS_OK);
+        rs_hurwitz_set_factor_terms(old);
+        assert_int_equal(hf->nbranch, hc->nbranch);
+        for (b = 0; b < hc->nbranch; b++)
+            for (i = 0; i < hc->branch[b].ncond; i++) {
+                const rs_hurwitz_cond_struct *cf = hf->branch[b].cond + i;
+                const rs_hurwitz_cond_struct *cc = hc->branch[b].cond + i;
+                assert_true(cf->factored);
+                assert_true(fmpz_mpoly_equal(cf->poly, cc->poly, t.ctx));
+                flagged += !cc->factored;
+                /* constant * prod factor^exp == poly */
+                fmpz_mpoly_set_fmpz(prod, cc->factors->constant, t.ctx);
+                for (k = 0; k < cc->factors->num; k++) {
+                    fmpz_mpoly_pow_fmpz(fe, cc->factors->poly + k, cc->factors->exp + k, t.ctx);
+                    fmpz_mpoly_mul(prod, prod, fe, t.ctx);
+                }
+                assert_true(fmpz_mpoly_equal(prod, cc->poly, t.ctx));
+            }
+        assert_true(flagged >= 1);
+        vals = point_new(nv);
+        for (trial = 0; trial < 120; trial++) {
+            int want, gf, gc;
+            for (i = 0; i + 1 < nv; i++)
+                fmpq_set_si(vals[i], rng_range(-3, 12) | 1, rng_range(1, 5));
+            want = chain_verdict(vals, N);
+            gf = rs_hurwitz_or_holds(hf, vals, t.ctx);
+            gc = rs_hurwitz_or_holds(hc, vals, t.ctx);
+            if (want < 0 || gf < 0 || gc < 0)
+                continue;
+            assert_int_equal(gf, want);
+            assert_int_equal(gc, want);
+            agree++;
+            stable += want;
+        }
+        print_message("N=%ld: %ld flagged, %ld points, %ld stable\n", (long) N, (long) flagged,
+                      (long) agree, (long) stable);
+        assert_true(agree >= 90);
+        assert_true(stable >= 15 && agree - stable >= 15);
+        point_free(vals, nv);
+        rs_hurwitz_or_clear(hf, t.ctx);
+        rs_hurwitz_or_clear(hc, t.ctx);
+        rs_error_clear(err);
+        fmpz_mpoly_clear(q, t.ctx);
+        fmpz_mpoly_clear(prod, t.ctx);
+        fmpz_mpoly_clear(fe, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
 /* The substitution route on a non-chain q whose coefficients with respect
  * to t are 2 E1, 3 E1 (= 3/2 of the first: common denominator L = 2), the
  * constant 1 (kept as a number) and E2: the route is taken and its minors
@@ -1582,6 +1671,7 @@ main(void)
         cmocka_unit_test(test_chain_not_expanded),
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
+        cmocka_unit_test(test_chain_unfactored),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
