@@ -61,49 +61,6 @@ char *rs_complex_str(const fmpq_t re, const fmpq_t im)
     return out;
 }
 
-/* p = re + i im as text in var, highest power first */
-static char *cpoly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var)
-{
-    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k;
-    size_t cap = 64, len = 0;
-    char *out = malloc(cap);
-    fmpq_t a, b;
-    fmpq_init(a); fmpq_init(b);
-    out[0] = '\0';
-    for (k = n; k >= 0; k--) {
-        char *c, pw[64];
-        int paren, neg = 0;
-        size_t need;
-        fmpq_poly_get_coeff_fmpq(a, re, k);
-        fmpq_poly_get_coeff_fmpq(b, im, k);
-        if (fmpq_is_zero(a) && fmpq_is_zero(b)) continue;
-        paren = !fmpq_is_zero(a) && !fmpq_is_zero(b);
-        if (!paren) {
-            /* one part: print its sign as the term's */
-            if (fmpq_sgn(a) < 0 || fmpq_sgn(b) < 0) { neg = 1; fmpq_neg(a, a); fmpq_neg(b, b); }
-        }
-        c = rs_complex_str(a, b);
-        if (k == 0) pw[0] = '\0';
-        else if (k == 1) snprintf(pw, sizeof pw, "%s", var);
-        else snprintf(pw, sizeof pw, "%s^%ld", var, (long) k);
-        need = len + strlen(c) + strlen(pw) + 16;
-        if (need > cap) { cap = 2 * need; out = realloc(out, cap); }
-        if (len > 0) len += (size_t) sprintf(out + len, " %s ", neg ? "-" : "+");
-        else if (neg) len += (size_t) sprintf(out + len, "-");
-        if (k > 0 && !paren && fmpq_is_zero(b) && fmpq_is_one(a))
-            len += (size_t) sprintf(out + len, "%s", pw);
-        else if (k > 0 && !paren && fmpq_is_zero(a) && fmpq_is_one(b))
-            len += (size_t) sprintf(out + len, "i*%s", pw);
-        else
-            len += (size_t) sprintf(out + len, "%s%s%s%s%s", paren ? "(" : "", c, paren ? ")" : "",
-                                    k > 0 ? "*" : "", pw);
-        free(c);
-    }
-    if (len == 0) strcpy(out, "0");
-    fmpq_clear(a); fmpq_clear(b);
-    return out;
-}
-
 static json_t *cpoly_coeffs(const fmpq_poly_t re, const fmpq_poly_t im)
 {
     json_t *arr = json_array();
@@ -301,7 +258,7 @@ static const char *qvar(const rs_run_t *run) { return rs_case_param_index(run->c
 static json_t *base_json(const char *name, const cpoint_t *cp)
 {
     json_t *o = json_object();
-    char *p = cpoly_str(cp->re, cp->im, "lambda");
+    char *p = rs_cx_poly_str(cp->re, cp->im, "lambda");
     json_object_set_new(o, "analysis", json_string(name));
     json_object_set_new(o, "over", json_string("Q(i)"));
     json_object_set_new(o, "at", json_deep_copy(cp->at));
@@ -359,7 +316,7 @@ int rs_an_complex_bilinear(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "var", json_string(qvar(run)));
         json_object_set_new(o, "degree", json_integer(d));
         json_object_set_new(o, "coeffs", cpoly_coeffs(qr, qi));
-        str = cpoly_str(qr, qi, qvar(run));
+        str = rs_cx_poly_str(qr, qi, qvar(run));
         json_object_set_new(o, "poly", json_string(str));
         free(str);
         json_object_set_new(o, "degree_drop", json_integer(n - d));
@@ -429,7 +386,7 @@ int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req)
             "Bilharz (generalised Routh-Hurwitz over Q(i)): q(i w) = A(w) + i B(w), the signed remainder "
             "chain of A/G and B/G (G = gcd(A, B): the roots on the axis and mirror pairs) counts the roots "
             "of q in Re z < 0 by its Cauchy index"));
-        str = cpoly_str(qr, qi, qvar(run));
+        str = rs_cx_poly_str(qr, qi, qvar(run));
         json_object_set_new(o, "q", json_string(str));
         free(str);
         str = fmpq_poly_get_str_pretty(t->A, "w");
@@ -623,7 +580,7 @@ int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t 
     rs_routh_complex_init(t);
     if (r == RS_OK) r = complex_verdict(&st, t, run, &cp, c);
     if (r == RS_OK) {
-        char *p = cpoly_str(cp.re, cp.im, "lambda");
+        char *p = rs_cx_poly_str(cp.re, cp.im, "lambda");
         json_object_set_new(c, "p", json_string(p));
         free(p);
         json_object_set_new(o, "complex_check", c);
@@ -951,24 +908,6 @@ typedef struct {
     const char *name;
 } zmap_t;
 
-static int zmap_cross_check(rs_status_t st, const fmpq_poly_t re, const fmpq_poly_t im, rs_error_t err)
-{
-    fmpz_poly_t N;
-    rs_sweep_point_t pt;
-    int r;
-    fmpz_poly_init(N);
-    memset(&pt, 0, sizeof pt);
-    rs_schur_complex_norm(N, re, im);
-    r = rs_sweep_decide(&pt, N, err);
-    if (r == RS_OK && (pt.verdict < 0 || (st == RS_STATUS_STABLE) != (pt.verdict == RS_STATUS_STABLE)
-                       || (st == RS_STATUS_UNSTABLE && pt.verdict != RS_STATUS_UNSTABLE)))
-        r = rs_error_set(err, RS_ERR_INCONSISTENT, "the exact verdict over Q(i) is %s, the certified verdict of "
-                         "p conj(p) (%s rung) is %s", rs_status_name(st), rs_sweep_level_names[pt.level],
-                         rs_sweep_verdict_name(pt.verdict));
-    fmpz_poly_clear(N);
-    return r;
-}
-
 static void zmap_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t err)
 {
     const zmap_t *Z = model;
@@ -982,7 +921,7 @@ static void zmap_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t e
     /* a singular point has no certified side (p conj(p) has lower degree) */
     row->inside = 0;
     if (r == RS_OK && idx % Z->stride == 0 && st != RS_STATUS_SINGULAR) {
-        r = zmap_cross_check(st, re, im, err);
+        r = rs_cx_norm_check(st, re, im, err);
         row->inside = 1;   /* here: cross-checked */
     }
     if (r != RS_OK) {
@@ -1115,8 +1054,8 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
         if (K == 1) {
             char *p0, *p1, *buf;
             if (CI != NULL) {
-                p0 = cpoly_str(CR + 0, CI + 0, "lambda");
-                p1 = cpoly_str(CR + 1, CI + 1, "lambda");
+                p0 = rs_cx_poly_str(CR + 0, CI + 0, "lambda");
+                p1 = rs_cx_poly_str(CR + 1, CI + 1, "lambda");
             } else {
                 p0 = fmpq_poly_get_str_pretty(CR + 0, "lambda");
                 p1 = fmpq_poly_get_str_pretty(CR + 1, "lambda");

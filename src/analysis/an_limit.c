@@ -65,71 +65,6 @@ static void roots_json(json_t *arr, const fmpz_poly_t f)
 
 /* ---- limit at complex set values ------------------------------------------------ */
 
-/* the distinct roots of the squarefree ar + i ai (degree d >= 2) as certified
- * isolating balls (acb_poly_find_roots: isolated only when it returns d) */
-static int cx_isolate(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong d, slong max_prec)
-{
-    slong prec, k;
-    int done = 0;
-    for (prec = 128; prec <= max_prec && !done; prec *= 2) {
-        acb_poly_t p;
-        acb_t c;
-        fmpq_t x;
-        acb_poly_init(p); acb_init(c); fmpq_init(x);
-        for (k = 0; k <= d; k++) {
-            fmpq_poly_get_coeff_fmpq(x, ar, k);
-            arb_set_fmpq(acb_realref(c), x, prec);
-            fmpq_poly_get_coeff_fmpq(x, ai, k);
-            arb_set_fmpq(acb_imagref(c), x, prec);
-            acb_poly_set_coeff_acb(p, k, c);
-        }
-        if (acb_poly_find_roots(out, p, NULL, 0, prec) == d) {
-            done = 1;
-            for (k = 0; k < d; k++)
-                if (!acb_is_exact(out + k) && acb_rel_accuracy_bits(out + k) < 70
-                    && !(mag_cmp_2exp_si(arb_radref(acb_realref(out + k)), -80) <= 0
-                         && mag_cmp_2exp_si(arb_radref(acb_imagref(out + k)), -80) <= 0))
-                    done = 0;   /* neither 70 relative nor 80 absolute bits (a root at 0) */
-        }
-        fmpq_clear(x); acb_clear(c); acb_poly_clear(p);
-    }
-    return done;
-}
-
-/* c = re + i im as text in var, highest power first: "c_k*var^k + ..." with
- * a coefficient of two parts in parentheses */
-static char *lim_cpoly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var)
-{
-    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k;
-    size_t cap = 64, len = 0;
-    char *out = malloc(cap);
-    fmpq_t a, b;
-    fmpq_init(a); fmpq_init(b);
-    strcpy(out, n < 0 ? "0" : "");
-    for (k = n; k >= 0; k--) {
-        char *c, pw[64];
-        int paren, neg;
-        fmpq_poly_get_coeff_fmpq(a, re, k);
-        fmpq_poly_get_coeff_fmpq(b, im, k);
-        if (fmpq_is_zero(a) && fmpq_is_zero(b)) continue;
-        paren = !fmpq_is_zero(a) && !fmpq_is_zero(b);
-        neg = !paren && (fmpq_sgn(a) < 0 || fmpq_sgn(b) < 0);   /* one part: its sign is the term's */
-        if (neg) { fmpq_neg(a, a); fmpq_neg(b, b); }
-        c = rs_complex_str(a, b);
-        if (k == 0) pw[0] = '\0';
-        else if (k == 1) snprintf(pw, sizeof pw, "%s", var);
-        else snprintf(pw, sizeof pw, "%s^%ld", var, (long) k);
-        if (len + strlen(c) + strlen(pw) + 16 > cap) { cap = 2 * (len + strlen(c) + strlen(pw) + 16); out = realloc(out, cap); }
-        if (len > 0) len += (size_t) sprintf(out + len, " %s ", neg ? "-" : "+");
-        else if (neg) len += (size_t) sprintf(out + len, "-");
-        if (k > 0 && strcmp(c, "1") == 0) len += (size_t) sprintf(out + len, "%s", pw);
-        else len += (size_t) sprintf(out + len, "%s%s%s%s%s", paren ? "(" : "", c, paren ? ")" : "", k > 0 ? "*" : "", pw);
-        free(c);
-    }
-    fmpq_clear(a); fmpq_clear(b);
-    return out;
-}
-
 /* the roots of c = cr + i ci over Q(i) with multiplicity: Yun's squarefree
  * decomposition over Q(i) (exact multiplicities), linear factors exactly,
  * the others as certified balls (20 digits; "abs" their modulus) */
@@ -173,7 +108,7 @@ static int cx_roots_json(json_t *arr, const fmpq_poly_t cr, const fmpq_poly_t ci
             fmpq_clear(br); fmpq_clear(bi);
         } else {
             acb_ptr r = _acb_vec_init(d);
-            if (!cx_isolate(r, f.re + k, f.im + k, d, max_prec)) ok = 0;
+            if (!rs_cx_isolate_sqfree(r, f.re + k, f.im + k, 70, 128, max_prec)) ok = 0;
             for (j = 0; j < d && ok; j++) {
                 char *re = arb_get_str(acb_realref(r + j), 20, 0), *im = arb_get_str(acb_imagref(r + j), 20, 0);
                 char *val = malloc(strlen(re) + strlen(im) + 8);
@@ -258,7 +193,7 @@ static int cx_limit(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "to", json_string(req->u.limit.to_inf ? "inf" : "0"));
     json_object_set_new(o, "over", json_string("Q(i)"));
     {
-        char *lp = lim_cpoly_str(qr, qi, "lambda");
+        char *lp = rs_cx_poly_str(qr, qi, "lambda");
         json_object_set_new(o, "limit_poly", json_string(lp));
         free(lp);
     }

@@ -77,92 +77,17 @@ static slong cdeg(const fmpq_poly_t re, const fmpq_poly_t im)
     return FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im));
 }
 
-/* the distinct roots of a squarefree a = ar + i ai, certified isolating balls
- * of relative accuracy >= bits, into out[0..deg a); 0 when the precision
- * limit is reached first */
-static int isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong bits, slong max_prec)
+/* rr's roots (with multiplicity) of p = pr + i pi over Q(i), 100 relative bits */
+static int modes_cx_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong max_prec, rs_error_t err)
 {
-    slong d = cdeg(ar, ai), k, prec;
-    int done = 0;
-    /* a root at 0 (once: a is squarefree) is exact; Arb's ball around it has no
-     * relative accuracy at any precision, so it is split off first */
-    if (d >= 1 && (fmpq_poly_is_zero(ar) || fmpz_is_zero(ar->coeffs))
-        && (fmpq_poly_is_zero(ai) || fmpz_is_zero(ai->coeffs))) {
-        fmpq_poly_t sr, si;
-        fmpq_poly_init(sr);
-        fmpq_poly_init(si);
-        fmpq_poly_shift_right(sr, ar, 1);
-        fmpq_poly_shift_right(si, ai, 1);
-        acb_zero(out);
-        done = d == 1 || isolate_sqfree(out + 1, sr, si, bits, max_prec);
-        fmpq_poly_clear(sr);
-        fmpq_poly_clear(si);
-        return done;
-    }
-    for (prec = 2 * bits + 64; prec <= max_prec && !done; prec *= 2) {
-        acb_poly_t p;
-        acb_t c;
-        fmpq_t x;
-        acb_poly_init(p);
-        acb_init(c);
-        fmpq_init(x);
-        for (k = 0; k <= d; k++) {
-            fmpq_poly_get_coeff_fmpq(x, ar, k);
-            arb_set_fmpq(acb_realref(c), x, prec);
-            fmpq_poly_get_coeff_fmpq(x, ai, k);
-            arb_set_fmpq(acb_imagref(c), x, prec);
-            acb_poly_set_coeff_acb(p, k, c);
-        }
-        if (acb_poly_find_roots(out, p, NULL, 0, prec) == d) {
-            done = 1;
-            for (k = 0; k < d; k++)
-                if (!acb_is_exact(out + k) && acb_rel_accuracy_bits(out + k) < bits) done = 0;
-        }
-        fmpq_clear(x);
-        acb_clear(c);
-        acb_poly_clear(p);
-    }
-    return done;
-}
-
-/* rr's roots (with multiplicity) of p = pr + i pi over Q(i): Yun's squarefree
- * decomposition p = prod a_k^k over Q(i) (exact), then each a_k's roots
- * isolated by acb_poly_find_roots (certified) */
-static int complex_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong max_prec,
-                         rs_error_t err)
-{
-    slong n = cdeg(pr, pi), k, at = 0, j;
-    rs_cx_sqfree_t f;
-    int r = RS_OK;
-    rs_cx_sqfree_init(&f);
-    rs_schur_complex_sqfree(&f, pr, pi);
-    rr->nroots = n;
-    rr->roots = _acb_vec_init(n);
-    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
-    rr->isolated = 1;
-    for (k = 1; k <= f.n && r == RS_OK; k++) {
-        slong da = cdeg(f.re + k - 1, f.im + k - 1);
-        if (da < 1) continue;
-        if (at + k * da > n || !isolate_sqfree(rr->roots + at, f.re + k - 1, f.im + k - 1, bits, max_prec)) {
-            r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
-                             "precision limit (%ld bits)", (long) max_prec);
-            break;
-        }
-        /* each root k times (from the top: the sources below are not yet overwritten) */
-        for (j = da - 1; j >= 0; j--) {
-            slong m;
-            for (m = 0; m < k; m++) {
-                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
-                rr->mult[at + j * k + m] = k;
-            }
-        }
-        at += k * da;
-    }
-    if (r == RS_OK && at != n)
-        r = rs_error_set(err, RS_ERR_INCONSISTENT, "modes over Q(i): the squarefree decomposition has %ld roots, "
-                         "p has degree %ld", (long) at, (long) n);
-    rs_cx_sqfree_clear(&f);
-    return r;
+    int ok = rs_cx_roots(rr, pr, pi, 100, 2 * 100 + 64, max_prec);
+    if (ok == 0)
+        return rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
+                            "precision limit (%ld bits)", (long) max_prec);
+    if (ok < 0)
+        return rs_error_set(err, RS_ERR_INCONSISTENT, "modes over Q(i): the squarefree decomposition's degrees "
+                            "do not add up to p's degree %ld", (long) cdeg(pr, pi));
+    return RS_OK;
 }
 
 /* the certified moduli against the exact counts over Q(i) (Schur-Cohn and
@@ -252,7 +177,7 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     /* a real dead-beat p = c (det A = c lambda^k, the roots at 0 divided out):
      * no mode, as `stability` and `radius` accept it */
     if (r == RS_OK && (cx || fmpz_poly_degree(p) >= 1))
-        r = cx ? complex_roots(rr, pr, pi, 100, run->opt->max_prec, run->err)
+        r = cx ? modes_cx_roots(rr, pr, pi, run->opt->max_prec, run->err)
                : rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
     if (r == RS_OK) {
         o = json_object();

@@ -3,11 +3,18 @@
  * the point verdict of run.c: complex set values substituted into p (or a
  * `char` line with i read back from its real 2x2 block form [[A, -B], [B, A]]),
  * p = re + i im with re, im in Z[real params][lambda]. */
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <acb_poly.h>
 #include <fmpq_vec.h>
 #include <fmpz_vec.h>
 #include "analysis/impl.h"
 #include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
+#include "analysis/registry.h"
+#include "analysis/sweep_impl.h"
+#include "recstab/ladder.h"
 
 /* the complex value of variable var (a parameter), or -1 */
 static slong cset_of(const rs_run_t *run, slong var)
@@ -172,5 +179,149 @@ int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, co
     fmpq_poly_clear(pr); fmpq_poly_clear(pi);
     _fmpq_vec_clear(pt, s->nvars);
     flint_free(pp);
+    return r;
+}
+
+/* ---- roots, text and the certified cross-check of p over Q(i) ----------------- */
+
+static slong cx_deg(const fmpq_poly_t re, const fmpq_poly_t im)
+{
+    return FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im));
+}
+
+int rs_cx_isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong bits, slong prec0,
+                         slong max_prec)
+{
+    slong d = cx_deg(ar, ai), k, prec;
+    int done = 0;
+    /* a root at 0 (once: a is squarefree) is exact; Arb's ball around it has no
+     * relative accuracy at any precision, so it is split off first */
+    if (d >= 1 && (fmpq_poly_is_zero(ar) || fmpz_is_zero(ar->coeffs))
+        && (fmpq_poly_is_zero(ai) || fmpz_is_zero(ai->coeffs))) {
+        fmpq_poly_t sr, si;
+        fmpq_poly_init(sr);
+        fmpq_poly_init(si);
+        fmpq_poly_shift_right(sr, ar, 1);
+        fmpq_poly_shift_right(si, ai, 1);
+        acb_zero(out);
+        done = d == 1 || rs_cx_isolate_sqfree(out + 1, sr, si, bits, prec0, max_prec);
+        fmpq_poly_clear(sr);
+        fmpq_poly_clear(si);
+        return done;
+    }
+    for (prec = prec0; prec <= max_prec && !done; prec *= 2) {
+        acb_poly_t p;
+        acb_t c;
+        fmpq_t x;
+        acb_poly_init(p);
+        acb_init(c);
+        fmpq_init(x);
+        for (k = 0; k <= d; k++) {
+            fmpq_poly_get_coeff_fmpq(x, ar, k);
+            arb_set_fmpq(acb_realref(c), x, prec);
+            fmpq_poly_get_coeff_fmpq(x, ai, k);
+            arb_set_fmpq(acb_imagref(c), x, prec);
+            acb_poly_set_coeff_acb(p, k, c);
+        }
+        if (acb_poly_find_roots(out, p, NULL, 0, prec) == d) {
+            done = 1;
+            for (k = 0; k < d; k++)
+                if (!acb_is_exact(out + k) && acb_rel_accuracy_bits(out + k) < bits) done = 0;
+        }
+        fmpq_clear(x);
+        acb_clear(c);
+        acb_poly_clear(p);
+    }
+    return done;
+}
+
+int rs_cx_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong prec0, slong max_prec)
+{
+    slong n = cx_deg(pr, pi), k, at = 0, j, m;
+    rs_cx_sqfree_t f;
+    int ok = 1;
+    rs_cx_sqfree_init(&f);
+    rs_schur_complex_sqfree(&f, pr, pi);
+    rr->nroots = n;
+    rr->roots = _acb_vec_init(n);
+    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
+    rr->isolated = 1;
+    for (k = 1; k <= f.n && ok; k++) {
+        slong da = cx_deg(f.re + k - 1, f.im + k - 1);
+        if (da < 1) continue;
+        if (at + k * da > n || !rs_cx_isolate_sqfree(rr->roots + at, f.re + k - 1, f.im + k - 1, bits, prec0,
+                                                     max_prec)) {
+            ok = 0;
+            break;
+        }
+        /* each root k times (from the top: the sources below are not yet overwritten) */
+        for (j = da - 1; j >= 0; j--)
+            for (m = 0; m < k; m++) {
+                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
+                rr->mult[at + j * k + m] = k;
+            }
+        at += k * da;
+    }
+    rs_cx_sqfree_clear(&f);
+    return ok ? (at == n ? 1 : -1) : 0;
+}
+
+char *rs_cx_poly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var)
+{
+    slong n = cx_deg(re, im), k;
+    size_t cap = 64, len = 0;
+    char *out = malloc(cap);
+    fmpq_t a, b;
+    fmpq_init(a);
+    fmpq_init(b);
+    out[0] = '\0';
+    for (k = n; k >= 0; k--) {
+        char *c, pw[64];
+        int paren, neg = 0;
+        size_t need;
+        fmpq_poly_get_coeff_fmpq(a, re, k);
+        fmpq_poly_get_coeff_fmpq(b, im, k);
+        if (fmpq_is_zero(a) && fmpq_is_zero(b)) continue;
+        paren = !fmpq_is_zero(a) && !fmpq_is_zero(b);
+        /* one part: print its sign as the term's */
+        if (!paren && (fmpq_sgn(a) < 0 || fmpq_sgn(b) < 0)) { neg = 1; fmpq_neg(a, a); fmpq_neg(b, b); }
+        c = rs_complex_str(a, b);
+        if (k == 0) pw[0] = '\0';
+        else if (k == 1) snprintf(pw, sizeof pw, "%s", var);
+        else snprintf(pw, sizeof pw, "%s^%ld", var, (long) k);
+        need = len + strlen(c) + strlen(pw) + 16;
+        if (need > cap) { cap = 2 * need; out = realloc(out, cap); }
+        if (len > 0) len += (size_t) sprintf(out + len, " %s ", neg ? "-" : "+");
+        else if (neg) len += (size_t) sprintf(out + len, "-");
+        if (k > 0 && !paren && fmpq_is_zero(b) && fmpq_is_one(a))
+            len += (size_t) sprintf(out + len, "%s", pw);
+        else if (k > 0 && !paren && fmpq_is_zero(a) && fmpq_is_one(b))
+            len += (size_t) sprintf(out + len, "i*%s", pw);
+        else
+            len += (size_t) sprintf(out + len, "%s%s%s%s%s", paren ? "(" : "", c, paren ? ")" : "",
+                                    k > 0 ? "*" : "", pw);
+        free(c);
+    }
+    if (len == 0) strcpy(out, "0");
+    fmpq_clear(a);
+    fmpq_clear(b);
+    return out;
+}
+
+int rs_cx_norm_check(rs_status_t st, const fmpq_poly_t re, const fmpq_poly_t im, rs_error_t err)
+{
+    fmpz_poly_t N;
+    rs_sweep_point_t pt;
+    int r;
+    fmpz_poly_init(N);
+    memset(&pt, 0, sizeof pt);
+    rs_schur_complex_norm(N, re, im);
+    r = rs_sweep_decide(&pt, N, err);
+    if (r == RS_OK && (pt.verdict < 0 || (st == RS_STATUS_STABLE) != (pt.verdict == RS_STATUS_STABLE)
+                       || (st == RS_STATUS_UNSTABLE && pt.verdict != RS_STATUS_UNSTABLE)))
+        r = rs_error_set(err, RS_ERR_INCONSISTENT, "the exact verdict over Q(i) is %s, the certified verdict of "
+                         "p conj(p) (%s rung) is %s", rs_status_name(st), rs_sweep_level_names[pt.level],
+                         rs_sweep_verdict_name(pt.verdict));
+    fmpz_poly_clear(N);
     return r;
 }

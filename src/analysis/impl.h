@@ -219,6 +219,19 @@ void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, cons
  * still free in v): complex Schur-Cohn and Bilharz (must agree), rc p's own
  * counts (rs_routh_complex_rootcount, whose status must agree); real_st >= 0:
  * the real block form's verdict, which must agree too (RS_ERR_INCONSISTENT). */
+/* rs_cx_isolate_sqfree: the distinct roots of a squarefree a = ar + i ai as
+ * certified isolating balls of relative accuracy >= bits (a root at 0 split
+ * off exactly), precision prec0 doubled up to max_prec (0: limit reached);
+ * rs_cx_roots: rr gets p's roots with multiplicity (Yun over Q(i), then each
+ * factor isolated; 1 done, 0 limit, -1 the factors' degrees do not add up);
+ * rs_cx_poly_str: p as text in var; rs_cx_norm_check: the exact verdict st
+ * against the certified ladder on p conj(p) (same moduli), which must say
+ * stable iff st does and unstable when st does (RS_ERR_INCONSISTENT). */
+int rs_cx_isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai, slong bits, slong prec0,
+                         slong max_prec);
+int rs_cx_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong prec0, slong max_prec);
+char *rs_cx_poly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var);
+int rs_cx_norm_check(rs_status_t st, const fmpq_poly_t re, const fmpq_poly_t im, rs_error_t err);
 int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                            const slong *vars, const fmpq *vals, slong nv, int real_st);
 

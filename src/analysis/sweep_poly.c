@@ -486,82 +486,6 @@ json_t *rs_sweep_cx_at(const rs_run_t *run)
     return at;
 }
 
-/* rr's roots (with multiplicity) of p = pr + i pi of degree n: Yun over
- * Q(i) (exact multiplicities), each squarefree factor's roots isolated by
- * acb_poly_find_roots (certified when it isolates all of them) to 60
- * relative bits; 0 when the precision limit came first.  (an_modes.c does
- * the same for one point.) */
-static int cx_point_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong n, slong max_prec)
-{
-    rs_cx_sqfree_t f;
-    slong k, at = 0, j, m;
-    int ok = 1;
-    rs_cx_sqfree_init(&f);
-    rs_schur_complex_sqfree(&f, pr, pi);
-    rr->nroots = n;
-    rr->roots = _acb_vec_init(n);
-    rr->mult = flint_malloc((size_t) (n + 1) * sizeof(slong));
-    rr->isolated = 1;
-    for (k = 1; k <= f.n && ok; k++) {
-        slong da = FLINT_MAX(fmpq_poly_degree(f.re + k - 1), fmpq_poly_degree(f.im + k - 1)), prec;
-        int done = 0;
-        if (da < 1) continue;
-        if (at + k * da > n) { ok = 0; break; }
-        for (prec = 128; prec <= max_prec && !done; prec *= 2) {
-            acb_poly_t a;
-            acb_t c;
-            fmpq_t x;
-            acb_poly_init(a); acb_init(c); fmpq_init(x);
-            for (j = 0; j <= da; j++) {
-                fmpq_poly_get_coeff_fmpq(x, f.re + k - 1, j);
-                arb_set_fmpq(acb_realref(c), x, prec);
-                fmpq_poly_get_coeff_fmpq(x, f.im + k - 1, j);
-                arb_set_fmpq(acb_imagref(c), x, prec);
-                acb_poly_set_coeff_acb(a, j, c);
-            }
-            if (acb_poly_find_roots(rr->roots + at, a, NULL, 0, prec) == da) {
-                done = 1;
-                for (j = 0; j < da; j++)
-                    if (!acb_is_exact(rr->roots + at + j) && acb_rel_accuracy_bits(rr->roots + at + j) < 60
-                        && !acb_contains_zero(rr->roots + at + j))
-                        done = 0;
-            }
-            fmpq_clear(x); acb_clear(c); acb_poly_clear(a);
-        }
-        if (!done) { ok = 0; break; }
-        /* each root k times (from the top: the sources below are not yet overwritten) */
-        for (j = da - 1; j >= 0; j--)
-            for (m = 0; m < k; m++) {
-                acb_set(rr->roots + at + j * k + m, rr->roots + at + j);
-                rr->mult[at + j * k + m] = k;
-            }
-        at += k * da;
-    }
-    rs_cx_sqfree_clear(&f);
-    return ok && at == n;
-}
-
-/* The certified side at one point: the ladder on N = p conj(p), whose roots
- * are p's and their conjugates (same moduli): stable iff p is stable; p
- * unstable keeps N unstable (a root outside, or a repeated circle root);
- * p marginal may give N unstable (a circle root and its conjugate). */
-static int cx_cross_check(rs_status_t st, const fmpq_poly_t pr, const fmpq_poly_t pi, rs_error_t err)
-{
-    fmpz_poly_t N;
-    rs_sweep_point_t pt;
-    int r;
-    fmpz_poly_init(N);
-    memset(&pt, 0, sizeof pt);
-    rs_schur_complex_norm(N, pr, pi);
-    r = rs_sweep_decide(&pt, N, err);
-    if (r == RS_OK && (pt.verdict < 0 || (st == RS_STATUS_STABLE) != (pt.verdict == RS_STATUS_STABLE)
-                       || (st == RS_STATUS_UNSTABLE && pt.verdict != RS_STATUS_UNSTABLE)))
-        r = rs_error_set(err, RS_ERR_INCONSISTENT, "the exact verdict over Q(i) is %s, the certified verdict of "
-                         "p conj(p) is %s", rs_status_name(st), rs_sweep_verdict_name(pt.verdict));
-    fmpz_poly_clear(N);
-    return r;
-}
-
 void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err)
 {
     const rs_sweep_cx_t *J = model;
@@ -599,7 +523,7 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
         if (rs_rootcount_status(rc) != st)
             r = rs_error_set(err, RS_ERR_INCONSISTENT, "over Q(i): complex Schur-Cohn and Bilharz say %s, p's "
                              "root counts say %s", rs_status_name(st), rs_status_name(rs_rootcount_status(rc)));
-        if (r == RS_OK && J->stride > 0 && idx % J->stride == 0) r = cx_cross_check(st, pr, pi, err);
+        if (r == RS_OK && J->stride > 0 && idx % J->stride == 0) r = rs_cx_norm_check(st, pr, pi, err);
         pt->d.verdict = (int) st;
         pt->inside = (int) rc->inside;
         pt->on = (int) rc->on;
@@ -609,7 +533,7 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
         if (r == RS_OK && J->of == RS_SWEEP_OF_MODES && J->n >= 1) {
             rs_radius_t rr;
             rs_radius_init(rr);
-            if (cx_point_roots(rr, pr, pi, J->n, J->max_prec))
+            if (rs_cx_roots(rr, pr, pi, 60, 128, J->max_prec) == 1 && rr->nroots == J->n)
                 rs_sweep_row_modes(pt, rr, J->hval + idx, J->refval + idx * J->nref, J->nref);
             else
                 r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
