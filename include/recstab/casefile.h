@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 #define RS_CASE_MAX_BYTES (16L * 1024 * 1024) /* whole file */
-#define RS_CASE_MAX_LINE 65536                /* one logical statement */
+#define RS_CASE_MAX_LINE (1024 * 1024)        /* one logical statement (a degree-500 char line with 400-digit coefficients fits) */
 #define RS_CASE_MAX_INCLUDES 256              /* distinct files read by include */
 #define RS_CASE_MAX_INCLUDE_BYTES (16L * 1024 * 1024) /* all of them together (16 MiB) */
 #define RS_CASE_MAX_NAMES 256                 /* params + unknowns + lets */
