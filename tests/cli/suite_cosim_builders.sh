@@ -21,8 +21,8 @@ for pair in gs3 newmark-iter cd-iter li-explicit-integrator li-implicit-integrat
     else fail "$pair: builder '$a' vs by hand '$b'"; fi
 done
 
-# iterations with central difference (cd-iter-*.case): `iterations 2` against
-# the second hand derivation; with the velocity coupling e the iterates
+# iterations with central difference (cd-iter-*.case): `iterations 2` and
+# Gauss-Seidel against their hand derivations; with the velocity coupling e the iterates
 # differ (iterations 1 != 2), with position coupling only (e = 0) every
 # iterate after the first reads the partner's final position y[n], so
 # iterations 1, 2 and 3 give monolithic central difference.  Closed form
@@ -36,6 +36,10 @@ for k in 1 2 3; do sed "s/^iterations 1/iterations $k/" cases/cosim/cd-iter-buil
 a=$(poly "$CDT/k2.case"); b=$(poly cases/cosim/cd-iter2-by-hand.case)
 if [ -n "$a" ] && [ "$a" = "$b" ]; then ok "cd-iter2: builder = by hand ($a)"
 else fail "cd-iter2: builder '$a' vs by hand '$b'"; fi
+sed 's/^couple jacobi/couple gauss-seidel S1 S2/' "$CDT/k1.case" > "$CDT/gs.case"
+g=$(poly "$CDT/gs.case"); b=$(poly cases/cosim/cd-iter-gs-by-hand.case)
+if [ -n "$g" ] && [ "$g" = "$b" ]; then ok "cd-iter-gs: builder = by hand ($g)"
+else fail "cd-iter-gs: builder '$g' vs by hand '$b'"; fi
 a1=$(poly "$CDT/k1.case")
 if [ -n "$a1" ] && [ -n "$a" ] && [ "$a1" != "$a" ]; then ok "cd-iter: velocity coupling, iterations 1 != 2"
 else fail "cd-iter: iterations 1 '$a1' vs 2 '$a'"; fi
