@@ -109,6 +109,16 @@ static int find_state(const rs_case_struct *c, const char *name, slong *a, slong
 
 static int is_pos(const gen_t *g, slong a, slong k) { return g->pair[a] && g->vel[a * MAX_STATES + k] >= 0; }
 
+/* state x is a position of a central-difference subsystem: its value at the
+ * time of the equation of motion, x[n+1], was fixed by the step before (the
+ * step that iterates a[n+1] and v[n+1] produces x[n+2]), so every iterate
+ * reads the final x[n+1] */
+static int cd_pos(const gen_t *g, const char *x)
+{
+    slong a, k;
+    return find_state(g->c, x, &a, &k) && strcmp(g->c->subs[a].method, "central-difference") == 0 && is_pos(g, a, k);
+}
+
 /* binomial coefficients of the extrapolating polynomial through
  * n, n-1, ..., n-K evaluated at n+1: (-1)^i C(K+1, i+1) */
 static slong extrap_coeff(slong K, slong i)
@@ -139,6 +149,7 @@ static rs_expr_t *partner(const gen_t *g, const char *p, slong a, slong b, slong
         }
         return P(e);
     }
+    if (cd_pos(g, p)) return seq(p, 1, at);
     if (j == 0) return var(p, 0, g->K, 1, at);
     return var(p, delayed ? j - 1 : j, g->K, 1, at);
 }
@@ -223,6 +234,7 @@ static rs_expr_t *own(const gen_t *g, slong a, const char *x, slong j, pos_t at)
         if (sum == NULL) return seq(x, 0, at);
         return P(op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(s->step)), P(sum), p), p));
     }
+    if (cd_pos(g, x)) return seq(x, 1, at);
     if (g->mix) {
         pos_t p = pos_of(&s->intloc);
         rs_expr_t *af = alpha_f(s, p);
@@ -547,9 +559,6 @@ static int find_pairs(gen_t *g, slong a, rs_error_t err)
         if (k >= 0 && k != si) vel[si] = k;
     }
     if (!g->pair[a]) return RS_OK;
-    if (g->K > 0 && strcmp(s->method, "central-difference") == 0)
-        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations are not defined for %s: it is explicit (x[n+1] "
-                      "uses the accelerations at n only), so every iterate would equal the first", s->method);
     if (g->K > 0 && is_alpha(s))
         return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "iterations with %s are not supported (where the iterates "
                       "enter its intermediate time t[n+1-alpha_f] is not defined by recstab)", s->method);
@@ -668,12 +677,15 @@ static void pair_formula(rs_model_struct *m, const rs_subsystem_t *s, const char
                    op(RS_EXPR_MUL, P(copy(s->arg2)), dvar(v, j, K, 1, p), p), p));
         add_eq(m, var(v, j, K, 1, p), op(RS_EXPR_ADD, seq(v, 0, p), op(RS_EXPR_MUL, P(copy(h)), acc, p), p), &s->intloc);
     } else {
-        /* central difference: x[n+1] - 2*x[n] + x[n-1] = (h)^2*v_dot[n], 2*(h)*v[n] = x[n+1] - x[n-1] */
-        add_eq(m, op(RS_EXPR_ADD, op(RS_EXPR_SUB, seq(x, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
+        /* central difference: X[n+1] - 2*x[n] + x[n-1] = (h)^2*V_dot[n], 2*(h)*V[n] = X[n+1] - x[n-1].
+         * The step producing x[n+1] solves for x[n+1], v[n] and a[n] = v_dot[n] together (a[n]
+         * depends on v[n] through damping or a velocity coupling), so these are the iterate's
+         * unknowns X, V, V_dot; x[n] and x[n-1] are final (see cd_pos) */
+        add_eq(m, op(RS_EXPR_ADD, op(RS_EXPR_SUB, var(x, j, K, 1, p), op(RS_EXPR_MUL, num(2, p), seq(x, 0, p), p), p),
                      seq(x, -1, p), p),
-               op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), dot(v, 0, p), p), &s->intloc);
-        add_eq(m, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), seq(v, 0, p), p),
-               op(RS_EXPR_SUB, seq(x, 1, p), seq(x, -1, p), p), &s->intloc);
+               op(RS_EXPR_MUL, op(RS_EXPR_POW, P(copy(h)), num(2, p), p), dvar(v, j, K, 0, p), p), &s->intloc);
+        add_eq(m, op(RS_EXPR_MUL, op(RS_EXPR_MUL, num(2, p), P(copy(h)), p), var(v, j, K, 0, p), p),
+               op(RS_EXPR_SUB, var(x, j, K, 1, p), seq(x, -1, p), p), &s->intloc);
     }
 }
 
