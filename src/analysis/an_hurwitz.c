@@ -33,6 +33,27 @@ static int holds_both(const void *data, fmpq *const *pt, const rs_scheme_struct 
     return lc;
 }
 
+/* det A = c lambda^k: once the roots at 0 are divided out p (and q) is a
+ * constant, so there is no Hurwitz minor and no condition: every root is 0
+ * (hurwitz.c refuses degree 0; jury and stability say the same) */
+static int hurwitz_dead_beat(rs_run_t *run, const rs_variant_t *v)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "analysis", json_string("hurwitz"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "degree", json_integer(0));
+    json_object_set_new(o, "p_at_1", rs_json_p_at(v, 1));
+    json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
+    json_object_set_new(o, "minors", json_array());
+    json_object_set_new(o, "conditions", json_array());
+    json_object_set_new(o, "nonzero", json_array());
+    json_object_set_new(o, "dead_beat", json_string(
+        "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0; q(z) is a constant"));
+    json_object_set_new(o, "verdict", json_string("stable under the assumptions (dead-beat: every root is 0)"));
+    rs_run_emit_exact(run, v, o);
+    return RS_OK;
+}
+
 int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_variant_t *v;
@@ -46,6 +67,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
+    if (v->cp->degree < 1) return hurwitz_dead_beat(run, v);
     s = v->s;
     fmpz_mpoly_init(qz, s->zctx);
     rs_hurwitz_or_init(hb);

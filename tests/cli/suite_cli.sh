@@ -156,3 +156,18 @@ radius_high "degree 72, a root 10^-40 outside: refined ball counts" \
 assert r['count_methods'] == ['certified root balls', 'schur-cohn'], r
 assert r.get('count_balls_refined') is True and r['count_agree'] is True, r
 assert r['exact_status'] == 'unstable' and r['rho'].startswith('2.0000000000'), r"
+
+# hurwitz on a dead-beat scheme (det A = c lambda^k): p is a constant once the
+# roots at 0 are divided out, so q has no minor and no condition (every root
+# is 0 by hand); it exited 2 with "degree 0 in z" and no file:line:col (h-truth)
+printf 'param h\nassume h > 0\nchar h*lambda^2\nanalyse hurwitz\nanalyse jury\n' >"$T/deadbeat.case"
+"$RS" --json "$T/deadbeat.case" >"$T/deadbeat.json" 2>"$T/deadbeat.err"; rc=$?
+check_exit "hurwitz dead-beat exit" 0 "$rc"
+if python3 -c "
+import json, sys
+r = json.load(open('$T/deadbeat.json'))['cases'][0]['results']
+h, j = r[0], r[1]
+assert h['analysis'] == 'hurwitz' and h['degree'] == 0 and h['minors'] == [] and h['conditions'] == [], h
+assert 'dead-beat' in h['verdict'] and j['conditions'] == [], (h, j)
+" 2>"$T/deadbeat.py"; then ok "hurwitz dead-beat: no minor, no condition, as jury"
+else fail "hurwitz dead-beat: $(head -c 400 "$T/deadbeat.py")"; fi
