@@ -38,28 +38,19 @@ const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside,
     return NULL;
 }
 
-static int simulate_check(rs_run_t *run, json_t *o, const rs_variant_t *v, const fmpz_poly_t p, const arb_t loggr,
-                          slong steps)
+/* o's "verdict" (the exact point verdict st, rc) and "check" (the run's log
+ * growth lg against it by rs_simulate_disagreement; a disagreement is an
+ * inconsistency, exit 3) */
+static void sim_verdict_check(rs_run_t *run, json_t *o, rs_status_t st, const rs_rootcount_t rc, double lg,
+                              slong degree, slong steps, const char *decided_by)
 {
-    rs_rootcount_t rc;
-    json_t *chk, *vd;
-    double tau, lg;
-    const char *why = NULL;
-    rs_status_t st;
-    int r;
-    if (fmpz_poly_degree(p) < 1 || steps < SIM_CHECK_MIN_STEPS) return RS_OK;
-    /* the point verdict: semisimple repeated circle roots of systems are
-     * marginal, a singular point is not compared */
-    r = rs_run_point_status(&st, rc, run, v, NULL, NULL, 0);
-    if (r != RS_OK) { rs_rootcount_clear(rc); return r; }
-    lg = arf_get_d(arb_midref(loggr), ARF_RND_NEAR);
-    why = rs_simulate_disagreement(&tau, st, rc->outside, lg, fmpz_poly_degree(p), steps);
-    vd = json_object();
+    double tau;
+    const char *why = rs_simulate_disagreement(&tau, st, rc->outside, lg, degree, steps);
+    json_t *vd = json_object(), *chk = json_object();
     rs_json_add_count(vd, rc);
     json_object_set_new(vd, "status", json_string(rs_status_name(st)));
-    json_object_set_new(vd, "decided_by", json_string("exact"));
+    json_object_set_new(vd, "decided_by", json_string(decided_by));
     json_object_set_new(o, "verdict", vd);
-    chk = json_object();
     json_object_set_new(chk, "log_growth", json_real(lg));
     json_object_set_new(chk, "threshold", json_real(tau));
     json_object_set_new(chk, "rule", json_string("|log growth| beyond (deg p * ln(7/3) + ln 1e6) / (steps/2): "
@@ -71,6 +62,21 @@ static int simulate_check(rs_run_t *run, json_t *o, const rs_variant_t *v, const
         run->outcome |= RS_OUTCOME_INCONSISTENT;
     }
     json_object_set_new(o, "check", chk);
+}
+
+static int simulate_check(rs_run_t *run, json_t *o, const rs_variant_t *v, const fmpz_poly_t p, const arb_t loggr,
+                          slong steps)
+{
+    rs_rootcount_t rc;
+    rs_status_t st;
+    int r;
+    if (fmpz_poly_degree(p) < 1 || steps < SIM_CHECK_MIN_STEPS) return RS_OK;
+    /* the point verdict: semisimple repeated circle roots of systems are
+     * marginal, a singular point is not compared */
+    r = rs_run_point_status(&st, rc, run, v, NULL, NULL, 0);
+    if (r != RS_OK) { rs_rootcount_clear(rc); return r; }
+    sim_verdict_check(run, o, st, rc, arf_get_d(arb_midref(loggr), ARF_RND_NEAR), fmpz_poly_degree(p), steps,
+                      "exact");
     rs_rootcount_clear(rc);
     return RS_OK;
 }
@@ -308,7 +314,7 @@ static int simulate_growth(rs_run_t *run, json_t *o, const rs_variant_t *v, cons
 static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong seed, slong prec)
 {
     fmpq_poly_t pr, pi;
-    json_t *at = NULL, *o, *vd, *chk;
+    json_t *at = NULL, *o;
     rs_variant_t *v = NULL;
     slong n, j, step;
     acb_ptr c, x;
@@ -389,8 +395,6 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
             slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
             rs_rootcount_t rc;
             rs_status_t vst;
-            double tau, lg;
-            const char *why;
             arb_div_si(lm, lm, b1 - a1 + 1, prec);
             arb_div_si(le, le, b2 - a2 + 1, prec);
             arb_sub(t1, le, lm, prec);
@@ -401,27 +405,9 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
             json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
             if (steps >= SIM_CHECK_MIN_STEPS) {
                 r = rs_run_point_status(&vst, rc, run, v, NULL, NULL, 0);
-                if (r == RS_OK) {
-                    lg = arf_get_d(arb_midref(t1), ARF_RND_NEAR);
-                    why = rs_simulate_disagreement(&tau, vst, rc->outside, lg, n, steps);
-                    vd = json_object();
-                    rs_json_add_count(vd, rc);
-                    json_object_set_new(vd, "status", json_string(rs_status_name(vst)));
-                    json_object_set_new(vd, "decided_by", json_string("exact (complex Schur-Cohn and Bilharz over Q(i))"));
-                    json_object_set_new(o, "verdict", vd);
-                    chk = json_object();
-                    json_object_set_new(chk, "log_growth", json_real(lg));
-                    json_object_set_new(chk, "threshold", json_real(tau));
-                    json_object_set_new(chk, "rule", json_string("|log growth| beyond (deg p * ln(7/3) + ln 1e6) / "
-                                                                 "(steps/2): polynomial growth of defective circle "
-                                                                 "roots and bounded oscillation stay below it"));
-                    json_object_set_new(chk, "consistent", json_boolean(why == NULL));
-                    if (why != NULL) {
-                        json_object_set_new(chk, "disagreement", json_string(why));
-                        run->outcome |= RS_OUTCOME_INCONSISTENT;
-                    }
-                    json_object_set_new(o, "check", chk);
-                }
+                if (r == RS_OK)
+                    sim_verdict_check(run, o, vst, rc, arf_get_d(arb_midref(t1), ARF_RND_NEAR), n, steps,
+                                      "exact (complex Schur-Cohn and Bilharz over Q(i))");
                 rs_rootcount_clear(rc);
             }
         } else {
