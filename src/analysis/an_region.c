@@ -1778,6 +1778,23 @@ static int region_domain(region_t *rg)
     return RS_OK;
 }
 
+/* a region over Q(i) from its domain to its checked pieces (the one-parameter
+ * region at complex set values and the claim's region on a set) */
+static int region_cx_run(region_t *rg)
+{
+    int r = region_domain(rg);
+    if (r == RS_OK) r = region_cx_prepare(rg);
+    if (r == RS_OK) {
+        region_critical(rg);
+        rs_error_init(rg->run->err);
+        region_crit_prune(rg);
+        region_pieces(rg);
+        r = region_decide(rg);
+    }
+    if (r == RS_OK) region_check(rg);
+    return r;
+}
+
 static void region_init(region_t *rg, rs_run_t *run, const rs_an_req_t *req, const rs_variant_t *v)
 {
     const rs_scheme_struct *s = v->s;
@@ -1928,18 +1945,9 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
                 return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
             }
         region_init(&rg, run, req, v);
-        r = region_domain(&rg);
-        if (r == RS_OK) r = region_cx_prepare(&rg);
-        if (r == RS_OK) {
-            region_critical(&rg);
-            rs_error_init(run->err);
-            region_crit_prune(&rg);
-            region_pieces(&rg);
-            r = region_decide(&rg);
-        }
+        r = region_cx_run(&rg);
         if (r == RS_OK) {
             json_t *sub = json_object_get(o, "substituted");
-            region_check(&rg);
             region_json(&rg, o);
             for (k = 0; k < run->c->ncsets && json_is_object(sub); k++) {
                 char *val = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
@@ -2008,17 +2016,8 @@ int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong
     *out = NULL;
     region_init(&rg, run, &req, v);
     rg.dom_tv = dom_tv;
-    r = region_domain(&rg);
-    if (r == RS_OK) r = region_cx_prepare(&rg);
+    r = region_cx_run(&rg);
     if (r == RS_OK) {
-        region_critical(&rg);
-        rs_error_init(run->err);
-        region_crit_prune(&rg);
-        region_pieces(&rg);
-        r = region_decide(&rg);
-    }
-    if (r == RS_OK) {
-        region_check(&rg);
         *out = json_object();
         region_json(&rg, *out);
         json_object_set_new(*out, "cross_checked_samples", json_integer(rg.ncx_checked));
