@@ -272,36 +272,55 @@ static void sim_step(sim_t *sm, arb_t norm, arb_t t1)
 /* growth per step from the window averages of log |z| over [N/4, N/2) and
  * [3N/4, N) (sums in lognorm_mid, lognorm_end), cross-checked; the radius
  * beside it */
+/* window sums of log |state| over (N/4, N/2] and (3N/4, N]: the oscillation
+ * of complex modes averages out */
+static void sim_window_add(arb_t lm, arb_t le, const arb_t norm, slong step, slong steps, arb_t t)
+{
+    if (step > steps / 4 && step <= steps / 2) { arb_log(t, norm, 64); arb_add(lm, lm, t, 64); }
+    if (step > steps - steps / 4) { arb_log(t, norm, 64); arb_add(le, le, t, 64); }
+}
+
+/* lg = log growth per step from the two window sums (averages, slope
+ * between the windows' centres); o gets "growth" (exp lg), or null and a
+ * note when a window is not finite; returns whether lg was measured */
+static int sim_growth_json(arb_t lg, json_t *o, arb_t lm, arb_t le, slong steps, slong prec)
+{
+    slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
+    arb_t g;
+    if (steps < 8 || !arb_is_finite(le) || !arb_is_finite(lm)) {
+        json_object_set_new(o, "growth", json_null());
+        json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
+        return 0;
+    }
+    arb_div_si(lm, lm, b1 - a1 + 1, prec);
+    arb_div_si(le, le, b2 - a2 + 1, prec);
+    arb_sub(lg, le, lm, prec);
+    arb_mul_si(lg, lg, 2, prec);
+    arb_div_si(lg, lg, (a2 + b2) - (a1 + b1), prec);
+    arb_init(g);
+    arb_exp(g, lg, prec);
+    json_object_set_new(o, "growth", rs_json_arb(g, 15));
+    json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(g), ARF_RND_NEAR)));
+    arb_clear(g);
+    return 1;
+}
+
 static int simulate_growth(rs_run_t *run, json_t *o, const rs_variant_t *v, const fmpz_poly_t p, slong steps,
                            arb_t lognorm_mid, arb_t lognorm_end, slong prec)
 {
-    arb_t t1, t2;
+    arb_t t1;
     rs_radius_t rr;
     int r = RS_OK;
-    arb_init(t1); arb_init(t2);
-    if (steps >= 8 && arb_is_finite(lognorm_end) && arb_is_finite(lognorm_mid)) {
-        slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
-        /* averages over [a1, b1] and [a2, b2]; centres (a+b)/2 */
-        arb_div_si(lognorm_mid, lognorm_mid, b1 - a1 + 1, prec);
-        arb_div_si(lognorm_end, lognorm_end, b2 - a2 + 1, prec);
-        arb_sub(t1, lognorm_end, lognorm_mid, prec);
-        arb_mul_si(t1, t1, 2, prec);
-        arb_div_si(t1, t1, (a2 + b2) - (a1 + b1), prec);
-        arb_exp(t2, t1, prec);
-        json_object_set_new(o, "growth", rs_json_arb(t2, 15));
-        json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
+    arb_init(t1);
+    if (sim_growth_json(t1, o, lognorm_mid, lognorm_end, steps, prec))
         r = simulate_check(run, o, v, p, t1, steps);
-    } else {
-        json_object_set_new(o, "growth", json_null());
-        json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
-    }
     rs_radius_init(rr);
     if (rs_radius_fmpz_poly(rr, p, 15, run->opt->max_prec, run->err) == RS_OK)
         json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
     else
         rs_error_init(run->err);
     rs_radius_clear(rr);
-    arb_clear(t1); arb_clear(t2);
+    arb_clear(t1);
     return r;
 }
 
@@ -378,8 +397,7 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
             arb_max(norm, norm, a, prec);
         }
         for (j = 0; j < n; j++) acb_swap(x + j, x + j + 1);
-        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lm, lm, t2, 64); }
-        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(le, le, t2, 64); }
+        sim_window_add(lm, le, norm, step, steps, t2);
     }
     if (r == RS_OK) {
         o = json_object();
@@ -391,28 +409,14 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
         json_object_set_new(o, "recurrence", json_string("scalar recurrence of p(lambda) over Q(i): complex "
                                                          "coefficients, complex states"));
         json_object_set_new(o, "arithmetic", json_string("Arb complex midpoints at the working precision"));
-        if (steps >= 8 && arb_is_finite(le) && arb_is_finite(lm)) {
-            slong a1 = steps / 4 + 1, b1 = steps / 2, a2 = steps - steps / 4 + 1, b2 = steps;
+        if (sim_growth_json(t1, o, lm, le, steps, prec) && steps >= SIM_CHECK_MIN_STEPS) {
             rs_rootcount_t rc;
             rs_status_t vst;
-            arb_div_si(lm, lm, b1 - a1 + 1, prec);
-            arb_div_si(le, le, b2 - a2 + 1, prec);
-            arb_sub(t1, le, lm, prec);
-            arb_mul_si(t1, t1, 2, prec);
-            arb_div_si(t1, t1, (a2 + b2) - (a1 + b1), prec);
-            arb_exp(t2, t1, prec);
-            json_object_set_new(o, "growth", rs_json_arb(t2, 15));
-            json_object_set_new(o, "growth_approx", json_real(arf_get_d(arb_midref(t2), ARF_RND_NEAR)));
-            if (steps >= SIM_CHECK_MIN_STEPS) {
-                r = rs_run_point_status(&vst, rc, run, v, NULL, NULL, 0);
-                if (r == RS_OK)
-                    sim_verdict_check(run, o, vst, rc, arf_get_d(arb_midref(t1), ARF_RND_NEAR), n, steps,
-                                      "exact (complex Schur-Cohn and Bilharz over Q(i))");
-                rs_rootcount_clear(rc);
-            }
-        } else {
-            json_object_set_new(o, "growth", json_null());
-            json_object_set_new(o, "note", json_string("the state became exactly zero or unbounded"));
+            r = rs_run_point_status(&vst, rc, run, v, NULL, NULL, 0);
+            if (r == RS_OK)
+                sim_verdict_check(run, o, vst, rc, arf_get_d(arb_midref(t1), ARF_RND_NEAR), n, steps,
+                                  "exact (complex Schur-Cohn and Bilharz over Q(i))");
+            rs_rootcount_clear(rc);
         }
         if (r == RS_OK) {
             /* the radius: p conj(p) has p's moduli */
@@ -475,10 +479,7 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
     for (step = 1; step <= steps && r == RS_OK; step++) {
         if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
         sim_step(&sm, norm, t1);
-        /* window averages of log |z| over [N/4, N/2) and [3N/4, N): the
-         * oscillation of complex modes averages out */
-        if (step > steps / 4 && step <= steps / 2) { arb_log(t2, norm, 64); arb_add(lognorm_mid, lognorm_mid, t2, 64); }
-        if (step > steps - steps / 4) { arb_log(t2, norm, 64); arb_add(lognorm_end, lognorm_end, t2, 64); }
+        sim_window_add(lognorm_mid, lognorm_end, norm, step, steps, t2);
     }
     if (r == RS_OK) {
         o = json_object();
