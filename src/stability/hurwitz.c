@@ -46,6 +46,7 @@
 #include "recstab/hurwitz.h"
 #include "recstab/positivity.h"
 #include "stability/hurwitz_subst.h"
+#include "util/polyfmt.h"
 
 /* Degrees beyond this are refused (RS_ERR_LIMIT): the symbolic minors would
  * not be computable anyway. */
@@ -896,27 +897,11 @@ _hurwitz_coeffs(rs_hurwitz_t h, fmpz_mpoly_factor_t f, const fmpz_mpoly_t q,
     slong i, n = h->n;
     int s;
 
-    /* every coefficient in one pass over q's terms (one
-     * fmpz_mpoly_get_coeff_vars_ui per power read q n + 1 times: seconds,
-     * without a budget check, for a dense degree-58 q in 3 parameters;
-     * tests/fuzz/regress) */
+    /* every coefficient in one pass over q's terms (tests/fuzz/regress) */
     h->coeffs = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
     for (i = 0; i <= n; i++)
         fmpz_mpoly_init(h->coeffs + i, ctx);
-    {
-        slong nvars = fmpz_mpoly_ctx_nvars(ctx);
-        ulong *ex = flint_malloc(nvars * sizeof(ulong));
-        for (i = 0; i < fmpz_mpoly_length(q, ctx); i++) {
-            ulong e;
-            fmpz_mpoly_get_term_exp_ui(ex, q, i, ctx);
-            e = ex[zvar];
-            ex[zvar] = 0;
-            fmpz_mpoly_push_term_fmpz_ui(h->coeffs + e, q->coeffs + i, ex, ctx);
-        }
-        flint_free(ex);
-        for (i = 0; i <= n; i++)
-            fmpz_mpoly_sort_terms(h->coeffs + i, ctx);
-    }
+    rs_polyfmt_coeffs(h->coeffs, q, zvar, ctx);
     if (rs_budget_check(err, "the Hurwitz conditions") != RS_OK)
         return RS_ERR_LIMIT;
 

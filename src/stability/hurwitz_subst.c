@@ -33,6 +33,7 @@
 #include <fmpz.h>
 #include "recstab/budget.h"
 #include "stability/hurwitz_subst.h"
+#include "util/polyfmt.h"
 
 /* coordinates of all coefficients are kept below this many entries */
 #define SUBST_MAX_ENTRIES 4000000
@@ -127,9 +128,6 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
     C = flint_malloc(M * sizeof(fmpz_mpoly_struct));
     ci = flint_malloc(M * sizeof(slong));
     ce = flint_malloc(M * sizeof(slong));
-    /* every coefficient of a_i in one pass over its terms (one
-     * fmpz_mpoly_get_coeff_vars_ui per power of x_v read a_i once per power) */
-    ex = flint_malloc(nv * sizeof(ulong));
     M = 0;
     for (i = 0; i <= n; i++) {
         slong d, m0 = M;
@@ -138,19 +136,13 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
         d = fmpz_mpoly_degree_si(a + i, v, ctx);
         for (e = 0; e <= d; e++)
             fmpz_mpoly_init(C + m0 + e, ctx);
-        for (k = 0; k < fmpz_mpoly_length(a + i, ctx); k++) {
-            fmpz_mpoly_get_term_exp_ui(ex, a + i, k, ctx);
-            e = (slong) ex[v];
-            ex[v] = 0;
-            fmpz_mpoly_push_term_fmpz_ui(C + m0 + e, a[i].coeffs + k, ex, ctx);
-        }
+        rs_polyfmt_coeffs(C + m0, a + i, v, ctx);   /* one pass over a_i */
         for (e = 0; e <= d; e++) {
             fmpz_mpoly_struct *c = C + m0 + e;
             if (fmpz_mpoly_is_zero(c, ctx)) {
                 fmpz_mpoly_clear(c, ctx);
                 continue;
             }
-            fmpz_mpoly_sort_terms(c, ctx);
             if (M != m0 + e)
                 C[M] = *c;   /* moved down over the empty ones */
             ci[M] = i;
@@ -159,7 +151,6 @@ _try_var(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a, slong n,
             M++;
         }
     }
-    flint_free(ex);
 
     /* the distinct monomials: coordinates */
     st = nv + 1;

@@ -156,6 +156,17 @@ static void sb_add(sbuf_t *b, const char *t)
     b->len += n;
 }
 
+void rs_polyfmt_coeffs(fmpz_mpoly_struct *c, const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_univar_t u;
+    slong k;
+    fmpz_mpoly_univar_init(u, ctx);
+    fmpz_mpoly_to_univar(u, p, var, ctx);
+    for (k = 0; k < fmpz_mpoly_univar_length(u, ctx); k++)
+        fmpz_mpoly_univar_swap_term_coeff(c + fmpz_mpoly_univar_get_term_exp_si(u, k, ctx), u, k, ctx);
+    fmpz_mpoly_univar_clear(u, ctx);
+}
+
 char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
                            const fmpz_mpoly_ctx_t ctx)
 {
@@ -163,7 +174,6 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
     slong d = fmpz_mpoly_degree_si(p, var, ctx), k;
     fmpz_mpoly_t c;
     fmpz_mpoly_struct *cf;
-    ulong *ex;
     int first = 1;
     char pw[64];
     sb_add(&b, "");
@@ -171,22 +181,10 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
         sb_add(&b, "0");
         return b.s;
     }
-    /* the coefficients of every power in one pass over p's terms (one
-     * fmpz_mpoly_get_coeff_vars_ui per power read p d + 1 times: seconds on
-     * the degree-58 fuzz seed in tests/fuzz/regress, issue 17) */
     cf = flint_malloc((d + 1) * sizeof(fmpz_mpoly_struct));
-    ex = flint_malloc((ctx->minfo->nvars + 1) * sizeof(ulong));
     for (k = 0; k <= d; k++)
         fmpz_mpoly_init(cf + k, ctx);
-    for (k = 0; k < p->length; k++) {
-        ulong e;
-        fmpz_mpoly_get_term_exp_ui(ex, p, k, ctx);
-        e = ex[var];
-        ex[var] = 0;
-        fmpz_mpoly_push_term_fmpz_ui(cf + e, p->coeffs + k, ex, ctx);
-    }
-    for (k = 0; k <= d; k++)
-        fmpz_mpoly_sort_terms(cf + k, ctx);
+    rs_polyfmt_coeffs(cf, p, var, ctx);
     fmpz_mpoly_init(c, ctx);
     for (k = d; k >= 0; k--) {
         char *cs;
@@ -219,7 +217,6 @@ char *rs_polyfmt_collected(const fmpz_mpoly_t p, slong var, const char **vars,
     for (k = 0; k <= d; k++)
         fmpz_mpoly_clear(cf + k, ctx);
     flint_free(cf);
-    flint_free(ex);
     return b.s;
 }
 
