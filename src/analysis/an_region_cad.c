@@ -206,6 +206,33 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
     return r;
 }
 
+/* the status of N (a polynomial in lambda over Z[N1, N2]) at the point
+ * (A, B)(gamma) of the tower Q(gamma) = Q[x]/(m), g its algebraic number:
+ * exact (rs_alg_status_coeffs); 0 when undecided */
+static int cad_status_field(rs_status_t *st, const cad_t *c, const fmpz_mpoly_t N, const fmpq_poly_t A,
+                            const fmpq_poly_t B, const fmpq_poly_t m, rs_alg_t *g)
+{
+    const rs_scheme_struct *s = c->s;
+    slong n = fmpz_mpoly_degree_si(N, s->lambda_var, s->zctx), j;
+    fmpz_mpoly_struct *cf = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
+    int dec;
+    for (j = 0; j <= n; j++) fmpz_mpoly_init(cf + j, s->zctx);
+    rs_polyfmt_coeffs(cf, N, s->lambda_var, s->zctx);
+    for (j = 0; j <= n; j++) {
+        fmpq_poly_init(pc + j);
+        cad_eval_field(pc + j, c, cf + j, A, B, m);
+    }
+    dec = rs_alg_status_coeffs(st, pc, n, g, s);
+    for (j = 0; j <= n; j++) {
+        fmpq_poly_clear(pc + j);
+        fmpz_mpoly_clear(cf + j, s->zctx);
+    }
+    flint_free(pc);
+    flint_free(cf);
+    return dec;
+}
+
 /* the status of one norm (a polynomial in Z[x, y, lambda]) at the
  * algebraic sample pt; 0 when undecided */
 static int cx_norm_status(rs_status_t *nst, cad_t *c, const fmpz_mpoly_t N, const cx_pt_t *pt)
@@ -216,17 +243,7 @@ static int cx_norm_status(rs_status_t *nst, cad_t *c, const fmpz_mpoly_t N, cons
     int dec;
     fmpz_mpoly_init(t, ctx);
     if (pt->g != NULL) {
-        slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(N, lv, ctx), j;
-        fmpq_poly_struct *pc = flint_malloc((n + 1) * sizeof(fmpq_poly_struct));
-        for (j = 0; j <= n; j++) {
-            ulong ex = (ulong) j;
-            fmpq_poly_init(pc + j);
-            fmpz_mpoly_get_coeff_vars_ui(t, N, &lv, &ex, 1, ctx);
-            cad_eval_field(pc + j, c, t, pt->A, pt->B, pt->m);
-        }
-        dec = rs_alg_status_coeffs(nst, pc, n, pt->g, s);
-        for (j = 0; j <= n; j++) fmpq_poly_clear(pc + j);
-        flint_free(pc);
+        dec = cad_status_field(nst, c, N, pt->A, pt->B, pt->m, pt->g);
     } else if (pt->a0 != NULL) {
         rs_an_forall_subst(t, N, c->av, pt->a0, ctx);
         dec = rs_alg_status(nst, t, c->bv, pt->be, s);
@@ -833,49 +850,63 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_al
 {
     const rs_scheme_struct *s = c->s;
     slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), j, prec;
-    fmpz_mpoly_t t;
+    fmpz_mpoly_struct *cf = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
     acb_poly_t P;
     acb_ptr rt = _acb_vec_init(FLINT_MAX(n, 1));
     acb_t x, y, v;
     arb_t a, b;
     arb_ptr re = _arb_vec_init(n + 1);
     int dec = 0;
-    fmpz_mpoly_init(t, s->zctx);
+    for (j = 0; j <= n; j++) fmpz_mpoly_init(cf + j, s->zctx);
+    rs_polyfmt_coeffs(cf, c->v->cp->p, lv, s->zctx);   /* once, not per precision */
     arb_init(b);
     acb_poly_init(P);
     acb_init(x); acb_init(y); acb_init(v);
     arb_init(a);
     for (prec = 128; !dec && n >= 1 && prec <= 2048; prec *= 2) {
         slong in = 0, out = 0;
+        int by_coeffs = 0;
         rs_alg_refine(al, prec);
         rs_alg_refine(be, prec);
         acb_set_arb(x, al->x);
         acb_set_arb(y, be->x);
         acb_poly_zero(P);
         for (j = 0; j <= n; j++) {
-            ulong ex = (ulong) j;
-            fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
-            cad_eval_acb(v, c, t, x, y, prec);
+            cad_eval_acb(v, c, cf + j, x, y, prec);
             acb_poly_set_coeff_acb(P, j, v);
         }
         if (acb_poly_length(P) != n + 1 || acb_contains_zero(P->coeffs + n)) continue;
         for (j = 0; j <= n; j++) arb_set(re + j, acb_realref(P->coeffs + j));
-        if (balls_all_inside(re, n, prec)) { *st = RS_STATUS_STABLE; dec = 1; break; }
+        /* the coefficient rules: Schur's recursion on balls, |a_0| > |a_n| */
+        if (balls_all_inside(re, n, prec)) { *st = RS_STATUS_STABLE; by_coeffs = 1; }
         arb_abs(a, re + 0);
         arb_abs(b, re + n);
-        if (arb_gt(a, b)) { *st = RS_STATUS_UNSTABLE; dec = 1; break; }
-        if (acb_poly_find_roots(rt, P, NULL, 0, prec) != n) continue;
-        for (j = 0; j < n; j++) {
-            acb_abs(a, rt + j, prec);
-            arb_sub_ui(a, a, 1, prec);
-            if (arb_is_negative(a)) in++;
-            else if (arb_is_positive(a)) out++;
+        if (!by_coeffs && arb_gt(a, b)) { *st = RS_STATUS_UNSTABLE; by_coeffs = 1; }
+        /* the root balls: a verdict of their own, and the second method for
+         * the coefficient rules' (a disagreement is a bug: exit 3, the cell
+         * left undecided) */
+        if (acb_poly_find_roots(rt, P, NULL, 0, prec) == n) {
+            for (j = 0; j < n; j++) {
+                acb_abs(a, rt + j, prec);
+                arb_sub_ui(a, a, 1, prec);
+                if (arb_is_negative(a)) in++;
+                else if (arb_is_positive(a)) out++;
+            }
+            if (out > 0 || in == n) {
+                rs_status_t rst = out > 0 ? RS_STATUS_UNSTABLE : RS_STATUS_STABLE;
+                if (by_coeffs && rst != *st) {
+                    c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+                    break;
+                }
+                *st = rst;
+                dec = 1;
+            }
+            /* else a ball meets the circle: refined, then left undecided */
         }
-        if (out > 0) { *st = RS_STATUS_UNSTABLE; dec = 1; }
-        else if (in == n) { *st = RS_STATUS_STABLE; dec = 1; }
-        /* else a ball meets the circle: refined, then left undecided */
+        if (by_coeffs) dec = 1;
     }
-    fmpz_mpoly_clear(t, s->zctx);
+    for (j = 0; j <= n; j++) fmpz_mpoly_clear(cf + j, s->zctx);
+    flint_free(cf);
     acb_poly_clear(P);
     _acb_vec_clear(rt, FLINT_MAX(n, 1));
     acb_clear(x); acb_clear(y); acb_clear(v);
@@ -995,12 +1026,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                     && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
                     && rs_alg_primitive(&g, A, B, al, cand + i)) {
                     fmpq_poly_set_fmpz_poly(m, g.minpoly);
-                    for (j = 0; j <= n; j++) {
-                        ulong ex = (ulong) j;
-                        fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
-                        cad_eval_field(pc + j, c, t, A, B, m);
-                    }
-                    e->decided = rs_alg_status_coeffs(&e->st, pc, n, &g, s);
+                    e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
                 }
                 r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
             } else if (!e->outside && c->cx != NULL) {
@@ -1009,12 +1035,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                 cx_marginal_at(c, e, &pt);
                 e->decided = 1;
             } else if (!e->outside) {
-                for (j = 0; j <= n; j++) {
-                    ulong ex = (ulong) j;
-                    fmpz_mpoly_get_coeff_vars_ui(t, c->v->cp->p, &lv, &ex, 1, s->zctx);
-                    cad_eval_field(pc + j, c, t, A, B, m);
-                }
-                e->decided = rs_alg_status_coeffs(&e->st, pc, n, &g, s);
+                e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
             }
             sec[nsec] = c->ncells - 1;
             cand[nsec++] = cand[i];   /* the sections first, in order (i >= nsec - 1) */
