@@ -201,13 +201,8 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     int r, ok;
     fmpq_poly_init(cp->re);
     fmpq_poly_init(cp->im);
-    cp->at = json_object();
+    cp->at = rs_run_cx_at(run);
     cp->deg = 0;
-    for (k = 0; k < run->c->ncsets; k++) {
-        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-        json_object_set_new(cp->at, run->c->csets[k].name, json_string(str));
-        free(str);
-    }
     /* the real set values substituted; the complex ones stay symbolic */
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&cp->v, run, a, n);

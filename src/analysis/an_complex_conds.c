@@ -287,16 +287,10 @@ static int never_by_constant(const cx_conds_t *jc, const rs_scheme_struct *s)
 static json_t *cx_base(rs_run_t *run, const char *name, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
                        const rs_scheme_struct *s)
 {
-    json_t *o = json_object(), *at = json_object();
-    slong k;
+    json_t *o = json_object();
     json_object_set_new(o, "analysis", json_string(name));
     json_object_set_new(o, "over", json_string("Q(i)"));
-    for (k = 0; k < run->c->ncsets; k++) {
-        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-        json_object_set_new(at, run->c->csets[k].name, json_string(str));
-        free(str);
-    }
-    json_object_set_new(o, "at", at);
+    json_object_set_new(o, "at", rs_run_cx_at(run));
     json_object_set_new(o, "p_re", rs_json_collected(re, s->lambda_var, s, "lambda"));
     json_object_set_new(o, "p_im", rs_json_collected(im, s->lambda_var, s, "lambda"));
     return o;
@@ -492,12 +486,7 @@ int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_var
         rs_run_cx_eval(pi, im, pp, s);
         _fmpq_vec_clear(pt, s->nvars);
         flint_free(pp);
-        *at = json_object();
-        for (k = 0; k < run->c->ncsets; k++) {
-            char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-            json_object_set_new(*at, run->c->csets[k].name, json_string(str));
-            free(str);
-        }
+        *at = rs_run_cx_at(run);
     }
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     return r;

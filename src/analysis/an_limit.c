@@ -224,11 +224,7 @@ static int cx_limit(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "max_abs", json_real(maxabs));
     }
     sub = json_deep_copy(v->assigned);
-    for (j = 0; j < run->c->ncsets; j++) {
-        char *val = rs_complex_str(run->c->csets[j].re, run->c->csets[j].im);
-        json_object_set_new(sub, run->c->csets[j].name, json_string(val));
-        free(val);
-    }
+    json_object_update_new(sub, rs_run_cx_at(run));
     json_object_set_new(o, "substituted", sub);
     json_object_set_new(o, "decided_by", json_string("exact"));
     if (r == RS_OK) json_array_append_new(run->results, o);

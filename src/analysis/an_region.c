@@ -1949,11 +1949,7 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
         if (r == RS_OK) {
             json_t *sub = json_object_get(o, "substituted");
             region_json(&rg, o);
-            for (k = 0; k < run->c->ncsets && json_is_object(sub); k++) {
-                char *val = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-                json_object_set_new(sub, run->c->csets[k].name, json_string(val));
-                free(val);
-            }
+            if (json_is_object(sub)) json_object_update_new(sub, rs_run_cx_at(run));
             json_object_set_new(o, "over", json_string("Q(i)"));
             json_object_set_new(o, "method", json_string(
                 "cells cut at the real roots of the critical polynomials of |p|^2 = Re(p)^2 + Im(p)^2 (p's roots "

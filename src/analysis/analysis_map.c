@@ -262,7 +262,7 @@ static int cx_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_reque
         J.vals[0] = xs[0];
         J.vals[1] = xs[1];
         J.stride = npoints > 256 ? npoints / 256 : 1;
-        J.csat = rs_sweep_cx_at(run);
+        J.csat = rs_run_cx_at(run);
         m.point = rs_sweep_cx_point;
         m.model = &J;
         m.serial = 0;

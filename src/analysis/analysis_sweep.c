@@ -198,7 +198,7 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
         if (r == RS_OK) {
             json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0);
             json_object_set_new(o, "over", json_string("Q(i)"));
-            json_object_set_new(o, "complex", rs_sweep_cx_at(run));
+            json_object_set_new(o, "complex", rs_run_cx_at(run));
             json_object_set_new(o, "method", json_string(
                 "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
                 "p's own root counts; the radius certified from p conj(p) (the same moduli); modes from p's own "

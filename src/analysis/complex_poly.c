@@ -325,3 +325,15 @@ int rs_cx_norm_check(rs_status_t st, const fmpq_poly_t re, const fmpq_poly_t im,
     fmpz_poly_clear(N);
     return r;
 }
+
+json_t *rs_run_cx_at(const rs_run_t *run)
+{
+    json_t *at = json_object();
+    slong k;
+    for (k = 0; k < run->c->ncsets; k++) {
+        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
+        json_object_set_new(at, run->c->csets[k].name, json_string(str));
+        free(str);
+    }
+    return at;
+}

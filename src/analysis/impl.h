@@ -231,6 +231,9 @@ int rs_cx_isolate_sqfree(acb_ptr out, const fmpq_poly_t ar, const fmpq_poly_t ai
                          slong max_prec);
 int rs_cx_roots(rs_radius_t rr, const fmpq_poly_t pr, const fmpq_poly_t pi, slong bits, slong prec0, slong max_prec);
 char *rs_cx_poly_str(const fmpq_poly_t re, const fmpq_poly_t im, const char *var);
+/* rs_run_cx_at: the complex set values as {name: "a + b*i"} (the JSON's
+ * "at" / "complex" / additions to "substituted") */
+json_t *rs_run_cx_at(const rs_run_t *run);
 int rs_cx_norm_check(rs_status_t st, const fmpq_poly_t re, const fmpq_poly_t im, rs_error_t err);
 int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const rs_variant_t *v,
                            const slong *vars, const fmpq *vals, slong nv, int real_st);

@@ -204,7 +204,7 @@ typedef struct {
     const fmpq *vals[2];      /* axis values (read, not copied) */
     const char *names[2];
     int of;
-    json_t *csat;             /* the complex set values (rs_sweep_cx_at), for the JSON */
+    json_t *csat;             /* the complex set values (rs_run_cx_at), for the JSON */
     /* `of modes` (sweeps): per point the step and the references, p's own roots over Q(i) */
     slong npoints, nref;
     fmpq *hval, *refval;
@@ -220,7 +220,6 @@ int rs_sweep_cx_modes(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, co
                       const rs_variant_t *v, const fmpq *vals, slong npoints);
 void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err);
 /* {NAME: "a+b*i"} of the complex set values */
-json_t *rs_sweep_cx_at(const rs_run_t *run);
 
 /* ---- the model of exact integration (analysis_cosim.c) ------------------------------ */
 

@@ -474,18 +474,6 @@ void rs_sweep_cx_clear(rs_sweep_cx_t *J)
     fmpz_mpoly_clear(J->im, J->s->zctx);
 }
 
-json_t *rs_sweep_cx_at(const rs_run_t *run)
-{
-    json_t *at = json_object();
-    slong k;
-    for (k = 0; k < run->c->ncsets; k++) {
-        char *str = rs_complex_str(run->c->csets[k].re, run->c->csets[k].im);
-        json_object_set_new(at, run->c->csets[k].name, json_string(str));
-        free(str);
-    }
-    return at;
-}
-
 void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t err)
 {
     const rs_sweep_cx_t *J = model;
