@@ -571,31 +571,42 @@ static int status_kp(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t 
 static int status_kp_mode(rs_status_t *out, kpoly_t *P0, slong n, const fmpz_mpoly_t p, slong tv, alg_t *t0,
                           const fmpq_poly_t m, const rs_scheme_t s, int scalar);
 
+/* a = f as a polynomial in lambda over K = Q[t]/(m) (f in Z[t, lambda]
+ * only), degree n */
+static void kp_from_mpoly(kpoly_t *a, const fmpz_mpoly_t f, slong n, slong tv, const fmpq_poly_t m,
+                          const rs_scheme_struct *s)
+{
+    slong j;
+    fmpz_mpoly_struct *c = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    fmpz_poly_t u;
+    fmpz_poly_init(u);
+    for (j = 0; j <= n; j++) fmpz_mpoly_init(c + j, s->zctx);
+    rs_polyfmt_coeffs(c, f, s->lambda_var, s->zctx);
+    for (j = 0; j <= n; j++) {
+        if (!fmpz_mpoly_get_fmpz_poly(u, c + j, tv, s->zctx)) fmpz_poly_zero(u);
+        fmpq_poly_set_fmpz_poly(a->c + j, u);
+        fmpq_poly_rem(a->c + j, a->c + j, m);
+        fmpz_mpoly_clear(c + j, s->zctx);
+    }
+    flint_free(c);
+    a->deg = n;
+    kp_normalise(a);
+    fmpz_poly_clear(u);
+}
+
 static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
 {
     int decided;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j;
+    slong n = fmpz_mpoly_degree_si(p, s->lambda_var, s->zctx);
     fmpq_poly_t m;
-    fmpz_mpoly_t c;
-    fmpz_poly_t u;
     kpoly_t P;
     fmpq_poly_init(m);
     fmpq_poly_set_fmpz_poly(m, t0->minpoly);
-    fmpz_mpoly_init(c, s->zctx);
-    fmpz_poly_init(u);
     kp_init(&P, n + 1);
-    for (j = 0; j <= n; j++) {
-        ulong e = (ulong) j;
-        fmpz_mpoly_get_coeff_vars_ui(c, p, &lv, &e, 1, s->zctx);
-        if (!fmpz_mpoly_get_fmpz_poly(u, c, tv, s->zctx)) fmpz_poly_zero(u);
-        fmpq_poly_set_fmpz_poly(P.c + j, u);
-        fmpq_poly_rem(P.c + j, P.c + j, m);
-    }
+    kp_from_mpoly(&P, p, n, tv, m, s);
     decided = status_kp(out, &P, n, p, tv, t0, m, s);
     kp_clear(&P);
     fmpq_poly_clear(m);
-    fmpz_mpoly_clear(c, s->zctx);
-    fmpz_poly_clear(u);
     return decided;
 }
 
@@ -1047,28 +1058,6 @@ static void kp_mul(kpoly_t *out, const kpoly_t *a, const kpoly_t *b, const fmpq_
         }
     kp_normalise(out);
     fmpq_poly_clear(t);
-}
-
-/* coefficient j in lambda of f (in t only) as an element of K = Q[t]/(m) */
-static void kp_from_mpoly(kpoly_t *a, const fmpz_mpoly_t f, slong n, slong tv, const fmpq_poly_t m,
-                          const rs_scheme_struct *s)
-{
-    slong j, lv = s->lambda_var;
-    fmpz_mpoly_t c;
-    fmpz_poly_t u;
-    fmpz_mpoly_init(c, s->zctx);
-    fmpz_poly_init(u);
-    for (j = 0; j <= n; j++) {
-        ulong e = (ulong) j;
-        fmpz_mpoly_get_coeff_vars_ui(c, f, &lv, &e, 1, s->zctx);
-        if (!fmpz_mpoly_get_fmpz_poly(u, c, tv, s->zctx)) fmpz_poly_zero(u);
-        fmpq_poly_set_fmpz_poly(a->c + j, u);
-        fmpq_poly_rem(a->c + j, a->c + j, m);
-    }
-    a->deg = n;
-    kp_normalise(a);
-    fmpz_mpoly_clear(c, s->zctx);
-    fmpz_poly_clear(u);
 }
 
 /* The status of p = A + i B at t0 (real algebraic, or rational with a
