@@ -86,4 +86,34 @@ static inline json_t *tu_run_text(const char *text, const rs_options_t *opt, int
     else if (r != RS_OK) fail_msg("%s: %s", text, err->msg);
     return doc;
 }
+/* JSON accessors of the analyses' documents: result i of a case, a string
+ * member, an interval end as text ("inf" for null, "algebraic" for an
+ * object) */
+static inline const json_t *tu_result(const json_t *doc, size_t i)
+{
+    return json_array_get(json_object_get(doc, "results"), i);
+}
+static inline const char *tu_str(const json_t *o, const char *k)
+{
+    return json_string_value(json_object_get(o, k));
+}
+static inline const char *tu_end(const json_t *iv, const char *k)
+{
+    const json_t *e = json_object_get(iv, k);
+    if (json_is_null(e)) return "inf";
+    return json_is_string(e) ? json_string_value(e) : "algebraic";
+}
+/* an expected region interval, and the check of interval i of a region */
+struct tu_iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
+static inline void tu_check_interval(const json_t *iv, const struct tu_iv *want, size_t i, const char *what)
+{
+    if (strcmp(tu_end(iv, "lo"), want->lo) != 0 || strcmp(tu_end(iv, "hi"), want->hi) != 0
+        || json_is_true(json_object_get(iv, "lo_closed")) != want->lo_closed
+        || json_is_true(json_object_get(iv, "hi_closed")) != want->hi_closed
+        || strcmp(tu_str(iv, "status"), want->status) != 0)
+        fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
+                 json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", tu_end(iv, "lo"), tu_end(iv, "hi"),
+                 json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", tu_str(iv, "status"),
+                 want->lo_closed ? "[" : "(", want->lo, want->hi, want->hi_closed ? "]" : ")", want->status);
+}
 #endif

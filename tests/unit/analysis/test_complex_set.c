@@ -6,45 +6,18 @@
 #include <math.h>
 #include "recstab/analysis.h"
 
-static const json_t *result(const json_t *doc, size_t i)
-{
-    return json_array_get(json_object_get(doc, "results"), i);
-}
-
-static const char *str(const json_t *o, const char *k)
-{
-    return json_string_value(json_object_get(o, k));
-}
-
-static const char *end(const json_t *iv, const char *k)
-{
-    const json_t *e = json_object_get(iv, k);
-    if (json_is_null(e)) return "inf";
-    return json_is_string(e) ? json_string_value(e) : "algebraic";
-}
-
-struct iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
-
-static void check_region(const json_t *o, const struct iv *want, size_t n, const char *what)
+static void check_region(const json_t *o, const struct tu_iv *want, size_t n, const char *what)
 {
     const json_t *ivs = json_object_get(o, "intervals");
     size_t i;
     if (o == NULL) fail_msg("%s: no result", what);
-    assert_string_equal(str(o, "analysis"), "region");
-    assert_string_equal(str(o, "over"), "Q(i)");
+    assert_string_equal(tu_str(o, "analysis"), "region");
+    assert_string_equal(tu_str(o, "over"), "Q(i)");
     assert_true(json_integer_value(json_object_get(o, "cross_checked_samples")) > 0);
     if (json_array_size(ivs) != n) fail_msg("%s: %zu intervals, expected %zu", what, json_array_size(ivs), n);
     for (i = 0; i < n; i++) {
         const json_t *iv = json_array_get(ivs, i);
-        if (strcmp(end(iv, "lo"), want[i].lo) != 0 || strcmp(end(iv, "hi"), want[i].hi) != 0
-            || json_is_true(json_object_get(iv, "lo_closed")) != want[i].lo_closed
-            || json_is_true(json_object_get(iv, "hi_closed")) != want[i].hi_closed
-            || strcmp(str(iv, "status"), want[i].status) != 0)
-            fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
-                     json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", end(iv, "lo"), end(iv, "hi"),
-                     json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", str(iv, "status"),
-                     want[i].lo_closed ? "[" : "(", want[i].lo, want[i].hi, want[i].hi_closed ? "]" : ")",
-                     want[i].status);
+        tu_check_interval(iv, want + i, i, what);
     }
 }
 
@@ -62,14 +35,14 @@ static json_t *run(const char *text, int *outcome)
  * and h = 1, outside beyond (h < 0 too: 1 - 2h(1 - h) > 1). */
 static void test_region_euler(void **state)
 {
-    static const struct iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+    static const struct tu_iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
                                      {"0", 0, "1", 0, "stable"}, {"1", 1, "1", 1, "marginal"},
                                      {"1", 0, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = run("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nanalyse region h\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 5, "forward Euler at q = -1 + i");
-    assert_string_equal(str(json_object_get(result(doc, 0), "substituted"), "q"), "-1+i");
+    check_region(tu_result(doc, 0), want, 5, "forward Euler at q = -1 + i");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 0), "substituted"), "q"), "-1+i");
     json_decref(doc);
 }
 
@@ -79,12 +52,12 @@ static void test_region_euler(void **state)
  * |a| > 1: -i (a +- sqrt(a^2 - 1)), one of modulus > 1. */
 static void test_region_leapfrog(void **state)
 {
-    static const struct iv want[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
+    static const struct tu_iv want[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
                                      {"1", 1, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = run("param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\nanalyse region a\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 3, "leapfrog at q = i");
+    check_region(tu_result(doc, 0), want, 3, "leapfrog at q = i");
     json_decref(doc);
 }
 
@@ -98,7 +71,7 @@ static void test_region_leapfrog(void **state)
  * just right of 0; h = 0: lambda = 1, marginal. */
 static void test_region_rk4_irrational(void **state)
 {
-    static const struct iv want[] = {{"0", 1, "0", 1, "marginal"}, {"0", 0, "algebraic", 0, "stable"},
+    static const struct tu_iv want[] = {{"0", 1, "0", 1, "marginal"}, {"0", 0, "algebraic", 0, "stable"},
                                      {"algebraic", 1, "algebraic", 1, "marginal"},
                                      {"algebraic", 0, "inf", 0, "unstable"}};
     int outcome;
@@ -106,10 +79,10 @@ static void test_region_rk4_irrational(void **state)
     json_t *doc = run("param h q\nassume h >= 0\nsubsystem S state y\n  y' = q*y\nintegrate S rk rk4 h\n"
                       "set q = -1/2 + 3/2*i\nanalyse region h\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 4, "rk4 at q = -1/2 + 3/2 i");
-    iv = json_array_get(json_object_get(result(doc, 0), "intervals"), 2);
+    check_region(tu_result(doc, 0), want, 4, "rk4 at q = -1/2 + 3/2 i");
+    iv = json_array_get(json_object_get(tu_result(doc, 0), "intervals"), 2);
     assert_true(fabs(json_real_value(json_object_get(iv, "lo_approx")) - 1.7791064124296434) < 1e-12);
-    assert_string_equal(str(json_object_get(iv, "lo"), "minpoly"),
+    assert_string_equal(tu_str(json_object_get(iv, "lo"), "minpoly"),
                         "625*h^7 - 1000*h^6 - 800*h^5 + 1440*h^4 + 384*h^3 - 1536*h^2 + 4608*h - 9216");
     json_decref(doc);
 }
@@ -120,13 +93,13 @@ static void test_region_rk4_irrational(void **state)
  * marginal at +-1, unstable beyond. */
 static void test_region_real_factor(void **state)
 {
-    static const struct iv want[] = {{"inf", 0, "-1", 0, "unstable"}, {"-1", 1, "-1", 1, "marginal"},
+    static const struct tu_iv want[] = {{"inf", 0, "-1", 0, "unstable"}, {"-1", 1, "-1", 1, "marginal"},
                                      {"-1", 0, "1", 0, "stable"}, {"1", 1, "1", 1, "marginal"},
                                      {"1", 0, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = run("param x c\nchar (lambda - x)*(lambda - c)\nset c = 1/2*i\nanalyse region x\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 5, "(lambda - x)(lambda - i/2)");
+    check_region(tu_result(doc, 0), want, 5, "(lambda - x)(lambda - i/2)");
     json_decref(doc);
 }
 
@@ -170,11 +143,11 @@ static void test_map(void **state)
     int outcome;
     json_t *doc = run("param h w q\nchar lambda - 1 - h*q*w\nset q = -1 + i\nanalyse map h 0 2 5, w 0 1 3\n",
                       &outcome);
-    const json_t *o = result(doc, 0), *vd = json_object_get(o, "verdicts");
+    const json_t *o = tu_result(doc, 0), *vd = json_object_get(o, "verdicts");
     (void) state;
-    assert_string_equal(str(o, "analysis"), "map");
-    assert_string_equal(str(o, "over"), "Q(i)");
-    assert_string_equal(str(json_object_get(o, "complex"), "q"), "-1+i");
+    assert_string_equal(tu_str(o, "analysis"), "map");
+    assert_string_equal(tu_str(o, "over"), "Q(i)");
+    assert_string_equal(tu_str(json_object_get(o, "complex"), "q"), "-1+i");
     assert_int_equal(json_integer_value(json_object_get(vd, "stable")), 4);
     assert_int_equal(json_integer_value(json_object_get(vd, "marginal")), 9);
     assert_int_equal(json_integer_value(json_object_get(vd, "unstable")), 2);
@@ -200,16 +173,16 @@ static void test_simulate(void **state)
     for (i = 0; i < 3; i++) {
         snprintf(text, sizeof text, "param q\nchar lambda - 1 - q\nset q = %s\nanalyse simulate\n", t[i].q);
         doc = run(text, &outcome);
-        o = result(doc, 0);
-        assert_string_equal(str(o, "over"), "Q(i)");
+        o = tu_result(doc, 0);
+        assert_string_equal(tu_str(o, "over"), "Q(i)");
         assert_true(fabs(json_real_value(json_object_get(o, "growth_approx")) - t[i].growth) < 1e-9);
-        assert_string_equal(str(json_object_get(o, "verdict"), "status"), t[i].status);
+        assert_string_equal(tu_str(json_object_get(o, "verdict"), "status"), t[i].status);
         assert_true(json_is_true(json_object_get(json_object_get(o, "check"), "consistent")));
         json_decref(doc);
     }
     doc = run("param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\nset a = 1\nanalyse simulate\n", &outcome);
-    o = result(doc, 0);
-    assert_string_equal(str(json_object_get(o, "verdict"), "status"), "unstable");
+    o = tu_result(doc, 0);
+    assert_string_equal(tu_str(json_object_get(o, "verdict"), "status"), "unstable");
     assert_int_equal(json_integer_value(json_object_get(json_object_get(o, "verdict"), "outside")), 0);
     assert_true(fabs(json_real_value(json_object_get(o, "growth_approx")) - 1.0) < 1e-2);
     assert_true(json_is_true(json_object_get(json_object_get(o, "check"), "consistent")));
@@ -229,24 +202,24 @@ static void test_limit(void **state)
                       "analyse limit h -> inf\nanalyse limit h -> 0\n", &outcome);
     const json_t *o, *rts;
     (void) state;
-    o = result(doc, 0);
-    assert_string_equal(str(o, "over"), "Q(i)");
+    o = tu_result(doc, 0);
+    assert_string_equal(tu_str(o, "over"), "Q(i)");
     rts = json_object_get(o, "roots");
     assert_int_equal(json_array_size(rts), 1);
-    assert_string_equal(str(json_array_get(rts, 0), "value"), "-1");
-    rts = json_object_get(result(doc, 1), "roots");
+    assert_string_equal(tu_str(json_array_get(rts, 0), "value"), "-1");
+    rts = json_object_get(tu_result(doc, 1), "roots");
     assert_int_equal(json_array_size(rts), 1);
-    assert_string_equal(str(json_array_get(rts, 0), "value"), "1");
+    assert_string_equal(tu_str(json_array_get(rts, 0), "value"), "1");
     json_decref(doc);
     doc = run("param h q\nchar lambda^3 - h*q*lambda^2 - lambda + h*q*(1 + i)\nset q = 1 + i\n"
               "analyse limit h -> inf\nanalyse limit h -> 0\n", &outcome);
-    o = result(doc, 0);
+    o = tu_result(doc, 0);
     assert_int_equal(json_integer_value(json_object_get(o, "roots_to_infinity")), 1);
     assert_true(fabs(json_real_value(json_object_get(o, "max_abs")) - 1.189207115002721) < 1e-12);
-    o = result(doc, 1);
-    assert_string_equal(str(o, "limit_poly"), "lambda^3 - lambda");
+    o = tu_result(doc, 1);
+    assert_string_equal(tu_str(o, "limit_poly"), "lambda^3 - lambda");
     assert_int_equal(json_array_size(json_object_get(o, "roots")), 3);
-    assert_string_equal(str(json_array_get(json_object_get(o, "roots"), 0), "value"), "0");
+    assert_string_equal(tu_str(json_array_get(json_object_get(o, "roots"), 0), "value"), "0");
     assert_true(fabs(json_real_value(json_object_get(o, "max_abs")) - 1.0) < 1e-15);
     json_decref(doc);
 }
@@ -261,9 +234,9 @@ static void test_expect(void **state)
     json_t *doc = run("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nexpect bilinear z*(2 + h*q) - h*q\n"
                       "expect charpoly lambda - 1 + h*q\n", &outcome);
     (void) state;
-    assert_string_equal(str(result(doc, 0), "status"), "equal");
-    assert_string_equal(json_string_value(json_array_get(json_object_get(result(doc, 0), "kept_symbolic"), 0)), "q");
-    assert_string_equal(str(result(doc, 1), "status"), "different");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
+    assert_string_equal(json_string_value(json_array_get(json_object_get(tu_result(doc, 0), "kept_symbolic"), 0)), "q");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "different");
     assert_int_equal(outcome & RS_OUTCOME_FAILED, RS_OUTCOME_FAILED);
     json_decref(doc);
 }
@@ -277,10 +250,10 @@ static void test_sweep_modes(void **state)
     int outcome;
     json_t *doc = run("param h w q\nsubsystem S state y\n  y' = q*w*y\nintegrate S trapezoidal h\nset q = i\n"
                       "set w = 2\nanalyse sweep h from 1/10 to 1 steps 3 of modes h=h reference=2\n", &outcome);
-    const json_t *o = result(doc, 0), *cols = json_object_get(o, "columns"), *rows = json_object_get(o, "rows");
+    const json_t *o = tu_result(doc, 0), *cols = json_object_get(o, "columns"), *rows = json_object_get(o, "rows");
     size_t k, iom = 0, ifr = 0, ih = 0;
     (void) state;
-    assert_string_equal(str(o, "over"), "Q(i)");
+    assert_string_equal(tu_str(o, "over"), "Q(i)");
     for (k = 0; k < json_array_size(cols); k++) {
         const char *c = json_string_value(json_array_get(cols, k));
         if (strcmp(c, "omega_1") == 0) iom = k;
@@ -319,9 +292,9 @@ static void test_claims(void **state)
         const json_t *o;
         snprintf(text, sizeof text, "param a q\nchar lambda^2 + 2*q*a*lambda - 1\nset q = i\n%s\n", t[i].claim);
         doc = run(text, &outcome);
-        o = result(doc, 0);
-        if (strcmp(str(o, "status"), t[i].status) != 0)
-            fail_msg("%s: %s, expected %s (%s)", t[i].claim, str(o, "status"), t[i].status, str(o, "failed_at"));
+        o = tu_result(doc, 0);
+        if (strcmp(tu_str(o, "status"), t[i].status) != 0)
+            fail_msg("%s: %s, expected %s (%s)", t[i].claim, tu_str(o, "status"), t[i].status, tu_str(o, "failed_at"));
         if (strcmp(t[i].status, "proved") == 0)
             assert_non_null(json_object_get(json_array_get(json_object_get(o, "certificate"), 0), "region"));
         json_decref(doc);

@@ -53,28 +53,8 @@
 #include "recstab/casefile.h"
 #include "recstab/analysis.h"
 
-static const json_t *result(const json_t *doc, size_t i)
-{
-    return json_array_get(json_object_get(doc, "results"), i);
-}
-
-static const char *str(const json_t *o, const char *k)
-{
-    return json_string_value(json_object_get(o, k));
-}
-
-/* an endpoint as text ("inf" for null) */
-static const char *end(const json_t *iv, const char *k)
-{
-    const json_t *e = json_object_get(iv, k);
-    if (json_is_null(e)) return "inf";
-    return json_is_string(e) ? json_string_value(e) : "algebraic";
-}
-
-struct iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
-
 /* the region's intervals are exactly want[0..n-1], each with its evidence */
-static void check_region(const json_t *o, const struct iv *want, size_t n, const char *what)
+static void check_region(const json_t *o, const struct tu_iv *want, size_t n, const char *what)
 {
     const json_t *ivs = json_object_get(o, "intervals");
     size_t i;
@@ -82,21 +62,13 @@ static void check_region(const json_t *o, const struct iv *want, size_t n, const
     for (i = 0; i < n; i++) {
         const json_t *iv = json_array_get(ivs, i), *ev = json_object_get(iv, "evidence"), *e;
         size_t k;
-        if (strcmp(end(iv, "lo"), want[i].lo) != 0 || strcmp(end(iv, "hi"), want[i].hi) != 0
-            || json_is_true(json_object_get(iv, "lo_closed")) != want[i].lo_closed
-            || json_is_true(json_object_get(iv, "hi_closed")) != want[i].hi_closed
-            || strcmp(str(iv, "status"), want[i].status) != 0)
-            fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
-                     json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", end(iv, "lo"), end(iv, "hi"),
-                     json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", str(iv, "status"),
-                     want[i].lo_closed ? "[" : "(", want[i].lo, want[i].hi, want[i].hi_closed ? "]" : ")",
-                     want[i].status);
+        tu_check_interval(iv, want + i, i, what);
         /* every cell carries its evidence: a re-checked certificate, or a counterexample */
         assert_true(json_array_size(ev) > 0);
         json_array_foreach(ev, k, e) {
             if (strcmp(want[i].status, "unstable") == 0 || strcmp(want[i].status, "singular") == 0) {
                 assert_non_null(json_object_get(e, "counterexample"));
-                assert_string_equal(str(json_object_get(e, "at_counterexample"), "status"), want[i].status);
+                assert_string_equal(tu_str(json_object_get(e, "at_counterexample"), "status"), want[i].status);
             } else {
                 assert_true(json_is_true(json_object_get(e, "certificate_rechecked")));
                 /* real evidence, not an empty certificate (conditions positive by their
@@ -138,31 +110,31 @@ static void test_theta(void **state)
 {
     static const char *req[] = {"region th for all [w]", "region th for all", "claim stable when th > 1/2",
                                 "claim stable when th > 2/5", "claim bounded when th >= 1/2"};
-    static const struct iv want[] = {{"inf", 0, "1/2", 0, "unstable"}, {"1/2", 1, "1/2", 1, "marginal"},
+    static const struct tu_iv want[] = {{"inf", 0, "1/2", 0, "unstable"}, {"1/2", 1, "1/2", 1, "marginal"},
                                      {"1/2", 0, "inf", 0, "stable"}};
     int outcome;
     json_t *doc = tu_run_case("cases/forall/theta-oscillator.case", req, 5, &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 3, "theta for all [w]");
-    check_region(result(doc, 1), want, 3, "theta for all");
-    assert_string_equal(json_string_value(json_array_get(json_object_get(result(doc, 0), "for_all"), 0)), "w");
+    check_region(tu_result(doc, 0), want, 3, "theta for all [w]");
+    check_region(tu_result(doc, 1), want, 3, "theta for all");
+    assert_string_equal(json_string_value(json_array_get(json_object_get(tu_result(doc, 0), "for_all"), 0)), "w");
     /* claims agree with the region: inside proved, reaching outside refuted */
-    assert_string_equal(str(result(doc, 2), "status"), "proved");
-    assert_string_equal(str(result(doc, 3), "status"), "refuted");
-    assert_string_equal(str(result(doc, 4), "status"), "proved");
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "proved");
+    assert_string_equal(tu_str(tu_result(doc, 3), "status"), "refuted");
+    assert_string_equal(tu_str(tu_result(doc, 4), "status"), "proved");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
 
 static void test_central_difference(void **state)
 {
-    static const struct iv want[] = {{"0", 0, "2", 0, "marginal"}, {"2", 1, "inf", 0, "unstable"}};
+    static const struct tu_iv want[] = {{"0", 0, "2", 0, "marginal"}, {"2", 1, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = run_ok("param w\nassume w > 0\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\n"
                          "analyse region w for all\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 2, "central difference");
-    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "for_all")), 0);
+    check_region(tu_result(doc, 0), want, 2, "central difference");
+    assert_int_equal(json_array_size(json_object_get(tu_result(doc, 0), "for_all")), 0);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -171,25 +143,25 @@ static void test_central_difference(void **state)
 
 static void test_newmark(void **state)
 {
-    static const struct iv half[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "1/4", 0, "unstable"},
+    static const struct tu_iv half[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "1/4", 0, "unstable"},
                                      {"1/4", 1, "inf", 0, "marginal"}};
-    static const struct iv damped[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "3/10", 0, "unstable"},
+    static const struct tu_iv damped[] = {{"inf", 0, "0", 0, "singular"}, {"0", 1, "3/10", 0, "unstable"},
                                        {"3/10", 1, "inf", 0, "stable"}};
     int outcome;
     static const char *const g1[] = {"g=1/2", NULL}, *const g2[] = {"g=3/5", NULL};
     json_t *doc = run_set(NEWMARK "analyse region b for all [w]\n", g1, &outcome, NULL);
     (void) state;
-    check_region(result(doc, 0), half, 3, "newmark gamma = 1/2");
+    check_region(tu_result(doc, 0), half, 3, "newmark gamma = 1/2");
     json_decref(doc);
     doc = run_set(NEWMARK "analyse region b for all [w]\n", g2, &outcome, NULL);
-    check_region(result(doc, 0), damped, 3, "newmark gamma = 3/5");
+    check_region(tu_result(doc, 0), damped, 3, "newmark gamma = 3/5");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
 
 static void test_park(void **state)
 {
-    static const struct iv want[] = {{"0", 1, "3/2", 1, "stable"}, {"3/2", 0, "inf", 0, "unstable"}};
+    static const struct tu_iv want[] = {{"0", 1, "3/2", 1, "stable"}, {"3/2", 0, "inf", 0, "unstable"}};
     static const char *const sets[] = {"m=1", "muh=1", NULL};
     int outcome, code;
     json_t *doc;
@@ -201,7 +173,7 @@ static void test_park(void **state)
                       "eq a[n+1] + wh^2*x[n+1] + m*muh*yp[n+1] = 0\n"
                       "analyse region alpha for all [wh]\n", sets, &outcome, &code);
     assert_int_equal(code, RS_OK);
-    check_region(result(doc, 0), want, 2, "park at m = muh = 1");
+    check_region(tu_result(doc, 0), want, 2, "park at m = muh = 1");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -217,25 +189,25 @@ static void test_park(void **state)
  * limit m, muh -> inf (no counterexample at alpha = 1 itself) */
 static void test_park_all(void **state)
 {
-    static const struct iv want[] = {{"0", 1, "1", 1, "stable"}, {"1", 0, "inf", 0, "unstable"}};
+    static const struct tu_iv want[] = {{"0", 1, "1", 1, "stable"}, {"1", 0, "inf", 0, "unstable"}};
     static const char *const m1[] = {"m=1", NULL};
     int outcome, code;
     json_t *doc;
     (void) state;
     doc = run_set(PARK "analyse region alpha for all [muh, wh]\n", m1, &outcome, &code);
     assert_int_equal(code, RS_OK);
-    check_region(result(doc, 0), want, 2, "park at m = 1, for all muh, wh");
-    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "undecided_points")), 0);
+    check_region(tu_result(doc, 0), want, 2, "park at m = 1, for all muh, wh");
+    assert_int_equal(json_array_size(json_object_get(tu_result(doc, 0), "undecided_points")), 0);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
     doc = run_set(PARK "analyse region alpha for all\nclaim stable when alpha <= 1\nclaim stable when alpha <= 2\n",
                   NULL, &outcome, &code);
     assert_int_equal(code, RS_OK);
-    check_region(result(doc, 0), want, 2, "park for all m, muh, wh");
-    assert_int_equal(json_array_size(json_object_get(result(doc, 0), "for_all")), 3);
+    check_region(tu_result(doc, 0), want, 2, "park for all m, muh, wh");
+    assert_int_equal(json_array_size(json_object_get(tu_result(doc, 0), "for_all")), 3);
     /* the claims agree with the region */
-    assert_string_equal(str(result(doc, 1), "status"), "proved");
-    assert_string_equal(str(result(doc, 2), "status"), "refuted");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "proved");
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "refuted");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -251,18 +223,18 @@ static void test_park_all(void **state)
  * (0, a) for m > 0: the same range, its end 2 approached as m -> 0. */
 static void test_limit_ends(void **state)
 {
-    static const struct iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+    static const struct tu_iv want[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
                                      {"0", 0, "2", 1, "stable"}, {"2", 0, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = run_ok("param a w\nassume w > 0\nunknown x\neq (1 + w)*x[n+1] = (1 + w - a*w)*x[n]\n"
                          "analyse region a for all [w]\n", &outcome);
     (void) state;
-    check_region(result(doc, 0), want, 4, "w -> inf");
+    check_region(tu_result(doc, 0), want, 4, "w -> inf");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
     doc = run_ok("param a m\nassume m > 0\nunknown x\neq (1 + m)*x[n+1] = (1 + m - a)*x[n]\n"
                  "analyse region a for all [m]\n", &outcome);
-    check_region(result(doc, 0), want, 4, "m -> 0");
+    check_region(tu_result(doc, 0), want, 4, "m -> 0");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -279,10 +251,10 @@ static void test_limit_ends(void **state)
 static void check_iv(const json_t *iv, const char *lo, int lc, const char *hi, int hc, const char *what)
 {
     assert_non_null(iv);
-    if (strcmp(end(iv, "lo"), lo) != 0 || strcmp(end(iv, "hi"), hi) != 0
+    if (strcmp(tu_end(iv, "lo"), lo) != 0 || strcmp(tu_end(iv, "hi"), hi) != 0
         || json_is_true(json_object_get(iv, "lo_closed")) != lc || json_is_true(json_object_get(iv, "hi_closed")) != hc)
         fail_msg("%s: %s%s, %s%s, expected %s%s, %s%s", what, json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(",
-                 end(iv, "lo"), end(iv, "hi"), json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")",
+                 tu_end(iv, "lo"), tu_end(iv, "hi"), json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")",
                  lc ? "[" : "(", lo, hi, hc ? "]" : ")");
 }
 
@@ -295,14 +267,14 @@ static void check_cx(const json_t *f, const char *name, const char *lo, const ch
     assert_non_null(cx);
     fmpq_init(x);
     fmpq_init(a);
-    assert_int_equal(fmpq_set_str(x, str(cx, name), 10), 0);
+    assert_int_equal(fmpq_set_str(x, tu_str(cx, name), 10), 0);
     fmpq_set_str(a, lo, 10);
     assert_true(fmpq_cmp(x, a) >= 0);
     if (hi != NULL) {
         fmpq_set_str(a, hi, 10);
         assert_true(fmpq_cmp(x, a) <= 0);
     }
-    assert_true(strcmp(str(json_object_get(f, "at_counterexample"), "status"), "stable") != 0);
+    assert_true(strcmp(tu_str(json_object_get(f, "at_counterexample"), "status"), "stable") != 0);
     fmpq_clear(x);
     fmpq_clear(a);
 }
@@ -318,29 +290,29 @@ static void test_claim_theta(void **state)
                                  "claim bounded when th >= 1/2\n", &outcome);
     (void) state;
     /* stable claim on (2/5, inf): unstable (2/5, 1/2), marginal {1/2}, proved (1/2, inf) */
-    assert_string_equal(str(result(doc, 0), "status"), "refuted");
-    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
-    ex = json_object_get(result(doc, 0), "explanation");
-    assert_string_equal(str(ex, "param"), "th");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "refuted");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 0), "cross_check"), "status"), "agrees");
+    ex = json_object_get(tu_result(doc, 0), "explanation");
+    assert_string_equal(tu_str(ex, "param"), "th");
     check_iv(json_object_get(ex, "proved_part"), "1/2", 0, "inf", 0, "theta stable part");
     fl = json_object_get(ex, "failing");
     assert_int_equal(json_array_size(fl), 2);
     check_iv(json_array_get(fl, 0), "2/5", 0, "1/2", 0, "theta unstable part");
-    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    assert_string_equal(tu_str(json_array_get(fl, 0), "status"), "unstable");
     check_cx(json_array_get(fl, 0), "th", "2/5", "1/2");
     check_iv(json_array_get(fl, 1), "1/2", 1, "1/2", 1, "theta marginal point");
-    assert_string_equal(str(json_array_get(fl, 1), "status"), "marginal");
+    assert_string_equal(tu_str(json_array_get(fl, 1), "status"), "marginal");
     check_cx(json_array_get(fl, 1), "th", "1/2", "1/2");
     /* bounded claim on [2/5, inf): proved part [1/2, inf) (marginal point and stable side merged) */
-    assert_string_equal(str(result(doc, 1), "status"), "refuted");
-    ex = json_object_get(result(doc, 1), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "refuted");
+    ex = json_object_get(tu_result(doc, 1), "explanation");
     check_iv(json_object_get(ex, "proved_part"), "1/2", 1, "inf", 0, "theta bounded part");
     assert_int_equal(json_array_size(json_object_get(ex, "failing")), 1);
     check_iv(json_array_get(json_object_get(ex, "failing"), 0), "2/5", 1, "1/2", 0, "theta bounded failing");
     /* a true claim: proved, the region agrees, nothing to explain */
-    assert_string_equal(str(result(doc, 2), "status"), "proved");
-    assert_string_equal(str(json_object_get(result(doc, 2), "cross_check"), "status"), "agrees");
-    assert_null(json_object_get(result(doc, 2), "explanation"));
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "proved");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 2), "cross_check"), "status"), "agrees");
+    assert_null(json_object_get(tu_result(doc, 2), "explanation"));
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -352,22 +324,22 @@ static void test_claim_central_difference(void **state)
     json_t *doc = run_ok("param w\nassume w > 0\nunknown x\neq x[n+1] - 2*x[n] + x[n-1] + w^2*x[n] = 0\n"
                            "claim bounded when w < 3\nclaim bounded when w < 2\nclaim stable when w < 1\n", &outcome);
     (void) state;
-    assert_string_equal(str(result(doc, 0), "status"), "refuted");
-    ex = json_object_get(result(doc, 0), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "refuted");
+    ex = json_object_get(tu_result(doc, 0), "explanation");
     check_iv(json_object_get(ex, "proved_part"), "0", 0, "2", 0, "central difference bounded part");
     fl = json_object_get(ex, "failing");
     assert_int_equal(json_array_size(fl), 1);
     check_iv(json_array_get(fl, 0), "2", 1, "3", 0, "central difference failing");
-    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    assert_string_equal(tu_str(json_array_get(fl, 0), "status"), "unstable");
     check_cx(json_array_get(fl, 0), "w", "2", "3");
-    assert_string_equal(str(result(doc, 1), "status"), "proved");
-    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "proved");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 1), "cross_check"), "status"), "agrees");
     /* never stable (|lambda| = 1): no proved part, the whole set marginal */
-    assert_string_equal(str(result(doc, 2), "status"), "refuted");
-    ex = json_object_get(result(doc, 2), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "refuted");
+    ex = json_object_get(tu_result(doc, 2), "explanation");
     assert_true(json_is_null(json_object_get(ex, "proved_part")));
     check_iv(json_array_get(json_object_get(ex, "failing"), 0), "0", 0, "1", 0, "central difference marginal");
-    assert_string_equal(str(json_array_get(json_object_get(ex, "failing"), 0), "status"), "marginal");
+    assert_string_equal(tu_str(json_array_get(json_object_get(ex, "failing"), 0), "status"), "marginal");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }
@@ -386,28 +358,28 @@ static void test_claim_forms(void **state)
     json_t *doc = run_ok(THETA "claim stable when th > 1 or 1/2 < th < 3/4\nclaim stable when th > 1 or th < 1/4\n"
                                  "claim stable when th > w\n", &outcome);
     (void) state;
-    assert_string_equal(str(result(doc, 0), "status"), "proved");
-    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
-    assert_string_equal(str(result(doc, 1), "status"), "refuted");
-    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
-    ex = json_object_get(result(doc, 1), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "proved");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 0), "cross_check"), "status"), "agrees");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "refuted");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 1), "cross_check"), "status"), "agrees");
+    ex = json_object_get(tu_result(doc, 1), "explanation");
     check_iv(json_object_get(ex, "proved_part"), "1", 0, "inf", 0, "or: proved part");
     fl = json_object_get(ex, "failing");
     assert_int_equal(json_array_size(fl), 1);
     check_iv(json_array_get(fl, 0), "inf", 0, "1/4", 0, "or: failing part");   /* null lo: -inf */
-    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    assert_string_equal(tu_str(json_array_get(fl, 0), "status"), "unstable");
     /* th tied to w: the region cannot say; the claim keeps its verdict */
-    assert_string_equal(str(json_object_get(result(doc, 2), "cross_check"), "status"), "not made");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 2), "cross_check"), "status"), "not made");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 
     doc = run_ok("param a b\nchar lambda^2 + a*lambda + b\nclaim stable when -1 <= a <= 1, 0 < b < 1/2\n"
                  "claim stable when 0 <= a <= 5/4, 0 < b < 1/2\n", &outcome);
-    assert_string_equal(str(result(doc, 0), "status"), "proved");
-    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
-    assert_string_equal(str(result(doc, 1), "status"), "refuted");
-    assert_string_equal(str(json_object_get(result(doc, 1), "cross_check"), "status"), "agrees");
-    ex = json_object_get(result(doc, 1), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "proved");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 0), "cross_check"), "status"), "agrees");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "refuted");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 1), "cross_check"), "status"), "agrees");
+    ex = json_object_get(tu_result(doc, 1), "explanation");
     /* without the restriction on b every a fails (b = 2): [0, 1] proves it was applied */
     check_iv(json_object_get(ex, "proved_part"), "0", 1, "1", 1, "restricted b: proved part");
     fl = json_object_get(ex, "failing");
@@ -417,7 +389,7 @@ static void test_claim_forms(void **state)
     /* the counterexample's b inside the claim's (0, 1/2) */
     cx = json_object_get(json_array_get(fl, 0), "counterexample");
     fmpq_init(x); fmpq_init(lo); fmpq_init(hi);
-    assert_int_equal(fmpq_set_str(x, str(cx, "b"), 10), 0);
+    assert_int_equal(fmpq_set_str(x, tu_str(cx, "b"), 10), 0);
     fmpq_set_si(hi, 1, 2);
     assert_true(fmpq_sgn(x) > 0 && fmpq_cmp(x, hi) < 0);
     fmpq_clear(x); fmpq_clear(lo); fmpq_clear(hi);
@@ -432,15 +404,15 @@ static void test_claim_park(void **state)
     const json_t *ex, *fl;
     json_t *doc = run_ok(PARK "claim stable when alpha <= 2\n", &outcome);
     (void) state;
-    assert_string_equal(str(result(doc, 0), "status"), "refuted");
-    assert_string_equal(str(json_object_get(result(doc, 0), "cross_check"), "status"), "agrees");
-    ex = json_object_get(result(doc, 0), "explanation");
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "refuted");
+    assert_string_equal(tu_str(json_object_get(tu_result(doc, 0), "cross_check"), "status"), "agrees");
+    ex = json_object_get(tu_result(doc, 0), "explanation");
     check_iv(json_object_get(ex, "proved_part"), "0", 1, "1", 1, "park proved part");
-    assert_string_equal(str(json_object_get(ex, "proved_part"), "status"), "stable");
+    assert_string_equal(tu_str(json_object_get(ex, "proved_part"), "status"), "stable");
     fl = json_object_get(ex, "failing");
     assert_int_equal(json_array_size(fl), 1);
     check_iv(json_array_get(fl, 0), "1", 0, "2", 1, "park failing part");
-    assert_string_equal(str(json_array_get(fl, 0), "status"), "unstable");
+    assert_string_equal(tu_str(json_array_get(fl, 0), "status"), "unstable");
     check_cx(json_array_get(fl, 0), "alpha", "1", "2");
     assert_int_equal(json_array_size(json_object_get(ex, "for_all")), 3);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
@@ -477,22 +449,22 @@ static void test_bad(void **state)
 
 static void test_jordan(void **state)
 {
-    static const struct iv driven[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
+    static const struct tu_iv driven[] = {{"inf", 0, "0", 0, "unstable"}, {"0", 1, "0", 1, "marginal"},
                                        {"0", 0, "inf", 0, "unstable"}};
-    static const struct iv coupled[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
+    static const struct tu_iv coupled[] = {{"inf", 0, "-1", 1, "unstable"}, {"-1", 0, "1", 0, "marginal"},
                                         {"1", 1, "inf", 0, "unstable"}};
     int outcome;
     json_t *doc = tu_run_case("cases/forall/driven-oscillators.case", NULL, -1, &outcome);
     (void) state;
-    check_region(result(doc, 0), driven, 3, "driven oscillators");
-    assert_string_equal(str(result(doc, 0), "projection"), "full");
+    check_region(tu_result(doc, 0), driven, 3, "driven oscillators");
+    assert_string_equal(tu_str(tu_result(doc, 0), "projection"), "full");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
     doc = run_ok("param eps h\nassume 0 < h < 1\nunknown x y\n"
                  "eq x[n+1] - 2*x[n] + x[n-1] = h^2*(-x[n] + eps*y[n])\n"
                  "eq y[n+1] - 2*y[n] + y[n-1] = h^2*(-y[n] + eps*x[n])\n"
                  "analyse region eps for all [h]\n", &outcome);
-    check_region(result(doc, 0), coupled, 3, "coupled oscillators");
+    check_region(tu_result(doc, 0), coupled, 3, "coupled oscillators");
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     json_decref(doc);
 }

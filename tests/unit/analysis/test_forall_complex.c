@@ -22,48 +22,21 @@
 #include <string.h>
 #include "recstab/analysis.h"
 
-static const json_t *result(const json_t *doc, size_t i)
-{
-    return json_array_get(json_object_get(doc, "results"), i);
-}
-
-static const char *str(const json_t *o, const char *k)
-{
-    return json_string_value(json_object_get(o, k));
-}
-
-static const char *end(const json_t *iv, const char *k)
-{
-    const json_t *e = json_object_get(iv, k);
-    if (json_is_null(e)) return "inf";
-    return json_is_string(e) ? json_string_value(e) : "algebraic";
-}
-
-struct iv { const char *lo; int lo_closed; const char *hi; int hi_closed; const char *status; };
-
 /* the region's intervals are exactly want[0..n-1], each cell with its evidence */
-static void check_region(const json_t *o, const struct iv *want, size_t n, const char *what)
+static void check_region(const json_t *o, const struct tu_iv *want, size_t n, const char *what)
 {
     const json_t *ivs = json_object_get(o, "intervals");
     size_t i;
-    assert_string_equal(str(o, "analysis"), "region");
+    assert_string_equal(tu_str(o, "analysis"), "region");
     if (json_array_size(ivs) != n) fail_msg("%s: %zu intervals, expected %zu", what, json_array_size(ivs), n);
     for (i = 0; i < n; i++) {
         const json_t *iv = json_array_get(ivs, i), *e;
         size_t k;
-        if (strcmp(end(iv, "lo"), want[i].lo) != 0 || strcmp(end(iv, "hi"), want[i].hi) != 0
-            || json_is_true(json_object_get(iv, "lo_closed")) != want[i].lo_closed
-            || json_is_true(json_object_get(iv, "hi_closed")) != want[i].hi_closed
-            || strcmp(str(iv, "status"), want[i].status) != 0)
-            fail_msg("%s: interval %zu is %s%s, %s%s %s, expected %s%s, %s%s %s", what, i,
-                     json_is_true(json_object_get(iv, "lo_closed")) ? "[" : "(", end(iv, "lo"), end(iv, "hi"),
-                     json_is_true(json_object_get(iv, "hi_closed")) ? "]" : ")", str(iv, "status"),
-                     want[i].lo_closed ? "[" : "(", want[i].lo, want[i].hi, want[i].hi_closed ? "]" : ")",
-                     want[i].status);
+        tu_check_interval(iv, want + i, i, what);
         json_array_foreach(json_object_get(iv, "evidence"), k, e) {
             if (strcmp(want[i].status, "unstable") == 0) {
                 assert_non_null(json_object_get(e, "counterexample"));
-                assert_string_equal(str(json_object_get(e, "at_counterexample"), "status"), "unstable");
+                assert_string_equal(tu_str(json_object_get(e, "at_counterexample"), "status"), "unstable");
             } else {
                 assert_true(json_is_true(json_object_get(e, "certificate_rechecked")));
                 assert_true(json_array_size(json_object_get(e, "certificate")) > 0);
@@ -76,8 +49,8 @@ static void check_region(const json_t *o, const struct iv *want, size_t n, const
 static void test_regions(void **state)
 {
     static const char *req[] = {"region nu for all", "region nu for all [theta]"};
-    static const struct iv leapfrog[] = {{"0", 0, "1", 0, "marginal"}, {"1", 1, "inf", 0, "unstable"}};
-    static const struct iv closed1[] = {{"0", 0, "1", 1, "marginal"}, {"1", 0, "inf", 0, "unstable"}};
+    static const struct tu_iv leapfrog[] = {{"0", 0, "1", 0, "marginal"}, {"1", 1, "inf", 0, "unstable"}};
+    static const struct tu_iv closed1[] = {{"0", 0, "1", 1, "marginal"}, {"1", 0, "inf", 0, "unstable"}};
     static const char *files[] = {"cases/complex/leapfrog-cfl.case", "cases/complex/lax-wendroff-cfl.case",
                                   "cases/complex/lax-friedrichs-cfl.case", "cases/complex/upwind-cfl.case"};
     size_t f;
@@ -85,9 +58,9 @@ static void test_regions(void **state)
     for (f = 0; f < 4; f++) {
         int outcome;
         json_t *doc = tu_run_case(files[f], req, 2, &outcome);
-        check_region(result(doc, 0), f == 0 ? leapfrog : closed1, 2, files[f]);
-        check_region(result(doc, 1), f == 0 ? leapfrog : closed1, 2, files[f]);
-        assert_string_equal(str(result(doc, 0), "projection"), "full");
+        check_region(tu_result(doc, 0), f == 0 ? leapfrog : closed1, 2, files[f]);
+        check_region(tu_result(doc, 1), f == 0 ? leapfrog : closed1, 2, files[f]);
+        assert_string_equal(tu_str(tu_result(doc, 0), "projection"), "full");
         assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
         json_decref(doc);
     }
@@ -115,11 +88,11 @@ static void test_claims(void **state)
     for (i = 0; i < sizeof t / sizeof t[0]; i++) {
         int outcome;
         json_t *doc = tu_run_case(t[i].file, &t[i].claim, 1, &outcome);
-        const json_t *o = result(doc, 0);
-        if (str(o, "status") == NULL || strcmp(str(o, "status"), t[i].status) != 0)
-            fail_msg("%s / %s: %s, expected %s", t[i].file, t[i].claim, str(o, "status"), t[i].status);
+        const json_t *o = tu_result(doc, 0);
+        if (tu_str(o, "status") == NULL || strcmp(tu_str(o, "status"), t[i].status) != 0)
+            fail_msg("%s / %s: %s, expected %s", t[i].file, t[i].claim, tu_str(o, "status"), t[i].status);
         /* the region was computed and agrees (no "not made" any more) */
-        assert_string_equal(str(json_object_get(o, "cross_check"), "status"), "agrees");
+        assert_string_equal(tu_str(json_object_get(o, "cross_check"), "status"), "agrees");
         if (strcmp(t[i].status, "proved") == 0) {
             assert_true(json_is_true(json_object_get(o, "certificate_rechecked")));
             assert_true(json_array_size(json_object_get(o, "certificate")) > 0);
@@ -139,15 +112,15 @@ static void test_leapfrog(void **state)
     static const char *req[] = {"claim bounded when nu < 1", "claim bounded when nu <= 1"};
     int outcome;
     json_t *doc = tu_run_case("cases/complex/leapfrog-cfl.case", req, 2, &outcome);
-    const json_t *a = result(doc, 0), *b = result(doc, 1);
+    const json_t *a = tu_result(doc, 0), *b = tu_result(doc, 1);
     (void) state;
-    assert_string_equal(str(a, "status"), "proved");
-    assert_string_equal(str(a, "proved_by"), "region for all");
+    assert_string_equal(tu_str(a, "status"), "proved");
+    assert_string_equal(tu_str(a, "proved_by"), "region for all");
     assert_non_null(json_object_get(a, "direct_failed_at"));
-    assert_string_equal(str(b, "status"), "refuted");
-    assert_string_equal(str(json_object_get(b, "counterexample"), "nu"), "1");
-    assert_string_equal(str(json_object_get(b, "counterexample"), "theta"), "1");
-    assert_string_equal(str(json_object_get(b, "at_counterexample"), "status"), "unstable");
+    assert_string_equal(tu_str(b, "status"), "refuted");
+    assert_string_equal(tu_str(json_object_get(b, "counterexample"), "nu"), "1");
+    assert_string_equal(tu_str(json_object_get(b, "counterexample"), "theta"), "1");
+    assert_string_equal(tu_str(json_object_get(b, "at_counterexample"), "status"), "unstable");
     /* p = (lambda + i)^2 there (by the quadratic formula: g = -i a +- sqrt(1 - a^2),
      * a = nu sin(theta) = 1): p's own counts over Q(i) (rs_run_point_status), 2 on
      * the circle as one double root -- not the 4 of the block form p conj(p) */
