@@ -443,16 +443,17 @@ json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s)
 {
     json_t *arr = json_array();
     slong d = fmpz_mpoly_degree_si(p, var, s->zctx), k;
-    fmpz_mpoly_t c;
-    fmpz_mpoly_init(c, s->zctx);
+    fmpz_mpoly_struct *c = flint_malloc((FLINT_MAX(d, 0) + 1) * sizeof(fmpz_mpoly_struct));
+    for (k = 0; k <= d; k++) fmpz_mpoly_init(c + k, s->zctx);
+    rs_polyfmt_coeffs(c, p, var, s->zctx);   /* one pass over p, not one per power */
     for (k = 0; k <= d; k++) {
         /* as rs_polyfmt_collected: large symbolic coefficients take seconds
          * (the degree-58 fuzz seed); the sticky budget makes the run report */
         if (rs_budget_check(NULL, "printing a polynomial") != RS_OK) break;
-        rs_charpoly_coeff(c, p, k, var, s->zctx);
-        json_array_append_new(arr, rs_json_zpoly(c, s));
+        json_array_append_new(arr, rs_json_zpoly(c + k, s));
     }
-    fmpz_mpoly_clear(c, s->zctx);
+    for (k = 0; k <= d; k++) fmpz_mpoly_clear(c + k, s->zctx);
+    flint_free(c);
     return arr;
 }
 
