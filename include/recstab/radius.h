@@ -163,6 +163,10 @@ int rs_radius_matrix_poly(rs_radius_t r, const acb_mat_struct *A, slong k,
  * certified: lower = 0 and upper = +inf.  The GSL error handler is switched
  * off during the call and restored (not thread-safe). */
 int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
+/* r->rho = max |roots[i]| (a ball containing the largest modulus when every
+ * eigenvalue lies in some roots[i]), r->lower / r->upper its bounds (lower
+ * clamped at 0); the roots are not stored. */
+void rs_radius_set_rho(rs_radius_t r, acb_srcptr roots, slong n, slong prec);
 
 /* Uncertified approximations of the d roots of a[0] + ... + a[d] x^d
  * (double coefficients, a[0] != 0 != a[d]) into z (2d doubles: re, im):

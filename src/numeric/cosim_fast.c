@@ -292,7 +292,6 @@ int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_err
     arb_mat_t T;
     acb_mat_t V, Tc;
     acb_ptr E, Ec;
-    arb_t t, up, lo;
     int rc, ok;
     rc = rs_cosim_check(cs, err);
     if (rc != RS_OK) return rc;
@@ -307,44 +306,25 @@ int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_err
     acb_mat_init(Tc, d, d);
     E = _acb_vec_init(d);
     Ec = _acb_vec_init(d);
-    arb_init(t);
-    arb_init(up);
-    arb_init(lo);
     ok = double_eigvecs(V, NULL, E, T);
     if (ok) {
         acb_mat_set_arb_mat(Tc, T);
         ok = acb_mat_eig_simple_vdhoeven_mourrain(Ec, NULL, NULL, Tc, E, V, prec);
     }
-    /* rho = max |lambda_i|: its bounds from every eigenvalue's ball */
-    for (i = 0; ok && i < d; i++) {
-        acb_abs(t, Ec + i, prec);
-        if (!arb_is_finite(t)) ok = 0;
-        else if (i == 0) arb_set(up, t);
-        else arb_max(up, up, t, prec);
-    }
+    for (i = 0; ok && i < d; i++)
+        if (!acb_is_finite(Ec + i)) ok = 0;
     if (ok) {
-        arf_t b;
-        arf_init(b);
-        arb_get_lbound_arf(b, up, prec);
-        if (arf_sgn(b) < 0) arf_zero(b);
-        arb_set_arf(lo, b);
-        arb_get_ubound_arf(b, up, prec);
-        arb_set_arf(r->upper, b);
-        arb_set(r->lower, lo);
-        arb_union(r->rho, r->lower, r->upper, prec);
+        /* rho = max |lambda_i|: its bounds from every eigenvalue's ball */
+        rs_radius_set_rho(r, Ec, d, prec);
         r->prec = prec;
         r->nroots = 0;
         r->method_double = 0;
         r->isolated = 1;
         r->partial = 0;
-        arf_clear(b);
         rc = RS_OK;
     } else
         rc = rs_error_set(err, RS_ERR_UNDECIDED, "cosim check radius: eigenvalues not certified simple at %ld bits",
                           (long) prec);
-    arb_clear(t);
-    arb_clear(up);
-    arb_clear(lo);
     _acb_vec_clear(E, d);
     _acb_vec_clear(Ec, d);
     acb_mat_clear(V);

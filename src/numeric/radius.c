@@ -114,12 +114,17 @@ static void _rs_radius_set_bounds(rs_radius_t r)
  * root (isolating or cluster enclosures both qualify). */
 static void _rs_radius_rho_from_roots(rs_radius_t r, slong prec)
 {
+    rs_radius_set_rho(r, r->roots, r->nroots, prec);
+}
+
+void rs_radius_set_rho(rs_radius_t r, acb_srcptr roots, slong n, slong prec)
+{
     arb_t t;
     slong i;
     arb_init(t);
     arb_zero(r->rho);
-    for (i = 0; i < r->nroots; i++) {
-        acb_abs(t, r->roots + i, prec);
+    for (i = 0; i < n; i++) {
+        acb_abs(t, roots + i, prec);
         arb_max(r->rho, r->rho, t, prec);
     }
     arb_clear(t);
