@@ -521,14 +521,22 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
         if (r == RS_OK && J->of == RS_SWEEP_OF_MODES && J->n >= 1) {
             rs_radius_t rr;
             rs_radius_init(rr);
-            if (rs_cx_roots(rr, pr, pi, 60, 128, J->max_prec) == 1 && rr->nroots == J->n)
+            if (rs_cx_roots(rr, pr, pi, 60, 128, J->max_prec) == 1 && rr->nroots == J->n) {
                 rs_sweep_row_modes(pt, rr, J->hval + idx, J->refval + idx * J->nref, J->nref);
-            else
+                if (!(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
+                    /* the radius from the same certified roots (not a second root finding on p conj(p)) */
+                    rs_radius_set_rho(rr, rr->roots, rr->nroots, 128);
+                    pt->d.rho_lower = rs_ladder_lower_d(rr->lower);
+                    pt->d.rho_upper = rs_ladder_upper_d(rr->upper);
+                    pt->d.isolated = 1;
+                }
+            } else {
                 r = rs_error_set(err, RS_ERR_LIMIT, "modes over Q(i): the roots of p were not isolated within the "
                                  "precision limit (%ld bits)", (long) J->max_prec);
+            }
             rs_radius_clear(rr);
         }
-        if (r == RS_OK && J->of != RS_SWEEP_OF_STABILITY && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
+        if (r == RS_OK && J->of == RS_SWEEP_OF_RADIUS && !(pt->d.rho_lower == 1.0 && pt->d.rho_upper == 1.0)) {
             fmpz_poly_t N;
             fmpz_poly_init(N);
             rs_schur_complex_norm(N, pr, pi);
@@ -549,6 +557,14 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
             fmpz_poly_clear(N);
         }
     }
+    /* the certified radius against the exact count: stable needs rho < 1, a
+     * root outside rho > 1 (exit 3 otherwise) */
+    if (r == RS_OK && pt->d.verdict >= 0 && pt->d.isolated
+        && ((pt->d.verdict == RS_STATUS_STABLE && pt->d.rho_lower >= 1.0)
+            || (rc->outside > 0 && pt->d.rho_upper <= 1.0)))
+        r = rs_error_set(err, RS_ERR_INCONSISTENT, "over Q(i): the exact count says %s (%ld outside), the "
+                         "certified radius is in [%.17g, %.17g]", rs_status_name((rs_status_t) pt->d.verdict),
+                         (long) rc->outside, pt->d.rho_lower, pt->d.rho_upper);
     pt->d.status = r;
     rs_rootcount_clear(rc);
     fmpq_poly_clear(pr); fmpq_poly_clear(pi);
