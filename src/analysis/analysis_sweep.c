@@ -201,8 +201,9 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
             json_object_set_new(o, "complex", rs_run_cx_at(run));
             json_object_set_new(o, "method", json_string(
                 "p over Q(i) at each point: complex Schur-Cohn and Bilharz on the bilinear transform (must agree), "
-                "p's own root counts; the radius certified from p conj(p) (the same moduli); modes from p's own "
-                "roots (Yun over Q(i), each factor's roots isolated by acb_poly_find_roots)"));
+                "p's own root counts; the radius certified from p conj(p) (the same moduli), of modes from p's own "
+                "roots (Yun over Q(i), each factor's roots isolated by acb_poly_find_roots); the radius checked "
+                "against the exact count at every point"));
             json_object_set_new(o, "cross_check", json_pack("{s:I,s:s}", "stride", (json_int_t) J.stride, "method",
                 "every stride-th point also by the certified ladder on p conj(p) (stable iff p is, unstable where p "
                 "is; exit 3 on disagreement)"));
