@@ -368,19 +368,16 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                       rs_error_t err)
 {
     slong len = n / 2 + 2, m, j, done;
-    double raw;
-    clock_t c0;
+    double est;
     fmpz_mpoly_struct *R = flint_malloc(3 * len * sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_struct *r0 = R, *r1 = R + len, *r2 = R + 2 * len, *tmp;
     fmpz_mpoly_t t, u, pd;
     fmpq_t s0, s1, s2;
     fmpz_t cd;
     int ok = 1;
-    /* measured CPU / estimate of the last row that took long enough to be
-     * measured (>= 0.05 s): the estimate is calibrated on the rows already
-     * formed (on the chain's sparse 7-variable rows it ran 14-25x low, on the
-     * dense degree-58 rows it was calibrated on it is right; issue 17) */
-    double scale = 1.0;
+    /* the row estimate calibrated on the rows already formed */
+    rs_budget_calib_t cal;
+    rs_budget_calib_init(&cal);
 
     for (j = 0; j < 3 * len; j++)
         fmpz_mpoly_init(R + j, ctx);
@@ -409,14 +406,12 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
             break;
         /* a row over its share (or what is left) is not formed: the
          * minors from D_m on stay unexpanded, honestly marked */
-        raw = _row_estimate(r0, r1, len);
-        if (raw * scale > row_seconds
-            || rs_budget_estimate(NULL, "a row of the Hurwitz minors",
-                                  raw * scale, 0.0) != RS_OK) {
+        est = rs_budget_calib_begin(&cal, _row_estimate(r0, r1, len));
+        if (est > row_seconds
+            || rs_budget_estimate(NULL, "a row of the Hurwitz minors", est, 0.0) != RS_OK) {
             *status = RS_ERR_LIMIT;
             break;
         }
-        c0 = clock();
         fmpz_one(cd);
         if (d != NULL) {
             _fmpz_vec_content(cd, d->coeffs, d->length);
@@ -436,11 +431,7 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         }
         if (!ok || *status != RS_OK)
             break;
-        {
-            double cpu = (double) (clock() - c0) / CLOCKS_PER_SEC;
-            if (cpu >= 0.05 && raw > 0.0)
-                scale = FLINT_MAX(1.0, cpu / raw);
-        }
+        rs_budget_calib_end(&cal);
         fmpz_mpoly_zero(r2 + len - 1, ctx);
         fmpq_mul(s2, s0, s1);
         fmpq_div_fmpz(s2, s2, cd);

@@ -32,7 +32,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <stdarg.h>
-#include <time.h>
 #include <flint/fmpq_poly.h>
 #include "recstab/budget.h"
 #include "recstab/routh.h"
@@ -434,10 +433,11 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
     slong m, i, j, nodiv = 0;
     fmpz_mpoly_t t, u;
     int status = RS_OK;
-    double raw, scale = 1.0;
-    clock_t c0;
+    double raw;
+    rs_budget_calib_t cal;
 
     rs_routh_mpoly_clear(r, ctx);
+    rs_budget_calib_init(&cal);
     r->zero_row = -1;
     m = fmpz_mpoly_degree_si(q, var, ctx);
     if (m < 0)
@@ -486,20 +486,17 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
         }
         {
             /* one product can take minutes: estimate the row, and stop
-             * between products when the budget runs out.  The estimate is
-             * calibrated on the rows already formed, as in hurwitz.c: times
-             * max(1, measured / estimated) of the last row that took
-             * >= 0.05 s CPU (on sparse many-parameter rows it runs 14-25x
-             * low, issue 17) */
+             * between products when the budget runs out; the estimate is
+             * calibrated on the rows already formed (rs_budget_calib_t) */
             raw = 0.0;
             for (j = 0; j < r->rowlen[i]; j++) {
                 raw += rs_budget_mpoly_mul_seconds(piv, up + j + 1);
                 if (j + 1 < r->rowlen[i - 1])
                     raw += rs_budget_mpoly_mul_seconds(up, r->rows[i - 1] + j + 1);
             }
-            status = rs_budget_estimate(err, "a row of the symbolic Routh array", raw * scale, 0.0);
+            status = rs_budget_estimate(err, "a row of the symbolic Routh array",
+                                        rs_budget_calib_begin(&cal, raw), 0.0);
         }
-        c0 = clock();
         for (j = 0; j < r->rowlen[i] && status == RS_OK; j++) {
             fmpz_mpoly_struct *out = r->rows[i] + j;
             if ((status = rs_budget_check(err, "the symbolic Routh array")) != RS_OK)
@@ -518,11 +515,8 @@ int rs_routh_mpoly(rs_routh_mpoly_t r, const fmpz_mpoly_t q, slong var,
             } else
                 fmpz_mpoly_swap(out, t, ctx);
         }
-        if (status == RS_OK) {
-            double cpu = (double) (clock() - c0) / CLOCKS_PER_SEC;
-            if (cpu >= 0.05 && raw > 0.0)
-                scale = FLINT_MAX(1.0, cpu / raw);
-        }
+        if (status == RS_OK)
+            rs_budget_calib_end(&cal);
     }
     fmpz_mpoly_clear(t, ctx);
     fmpz_mpoly_clear(u, ctx);

@@ -225,3 +225,24 @@ double rs_budget_mpoly_mul_seconds(const fmpz_mpoly_t a, const fmpz_mpoly_t b)
     double limbs = 1.0 + (double) (FLINT_ABS(fmpz_mpoly_max_bits(a)) + FLINT_ABS(fmpz_mpoly_max_bits(b))) / 64.0;
     return 4e-10 * (double) a->length * (double) b->length * limbs;
 }
+
+void rs_budget_calib_init(rs_budget_calib_t *c)
+{
+    c->scale = 1.0;
+    c->raw = 0.0;
+    c->c0 = clock();
+}
+
+double rs_budget_calib_begin(rs_budget_calib_t *c, double raw)
+{
+    c->raw = raw;
+    c->c0 = clock();
+    return raw * c->scale;
+}
+
+void rs_budget_calib_end(rs_budget_calib_t *c)
+{
+    double cpu = (double) (clock() - c->c0) / CLOCKS_PER_SEC;
+    if (cpu >= 0.05 && c->raw > 0.0)
+        c->scale = cpu / c->raw > 1.0 ? cpu / c->raw : 1.0;
+}
