@@ -169,5 +169,6 @@ r = json.load(open('$T/deadbeat.json'))['cases'][0]['results']
 h, j = r[0], r[1]
 assert h['analysis'] == 'hurwitz' and h['degree'] == 0 and h['minors'] == [] and h['conditions'] == [], h
 assert 'dead-beat' in h['verdict'] and j['conditions'] == [], (h, j)
+assert h['sample_check']['agree'] is True and h['sample_check']['points'] > 0, h
 " 2>"$T/deadbeat.py"; then ok "hurwitz dead-beat: no minor, no condition, as jury"
 else fail "hurwitz dead-beat: $(head -c 400 "$T/deadbeat.py")"; fi
