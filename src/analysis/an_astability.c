@@ -33,9 +33,10 @@
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
 
-/* p = sum_k C[k](lambda) z^k */
+/* p = sum_k (C[k] + i Ci[k])(lambda) z^k: Ci is zero unless p is over Q(i)
+ * (complex set values, or a `char` line with i) */
 typedef struct {
-    fmpz_poly_struct *C;
+    fmpz_poly_struct *C, *Ci;
     slong K;          /* degree in z */
     slong n;          /* degree in lambda */
 } zpoly_t;
@@ -154,11 +155,18 @@ static void eval_at(fmpq_poly_t re, fmpq_poly_t im, const zpoly_t *P, const fmpq
     fmpq_poly_zero(re);
     fmpq_poly_zero(im);
     for (k = 0; k <= P->K; k++) {
+        /* (C + i Ci)(pr + i pi) */
         fmpq_poly_set_fmpz_poly(c, P->C + k);
         fmpq_poly_scalar_mul_fmpq(c, c, pr);
         fmpq_poly_add(re, re, c);
         fmpq_poly_set_fmpz_poly(c, P->C + k);
         fmpq_poly_scalar_mul_fmpq(c, c, pi);
+        fmpq_poly_add(im, im, c);
+        fmpq_poly_set_fmpz_poly(c, P->Ci + k);
+        fmpq_poly_scalar_mul_fmpq(c, c, pi);
+        fmpq_poly_sub(re, re, c);
+        fmpq_poly_set_fmpz_poly(c, P->Ci + k);
+        fmpq_poly_scalar_mul_fmpq(c, c, pr);
         fmpq_poly_add(im, im, c);
         /* (pr + i pi) *= z0 */
         fmpq_mul(t, pr, zr);
@@ -189,19 +197,36 @@ static void split_line(fmpz_poly_t re, fmpz_poly_t im, const fmpz_poly_t c, int 
     }
 }
 
-/* the polynomial in z of coefficient j of lambda (j = -1: p at lambda = -1) */
-static void zcoeff(fmpz_poly_t out, const zpoly_t *P, slong j)
+/* (cr + i ci)(i^e s) = re(s) + i im(s) */
+static void split_line_cx(fmpz_poly_t re, fmpz_poly_t im, const fmpz_poly_t cr, const fmpz_poly_t ci, int e)
+{
+    fmpz_poly_t a, b;
+    fmpz_poly_init(a); fmpz_poly_init(b);
+    split_line(re, im, cr, e);
+    split_line(a, b, ci, e);
+    fmpz_poly_sub(re, re, b);
+    fmpz_poly_add(im, im, a);
+    fmpz_poly_clear(a); fmpz_poly_clear(b);
+}
+
+/* the polynomial in z of coefficient j of lambda (j = -1: p at lambda = -1),
+ * real and imaginary part */
+static void zcoeff(fmpz_poly_t out, fmpz_poly_t outi, const zpoly_t *P, slong j)
 {
     slong k;
+    int part;
     fmpz_poly_zero(out);
-    for (k = 0; k <= P->K; k++) {
-        fmpz_t x;
-        fmpz_init(x);
-        if (j >= 0) fmpz_poly_get_coeff_fmpz(x, P->C + k, j);
-        else fmpz_poly_evaluate_fmpz(x, P->C + k, (fmpz_t) {-1});
-        fmpz_poly_set_coeff_fmpz(out, k, x);
-        fmpz_clear(x);
-    }
+    fmpz_poly_zero(outi);
+    for (part = 0; part < 2; part++)
+        for (k = 0; k <= P->K; k++) {
+            const fmpz_poly_struct *c = (part ? P->Ci : P->C) + k;
+            fmpz_t x;
+            fmpz_init(x);
+            if (j >= 0) fmpz_poly_get_coeff_fmpz(x, c, j);
+            else fmpz_poly_evaluate_fmpz(x, c, (fmpz_t) {-1});
+            fmpz_poly_set_coeff_fmpz(part ? outi : out, k, x);
+            fmpz_clear(x);
+        }
 }
 
 /* (1-w)^n c((1+w)/(1-w)) */
@@ -224,8 +249,6 @@ static void bilinear_n(fmpz_poly_t out, const fmpz_poly_t c, slong n)
     fmpz_poly_clear(a); fmpz_poly_clear(b); fmpz_poly_clear(t);
 }
 
-/* c(i t) = re(t) + i im(t) (the bilinear variable on the circle) */
-static void split_it(fmpz_poly_t re, fmpz_poly_t im, const fmpz_poly_t c) { split_line(re, im, c, 1); }
 
 /* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
 static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
@@ -248,18 +271,21 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
 {
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t A, B, G, R, T;
-    fmpz_poly_t cb, re, im, u, g;
+    fmpz_poly_t cb, ci, re, im, u, g;
     slong k, a;
+    int part;
     fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
     fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(G, ctx);
     fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(T, ctx);
-    fmpz_poly_init(cb); fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(u); fmpz_poly_init(g);
-    /* q(i t, i^e s) = A + i B */
+    fmpz_poly_init(cb); fmpz_poly_init(ci); fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(u);
+    fmpz_poly_init(g);
+    /* q(i t, i^e s) = A + i B; the imaginary parts of p's coefficients turn by one more i */
+    for (part = 0; part < 2; part++)
     for (k = 0; k <= P->K; k++) {
-        bilinear_n(cb, P->C + k, P->n);
+        bilinear_n(cb, (part ? P->Ci : P->C) + k, P->n);
         for (a = 0; a <= fmpz_poly_degree(cb); a++) {
             ulong ex[2];
-            slong r = (a + e * k) % 4;
+            slong r = (a + e * k + part) % 4;
             fmpz_t c;
             fmpz_init(c);
             ex[0] = (ulong) a; ex[1] = (ulong) k;
@@ -303,12 +329,12 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
     }
     /* lambda = -1 (t = inf) and the leading coefficient: common real roots of both parts */
     for (k = 0; k < 2; k++) {
-        zcoeff(cb, P, k == 0 ? -1 : P->n);
-        split_line(re, im, cb, e);
+        zcoeff(cb, ci, P, k == 0 ? -1 : P->n);
+        split_line_cx(re, im, cb, ci, e);
         fmpz_poly_gcd(g, re, im);
         if (!fmpz_poly_is_zero(g)) rs_alg_roots_append(crit, ncrit, g, 0);
     }
-    fmpz_poly_clear(cb); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
+    fmpz_poly_clear(cb); fmpz_poly_clear(ci); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
     fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
     fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(T, ctx);
     fmpz_mpoly_ctx_clear(ctx);
@@ -333,18 +359,60 @@ static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0
     return r;
 }
 
-/* 1 when the irreducible f divides both parts of c(i^e s) */
-static int vanishes_at(const fmpz_poly_t c, int e, const fmpz_poly_t f)
+/* 1 when the irreducible f divides both parts of (c + i ci)(i^e s) */
+static int vanishes_at(const fmpz_poly_t c, const fmpz_poly_t ci, int e, const fmpz_poly_t f)
 {
     fmpz_poly_t re, im, r;
     int z;
     fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(r);
-    split_line(re, im, c, e);
+    split_line_cx(re, im, c, ci, e);
     fmpz_poly_gcd(r, re, im);
     fmpz_poly_gcd(r, r, f);
     z = fmpz_poly_degree(r) >= 1;
     fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(r);
     return z;
+}
+
+/* the discriminant of p in lambda, a polynomial in z over Q(i): computed in
+ * Z[lambda, z, I] and reduced by I^2 = -1 (it is polynomial in the
+ * coefficients); one root (n = 1) is never repeated */
+static void zdisc(fmpz_poly_t dr, fmpz_poly_t di, const zpoly_t *P)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p, d;
+    slong k, j, t;
+    int part;
+    fmpz_poly_zero(dr);
+    fmpz_poly_zero(di);
+    if (P->n == 1) { fmpz_poly_one(dr); return; }
+    fmpz_mpoly_ctx_init(ctx, 3, ORD_LEX);
+    fmpz_mpoly_init(p, ctx); fmpz_mpoly_init(d, ctx);
+    for (part = 0; part < 2; part++)
+        for (k = 0; k <= P->K; k++) {
+            const fmpz_poly_struct *c = (part ? P->Ci : P->C) + k;
+            for (j = 0; j <= fmpz_poly_degree(c); j++) {
+                ulong ex[3];
+                ex[0] = (ulong) j; ex[1] = (ulong) k; ex[2] = (ulong) part;
+                if (!fmpz_is_zero(c->coeffs + j)) fmpz_mpoly_set_coeff_fmpz_ui(p, c->coeffs + j, ex, ctx);
+            }
+        }
+    if (fmpz_mpoly_discriminant(d, p, 0, ctx))
+        for (t = 0; t < fmpz_mpoly_length(d, ctx); t++) {
+            ulong ex[3];
+            fmpz_t c, o;
+            fmpz_poly_struct *dst;
+            fmpz_init(c); fmpz_init(o);
+            fmpz_mpoly_get_term_coeff_fmpz(c, d, t, ctx);
+            fmpz_mpoly_get_term_exp_ui(ex, d, t, ctx);
+            if ((ex[2] % 4) >= 2) fmpz_neg(c, c);
+            dst = (ex[2] % 2) ? di : dr;
+            fmpz_poly_get_coeff_fmpz(o, dst, (slong) ex[1]);
+            fmpz_add(o, o, c);
+            fmpz_poly_set_coeff_fmpz(dst, (slong) ex[1], o);
+            fmpz_clear(c); fmpz_clear(o);
+        }
+    fmpz_mpoly_clear(p, ctx); fmpz_mpoly_clear(d, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
 }
 
 /* An interval of the line: [lo, hi] with infinite ends NULL. */
@@ -356,7 +424,8 @@ typedef struct {
 } line_iv_t;
 
 /* The bounded component of z = i^e s containing s = 0. */
-static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc, int e, rs_error_t err)
+static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc, const fmpz_poly_t disci, int e,
+                         rs_error_t err)
 {
     rs_alg_t *crit = NULL;
     slong ncrit = 0, npc, i, j, start = -1;
@@ -388,15 +457,15 @@ static int line_interval(line_iv_t *iv, const zpoly_t *P, const fmpz_poly_t disc
             pdec[i] = 1;
             if (fmpq_is_zero(c->q)) start = i;
         } else {
-            fmpz_poly_t lc;
-            fmpz_poly_init(lc);
-            zcoeff(lc, P, P->n);
-            if (vanishes_at(lc, e, c->minpoly)) { pst[i] = RS_STATUS_SINGULAR; pdec[i] = 1; }
-            else if ((bounded(pst[i - 1]) || bounded(pst[i + 1])) && !vanishes_at(disc, e, c->minpoly)) {
+            fmpz_poly_t lc, lci;
+            fmpz_poly_init(lc); fmpz_poly_init(lci);
+            zcoeff(lc, lci, P, P->n);
+            if (vanishes_at(lc, lci, e, c->minpoly)) { pst[i] = RS_STATUS_SINGULAR; pdec[i] = 1; }
+            else if ((bounded(pst[i - 1]) || bounded(pst[i + 1])) && !vanishes_at(disc, disci, e, c->minpoly)) {
                 /* the limit of bounded roots, all simple there */
                 pst[i] = RS_STATUS_MARGINAL; pdec[i] = 1;
             }
-            fmpz_poly_clear(lc);
+            fmpz_poly_clear(lc); fmpz_poly_clear(lci);
         }
     }
     if (r == RS_OK) {
@@ -481,6 +550,60 @@ static int nonneg_everywhere(const fmpz_poly_t f, fmpq_t t0)
 }
 
 static char *poly_str(const fmpz_poly_t f, const char *var) { return rs_polyfmt_fmpz_poly(f, var); }
+
+/* cr + i ci as text */
+static char *cx_str(const fmpz_poly_t cr, const fmpz_poly_t ci, const char *var)
+{
+    fmpq_poly_t a, b;
+    char *out;
+    if (fmpz_poly_is_zero(ci)) return poly_str(cr, var);
+    fmpq_poly_init(a); fmpq_poly_init(b);
+    fmpq_poly_set_fmpz_poly(a, cr);
+    fmpq_poly_set_fmpz_poly(b, ci);
+    out = rs_cx_poly_str(a, b, var);
+    fmpq_poly_clear(a); fmpq_poly_clear(b);
+    return out;
+}
+
+/* p = sum_k (C[k] + i Ci[k]) z^k as text (malloc'd) */
+static char *zpoly_str(const zpoly_t *P, const char *z)
+{
+    char *out = malloc(1), *t;
+    slong k;
+    out[0] = '\0';
+    for (k = 0; k <= P->K; k++) {
+        if (fmpz_poly_is_zero(P->C + k) && fmpz_poly_is_zero(P->Ci + k)) continue;
+        t = cx_str(P->C + k, P->Ci + k, "lambda");
+        out = realloc(out, strlen(out) + strlen(t) + strlen(z) + 40);
+        sprintf(out + strlen(out), "%s(%s)", out[0] ? " + " : "", t);
+        if (k >= 1) sprintf(out + strlen(out), "*%s", z);
+        if (k >= 2) sprintf(out + strlen(out), "^%ld", (long) k);
+        free(t);
+    }
+    return out;
+}
+
+/* z = -(a + i b)/(c + i d); 1 when c + i d != 0 and Re z < 0 */
+static int cx_neg_ratio(fmpq_t zr, fmpq_t zi, const fmpz_t a, const fmpz_t b, const fmpz_t c, const fmpz_t d)
+{
+    fmpz_t n, m;
+    int neg;
+    if (fmpz_is_zero(c) && fmpz_is_zero(d)) return 0;
+    fmpz_init(n); fmpz_init(m);
+    /* -(a + i b)(c - i d)/(c^2 + d^2) */
+    fmpz_mul(m, c, c);
+    fmpz_addmul(m, d, d);
+    fmpz_mul(n, a, c);
+    fmpz_addmul(n, b, d);
+    fmpz_neg(n, n);
+    fmpq_set_fmpz_frac(zr, n, m);
+    fmpz_mul(n, a, d);
+    fmpz_submul(n, b, c);
+    fmpq_set_fmpz_frac(zi, n, m);
+    neg = fmpq_sgn(zr) < 0;
+    fmpz_clear(n); fmpz_clear(m);
+    return neg;
+}
 
 /* A(alpha) for p = P0 + z P1: alpha as a certified ball in degrees, its
  * exact description and the locus point; *alpha_zero when the locus meets
@@ -690,52 +813,83 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     const rs_scheme_struct *s;
     zpoly_t P;
     line_iv_t riv, iiv;
-    fmpz_poly_t disc, lc;
+    fmpz_poly_t disc, disci, lc;
     json_t *o, *ev;
-    int r, lin_decided = 0, lin_astable = 0, one_decided = 0, one_astable = 0, a_stable = -1;
+    int r, lin_decided = 0, lin_astable = 0, one_decided = 0, one_astable = 0, a_stable = -1, cx;
     rs_status_t st_m1 = RS_STATUS_UNSTABLE;
     fmpq_t zr, zi;
-    r = rs_run_variant_one_free(&v, run, q, req->rest, tv, "astability");
+    fmpz_mpoly_struct *pre = NULL, *pim = NULL;
+    if (rs_an_complex_mode(run)) {
+        /* complex set values stay symbolic in the variant; rs_run_cx_poly substitutes them over Q(i) */
+        const char *keep[1];
+        rs_assign_t *a = NULL;
+        slong na = 0;
+        for (k = 0; k < run->c->ncsets; k++)
+            if (strcmp(run->c->csets[k].name, name) == 0)
+                return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "astability: '%s' has a complex set value: "
+                                    "z is the parameter without one", name);
+        keep[0] = name;
+        rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+        r = rs_run_variant(&v, run, a, na);
+        rs_assign_free(a, na);
+    } else r = rs_run_variant_one_free(&v, run, q, req->rest, tv, "astability");
     if (r != RS_OK) return r;
     s = v->s;
-    P.K = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
-    P.n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
-    if (P.K < 1 || P.n < 1)
+    cx = rs_an_complex_mode(run) || s->complex_char;
+    if (cx) {
+        /* p = re + i im over Q(i): every parameter but z must be a number now */
+        char msg[300];
+        pre = flint_malloc(sizeof(fmpz_mpoly_struct));
+        pim = flint_malloc(sizeof(fmpz_mpoly_struct));
+        fmpz_mpoly_init(pre, s->zctx); fmpz_mpoly_init(pim, s->zctx);
+        P.n = rs_run_cx_poly(pre, pim, run, v);
+        msg[0] = '\0';
+        for (k = 0; k < s->nvars; k++) {
+            if (k == s->lambda_var || k == tv) continue;
+            if (fmpz_mpoly_degree_si(pre, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(pim, k, s->zctx) <= 0) continue;
+            if (strlen(msg) + strlen(s->vars[k]) + 3 < sizeof msg)
+                sprintf(msg + strlen(msg), "%s%s", msg[0] ? ", " : "", s->vars[k]);
+        }
+        if (msg[0]) {
+            fmpz_mpoly_clear(pre, s->zctx); fmpz_mpoly_clear(pim, s->zctx);
+            flint_free(pre); flint_free(pim);
+            return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "astability needs the other parameters set to "
+                                "numbers (real or complex); still symbolic: %s", msg);
+        }
+        P.K = FLINT_MAX(fmpz_mpoly_degree_si(pre, tv, s->zctx), fmpz_mpoly_degree_si(pim, tv, s->zctx));
+    } else {
+        P.K = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
+        P.n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    }
+    if (P.K < 1 || P.n < 1) {
+        if (cx) {
+            fmpz_mpoly_clear(pre, s->zctx); fmpz_mpoly_clear(pim, s->zctx);
+            flint_free(pre); flint_free(pim);
+        }
         return rs_req_error(run, q, req->rest, RS_ERR_INPUT,
                             "astability: the characteristic polynomial must depend on '%s' and on lambda", name);
+    }
     P.C = flint_malloc((P.K + 1) * sizeof(fmpz_poly_struct));
+    P.Ci = flint_malloc((P.K + 1) * sizeof(fmpz_poly_struct));
     for (k = 0; k <= P.K; k++) {
         fmpz_poly_init(P.C + k);
-        rs_run_coeff_in(P.C + k, v->cp->p, tv, k, s);
+        fmpz_poly_init(P.Ci + k);
+        rs_run_coeff_in(P.C + k, cx ? pre : v->cp->p, tv, k, s);
+        if (cx) rs_run_coeff_in(P.Ci + k, pim, tv, k, s);
     }
-    fmpz_poly_init(disc); fmpz_poly_init(lc);
+    if (cx) {
+        fmpz_mpoly_clear(pre, s->zctx); fmpz_mpoly_clear(pim, s->zctx);
+        flint_free(pre); flint_free(pim);
+    }
+    fmpz_poly_init(disc); fmpz_poly_init(disci); fmpz_poly_init(lc);
     fmpq_init(zr); fmpq_init(zi);
-    {
-        /* the discriminant in lambda, a polynomial in z */
-        fmpz_mpoly_t d;
-        fmpz_mpoly_init(d, s->zctx);
-        if (fmpz_mpoly_discriminant(d, v->cp->p, s->lambda_var, s->zctx)) {
-            fmpz_mpoly_t c;
-            fmpz_mpoly_init(c, s->zctx);
-            for (k = 0; k <= fmpz_mpoly_degree_si(d, tv, s->zctx); k++) {
-                ulong kk = (ulong) k;
-                fmpz_t x;
-                fmpz_init(x);
-                fmpz_mpoly_get_coeff_vars_ui(c, d, &tv, &kk, 1, s->zctx);
-                if (fmpz_mpoly_is_fmpz(c, s->zctx)) fmpz_mpoly_get_fmpz(x, c, s->zctx);
-                fmpz_poly_set_coeff_fmpz(disc, k, x);
-                fmpz_clear(x);
-            }
-            fmpz_mpoly_clear(c, s->zctx);
-        }
-        fmpz_mpoly_clear(d, s->zctx);
-        if (P.n == 1) fmpz_poly_one(disc);   /* one root: never repeated */
-    }
+    zdisc(disc, disci, &P);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("astability"));
     json_object_set_new(o, "param", json_string(name));
-    r = line_interval(&riv, &P, disc, 0, run->err);
-    if (r == RS_OK) r = line_interval(&iiv, &P, disc, 1, run->err);
+    if (cx) json_object_set_new(o, "over", json_string("Q(i)"));
+    r = line_interval(&riv, &P, disc, disci, 0, run->err);
+    if (r == RS_OK) r = line_interval(&iiv, &P, disc, disci, 1, run->err);
     else rs_alg_init(&iiv.lo), rs_alg_init(&iiv.hi);
     if (r != RS_OK) goto out;
     json_object_set_new(o, "real_interval", line_iv_json(&riv, name));
@@ -756,8 +910,10 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         fmpq_init(t0); fmpq_init(w);
         bilinear_n(q0, P.C + 0, P.n);
         bilinear_n(q1, P.C + 1, P.n);
-        split_it(a0, b0, q0);
-        split_it(a1, b1, q1);
+        bilinear_n(X, P.Ci + 0, P.n);
+        bilinear_n(Y, P.Ci + 1, P.n);
+        split_line_cx(a0, b0, q0, X, 1);
+        split_line_cx(a1, b1, q1, Y, 1);
         fmpz_poly_mul(X, a0, a1);
         fmpz_poly_mul(t1, b0, b1);
         fmpz_poly_add(X, X, t1);
@@ -766,7 +922,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         fmpz_poly_mul(t1, a1, b0);
         fmpz_poly_sub(Y, Y, t1);
         {
-            char *p0 = poly_str(P.C + 0, "lambda"), *p1 = poly_str(P.C + 1, "lambda");
+            char *p0 = cx_str(P.C + 0, P.Ci + 0, "lambda"), *p1 = cx_str(P.C + 1, P.Ci + 1, "lambda");
             char *buf = malloc(strlen(p0) + strlen(p1) + 120);
             sprintf(buf, "%s = -(%s)/(%s), lambda = exp(i*phi), 0 <= phi < 2*pi", name, p0, p1);
             json_object_set_new(o, "boundary_locus", json_string(buf));
@@ -776,22 +932,22 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                                 "re_numerator", p0, "im_numerator", p1));
             free(p0); free(p1);
         }
-        /* lambda = -1 (t = inf): z_inf = -P0(-1)/P1(-1) must not be negative */
+        /* lambda = -1 (t = inf): z_inf = -P0(-1)/P1(-1) must not lie in Re z < 0,
+         * nor -lc(P0)/lc(P1), where the leading coefficient vanishes */
         {
-            fmpz_t v0, v1;
-            fmpz_init(v0); fmpz_init(v1);
+            fmpz_t v0, v0i, v1, v1i;
+            fmpz_init(v0); fmpz_init(v0i); fmpz_init(v1); fmpz_init(v1i);
             fmpz_poly_evaluate_fmpz(v0, P.C + 0, (fmpz_t) {-1});
+            fmpz_poly_evaluate_fmpz(v0i, P.Ci + 0, (fmpz_t) {-1});
             fmpz_poly_evaluate_fmpz(v1, P.C + 1, (fmpz_t) {-1});
-            if (!fmpz_is_zero(v1) && fmpz_sgn(v0) * fmpz_sgn(v1) > 0) {
-                infok = 0;
-                fmpq_set_fmpz_frac(zr, v0, v1);
-                fmpq_neg(zr, zr);
-            }
-            /* the leading coefficient vanishes at -lc(P0)/lc(P1) */
+            fmpz_poly_evaluate_fmpz(v1i, P.Ci + 1, (fmpz_t) {-1});
+            if (cx_neg_ratio(zr, zi, v0, v0i, v1, v1i)) infok = 0;
             fmpz_poly_get_coeff_fmpz(v0, P.C + 0, P.n);
+            fmpz_poly_get_coeff_fmpz(v0i, P.Ci + 0, P.n);
             fmpz_poly_get_coeff_fmpz(v1, P.C + 1, P.n);
-            if (!fmpz_is_zero(v1) && fmpz_sgn(v0) * fmpz_sgn(v1) > 0) lcok = 0;
-            fmpz_clear(v0); fmpz_clear(v1);
+            fmpz_poly_get_coeff_fmpz(v1i, P.Ci + 1, P.n);
+            if (cx_neg_ratio(w, t0, v0, v0i, v1, v1i)) lcok = 0;
+            fmpz_clear(v0); fmpz_clear(v0i); fmpz_clear(v1); fmpz_clear(v1i);
         }
         xnonneg = nonneg_everywhere(X, t0);
         lin_decided = 1;
@@ -819,7 +975,6 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                 fmpq_clear(yv);
                 fmpz_poly_clear(W);
             } else if (!infok) {
-                fmpq_zero(zi);
                 json_object_set_new(e, "counterexample", lhp_evidence(&P, zr, zi, run->err));
             }
             json_array_append_new(ev, e);
@@ -860,7 +1015,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         fmpz_poly_clear(a1); fmpz_poly_clear(b1); fmpz_poly_clear(X); fmpz_poly_clear(Y); fmpz_poly_clear(t1);
         fmpq_clear(t0); fmpq_clear(w);
     } else {
-        char *pp = rs_polyfmt_fmpz_mpoly(v->cp->p, (const char **) s->vars, s->zctx);
+        char *pp = cx ? zpoly_str(&P, name) : rs_polyfmt_fmpz_mpoly(v->cp->p, (const char **) s->vars, s->zctx);
         char *buf = malloc(strlen(pp) + 120);
         sprintf(buf, "p(lambda, %s) = 0 with lambda = exp(i*phi), p = %s", name, pp);
         json_object_set_new(o, "boundary_locus", json_string(buf));
@@ -869,24 +1024,42 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     }
     /* route 2: one-step methods p = D(z) lambda - N(z): E(y) >= 0 and poles in Re z > 0 */
     if (P.n == 1) {
-        fmpz_poly_t D, N, dr, di, nr, ni, E, t1, Dt;
+        fmpz_poly_t D, N, Di, Ni, dr, di, nr, ni, E, t1, Dt;
         fmpq_t y0;
         rs_rootcount_t rc;
         int enonneg, poles_ok = 1;
         fmpz_poly_init(D); fmpz_poly_init(N); fmpz_poly_init(dr); fmpz_poly_init(di); fmpz_poly_init(nr);
         fmpz_poly_init(ni); fmpz_poly_init(E); fmpz_poly_init(t1); fmpz_poly_init(Dt);
+        fmpz_poly_init(Di); fmpz_poly_init(Ni);
         fmpq_init(y0);
         rs_rootcount_init(rc);
-        zcoeff(D, &P, 1);
-        zcoeff(N, &P, 0);
-        split_line(dr, di, D, 1);
-        split_line(nr, ni, N, 1);
+        zcoeff(D, Di, &P, 1);
+        zcoeff(N, Ni, &P, 0);
+        split_line_cx(dr, di, D, Di, 1);
+        split_line_cx(nr, ni, N, Ni, 1);
         fmpz_poly_mul(E, dr, dr);
         fmpz_poly_mul(t1, di, di); fmpz_poly_add(E, E, t1);
         fmpz_poly_mul(t1, nr, nr); fmpz_poly_sub(E, E, t1);
         fmpz_poly_mul(t1, ni, ni); fmpz_poly_sub(E, E, t1);
         enonneg = nonneg_everywhere(E, y0);
-        if (fmpz_poly_degree(D) >= 1) {
+        if (!fmpz_poly_is_zero(Di)) {
+            /* D over Q(i): the same map, its image decided by complex Schur-Cohn and Bilharz */
+            slong m = FLINT_MAX(fmpz_poly_degree(D), fmpz_poly_degree(Di));
+            fmpq_poly_t ar, ai;
+            rs_status_t dst;
+            fmpq_poly_init(ar); fmpq_poly_init(ai);
+            bilinear_n(Dt, D, m);
+            fmpq_poly_set_fmpz_poly(ar, Dt);
+            bilinear_n(Dt, Di, m);
+            fmpq_poly_set_fmpz_poly(ai, Dt);
+            if (m >= 1) {
+                if (FLINT_MAX(fmpq_poly_degree(ar), fmpq_poly_degree(ai)) < m) poles_ok = 0;   /* a pole at z = -1 */
+                else if ((r = rs_routh_complex_checked_status(&dst, ar, ai, m, run->err)) == RS_OK)
+                    poles_ok = dst == RS_STATUS_STABLE;
+            }
+            fmpq_poly_clear(ar); fmpq_poly_clear(ai);
+            if (r != RS_OK) goto one_out;
+        } else if (fmpz_poly_degree(D) >= 1) {
             /* z in Re z > 0 <=> w = (z - 1)/(z + 1) inside the unit disc: D((1+w)/(1-w)) (1-w)^m */
             bilinear_n(Dt, D, fmpz_poly_degree(D));
             if (fmpz_poly_degree(Dt) < fmpz_poly_degree(D)) poles_ok = 0;   /* a pole at z = -1 */
@@ -907,6 +1080,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         rs_rootcount_clear(rc);
         fmpz_poly_clear(D); fmpz_poly_clear(N); fmpz_poly_clear(dr); fmpz_poly_clear(di); fmpz_poly_clear(nr);
         fmpz_poly_clear(ni); fmpz_poly_clear(E); fmpz_poly_clear(t1); fmpz_poly_clear(Dt);
+        fmpz_poly_clear(Di); fmpz_poly_clear(Ni);
         fmpq_clear(y0);
         if (r != RS_OK) { json_decref(ev); goto out; }
     }
@@ -949,10 +1123,16 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "evidence", ev);
     /* z -> inf: the roots of the top coefficient in z; fewer than n: some go to infinity */
     {
-        const fmpz_poly_struct *c = P.C + P.K;
+        /* over Q(i): c conj(c) = C^2 + Ci^2 has c's roots and their conjugates, the same moduli */
+        fmpz_poly_t c, ct;
         json_t *lim;
         int l0 = 0;
-        if (fmpz_poly_degree(c) < P.n) lim = json_string("inf");
+        fmpz_poly_init(c); fmpz_poly_init(ct);
+        fmpz_poly_mul(c, P.C + P.K, P.C + P.K);
+        fmpz_poly_mul(ct, P.Ci + P.K, P.Ci + P.K);
+        fmpz_poly_add(c, c, ct);
+        if (fmpz_poly_is_zero(P.Ci + P.K)) fmpz_poly_set(c, P.C + P.K);
+        if (FLINT_MAX(fmpz_poly_degree(P.C + P.K), fmpz_poly_degree(P.Ci + P.K)) < P.n) lim = json_string("inf");
         else {
             fmpz_poly_factor_t fac;
             arb_t m, ab;
@@ -990,7 +1170,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                 l0 = fmpq_is_zero(best);
                 rs_alg_clear(&a);
             } else {
-                char *cs = poly_str(c, "lambda"), *ms = rs_radius_arb_str(m, 20);
+                char *cs = cx_str(P.C + P.K, P.Ci + P.K, "lambda"), *ms = rs_radius_arb_str(m, 20);
                 char *buf = malloc(strlen(cs) + 40);
                 sprintf(buf, "max |root| of %s", cs);
                 lim = json_pack("{s:s,s:f,s:s}", "exact", buf, "approx", arf_get_d(arb_midref(m), ARF_RND_NEAR),
@@ -1003,16 +1183,19 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         }
         json_object_set_new(o, "limit_at_infinity", lim);
         json_object_set_new(o, "l_stable", a_stable == -1 ? json_null() : json_boolean(a_stable == 1 && l0));
+        fmpz_poly_clear(c); fmpz_poly_clear(ct);
     }
     rs_run_emit_exact(run, v, o);
+    if (rs_an_complex_mode(run)) json_object_update_new(json_object_get(o, "substituted"), rs_run_cx_at(run));
     o = NULL;
 out:
     json_decref(o);
     line_iv_clear(&riv);
     line_iv_clear(&iiv);
-    for (k = 0; k <= P.K; k++) fmpz_poly_clear(P.C + k);
+    for (k = 0; k <= P.K; k++) { fmpz_poly_clear(P.C + k); fmpz_poly_clear(P.Ci + k); }
     flint_free(P.C);
-    fmpz_poly_clear(disc); fmpz_poly_clear(lc);
+    flint_free(P.Ci);
+    fmpz_poly_clear(disc); fmpz_poly_clear(disci); fmpz_poly_clear(lc);
     fmpq_clear(zr); fmpq_clear(zi);
     return r;
 }

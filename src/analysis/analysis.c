@@ -160,7 +160,8 @@ static int check_complex_sets(const rs_case_t c, const rs_model_t m, rs_error_t 
 static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
 {
     static const char *const ok[] = {"charpoly", "bilinear", "routh", "hurwitz", "jury", "stability", "radius",
-                                      "modes", "claim", "sweep", "region", "map", "simulate", "limit", "expect", NULL};
+                                      "modes", "claim", "sweep", "region", "map", "simulate", "limit", "expect",
+                                      "astability", NULL};
     const rs_cset_t *x = run->c->csets;
     const char *nm = req->def->name;
     char *val, msg[RS_ERROR_MSG_LEN];
@@ -206,7 +207,8 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         if (strcmp(req->def->name, ok[k]) == 0) return RS_OK;
     val = rs_complex_str(x->re, x->im);
     snprintf(msg, sizeof msg, "'%s' does not run at a complex set value (%s = %s): over Q(i) recstab runs "
-             "charpoly, bilinear, routh, hurwitz, jury, stability, radius, modes, sweep, map, simulate, limit, claim and region NAME", req->def->name,
+             "charpoly, bilinear, routh, hurwitz, jury, stability, radius, modes, sweep, map, simulate, limit, astability, "
+             "claim and region NAME", req->def->name,
              x->name, val);
     free(val);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);

@@ -10,7 +10,12 @@
  *   - BDF1..6 zero-stable, BDF7 not (Hairer, Norsett, Wanner I, Theorem
  *     III.3.4): the roots of rho(lambda)/(lambda - 1) isolated with Arb;
  *   - Adams real intervals: z = rho(-1)/sigma(-1) by hand (case comments);
- *   - trapezoid / implicit midpoint R(inf) = -1, Radau IIA R(inf) = 0. */
+ *   - trapezoid / implicit midpoint R(inf) = -1, Radau IIA R(inf) = 0;
+ *   - over Q(i) (complex set values, a char line with i): the theta method
+ *     with complex weight a = alpha + i beta, whose region is
+ *     2 Re z + (1 - 2 alpha)|z|^2 < 0 by expanding |R(z)| < 1 by hand (the
+ *     case comment), checked again here on |R| in complex double; the
+ *     rotated Euler root lambda = 1 + i z. */
 #include "testutil.h"
 #include <string.h>
 #include <math.h>
@@ -246,6 +251,83 @@ static void test_adams(void **state)
     json_decref(doc);
 }
 
+/* |R(z)| of the theta method with complex weight a, in complex double */
+static double theta_absR(double complex a, double complex z) { return cabs((1 + (1 - a) * z) / (1 - a * z)); }
+
+static json_t *theta_text(const char *a, json_t **r)
+{
+    char text[300];
+    int outcome;
+    json_t *doc;
+    snprintf(text, sizeof text, "param q\nparam a\nchar (1 - a*q)*lambda - (1 + (1 - a)*q)\nset a = %s\n"
+             "analyse astability q\n", a);
+    doc = tu_run_text(text, NULL, &outcome, NULL);
+    *r = json_array_get(json_object_get(doc, "results"), 0);
+    assert_string_equal(json_string_value(json_object_get(*r, "over")), "Q(i)");
+    return doc;
+}
+
+static void test_complex_set(void **state)
+{
+    json_t *r, *doc;
+    const json_t *re, *im;
+    double x;
+    (void) state;
+    /* a = 1 + i/2: outside |z - 1| < 1, A-stable, |R(inf)| = 1/sqrt 5 */
+    doc = run("cases/complex/theta-complex-astability.case", &r);
+    re = json_object_get(r, "real_interval");
+    im = json_object_get(r, "imag_interval");
+    assert_string_equal(json_string_value(json_object_get(r, "over")), "Q(i)");
+    assert_true(json_is_true(json_object_get(r, "a_stable")));
+    assert_true(end_value(re, 0) == -INFINITY && end_value(re, 1) == 0);
+    assert_true(end_value(im, 0) == -INFINITY && end_value(im, 1) == INFINITY);
+    assert_true(fabs(json_real_value(json_object_get(json_object_get(r, "limit_at_infinity"), "approx"))
+                     - 1 / sqrt(5.0)) < 1e-12);
+    assert_true(fabs(theta_absR(1 + 0.5 * I, 1e9) - 1 / sqrt(5.0)) < 1e-6);
+    assert_false(json_is_true(json_object_get(r, "l_stable")));
+    /* just right of 0 on the real axis unstable, on the imaginary axis stable */
+    assert_true(theta_absR(1 + 0.5 * I, 1e-3) > 1 && theta_absR(1 + 0.5 * I, 3 * I) < 1);
+    json_decref(doc);
+    /* a = 1/4 + i: 2x + |z|^2/2 < 0, the disc |z + 2| < 2: real [-4, 0], imaginary [0, 0] */
+    doc = theta_text("1/4 + i", &r);
+    re = json_object_get(r, "real_interval");
+    im = json_object_get(r, "imag_interval");
+    assert_int_equal(json_integer_value(json_array_get(re, 0)), -4);
+    assert_int_equal(json_integer_value(json_array_get(re, 1)), 0);
+    assert_int_equal(json_integer_value(json_array_get(im, 0)), 0);
+    assert_int_equal(json_integer_value(json_array_get(im, 1)), 0);
+    for (x = -3.99; x < 0; x += 0.01) assert_true(theta_absR(0.25 + I, x) < 1 + 1e-12);
+    assert_true(theta_absR(0.25 + I, -4.01) > 1 && theta_absR(0.25 + I, 0.01 * I) > 1);
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    assert_true(json_is_null(json_object_get(r, "alpha_degrees")));
+    json_decref(doc);
+    /* a = 1/2 + i/4: 2 Re z < 0, exactly the left half-plane; |R(inf)| = |1 - a|/|a| = 1 */
+    doc = theta_text("1/2 + i/4", &r);
+    assert_true(json_is_true(json_object_get(r, "a_stable")));
+    assert_int_equal(json_integer_value(json_object_get(r, "alpha_degrees")), 90);
+    assert_true(fabs(json_real_value(json_object_get(json_object_get(r, "limit_at_infinity"), "approx")) - 1) < 1e-12);
+    json_decref(doc);
+}
+
+/* a char line with i, z declared complex: p = lambda - 1 - i z, the one root
+ * lambda = 1 + i z; on z = x: |1 + i x| <= 1 iff x = 0; on z = i y:
+ * |1 - y| <= 1 iff 0 <= y <= 2 */
+static void test_complex_char(void **state)
+{
+    int outcome;
+    json_t *doc = tu_run_text("param z complex\nchar lambda - 1 - i*z\nanalyse astability\n", NULL, &outcome, NULL);
+    json_t *r = json_array_get(json_object_get(doc, "results"), 0);
+    const json_t *re = json_object_get(r, "real_interval"), *im = json_object_get(r, "imag_interval");
+    (void) state;
+    assert_int_equal(json_integer_value(json_array_get(re, 0)), 0);
+    assert_int_equal(json_integer_value(json_array_get(re, 1)), 0);
+    assert_int_equal(json_integer_value(json_array_get(im, 0)), 0);
+    assert_int_equal(json_integer_value(json_array_get(im, 1)), 2);
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    assert_string_equal(json_string_value(json_object_get(r, "limit_at_infinity")), "inf");
+    json_decref(doc);
+}
+
 /* bad requests: exit-2 style errors */
 static void test_errors(void **state)
 {
@@ -259,6 +341,14 @@ static void test_errors(void **state)
     assert_int_equal(code, RS_ERR_INPUT);
     assert_null(doc);
     doc = tu_run_text("param q\nchar lambda - 1 - q\nanalyse astability r\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+    /* over Q(i): z itself set to a complex value, and a free real parameter besides z */
+    doc = tu_run_text("param q\nchar lambda - 1 - q\nset q = i\nanalyse astability q\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+    doc = tu_run_text("param q\nparam a\nparam b\nchar lambda - 1 - a*q - b\nset a = i\nanalyse astability q\n",
+                      NULL, &outcome, &code);
     assert_int_equal(code, RS_ERR_INPUT);
     assert_null(doc);
     /* forward Euler from a char line: the disc |1 + z| <= 1, real [-2, 0] */
@@ -276,6 +366,8 @@ int main(void)
         cmocka_unit_test(test_bdf_zero_stability),
         cmocka_unit_test(test_a_and_l_stability),
         cmocka_unit_test(test_adams),
+        cmocka_unit_test(test_complex_set),
+        cmocka_unit_test(test_complex_char),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
