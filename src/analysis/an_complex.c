@@ -605,6 +605,19 @@ int rs_an_complex_map_is(const char *rest)
     return strncmp(rest, "re(", 3) == 0;
 }
 
+int rs_an_complex_map_of(const char *rest, const char *name)
+{
+    size_t n = strlen(name);
+    while (*rest == ' ' || *rest == '\t') rest++;
+    if (strncmp(rest, "re(", 3) != 0) return 0;
+    rest += 3;
+    while (*rest == ' ' || *rest == '\t') rest++;
+    if (strncmp(rest, name, n) != 0) return 0;
+    rest += n;
+    while (*rest == ' ' || *rest == '\t') rest++;
+    return *rest == ')';
+}
+
 void rs_an_complex_map_clear(rs_an_req_t *req)
 {
     cmap_req_t *m = req->u.sweep;

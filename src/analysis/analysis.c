@@ -188,6 +188,11 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
     }
     if (run->c->ncsets == 0) return RS_OK;
     if ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)) {
+        /* the plane's own parameter: the plane overrides its set value */
+        for (k = 0; k < run->c->ncsets && rs_an_complex_map_of(req->rest, run->c->csets[k].name); k++)
+            ;
+        if (k == run->c->ncsets) return RS_OK;
+        x = run->c->csets + k;
         val = rs_complex_str(x->re, x->im);
         snprintf(msg, sizeof msg, "'%s re(NAME), im(NAME)' does not run at a complex set value (%s = %s): the plane "
                  "of a complex parameter is mapped without set values; over Q(i) recstab runs %s of real "

@@ -180,6 +180,8 @@ int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_var
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
 /* `map re(NAME) A B N, im(NAME) C D M [of stability]` (req->u.sweep holds its request) */
 int rs_an_complex_map_is(const char *rest);
+/* 1 when rest is the plane of parameter name: re(name), ... */
+int rs_an_complex_map_of(const char *rest, const char *name);
 int rs_an_complex_map_parse(rs_an_req_t *req, rs_run_t *run);
 void rs_an_complex_map_clear(rs_an_req_t *req);
 int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run);

@@ -607,6 +607,22 @@ char *rs_run_free_params(const rs_variant_t *v)
     return out;
 }
 
+/* the free parameters but tv (the analysis' own variable), as text */
+static char *free_params_but(const rs_variant_t *v, slong tv)
+{
+    const rs_scheme_struct *s = v->s;
+    size_t len = 0;
+    char *out = malloc(1);
+    slong i;
+    out[0] = '\0';
+    for (i = 0; i < s->nvars; i++) {
+        if (i == s->lambda_var || i == tv || fmpz_mpoly_degree_si(v->cp->p, i, s->zctx) <= 0) continue;
+        out = realloc(out, len + strlen(s->vars[i]) + 3);
+        len += (size_t) sprintf(out + len, "%s%s", len ? ", " : "", s->vars[i]);
+    }
+    return out;
+}
+
 /* p as a univariate integer polynomial; error naming the free parameters
  * when some are still symbolic. */
 int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q,
@@ -1129,7 +1145,7 @@ int rs_run_variant_one_free(rs_variant_t **v, rs_run_t *run, const rs_request_t 
     rs_assign_free(a, na);
     if (r != RS_OK) return r;
     if (rs_run_count_free((*v)->cp->p, (*v)->s, tv) > 0) {
-        char *fp = rs_run_free_params(*v);
+        char *fp = free_params_but(*v, tv);
         char msg[400];
         snprintf(msg, sizeof msg, "%s needs the other parameters set to numbers; still symbolic: %s", what, fp);
         free(fp);

@@ -414,3 +414,30 @@ printf 'param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nclaim stable when q < 
 "$RS" "$T/cq.case" >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "cq.case:4:19: expected conditions on real parameters, found 'q', which has a complex set value" "$T/err"; then
     ok "a claim on the complex parameter: exit 2"; else fail "claim on q: rc=$rc $(cat "$T/err")"; fi
+# the plane's own variable is not "still symbolic": only the other free parameter is named
+printf 'param q complex\nparam h\nchar lambda - 1 - q*h\nanalyse map re(q) -2 0 3, im(q) -1 1 3\n' >"$T/mq.case"
+"$RS" "$T/mq.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "mq.case:4:13: map needs the other parameters set to numbers; still symbolic: h$" "$T/err"; then
+    ok "map re(q) with h free: names h only"; else fail "map re(q), h free: rc=$rc $(cat "$T/err")"; fi
+printf 'param z complex\nparam a\nchar lambda - 1 - a*z\nanalyse region re(z), im(z)\n' >"$T/rz.case"
+"$RS" "$T/rz.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "rz.case:4:16: region needs the other parameters set to numbers; still symbolic: a$" "$T/err"; then
+    ok "region re(z) with a free: names a only"; else fail "region re(z), a free: rc=$rc $(cat "$T/err")"; fi
+# a set value of the plane's own variable is overridden by the plane: p = lambda - 1 - q at h = 1,
+# forward Euler |1 + q| < 1; on re(q) in {-2,-1,0} x im(q) in {-1,0,1}: q = -1 stable, the four
+# points at distance 1 from -1 marginal, the four corners (distance sqrt 2) unstable
+printf 'param q complex\nparam h\nchar lambda - 1 - q*h\nset q = -1 + i\nset h = 1\nanalyse map re(q) -2 0 3, im(q) -1 1 3\n' >"$T/mo.case"
+"$RS" --json "$T/mo.case" 2>"$T/err" | tr -d ' \n' >"$T/mo.json"
+if grep -q '"verdicts":{"stable":1,"marginal":4,"unstable":4,"singular":0}' "$T/mo.json"; then
+    ok "map re(q) at set q: the plane overrides q's own set value"; else fail "map re(q) at set q: $(head -c 300 "$T/mo.json") $(cat "$T/err")"; fi
+# ... but another parameter's complex set value is still refused
+printf 'param q complex\nparam w complex\nchar lambda - 1 - q*w\nset w = i\nanalyse map re(q) -2 0 3, im(q) -1 1 3\n' >"$T/mw.case"
+"$RS" "$T/mw.case" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "does not run at a complex set value (w = i)" "$T/err"; then
+    ok "map re(q) at a complex w: refused naming w"; else fail "map re(q), w = i: rc=$rc $(cat "$T/err")"; fi
+# astability over Q(i): the theta method at a = 1/4 + i, region 2x + |z|^2/2 < 0 (the disc
+# |z + 2| < 2, derived in theta-complex-astability.case): real [-4, 0], imaginary [0, 0]
+printf 'param q\nparam a\nchar (1 - a*q)*lambda - (1 + (1 - a)*q)\nset a = 1/4 + i\nanalyse astability q\n' >"$T/ta.case"
+"$RS" --json "$T/ta.case" 2>"$T/err" | tr -d ' \n' >"$T/ta.json"
+if grep -q '"over":"Q(i)","real_interval":\[-4,0\],"imag_interval":\[0,0\]' "$T/ta.json" && grep -q '"a_stable":false' "$T/ta.json"; then
+    ok "astability at a complex set value: real [-4, 0], imaginary [0, 0]"; else fail "astability over Q(i): $(head -c 400 "$T/ta.json") $(cat "$T/err")"; fi
