@@ -62,6 +62,12 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
                         const rs_case_t c, const rs_expr_t *e, int allow_lambda,
                         rs_error_t err);
 
+/* The same over Q(i): the name i (not declared by the case) is the imaginary
+ * unit; the value is (re + i im)/den with re, im, den over Q[s's variables]
+ * (den without i; a division by a complex expression is an input error). */
+int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, const rs_scheme_t s,
+                           const rs_case_t c, const rs_expr_t *e, int allow_lambda, rs_error_t err);
+
 /* Lowest exponent of variable var in p (0 for p = 0): the power of lambda a
  * row or a polynomial can be divided by.  For an fmpq_mpoly pass its zpoly
  * and ctx->zctx (same monomials). */

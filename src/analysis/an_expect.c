@@ -1,9 +1,225 @@
 /* an_expect.c -- `expect charpoly|bilinear POLY`: a printed polynomial
  * compared with the derived p(lambda) or q(z) (equal, proportional,
- * different). */
+ * different); with the imaginary unit i in POLY, exactly over Q(i). */
+#include <stdlib.h>
 #include <string.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
+#include "util/polyfmt.h"
+
+/* the name i, not declared by the case: the imaginary unit */
+static int uses_i(const rs_expr_t *e, const rs_model_t m)
+{
+    if (e == NULL) return 0;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0 && rs_an_undeclared_name(e, m) != NULL) return 1;
+    return uses_i(e->a, m) || uses_i(e->b, m);
+}
+
+/* the first undeclared name other than the imaginary unit */
+static const rs_expr_t *undeclared_but_i(const rs_expr_t *e, const rs_model_t m)
+{
+    const rs_expr_t *u;
+    if (e == NULL) return NULL;
+    if (e->kind == RS_EXPR_NAME) return strcmp(e->name, "i") == 0 ? NULL : rs_an_undeclared_name(e, m);
+    if ((u = undeclared_but_i(e->a, m)) != NULL) return u;
+    return undeclared_but_i(e->b, m);
+}
+
+/* "A + i*(B)" */
+static char *cx_mpoly_str(const fmpq_mpoly_t re, const fmpq_mpoly_t im, const rs_scheme_struct *s)
+{
+    char *a = rs_polyfmt_fmpq_mpoly(re, (const char **) s->vars, s->ctx);
+    char *b = rs_polyfmt_fmpq_mpoly(im, (const char **) s->vars, s->ctx);
+    char *out = malloc(strlen(a) + strlen(b) + 16);
+    if (fmpq_mpoly_is_zero(im, s->ctx)) strcpy(out, a);
+    else if (fmpq_mpoly_is_zero(re, s->ctx)) sprintf(out, "i*(%s)", b);
+    else sprintf(out, "%s + i*(%s)", a, b);
+    free(a); free(b);
+    return out;
+}
+
+/* (er + i ei) = c (dr + i di) for some c in Q(i): 1 and c when so */
+static int cx_ratio(fmpq_t cr, fmpq_t ci, const fmpq_mpoly_t er, const fmpq_mpoly_t ei, const fmpq_mpoly_t dr,
+                    const fmpq_mpoly_t di, const fmpq_mpoly_ctx_t ctx)
+{
+    const fmpq_mpoly_struct *pick = fmpq_mpoly_is_zero(dr, ctx) ? di : dr;
+    ulong *ex;
+    fmpq_t a, b, x, y, m;
+    fmpq_mpoly_t t, u;
+    int ok;
+    if (fmpq_mpoly_is_zero(pick, ctx)) return 0;
+    ex = flint_malloc((size_t) ctx->zctx->minfo->nvars * sizeof(ulong));
+    fmpq_init(a); fmpq_init(b); fmpq_init(x); fmpq_init(y); fmpq_init(m);
+    fmpq_mpoly_init(t, ctx); fmpq_mpoly_init(u, ctx);
+    fmpq_mpoly_get_term_exp_ui(ex, pick, 0, ctx);
+    fmpq_mpoly_get_coeff_fmpq_ui(a, dr, ex, ctx);
+    fmpq_mpoly_get_coeff_fmpq_ui(b, di, ex, ctx);
+    fmpq_mpoly_get_coeff_fmpq_ui(x, er, ex, ctx);
+    fmpq_mpoly_get_coeff_fmpq_ui(y, ei, ex, ctx);
+    /* c = (x + i y)/(a + i b) = (x + i y)(a - i b)/(a^2 + b^2) */
+    fmpq_mul(m, a, a);
+    fmpq_addmul(m, b, b);
+    fmpq_mul(cr, x, a);
+    fmpq_addmul(cr, y, b);
+    fmpq_div(cr, cr, m);
+    fmpq_mul(ci, y, a);
+    fmpq_submul(ci, x, b);
+    fmpq_div(ci, ci, m);
+    /* er == cr dr - ci di and ei == cr di + ci dr */
+    fmpq_mpoly_scalar_mul_fmpq(t, dr, cr, ctx);
+    fmpq_mpoly_scalar_mul_fmpq(u, di, ci, ctx);
+    fmpq_mpoly_sub(t, t, u, ctx);
+    ok = fmpq_mpoly_equal(t, er, ctx);
+    fmpq_mpoly_scalar_mul_fmpq(t, di, cr, ctx);
+    fmpq_mpoly_scalar_mul_fmpq(u, dr, ci, ctx);
+    fmpq_mpoly_add(t, t, u, ctx);
+    ok = ok && fmpq_mpoly_equal(t, ei, ctx) && !fmpq_is_zero(m) && !(fmpq_is_zero(cr) && fmpq_is_zero(ci));
+    fmpq_clear(a); fmpq_clear(b); fmpq_clear(x); fmpq_clear(y); fmpq_clear(m);
+    fmpq_mpoly_clear(t, ctx); fmpq_mpoly_clear(u, ctx);
+    flint_free(ex);
+    return ok;
+}
+
+/* (pr + i pi) with every parameter that has a complex set value replaced by it */
+static void cx_subst(fmpq_mpoly_t pr, fmpq_mpoly_t pi, const rs_run_t *run, const rs_scheme_struct *s)
+{
+    fmpq_mpoly_t nr, ni;
+    fmpq_t c, fr, fi, t;
+    ulong *ex = flint_malloc((size_t) s->nvars * sizeof(ulong));
+    slong i, v, k, j;
+    int part;
+    fmpq_mpoly_init(nr, s->ctx); fmpq_mpoly_init(ni, s->ctx);
+    fmpq_init(c); fmpq_init(fr); fmpq_init(fi); fmpq_init(t);
+    for (part = 0; part < 2; part++) {
+        const fmpq_mpoly_struct *src = part ? pi : pr;
+        for (i = 0; i < fmpq_mpoly_length(src, s->ctx); i++) {
+            fmpq_mpoly_get_term_coeff_fmpq(c, src, i, s->ctx);
+            fmpq_mpoly_get_term_exp_ui(ex, src, i, s->ctx);
+            /* c i^part */
+            fmpq_set(part ? fi : fr, c);
+            fmpq_zero(part ? fr : fi);
+            for (v = 0; v < s->nvars && v < run->c->nparams; v++)
+                for (k = 0; k < run->c->ncsets; k++) {
+                    if (v == s->lambda_var || strcmp(run->c->csets[k].name, run->c->params[v].name) != 0) continue;
+                    for (j = 0; j < (slong) ex[v]; j++) {   /* (fr + i fi)(a + i b) */
+                        const fmpq *a = run->c->csets[k].re, *b = run->c->csets[k].im;
+                        fmpq_mul(t, fr, a);
+                        fmpq_submul(t, fi, b);
+                        fmpq_mul(fi, fi, a);
+                        fmpq_addmul(fi, fr, b);
+                        fmpq_swap(fr, t);
+                    }
+                    ex[v] = 0;
+                }
+            if (!fmpq_is_zero(fr)) fmpq_mpoly_push_term_fmpq_ui(nr, fr, ex, s->ctx);
+            if (!fmpq_is_zero(fi)) fmpq_mpoly_push_term_fmpq_ui(ni, fi, ex, s->ctx);
+        }
+    }
+    fmpq_mpoly_sort_terms(nr, s->ctx); fmpq_mpoly_combine_like_terms(nr, s->ctx);
+    fmpq_mpoly_sort_terms(ni, s->ctx); fmpq_mpoly_combine_like_terms(ni, s->ctx);
+    fmpq_mpoly_swap(pr, nr, s->ctx);
+    fmpq_mpoly_swap(pi, ni, s->ctx);
+    fmpq_mpoly_clear(nr, s->ctx); fmpq_mpoly_clear(ni, s->ctx);
+    fmpq_clear(c); fmpq_clear(fr); fmpq_clear(fi); fmpq_clear(t);
+    flint_free(ex);
+}
+
+static void zpoly_to_q(fmpq_mpoly_t out, const fmpz_mpoly_t p, const rs_scheme_struct *s)
+{
+    slong i;
+    ulong *ex = flint_malloc((size_t) s->nvars * sizeof(ulong));
+    fmpz_t c;
+    fmpz_init(c);
+    fmpq_mpoly_zero(out, s->ctx);
+    for (i = 0; i < fmpz_mpoly_length(p, s->zctx); i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(c, p, i, s->zctx);
+        fmpz_mpoly_get_term_exp_ui(ex, p, i, s->zctx);
+        fmpq_mpoly_push_term_fmpz_ui(out, c, ex, s->ctx);
+    }
+    fmpq_mpoly_sort_terms(out, s->ctx);
+    fmpq_mpoly_combine_like_terms(out, s->ctx);
+    fmpz_clear(c);
+    flint_free(ex);
+}
+
+/* expect charpoly with i: the printed er + i ei against p = re + i im over
+ * Q(i) (rs_run_cx_poly: complex set values substituted, a char line with i
+ * read from its block), also against lambda^k p (the raw determinant) */
+static int expect_cx(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    rs_assign_t *a;
+    slong n, i;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpq_mpoly_t er, ei, den, dr, di, lp;
+    fmpz_mpoly_t zr, zi;
+    fmpq_t cr, ci;
+    json_t *o;
+    const char *status = "different";
+    int r;
+    rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
+    r = rs_run_variant(&v, run, a, n);
+    if (r != RS_OK) { rs_assign_free(a, n); return r; }
+    s = v->s;
+    fmpq_mpoly_init(er, s->ctx); fmpq_mpoly_init(ei, s->ctx); fmpq_mpoly_init(den, s->ctx);
+    fmpq_mpoly_init(dr, s->ctx); fmpq_mpoly_init(di, s->ctx); fmpq_mpoly_init(lp, s->ctx);
+    fmpz_mpoly_init(zr, s->zctx); fmpz_mpoly_init(zi, s->zctx);
+    fmpq_init(cr); fmpq_init(ci);
+    r = rs_scheme_eval_poly_cx(er, ei, den, s, run->c, req->u.expect.poly, 1, run->err);
+    if (r == RS_OK) {
+        for (i = 0; i < n; i++) {
+            fmpq_mpoly_evaluate_one_fmpq(er, er, a[i].var, a[i].value, s->ctx);
+            fmpq_mpoly_evaluate_one_fmpq(ei, ei, a[i].var, a[i].value, s->ctx);
+        }
+        cx_subst(er, ei, run, s);
+        rs_run_cx_poly(zr, zi, run, v);
+        zpoly_to_q(dr, zr, s);
+        zpoly_to_q(di, zi, s);
+        if (cx_ratio(cr, ci, er, ei, dr, di, s->ctx)) status = fmpq_is_one(cr) && fmpq_is_zero(ci) ? "equal" : "proportional";
+        else if (!s->complex_char && v->cp->removed_lambda_power > 0) {
+            /* the raw determinant lambda^k p */
+            fmpq_mpoly_gen(lp, s->lambda_var, s->ctx);
+            fmpq_mpoly_pow_ui(lp, lp, (ulong) v->cp->removed_lambda_power, s->ctx);
+            fmpq_mpoly_mul(dr, dr, lp, s->ctx);
+            fmpq_mpoly_mul(di, di, lp, s->ctx);
+            if (cx_ratio(cr, ci, er, ei, dr, di, s->ctx))
+                status = fmpq_is_one(cr) && fmpq_is_zero(ci) ? "equal" : "proportional";
+            fmpq_mpoly_div(dr, dr, lp, s->ctx);
+            fmpq_mpoly_div(di, di, lp, s->ctx);
+        }
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("expect"));
+        json_object_set_new(o, "of", json_string("charpoly"));
+        json_object_set_new(o, "text", json_string(q->text));
+        json_object_set_new(o, "over", json_string("Q(i)"));
+        json_object_set_new(o, "status", json_string(status));
+        if (strcmp(status, "proportional") == 0) {
+            char *c = rs_complex_str(cr, ci);
+            json_object_set_new(o, "ratio", json_string(c));
+            free(c);
+        }
+        if (strcmp(status, "different") == 0) {
+            char *es = cx_mpoly_str(er, ei, s), *ds = cx_mpoly_str(dr, di, s);
+            json_object_set_new(o, "expected", json_string(es));
+            json_object_set_new(o, "derived", json_string(ds));
+            free(es); free(ds);
+            run->outcome |= RS_OUTCOME_FAILED;
+        } else json_object_set_new(o, "difference", json_string("0"));
+        {
+            json_t *sub = json_deep_copy(v->assigned);
+            json_object_update_new(sub, rs_run_cx_at(run));
+            json_object_set_new(o, "substituted", sub);
+        }
+        json_array_append_new(run->results, o);
+    }
+    fmpq_mpoly_clear(er, s->ctx); fmpq_mpoly_clear(ei, s->ctx); fmpq_mpoly_clear(den, s->ctx);
+    fmpq_mpoly_clear(dr, s->ctx); fmpq_mpoly_clear(di, s->ctx); fmpq_mpoly_clear(lp, s->ctx);
+    fmpz_mpoly_clear(zr, s->zctx); fmpz_mpoly_clear(zi, s->zctx);
+    fmpq_clear(cr); fmpq_clear(ci);
+    rs_assign_free(a, n);
+    return r;
+}
 
 /* Compare an expected polynomial (fmpq, in the variant's variables, values
  * substituted) with the derived one; fills status/difference into o. */
@@ -72,6 +288,17 @@ int rs_an_expect_parse(rs_an_req_t *req, rs_run_t *run)
     if (r == RS_OK && q->text[pos] != '\0')
         return rs_req_error(run, q, q->text + pos, RS_ERR_INPUT,
                             "expected an operator or end of line, found '%s'", q->text + pos);
+    if (r == RS_OK && uses_i(req->u.expect.poly, run->m)) {
+        /* the imaginary unit: compared over Q(i) (charpoly only) */
+        const rs_expr_t *u = undeclared_but_i(req->u.expect.poly, run->m);
+        if (u != NULL)
+            return rs_error_set_at(run->err, RS_ERR_INPUT, q->loc.file, u->line, u->col,
+                                   "unknown name '%s' (expected a declared param, unknown or let)", u->name);
+        if (req->u.expect.bilinear)
+            return rs_req_error(run, q, what, RS_ERR_INPUT, "expect bilinear with the imaginary unit i: compare the "
+                                "characteristic polynomial over Q(i) instead (expect charpoly ...)%s", "");
+        return RS_OK;
+    }
     if (r == RS_OK) r = rs_an_check_names(run, q, req->u.expect.poly);
     return r;
 }
@@ -91,6 +318,7 @@ int rs_an_expect(rs_run_t *run, const rs_an_req_t *req)
     fmpq_mpoly_t num, den;
     json_t *o;
     int r;
+    if (uses_i(req->u.expect.poly, run->m)) return expect_cx(run, req);
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, n);
     if (r != RS_OK) { rs_assign_free(a, n); return r; }

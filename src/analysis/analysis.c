@@ -188,11 +188,16 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
     }
     if (run->c->ncsets == 0) return RS_OK;
     if ((strcmp(nm, "map") == 0 || strcmp(nm, "region") == 0) && rs_an_complex_map_is(req->rest)) {
-        /* the plane's own parameter: the plane overrides its set value */
-        for (k = 0; k < run->c->ncsets && rs_an_complex_map_of(req->rest, run->c->csets[k].name); k++)
-            ;
-        if (k == run->c->ncsets) return RS_OK;
-        x = run->c->csets + k;
+        for (k = 0; k < run->c->ncsets; k++)
+            if (rs_an_complex_map_of(req->rest, run->c->csets[k].name)) {
+                /* the plane's own parameter: its set value would be silently overridden */
+                x = run->c->csets + k;
+                val = rs_complex_str(x->re, x->im);
+                snprintf(msg, sizeof msg, "'%s re(%s), im(%s)' covers the plane of %s, which has a set value (%s = %s): "
+                         "remove that set value to map the plane", nm, x->name, x->name, x->name, x->name, val);
+                free(val);
+                return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+            }
         val = rs_complex_str(x->re, x->im);
         snprintf(msg, sizeof msg, "'%s re(NAME), im(NAME)' does not run at a complex set value (%s = %s): the plane "
                  "of a complex parameter is mapped without set values; over Q(i) recstab runs %s of real "

@@ -703,6 +703,71 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     return r;
 }
 
+int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, const rs_scheme_t s,
+                           const rs_case_t c, const rs_expr_t *e, int allow_lambda, rs_error_t err)
+{
+    /* as build_char_complex: evaluate in (s's variables, i), then reduce by i^2 = -1 */
+    rs_scheme_t s2;
+    ev_t x;
+    lin_t v;
+    slong i, n, iv = s->nvars;
+    int r;
+    rs_scheme_init(s2);
+    s2->nvars = s->nvars + 1;
+    s2->lambda_var = s->lambda_var;
+    s2->vars = flint_malloc(s2->nvars * sizeof(char *));
+    for (i = 0; i < s->nvars; i++) s2->vars[i] = rs_strdup(s->vars[i]);
+    s2->vars[iv] = rs_strdup("i");
+    fmpq_mpoly_ctx_init(s2->ctx, s2->nvars, ORD_LEX);
+    fmpz_mpoly_ctx_init(s2->zctx, s2->nvars, ORD_LEX);
+    fmpq_mpoly_init(s2->charpoly, s2->ctx);
+    ev_setup(&x, s2, c, allow_lambda, NULL, err);
+    x.ivar = iv;
+    lin_init(&v, 1, s2->ctx);
+    r = eval(&v, e, &x);
+    if (r == RS_OK && fmpq_mpoly_degree_si(v.den, iv, s2->ctx) > 0)
+        r = rs_error_set_at(err, RS_ERR_INPUT, rs_expr_file(e, c->path), e->line, e->col,
+                            "expected a polynomial without division by a complex expression "
+                            "(multiply through by its conjugate)%s", "");
+    if (r == RS_OK) {
+        ulong *ex2 = flint_malloc(s2->nvars * sizeof(ulong));
+        fmpq_t q;
+        fmpq_init(q);
+        fmpq_mpoly_zero(re, s->ctx);
+        fmpq_mpoly_zero(im, s->ctx);
+        fmpq_mpoly_zero(den, s->ctx);
+        n = fmpq_mpoly_length(v.c + 0, s2->ctx);
+        for (i = 0; i < n; i++) {
+            fmpq_mpoly_t term;
+            ulong ei;
+            fmpq_mpoly_get_term_coeff_fmpq(q, v.c + 0, i, s2->ctx);
+            fmpq_mpoly_get_term_exp_ui(ex2, v.c + 0, i, s2->ctx);
+            ei = ex2[iv];
+            if (ei & 2) fmpq_neg(q, q);
+            fmpq_mpoly_init(term, s->ctx);
+            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);   /* the first nvars exponents */
+            fmpq_mpoly_add((ei & 1) ? im : re, (ei & 1) ? im : re, term, s->ctx);
+            fmpq_mpoly_clear(term, s->ctx);
+        }
+        n = fmpq_mpoly_length(v.den, s2->ctx);
+        for (i = 0; i < n; i++) {
+            fmpq_mpoly_t term;
+            fmpq_mpoly_get_term_coeff_fmpq(q, v.den, i, s2->ctx);
+            fmpq_mpoly_get_term_exp_ui(ex2, v.den, i, s2->ctx);
+            fmpq_mpoly_init(term, s->ctx);
+            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);
+            fmpq_mpoly_add(den, den, term, s->ctx);
+            fmpq_mpoly_clear(term, s->ctx);
+        }
+        fmpq_clear(q);
+        flint_free(ex2);
+    }
+    lin_clear(&v, s2->ctx);
+    flint_free(x.visiting);
+    rs_scheme_clear(s2);
+    return r;
+}
+
 /* Divides out the factors 1 + t^2 of angle parameters (positive for every
  * real t), so they are not recorded as assumptions. */
 static void strip_angle_den(fmpq_mpoly_t den, const rs_scheme_struct *s, const rs_case_struct *c)

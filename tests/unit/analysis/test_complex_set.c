@@ -241,6 +241,39 @@ static void test_expect(void **state)
     json_decref(doc);
 }
 
+/* expect with the imaginary unit: compared exactly over Q(i), the complex
+ * set values substituted.  Forward Euler p = lambda - 1 - h q at q = -1 + i,
+ * h = 1: by hand p = lambda - 1 - (-1 + i) = lambda - i, "equal"; i times
+ * it, i lambda + 1, "proportional" with ratio i; lambda + i "different".
+ * BDF2 at q = -1/2 + 3/2 i (bdf2-complex-point.case): 2p = (4 - 3i) lambda^2
+ * - 4 lambda + 1 by hand, proportional to the derived p.  A char line with
+ * i: lambda - 1 - i*h compared as printed, "equal". */
+static void test_expect_i(void **state)
+{
+    int outcome, code;
+    json_t *doc = run("param h q\nchar lambda - 1 - h*q\nset q = -1 + i\nset h = 1\nexpect charpoly lambda - i\n"
+                      "expect charpoly i*lambda + 1\nexpect charpoly lambda + i\n", &outcome);
+    (void) state;
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
+    assert_string_equal(tu_str(tu_result(doc, 0), "over"), "Q(i)");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "proportional");
+    assert_string_equal(tu_str(tu_result(doc, 1), "ratio"), "i");
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "different");
+    assert_int_equal(outcome & RS_OUTCOME_FAILED, RS_OUTCOME_FAILED);
+    json_decref(doc);
+    doc = run("param q\nsubsystem S state y\n  y' = q*y\nintegrate S bdf 2 1\nset q = -1/2 + 3/2*i\n"
+              "expect charpoly (4 - 3*i)*lambda^2 - 4*lambda + 1\n", &outcome);
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "proportional");
+    json_decref(doc);
+    doc = run("param h\nchar lambda - 1 - i*h\nexpect charpoly lambda - 1 - i*h\n", &outcome);
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
+    json_decref(doc);
+    /* bilinear with i is refused (exit 2) */
+    doc = tu_run_text("param h\nchar lambda - 1 - h\nexpect bilinear z - i*h\n", NULL, &outcome, &code);
+    assert_int_equal(code, RS_ERR_INPUT);
+    assert_null(doc);
+}
+
 /* sweep of modes at complex values: the trapezoid on y' = q w y at q = i,
  * w = 2: lambda = (1 + i h)/(1 - i h), by hand |lambda| = 1 and arg lambda =
  * 2 atan(h), so omega = 2 atan(h)/h (h = 1: pi/2), damping 0, frequency
@@ -313,6 +346,7 @@ int main(void)
         cmocka_unit_test(test_simulate),
         cmocka_unit_test(test_limit),
         cmocka_unit_test(test_expect),
+        cmocka_unit_test(test_expect_i),
         cmocka_unit_test(test_sweep_modes),
         cmocka_unit_test(test_claims),
     };
