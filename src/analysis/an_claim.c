@@ -727,6 +727,76 @@ static int param_is_set(const rs_run_t *run, slong k)
     return param_is_cset(run, k);
 }
 
+/* every Bilharz condition of p over Q(i)[real params] (rs_routh_cx_conds)
+ * proved positive on the box: every root inside the unit circle there */
+static int cx_bilharz_proof(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t re, im;
+    rs_routh_cx_conds_t bc;
+    slong n, k;
+    int ok = 1;
+    size_t n0 = json_array_size(cx->cert);
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    rs_routh_cx_conds_init(&bc, s->zctx);
+    n = rs_run_cx_poly(re, im, run, v);
+    if (n < 1 || (!s->complex_char && n < v->cp->degree) || v->singular
+        || !rs_routh_cx_conds(&bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS) || bc.ncond < n + 1) {
+        claim_fail(cx, "p over Q(i) has no Bilharz conditions here (degree drop, a condition identically zero, or "
+                   "too large)", NULL, NULL);
+        ok = 0;
+    } else {
+        cert_note(cx, "p over Q(i) at the complex set values; every root inside iff each Bilharz condition of its "
+                  "bilinear image is > 0 (hurwitz over Q(i)):");
+        for (k = 0; k < bc.ncond && ok; k++) ok = prove_sign(bc.cond + k, 1, b, s, cx);
+    }
+    if (!ok) cert_truncate(cx, n0);
+    rs_routh_cx_conds_clear(&bc, s->zctx);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return ok;
+}
+
+/* `claim unstable` over Q(i) with any number of real parameters: the
+ * product of p's root moduli is |a0|/|an|, so |a0|^2 - |an|^2 > 0 on the box
+ * puts a root outside the unit circle; |an|^2 > 0 keeps the step solvable */
+static int cx_norm_unstable(rs_run_t *run, const rs_variant_t *v, const rs_bound_t *b, claim_cx_t *cx)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t re, im, t, u, c0, cn;
+    slong n;
+    int ok = 0;
+    size_t n0 = json_array_size(cx->cert);
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx); fmpz_mpoly_init(t, s->zctx);
+    fmpz_mpoly_init(u, s->zctx); fmpz_mpoly_init(c0, s->zctx); fmpz_mpoly_init(cn, s->zctx);
+    n = rs_run_cx_poly(re, im, run, v);
+    if (n >= 1 && !v->singular && (s->complex_char || n >= v->cp->degree)) {
+        ulong e0 = 0, en = (ulong) n;
+        slong lv = s->lambda_var;
+        /* |a0|^2 and |an|^2 */
+        fmpz_mpoly_get_coeff_vars_ui(t, re, &lv, &e0, 1, s->zctx);
+        fmpz_mpoly_get_coeff_vars_ui(u, im, &lv, &e0, 1, s->zctx);
+        fmpz_mpoly_mul(c0, t, t, s->zctx);
+        fmpz_mpoly_mul(u, u, u, s->zctx);
+        fmpz_mpoly_add(c0, c0, u, s->zctx);
+        fmpz_mpoly_get_coeff_vars_ui(t, re, &lv, &en, 1, s->zctx);
+        fmpz_mpoly_get_coeff_vars_ui(u, im, &lv, &en, 1, s->zctx);
+        fmpz_mpoly_mul(cn, t, t, s->zctx);
+        fmpz_mpoly_mul(u, u, u, s->zctx);
+        fmpz_mpoly_add(cn, cn, u, s->zctx);
+        cert_note(cx, "p over Q(i) at the complex set values: |a0|^2 > |an|^2 (the product of the root moduli "
+                  "|a0/an| > 1, so a root lies outside the unit circle) and |an|^2 > 0 (the step is solvable):");
+        fmpz_mpoly_sub(t, c0, cn, s->zctx);
+        ok = prove_sign(t, 1, b, s, cx) && prove_sign(cn, 1, b, s, cx);
+    } else {
+        claim_fail(cx, "p over Q(i) drops degree here", NULL, NULL);
+    }
+    if (!ok) cert_truncate(cx, n0);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx); fmpz_mpoly_clear(t, s->zctx);
+    fmpz_mpoly_clear(u, s->zctx); fmpz_mpoly_clear(c0, s->zctx); fmpz_mpoly_clear(cn, s->zctx);
+    (void) run;
+    return ok;
+}
+
 /* A claim at complex set values with at most one real parameter t left in
  * p over Q(i): the exact point verdict, or the exact region of t on the set
  * (rs_an_region_cx_on: cells cut at the real roots of |p|^2's critical
@@ -750,8 +820,19 @@ static int claim_prove_complex_region(rs_run_t *run, claim_kind_t kind, const rs
         }
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     if (nfree > 1) {
-        claim_fail(cx, "over Q(i) `claim bounded` and `claim unstable` have a certificate with one real parameter "
-                   "left (its exact region on the set); here more are free", NULL, NULL);
+        /* no exact region in several real parameters over Q(i): a certificate on the whole box, else undecided */
+        if (kind == CLAIM_BOUNDED && cx_bilharz_proof(run, v, b, cx)) {
+            cert_note(cx, "every point stable, so bounded");
+            ok = 1;
+        } else if (kind == CLAIM_UNSTABLE) ok = cx_norm_unstable(run, v, b, cx);
+        if (!ok)
+            claim_fail(cx, kind == CLAIM_UNSTABLE
+                       ? "over Q(i) with several real parameters free, `claim unstable` is proved by |a0|^2 > |an|^2 "
+                         "on the set (a root outside); that sign was not proved here, and the exact region is of one "
+                         "real parameter only"
+                       : "over Q(i) with several real parameters free, `claim bounded` is proved by the Bilharz "
+                         "conditions (every point stable); they were not proved positive on the set (e.g. marginal "
+                         "points in it), and the exact region is of one real parameter only", NULL, NULL);
     } else if (nfree == 0) {
         rs_rootcount_t rc;
         rs_status_t st;
@@ -807,29 +888,10 @@ static int claim_prove_complex_region(rs_run_t *run, claim_kind_t kind, const rs
 static int claim_prove_complex(rs_run_t *run, claim_kind_t kind, const rs_variant_t *v, const rs_bound_t *b,
                                claim_cx_t *cx)
 {
-    const rs_scheme_struct *s = v->s;
-    fmpz_mpoly_t re, im;
-    rs_routh_cx_conds_t bc;
-    slong n, k;
-    int ok = 1;
+    int ok;
     size_t n0 = json_array_size(cx->cert);
     if (kind != CLAIM_STABLE) return claim_prove_complex_region(run, kind, v, b, cx);
-    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    rs_routh_cx_conds_init(&bc, s->zctx);
-    n = rs_run_cx_poly(re, im, run, v);
-    if (n < 1 || (!s->complex_char && n < v->cp->degree) || v->singular
-        || !rs_routh_cx_conds(&bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS) || bc.ncond < n + 1) {
-        claim_fail(cx, "p over Q(i) has no Bilharz conditions here (degree drop, a condition identically zero, or "
-                   "too large)", NULL, NULL);
-        ok = 0;
-    } else {
-        cert_note(cx, "p over Q(i) at the complex set values; every root inside iff each Bilharz condition of its "
-                  "bilinear image is > 0 (hurwitz over Q(i)):");
-        for (k = 0; k < bc.ncond && ok; k++) ok = prove_sign(bc.cond + k, 1, b, s, cx);
-    }
-    if (!ok) cert_truncate(cx, n0);
-    rs_routh_cx_conds_clear(&bc, s->zctx);
-    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    ok = cx_bilharz_proof(run, v, b, cx);
     if (!ok) {
         ok = claim_prove_complex_region(run, kind, v, b, cx);
         if (!ok) cert_truncate(cx, n0);
@@ -1760,7 +1822,9 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
                   "coefficient signs, else the exact region of the one real parameter left; counterexamples "
                   "searched with the exact Q(i) verdict"
                 : "over Q(i) at the complex set values: with one real parameter left, its exact region on the set "
-                  "(every cell must satisfy the claim); counterexamples searched with the exact Q(i) verdict";
+                  "(every cell must satisfy the claim); with more, bounded by the Bilharz conditions (every point "
+                  "stable) and unstable by |a0|^2 > |an|^2 (a root outside), each proved on the set; "
+                  "counterexamples searched with the exact Q(i) verdict";
     if (r == RS_OK) {
         if (inconsistent) {
             run->outcome |= RS_OUTCOME_INCONSISTENT;

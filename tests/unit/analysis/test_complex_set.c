@@ -334,6 +334,36 @@ static void test_claims(void **state)
     }
 }
 
+/* claims in two real parameters at q = -1 + i: forward Euler lambda = 1 + h w q,
+ * by hand lambda = (1 - u) + i u with u = h w, |lambda|^2 - 1 = 2u(u - 1):
+ * stable for 0 < u < 1 (so bounded on 0 < h, w < 1: the Bilharz conditions),
+ * unstable for u > 1 (on h > 2, w > 1: |a0|^2 - |an|^2 = 2u(u - 1) > 0),
+ * unstable at h = 7/4, w = 5/8 inside 0 < h < 2, 0 < w < 1 (u = 35/32).  On
+ * the closed box 0 < h, w <= 1 bounded holds (u = 1 marginal), but neither
+ * certificate applies: undecided, with the reason. */
+static void test_claims_two_params(void **state)
+{
+    static const struct { const char *claim, *status; } t[] = {
+        {"claim bounded when 0 < h < 1, 0 < w < 1", "proved"}, {"claim unstable when h > 2, w > 1", "proved"},
+        {"claim bounded when 0 < h < 2, 0 < w < 1", "refuted"}, {"claim unstable when h > 1/2, w > 1", "refuted"},
+        {"claim bounded when 0 < h <= 1, 0 < w <= 1", "undecided"}};
+    char text[300];
+    size_t i;
+    int outcome;
+    (void) state;
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        json_t *doc;
+        const json_t *o;
+        snprintf(text, sizeof text, "param h w q\nchar lambda - 1 - h*w*q\nset q = -1 + i\n%s\n", t[i].claim);
+        doc = run(text, &outcome);
+        o = tu_result(doc, 0);
+        if (strcmp(tu_str(o, "status"), t[i].status) != 0)
+            fail_msg("%s: %s, expected %s (%s)", t[i].claim, tu_str(o, "status"), t[i].status, tu_str(o, "failed_at"));
+        if (strcmp(t[i].status, "undecided") == 0) assert_non_null(json_object_get(o, "failed_at"));
+        json_decref(doc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -349,6 +379,7 @@ int main(void)
         cmocka_unit_test(test_expect_i),
         cmocka_unit_test(test_sweep_modes),
         cmocka_unit_test(test_claims),
+        cmocka_unit_test(test_claims_two_params),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
