@@ -12,9 +12,16 @@
  *    monolithically, or one second-order subsystem) equals
  *    det(lambda I - R(F)) worked out by hand; generalized-alpha's roots at
  *    w -> inf are -rho_inf (triple); bdf 1..3, adams 1, rk euler and the
- *    implicit midpoint rule equal the hand-typed integrators. */
+ *    implicit midpoint rule equal the hand-typed integrators;
+ *  - the Newmark family's literature ranges (generalized-alpha for rho_inf
+ *    in [0, 1], HHT-alpha and WBZ for alpha in [-1/3, 0], all unconditionally
+ *    stable): the builder cases' claims must be proved, and the spectral
+ *    radius of the 3x3 amplification matrix, written here in double from
+ *    the published update formulas, is <= 1 on a grid (rho_inf as w -> inf). */
 #include "testutil.h"
 #include <string.h>
+#include <math.h>
+#include <gsl/gsl_poly.h>
 #include <acb_poly.h>
 #include <fmpq_vec.h>
 #include "recstab/model.h"
@@ -410,6 +417,75 @@ static void test_against_existing(void **state)
     }
 }
 
+/* spectral radius of the amplification matrix of (x, v, a) for
+ * (1 - am) a1 + am a0 = -w^2 ((1 - af) x1 + af x0), x1 = x0 + v0 + (1/2 - b) a0
+ * + b a1, v1 = v0 + (1 - g) a0 + g a1 (Chung and Hulbert 1993, eq. (2)-(4);
+ * HHT: am = 0, af = -alpha; WBZ: af = 0, am = alpha), step 1 */
+static double newmark_radius(double am, double af, double b, double g, double w)
+{
+    double A[3][3], ra[3], D = (1 - am) + w * w * (1 - af) * b, tr, c2, det, co[4], z[6], r = 0;
+    int i, j;
+    ra[0] = -w * w / D;
+    ra[1] = -w * w * (1 - af) / D;
+    ra[2] = -(am + w * w * (1 - af) * (0.5 - b)) / D;
+    for (j = 0; j < 3; j++) {
+        A[0][j] = (j == 0 ? 1 : j == 1 ? 1 : 0.5 - b) + b * ra[j];
+        A[1][j] = (j == 0 ? 0 : j == 1 ? 1 : 1 - g) + g * ra[j];
+        A[2][j] = ra[j];
+    }
+    tr = A[0][0] + A[1][1] + A[2][2];
+    c2 = A[0][0] * A[1][1] - A[0][1] * A[1][0] + A[0][0] * A[2][2] - A[0][2] * A[2][0] + A[1][1] * A[2][2]
+         - A[1][2] * A[2][1];
+    det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0])
+          + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    co[0] = -det; co[1] = c2; co[2] = -tr; co[3] = 1;
+    {
+        gsl_poly_complex_workspace *ws = gsl_poly_complex_workspace_alloc(4);
+        assert_int_equal(gsl_poly_complex_solve(co, 4, ws, z), 0);
+        gsl_poly_complex_workspace_free(ws);
+    }
+    for (i = 0; i < 3; i++) r = fmax(r, hypot(z[2 * i], z[2 * i + 1]));
+    return r;
+}
+
+static void test_newmark_family(void **state)
+{
+    static const char *const cases[] = {"cases/textbook/generalized-alpha-builder.case",
+                                        "cases/textbook/hht-alpha-builder.case", "cases/textbook/wbz-builder.case"};
+    size_t c, k;
+    int i, j, outcome;
+    (void) state;
+    for (c = 0; c < 3; c++) {
+        json_t *doc = tu_run_case(cases[c], NULL, -1, &outcome);
+        const json_t *res = json_object_get(doc, "results"), *o;
+        int nclaims = 0;
+        json_array_foreach(res, k, o) {
+            const char *an = json_string_value(json_object_get(o, "analysis"));
+            if (strcmp(an, "claim") == 0) {
+                nclaims++;
+                if (strcmp(json_string_value(json_object_get(o, "status")), "proved") != 0)
+                    fail_msg("%s: %s is %s", cases[c], json_string_value(json_object_get(o, "text")),
+                             json_string_value(json_object_get(o, "status")));
+            }
+            if (strcmp(an, "expect") == 0) assert_string_equal(json_string_value(json_object_get(o, "status")), "equal");
+        }
+        assert_true(nclaims >= 1);
+        json_decref(doc);
+    }
+    /* the literature ranges in double, independently of recstab (tolerance 1e-6: at rho_inf = 1 and
+     * w ~ 2^16 the triple root near -1 is resolved in double only to ~1e-8) */
+    for (i = 0; i <= 4; i++)
+        for (j = -8; j <= 16; j++) {
+            double w = pow(2.0, j), rho = i / 4.0, al = -i / 12.0;   /* rho in [0, 1], alpha in [-1/3, 0] */
+            double am = (2 * rho - 1) / (rho + 1), af = rho / (rho + 1);
+            double gg = 0.5 - am + af, bg = (1 - am + af) * (1 - am + af) / 4;
+            assert_true(newmark_radius(am, af, bg, gg, w) <= 1 + 1e-6);
+            assert_true(newmark_radius(0, -al, (1 - al) * (1 - al) / 4, 0.5 - al, w) <= 1 + 1e-6);   /* HHT */
+            assert_true(newmark_radius(al, 0, (1 - al) * (1 - al) / 4, 0.5 - al, w) <= 1 + 1e-6);    /* WBZ */
+            if (j == 16) assert_true(fabs(newmark_radius(am, af, bg, gg, 1e7) - rho) < 1e-3);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -422,6 +498,7 @@ int main(void)
         cmocka_unit_test(test_rk4_oscillator),
         cmocka_unit_test(test_generalized_alpha_infinity),
         cmocka_unit_test(test_against_existing),
+        cmocka_unit_test(test_newmark_family),
     };
     return cmocka_run_group_tests_name("methods", tests, NULL, NULL);
 }
