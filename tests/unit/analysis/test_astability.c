@@ -301,6 +301,21 @@ static void test_complex_set(void **state)
     assert_false(json_is_true(json_object_get(r, "a_stable")));
     assert_true(json_is_null(json_object_get(r, "alpha_degrees")));
     json_decref(doc);
+    /* BDF3 on y' = a q y with |a| = 1, a = 3/5 + 4/5 i: the region of q is BDF3's turned by -arg a, so
+     * its A(alpha) angle is BDF3's (the dense scan here) less arg a = atan2(4, 3), and the positive
+     * imaginary axis (a i y has arg(-a i y) = -36.87 degrees) lies in it, the negative one not */
+    {
+        int outcome;
+        doc = tu_run_text("param q\nparam a\nsubsystem S state y\n  y' = a*q*y\nintegrate S bdf 3 1\n"
+                          "set a = 3/5 + 4/5*i\nanalyse astability q\n", NULL, &outcome, NULL);
+        r = json_array_get(json_object_get(doc, "results"), 0);
+        assert_true(fabs(json_real_value(json_object_get(r, "alpha_degrees_approx"))
+                         - (bdf_alpha_scan(3) - atan2(4.0, 3.0) * 180 / PI_D)) < 1e-4);
+        im = json_object_get(r, "imag_interval");
+        assert_true(end_value(im, 0) == 0 && end_value(im, 1) == INFINITY);
+        assert_false(json_is_true(json_object_get(r, "a_stable")));
+        json_decref(doc);
+    }
     /* a = 1/2 + i/4: 2 Re z < 0, exactly the left half-plane; |R(inf)| = |1 - a|/|a| = 1 */
     doc = theta_text("1/2 + i/4", &r);
     assert_true(json_is_true(json_object_get(r, "a_stable")));
