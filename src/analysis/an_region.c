@@ -895,7 +895,65 @@ typedef struct {
     const fmpz_mpoly_struct *pj;   /* the polynomial judged: v's p, or |p|^2 over Q(i) */
     fmpz_mpoly_t pabs;          /* |p|^2 = cre^2 + cim^2 (cx only) */
     slong ncx_checked;          /* samples decided by both Q(i) routes */
+    struct forall_memo *memo;   /* for all: verdicts at samples, kept across the two projections */
+    slong nmemo;
 } region_t;
+
+/* One decision of region NAME for all at a rational sample (mode = the
+ * search_first argument of rs_an_forall_cell) or on [t, hi] (mode = 10 +
+ * kind of rs_an_forall_prove): a deterministic function of its arguments,
+ * so the full projection, whose critical values include the per-condition
+ * projection's, takes the verdicts of the cells both share instead of
+ * deciding them again (the same evidence, copied). */
+typedef struct forall_memo {
+    fmpq_t t, hi;
+    int mode;
+    rs_status_t st;
+    int decided;
+    json_t *ev;
+} forall_memo_t;
+
+static forall_memo_t *memo_find(region_t *rg, const fmpq_t t, const fmpq_t hi, int mode)
+{
+    slong i;
+    for (i = 0; i < rg->nmemo; i++) {
+        forall_memo_t *m = rg->memo + i;
+        if (m->mode == mode && fmpq_equal(m->t, t) && (hi == NULL || fmpq_equal(m->hi, hi))) return m;
+    }
+    return NULL;
+}
+
+/* a cell's evidence is kept by reference (copied on use): after the cell
+ * only its "sample" is added, the same value again on reuse; a proof's
+ * evidence is copied at once (the caller adds the interval's own keys) */
+static void memo_add(region_t *rg, const fmpq_t t, const fmpq_t hi, int mode, rs_status_t st, int decided,
+                     const json_t *ev)
+{
+    forall_memo_t *m;
+    rg->memo = flint_realloc(rg->memo, (size_t) (rg->nmemo + 1) * sizeof(forall_memo_t));
+    m = rg->memo + rg->nmemo++;
+    fmpq_init(m->t);
+    fmpq_init(m->hi);
+    fmpq_set(m->t, t);
+    if (hi != NULL) fmpq_set(m->hi, hi);
+    m->mode = mode;
+    m->st = st;
+    m->decided = decided;
+    m->ev = ev == NULL ? NULL : mode >= 10 ? json_deep_copy(ev) : json_incref((json_t *) ev);
+}
+
+static void memo_clear(region_t *rg)
+{
+    slong i;
+    for (i = 0; i < rg->nmemo; i++) {
+        fmpq_clear(rg->memo[i].t);
+        fmpq_clear(rg->memo[i].hi);
+        json_decref(rg->memo[i].ev);
+    }
+    flint_free(rg->memo);
+    rg->memo = NULL;
+    rg->nmemo = 0;
+}
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
  * modes) and the values where a repeated factor's Jordan structure can
@@ -1456,7 +1514,15 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
         fmpq_init(lo); fmpq_init(hi);
         if (a != NULL && b != NULL && fmpq_set_str(lo, a, 10) == 0 && fmpq_set_str(hi, b, 10) == 0) {
             fmpq_canonicalise(lo); fmpq_canonicalise(hi);
-            r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, nb[0]->status == RS_STATUS_STABLE ? 0 : 1);
+            int mode = 10 + (nb[0]->status == RS_STATUS_STABLE ? 0 : 1);
+            forall_memo_t *m = memo_find(rg, lo, hi, mode);
+            if (m != NULL) {
+                proved = m->decided;
+                ev = m->ev != NULL ? json_deep_copy(m->ev) : NULL;
+            } else {
+                r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, mode - 10);
+                if (r == RS_OK) memo_add(rg, lo, hi, mode, RS_STATUS_STABLE, proved, ev);
+            }
         }
         if (proved) {
             json_t *keep = pc->ev;
@@ -1540,6 +1606,54 @@ static int forall_neighbour_counter(json_t **ev, region_t *rg, const json_t *nev
     return r;
 }
 
+/* rs_an_forall_cell at x, or its verdict of the first projection */
+static int forall_cell_memo(rs_status_t *st, int *decided, json_t **ev, region_t *rg, const fmpq_t x, int mode)
+{
+    forall_memo_t *m = memo_find(rg, x, NULL, mode);
+    int r = RS_OK;
+    if (m != NULL) {
+        *st = m->st;
+        *decided = m->decided;
+        *ev = m->ev != NULL ? json_deep_copy(m->ev) : NULL;
+    } else {
+        r = rs_an_forall_cell(st, decided, ev, rg->run, rg->tv, x, mode);
+        if (r == RS_OK) memo_add(rg, x, NULL, mode, *st, *decided, *ev);
+    }
+    return r;
+}
+
+/* 1 when the per-condition projection cannot settle the cells, known before
+ * they are decided: an interval whose sample has q's leading coefficient
+ * vanishing somewhere on the quantified domain and that is decided neither
+ * stable nor singular (region_forall_run's test after the decisions; the
+ * status of a cell does not depend on the order of the work).  Only those
+ * intervals are decided here; 0 (the cells decided in order, as before)
+ * when none is known to fail. */
+static int forall_unsettled_early(int *unsettled, region_t *rg)
+{
+    slong i;
+    int r = RS_OK;
+    *unsettled = 0;
+    for (i = 0; i < rg->npieces && r == RS_OK && !*unsettled; i++) {
+        piece_t *pc = rg->pieces + i;
+        fmpq_t x;
+        if (pc->is_point) continue;
+        fmpq_init(x);
+        rational_between(x, pc->lo, pc->hi);
+        if (!rs_an_forall_lead_nonzero(rg->run, rg->v, rg->tv, x, rg->bounds)) {
+            rs_status_t st = RS_STATUS_UNSTABLE;
+            int decided = 0;
+            json_t *ev = NULL;
+            r = rs_budget_check(rg->run->err, "region ... for all (deciding its cells)");
+            if (r == RS_OK) r = forall_cell_memo(&st, &decided, &ev, rg, x, -1);
+            *unsettled = r == RS_OK && decided && st != RS_STATUS_STABLE && st != RS_STATUS_SINGULAR;
+            json_decref(ev);
+        }
+        fmpq_clear(x);
+    }
+    return r;
+}
+
 static int region_forall_decide(region_t *rg)
 {
     slong i;
@@ -1567,9 +1681,10 @@ static int region_forall_decide(region_t *rg)
              * look for its bad point before attempting a proof (else a
              * one-point probe guesses) */
             slong j = i - 1;
+            int mode;
             while (j >= 0 && !rg->pieces[j].decided) j--;
-            r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x,
-                                  j >= 0 && rg->pieces[j].status == RS_STATUS_UNSTABLE ? 1 : -1);
+            mode = j >= 0 && rg->pieces[j].status == RS_STATUS_UNSTABLE ? 1 : -1;
+            r = forall_cell_memo(&pc->status, &pc->decided, &pc->ev, rg, x, mode);
         }
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);
@@ -1595,12 +1710,15 @@ static int region_forall_run(region_t *rg)
     for (full = 0; full < 2 && r == RS_OK; full++) {
         slong i;
         int settled = 1;
+        int early = 0;
         r = region_forall_critical(rg, &full);
         if (r == RS_OK) {
             region_crit_prune(rg);
             region_pieces(rg);
-            r = region_forall_decide(rg);
+            if (!full) r = forall_unsettled_early(&early, rg);
+            if (r == RS_OK && !early) r = region_forall_decide(rg);
         }
+        settled = !early;
         for (i = 0; i < rg->npieces && r == RS_OK && settled && !full; i++) {
             piece_t *pc = rg->pieces + i;
             fmpq_t x;
@@ -1836,6 +1954,7 @@ static void region_clear(region_t *rg)
     fmpz_mpoly_clear(rg->cre, s->zctx);
     fmpz_mpoly_clear(rg->cim, s->zctx);
     fmpz_mpoly_clear(rg->pabs, s->zctx);
+    memo_clear(rg);
 }
 
 void rs_an_region_req_clear(rs_an_req_t *req)
