@@ -162,6 +162,63 @@ static int alg_cmp(alg_t *a, alg_t *b)
     }
 }
 
+/* The 128-bit enclosures of the real roots of irreducible factors already
+ * isolated in this region NAME for all (its two projections and the
+ * neighbours' critical values meet the same factors again): set by
+ * region_forall_object for its duration, NULL otherwise. */
+typedef struct {
+    fmpz_poly_struct *g;
+    arb_ptr *x;
+    slong *nreal;
+    slong n;
+} roots_memo_t;
+
+static _Thread_local roots_memo_t *roots_memo = NULL;
+
+static void roots_memo_clear(roots_memo_t *m)
+{
+    slong i;
+    for (i = 0; i < m->n; i++) {
+        fmpz_poly_clear(m->g + i);
+        _arb_vec_clear(m->x[i], m->nreal[i]);
+    }
+    flint_free(m->g);
+    flint_free(m->x);
+    flint_free(m->nreal);
+    memset(m, 0, sizeof *m);
+}
+
+/* the real roots of the irreducible g (degree >= 2), nreal of them, as
+ * alg_refine(., 128) would enclose each: from the memo, or computed (once
+ * for all of them) and kept there */
+static arb_srcptr roots_real(const fmpz_poly_t g, slong nreal, arb_ptr tmp)
+{
+    roots_memo_t *m = roots_memo;
+    slong d = fmpz_poly_degree(g), i;
+    acb_ptr r;
+    arb_ptr x;
+    if (m != NULL)
+        for (i = 0; i < m->n; i++)
+            if (m->nreal[i] == nreal && fmpz_poly_equal(m->g + i, g)) return m->x[i];
+    r = _acb_vec_init(d);
+    rs_radius_complex_roots(r, g, 128);
+    if (m == NULL) {
+        x = tmp;
+    } else {
+        m->g = flint_realloc(m->g, (size_t) (m->n + 1) * sizeof(fmpz_poly_struct));
+        m->x = flint_realloc(m->x, (size_t) (m->n + 1) * sizeof(arb_ptr));
+        m->nreal = flint_realloc(m->nreal, (size_t) (m->n + 1) * sizeof(slong));
+        fmpz_poly_init(m->g + m->n);
+        fmpz_poly_set(m->g + m->n, g);
+        m->x[m->n] = x = _arb_vec_init(nreal);
+        m->nreal[m->n] = nreal;
+        m->n++;
+    }
+    for (i = 0; i < nreal; i++) arb_set(x + i, acb_realref(r + i));
+    _acb_vec_clear(r, d);
+    return x;
+}
+
 /* appends the real roots of f (any non-zero polynomial) as alg_t */
 static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int boundary)
 {
@@ -189,18 +246,18 @@ static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int bo
         if (nreal > 0) {
             /* the roots once per factor, each real one's enclosure as
              * alg_refine(., 128) would compute it (real roots first) */
-            acb_ptr r = _acb_vec_init(d);
-            rs_radius_complex_roots(r, g, 128);
+            arb_ptr tmp = roots_memo == NULL ? _arb_vec_init(nreal) : NULL;
+            arb_srcptr x = roots_real(g, nreal, tmp);
             for (k = 0; k < nreal; k++) {
                 *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
                 alg_init(*list + *n);
                 fmpz_poly_set((*list)[*n].minpoly, g);
                 (*list)[*n].idx = k;
-                arb_set((*list)[*n].x, acb_realref(r + k));
+                arb_set((*list)[*n].x, x + k);
                 (*list)[*n].prec = 128;
                 (*n)++;
             }
-            _acb_vec_clear(r, d);
+            if (tmp != NULL) _arb_vec_clear(tmp, nreal);
         }
     }
     for (i = n0; i < *n; i++) (*list)[i].boundary = boundary;
@@ -1970,9 +2027,12 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
                                 const rs_bound_t *dom_tv)
 {
     region_t rg;
+    roots_memo_t memo, *outer = roots_memo;
     int r;
     /* a complex char line: the projection uses p's own conditions over Q(i)
      * (an_region_forall.c), the cells are decided by the claim machinery */
+    memset(&memo, 0, sizeof memo);
+    roots_memo = &memo;
     region_init(&rg, run, req, v);
     rg.dom_tv = dom_tv;
     json_object_set_new(o, "symbolic", json_false());
@@ -1980,6 +2040,8 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
     if (r == RS_OK) r = region_forall_run(&rg);
     if (r == RS_OK) region_json(&rg, o);
     region_clear(&rg);
+    roots_memo = outer;
+    roots_memo_clear(&memo);
     return r;
 }
 
