@@ -954,7 +954,19 @@ typedef struct {
     slong ncx_checked;          /* samples decided by both Q(i) routes */
     struct forall_memo *memo;   /* for all: verdicts at samples, kept across the two projections */
     slong nmemo;
+    struct point_crit_memo *pcm; /* for all: forall_point_crit's critical values per point */
+    slong npcm;
 } region_t;
+
+/* The critical values of t with the quantified parameters at one point (a
+ * counterexample, usually handed on from cell to cell: the same point
+ * serves several irrational critical values) */
+typedef struct point_crit_memo {
+    char *key;                  /* the point's quantified values, "name=value;..." */
+    int ok;
+    alg_t *crit;
+    slong ncrit;
+} point_crit_memo_t;
 
 /* One decision of region NAME for all at a rational sample (mode = the
  * search_first argument of rs_an_forall_cell) or on [t, hi] (mode = 10 +
@@ -1024,7 +1036,7 @@ static void region_squarefree(region_t *rg)
     fmpz_mpoly_one(rg->sqf, s->zctx);
     fmpz_mpoly_one(rg->sqf_t, s->zctx);
     fmpz_mpoly_factor_init(fac, s->zctx);
-    if (fmpz_mpoly_factor(fac, rg->v->cp->p, s->zctx)) {
+    if (rs_factor_memo_factor(fac, rg->v->cp->p, s->zctx)) {
         for (k = 0; k < fac->num; k++) {
             fmpz_mpoly_struct *f = fac->poly + k;
             int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
@@ -1420,7 +1432,64 @@ static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_
  * (factors free of lambda): between two of them an unstable verdict at pt
  * persists (a root strictly outside stays outside).  0 when they are not
  * finitely many. */
+static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt);
+
+static void alg_copy(alg_t *d, const alg_t *a)
+{
+    fmpz_poly_set(d->minpoly, a->minpoly);
+    fmpq_set(d->q, a->q);
+    arb_set(d->x, a->x);
+    d->idx = a->idx;
+    d->rational = a->rational;
+    d->prec = a->prec;
+    d->boundary = a->boundary;
+}
+
+/* forall_point_crit_compute, once per point (its result depends on the
+ * quantified values of pt only) */
 static int forall_point_crit(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt)
+{
+    point_crit_memo_t *m = NULL;
+    char *key = NULL;
+    size_t len = 1;
+    slong k;
+    for (k = 0; k < rg->nq; k++) {
+        const char *nm = rg->run->c->params[rg->qv[k]].name;
+        const char *w = json_string_value(json_object_get(pt, nm));
+        size_t add = strlen(nm) + (w != NULL ? strlen(w) : 1) + 2;
+        key = realloc(key, len + add);
+        if (k == 0) key[0] = '\0';
+        strcat(key, nm); strcat(key, "="); strcat(key, w != NULL ? w : "?"); strcat(key, ";");
+        len += add;
+    }
+    for (k = 0; key != NULL && k < rg->npcm; k++)
+        if (strcmp(rg->pcm[k].key, key) == 0) m = rg->pcm + k;
+    if (m == NULL) {
+        alg_t *c = NULL;
+        slong nc = 0;
+        int ok = forall_point_crit_compute(&c, &nc, rg, pt);
+        if (key == NULL) {           /* nothing quantified: nothing to share */
+            *crit = c; *ncrit = nc;
+            return ok;
+        }
+        rg->pcm = flint_realloc(rg->pcm, (size_t) (rg->npcm + 1) * sizeof(point_crit_memo_t));
+        m = rg->pcm + rg->npcm++;
+        m->key = key; key = NULL;
+        m->ok = ok; m->crit = c; m->ncrit = nc;
+    }
+    free(key);
+    *crit = NULL;
+    *ncrit = 0;
+    if (m->ncrit > 0) *crit = realloc(*crit, (size_t) m->ncrit * sizeof(alg_t));
+    for (k = 0; k < m->ncrit; k++) {
+        alg_init(*crit + k);
+        alg_copy(*crit + k, m->crit + k);
+    }
+    *ncrit = m->ncrit;
+    return m->ok;
+}
+
+static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt)
 {
     const rs_scheme_struct *s = rg->s;
     slong lv = s->lambda_var, tv = rg->tv, k, n;
@@ -1434,7 +1503,7 @@ static int forall_point_crit(alg_t **crit, slong *ncrit, region_t *rg, const jso
     fmpz_mpoly_factor_init(fac, s->zctx);
     fmpz_poly_init(u);
     fmpz_init(pm);
-    ok = forall_at_point(f, rg, pt) && fmpz_mpoly_factor(fac, f, s->zctx);
+    ok = forall_at_point(f, rg, pt) && rs_factor_memo_factor(fac, f, s->zctx);
     fmpz_mpoly_one(sq, s->zctx);
     for (k = 0; ok && k < fac->num; k++) {
         const fmpz_mpoly_struct *g = fac->poly + k;
@@ -2012,6 +2081,13 @@ static void region_clear(region_t *rg)
     fmpz_mpoly_clear(rg->cim, s->zctx);
     fmpz_mpoly_clear(rg->pabs, s->zctx);
     memo_clear(rg);
+    for (i = 0; i < rg->npcm; i++) {
+        slong k;
+        for (k = 0; k < rg->pcm[i].ncrit; k++) alg_clear(rg->pcm[i].crit + k);
+        free(rg->pcm[i].crit);
+        free(rg->pcm[i].key);
+    }
+    flint_free(rg->pcm);
 }
 
 void rs_an_region_req_clear(rs_an_req_t *req)
@@ -2031,6 +2107,7 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
     int r;
     /* a complex char line: the projection uses p's own conditions over Q(i)
      * (an_region_forall.c), the cells are decided by the claim machinery */
+    void *outer_fac = rs_factor_memo_begin(v->s->zctx);
     memset(&memo, 0, sizeof memo);
     roots_memo = &memo;
     region_init(&rg, run, req, v);
@@ -2042,6 +2119,7 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
     region_clear(&rg);
     roots_memo = outer;
     roots_memo_clear(&memo);
+    rs_factor_memo_end(outer_fac);
     return r;
 }
 
