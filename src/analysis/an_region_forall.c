@@ -21,6 +21,7 @@
 #include "stability/schur_complex.h"
 #include "recstab/semisimple.h"
 #include "analysis/an_region.h"
+#include "algebra/mfactor.h"
 
 /* ---- the projection -------------------------------------------------------- */
 
@@ -184,13 +185,13 @@ int rs_factor_memo_factor(fmpz_mpoly_factor_t fac, const fmpz_mpoly_t f, const f
     factor_memo_t *m = factor_memo;
     slong i;
     int ok;
-    if (m == NULL || m->ctx != ctx) return fmpz_mpoly_factor(fac, f, ctx);
+    if (m == NULL || m->ctx != ctx) return rs_mpoly_factor(fac, f, ctx);
     for (i = 0; i < m->n; i++)
         if (fmpz_mpoly_equal(m->f + i, f, ctx)) {
             if (m->ok[i]) fmpz_mpoly_factor_set(fac, m->fac + i, ctx);
             return m->ok[i];
         }
-    ok = fmpz_mpoly_factor(fac, f, ctx);
+    ok = rs_mpoly_factor(fac, f, ctx);
     m->f = flint_realloc(m->f, (size_t) (m->n + 1) * sizeof(fmpz_mpoly_struct));
     m->fac = flint_realloc(m->fac, (size_t) (m->n + 1) * sizeof(fmpz_mpoly_factor_struct));
     m->ok = flint_realloc(m->ok, (size_t) (m->n + 1) * sizeof(int));
