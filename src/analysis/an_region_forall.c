@@ -151,6 +151,8 @@ typedef struct {
     fmpz_mpoly_factor_struct *fac;
     int *ok;
     slong n;
+    const rs_variant_t *lead_v;     /* q's leading coefficient of this variant ... */
+    fmpz_mpoly_t lead;              /* ... (rs_an_forall_lead_nonzero) */
 } factor_memo_t;
 
 static _Thread_local factor_memo_t *factor_memo = NULL;
@@ -159,6 +161,7 @@ void *rs_factor_memo_begin(const fmpz_mpoly_ctx_t ctx)
 {
     factor_memo_t *m = flint_calloc(1, sizeof(factor_memo_t)), *outer = factor_memo;
     m->ctx = ctx;
+    fmpz_mpoly_init(m->lead, ctx);
     factor_memo = m;
     return outer;
 }
@@ -176,6 +179,7 @@ void rs_factor_memo_end(void *outer)
     flint_free(m->f);
     flint_free(m->fac);
     flint_free(m->ok);
+    fmpz_mpoly_clear(m->lead, m->ctx);
     flint_free(m);
 }
 
@@ -521,9 +525,17 @@ int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, co
     fmpz_mpoly_init(qz, s->zctx);
     fmpz_mpoly_init(a, s->zctx);
     fmpz_mpoly_init(at, s->zctx);
-    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
-    n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx);
-    rs_charpoly_coeff(a, qz, n, lv, s->zctx);
+    if (factor_memo != NULL && factor_memo->ctx == s->zctx && factor_memo->lead_v == v) {
+        fmpz_mpoly_set(a, factor_memo->lead, s->zctx);   /* the same variant: derived once per run */
+    } else {
+        rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+        n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx);
+        rs_charpoly_coeff(a, qz, n, lv, s->zctx);
+        if (factor_memo != NULL && factor_memo->ctx == s->zctx) {
+            fmpz_mpoly_set(factor_memo->lead, a, s->zctx);
+            factor_memo->lead_v = v;
+        }
+    }
     rs_an_forall_subst(at, a, tv, t, s->zctx);
     ok = !fmpz_mpoly_is_zero(at, s->zctx) && sign_definite(at, tv, b, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
