@@ -78,5 +78,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_as_flint),
     };
-    return cmocka_run_group_tests_name("mfactor", tests, NULL, NULL);
+    int r = cmocka_run_group_tests_name("mfactor", tests, NULL, NULL);
+    flint_cleanup_master();     /* FLINT's cache of integers, for leak checkers */
+    return r;
 }
