@@ -187,12 +187,15 @@ demo: deps
 # relocate at start-up (bench/README.md has the figures).  Debian ships no
 # static FLINT or Arb, and GMP/MPFR stay shared: libflint.so loads them anyway,
 # and a second, static copy would have its own allocator (budget.c counts
-# through GMP's).  build/recstab itself is unchanged.
-STATIC_DEP_LIBS := $(FLINT_LIBS) -Wl,-Bstatic -lgsl -lgslcblas -ljansson -Wl,-Bdynamic -lmpfr -lgmp -lm
+# through GMP's).  build/recstab itself is unchanged.  OpenMP's runtime is
+# static too (gcc's libgomp.a; issue 13: one more shared object fewer, about
+# 2 ms of the start-up's CPU time here): linked without -fopenmp, which would
+# add the shared libgomp.
+STATIC_DEP_LIBS := $(FLINT_LIBS) -Wl,-Bstatic -lgsl -lgslcblas -ljansson -lgomp -Wl,-Bdynamic -lmpfr -lgmp -lm -lpthread -ldl
 static: $(BUILD)/recstab-static
 
 $(BUILD)/recstab-static: $(CLI_OBJ) $(LIBRS)
-	$(CC) $(CFLAGS_ALL) -o $@ $(CLI_OBJ) $(LIBRS) -fopenmp $(STATIC_DEP_LIBS)
+	$(CC) $(filter-out -fopenmp,$(CFLAGS_ALL)) -o $@ $(CLI_OBJ) $(LIBRS) $(STATIC_DEP_LIBS)
 
 # the in-process Park bench (issue 17): the one-call API N times in one
 # process, beside SymPy's in-process figure (bench/run.sh, part (c'))

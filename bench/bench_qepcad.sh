@@ -18,6 +18,10 @@
 set -u
 cd "$(dirname "$0")/.." || exit 2
 BIN=${RECSTAB:-build/recstab}   # RECSTAB=path: another build, side by side
+# the documented `make static` product (GSL, CBLAS, jansson and libgomp
+# linked statically; FLINT, Arb, GMP, MPFR shared), timed beside the shipped
+# build/recstab when it exists (issue 13: both figures printed)
+SBIN=${RECSTAB_STATIC:-$(dirname "$BIN")/recstab-static}
 RUNS=${BENCH_RUNS:-5}
 # QEPCAD's default garbage-collected space (+N1000000 cells); a larger +N costs
 # start-up time (100M cells: about 1.8 s) and none of these cases needs it
@@ -31,6 +35,7 @@ fi
 T=$(mktemp -d "${TMPDIR:-/tmp}/recstab_qe.XXXXXX") || exit 2
 trap 'rm -rf "$T"' EXIT
 cp "$BIN" "$T/recstab" || exit 2
+if [ -x "$SBIN" ]; then cp "$SBIN" "$T/recstab-static" || exit 2; else SBIN=; fi
 
 # HHT-alpha with the range of alpha left open (the case assumes -1/3 <= alpha <= 0)
 sed 's/^assume w > 0, -1\/3 <= alpha <= 0/assume w > 0/' cases/textbook/hht-alpha.case >"$T/hht-free.case"
@@ -64,6 +69,10 @@ printf '[ trivial ]\n(x)\n1\n[ x > 0 ].\nfinish\n' >"$T/trivial.qe"
 rs0=$(timeit recstab /dev/null "$T/recstab" --version)
 qe0=$(timeit qepcad "$T/trivial.qe" qepcad $QE_OPTS)
 echo "$rs0 $qe0" | awk '{ printf "start-up: recstab %.4f s CPU (%.4f wall), QEPCAD %.4f s CPU (%.4f wall)\n", $1, $2, $3, $4 }'
+if [ -n "$SBIN" ]; then
+    st0=$(timeit recstab-static /dev/null "$T/recstab-static" --version)
+    echo "$st0" | awk '{ printf "start-up: recstab-static (make static) %.4f s CPU (%.4f wall)\n", $1, $2 }'
+fi
 printf '%-34s %10s %10s %10s %10s %8s %8s %8s\n' case rs_cpu_s rs_wall_s qe_cpu_s qe_wall_s cpu_x wall_x work_x
 run_case() { # label case P Q sets...
     label=$1; case=$2; p=$3; q=$4; shift 4
@@ -76,6 +85,10 @@ run_case() { # label case P Q sets...
     echo "$rs $qe $rs0 $qe0" | awk -v l="$label" '{ w1 = $1 - $5; w2 = $3 - $7;
         printf "%-34s %10.4f %10.4f %10.4f %10.4f %8.2f %8.2f %8s\n", l, $1, $2, $3, $4, $3 / $1, $4 / $2,
                (w1 > 0 && w2 > 0) ? sprintf("%.1f", w2 / w1) : "n/a" }'
+    if [ -n "$SBIN" ]; then
+        st=$(timeit recstab-static /dev/null "$T/recstab-static" "$@" --analyse "region $p for all [$q]" "$case")
+        echo "$st $qe" | awk '{ printf "    make static: %.4f s CPU (%.4f wall), cpu_x %.2f, wall_x %.2f\n", $1, $2, $3 / $1, $4 / $2 }'
+    fi
     ans_rs=$("$T/recstab" "$@" --analyse "region $p for all [$q]" "$case" 2>&1 | grep -E '^  (stable|marginal|unstable|singular|undecided) ' | tr -s ' ' | tr '\n' ';')
     ans_qe=$(qepcad $QE_OPTS <"$T/in.qe" 2>&1 | sed -n '/equivalent quantifier-free/{n;n;p}')
     echo "    recstab: $ans_rs"

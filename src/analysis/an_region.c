@@ -162,6 +162,63 @@ static int alg_cmp(alg_t *a, alg_t *b)
     }
 }
 
+/* The 128-bit enclosures of the real roots of irreducible factors already
+ * isolated in this region NAME for all (its two projections and the
+ * neighbours' critical values meet the same factors again): set by
+ * region_forall_object for its duration, NULL otherwise. */
+typedef struct {
+    fmpz_poly_struct *g;
+    arb_ptr *x;
+    slong *nreal;
+    slong n;
+} roots_memo_t;
+
+static _Thread_local roots_memo_t *roots_memo = NULL;
+
+static void roots_memo_clear(roots_memo_t *m)
+{
+    slong i;
+    for (i = 0; i < m->n; i++) {
+        fmpz_poly_clear(m->g + i);
+        _arb_vec_clear(m->x[i], m->nreal[i]);
+    }
+    flint_free(m->g);
+    flint_free(m->x);
+    flint_free(m->nreal);
+    memset(m, 0, sizeof *m);
+}
+
+/* the real roots of the irreducible g (degree >= 2), nreal of them, as
+ * alg_refine(., 128) would enclose each: from the memo, or computed (once
+ * for all of them) and kept there */
+static arb_srcptr roots_real(const fmpz_poly_t g, slong nreal, arb_ptr tmp)
+{
+    roots_memo_t *m = roots_memo;
+    slong d = fmpz_poly_degree(g), i;
+    acb_ptr r;
+    arb_ptr x;
+    if (m != NULL)
+        for (i = 0; i < m->n; i++)
+            if (m->nreal[i] == nreal && fmpz_poly_equal(m->g + i, g)) return m->x[i];
+    r = _acb_vec_init(d);
+    rs_radius_complex_roots(r, g, 128);
+    if (m == NULL) {
+        x = tmp;
+    } else {
+        m->g = flint_realloc(m->g, (size_t) (m->n + 1) * sizeof(fmpz_poly_struct));
+        m->x = flint_realloc(m->x, (size_t) (m->n + 1) * sizeof(arb_ptr));
+        m->nreal = flint_realloc(m->nreal, (size_t) (m->n + 1) * sizeof(slong));
+        fmpz_poly_init(m->g + m->n);
+        fmpz_poly_set(m->g + m->n, g);
+        m->x[m->n] = x = _arb_vec_init(nreal);
+        m->nreal[m->n] = nreal;
+        m->n++;
+    }
+    for (i = 0; i < nreal; i++) arb_set(x + i, acb_realref(r + i));
+    _acb_vec_clear(r, d);
+    return x;
+}
+
 /* appends the real roots of f (any non-zero polynomial) as alg_t */
 static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int boundary)
 {
@@ -189,18 +246,18 @@ static void alg_roots_append(alg_t **list, slong *n, const fmpz_poly_t f, int bo
         if (nreal > 0) {
             /* the roots once per factor, each real one's enclosure as
              * alg_refine(., 128) would compute it (real roots first) */
-            acb_ptr r = _acb_vec_init(d);
-            rs_radius_complex_roots(r, g, 128);
+            arb_ptr tmp = roots_memo == NULL ? _arb_vec_init(nreal) : NULL;
+            arb_srcptr x = roots_real(g, nreal, tmp);
             for (k = 0; k < nreal; k++) {
                 *list = realloc(*list, (size_t) (*n + 1) * sizeof(alg_t));
                 alg_init(*list + *n);
                 fmpz_poly_set((*list)[*n].minpoly, g);
                 (*list)[*n].idx = k;
-                arb_set((*list)[*n].x, acb_realref(r + k));
+                arb_set((*list)[*n].x, x + k);
                 (*list)[*n].prec = 128;
                 (*n)++;
             }
-            _acb_vec_clear(r, d);
+            if (tmp != NULL) _arb_vec_clear(tmp, nreal);
         }
     }
     for (i = n0; i < *n; i++) (*list)[i].boundary = boundary;
@@ -895,7 +952,77 @@ typedef struct {
     const fmpz_mpoly_struct *pj;   /* the polynomial judged: v's p, or |p|^2 over Q(i) */
     fmpz_mpoly_t pabs;          /* |p|^2 = cre^2 + cim^2 (cx only) */
     slong ncx_checked;          /* samples decided by both Q(i) routes */
+    struct forall_memo *memo;   /* for all: verdicts at samples, kept across the two projections */
+    slong nmemo;
+    struct point_crit_memo *pcm; /* for all: forall_point_crit's critical values per point */
+    slong npcm;
 } region_t;
+
+/* The critical values of t with the quantified parameters at one point (a
+ * counterexample, usually handed on from cell to cell: the same point
+ * serves several irrational critical values) */
+typedef struct point_crit_memo {
+    char *key;                  /* the point's quantified values, "name=value;..." */
+    int ok;
+    alg_t *crit;
+    slong ncrit;
+} point_crit_memo_t;
+
+/* One decision of region NAME for all at a rational sample (mode = the
+ * search_first argument of rs_an_forall_cell) or on [t, hi] (mode = 10 +
+ * kind of rs_an_forall_prove): a deterministic function of its arguments,
+ * so the full projection, whose critical values include the per-condition
+ * projection's, takes the verdicts of the cells both share instead of
+ * deciding them again (the same evidence, copied). */
+typedef struct forall_memo {
+    fmpq_t t, hi;
+    int mode;
+    rs_status_t st;
+    int decided;
+    json_t *ev;
+} forall_memo_t;
+
+static forall_memo_t *memo_find(region_t *rg, const fmpq_t t, const fmpq_t hi, int mode)
+{
+    slong i;
+    for (i = 0; i < rg->nmemo; i++) {
+        forall_memo_t *m = rg->memo + i;
+        if (m->mode == mode && fmpq_equal(m->t, t) && (hi == NULL || fmpq_equal(m->hi, hi))) return m;
+    }
+    return NULL;
+}
+
+/* a cell's evidence is kept by reference (copied on use): after the cell
+ * only its "sample" is added, the same value again on reuse; a proof's
+ * evidence is copied at once (the caller adds the interval's own keys) */
+static void memo_add(region_t *rg, const fmpq_t t, const fmpq_t hi, int mode, rs_status_t st, int decided,
+                     const json_t *ev)
+{
+    forall_memo_t *m;
+    rg->memo = flint_realloc(rg->memo, (size_t) (rg->nmemo + 1) * sizeof(forall_memo_t));
+    m = rg->memo + rg->nmemo++;
+    fmpq_init(m->t);
+    fmpq_init(m->hi);
+    fmpq_set(m->t, t);
+    if (hi != NULL) fmpq_set(m->hi, hi);
+    m->mode = mode;
+    m->st = st;
+    m->decided = decided;
+    m->ev = ev == NULL ? NULL : mode >= 10 ? json_deep_copy(ev) : json_incref((json_t *) ev);
+}
+
+static void memo_clear(region_t *rg)
+{
+    slong i;
+    for (i = 0; i < rg->nmemo; i++) {
+        fmpq_clear(rg->memo[i].t);
+        fmpq_clear(rg->memo[i].hi);
+        json_decref(rg->memo[i].ev);
+    }
+    flint_free(rg->memo);
+    rg->memo = NULL;
+    rg->nmemo = 0;
+}
 
 /* The squarefree parts of p (a system keeps repeated factors: identical
  * modes) and the values where a repeated factor's Jordan structure can
@@ -909,7 +1036,7 @@ static void region_squarefree(region_t *rg)
     fmpz_mpoly_one(rg->sqf, s->zctx);
     fmpz_mpoly_one(rg->sqf_t, s->zctx);
     fmpz_mpoly_factor_init(fac, s->zctx);
-    if (fmpz_mpoly_factor(fac, rg->v->cp->p, s->zctx)) {
+    if (rs_factor_memo_factor(fac, rg->v->cp->p, s->zctx)) {
         for (k = 0; k < fac->num; k++) {
             fmpz_mpoly_struct *f = fac->poly + k;
             int has_l = fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx) > 0;
@@ -1305,7 +1432,64 @@ static int forall_status_at(rs_status_t *st, region_t *rg, alg_t *c, const json_
  * (factors free of lambda): between two of them an unstable verdict at pt
  * persists (a root strictly outside stays outside).  0 when they are not
  * finitely many. */
+static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt);
+
+static void alg_copy(alg_t *d, const alg_t *a)
+{
+    fmpz_poly_set(d->minpoly, a->minpoly);
+    fmpq_set(d->q, a->q);
+    arb_set(d->x, a->x);
+    d->idx = a->idx;
+    d->rational = a->rational;
+    d->prec = a->prec;
+    d->boundary = a->boundary;
+}
+
+/* forall_point_crit_compute, once per point (its result depends on the
+ * quantified values of pt only) */
 static int forall_point_crit(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt)
+{
+    point_crit_memo_t *m = NULL;
+    char *key = NULL;
+    size_t len = 1;
+    slong k;
+    for (k = 0; k < rg->nq; k++) {
+        const char *nm = rg->run->c->params[rg->qv[k]].name;
+        const char *w = json_string_value(json_object_get(pt, nm));
+        size_t add = strlen(nm) + (w != NULL ? strlen(w) : 1) + 2;
+        key = realloc(key, len + add);
+        if (k == 0) key[0] = '\0';
+        strcat(key, nm); strcat(key, "="); strcat(key, w != NULL ? w : "?"); strcat(key, ";");
+        len += add;
+    }
+    for (k = 0; key != NULL && k < rg->npcm; k++)
+        if (strcmp(rg->pcm[k].key, key) == 0) m = rg->pcm + k;
+    if (m == NULL) {
+        alg_t *c = NULL;
+        slong nc = 0;
+        int ok = forall_point_crit_compute(&c, &nc, rg, pt);
+        if (key == NULL) {           /* nothing quantified: nothing to share */
+            *crit = c; *ncrit = nc;
+            return ok;
+        }
+        rg->pcm = flint_realloc(rg->pcm, (size_t) (rg->npcm + 1) * sizeof(point_crit_memo_t));
+        m = rg->pcm + rg->npcm++;
+        m->key = key; key = NULL;
+        m->ok = ok; m->crit = c; m->ncrit = nc;
+    }
+    free(key);
+    *crit = NULL;
+    *ncrit = 0;
+    if (m->ncrit > 0) *crit = realloc(*crit, (size_t) m->ncrit * sizeof(alg_t));
+    for (k = 0; k < m->ncrit; k++) {
+        alg_init(*crit + k);
+        alg_copy(*crit + k, m->crit + k);
+    }
+    *ncrit = m->ncrit;
+    return m->ok;
+}
+
+static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, const json_t *pt)
 {
     const rs_scheme_struct *s = rg->s;
     slong lv = s->lambda_var, tv = rg->tv, k, n;
@@ -1319,7 +1503,7 @@ static int forall_point_crit(alg_t **crit, slong *ncrit, region_t *rg, const jso
     fmpz_mpoly_factor_init(fac, s->zctx);
     fmpz_poly_init(u);
     fmpz_init(pm);
-    ok = forall_at_point(f, rg, pt) && fmpz_mpoly_factor(fac, f, s->zctx);
+    ok = forall_at_point(f, rg, pt) && rs_factor_memo_factor(fac, f, s->zctx);
     fmpz_mpoly_one(sq, s->zctx);
     for (k = 0; ok && k < fac->num; k++) {
         const fmpz_mpoly_struct *g = fac->poly + k;
@@ -1456,7 +1640,15 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
         fmpq_init(lo); fmpq_init(hi);
         if (a != NULL && b != NULL && fmpq_set_str(lo, a, 10) == 0 && fmpq_set_str(hi, b, 10) == 0) {
             fmpq_canonicalise(lo); fmpq_canonicalise(hi);
-            r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, nb[0]->status == RS_STATUS_STABLE ? 0 : 1);
+            int mode = 10 + (nb[0]->status == RS_STATUS_STABLE ? 0 : 1);
+            forall_memo_t *m = memo_find(rg, lo, hi, mode);
+            if (m != NULL) {
+                proved = m->decided;
+                ev = m->ev != NULL ? json_deep_copy(m->ev) : NULL;
+            } else {
+                r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, mode - 10);
+                if (r == RS_OK) memo_add(rg, lo, hi, mode, RS_STATUS_STABLE, proved, ev);
+            }
         }
         if (proved) {
             json_t *keep = pc->ev;
@@ -1540,6 +1732,54 @@ static int forall_neighbour_counter(json_t **ev, region_t *rg, const json_t *nev
     return r;
 }
 
+/* rs_an_forall_cell at x, or its verdict of the first projection */
+static int forall_cell_memo(rs_status_t *st, int *decided, json_t **ev, region_t *rg, const fmpq_t x, int mode)
+{
+    forall_memo_t *m = memo_find(rg, x, NULL, mode);
+    int r = RS_OK;
+    if (m != NULL) {
+        *st = m->st;
+        *decided = m->decided;
+        *ev = m->ev != NULL ? json_deep_copy(m->ev) : NULL;
+    } else {
+        r = rs_an_forall_cell(st, decided, ev, rg->run, rg->tv, x, mode);
+        if (r == RS_OK) memo_add(rg, x, NULL, mode, *st, *decided, *ev);
+    }
+    return r;
+}
+
+/* 1 when the per-condition projection cannot settle the cells, known before
+ * they are decided: an interval whose sample has q's leading coefficient
+ * vanishing somewhere on the quantified domain and that is decided neither
+ * stable nor singular (region_forall_run's test after the decisions; the
+ * status of a cell does not depend on the order of the work).  Only those
+ * intervals are decided here; 0 (the cells decided in order, as before)
+ * when none is known to fail. */
+static int forall_unsettled_early(int *unsettled, region_t *rg)
+{
+    slong i;
+    int r = RS_OK;
+    *unsettled = 0;
+    for (i = 0; i < rg->npieces && r == RS_OK && !*unsettled; i++) {
+        piece_t *pc = rg->pieces + i;
+        fmpq_t x;
+        if (pc->is_point) continue;
+        fmpq_init(x);
+        rational_between(x, pc->lo, pc->hi);
+        if (!rs_an_forall_lead_nonzero(rg->run, rg->v, rg->tv, x, rg->bounds)) {
+            rs_status_t st = RS_STATUS_UNSTABLE;
+            int decided = 0;
+            json_t *ev = NULL;
+            r = rs_budget_check(rg->run->err, "region ... for all (deciding its cells)");
+            if (r == RS_OK) r = forall_cell_memo(&st, &decided, &ev, rg, x, -1);
+            *unsettled = r == RS_OK && decided && st != RS_STATUS_STABLE && st != RS_STATUS_SINGULAR;
+            json_decref(ev);
+        }
+        fmpq_clear(x);
+    }
+    return r;
+}
+
 static int region_forall_decide(region_t *rg)
 {
     slong i;
@@ -1567,9 +1807,10 @@ static int region_forall_decide(region_t *rg)
              * look for its bad point before attempting a proof (else a
              * one-point probe guesses) */
             slong j = i - 1;
+            int mode;
             while (j >= 0 && !rg->pieces[j].decided) j--;
-            r = rs_an_forall_cell(&pc->status, &pc->decided, &pc->ev, rg->run, rg->tv, x,
-                                  j >= 0 && rg->pieces[j].status == RS_STATUS_UNSTABLE ? 1 : -1);
+            mode = j >= 0 && rg->pieces[j].status == RS_STATUS_UNSTABLE ? 1 : -1;
+            r = forall_cell_memo(&pc->status, &pc->decided, &pc->ev, rg, x, mode);
         }
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);
@@ -1595,12 +1836,15 @@ static int region_forall_run(region_t *rg)
     for (full = 0; full < 2 && r == RS_OK; full++) {
         slong i;
         int settled = 1;
+        int early = 0;
         r = region_forall_critical(rg, &full);
         if (r == RS_OK) {
             region_crit_prune(rg);
             region_pieces(rg);
-            r = region_forall_decide(rg);
+            if (!full) r = forall_unsettled_early(&early, rg);
+            if (r == RS_OK && !early) r = region_forall_decide(rg);
         }
+        settled = !early;
         for (i = 0; i < rg->npieces && r == RS_OK && settled && !full; i++) {
             piece_t *pc = rg->pieces + i;
             fmpq_t x;
@@ -1836,6 +2080,14 @@ static void region_clear(region_t *rg)
     fmpz_mpoly_clear(rg->cre, s->zctx);
     fmpz_mpoly_clear(rg->cim, s->zctx);
     fmpz_mpoly_clear(rg->pabs, s->zctx);
+    memo_clear(rg);
+    for (i = 0; i < rg->npcm; i++) {
+        slong k;
+        for (k = 0; k < rg->pcm[i].ncrit; k++) alg_clear(rg->pcm[i].crit + k);
+        free(rg->pcm[i].crit);
+        free(rg->pcm[i].key);
+    }
+    flint_free(rg->pcm);
 }
 
 void rs_an_region_req_clear(rs_an_req_t *req)
@@ -1851,9 +2103,13 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
                                 const rs_bound_t *dom_tv)
 {
     region_t rg;
+    roots_memo_t memo, *outer = roots_memo;
     int r;
     /* a complex char line: the projection uses p's own conditions over Q(i)
      * (an_region_forall.c), the cells are decided by the claim machinery */
+    void *outer_fac = rs_factor_memo_begin(v->s->zctx);
+    memset(&memo, 0, sizeof memo);
+    roots_memo = &memo;
     region_init(&rg, run, req, v);
     rg.dom_tv = dom_tv;
     json_object_set_new(o, "symbolic", json_false());
@@ -1861,6 +2117,9 @@ static int region_forall_object(json_t *o, rs_run_t *run, const rs_an_req_t *req
     if (r == RS_OK) r = region_forall_run(&rg);
     if (r == RS_OK) region_json(&rg, o);
     region_clear(&rg);
+    roots_memo = outer;
+    roots_memo_clear(&memo);
+    rs_factor_memo_end(outer_fac);
     return r;
 }
 

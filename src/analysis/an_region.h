@@ -20,6 +20,14 @@ void rs_plist_clear(rs_plist_t *l, const fmpz_mpoly_ctx_t ctx);
  * every variable, dom[tv]'s ends taken open) only the factors that can
  * vanish on the domain */
 void rs_plist_add(rs_plist_t *l, const fmpz_mpoly_t f, slong tv, const rs_bound_t *dom, const fmpz_mpoly_ctx_t ctx);
+/* Factorisations of rs_plist_add and of the conditions' p kept while a
+ * region NAME for all runs (its per-condition and full projections meet the
+ * same polynomials): rs_factor_memo_begin returns the memo in force before,
+ * to be handed to rs_factor_memo_end, which frees this one. */
+void *rs_factor_memo_begin(const fmpz_mpoly_ctx_t ctx);
+void rs_factor_memo_end(void *outer);
+/* fmpz_mpoly_factor(fac, f, ctx) through the memo in force (if any) */
+int rs_factor_memo_factor(fmpz_mpoly_factor_t fac, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx);
 /* out += the projection of in with variable u (interval bu) eliminated:
  * leading coefficients (all coefficients where none has one sign on dom),
  * discriminants, pairwise resultants, values at bu's finite ends; u^g

@@ -21,6 +21,7 @@
 #include "stability/schur_complex.h"
 #include "recstab/semisimple.h"
 #include "analysis/an_region.h"
+#include "algebra/mfactor.h"
 
 /* ---- the projection -------------------------------------------------------- */
 
@@ -144,6 +145,69 @@ static int sign_definite(const fmpz_mpoly_t f, slong tv, const rs_bound_t *b, co
     return ok;
 }
 
+typedef struct {
+    const fmpz_mpoly_ctx_struct *ctx;
+    fmpz_mpoly_struct *f;
+    fmpz_mpoly_factor_struct *fac;
+    int *ok;
+    slong n;
+    const rs_variant_t *lead_v;     /* q's leading coefficient of this variant ... */
+    fmpz_mpoly_t lead;              /* ... (rs_an_forall_lead_nonzero) */
+} factor_memo_t;
+
+static _Thread_local factor_memo_t *factor_memo = NULL;
+
+void *rs_factor_memo_begin(const fmpz_mpoly_ctx_t ctx)
+{
+    factor_memo_t *m = flint_calloc(1, sizeof(factor_memo_t)), *outer = factor_memo;
+    m->ctx = ctx;
+    fmpz_mpoly_init(m->lead, ctx);
+    factor_memo = m;
+    return outer;
+}
+
+void rs_factor_memo_end(void *outer)
+{
+    factor_memo_t *m = factor_memo;
+    slong i;
+    factor_memo = outer;
+    if (m == NULL) return;
+    for (i = 0; i < m->n; i++) {
+        fmpz_mpoly_clear(m->f + i, m->ctx);
+        fmpz_mpoly_factor_clear(m->fac + i, m->ctx);
+    }
+    flint_free(m->f);
+    flint_free(m->fac);
+    flint_free(m->ok);
+    fmpz_mpoly_clear(m->lead, m->ctx);
+    flint_free(m);
+}
+
+/* fmpz_mpoly_factor, or its result for an equal f kept in the memo */
+int rs_factor_memo_factor(fmpz_mpoly_factor_t fac, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx)
+{
+    factor_memo_t *m = factor_memo;
+    slong i;
+    int ok;
+    if (m == NULL || m->ctx != ctx) return rs_mpoly_factor(fac, f, ctx);
+    for (i = 0; i < m->n; i++)
+        if (fmpz_mpoly_equal(m->f + i, f, ctx)) {
+            if (m->ok[i]) fmpz_mpoly_factor_set(fac, m->fac + i, ctx);
+            return m->ok[i];
+        }
+    ok = rs_mpoly_factor(fac, f, ctx);
+    m->f = flint_realloc(m->f, (size_t) (m->n + 1) * sizeof(fmpz_mpoly_struct));
+    m->fac = flint_realloc(m->fac, (size_t) (m->n + 1) * sizeof(fmpz_mpoly_factor_struct));
+    m->ok = flint_realloc(m->ok, (size_t) (m->n + 1) * sizeof(int));
+    fmpz_mpoly_init(m->f + m->n, ctx);
+    fmpz_mpoly_set(m->f + m->n, f, ctx);
+    fmpz_mpoly_factor_init(m->fac + m->n, ctx);
+    if (ok) fmpz_mpoly_factor_set(m->fac + m->n, fac, ctx);
+    m->ok[m->n] = ok;
+    m->n++;
+    return ok;
+}
+
 /* The irreducible non-constant factors of f (nothing for 0 or a constant);
  * with dom != NULL only those that can vanish on the domain dom. */
 void rs_plist_add(rs_plist_t *l, const fmpz_mpoly_t f, slong tv, const rs_bound_t *dom, const fmpz_mpoly_ctx_t ctx)
@@ -152,7 +216,7 @@ void rs_plist_add(rs_plist_t *l, const fmpz_mpoly_t f, slong tv, const rs_bound_
     slong k;
     if (fmpz_mpoly_is_zero(f, ctx) || fmpz_mpoly_is_fmpz(f, ctx)) return;
     fmpz_mpoly_factor_init(fac, ctx);
-    if (fmpz_mpoly_factor(fac, f, ctx)) {
+    if (rs_factor_memo_factor(fac, f, ctx)) {
         for (k = 0; k < fac->num; k++)
             if (!fmpz_mpoly_is_fmpz(fac->poly + k, ctx) && (dom == NULL || !sign_definite(fac->poly + k, tv, dom, ctx)))
                 plist_push(l, fac->poly + k, ctx);
@@ -362,7 +426,7 @@ static int forall_conditions(rs_plist_t **groups, slong *ng, rs_run_t *run, cons
     fmpz_mpoly_init(t, s->zctx);
     fmpz_mpoly_one(sqf, s->zctx);
     fmpz_mpoly_factor_init(fac, s->zctx);
-    if (fmpz_mpoly_factor(fac, v->cp->p, s->zctx)) {
+    if (rs_factor_memo_factor(fac, v->cp->p, s->zctx)) {
         for (k = 0; k < fac->num; k++)
             if (fmpz_mpoly_degree_si(fac->poly + k, lv, s->zctx) > 0) {
                 fmpz_mpoly_mul(sqf, sqf, fac->poly + k, s->zctx);
@@ -461,9 +525,17 @@ int rs_an_forall_lead_nonzero(rs_run_t *run, const rs_variant_t *v, slong tv, co
     fmpz_mpoly_init(qz, s->zctx);
     fmpz_mpoly_init(a, s->zctx);
     fmpz_mpoly_init(at, s->zctx);
-    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
-    n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx);
-    rs_charpoly_coeff(a, qz, n, lv, s->zctx);
+    if (factor_memo != NULL && factor_memo->ctx == s->zctx && factor_memo->lead_v == v) {
+        fmpz_mpoly_set(a, factor_memo->lead, s->zctx);   /* the same variant: derived once per run */
+    } else {
+        rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+        n = fmpz_mpoly_degree_si(v->cp->p, lv, s->zctx);
+        rs_charpoly_coeff(a, qz, n, lv, s->zctx);
+        if (factor_memo != NULL && factor_memo->ctx == s->zctx) {
+            fmpz_mpoly_set(factor_memo->lead, a, s->zctx);
+            factor_memo->lead_v = v;
+        }
+    }
     rs_an_forall_subst(at, a, tv, t, s->zctx);
     ok = !fmpz_mpoly_is_zero(at, s->zctx) && sign_definite(at, tv, b, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);

@@ -42,6 +42,7 @@
 #include <flint/fmpz_vec.h>
 #include <flint/fmpq_mat.h>
 #include <fmpq_vec.h>
+#include "algebra/mfactor.h"
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 #include "recstab/positivity.h"
@@ -788,7 +789,7 @@ _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wstringop-overflow"
 #endif
-        r = fmpz_mpoly_factor(c->factors, c->poly, ctx);
+        r = rs_mpoly_factor(c->factors, c->poly, ctx);   /* = fmpz_mpoly_factor, in c->poly's own variables */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
