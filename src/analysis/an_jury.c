@@ -57,12 +57,12 @@ static int jury_conds_holds(const void *data, fmpq *const *pt, const rs_scheme_s
     return ok;
 }
 
-/* delta_k with more terms than this is factored through its known factors
- * a_k - a_0 and a_k + a_0 (issue 17: row 5 of the 4-mass chain's table has
- * a 229 723-term delta whose whole factorisation ran past 40 s, its two
- * halves have 10 382 terms each); smaller ones whole, as before, so the
- * order of the factors printed is unchanged where the table finished */
-#define JURY_FACTOR_WHOLE_TERMS 20000
+/* delta_k with more than rs_jury_factor_whole_terms() terms is factored
+ * through its known factors a_k - a_0 and a_k + a_0 (issue 17: row 5 of the
+ * 4-mass chain's table has a 229 723-term delta whose whole factorisation
+ * ran past 40 s, its two halves have 10 382 terms each); smaller ones whole,
+ * as before, so the order of the factors printed is unchanged where the
+ * table finished */
 
 /* f = the factorisation of (ak - a0)(ak + a0), each half factored on its
  * own and equal irreducible factors merged; 0 if FLINT failed */
@@ -147,7 +147,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             json_object_set_new(o, "singular_row", json_integer(n - k));
             fmpz_mpoly_factor_clear(f, s->zctx);
             break;
-        } else if (fmpz_mpoly_length(delta, s->zctx) > JURY_FACTOR_WHOLE_TERMS
+        } else if (fmpz_mpoly_length(delta, s->zctx) > rs_jury_factor_whole_terms()
                    ? jury_factor_halves(f, a + k, a + 0, s->zctx) : fmpz_mpoly_factor(f, delta, s->zctx)) {
             /* keep the factors whose sign is not settled by the assumptions */
             fmpz_mpoly_t kept;
