@@ -58,6 +58,13 @@ int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
  * defective modulo the first prime goes to the integer table. */
 int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
 
+/* The symbolic table of `jury` factors a lead^2 - const^2 of more than this
+ * many terms (default 20 000) through its halves lead - const and
+ * lead + const, smaller ones whole; sets it (tests: 0 = always the halves)
+ * and returns the previous value. */
+slong rs_jury_set_factor_whole_terms(slong terms);
+slong rs_jury_factor_whole_terms(void);
+
 #ifdef __cplusplus
 }
 #endif

@@ -419,7 +419,18 @@ char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel)
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
 {
     char *str = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);
-    json_t *j = json_string(str);
+    json_t *j;
+    slong k;
+    int ascii = str != NULL;
+    /* digits, " + - * ^" and the names: ASCII when every name is, and then
+     * jansson's UTF-8 scan is skipped (a 60 MB string for D_11 of a 6-mass
+     * chain, issue 17); the bytes are the same */
+    for (k = 0; ascii && k < s->nvars; k++) {
+        const unsigned char *c;
+        for (c = (const unsigned char *) s->vars[k]; *c != '\0'; c++)
+            if (*c >= 0x80) ascii = 0;
+    }
+    j = ascii ? json_stringn_nocheck(str, strlen(str)) : json_string(str);
     free(str);
     return j;
 }

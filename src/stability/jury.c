@@ -625,3 +625,18 @@ int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err)
 {
     return jury_run(j, p, 0, err);
 }
+
+/* see jury.h; read by the symbolic table of an_jury.c (issue 17) */
+static slong jury_whole_terms = 20000;
+
+slong rs_jury_set_factor_whole_terms(slong terms)
+{
+    slong old = jury_whole_terms;
+    jury_whole_terms = terms;
+    return old;
+}
+
+slong rs_jury_factor_whole_terms(void)
+{
+    return jury_whole_terms;
+}

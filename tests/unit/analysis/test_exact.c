@@ -15,6 +15,7 @@
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
 #include "recstab/analysis.h"
+#include "recstab/jury.h"
 
 static const json_t *result(const json_t *doc, size_t i)
 {
@@ -395,6 +396,77 @@ static void test_jury_interval_assumptions(void **state)
     }
 }
 
+/* `jury` factors a large lead^2 - const^2 through its halves lead - const and
+ * lead + const (issue 17).  Expected values: the same table with every delta
+ * factored whole by FLINT, as recstab does below 20 000 terms; by unique
+ * factorisation in Z[params] the factors of (a - b)(a + b) are those of
+ * a - b and a + b together, so the conditions (kept products, "!= 0" lines)
+ * and the dropped factors must be the same sets, and both runs must agree
+ * with the exact point verdict at the sample points. */
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *) a, *(const char *const *) b);
+}
+
+static void jury_same_sets(const json_t *r1, const json_t *r2, const char *key, const char *field)
+{
+    const json_t *x = json_object_get(r1, key), *y = json_object_get(r2, key);
+    size_t n = json_array_size(x), i;
+    const char **u, **w;
+    assert_int_equal(n, json_array_size(y));
+    u = malloc((n + 1) * sizeof(char *));
+    w = malloc((n + 1) * sizeof(char *));
+    for (i = 0; i < n; i++) {
+        const json_t *a = json_array_get(x, i), *b = json_array_get(y, i);
+        if (field != NULL) { a = json_object_get(a, field); b = json_object_get(b, field); }
+        u[i] = json_string_value(a);
+        w[i] = json_string_value(b);
+        assert_non_null(u[i]);
+        assert_non_null(w[i]);
+    }
+    qsort(u, n, sizeof(char *), cmp_str);
+    qsort(w, n, sizeof(char *), cmp_str);
+    for (i = 0; i < n; i++) assert_string_equal(u[i], w[i]);
+    free(u);
+    free(w);
+}
+
+static void test_jury_factor_halves(void **state)
+{
+    static const char chain2[] =
+        "param c k1 k2\nassume c > 0, k1 > 0, k2 > 0\nunknown x1 v1 a1 x2 v2 a2\n"
+        "eq a1[n+1] + c*v1[n+1] + k1*x1[n+1] + k2*x1[n+1] - k2*x2[n+1] = 0\n"
+        "eq x1[n+1] - x1[n] = (v1[n+1] + v1[n])/2\neq v1[n+1] - v1[n] = (a1[n+1] + a1[n])/2\n"
+        "eq a2[n+1] + c*v2[n+1] + k2*x2[n+1] - k2*x1[n+1] = 0\n"
+        "eq x2[n+1] - x2[n] = (v2[n+1] + v2[n])/2\neq v2[n+1] - v2[n] = (a2[n+1] + a2[n])/2\n"
+        "analyse jury\n";
+    const char *req[] = {"jury"};
+    int k;
+    (void) state;
+    for (k = 0; k < 2; k++) {
+        json_t *doc[2];
+        const json_t *r[2];
+        int outcome, code, h;
+        for (h = 0; h < 2; h++) {
+            slong old = rs_jury_set_factor_whole_terms(h ? 0 : 20000);
+            doc[h] = k == 0 ? tu_run_case("cases/park-staggered.case", req, 1, &outcome)
+                            : tu_run_text(chain2, NULL, &outcome, &code);
+            rs_jury_set_factor_whole_terms(old);
+            assert_non_null(doc[h]);
+            r[h] = result(doc[h], 0);
+            assert_true(json_is_true(json_object_get(r[h], "symbolic")));
+            assert_true(json_is_true(json_object_get(json_object_get(r[h], "sample_check"), "agree")));
+        }
+        assert_true(json_equal(json_object_get(r[0], "rows"), json_object_get(r[1], "rows")));
+        assert_true(json_array_size(json_object_get(r[0], "conditions"))
+                    + json_array_size(json_object_get(r[0], "dropped")) >= 2);
+        jury_same_sets(r[0], r[1], "conditions", NULL);
+        jury_same_sets(r[0], r[1], "dropped", "factor");
+        json_decref(doc[0]);
+        json_decref(doc[1]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -407,6 +479,7 @@ int main(void)
         cmocka_unit_test(test_park_printed_bilinear),
         cmocka_unit_test(test_park_symbolic_jury),
         cmocka_unit_test(test_jury_interval_assumptions),
+        cmocka_unit_test(test_jury_factor_halves),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);
 }
