@@ -48,6 +48,14 @@ if command -v jq >/dev/null 2>&1; then
     check "forall planted: intervals" \
         '[["unstable",null,"-2",false,true],["stable","-2","2",false,false],["marginal","2","2",true,true],["unstable","2",null,false,false]]' \
         "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .lo_closed, .hi_closed])')"
+    # symbolic Routh array with q's leading coefficient negative where stable (h-truth2):
+    # the column by hand (3a + 6, 4a + 2, 4a^2 + 2a); the note's criterion was "one sign"
+    C=cases/truth/routh-negative-lead.case
+    check "routh negative lead: column" '["3*a + 6","4*a + 2","4*a^2 + 2*a"]' "$(jfield $C 0 '.rows | map(.[0])')"
+    check "routh negative lead: note (was: one sign)" 'true' \
+        "$(jfield $C 0 '.note | contains("sign f_k = (sign f_0)^k")')"
+    check "routh negative lead: stable at a = -3" '"stable"' \
+        "$("$RS" --json --set a=-3 --analyse stability $C 2>/dev/null | jq -c '.cases[0].results[0].status')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
@@ -58,6 +66,11 @@ if command -v python3 >/dev/null 2>&1; then
                 "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # second batch (tests/truth/truth2.py, h-truth2)
+    for spec in "symcond 1 8" "symmat 1 4"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth2.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"

@@ -1,0 +1,320 @@
+#!/usr/bin/env python3
+"""truth2.py -- planted-truth property tests, second batch (h-truth2): the analyses
+truth.py does not cover.  Each truth is derived here independently of recstab
+(Fractions, closed forms; sympy / mpmath only where named):
+
+  symcond  `hurwitz`, `jury`, `routh` with symbolic parameters: p is a product of
+           planted factors whose stability is known in closed form at every
+           rational point -- D(a) lambda - N(a) (stable iff |N| < |D|), real
+           quadratics L lambda^2 + P lambda + Q (stable iff |Q| < |L| and
+           |P| < |L + Q| sign-corrected: the Schur-Cohn triangle |q| < 1, |p| < 1 + q
+           of the monic form), reciprocal pairs (r lambda - 1)(lambda - r) (never
+           stable, a Routh array singular everywhere), (lambda - c(a))^2 with
+           c = +-1 at planted values, and a constant factor of free sign.  Where
+           p's leading coefficient vanishes the step is singular: not stable
+           (design.md).  The printed conditions are evaluated with Fractions at
+           random rational points and at the planted boundary points.
+  symmat   the same for a matrix recurrence x[n+1] = M(a) x[n], M = S T(a) S^-1,
+           T upper triangular with planted diagonal d_i(a) affine in a: stable iff
+           every |d_i| < 1.
+
+Usage: truth2.py PART SEED COUNT   prints "ok ..." / "FAIL ..." lines.
+"""
+import os
+import random
+import re
+import sys
+from fractions import Fraction as F
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import truth as T  # noqa: E402  (run, find, save_failing, rand_frac, matrices)
+
+ok, rand_frac = T.ok, T.rand_frac
+NFAIL = 0
+
+
+def fail(msg):
+    global NFAIL
+    NFAIL += 1
+    print("FAIL " + msg)
+
+
+# ---------------------------------------------------------------- expressions
+def ratify(s):
+    """integer literals -> Fractions (exact /), ^ -> ** with an int exponent"""
+    s = re.sub(r"(?<![\w.])(\d+)", r"F(\1)", s)
+    return s.replace("^F(", "**int(")
+
+
+def ev(expr, env):
+    return eval(ratify(expr), {"F": F}, dict(env))
+
+
+def ev_cond(c, env):
+    for op in ("<=", ">=", "!=", "<", ">", "="):
+        k = " %s " % op
+        if k in c:
+            lhs, rhs = c.split(k)
+            x, y = ev(lhs, env), ev(rhs, env)
+            return {"<=": x <= y, ">=": x >= y, "!=": x != y, "<": x < y, ">": x > y, "=": x == y}[op]
+    raise ValueError(c)
+
+
+def rpoly(rng, names, deg, lo=-2, hi=2):
+    """a random polynomial text in names of total degree <= deg (small rationals)"""
+    monos = ["1"]
+    for v in names:
+        monos += [v] + (["%s^2" % v] if deg >= 2 else [])
+    if deg >= 2 and len(names) > 1:
+        monos.append("%s*%s" % (names[0], names[1]))
+    terms = ["(%s)*%s" % (nz(rng, lo, hi), m) for m in monos if rng.random() < 0.6]
+    return " + ".join(terms) or "(%s)" % nz(rng, lo, hi)
+
+
+def nz(rng, lo, hi):
+    """a nonzero small rational"""
+    return rand_frac(rng, lo, hi, (1, 2, 3, 4)) or F(1, 2)
+
+
+def sq(expr, v):
+    """the parameter v entering only through its square"""
+    return re.sub(r"\b%s\b" % v, "(%s^2)" % v, expr)
+
+
+# ---------------------------------------------------------------- part symcond
+def planted_family(rng, names):
+    """list of (text, truth(env) -> 'stable' | 'not' | 'skip', boundary polys)"""
+    facs = []
+    nf = rng.randint(1, 3)
+    kinds = [rng.choice(["lin", "lin", "quad", "quad", "recip", "double", "cpair"]) for _ in range(nf)]
+    for kd in kinds:
+        if kd == "lin":
+            N, D = rpoly(rng, names, rng.choice([1, 2])), rpoly(rng, names, rng.choice([0, 1]))
+            if rng.random() < 0.3:
+                N, D = sq(N, names[0]), sq(D, names[0])
+
+            def tr(env, N=N, D=D):
+                n, d = ev(N, env), ev(D, env)
+                return "lead0" if d == 0 else ("stable" if abs(n) < abs(d) else "not")
+            facs.append(("((%s)*lambda - (%s))" % (D, N), tr, ["(%s) - (%s)" % (N, D), "(%s) + (%s)" % (N, D), D]))
+        elif kd == "quad":
+            L = rng.choice(["1", "1", rpoly(rng, names, 1)])
+            P, Q = rpoly(rng, names, rng.choice([1, 2])), rpoly(rng, names, 1, -1, 1)
+            if rng.random() < 0.2:
+                Q = "1"                     # reciprocal: roots on the circle or a pair r, 1/r
+            if rng.random() < 0.3:
+                P, Q = sq(P, names[0]), sq(Q, names[0])
+
+            def tr(env, L=L, P=P, Q=Q):
+                l, p, q = ev(L, env), ev(P, env), ev(Q, env)
+                if l == 0:
+                    return "lead0"
+                p, q = p / l, q / l
+                return "stable" if abs(q) < 1 and abs(p) < 1 + q else "not"
+            facs.append(("((%s)*lambda^2 + (%s)*lambda + (%s))" % (L, P, Q), tr,
+                         ["(%s) - (%s)" % (Q, L), "(%s) + (%s)" % (Q, L), "(%s) + (%s) - (%s)" % (L, Q, P),
+                          "(%s) + (%s) + (%s)" % (L, Q, P), L]))
+        elif kd == "recip":
+            R = rpoly(rng, names, 1)
+
+            def tr(env, R=R):
+                return "lead0" if ev(R, env) == 0 else "not"
+            facs.append(("((%s)*lambda - 1)*(lambda - (%s))" % (R, R), tr, [R]))
+        elif kd == "double":
+            c = rpoly(rng, names, 1)
+
+            def tr(env, c=c):
+                return "stable" if abs(ev(c, env)) < 1 else "not"
+            facs.append(("(lambda - (%s))^2" % c, tr, ["(%s) - 1" % c, "(%s) + 1" % c]))
+        else:   # complex pair r^2 lambda^2 ... roots r e^{+-i th}, cos th = k/m: |root| = |r|
+            R = rpoly(rng, names, 1)
+            cs = rng.choice([F(0), F(1, 2), F(-3, 5), F(4, 5), F(1, 3)])
+
+            def tr(env, R=R):
+                return "stable" if abs(ev(R, env)) < 1 else "not"
+            facs.append(("(lambda^2 - 2*(%s)*(%s)*lambda + (%s)^2)" % (cs, R, R), tr,
+                         ["(%s) - 1" % R, "(%s) + 1" % R]))
+    if rng.random() < 0.25:             # a constant factor of free sign
+        K = rpoly(rng, names, 1)
+
+        def tr(env, K=K):
+            return "lead0" if ev(K, env) == 0 else "stable"
+        facs.append(("(%s)" % K, tr, [K]))
+    return facs
+
+
+def family_truth(facs, env):
+    r = [t(env) for _, t, _ in facs]
+    if "lead0" in r:
+        return "not"            # singular step (leading coefficient 0): never stable
+    return "stable" if all(x == "stable" for x in r) else "not"
+
+
+def rational_roots(poly_text, var, env):
+    """rational roots in var of a polynomial text with the other variables set (sympy)"""
+    import sympy
+    x = sympy.Symbol(var)
+    loc = {k: sympy.Rational(v.numerator, v.denominator) for k, v in env.items() if k != var}
+    loc[var] = x
+    e = sympy.sympify(poly_text.replace("^", "**"), locals=loc)
+    for k, v in loc.items():
+        if k != var:
+            e = e.subs(sympy.Symbol(k), v)
+    e = sympy.expand(e)
+    if e.free_symbols != {x}:
+        return []
+    out = []
+    for r in sympy.Poly(e, x).ground_roots():
+        if r.is_rational:
+            out.append(F(int(r.p), int(r.q)))
+    return out
+
+
+def probe_points(rng, names, facs, nrand):
+    pts = []
+    for _ in range(nrand):
+        pts.append({v: rand_frac(rng, -3, 3, (1, 2, 3, 4, 5, 7)) for v in names})
+    # boundary points: rational roots in names[0] of each planted boundary polynomial
+    for _, _, bps in facs:
+        for bp in bps:
+            base = {v: rand_frac(rng, -2, 2, (1, 2, 3)) for v in names}
+            for r in rational_roots(bp, names[0], base):
+                for d in (F(0), F(1, 1000), F(-1, 1000)):
+                    e = dict(base)
+                    e[names[0]] = r + d
+                    pts.append(e)
+    return pts
+
+
+def check_conditions(tag, res, pts, truth, bad):
+    """hurwitz / jury / routh result against the planted truth at pts"""
+    name = res.get("analysis")
+    v = res.get("verdict", "")
+    n = 0
+    if "status" in res:                 # no parameter left in p: a point verdict
+        for env in pts:
+            n += 1
+            if (res["status"] == "stable") != (truth(env) == "stable"):
+                bad.append("%s status %s at %s, planted %s" % (name, res["status"], env, truth(env)))
+        return n
+    if name == "routh":
+        rows = res.get("rows") or []
+        if not res.get("symbolic") or not rows:
+            return 0
+        if any(e.get("kind") in ("zero_row", "degree_drop") for e in res.get("events", [])):
+            # roots symmetric about z = 0, or lambda = -1, for every value: never stable
+            for env in pts:
+                n += 1
+                if truth(env) == "stable":
+                    bad.append("routh zero row (never stable) at %s, planted stable" % env)
+            return n
+        for env in pts:
+            col = [ev(r[0], env) for r in rows if r]
+            if any(x == 0 for x in col) or len(col) < len(rows):
+                continue            # the array is not valid there (its note)
+            # fraction-free column f_0 = r_0, f_k = r_1 ... r_k (r the textbook column,
+            # derived by hand from the row recursion): stable iff every r_k has r_0's sign,
+            # i.e. sign f_k = (sign f_0)^k
+            s0 = 1 if col[0] > 0 else -1
+            holds = all((x > 0) == (s0 ** k > 0) for k, x in enumerate(col) if k > 0)
+            n += 1
+            if holds != (truth(env) == "stable"):
+                bad.append("routh first column one-signed=%s at %s, planted %s" % (holds, env, truth(env)))
+        return n
+    if "branches" in res:
+        groups = res["branches"]
+    elif "conditions" in res:
+        groups = [res["conditions"]]
+    elif v.startswith("never stable"):
+        groups = []
+    elif v.startswith("stable under the assumptions"):
+        groups = [[]]
+    else:
+        bad.append("%s: no conditions (verdict '%s')" % (name, v))
+        return 0
+    nonzero = res.get("nonzero", [])         # factors that must not vanish (every branch)
+    for env in pts:
+        holds = any(all(ev_cond(c, env) for c in g) for g in groups) and all(ev_cond(c, env) for c in nonzero)
+        n += 1
+        if holds != (truth(env) == "stable"):
+            bad.append("%s conditions hold=%s at %s, planted %s" % (name, holds, env, truth(env)))
+    return n
+
+
+def part_symcond(rng, count):
+    for k in range(count):
+        names = ["a"] if rng.random() < 0.6 else ["a", "b"]
+        facs = planted_family(rng, names)
+        p = "*".join(f for f, _, _ in facs)
+        text = ("title planted symbolic conditions\nparam %s\nchar %s\nanalyse hurwitz\nanalyse jury\n"
+                "analyse routh\n" % (" ".join(names), p))
+        tag = "symcond-%d" % k
+        rc, doc, err = T.run(text, ["--time-limit", "20"])
+        if rc == 2 and ("limit" in err or "identically" in err):
+            ok("%s: refused with a reason (%s)" % (tag, err.strip()[:100]))
+            continue
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        pts = probe_points(rng, names, facs, 40)
+        bad, n = [], 0
+        for res in doc["cases"][0]["results"]:
+            n += check_conditions(tag, res, pts, lambda env: family_truth(facs, env), bad)
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: %d point checks agree (%d factors)" % (tag, n, len(facs)))
+
+
+# ---------------------------------------------------------------- part symmat
+def part_symmat(rng, count):
+    for k in range(count):
+        n = rng.randint(2, 3)
+        diag = []
+        for _ in range(n):
+            diag.append((rand_frac(rng, -1, 1, (1, 2, 4)), rand_frac(rng, -1, 1, (1, 2, 4))))   # d = u + v a
+        Tm = [[F(0)] * n for _ in range(n)]
+        Ta = [[F(0)] * n for _ in range(n)]
+        for i in range(n):
+            Tm[i][i], Ta[i][i] = diag[i]
+            for j in range(i + 1, n):
+                Tm[i][j] = F(rng.randint(-1, 1))
+        S, Si = T.rand_invertible(rng, n)
+        M0 = T.mat_mul(T.mat_mul(S, Tm), Si)
+        M1 = T.mat_mul(T.mat_mul(S, Ta), Si)
+        names = ["x%d" % (i + 1) for i in range(n)]
+        body = "param a\nunknown " + " ".join(names) + "\n" + "".join(
+            "eq %s[n+1] = %s\n" % (names[i], " + ".join("((%s) + (%s)*a)*%s[n]" % (M0[i][j], M1[i][j], names[j])
+                                                        for j in range(n))) for i in range(n))
+        text = "title planted triangular system\n%sanalyse hurwitz\nanalyse jury\nanalyse routh\n" % body
+
+        def truth(env):
+            a = env["a"]
+            return "stable" if all(abs(u + v * a) < 1 for u, v in diag) else "not"
+        pts = [{"a": rand_frac(rng, -4, 4, (1, 2, 3, 5))} for _ in range(40)]
+        for u, v in diag:
+            if v != 0:
+                for e in (F(1), F(-1)):
+                    for d in (F(0), F(1, 1000), F(-1, 1000)):
+                        pts.append({"a": (e - u) / v + d})
+        tag = "symmat-%d" % k
+        rc, doc, err = T.run(text, ["--time-limit", "20"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        bad, cnt = [], 0
+        for res in doc["cases"][0]["results"]:
+            cnt += check_conditions(tag, res, pts, truth, bad)
+        if bad:
+            fail("%s: %s (diag %s); case %s" % (tag, "; ".join(bad[:3]), diag, T.save_failing(text, tag)))
+        else:
+            ok("%s: %d point checks agree (%d x %d)" % (tag, cnt, n, n))
+
+
+PARTS = {"symcond": part_symcond, "symmat": part_symmat}
+
+if __name__ == "__main__":
+    part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+    rng = random.Random(seed * 1000003 + sum(map(ord, part)))
+    PARTS[part](rng, count)
+    sys.exit(1 if NFAIL else 0)
