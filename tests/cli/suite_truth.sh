@@ -56,6 +56,10 @@ if command -v jq >/dev/null 2>&1; then
         "$(jfield $C 0 '.note | contains("sign f_k = (sign f_0)^k")')"
     check "routh negative lead: stable at a = -3" '"stable"' \
         "$("$RS" --json --set a=-3 --analyse stability $C 2>/dev/null | jq -c '.cases[0].results[0].status')"
+    # RK tableau whose det has the factor q - 1 (h-truth2): astability exited 2 at q = 1
+    C=cases/truth/rk-common-factor-astability.case
+    check "rk common factor: astability (was exit 2)" '[true,true,["-inf",0],["-inf","inf"]]' \
+        "$(jfield $C 1 ' | [.a_stable, .l_stable, .real_interval, .imag_interval]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi

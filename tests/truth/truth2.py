@@ -311,7 +311,227 @@ def part_symmat(rng, count):
             ok("%s: %d point checks agree (%d x %d)" % (tag, cnt, n, n))
 
 
-PARTS = {"symcond": part_symcond, "symmat": part_symmat}
+# ---------------------------------------------------------------- parts rk / astab (sympy)
+def sym_rat(x):
+    import sympy
+    return sympy.Rational(x.numerator, x.denominator)
+
+
+def rk_R(A, b):
+    """R(z) = det(I - zA + z 1 b^T) / det(I - zA) (Hairer-Wanner II, IV.3, (3.2)), reduced:
+    (N, D) sympy Polys in z with gcd 1"""
+    import sympy
+    z = sympy.Symbol("z")
+    s_ = len(b)
+    Am = sympy.Matrix([[sym_rat(x) for x in r] for r in A])
+    one_b = sympy.Matrix(s_, s_, lambda i, j: sym_rat(b[j]))
+    I = sympy.eye(s_)
+    N = sympy.Poly(sympy.expand((I - z * Am + z * one_b).det()), z)
+    D = sympy.Poly(sympy.expand((I - z * Am).det()), z)
+    g = sympy.gcd(N, D)
+    return sympy.div(N, g)[0], sympy.div(D, g)[0], g
+
+
+def interval_walk(cands, bounded_at, sing_at):
+    """the connected component of {bounded} containing 0 on the real line, given the sorted
+    exact candidate points (sympy numbers) where the status can change: (lo, lo_closed, hi,
+    hi_closed), lo/hi None for -inf/inf"""
+    import sympy
+    cands = sorted(set(cands), key=lambda c: float(sympy.N(c, 50)))
+    def mid(u, v):
+        if u is None:
+            return sympy.floor(sympy.N(v, 30)) - 1
+        if v is None:
+            return sympy.ceiling(sympy.N(u, 30)) + 1
+        return sympy.nsimplify((sympy.N(u, 40) + sympy.N(v, 40)) / 2, rational=True)
+    res = []
+    for direction in (-1, 1):
+        pts = [c for c in cands if (sympy.N(c, 50) < 0 if direction < 0 else sympy.N(c, 50) > 0)]
+        pts = pts[::-1] if direction < 0 else pts
+        prev, end = sympy.Integer(0), None
+        for c in pts:
+            if not bounded_at(mid(prev, c) if direction > 0 else mid(c, prev)):
+                end = (prev, True)
+                break
+            if sing_at(c):
+                end = (c, False)
+                break
+            prev = c
+        else:
+            m = mid(prev, None) if direction > 0 else mid(None, prev)
+            end = (None, False) if bounded_at(m) else (prev, True)
+        res.append(end)
+    (lo, loc), (hi, hic) = res
+    return lo, loc, hi, hic
+
+
+def astab_truth(N, D, g=None):
+    """a_stable, l_stable, |R(inf)|, real interval, imaginary interval of R = N/D exactly;
+    g: a factor common to N and D cancelled in R -- its zeros are singular points (the
+    stage equations cannot be solved there; design.md: singular, never stable)"""
+    import sympy
+    z, y = sympy.Symbol("z"), sympy.Symbol("y", real=True)
+    if g is not None and g.degree() > 0:
+        N, D = N * g, D * g          # the singular points are then poles of the unreduced form
+    Ne, De = N.as_expr(), D.as_expr()
+    # E(y) = |D(iy)|^2 - |N(iy)|^2 (real polynomial in y)
+    Dn = sympy.expand(De.subs(z, sympy.I * y))
+    Nn = sympy.expand(Ne.subs(z, sympy.I * y))
+    if g is not None and g.degree() > 0:    # E of the reduced R (|g|^2 factors out), poles of the full D
+        Nr, Dr = sympy.div(N, g)[0], sympy.div(D, g)[0]
+        Dn_r = sympy.expand(Dr.as_expr().subs(z, sympy.I * y))
+        Nn_r = sympy.expand(Nr.as_expr().subs(z, sympy.I * y))
+    else:
+        Dn_r, Nn_r = Dn, Nn
+    E = sympy.Poly(sympy.expand(sympy.re(Dn_r) ** 2 + sympy.im(Dn_r) ** 2 - sympy.re(Nn_r) ** 2 - sympy.im(Nn_r) ** 2), y)
+    E_full = sympy.Poly(sympy.expand(sympy.re(Dn) ** 2 + sympy.im(Dn) ** 2 - sympy.re(Nn) ** 2 - sympy.im(Nn) ** 2), y)
+    del E_full
+    e_nonneg = E.is_zero or (E.LC() > 0 and all(m % 2 == 0 for _, m in sympy.sqf_list(E)[1] if _.degree() > 0 and _.count_roots() > 0)
+                             and not any(f.count_roots() > 0 and m % 2 == 1 for f, m in sympy.sqf_list(E)[1]))
+    if not E.is_zero and E.degree() == 0:
+        e_nonneg = E.LC() >= 0
+    poles_right = all(sympy.re(sympy.N(r, 60)) > 0 for r in sympy.Poly(De, z).all_roots()) if D.degree() > 0 else True
+    a_st = bool(e_nonneg and poles_right and N.degree() <= D.degree())
+    if N.degree() > D.degree():
+        lim = "inf"
+    elif N.degree() < D.degree():
+        lim = sympy.Integer(0)
+    else:
+        lim = abs(N.LC() / D.LC())
+    l_st = a_st and lim == 0
+    # real axis: |R(x)| <= 1 and D(x) != 0
+    crit = sympy.Poly(sympy.expand((Ne - De) * (Ne + De) * De), z)
+    cands = [r for f, _ in sympy.factor_list(crit)[1] for r in sympy.Poly(f, z).real_roots()] if crit.degree() > 0 else []
+    def bnd_real(x):
+        d = De.subs(z, x)
+        return d != 0 and abs(Ne.subs(z, x)) <= abs(d)
+    def sing_real(x):
+        return sympy.simplify(De.subs(z, x)) == 0
+    real_iv = interval_walk(cands, bnd_real, sing_real)
+    # imaginary axis: E(s) >= 0 and D(is) != 0
+    Dre, Dim = sympy.Poly(sympy.re(Dn), y), sympy.Poly(sympy.im(Dn), y)
+    gD = sympy.gcd(Dre, Dim)
+    critI = sympy.Poly(E.as_expr() * gD.as_expr(), y) if not E.is_zero else gD
+    candsI = [r for f, _ in sympy.factor_list(critI)[1] for r in sympy.Poly(f, y).real_roots()] \
+        if critI.degree() > 0 else []
+    def bnd_im(s_):
+        return (gD.degree() == 0 or gD.eval(s_) != 0) and (E.is_zero or E.eval(s_) >= 0)
+    def sing_im(s_):
+        return gD.degree() > 0 and sympy.simplify(gD.as_expr().subs(y, s_)) == 0
+    imag_iv = interval_walk(candsI, bnd_im, sing_im)
+    return a_st, l_st, lim, real_iv, imag_iv
+
+
+def end_value(e):
+    """a recstab interval end as a float (None for +-inf)"""
+    if e in ("-inf", "inf", None):
+        return None
+    if isinstance(e, dict):
+        return float(e.get("certified", e.get("approx")))
+    return float(F(str(e)))
+
+
+def compare_interval(name, got, detail, want, bad):
+    import sympy
+    lo, loc, hi, hic = want
+    if got is None:
+        bad.append("%s null, truth %s" % (name, want))
+        return
+    for g, w, closed, side, key in ((got[0], lo, loc, "lo", "lo_closed"), (got[1], hi, hic, "hi", "hi_closed")):
+        gv = end_value(g)
+        wv = None if w is None else float(sympy.N(w, 30))
+        if (gv is None) != (wv is None) or (gv is not None and abs(gv - wv) > 1e-9 * (1 + abs(wv))):
+            bad.append("%s %s end %s, truth %s" % (name, side, g, w))
+        elif w is not None and detail and detail.get(key) is not None and detail.get(key) != closed:
+            bad.append("%s %s closed=%s, truth %s" % (name, side, detail.get(key), closed))
+
+
+def check_astab(tag, a, N, D, bad, g=None):
+    a_st, l_st, lim, real_iv, imag_iv = astab_truth(N, D, g)
+    if a.get("a_stable") != a_st:
+        bad.append("a_stable %s, truth %s" % (a.get("a_stable"), a_st))
+    if "l_stable" in a and a.get("l_stable") != l_st:
+        bad.append("l_stable %s, truth %s" % (a.get("l_stable"), l_st))
+    gl = a.get("limit_at_infinity")
+    if isinstance(gl, dict):
+        gl = gl.get("exact", gl.get("certified"))
+    if gl is not None and str(gl) != str(lim) and not (lim != "inf" and gl != "inf" and abs(float(F(str(gl))) - float(lim)) < 1e-12):
+        bad.append("limit_at_infinity %s, truth %s" % (gl, lim))
+    compare_interval("real_interval", a.get("real_interval"), a.get("real_interval_detail"), real_iv, bad)
+    compare_interval("imag_interval", a.get("imag_interval"), a.get("imag_interval_detail"), imag_iv, bad)
+    return a_st
+
+
+def rand_tableau(rng):
+    s_ = rng.choice([1, 2, 2, 3])
+    kind = rng.choice(["explicit", "dirk", "implicit"])
+    A = [[F(0)] * s_ for _ in range(s_)]
+    for i in range(s_):
+        for j in range(s_):
+            if j < i or (j == i and kind != "explicit") or (j > i and kind == "implicit"):
+                A[i][j] = rand_frac(rng, -1, 1, (1, 2, 3, 4))
+            if j == i and kind == "dirk":
+                A[i][j] = rand_frac(rng, F(1, 4), 1, (2, 3, 4)) or F(1, 2)   # often A-stable
+    b = [rand_frac(rng, -1, 2, (1, 2, 3, 4)) for _ in range(s_)]
+    if rng.random() < 0.8 and sum(b[:-1]) != 1:
+        b[-1] = 1 - sum(b[:-1])          # consistent: sum b = 1
+    if all(x == 0 for x in b):
+        b[-1] = F(1)
+    if rng.random() < 0.15 and s_ >= 2:   # a known method now and then: implicit midpoint / trapezoid
+        A, b = rng.choice([([[F(1, 2)]], [F(1)]), ([[F(0), F(0)], [F(1, 2), F(1, 2)]], [F(1, 2), F(1, 2)]),
+                           ([[F(5, 12), F(-1, 12)], [F(3, 4), F(1, 4)]], [F(3, 4), F(1, 4)]),
+                           ([[F(1, 2), F(-1, 2)], [F(1, 2), F(1, 2)]], [F(1, 2), F(1, 2)])])   # Lobatto IIIC
+    return A, b, kind
+
+
+def tableau_text(A, b):
+    return "[" + "; ".join(", ".join(str(x) for x in r) for r in A) + " | " + ", ".join(str(x) for x in b) + "]"
+
+
+def parse_poly(text, names):
+    import sympy
+    loc = {("lam" if n == "lambda" else n): sympy.Symbol(n) for n in names}
+    return sympy.sympify(re.sub(r"\blambda\b", "lam", text).replace("^", "**"), locals=loc)
+
+
+def part_rk(rng, count):
+    """integrate S rk [A | b] on y' = q y: recstab's charpoly against R(z) = N/D from the
+    tableau (det formula, sympy), and astability against astab_truth (exact)."""
+    import sympy
+    for k in range(count):
+        A, b, kind = rand_tableau(rng)
+        N, D, g = rk_R(A, b)
+        text = ("title random tableau\nparam q\nsubsystem S state y\n  y' = q*y\nintegrate S rk %s 1\n"
+                "analyse charpoly\nanalyse astability\n" % tableau_text(A, b))
+        tag = "rk-%d-%s" % (k, kind)
+        rc, doc, err = T.run(text, ["--time-limit", "30"])
+        if rc == 2 and err.strip() and N.degree() == 0 and D.degree() == 0:
+            ok("%s: refused (%s)" % (tag, err.strip()[:100]))
+            continue
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        bad = []
+        cp = T.find(doc, "charpoly")
+        q, lam, z = sympy.symbols("q lambda z")
+        P = sympy.Poly(parse_poly(cp["poly"], ["q", "lambda"]), lam)
+        Rq_N, Rq_D = N.as_expr().subs(z, q), D.as_expr().subs(z, q)
+        if P.degree() != 1:
+            bad.append("charpoly degree %d in lambda (one-step: 1)" % P.degree())
+        elif sympy.cancel(-P.coeff_monomial(1) / P.coeff_monomial(lam) - Rq_N / Rq_D) != 0:
+            bad.append("charpoly root %s, R(q) = %s" % (sympy.factor(-P.coeff_monomial(1) / P.coeff_monomial(lam)),
+                                                       sympy.factor(Rq_N / Rq_D)))
+        a = T.find(doc, "astability")
+        a_st = None
+        if a is not None and not bad:
+            a_st = check_astab(tag, a, N, D, bad, g)
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: R = (%s)/(%s), A-stable %s" % (tag, N.as_expr(), D.as_expr(), a_st))
+
+
+PARTS = {"symcond": part_symcond, "symmat": part_symmat, "rk": part_rk}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
