@@ -531,7 +531,188 @@ def part_rk(rng, count):
             ok("%s: R = (%s)/(%s), A-stable %s" % (tag, N.as_expr(), D.as_expr(), a_st))
 
 
-PARTS = {"symcond": part_symcond, "symmat": part_symmat, "rk": part_rk}
+# ---------------------------------------------------------------- part builders (sympy)
+def lagrange_coeffs(nodes, op):
+    """op(l_j) for the Lagrange basis l_j of the nodes (sympy), op a function of (poly, t)"""
+    import sympy
+    t = sympy.Symbol("t")
+    out = []
+    for j, xj in enumerate(nodes):
+        l = sympy.Integer(1)
+        for m, xm in enumerate(nodes):
+            if m != j:
+                l *= (t - xm) / sympy.Integer(xj - xm)
+        out.append(op(sympy.expand(l), t))
+    return out
+
+
+def own_lmm(name, K):
+    """(rho, sigma) as coefficient lists in lambda (highest power first ends at lambda^0),
+    derived from the interpolation definitions (Hairer-Norsett-Wanner I, III.1):
+    Adams-Bashforth K: nodes t_n, ..., t_{n-K+1}, integrate over [t_n, t_{n+1}];
+    Adams-Moulton K: nodes t_{n+1}, ..., t_{n+1-K} (K + 1 of them);
+    BDF K: derivative at t_{n+1} of the interpolant through t_{n+1}, ..., t_{n+1-K};
+    leapfrog: x[n+1] - x[n-1] = 2 h f[n]."""
+    import sympy
+    lam = sympy.Symbol("lambda")
+    integ = lambda l, t: sympy.integrate(l, (t, 0, 1))
+    if name == "adams-bashforth":
+        b = lagrange_coeffs([-j for j in range(K)], integ)
+        rho = lam ** K - lam ** (K - 1)
+        sig = sum(bj * lam ** (K - 1 - j) for j, bj in enumerate(b))
+    elif name == "adams-moulton":
+        b = lagrange_coeffs([1 - j for j in range(K + 1)], integ)
+        rho = lam ** K - lam ** (K - 1)
+        sig = sum(bj * lam ** (K - j) for j, bj in enumerate(b))
+    elif name == "bdf":
+        a = lagrange_coeffs([1 - j for j in range(K + 1)], lambda l, t: sympy.diff(l, t).subs(t, 1))
+        rho = sum(aj * lam ** (K - j) for j, aj in enumerate(a))
+        sig = lam ** K
+    else:
+        rho, sig = lam ** 2 - 1, 2 * lam
+    return sympy.expand(rho), sympy.expand(sig)
+
+
+def own_alpha(am, af, w):
+    """det(lambda L - R) of the generalized-alpha step on x'' = -w^2 x, h = 1, state (d, v, a)
+    (Chung and Hulbert 1993, eqs. (3)-(5) with gamma = 1/2 - am + af, beta = (1 - am + af)^2/4):
+      d1 = d0 + v0 + (1/2 - beta) a0 + beta a1,  v1 = v0 + (1 - gamma) a0 + gamma a1,
+      (1 - am) a1 + am a0 = -w^2 ((1 - af) d1 + af d0)"""
+    import sympy
+    lam = sympy.Symbol("lambda")
+    g = sympy.Rational(1, 2) - am + af
+    be = (1 - am + af) ** 2 / 4
+    # rows: L x1 = R x0 with x = (d, v, a)
+    L = sympy.Matrix([[1, 0, -be], [0, 1, -g], [w ** 2 * (1 - af), 0, 1 - am]])
+    R = sympy.Matrix([[1, 1, sympy.Rational(1, 2) - be], [0, 1, 1 - g], [-w ** 2 * af, 0, -am]])
+    return sympy.expand((lam * L - R).det())
+
+
+def strip_lambda(P, lam):
+    """P divided by its largest power of lambda, as a Poly in lambda"""
+    import sympy
+    P = sympy.Poly(sympy.expand(P), lam)
+    m = min(mono[0] for mono in P.monoms())
+    return sympy.Poly(sympy.cancel(P.as_expr() / lam ** m), lam)
+
+
+def proportional(P1, P2, lam):
+    """P1 = c P2 with c a nonzero constant (after stripping powers of lambda)"""
+    import sympy
+    a, b = strip_lambda(P1, lam), strip_lambda(P2, lam)
+    r = sympy.cancel(a.as_expr() / b.as_expr())
+    return r != 0 and not r.free_symbols
+
+
+# (a_stable, lower end of the real stability interval (None: -inf, "null": not zero-stable),
+# A(alpha) angle in degrees to 2 decimals) -- Hairer and Wanner, Solving ODEs II, Table V.2.3
+# (BDF alpha: 90, 90, 86.03, 73.35, 51.84, 17.84) and Lambert, Numerical Methods for ODEs
+# (1991), Table 3.? / Hairer-Wanner II Fig. V.1.1 (real intervals: AB1..AB4 -2, -1, -6/11,
+# -3/10; AM1 (trapezoid) -inf, AM2..AM4 -6, -3, -90/49); BDF7 is not zero-stable (HNW I, III.3).
+LMM_LITERATURE = {
+    ("bdf", 1): (True, None, 90), ("bdf", 2): (True, None, 90), ("bdf", 3): (False, None, 86.03),
+    ("bdf", 4): (False, None, 73.35), ("bdf", 5): (False, None, 51.84), ("bdf", 6): (False, None, 17.84),
+    ("bdf", 7): (False, "null", None),
+    ("adams-bashforth", 1): (False, -2, None), ("adams-bashforth", 2): (False, -1, None),
+    ("adams-bashforth", 3): (False, F(-6, 11), None), ("adams-bashforth", 4): (False, F(-3, 10), None),
+    ("adams-moulton", 1): (True, None, 90), ("adams-moulton", 2): (False, -6, None),
+    ("adams-moulton", 3): (False, -3, None), ("adams-moulton", 4): (False, F(-90, 49), None),
+    ("leapfrog", 0): (False, 0, None),
+}
+
+
+def part_builders(rng, count):
+    """integrate S METHOD on y' = q y (multistep) and x'' = -w^2 x (alpha methods): the
+    charpoly against own_lmm / own_alpha, and the verdict of a sweep against the own exact
+    status of the own polynomial at each grid point (truth.exact_status, Fractions)."""
+    import sympy
+    lam, q, w = sympy.symbols("lambda q w")
+    specs = [("adams-bashforth", K) for K in range(1, 7)] + [("adams-moulton", K) for K in range(1, 7)] + \
+            [("bdf", K) for K in range(1, 8)] + [("leapfrog", 0)]
+    alpha = [("hht", F(-1, 3)), ("hht", F(-1, 10)), ("hht", F(0)), ("generalized-alpha", F(0)),
+             ("generalized-alpha", F(1, 2)), ("generalized-alpha", F(1)), ("generalized-alpha", F(4, 5)),
+             ("wbz", F(-1, 3)), ("wbz", F(-1, 7)), ("newmark", (F(1, 4), F(1, 2))), ("newmark", (F(0), F(1, 2))),
+             ("newmark", (F(1, 6), F(1, 2))), ("newmark", (F(3, 10), F(3, 5)))]
+    allspecs = specs + alpha
+    rng.shuffle(allspecs)
+    for k, (name, K) in enumerate(allspecs[:count]):
+        tag = "builder-%s-%s" % (name, str(K).replace("/", "_").replace(" ", ""))
+        if name in ("hht", "generalized-alpha", "wbz", "newmark"):
+            if name == "hht":
+                am, af = sympy.Integer(0), -sym_rat(K)
+            elif name == "wbz":
+                am, af = sym_rat(K), sympy.Integer(0)
+            elif name == "generalized-alpha":
+                r_ = sym_rat(K)
+                am, af = (2 * r_ - 1) / (r_ + 1), r_ / (r_ + 1)
+            if name == "newmark":
+                be, ga = sym_rat(K[0]), sym_rat(K[1])
+                Lm = sympy.Matrix([[1, 0, -be], [0, 1, -ga], [w ** 2, 0, 1]])
+                Rm = sympy.Matrix([[1, 1, sympy.Rational(1, 2) - be], [0, 1, 1 - ga], [0, 0, 0]])
+                own = sympy.expand((lam * Lm - Rm).det())
+                arg = "%s %s" % K
+            else:
+                own = own_alpha(am, af, w)
+                arg = str(K)
+            text = ("title builder\nparam w\nassume w > 0\nsubsystem S state x v\n  x'' = -w^2*x\n"
+                    "integrate S %s %s 1\nanalyse charpoly\nanalyse sweep w from 1/4 to 4 steps 15\n" % (name, arg))
+            var = "w"
+        else:
+            rho, sig = own_lmm(name, K)
+            own = sympy.expand(rho - q * sig)
+            text = ("title builder\nparam q\nsubsystem S state y\n  y' = q*y\nintegrate S %s %s1\n"
+                    "analyse charpoly\nanalyse sweep q from -4 to 1 steps 20\nanalyse astability\n"
+                    % (name, ("%d " % K) if K else ""))
+            var = "q"
+        rc, doc, err = T.run(text, ["--time-limit", "30"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        bad = []
+        cp = T.find(doc, "charpoly")
+        P = parse_poly(cp["poly"], [var, "lambda"])
+        if not proportional(P, own, lam):
+            bad.append("charpoly %s, own derivation %s" % (cp["poly"], sympy.factor(own)))
+        sw = T.find(doc, "sweep")
+        n = 0
+        ownp = strip_lambda(own, lam)
+        for row in (sw or {}).get("rows", []):
+            row = dict(zip(sw["columns"], row)) if isinstance(row, list) else row
+            v = F(str(row.get(var + "_exact") or row.get(var)))
+            c = [F(str(sympy.Rational(ownp.as_expr().coeff(lam, i).subs(sympy.Symbol(var), sym_rat(v)))))
+                 for i in range(ownp.degree() + 1)]
+            if c[-1] == 0:
+                continue
+            st = T.exact_status(c)
+            if st is None:
+                continue
+            n += 1
+            if row.get("verdict") != st:
+                bad.append("%s=%s: sweep %s, own %s" % (var, v, row.get("verdict"), st))
+        if not sw:
+            bad.append("no sweep")
+        lit = LMM_LITERATURE.get((name, K))
+        a = T.find(doc, "astability")
+        if lit is not None and a is not None:
+            a_lit, lo_lit, alpha_lit = lit
+            if a.get("a_stable") != a_lit:
+                bad.append("a_stable %s, literature %s" % (a.get("a_stable"), a_lit))
+            ri = a.get("real_interval")
+            lo = None if ri is None else end_value(ri[0])
+            if lo_lit == "null":
+                if ri is not None:
+                    bad.append("real_interval %s, literature: not zero-stable (null)" % ri)
+            elif (lo is None) != (lo_lit is None) or (lo is not None and abs(lo - float(lo_lit)) > 1e-12):
+                bad.append("real_interval %s, literature lower end %s" % (ri, lo_lit))
+            if alpha_lit is not None and abs((a.get("alpha_degrees_approx") or -1) - alpha_lit) > 0.006:
+                bad.append("alpha %s, literature %s" % (a.get("alpha_degrees_approx"), alpha_lit))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: charpoly agrees, %d sweep points agree" % (tag, n))
+
+
+PARTS = {"symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
