@@ -712,7 +712,15 @@ def part_builders(rng, count):
             ok("%s: charpoly agrees, %d sweep points agree" % (tag, n))
 
 
-PARTS = {"symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders}
+def part_quick(rng, count):
+    """the make-check sample: every part in one process (sympy is imported once)"""
+    part_symcond(rng, count)
+    part_symmat(rng, max(1, count // 2))
+    part_rk(rng, count)
+    part_builders(rng, count)
+
+
+PARTS = {"quick": part_quick, "symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
