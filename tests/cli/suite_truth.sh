@@ -60,6 +60,10 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/rk-common-factor-astability.case
     check "rk common factor: astability (was exit 2)" '[true,true,["-inf",0],["-inf","inf"]]' \
         "$(jfield $C 1 ' | [.a_stable, .l_stable, .real_interval, .imag_interval]')"
+    # a negative real root found as a ball across the axis (h-truth2): omega was "0e+1", damping nan
+    C=cases/truth/modes-negative-real-root.case
+    check "modes negative real root (was 0e+1, nan)" '["-1.09861228866811","3.14159265358979","0.330097420439083"]' \
+        "$(jfield $C 0 '.modes[0] | [.sigma, .omega, .damping_ratio]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi

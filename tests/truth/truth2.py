@@ -712,15 +712,143 @@ def part_builders(rng, count):
             ok("%s: charpoly agrees, %d sweep points agree" % (tag, n))
 
 
+# ---------------------------------------------------------------- part limit
+def part_limit(rng, count):
+    """limit h -> 0 and h -> inf of p = prod_i (D_i(h) lambda - N_i(h)) * (an optional complex
+    pair lambda^2 - (6/5) r(h) lambda + r(h)^2, roots r(h)(3 +- 4i)/5, |root| = |r(h)|): each
+    planted root N_i/D_i tends to a known limit (ratio of the lowest / leading terms, 0 or inf),
+    counted with multiplicity; compared as the multiset of |limits| and the count of infinite ones."""
+    for k in range(count):
+        facs, lim0, liminf = [], [], []
+
+        def rterm(rng):
+            # c0 + c1 h + c2 h^2 with some coefficients zero (the degree and valuation planted)
+            c = [rand_frac(rng, -2, 2, (1, 2, 3)) if rng.random() < 0.6 else F(0) for _ in range(3)]
+            if not any(c):
+                c[rng.randint(0, 2)] = F(1)
+            return c
+
+        def lim_ratio(Nc, Dc, at):
+            idx = range(3) if at == "0" else range(2, -1, -1)
+            vn = next(i for i in idx if Nc[i] != 0)
+            vd = next(i for i in idx if Dc[i] != 0)
+            if vn == vd:
+                return abs(Nc[vn] / Dc[vd])
+            if at == "0":
+                return F(0) if vn > vd else "inf"
+            return "inf" if vn > vd else F(0)
+
+        def ptxt(c):
+            return "(%s)" % " + ".join("(%s)*h^%d" % (x, i) for i, x in enumerate(c) if x != 0)
+        for _ in range(rng.randint(1, 3)):
+            Nc, Dc = rterm(rng), rterm(rng)
+            facs.append("(%s*lambda - %s)" % (ptxt(Dc), ptxt(Nc)))
+            lim0.append(lim_ratio(Nc, Dc, "0"))
+            liminf.append(lim_ratio(Nc, Dc, "inf"))
+        if rng.random() < 0.4:
+            Rc = rterm(rng)
+            facs.append("(lambda^2 - (6/5)*%s*lambda + %s^2)" % (ptxt(Rc), ptxt(Rc)))
+            for at, lst in (("0", lim0), ("inf", liminf)):
+                v = lim_ratio(Rc, [F(1), F(0), F(0)], at)
+                lst += [v, v]
+        text = "title planted limits\nparam h\nchar %s\nanalyse limit h -> 0\nanalyse limit h -> inf\n" % "*".join(facs)
+        tag = "limit-%d" % k
+        rc, doc, err = T.run(text, ["--time-limit", "20"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        bad = []
+        res = [r for r in doc["cases"][0]["results"] if r.get("analysis") == "limit"]
+        for r, want in zip(res, (lim0, liminf)):
+            got_inf = sum(x["multiplicity"] for x in r["roots"] if x["value"] == "inf")
+            got_abs = sorted(float(x["abs"]) for x in r["roots"] if x["value"] != "inf" for _ in range(x["multiplicity"]))
+            w_inf = sum(1 for x in want if x == "inf")
+            w_abs = sorted(float(x) for x in want if x != "inf")
+            if got_inf != w_inf or r.get("roots_to_infinity") != w_inf or len(got_abs) != len(w_abs) or \
+                    any(abs(a - b) > 1e-12 for a, b in zip(got_abs, w_abs)):
+                bad.append("h -> %s: |roots| %s + %d at inf, planted %s + %d" % (r["to"], got_abs, got_inf, w_abs, w_inf))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: limits agree (%d factors)" % (tag, len(facs)))
+
+
+# ---------------------------------------------------------------- part radmat
+def part_radmat(rng, count):
+    """radius and modes of x[n+1] = M x[n], M = S J S^-1 with J planted (truth.py's blocks:
+    rational eigenvalues, Jordan blocks, rotation blocks r R(t) with eigenvalues r (c +- i s),
+    c = (1 - t^2)/(1 + t^2), s = 2t/(1 + t^2)): the certified [lower, upper] must contain
+    rho = max |eigenvalue| (exact: |r| rational), the roots and sigma = ln|lambda|,
+    omega = arg lambda must match the planted eigenvalues (mpmath, 30 digits)."""
+    import mpmath
+    mpmath.mp.dps = 30
+    for k in range(count):
+        blocks, eigs = [], []
+        for _ in range(rng.randint(1, 3)):
+            c = rng.random()
+            v = rand_frac(rng, -2, 2, (1, 2, 3, 5, 7)) or F(1, 3)
+            if c < 0.35:
+                blocks.append([[v]])
+                eigs.append((v, F(0)))
+            elif c < 0.55:
+                blocks.append([[v, 1], [0, v]])
+                eigs += [(v, F(0))] * 2
+            else:
+                t = rand_frac(rng, -3, 3) or F(1, 2)
+                R = T.rot(t)
+                blocks.append([[v * x for x in r] for r in R])
+                cs, sn = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+                eigs += [(v * cs, v * sn), (v * cs, -v * sn)]
+        J = T.block_diag(blocks)
+        n = len(J)
+        S, Si = T.rand_invertible(rng, n)
+        M = T.mat_mul(T.mat_mul(S, J), Si)
+        names = ["x%d" % (i + 1) for i in range(n)]
+        text = ("title planted radius\nunknown %s\n" % " ".join(names) + "".join(
+            "eq %s[n+1] = %s\n" % (names[i], " + ".join("(%s)*%s[n]" % (M[i][j], names[j]) for j in range(n)))
+            for i in range(n)) + "analyse radius\nanalyse modes\n")
+        tag = "radmat-%d" % k
+        rc, doc, err = T.run(text, ["--time-limit", "20"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        bad = []
+        rho2 = max(a * a + b * b for a, b in eigs)
+        r = T.find(doc, "radius")
+        lo, hi = F(r["lower"]), F(r["upper"])
+        if not (lo * lo <= rho2 <= hi * hi):
+            bad.append("radius [%s, %s] misses sqrt(%s)" % (r["lower"], r["upper"], rho2))
+        m = T.find(doc, "modes")
+        got = [(float(x["root"]["re"]), float(x["root"]["im"])) for x in m["modes"] + m.get("spurious", [])]
+        want = [(float(a), float(b)) for a, b in eigs]
+        if not T.match_multiset(got, want, 1e-12):
+            bad.append("modes roots %s, planted %s" % (got, want))
+        for x in m["modes"]:
+            re_, im_ = mpmath.mpf(x["root"]["re"]), mpmath.mpf(x["root"]["im"])
+            # the planted root nearest to the reported one, exactly
+            a, b = min(eigs, key=lambda e: (float(e[0]) - float(re_)) ** 2 + (float(e[1]) - float(im_)) ** 2)
+            sig = mpmath.log(mpmath.sqrt(mpmath.mpf(a.numerator) ** 2 / a.denominator ** 2 + mpmath.mpf(b.numerator) ** 2 / b.denominator ** 2))
+            om = mpmath.atan2(mpmath.mpf(b.numerator) / b.denominator, mpmath.mpf(a.numerator) / a.denominator)
+            if abs(mpmath.mpf(x["sigma"]) - sig) > 1e-13 or abs(mpmath.mpf(x["omega"]) - om) > 1e-13:
+                bad.append("mode %s: sigma %s omega %s, planted %s %s" % (x["root"], x["sigma"], x["omega"],
+                                                                         mpmath.nstr(sig, 15), mpmath.nstr(om, 15)))
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: radius and %d modes agree (%d x %d)" % (tag, len(m["modes"]), n, n))
+
+
 def part_quick(rng, count):
     """the make-check sample: every part in one process (sympy is imported once)"""
     part_symcond(rng, count)
     part_symmat(rng, max(1, count // 2))
     part_rk(rng, count)
     part_builders(rng, count)
+    part_limit(rng, count)
+    part_radmat(rng, max(1, count // 2))
 
 
-PARTS = {"quick": part_quick, "symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders}
+PARTS = {"quick": part_quick, "symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders, "limit": part_limit, "radmat": part_radmat}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
