@@ -838,6 +838,51 @@ def part_radmat(rng, count):
             ok("%s: radius and %d modes agree (%d x %d)" % (tag, len(m["modes"]), n, n))
 
 
+# ---------------------------------------------------------------- part map
+def part_map(rng, count):
+    """`map a A1 B1 K1, b A2 B2 K2` of random real polynomials (truth.py's region2 family:
+    coefficients affine or quadratic in a, b, monic): each grid point's verdict against the
+    own exact status there (truth.exact_status: own bilinear transform + Routh, circle roots
+    at +-1 deflated; points with other circle roots skipped).  Grids with small denominators
+    hit the boundaries p(1) = 0, p(-1) = 0 often."""
+    for k in range(count):
+        deg = rng.choice([1, 2, 2, 3])
+        coefs = [T.rand_lin(rng) for _ in range(deg)] + ["1"]
+        ptxt = " + ".join("(%s)*lambda^%d" % (cf, i) for i, cf in enumerate(coefs))
+        K1, K2 = rng.choice([4, 5, 8, 9]), rng.choice([4, 5, 8, 9])
+        text = ("title planted map\nparam a b\nchar %s\nanalyse map a -2 2 %d, b -2 2 %d\n" % (ptxt, K1, K2))
+        tag = "map-%d" % k
+        rc, doc, err = T.run(text, ["--time-limit", "10"])
+        if rc == 2 and "time limit" in err:
+            # honest budget stop (the boundary's CAD of a cubic with quadratic coefficients)
+            ok("%s: budget stop (%s)" % (tag, err.strip()[-90:]))
+            continue
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], T.save_failing(text, tag)))
+            continue
+        mp = T.find(doc, "map")
+        bad, n = [], 0
+        for row in mp.get("rows", []):
+            row = dict(zip(mp["columns"], row))
+            a, b = F(row["a_exact"]), F(row["b_exact"])
+            c = [T.ev(T.ratify(cf), a, b) for cf in coefs]
+            st = T.exact_status(c)
+            if st is None:
+                continue
+            n += 1
+            if row["verdict"] != st:
+                bad.append("a=%s, b=%s: map %s (%s), own %s" % (a, b, row["verdict"], row.get("decided_by"), st))
+            lo, hi = row.get("radius_lower"), row.get("radius_upper")
+            if st == "stable" and hi is not None and lo is not None and lo >= 1:
+                bad.append("a=%s, b=%s: stable but radius >= %s" % (a, b, lo))
+        if not mp.get("rows"):
+            bad.append("no rows")
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:3]), T.save_failing(text, tag)))
+        else:
+            ok("%s: %d points agree (degree %d)" % (tag, n, deg))
+
+
 def part_quick(rng, count):
     """the make-check sample: every part in one process (sympy is imported once)"""
     part_symcond(rng, count)
@@ -848,7 +893,7 @@ def part_quick(rng, count):
     part_radmat(rng, max(1, count // 2))
 
 
-PARTS = {"quick": part_quick, "symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders, "limit": part_limit, "radmat": part_radmat}
+PARTS = {"quick": part_quick, "symcond": part_symcond, "symmat": part_symmat, "rk": part_rk, "builders": part_builders, "limit": part_limit, "radmat": part_radmat, "map": part_map}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
