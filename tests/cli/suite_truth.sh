@@ -64,6 +64,10 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/modes-negative-real-root.case
     check "modes negative real root (was 0e+1, nan)" '["-1.09861228866811","3.14159265358979","0.330097420439083"]' \
         "$(jfield $C 0 '.modes[0] | [.sigma, .omega, .damping_ratio]')"
+    # co-simulation with a double eigenvalue (h-truth2): the enclosure excludes 1 (was exit 2)
+    C=cases/truth/cosim-double-eigenvalue.case
+    check "cosim double eigenvalue: stable from the enclosure (was exit 2)" '["stable",true]' \
+        "$("$RS" --json --max-prec 2048 $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, (.upper | tonumber) < 1]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
