@@ -400,7 +400,8 @@ def astab_truth(N, D, g=None):
         lim = abs(N.LC() / D.LC())
     l_st = a_st and lim == 0
     # real axis: |R(x)| <= 1 and D(x) != 0
-    crit = sympy.Poly(sympy.expand((Ne - De) * (Ne + De) * De), z)
+    # |R| = 1 points and poles; a factor N -+ D vanishing identically (R = +-1) contributes none
+    crit = sympy.Poly(sympy.expand(sympy.Mul(*[f for f in (Ne - De, Ne + De, De) if sympy.expand(f) != 0])), z)
     cands = [r for f, _ in sympy.factor_list(crit)[1] for r in sympy.Poly(f, z).real_roots()] if crit.degree() > 0 else []
     def bnd_real(x):
         d = De.subs(z, x)
