@@ -352,6 +352,13 @@ static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0
     fmpq_init(zr); fmpq_init(zi);
     fmpq_set(e ? zi : zr, s0);
     eval_at(re, im, P, zr, zi);
+    /* p vanishes identically at a zero of a factor common to its coefficients
+     * (e.g. det(I - zA) of an RK tableau with a repeated stage): the step
+     * cannot be solved there, singular (it was an exit 2) */
+    if (fmpq_poly_is_zero(re) && fmpq_poly_is_zero(im)) {
+        *st = RS_STATUS_SINGULAR;
+        r = RS_OK;
+    } else
     /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if they differ) */
     r = rs_routh_complex_checked_status(st, re, im, P->n, err);
     fmpq_poly_clear(re); fmpq_poly_clear(im);

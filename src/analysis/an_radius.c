@@ -297,14 +297,26 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
     rs_cosim_t cs;
     rs_radius_t rr, rm;
     json_t *o;
-    int r;
+    int r, partial = 0, mono = 0;
     rs_cosim_init(cs, 1, 1);
     r = rs_run_cosim(cs, run);
     if (r != RS_OK) { rs_cosim_clear(cs); return r; }
     rs_radius_init(rr);
     rs_radius_init(rm);
     r = rs_cosim_radius(rr, cs, digits, run->opt->max_prec, run->err);
-    if (r == RS_OK) r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
+    if (r == RS_ERR_UNDECIDED && rr->partial && arb_is_finite(rr->lower) && arb_is_finite(rr->upper)
+        && strcmp(rs_radius_verdict(rr), "undecided") != 0) {
+        /* eigenvalues not isolated (a double eigenvalue of exp(A h)), but the
+         * certified enclosure excludes 1 and decides, as a sweep point does
+         * (it was an exit 2 with a stable rho <= 0.85 certified) */
+        partial = 1;
+        rs_error_init(run->err);
+        r = RS_OK;
+    }
+    if (r == RS_OK && !partial) {   /* partial: the monolithic one has the same cluster */
+        r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
+        mono = (r == RS_OK);
+    }
     if (r == RS_OK) {
         o = json_object();
         json_object_set_new(o, "analysis", json_string(stability ? "stability" : "radius"));
@@ -313,7 +325,11 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
         json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
                                                      "order", (json_int_t) cs->order));
         rs_json_radius(o, rr, digits);
-        json_object_set_new(o, "monolithic_rho", rs_json_arb(rm->rho, digits));
+        if (partial)
+            json_object_set_new(o, "note", json_string("eigenvalues not isolated (multiple eigenvalue or cluster): "
+                                                       "the certified enclosure [lower, upper] decides, rho is not "
+                                                       "to the digits requested"));
+        json_object_set_new(o, "monolithic_rho", mono ? rs_json_arb(rm->rho, digits) : json_null());
         json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_object_set_new(o, "substituted", rs_json_sets(run->c));

@@ -131,12 +131,16 @@ static int routh_symbolic(rs_run_t *run, const rs_request_t *q, const rs_variant
         json_object_set_new(o, "symbolic", json_true());
         json_object_set_new(o, "rows", rows);
         routh_symbolic_events(o, v, qz, rm);
+        /* the fraction-free first column is f_0 = r_0, f_k = r_1 r_2 ... r_k (r the textbook
+         * column): "one sign" would be wrong where q's leading coefficient is negative */
         json_object_set_new(o, "note", json_string(rm->zero_row >= 0 ?
-            "fraction-free rows; valid where the first-column entries do not vanish: a sign change in the "
-            "first column is a root with Re z > 0 (|lambda| > 1); the auxiliary polynomial's roots that lie "
-            "on the imaginary axis are on the unit circle" :
-            "fraction-free rows (each divided exactly by the pivot three rows up); valid where the "
-            "first-column entries do not vanish: all roots have Re z < 0 iff the first column has one sign"));
+            "fraction-free rows; the zero row means roots symmetric about z = 0 for every parameter "
+            "value (on the imaginary axis, i.e. on the unit circle, or pairs +-z): never asymptotically "
+            "stable; the auxiliary polynomial's roots that lie on the imaginary axis are on the unit circle" :
+            "fraction-free rows (each divided exactly by the pivot three rows up): first column f_0 = r_0, "
+            "f_k = r_1 r_2 ... r_k (r the textbook column); valid where the first-column entries do not "
+            "vanish: all roots have Re z < 0 iff every r_k has the sign of r_0, i.e. sign f_k = (sign f_0)^k "
+            "(all positive when f_0 > 0, alternating when f_0 < 0)"));
     } else if (r == RS_ERR_MATH) {
         /* a pivot vanishes identically: say so and point to the exact tools */
         char msg[RS_ERROR_MSG_LEN];

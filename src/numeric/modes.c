@@ -10,6 +10,25 @@ void rs_modes_continuous(arb_t sigma, arb_t omega, arb_t mag, arb_t zeta, const 
     acb_div_arb(c, c, h, prec);
     arb_set(sigma, acb_realref(c));
     arb_set(omega, acb_imagref(c));
+    if (arb_contains_zero(acb_imagref(root)) && arb_is_negative(acb_realref(root))) {
+        /* a root on (or a ball across) the negative real axis: the principal
+         * arg is +-pi up to the ball, and acb_log returns [-pi, pi] ("0e+1",
+         * damping nan); |omega| h = pi - atan(|im|/|re|) encloses it (the sign
+         * is the +- of sigma +- i omega) */
+        arb_t t, u;
+        arb_init(t); arb_init(u);
+        arb_abs(t, acb_imagref(root));
+        arb_abs(u, acb_realref(root));
+        arb_div(t, t, u, prec);
+        arb_atan(t, t, prec);
+        arb_const_pi(omega, prec);
+        arb_sub(omega, omega, t, prec);
+        arb_div(omega, omega, h, prec);
+        acb_abs(u, root, prec);
+        arb_log(sigma, u, prec);
+        arb_div(sigma, sigma, h, prec);
+        arb_clear(t); arb_clear(u);
+    }
     arb_hypot(mag, sigma, omega, prec);
     arb_div(zeta, sigma, mag, prec);
     arb_neg(zeta, zeta);

@@ -48,6 +48,26 @@ if command -v jq >/dev/null 2>&1; then
     check "forall planted: intervals" \
         '[["unstable",null,"-2",false,true],["stable","-2","2",false,false],["marginal","2","2",true,true],["unstable","2",null,false,false]]' \
         "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .lo_closed, .hi_closed])')"
+    # symbolic Routh array with q's leading coefficient negative where stable (h-truth2):
+    # the column by hand (3a + 6, 4a + 2, 4a^2 + 2a); the note's criterion was "one sign"
+    C=cases/truth/routh-negative-lead.case
+    check "routh negative lead: column" '["3*a + 6","4*a + 2","4*a^2 + 2*a"]' "$(jfield $C 0 '.rows | map(.[0])')"
+    check "routh negative lead: note (was: one sign)" 'true' \
+        "$(jfield $C 0 '.note | contains("sign f_k = (sign f_0)^k")')"
+    check "routh negative lead: stable at a = -3" '"stable"' \
+        "$("$RS" --json --set a=-3 --analyse stability $C 2>/dev/null | jq -c '.cases[0].results[0].status')"
+    # RK tableau whose det has the factor q - 1 (h-truth2): astability exited 2 at q = 1
+    C=cases/truth/rk-common-factor-astability.case
+    check "rk common factor: astability (was exit 2)" '[true,true,["-inf",0],["-inf","inf"]]' \
+        "$(jfield $C 1 ' | [.a_stable, .l_stable, .real_interval, .imag_interval]')"
+    # a negative real root found as a ball across the axis (h-truth2): omega was "0e+1", damping nan
+    C=cases/truth/modes-negative-real-root.case
+    check "modes negative real root (was 0e+1, nan)" '["-1.09861228866811","3.14159265358979","0.330097420439083"]' \
+        "$(jfield $C 0 '.modes[0] | [.sigma, .omega, .damping_ratio]')"
+    # co-simulation with a double eigenvalue (h-truth2): the enclosure excludes 1 (was exit 2)
+    C=cases/truth/cosim-double-eigenvalue.case
+    check "cosim double eigenvalue: stable from the enclosure (was exit 2)" '["stable",true]' \
+        "$("$RS" --json --max-prec 2048 $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, (.upper | tonumber) < 1]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
@@ -58,6 +78,11 @@ if command -v python3 >/dev/null 2>&1; then
                 "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # second batch (tests/truth/truth2.py, h-truth2)
+    for spec in "quick 1 4"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth2.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"

@@ -12,12 +12,15 @@ SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
 export RS
 total_fail=0
-for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg; do
+for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
+            symcond symmat rk builders limit radmat map cosim; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
+    script=tests/truth/truth.py
+    case $part in symcond|symmat|rk|builders|limit|radmat|map|cosim) script=tests/truth/truth2.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
-        out=$(python3 tests/truth/truth.py "$part" "$s" "$n" 2>&1)
+        out=$(python3 "$script" "$part" "$s" "$n" 2>&1)
         okc=$((okc + $(printf '%s\n' "$out" | grep -c '^ok ')))
         f=$(printf '%s\n' "$out" | grep -c '^FAIL \|Traceback')
         fc=$((fc + f))
