@@ -64,8 +64,17 @@
  * towers took) */
 #define CAD_MAX_TOWER_DEGREE_CELL 64
 #define CAD_MAX_TOWER_DEGREE_CX 24
+/* complex plane, a circle-locus section above that cap: the marginal test
+ * in Q(alpha, beta) found without the full tower (cx_marginal_rel) up to
+ * this degree (RK4's fields of degree 32 and 36: 0.05 s each; AB3's of
+ * degree 48: over 60 s each) */
+#define CAD_MAX_MARGINAL_FIELD 36
 /* deg alpha above this: the column is not decided at all */
 #define CAD_MAX_LINE_DEGREE 8
+/* the plane of a complex parameter: its sections are decided by signs
+ * (cx_section_signs), so a column costs the norms only (AB3's three lines
+ * of degree 11) */
+#define CAD_MAX_LINE_DEGREE_CX 12
 
 enum { K_BOUNDARY = 0, K_DOMAIN = 1, K_PROJ = 2 };
 
@@ -78,6 +87,7 @@ typedef struct {
     json_t *a, *b;           /* the sample */
     slong sec;               /* for sections: the polynomials vanishing (first index) */
     int balls;               /* status decided by root balls (no tower: cad_status_balls) */
+    const char *why;         /* undecided: the reason (a static string) */
 } cell_t;
 
 typedef struct {
@@ -100,7 +110,18 @@ typedef struct {
     const rs_region_cx_t *cx; /* region re(z), im(z): given conditions, stable / not stable */
     slong nb;                /* length of bounds */
     slong marginal_undecided; /* complex mode: circle-locus cells norm's verdict leaves open */
+    /* complex mode: lead, delta[0..ndelta), extra[0..nextra) as products of
+     * the listed polynomials (cx_fac_build): their signs at a cell follow
+     * from the cell's sign vector, with no field arithmetic */
+    struct cx_fac_struct *fac;
+    slong nfac;
 } cad_t;
+
+/* P = sgn * prod f[idx[j]]^exp[j] times a positive constant (zero: sgn 0) */
+typedef struct cx_fac_struct {
+    slong n, *idx, *exp;
+    int sgn, ok;
+} cx_fac_t;
 
 /* the plane of a complex parameter allows a larger tower: its sections are
  * few per line (BDF3: 4 -> 2 undecided lines, RK4 10 -> 9, AB3 28 -> 26 at
@@ -355,6 +376,93 @@ static void cad_add_end(cad_t *c, slong var, const fmpq_t e, int upper, int clos
     fmpz_mpoly_clear(t, c->s->zctx);
 }
 
+/* P's factorisation in terms of the listed polynomials (those cad_add_factors
+ * pushed for it: the same factors, up to sign) */
+static void cx_fac_one(cx_fac_t *F, const cad_t *c, const fmpz_mpoly_t P)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    fmpz_mpoly_factor_t fac;
+    fmpz_mpoly_t h;
+    slong k, j;
+    memset(F, 0, sizeof *F);
+    if (fmpz_mpoly_is_zero(P, ctx)) { F->ok = 1; return; }
+    fmpz_mpoly_factor_init(fac, ctx);
+    fmpz_mpoly_init(h, ctx);
+    if (fmpz_mpoly_factor(fac, P, ctx)) {
+        F->ok = 1;
+        F->sgn = fmpz_sgn(fac->constant);
+        F->idx = flint_malloc((fac->num + 1) * sizeof(slong));
+        F->exp = flint_malloc((fac->num + 1) * sizeof(slong));
+        for (k = 0; k < fac->num && F->ok; k++) {
+            int neg = 0;
+            if (fmpz_mpoly_is_fmpz(fac->poly + k, ctx)) {
+                /* a constant factor (content): its sign to the power */
+                if (fmpz_sgn(fac->poly[k].coeffs + 0) < 0 && fmpz_is_odd(fac->exp + k)) F->sgn = -F->sgn;
+                continue;
+            }
+            fmpz_mpoly_neg(h, fac->poly + k, ctx);
+            for (j = 0; j < c->nf; j++) {
+                if (c->kind[j] == K_DOMAIN) continue;
+                if (fmpz_mpoly_equal(c->f + j, fac->poly + k, ctx)) break;
+                if (fmpz_mpoly_equal(c->f + j, h, ctx)) { neg = 1; break; }
+            }
+            if (j == c->nf) { F->ok = 0; break; }
+            if (neg && fmpz_is_odd(fac->exp + k)) F->sgn = -F->sgn;
+            F->idx[F->n] = j;
+            F->exp[F->n++] = fmpz_get_si(fac->exp + k);
+        }
+    }
+    fmpz_mpoly_factor_clear(fac, ctx);
+    fmpz_mpoly_clear(h, ctx);
+}
+
+static void cx_fac_build(cad_t *c)
+{
+    const rs_region_cx_t *X = c->cx;
+    slong k, nx = X->norm != NULL ? X->nextra : 0;
+    c->nfac = 1 + X->ndelta + nx;
+    c->fac = flint_calloc(c->nfac, sizeof(cx_fac_t));
+    cx_fac_one(c->fac + 0, c, X->lead);
+    for (k = 0; k < X->ndelta; k++) cx_fac_one(c->fac + 1 + k, c, X->delta + k);
+    for (k = 0; k < nx; k++) cx_fac_one(c->fac + 1 + X->ndelta + k, c, X->extra + k);
+}
+
+/* the sign of listed product F at a cell of signs sg; 2 when unknown */
+static int cx_fac_sign(const cx_fac_t *F, const signed char *sg)
+{
+    slong j;
+    int s;
+    if (!F->ok) return 2;
+    s = F->sgn;
+    for (j = 0; j < F->n && s != 0; j++)
+        if (sg[F->idx[j]] == 0) s = 0;
+        else if (sg[F->idx[j]] < 0 && F->exp[j] % 2 == 1) s = -s;
+    return s;
+}
+
+/* complex mode from a cell's signs alone: stable iff lead and every delta
+ * > 0 (cx_status's rule); *on: the sample lies on the circle locus (the
+ * rule of cx_marginal_at).  0 when a factorisation is missing. */
+static int cx_status_sg(rs_status_t *st, int *on, const cad_t *c, const signed char *sg)
+{
+    const rs_region_cx_t *X = c->cx;
+    slong k;
+    int e0, e1, e2;
+    if (c->fac == NULL) return 0;
+    for (k = 0; k < 1 + X->ndelta; k++) if (cx_fac_sign(c->fac + k, sg) == 2) return 0;
+    *st = RS_STATUS_STABLE;
+    for (k = 0; k < 1 + X->ndelta; k++)
+        if (cx_fac_sign(c->fac + k, sg) <= 0) { *st = RS_STATUS_UNSTABLE; break; }
+    *on = 0;
+    if (X->norm == NULL) return 1;
+    e0 = cx_fac_sign(c->fac + 1 + X->ndelta, sg);
+    e1 = X->nextra >= 3 ? cx_fac_sign(c->fac + 2 + X->ndelta, sg) : 1;
+    e2 = X->nextra >= 3 ? cx_fac_sign(c->fac + 3 + X->ndelta, sg) : 1;
+    if (e0 == 2 || e1 == 2 || e2 == 2) return 0;
+    *on = e0 == 0 || (X->nextra >= 3 && e1 == 0 && e2 == 0);
+    return 1;
+}
+
 /* step 1: where the status can change (as region NAME's critical values) */
 static int cad_critical(cad_t *c)
 {
@@ -371,6 +479,7 @@ static int cad_critical(cad_t *c)
         for (k = 0; k < c->cx->ndelta; k++) cad_add_factors(c, c->cx->delta + k, K_BOUNDARY);
         /* the marginal set: where a root reaches the circle or doubles */
         for (k = 0; k < c->cx->nextra && c->cx->norm != NULL; k++) cad_add_factors(c, c->cx->extra + k, K_PROJ);
+        cx_fac_build(c);
         return rs_budget_check(c->run->err, "region re(z), im(z) (critical polynomials)");
     }
     fmpz_mpoly_init(sqf, s->zctx);
@@ -846,10 +955,11 @@ static int balls_all_inside(arb_srcptr c, slong n, slong prec)
  * roots' moduli exceeds 1) or acb_poly_find_roots isolates every root and
  * one ball lies strictly outside.  A root on the circle (marginal or not)
  * is never decided here: returns 0 then (after 2048 bits). */
-static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_alg_t *be)
+static int cad_status_balls(rs_status_t *st, const cad_t *c, const fmpz_mpoly_t p, rs_alg_t *al, rs_alg_t *be,
+                            slong maxprec)
 {
     const rs_scheme_struct *s = c->s;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), j, prec;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j, prec;
     fmpz_mpoly_struct *cf = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
     acb_poly_t P;
     acb_ptr rt = _acb_vec_init(FLINT_MAX(n, 1));
@@ -858,12 +968,12 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_al
     arb_ptr re = _arb_vec_init(n + 1);
     int dec = 0;
     for (j = 0; j <= n; j++) fmpz_mpoly_init(cf + j, s->zctx);
-    rs_polyfmt_coeffs(cf, c->v->cp->p, lv, s->zctx);   /* once, not per precision */
+    rs_polyfmt_coeffs(cf, p, lv, s->zctx);   /* once, not per precision */
     arb_init(b);
     acb_poly_init(P);
     acb_init(x); acb_init(y); acb_init(v);
     arb_init(a);
-    for (prec = 128; !dec && n >= 1 && prec <= 2048; prec *= 2) {
+    for (prec = 128; !dec && n >= 1 && prec <= maxprec; prec *= 2) {
         slong in = 0, out = 0;
         int by_coeffs = 0;
         rs_alg_refine(al, prec);
@@ -913,6 +1023,326 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_al
     arb_clear(a); arb_clear(b);
     _arb_vec_clear(re, n + 1);
     return dec;
+}
+
+/* ---- Q(alpha)[y] without a primitive element (cx_marginal_rel) ----------
+ * A polynomial over K = Q[t]/(M) (M irreducible) is an array of fmpq_polys
+ * reduced mod M, a length (leading coefficient nonzero). */
+
+static slong nfp_trim(fmpq_poly_struct *a, slong len)
+{
+    while (len > 0 && fmpq_poly_is_zero(a + len - 1)) len--;
+    return len;
+}
+
+/* a := a / lc(a) (len >= 1) */
+static void nfp_monic(fmpq_poly_struct *a, slong len, const fmpq_poly_t M)
+{
+    fmpq_poly_t g, s, t;
+    slong j;
+    fmpq_poly_init(g); fmpq_poly_init(s); fmpq_poly_init(t);
+    fmpq_poly_xgcd(g, s, t, a + len - 1, M);   /* s lc + t M = 1 */
+    for (j = 0; j < len - 1; j++) { fmpq_poly_mul(a + j, a + j, s); fmpq_poly_rem(a + j, a + j, M); }
+    fmpq_poly_one(a + len - 1);
+    fmpq_poly_clear(g); fmpq_poly_clear(s); fmpq_poly_clear(t);
+}
+
+/* a := a mod b (b monic, lb >= 1); the new length */
+static slong nfp_rem(fmpq_poly_struct *a, slong la, const fmpq_poly_struct *b, slong lb, const fmpq_poly_t M)
+{
+    fmpq_poly_t q, t;
+    slong i, j;
+    fmpq_poly_init(q); fmpq_poly_init(t);
+    for (i = la - 1; i >= lb - 1; i--) {
+        if (fmpq_poly_is_zero(a + i)) continue;
+        fmpq_poly_set(q, a + i);
+        for (j = 0; j < lb; j++) {
+            fmpq_poly_mul(t, q, b + j);
+            fmpq_poly_sub(a + i - lb + 1 + j, a + i - lb + 1 + j, t);
+            fmpq_poly_rem(a + i - lb + 1 + j, a + i - lb + 1 + j, M);
+        }
+    }
+    fmpq_poly_clear(q); fmpq_poly_clear(t);
+    return nfp_trim(a, FLINT_MIN(la, lb - 1));
+}
+
+/* a := gcd(a, b) monic (b destroyed); the length (1: a unit; -1: the
+ * budget ran out) */
+static slong nfp_gcd(fmpq_poly_struct *a, slong la, fmpq_poly_struct *b, slong lb, const fmpq_poly_t M)
+{
+    la = nfp_trim(a, la);
+    lb = nfp_trim(b, lb);
+    while (lb > 0) {
+        slong j;
+        if (rs_budget_check(NULL, "a gcd over a number field") != RS_OK) return -1;
+        nfp_monic(b, lb, M);
+        la = nfp_rem(a, la, b, lb, M);
+        for (j = 0; j < FLINT_MAX(la, lb); j++) fmpq_poly_swap(a + j, b + j);
+        j = la; la = lb; lb = j;
+    }
+    if (la > 0) nfp_monic(a, la, M);
+    return la;
+}
+
+/* f (in N1, N2) as a polynomial in variable pv over Q(t) = Q[t]/(M), t
+ * the other variable: out[0..deg] (deg_pv f + 1 entries, initialised); the
+ * length */
+static slong nfp_from_mpoly(fmpq_poly_struct *out, const cad_t *c, const fmpz_mpoly_t f, slong pv,
+                            const fmpq_poly_t M)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    slong fv = pv == c->bv ? c->av : c->bv, d = fmpz_mpoly_degree_si(f, pv, ctx), i;
+    fmpz_t cf;
+    fmpz_init(cf);
+    for (i = 0; i <= d; i++) fmpq_poly_zero(out + i);
+    for (i = 0; i < fmpz_mpoly_length(f, ctx); i++) {
+        slong ea = fmpz_mpoly_get_term_var_exp_si(f, i, fv, ctx), eb = fmpz_mpoly_get_term_var_exp_si(f, i, pv, ctx);
+        fmpz_t old;
+        fmpz_init(old);
+        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, ctx);
+        fmpq_poly_get_coeff_fmpz(old, out + eb, ea);  /* out + eb is not yet reduced: numerators exact */
+        fmpz_add(old, old, cf);
+        fmpq_poly_set_coeff_fmpz(out + eb, ea, old);
+        fmpz_clear(old);
+    }
+    for (i = 0; i <= d; i++) fmpq_poly_rem(out + i, out + i, M);
+    fmpz_clear(cf);
+    return nfp_trim(out, d + 1);
+}
+
+/* complex mode, a circle-locus cell (alpha, beta) whose tower
+ * deg alpha * deg beta is above the cap: the field Q(alpha, beta) is often
+ * much smaller (the plane is symmetric in N2: beta^2 in Q(alpha) makes it
+ * 2 deg alpha, not 2 deg alpha^2).  g = gcd over Q(alpha) of m_beta and
+ * every f_k(alpha, N2) vanishing at the cell (g(beta) = 0, deg g bounds
+ * [Q(alpha, beta) : Q(alpha)]); gamma = beta + k alpha, its minimal
+ * polynomial the factor of Res_x(m_alpha(x), g(x, w - k x)) with the root
+ * at gamma; k separates when gcd(m_alpha(x), g(x, gamma - k x)) over
+ * Q(gamma) is linear: alpha = A(gamma), beta = gamma - k A(gamma).  Then
+ * cx_marginal_at decides with the norms in Q(gamma).  0: not done (the
+ * field's degree above CAD_MAX_MARGINAL_FIELD, no k, the budget). */
+static int cx_marginal_rel(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    slong da = fmpz_poly_degree(al->minpoly), db = fmpz_poly_degree(be->minpoly), dmax = db, k, j, lg, t;
+    fmpq_poly_struct *g, *h;
+    fmpq_poly_t Ma;
+    int ok = 0;
+    if (al->rational || be->rational) return 0;   /* the tower path had it */
+    /* a line above CAD_MAX_LINE_DEGREE (AB3's of degree 11): its gcds over
+     * Q(beta) took 6 s; the cells stay counted as open */
+    if (da > CAD_MAX_LINE_DEGREE) return 0;
+    if (db <= CAD_MAX_MARGINAL_FIELD) {
+        /* Q(beta) first (k = 0): alpha lies in it when the gcd over Q(beta)
+         * of m_alpha(x) and the f_k(x, beta) vanishing here is linear (only
+         * x = alpha is common); the plane's sections mostly have it */
+        slong dx = da, lp = da + 1, lq;
+        fmpq_poly_struct *P, *Q;
+        fmpq_poly_t Mb;
+        for (k = 0; k < c->nf; k++) dx = FLINT_MAX(dx, fmpz_mpoly_degree_si(c->f + k, c->av, ctx));
+        P = flint_malloc((dx + 1) * sizeof(fmpq_poly_struct));
+        Q = flint_malloc((dx + 1) * sizeof(fmpq_poly_struct));
+        for (j = 0; j <= dx; j++) { fmpq_poly_init(P + j); fmpq_poly_init(Q + j); }
+        fmpq_poly_init(Mb);
+        fmpq_poly_set_fmpz_poly(Mb, be->minpoly);
+        for (j = 0; j <= da; j++) fmpq_poly_set_fmpz(P + j, al->minpoly->coeffs + j);
+        for (k = 0; k < c->nf && lp > 2; k++) {
+            if (e->sg[k] != 0 || fmpz_mpoly_degree_si(c->f + k, c->av, ctx) <= 0) continue;
+            lq = nfp_from_mpoly(Q, c, c->f + k, c->av, Mb);
+            if (lq > 0) lp = nfp_gcd(P, lp, Q, lq, Mb);
+        }
+        if (lp == 2) {
+            /* x + p0: alpha = -p0(beta), beta = beta */
+            fmpq_poly_t A, B;
+            cx_pt_t pt = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+            fmpq_poly_init(A); fmpq_poly_init(B);
+            fmpq_poly_neg(A, P + 0);
+            fmpq_poly_set_coeff_si(B, 1, 1);
+            fmpq_poly_rem(B, B, Mb);
+            pt.A = A; pt.B = B; pt.m = Mb; pt.g = be;
+            cx_marginal_at(c, e, &pt);
+            ok = 1;
+            fmpq_poly_clear(A); fmpq_poly_clear(B);
+        }
+        for (j = 0; j <= dx; j++) { fmpq_poly_clear(P + j); fmpq_poly_clear(Q + j); }
+        flint_free(P); flint_free(Q);
+        fmpq_poly_clear(Mb);
+        if (ok || lp < 0) return ok;
+    }
+    for (k = 0; k < c->nf; k++) dmax = FLINT_MAX(dmax, fmpz_mpoly_degree_si(c->f + k, c->bv, ctx));
+    g = flint_malloc((dmax + 1) * sizeof(fmpq_poly_struct));
+    h = flint_malloc((dmax + 1) * sizeof(fmpq_poly_struct));
+    for (j = 0; j <= dmax; j++) { fmpq_poly_init(g + j); fmpq_poly_init(h + j); }
+    fmpq_poly_init(Ma);
+    fmpq_poly_set_fmpz_poly(Ma, al->minpoly);
+    for (j = 0; j <= db; j++) fmpq_poly_set_fmpz(g + j, be->minpoly->coeffs + j);
+    lg = db + 1;
+    for (k = 0; k < c->nf && lg > 2; k++) {
+        slong lh;
+        if (e->sg[k] != 0 || fmpz_mpoly_degree_si(c->f + k, c->bv, ctx) <= 0) continue;
+        lh = nfp_from_mpoly(h, c, c->f + k, c->bv, Ma);
+        if (lh == 0) continue;   /* m_alpha divides f_k: no information */
+        lg = nfp_gcd(g, lg, h, lh, Ma);
+    }
+    if (lg >= 2 && da * (lg - 1) <= CAD_MAX_MARGINAL_FIELD && rs_budget_check(NULL, "a relative tower") == RS_OK) {
+        /* den * g(x, w - k x) in Z[x, w] */
+        fmpz_mpoly_ctx_t c2;
+        fmpz_mpoly_t ma, lin, acc, tt, res;
+        fmpz_poly_t u, num;
+        fmpz_t den;
+        fmpz_mpoly_ctx_init(c2, 2, ORD_LEX);
+        fmpz_mpoly_init(ma, c2); fmpz_mpoly_init(lin, c2); fmpz_mpoly_init(acc, c2);
+        fmpz_mpoly_init(tt, c2); fmpz_mpoly_init(res, c2);
+        fmpz_poly_init(u); fmpz_poly_init(num);
+        fmpz_init(den);
+        fmpz_one(den);
+        for (j = 0; j < lg; j++) fmpz_lcm(den, den, fmpq_poly_denref(g + j));
+        fmpz_mpoly_set_fmpz_poly(ma, al->minpoly, 0, c2);
+        for (t = 0; t < 8 && !ok; t++) {
+            slong kk = t % 2 == 0 ? t / 2 + 1 : -(t / 2 + 1), nroots = 0, hit = -1, prec, i;
+            rs_alg_t *roots = NULL;
+            /* acc = sum_j den g_j(x) (w - kk x)^j by Horner */
+            fmpz_mpoly_gen(lin, 0, c2);
+            fmpz_mpoly_scalar_mul_si(lin, lin, -kk, c2);
+            fmpz_mpoly_gen(tt, 1, c2);
+            fmpz_mpoly_add(lin, lin, tt, c2);
+            fmpz_mpoly_zero(acc, c2);
+            for (j = lg - 1; j >= 0; j--) {
+                fmpz_t f;
+                fmpz_init(f);
+                fmpz_mpoly_mul(acc, acc, lin, c2);
+                fmpz_divexact(f, den, fmpq_poly_denref(g + j));
+                fmpq_poly_get_numerator(num, g + j);
+                fmpz_poly_scalar_mul_fmpz(num, num, f);
+                fmpz_mpoly_set_fmpz_poly(tt, num, 0, c2);
+                fmpz_mpoly_add(acc, acc, tt, c2);
+                fmpz_clear(f);
+            }
+            if (rs_budget_check(NULL, "a relative tower") != RS_OK) break;
+            if (!fmpz_mpoly_resultant(res, ma, acc, 0, c2) || !fmpz_mpoly_get_fmpz_poly(u, res, 1, c2)
+                || fmpz_poly_degree(u) < 1)
+                continue;
+            rs_alg_roots_append(&roots, &nroots, u, 0);
+            for (prec = 64; prec < (1L << 14) && hit < 0; prec *= 2) {
+                arb_t gm;
+                slong nhit = 0;
+                arb_init(gm);
+                rs_alg_refine(al, prec);
+                rs_alg_refine(be, prec);
+                arb_mul_si(gm, al->x, kk, prec);
+                arb_add(gm, gm, be->x, prec);
+                for (i = 0; i < nroots; i++) {
+                    rs_alg_refine(roots + i, prec);
+                    if (arb_overlaps(gm, roots[i].x)) { nhit++; hit = i; }
+                }
+                if (nhit != 1) hit = -1;
+                arb_clear(gm);
+            }
+            if (hit >= 0) {
+                /* gcd(m_alpha(x), g(x, gamma - kk x)) over Q(gamma) = Q[z]/(M) */
+                slong D = fmpz_poly_degree(roots[hit].minpoly), lp, lq, ldeg = (lg - 1) * (da - 1) + lg;
+                /* both as long as the longer one: nfp_gcd swaps their entries */
+                fmpq_poly_struct *P = flint_malloc((ldeg + da + 1) * sizeof(fmpq_poly_struct));
+                fmpq_poly_struct *Q = flint_malloc((ldeg + da + 1) * sizeof(fmpq_poly_struct));
+                fmpq_poly_t M, z, w1;
+                fmpq_poly_init(M); fmpq_poly_init(z); fmpq_poly_init(w1);
+                fmpq_poly_set_fmpz_poly(M, roots[hit].minpoly);
+                fmpq_poly_set_coeff_si(z, 1, 1);
+                fmpq_poly_rem(z, z, M);
+                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_init(P + i);
+                for (i = 0; i <= da; i++) fmpq_poly_set_fmpz(P + i, al->minpoly->coeffs + i);
+                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_init(Q + i);
+                /* Q(x) = sum_j sum_l g_{j,l} x^l (z - kk x)^j: the x-powers of
+                 * acc with w = z, built from acc's terms */
+                for (i = 0; i < fmpz_mpoly_length(acc, c2); i++) {
+                    slong ex = fmpz_mpoly_get_term_var_exp_si(acc, i, 0, c2);
+                    slong ew = fmpz_mpoly_get_term_var_exp_si(acc, i, 1, c2);
+                    fmpz_t cf;
+                    fmpz_init(cf);
+                    fmpz_mpoly_get_term_coeff_fmpz(cf, acc, i, c2);
+                    fmpq_poly_pow(w1, z, (ulong) ew);
+                    fmpq_poly_rem(w1, w1, M);
+                    fmpq_poly_scalar_mul_fmpz(w1, w1, cf);
+                    if (ex < ldeg + da + 1) fmpq_poly_add(Q + ex, Q + ex, w1);
+                    fmpz_clear(cf);
+                }
+                lq = nfp_trim(Q, ldeg + da + 1);
+                lp = nfp_gcd(P, da + 1, Q, lq, M);
+                if (lp == 2 && D <= CAD_MAX_MARGINAL_FIELD) {
+                    /* x + p0: alpha = -p0; beta = gamma - kk alpha */
+                    fmpq_poly_t A, B;
+                    rs_alg_t gam;
+                    cx_pt_t pt = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+                    fmpq_poly_init(A); fmpq_poly_init(B);
+                    rs_alg_init(&gam);
+                    fmpq_poly_neg(A, P + 0);
+                    fmpq_poly_scalar_mul_si(B, A, -kk);
+                    fmpq_poly_add(B, B, z);
+                    fmpq_poly_rem(B, B, M);
+                    fmpz_poly_set(gam.minpoly, roots[hit].minpoly);
+                    gam.idx = roots[hit].idx;
+                    gam.rational = roots[hit].rational;
+                    fmpq_set(gam.q, roots[hit].q);
+                    arb_set(gam.x, roots[hit].x);
+                    gam.prec = roots[hit].prec;
+                    pt.A = A; pt.B = B; pt.m = M; pt.g = &gam;
+                    if (!gam.rational) {
+                        cx_marginal_at(c, e, &pt);
+                                    ok = 1;
+                    }
+                    rs_alg_clear(&gam);
+                    fmpq_poly_clear(A); fmpq_poly_clear(B);
+                }
+                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_clear(P + i);
+                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_clear(Q + i);
+                flint_free(P); flint_free(Q);
+                fmpq_poly_clear(M); fmpq_poly_clear(z); fmpq_poly_clear(w1);
+            }
+            for (i = 0; i < nroots; i++) rs_alg_clear(roots + i);
+            free(roots);
+        }
+        fmpz_mpoly_clear(ma, c2); fmpz_mpoly_clear(lin, c2); fmpz_mpoly_clear(acc, c2);
+        fmpz_mpoly_clear(tt, c2); fmpz_mpoly_clear(res, c2);
+        fmpz_mpoly_ctx_clear(c2);
+        fmpz_poly_clear(u); fmpz_poly_clear(num);
+        fmpz_clear(den);
+    }
+    for (j = 0; j <= dmax; j++) { fmpq_poly_clear(g + j); fmpq_poly_clear(h + j); }
+    flint_free(g); flint_free(h);
+    fmpq_poly_clear(Ma);
+    return ok;
+}
+
+/* complex mode, a section cell (alpha, beta) whose tower is above the cap:
+ * the status from the cell's exact signs (cx_status_sg: lead and the deltas
+ * are products of listed polynomials, whose signs cad_sign_norm gave),
+ * checked against root balls of p conj(p) where they decide (every root
+ * strictly inside, or one strictly outside; a disagreement is exit 3 and
+ * the cell left undecided).  On the circle locus a not-stable cell is
+ * unstable when a ball lies strictly outside; otherwise marginal or
+ * unstable is decided by the norms in Q(alpha, beta) (cx_marginal_rel). */
+static void cx_section_signs(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
+{
+    const rs_region_cx_t *X = c->cx;
+    rs_status_t st, bst = RS_STATUS_MARGINAL;
+    int on = 0, bdec = 0;
+    if (!cx_status_sg(&st, &on, c, e->sg)) {
+        e->why = "a critical polynomial not a product of the listed ones (complex plane)";
+        return;
+    }
+    /* on the locus a circle root keeps the balls open: 256 bits suffice to
+     * see a root outside (off it they decide at 128 unless near the circle) */
+    if (X->norm != NULL) bdec = cad_status_balls(&bst, c, X->norm + 0, al, be, on ? 256 : 1024);
+    if (bdec && (bst == RS_STATUS_STABLE) != (st == RS_STATUS_STABLE)) {
+        c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+        e->why = "the signs and the root balls disagree";
+        return;
+    }
+    e->st = st;
+    e->decided = 1;
+    if (st == RS_STATUS_STABLE || !on || X->norm == NULL) return;
+    if (bdec && bst == RS_STATUS_UNSTABLE) { e->balls = 1; return; }   /* a root strictly outside */
+    if (!cx_marginal_rel(c, e, al, be)) c->marginal_undecided++;
 }
 
 /* step 3 for a column over an irrational N1 = alpha (a two-level tower):
@@ -1017,10 +1447,12 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             e->a = rs_alg_json(al, c->an);
             e->b = rs_alg_json(cand + i, c->bn);
             e->outside = cad_outside(c, e->sg);
-            if (!e->outside && !tower) {
+            if (!e->outside && !tower && c->cx != NULL) {
+                cx_section_signs(c, e, al, cand + i);
+            } else if (!e->outside && !tower) {
                 /* no tower: balls decide stable / unstable; a root on the
                  * circle needs the tower after all, when it is not too big */
-                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, al, cand + i);
+                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
                 e->balls = e->decided;
                 if (!e->decided && c->cx == NULL
                     && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
@@ -1028,6 +1460,9 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                     fmpq_poly_set_fmpz_poly(m, g.minpoly);
                     e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
                 }
+                if (!e->decided)
+                    e->why = c->cx != NULL ? "a section whose tower is above the cap (complex plane)"
+                                           : "a section with a root on the circle, tower above 64";
                 r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
             } else if (!e->outside && c->cx != NULL) {
                 cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
@@ -1059,6 +1494,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
         e = cad_new_cell(c, 1, col);
         e->a = rs_alg_json(al, c->an);
         e->b = json_null();
+        e->why = "a sign the norms and balls did not separate";
         c->undecided_lines++;
     } else if (r == RS_OK) {
         /* interleave: sector, section, ..., sector (the sections were made
@@ -1126,12 +1562,13 @@ static int cad_lift(cad_t *c)
             int in = 1;
             if (b->has_lo) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->lo); in &= rs_alg_cmp(al, &e) > 0; rs_alg_clear(&e); }
             if (b->has_hi) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->hi); in &= rs_alg_cmp(al, &e) < 0; rs_alg_clear(&e); }
-            if (in && fmpz_poly_degree(al->minpoly) <= CAD_MAX_LINE_DEGREE) {
+            if (in && fmpz_poly_degree(al->minpoly) <= (c->cx != NULL ? CAD_MAX_LINE_DEGREE_CX : CAD_MAX_LINE_DEGREE)) {
                 r = cad_column_alg(c, al, i);
             } else if (in) {
                 cell_t *e = cad_new_cell(c, 1, i);
                 e->a = rs_alg_json(al, c->an);
                 e->b = json_null();
+                e->why = "line degree above 8";
                 c->undecided_lines++;
             }
         }
@@ -1711,6 +2148,8 @@ static void cad_clear(cad_t *c)
     flint_free(c->closed);
     for (i = 0; i < c->ncrit; i++) rs_alg_clear(c->crit + i);
     free(c->crit);
+    for (i = 0; i < c->nfac; i++) { flint_free(c->fac[i].idx); flint_free(c->fac[i].exp); }
+    flint_free(c->fac);
     for (i = 0; i < c->ncells; i++) {
         flint_free(c->cells[i].sg);
         json_decref(c->cells[i].a);
@@ -1733,6 +2172,7 @@ static json_t *cad_cells_json(const cad_t *c)
         json_t *o = json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn, e->b, "status", st);
         /* a section without a tower: its status is certified by root balls (strictly inside / outside) */
         if (e->balls && !e->outside) json_object_set_new(o, "decided_by", json_string("root balls"));
+        if (!e->decided && !e->outside && e->why != NULL) json_object_set_new(o, "undecided_because", json_string(e->why));
         json_array_append_new(a, o);
     }
     return a;
