@@ -38,7 +38,6 @@
 #include <stdlib.h>
 #include <math.h>
 #include <string.h>
-#include <time.h>
 #include <flint/fmpz_mpoly_factor.h>
 #include <flint/fmpq_mpoly.h>
 #include <flint/fmpz_poly.h>
@@ -70,9 +69,11 @@
  * this degree (RK4's fields of degree 32 and 36: 0.05 s each; AB3's of
  * degree 48: over 60 s each) */
 #define CAD_MAX_MARGINAL_FIELD 36
-/* and at most this many CPU seconds of them per region (BDF4: 30 s for all
- * of them); the cells after it are counted open, the note says so */
-#define CAD_MARGINAL_REL_SHARE 2.0
+/* and at most this sum of deg(beta)^2 over the cells tried per region
+ * (deterministic, unlike a time share; RK4's 14 cells: 9512, about 0.5 s;
+ * all of BDF4's took 30 s); the cells after it are counted open, the note
+ * says so */
+#define CAD_MARGINAL_REL_COST 16384
 /* deg alpha above this: the column is not decided at all */
 #define CAD_MAX_LINE_DEGREE 8
 /* the plane of a complex parameter: its sections are decided by signs
@@ -114,7 +115,7 @@ typedef struct {
     const rs_region_cx_t *cx; /* region re(z), im(z): given conditions, stable / not stable */
     slong nb;                /* length of bounds */
     slong marginal_undecided; /* complex mode: circle-locus cells norm's verdict leaves open */
-    double rel_cpu;           /* CPU seconds spent in cx_marginal_rel (CAD_MARGINAL_REL_SHARE) */
+    slong rel_cost;           /* sum of deg(field)^2 over the cells cx_marginal_rel tried */
     slong rel_skipped;        /* cells it left open once that share was spent */
     /* complex mode: lead, delta[0..ndelta), extra[0..nextra) as products of
      * the listed polynomials (cx_fac_build): their signs at a cell follow
@@ -1348,16 +1349,16 @@ static void cx_section_signs(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
     e->decided = 1;
     if (st == RS_STATUS_STABLE || !on || X->norm == NULL) return;
     if (bdec && bst == RS_STATUS_UNSTABLE) { e->balls = 1; return; }   /* a root strictly outside */
-    if (c->rel_cpu > CAD_MARGINAL_REL_SHARE) {
-        c->rel_skipped++;
-        c->marginal_undecided++;
-        return;
-    }
     {
-        clock_t t0 = clock();
-        if (!cx_marginal_rel(c, e, al, be)) c->marginal_undecided++;
-        c->rel_cpu += (double) (clock() - t0) / CLOCKS_PER_SEC;
+        slong db = fmpz_poly_degree(be->minpoly);
+        if (c->rel_cost + db * db > CAD_MARGINAL_REL_COST) {
+            c->rel_skipped++;
+            c->marginal_undecided++;
+            return;
+        }
+        c->rel_cost += db * db;
     }
+    if (!cx_marginal_rel(c, e, al, be)) c->marginal_undecided++;
 }
 
 /* step 3 for a column over an irrational N1 = alpha (a two-level tower):
@@ -2490,9 +2491,9 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "marginal_undecided_cells", json_integer(c->marginal_undecided));
             if (c->rel_skipped > 0) {
                 char buf[300];
-                snprintf(buf, sizeof buf, "%ld circle-locus cells not tried: the %.0f s CPU share of the marginal "
-                         "tests in fields without the full tower was spent", (long) c->rel_skipped,
-                         CAD_MARGINAL_REL_SHARE);
+                snprintf(buf, sizeof buf, "%ld circle-locus cells not tried: the marginal tests in fields without "
+                         "the full tower stop at a sum of %d over deg(field)^2", (long) c->rel_skipped,
+                         CAD_MARGINAL_REL_COST);
                 json_object_set_new(o, "marginal_limit", json_string(buf));
             }
             json_object_set_new(o, "marginal_note", json_string("marginal: roots on the circle, all simple, the "
