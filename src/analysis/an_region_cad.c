@@ -30,7 +30,10 @@
  * the norms Res(m_alpha, f_k) and balls (cad_sign_norm, exact), its status
  * from root balls where no root is on the circle (cad_status_balls,
  * certified; real parameters only) and otherwise from the tower up to
- * degree 64.  Left undecided (counted in "undecided_lines";
+ * degree 64.  In the plane of a complex parameter the status follows from
+ * the signs alone (cx_section_signs), checked against root balls; on the
+ * circle locus marginal or unstable comes from the norms in Q(beta) or
+ * Q(alpha)[y]/(g) without the full tower (cx_marginal_rel).  Left undecided (counted in "undecided_lines";
  * "formula_complete" false): a column when deg alpha > 8 or a sign the
  * balls do not separate, a cell when none of those decides it or a system
  * has a repeated circle root there. */
@@ -2445,9 +2448,9 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
                 : c->cx != NULL
-                ? "some cells over irrational critical values of the first parameter are not decided (an "
-                  "algebraic tower of degree above 24, a sign the norms and balls did not separate or a line "
-                  "of degree above 8): the formula is exact off those cells"
+                ? "some cells over irrational critical values of the first parameter are not decided (a sign "
+                  "the norms and balls did not separate, a line of degree above 12, or signs and root balls that "
+                  "disagree; each such cell says why in undecided_because): the formula is exact off those cells"
                 : "some cells over irrational critical values of the first parameter are not decided (a "
                   "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
                   "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "
