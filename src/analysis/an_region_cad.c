@@ -32,8 +32,8 @@
  * certified; real parameters only) and otherwise from the tower up to
  * degree 64.  In the plane of a complex parameter the status follows from
  * the signs alone (cx_section_signs), checked against root balls; on the
- * circle locus marginal or unstable comes from the norms in Q(beta) or
- * Q(alpha)[y]/(g) without the full tower (cx_marginal_rel).  Left undecided (counted in "undecided_lines";
+ * circle locus marginal or unstable comes from the norms in Q(beta) when
+ * alpha lies in it, without the full tower (cx_marginal_rel).  Left undecided (counted in "undecided_lines";
  * "formula_complete" false): a column when deg alpha > 8 or a sign the
  * balls do not separate, a cell when none of those decides it or a system
  * has a repeated circle root there. */
@@ -68,7 +68,7 @@
 #define CAD_MAX_TOWER_DEGREE_CELL 64
 #define CAD_MAX_TOWER_DEGREE_CX 24
 /* complex plane, a circle-locus section above that cap: the marginal test
- * in Q(alpha, beta) found without the full tower (cx_marginal_rel) up to
+ * in Q(beta) = Q(alpha, beta) without the full tower (cx_marginal_rel) up to
  * this degree (RK4's fields of degree 32 and 36: 0.05 s each; AB3's of
  * degree 48: over 60 s each) */
 #define CAD_MAX_MARGINAL_FIELD 36
@@ -1122,21 +1122,16 @@ static slong nfp_from_mpoly(fmpq_poly_struct *out, const cad_t *c, const fmpz_mp
 
 /* complex mode, a circle-locus cell (alpha, beta) whose tower
  * deg alpha * deg beta is above the cap: the field Q(alpha, beta) is often
- * much smaller (the plane is symmetric in N2: beta^2 in Q(alpha) makes it
- * 2 deg alpha, not 2 deg alpha^2).  g = gcd over Q(alpha) of m_beta and
- * every f_k(alpha, N2) vanishing at the cell (g(beta) = 0, deg g bounds
- * [Q(alpha, beta) : Q(alpha)]); gamma = beta + k alpha, its minimal
- * polynomial the factor of Res_x(m_alpha(x), g(x, w - k x)) with the root
- * at gamma; k separates when gcd(m_alpha(x), g(x, gamma - k x)) over
- * Q(gamma) is linear: alpha = A(gamma), beta = gamma - k A(gamma).  Then
- * cx_marginal_at decides with the norms in Q(gamma).  0: not done (the
- * field's degree above CAD_MAX_MARGINAL_FIELD, no k, the budget). */
+ * just Q(beta) (the plane is symmetric in N2: beta^2 in Q(alpha) makes it
+ * 2 deg alpha, not 2 deg alpha^2).  alpha lies in Q(beta) when the gcd over
+ * Q(beta) of m_alpha(x) and the f_k(x, beta) vanishing at the cell is
+ * linear (only x = alpha is common): alpha = A(beta).  Then cx_marginal_at
+ * decides with the norms in Q(beta).  0: not done (deg beta above
+ * CAD_MAX_MARGINAL_FIELD, alpha not found in Q(beta), the budget). */
 static int cx_marginal_rel(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
 {
     const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
-    slong da = fmpz_poly_degree(al->minpoly), db = fmpz_poly_degree(be->minpoly), dmax = db, k, j, lg, t;
-    fmpq_poly_struct *g, *h;
-    fmpq_poly_t Ma;
+    slong da = fmpz_poly_degree(al->minpoly), db = fmpz_poly_degree(be->minpoly), k, j;
     int ok = 0;
     if (al->rational || be->rational) return 0;   /* the tower path had it */
     /* a line above CAD_MAX_LINE_DEGREE (AB3's of degree 11): its gcds over
@@ -1177,149 +1172,7 @@ static int cx_marginal_rel(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
         for (j = 0; j <= dx; j++) { fmpq_poly_clear(P + j); fmpq_poly_clear(Q + j); }
         flint_free(P); flint_free(Q);
         fmpq_poly_clear(Mb);
-        if (ok || lp < 0) return ok;
     }
-    for (k = 0; k < c->nf; k++) dmax = FLINT_MAX(dmax, fmpz_mpoly_degree_si(c->f + k, c->bv, ctx));
-    g = flint_malloc((dmax + 1) * sizeof(fmpq_poly_struct));
-    h = flint_malloc((dmax + 1) * sizeof(fmpq_poly_struct));
-    for (j = 0; j <= dmax; j++) { fmpq_poly_init(g + j); fmpq_poly_init(h + j); }
-    fmpq_poly_init(Ma);
-    fmpq_poly_set_fmpz_poly(Ma, al->minpoly);
-    for (j = 0; j <= db; j++) fmpq_poly_set_fmpz(g + j, be->minpoly->coeffs + j);
-    lg = db + 1;
-    for (k = 0; k < c->nf && lg > 2; k++) {
-        slong lh;
-        if (e->sg[k] != 0 || fmpz_mpoly_degree_si(c->f + k, c->bv, ctx) <= 0) continue;
-        lh = nfp_from_mpoly(h, c, c->f + k, c->bv, Ma);
-        if (lh == 0) continue;   /* m_alpha divides f_k: no information */
-        lg = nfp_gcd(g, lg, h, lh, Ma);
-    }
-    if (lg >= 2 && da * (lg - 1) <= CAD_MAX_MARGINAL_FIELD && rs_budget_check(NULL, "a relative tower") == RS_OK) {
-        /* den * g(x, w - k x) in Z[x, w] */
-        fmpz_mpoly_ctx_t c2;
-        fmpz_mpoly_t ma, lin, acc, tt, res;
-        fmpz_poly_t u, num;
-        fmpz_t den;
-        fmpz_mpoly_ctx_init(c2, 2, ORD_LEX);
-        fmpz_mpoly_init(ma, c2); fmpz_mpoly_init(lin, c2); fmpz_mpoly_init(acc, c2);
-        fmpz_mpoly_init(tt, c2); fmpz_mpoly_init(res, c2);
-        fmpz_poly_init(u); fmpz_poly_init(num);
-        fmpz_init(den);
-        fmpz_one(den);
-        for (j = 0; j < lg; j++) fmpz_lcm(den, den, fmpq_poly_denref(g + j));
-        fmpz_mpoly_set_fmpz_poly(ma, al->minpoly, 0, c2);
-        for (t = 0; t < 8 && !ok; t++) {
-            slong kk = t % 2 == 0 ? t / 2 + 1 : -(t / 2 + 1), nroots = 0, hit = -1, prec, i;
-            rs_alg_t *roots = NULL;
-            /* acc = sum_j den g_j(x) (w - kk x)^j by Horner */
-            fmpz_mpoly_gen(lin, 0, c2);
-            fmpz_mpoly_scalar_mul_si(lin, lin, -kk, c2);
-            fmpz_mpoly_gen(tt, 1, c2);
-            fmpz_mpoly_add(lin, lin, tt, c2);
-            fmpz_mpoly_zero(acc, c2);
-            for (j = lg - 1; j >= 0; j--) {
-                fmpz_t f;
-                fmpz_init(f);
-                fmpz_mpoly_mul(acc, acc, lin, c2);
-                fmpz_divexact(f, den, fmpq_poly_denref(g + j));
-                fmpq_poly_get_numerator(num, g + j);
-                fmpz_poly_scalar_mul_fmpz(num, num, f);
-                fmpz_mpoly_set_fmpz_poly(tt, num, 0, c2);
-                fmpz_mpoly_add(acc, acc, tt, c2);
-                fmpz_clear(f);
-            }
-            if (rs_budget_check(NULL, "a relative tower") != RS_OK) break;
-            if (!fmpz_mpoly_resultant(res, ma, acc, 0, c2) || !fmpz_mpoly_get_fmpz_poly(u, res, 1, c2)
-                || fmpz_poly_degree(u) < 1)
-                continue;
-            rs_alg_roots_append(&roots, &nroots, u, 0);
-            for (prec = 64; prec < (1L << 14) && hit < 0; prec *= 2) {
-                arb_t gm;
-                slong nhit = 0;
-                arb_init(gm);
-                rs_alg_refine(al, prec);
-                rs_alg_refine(be, prec);
-                arb_mul_si(gm, al->x, kk, prec);
-                arb_add(gm, gm, be->x, prec);
-                for (i = 0; i < nroots; i++) {
-                    rs_alg_refine(roots + i, prec);
-                    if (arb_overlaps(gm, roots[i].x)) { nhit++; hit = i; }
-                }
-                if (nhit != 1) hit = -1;
-                arb_clear(gm);
-            }
-            if (hit >= 0) {
-                /* gcd(m_alpha(x), g(x, gamma - kk x)) over Q(gamma) = Q[z]/(M) */
-                slong D = fmpz_poly_degree(roots[hit].minpoly), lp, lq, ldeg = (lg - 1) * (da - 1) + lg;
-                /* both as long as the longer one: nfp_gcd swaps their entries */
-                fmpq_poly_struct *P = flint_malloc((ldeg + da + 1) * sizeof(fmpq_poly_struct));
-                fmpq_poly_struct *Q = flint_malloc((ldeg + da + 1) * sizeof(fmpq_poly_struct));
-                fmpq_poly_t M, z, w1;
-                fmpq_poly_init(M); fmpq_poly_init(z); fmpq_poly_init(w1);
-                fmpq_poly_set_fmpz_poly(M, roots[hit].minpoly);
-                fmpq_poly_set_coeff_si(z, 1, 1);
-                fmpq_poly_rem(z, z, M);
-                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_init(P + i);
-                for (i = 0; i <= da; i++) fmpq_poly_set_fmpz(P + i, al->minpoly->coeffs + i);
-                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_init(Q + i);
-                /* Q(x) = sum_j sum_l g_{j,l} x^l (z - kk x)^j: the x-powers of
-                 * acc with w = z, built from acc's terms */
-                for (i = 0; i < fmpz_mpoly_length(acc, c2); i++) {
-                    slong ex = fmpz_mpoly_get_term_var_exp_si(acc, i, 0, c2);
-                    slong ew = fmpz_mpoly_get_term_var_exp_si(acc, i, 1, c2);
-                    fmpz_t cf;
-                    fmpz_init(cf);
-                    fmpz_mpoly_get_term_coeff_fmpz(cf, acc, i, c2);
-                    fmpq_poly_pow(w1, z, (ulong) ew);
-                    fmpq_poly_rem(w1, w1, M);
-                    fmpq_poly_scalar_mul_fmpz(w1, w1, cf);
-                    if (ex < ldeg + da + 1) fmpq_poly_add(Q + ex, Q + ex, w1);
-                    fmpz_clear(cf);
-                }
-                lq = nfp_trim(Q, ldeg + da + 1);
-                lp = nfp_gcd(P, da + 1, Q, lq, M);
-                if (lp == 2 && D <= CAD_MAX_MARGINAL_FIELD) {
-                    /* x + p0: alpha = -p0; beta = gamma - kk alpha */
-                    fmpq_poly_t A, B;
-                    rs_alg_t gam;
-                    cx_pt_t pt = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
-                    fmpq_poly_init(A); fmpq_poly_init(B);
-                    rs_alg_init(&gam);
-                    fmpq_poly_neg(A, P + 0);
-                    fmpq_poly_scalar_mul_si(B, A, -kk);
-                    fmpq_poly_add(B, B, z);
-                    fmpq_poly_rem(B, B, M);
-                    fmpz_poly_set(gam.minpoly, roots[hit].minpoly);
-                    gam.idx = roots[hit].idx;
-                    gam.rational = roots[hit].rational;
-                    fmpq_set(gam.q, roots[hit].q);
-                    arb_set(gam.x, roots[hit].x);
-                    gam.prec = roots[hit].prec;
-                    pt.A = A; pt.B = B; pt.m = M; pt.g = &gam;
-                    if (!gam.rational) {
-                        cx_marginal_at(c, e, &pt);
-                                    ok = 1;
-                    }
-                    rs_alg_clear(&gam);
-                    fmpq_poly_clear(A); fmpq_poly_clear(B);
-                }
-                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_clear(P + i);
-                for (i = 0; i < ldeg + da + 1; i++) fmpq_poly_clear(Q + i);
-                flint_free(P); flint_free(Q);
-                fmpq_poly_clear(M); fmpq_poly_clear(z); fmpq_poly_clear(w1);
-            }
-            for (i = 0; i < nroots; i++) rs_alg_clear(roots + i);
-            free(roots);
-        }
-        fmpz_mpoly_clear(ma, c2); fmpz_mpoly_clear(lin, c2); fmpz_mpoly_clear(acc, c2);
-        fmpz_mpoly_clear(tt, c2); fmpz_mpoly_clear(res, c2);
-        fmpz_mpoly_ctx_clear(c2);
-        fmpz_poly_clear(u); fmpz_poly_clear(num);
-        fmpz_clear(den);
-    }
-    for (j = 0; j <= dmax; j++) { fmpq_poly_clear(g + j); fmpq_poly_clear(h + j); }
-    flint_free(g); flint_free(h);
-    fmpq_poly_clear(Ma);
     return ok;
 }
 
@@ -1330,7 +1183,7 @@ static int cx_marginal_rel(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
  * strictly inside, or one strictly outside; a disagreement is exit 3 and
  * the cell left undecided).  On the circle locus a not-stable cell is
  * unstable when a ball lies strictly outside; otherwise marginal or
- * unstable is decided by the norms in Q(alpha, beta) (cx_marginal_rel). */
+ * unstable is decided by the norms in Q(beta) (cx_marginal_rel). */
 static void cx_section_signs(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
 {
     const rs_region_cx_t *X = c->cx;
