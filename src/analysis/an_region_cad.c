@@ -1035,7 +1035,7 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, const fmpz_mpoly_t 
     return dec;
 }
 
-/* ---- Q(alpha)[y] without a primitive element (cx_marginal_rel) ----------
+/* ---- polynomials over a number field (cx_marginal_rel) -------------------
  * A polynomial over K = Q[t]/(M) (M irreducible) is an array of fmpq_polys
  * reduced mod M, a length (leading coefficient nonzero). */
 
