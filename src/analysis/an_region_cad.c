@@ -30,7 +30,10 @@
  * the norms Res(m_alpha, f_k) and balls (cad_sign_norm, exact), its status
  * from root balls where no root is on the circle (cad_status_balls,
  * certified; real parameters only) and otherwise from the tower up to
- * degree 64.  Left undecided (counted in "undecided_lines";
+ * degree 64.  In the plane of a complex parameter the status follows from
+ * the signs alone (cx_section_signs), checked against root balls; on the
+ * circle locus marginal or unstable comes from the norms in Q(beta) when
+ * alpha lies in it, without the full tower (cx_marginal_rel).  Left undecided (counted in "undecided_lines";
  * "formula_complete" false): a column when deg alpha > 8 or a sign the
  * balls do not separate, a cell when none of those decides it or a system
  * has a repeated circle root there. */
@@ -64,8 +67,22 @@
  * towers took) */
 #define CAD_MAX_TOWER_DEGREE_CELL 64
 #define CAD_MAX_TOWER_DEGREE_CX 24
+/* complex plane, a circle-locus section above that cap: the marginal test
+ * in Q(beta) = Q(alpha, beta) without the full tower (cx_marginal_rel) up to
+ * this degree (RK4's fields of degree 32 and 36: 0.05 s each; AB3's of
+ * degree 48: over 60 s each) */
+#define CAD_MAX_MARGINAL_FIELD 36
+/* and at most this sum of deg(beta)^2 over the cells tried per region
+ * (deterministic, unlike a time share; RK4's 14 cells: 9512, about 0.5 s;
+ * all of BDF4's took 30 s); the cells after it are counted open, the note
+ * says so */
+#define CAD_MARGINAL_REL_COST 16384
 /* deg alpha above this: the column is not decided at all */
 #define CAD_MAX_LINE_DEGREE 8
+/* the plane of a complex parameter: its sections are decided by signs
+ * (cx_section_signs), so a column costs the norms only (AB3's three lines
+ * of degree 11) */
+#define CAD_MAX_LINE_DEGREE_CX 12
 
 enum { K_BOUNDARY = 0, K_DOMAIN = 1, K_PROJ = 2 };
 
@@ -78,6 +95,7 @@ typedef struct {
     json_t *a, *b;           /* the sample */
     slong sec;               /* for sections: the polynomials vanishing (first index) */
     int balls;               /* status decided by root balls (no tower: cad_status_balls) */
+    const char *why;         /* undecided: the reason (a static string) */
 } cell_t;
 
 typedef struct {
@@ -100,7 +118,20 @@ typedef struct {
     const rs_region_cx_t *cx; /* region re(z), im(z): given conditions, stable / not stable */
     slong nb;                /* length of bounds */
     slong marginal_undecided; /* complex mode: circle-locus cells norm's verdict leaves open */
+    slong rel_cost;           /* sum of deg(field)^2 over the cells cx_marginal_rel tried */
+    slong rel_skipped;        /* cells it left open once that share was spent */
+    /* complex mode: lead, delta[0..ndelta), extra[0..nextra) as products of
+     * the listed polynomials (cx_fac_build): their signs at a cell follow
+     * from the cell's sign vector, with no field arithmetic */
+    struct cx_fac_struct *fac;
+    slong nfac;
 } cad_t;
+
+/* P = sgn * prod f[idx[j]]^exp[j] times a positive constant (zero: sgn 0) */
+typedef struct cx_fac_struct {
+    slong n, *idx, *exp;
+    int sgn, ok;
+} cx_fac_t;
 
 /* the plane of a complex parameter allows a larger tower: its sections are
  * few per line (BDF3: 4 -> 2 undecided lines, RK4 10 -> 9, AB3 28 -> 26 at
@@ -355,6 +386,93 @@ static void cad_add_end(cad_t *c, slong var, const fmpq_t e, int upper, int clos
     fmpz_mpoly_clear(t, c->s->zctx);
 }
 
+/* P's factorisation in terms of the listed polynomials (those cad_add_factors
+ * pushed for it: the same factors, up to sign) */
+static void cx_fac_one(cx_fac_t *F, const cad_t *c, const fmpz_mpoly_t P)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    fmpz_mpoly_factor_t fac;
+    fmpz_mpoly_t h;
+    slong k, j;
+    memset(F, 0, sizeof *F);
+    if (fmpz_mpoly_is_zero(P, ctx)) { F->ok = 1; return; }
+    fmpz_mpoly_factor_init(fac, ctx);
+    fmpz_mpoly_init(h, ctx);
+    if (fmpz_mpoly_factor(fac, P, ctx)) {
+        F->ok = 1;
+        F->sgn = fmpz_sgn(fac->constant);
+        F->idx = flint_malloc((fac->num + 1) * sizeof(slong));
+        F->exp = flint_malloc((fac->num + 1) * sizeof(slong));
+        for (k = 0; k < fac->num && F->ok; k++) {
+            int neg = 0;
+            if (fmpz_mpoly_is_fmpz(fac->poly + k, ctx)) {
+                /* a constant factor (content): its sign to the power */
+                if (fmpz_sgn(fac->poly[k].coeffs + 0) < 0 && fmpz_is_odd(fac->exp + k)) F->sgn = -F->sgn;
+                continue;
+            }
+            fmpz_mpoly_neg(h, fac->poly + k, ctx);
+            for (j = 0; j < c->nf; j++) {
+                if (c->kind[j] == K_DOMAIN) continue;
+                if (fmpz_mpoly_equal(c->f + j, fac->poly + k, ctx)) break;
+                if (fmpz_mpoly_equal(c->f + j, h, ctx)) { neg = 1; break; }
+            }
+            if (j == c->nf) { F->ok = 0; break; }
+            if (neg && fmpz_is_odd(fac->exp + k)) F->sgn = -F->sgn;
+            F->idx[F->n] = j;
+            F->exp[F->n++] = fmpz_get_si(fac->exp + k);
+        }
+    }
+    fmpz_mpoly_factor_clear(fac, ctx);
+    fmpz_mpoly_clear(h, ctx);
+}
+
+static void cx_fac_build(cad_t *c)
+{
+    const rs_region_cx_t *X = c->cx;
+    slong k, nx = X->norm != NULL ? X->nextra : 0;
+    c->nfac = 1 + X->ndelta + nx;
+    c->fac = flint_calloc(c->nfac, sizeof(cx_fac_t));
+    cx_fac_one(c->fac + 0, c, X->lead);
+    for (k = 0; k < X->ndelta; k++) cx_fac_one(c->fac + 1 + k, c, X->delta + k);
+    for (k = 0; k < nx; k++) cx_fac_one(c->fac + 1 + X->ndelta + k, c, X->extra + k);
+}
+
+/* the sign of listed product F at a cell of signs sg; 2 when unknown */
+static int cx_fac_sign(const cx_fac_t *F, const signed char *sg)
+{
+    slong j;
+    int s;
+    if (!F->ok) return 2;
+    s = F->sgn;
+    for (j = 0; j < F->n && s != 0; j++)
+        if (sg[F->idx[j]] == 0) s = 0;
+        else if (sg[F->idx[j]] < 0 && F->exp[j] % 2 == 1) s = -s;
+    return s;
+}
+
+/* complex mode from a cell's signs alone: stable iff lead and every delta
+ * > 0 (cx_status's rule); *on: the sample lies on the circle locus (the
+ * rule of cx_marginal_at).  0 when a factorisation is missing. */
+static int cx_status_sg(rs_status_t *st, int *on, const cad_t *c, const signed char *sg)
+{
+    const rs_region_cx_t *X = c->cx;
+    slong k;
+    int e0, e1, e2;
+    if (c->fac == NULL) return 0;
+    for (k = 0; k < 1 + X->ndelta; k++) if (cx_fac_sign(c->fac + k, sg) == 2) return 0;
+    *st = RS_STATUS_STABLE;
+    for (k = 0; k < 1 + X->ndelta; k++)
+        if (cx_fac_sign(c->fac + k, sg) <= 0) { *st = RS_STATUS_UNSTABLE; break; }
+    *on = 0;
+    if (X->norm == NULL) return 1;
+    e0 = cx_fac_sign(c->fac + 1 + X->ndelta, sg);
+    e1 = X->nextra >= 3 ? cx_fac_sign(c->fac + 2 + X->ndelta, sg) : 1;
+    e2 = X->nextra >= 3 ? cx_fac_sign(c->fac + 3 + X->ndelta, sg) : 1;
+    if (e0 == 2 || e1 == 2 || e2 == 2) return 0;
+    *on = e0 == 0 || (X->nextra >= 3 && e1 == 0 && e2 == 0);
+    return 1;
+}
+
 /* step 1: where the status can change (as region NAME's critical values) */
 static int cad_critical(cad_t *c)
 {
@@ -371,6 +489,7 @@ static int cad_critical(cad_t *c)
         for (k = 0; k < c->cx->ndelta; k++) cad_add_factors(c, c->cx->delta + k, K_BOUNDARY);
         /* the marginal set: where a root reaches the circle or doubles */
         for (k = 0; k < c->cx->nextra && c->cx->norm != NULL; k++) cad_add_factors(c, c->cx->extra + k, K_PROJ);
+        cx_fac_build(c);
         return rs_budget_check(c->run->err, "region re(z), im(z) (critical polynomials)");
     }
     fmpz_mpoly_init(sqf, s->zctx);
@@ -846,10 +965,11 @@ static int balls_all_inside(arb_srcptr c, slong n, slong prec)
  * roots' moduli exceeds 1) or acb_poly_find_roots isolates every root and
  * one ball lies strictly outside.  A root on the circle (marginal or not)
  * is never decided here: returns 0 then (after 2048 bits). */
-static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_alg_t *be)
+static int cad_status_balls(rs_status_t *st, const cad_t *c, const fmpz_mpoly_t p, rs_alg_t *al, rs_alg_t *be,
+                            slong maxprec)
 {
     const rs_scheme_struct *s = c->s;
-    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(c->v->cp->p, lv, s->zctx), j, prec;
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), j, prec;
     fmpz_mpoly_struct *cf = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
     acb_poly_t P;
     acb_ptr rt = _acb_vec_init(FLINT_MAX(n, 1));
@@ -858,12 +978,12 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_al
     arb_ptr re = _arb_vec_init(n + 1);
     int dec = 0;
     for (j = 0; j <= n; j++) fmpz_mpoly_init(cf + j, s->zctx);
-    rs_polyfmt_coeffs(cf, c->v->cp->p, lv, s->zctx);   /* once, not per precision */
+    rs_polyfmt_coeffs(cf, p, lv, s->zctx);   /* once, not per precision */
     arb_init(b);
     acb_poly_init(P);
     acb_init(x); acb_init(y); acb_init(v);
     arb_init(a);
-    for (prec = 128; !dec && n >= 1 && prec <= 2048; prec *= 2) {
+    for (prec = 128; !dec && n >= 1 && prec <= maxprec; prec *= 2) {
         slong in = 0, out = 0;
         int by_coeffs = 0;
         rs_alg_refine(al, prec);
@@ -913,6 +1033,188 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, rs_alg_t *al, rs_al
     arb_clear(a); arb_clear(b);
     _arb_vec_clear(re, n + 1);
     return dec;
+}
+
+/* ---- polynomials over a number field (cx_marginal_rel) -------------------
+ * A polynomial over K = Q[t]/(M) (M irreducible) is an array of fmpq_polys
+ * reduced mod M, a length (leading coefficient nonzero). */
+
+static slong nfp_trim(fmpq_poly_struct *a, slong len)
+{
+    while (len > 0 && fmpq_poly_is_zero(a + len - 1)) len--;
+    return len;
+}
+
+/* a := a / lc(a) (len >= 1) */
+static void nfp_monic(fmpq_poly_struct *a, slong len, const fmpq_poly_t M)
+{
+    fmpq_poly_t g, s, t;
+    slong j;
+    fmpq_poly_init(g); fmpq_poly_init(s); fmpq_poly_init(t);
+    fmpq_poly_xgcd(g, s, t, a + len - 1, M);   /* s lc + t M = 1 */
+    for (j = 0; j < len - 1; j++) { fmpq_poly_mul(a + j, a + j, s); fmpq_poly_rem(a + j, a + j, M); }
+    fmpq_poly_one(a + len - 1);
+    fmpq_poly_clear(g); fmpq_poly_clear(s); fmpq_poly_clear(t);
+}
+
+/* a := a mod b (b monic, lb >= 1); the new length */
+static slong nfp_rem(fmpq_poly_struct *a, slong la, const fmpq_poly_struct *b, slong lb, const fmpq_poly_t M)
+{
+    fmpq_poly_t q, t;
+    slong i, j;
+    fmpq_poly_init(q); fmpq_poly_init(t);
+    for (i = la - 1; i >= lb - 1; i--) {
+        if (fmpq_poly_is_zero(a + i)) continue;
+        fmpq_poly_set(q, a + i);
+        for (j = 0; j < lb; j++) {
+            fmpq_poly_mul(t, q, b + j);
+            fmpq_poly_sub(a + i - lb + 1 + j, a + i - lb + 1 + j, t);
+            fmpq_poly_rem(a + i - lb + 1 + j, a + i - lb + 1 + j, M);
+        }
+    }
+    fmpq_poly_clear(q); fmpq_poly_clear(t);
+    return nfp_trim(a, FLINT_MIN(la, lb - 1));
+}
+
+/* a := gcd(a, b) monic (b destroyed); the length (1: a unit; -1: the
+ * budget ran out) */
+static slong nfp_gcd(fmpq_poly_struct *a, slong la, fmpq_poly_struct *b, slong lb, const fmpq_poly_t M)
+{
+    la = nfp_trim(a, la);
+    lb = nfp_trim(b, lb);
+    while (lb > 0) {
+        slong j;
+        if (rs_budget_check(NULL, "a gcd over a number field") != RS_OK) return -1;
+        nfp_monic(b, lb, M);
+        la = nfp_rem(a, la, b, lb, M);
+        for (j = 0; j < FLINT_MAX(la, lb); j++) fmpq_poly_swap(a + j, b + j);
+        j = la; la = lb; lb = j;
+    }
+    if (la > 0) nfp_monic(a, la, M);
+    return la;
+}
+
+/* f (in N1, N2) as a polynomial in variable pv over Q(t) = Q[t]/(M), t
+ * the other variable: out[0..deg] (deg_pv f + 1 entries, initialised); the
+ * length */
+static slong nfp_from_mpoly(fmpq_poly_struct *out, const cad_t *c, const fmpz_mpoly_t f, slong pv,
+                            const fmpq_poly_t M)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    slong fv = pv == c->bv ? c->av : c->bv, d = fmpz_mpoly_degree_si(f, pv, ctx), i;
+    fmpz_t cf;
+    fmpz_init(cf);
+    for (i = 0; i <= d; i++) fmpq_poly_zero(out + i);
+    for (i = 0; i < fmpz_mpoly_length(f, ctx); i++) {
+        slong ea = fmpz_mpoly_get_term_var_exp_si(f, i, fv, ctx), eb = fmpz_mpoly_get_term_var_exp_si(f, i, pv, ctx);
+        fmpz_t old;
+        fmpz_init(old);
+        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, ctx);
+        fmpq_poly_get_coeff_fmpz(old, out + eb, ea);  /* out + eb is not yet reduced: numerators exact */
+        fmpz_add(old, old, cf);
+        fmpq_poly_set_coeff_fmpz(out + eb, ea, old);
+        fmpz_clear(old);
+    }
+    for (i = 0; i <= d; i++) fmpq_poly_rem(out + i, out + i, M);
+    fmpz_clear(cf);
+    return nfp_trim(out, d + 1);
+}
+
+/* complex mode, a circle-locus cell (alpha, beta) whose tower
+ * deg alpha * deg beta is above the cap: the field Q(alpha, beta) is often
+ * just Q(beta) (the plane is symmetric in N2: beta^2 in Q(alpha) makes it
+ * 2 deg alpha, not 2 deg alpha^2).  alpha lies in Q(beta) when the gcd over
+ * Q(beta) of m_alpha(x) and the f_k(x, beta) vanishing at the cell is
+ * linear (only x = alpha is common): alpha = A(beta).  Then cx_marginal_at
+ * decides with the norms in Q(beta).  0: not done (deg beta above
+ * CAD_MAX_MARGINAL_FIELD, alpha not found in Q(beta), the budget). */
+static int cx_marginal_rel(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
+{
+    const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
+    slong da = fmpz_poly_degree(al->minpoly), db = fmpz_poly_degree(be->minpoly), k, j;
+    int ok = 0;
+    if (al->rational || be->rational) return 0;   /* the tower path had it */
+    /* a line above CAD_MAX_LINE_DEGREE (AB3's of degree 11): its gcds over
+     * Q(beta) took 6 s; the cells stay counted as open */
+    if (da > CAD_MAX_LINE_DEGREE) return 0;
+    if (db <= CAD_MAX_MARGINAL_FIELD) {
+        /* Q(beta) first (k = 0): alpha lies in it when the gcd over Q(beta)
+         * of m_alpha(x) and the f_k(x, beta) vanishing here is linear (only
+         * x = alpha is common); the plane's sections mostly have it */
+        slong dx = da, lp = da + 1, lq;
+        fmpq_poly_struct *P, *Q;
+        fmpq_poly_t Mb;
+        for (k = 0; k < c->nf; k++) dx = FLINT_MAX(dx, fmpz_mpoly_degree_si(c->f + k, c->av, ctx));
+        P = flint_malloc((dx + 1) * sizeof(fmpq_poly_struct));
+        Q = flint_malloc((dx + 1) * sizeof(fmpq_poly_struct));
+        for (j = 0; j <= dx; j++) { fmpq_poly_init(P + j); fmpq_poly_init(Q + j); }
+        fmpq_poly_init(Mb);
+        fmpq_poly_set_fmpz_poly(Mb, be->minpoly);
+        for (j = 0; j <= da; j++) fmpq_poly_set_fmpz(P + j, al->minpoly->coeffs + j);
+        for (k = 0; k < c->nf && lp > 2; k++) {
+            if (e->sg[k] != 0 || fmpz_mpoly_degree_si(c->f + k, c->av, ctx) <= 0) continue;
+            lq = nfp_from_mpoly(Q, c, c->f + k, c->av, Mb);
+            if (lq > 0) lp = nfp_gcd(P, lp, Q, lq, Mb);
+        }
+        if (lp == 2) {
+            /* x + p0: alpha = -p0(beta), beta = beta */
+            fmpq_poly_t A, B;
+            cx_pt_t pt = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+            fmpq_poly_init(A); fmpq_poly_init(B);
+            fmpq_poly_neg(A, P + 0);
+            fmpq_poly_set_coeff_si(B, 1, 1);
+            fmpq_poly_rem(B, B, Mb);
+            pt.A = A; pt.B = B; pt.m = Mb; pt.g = be;
+            cx_marginal_at(c, e, &pt);
+            ok = 1;
+            fmpq_poly_clear(A); fmpq_poly_clear(B);
+        }
+        for (j = 0; j <= dx; j++) { fmpq_poly_clear(P + j); fmpq_poly_clear(Q + j); }
+        flint_free(P); flint_free(Q);
+        fmpq_poly_clear(Mb);
+    }
+    return ok;
+}
+
+/* complex mode, a section cell (alpha, beta) whose tower is above the cap:
+ * the status from the cell's exact signs (cx_status_sg: lead and the deltas
+ * are products of listed polynomials, whose signs cad_sign_norm gave),
+ * checked against root balls of p conj(p) where they decide (every root
+ * strictly inside, or one strictly outside; a disagreement is exit 3 and
+ * the cell left undecided).  On the circle locus a not-stable cell is
+ * unstable when a ball lies strictly outside; otherwise marginal or
+ * unstable is decided by the norms in Q(beta) (cx_marginal_rel). */
+static void cx_section_signs(cad_t *c, cell_t *e, rs_alg_t *al, rs_alg_t *be)
+{
+    const rs_region_cx_t *X = c->cx;
+    rs_status_t st, bst = RS_STATUS_MARGINAL;
+    int on = 0, bdec = 0;
+    if (!cx_status_sg(&st, &on, c, e->sg)) {
+        e->why = "a critical polynomial not a product of the listed ones (complex plane)";
+        return;
+    }
+    /* on the locus a circle root keeps the balls open: 256 bits suffice to
+     * see a root outside (off it they decide at 128 unless near the circle) */
+    if (X->norm != NULL) bdec = cad_status_balls(&bst, c, X->norm + 0, al, be, on ? 256 : 1024);
+    if (bdec && (bst == RS_STATUS_STABLE) != (st == RS_STATUS_STABLE)) {
+        c->run->outcome |= RS_OUTCOME_INCONSISTENT;
+        e->why = "the signs and the root balls disagree";
+        return;
+    }
+    e->st = st;
+    e->decided = 1;
+    if (st == RS_STATUS_STABLE || !on || X->norm == NULL) return;
+    if (bdec && bst == RS_STATUS_UNSTABLE) { e->balls = 1; return; }   /* a root strictly outside */
+    {
+        slong db = fmpz_poly_degree(be->minpoly);
+        if (c->rel_cost + db * db > CAD_MARGINAL_REL_COST) {
+            c->rel_skipped++;
+            c->marginal_undecided++;
+            return;
+        }
+        c->rel_cost += db * db;
+    }
+    if (!cx_marginal_rel(c, e, al, be)) c->marginal_undecided++;
 }
 
 /* step 3 for a column over an irrational N1 = alpha (a two-level tower):
@@ -1017,10 +1319,12 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             e->a = rs_alg_json(al, c->an);
             e->b = rs_alg_json(cand + i, c->bn);
             e->outside = cad_outside(c, e->sg);
-            if (!e->outside && !tower) {
+            if (!e->outside && !tower && c->cx != NULL) {
+                cx_section_signs(c, e, al, cand + i);
+            } else if (!e->outside && !tower) {
                 /* no tower: balls decide stable / unstable; a root on the
                  * circle needs the tower after all, when it is not too big */
-                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, al, cand + i);
+                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
                 e->balls = e->decided;
                 if (!e->decided && c->cx == NULL
                     && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
@@ -1028,6 +1332,9 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                     fmpq_poly_set_fmpz_poly(m, g.minpoly);
                     e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
                 }
+                if (!e->decided)
+                    e->why = c->cx != NULL ? "a section whose tower is above the cap (complex plane)"
+                                           : "a section with a root on the circle, tower above 64";
                 r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
             } else if (!e->outside && c->cx != NULL) {
                 cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
@@ -1059,6 +1366,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
         e = cad_new_cell(c, 1, col);
         e->a = rs_alg_json(al, c->an);
         e->b = json_null();
+        e->why = "a sign the norms and balls did not separate";
         c->undecided_lines++;
     } else if (r == RS_OK) {
         /* interleave: sector, section, ..., sector (the sections were made
@@ -1126,12 +1434,13 @@ static int cad_lift(cad_t *c)
             int in = 1;
             if (b->has_lo) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->lo); in &= rs_alg_cmp(al, &e) > 0; rs_alg_clear(&e); }
             if (b->has_hi) { rs_alg_t e; rs_alg_init(&e); e.rational = 1; fmpq_set(e.q, b->hi); in &= rs_alg_cmp(al, &e) < 0; rs_alg_clear(&e); }
-            if (in && fmpz_poly_degree(al->minpoly) <= CAD_MAX_LINE_DEGREE) {
+            if (in && fmpz_poly_degree(al->minpoly) <= (c->cx != NULL ? CAD_MAX_LINE_DEGREE_CX : CAD_MAX_LINE_DEGREE)) {
                 r = cad_column_alg(c, al, i);
             } else if (in) {
                 cell_t *e = cad_new_cell(c, 1, i);
                 e->a = rs_alg_json(al, c->an);
                 e->b = json_null();
+                e->why = "line degree above 8";
                 c->undecided_lines++;
             }
         }
@@ -1711,6 +2020,8 @@ static void cad_clear(cad_t *c)
     flint_free(c->closed);
     for (i = 0; i < c->ncrit; i++) rs_alg_clear(c->crit + i);
     free(c->crit);
+    for (i = 0; i < c->nfac; i++) { flint_free(c->fac[i].idx); flint_free(c->fac[i].exp); }
+    flint_free(c->fac);
     for (i = 0; i < c->ncells; i++) {
         flint_free(c->cells[i].sg);
         json_decref(c->cells[i].a);
@@ -1733,6 +2044,7 @@ static json_t *cad_cells_json(const cad_t *c)
         json_t *o = json_pack("{s:I,s:O,s:O,s:s}", "dim", (json_int_t) e->dim, c->an, e->a, c->bn, e->b, "status", st);
         /* a section without a tower: its status is certified by root balls (strictly inside / outside) */
         if (e->balls && !e->outside) json_object_set_new(o, "decided_by", json_string("root balls"));
+        if (!e->decided && !e->outside && e->why != NULL) json_object_set_new(o, "undecided_because", json_string(e->why));
         json_array_append_new(a, o);
     }
     return a;
@@ -1964,12 +2276,16 @@ static int cad_solve(cad_t *c, json_t *substituted)
     {
         unsigned char **Fs, **Fm;
         slong ns, nm, k;
-        int conflict = 0, complete;
+        int conflict = 0, conflict_m = 0, complete;
         json_t *fo = json_object(), *proj = json_array(), *cv = json_array();
         Fs = cad_formula(&ns, &conflict, c, RS_STATUS_STABLE);
         /* complex mode without norm: the cells are stable or not (the marginal set is not separated) */
         int cxm = c->cx == NULL || c->cx->norm != NULL;
-        Fm = !cxm ? NULL : cad_formula(&nm, &conflict, c, RS_STATUS_MARGINAL);
+        /* in the complex plane a clash of the marginal formula (a marginal
+         * cell with the signs of a not-stable one, e.g. a circle-locus cell
+         * left open) makes marginal_complete false, not formula_complete:
+         * the stable formula does not depend on it */
+        Fm = !cxm ? NULL : cad_formula(&nm, c->cx != NULL ? &conflict_m : &conflict, c, RS_STATUS_MARGINAL);
         if (!cxm) nm = 0;
         json_object_set_new(fo, "stable", cad_formula_json(c, Fs, ns));
         json_object_set_new(fo, "marginal", !cxm ? json_null() : cad_formula_json(c, Fm, nm));
@@ -1985,9 +2301,9 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "formula_note", json_string(conflict
                 ? "two cells of different status have the same signs: the formula is exact except there"
                 : c->cx != NULL
-                ? "some cells over irrational critical values of the first parameter are not decided (an "
-                  "algebraic tower of degree above 24, a sign the norms and balls did not separate or a line "
-                  "of degree above 8): the formula is exact off those cells"
+                ? "some cells over irrational critical values of the first parameter are not decided (a sign "
+                  "the norms and balls did not separate, a line of degree above 12, or signs and root balls that "
+                  "disagree; each such cell says why in undecided_because): the formula is exact off those cells"
                 : "some cells over irrational critical values of the first parameter are not decided (a "
                   "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
                   "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "
@@ -2027,8 +2343,15 @@ static int cad_solve(cad_t *c, json_t *substituted)
             "first parameter (leading coefficients, discriminants, resultants), one exact verdict per cell"));
         if (c->cx != NULL && c->cx->norm != NULL) {
             json_object_set_new(o, "complex_plane", json_string(c->cx->name));
-            json_object_set_new(o, "marginal_complete", json_boolean(complete && c->marginal_undecided == 0));
+            json_object_set_new(o, "marginal_complete", json_boolean(complete && !conflict_m && c->marginal_undecided == 0));
             json_object_set_new(o, "marginal_undecided_cells", json_integer(c->marginal_undecided));
+            if (c->rel_skipped > 0) {
+                char buf[300];
+                snprintf(buf, sizeof buf, "%ld circle-locus cells not tried: the marginal tests in fields without "
+                         "the full tower stop at a sum of %d over deg(field)^2", (long) c->rel_skipped,
+                         CAD_MARGINAL_REL_COST);
+                json_object_set_new(o, "marginal_limit", json_string(buf));
+            }
             json_object_set_new(o, "marginal_note", json_string("marginal: roots on the circle, all simple, the "
                                 "others inside; cells cut also by the circle locus (Res_w(A, B) of q(i w) = A + i B, "
                                 "p(-1)) and the discriminant of p; decided by the point verdict over Q(i) at "

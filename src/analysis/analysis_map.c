@@ -18,6 +18,8 @@
 #include "numeric/grid.h"
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
+#include "stability/schur_complex.h"
+#include <flint/fmpz_mpoly_factor.h>
 #include "analysis/an_region.h"
 
 typedef struct {
@@ -164,18 +166,19 @@ static slong boundary_rows(FILE *f, slong c, const signed char *sg, const double
  * columns (exact signs at grid points, crossing interpolated linearly).  Its
  * rows in shard 1 only, the header in every shard, so shards merge by
  * concatenation. */
+static void map_boundary_rows(json_t *o, json_t *b, rs_run_t *run, const rs_variant_t *v,
+                              const rs_sweep_request_t *R, const fmpq *x1, const fmpq *x2, bcond_t *bc, slong nb,
+                              rs_region_arcs_t *A, const char *method);
+
 static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const rs_sweep_request_t *R,
                          const fmpq *x1, const fmpq *x2)
 {
-    slong v1 = R->axis[0].var, v2 = R->axis[1].var, K1 = R->axis[0].count, K2 = R->axis[1].count;
+    slong v1 = R->axis[0].var, v2 = R->axis[1].var;
     bcond_t *bc;
-    slong nb, c, npts = 0, dropped = 0;
+    slong nb;
     rs_region_arcs_t *A = NULL;
-    json_t *conds = json_array(), *b = json_object();
+    json_t *b = json_object();
     rs_error_struct saved = *run->err;
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f;
     if (boundary_candidates(&bc, &nb, run, v) != RS_OK) {
         json_object_set_new(b, "hurwitz_error", json_string(run->err->msg));
         *run->err = saved;
@@ -183,6 +186,24 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
     /* only the arcs that separate two statuses are drawn (the plane's
      * decomposition, an_region_cad.c; every other parameter set) */
     if (rs_region_arcs_new(&A, run, v, v1, v2) != RS_OK) *run->err = saved;
+    map_boundary_rows(o, b, run, v, R, x1, x2, bc, nb, A,
+        "zero sets of the reduced Lienard-Chipart conditions of q(z) (hurwitz) and of p(1), p(-1): exact signs "
+        "at the grid points, a crossing between two neighbours of a row (column) placed by linear "
+        "interpolation of the values; 'zero' rows are grid points where the polynomial vanishes exactly");
+}
+
+/* the rows of the candidates bc (taken: cleared here) into o's "boundary"
+ * (b) and "boundary_table"; A (taken, may be NULL) filters them */
+static void map_boundary_rows(json_t *o, json_t *b, rs_run_t *run, const rs_variant_t *v,
+                              const rs_sweep_request_t *R, const fmpq *x1, const fmpq *x2, bcond_t *bc, slong nb,
+                              rs_region_arcs_t *A, const char *method)
+{
+    slong v1 = R->axis[0].var, v2 = R->axis[1].var, K1 = R->axis[0].count, K2 = R->axis[1].count;
+    slong c, npts = 0, dropped = 0;
+    json_t *conds = json_array();
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f;
     f = open_memstream(&buf, &len);
     fprintf(f, "condition,%s,%s,scan\n", R->axis[0].name, R->axis[1].name);
     for (c = 0; c < nb; c++) {
@@ -203,10 +224,7 @@ static void map_boundary(json_t *o, rs_run_t *run, const rs_variant_t *v, const 
         json_object_set_new(b, "dropped_points", json_integer(dropped));
         rs_region_arcs_free(A);
     }
-    json_object_set_new(b, "method", json_string(
-        "zero sets of the reduced Lienard-Chipart conditions of q(z) (hurwitz) and of p(1), p(-1): exact signs "
-        "at the grid points, a crossing between two neighbours of a row (column) placed by linear "
-        "interpolation of the values; 'zero' rows are grid points where the polynomial vanishes exactly"));
+    json_object_set_new(b, "method", json_string(method));
     json_object_set_new(o, "boundary", b);
     json_object_set_new(o, "boundary_table", json_string(buf));
     json_object_set_new(b, "columns", json_pack("[s,s,s,s]", "condition", R->axis[0].name, R->axis[1].name, "scan"));
@@ -236,10 +254,80 @@ static void map_decorate(json_t *o, void *arg)
         map_boundary(o, d->run, d->v, d->R, d->xs[0], d->xs[1]);
 }
 
-/* the map's element at complex set values: over Q(i), no boundary overlay */
+/* the boundary at complex set values: p = re + i im over Q(i)[N1, N2];
+ * the candidates are the distinct irreducible factors of |a_n|^2 and of the
+ * Schur-Cohn deltas (stable iff all > 0: rs_schur_cx_conds), their zero
+ * sets found from exact signs at the grid points as for real p */
+typedef struct {
+    rs_sweep_cx_t *J;
+    rs_run_t *run;
+    const rs_variant_t *v;
+    const rs_sweep_request_t *R;
+    fmpq *const *xs;
+} cx_deco_t;
+
+static void cx_bcond_add(bcond_t **bc, slong *nb, const fmpz_mpoly_t g, const char *origin, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_factor_t fac;
+    slong k, j;
+    if (fmpz_mpoly_is_fmpz(g, ctx)) return;
+    fmpz_mpoly_factor_init(fac, ctx);
+    if (!fmpz_mpoly_factor(fac, g, ctx)) { fmpz_mpoly_factor_clear(fac, ctx); return; }
+    for (k = 0; k < fac->num; k++) {
+        int dup = 0;
+        if (fmpz_mpoly_is_fmpz(fac->poly + k, ctx)) continue;
+        for (j = 0; j < *nb && !dup; j++) dup = fmpz_mpoly_equal((*bc)[j].f, fac->poly + k, ctx);
+        if (dup) continue;
+        *bc = realloc(*bc, (size_t) (*nb + 1) * sizeof(bcond_t));
+        fmpz_mpoly_init((*bc)[*nb].f, ctx);
+        fmpz_mpoly_set((*bc)[*nb].f, fac->poly + k, ctx);
+        (*bc)[*nb].origin = strdup(origin);
+        (*nb)++;
+    }
+    fmpz_mpoly_factor_clear(fac, ctx);
+}
+
+static void cx_map_boundary(json_t *o, cx_deco_t *d)
+{
+    const rs_scheme_struct *s = d->v->s;
+    const rs_sweep_axis_t *X = d->R->axis;
+    rs_schur_cx_conds_t cc;
+    bcond_t *bc = NULL;
+    slong nb = 0, k;
+    json_t *b;
+    if (d->R->naxes < 2) return;
+    /* p must depend on both axes (as for real p) */
+    for (k = 0; k < 2; k++)
+        if (fmpz_mpoly_degree_si(d->J->re, X[k].var, s->zctx) <= 0
+            && fmpz_mpoly_degree_si(d->J->im, X[k].var, s->zctx) <= 0) return;
+    rs_schur_cx_conds_init(&cc);
+    if (!rs_schur_cx_conds(&cc, d->J->re, d->J->im, s->lambda_var, s->zctx)) {
+        rs_schur_cx_conds_clear(&cc, s->zctx);
+        json_object_set_new(o, "boundary_note", json_string("no boundary: the Schur-Cohn conditions over Q(i) grew "
+                                                           "too large"));
+        return;
+    }
+    cx_bcond_add(&bc, &nb, cc.lead, "|a_n|^2 (Schur-Cohn over Q(i))", s->zctx);
+    for (k = 0; k < cc.ndelta && rs_budget_check(NULL, "the map's boundary") == RS_OK; k++) {
+        char org[80];
+        snprintf(org, sizeof org, "delta_%ld (Schur-Cohn over Q(i))", (long) k + 1);
+        cx_bcond_add(&bc, &nb, cc.delta + k, org, s->zctx);
+    }
+    rs_schur_cx_conds_clear(&cc, s->zctx);
+    b = json_object();
+    map_boundary_rows(o, b, d->run, d->v, d->R, d->xs[0], d->xs[1], bc, nb, NULL,
+        "zero sets of the irreducible factors of |a_n|^2 and of the division-free Schur-Cohn deltas of p over "
+        "Q(i)[N1, N2] (stable iff all > 0): exact signs at the grid points, a crossing between two neighbours of "
+        "a row (column) placed by linear interpolation; every factor is drawn (arcs separating nothing included)");
+}
+
+/* the map's element at complex set values: over Q(i), the boundary of the
+ * Schur-Cohn conditions over Q(i) overlaid */
 static void cx_map_decorate(json_t *o, void *arg)
 {
-    const rs_sweep_cx_t *J = arg;
+    cx_deco_t *d = arg;
+    const rs_sweep_cx_t *J = d->J;
+    cx_map_boundary(o, d);
     json_object_set_new(o, "over", json_string("Q(i)"));
     json_object_set(o, "complex", J->csat);
     json_object_set_new(o, "method", json_string(
@@ -266,7 +354,13 @@ static int cx_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_reque
         m.point = rs_sweep_cx_point;
         m.model = &J;
         m.serial = 0;
-        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, cx_map_decorate, &J);
+        cx_deco_t d;
+        d.J = &J;
+        d.run = run;
+        d.v = v;
+        d.R = R;
+        d.xs = xs;
+        r = rs_sweep_map_finish(run, q, R, &m, (const fmpq *const *) xs, t0, cx_map_decorate, &d);
         json_decref(J.csat);
     }
     rs_sweep_cx_clear(&J);

@@ -866,8 +866,11 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
     {
         fputs(", ", g);
         put_table(g, pl->dir, 'b', i);
-        fputs(" using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
-              "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
+        /* at complex set values the conditions are Schur-Cohn's over Q(i) */
+        fputs(jstr(tab, "over") != NULL && strcmp(jstr(tab, "over"), "Q(i)") == 0
+              ? " using 2:3 with points pt 7 ps 0.4 lc rgb 'black' title 'exact boundary (Schur-Cohn over Q(i))'"
+              : " using 2:3 with points pt 7 ps 0.4 lc rgb 'black' "
+                "title 'exact boundary (Lienard-Chipart, p(1), p(-1))'", g);
     }
     if (jstr(tab, "locus_table")) {
         /* the complex plane of one parameter: its boundary locus on top */

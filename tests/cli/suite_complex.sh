@@ -439,3 +439,23 @@ printf 'param q\nparam a\nchar (1 - a*q)*lambda - (1 + (1 - a)*q)\nset a = 1/4 +
 "$RS" --json "$T/ta.case" 2>"$T/err" | tr -d ' \n' >"$T/ta.json"
 if grep -q '"over":"Q(i)","real_interval":\[-4,0\],"imag_interval":\[0,0\]' "$T/ta.json" && grep -q '"a_stable":false' "$T/ta.json"; then
     ok "astability at a complex set value: real [-4, 0], imaginary [0, 0]"; else fail "astability over Q(i): $(head -c 400 "$T/ta.json") $(cat "$T/err")"; fi
+
+# the map at q = -1 + i over (h, w) with its exact boundary over Q(i): by hand
+# |1 + h w q|^2 = 1 - 2 u (1 - u), u = h w, so delta_1 = 1 - |a_0|^2 = 2 h w (1 - h w):
+# the irreducible factors h, w and h*w - 1; every boundary row lies on one of them
+# (h = 0, w = 0 exactly, or |h w - 1| within the grid's interpolation step, 1/2 here)
+"$RS" --json cases/complex/forward-euler-hw-map.case >"$T/hw.json"; rc=$?
+if command -v python3 >/dev/null 2>&1; then
+    res=$(python3 - "$T/hw.json" <<'PY'
+import json, sys
+m = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "map"][0]
+b = m.get("boundary", {})
+polys = sorted(c["poly"] for c in b.get("conditions", []))
+rows = m.get("boundary_rows", [])
+on = all(abs(r[1]) < 1e-12 or abs(r[2]) < 1e-12 or abs(r[1] * r[2] - 1) <= 0.5 for r in rows)
+print("yes" if polys == ["h", "h*w - 1", "w"] and len(rows) == b.get("points") and len(rows) > 0 and on else "no %s %s" % (polys, rows))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map at complex values: exact boundary over Q(i) (h, w, h*w - 1)"
+    else fail "map boundary over Q(i): rc=$rc $res"; fi
+else ok "skipped map boundary over Q(i): no python3"; fi

@@ -971,7 +971,7 @@ static void test_zregion(void **state)
  * acb_poly_find_roots on p at the Arb ball of z), must exist.  p is given by
  * its coefficients c_k = a_k + b_k z (k = 0..3, lambda^k). */
 static void open_cells_check(const char *method, const char *x0, slong num, slong den, const char *minpoly,
-                             const slong *a, const slong *b, slong scale)
+                             const slong *a, const slong *b, slong scale, slong open)
 {
     char text[400];
     int outcome, code, found = 0;
@@ -984,7 +984,9 @@ static void open_cells_check(const char *method, const char *x0, slong num, slon
     assert_int_equal(code, RS_OK);
     assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
     o = json_array_get(json_object_get(doc, "results"), 0);
-    assert_int_equal(json_integer_value(json_object_get(o, "marginal_undecided_cells")), 0);
+    /* open: the circle-locus cells whose marginal-or-unstable question is
+     * left open (counted, never guessed) */
+    assert_int_equal(json_integer_value(json_object_get(o, "marginal_undecided_cells")), open);
     cells = json_object_get(o, "cells");
     for (i = 0; i < json_array_size(cells); i++) {
         const json_t *e = json_array_get(cells, i), *im = json_object_get(e, "im(z)");
@@ -1129,11 +1131,139 @@ static void test_zregion_open_cells(void **state)
      * (times 6); at z = 25/24 +- i sqrt(15)/8 the root moduli are 0.3564, 0.3592,
      * 2.8059 (mpmath polyroots, 40 digits) */
     open_cells_check("bdf 3", "25/24", 15, 64, "64*im(z)^2 - 15", (slong[]) {-2, 9, -18, 11},
-                     (slong[]) {0, 0, 0, -6}, 6);
+                     (slong[]) {0, 0, 0, -6}, 6, 0);
     /* AB3: lambda^3 - lambda^2 - z (23 lambda^2 - 16 lambda + 5)/12 (times 12); at
      * z = 288/1495 +- i sqrt(1567536/2235025) the moduli are 0.3581, 0.6851, 1.4597 */
     open_cells_check("adams-bashforth 3", "288/1495", 1567536, 2235025, "2235025*im(z)^2 - 1567536",
-                     (slong[]) {0, 0, -12, 12}, (slong[]) {-5, 16, -23, 0}, 12);
+                     (slong[]) {0, 0, -12, 12}, (slong[]) {-5, 16, -23, 0}, 12, 8);
+    /* (AB3's 8 open cells: sections decided not stable by their signs whose
+     * field Q(alpha, beta) has degree 48, or over lines of degree 11; they
+     * were undecided cells before, outside the count) */
+}
+
+/* a coordinate of a cell as a ball: a rational, or the JSON interval of an
+ * algebraic one after checking that its minimal polynomial changes sign
+ * across it (exact, FLINT's parser on the printed polynomial) */
+static void coord_ball(arb_t out, const json_t *v, const char *var, slong prec)
+{
+    fmpq_t q, lo, hi, vl, vh;
+    fmpq_init(q); fmpq_init(lo); fmpq_init(hi); fmpq_init(vl); fmpq_init(vh);
+    if (json_is_string(v)) {
+        assert_int_equal(fmpq_set_str(q, json_string_value(v), 10), 0);
+        fmpq_canonicalise(q);
+        arb_set_fmpq(out, q, prec);
+    } else {
+        const char *vars[1];
+        fmpq_mpoly_ctx_t ctx;
+        fmpq_mpoly_t P;
+        fmpq *pt[1];
+        arb_t b;
+        const json_t *iv = json_object_get(v, "interval");
+        vars[0] = var;
+        assert_non_null(iv);
+        assert_int_equal(fmpq_set_str(lo, json_string_value(json_array_get(iv, 0)), 10), 0);
+        assert_int_equal(fmpq_set_str(hi, json_string_value(json_array_get(iv, 1)), 10), 0);
+        fmpq_canonicalise(lo); fmpq_canonicalise(hi);
+        fmpq_mpoly_ctx_init(ctx, 1, ORD_LEX);
+        fmpq_mpoly_init(P, ctx);
+        if (fmpq_mpoly_set_str_pretty(P, json_string_value(json_object_get(v, "minpoly")), vars, ctx) != 0)
+            fail_msg("cannot parse %s", json_string_value(json_object_get(v, "minpoly")));
+        pt[0] = lo;
+        assert_true(fmpq_mpoly_evaluate_all_fmpq(vl, P, pt, ctx));
+        pt[0] = hi;
+        assert_true(fmpq_mpoly_evaluate_all_fmpq(vh, P, pt, ctx));
+        assert_true(fmpq_sgn(vl) * fmpq_sgn(vh) < 0);   /* a root in [lo, hi] */
+        arb_init(b);
+        arb_set_fmpq(out, lo, prec);
+        arb_set_fmpq(b, hi, prec);
+        arb_union(out, out, b, prec);
+        arb_clear(b);
+        fmpq_mpoly_clear(P, ctx);
+        fmpq_mpoly_ctx_clear(ctx);
+    }
+    fmpq_clear(q); fmpq_clear(lo); fmpq_clear(hi); fmpq_clear(vl); fmpq_clear(vh);
+}
+
+/* Every decided cell over an irrational re(z) (the sections the signs and
+ * the relative fields now decide; before they were undecided lines) against
+ * Arb root balls of p itself at the cell's sample, p = sum_k sum_j
+ * cf[k][j] z^j lambda^k written out by hand from the method (independent
+ * of recstab's lowering): stable needs every root ball strictly inside;
+ * marginal a root ball meeting the circle and none strictly outside; not
+ * stable a root ball not strictly inside.  Returns the number checked. */
+static slong sections_check(const char *method, slong n, slong zd, const slong *cf, slong min_checked)
+{
+    char text[400];
+    int outcome, code;
+    json_t *doc;
+    const json_t *o, *cells;
+    size_t i;
+    slong prec = 256, checked = 0, k, j;
+    acb_t z, c, zp;
+    acb_poly_t p;
+    acb_ptr rt = _acb_vec_init(n);
+    arb_t m;
+    snprintf(text, sizeof text, "param z complex\nsubsystem S state y\n  y' = z*y\nintegrate S %s 1\n"
+             "analyse region re(z), im(z)\n", method);
+    doc = tu_run_text(text, NULL, &outcome, &code);
+    assert_int_equal(code, RS_OK);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    o = json_array_get(json_object_get(doc, "results"), 0);
+    assert_true(json_is_true(json_object_get(o, "formula_complete")));
+    assert_int_equal(json_integer_value(json_object_get(o, "undecided_lines")), 0);
+    cells = json_object_get(o, "cells");
+    acb_init(z); acb_init(c); acb_init(zp); arb_init(m);
+    acb_poly_init(p);
+    for (i = 0; i < json_array_size(cells); i++) {
+        const json_t *e = json_array_get(cells, i), *xr = json_object_get(e, "re(z)"), *yi = json_object_get(e, "im(z)");
+        const char *st = json_string_value(json_object_get(e, "status"));
+        slong in = 0, out = 0, on = 0, nr;
+        if (!json_is_object(xr) || yi == NULL || json_is_null(yi) || strcmp(st, "outside") == 0) continue;
+        assert_string_not_equal(st, "undecided");
+        coord_ball(acb_realref(z), xr, "re(z)", prec);
+        coord_ball(acb_imagref(z), yi, "im(z)", prec);
+        acb_poly_zero(p);
+        for (k = 0; k <= n; k++) {
+            acb_zero(c);
+            acb_one(zp);
+            for (j = 0; j <= zd; j++) {
+                acb_addmul_si(c, zp, cf[k * (zd + 1) + j], prec);
+                acb_mul(zp, zp, z, prec);
+            }
+            acb_poly_set_coeff_acb(p, k, c);
+        }
+        nr = acb_poly_find_roots(rt, p, NULL, 0, prec);
+        assert_int_equal(nr, n);
+        for (k = 0; k < n; k++) {
+            acb_abs(m, rt + k, prec);
+            arb_sub_si(m, m, 1, prec);
+            if (arb_is_negative(m)) in++;
+            else if (arb_is_positive(m)) out++;
+            else on++;
+        }
+        if (strcmp(st, "stable") == 0) assert_int_equal(in, n);
+        else if (strcmp(st, "marginal") == 0) { assert_int_equal(out, 0); assert_true(on >= 1); }
+        else assert_true(in < n);
+        checked++;
+    }
+    assert_true(checked >= min_checked);
+    acb_clear(z); acb_clear(c); acb_clear(zp); arb_clear(m);
+    acb_poly_clear(p);
+    _acb_vec_clear(rt, n);
+    json_decref(doc);
+    return checked;
+}
+
+static void test_zregion_sections(void **state)
+{
+    /* RK4: p = 24 lambda - (24 + 24 z + 12 z^2 + 4 z^3 + z^4) (24 R(z), Hairer-
+     * Wanner IV.2); before: 34 undecided section cells, 0 now */
+    static const slong rk4[] = {-24, -24, -12, -4, -1, 24, 0, 0, 0, 0};
+    /* BDF3 (times 6): (11 - 6 z) lambda^3 - 18 lambda^2 + 9 lambda - 2; before: 8 */
+    static const slong bdf3[] = {-2, 0, 9, 0, -18, 0, 11, -6};
+    (void) state;
+    sections_check("rk rk4", 1, 4, rk4, 34);
+    sections_check("bdf 3", 3, 1, bdf3, 8);
 }
 
 int main(void)
@@ -1153,6 +1283,7 @@ int main(void)
         cmocka_unit_test(test_zregion),
         cmocka_unit_test(test_zregion_open_cells),
         cmocka_unit_test(test_zregion_conjugate_pair),
+        cmocka_unit_test(test_zregion_sections),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
