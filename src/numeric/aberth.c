@@ -7,6 +7,7 @@
 #include <complex.h>
 #include <float.h>
 #include <math.h>
+#include <flint/fmpz.h>
 #include "recstab/radius.h"
 
 /* Bini's starting points: for each edge (i, j) of the upper convex hull of

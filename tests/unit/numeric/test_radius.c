@@ -17,8 +17,10 @@
  */
 #include "testutil.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <flint/fmpz.h>
 #include <arb_fmpz_poly.h>
 #include "recstab/radius.h"
 #include "recstab/jury.h"
