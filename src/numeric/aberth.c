@@ -578,7 +578,9 @@ static slong _rs_sec_lossy(const double *a, const double complex *z, slong d)
             double dr = creal(z[i]) - creal(z[j]), di = cimag(z[i]) - cimag(z[j]);
             if (j == i) continue;
             m *= dr * dr + di * di;
-            if ((j & 15) == 15) { m = frexp(m, &e); ex += e; }
+            /* every 4 factors: one may be 2^128 (|z| up to 2^64 after
+             * _rs_radius_rescale), four stay inside double */
+            if ((j & 3) == 3) { m = frexp(m, &e); ex += e; }
         }
         m = frexp(m, &e);
         ex += e;
