@@ -578,8 +578,9 @@ static slong _rs_sec_lossy(const double *a, const double complex *z, slong d)
             double dr = creal(z[i]) - creal(z[j]), di = cimag(z[i]) - cimag(z[j]);
             if (j == i) continue;
             m *= dr * dr + di * di;
-            /* every 4 factors: one may be 2^128 (|z| up to 2^64 after
-             * _rs_radius_rescale), four stay inside double */
+            /* every 4 factors, so that roots up to about 2^60 apart stay
+             * inside double; beyond, an overflow only skips this pass (a
+             * heuristic trigger: the certification does not depend on it) */
             if ((j & 3) == 3) { m = frexp(m, &e); ex += e; }
         }
         m = frexp(m, &e);
