@@ -4,8 +4,10 @@
 #   sh bench/radius_peers.sh [BIN] [POLYS] [DIGITS]
 # POLYS: names understood by bench/radius_peers_gen.py (default: random,
 # clustered and 2x^N - 1 at degree 12, 50, 100, 200, 500; Wilkinson-type at
-# 12, 20, 40, 50, 100 -- from degree 200 its `char` line (coefficients of
-# 1500+ bits) exceeds the case parser's 64 KiB statement limit);
+# 12, 20, 40, 50, 100; wilkinson-200 runs too since the 1 MiB statement
+# limit, but MPSolve's -p then mostly parses: 2.3 s against 0.7 s from a
+# file, bench/README.md "seventh step"; from degree ~300 the expression
+# exceeds the 128 KiB argument limit of -p);
 # DIGITS default "30 128".  Commands timed:
 #   BIN --analyse 'radius digits=D' NAME.case
 #   STATIC_BIN (the same; default build/recstab-static when it exists, `make

@@ -195,6 +195,17 @@ int rs_radius_aberth_d(double *z, const double *a, slong d, slong maxiter);
  * len/2 bits lost).  src/numeric/aberth.c. */
 void rs_radius_horner2(acb_t y, acb_t dy, acb_srcptr a, slong len, const acb_t x, slong w);
 
+/* Better seeds z (2d doubles, in place) for f (deg d >= 2, a = f in double
+ * as above) when the double ones are poor (their estimated evaluation loss
+ * above 24 bits: Wilkinson-type): Aberth in double on the secular equation
+ * sum a_j / (x - b_j) = 1 with nodes b = the current approximations, whose
+ * a_j take p(b_j) in Arb to 56 correct bits, renoded at most rounds times
+ * (MPSolve's secsolve).  Uncertified.  Returns the rounds used (rounds + 1:
+ * not settled to double, z still the last nodes), 0 when the seeds were
+ * already good (z unchanged), -1 on failure (z unchanged).
+ * src/numeric/aberth.c. */
+int rs_radius_aberth_secular(double *z, const fmpz_poly_t f, const double *a, slong rounds);
+
 int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_poly_t f,
                              const double *a, const double *z0, slong prec, slong coarse);
 

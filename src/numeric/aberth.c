@@ -7,6 +7,7 @@
 #include <complex.h>
 #include <float.h>
 #include <math.h>
+#include <flint/fmpz.h>
 #include "recstab/radius.h"
 
 /* Bini's starting points: for each edge (i, j) of the upper convex hull of
@@ -417,7 +418,7 @@ int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_pol
 {
     _rs_ab_struct s;
     slong d = fmpz_poly_degree(f), i, j, nref = 0;
-    double lad;
+    double lad, off;
     char *cand = NULL, *fresh = NULL;
     arb_t m;
     arf_t M, lb;
@@ -448,7 +449,15 @@ int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_pol
     arf_init(M);
     arf_init(lb);
     coarse = (coarse > 0 && coarse < prec) ? coarse : prec;
-    lad = log2(fabs(a[d]));
+    /* a is f scaled by a power of 2 (_rs_radius_to_double: coefficients
+     * beyond 2^1000); the loss compares S with p' of f itself, so S is
+     * taken back to f's scale (Wilkinson-type degree 200: 530 bits) */
+    {
+        slong e;
+        double mc = fmpz_get_d_2exp(&e, f->coeffs + d);
+        off = (double) e + log2(fabs(mc)) - log2(fabs(a[d]));
+    }
+    lad = log2(fabs(a[d])) + off;
     for (i = 0; i < d; i++) {
         s.zd[i] = z0[2 * i] + I * z0[2 * i + 1];
         if (!isfinite(creal(s.zd[i])) || !isfinite(cimag(s.zd[i])) || s.zd[i] == 0)
@@ -457,7 +466,7 @@ int rs_radius_aberth_certify(acb_ptr E, slong *wp, slong *nouter, const fmpz_pol
     }
     for (i = 0; i < d; i++) {
         double lp = lad;
-        s.logS[i] = _rs_ab_log2sum(a, d, s.zd[i]);
+        s.logS[i] = _rs_ab_log2sum(a, d, s.zd[i]) + off;
         /* |p'| at a root = |a_d| prod |z_i - z_j|: the starting loss */
         for (j = 0; j < d; j++)
             if (j != i) lp += log2(cabs(s.zd[i] - s.zd[j]) + 1e-300);
@@ -525,4 +534,234 @@ cleanup:
     arf_clear(M);
     arf_clear(lb);
     return ok;
+}
+
+/* ------------------------------------------------------------------ */
+/* Seeds for ill-conditioned polynomials: Aberth on the secular equation
+ * (MPSolve's secsolve, Bini-Robol 2014, "Solving secular and polynomial
+ * equations: a multiprecision algorithm", J. Comput. Appl. Math. 272).
+ *
+ * Double Aberth on the monomial coefficients gives backward-stable roots
+ * only: for Wilkinson-type prod ((d+1) x - k) they have no correct digit
+ * (the roots lose 300-900 bits), and Aberth on Arb midpoints from them (or
+ * from Bini's circle) needs about d sweeps at that precision: the roots
+ * peel off the segment one by one (degree 200: 300 sweeps, then the
+ * fallback: 250 s).  With nodes b_1..b_d (the current approximations),
+ *   p(x) = -lc g(x) S(x),  g = prod (x - b_j),  S = sum a_j / (x - b_j) - 1,
+ *   a_j = -p(b_j) / (lc prod_{k != j} (b_j - b_k)),
+ * and the zeros of S are well conditioned once the nodes are near the
+ * roots: only the a_j need p in high precision (one evaluation per node,
+ * to 56 correct bits), the sweeps on S run in double, and each new set of
+ * nodes (the sweeps' result) gains about 50 bits.  The result is used as
+ * seeds only: rs_radius_aberth_certify certifies. */
+
+static double complex _rs_sec_inv(double complex t)
+{
+    double r = creal(t), i = cimag(t), n = r * r + i * i;
+    if (n > 1e-300 && n < 1e300)
+        return (r - I * i) / n;
+    return 1.0 / t;
+}
+
+/* how many roots lose more than 24 bits when p is evaluated in double
+ * near the seeds: log2 (sum |a_k| |z|^k / (|z| |p'(z)|)) with |p'(z_i)| =
+ * |a_d| prod |z_i - z_j| (the product of squares renormalised by frexp,
+ * one log2 per root) */
+static slong _rs_sec_lossy(const double *a, const double complex *z, slong d)
+{
+    double lad = log2(fabs(a[d]));
+    slong i, j, n = 0;
+    for (i = 0; i < d; i++) {
+        double m = 1.0, lp;
+        int e, ex = 0;
+        for (j = 0; j < d; j++) {
+            double dr = creal(z[i]) - creal(z[j]), di = cimag(z[i]) - cimag(z[j]);
+            if (j == i) continue;
+            m *= dr * dr + di * di;
+            /* every 4 factors, so that roots up to about 2^60 apart stay
+             * inside double; beyond, an overflow only skips this pass (a
+             * heuristic trigger: the certification does not depend on it) */
+            if ((j & 3) == 3) { m = frexp(m, &e); ex += e; }
+        }
+        m = frexp(m, &e);
+        ex += e;
+        lp = lad + 0.5 * (log2(m) + (double) ex);
+        n += _rs_ab_log2sum(a, d, z[i]) - lp - log2(cabs(z[i]) + 1e-300) > 24.0;
+    }
+    return n;
+}
+
+/* a_i of the secular equation at the nodes b (exact doubles); w[i] is the
+ * working precision of p(b_i), raised until 56 bits of it are right.
+ * 0 when some a_i leaves the double range. */
+static int _rs_sec_coeffs(double complex *ac, const acb_poly_t P, const double complex *b,
+                          slong d, slong *w, slong wcap)
+{
+    acb_t y, dy, q, t;
+    slong i, j;
+    int ok = 1;
+    acb_init(y);
+    acb_init(dy);
+    acb_init(q);
+    acb_init(t);
+    for (i = 0; i < d && ok; i++) {
+        acb_set_d_d(t, creal(b[i]), cimag(b[i]));
+        for (;;) {
+            slong acc;
+            rs_radius_horner2(y, dy, P->coeffs, d + 1, t, w[i]);
+            acc = acb_rel_accuracy_bits(y);
+            if ((acb_is_finite(y) && !acb_contains_zero(y) && acc >= 56) || w[i] >= wcap)
+                break;
+            if (acb_is_finite(y) && !acb_contains_zero(y) && acc > -w[i])
+                w[i] = FLINT_MIN(wcap, w[i] + (56 - acc) + 16);
+            else
+                w[i] = FLINT_MIN(wcap, 2 * w[i]);
+        }
+        if (acb_is_finite(y) && acb_contains_zero(y))
+            acb_zero(y);   /* b_i is a root as far as wcap tells: a_i = 0 */
+        /* lc prod_{j != i} (b_i - b_j): exact differences of doubles */
+        acb_set(q, P->coeffs + d);
+        for (j = 0; j < d; j++) {
+            if (j == i) continue;
+            acb_set_d_d(dy, creal(b[i]), cimag(b[i]));
+            acb_set_d_d(t, creal(b[j]), cimag(b[j]));
+            acb_sub(t, dy, t, 64);
+            acb_mul(q, q, t, 64);
+            /* a seed needs no radius: rectangular balls would lose about
+             * half a bit per product (d/2 over all) */
+            acb_get_mid(q, q);
+        }
+        acb_get_mid(y, y);
+        acb_div(y, y, q, 64);
+        acb_neg(y, y);
+        if (!acb_is_finite(y) || acb_contains_zero(q)) { ok = 0; break; }
+        if (arf_cmpabs_2exp_si(arb_midref(acb_realref(y)), 1000) > 0 ||
+            arf_cmpabs_2exp_si(arb_midref(acb_imagref(y)), 1000) > 0) { ok = 0; break; }
+        ac[i] = _rs_ab_get_d(y);
+    }
+    acb_clear(y);
+    acb_clear(dy);
+    acb_clear(q);
+    acb_clear(t);
+    return ok;
+}
+
+int rs_radius_aberth_secular(double *zr, const fmpz_poly_t f, const double *a, slong rounds)
+{
+    slong d = fmpz_poly_degree(f), i, j, k, r, it, bits = FLINT_ABS(fmpz_poly_max_bits(f));
+    slong maxsweep = 32, wcap = 16 * (bits + d) + 1024;
+    double complex *b, *x, *ac, *cprev;
+    slong *w;
+    char *done;
+    acb_poly_t P;
+    int res = -1, restarted = 0;
+
+    if (d < 2)
+        return -1;
+    b = flint_malloc(d * sizeof(double complex));
+    x = flint_malloc(d * sizeof(double complex));
+    ac = flint_malloc(d * sizeof(double complex));
+    cprev = flint_malloc(d * sizeof(double complex));
+    w = flint_malloc(d * sizeof(slong));
+    done = flint_malloc(d);
+    acb_poly_init(P);
+    for (i = 0; i < d; i++) {
+        b[i] = zr[2 * i] + I * zr[2 * i + 1];
+        if (!isfinite(creal(b[i])) || !isfinite(cimag(b[i])))
+            goto cleanup;
+        w[i] = 128;
+    }
+    /* seeds as good as double for most roots (a cluster of a few is left
+     * to the per-root precision of rs_radius_aberth_certify): nothing to
+     * gain (clustered degree 500: 0.28 s, 0.51 with this pass) */
+    if (_rs_sec_lossy(a, b, d) <= d / 8) {
+        res = 0;
+        goto cleanup;
+    }
+    acb_poly_set_fmpz_poly(P, f, bits + 8);
+    for (r = 1; r <= rounds; r++) {
+        double moved = 0.0;
+        if (rs_budget_exceeded())
+            goto cleanup;
+        for (i = 0; i < d; i++)
+            for (j = i + 1; j < d; j++)
+                if (b[i] == b[j])
+                    b[j] += ldexp(cabs(b[j]) + 1e-300, -30) * I;   /* distinct nodes */
+        if (!_rs_sec_coeffs(ac, P, b, d, w, wcap)) {
+            /* far from the roots p(b_i) dwarfs lc prod (b_i - b_j) (a_i
+             * beyond double): once, restart from Bini's circles, where
+             * p(b_i) / lc is about the nodes' own product */
+            if (r > 1)
+                break;   /* the last nodes are still the best seeds */
+            if (restarted)
+                goto cleanup;
+            restarted = 1;
+            _rs_aberth_start(b, a, d);
+            if (!_rs_sec_coeffs(ac, P, b, d, w, wcap))
+                goto cleanup;
+        }
+        for (i = 0; i < d; i++) {
+            x[i] = b[i];
+            cprev[i] = 0;
+            done[i] = 0;
+        }
+        for (it = 0; it < maxsweep; it++) {
+            slong left = 0;
+            for (k = 0; k < d; k++) {
+                double complex A = 0, s1 = 0, s2 = 0, B = 0, h, T, dT, L, N, c, u;
+                if (done[k]) continue;
+                for (j = 0; j < d; j++) {
+                    if (j == k) continue;
+                    u = _rs_sec_inv(x[k] - b[j]);
+                    A += u;
+                    s1 += ac[j] * u;
+                    s2 += ac[j] * u * u;
+                    B += _rs_sec_inv(x[k] - x[j]);
+                }
+                h = x[k] - b[k];
+                T = ac[k] + h * (s1 - 1.0);
+                if (T == 0) { done[k] = 1; continue; }
+                dT = (s1 - 1.0) - h * s2;
+                L = A + dT / T;   /* p'/p at x_k */
+                N = 1.0 / L;
+                c = N / (1.0 - N * B);
+                if (!isfinite(creal(c)) || !isfinite(cimag(c))) { done[k] = 1; continue; }
+                x[k] -= c;
+                /* converged to double, or stalled at the noise of S */
+                if (cabs(c) <= ldexp(cabs(x[k]), -48) ||
+                    (cprev[k] != 0 && cabs(c) > 0.5 * cabs(cprev[k]) &&
+                     cabs(c) < ldexp(cabs(x[k]), -16)))
+                    done[k] = 1;
+                else
+                    left++;
+                cprev[k] = c;
+            }
+            if (left == 0) break;
+        }
+        for (i = 0; i < d; i++) {
+            if (!isfinite(creal(x[i])) || !isfinite(cimag(x[i])))
+                goto cleanup;
+            moved = FLINT_MAX(moved, cabs(x[i] - b[i]) / (cabs(b[i]) + 1e-300));
+            b[i] = x[i];
+        }
+        if (moved <= ldexp(1.0, -24)) {
+            res = (int) r;
+            break;
+        }
+    }
+    for (i = 0; i < d; i++) {
+        zr[2 * i] = creal(b[i]);
+        zr[2 * i + 1] = cimag(b[i]);
+    }
+    if (res < 0)
+        res = (int) rounds + 1;   /* not settled: the nodes are still better seeds */
+cleanup:
+    flint_free(b);
+    flint_free(x);
+    flint_free(ac);
+    flint_free(cprev);
+    flint_free(w);
+    flint_free(done);
+    acb_poly_clear(P);
+    return res;
 }

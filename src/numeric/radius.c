@@ -486,6 +486,12 @@ static int _rs_factor_roots_aberth(acb_ptr E, const fmpz_poly_t f0, slong *wp, s
         ((d > 64 && rs_radius_aberth_d(z, a, d, 100) >= 0) ||
          _rs_radius_gsl_solve(z, a, d) == GSL_SUCCESS ||
          rs_radius_aberth_d(z, a, d, 200) >= 0) &&
+        /* ill-conditioned roots (Wilkinson-type, whose double seeds have no
+         * correct digit): the secular equation's seeds; otherwise Aberth on
+         * Arb needs about d sweeps at high precision (degree 200: 300
+         * sweeps, then the fallback, 250 s).  Its result is only a seed:
+         * on failure z stays as it was. */
+        (d <= 64 || rs_radius_aberth_secular(z, f, a, 64) >= -1) &&
         rs_radius_aberth_certify(E, &w, &no, f, a, z, *wp,
                                  (d > RS_RADIUS_HIGH_DEGREE && *wp > 96) ? 64 : 0)) {
         for (i = 0; i < d && sc != 0; i++)

@@ -17,8 +17,10 @@
  */
 #include "testutil.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <flint/fmpz.h>
 #include <arb_fmpz_poly.h>
 #include "recstab/radius.h"
 #include "recstab/jury.h"
@@ -1060,6 +1062,93 @@ static void test_aberth_certify_hard(void **state)
     fmpz_poly_clear(q);
 }
 
+static int cmp_double(const void *x, const void *y)
+{
+    double u = *(const double *) x, v = *(const double *) y;
+    return (u > v) - (u < v);
+}
+
+/* Wilkinson-type prod_{k=1..160} (161 x - k): roots k/161 (closed form),
+ * rho = 160/161.  Its coefficients reach 2^1173, beyond double: a is f
+ * scaled by 2^-(maxbits - 1000) as _rs_radius_to_double does.  The double
+ * Aberth seeds have no correct digit (the roots lose 300+ bits); the
+ * secular-equation pass must bring every seed within 2^-40 of its own
+ * k/161 (sorted real parts against k = 1..160, imaginary parts below
+ * 2^-40), and the whole radius at 30 and 128 digits must contain 160/161
+ * (before the pass this degree took minutes: Aberth on Arb from the double
+ * seeds ran out of sweeps and acb_poly_find_roots took over).  A
+ * well-conditioned polynomial (2 x^80 - 1) is left alone: 0, seeds
+ * unchanged. */
+static void test_wilkinson_secular(void **state)
+{
+    const slong d = 160;
+    fmpz_poly_t p, q;
+    double *a = flint_malloc((d + 1) * sizeof(double));
+    double *z = flint_malloc(2 * d * sizeof(double));
+    double *z0 = flint_malloc(2 * d * sizeof(double));
+    double *re = flint_malloc(d * sizeof(double));
+    slong k, e, shift, dig[2] = { 30, 128 };
+    rs_radius_t r;
+    rs_error_t err;
+    arb_t truth;
+    int rounds;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(q);
+    arb_init(truth);
+    rs_radius_init(r);
+    fmpz_poly_one(p);
+    for (k = 1; k <= d; k++) {
+        fmpz_poly_zero(q);
+        fmpz_poly_set_coeff_si(q, 0, -k);
+        fmpz_poly_set_coeff_si(q, 1, d + 1);
+        fmpz_poly_mul(p, p, q);
+    }
+    shift = FLINT_ABS(fmpz_poly_max_bits(p)) - 1000;
+    assert_true(shift > 0);
+    for (k = 0; k <= d; k++) {
+        double m = fmpz_get_d_2exp(&e, p->coeffs + k);
+        a[k] = ldexp(m, (int) (e - shift));
+    }
+    rs_radius_aberth_d(z, a, d, 100);
+    rounds = rs_radius_aberth_secular(z, p, a, 64);
+    assert_true(rounds >= 1 && rounds <= 64);
+    for (k = 0; k < d; k++) {
+        re[k] = z[2 * k];
+        assert_true(fabs(z[2 * k + 1]) < ldexp(1.0, -40));
+    }
+    qsort(re, (size_t) d, sizeof(double), cmp_double);
+    for (k = 0; k < d; k++)
+        assert_true(fabs(re[k] - (double) (k + 1) / (double) (d + 1)) < ldexp(1.0, -40));
+    for (k = 0; k < 2; k++) {
+        assert_int_equal(rs_radius_fmpz_poly(r, p, dig[k], 0, err), RS_OK);
+        arb_set_ui(truth, (ulong) d);
+        arb_div_ui(truth, truth, (ulong) d + 1, truth_prec(dig[k]));
+        assert_true(arb_contains(r->rho, truth));
+        assert_true(arb_rel_accuracy_bits(r->rho) >= (slong) (dig[k] * 3.32));
+    }
+    /* 2 x^80 - 1: seeds already good, nothing done */
+    for (k = 0; k <= 80; k++)
+        a[k] = 0.0;
+    a[0] = -1.0;
+    a[80] = 2.0;
+    fmpz_poly_zero(q);
+    fmpz_poly_set_coeff_si(q, 0, -1);
+    fmpz_poly_set_coeff_si(q, 80, 2);
+    rs_radius_aberth_d(z, a, 80, 100);
+    memcpy(z0, z, 160 * sizeof(double));
+    assert_int_equal(rs_radius_aberth_secular(z, q, a, 64), 0);
+    assert_memory_equal(z, z0, 160 * sizeof(double));
+    rs_radius_clear(r);
+    arb_clear(truth);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(q);
+    flint_free(a);
+    flint_free(z);
+    flint_free(z0);
+    flint_free(re);
+}
+
 /* rs_radius_horner2 against the exact value: p = (x - 1)^3 (x^2 + 1) at
  * x = 3/4 + i/8 (exact dyadic), p and p' from the factored form in exact
  * rational arithmetic (Arb at 2000 bits: exact here); the balls at 64 bits
@@ -1134,6 +1223,7 @@ int main(void)
         cmocka_unit_test(test_random_degree100),
         cmocka_unit_test(test_count_balls),
         cmocka_unit_test(test_aberth_certify_hard),
+        cmocka_unit_test(test_wilkinson_secular),
         cmocka_unit_test(test_horner2),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
