@@ -956,6 +956,8 @@ typedef struct {
     slong nmemo;
     struct point_crit_memo *pcm; /* for all: forall_point_crit's critical values per point */
     slong npcm;
+    alg_t *pcrit;               /* for all, full projection: the per-condition one's critical values */
+    slong npcrit;
 } region_t;
 
 /* The critical values of t with the quantified parameters at one point (a
@@ -1780,6 +1782,59 @@ static int forall_unsettled_early(int *unsettled, region_t *rg)
     return r;
 }
 
+/* 1 when the critical value a is one of the per-condition projection's */
+static int forall_is_pcrit(region_t *rg, alg_t *a)
+{
+    slong k;
+    for (k = 0; k < rg->npcrit; k++)
+        if (alg_cmp(rg->pcrit + k, a) == 0) return 1;
+    return 0;
+}
+
+/* Full projection, piece i (open) decided stable at its sample s1: the
+ * pieces after it up to the last open piece j before the next critical
+ * value of the per-condition projection (the discriminant and resultants
+ * of the full projection put critical values inside stable intervals, where
+ * nothing changes for stability) are stable when one certificate proves
+ * stable for every t in [s1, sj] (sj: piece j's sample) and every admissible
+ * value of the others; piece j is then stable at sj, hence on all of it (a
+ * cell of the full projection).  One proof instead of one per piece; no
+ * proof, nothing decided here. */
+static int forall_merge_stable(region_t *rg, slong i)
+{
+    piece_t *pc = rg->pieces + i;
+    slong j = i, k;
+    fmpq_t lo, hi, x;
+    json_t *ev = NULL;
+    int proved = 0, r = RS_OK;
+    const char *a;
+    while (j + 2 < rg->npieces && rg->pieces[j + 1].is_point && !rg->pieces[j + 1].decided
+           && !rg->pieces[j + 2].decided && !forall_is_pcrit(rg, rg->pieces[j + 1].lo))
+        j += 2;
+    if (j == i || rg->pieces[j].lo == NULL || rg->pieces[j].hi == NULL) return RS_OK;
+    a = json_string_value(json_object_get(pc->ev, "sample"));
+    fmpq_init(lo); fmpq_init(hi); fmpq_init(x);
+    if (a != NULL && fmpq_set_str(lo, a, 10) == 0) {
+        fmpq_canonicalise(lo);
+        rational_between(hi, rg->pieces[j].lo, rg->pieces[j].hi);
+        r = rs_budget_check(rg->run->err, "region ... for all (deciding its cells)");
+        if (r == RS_OK) r = rs_an_forall_prove(&proved, &ev, rg->run, rg->tv, lo, hi, 0);
+    }
+    for (k = i + 1; proved && r == RS_OK && k <= j; k++) {
+        piece_t *q = rg->pieces + k;
+        q->decided = 1;
+        q->status = RS_STATUS_STABLE;
+        q->ev = json_deep_copy(ev);
+        json_object_set_new(q->ev, "proved_on", json_pack("[s,o]", a, rs_json_fmpq(hi)));
+        if (q->is_point && q->lo->rational) fmpq_set(x, q->lo->q);
+        else if (!q->is_point) rational_between(x, q->lo, q->hi);
+        if (!q->is_point || q->lo->rational) json_object_set_new(q->ev, "sample", rs_json_fmpq(x));
+    }
+    json_decref(ev);
+    fmpq_clear(lo); fmpq_clear(hi); fmpq_clear(x);
+    return r;
+}
+
 static int region_forall_decide(region_t *rg)
 {
     slong i;
@@ -1787,6 +1842,7 @@ static int region_forall_decide(region_t *rg)
     for (i = 0; i < rg->npieces && r == RS_OK; i++) {
         piece_t *pc = rg->pieces + i;
         fmpq_t x;
+        if (pc->decided) continue;     /* forall_merge_stable */
         if (pc->is_point && !pc->lo->rational) { pc->decided = 0; continue; }
         fmpq_init(x);
         if (pc->is_point) fmpq_set(x, pc->lo->q);
@@ -1814,6 +1870,8 @@ static int region_forall_decide(region_t *rg)
         }
         if (pc->ev != NULL) json_object_set_new(pc->ev, "sample", rs_json_fmpq(x));
         fmpq_clear(x);
+        if (r == RS_OK && rg->pcrit != NULL && !pc->is_point && pc->decided && pc->status == RS_STATUS_STABLE)
+            r = forall_merge_stable(rg, i);
     }
     /* no verdict in Q[t]/(minpoly) at irrational values of high degree
      * (spurious ones of the projection mostly): its arithmetic grows fast;
@@ -1833,6 +1891,7 @@ static int region_forall_decide(region_t *rg)
 static int region_forall_run(region_t *rg)
 {
     int full, r = RS_OK;
+    slong k;
     for (full = 0; full < 2 && r == RS_OK; full++) {
         slong i;
         int settled = 1;
@@ -1859,12 +1918,15 @@ static int region_forall_run(region_t *rg)
             rg->projection = full ? "full" : "per-condition";
             break;
         }
-        for (i = 0; i < rg->ncrit; i++) alg_clear(rg->crit + i);
-        free(rg->crit);
+        rg->pcrit = rg->crit;          /* kept for forall_merge_stable */
+        rg->npcrit = rg->ncrit;
         for (i = 0; i < rg->npieces; i++) json_decref(rg->pieces[i].ev);
         free(rg->pieces);
         rg->crit = NULL; rg->ncrit = 0; rg->pieces = NULL; rg->npieces = 0;
     }
+    for (k = 0; k < rg->npcrit; k++) alg_clear(rg->pcrit + k);
+    free(rg->pcrit);
+    rg->pcrit = NULL; rg->npcrit = 0;
     return r;
 }
 

@@ -159,6 +159,42 @@ static void test_newmark(void **state)
     json_decref(doc);
 }
 
+/* HHT-alpha with alpha left free (bench/bench_qepcad.sh's case, issue 13):
+ * for all w > 0, unstable below -1/2, stable on [-1/2, 0), marginal at 0,
+ * unstable above.  Derived apart from recstab: as w -> inf, p / w^2 ->
+ * ((1 + alpha) lambda - alpha) (...), a root alpha / (1 + alpha), outside the
+ * circle iff alpha < -1/2 (the end -1/2); alpha = 0 is the trapezoidal rule,
+ * |lambda| = 1 (cases/textbook/hht-alpha.case); HHT 1977: stable on
+ * [-1/3, 0); the rest numerically (mpmath.polyroots, w = 10^(k/20), k = -60..80:
+ * max |lambda| = 1.0408 at alpha = -0.51, <= 1 + 2e-14 at -0.49, -0.45, -0.4,
+ * -1/3, -0.2, -0.1, -0.01; 1.0202 at 0.01, 1.2222 at 0.1).  The full
+ * projection has spurious critical values inside (-1/2, 0) (-1/3 and roots
+ * of 4 a^2 + 6 a + 1 and 9 a^2 + 12 a + 1): their cells share one
+ * certificate on an interval (proved_on), every one re-checked. */
+static void test_hht_free(void **state)
+{
+    static const struct tu_iv want[] = {{"inf", 0, "-1/2", 0, "unstable"}, {"-1/2", 1, "0", 0, "stable"},
+                                        {"0", 1, "0", 1, "marginal"}, {"0", 0, "inf", 0, "unstable"}};
+    const json_t *ev, *e;
+    size_t k, shared = 0;
+    int outcome;
+    json_t *doc = run_ok("param alpha w\nassume w > 0\nunknown d V A\nlet beta = (1 - alpha)^2/4\n"
+                         "let gamma = 1/2 - alpha\n"
+                         "eq A[n+1] + (1 + alpha)*w^2*d[n+1] - alpha*w^2*d[n] = 0\n"
+                         "eq d[n+1] = d[n] + V[n] + (1/2 - beta)*A[n] + beta*A[n+1]\n"
+                         "eq V[n+1] = V[n] + (1 - gamma)*A[n] + gamma*A[n+1]\n"
+                         "analyse region alpha for all\n", &outcome);
+    (void) state;
+    check_region(tu_result(doc, 0), want, 4, "hht-alpha, alpha free");
+    ev = json_object_get(json_array_get(json_object_get(tu_result(doc, 0), "intervals"), 1), "evidence");
+    /* open cells decided by the shared certificate (one proof per cell before) */
+    json_array_foreach(ev, k, e)
+        shared += json_object_get(e, "proved_on") != NULL && strcmp(tu_str(e, "cell"), "interval") == 0;
+    assert_true(shared >= 2);
+    assert_int_equal(outcome & RS_OUTCOME_INCONSISTENT, 0);
+    json_decref(doc);
+}
+
 static void test_park(void **state)
 {
     static const struct tu_iv want[] = {{"0", 1, "3/2", 1, "stable"}, {"3/2", 0, "inf", 0, "unstable"}};
@@ -476,6 +512,7 @@ int main(void)
         cmocka_unit_test(test_central_difference),
         cmocka_unit_test(test_newmark),
         cmocka_unit_test(test_park),
+        cmocka_unit_test(test_hht_free),
         cmocka_unit_test(test_park_all),
         cmocka_unit_test(test_jordan),
         cmocka_unit_test(test_limit_ends),
