@@ -84,35 +84,20 @@ static int cx_ratio(fmpq_t cr, fmpq_t ci, const fmpq_mpoly_t er, const fmpq_mpol
 static void cx_subst(fmpq_mpoly_t pr, fmpq_mpoly_t pi, const rs_run_t *run, const rs_scheme_struct *s)
 {
     fmpq_mpoly_t nr, ni;
-    fmpq_t c, fr, fi, t;
-    ulong *ex = flint_malloc((size_t) s->nvars * sizeof(ulong));
-    slong i, v, k, j;
+    fmpq_t c;
+    ulong *ue = flint_malloc((size_t) s->nvars * sizeof(ulong));
+    slong *ex = flint_malloc((size_t) s->nvars * sizeof(slong));
+    slong i, v;
     int part;
     fmpq_mpoly_init(nr, s->ctx); fmpq_mpoly_init(ni, s->ctx);
-    fmpq_init(c); fmpq_init(fr); fmpq_init(fi); fmpq_init(t);
+    fmpq_init(c);
     for (part = 0; part < 2; part++) {
         const fmpq_mpoly_struct *src = part ? pi : pr;
         for (i = 0; i < fmpq_mpoly_length(src, s->ctx); i++) {
             fmpq_mpoly_get_term_coeff_fmpq(c, src, i, s->ctx);
-            fmpq_mpoly_get_term_exp_ui(ex, src, i, s->ctx);
-            /* c i^part */
-            fmpq_set(part ? fi : fr, c);
-            fmpq_zero(part ? fr : fi);
-            for (v = 0; v < s->nvars && v < run->c->nparams; v++)
-                for (k = 0; k < run->c->ncsets; k++) {
-                    if (v == s->lambda_var || strcmp(run->c->csets[k].name, run->c->params[v].name) != 0) continue;
-                    for (j = 0; j < (slong) ex[v]; j++) {   /* (fr + i fi)(a + i b) */
-                        const fmpq *a = run->c->csets[k].re, *b = run->c->csets[k].im;
-                        fmpq_mul(t, fr, a);
-                        fmpq_submul(t, fi, b);
-                        fmpq_mul(fi, fi, a);
-                        fmpq_addmul(fi, fr, b);
-                        fmpq_swap(fr, t);
-                    }
-                    ex[v] = 0;
-                }
-            if (!fmpq_is_zero(fr)) fmpq_mpoly_push_term_fmpq_ui(nr, fr, ex, s->ctx);
-            if (!fmpq_is_zero(fi)) fmpq_mpoly_push_term_fmpq_ui(ni, fi, ex, s->ctx);
+            fmpq_mpoly_get_term_exp_ui(ue, src, i, s->ctx);
+            for (v = 0; v < s->nvars; v++) ex[v] = (slong) ue[v];
+            rs_cx_add_term(nr, ni, c, part, ex, run, s);   /* c i^part */
         }
     }
     fmpq_mpoly_sort_terms(nr, s->ctx); fmpq_mpoly_combine_like_terms(nr, s->ctx);
@@ -120,8 +105,8 @@ static void cx_subst(fmpq_mpoly_t pr, fmpq_mpoly_t pi, const rs_run_t *run, cons
     fmpq_mpoly_swap(pr, nr, s->ctx);
     fmpq_mpoly_swap(pi, ni, s->ctx);
     fmpq_mpoly_clear(nr, s->ctx); fmpq_mpoly_clear(ni, s->ctx);
-    fmpq_clear(c); fmpq_clear(fr); fmpq_clear(fi); fmpq_clear(t);
-    flint_free(ex);
+    fmpq_clear(c);
+    flint_free(ue); flint_free(ex);
 }
 
 static void zpoly_to_q(fmpq_mpoly_t out, const fmpz_mpoly_t p, const rs_scheme_struct *s)

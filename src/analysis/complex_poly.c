@@ -27,8 +27,9 @@ static slong cset_of(const rs_run_t *run, slong var)
 }
 
 /* adds c i^ib times the term with exponents ex to qr + i qi, the complex
- * set values substituted (their exponents zeroed) */
-static void add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,
+ * set values substituted (their exponents zeroed); unsorted: the caller
+ * sorts and combines */
+void rs_cx_add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,
                      const rs_scheme_struct *s)
 {
     fmpq_t fr, fi, t;
@@ -78,7 +79,7 @@ slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, cons
             for (i = 0; i < len; i++) {
                 fmpq_mpoly_get_term_coeff_fmpq(c, m, i, s->ctx);
                 fmpq_mpoly_get_term_exp_si(ex, m, i, s->ctx);
-                add_term(qr, qi, c, part, ex, run, s);
+                rs_cx_add_term(qr, qi, c, part, ex, run, s);
             }
         }
     } else {
@@ -87,7 +88,7 @@ slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, cons
             fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), v->cp->p, i, s->zctx);
             fmpz_one(fmpq_denref(c));
             fmpz_mpoly_get_term_exp_si(ex, v->cp->p, i, s->zctx);
-            add_term(qr, qi, c, 0, ex, run, s);
+            rs_cx_add_term(qr, qi, c, 0, ex, run, s);
         }
     }
     fmpq_mpoly_sort_terms(qr, s->ctx); fmpq_mpoly_combine_like_terms(qr, s->ctx);

@@ -214,6 +214,10 @@ json_t *rs_json_p_at(const rs_variant_t *v, slong x);
  * read back from its block form), returns its degree in lambda (-1: zero);
  * rs_run_cx_eval: re or im at the point pt (every variable but lambda). */
 slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v);
+/* complex_poly.c: qr + i qi += c i^ib x^ex with the complex set values
+ * substituted (their exponents in ex zeroed; terms pushed unsorted) */
+void rs_cx_add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,
+                    const rs_scheme_struct *s);
 void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s);
 /* The verdict over Q(i) at vars[i] = vals[i] (i < nv, every real parameter
  * still free in v): complex Schur-Cohn and Bilharz (must agree), rc p's own
