@@ -703,10 +703,13 @@ int rs_scheme_eval_poly(fmpq_mpoly_t num, fmpq_mpoly_t den, const rs_scheme_t s,
     return r;
 }
 
-int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, const rs_scheme_t s,
-                           const rs_case_t c, const rs_expr_t *e, int allow_lambda, rs_error_t err)
+/* e evaluated over Q(i): in (s's variables, i), then reduced by i^2 = -1
+ * into (re + i im)/den over s's context; a division by a complex expression
+ * is an input error at (file, line, col) naming what was expected. */
+static int eval_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, const rs_scheme_struct *s,
+                   const rs_case_struct *c, const rs_expr_t *e, int allow_lambda, rs_error_struct *err,
+                   const char *what, const char *file, int line, int col)
 {
-    /* as build_char_complex: evaluate in (s's variables, i), then reduce by i^2 = -1 */
     rs_scheme_t s2;
     ev_t x;
     lin_t v;
@@ -726,39 +729,34 @@ int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, c
     lin_init(&v, 1, s2->ctx);
     r = eval(&v, e, &x);
     if (r == RS_OK && fmpq_mpoly_degree_si(v.den, iv, s2->ctx) > 0)
-        r = rs_error_set_at(err, RS_ERR_INPUT, rs_expr_file(e, c->path), e->line, e->col,
-                            "expected a polynomial without division by a complex expression "
-                            "(multiply through by its conjugate)%s", "");
+        r = rs_error_set_at(err, RS_ERR_INPUT, file, line, col, "expected %s without division by a complex "
+                            "expression (multiply through by its conjugate)", what);
     if (r == RS_OK) {
         ulong *ex2 = flint_malloc(s2->nvars * sizeof(ulong));
+        fmpq_mpoly_t term;
         fmpq_t q;
+        int part;
         fmpq_init(q);
+        fmpq_mpoly_init(term, s->ctx);
         fmpq_mpoly_zero(re, s->ctx);
         fmpq_mpoly_zero(im, s->ctx);
         fmpq_mpoly_zero(den, s->ctx);
-        n = fmpq_mpoly_length(v.c + 0, s2->ctx);
-        for (i = 0; i < n; i++) {
-            fmpq_mpoly_t term;
-            ulong ei;
-            fmpq_mpoly_get_term_coeff_fmpq(q, v.c + 0, i, s2->ctx);
-            fmpq_mpoly_get_term_exp_ui(ex2, v.c + 0, i, s2->ctx);
-            ei = ex2[iv];
-            if (ei & 2) fmpq_neg(q, q);
-            fmpq_mpoly_init(term, s->ctx);
-            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);   /* the first nvars exponents */
-            fmpq_mpoly_add((ei & 1) ? im : re, (ei & 1) ? im : re, term, s->ctx);
-            fmpq_mpoly_clear(term, s->ctx);
+        for (part = 0; part < 2; part++) {   /* the numerator, then the denominator (no i in it) */
+            const fmpq_mpoly_struct *src = part ? v.den : v.c + 0;
+            n = fmpq_mpoly_length(src, s2->ctx);
+            for (i = 0; i < n; i++) {
+                ulong ei;
+                fmpq_mpoly_get_term_coeff_fmpq(q, src, i, s2->ctx);
+                fmpq_mpoly_get_term_exp_ui(ex2, src, i, s2->ctx);
+                ei = ex2[iv];
+                if (ei & 2) fmpq_neg(q, q);
+                fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);   /* the first nvars exponents */
+                if (part) fmpq_mpoly_add(den, den, term, s->ctx);
+                else fmpq_mpoly_add((ei & 1) ? im : re, (ei & 1) ? im : re, term, s->ctx);
+                fmpq_mpoly_zero(term, s->ctx);
+            }
         }
-        n = fmpq_mpoly_length(v.den, s2->ctx);
-        for (i = 0; i < n; i++) {
-            fmpq_mpoly_t term;
-            fmpq_mpoly_get_term_coeff_fmpq(q, v.den, i, s2->ctx);
-            fmpq_mpoly_get_term_exp_ui(ex2, v.den, i, s2->ctx);
-            fmpq_mpoly_init(term, s->ctx);
-            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);
-            fmpq_mpoly_add(den, den, term, s->ctx);
-            fmpq_mpoly_clear(term, s->ctx);
-        }
+        fmpq_mpoly_clear(term, s->ctx);
         fmpq_clear(q);
         flint_free(ex2);
     }
@@ -766,6 +764,13 @@ int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, c
     flint_free(x.visiting);
     rs_scheme_clear(s2);
     return r;
+}
+
+int rs_scheme_eval_poly_cx(fmpq_mpoly_t re, fmpq_mpoly_t im, fmpq_mpoly_t den, const rs_scheme_t s,
+                           const rs_case_t c, const rs_expr_t *e, int allow_lambda, rs_error_t err)
+{
+    return eval_cx(re, im, den, s, c, e, allow_lambda, err, "a polynomial", rs_expr_file(e, c->path),
+                   e->line, e->col);
 }
 
 /* Divides out the factors 1 + t^2 of angle parameters (positive for every
@@ -817,65 +822,17 @@ static int lets_use_i(const rs_case_struct *c)
 static int build_char_complex(rs_scheme_t s, const rs_model_t m, rs_error_t err)
 {
     const rs_case_struct *c = m->c;
-    rs_scheme_t s2;
     ev_t x;
-    lin_t v;
+    fmpq_mpoly_t A, B, den;
     slong i, np = c->nparams;
     int r;
     const char *file = c->charloc.file ? c->charloc.file : c->path;
-    /* evaluate in params, lambda, i */
-    rs_scheme_init(s2);
-    s2->nvars = np + 2;
-    s2->lambda_var = np;
-    s2->vars = flint_malloc(s2->nvars * sizeof(char *));
-    for (i = 0; i < s->nvars; i++) s2->vars[i] = rs_strdup(s->vars[i]);
-    s2->vars[np + 1] = rs_strdup("i");
-    fmpq_mpoly_ctx_init(s2->ctx, s2->nvars, ORD_LEX);
-    fmpz_mpoly_ctx_init(s2->zctx, s2->nvars, ORD_LEX);
-    fmpq_mpoly_init(s2->charpoly, s2->ctx);
-    ev_setup(&x, s2, c, 1, NULL, err);
-    x.ivar = np + 1;
-    lin_init(&v, 1, s2->ctx);
-    r = eval(&v, c->charexpr, &x);
-    if (r == RS_OK && fmpq_mpoly_degree_si(v.den, np + 1, s2->ctx) > 0)
-        r = rs_error_set_at(err, RS_ERR_INPUT, file, c->charloc.line, c->charloc.col,
-                            "expected a char line without division by a complex expression "
-                            "(multiply through by its conjugate)%s", "");
+    fmpq_mpoly_init(A, s->ctx); fmpq_mpoly_init(B, s->ctx); fmpq_mpoly_init(den, s->ctx);
+    r = eval_cx(A, B, den, s, c, c->charexpr, 1, err, "a char line", file, c->charloc.line, c->charloc.col);
     if (r == RS_OK) {
-        /* reduce by i^2 = -1 into A + i B, in the real context */
-        fmpq_mpoly_t A, B, den;
-        ulong *ex2 = flint_malloc(s2->nvars * sizeof(ulong));
-        fmpq_t q;
-        slong n = fmpq_mpoly_length(v.c + 0, s2->ctx);
-        fmpq_init(q);
-        fmpq_mpoly_init(A, s->ctx); fmpq_mpoly_init(B, s->ctx); fmpq_mpoly_init(den, s->ctx);
-        for (i = 0; i < n; i++) {
-            ulong ei;
-            fmpq_mpoly_get_term_coeff_fmpq(q, v.c + 0, i, s2->ctx);
-            fmpq_mpoly_get_term_exp_ui(ex2, v.c + 0, i, s2->ctx);
-            ei = ex2[np + 1];
-            if (ei & 2) fmpq_neg(q, q);
-            {
-                fmpq_mpoly_t term;
-                fmpq_mpoly_init(term, s->ctx);
-                fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);   /* the first np+1 exponents */
-                if (ei & 1) fmpq_mpoly_add(B, B, term, s->ctx);
-                else fmpq_mpoly_add(A, A, term, s->ctx);
-                fmpq_mpoly_clear(term, s->ctx);
-            }
-        }
-        n = fmpq_mpoly_length(v.den, s2->ctx);
-        for (i = 0; i < n; i++) {
-            fmpq_mpoly_t term;
-            fmpq_mpoly_get_term_coeff_fmpq(q, v.den, i, s2->ctx);
-            fmpq_mpoly_get_term_exp_ui(ex2, v.den, i, s2->ctx);
-            fmpq_mpoly_init(term, s->ctx);
-            fmpq_mpoly_set_coeff_fmpq_ui(term, q, ex2, s->ctx);
-            fmpq_mpoly_add(den, den, term, s->ctx);
-            fmpq_mpoly_clear(term, s->ctx);
-        }
         strip_angle_den(den, s, c);
-        x.s = s; x.collect = s;
+        memset(&x, 0, sizeof x);
+        x.collect = s;   /* record_nonzero reads only where to collect */
         record_nonzero(&x, den, file, c->charloc.line, c->charloc.col);
         if (fmpq_mpoly_is_zero(A, s->ctx) && fmpq_mpoly_is_zero(B, s->ctx))
             r = rs_error_set_at(err, RS_ERR_MATH, file, c->charloc.line, c->charloc.col,
@@ -902,13 +859,8 @@ static int build_char_complex(rs_scheme_t s, const rs_model_t m, rs_error_t err)
             s->from_char = 0;
             s->complex_char = 1;
         }
-        fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
-        fmpq_clear(q);
-        flint_free(ex2);
     }
-    lin_clear(&v, s2->ctx);
-    flint_free(x.visiting);
-    rs_scheme_clear(s2);
+    fmpq_mpoly_clear(A, s->ctx); fmpq_mpoly_clear(B, s->ctx); fmpq_mpoly_clear(den, s->ctx);
     return r;
 }
 
