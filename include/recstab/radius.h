@@ -167,6 +167,12 @@ int rs_radius_double(rs_radius_t r, const fmpz_poly_t p, rs_error_t err);
  * eigenvalue lies in some roots[i]), r->lower / r->upper its bounds (lower
  * clamped at 0); the roots are not stored. */
 void rs_radius_set_rho(rs_radius_t r, acb_srcptr roots, slong n, slong prec);
+/* 1 when Schur's recursion on the real balls c[0..n] (c[n] the leading
+ * coefficient) certifies every root of sum c_j lambda^j strictly inside the
+ * unit circle, for every polynomial inside the balls (a repeated root inside
+ * does not stop it); 0 when it cannot (a root on or outside the circle, or
+ * balls too wide at prec). */
+int rs_radius_balls_inside(arb_srcptr c, slong n, slong prec);
 
 /* Uncertified approximations of the d roots of a[0] + ... + a[d] x^d
  * (double coefficients, a[0] != 0 != a[d]) into z (2d doubles: re, im):

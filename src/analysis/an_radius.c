@@ -7,6 +7,7 @@
 #include "lower/recurrence.h"
 #include "recstab/cosim.h"
 #include "recstab/jury.h"
+#include "numeric/cosim_fast.h"
 
 /* ---- radius ---------------------------------------------------------------------- */
 
@@ -297,7 +298,7 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
     rs_cosim_t cs;
     rs_radius_t rr, rm;
     json_t *o;
-    int r, partial = 0, mono = 0;
+    int r, partial = 0, mono = 0, inside = 0, stable = 0;
     rs_cosim_init(cs, 1, 1);
     r = rs_run_cosim(cs, run);
     if (r != RS_OK) { rs_cosim_clear(cs); return r; }
@@ -312,6 +313,15 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
         partial = 1;
         rs_error_init(run->err);
         r = RS_OK;
+        /* the enclosure's verdict checked by a second method: Schur's
+         * recursion on T's ball characteristic polynomial (a failure to
+         * certify leaves it unchecked, said in the JSON) */
+        if (rs_cosim_check_inside(&inside, cs, run->opt->max_prec, run->err) != RS_OK) {
+            rs_error_init(run->err);
+            inside = 0;
+        }
+        stable = strcmp(rs_radius_verdict(rr), "stable") == 0;
+        if ((stable && inside < 0) || (!stable && inside > 0)) run->outcome |= RS_OUTCOME_INCONSISTENT;
     }
     if (r == RS_OK && !partial) {   /* partial: the monolithic one has the same cluster */
         r = rs_cosim_monolithic_radius(rm, cs, digits, run->opt->max_prec, run->err);
@@ -325,10 +335,15 @@ static int cosim_radius(rs_run_t *run, slong digits, int stability, const rs_req
         json_object_set_new(o, "coupling", json_pack("{s:s,s:I}", "method", cs->method == RS_COSIM_IMPLICIT ? "implicit" : "explicit",
                                                      "order", (json_int_t) cs->order));
         rs_json_radius(o, rr, digits);
-        if (partial)
+        if (partial) {
             json_object_set_new(o, "note", json_string("eigenvalues not isolated (multiple eigenvalue or cluster): "
                                                        "the certified enclosure [lower, upper] decides, rho is not "
                                                        "to the digits requested"));
+            json_object_set_new(o, "cross_check", json_pack("{s:s,s:s,s:b}",
+                "method", "Schur's recursion on the ball characteristic polynomial of the one-step map",
+                "result", inside > 0 ? "every root inside" : inside < 0 ? "a root outside (|det| > 1)" : "undecided",
+                "agree", !((stable && inside < 0) || (!stable && inside > 0))));
+        }
         json_object_set_new(o, "monolithic_rho", mono ? rs_json_arb(rm->rho, digits) : json_null());
         json_object_set_new(o, "status", json_string(rs_radius_verdict(rr)));
         json_object_set_new(o, "decided_by", json_string("certified"));

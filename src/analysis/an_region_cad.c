@@ -929,39 +929,10 @@ static int cad_sign_norm(int *sg, const cad_t *c, const fmpz_mpoly_t f, const fm
     return done;
 }
 
-/* Every root of sum a_j lambda^j (real balls, degree n) strictly inside
- * the unit circle: Schur's recursion p_{k-1} = (a_k p_k - a_0 p_k^*)/lambda
- * with a_k^2 - a_0^2 > 0 at every step (as kp_all_inside of an_region.c,
- * each sign certified on the balls, so it holds for the exact values
- * inside them); a repeated root inside does not stop it. */
-static int balls_all_inside(arb_srcptr c, slong n, slong prec)
-{
-    arb_ptr a = _arb_vec_init(n + 1), b = _arb_vec_init(n + 1);
-    arb_t d, t;
-    slong k, j;
-    int ok = 1;
-    arb_init(d); arb_init(t);
-    _arb_vec_set(a, c, n + 1);
-    for (k = n; k >= 1 && ok; k--) {
-        arb_sqr(d, a + k, prec);
-        arb_submul(d, a + 0, a + 0, prec);
-        if (!arb_is_positive(d)) { ok = 0; break; }
-        for (j = 0; j < k; j++) {
-            arb_mul(b + j, a + k, a + j + 1, prec);
-            arb_submul(b + j, a + 0, a + k - 1 - j, prec);
-        }
-        /* divided by d > 0: the signs stay, the sizes do not grow */
-        for (j = 0; j < k; j++) arb_div(a + j, b + j, d, prec);
-    }
-    _arb_vec_clear(a, n + 1); _arb_vec_clear(b, n + 1);
-    arb_clear(d); arb_clear(t);
-    return ok;
-}
-
 /* The status at (alpha, beta) without a tower, where balls decide it (p's
  * coefficients as real balls at the refined enclosures, leading one
  * excluding 0): stable when Schur's recursion certifies every root inside
- * (balls_all_inside); unstable when |a_0| > |a_n| (the product of the
+ * (rs_radius_balls_inside); unstable when |a_0| > |a_n| (the product of the
  * roots' moduli exceeds 1) or acb_poly_find_roots isolates every root and
  * one ball lies strictly outside.  A root on the circle (marginal or not)
  * is never decided here: returns 0 then (after 2048 bits). */
@@ -998,7 +969,7 @@ static int cad_status_balls(rs_status_t *st, const cad_t *c, const fmpz_mpoly_t 
         if (acb_poly_length(P) != n + 1 || acb_contains_zero(P->coeffs + n)) continue;
         for (j = 0; j <= n; j++) arb_set(re + j, acb_realref(P->coeffs + j));
         /* the coefficient rules: Schur's recursion on balls, |a_0| > |a_n| */
-        if (balls_all_inside(re, n, prec)) { *st = RS_STATUS_STABLE; by_coeffs = 1; }
+        if (rs_radius_balls_inside(re, n, prec)) { *st = RS_STATUS_STABLE; by_coeffs = 1; }
         arb_abs(a, re + 0);
         arb_abs(b, re + n);
         if (!by_coeffs && arb_gt(a, b)) { *st = RS_STATUS_UNSTABLE; by_coeffs = 1; }

@@ -14,6 +14,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <acb_mat.h>
+#include <arb_poly.h>
 #include "numeric/cosim_ball.h"
 #include "numeric/cosim_fast.h"
 
@@ -329,6 +330,36 @@ int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_err
     _acb_vec_clear(Ec, d);
     acb_mat_clear(V);
     acb_mat_clear(Tc);
+    arb_mat_clear(T);
+    return rc;
+}
+
+int rs_cosim_check_inside(int *where, const rs_cosim_t cs, slong maxprec, rs_error_t err)
+{
+    arb_mat_t T;
+    arb_poly_t P;
+    arb_t a;
+    slong prec, d;
+    int rc = rs_cosim_check(cs, err);
+    *where = 0;
+    if (rc != RS_OK) return rc;
+    arb_mat_init(T, 0, 0);
+    arb_poly_init(P);
+    arb_init(a);
+    for (prec = 128; rc == RS_OK && *where == 0 && prec <= maxprec; prec *= 2) {
+        rc = fast_transition(T, cs, prec, err);
+        d = arb_mat_nrows(T);
+        if (rc != RS_OK || d == 0 || !arb_mat_is_finite(T)) break;
+        arb_mat_charpoly(P, T, prec);   /* monic, degree d */
+        if (arb_poly_length(P) != d + 1) continue;
+        if (rs_radius_balls_inside(P->coeffs, d, prec)) *where = 1;
+        else {
+            arb_abs(a, P->coeffs + 0);
+            if (arb_gt(a, P->coeffs + d)) *where = -1;
+        }
+    }
+    arb_clear(a);
+    arb_poly_clear(P);
     arb_mat_clear(T);
     return rc;
 }

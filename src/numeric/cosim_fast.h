@@ -31,4 +31,12 @@ int rs_cosim_fast_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_erro
  * caller takes rs_cosim_radius. */
 int rs_cosim_check_radius(rs_radius_t r, const rs_cosim_t cs, slong prec, rs_error_t err);
 
+/* The second method where the eigenvalues of T are not isolated (a double
+ * eigenvalue of exp(A h): rs_cosim_radius gives only an enclosure): T's
+ * characteristic polynomial as real balls (arb_mat_charpoly of the same ball
+ * map), *where = 1 when Schur's recursion certifies every root strictly
+ * inside (rs_radius_balls_inside), -1 when |det T| > 1 (the product of the
+ * moduli exceeds 1: a root outside), 0 when neither holds up to maxprec. */
+int rs_cosim_check_inside(int *where, const rs_cosim_t cs, slong maxprec, rs_error_t err);
+
 #endif

@@ -109,6 +109,35 @@ static void _rs_radius_set_bounds(rs_radius_t r)
     arf_clear(t);
 }
 
+/* Every root of sum a_j lambda^j (real balls, degree n) strictly inside
+ * the unit circle: Schur's recursion p_{k-1} = (a_k p_k - a_0 p_k^*)/lambda
+ * with a_k^2 - a_0^2 > 0 at every step (as kp_all_inside of an_region.c does exactly,
+ * each sign certified on the balls, so it holds for the exact values
+ * inside them); a repeated root inside does not stop it. */
+int rs_radius_balls_inside(arb_srcptr c, slong n, slong prec)
+{
+    arb_ptr a = _arb_vec_init(n + 1), b = _arb_vec_init(n + 1);
+    arb_t d, t;
+    slong k, j;
+    int ok = 1;
+    arb_init(d); arb_init(t);
+    _arb_vec_set(a, c, n + 1);
+    for (k = n; k >= 1 && ok; k--) {
+        arb_sqr(d, a + k, prec);
+        arb_submul(d, a + 0, a + 0, prec);
+        if (!arb_is_positive(d)) { ok = 0; break; }
+        for (j = 0; j < k; j++) {
+            arb_mul(b + j, a + k, a + j + 1, prec);
+            arb_submul(b + j, a + 0, a + k - 1 - j, prec);
+        }
+        /* divided by d > 0: the signs stay, the sizes do not grow */
+        for (j = 0; j < k; j++) arb_div(a + j, b + j, d, prec);
+    }
+    _arb_vec_clear(a, n + 1); _arb_vec_clear(b, n + 1);
+    arb_clear(d); arb_clear(t);
+    return ok;
+}
+
 /* rho = max_i |roots[i]|, a ball containing the true maximum modulus as
  * long as every root of p lies in some roots[i] and every roots[i] holds a
  * root (isolating or cluster enclosures both qualify). */
