@@ -133,6 +133,7 @@ static const layout_t layouts[] = {
     {"stability", rs_render_stability},
     {"region", rs_render_region},
     {"limit", rs_render_limit},
+    {"astability", rs_render_astability},
     {"claim", rs_render_claim},
     {"radius", rs_render_radius},
     {"modes", rs_render_modes},

@@ -105,6 +105,7 @@ void rs_render_jury(rs_render_t *r, const json_t *o);
 void rs_render_stability(rs_render_t *r, const json_t *o);
 void rs_render_region(rs_render_t *r, const json_t *o);
 void rs_render_limit(rs_render_t *r, const json_t *o);
+void rs_render_astability(rs_render_t *r, const json_t *o);   /* layout_astability.c */
 void rs_render_claim(rs_render_t *r, const json_t *o);
 /* region and claim of exact integration (layout_cosim.c), called by the two above */
 void rs_render_cosim_region(rs_render_t *r, const json_t *o);

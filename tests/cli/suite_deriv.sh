@@ -33,3 +33,47 @@ if command -v pdflatex >/dev/null 2>&1 && command -v pdftotext >/dev/null 2>&1; 
 else
     echo "skip pdflatex: pdflatex/pdftotext not installed (Debian: texlive-latex-base, poppler-utils; make deps installs them)"
 fi
+
+# astability (issue 15): the derivation's section from the analysis's JSON.
+# Expected facts derived by hand or from the literature, not from recstab:
+# trapezoid R(z) = (1 + z/2)/(1 - z/2): |R(iy)| = 1 and |R| -> 1 as z -> inf, so
+# A-stable, not L-stable; Radau IIA (2 stages) R = (1 + z/3)/(1 - 2z/3 + z^2/6) -> 0:
+# L-stable (Hairer-Wanner II, Sect. IV.5, Radau IIA); RK4: R(x) = 1 <=> x (x^3 + 4x^2 + 12x + 24) = 0
+# (the real end -2.785..), |R(iy)|^2 = 1 - y^6/72 + y^8/576 = 1 at y^2 = 8 (imaginary
+# ends +-2 sqrt 2); BDF3 alpha = 86.03 degrees (Hairer-Wanner II, Table V.2.3).
+AS=cases/complex
+"$RS" --markdown "$AS/trapezoid-astability.case" >"$T/tr.md" 2>"$T/err"
+grep -q '^### Stability region of \$y'"'"' = q\\,y\$ (A-stability)$' "$T/tr.md" && ok "astability: Markdown heading" || fail "astability heading: $(grep -i stability "$T/tr.md" | head -3)"
+grep -q '^\*A-stability\.\* The method is \*\*A-stable\*\*' "$T/tr.md" && grep -q 'Both routes apply, and they agree' "$T/tr.md" \
+    && ok "trapezoid: A-stable, both proofs" || fail "trapezoid A-stability: $(grep -i 'A-stab' "$T/tr.md")"
+grep -q 'max|\\lambda| \\to 1\$ exactly\. Hence \*\*not L-stable\*\*: the limit is not 0\.' "$T/tr.md" \
+    && ok "trapezoid: |R| -> 1 at infinity, not L-stable" || fail "trapezoid limit: $(grep -i infinity "$T/tr.md")"
+grep -q 'is \$q \\in (-\\infty, 0\]\$\.$' "$T/tr.md" && grep -q 'is \$y \\in (-\\infty, \\infty)\$\.$' "$T/tr.md" \
+    && ok "trapezoid: both axes' intervals" || fail "trapezoid intervals: $(grep -i interval "$T/tr.md")"
+"$RS" --markdown "$AS/radau-iia3-astability.case" 2>"$T/err" | grep -q 'Hence \*\*L-stable\*\*' \
+    && ok "Radau IIA: L-stable" || fail "Radau IIA L-stability"
+"$RS" --markdown "$AS/rk4-astability.case" >"$T/rk4.md" 2>"$T/err"
+grep -q 'is \$q \\in \[-2\.785[0-9]*, 0\]\$ where \$-2\.785[0-9]*\$ stands for the real root 1 (ascending) of \$q^{3} + 4\\,q^{2} + 12\\,q + 24\$' "$T/rk4.md" \
+    && ok "RK4: real interval with its exact end" || fail "RK4 real interval: $(grep 'real stab' "$T/rk4.md")"
+grep -q 'y \\in \[-2\.828427[0-9]*, 2\.828427[0-9]*\]\$ where .* of \$q^{2} - 8\$' "$T/rk4.md" \
+    && ok "RK4: imaginary interval +-2 sqrt 2" || fail "RK4 imaginary interval: $(grep 'imaginary' "$T/rk4.md")"
+grep -q 'is negative at \$y = ' "$T/rk4.md" && grep -q '\*\*not A-stable\*\*' "$T/rk4.md" \
+    && ok "RK4: not A-stable, E-polynomial evidence" || fail "RK4 evidence"
+"$RS" --markdown "$AS/bdf3-astability.case" >"$T/bdf3.md" 2>"$T/err"
+grep -q 'u\$ the root of \$3645\\,u^{2} - 757687\$ near \$14\.41[0-9]*\$, so \$\\alpha = 86\.03[0-9]*^\\circ\$' "$T/bdf3.md" \
+    && ok "BDF3: A(alpha), alpha = 86.03 degrees exact and approximate" || fail "BDF3 alpha: $(grep -i sector "$T/bdf3.md")"
+grep -q 'at \$q = -\\tfrac{[0-9]*}{[0-9]*} - \\tfrac{[0-9]*}{[0-9]*}\\,i\$ the scheme is exactly \*\*unstable\*\*' "$T/bdf3.md" \
+    && ok "BDF3: the counterexample point to A-stability" || fail "BDF3 counterexample: $(grep -i 'locus route' "$T/bdf3.md")"
+"$RS" --latex "$AS/bdf3-astability.case" >"$T/bdf3.tex" 2>"$T/err"
+grep -q '^\\subsection\*{Stability region of \$y'"'"' = q\\,y\$ (A-stability)}$' "$T/bdf3.tex" && ok "astability: LaTeX section" || fail "astability LaTeX section"
+"$RS" --latex "$AS/theta-complex-astability.case" >"$T/theta.tex" 2>"$T/err"
+grep -q 'coefficients in Q(i)' "$T/theta.tex" && ok "astability over Q(i) says so" || fail "astability Q(i)"
+if command -v pdflatex >/dev/null 2>&1 && command -v pdftotext >/dev/null 2>&1; then
+    for f in bdf3 theta; do
+        (cd "$T" && pdflatex -interaction=nonstopmode -halt-on-error $f.tex >/dev/null 2>&1)
+        pdftotext "$T/$f.pdf" "$T/$f.txt" 2>/dev/null
+        grep -q 'A-stability' "$T/$f.txt" && ok "pdflatex: astability section of $f compiles" || fail "pdflatex $f: $(grep '^!' "$T/$f.log" | head -3)"
+    done
+else
+    echo "skip pdflatex astability: pdflatex/pdftotext not installed"
+fi
