@@ -245,9 +245,13 @@ static void test_expect(void **state)
  * set values substituted.  Forward Euler p = lambda - 1 - h q at q = -1 + i,
  * h = 1: by hand p = lambda - 1 - (-1 + i) = lambda - i, "equal"; i times
  * it, i lambda + 1, "proportional" with ratio i; lambda + i "different".
- * BDF2 at q = -1/2 + 3/2 i (bdf2-complex-point.case): 2p = (4 - 3i) lambda^2
- * - 4 lambda + 1 by hand, proportional to the derived p.  A char line with
- * i: lambda - 1 - i*h compared as printed, "equal". */
+ * BDF2 at q = -1/2 + 3/2 i (bdf2-complex-point.case): 3 y[n+2] - 4 y[n+1] +
+ * y[n] = 2 q y[n+2] gives p = (3 - 2q) lambda^2 - 4 lambda + 1 = (4 - 3i)
+ * lambda^2 - 4 lambda + 1 by hand: "equal", as the real path calls p with a
+ * positive leading term (at real q = -1/2: 4 lambda^2 - 4 lambda + 1 "equal");
+ * its negation, the form the charpoly over Q(i) prints, also "equal"; twice
+ * it "proportional" with ratio 2 (not -2).  A char line with i: lambda - 1 -
+ * i*h compared as printed, "equal". */
 static void test_expect_i(void **state)
 {
     int outcome, code;
@@ -262,8 +266,17 @@ static void test_expect_i(void **state)
     assert_int_equal(outcome & RS_OUTCOME_FAILED, RS_OUTCOME_FAILED);
     json_decref(doc);
     doc = run("param q\nsubsystem S state y\n  y' = q*y\nintegrate S bdf 2 1\nset q = -1/2 + 3/2*i\n"
-              "expect charpoly (4 - 3*i)*lambda^2 - 4*lambda + 1\n", &outcome);
-    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "proportional");
+              "expect charpoly (4 - 3*i)*lambda^2 - 4*lambda + 1\nexpect charpoly (-4 + 3*i)*lambda^2 + 4*lambda - 1\n"
+              "expect charpoly (8 - 6*i)*lambda^2 - 8*lambda + 2\n", &outcome);
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
+    assert_string_equal(tu_str(tu_result(doc, 1), "status"), "equal");
+    assert_string_equal(tu_str(tu_result(doc, 2), "status"), "proportional");
+    assert_string_equal(tu_str(tu_result(doc, 2), "ratio"), "2");
+    assert_int_equal(outcome & RS_OUTCOME_FAILED, 0);
+    json_decref(doc);
+    doc = run("param q\nsubsystem S state y\n  y' = q*y\nintegrate S bdf 2 1\nset q = -1/2\n"
+              "expect charpoly 4*lambda^2 - 4*lambda + 1\n", &outcome);
+    assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
     json_decref(doc);
     doc = run("param h\nchar lambda - 1 - i*h\nexpect charpoly lambda - 1 - i*h\n", &outcome);
     assert_string_equal(tu_str(tu_result(doc, 0), "status"), "equal");
