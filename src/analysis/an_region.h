@@ -127,6 +127,11 @@ int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx);
  * point of a condition whether its arc separates two statuses. */
 typedef struct rs_region_arcs_struct rs_region_arcs_t;
 int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t *v, slong v1, slong v2);
+/* the same over a complex plane's given conditions (cx: stable / not
+ * stable, norm NULL); conditions passed to rs_region_arcs_keep are in src
+ * (nsrc variables), variable k of src being gmap[k] of cx->s (-1: absent) */
+int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region_cx_t *cx,
+                          const fmpz_mpoly_ctx_t src, const slong *gmap, slong nsrc);
 void rs_region_arcs_free(rs_region_arcs_t *A);
 int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y);
 json_t *rs_region_arcs_json(const rs_region_arcs_t *A);

@@ -2033,6 +2033,10 @@ struct rs_region_arcs_struct {
     arc_t *arcs;
     slong narcs;
     slong *nsep;         /* per polynomial: separating arcs (vertical ones included) */
+    /* the complex form (rs_region_arcs_new_cx): conditions arrive in the
+     * scheme's context src and are moved to the plane's by gmap */
+    const fmpz_mpoly_ctx_struct *src;
+    slong *gmap;
 };
 
 static void cad_arc_table(rs_region_arcs_t *A)
@@ -2114,9 +2118,41 @@ int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t
     return RS_OK;
 }
 
+int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region_cx_t *cx,
+                          const fmpz_mpoly_ctx_t src, const slong *gmap, slong nsrc)
+{
+    rs_region_arcs_t *A = flint_calloc(1, sizeof(rs_region_arcs_t));
+    cad_t *c = &A->c;
+    int r;
+    *out = NULL;
+    c->run = run;
+    c->s = cx->s;
+    c->cx = cx;
+    c->av = 0;
+    c->bv = 1;
+    c->an = cx->s->vars[0];
+    c->bn = cx->s->vars[1];
+    c->blo = -1;
+    c->bhi = 1;
+    c->nb = 2;
+    c->bounds = flint_malloc(3 * sizeof(rs_bound_t));
+    rs_bounds_init(c->bounds, 2);   /* the whole plane */
+    A->src = src;
+    A->gmap = flint_malloc(nsrc * sizeof(slong));
+    memcpy(A->gmap, gmap, nsrc * sizeof(slong));
+    r = cad_critical(c);
+    if (r == RS_OK) r = cad_project(c);
+    if (r == RS_OK) r = cad_lift(c);
+    if (r != RS_OK) { rs_region_arcs_free(A); return r; }
+    cad_arc_table(A);
+    *out = A;
+    return RS_OK;
+}
+
 void rs_region_arcs_free(rs_region_arcs_t *A)
 {
     if (A == NULL) return;
+    flint_free(A->gmap);
     cad_clear(&A->c);
     flint_free(A->arcs);
     flint_free(A->nsep);
@@ -2159,6 +2195,33 @@ static slong arcs_roots(double *rt, const cad_t *c, slong k, double x)
     return n;
 }
 
+/* the distance from x to the nearest real root of f_k, a polynomial in N1 alone */
+static double arcs_vertical_dist(const cad_t *c, slong k, double x)
+{
+    const rs_scheme_struct *s = c->s;
+    fmpz_poly_t u;
+    double best = 1e300;
+    fmpz_poly_init(u);
+    if (fmpz_mpoly_get_fmpz_poly(u, c->f + k, c->av, s->zctx) && fmpz_poly_degree(u) >= 1) {
+        slong d = fmpz_poly_degree(u), j;
+        double *a = flint_calloc(d + 1, sizeof(double)), *z = flint_calloc(2 * d + 2, sizeof(double));
+        gsl_poly_complex_workspace *w;
+        for (j = 0; j <= d; j++) a[j] = fmpz_get_d(u->coeffs + j);
+        w = gsl_poly_complex_workspace_alloc((size_t) d + 1);
+        if (gsl_poly_complex_solve(a, (size_t) d + 1, w, z) == 0) {
+            double scale = 1;
+            for (j = 0; j < d; j++) scale = FLINT_MAX(scale, fabs(z[2 * j]));
+            for (j = 0; j < d; j++)
+                if (fabs(z[2 * j + 1]) <= 1e-7 * scale) best = FLINT_MIN(best, fabs(z[2 * j] - x));
+        }
+        gsl_poly_complex_workspace_free(w);
+        flint_free(a);
+        flint_free(z);
+    }
+    fmpz_poly_clear(u);
+    return best;
+}
+
 /* 1 when the boundary point (x, y) of condition cond lies on an arc that
  * separates two statuses (or cannot be placed: kept); 0 also when cond has
  * no critical factor (its zero set is not where a status can change) */
@@ -2166,7 +2229,14 @@ static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double 
 
 int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y)
 {
-    return arcs_keep(A, cond, x, y, 0);
+    int keep;
+    fmpz_mpoly_t m;
+    if (A->gmap == NULL) return arcs_keep(A, cond, x, y, 0);
+    fmpz_mpoly_init(m, A->c.s->zctx);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(m, cond, A->gmap, A->src, A->c.s->zctx);
+    keep = arcs_keep(A, m, x, y, 0);
+    fmpz_mpoly_clear(m, A->c.s->zctx);
+    return keep;
 }
 
 static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y, int nudged)
@@ -2197,7 +2267,14 @@ static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double 
         if (!divides) continue;
         factor = 1;
         d = fmpz_mpoly_degree_si(c->f + k, c->bv, c->s->zctx);
-        if (d <= 0) { if (A->nsep[k] > 0) return 1; continue; }
+        if (d <= 0) {
+            /* a vertical line: its distance to the point competes with the
+             * arcs' (a point on a line that separates nothing is dropped even
+             * when another factor's arc passes near it) */
+            double dist = arcs_vertical_dist(c, k, x);
+            if (dist < best) { best = dist; best_k = k; best_j = -2; }
+            continue;
+        }
         rt = flint_malloc(d * sizeof(double));
         n = arcs_roots(rt, c, k, x);
         for (j = 0; j < n; j++)
@@ -2207,6 +2284,7 @@ static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double 
     /* no critical factor: the status is the same on both sides */
     if (!factor) return 0;
     if (best_k < 0) return 1;
+    if (best_j == -2) return A->nsep[best_k] > 0;
     for (i = 0; i < A->narcs; i++)
         if (A->arcs[i].col == col && A->arcs[i].k == best_k && A->arcs[i].j == best_j) return A->arcs[i].sep;
     return 1;

@@ -19,6 +19,7 @@
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 #include "stability/schur_complex.h"
+#include "stability/routh_complex.h"
 #include <flint/fmpz_mpoly_factor.h>
 #include "analysis/an_region.h"
 
@@ -287,6 +288,116 @@ static void cx_bcond_add(bcond_t **bc, slong *nb, const fmpz_mpoly_t g, const ch
     fmpz_mpoly_factor_clear(fac, ctx);
 }
 
+/* the plane (N1, N2, lambda) of the separating arcs: p = re + i im there;
+ * everything the decomposition points at, alive until the arcs are freed */
+typedef struct {
+    rs_scheme_struct xs;
+    char *vars[3];
+    fmpz_mpoly_t re, im;
+    slong n;
+    rs_run_t *run;
+    rs_schur_cx_conds_t cc;
+    rs_region_cx_t cx;
+} cx_plane_t;
+
+/* p(x, y, lambda) at rational (x, y) as a polynomial in lambda */
+static void cx_plane_eval(fmpq_poly_t out, const fmpz_mpoly_t f, const fmpq_t x, const fmpq_t y, const cx_plane_t *P)
+{
+    slong i, len = fmpz_mpoly_length(f, P->xs.zctx);
+    ulong ex[3];
+    fmpq_t c, t;
+    fmpq_init(c); fmpq_init(t);
+    fmpq_poly_zero(out);
+    for (i = 0; i < len; i++) {
+        fmpz_mpoly_get_term_exp_ui(ex, f, i, P->xs.zctx);
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), f, i, P->xs.zctx);
+        fmpz_one(fmpq_denref(c));
+        fmpq_pow_si(t, x, (slong) ex[0]);
+        fmpq_mul(c, c, t);
+        fmpq_pow_si(t, y, (slong) ex[1]);
+        fmpq_mul(c, c, t);
+        fmpq_poly_get_coeff_fmpq(t, out, (slong) ex[2]);
+        fmpq_add(t, t, c);
+        fmpq_poly_set_coeff_fmpq(out, (slong) ex[2], t);
+    }
+    fmpq_clear(c); fmpq_clear(t);
+}
+
+/* the exact point verdict at (N1, N2) = (x, y): Schur-Cohn over Q(i) and Bilharz */
+static int cx_plane_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void *arg)
+{
+    const cx_plane_t *P = arg;
+    fmpq_poly_t re, im;
+    int r;
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    cx_plane_eval(re, P->re, x, y, P);
+    cx_plane_eval(im, P->im, x, y, P);
+    if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) {
+        *st = RS_STATUS_SINGULAR;   /* the leading coefficient vanishes: no step */
+        r = RS_OK;
+    } else r = rs_routh_complex_checked_status(st, re, im, P->n, P->run->err);
+    if (r == RS_ERR_INCONSISTENT) P->run->outcome |= RS_OUTCOME_INCONSISTENT;
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return r;
+}
+
+static void cx_plane_clear(cx_plane_t *P)
+{
+    rs_schur_cx_conds_clear(&P->cc, P->xs.zctx);
+    fmpz_mpoly_clear(P->re, P->xs.zctx); fmpz_mpoly_clear(P->im, P->xs.zctx);
+    fmpz_mpoly_ctx_clear(P->xs.zctx);
+    fmpq_mpoly_ctx_clear(P->xs.ctx);
+}
+
+/* The separating arcs of the (N1, N2) plane at complex set values (issue 13
+ * part 3 as for real p): the decomposition of the plane by the same Schur-Cohn
+ * conditions (stable iff |a_n|^2 > 0 and every delta > 0), an arc kept when
+ * the cells on its two sides differ. NULL (every factor drawn) when the
+ * decomposition fails or a parameter other than the axes is left; P (set up
+ * here, cleared by the caller after the arcs) holds what they point at. */
+static rs_region_arcs_t *cx_map_arcs(cx_plane_t *P, cx_deco_t *d)
+{
+    const rs_scheme_struct *s = d->v->s;
+    const rs_sweep_axis_t *X = d->R->axis;
+    slong *gmap = flint_malloc(s->nvars * sizeof(slong)), k;
+    rs_region_arcs_t *A = NULL;
+    rs_error_struct saved = *d->run->err;
+    memset(P, 0, sizeof *P);
+    P->vars[0] = (char *) X[0].name; P->vars[1] = (char *) X[1].name; P->vars[2] = (char *) "lambda";
+    fmpq_mpoly_ctx_init(P->xs.ctx, 3, ORD_LEX);
+    fmpz_mpoly_ctx_init(P->xs.zctx, 3, ORD_LEX);
+    P->xs.nvars = 3;
+    P->xs.lambda_var = 2;
+    P->xs.vars = P->vars;
+    P->run = d->run;
+    fmpz_mpoly_init(P->re, P->xs.zctx); fmpz_mpoly_init(P->im, P->xs.zctx);
+    rs_schur_cx_conds_init(&P->cc);
+    for (k = 0; k < s->nvars; k++) {
+        gmap[k] = k == X[0].var ? 0 : k == X[1].var ? 1 : k == s->lambda_var ? 2 : -1;
+        if (gmap[k] < 0 && (fmpz_mpoly_degree_si(d->J->re, k, s->zctx) > 0
+                            || fmpz_mpoly_degree_si(d->J->im, k, s->zctx) > 0)) goto out;
+    }
+    fmpz_mpoly_compose_fmpz_mpoly_gen(P->re, d->J->re, gmap, s->zctx, P->xs.zctx);
+    fmpz_mpoly_compose_fmpz_mpoly_gen(P->im, d->J->im, gmap, s->zctx, P->xs.zctx);
+    P->n = FLINT_MAX(fmpz_mpoly_degree_si(P->re, 2, P->xs.zctx), fmpz_mpoly_degree_si(P->im, 2, P->xs.zctx));
+    if (P->n < 1 || !rs_schur_cx_conds(&P->cc, P->re, P->im, 2, P->xs.zctx)) goto out;
+    P->cx.s = &P->xs;
+    P->cx.lead = P->cc.lead;
+    P->cx.delta = P->cc.delta;
+    P->cx.ndelta = P->cc.ndelta;
+    P->cx.status = cx_plane_status;
+    P->cx.arg = P;
+    P->cx.name = X[0].name;
+    P->cx.substituted = d->v->assigned;
+    if (rs_region_arcs_new_cx(&A, d->run, &P->cx, s->zctx, gmap, s->nvars) != RS_OK) {
+        A = NULL;
+        *d->run->err = saved;
+    }
+out:
+    flint_free(gmap);
+    return A;
+}
+
 static void cx_map_boundary(json_t *o, cx_deco_t *d)
 {
     const rs_scheme_struct *s = d->v->s;
@@ -295,6 +406,8 @@ static void cx_map_boundary(json_t *o, cx_deco_t *d)
     bcond_t *bc = NULL;
     slong nb = 0, k;
     json_t *b;
+    cx_plane_t P;
+    rs_region_arcs_t *A;
     if (d->R->naxes < 2) return;
     /* p must depend on both axes (as for real p) */
     for (k = 0; k < 2; k++)
@@ -315,10 +428,17 @@ static void cx_map_boundary(json_t *o, cx_deco_t *d)
     }
     rs_schur_cx_conds_clear(&cc, s->zctx);
     b = json_object();
-    map_boundary_rows(o, b, d->run, d->v, d->R, d->xs[0], d->xs[1], bc, nb, NULL,
-        "zero sets of the irreducible factors of |a_n|^2 and of the division-free Schur-Cohn deltas of p over "
-        "Q(i)[N1, N2] (stable iff all > 0): exact signs at the grid points, a crossing between two neighbours of "
-        "a row (column) placed by linear interpolation; every factor is drawn (arcs separating nothing included)");
+    A = cx_map_arcs(&P, d);
+    map_boundary_rows(o, b, d->run, d->v, d->R, d->xs[0], d->xs[1], bc, nb, A, A != NULL
+        ? "zero sets of the irreducible factors of |a_n|^2 and of the division-free Schur-Cohn deltas of p over "
+          "Q(i)[N1, N2] (stable iff all > 0): exact signs at the grid points, a crossing between two neighbours of "
+          "a row (column) placed by linear interpolation; only the arcs that separate stable from not stable cells "
+          "of the plane's decomposition by the same conditions are drawn"
+        : "zero sets of the irreducible factors of |a_n|^2 and of the division-free Schur-Cohn deltas of p over "
+          "Q(i)[N1, N2] (stable iff all > 0): exact signs at the grid points, a crossing between two neighbours of "
+          "a row (column) placed by linear interpolation; every factor is drawn (the plane's decomposition did not "
+          "complete, so arcs separating nothing are included)");
+    cx_plane_clear(&P);
 }
 
 /* the map's element at complex set values: over Q(i), the boundary of the

@@ -459,3 +459,30 @@ PY
     if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map at complex values: exact boundary over Q(i) (h, w, h*w - 1)"
     else fail "map boundary over Q(i): rc=$rc $res"; fi
 else ok "skipped map boundary over Q(i): no python3"; fi
+
+# only the separating arcs at complex values (issue 13 part 3 over Q(i)): by hand
+# (cases/complex/spurious-factor-map.case) delta_1 = 2 h^2 w (1 - h^2 w), so h = 0
+# separates nothing (stable on both sides for w > 0, not stable on both for w < 0)
+# while w = 0 and h^2 w = 1 do. Grid h = -1 .. 1 step 1/4, w = -1 .. 2 step 1/4:
+# the 13 grid points of h = 0 are all dropped (none drawn), w = 0 is drawn at its
+# 9 grid points exactly, h^2 w = 1 by crossings (w >= 1 only: |h^2 w - 1| within
+# the interpolation step of w, 1/4 times h^2 <= 1/4).
+"$RS" --json cases/complex/spurious-factor-map.case >"$T/sp.json"; rc=$?
+if command -v python3 >/dev/null 2>&1; then
+    res=$(python3 - "$T/sp.json" <<'PY'
+import json, sys
+m = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "map"][0]
+b = m.get("boundary", {})
+idx = {c["poly"]: c["index"] for c in b.get("conditions", [])}
+rows = m.get("boundary_rows", [])
+n = {p: sum(1 for r in rows if r[0] == i) for p, i in idx.items()}
+sep = {a["poly"]: a["separating"] for a in b.get("separating_arcs", [])}
+on = all(abs(r[2] * r[1] ** 2 - 1) <= 0.25 for r in rows if r[0] == idx.get("h^2*w - 1"))
+ok = (sorted(idx) == ["h", "h^2*w - 1", "w"] and n["h"] == 0 and n["w"] == 9 and n["h^2*w - 1"] > 0 and on
+      and sep.get("h") == 0 and sep.get("w", 0) > 0 and b.get("dropped_points") == 13)
+print("yes" if ok else "no %s %s %s" % (n, sep, b.get("dropped_points")))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map at complex values: the factor h of h^2 separates nothing, not drawn"
+    else fail "map separating arcs over Q(i): rc=$rc $res"; fi
+else ok "skipped map separating arcs over Q(i): no python3"; fi
