@@ -4,17 +4,17 @@
 #   sh bench/radius_peers.sh [BIN] [POLYS] [DIGITS]
 # POLYS: names understood by bench/radius_peers_gen.py (default: random,
 # clustered and 2x^N - 1 at degree 12, 50, 100, 200, 500; Wilkinson-type at
-# 12, 20, 40, 50, 100; wilkinson-200 runs too since the 1 MiB statement
-# limit, but MPSolve's -p then mostly parses: 2.3 s against 0.7 s from a
-# file, bench/README.md "seventh step"; from degree ~300 the expression
-# exceeds the 128 KiB argument limit of -p);
+# 12, 20, 40, 50, 100, 200, 300, 500 (since the 1 MiB statement limit);
+# MPSolve reads NAME.pol, its own file format: its -p EXPR mostly parsed
+# (2.3 s against 0.7 s at Wilkinson-type 200, bench/README.md "seventh
+# step") and from degree ~300 exceeded the 128 KiB argument limit);
 # DIGITS default "30 128".  Commands timed:
 #   BIN --analyse 'radius digits=D' NAME.case
 #   STATIC_BIN (the same; default build/recstab-static when it exists, `make
 #   static`: GSL, CBLAS and jansson linked in, FLINT/Arb/GMP shared) -- the
 #   start-up share of the small rows
 #   gp -q -f -D parisizemax=2G  (realprecision D; polroots; max |root|)
-#   mpsolve -j1 -Ga -o D -p EXPR          (guaranteed inclusions)
+#   mpsolve -j1 -Ga -o D NAME.pol         (guaranteed inclusions; the issue's command)
 # Each once, `/usr/bin/time -f '%e %U %S'`: wall s and CPU (user + system)
 # s (under 0.3 s CPU: the mean of PEER_REPS more runs, see run());
 # PEER_TIMEOUT seconds of CPU each (ulimit -t, default 120; "limit"), and
@@ -25,7 +25,7 @@
 # issue's table; below 1: recstab faster), then rho from each tool (first
 # 12 digits) so that a wrong answer shows.  Work files: build/radius-peers/.
 bin=${1:-build/recstab}
-polys=${2:-"random-12 random-50 random-100 random-200 random-500 cluster-12 cluster-50 cluster-100 cluster-200 cluster-500 wilkinson-12 wilkinson-20 wilkinson-40 wilkinson-50 wilkinson-100 pow-12 pow-50 pow-100 pow-200 pow-500"}
+polys=${2:-"random-12 random-50 random-100 random-200 random-500 cluster-12 cluster-50 cluster-100 cluster-200 cluster-500 wilkinson-12 wilkinson-20 wilkinson-40 wilkinson-50 wilkinson-100 wilkinson-200 wilkinson-300 wilkinson-500 pow-12 pow-50 pow-100 pow-200 pow-500"}
 digs=${3:-"30 128"}
 tmo=${PEER_TIMEOUT:-120}
 dir=${PEERS_DIR:-build/radius-peers}
@@ -83,7 +83,7 @@ for P in $polys; do
         fi
         m="-"; mrho="-"
         if [ $have_mps = 1 ]; then
-            m=$(run "$dir/mps.out" mpsolve -j1 -Ga -o "$D" -p "$(cat "$dir/$P.expr")")
+            m=$(run "$dir/mps.out" mpsolve -j1 -Ga -o "$D" "$dir/$P.pol")
             mrho=$(python3 -c '
 import sys, re
 from decimal import Decimal, getcontext

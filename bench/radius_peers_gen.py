@@ -2,8 +2,8 @@
 """radius_peers_gen.py -- the polynomials of bench/radius_peers.sh.
 
 Writes, for each polynomial NAME, into DIR: NAME.case (recstab `char` with the
-expanded integer coefficients), NAME.expr (the same polynomial in x for PARI
-and MPSolve's -p) and NAME.rho (the closed-form radius when there is one).
+expanded integer coefficients), NAME.expr (the same polynomial in x for PARI),
+NAME.pol (the same for MPSolve, its file format) and NAME.rho (the closed-form radius when there is one).
 Every tool gets the same integer coefficients.
 
   random-D     c_0..c_D from bench/results/highdeg-D.case (drawn in [-100, 100])
@@ -51,6 +51,11 @@ def write(dirn, name, c, rho=None, title=None):
         f.write("title %s\nchar %s\n" % (title or name, " + ".join(terms)))
     with open(os.path.join(dirn, name + ".expr"), "w") as f:
         f.write("+".join("(%d)*x^%d" % (x, k) for k, x in enumerate(c) if x) + "\n")
+    # MPSolve's own file format (dense, integer, coefficients c_0 .. c_D):
+    # `mpsolve -j1 -Ga -o DIGITS NAME.pol`, no expression to parse
+    with open(os.path.join(dirn, name + ".pol"), "w") as f:
+        f.write("Degree = %d;\nMonomial;\nInteger;\nReal;\n" % d)
+        f.write("".join("%d\n" % x for x in c))
     with open(os.path.join(dirn, name + ".rho"), "w") as f:
         f.write((rho or "") + "\n")
     return d

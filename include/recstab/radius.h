@@ -256,6 +256,18 @@ char *rs_radius_str_ball(mag_t rad, const arb_t x, slong n);
  * some ball meets the circle, and an exact count must decide. */
 int rs_radius_count_balls(slong *inside, slong *outside, const rs_radius_t r, slong degree);
 
+/* The number of roots of p inside the unit circle by the Schur-Cohn table
+ * f_{k+1} = f_k(0) f_k - lc(f_k) f_k* in ball arithmetic (src/numeric/
+ * outer.c): independent of any root ball, rigorous (each row's constant
+ * sign certified; all non-zero means no root on the circle, so inside +
+ * outside = deg p).  The precision starts at 128 bits and is raised from
+ * where the signs were lost, up to max_prec.  RS_OK with *decided = 1,
+ * *inside and *prec_used (bits), or *decided = 0 (a sign not certified
+ * within max_prec, or the table is singular: an exact count must decide);
+ * RS_ERR_LIMIT when the budget ran out (err says so). */
+int rs_radius_schur_count(int *decided, slong *inside, slong *prec_used, const fmpz_poly_t p,
+                          slong max_prec, rs_error_t err);
+
 /* E: the deg f certified isolating balls of the roots of f (squarefree),
  * from a low precision.  Refines those that may be of largest modulus to
  * prec bits (Newton on midpoints), then certifies all deg f balls once at

@@ -19,6 +19,26 @@ static char *radius_up(double r)
     return s;
 }
 
+/* Which two methods counted the roots inside (and agreed), and by which
+ * Schur-Cohn route (radius results: count_methods, schur_cohn_route). */
+static void count_line(rs_render_t *r, const json_t *o)
+{
+    const json_t *m = json_object_get(o, "count_methods"), *rt = json_object_get(o, "schur_cohn_route");
+    const json_t *bits = rt != NULL ? json_object_get(rt, "precision_bits") : NULL;
+    const char *a = json_string_value(json_array_get(m, 0)), *b = json_string_value(json_array_get(m, 1));
+    const char *ag = json_is_true(json_object_get(o, "count_agree")) ? "agree" : "DISAGREE";
+    char buf[400];
+    if (a == NULL || b == NULL) return;
+    if (bits != NULL)
+        snprintf(buf, sizeof buf, "%s and %s %s (%s, %lld bits)", a, b, ag, rs_render_jstr(rt, "method"),
+                 (long long) json_integer_value(bits));
+    else if (rt != NULL)
+        snprintf(buf, sizeof buf, "%s and %s %s (%s)", a, b, ag, rs_render_jstr(rt, "method"));
+    else
+        snprintf(buf, sizeof buf, "%s and %s %s", a, b, ag);
+    rs_render_line(r, "counted by", "%s", buf);
+}
+
 void rs_render_radius(rs_render_t *r, const json_t *o)
 {
     const json_t *roots = json_object_get(o, "roots");
@@ -49,7 +69,10 @@ void rs_render_radius(rs_render_t *r, const json_t *o)
             rs_render_line(r, "refined", "%s", buf);
         }
         rs_render_line(r, "from radius", "%s", rs_render_jstr(o, "verdict_from_radius"));
-        rs_render_line(r, "exact", "%s (consistent with the radius)", rs_render_jstr(o, "exact_status"));
+        /* "count": the ball table counted, no exact method (an_radius.c) */
+        rs_render_line(r, json_object_get(o, "count_certified") != NULL ? "count" : "exact",
+                       "%s (consistent with the radius)", rs_render_jstr(o, "exact_status"));
+        count_line(r, o);
         rs_render_line(r, "verdict", "%s (certified by the radius interval)", rs_render_jstr(o, "status"));
         rs_render_line(r, "monolithic", "%s (exact integration of the coupled system: the reference)", rs_render_jstr(o, "monolithic_rho"));
     } else {

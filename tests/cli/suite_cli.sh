@@ -156,6 +156,25 @@ radius_high "degree 72, a root 10^-40 outside: refined ball counts" \
 assert r['count_methods'] == ['certified root balls', 'schur-cohn'], r
 assert r.get('count_balls_refined') is True and r['count_agree'] is True, r
 assert r['exact_status'] == 'unstable' and r['rho'].startswith('2.0000000000'), r"
+# (closed form) Wilkinson-type prod_{k=1..70} (71 lambda - k): roots k/71,
+# rho = 70/71 = 0.98591549295774647887..., all 70 inside.  Its 280-bit
+# coefficients make the exact minors cost ~1000 primes; the Schur-Cohn table
+# in balls counts at a few hundred bits (issue 18), so the verdict rests on
+# two certified counts and says so (decided_by certified, not exact)
+radius_high "Wilkinson-type 70: ball Schur-Cohn table checks the balls" \
+    "$(python3 -c "print('*'.join('(71*lambda - %d)' % k for k in range(1, 71)))")" "
+assert r['count_methods'] == ['certified root balls', 'schur-cohn'], r
+assert r['schur_cohn_route']['method'].startswith('Schur-Cohn table in ball arithmetic'), r['schur_cohn_route']
+assert r['schur_cohn_route']['precision_bits'] >= 128, r['schur_cohn_route']
+assert r['count_agree'] is True and r['exact_status'] == 'stable' and r['decided_by'] == 'certified', r
+assert r['rho'].startswith('0.985915492957746478'), r['rho']"
+# below degree 65 both exact counts run and the report names them (it gave
+# no count method at all): (10 lambda - 9)(2 lambda - 1), rho = 9/10
+radius_high "degree 2: Routh + Schur-Cohn named" "(10*lambda - 9)*(2*lambda - 1)" "
+assert r['count_methods'] == ['routh (bilinear)', 'schur-cohn'], r
+assert r['count_agree'] is True and r['decided_by'] == 'exact', r
+assert r['schur_cohn_route']['method'] == 'integer Schur-Cohn table', r
+assert r['rho'].startswith('0.9000000000'), r['rho']"
 
 # hurwitz on a dead-beat scheme (det A = c lambda^k): p is a constant once the
 # roots at 0 are divided out, so q has no minor and no condition (every root

@@ -972,6 +972,114 @@ static void test_count_balls(void **state)
     fmpz_poly_clear(f);
 }
 
+/* rs_radius_schur_count: the Schur-Cohn table in balls.  Expected counts
+ * from closed forms (the roots are the factors' roots, by hand):
+ * - Wilkinson-type prod_{k=1..70} (71 x - k): roots k/71, all 70 inside;
+ *   its 280-bit coefficients need precision beyond the start (the loss
+ *   grows along the rows), so the extrapolation step runs;
+ * - (2x - 1)^20 (x - 3)^10 (x + 2)^5 (5x + 4): 21 inside (1/2 twenty times
+ *   and -4/5), 15 outside; repeated roots off the circle leave the table
+ *   regular;
+ * - x (x - 2) (3x - 1)^2: 3 inside (0, 1/3 twice), 1 outside: p(0) = 0;
+ * and the ones it must leave to the exact side: x^66 - 1 (circle roots:
+ * the first row is zero), (x - 2)(2x - 1)(3x + 1) (the pair 2, 1/2 makes
+ * gcd(p, p*) non-trivial, so some constant term is exactly 0).  Then 6
+ * random polynomials of degree 65-90 (coefficients in [-2^20, 2^20],
+ * flint_rand): the count equals the exact one of rs_jury_count_fmpz_poly
+ * (modular minors or integer table), an independent exact method.  A flipped
+ * Rouche rule (in = in instead of m - in) fails the first two cases. */
+static void test_schur_count(void **state)
+{
+    fmpz_poly_t p, f;
+    rs_error_t err;
+    slong in = -1, bits = 0, k, t;
+    int dec;
+    flint_rand_t st;
+    rs_jury_t ju;
+    (void) state;
+    fmpz_poly_init(p);
+    fmpz_poly_init(f);
+    rs_error_init(err);
+    fmpz_poly_one(p);
+    for (k = 1; k <= 70; k++) {
+        fmpz_poly_set_coeff_si(f, 1, 71);
+        fmpz_poly_set_coeff_si(f, 0, -k);
+        fmpz_poly_mul(p, p, f);
+    }
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 16, err), RS_OK);
+    assert_int_equal(dec, 1);
+    assert_int_equal(in, 70);
+    assert_true(bits > 128);
+    /* max_prec below the start: nothing tried, undecided */
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 100, err), RS_OK);
+    assert_int_equal(dec, 0);
+
+    fmpz_poly_zero(f);
+    fmpz_poly_set_coeff_si(f, 1, 2);
+    fmpz_poly_set_coeff_si(f, 0, -1);
+    fmpz_poly_pow(p, f, 20);
+    fmpz_poly_set_coeff_si(f, 1, 1);
+    fmpz_poly_set_coeff_si(f, 0, -3);
+    fmpz_poly_pow(f, f, 10);
+    fmpz_poly_mul(p, p, f);
+    fmpz_poly_zero(f);
+    fmpz_poly_set_coeff_si(f, 1, 1);
+    fmpz_poly_set_coeff_si(f, 0, 2);
+    fmpz_poly_pow(f, f, 5);
+    fmpz_poly_mul(p, p, f);
+    fmpz_poly_zero(f);
+    fmpz_poly_set_coeff_si(f, 1, 5);
+    fmpz_poly_set_coeff_si(f, 0, 4);
+    fmpz_poly_mul(p, p, f);
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 16, err), RS_OK);
+    assert_int_equal(dec, 1);
+    assert_int_equal(in, 21);
+
+    /* x (x - 2) (3x - 1)^2 = 9x^4 - 24x^3 + 13x^2 - 2x */
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 4, 9);
+    fmpz_poly_set_coeff_si(p, 3, -24);
+    fmpz_poly_set_coeff_si(p, 2, 13);
+    fmpz_poly_set_coeff_si(p, 1, -2);
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 12, err), RS_OK);
+    assert_int_equal(dec, 1);
+    assert_int_equal(in, 3);
+
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 66, 1);
+    fmpz_poly_set_coeff_si(p, 0, -1);
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 12, err), RS_OK);
+    assert_int_equal(dec, 0);
+    /* (x - 2)(2x - 1)(3x + 1) = 6x^3 - 13x^2 + x + 2 */
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, 3, 6);
+    fmpz_poly_set_coeff_si(p, 2, -13);
+    fmpz_poly_set_coeff_si(p, 1, 1);
+    fmpz_poly_set_coeff_si(p, 0, 2);
+    assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 12, err), RS_OK);
+    assert_int_equal(dec, 0);
+
+    flint_randinit(st);
+    for (t = 0; t < 6; t++) {
+        slong n = 65 + 5 * t;
+        fmpz_poly_zero(p);
+        for (k = 0; k <= n; k++)
+            fmpz_poly_set_coeff_si(p, k, (slong) n_randint(st, (UWORD(1) << 21) + 1) - (WORD(1) << 20));
+        if (fmpz_is_zero(p->coeffs + n) || fmpz_poly_degree(p) != n)
+            fmpz_poly_set_coeff_si(p, n, 1);
+        assert_int_equal(rs_radius_schur_count(&dec, &in, &bits, p, 1 << 14, err), RS_OK);
+        assert_int_equal(dec, 1);
+        rs_jury_init(ju);
+        assert_int_equal(rs_jury_count_fmpz_poly(ju, p, err), RS_OK);
+        assert_int_equal(ju->count->on, 0);
+        assert_int_equal(in, ju->count->inside);
+        rs_jury_clear(ju);
+    }
+    flint_randclear(st);
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(f);
+}
+
 /* rs_radius_aberth_certify itself (the first route), from the double seeds
  * of rs_radius_aberth_d, on the rows issue 18 found slow:
  * - a tight cluster: (10^12 (10x - 9)^4 - 1)(10^6 x^70 - 1), degree 74.
@@ -1222,6 +1330,7 @@ int main(void)
         cmocka_unit_test(test_high_degree_binomial),
         cmocka_unit_test(test_random_degree100),
         cmocka_unit_test(test_count_balls),
+        cmocka_unit_test(test_schur_count),
         cmocka_unit_test(test_aberth_certify_hard),
         cmocka_unit_test(test_wilkinson_secular),
         cmocka_unit_test(test_horner2),
