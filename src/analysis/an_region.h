@@ -56,6 +56,11 @@ void rs_alg_refine(rs_alg_t *a, slong prec);
 int rs_alg_cmp(rs_alg_t *a, rs_alg_t *b);
 /* appends the real roots of f (non-zero) to *list */
 void rs_alg_roots_append(rs_alg_t **list, slong *n, const fmpz_poly_t f, int boundary);
+/* x[0..nreal) := the real roots of the irreducible g (degree >= 2, no
+ * rational root), ascending, each in a ball of relative radius <= 2^-(prec+2),
+ * by exact isolation (Descartes' rule on dyadic intervals, then bisection on
+ * exact signs); returns 0 (x not all set) if it does not find nreal roots */
+int rs_region_real_roots(arb_ptr x, const fmpz_poly_t g, slong nreal, slong prec);
 /* sorted in increasing order */
 void rs_alg_sort(rs_alg_t *a, slong n);
 /* "p/q", or {minpoly, root_index, interval, approx} */
