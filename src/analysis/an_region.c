@@ -355,18 +355,24 @@ int rs_region_real_roots(arb_ptr x, const fmpz_poly_t g, slong nreal, slong prec
     fmpz_t a, b, m, acc, tmp, k0;
     arf_t lo, hi;
     int ok = 1;
-    /* Cauchy: |root| < 1 + max|c_i| / |c_d| <= 2^e */
-    e = FLINT_ABS(fmpz_poly_max_bits(g)) - (slong) fmpz_bits(g->coeffs + d) + 2;
-    if (e < 1) e = 1;
+    /* Fujiwara: |root| <= 2 max_i |c_i / c_d|^(1/(d-i)) < 2^e, with
+     * |c_i / c_d| < 2^(bits c_i - bits c_d + 1) (e may be negative) */
+    e = WORD_MIN;
+    for (i = 0; i < d; i++) {
+        slong num = (slong) fmpz_bits(g->coeffs + i) - (slong) fmpz_bits(g->coeffs + d) + 1, q;
+        if (fmpz_is_zero(g->coeffs + i)) continue;
+        q = num >= 0 ? (num + (d - i) - 1) / (d - i) : -((-num) / (d - i));   /* ceil */
+        if (q + 1 > e) e = q + 1;
+    }
     fmpz_poly_init(P); fmpz_poly_init(t); fmpz_poly_init(dg);
     fmpz_poly_derivative(dg, g);
     fmpz_init(a); fmpz_init(b); fmpz_init(m); fmpz_init(acc); fmpz_init(tmp); fmpz_init(k0);
     arf_init(lo); arf_init(hi);
     /* negative roots first (s = -1), then positive: P(x) = g(s 2^e x) on (0, 1) */
     for (s = -1; s <= 1 && ok; s += 2) {
-        fmpz_poly_set(P, g);
-        for (i = 1; i <= d; i++) {
-            fmpz_mul_2exp(P->coeffs + i, P->coeffs + i, (ulong) (e * i));
+        fmpz_poly_set(P, g);   /* (times 2^(-e d) if e < 0) */
+        for (i = 0; i <= d; i++) {
+            fmpz_mul_2exp(P->coeffs + i, P->coeffs + i, (ulong) (e >= 0 ? e * i : -e * (d - i)));
             if (s < 0 && (i & 1)) fmpz_neg(P->coeffs + i, P->coeffs + i);
         }
         ok = isolate_01(&ks, &js, &n, P, k0, 0, t);
