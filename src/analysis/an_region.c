@@ -1315,23 +1315,24 @@ static void region_crit_pairs(region_t *rg, fmpz_poly_t u)
 {
     const rs_scheme_struct *s = rg->s;
     slong lv = s->lambda_var, tv = rg->tv;
-    rs_hurwitz_t h;
+    rs_hurwitz_t hown;
+    const rs_hurwitz_struct *h = hown;
     fmpz_mpoly_t qz;
-    int *sign = flint_calloc(s->nvars, sizeof(int));
     fmpz_mpoly_init(qz, s->zctx);
-    rs_hurwitz_init(h);
+    rs_hurwitz_init(hown);
     rs_bilinear_fmpz_mpoly(qz, rg->sqf_t, lv, s->zctx);
+    /* no sign information (NULL: all unknown); the same q as the for-all
+     * projection's: kept in its memo when one is in force */
     if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
-        && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+        && rs_hurwitz_memo_compute(&h, hown, qz, lv, s->zctx, rg->run->err) == RS_OK
         && h->n >= 2) {
         if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
             rg->d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
         else if (to_upoly(u, h->minors + h->n - 2, tv, s))
             alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_D);
     }
-    rs_hurwitz_clear(h, s->zctx);
+    rs_hurwitz_clear(hown, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
-    flint_free(sign);
 }
 
 /* The critical values of t: the leading coefficient in lambda vanishes, a
@@ -1775,17 +1776,16 @@ static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, c
         if (!fmpz_mpoly_is_zero(t, s->zctx) && to_upoly(u, t, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_PM1);
     }
     if (ok && fmpz_mpoly_degree_si(sq, lv, s->zctx) >= 2) {
-        rs_hurwitz_t h;
-        int *sign = flint_calloc(s->nvars, sizeof(int));
+        rs_hurwitz_t hown;
+        const rs_hurwitz_struct *h = hown;
         rs_bilinear_fmpz_mpoly(t, sq, lv, s->zctx);
-        rs_hurwitz_init(h);
+        rs_hurwitz_init(hown);
         ok = fmpz_mpoly_degree_si(t, lv, s->zctx) >= 2
-             && rs_hurwitz_compute(h, t, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+             && rs_hurwitz_memo_compute(&h, hown, t, lv, s->zctx, rg->run->err) == RS_OK
              && h->n >= 2 && !fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx);
         if (ok && to_upoly(u, h->minors + h->n - 2, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_D);
         if (!ok) rs_error_init(rg->run->err);
-        rs_hurwitz_clear(h, s->zctx);
-        flint_free(sign);
+        rs_hurwitz_clear(hown, s->zctx);
     }
     fmpz_mpoly_clear(f, s->zctx); fmpz_mpoly_clear(sq, s->zctx); fmpz_mpoly_clear(t, s->zctx);
     fmpz_mpoly_factor_clear(fac, s->zctx);
