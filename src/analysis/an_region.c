@@ -188,6 +188,251 @@ static void roots_memo_clear(roots_memo_t *m)
     memset(m, 0, sizeof *m);
 }
 
+/* ---- real roots of an irreducible polynomial, exactly (issue 13) ----------
+ * The critical values of `region` are real roots of small integer
+ * polynomials (degree 2-3 for HHT-alpha and Park); Arb's complex root finder
+ * costs about 0.65 M instructions for each, even at low precision.  Here:
+ * Descartes' rule of signs on dyadic intervals isolates them (the
+ * Vincent-Collins-Akritas bisection), and bisection on exact integer signs
+ * narrows each to relative width 2^-(prec+2).  g is irreducible of degree
+ * >= 2, so no dyadic point is a root and every sign is non-zero. */
+
+/* sign variations of (1+x)^d Q(1/(1+x)): the Descartes bound of Q on (0, 1) */
+static slong descartes_01(const fmpz_poly_t Q, fmpz_poly_t t)
+{
+    slong i, v = 0, last = 0;
+    fmpz one = 1;   /* a small fmpz */
+    fmpz_poly_reverse(t, Q, fmpz_poly_length(Q));
+    fmpz_poly_taylor_shift(t, t, &one);
+    for (i = 0; i < fmpz_poly_length(t); i++) {
+        int sg = fmpz_sgn(t->coeffs + i);
+        if (sg == 0) continue;
+        if (last != 0 && sg != last) v++;
+        last = sg;
+    }
+    return v;
+}
+
+/* isolates the roots of Q on (0, 1), which is (k, k+1) 2^-j of P's (0, 1):
+ * appends (k, j) of each isolating interval, ascending; 0 past the depth */
+static int isolate_01(fmpz **ks, slong **js, slong *n, const fmpz_poly_t Q,
+                      const fmpz_t k, slong j, fmpz_poly_t t)
+{
+    slong v = descartes_01(Q, t), d, i;
+    fmpz_poly_t L, R;
+    fmpz_t k2;
+    fmpz one = 1;
+    int ok;
+    if (v == 0) return 1;
+    if (v == 1) {
+        *ks = flint_realloc(*ks, (size_t) (*n + 1) * sizeof(fmpz));
+        *js = flint_realloc(*js, (size_t) (*n + 1) * sizeof(slong));
+        fmpz_init_set((*ks) + *n, k);
+        (*js)[*n] = j;
+        (*n)++;
+        return 1;
+    }
+    if (j > 2000) return 0;
+    d = fmpz_poly_degree(Q);
+    fmpz_poly_init(L); fmpz_poly_init(R); fmpz_init(k2);
+    /* L(x) = 2^d Q(x/2) on the left half, R(x) = L(x + 1) on the right */
+    fmpz_poly_set(L, Q);
+    for (i = 0; i < d; i++) fmpz_mul_2exp(L->coeffs + i, L->coeffs + i, (ulong) (d - i));
+    fmpz_poly_taylor_shift(R, L, &one);
+    fmpz_mul_2exp(k2, k, 1);
+    ok = isolate_01(ks, js, n, L, k2, j + 1, t);
+    fmpz_add_ui(k2, k2, 1);
+    if (ok) ok = isolate_01(ks, js, n, R, k2, j + 1, t);
+    fmpz_poly_clear(L); fmpz_poly_clear(R); fmpz_clear(k2);
+    return ok;
+}
+
+/* sign of g(m / 2^t), t >= 0: of sum c_i m^i 2^(t (d - i)) */
+static int sign_at_dyadic(const fmpz_poly_t g, const fmpz_t m, slong t, fmpz_t acc, fmpz_t tmp)
+{
+    slong d = fmpz_poly_degree(g), i;
+    fmpz_set(acc, g->coeffs + d);
+    for (i = d - 1; i >= 0; i--) {
+        fmpz_mul(acc, acc, m);
+        fmpz_mul_2exp(tmp, g->coeffs + i, (ulong) (t * (d - i)));
+        fmpz_add(acc, acc, tmp);
+    }
+    return fmpz_sgn(acc);
+}
+
+/* sign of g at the dyadic arf v */
+static int sign_at_arf(const fmpz_poly_t g, const arf_t v, fmpz_t acc, fmpz_t tmp)
+{
+    fmpz_t m, e;
+    int sg;
+    fmpz_init(m); fmpz_init(e);
+    arf_get_fmpz_2exp(m, e, v);
+    if (fmpz_sgn(e) >= 0) {
+        fmpz_mul_2exp(m, m, fmpz_get_ui(e));
+        sg = sign_at_dyadic(g, m, 0, acc, tmp);
+    } else {
+        fmpz_neg(e, e);
+        sg = sign_at_dyadic(g, m, fmpz_get_si(e), acc, tmp);
+    }
+    fmpz_clear(m); fmpz_clear(e);
+    return sg;
+}
+
+/* x := a ball of relative radius <= 2^-(prec+2) around the one root of g in
+ * (a, b) / 2^tt (sign sa at a), by bisection to 2^-24 and Newton's method
+ * in Arb; 1 if two exact signs inside (a, b) confirm it, else 0 (a, b and
+ * *tt narrowed to a smaller isolating interval, x untouched) */
+static int newton_bracket(arb_t x, const fmpz_poly_t g, const fmpz_poly_t dg,
+                          fmpz_t a, fmpz_t b, slong *ptt, int sa, slong prec,
+                          fmpz_t acc, fmpz_t tmp)
+{
+    slong tt = *ptt;
+    slong wp = prec + 40, it, e;
+    arb_t y, dy, z;
+    arf_t lo, hi, al, bl, dl;
+    fmpz_t m, ex;
+    int ok = 0;
+    fmpz_init(m); fmpz_init(ex);
+    /* exact bisection while b - a > 2^-24 min(|a|, |b|) */
+    for (it = 0; it < 400; it++) {
+        fmpz_sub(m, b, a);
+        fmpz_mul_2exp(m, m, 24);
+        if (fmpz_sgn(a) == fmpz_sgn(b) && fmpz_sgn(a) != 0
+            && fmpz_cmpabs(m, fmpz_cmpabs(a, b) < 0 ? a : b) <= 0)
+            break;
+        fmpz_mul_2exp(a, a, 1);
+        fmpz_mul_2exp(b, b, 1);
+        tt++;
+        fmpz_add(m, a, b);
+        fmpz_fdiv_q_2exp(m, m, 1);
+        if (sign_at_dyadic(g, m, tt, acc, tmp) == sa) fmpz_swap(a, m);
+        else fmpz_swap(b, m);
+    }
+    *ptt = tt;   /* the caller's bisection goes on from (a, b) / 2^tt */
+    arb_init(y); arb_init(dy); arb_init(z);
+    arf_init(lo); arf_init(hi); arf_init(al); arf_init(bl); arf_init(dl);
+    fmpz_set_si(ex, -tt);
+    arf_set_fmpz_2exp(al, a, ex);
+    arf_set_fmpz_2exp(bl, b, ex);
+    arf_add(arb_midref(z), al, bl, ARF_PREC_EXACT, ARF_RND_DOWN);
+    arf_mul_2exp_si(arb_midref(z), arb_midref(z), -1);
+    for (it = 0; it < 12; it++) {
+        arb_fmpz_poly_evaluate_arb(y, g, z, wp);
+        arb_fmpz_poly_evaluate_arb(dy, dg, z, wp);
+        if (arb_contains_zero(dy)) break;
+        arb_div(y, y, dy, wp);
+        arb_sub(z, z, y, wp);
+        mag_zero(arb_radref(z));
+        /* converged: the step is below 2^-(prec+8) |z| */
+        if (arf_cmpabs_2exp_si(arb_midref(y), arf_abs_bound_lt_2exp_si(arb_midref(z)) - prec - 9) < 0)
+            break;
+    }
+    if (!arf_is_zero(arb_midref(z)) && arf_is_finite(arb_midref(z))) {
+        /* lo, hi = z -+ 2^(e - prec - 5), |z| < 2^e: width <= 2^-(prec+3) |z| */
+        e = arf_abs_bound_lt_2exp_si(arb_midref(z));
+        arf_one(dl);
+        arf_mul_2exp_si(dl, dl, e - prec - 5);
+        arf_sub(lo, arb_midref(z), dl, ARF_PREC_EXACT, ARF_RND_DOWN);
+        arf_add(hi, arb_midref(z), dl, ARF_PREC_EXACT, ARF_RND_DOWN);
+        if (arf_cmp(al, lo) <= 0 && arf_cmp(hi, bl) <= 0
+            && arf_sgn(lo) == arf_sgn(hi)
+            && sign_at_arf(g, lo, acc, tmp) == sa && sign_at_arf(g, hi, acc, tmp) == -sa) {
+            arb_set_interval_arf(x, lo, hi, prec + 16);
+            ok = 1;
+        }
+    }
+    arb_clear(y); arb_clear(dy); arb_clear(z);
+    arf_clear(lo); arf_clear(hi); arf_clear(al); arf_clear(bl); arf_clear(dl);
+    fmpz_clear(m); fmpz_clear(ex);
+    return ok;
+}
+
+int rs_region_real_roots(arb_ptr x, const fmpz_poly_t g, slong nreal, slong prec)
+{
+    slong d = fmpz_poly_degree(g), e, i, s, n = 0, nneg = 0, *js = NULL;
+    fmpz *ks = NULL;
+    fmpz_poly_t P, t, dg;
+    fmpz_t a, b, m, acc, tmp, k0;
+    arf_t lo, hi;
+    int ok = 1;
+    /* Fujiwara: |root| <= 2 max_i |c_i / c_d|^(1/(d-i)) < 2^e, with
+     * |c_i / c_d| < 2^(bits c_i - bits c_d + 1) (e may be negative) */
+    e = WORD_MIN;
+    for (i = 0; i < d; i++) {
+        slong num = (slong) fmpz_bits(g->coeffs + i) - (slong) fmpz_bits(g->coeffs + d) + 1, q;
+        if (fmpz_is_zero(g->coeffs + i)) continue;
+        q = num >= 0 ? (num + (d - i) - 1) / (d - i) : -((-num) / (d - i));   /* ceil */
+        if (q + 1 > e) e = q + 1;
+    }
+    fmpz_poly_init(P); fmpz_poly_init(t); fmpz_poly_init(dg);
+    fmpz_poly_derivative(dg, g);
+    fmpz_init(a); fmpz_init(b); fmpz_init(m); fmpz_init(acc); fmpz_init(tmp); fmpz_init(k0);
+    arf_init(lo); arf_init(hi);
+    /* negative roots first (s = -1), then positive: P(x) = g(s 2^e x) on (0, 1) */
+    for (s = -1; s <= 1 && ok; s += 2) {
+        fmpz_poly_set(P, g);   /* (times 2^(-e d) if e < 0) */
+        for (i = 0; i <= d; i++) {
+            fmpz_mul_2exp(P->coeffs + i, P->coeffs + i, (ulong) (e >= 0 ? e * i : -e * (d - i)));
+            if (s < 0 && (i & 1)) fmpz_neg(P->coeffs + i, P->coeffs + i);
+        }
+        ok = isolate_01(&ks, &js, &n, P, k0, 0, t);
+        if (s < 0) nneg = n;
+    }
+    ok = ok && n == nreal;
+    for (i = 0; i < n && ok; i++) {
+        /* the root in (a, b) / 2^tt: the interval (k, k+1) 2^(e-j), of -x
+         * on the negative side; listed ascending (the negative side reversed) */
+        slong r = i < nneg ? nneg - 1 - i : i, tt = js[r] - e;
+        int sa;
+        if (i < nneg) {
+            fmpz_add_ui(a, ks + r, 1);
+            fmpz_neg(a, a);
+        } else {
+            fmpz_set(a, ks + r);
+        }
+        fmpz_add_ui(b, a, 1);
+        if (tt < 0) {
+            fmpz_mul_2exp(a, a, (ulong) -tt);
+            fmpz_mul_2exp(b, b, (ulong) -tt);
+            tt = 0;
+        }
+        sa = sign_at_dyadic(g, a, tt, acc, tmp);
+        /* bisection to 2^-24 relative, then Newton in Arb from the midpoint
+         * and two exact signs around its result (the isolating interval
+         * holds one root: a sign change inside it brackets that root); the
+         * bisection to the end if they do not confirm it */
+        if (newton_bracket(x + i, g, dg, a, b, &tt, sa, prec, acc, tmp))
+            continue;
+        /* until (b - a) 2^(prec+2) <= min(|a|, |b|) (a, b of one sign) */
+        for (;;) {
+            fmpz_sub(m, b, a);
+            fmpz_mul_2exp(m, m, (ulong) (prec + 2));
+            if (fmpz_sgn(a) == fmpz_sgn(b) && fmpz_sgn(a) != 0
+                && fmpz_cmpabs(m, fmpz_cmpabs(a, b) < 0 ? a : b) <= 0)
+                break;
+            if (tt > 4 * prec + 4000) { ok = 0; break; }
+            fmpz_mul_2exp(a, a, 1);
+            fmpz_mul_2exp(b, b, 1);
+            tt++;
+            fmpz_add(m, a, b);
+            fmpz_fdiv_q_2exp(m, m, 1);
+            if (sign_at_dyadic(g, m, tt, acc, tmp) == sa) fmpz_swap(a, m);
+            else fmpz_swap(b, m);
+        }
+        if (!ok) break;
+        fmpz_set_si(tmp, -tt);
+        arf_set_fmpz_2exp(lo, a, tmp);
+        arf_set_fmpz_2exp(hi, b, tmp);
+        arb_set_interval_arf(x + i, lo, hi, prec + 16);
+    }
+    for (i = 0; i < n; i++) fmpz_clear(ks + i);
+    flint_free(ks); flint_free(js);
+    fmpz_poly_clear(P); fmpz_poly_clear(t); fmpz_poly_clear(dg);
+    fmpz_clear(a); fmpz_clear(b); fmpz_clear(m); fmpz_clear(acc); fmpz_clear(tmp); fmpz_clear(k0);
+    arf_clear(lo); arf_clear(hi);
+    return ok;
+}
+
 /* the real roots of the irreducible g (degree >= 2), nreal of them, as
  * alg_refine(., 128) would enclose each: from the memo, or computed (once
  * for all of them) and kept there */
@@ -200,8 +445,7 @@ static arb_srcptr roots_real(const fmpz_poly_t g, slong nreal, arb_ptr tmp)
     if (m != NULL)
         for (i = 0; i < m->n; i++)
             if (m->nreal[i] == nreal && fmpz_poly_equal(m->g + i, g)) return m->x[i];
-    r = _acb_vec_init(d);
-    rs_radius_complex_roots(r, g, 128);
+    r = NULL;
     if (m == NULL) {
         x = tmp;
     } else {
@@ -214,8 +458,14 @@ static arb_srcptr roots_real(const fmpz_poly_t g, slong nreal, arb_ptr tmp)
         m->nreal[m->n] = nreal;
         m->n++;
     }
-    for (i = 0; i < nreal; i++) arb_set(x + i, acb_realref(r + i));
-    _acb_vec_clear(r, d);
+    /* exact isolation; Arb's complex roots (real ones first, ascending: the
+     * same order) if it did not find FLINT's count of real roots */
+    if (!rs_region_real_roots(x, g, nreal, 128)) {
+        r = _acb_vec_init(d);
+        rs_radius_complex_roots(r, g, 128);
+        for (i = 0; i < nreal; i++) arb_set(x + i, acb_realref(r + i));
+        _acb_vec_clear(r, d);
+    }
     return x;
 }
 
@@ -1065,23 +1315,24 @@ static void region_crit_pairs(region_t *rg, fmpz_poly_t u)
 {
     const rs_scheme_struct *s = rg->s;
     slong lv = s->lambda_var, tv = rg->tv;
-    rs_hurwitz_t h;
+    rs_hurwitz_t hown;
+    const rs_hurwitz_struct *h = hown;
     fmpz_mpoly_t qz;
-    int *sign = flint_calloc(s->nvars, sizeof(int));
     fmpz_mpoly_init(qz, s->zctx);
-    rs_hurwitz_init(h);
+    rs_hurwitz_init(hown);
     rs_bilinear_fmpz_mpoly(qz, rg->sqf_t, lv, s->zctx);
+    /* no sign information (NULL: all unknown); the same q as the for-all
+     * projection's: kept in its memo when one is in force */
     if (fmpz_mpoly_degree_si(qz, lv, s->zctx) >= 2
-        && rs_hurwitz_compute(h, qz, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+        && rs_hurwitz_memo_compute(&h, hown, qz, lv, s->zctx, rg->run->err) == RS_OK
         && h->n >= 2) {
         if (fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx))
             rg->d_always = 1;   /* pairs z, -z for every value: circle roots may persist */
         else if (to_upoly(u, h->minors + h->n - 2, tv, s))
             alg_roots_append(&rg->crit, &rg->ncrit, u, CRIT_D);
     }
-    rs_hurwitz_clear(h, s->zctx);
+    rs_hurwitz_clear(hown, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
-    flint_free(sign);
 }
 
 /* The critical values of t: the leading coefficient in lambda vanishes, a
@@ -1525,17 +1776,16 @@ static int forall_point_crit_compute(alg_t **crit, slong *ncrit, region_t *rg, c
         if (!fmpz_mpoly_is_zero(t, s->zctx) && to_upoly(u, t, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_PM1);
     }
     if (ok && fmpz_mpoly_degree_si(sq, lv, s->zctx) >= 2) {
-        rs_hurwitz_t h;
-        int *sign = flint_calloc(s->nvars, sizeof(int));
+        rs_hurwitz_t hown;
+        const rs_hurwitz_struct *h = hown;
         rs_bilinear_fmpz_mpoly(t, sq, lv, s->zctx);
-        rs_hurwitz_init(h);
+        rs_hurwitz_init(hown);
         ok = fmpz_mpoly_degree_si(t, lv, s->zctx) >= 2
-             && rs_hurwitz_compute(h, t, lv, (const rs_sign_t *) sign, s->zctx, rg->run->err) == RS_OK
+             && rs_hurwitz_memo_compute(&h, hown, t, lv, s->zctx, rg->run->err) == RS_OK
              && h->n >= 2 && !fmpz_mpoly_is_zero(h->minors + h->n - 2, s->zctx);
         if (ok && to_upoly(u, h->minors + h->n - 2, tv, s)) alg_roots_append(crit, ncrit, u, CRIT_D);
         if (!ok) rs_error_init(rg->run->err);
-        rs_hurwitz_clear(h, s->zctx);
-        flint_free(sign);
+        rs_hurwitz_clear(hown, s->zctx);
     }
     fmpz_mpoly_clear(f, s->zctx); fmpz_mpoly_clear(sq, s->zctx); fmpz_mpoly_clear(t, s->zctx);
     fmpz_mpoly_factor_clear(fac, s->zctx);

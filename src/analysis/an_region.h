@@ -7,6 +7,7 @@
 #include <arb.h>
 #include <flint/fmpq_poly.h>
 #include "analysis/registry.h"
+#include "recstab/hurwitz.h"
 
 /* a set of irreducible polynomials, each up to sign once */
 typedef struct {
@@ -28,6 +29,12 @@ void *rs_factor_memo_begin(const fmpz_mpoly_ctx_t ctx);
 void rs_factor_memo_end(void *outer);
 /* fmpz_mpoly_factor(fac, f, ctx) through the memo in force (if any) */
 int rs_factor_memo_factor(fmpz_mpoly_factor_t fac, const fmpz_mpoly_t f, const fmpz_mpoly_ctx_t ctx);
+/* rs_hurwitz_compute(own, q, zvar, NULL, ctx, err), or the result for an
+ * equal q kept in the memo in force (successful results only): *hp is own
+ * or the memo's copy (valid until rs_factor_memo_end); own initialised and
+ * cleared by the caller */
+int rs_hurwitz_memo_compute(const rs_hurwitz_struct **hp, rs_hurwitz_t own, const fmpz_mpoly_t q,
+                            slong zvar, const fmpz_mpoly_ctx_t ctx, rs_error_t err);
 /* out += the projection of in with variable u (interval bu) eliminated:
  * leading coefficients (all coefficients where none has one sign on dom),
  * discriminants, pairwise resultants, values at bu's finite ends; u^g
@@ -56,6 +63,11 @@ void rs_alg_refine(rs_alg_t *a, slong prec);
 int rs_alg_cmp(rs_alg_t *a, rs_alg_t *b);
 /* appends the real roots of f (non-zero) to *list */
 void rs_alg_roots_append(rs_alg_t **list, slong *n, const fmpz_poly_t f, int boundary);
+/* x[0..nreal) := the real roots of the irreducible g (degree >= 2, no
+ * rational root), ascending, each in a ball of relative radius <= 2^-(prec+2),
+ * by exact isolation (Descartes' rule on dyadic intervals, then bisection on
+ * exact signs); returns 0 (x not all set) if it does not find nreal roots */
+int rs_region_real_roots(arb_ptr x, const fmpz_poly_t g, slong nreal, slong prec);
 /* sorted in increasing order */
 void rs_alg_sort(rs_alg_t *a, slong n);
 /* "p/q", or {minpoly, root_index, interval, approx} */
