@@ -1990,6 +1990,15 @@ static void region_json(region_t *rg, json_t *o)
             json_object_set_new(iv, "evidence", json_pack("[O]", pieces[i].ev ? pieces[i].ev : json_pack("{s:s}",
                 "failed_at", "an irrational critical value: the claim machinery needs a rational value")));
             json_array_append_new(ivs, iv);
+            if (pieces[i].is_point && pieces[i].lo != NULL) {
+                /* the one-point interval is also an undecided point (issue 13) */
+                json_t *pj = json_object();
+                json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
+                json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
+                json_object_set_new(pj, "status", json_string("undecided"));
+                json_object_set(pj, "evidence", json_object_get(iv, "evidence"));
+                json_array_append_new(pts, pj);
+            }
             i++;
             continue;
         }
