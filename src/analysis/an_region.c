@@ -1987,8 +1987,10 @@ static void region_json(region_t *rg, json_t *o)
             json_object_set_new(iv, "status", json_string("undecided"));
             json_object_set_new(iv, "lo_approx", pieces[i].lo ? json_real(alg_double(pieces[i].lo)) : json_null());
             json_object_set_new(iv, "hi_approx", pieces[i].hi ? json_real(alg_double(pieces[i].hi)) : json_null());
-            json_object_set_new(iv, "evidence", json_pack("[O]", pieces[i].ev ? pieces[i].ev : json_pack("{s:s}",
-                "failed_at", "an irrational critical value: the claim machinery needs a rational value")));
+            /* "o" steals the reference: the piece's own evidence is increfed, a new one is not leaked */
+            json_object_set_new(iv, "evidence", json_pack("[o]", pieces[i].ev ? json_incref(pieces[i].ev)
+                : json_pack("{s:s}", "failed_at", "an irrational critical value: the claim machinery needs a "
+                            "rational value")));
             json_array_append_new(ivs, iv);
             if (pieces[i].is_point && pieces[i].lo != NULL) {
                 /* the one-point interval is also an undecided point (issue 13) */
