@@ -7,6 +7,9 @@
 #include <math.h>
 #include <flint/fmpz_poly_factor.h>
 #include <fmpq_vec.h>
+#include <mpfr.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/positivity.h"
@@ -2045,4 +2048,213 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
     json_decref(at);
     cx_clear(&cx);
     return r;
+}
+
+/* ---- irrational for-all points (issue 13) ----------------------------------- */
+
+/* f(alpha, w0) as a complex ball: f in the variables tv and wv only */
+static void alg_eval2(acb_t out, const fmpz_mpoly_t f, slong tv, slong wv, const acb_t al, const acb_t w0,
+                      const rs_scheme_struct *s, slong prec)
+{
+    slong i, len = fmpz_mpoly_length(f, s->zctx);
+    acb_t t, u;
+    acb_init(t); acb_init(u);
+    acb_zero(out);
+    for (i = 0; i < len; i++) {
+        acb_pow_ui(t, al, fmpz_mpoly_get_term_var_exp_ui(f, i, tv, s->zctx), prec);
+        acb_pow_ui(u, w0, fmpz_mpoly_get_term_var_exp_ui(f, i, wv, s->zctx), prec);
+        acb_mul(t, t, u, prec);
+        acb_mul_fmpz(t, t, f->coeffs + i, prec);
+        acb_add(out, out, t, prec);
+    }
+    acb_clear(t); acb_clear(u);
+}
+
+/* N(w) = Res_t(minpoly(t), f(t, w)) as an fmpz_poly in w; 0 on failure */
+static int alg_norm(fmpz_poly_t N, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
+                    const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t M, R;
+    int ok;
+    fmpz_mpoly_init(M, s->zctx);
+    fmpz_mpoly_init(R, s->zctx);
+    fmpz_mpoly_set_fmpz_poly(M, m, tv, s->zctx);
+    ok = fmpz_mpoly_resultant(R, M, f, tv, s->zctx) && fmpz_mpoly_get_fmpz_poly(N, R, wv, s->zctx);
+    fmpz_mpoly_clear(M, s->zctx);
+    fmpz_mpoly_clear(R, s->zctx);
+    return ok;
+}
+
+/* no w on the range makes f(alpha, w) = 0: its norm has no root there */
+static int alg_nonzero_on(const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv, rs_sign_t sw,
+                          const rs_scheme_struct *s, int *inconsistent)
+{
+    fmpz_poly_t N;
+    fmpz_mpoly_t Nm;
+    rs_sign_t *sg = flint_malloc(s->nvars * sizeof(rs_sign_t));
+    slong k;
+    int ok = 0, inc = 0;
+    fmpz_poly_init(N);
+    fmpz_mpoly_init(Nm, s->zctx);
+    for (k = 0; k < s->nvars; k++) sg[k] = RS_SIGN_UNKNOWN;
+    sg[wv] = sw;
+    if (alg_norm(N, f, m, tv, wv, s) && !fmpz_poly_is_zero(N)) {
+        if (fmpz_poly_degree(N) == 0) {
+            ok = 1;
+        } else {
+            fmpz_mpoly_set_fmpz_poly(Nm, N, wv, s->zctx);
+            ok = rs_positivity_sign_roots(Nm, sg, s->zctx, &inc) != 0;
+            *inconsistent |= inc;
+        }
+    }
+    fmpz_poly_clear(N);
+    fmpz_mpoly_clear(Nm, s->zctx);
+    flint_free(sg);
+    return ok;
+}
+
+/* a w0 on the range with f(alpha, w0) = 0 exactly: a positive (resp. any
+ * real) root of the norm where f at every other conjugate of alpha is
+ * certified non-zero; its approximation into buf */
+static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
+                       rs_sign_t sw, rs_alg_t *a, const rs_scheme_struct *s)
+{
+    fmpz_poly_t N, d;
+    slong nw, nm = fmpz_poly_degree(m), i, k, prec, ours;
+    acb_ptr wr = NULL, ar;
+    acb_t val;
+    int found = 0;
+    fmpz_poly_init(N); fmpz_poly_init(d);
+    if (!alg_norm(N, f, m, tv, wv, s) || fmpz_poly_degree(N) < 1) {
+        fmpz_poly_clear(N); fmpz_poly_clear(d);
+        return 0;
+    }
+    fmpz_poly_derivative(d, N);
+    fmpz_poly_gcd(d, N, d);
+    fmpz_poly_div(N, N, d);                  /* squarefree */
+    nw = fmpz_poly_degree(N);
+    wr = _acb_vec_init(nw);
+    ar = _acb_vec_init(nm);
+    acb_init(val);
+    for (prec = 64; prec <= 1024 && !found; prec *= 2) {
+        arb_fmpz_poly_complex_roots(wr, N, 0, prec);
+        arb_fmpz_poly_complex_roots(ar, m, 0, prec);
+        rs_alg_refine(a, prec);
+        /* alpha among the conjugates: the one real root meeting a's enclosure */
+        ours = -1;
+        for (k = 0; k < nm; k++)
+            if (acb_is_real(ar + k) && arb_overlaps(acb_realref(ar + k), a->x)) {
+                if (ours >= 0) { ours = -2; break; }
+                ours = k;
+            }
+        if (ours < 0) continue;
+        for (i = 0; i < nw && !found; i++) {
+            int others = 1;
+            if (!acb_is_real(wr + i)) continue;
+            if (sw == RS_SIGN_POSITIVE && !arb_is_positive(acb_realref(wr + i))) continue;
+            if (sw == RS_SIGN_NONNEGATIVE && !arb_is_nonnegative(acb_realref(wr + i))) continue;
+            for (k = 0; k < nm && others; k++) {
+                if (k == ours) continue;
+                alg_eval2(val, f, tv, wv, ar + k, wr + i, s, prec);
+                others = !acb_contains_zero(val);
+            }
+            if (others) {
+                char *ws = arb_get_str(acb_realref(wr + i), 15, ARB_STR_NO_RADIUS);
+                found = 1;
+                snprintf(buf, bufsz, "%s", ws);
+                flint_free(ws);
+            }
+        }
+    }
+    acb_clear(val);
+    _acb_vec_clear(wr, nw);
+    _acb_vec_clear(ar, nm);
+    fmpz_poly_clear(N); fmpz_poly_clear(d);
+    return found;
+}
+
+int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs_variant_t *v, slong tv,
+                              rs_alg_t *a)
+{
+    const rs_scheme_struct *s = v->s;
+    const fmpz_mpoly_struct *p = v->cp->p;
+    slong lv = s->lambda_var, k, wv = -1, np = run->c->nparams, n = v->cp->degree;
+    rs_bound_t *b;
+    rs_sign_t sw = RS_SIGN_UNKNOWN;
+    fmpz_mpoly_t lc, disc, g;
+    fmpz_t pm;
+    char wbuf[2][80] = {"", ""};
+    int ok = 1, inc = 0, at[2] = {0, 0};
+    *decided = 0;
+    *ev = NULL;
+    if (a->rational || v->singular || s->complex_char || n < 1) return RS_OK;
+    for (k = 0; k < s->nvars; k++)
+        if (k != lv && k != tv && fmpz_mpoly_degree_si(p, k, s->zctx) > 0) {
+            if (wv >= 0) return RS_OK;     /* one quantified parameter only */
+            wv = k;
+        }
+    if (wv < 0 || wv >= np) return RS_OK;
+    /* w's range: w > 0, w >= 0 or every real (what the root tests take) */
+    b = flint_malloc((np + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(b, np);
+    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(b, &run->c->assume[k], run->c, run->err);
+    if (!b[wv].has_lo && !b[wv].has_hi) sw = RS_SIGN_UNKNOWN;
+    else if (b[wv].has_lo && !b[wv].has_hi && fmpq_is_zero(b[wv].lo))
+        sw = b[wv].lo_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;
+    else ok = 0;
+    /* an assume line tying w to another parameter is not a bound: not this test's business */
+    for (k = 0; k < run->c->nassume && ok; k++) {
+        const rs_cond_t *cd = &run->c->assume[k];
+        slong j, q;
+        int mw = 0, mo = 0;
+        for (j = 0; j < cd->n; j++)
+            for (q = 0; q < np; q++)
+                if (expr_mentions(cd->e[j], run->c->params[q].name)) {
+                    if (q == wv) mw = 1;
+                    else mo = 1;
+                }
+        if (mw && mo) ok = 0;
+    }
+    rs_bounds_clear(b, np);
+    flint_free(b);
+    if (!ok) return RS_OK;
+    fmpz_mpoly_init(lc, s->zctx);
+    fmpz_mpoly_init(disc, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpz_init(pm);
+    rs_charpoly_coeff(lc, p, n, lv, s->zctx);
+    /* bounded: lc(alpha, w) != 0 and all roots simple for every w */
+    ok = alg_nonzero_on(lc, a->minpoly, tv, wv, sw, s, &inc);
+    if (ok && n >= 2)
+        ok = fmpz_mpoly_discriminant(disc, p, lv, s->zctx)
+             && alg_nonzero_on(disc, a->minpoly, tv, wv, sw, s, &inc);
+    /* not stable: lambda = 1 or -1 a root at some w */
+    for (k = 0; k < 2 && ok; k++) {
+        fmpz_set_si(pm, k == 0 ? 1 : -1);
+        fmpz_mpoly_evaluate_one_fmpz(g, p, lv, pm, s->zctx);
+        at[k] = !fmpz_mpoly_is_zero(g, s->zctx)
+                && alg_zero_on(wbuf[k], sizeof wbuf[k], g, a->minpoly, tv, wv, sw, a, s);
+    }
+    if (inc) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    if (ok && (at[0] || at[1]) && !inc) {
+        char *mp = fmpz_poly_get_str_pretty(a->minpoly, s->vars[tv]);
+        char msg[900];
+        *decided = 1;
+        snprintf(msg, sizeof msg, "at %s = the root of %s: every root in the closed unit disc for every %s "
+                 "(the limit of the stable neighbouring cell, p's leading coefficient non-zero); all roots simple "
+                 "(Res_%s(%s, leading coefficient)%s have no root with %s %s: Sturm and Arb counts), so bounded; "
+                 "lambda = %s is a root at %s = %s (a root of Res_%s(%s, p(%s)), the other conjugates certified "
+                 "non-zero there): not stable", s->vars[tv], mp, s->vars[wv], s->vars[tv], mp,
+                 n >= 2 ? " and the discriminant in lambda" : "", s->vars[wv],
+                 sw == RS_SIGN_POSITIVE ? "> 0" : sw == RS_SIGN_NONNEGATIVE ? ">= 0" : "real",
+                 at[0] ? "1" : "-1", s->vars[wv], at[0] ? wbuf[0] : wbuf[1], s->vars[tv], mp,
+                 at[0] ? "lambda = 1" : "lambda = -1");
+        *ev = json_pack("{s:s,s:s,s:s}", "certificate_algebraic", msg, "minpoly", mp, "decided_by", "exact");
+        flint_free(mp);
+    }
+    fmpz_mpoly_clear(lc, s->zctx);
+    fmpz_mpoly_clear(disc, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpz_clear(pm);
+    return RS_OK;
 }

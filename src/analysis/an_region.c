@@ -1665,6 +1665,23 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
         json_decref(ev);
         fmpq_clear(lo); fmpq_clear(hi);
     }
+    /* a stable neighbour: marginal at the point by continuity, simple roots
+     * and a root +-1 there (an_claim.c, exact over Q(value), issue 13) */
+    if (r == RS_OK && !pc->decided && algebraic
+        && ((nb[0]->decided && nb[0]->status == RS_STATUS_STABLE)
+            || (nb[1]->decided && nb[1]->status == RS_STATUS_STABLE))) {
+        int dec = 0;
+        json_t *ev = NULL;
+        r = rs_an_forall_alg_marginal(&dec, &ev, rg->run, rg->v, rg->tv, pc->lo);
+        if (r == RS_OK && dec) {
+            json_decref(pc->ev);
+            pc->ev = ev;
+            ev = NULL;
+            pc->decided = 1;
+            pc->status = RS_STATUS_MARGINAL;
+        }
+        json_decref(ev);
+    }
     return r;
 }
 

@@ -1171,7 +1171,9 @@ def part_forall5(rng, count):
               ends need Polya exponents past the cap (the real roots decide them).
       sqrt:   p = (c w^2 + 1) lambda - x w, c non-square: maximum |x|/(2 sqrt c) at
               w = 1/sqrt c: stable iff x^2 < 4c, unstable iff x^2 > 4c (the ends irrational,
-              probed only at rationals off their isolating intervals).
+              probed only at rationals off their isolating intervals); at the two ends themselves
+              |r| = 1 at w = 1/sqrt c only, a simple root (degree 1 in lambda): marginal, and the
+              region must say so (two one-point intervals, both marginal).
     Every probe must agree; "undecided" is a failure except at the irrational ends."""
     for k in range(count):
         fam = ["minus1", "polya", "sqrt"][k % 3]
@@ -1220,6 +1222,11 @@ def part_forall5(rng, count):
                 continue
             if got != truth(v):
                 bad.append("A=%s: region %s, by hand %s" % (v, got, truth(v)))
+        if fam == "sqrt":
+            pts = [x.get("status") for x in reg.get("intervals", [])
+                   if isinstance(x.get("lo"), dict) and x.get("lo") == x.get("hi")]
+            if pts != ["marginal", "marginal"]:
+                bad.append("irrational ends %s, by hand marginal, marginal" % pts)
         if bad:
             fail("%s: %s; case %s" % (tag, "; ".join(bad[:4]), save_failing(text, tag)))
         else:
