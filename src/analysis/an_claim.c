@@ -2022,8 +2022,10 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
     if (r == RS_OK && counter == NULL)
         pr = claim_prove(run, (claim_kind_t) kind, b, &cx, 0, &split);
     if (r == RS_OK && skipped && (!pr || search == 1))
-        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, &cx);
-    else if (r == RS_OK && counter == NULL && !pr && cx.nhints > 0)
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, NULL);
+    /* only then the failed proof's hints (the plain search's point, e.g. a
+     * singular one, is kept where it finds one) */
+    if (r == RS_OK && counter == NULL && !pr && cx.nhints > 0)
         r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, &cx);
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
     if (cx.inconsistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
