@@ -12,6 +12,7 @@
 #define RECSTAB_POSITIVITY_H
 
 #include <flint/fmpz_mpoly.h>
+#include <flint/fmpq.h>
 #include "recstab/cond.h"   /* rs_sign_t */
 
 #ifdef __cplusplus
@@ -54,6 +55,25 @@ int rs_positivity_sign(const fmpz_mpoly_t poly, const rs_sign_t *sign,
 int rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                               const rs_bound_t *b, slong nbounds,
                               const fmpz_mpoly_ctx_t ctx, slong *power);
+
+/* Exact one-variable test (issue 13: 16 w^2 - 31 w + 16 > 0 for w >= 0 needs
+ * a Polya exponent far past RS_POLYA_MAX_POWER): when poly has exactly one
+ * variable x, 1 if poly > 0 on the range sign[x] gives (x > 0, x >= 0, or
+ * every real x), -1 if < 0 there, 0 otherwise (a root on the range, or
+ * several variables).  The distinct real roots of the squarefree part are
+ * counted twice, by a Sturm sequence (FLINT) and by certified isolation
+ * (Arb); no root on the connected range means the sign of x -> inf.  A
+ * disagreement of the two counts sets *inconsistent (may be NULL) and
+ * returns 0. */
+int rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                             const fmpz_mpoly_ctx_t ctx, int *inconsistent);
+
+/* Where rs_positivity_sign_roots fails for a root on the range: up to cap
+ * rational values of the one variable, on its range, where poly < 0 (one in
+ * each gap between real roots, each checked by exact evaluation), for a
+ * search of counterexamples.  Returns how many were written to pts. */
+slong rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                                    const fmpz_mpoly_ctx_t ctx);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,9 @@
 #include <math.h>
 #include <flint/fmpz_poly_factor.h>
 #include <fmpq_vec.h>
+#include <mpfr.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
 #include "recstab/positivity.h"
@@ -83,12 +86,76 @@ static void subst_poly(fmpq_mpoly_t out, const fmpq_mpoly_t P, slong v, const rs
 /* State of one claim proof: the certificate so far, the random state of the
  * independent re-checks, and the first place a certificate failed (said in
  * the report of an undecided claim). */
+#define CLAIM_MAX_HINTS 12
+
 typedef struct {
     json_t *cert;
     flint_rand_t st;
     char fail[640];
     size_t fail_progress; /* certificate entries when it failed */
+    int inconsistent;     /* two root counts of a one-variable condition disagreed */
+    /* values where a one-variable condition is < 0 (rs_positivity_negative_points
+     * mapped back from s): candidates for the counterexample search */
+    fmpq hint[CLAIM_MAX_HINTS];
+    slong hint_var[CLAIM_MAX_HINTS];
+    slong nhints;
 } claim_cx_t;
+
+static void cx_init(claim_cx_t *cx)
+{
+    slong i;
+    memset(cx->fail, 0, sizeof cx->fail);
+    cx->fail_progress = 0;
+    cx->inconsistent = 0;
+    cx->nhints = 0;
+    for (i = 0; i < CLAIM_MAX_HINTS; i++) fmpq_init(cx->hint + i);
+    cx->cert = json_array();
+    flint_randinit(cx->st);
+}
+
+static void cx_clear(claim_cx_t *cx)
+{
+    slong i;
+    for (i = 0; i < CLAIM_MAX_HINTS; i++) fmpq_clear(cx->hint + i);
+    json_decref(cx->cert);
+    flint_randclear(cx->st);
+}
+
+/* where the one-variable numerator P (in s_v) is < 0: v's values there */
+static void cx_add_hints(claim_cx_t *cx, const fmpq_mpoly_t P, slong v, const rs_bound_t *bv, const int *strict,
+                         const rs_scheme_t s)
+{
+    fmpq pts[4];
+    fmpz_mpoly_t z;
+    rs_sign_t *sg = flint_malloc(s->nvars * sizeof(rs_sign_t));
+    slong n, i, k;
+    for (k = 0; k < s->nvars; k++) sg[k] = strict[k] ? RS_SIGN_POSITIVE : RS_SIGN_NONNEGATIVE;
+    for (i = 0; i < 4; i++) fmpq_init(pts + i);
+    fmpz_mpoly_init(z, s->ctx->zctx);
+    fmpz_mpoly_set(z, P->zpoly, s->ctx->zctx);
+    if (fmpq_sgn(P->content) < 0) fmpz_mpoly_neg(z, z, s->ctx->zctx);
+    n = rs_positivity_negative_points(pts, 4, z, sg, s->ctx->zctx);
+    for (i = 0; i < n && cx->nhints < CLAIM_MAX_HINTS; i++) {
+        fmpq *h = cx->hint + cx->nhints;
+        if (bv->has_lo && bv->has_hi) {              /* (lo + hi s) / (1 + s) */
+            fmpq_t t;
+            fmpq_init(t);
+            fmpq_mul(h, bv->hi, pts + i);
+            fmpq_add(h, h, bv->lo);
+            fmpq_add_si(t, pts + i, 1);
+            fmpq_div(h, h, t);
+            fmpq_clear(t);
+        } else if (bv->has_lo) {
+            fmpq_add(h, bv->lo, pts + i);
+        } else {
+            fmpq_sub(h, bv->hi, pts + i);
+        }
+        cx->hint_var[cx->nhints++] = v;
+    }
+    fmpz_mpoly_clear(z, s->ctx->zctx);
+    for (i = 0; i < 4; i++) fmpq_clear(pts + i);
+    flint_free(sg);
+}
 
 
 static void claim_fail(claim_cx_t *cx, const char *what, const fmpq_mpoly_t c, const rs_scheme_t s)
@@ -115,6 +182,18 @@ static void cert_note(claim_cx_t *cx, const char *text)
 
 #define CLAIM_POLYA_MAX RS_POLYA_MAX_POWER   /* Polya multipliers tried (positivity.h) */
 
+/* the one variable of P, -1 for none or several */
+static slong _single_var_q(const fmpq_mpoly_t P, const rs_scheme_t s)
+{
+    slong v, w = -1;
+    for (v = 0; v < s->nvars; v++)
+        if (fmpq_mpoly_degree_si(P, v, s->ctx) > 0) {
+            if (w >= 0) return -1;
+            w = v;
+        }
+    return w;
+}
+
 /* Certifies P > 0 for every s >= 0 (s_v > 0 where strict[v]).  A monomial
  * factor in strictly positive variables is divided out first: a condition
  * that vanishes at an open end of the interval (mapped to s_v = 0) has such
@@ -124,7 +203,8 @@ static void cert_note(claim_cx_t *cx, const char *text)
  * form, (1 + sum s_v)^N otherwise, after each s_v's exponents are divided by
  * their gcd.  *mono is the monomial divided out ("" if none), *polya the N
  * used (0: coefficients alone). */
-static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s, char **mono, slong *polya)
+static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s, char **mono, slong *polya,
+                          int *by_roots, int *inconsistent)
 {
     fmpq_mpoly_t M;
     slong v;
@@ -165,6 +245,15 @@ static int certify_nonneg(fmpq_mpoly_t P, const int *strict, const rs_scheme_t s
     ok = !fmpq_mpoly_is_zero(P, s->ctx)
          && fmpq_sgn(P->content) * rs_positivity_sign(P->zpoly, sg, s->ctx->zctx, polya) > 0;
     if (!ok || *polya < 0) *polya = 0;
+    /* one variable left: exact, by its real roots (Polya's exponent for
+     * 16 s^2 - 31 s + 16 is far past the cap) */
+    *by_roots = 0;
+    if (!ok && !fmpq_mpoly_is_zero(P, s->ctx)) {
+        int inc = 0;
+        ok = fmpq_sgn(P->content) * rs_positivity_sign_roots(P->zpoly, sg, s->ctx->zctx, &inc) > 0;
+        *by_roots = ok;
+        *inconsistent |= inc;
+    }
     fmpq_mpoly_clear(M, s->ctx);
     flint_free(sg);
     flint_free(e);
@@ -180,7 +269,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
     int *strict = flint_calloc(s->nvars, sizeof(int));
     json_t *sub = json_object();
     slong v, polya = 0;
-    int ok = 1;
+    int ok = 1, by_roots = 0;
     char buf[512], *mono = NULL;
     if (depth > 8) { flint_free(strict); json_decref(sub); return 0; }
     fmpq_mpoly_init(P, s->ctx);
@@ -218,11 +307,15 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         subst_poly(P, P, v, b + v, s);
     }
     if (ok) {
-        ok = certify_nonneg(P, strict, s, &mono, &polya);
+        ok = certify_nonneg(P, strict, s, &mono, &polya, &by_roots, &cx->inconsistent);
+        if (!ok && _single_var_q(P, s) >= 0 && !cx->inconsistent)
+            cx_add_hints(cx, P, _single_var_q(P, s), b + _single_var_q(P, s), strict, s);
         if (!ok) {
             snprintf(buf, sizeof buf, "after mapping the interval%s onto s >= 0 a coefficient stays negative "
-                     "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)",
-                     json_object_size(sub) > 1 ? "s" : "", CLAIM_POLYA_MAX);
+                     "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)%s",
+                     json_object_size(sub) > 1 ? "s" : "", CLAIM_POLYA_MAX,
+                     cx->inconsistent ? "; the Sturm and Arb root counts of the one-variable numerator disagree"
+                     : _single_var_q(P, s) >= 0 ? "; the one-variable numerator has a real root there" : "");
             claim_fail(cx, buf, c, s);
         }
     }
@@ -232,7 +325,23 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         json_object_set_new(e, "condition", json_string(cs));
         json_object_set_new(e, "substitution", sub);
         json_object_set_new(e, "transformed_terms", json_integer(fmpq_mpoly_length(P, s->ctx)));
-        json_object_set_new(e, "all_coefficients_nonnegative", json_true());
+        if (by_roots) {
+            /* the report prints "text"; the fields stay for JSON readers */
+            char *ps = rs_polyfmt_fmpq_mpoly(P, (const char **) s->vars, s->ctx);
+            slong sv = _single_var_q(P, s);
+            char *txt = malloc(strlen(cs) + strlen(ps) + 2 * strlen(s->vars[sv]) + 400);
+            sprintf(txt, "%s > 0 since with %s = %s (%s) the numerator %s has no real root with s_%s %s 0 "
+                    "(Sturm sequence, re-counted by certified isolation) and is positive there", cs,
+                    s->vars[sv], json_string_value(json_object_get(sub, s->vars[sv])),
+                    strict[sv] ? "s > 0" : "every s >= 0", ps, s->vars[sv], strict[sv] ? ">" : ">=");
+            json_object_set_new(e, "text", json_string(txt));
+            json_object_set_new(e, "no_real_root_on_range", json_true());
+            json_object_set_new(e, "root_count", json_string("Sturm (FLINT) and certified isolation (Arb) agree: 0"));
+            free(txt);
+            free(ps);
+        } else {
+            json_object_set_new(e, "all_coefficients_nonnegative", json_true());
+        }
         if (mono != NULL) json_object_set_new(e, "positive_factor", json_string(mono));
         if (polya > 0) json_object_set_new(e, "polya_power", json_integer(polya));
         json_array_append_new(cx->cert, e);
@@ -500,7 +609,7 @@ static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t 
     slong lv = s->lambda_var, i, len, k = 0, dg;
     fmpz_mpoly_t q, qm, G, H, g, t, R;
     ulong *e = flint_malloc(s->nvars * sizeof(ulong));
-    int ok = 1;
+    int ok = 1, split_m1 = 0;
     fmpz_t m1;
     fmpz_mpoly_init(q, s->zctx); fmpz_mpoly_init(qm, s->zctx);
     fmpz_mpoly_init(G, s->zctx); fmpz_mpoly_init(H, s->zctx);
@@ -512,6 +621,7 @@ static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t 
     fmpz_mpoly_set(R, p, s->zctx);
     fmpz_mpoly_evaluate_one_fmpz(t, R, lv, m1, s->zctx);
     if (fmpz_mpoly_is_zero(t, s->zctx)) {
+        split_m1 = 1;
         fmpz_mpoly_gen(t, lv, s->zctx);
         fmpz_mpoly_add_si(t, t, 1, s->zctx);
         fmpz_mpoly_divides(R, R, t, s->zctx);
@@ -534,7 +644,16 @@ static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t 
     }
     fmpz_mpoly_sort_terms(qm, s->zctx);
     if (ok && !fmpz_mpoly_gcd(G, q, qm, s->zctx)) ok = 0;
-    if (ok && fmpz_mpoly_degree_si(G, lv, s->zctx) < 1) ok = 0;   /* nothing on the axis: use `stable` */
+    /* nothing on the axis: use `stable`, unless lambda = -1 was split off
+     * above (a simple root on the circle for every value, the rest stable:
+     * marginal) */
+    if (ok && fmpz_mpoly_degree_si(G, lv, s->zctx) < 1 && split_m1) {
+        cert_note(cx, "p = (lambda + 1) R, R(-1) != 0 on the set: lambda = -1 is a simple circle root for every "
+                      "value; bounded because R is stable there:");
+        ok = prove_hurwitz_stable(run, q, b, s, cx);
+        goto done;
+    }
+    if (ok && fmpz_mpoly_degree_si(G, lv, s->zctx) < 1) ok = 0;
     if (ok) ok = fmpz_mpoly_divides(H, q, G, s->zctx);
     if (ok) ok = prove_hurwitz_stable(run, H, b, s, cx);
     if (ok) {
@@ -560,6 +679,7 @@ static int prove_bounded(rs_run_t *run, const fmpz_mpoly_t p, const rs_scheme_t 
         fmpz_clear(zero);
     }
     if (ok && dg >= 1) ok = prove_negative_simple(run, g, b, s, cx);
+done:
     fmpz_mpoly_clear(q, s->zctx); fmpz_mpoly_clear(qm, s->zctx);
     fmpz_mpoly_clear(G, s->zctx); fmpz_mpoly_clear(H, s->zctx);
     fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(t, s->zctx);
@@ -1244,9 +1364,16 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
  * det_only: nothing is searched (*skipped = 1) when the points would be drawn
  * from st (too many candidates): a search made before the proof must not
  * change the random state the proof's re-checks use. */
+/* x inside the bound b (its ends when closed) */
+static int in_bound(const fmpq_t x, const rs_bound_t *b)
+{
+    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
+    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
+}
+
 static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, const rs_cond_t *conds,
                         slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at,
-                        int det_only, int *skipped)
+                        int det_only, int *skipped, const claim_cx_t *hx)
 {
     rs_variant_t *v;
     const rs_scheme_struct *s;
@@ -1267,6 +1394,14 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
     for (i = 0; i < nparams; i++) {
         ncand[i] = candidates(cand + i, b + i);
         if (!b[i].fixed) special_candidates(cand[i], ncand + i, 40, v, i, b);
+        /* hints: the proof's one-variable conditions are < 0 there; first,
+         * so that the deterministic enumeration reaches them */
+        for (j = 0; hx != NULL && !b[i].fixed && j < hx->nhints && ncand[i] < 40; j++)
+            if (hx->hint_var[j] == i && in_bound(hx->hint + j, b + i)) {
+                fmpq_swap(cand[i] + ncand[i], cand[i]);
+                fmpq_set(cand[i], hx->hint + j);
+                ncand[i]++;
+            }
         if (ncand_total < CLAIM_MAX_POINTS) ncand_total *= ncand[i] > 0 ? ncand[i] : 1;
     }
     pt = _fmpq_vec_init(s->nvars);
@@ -1766,10 +1901,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "analysis", json_string("claim"));
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "claim", json_string(kindw));
-    memset(cx.fail, 0, sizeof cx.fail);
-    cx.fail_progress = 0;
-    cx.cert = json_array();
-    flint_randinit(cx.st);
+    cx_init(&cx);
 
     /* a union of sets: refuted by a point of any part, proved when every part is */
     for (i = 0; i < dnf.nparts && r == RS_OK && counter == NULL; i++) {
@@ -1782,7 +1914,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
             for (k = 0; k < nparams; k++) empty |= rs_bound_empty(b + k);
             if (empty) cert_note(&cx, "an empty set (the bounds of a parameter exclude each other): nothing to prove");
             if (!empty) {
-                r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at, 0, NULL);
+                r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at, 0, NULL, NULL);
                 if (r == RS_OK && (counter != NULL || proved)) {
                     int pr;
                     if (dnf.nparts > 1) {
@@ -1795,6 +1927,10 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
                      * and the exact point verdict disagree */
                     pr = claim_prove(run, kind, b, &cx, 0, &split);
                     if (counter != NULL && pr) inconsistent = 1;
+                    /* the failed proof's hints: points its one-variable conditions violate */
+                    if (counter == NULL && !pr && cx.nhints > 0)
+                        r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at, 0,
+                                         NULL, &cx);
                     proved = proved && pr;
                 }
             }
@@ -1803,6 +1939,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
         flint_free(b);
     }
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
+    if (cx.inconsistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
     tried = kind == CLAIM_UNSTABLE
             ? "a coefficient of the bilinear polynomial q(z) of sign opposite to its leading one on the whole "
               "set (then a root has Re z > 0, |lambda| > 1) and p's leading coefficient non-zero; closed interval "
@@ -1859,10 +1996,9 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
     } else {
         json_decref(o);
     }
-    json_decref(cx.cert);
     json_decref(counter);
     json_decref(at);
-    flint_randclear(cx.st);
+    cx_clear(&cx);
     return r;
 }
 
@@ -1880,17 +2016,19 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
     json_t *counter = NULL, *at = NULL;
     slong ntried = 0;
     int r = RS_OK, split = 0, pr = 0, skipped = 1;
-    memset(cx.fail, 0, sizeof cx.fail);
-    cx.fail_progress = 0;
-    cx.cert = json_array();
-    flint_randinit(cx.st);
+    cx_init(&cx);
     if (search == 2)
-        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 1, &skipped);
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 1, &skipped, NULL);
     if (r == RS_OK && counter == NULL)
         pr = claim_prove(run, (claim_kind_t) kind, b, &cx, 0, &split);
     if (r == RS_OK && skipped && (!pr || search == 1))
-        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL);
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, NULL);
+    /* only then the failed proof's hints (the plain search's point, e.g. a
+     * singular one, is kept where it finds one) */
+    if (r == RS_OK && counter == NULL && !pr && cx.nhints > 0)
+        r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, &cx);
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
+    if (cx.inconsistent) run->outcome |= RS_OUTCOME_INCONSISTENT;
     *ev = NULL;
     *verdict = 0;
     if (r == RS_OK) {
@@ -1908,9 +2046,217 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
                             "points_checked", (json_int_t) ntried);
         }
     }
-    json_decref(cx.cert);
     json_decref(counter);
     json_decref(at);
-    flint_randclear(cx.st);
+    cx_clear(&cx);
     return r;
+}
+
+/* ---- irrational for-all points (issue 13) ----------------------------------- */
+
+/* f(alpha, w0) as a complex ball: f in the variables tv and wv only */
+static void alg_eval2(acb_t out, const fmpz_mpoly_t f, slong tv, slong wv, const acb_t al, const acb_t w0,
+                      const rs_scheme_struct *s, slong prec)
+{
+    slong i, len = fmpz_mpoly_length(f, s->zctx);
+    acb_t t, u;
+    acb_init(t); acb_init(u);
+    acb_zero(out);
+    for (i = 0; i < len; i++) {
+        acb_pow_ui(t, al, fmpz_mpoly_get_term_var_exp_ui(f, i, tv, s->zctx), prec);
+        acb_pow_ui(u, w0, fmpz_mpoly_get_term_var_exp_ui(f, i, wv, s->zctx), prec);
+        acb_mul(t, t, u, prec);
+        acb_mul_fmpz(t, t, f->coeffs + i, prec);
+        acb_add(out, out, t, prec);
+    }
+    acb_clear(t); acb_clear(u);
+}
+
+/* N(w) = Res_t(minpoly(t), f(t, w)) as an fmpz_poly in w; 0 on failure */
+static int alg_norm(fmpz_poly_t N, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
+                    const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t M, R;
+    int ok;
+    fmpz_mpoly_init(M, s->zctx);
+    fmpz_mpoly_init(R, s->zctx);
+    fmpz_mpoly_set_fmpz_poly(M, m, tv, s->zctx);
+    ok = fmpz_mpoly_resultant(R, M, f, tv, s->zctx) && fmpz_mpoly_get_fmpz_poly(N, R, wv, s->zctx);
+    fmpz_mpoly_clear(M, s->zctx);
+    fmpz_mpoly_clear(R, s->zctx);
+    return ok;
+}
+
+/* no w on the range makes f(alpha, w) = 0: its norm has no root there */
+static int alg_nonzero_on(const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv, rs_sign_t sw,
+                          const rs_scheme_struct *s, int *inconsistent)
+{
+    fmpz_poly_t N;
+    fmpz_mpoly_t Nm;
+    rs_sign_t *sg = flint_malloc(s->nvars * sizeof(rs_sign_t));
+    slong k;
+    int ok = 0, inc = 0;
+    fmpz_poly_init(N);
+    fmpz_mpoly_init(Nm, s->zctx);
+    for (k = 0; k < s->nvars; k++) sg[k] = RS_SIGN_UNKNOWN;
+    sg[wv] = sw;
+    if (alg_norm(N, f, m, tv, wv, s) && !fmpz_poly_is_zero(N)) {
+        if (fmpz_poly_degree(N) == 0) {
+            ok = 1;
+        } else {
+            fmpz_mpoly_set_fmpz_poly(Nm, N, wv, s->zctx);
+            ok = rs_positivity_sign_roots(Nm, sg, s->zctx, &inc) != 0;
+            *inconsistent |= inc;
+        }
+    }
+    fmpz_poly_clear(N);
+    fmpz_mpoly_clear(Nm, s->zctx);
+    flint_free(sg);
+    return ok;
+}
+
+/* a w0 on the range with f(alpha, w0) = 0 exactly: a positive (resp. any
+ * real) root of the norm where f at every other conjugate of alpha is
+ * certified non-zero; its approximation into buf */
+static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
+                       rs_sign_t sw, rs_alg_t *a, const rs_scheme_struct *s)
+{
+    fmpz_poly_t N, d;
+    slong nw, nm = fmpz_poly_degree(m), i, k, prec, ours;
+    acb_ptr wr = NULL, ar;
+    acb_t val;
+    int found = 0;
+    fmpz_poly_init(N); fmpz_poly_init(d);
+    if (!alg_norm(N, f, m, tv, wv, s) || fmpz_poly_degree(N) < 1) {
+        fmpz_poly_clear(N); fmpz_poly_clear(d);
+        return 0;
+    }
+    fmpz_poly_derivative(d, N);
+    fmpz_poly_gcd(d, N, d);
+    fmpz_poly_div(N, N, d);                  /* squarefree */
+    nw = fmpz_poly_degree(N);
+    wr = _acb_vec_init(nw);
+    ar = _acb_vec_init(nm);
+    acb_init(val);
+    for (prec = 64; prec <= 1024 && !found; prec *= 2) {
+        arb_fmpz_poly_complex_roots(wr, N, 0, prec);
+        arb_fmpz_poly_complex_roots(ar, m, 0, prec);
+        rs_alg_refine(a, prec);
+        /* alpha among the conjugates: the one real root meeting a's enclosure */
+        ours = -1;
+        for (k = 0; k < nm; k++)
+            if (acb_is_real(ar + k) && arb_overlaps(acb_realref(ar + k), a->x)) {
+                if (ours >= 0) { ours = -2; break; }
+                ours = k;
+            }
+        if (ours < 0) continue;
+        for (i = 0; i < nw && !found; i++) {
+            int others = 1;
+            if (!acb_is_real(wr + i)) continue;
+            if (sw == RS_SIGN_POSITIVE && !arb_is_positive(acb_realref(wr + i))) continue;
+            if (sw == RS_SIGN_NONNEGATIVE && !arb_is_nonnegative(acb_realref(wr + i))) continue;
+            for (k = 0; k < nm && others; k++) {
+                if (k == ours) continue;
+                alg_eval2(val, f, tv, wv, ar + k, wr + i, s, prec);
+                others = !acb_contains_zero(val);
+            }
+            if (others) {
+                char *ws = arb_get_str(acb_realref(wr + i), 15, ARB_STR_NO_RADIUS);
+                found = 1;
+                snprintf(buf, bufsz, "%s", ws);
+                flint_free(ws);
+            }
+        }
+    }
+    acb_clear(val);
+    _acb_vec_clear(wr, nw);
+    _acb_vec_clear(ar, nm);
+    fmpz_poly_clear(N); fmpz_poly_clear(d);
+    return found;
+}
+
+int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs_variant_t *v, slong tv,
+                              rs_alg_t *a)
+{
+    const rs_scheme_struct *s = v->s;
+    const fmpz_mpoly_struct *p = v->cp->p;
+    slong lv = s->lambda_var, k, wv = -1, np = run->c->nparams, n = v->cp->degree;
+    rs_bound_t *b;
+    rs_sign_t sw = RS_SIGN_UNKNOWN;
+    fmpz_mpoly_t lc, disc, g;
+    fmpz_t pm;
+    char wbuf[2][80] = {"", ""};
+    int ok = 1, inc = 0, at[2] = {0, 0};
+    *decided = 0;
+    *ev = NULL;
+    if (a->rational || v->singular || s->complex_char || n < 1) return RS_OK;
+    for (k = 0; k < s->nvars; k++)
+        if (k != lv && k != tv && fmpz_mpoly_degree_si(p, k, s->zctx) > 0) {
+            if (wv >= 0) return RS_OK;     /* one quantified parameter only */
+            wv = k;
+        }
+    if (wv < 0 || wv >= np) return RS_OK;
+    /* w's range: w > 0, w >= 0 or every real (what the root tests take) */
+    b = flint_malloc((np + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(b, np);
+    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(b, &run->c->assume[k], run->c, run->err);
+    if (!b[wv].has_lo && !b[wv].has_hi) sw = RS_SIGN_UNKNOWN;
+    else if (b[wv].has_lo && !b[wv].has_hi && fmpq_is_zero(b[wv].lo))
+        sw = b[wv].lo_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;
+    else ok = 0;
+    /* an assume line tying w to another parameter is not a bound: not this test's business */
+    for (k = 0; k < run->c->nassume && ok; k++) {
+        const rs_cond_t *cd = &run->c->assume[k];
+        slong j, q;
+        int mw = 0, mo = 0;
+        for (j = 0; j < cd->n; j++)
+            for (q = 0; q < np; q++)
+                if (expr_mentions(cd->e[j], run->c->params[q].name)) {
+                    if (q == wv) mw = 1;
+                    else mo = 1;
+                }
+        if (mw && mo) ok = 0;
+    }
+    rs_bounds_clear(b, np);
+    flint_free(b);
+    if (!ok) return RS_OK;
+    fmpz_mpoly_init(lc, s->zctx);
+    fmpz_mpoly_init(disc, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    fmpz_init(pm);
+    rs_charpoly_coeff(lc, p, n, lv, s->zctx);
+    /* bounded: lc(alpha, w) != 0 and all roots simple for every w */
+    ok = alg_nonzero_on(lc, a->minpoly, tv, wv, sw, s, &inc);
+    if (ok && n >= 2)
+        ok = fmpz_mpoly_discriminant(disc, p, lv, s->zctx)
+             && alg_nonzero_on(disc, a->minpoly, tv, wv, sw, s, &inc);
+    /* not stable: lambda = 1 or -1 a root at some w */
+    for (k = 0; k < 2 && ok; k++) {
+        fmpz_set_si(pm, k == 0 ? 1 : -1);
+        fmpz_mpoly_evaluate_one_fmpz(g, p, lv, pm, s->zctx);
+        at[k] = !fmpz_mpoly_is_zero(g, s->zctx)
+                && alg_zero_on(wbuf[k], sizeof wbuf[k], g, a->minpoly, tv, wv, sw, a, s);
+    }
+    if (inc) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    if (ok && (at[0] || at[1]) && !inc) {
+        char *mp = fmpz_poly_get_str_pretty(a->minpoly, s->vars[tv]);
+        char msg[900];
+        *decided = 1;
+        snprintf(msg, sizeof msg, "at %s = the root of %s: every root in the closed unit disc for every %s "
+                 "(the limit of the stable neighbouring cell, p's leading coefficient non-zero); all roots simple "
+                 "(Res_%s(%s, leading coefficient)%s have no root with %s %s: Sturm and Arb counts), so bounded; "
+                 "lambda = %s is a root at %s = %s (a root of Res_%s(%s, p(%s)), the other conjugates certified "
+                 "non-zero there): not stable", s->vars[tv], mp, s->vars[wv], s->vars[tv], mp,
+                 n >= 2 ? " and the discriminant in lambda" : "", s->vars[wv],
+                 sw == RS_SIGN_POSITIVE ? "> 0" : sw == RS_SIGN_NONNEGATIVE ? ">= 0" : "real",
+                 at[0] ? "1" : "-1", s->vars[wv], at[0] ? wbuf[0] : wbuf[1], s->vars[tv], mp,
+                 at[0] ? "lambda = 1" : "lambda = -1");
+        *ev = json_pack("{s:s,s:s,s:s}", "certificate_algebraic", msg, "minpoly", mp, "decided_by", "exact");
+        flint_free(mp);
+    }
+    fmpz_mpoly_clear(lc, s->zctx);
+    fmpz_mpoly_clear(disc, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx);
+    fmpz_clear(pm);
+    return RS_OK;
 }

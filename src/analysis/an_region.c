@@ -1915,6 +1915,23 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
         json_decref(ev);
         fmpq_clear(lo); fmpq_clear(hi);
     }
+    /* a stable neighbour: marginal at the point by continuity, simple roots
+     * and a root +-1 there (an_claim.c, exact over Q(value), issue 13) */
+    if (r == RS_OK && !pc->decided && algebraic
+        && ((nb[0]->decided && nb[0]->status == RS_STATUS_STABLE)
+            || (nb[1]->decided && nb[1]->status == RS_STATUS_STABLE))) {
+        int dec = 0;
+        json_t *ev = NULL;
+        r = rs_an_forall_alg_marginal(&dec, &ev, rg->run, rg->v, rg->tv, pc->lo);
+        if (r == RS_OK && dec) {
+            json_decref(pc->ev);
+            pc->ev = ev;
+            ev = NULL;
+            pc->decided = 1;
+            pc->status = RS_STATUS_MARGINAL;
+        }
+        json_decref(ev);
+    }
     return r;
 }
 
@@ -2237,9 +2254,20 @@ static void region_json(region_t *rg, json_t *o)
             json_object_set_new(iv, "status", json_string("undecided"));
             json_object_set_new(iv, "lo_approx", pieces[i].lo ? json_real(alg_double(pieces[i].lo)) : json_null());
             json_object_set_new(iv, "hi_approx", pieces[i].hi ? json_real(alg_double(pieces[i].hi)) : json_null());
-            json_object_set_new(iv, "evidence", json_pack("[O]", pieces[i].ev ? pieces[i].ev : json_pack("{s:s}",
-                "failed_at", "an irrational critical value: the claim machinery needs a rational value")));
+            /* "o" steals the reference: the piece's own evidence is increfed, a new one is not leaked */
+            json_object_set_new(iv, "evidence", json_pack("[o]", pieces[i].ev ? json_incref(pieces[i].ev)
+                : json_pack("{s:s}", "failed_at", "an irrational critical value: the claim machinery needs a "
+                            "rational value")));
             json_array_append_new(ivs, iv);
+            if (pieces[i].is_point && pieces[i].lo != NULL) {
+                /* the one-point interval is also an undecided point (issue 13) */
+                json_t *pj = json_object();
+                json_object_set_new(pj, "value", alg_json(pieces[i].lo, name));
+                json_object_set_new(pj, "approx", json_real(alg_double(pieces[i].lo)));
+                json_object_set_new(pj, "status", json_string("undecided"));
+                json_object_set(pj, "evidence", json_object_get(iv, "evidence"));
+                json_array_append_new(pts, pj);
+            }
             i++;
             continue;
         }

@@ -102,7 +102,20 @@ int rs_an_region_forall_on(json_t **out, rs_run_t *run, const rs_request_t *q, s
  * decided over Q(i) and by the real gcd route); a claim's certificate. */
 int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong tv, const rs_bound_t *dom_tv);
 
-/* an_region_cad.c: region N1, N2 [at ...] (req->u.region.twod) */
+/* an_claim.c (issue 13): the for-all status at an irrational value a of tv
+ * (one quantified parameter w left in v's p, w > 0, w >= 0 or free) when a
+ * neighbouring cell is stable for every w.  Continuity gives every root in
+ * the closed disc at a; bounded when no w on its range makes p's leading
+ * coefficient or discriminant in lambda vanish at a (the norms
+ * Res_t(minpoly, .) in w have no root there: Sturm and Arb counts); marginal
+ * when moreover p(a, w0, +-1) = 0 at a root w0 of the norm Res_t(minpoly,
+ * p(t, w, +-1)) (exact: that norm is the product over a's conjugates, the
+ * others certified non-zero at w0 by Arb).  *decided 0 when this does not
+ * apply or does not settle it; *ev the evidence. */
+int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs_variant_t *v, slong tv,
+                              rs_alg_t *a);
+
+
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
 
 /* region re(z), im(z) (an_complex.c): the plane of z = x + i y from given

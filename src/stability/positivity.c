@@ -13,6 +13,10 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz_vec.h>
 #include <ulong_extras.h>
+#include <flint/fmpz_poly.h>
+#include <mpfr.h>
+#include <acb.h>
+#include <arb_fmpz_poly.h>
 #include "recstab/positivity.h"
 
 /* Classify term i with its coefficient sign replaced by +1: 2 if the
@@ -336,4 +340,188 @@ rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     fmpz_mpoly_clear(B, ctx);
     flint_free(sg);
     return res;
+}
+
+/* The index of the one variable poly has, -1 for none or several. */
+static slong _single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx)
+{
+    slong v, nvars = fmpz_mpoly_ctx_nvars(ctx), w = -1;
+    for (v = 0; v < nvars; v++)
+        if (fmpz_mpoly_degree_si(poly, v, ctx) > 0) {
+            if (w >= 0)
+                return -1;
+            w = v;
+        }
+    return w;
+}
+
+/* Real roots of the squarefree g (g(0) != 0) counted by certified
+ * isolation (arb_fmpz_poly_complex_roots: disjoint enclosures, the real
+ * roots first with an exactly zero imaginary part): *npos > 0, *nneg < 0;
+ * 0 if the precision cap left a real root's sign open. */
+static int _roots_arb(slong *nneg, slong *npos, const fmpz_poly_t g)
+{
+    slong n = fmpz_poly_degree(g), prec, i;
+    acb_ptr r;
+    int done = 0;
+    *nneg = *npos = 0;
+    if (n < 1)
+        return 1;
+    r = _acb_vec_init(n);
+    for (prec = 64; prec <= 4096 && !done; prec *= 4) {
+        done = 1;
+        *nneg = *npos = 0;
+        arb_fmpz_poly_complex_roots(r, g, 0, prec);
+        for (i = 0; i < n && done; i++) {
+            if (!acb_is_real(r + i))
+                continue;
+            if (arb_is_positive(acb_realref(r + i)))
+                (*npos)++;
+            else if (arb_is_negative(acb_realref(r + i)))
+                (*nneg)++;
+            else
+                done = 0;
+        }
+    }
+    _acb_vec_clear(r, n);
+    return done;
+}
+
+int
+rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                         const fmpz_mpoly_ctx_t ctx, int *inconsistent)
+{
+    slong v = _single_var(poly, ctx), k, nneg = 0, npos = 0, an = 0, ap = 0, n;
+    rs_sign_t sv;
+    fmpz_poly_t u, g, d;
+    int res = 0;
+
+    if (inconsistent != NULL)
+        *inconsistent = 0;
+    if (v < 0)
+        return 0;
+    sv = sign == NULL ? RS_SIGN_UNKNOWN : sign[v];
+    fmpz_poly_init(u);
+    fmpz_poly_init(g);
+    fmpz_poly_init(d);
+    if (!fmpz_mpoly_get_fmpz_poly(u, poly, v, ctx))
+        goto done;
+    /* u = x^k g, g(0) != 0: a root at 0 is admissible unless x > 0 */
+    for (k = 0; k < u->length && fmpz_is_zero(u->coeffs + k); k++)
+        ;
+    if (k > 0 && sv != RS_SIGN_POSITIVE)
+        goto done;
+    fmpz_poly_shift_right(g, u, k);
+    /* the squarefree part: the distinct roots are those of g */
+    fmpz_poly_derivative(d, g);
+    if (fmpz_poly_degree(g) >= 1) {
+        fmpz_poly_gcd(d, g, d);
+        fmpz_poly_div(g, g, d);
+    }
+    if (fmpz_poly_degree(g) >= 1)
+        _fmpz_poly_num_real_roots_sturm(&nneg, &npos, g->coeffs, g->length);
+    /* the second count (THE cross-check): certified isolation */
+    if (!_roots_arb(&an, &ap, g))
+        goto done;
+    if (an != nneg || ap != npos) {
+        if (inconsistent != NULL)
+            *inconsistent = 1;
+        goto done;
+    }
+    n = npos + (sv == RS_SIGN_UNKNOWN ? nneg : 0);
+    /* no root on the range (connected): one sign there, that of x -> inf */
+    if (n == 0)
+        res = fmpz_sgn(u->coeffs + u->length - 1);
+done:
+    fmpz_poly_clear(u);
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(d);
+    return res;
+}
+
+slong
+rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
+                              const fmpz_mpoly_ctx_t ctx)
+{
+    slong v = _single_var(poly, ctx), n, i, nr = 0, npts = 0, prec;
+    fmpz_poly_t u, g, d;
+    acb_ptr r = NULL;
+    arb_ptr re = NULL;
+    fmpq_t x, y;
+    int pos = sign != NULL && v >= 0 && (sign[v] == RS_SIGN_POSITIVE || sign[v] == RS_SIGN_NONNEGATIVE);
+
+    if (v < 0 || cap <= 0)
+        return 0;
+    fmpz_poly_init(u);
+    fmpz_poly_init(g);
+    fmpz_poly_init(d);
+    fmpq_init(x);
+    fmpq_init(y);
+    if (!fmpz_mpoly_get_fmpz_poly(u, poly, v, ctx) || fmpz_poly_degree(u) < 1)
+        goto done;
+    fmpz_poly_derivative(d, u);
+    fmpz_poly_gcd(d, u, d);
+    fmpz_poly_div(g, u, d);
+    n = fmpz_poly_degree(g);
+    r = _acb_vec_init(n);
+    re = _arb_vec_init(n + 2);
+    /* the real roots, isolated (disjoint balls, ascending) */
+    for (prec = 64; prec <= 1024; prec *= 4) {
+        int sep = 1;
+        arb_fmpz_poly_complex_roots(r, g, 0, prec);
+        for (nr = 0; nr < n && acb_is_real(r + nr); nr++)
+            arb_set(re + nr, acb_realref(r + nr));
+        for (i = 0; i + 1 < nr; i++)
+            sep &= arb_lt(re + i, re + i + 1);
+        if (sep)
+            break;
+        nr = 0;
+    }
+    /* one rational in each gap between roots and beyond them: the points
+     * where poly < 0 (exact evaluation) are kept */
+    for (i = 0; i <= nr && npts < cap; i++) {
+        arf_t a;
+        arf_init(a);
+        if (nr == 0)
+            fmpq_one(x);
+        else if (i == 0) {
+            arb_get_lbound_arf(a, re, prec);
+            arf_get_fmpq(x, a);
+            fmpq_sub_si(x, x, 1);
+        } else if (i == nr) {
+            arb_get_ubound_arf(a, re + nr - 1, prec);
+            arf_get_fmpq(x, a);
+            fmpq_add_si(x, x, 1);
+        } else {
+            arb_get_ubound_arf(a, re + i - 1, prec);
+            arf_get_fmpq(x, a);
+            arb_get_lbound_arf(a, re + i, prec);
+            arf_get_fmpq(y, a);
+            fmpq_add(x, x, y);
+            fmpq_div_2exp(x, x, 1);
+        }
+        arf_clear(a);
+        if (pos && fmpq_sgn(x) <= 0)
+            continue;
+        fmpz_poly_evaluate_fmpq(y, u, x);
+        if (fmpq_sgn(y) < 0)
+            fmpq_set(pts + npts++, x);
+    }
+    if (npts == 0 && pos) {
+        fmpq_one(x);
+        fmpz_poly_evaluate_fmpq(y, u, x);
+        if (fmpq_sgn(y) < 0)
+            fmpq_set(pts + npts++, x);
+    }
+done:
+    if (r != NULL) {
+        _acb_vec_clear(r, fmpz_poly_degree(g));
+        _arb_vec_clear(re, fmpz_poly_degree(g) + 2);
+    }
+    fmpz_poly_clear(u);
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(d);
+    fmpq_clear(x);
+    fmpq_clear(y);
+    return npts;
 }

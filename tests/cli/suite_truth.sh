@@ -48,6 +48,25 @@ if command -v jq >/dev/null 2>&1; then
     check "forall planted: intervals" \
         '[["unstable",null,"-2",false,true],["stable","-2","2",false,false],["marginal","2","2",true,true],["unstable","2",null,false,false]]' \
         "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .lo_closed, .hi_closed])')"
+    # issue 13 undecided-where-decidable (h-forall5), each expected value by hand in the case's comment
+    IV='.intervals | map([.status, (.lo|if type=="object" then .minpoly else . end), (.hi|if type=="object" then .minpoly else . end), .lo_closed, .hi_closed])'
+    C=cases/truth/forall-minus-one-every-w.case
+    check "forall -1 for every w: intervals (was undecided on [-1, 1])" \
+        '[["unstable",null,"-1",false,false],["marginal","-1","1",true,true],["unstable","1",null,false,false]]' \
+        "$(jfield $C 0 "$IV")"
+    check "forall -1 for every w: claim bounded (was undecided)" '"proved"' "$(jfield $C 1 .status)"
+    C=cases/truth/forall-double-minus-one-every-w.case
+    check "forall double -1: unstable everywhere" '[["unstable",null,null,false,false]]' "$(jfield $C 0 "$IV")"
+    C=cases/truth/forall-polya-cap.case
+    check "forall past Polya's cap: intervals (was undecided on (31/32, 33/32))" \
+        '[["unstable",null,"-33/32",false,false],["marginal","-33/32","-33/32",true,true],["stable","-33/32","33/32",false,false],["marginal","33/32","33/32",true,true],["unstable","33/32",null,false,false]]' \
+        "$(jfield $C 0 "$IV")"
+    check "forall past Polya's cap: claim at A = 1 by real roots" '["proved",true]' \
+        "$(jfield $C 2 '| [.status, (.certificate | map(.no_real_root_on_range == true) | any)]')"
+    C=cases/truth/forall-sqrt8-edge.case
+    check "forall +-sqrt 8: unstable sides (were undecided), the points marginal over Q(sqrt 8) (were undecided)" \
+        '[["unstable","marginal","stable","marginal","unstable"],0,"A^2 - 8"]' \
+        "$(jfield $C 0 '| [(.intervals | map(.status)), (.undecided_points | length), .intervals[1].lo.minpoly]')"
     # symbolic Routh array with q's leading coefficient negative where stable (h-truth2):
     # the column by hand (3a + 6, 4a + 2, 4a^2 + 2a); the note's criterion was "one sign"
     C=cases/truth/routh-negative-lead.case
@@ -76,7 +95,7 @@ fi
 # the random planted parts (tests/truth/truth.py PART SEED COUNT)
 if command -v python3 >/dev/null 2>&1; then
     for spec in "qi 1 20" "jordan 1 12" "jordan-param 1 3" "pade 1 24" "lmm 1 6" \
-                "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8"; do
+                "region2 1 6" "sweep 1 6" "forall 1 8" "qi-region 1 10" "zregion 1 8" "claimreg 1 8" "forall5 1 9"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done

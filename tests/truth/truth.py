@@ -29,6 +29,8 @@ rational arithmetic with fractions.Fraction only, no recstab code):
           a m u (u on the circle, m rational) and planted fixed roots vs the exact truth.
   zregion `region re(z), im(z)` of Q(z) lambda - P(z) vs |P(z)|^2 < |Q(z)|^2 at Gaussian
           rational z, including points on the boundary (roots of P - e Q, |e| = 1).
+  forall5 `region A for all [w]` of families undecided before h-forall5: a root -1 for every w,
+          conditions past Polya's cap, irrational ends (see part_forall5).
   claimreg  `claim stable when` each rational interval of `region a`: never refuted on a
           stable interval, refuted on an unstable one; the own verdict at its midpoint.
 
@@ -1155,8 +1157,85 @@ def part_claimreg(rng, count):
             ok("%s: %d intervals, claims agree" % (tag, len(claims)))
 
 
+# ---------------------------------------------------------------- part forall5
+def part_forall5(rng, count):
+    """`region A for all [w]`, w > 0, families that were undecided where decidable (h-forall5);
+    x = a A + b (random rationals), truth by hand:
+      minus1: p = (lambda + 1)^k ((w + 2) lambda^2 + x w lambda + 1).  Jury for the quadratic
+              (|1| < w + 2, |x| w < w + 3 for every w > 0 iff |x| <= 1; R(-1) = (1 - x) w + 3 > 0
+              there): k = 1 marginal iff |x| <= 1, else unstable; k = 2 (a double circle root
+              of a char line) unstable for every A.
+      polya:  p = (c w^2 + e w + c) lambda - x w, c in 8..20, e in {1, 2}: the root's modulus
+              |x| w/(c w^2 + e w + c) has its maximum |x|/(2c + e) at w = 1 only: stable iff
+              |x| < 2c + e, marginal iff |x| = 2c + e, unstable beyond; conditions near the
+              ends need Polya exponents past the cap (the real roots decide them).
+      sqrt:   p = (c w^2 + 1) lambda - x w, c non-square: maximum |x|/(2 sqrt c) at
+              w = 1/sqrt c: stable iff x^2 < 4c, unstable iff x^2 > 4c (the ends irrational,
+              probed only at rationals off their isolating intervals); at the two ends themselves
+              |r| = 1 at w = 1/sqrt c only, a simple root (degree 1 in lambda): marginal, and the
+              region must say so (two one-point intervals, both marginal).
+    Every probe must agree; "undecided" is a failure except at the irrational ends."""
+    for k in range(count):
+        fam = ["minus1", "polya", "sqrt"][k % 3]
+        a = rng.choice([F(1), F(-1), F(1, 2), F(2), F(-3, 2)])
+        b = rand_frac(rng, -1, 1, (1, 2))
+        if fam == "minus1":
+            mult = rng.choice([1, 1, 2])
+            charp = "(lambda + 1)^%d*((w + 2)*lambda^2 + (%s*A + %s)*w*lambda + 1)" % (mult, a, b)
+
+            def truth(A, mult=mult, a=a, b=b):
+                x = a * A + b
+                return "unstable" if mult == 2 or abs(x) > 1 else "marginal"
+            ends = [F(-1), F(1)]
+        elif fam == "polya":
+            c, e = rng.randint(8, 20), rng.choice([1, 2])
+            charp = "(%d*w^2 + %d*w + %d)*lambda - (%s*A + %s)*w" % (c, e, c, a, b)
+
+            def truth(A, c=c, e=e, a=a, b=b):
+                x = abs(a * A + b)
+                return "stable" if x < 2 * c + e else "marginal" if x == 2 * c + e else "unstable"
+            ends = [F(-(2 * c + e)), F(2 * c + e), F(-(2 * c + e) + 1), F(2 * c + e - 1)]
+        else:
+            c = rng.choice([2, 3, 5, 6, 7])
+            charp = "(%d*w^2 + 1)*lambda - (%s*A + %s)*w" % (c, a, b)
+
+            def truth(A, c=c, a=a, b=b):
+                x = a * A + b
+                return "stable" if x * x < 4 * c else "unstable"
+            ends = [F(-2 * c), F(2 * c), F(0)]
+        # probes: the x values above and around them, mapped to A = (x - b)/a
+        xs = sorted(set(ends + [u + d for u in ends for d in (F(-1, 3), F(1, 3))]))
+        probes = [(x - b) / a for x in xs]
+        text = ("title planted uniform range (h-forall5)\nparam A w\nassume w > 0\nchar %s\n"
+                "analyse region A for all [w]\n" % charp)
+        tag = "forall5-%s-%d" % (fam, k)
+        rc, doc, err = run(text, ["--time-limit", "30"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s) case %s" % (tag, rc, err.strip()[:200], save_failing(text, tag)))
+            continue
+        reg = find(doc, "region")
+        bad, und = [], []
+        for v in probes:
+            got = region_status_at(reg, v)
+            if got is None:          # inside an irrational end's isolating interval
+                und.append(str(v))
+                continue
+            if got != truth(v):
+                bad.append("A=%s: region %s, by hand %s" % (v, got, truth(v)))
+        if fam == "sqrt":
+            pts = [x.get("status") for x in reg.get("intervals", [])
+                   if isinstance(x.get("lo"), dict) and x.get("lo") == x.get("hi")]
+            if pts != ["marginal", "marginal"]:
+                bad.append("irrational ends %s, by hand marginal, marginal" % pts)
+        if bad:
+            fail("%s: %s; case %s" % (tag, "; ".join(bad[:4]), save_failing(text, tag)))
+        else:
+            ok("%s: %d probes agree%s" % (tag, len(probes) - len(und),
+                                          " (not probed, inside isolating intervals: %s)" % ", ".join(und) if und else ""))
+
+
 PARTS = {"qi": part_qi, "jordan": part_jordan, "jordan-param": part_jordan_param, "pade": part_pade,
-         "lmm": part_lmm, "region2": part_region2, "sweep": part_sweep, "forall": part_forall, "qi-region": part_qi_region, "zregion": part_zregion, "claimreg": part_claimreg}
+         "lmm": part_lmm, "region2": part_region2, "sweep": part_sweep, "forall": part_forall, "qi-region": part_qi_region, "zregion": part_zregion, "claimreg": part_claimreg, "forall5": part_forall5}
 
 if __name__ == "__main__":
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])

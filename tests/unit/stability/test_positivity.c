@@ -232,6 +232,89 @@ test_interval_mapping(void **state)
     rs_bounds_clear(b, 2);
 }
 
+/* rs_positivity_sign_roots / rs_positivity_negative_points (issue 13) */
+static int
+sign_roots(const char *text, const rs_sign_t *sign, int *inc)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    int got;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(p, text, vars, ctx), 0);
+    got = rs_positivity_sign_roots(p, sign, ctx, inc);
+    print_message("%s: roots sign %d\n", text, got);
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return got;
+}
+
+static void
+test_univariate_roots(void **state)
+{
+    const rs_sign_t pos[4] = {RS_SIGN_POSITIVE, RS_SIGN_POSITIVE, RS_SIGN_POSITIVE, RS_SIGN_POSITIVE};
+    const rs_sign_t nonneg[4] = {RS_SIGN_NONNEGATIVE, RS_SIGN_NONNEGATIVE,
+                                 RS_SIGN_NONNEGATIVE, RS_SIGN_NONNEGATIVE};
+    const rs_sign_t unk[4] = {RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN, RS_SIGN_UNKNOWN};
+    int inc = 7;
+    (void) state;
+    /* 16 x^2 - 31 x + 16: discriminant 31^2 - 4*16*16 = 961 - 1024 = -63 < 0
+     * and leading coefficient > 0, so > 0 for every real x (by hand); Polya
+     * needs (1 + x)^m with m past the cap 40 (checked: not proved there) */
+    check("16*x^2 - 31*x + 16", pos, 0, -1);
+    assert_int_equal(sign_roots("16*x^2 - 31*x + 16", pos, &inc), 1);
+    assert_int_equal(inc, 0);
+    assert_int_equal(sign_roots("16*x^2 - 31*x + 16", unk, &inc), 1);
+    assert_int_equal(sign_roots("-16*x^2 + 31*x - 16", nonneg, &inc), -1);
+    /* 16 x^2 - 33 x + 16: discriminant 1089 - 1024 = 65 > 0, roots
+     * (33 +- sqrt 65)/32 ~ 0.779, 1.283 > 0: value at x = 1 is -1 */
+    assert_int_equal(sign_roots("16*x^2 - 33*x + 16", pos, &inc), 0);
+    /* (x + 1)(x + 2) = x^2 + 3x + 2: roots -1, -2 only: > 0 on x >= 0, not on
+     * every real x (value -1/4 at x = -3/2) */
+    assert_int_equal(sign_roots("x^2 + 3*x + 2", nonneg, &inc), 1);
+    assert_int_equal(sign_roots("x^2 + 3*x + 2", unk, &inc), 0);
+    /* x (x - 1)^2 + x = x^3 - 2x^2 + 2x: zero at x = 0 only (x^2 - 2x + 2 has
+     * discriminant -4): > 0 for x > 0, not for x >= 0 */
+    assert_int_equal(sign_roots("x^3 - 2*x^2 + 2*x", pos, &inc), 1);
+    assert_int_equal(sign_roots("x^3 - 2*x^2 + 2*x", nonneg, &inc), 0);
+    /* a repeated root on the range: (x - 1)^2 (x + 3), zero at x = 1 */
+    assert_int_equal(sign_roots("x^3 + x^2 - 5*x + 3", pos, &inc), 0);
+    /* two variables: not this test's business */
+    assert_int_equal(sign_roots("x^2 + y^2 + 1", pos, &inc), 0);
+    assert_int_equal(inc, 0);
+}
+
+static void
+test_negative_points(void **state)
+{
+    const rs_sign_t pos[4] = {RS_SIGN_POSITIVE, RS_SIGN_POSITIVE, RS_SIGN_POSITIVE, RS_SIGN_POSITIVE};
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    fmpq pts[4];
+    fmpq_t v;
+    slong n, i;
+    (void) state;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    fmpq_init(v);
+    for (i = 0; i < 4; i++) fmpq_init(pts + i);
+    /* 2 x^2 - 3 x + 1 = (2x - 1)(x - 1): negative exactly on (1/2, 1) */
+    assert_int_equal(fmpz_mpoly_set_str_pretty(p, "2*x^2 - 3*x + 1", vars, ctx), 0);
+    n = rs_positivity_negative_points(pts, 4, p, pos, ctx);
+    assert_int_equal(n, 1);
+    fmpq_set_si(v, 1, 2);
+    assert_true(fmpq_cmp(pts, v) > 0);
+    fmpq_one(v);
+    assert_true(fmpq_cmp(pts, v) < 0);
+    /* x^2 + 1 > 0: no point */
+    assert_int_equal(fmpz_mpoly_set_str_pretty(p, "x^2 + 1", vars, ctx), 0);
+    assert_int_equal(rs_positivity_negative_points(pts, 4, p, pos, ctx), 0);
+    for (i = 0; i < 4; i++) fmpq_clear(pts + i);
+    fmpq_clear(v);
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
 int
 main(void)
 {
@@ -240,6 +323,8 @@ main(void)
         cmocka_unit_test(test_polya),
         cmocka_unit_test(test_not_proved),
         cmocka_unit_test(test_interval_mapping),
+        cmocka_unit_test(test_univariate_roots),
+        cmocka_unit_test(test_negative_points),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
