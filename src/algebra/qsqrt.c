@@ -9,6 +9,7 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz_poly.h>
 #include <flint/fmpq_poly.h>
+#include <flint/fmpz_poly_factor.h>
 #include <mpfr.h>
 #include <arb.h>
 #include <acb.h>
@@ -554,4 +555,179 @@ int rs_qd_onestep_stable_at(const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, c
     rs_qd_clear(x);
     rs_qdc_vec_clear(c, 2);
     return res;
+}
+
+void rs_qd_iv_init(rs_qd_iv_t iv)
+{
+    rs_qd_end_struct *e[2] = {iv->lo, iv->hi};
+    int k;
+    for (k = 0; k < 2; k++) {
+        e[k]->inf = 0;
+        fmpz_poly_init(e[k]->minpoly);
+        arb_init(e[k]->x);
+        fmpq_init(e[k]->q);
+    }
+}
+
+void rs_qd_iv_clear(rs_qd_iv_t iv)
+{
+    rs_qd_end_struct *e[2] = {iv->lo, iv->hi};
+    int k;
+    for (k = 0; k < 2; k++) {
+        fmpz_poly_clear(e[k]->minpoly);
+        arb_clear(e[k]->x);
+        fmpq_clear(e[k]->q);
+    }
+}
+
+/* a real root of an irreducible factor */
+typedef struct { slong f; arb_struct x[1]; } qroot_t;
+
+static int qroot_cmp(const void *a, const void *b)
+{
+    return arf_cmp(arb_midref(((const qroot_t *) a)->x), arb_midref(((const qroot_t *) b)->x));
+}
+
+/* the real roots of the irreducible factors of f, sorted, pairwise disjoint */
+static qroot_t *real_roots(slong *nr, const fmpz_poly_factor_t fac)
+{
+    qroot_t *r = NULL;
+    slong prec, i, j, n = 0;
+    int ok = 0;
+    for (prec = 64; !ok; prec *= 2) {
+        for (i = 0; i < n; i++) arb_clear(r[i].x);
+        flint_free(r);
+        r = NULL;
+        n = 0;
+        for (i = 0; i < fac->num; i++) {
+            slong deg = fmpz_poly_degree(fac->p + i);
+            acb_ptr z = _acb_vec_init(deg);
+            arb_fmpz_poly_complex_roots(z, fac->p + i, 0, prec);
+            for (j = 0; j < deg; j++) {
+                if (!arb_is_zero(acb_imagref(z + j))) continue;
+                r = flint_realloc(r, (n + 1) * sizeof(qroot_t));
+                r[n].f = i;
+                arb_init(r[n].x);
+                arb_set(r[n].x, acb_realref(z + j));
+                n++;
+            }
+            _acb_vec_clear(z, deg);
+        }
+        if (n > 0) qsort(r, (size_t) n, sizeof(qroot_t), qroot_cmp);
+        ok = 1;
+        for (i = 0; i + 1 < n; i++)
+            if (arb_overlaps(r[i].x, r[i + 1].x)) ok = 0;
+    }
+    *nr = n;
+    return r;
+}
+
+static void end_set(rs_qd_end_struct *e, const qroot_t *r, const fmpz_poly_factor_t fac)
+{
+    e->inf = 0;
+    fmpz_poly_set(e->minpoly, fac->p + r->f);
+    arb_set(e->x, r->x);
+    if (fmpz_poly_degree(e->minpoly) == 1) {
+        /* a1 x + a0 = 0 */
+        fmpq_set_fmpz_frac(e->q, e->minpoly->coeffs, e->minpoly->coeffs + 1);
+        fmpq_neg(e->q, e->q);
+    }
+}
+
+int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, int imag)
+{
+    int res = 0;
+    rs_qdpoly_t g, t;
+    fmpq_poly_t n;
+    fmpz_poly_t f;
+    fmpz_poly_factor_t fac;
+    qroot_t *r;
+    slong nr, i, zero = -1, j, c;
+    int *ok;
+    rs_qdpoly_init(g); rs_qdpoly_init(t);
+    fmpq_poly_init(n);
+    fmpz_poly_init(f);
+    fmpz_poly_factor_init(fac);
+    if (imag) {
+        rs_qdpoly_abs2_imag_axis(g, D, d);
+        rs_qdpoly_abs2_imag_axis(t, N, d);
+    } else {
+        rs_qdpoly_mul(g, D, D, d);
+        rs_qdpoly_mul(t, N, N, d);
+    }
+    rs_qdpoly_sub(g, g, t);
+    /* g = 0: |R| = 1 on the whole line */
+    if (rs_qdpoly_degree(g) < 0) {
+        iv->lo->inf = -1;
+        iv->hi->inf = 1;
+    } else {
+        rs_qdpoly_norm(n, g, d);
+        fmpq_poly_get_numerator(f, n);
+        fmpz_poly_factor(fac, f);
+        r = real_roots(&nr, fac);
+        /* ok[i]: g >= 0 on the cell below root i (i = nr: above the last) */
+        ok = flint_malloc((nr + 1) * sizeof(int));
+        for (i = 0; i <= nr; i++) {
+            fmpq_t x;
+            rs_qd_t v;
+            fmpq_init(x);
+            rs_qd_init(v);
+            sample_between(x, i == 0 ? NULL : r[i - 1].x, i == nr ? NULL : r[i].x);
+            rs_qdpoly_evaluate_fmpq(v, g, x);
+            ok[i] = rs_qd_sgn(v, d) >= 0;
+            rs_qd_clear(v);
+            fmpq_clear(x);
+        }
+        for (i = 0; i < nr; i++)
+            if (arb_contains_zero(r[i].x) && fmpz_is_zero(fac->p[r[i].f].coeffs)) zero = i;
+        if (zero < 0) {
+            /* 0 inside a cell (R(0) != 1): that cell, c, if bounded */
+            for (c = 0; c < nr && arf_sgn(arb_midref(r[c].x)) < 0; c++) ;
+            if (!ok[c]) res = -1;
+            i = c - 1;
+            j = c;
+        } else {
+            i = zero - 1;
+            j = zero + 1;
+            if (!ok[zero]) i = zero;       /* below 0 unbounded: lo = 0 */
+            if (!ok[zero + 1]) j = zero;   /* above 0 unbounded: hi = 0 */
+        }
+        /* walk down while the cell below root i is bounded, up while the cell above root j is */
+        if (i != zero) while (i >= 0 && ok[i]) i--;
+        if (j != zero) while (j < nr && ok[j + 1]) j++;
+        /* lo: root i (or -inf when i < 0); hi: root j (or +inf when j >= nr) */
+        if (i < 0) iv->lo->inf = -1; else end_set(iv->lo, r + i, fac);
+        if (j >= nr) iv->hi->inf = 1; else end_set(iv->hi, r + j, fac);
+        for (i = 0; i < nr; i++) arb_clear(r[i].x);
+        flint_free(r);
+        flint_free(ok);
+    }
+    rs_qdpoly_clear(g); rs_qdpoly_clear(t);
+    fmpq_poly_clear(n);
+    fmpz_poly_clear(f);
+    fmpz_poly_factor_clear(fac);
+    return res;
+}
+
+char *rs_qd_end_get_str(const rs_qd_end_struct *e)
+{
+    char *p, *lo, *hi, *out;
+    arf_t a;
+    if (e->inf) {
+        out = flint_malloc(8);
+        strcpy(out, e->inf < 0 ? "-inf" : "inf");
+        return out;
+    }
+    if (fmpz_poly_degree(e->minpoly) == 1) return fmpq_get_str(NULL, 10, e->q);
+    p = fmpz_poly_get_str_pretty(e->minpoly, "x");
+    arf_init(a);
+    arb_get_lbound_arf(a, e->x, 53);
+    lo = arf_get_str(a, 17);
+    arb_get_ubound_arf(a, e->x, 53);
+    hi = arf_get_str(a, 17);
+    out = flint_malloc(strlen(p) + strlen(lo) + strlen(hi) + 32);
+    sprintf(out, "root of %s in [%s, %s]", p, lo, hi);
+    flint_free(p); flint_free(lo); flint_free(hi);
+    arf_clear(a);
+    return out;
 }

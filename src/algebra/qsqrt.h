@@ -12,6 +12,9 @@
 #include <flint/fmpz.h>
 #include <flint/fmpq.h>
 #include <flint/fmpq_poly.h>
+#include <flint/fmpz_poly.h>
+#include <mpfr.h>
+#include <arb.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -111,6 +114,36 @@ void rs_qd_astab_decide(rs_qd_astab_t a, const rs_qdpoly_t N, const rs_qdpoly_t 
  * stable), -2 when the two disagree (a bug: the caller exits 3), -1 when
  * D(z) = 0. */
 int rs_qd_onestep_stable_at(const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, const fmpq_t zr, const fmpq_t zi);
+
+/* an end of a stability interval: infinite, or a real algebraic number
+ * given exactly as the real root of the irreducible `minpoly` enclosed by
+ * `x` (rational when minpoly has degree 1, then also in q) */
+typedef struct {
+    int inf;                    /* -1: -inf, 1: +inf, 0: finite */
+    fmpz_poly_struct minpoly[1];
+    arb_struct x[1];
+    fmpq q[1];
+} rs_qd_end_struct;
+
+/* the stability interval of R = N/D around 0 on the real axis (imag = 0:
+ * the connected set of real x with |R(x)| <= 1 that contains 0) or on the
+ * imaginary axis (imag = 1: real y with |R(iy)| <= 1).  The ends are among
+ * the real roots of the norm of D^2 - N^2 (of E(y) on the imaginary axis);
+ * each cell between them is decided at a rational sample by the exact sign
+ * over Q(sqrt d), a root between two bounded cells is bounded by continuity
+ * and an end is closed (|R| = 1 there).  R(0) = 1 is assumed (consistent
+ * methods), so 0 is an end or inside; returns 0, or -1 when |R(0)| > 1
+ * (no interval). */
+typedef struct {
+    rs_qd_end_struct lo[1], hi[1];
+} rs_qd_iv_struct;
+typedef rs_qd_iv_struct rs_qd_iv_t[1];
+
+void rs_qd_iv_init(rs_qd_iv_t iv);
+void rs_qd_iv_clear(rs_qd_iv_t iv);
+int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, int imag);
+/* "-inf", "inf", a rational, or "root of MINPOLY in [lo, hi]" (flint_free it) */
+char *rs_qd_end_get_str(const rs_qd_end_struct *e);
 
 #ifdef __cplusplus
 }

@@ -20,6 +20,14 @@
  *    above), A-stable for g = 1/2 + sqrt(3)/6 with R(inf) = 1 - sqrt 3 and
  *    not for g = 1/2 - sqrt(3)/6 (Hairer and Wanner II, IV.6, Crouzeix);
  *    the refutation's witness y is checked in double: |R(iy)| > 1;
+ *  - stability intervals: SDIRK2 real (-inf, 0] (D - N = x (g^2 x - 1) > 0
+ *    for x < 0, D + N = 2 + (1 - 4g) x + g^2 x^2 has no real root:
+ *    discriminant (1 - 4g)^2 - 8 g^2 < 0), imaginary the whole axis
+ *    (E = g^4 y^4); SDIRK3 with g = 1/2 - sqrt(3)/6: E = (g^4 - c^2) y^4,
+ *    c = g^2 - 2g + 1/2, g^4 - c^2 = (2g - 1/2)(2g^2 - 2g + 1/2) < 0, so
+ *    the imaginary interval is [0, 0]; its real interval is [-6 - 4 sqrt 3,
+ *    0]: D - N = x ((2g - 1/2) x - 1) vanishes at 1/(2g - 1/2) = -6 - 4
+ *    sqrt 3 (a root of x^2 + 12 x - 12), D + N has no real root;
  *  - stability at points: the verdict against a time-domain run of the
  *    SDIRK2 step on y' = z y in double complex arithmetic. */
 #include "testutil.h"
@@ -294,6 +302,59 @@ static void test_stable_at(void **state)
     rs_qdpoly_clear(N); rs_qdpoly_clear(D);
 }
 
+/* x lies in the enclosure's double bounds (widened by 1e-12) */
+static int encloses_d(const arb_t b, double x)
+{
+    arb_t t, u;
+    int ok;
+    arb_init(t); arb_init(u);
+    arb_set(t, b);
+    arb_add_error_2exp_si(t, -40);
+    arb_set_d(u, x);
+    ok = arb_contains(t, u);
+    arb_clear(t); arb_clear(u);
+    return ok;
+}
+
+static void test_intervals(void **state)
+{
+    rs_qdpoly_t N, D;
+    rs_qd_iv_t iv;
+    slong d;
+    fmpz_poly_t m;
+    char *s;
+    (void) state;
+    rs_qdpoly_init(N); rs_qdpoly_init(D);
+    fmpz_poly_init(m);
+    rs_methods_rk_stability_named_qd(N->p0, N->p1, D->p0, D->p1, &d, "sdirk2");
+    rs_qd_iv_init(iv);
+    assert_int_equal(rs_qd_onestep_interval(iv, N, D, d, 0), 0);
+    assert_int_equal(iv->lo->inf, -1);
+    assert_int_equal(iv->hi->inf, 0);
+    assert_true(fmpq_is_zero(iv->hi->q));
+    assert_int_equal(rs_qd_onestep_interval(iv, N, D, d, 1), 0);
+    assert_true(iv->lo->inf == -1 && iv->hi->inf == 1);
+    rs_qd_iv_clear(iv);
+
+    qdpoly_set(N, "1:0 0:1/3 -1/6:1/6");
+    qdpoly_set(D, "1:0 -1:1/3 1/3:-1/6");
+    rs_qd_iv_init(iv);
+    assert_int_equal(rs_qd_onestep_interval(iv, N, D, 3, 1), 0);
+    assert_true(iv->lo->inf == 0 && iv->hi->inf == 0 && fmpq_is_zero(iv->lo->q) && fmpq_is_zero(iv->hi->q));
+    assert_int_equal(rs_qd_onestep_interval(iv, N, D, 3, 0), 0);
+    assert_true(iv->lo->inf == 0 && iv->hi->inf == 0 && fmpq_is_zero(iv->hi->q));
+    fmpz_poly_set_str(m, "3  -12 12 1");
+    if (fmpz_sgn(iv->lo->minpoly->coeffs + 2) < 0) fmpz_poly_neg(m, m);
+    assert_true(fmpz_poly_equal(iv->lo->minpoly, m));
+    assert_true(encloses_d(iv->lo->x, -6.0 - 4.0 * sqrt(3.0)));
+    s = rs_qd_end_get_str(iv->lo);
+    assert_non_null(strstr(s, "root of x^2+12*x-12"));
+    flint_free(s);
+    rs_qd_iv_clear(iv);
+    fmpz_poly_clear(m);
+    rs_qdpoly_clear(N); rs_qdpoly_clear(D);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -303,6 +364,7 @@ int main(void)
         cmocka_unit_test(test_nonneg_hurwitz),
         cmocka_unit_test(test_schur),
         cmocka_unit_test(test_stable_at),
+        cmocka_unit_test(test_intervals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
