@@ -265,6 +265,42 @@ static void test_schur(void **state)
     }
 }
 
+/* property: Schur-Cohn over Q(sqrt 2)(i) and the certified Arb roots agree
+ * on random polynomials of degree 1..5 with small coefficients x + y sqrt 2
+ * (both real and imaginary parts random); undecided Arb (a root on the
+ * circle) must come with a Schur "not stable" */
+static void test_schur_random(void **state)
+{
+    flint_rand_t st;
+    slong it, n, k, agree = 0, stable = 0;
+    (void) state;
+    flint_randinit(st);
+    for (it = 0; it < 300; it++) {
+        rs_qdc_struct *c;
+        int s, r;
+        n = 1 + (slong) n_randint(st, 5);
+        c = rs_qdc_vec_init(n + 1);
+        for (k = 0; k <= n; k++) {
+            fmpq_set_si(c[k].re->x, (slong) n_randint(st, 9) - 4, 1 + n_randint(st, 4));
+            fmpq_set_si(c[k].re->y, (slong) n_randint(st, 5) - 2, 1 + n_randint(st, 4));
+            if (n_randint(st, 2)) {
+                fmpq_set_si(c[k].im->x, (slong) n_randint(st, 5) - 2, 1 + n_randint(st, 4));
+                fmpq_set_si(c[k].im->y, (slong) n_randint(st, 3) - 1, 1 + n_randint(st, 4));
+            }
+        }
+        /* a dominant leading coefficient makes stable cases common */
+        fmpq_set_si(c[n].re->x, 4 + (slong) n_randint(st, 8), 1);
+        s = rs_qdc_schur_stable(c, n, 2);
+        r = rs_qdc_roots_inside(c, n, 2);
+        if (r == -1) assert_int_equal(s, 0);
+        else { assert_int_equal(s, r); agree++; }
+        stable += s;
+        rs_qdc_vec_clear(c, n + 1);
+    }
+    assert_true(agree > 250 && stable > 20 && stable < agree);
+    flint_randclear(st);
+}
+
 /* one SDIRK2 step on y' = z y, h = 1, y0 = 1, in double complex:
  * k1 = z (1 + g k1), k2 = z (1 + (1-g) k1 + g k2), y1 = 1 + (1-g) k1 + g k2 */
 static double complex sdirk2_step(double complex z)
@@ -363,6 +399,7 @@ int main(void)
         cmocka_unit_test(test_astability),
         cmocka_unit_test(test_nonneg_hurwitz),
         cmocka_unit_test(test_schur),
+        cmocka_unit_test(test_schur_random),
         cmocka_unit_test(test_stable_at),
         cmocka_unit_test(test_intervals),
     };
