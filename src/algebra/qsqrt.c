@@ -4,6 +4,7 @@
  * real roots of a rational polynomial (to choose rational samples between
  * them) and gives the second, independent answer of rs_qdc_roots_inside. */
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include <flint/fmpz.h>
 #include <flint/fmpq.h>
@@ -91,11 +92,11 @@ char *rs_qd_get_str(const rs_qd_struct *a, slong d)
     n = strlen(xs) + strlen(ys) + 48;
     out = flint_malloc(n);
     if (fmpq_is_zero(a->x))
-        flint_sprintf(out, "%s*sqrt(%wd)", ys, d);
+        snprintf(out, n, "%s*sqrt(%ld)", ys, (long) d);
     else if (fmpq_sgn(a->y) < 0)
-        flint_sprintf(out, "%s - %s*sqrt(%wd)", xs, ys + 1, d);
+        snprintf(out, n, "%s - %s*sqrt(%ld)", xs, ys + 1, (long) d);
     else
-        flint_sprintf(out, "%s + %s*sqrt(%wd)", xs, ys, d);
+        snprintf(out, n, "%s + %s*sqrt(%ld)", xs, ys, (long) d);
     flint_free(xs);
     flint_free(ys);
     return out;
@@ -177,11 +178,11 @@ char *rs_qdpoly_get_str(const rs_qdpoly_t p, slong d, const char *var)
         if (rs_qd_is_zero(c)) continue;
         cs = rs_qd_get_str(c, d);
         if (k == 0) term[0] = '\0';
-        else if (k == 1) flint_sprintf(term, "*%s", var);
-        else flint_sprintf(term, "*%s^%wd", var, k);
+        else if (k == 1) snprintf(term, sizeof term, "*%s", var);
+        else snprintf(term, sizeof term, "*%s^%ld", var, (long) k);
         need = len + strlen(cs) + strlen(term) + 8;
         if (need > cap) { cap = 2 * need; out = flint_realloc(out, cap); }
-        len += (size_t) flint_sprintf(out + len, "%s%s%s%s%s", len ? " + " : "",
+        len += (size_t) snprintf(out + len, cap - len, "%s%s%s%s%s", len ? " + " : "",
                                       (k > 0 && !fmpq_is_zero(c->y) && !fmpq_is_zero(c->x)) ? "(" : "", cs,
                                       (k > 0 && !fmpq_is_zero(c->y) && !fmpq_is_zero(c->x)) ? ")" : "", term);
         flint_free(cs);
@@ -726,7 +727,7 @@ char *rs_qd_end_get_str(const rs_qd_end_struct *e)
     arb_get_ubound_arf(a, e->x, 53);
     hi = arf_get_str(a, 17);
     out = flint_malloc(strlen(p) + strlen(lo) + strlen(hi) + 32);
-    sprintf(out, "root of %s in [%s, %s]", p, lo, hi);
+    snprintf(out, strlen(p) + strlen(lo) + strlen(hi) + 32, "root of %s in [%s, %s]", p, lo, hi);
     flint_free(p); flint_free(lo); flint_free(hi);
     arf_clear(a);
     return out;
