@@ -15,6 +15,8 @@
 #define RECSTAB_MODEL_H
 
 #include <flint/flint.h>
+#include <flint/fmpq.h>
+#include <flint/fmpq_poly.h>
 #include "recstab/error.h"
 #include "recstab/casefile.h"
 
@@ -30,6 +32,20 @@ typedef enum {
 
 /* the linear forms of a co-simulation (private: src/lower/cosim_model.h) */
 typedef struct rs_cosim_model_struct rs_cosim_model_struct;
+
+/* Issue 15: the case's only subsystem, one state y' = F, integrated by a
+ * named tableau whose stability function is not in Q(z) (rk sdirk2):
+ * R = (n0 + sqrt(d) n1)/(d0 + sqrt(d) d1) (methods.h).  The model's
+ * equations are then one explicit step of that subsystem (two stages,
+ * R = 1 + z), lowered only so that z = H*F is read exactly from their
+ * p = lambda - 1 - z; charpoly, stability and astability answer from R over
+ * Q(sqrt d) (src/analysis/an_qd.c), every other analysis is refused. */
+typedef struct {
+    slong d;
+    fmpq_poly_struct n0[1], n1[1], d0[1], d1[1];
+    char *tableau;              /* its name (owned) */
+    rs_loc_t loc;               /* the integrate statement's METHOD */
+} rs_model_qd_struct;
 
 typedef struct {
     const rs_case_struct *c;    /* the case lowered (not owned; must outlive the model):
@@ -53,6 +69,8 @@ typedef struct {
      * gave (reported by the analyses that need them, rs_model_cosim) */
     rs_cosim_model_struct *cosim;
     rs_error_t cosim_err;
+    /* equations: R over Q(sqrt d) (see above), or NULL */
+    rs_model_qd_struct *qd;
 } rs_model_struct;
 typedef rs_model_struct rs_model_t[1];
 

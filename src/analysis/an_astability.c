@@ -31,6 +31,7 @@
 #include "stability/schur_complex.h"
 #include "stability/routh_complex.h"
 #include "util/polyfmt.h"
+#include "analysis/an_qd.h"
 #include "recstab/budget.h"
 
 /* p = sum_k (C[k] + i Ci[k])(lambda) z^k: Ci is zero unless p is over Q(i)
@@ -826,6 +827,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     rs_status_t st_m1 = RS_STATUS_UNSTABLE;
     fmpq_t zr, zi;
     fmpz_mpoly_struct *pre = NULL, *pim = NULL;
+    if (run->m->qd != NULL) return rs_an_qd_astability(run, req);   /* R over Q(sqrt d) */
     if (rs_an_complex_mode(run)) {
         /* complex set values stay symbolic in the variant; rs_run_cx_poly substitutes them over Q(i) */
         const char *keep[1];

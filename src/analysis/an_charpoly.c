@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include "analysis/registry.h"
 #include "util/polyfmt.h"
+#include "analysis/an_qd.h"
 
 json_t *rs_charpoly_json(const rs_variant_t *v)
 {
@@ -43,6 +44,7 @@ static int charpoly_real(rs_run_t *run, const rs_an_req_t *req)
 
 int rs_an_charpoly(rs_run_t *run, const rs_an_req_t *req)
 {
+    if (run->m->qd != NULL) return rs_an_qd_charpoly(run, req);   /* R over Q(sqrt d) */
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_charpoly(run, req);
     return charpoly_real(run, req);

@@ -2,6 +2,7 @@
  * the exact verdict with root counts (Routh and Schur-Cohn must agree; a
  * char line over Q(i) also by the complex pair of an_complex.c). */
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 
 static int stability_real(rs_run_t *run, const rs_an_req_t *req)
 {
@@ -42,6 +43,7 @@ static int stability_real(rs_run_t *run, const rs_an_req_t *req)
 
 int rs_an_stability(rs_run_t *run, const rs_an_req_t *req)
 {
+    if (run->m->qd != NULL) return rs_an_qd_stability(run, req);   /* R over Q(sqrt d) */
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_stability(run, req);
     return stability_real(run, req);

@@ -252,6 +252,10 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     *nout = 0;
     if (run->m->kind != RS_MODEL_EQUATIONS) {
         names[n++] = "stability";
+    } else if (run->m->qd != NULL) {
+        /* R over Q(sqrt d) (an_qd.c): its polynomial, the point when set, else the region */
+        names[n++] = "charpoly";
+        names[n++] = c->nsets + c->ncsets > 0 ? "stability" : "astability";
     } else if (c->ncsets > 0) {
         /* complex set values: the polynomial and its verdict over Q(i) */
         names[n++] = "charpoly";
@@ -370,7 +374,8 @@ static json_t *case_doc(rs_run_t *run, const rs_request_t *defaults, slong ndefa
         for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
         json_object_set_new(d, "default_analyses", arr);
     }
-    if (run->opt->with_scheme && run->m->kind == RS_MODEL_EQUATIONS) {
+    /* qd: the scheme is the stand-in's (model.h), not the method's */
+    if (run->opt->with_scheme && run->m->kind == RS_MODEL_EQUATIONS && run->m->qd == NULL) {
         json_t *sc = scheme_json(run);
         if (sc == NULL) {
             json_decref(d);

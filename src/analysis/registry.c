@@ -11,6 +11,7 @@
 #include <errno.h>
 #include "analysis/registry.h"
 #include "analysis/sweep_impl.h"
+#include "analysis/an_qd.h"
 
 /* ---- grammars ------------------------------------------------------------ */
 
@@ -378,6 +379,7 @@ int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q)
     memset(req, 0, sizeof *req);
     req->q = q;
     r = lookup(&req->def, run, q);
+    if (r == RS_OK) r = rs_an_qd_check(run, req);   /* rk sdirk2: three analyses only */
     if (r != RS_OK) return r;
     req->rest = rs_req_skip_word(q->text);
     if (req->def->parse != NULL) return req->def->parse(req, run);

@@ -840,17 +840,49 @@ static int gen_equations(gen_t *g, slong a, slong j, rs_error_t err)
     return RS_OK;
 }
 
+/* A tableau whose R is not in Q(z) (sdirk2): accepted for the test
+ * equation only -- one subsystem, one state y' = F, no other equations --
+ * as model.h's qd (R over Q(sqrt d)); t becomes the explicit stand-in
+ * (two stages, A = 0, b = [1, 0]: R = 1 + z) from whose p = lambda - 1 - z
+ * the analyses read z = H*F.  A coupled scheme would need R over Q(sqrt d)
+ * inside the characteristic polynomial of the whole system: refused. */
+static int tableau_qd(rs_tableau_struct *t, rs_model_struct *m, const rs_subsystem_t *s, rs_error_t err)
+{
+    const rs_case_struct *c = m->c;
+    rs_model_qd_struct *qd;
+    if (c->nsubs != 1 || s->nstates != 1 || s->ndeqs != 1 || s->deqs[0].order != 1 || c->neqs > 0
+        || c->charexpr != NULL || c->nrec > 0)
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "expected %s on one subsystem with one state y' = F*y "
+                      "and nothing else (its R(z) has coefficients in Q(sqrt 2) and is analysed exactly for the "
+                      "test equation only); a coupled scheme or a larger system with it is not supported: write "
+                      "a rational tableau inline: rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
+    qd = flint_calloc(1, sizeof *qd);
+    fmpq_poly_init(qd->n0);
+    fmpq_poly_init(qd->n1);
+    fmpq_poly_init(qd->d0);
+    fmpq_poly_init(qd->d1);
+    rs_lower_loc_copy(&qd->loc, &s->intloc);
+    qd->tableau = flint_malloc(strlen(s->tableau) + 1);
+    strcpy(qd->tableau, s->tableau);
+    m->qd = qd;   /* cleared with the model from here on */
+    if (!rs_methods_rk_stability_named_qd(qd->n0, qd->n1, qd->d0, qd->d1, &qd->d, s->tableau) || qd->d < 2)
+        return err_at(err, RS_ERR_INTERNAL, &s->intloc, 0, "no stability function over Q(sqrt d) for %s",
+                      s->tableau);
+    rs_tableau_clear(t);
+    rs_tableau_init(t, 2);
+    fmpq_one(t->b);
+    return RS_OK;
+}
+
 /* the Butcher tableau of subsystem s (none: 0 stages) */
-static int tableau_of(rs_tableau_struct *t, const rs_subsystem_t *s, rs_error_t err)
+static int tableau_of(rs_tableau_struct *t, rs_model_struct *m, const rs_subsystem_t *s, rs_error_t err)
 {
     slong n, i;
     rs_tableau_init(t, 0);
     if (strcmp(s->method, "rk") != 0) return RS_OK;
     if (s->tableau) {
         if (rs_tableau_named(t, s->tableau) == 1) return RS_OK;
-        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "expected a tableau whose stability function is rational "
-                      "(exact analyses work over the rationals), found %s (coefficients with sqrt(2), R(z) not "
-                      "rational); write a rational tableau inline: rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
+        return tableau_qd(t, m, s, err);
     }
     for (n = 1; n * n + n < s->ntab; n++) ;
     rs_tableau_clear(t);
@@ -883,7 +915,7 @@ int rs_builder_lower(rs_model_struct *m, rs_error_t err)
     for (a = 0; a < c->nsubs; a++) rs_tableau_init(&g.tab[a], 0);
     for (a = 0; a < c->nsubs && r == RS_OK; a++) {
         rs_tableau_clear(&g.tab[a]);
-        r = tableau_of(&g.tab[a], &c->subs[a], err);
+        r = tableau_of(&g.tab[a], m, &c->subs[a], err);
     }
     for (a = 0; a < c->nsubs && r == RS_OK; a++)
         r = find_pairs(&g, a, err);

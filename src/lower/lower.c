@@ -23,6 +23,15 @@ void rs_model_clear(rs_model_t m)
     flint_free(m->eqs);
     if (m->cosim != NULL) rs_cosim_model_clear(m->cosim);
     flint_free(m->cosim);
+    if (m->qd != NULL) {
+        fmpq_poly_clear(m->qd->n0);
+        fmpq_poly_clear(m->qd->n1);
+        fmpq_poly_clear(m->qd->d0);
+        fmpq_poly_clear(m->qd->d1);
+        flint_free(m->qd->tableau);
+        rs_loc_clear(&m->qd->loc);
+        flint_free(m->qd);
+    }
     rs_loc_clear(&m->unknown_loc);
     memset(m, 0, sizeof(rs_model_struct));
 }
@@ -116,6 +125,13 @@ char *rs_model_emit_equations(const rs_model_t m)
                          "set values; only numeric analyses (radius) apply\n");
     if (m->nunknowns == m->nuser_unknowns && m->neqs == m->nuser_eqs) return NULL;
     cat(&b, "");
+    if (m->qd != NULL) {
+        cat(&b, "# rk ");
+        cat(&b, m->qd->tableau);
+        cat(&b, ": R(z) has coefficients in Q(sqrt 2), not written as equations; below an explicit two-stage\n"
+                "# step (R = 1 + z) of the same subsystem, from which z = H*F is read; charpoly, stability and\n"
+                "# astability use R over Q(sqrt 2)\n");
+    }
     for (i = m->nuser_unknowns; i < m->nunknowns; i++) {
         cat(&b, i == m->nuser_unknowns ? "unknown " : " ");
         cat(&b, m->unknowns[i].name);

@@ -71,20 +71,16 @@ static void qd_mat_mul(qd_t *C, const qd_t *A, const qd_t *B, slong s, slong d)
     qd_vec_clear(T, s * s);
 }
 
-/* R = num/den from A, b over Q(sqrt d): den(z) = det(I - zA) by Newton's
- * identities on the traces of A^k, num = den * (1 + sum_k (b^T A^k 1) z^(k+1))
- * truncated at degree s (deg num <= s); 0 when they are not rational (then
- * num, den hold the rational parts only) */
-static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const qd_t *b, slong s, slong d)
+/* mk[k] = b^T A^k 1 (k < s) and the elementary symmetric functions e[k]
+ * (k <= s) of the eigenvalues of A, from the traces of A^k by Newton's
+ * identities: det(I - zA) = sum (-1)^k e_k z^k */
+static void qd_moments(qd_t *mk, qd_t *e, const qd_t *A, const qd_t *b, slong s, slong d)
 {
-    qd_t *P = qd_vec_init(s * s), *tr = qd_vec_init(s + 1), *mk = qd_vec_init(s), *e = qd_vec_init(s + 1), p;
-    fmpq_poly_t ser, g;
+    qd_t *P = qd_vec_init(s * s), *tr = qd_vec_init(s + 1), p;
     slong i, j, k;
-    int rational = 1;
     fmpq_init(p.x); fmpq_init(p.y);
     for (i = 0; i < s; i++) { fmpq_one(P[i * s + i].x); }   /* P = A^0 */
     for (k = 0; k <= s; k++) {
-        /* mk[k] = b^T A^k 1, tr[k] = tr(A^k) */
         if (k < s)
             for (i = 0; i < s; i++)
                 for (j = 0; j < s; j++) {
@@ -98,10 +94,8 @@ static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const q
         }
         qd_mat_mul(P, P, A, s, d);
     }
-    /* e_0 = 1, k e_k = sum_{i=1..k} (-1)^(i-1) e_{k-i} tr(A^i); den = sum (-1)^k e_k z^k */
+    /* e_0 = 1, k e_k = sum_{i=1..k} (-1)^(i-1) e_{k-i} tr(A^i) */
     fmpq_one(e[0].x);
-    fmpq_poly_zero(den);
-    fmpq_poly_set_coeff_si(den, 0, 1);
     for (k = 1; k <= s; k++) {
         for (i = 1; i <= k; i++) {
             qd_mul(&p, &e[k - i], &tr[i], d);
@@ -111,10 +105,29 @@ static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const q
         }
         fmpq_div_fmpz(e[k].x, e[k].x, (fmpz_set_si(fmpq_numref(p.x), k), fmpq_numref(p.x)));
         fmpq_div_fmpz(e[k].y, e[k].y, fmpq_numref(p.x));
+    }
+    fmpq_clear(p.x); fmpq_clear(p.y);
+    qd_vec_clear(P, s * s); qd_vec_clear(tr, s + 1);
+}
+
+/* R = num/den from A, b over Q(sqrt d): den(z) = det(I - zA), num = den *
+ * (1 + sum_k (b^T A^k 1) z^(k+1)) truncated at degree s (deg num <= s);
+ * 0 when they are not rational (then num, den hold the rational parts) */
+static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const qd_t *b, slong s, slong d)
+{
+    qd_t *mk = qd_vec_init(s), *e = qd_vec_init(s + 1);
+    fmpq_poly_t ser, g;
+    fmpq_t c;
+    slong k;
+    int rational = 1;
+    qd_moments(mk, e, A, b, s, d);
+    fmpq_init(c);
+    fmpq_poly_zero(den);
+    for (k = 0; k <= s; k++) {
         rational &= fmpq_is_zero(e[k].y);
-        fmpq_set(p.x, e[k].x);
-        if (k % 2) fmpq_neg(p.x, p.x);
-        fmpq_poly_set_coeff_fmpq(den, k, p.x);
+        fmpq_set(c, e[k].x);
+        if (k % 2) fmpq_neg(c, c);
+        fmpq_poly_set_coeff_fmpq(den, k, c);
     }
     fmpq_poly_init(ser);
     fmpq_poly_init(g);
@@ -127,13 +140,13 @@ static int qd_stability(fmpq_poly_t num, fmpq_poly_t den, const qd_t *A, const q
     fmpq_poly_gcd(g, num, den);
     fmpq_poly_div(num, num, g);
     fmpq_poly_div(den, den, g);
-    fmpq_poly_get_coeff_fmpq(p.x, den, 0);
-    fmpq_poly_scalar_div_fmpq(num, num, p.x);
-    fmpq_poly_scalar_div_fmpq(den, den, p.x);
+    fmpq_poly_get_coeff_fmpq(c, den, 0);
+    fmpq_poly_scalar_div_fmpq(num, num, c);
+    fmpq_poly_scalar_div_fmpq(den, den, c);
     fmpq_poly_clear(ser);
     fmpq_poly_clear(g);
-    fmpq_clear(p.x); fmpq_clear(p.y);
-    qd_vec_clear(P, s * s); qd_vec_clear(tr, s + 1); qd_vec_clear(mk, s); qd_vec_clear(e, s + 1);
+    fmpq_clear(c);
+    qd_vec_clear(mk, s); qd_vec_clear(e, s + 1);
     return rational;
 }
 
@@ -202,6 +215,51 @@ int rs_methods_rk_stability_named(fmpq_poly_t num, fmpq_poly_t den, const char *
     qd_vec_clear(A, s * s);
     qd_vec_clear(b, s);
     return i ? 1 : -1;
+}
+
+int rs_methods_rk_stability_named_qd(fmpq_poly_t n0, fmpq_poly_t n1, fmpq_poly_t d0, fmpq_poly_t d1, slong *d,
+                                     const char *name)
+{
+    const named_t *t = find_named(name);
+    qd_t *A, *b, *mk, *e;
+    fmpq_poly_t s0, s1, t0, t1, u;
+    slong i, s;
+    if (t == NULL) return 0;
+    s = t->s;
+    *d = t->d;
+    A = qd_vec_init(s * s);
+    b = qd_vec_init(s);
+    mk = qd_vec_init(s);
+    e = qd_vec_init(s + 1);
+    for (i = 0; i < s * s; i++) qd_set_str(&A[i], t->e[i]);
+    for (i = 0; i < s; i++) qd_set_str(&b[i], t->e[s * s + i]);
+    qd_moments(mk, e, A, b, s, t->d);
+    fmpq_poly_init(s0); fmpq_poly_init(s1); fmpq_poly_init(t0); fmpq_poly_init(t1); fmpq_poly_init(u);
+    fmpq_poly_zero(d0);
+    fmpq_poly_zero(d1);
+    for (i = 0; i <= s; i++) {
+        if (i % 2) { fmpq_neg(e[i].x, e[i].x); fmpq_neg(e[i].y, e[i].y); }
+        fmpq_poly_set_coeff_fmpq(d0, i, e[i].x);
+        fmpq_poly_set_coeff_fmpq(d1, i, e[i].y);
+    }
+    fmpq_poly_set_coeff_si(s0, 0, 1);
+    for (i = 0; i < s; i++) {
+        fmpq_poly_set_coeff_fmpq(s0, i + 1, mk[i].x);
+        fmpq_poly_set_coeff_fmpq(s1, i + 1, mk[i].y);
+    }
+    /* (d0 + r d1)(s0 + r s1), r^2 = d, truncated at degree s */
+    fmpq_poly_mullow(t0, d0, s0, s + 1);
+    fmpq_poly_mullow(u, d1, s1, s + 1);
+    fmpq_poly_scalar_mul_si(u, u, t->d);
+    fmpq_poly_add(t0, t0, u);
+    fmpq_poly_mullow(t1, d0, s1, s + 1);
+    fmpq_poly_mullow(u, d1, s0, s + 1);
+    fmpq_poly_add(t1, t1, u);
+    fmpq_poly_swap(n0, t0);
+    fmpq_poly_swap(n1, t1);
+    fmpq_poly_clear(s0); fmpq_poly_clear(s1); fmpq_poly_clear(t0); fmpq_poly_clear(t1); fmpq_poly_clear(u);
+    qd_vec_clear(A, s * s); qd_vec_clear(b, s); qd_vec_clear(mk, s); qd_vec_clear(e, s + 1);
+    return 1;
 }
 
 void rs_tableau_realize(rs_tableau_t t, const fmpq_poly_t num, const fmpq_poly_t den)

@@ -34,6 +34,14 @@ void rs_tableau_clear(rs_tableau_t t);
  * denominator (1 - gamma z)^2; num, den then hold the rational parts). */
 int rs_methods_rk_stability_named(fmpq_poly_t num, fmpq_poly_t den, const char *name);
 
+/* R = (n0 + sqrt(d) n1)/(d0 + sqrt(d) d1) over Q(sqrt d) for every named
+ * tableau (d = 0 for the rational ones, n1 = d1 = 0 then), den(0) = 1,
+ * not reduced to lowest terms; returns 0 for an unknown name, else 1.
+ * sdirk2 gives d = 2, n0 + sqrt(2) n1 = 1 + (sqrt(2) - 1) z and
+ * d0 + sqrt(2) d1 = (1 - gamma z)^2. */
+int rs_methods_rk_stability_named_qd(fmpq_poly_t n0, fmpq_poly_t n1, fmpq_poly_t d0, fmpq_poly_t d1, slong *d,
+                                     const char *name);
+
 /* the same for a rational tableau */
 void rs_tableau_stability(fmpq_poly_t num, fmpq_poly_t den, const rs_tableau_t t);
 

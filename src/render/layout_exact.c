@@ -486,9 +486,25 @@ static void decided_by(rs_render_t *r, const json_t *o)
         rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
 }
 
+/* R over Q(sqrt d) (rk sdirk2, an_qd.c): |R(z)|^2 decided exactly */
+static void stability_qd(rs_render_t *r, const json_t *o)
+{
+    rs_render_line(r, "status", "%s", js(o, "status"));
+    if (js(o, "abs_R_squared") != NULL) rs_render_line(r, "|R(z)|^2", "%s", js(o, "abs_R_squared"));
+    rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
+    rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "
+                   "root agree)", js(o, "decided_by"));
+    rs_render_assigned(r, o);
+}
+
 void rs_render_stability(rs_render_t *r, const json_t *o)
 {
-    int sym = schur_cohn_prose(r, o, "Stability at the given values", "Stability at the given values");
+    int sym;
+    if (json_object_get(o, "stability_function") != NULL) {
+        stability_qd(r, o);
+        return;
+    }
+    sym = schur_cohn_prose(r, o, "Stability at the given values", "Stability at the given values");
     if (json_object_get(o, "inside") == NULL) {
         /* a co-simulation's stability is its certified radius in the report */
         rs_render_radius(r, o);

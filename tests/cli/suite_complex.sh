@@ -486,3 +486,43 @@ PY
     if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map at complex values: the factor h of h^2 separates nothing, not drawn"
     else fail "map separating arcs over Q(i): rc=$rc $res"; fi
 else ok "skipped map separating arcs over Q(i): no python3"; fi
+
+# ---- rk sdirk2: R(z) = (1 + (sqrt 2 - 1) z)/(1 - g z)^2, g = 1 - sqrt(2)/2, over Q(sqrt 2) ----
+# (values by hand in the case files' comments and tests/unit/algebra/test_qsqrt.c)
+SD=cases/complex/sdirk2-astability.case
+SP=cases/complex/sdirk2-point.case
+"$RS" --json "$SD" >"$T/sd.json" 2>"$T/err"; rc=$?
+if command -v python3 >/dev/null 2>&1; then
+    res=$(python3 - "$T/sd.json" <<'PY'
+import json, sys
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+a = [r for r in rs if r["analysis"] == "astability"][0]
+c = [r for r in rs if r["analysis"] == "charpoly"][0]
+want = {"a_stable": True, "l_stable": True, "alpha_degrees": 90, "real_interval": ["-inf", 0],
+        "imag_interval": ["-inf", "inf"], "limit_at_infinity": 0, "over": "Q(sqrt 2)", "param": "q",
+        "decided_by": "exact"}
+bad = ["%s=%r" % (k, a.get(k)) for k in want if a.get(k) != want[k]]
+# E = g^4 y^4 = (17/4 - 3 sqrt 2) y^4; D = (1 - g q)^2 = 1 + (sqrt 2 - 2) q + (3/2 - sqrt 2) q^2
+if a["evidence"][0]["E"] != "(17/4 - 3*sqrt(2))*y^4": bad.append("E=" + a["evidence"][0]["E"])
+if a["real_interval_detail"] != {"lo_closed": False, "hi_closed": True, "ends_decided": True}: bad.append("real detail")
+if "boundary_locus" not in a: bad.append("no boundary_locus")
+if c["poly"] != "(1 + (-2 + 1*sqrt(2))*q + (3/2 - 1*sqrt(2))*q^2)*lambda - (1 + (-1 + 1*sqrt(2))*q)": bad.append("poly=" + c["poly"])
+if c.get("over") != "Q(sqrt 2)" or c["degree"] != 1: bad.append("charpoly over/degree")
+print("yes" if not bad else "no " + " ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 astability over Q(sqrt 2): A- and L-stable, (-inf, 0], whole imaginary axis, E = (17/4 - 3 sqrt 2) y^4"
+    else fail "sdirk2 astability: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 astability JSON: no python3"; fi
+check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
+check_status "sdirk2 z=3 (R = 76 + 54 sqrt 2)" unstable "$SP" --set 'q=3'
+check_status "sdirk2 z=0 (R = 1)" marginal "$SP" --set 'q=0'
+# |R(-1 + 2i)|^2 = 152/867 + 16/289 sqrt 2 ~ 0.253 (A-stable: inside Re z < 0)
+check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
+r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
+if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
+else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
+"$RS" --analyse jury "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*jury is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: jury refused with its reason (exit 2)"
+else fail "sdirk2 jury refusal: rc=$rc $(head -1 "$T/err")"; fi
