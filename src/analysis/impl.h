@@ -113,6 +113,9 @@ void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
+/* rs_json_zpoly's string, and in *line (if rel given) the condition line
+ * "TEXT rel" (rs_cond_string's text) from the same printing. */
+json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line);
 /* "poly REL" for a condition (REL "> 0", "!= 0"); malloc'd, free(). */
 char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel);
 json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s);
