@@ -58,6 +58,10 @@ typedef struct {
                                       cofactor, not factored, possibly reducible
                                       or with square factors -- the condition is
                                       still equivalent (issue 17) */
+    int poly_shared;               /* 1: poly is the minor D_minor itself (the
+                                      rs_hurwitz_struct's minors[minor - 1],
+                                      not a copy: read only, cleared with the
+                                      minors; issue 17) */
 } rs_hurwitz_cond_struct;
 
 typedef struct {

@@ -437,29 +437,30 @@ static json_t *json_text(const char *str, size_t len, int ascii)
 
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
 {
-    return rs_json_zpoly_line(p, s, NULL, NULL);
+    return rs_json_zpoly_line(p, s, NULL, NULL, NULL, NULL);
 }
 
-json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line)
+json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line,
+                           char **scratch, size_t *cap)
 {
-    char *buf = NULL;
-    size_t cap = 0;
+    char *own = NULL, **buf = scratch != NULL ? scratch : &own;
+    size_t own_cap = 0, *bcap = scratch != NULL ? cap : &own_cap;
     json_t *j = NULL;
     int ascii = names_ascii(s);
     /* one printing for both strings: the text, then " rel" after it */
     char *tail = rel != NULL ? malloc(strlen(rel) + 2) : NULL;
     slong n;
     if (tail != NULL) sprintf(tail, " %s", rel);
-    n = rs_polyfmt_fmpz_mpoly_into(&buf, &cap, p, (const char **) s->vars, s->zctx, tail);
+    n = rs_polyfmt_fmpz_mpoly_into(buf, bcap, p, (const char **) s->vars, s->zctx, tail);
     if (n >= 0) {
         size_t t = tail != NULL ? strlen(tail) : 0;
-        j = json_text(buf, (size_t) n - t, ascii);
-        if (line != NULL) *line = tail != NULL ? json_text(buf, (size_t) n, ascii) : NULL;
+        j = json_text(*buf, (size_t) n - t, ascii);
+        if (line != NULL) *line = tail != NULL ? json_text(*buf, (size_t) n, ascii) : NULL;
     } else if (line != NULL) {
         *line = NULL;
     }
     free(tail);
-    free(buf);
+    free(own);
     return j;
 }
 
