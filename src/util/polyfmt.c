@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpz.h>
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
 
