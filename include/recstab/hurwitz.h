@@ -58,6 +58,10 @@ typedef struct {
                                       cofactor, not factored, possibly reducible
                                       or with square factors -- the condition is
                                       still equivalent (issue 17) */
+    int poly_shared;               /* 1: poly is the minor D_minor itself (the
+                                      rs_hurwitz_struct's minors[minor - 1],
+                                      not a copy: read only, cleared with the
+                                      minors; issue 17) */
 } rs_hurwitz_cond_struct;
 
 typedef struct {
@@ -201,7 +205,9 @@ int rs_hurwitz_or_full_at(const rs_hurwitz_or_t hb, fmpq *const *vals,
 /* poly at the rational point vals[v] (all variables), exactly. */
 void rs_hurwitz_eval(fmpq_t out, const fmpz_mpoly_t poly, fmpq *const *vals,
                      const fmpz_mpoly_ctx_t ctx);
-/* Sign (-1, 0, 1) of poly at the rational point vals[v] (all variables). */
+/* Sign (-1, 0, 1) of poly at the rational point vals[v] (all variables),
+ * exact: from doubles when their certified error bound decides it, else
+ * from rs_hurwitz_eval's exact sum. */
 int rs_hurwitz_sign_at(const fmpz_mpoly_t poly, fmpq *const *vals,
                        const fmpz_mpoly_ctx_t ctx);
 

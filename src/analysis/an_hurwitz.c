@@ -72,6 +72,8 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     const rs_hurwitz_struct *h;
     fmpz_mpoly_t qz;
     json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
+    char *scratch = NULL;   /* one printing buffer for every polynomial (rs_json_zpoly_line) */
+    size_t cap = 0;
     slong i, k;
     int r, verdict;
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
@@ -97,8 +99,9 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
     minors = json_array();
     for (i = 0; i < h->n; i++)
-        json_array_append_new(minors, i < h->expanded ? rs_json_zpoly(h->minors + i, s)
-                                                      : json_string("not expanded"));
+        json_array_append_new(minors, i < h->expanded
+                                          ? rs_json_zpoly_line(h->minors + i, s, NULL, NULL, &scratch, &cap)
+                                          : json_string("not expanded"));
     json_object_set_new(o, "minors", minors);
     if (hb->nbranch > 0 && h->expanded < h->n) {
         json_t *ne = json_array();
@@ -116,7 +119,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     details = json_array();
     for (i = 0; i < h->ncond; i++) {
         const rs_hurwitz_cond_struct *c = h->cond + i;
-        json_t *d = json_object(), *fl = json_array(), *jred;
+        json_t *d = json_object(), *fl = json_array(), *jred, *jline = NULL;
         json_object_set_new(d, "origin", json_string(c->origin));
         /* the same strings shared, not printed again (jansson counts the
          * references): a minor's condition is the minor itself, and a lone
@@ -125,14 +128,20 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         if (c->minor >= 1 && c->minor <= h->expanded && !c->not_expanded)
             json_object_set(d, "poly", json_array_get(minors, (size_t) (c->minor - 1)));
         else
-            json_object_set_new(d, "poly", rs_json_zpoly(c->poly, s));
-        jred = rs_json_zpoly(c->reduced, s);
+            json_object_set_new(d, "poly", rs_json_zpoly_line(c->poly, s, NULL, NULL, &scratch, &cap));
+        /* the condition line "reduced > 0" printed with the reduced
+         * condition, not formatted again from its 27 MB string (D_11 of a
+         * 6-mass chain, issue 17) */
+        jred = rs_json_zpoly_line(c->reduced, s,
+                                  c->trivially_true || c->not_expanded ? NULL
+                                  : c->factored ? "> 0" : "> 0 (not factored)", &jline, &scratch, &cap);
         for (k = 0; k < c->factors->num; k++) {
             json_t *f = json_object();
             if (fmpz_mpoly_equal(c->factors->poly + k, c->reduced, s->zctx))
                 json_object_set(f, "factor", jred);
             else
-                json_object_set_new(f, "factor", rs_json_factor(c->factors->poly + k, s));
+                json_object_set_new(f, "factor", rs_json_zpoly_line(c->factors->poly + k, s, NULL, NULL,
+                                                                    &scratch, &cap));
             json_object_set_new(f, "exponent", json_integer(fmpz_get_si(c->factors->exp + k)));
             json_object_set_new(f, "dropped", json_boolean(c->dropped[k]));
             json_array_append_new(fl, f);
@@ -162,13 +171,12 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             snprintf(line, sizeof line, "%s > 0 (not expanded)", c->origin);
             json_array_append_new(conds, json_string(line));
         } else {
-            /* rs_cond_string's text, from the string already made; the
-             * cofactor of a condition too large for a full factorisation
-             * (hurwitz.h) is said to be one in words */
-            json_array_append_new(conds, json_sprintf("%s %s", json_string_value(jred),
-                                                      c->factored ? "> 0" : "> 0 (not factored)"));
+            /* rs_cond_string's text; the cofactor of a condition too large
+             * for a full factorisation (hurwitz.h) is said to be one in words */
+            json_array_append_new(conds, jline);
         }
     }
+    free(scratch);
     if (hb->nbranch == 1) {
         json_object_set_new(o, "conditions", conds);
         json_object_set_new(o, "nonzero", nonzero);

@@ -113,6 +113,12 @@ void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
+/* rs_json_zpoly's string, and in *line (if rel given) the condition line
+ * "TEXT rel" (rs_cond_string's text) from the same printing; printed in
+ * *scratch (size *cap, grown as needed, the caller frees it) when given, so
+ * that a run printing many large polynomials reuses pages already touched. */
+json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line,
+                           char **scratch, size_t *cap);
 /* "poly REL" for a condition (REL "> 0", "!= 0"); malloc'd, free(). */
 char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel);
 json_t *rs_json_coeffs(const fmpz_mpoly_t p, slong var, const rs_scheme_t s);

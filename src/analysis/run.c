@@ -416,22 +416,51 @@ char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel)
     return line;
 }
 
-json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
+/* digits, " + - * ^" and the names: ASCII when every name is, and then
+ * jansson's UTF-8 scan is skipped (a 60 MB string for D_11 of a 6-mass
+ * chain, issue 17); the bytes are the same */
+static int names_ascii(const rs_scheme_t s)
 {
-    char *str = rs_polyfmt_fmpz_mpoly(p, (const char **) s->vars, s->zctx);
-    json_t *j;
     slong k;
-    int ascii = str != NULL;
-    /* digits, " + - * ^" and the names: ASCII when every name is, and then
-     * jansson's UTF-8 scan is skipped (a 60 MB string for D_11 of a 6-mass
-     * chain, issue 17); the bytes are the same */
-    for (k = 0; ascii && k < s->nvars; k++) {
+    for (k = 0; k < s->nvars; k++) {
         const unsigned char *c;
         for (c = (const unsigned char *) s->vars[k]; *c != '\0'; c++)
-            if (*c >= 0x80) ascii = 0;
+            if (*c >= 0x80) return 0;
     }
-    j = ascii ? json_stringn_nocheck(str, strlen(str)) : json_string(str);
-    free(str);
+    return 1;
+}
+
+static json_t *json_text(const char *str, size_t len, int ascii)
+{
+    return ascii ? json_stringn_nocheck(str, len) : json_stringn(str, len);
+}
+
+json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s)
+{
+    return rs_json_zpoly_line(p, s, NULL, NULL, NULL, NULL);
+}
+
+json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line,
+                           char **scratch, size_t *cap)
+{
+    char *own = NULL, **buf = scratch != NULL ? scratch : &own;
+    size_t own_cap = 0, *bcap = scratch != NULL ? cap : &own_cap;
+    json_t *j = NULL;
+    int ascii = names_ascii(s);
+    /* one printing for both strings: the text, then " rel" after it */
+    char *tail = rel != NULL ? malloc(strlen(rel) + 2) : NULL;
+    slong n;
+    if (tail != NULL) sprintf(tail, " %s", rel);
+    n = rs_polyfmt_fmpz_mpoly_into(buf, bcap, p, (const char **) s->vars, s->zctx, tail);
+    if (n >= 0) {
+        size_t t = tail != NULL ? strlen(tail) : 0;
+        j = json_text(*buf, (size_t) n - t, ascii);
+        if (line != NULL) *line = tail != NULL ? json_text(*buf, (size_t) n, ascii) : NULL;
+    } else if (line != NULL) {
+        *line = NULL;
+    }
+    free(tail);
+    free(own);
     return j;
 }
 

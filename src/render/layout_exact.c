@@ -131,7 +131,11 @@ static int branches(rs_render_t *r, const json_t *o)
 static void condition_math(rs_render_t *r, const char *c)
 {
     const char *tail = " (not expanded)";
-    size_t n = strlen(c), t;
+    size_t n, t;
+    /* prose only: the text report says nothing here (its condition lines
+     * are condition_lines'), so no copy of a 27 MB condition (issue 17) */
+    if (r->be->kind == RS_RENDER_TEXT) return;
+    n = strlen(c);
     if (n > 15 && strcmp(c + n - 15, " (not factored)") == 0) tail = " (not factored)";
     t = strlen(tail);
     if (n > t && strcmp(c + n - t, tail) == 0) {

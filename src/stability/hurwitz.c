@@ -135,7 +135,8 @@ rs_hurwitz_init(rs_hurwitz_t h)
 static void
 _cond_clear(rs_hurwitz_cond_struct *c, const fmpz_mpoly_ctx_t ctx)
 {
-    fmpz_mpoly_clear(c->poly, ctx);
+    if (!c->poly_shared)
+        fmpz_mpoly_clear(c->poly, ctx);
     fmpz_mpoly_clear(c->reduced, ctx);
     fmpz_mpoly_factor_clear(c->factors, ctx);
     free(c->origin);
@@ -542,12 +543,20 @@ _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
          * finds no like terms and is linear) */
         fmpz_mpoly_sort_terms(D, ctx);
         fmpz_mpoly_combine_like_terms(D, ctx);
-        /* D = (g / L^m) sum of the slices, exact (rs_hurwitz_subst_back) */
-        fmpz_mpoly_scalar_mul_fmpz(D, D, g, ctx);
-        if (!fmpz_is_one(hs->L)) {
-            fmpz_pow_ui(g, hs->L, (ulong) m);
-            fmpz_mpoly_scalar_divexact_fmpz(D, D, g, ctx);
+        /* D = (g / L^m) sum of the slices, exact (rs_hurwitz_subst_back):
+         * one pass over D's coefficients when L^m divides g (the chain:
+         * L = 1) */
+        fmpz_t Lm;
+        fmpz_init(Lm);
+        fmpz_pow_ui(Lm, hs->L, (ulong) m);
+        if (fmpz_divisible(g, Lm)) {
+            fmpz_divexact(g, g, Lm);
+            fmpz_mpoly_scalar_mul_fmpz(D, D, g, ctx);
+        } else {
+            fmpz_mpoly_scalar_mul_fmpz(D, D, g, ctx);
+            fmpz_mpoly_scalar_divexact_fmpz(D, D, Lm, ctx);
         }
+        fmpz_clear(Lm);
     } else {
         fmpz_mpoly_zero(D, ctx);
     }
@@ -713,10 +722,20 @@ _factor_cheap(fmpz_mpoly_factor_t f, int *whole, const fmpz_mpoly_t poly,
             mono = 1;
         }
     if (mono) {
-        fmpz_mpoly_zero(x, ctx);
-        fmpz_mpoly_set_coeff_ui_ui(x, 1, mn, ctx);
-        if (!fmpz_mpoly_divides(R, R, x, ctx))
-            r = rs_error_set(err, RS_ERR_INTERNAL, "hurwitz: monomial factor does not divide");
+        /* R / prod x_v^mn_v term by term: the quotient of each term, in the
+         * same order (a monomial order is compatible with multiplication),
+         * coefficients moved; FLINT's heap division did the same at a
+         * tenth of the 6-mass chain's conditions (issue 17) */
+        fmpz_mpoly_fit_length_reset_bits(Q, len, R->bits, ctx);
+        for (i = 0; i < len; i++) {
+            fmpz_mpoly_get_term_exp_ui(e, R, i, ctx);
+            for (v = 0; v < nvars; v++)
+                e[v] -= mn[v];
+            fmpz_mpoly_push_term_ui_ui(Q, 0, e, ctx);
+            fmpz_swap(Q->coeffs + i, R->coeffs + i);
+        }
+        fmpz_mpoly_swap(R, Q, ctx);
+        fmpz_mpoly_zero(Q, ctx);
     }
 
     /* factors shared with the other conditions: an exact division that fails
@@ -827,8 +846,11 @@ _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
         }
         kept++;
         if (!even) {
-            kept_odd++;
-            fmpz_mpoly_mul(c->reduced, c->reduced, f, ctx);
+            /* the first one copied (1 * f is a pass of products) */
+            if (kept_odd++ == 0)
+                fmpz_mpoly_set(c->reduced, f, ctx);
+            else
+                fmpz_mpoly_mul(c->reduced, c->reduced, f, ctx);
         }
     }
     if (s < 0)
@@ -859,6 +881,7 @@ _add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
     c->factored = 1;
     c->minor = (letter == 'D') ? idx : 0;
     c->not_expanded = (letter == 'D' && idx > h->expanded);
+    c->poly_shared = 0;
     h->ncond++;
 
     snprintf(origin, sizeof(origin), "%c_%ld", letter, (long) idx);
@@ -874,7 +897,15 @@ _add_cond(rs_hurwitz_t h, const fmpz_mpoly_t poly, char letter, slong idx,
             return rs_error_set(err, RS_ERR_LIMIT, "hurwitz: out of memory");
         return RS_OK;
     }
-    fmpz_mpoly_set(c->poly, poly, ctx);
+    if (letter == 'D') {
+        /* the minor itself, not a copy: D_11 of a 6-mass chain is 637 163
+         * GMP coefficients (issue 17); the conditions only read it */
+        fmpz_mpoly_clear(c->poly, ctx);
+        *c->poly = *poly;
+        c->poly_shared = 1;
+    } else {
+        fmpz_mpoly_set(c->poly, poly, ctx);
+    }
     return RS_OK;
 }
 
@@ -1236,13 +1267,86 @@ rs_hurwitz_eval(fmpq_t out, const fmpz_mpoly_t poly, fmpq *const *vals,
     flint_free(e);
 }
 
+/* The sign of S = sum c prod n_v^e_v d_v^(g_v - e_v) (rs_hurwitz_eval: poly
+ * at the point times prod d_v^g_v > 0) from doubles, certified, or 0 when the
+ * doubles cannot tell.  Every factor is an integer of at most 1000 bits
+ * converted with relative error <= 2^-52 (fmpz_get_d truncates), so every
+ * product is 0 or >= 1 in magnitude (no underflow; overflow shows as inf or
+ * NaN and gives 0).  With K = 3 nvars + 2, a term's product is within
+ * K 2^-53 (1 + 1e-3) of its value, and recursive summation of len terms adds
+ * gamma_len sum |terms| (Higham, Accuracy and Stability, sec. 4.2), so
+ * |s - S| <= 2 (len + K) 2^-53 a, a the computed sum of |terms|, while
+ * (len + K) 2^-53 < 1e-3; the test uses twice that.  The exact sums of the
+ * 637 163-term conditions of a 6-mass chain at its 12 sample points were a
+ * tenth of the run (issue 17); this decides them at a few ns a term. */
+static int
+_sign_filter(const fmpz_mpoly_t poly, fmpq *const *vals,
+             const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, v, nvars = fmpz_mpoly_ctx_nvars(ctx), len = fmpz_mpoly_length(poly, ctx);
+    slong *deg, *off, total = 0;
+    ulong *e;
+    double *tab, s = 0.0, a = 0.0, err;
+    fmpz_t t, w;
+    int ok = 1, res = 0;
+
+    if (len == 0 || (double) (len + 3 * nvars + 2) * 0x1p-53 >= 1e-3
+        || FLINT_ABS(fmpz_mpoly_max_bits(poly)) > 1000)
+        return 0;
+    deg = flint_malloc(nvars * sizeof(slong));
+    off = flint_malloc(nvars * sizeof(slong));
+    e = flint_malloc((nvars + 1) * sizeof(ulong));
+    fmpz_mpoly_degrees_si(deg, poly, ctx);
+    for (v = 0; v < nvars; v++) {
+        off[v] = total;
+        total += FLINT_MAX(deg[v], 0) + 1;
+    }
+    tab = flint_malloc(total * sizeof(double));
+    fmpz_init(t);
+    fmpz_init(w);
+    /* tab[off_v + k] ~ n_v^k d_v^(g_v - k), from the exact integer */
+    for (v = 0; v < nvars && ok; v++) {
+        slong g = FLINT_MAX(deg[v], 0), k;
+        for (k = 0; k <= g && ok; k++) {
+            fmpz_pow_ui(t, fmpq_numref(vals[v]), (ulong) k);
+            fmpz_pow_ui(w, fmpq_denref(vals[v]), (ulong) (g - k));
+            fmpz_mul(t, t, w);
+            if (fmpz_bits(t) > 1000)
+                ok = 0;
+            else
+                tab[off[v] + k] = fmpz_get_d(t);
+        }
+    }
+    for (i = 0; i < len && ok; i++) {
+        double p = fmpz_get_d(poly->coeffs + i);
+        fmpz_mpoly_get_term_exp_ui(e, poly, i, ctx);
+        for (v = 0; v < nvars; v++)
+            if (deg[v] > 0)
+                p *= tab[off[v] + e[v]];
+        s += p;
+        a += fabs(p);
+    }
+    err = 4.0 * (double) (len + 3 * nvars + 2) * 0x1p-53 * a;
+    if (ok && isfinite(s) && isfinite(a) && isfinite(err) && fabs(s) > err)
+        res = s > 0 ? 1 : -1;
+    fmpz_clear(t);
+    fmpz_clear(w);
+    flint_free(tab);
+    flint_free(deg);
+    flint_free(off);
+    flint_free(e);
+    return res;
+}
+
 int
 rs_hurwitz_sign_at(const fmpz_mpoly_t poly, fmpq *const *vals,
                    const fmpz_mpoly_ctx_t ctx)
 {
     fmpq_t x;
-    int s;
+    int s = _sign_filter(poly, vals, ctx);
 
+    if (s != 0)
+        return s;
     fmpq_init(x);
     rs_hurwitz_eval(x, poly, vals, ctx);
     s = fmpq_sgn(x);

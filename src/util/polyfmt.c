@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpz.h>
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
 
@@ -47,11 +48,83 @@ static size_t put_ulong(char *out, ulong u)
     return n;
 }
 
+/* exactly 19 digits of u < 10^19, leading zeros kept */
+static void put_19(char *out, ulong u)
+{
+    int k;
+    for (k = 18; k >= 0; k--) {
+        out[k] = (char) ('0' + u % 10);
+        u /= 10;
+    }
+}
+
+/* The decimal digits of |c| (a GMP integer) at out: chunks of 19 digits by
+ * division by 10^19 (mpn_divrem_1), each chunk by word division.  The
+ * coefficients of the chain's minors carry a content of 2^200 and more, and
+ * fmpz_get_str (mpz_get_str: a temporary, its digit map, then our strlen and
+ * memmove of the sign) was most of printing them (issue 17). */
+static size_t put_mpz(char *out, const fmpz *c)
+{
+    const __mpz_struct *z = COEFF_TO_PTR(*c);
+    mp_size_t n = FLINT_ABS(z->_mp_size);
+    mp_limb_t t[16];
+    ulong ch[20];   /* 16 limbs have at most 309 digits: 17 chunks */
+    slong nch = 0, k;
+    size_t len;
+    if (n > 16) {
+        /* long integers: GMP's subquadratic conversion */
+        char *d = out;
+        fmpz_get_str(d, 10, c);
+        if (*d == '-') memmove(d, d + 1, strlen(d));
+        return strlen(d);
+    }
+    mpn_copyi(t, z->_mp_d, n);
+    while (n > 0) {
+        ch[nch++] = mpn_divrem_1(t, 0, t, n, UWORD(10000000000000000000));
+        while (n > 0 && t[n - 1] == 0) n--;
+    }
+    len = put_ulong(out, ch[nch - 1]);
+    for (k = nch - 2; k >= 0; k--) {
+        put_19(out + len, ch[k]);
+        len += 19;
+    }
+    return len;
+}
+
 /* a name the spacing pass leaves alone: non-empty, none of ( ) + - ^ * / or
  * a blank (names are identifiers; this only guards the equivalence) */
 static int plain_name(const char *v)
 {
     return v != NULL && *v != '\0' && strpbrk(v, "()+-^*/ ") == NULL;
+}
+
+/* *buf (capacity *cap) grown to at least n bytes; 0, or -1 */
+static int buf_fit(char **buf, size_t *cap, size_t n)
+{
+    char *b;
+    if (*buf != NULL && *cap >= n) return 0;
+    b = realloc(*buf, n);
+    if (b == NULL) return -1;
+    *buf = b;
+    *cap = n;
+    return 0;
+}
+
+/* the reference route's text and tail into *buf */
+static slong flint_into(char **buf, size_t *cap, const fmpz_mpoly_t p, const char **vars,
+                        const fmpz_mpoly_ctx_t ctx, const char *tail)
+{
+    char *r = fmpz_mpoly_str_flint(p, vars, ctx);
+    size_t n = strlen(r), t = tail != NULL ? strlen(tail) : 0;
+    if (buf_fit(buf, cap, n + t + 1) != 0) {
+        free(r);
+        return -1;
+    }
+    memcpy(*buf, r, n);
+    if (t > 0) memcpy(*buf + n, tail, t);
+    (*buf)[n + t] = '\0';
+    free(r);
+    return (slong) (n + t);
 }
 
 /* The string of fmpz_mpoly_get_str_pretty after rs_polyfmt_spaced, written
@@ -61,39 +134,41 @@ static int plain_name(const char *v)
  * them, a leading "-", coefficients +-1 left out (a constant term of +-1
  * printed as 1), "*" between factors, "NAME^E" for E > 1.
  * tests/unit/util/test_polyfmt.c compares it with FLINT's route. */
-char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+slong rs_polyfmt_fmpz_mpoly_into(char **buf, size_t *cap, const fmpz_mpoly_t p, const char **vars,
+                                 const fmpz_mpoly_ctx_t ctx, const char *tail)
 {
     slong len = p->length, nv = ctx->minfo->nvars, i, j;
-    size_t bound = 2, vlen_sum = 0, off = 0;
+    size_t bound = 2, vlen_sum = 0, off = 0, tlen = tail != NULL ? strlen(tail) : 0;
     size_t *vlen;
     ulong *e;
     char *out;
 
     if (vars == NULL || p->bits > FLINT_BITS)
-        return fmpz_mpoly_str_flint(p, vars, ctx);
+        return flint_into(buf, cap, p, vars, ctx, tail);
     if (len == 0) {
-        out = malloc(2);
-        if (out != NULL) strcpy(out, "0");
-        return out;
+        if (buf_fit(buf, cap, 2 + tlen) != 0) return -1;
+        (*buf)[0] = '0';
+        if (tlen > 0) memcpy(*buf + 1, tail, tlen);
+        (*buf)[1 + tlen] = '\0';
+        return (slong) (1 + tlen);
     }
     vlen = flint_malloc((nv + 1) * sizeof(size_t));
     for (j = 0; j < nv; j++) {
         if (!plain_name(vars[j])) {
             flint_free(vlen);
-            return fmpz_mpoly_str_flint(p, vars, ctx);
+            return flint_into(buf, cap, p, vars, ctx, tail);
         }
         vlen[j] = strlen(vars[j]);
         vlen_sum += vlen[j] + 2 + 20;   /* "*NAME^" and up to 20 digits */
     }
     for (i = 0; i < len; i++)
         bound += fmpz_sizeinbase(p->coeffs + i, 10) + 2 + 3 + 1 + vlen_sum;
-    out = malloc(bound);
-    e = flint_malloc((nv + 1) * sizeof(ulong));
-    if (out == NULL) {
+    if (buf_fit(buf, cap, bound + tlen) != 0) {
         flint_free(vlen);
-        flint_free(e);
-        return NULL;
+        return -1;
     }
+    out = *buf;
+    e = flint_malloc((nv + 1) * sizeof(ulong));
     for (i = 0; i < len; i++) {
         const fmpz *c = p->coeffs + i;
         int neg = fmpz_sgn(c) < 0, unit = fmpz_is_pm1(c), first = 1, constant = 1;
@@ -104,14 +179,10 @@ char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_
             out[off++] = '-';
         }
         if (!unit) {
-            if (!COEFF_IS_MPZ(*c)) {
+            if (!COEFF_IS_MPZ(*c))
                 off += put_ulong(out + off, FLINT_ABS(*c));
-            } else {
-                char *d = out + off;
-                fmpz_get_str(d, 10, c);
-                if (neg) memmove(d, d + 1, strlen(d));   /* the sign is written */
-                off += strlen(d);
-            }
+            else
+                off += put_mpz(out + off, c);   /* the sign is written */
         }
         fmpz_mpoly_get_term_exp_ui(e, p, i, ctx);
         for (j = 0; j < nv; j++) {
@@ -128,10 +199,23 @@ char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_
         }
         if (constant && unit) out[off++] = '1';
     }
+    if (tlen > 0) memcpy(out + off, tail, tlen);
+    off += tlen;
     out[off] = '\0';
     flint_free(vlen);
     flint_free(e);
-    return out;
+    return (slong) off;
+}
+
+char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars, const fmpz_mpoly_ctx_t ctx)
+{
+    char *buf = NULL;
+    size_t cap = 0;
+    if (rs_polyfmt_fmpz_mpoly_into(&buf, &cap, p, vars, ctx, NULL) < 0) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
 }
 
 char *rs_polyfmt_fmpq_mpoly(const fmpq_mpoly_t p, const char **vars, const fmpq_mpoly_ctx_t ctx)

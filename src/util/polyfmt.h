@@ -16,6 +16,12 @@ extern "C" {
 char *rs_polyfmt_spaced(const char *flint_str);
 char *rs_polyfmt_fmpz_mpoly(const fmpz_mpoly_t p, const char **vars,
                             const fmpz_mpoly_ctx_t ctx);
+/* rs_polyfmt_fmpz_mpoly's text followed by tail (NULL: none) in *buf, which
+ * is grown with realloc as needed (*cap its size; NULL and 0 at first, then
+ * reusable for the next polynomial, free() at the end): the length written
+ * (without the NUL), or -1 when memory ran out (*buf stays valid). */
+slong rs_polyfmt_fmpz_mpoly_into(char **buf, size_t *cap, const fmpz_mpoly_t p, const char **vars,
+                                 const fmpz_mpoly_ctx_t ctx, const char *tail);
 char *rs_polyfmt_fmpq_mpoly(const fmpq_mpoly_t p, const char **vars,
                             const fmpq_mpoly_ctx_t ctx);
 /* p collected by powers of `var`, highest first:

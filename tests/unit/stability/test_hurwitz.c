@@ -1648,6 +1648,80 @@ test_subst_rational(void **state)
     tctx_clear(&t);
 }
 
+/* rs_hurwitz_sign_at decides most points from doubles with a certified error
+ * bound and falls back to the exact sum (rs_hurwitz_eval) otherwise: its sign
+ * must be the sign of the exact value everywhere.  (1) Random polynomials
+ * with coefficients up to 2^300 at random rational points, against
+ * fmpq_sgn of rs_hurwitz_eval.  (2) Cancellation the doubles cannot resolve,
+ * with the signs by hand: (x - y)^20 at x = y (0), at x = y + 10^-6 (> 0:
+ * 10^-120, while its terms are up to C(20,10) (7/3)^20 in size);
+ * (x - y)^21 at x = y - 10^-6 (< 0); 10^120 (x - y)^20 - 1 at
+ * x - y = 10^-6 (exactly 0); x^2 - 2 y^2 at x = 99 10^300, y = 70 10^300 + 1
+ * (10^600 - 280 10^300 - 2 > 0) and y = 70 10^300 + 10^298
+ * (10^600 (9801 - 2 70.01^2) = -1.8002 10^600 < 0): beyond the doubles'
+ * exponent range. */
+static void
+test_sign_filter(void **state)
+{
+    const char *vars[] = {"x", "y", "z"};
+    tctx_struct t;
+    fmpz_mpoly_t p;
+    fmpq_t x, y, z, val;
+    fmpq *pt[3];
+    flint_rand_t rs;
+    slong it, k;
+    (void) state;
+
+    tctx_init(&t, vars, 3);
+    fmpz_mpoly_init(p, t.ctx);
+    fmpq_init(x); fmpq_init(y); fmpq_init(z); fmpq_init(val);
+    pt[0] = x; pt[1] = y; pt[2] = z;
+    flint_randinit(rs);
+    for (it = 0; it < 600; it++) {
+        fmpz_mpoly_randtest_bound(p, rs, n_randint(rs, 40) + 1, it % 3 == 0 ? 300 : 40,
+                                  n_randint(rs, 12) + 1, t.ctx);
+        for (k = 0; k < 3; k++) {
+            fmpz_randtest(fmpq_numref(pt[k]), rs, n_randint(rs, 40) + 1);
+            fmpz_randtest_not_zero(fmpq_denref(pt[k]), rs, n_randint(rs, 40) + 1);
+            fmpz_abs(fmpq_denref(pt[k]), fmpq_denref(pt[k]));
+            fmpq_canonicalise(pt[k]);
+        }
+        rs_hurwitz_eval(val, p, pt, t.ctx);
+        assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), fmpq_sgn(val));
+    }
+    fmpq_set_si(z, 3, 1);
+    set_str(p, "(x - y)^20", &t);
+    fmpq_set_si(x, 7, 3);
+    fmpq_set_si(y, 7, 3);
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), 0);
+    fmpq_set_str(x, "7000003/3000000", 10);          /* y + 10^-6 */
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), 1);
+    set_str(p, "(x - y)^21", &t);
+    fmpq_set_str(x, "6999997/3000000", 10);          /* y - 10^-6 */
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), -1);
+    set_str(p, "1000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000*(x - y)^20 - 1", &t);
+    fmpq_set_str(x, "7000003/3000000", 10);          /* 10^120 10^-120 - 1 = 0 */
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), 0);
+    set_str(p, "x^2 - 2*y^2", &t);
+    fmpz_set_ui(fmpq_numref(x), 10);
+    fmpz_pow_ui(fmpq_numref(x), fmpq_numref(x), 300);
+    fmpz_mul_ui(fmpq_numref(y), fmpq_numref(x), 70);
+    fmpz_mul_ui(fmpq_numref(x), fmpq_numref(x), 99);
+    fmpz_one(fmpq_denref(x));
+    fmpz_one(fmpq_denref(y));
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), 1);   /* exactly 10^600 */
+    fmpz_add_ui(fmpq_numref(y), fmpq_numref(y), 1);
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), 1);
+    fmpz_set_ui(fmpq_numref(y), 10);
+    fmpz_pow_ui(fmpq_numref(y), fmpq_numref(y), 298);
+    fmpz_mul_ui(fmpq_numref(y), fmpq_numref(y), 7001);   /* 70 10^300 + 10^298 */
+    assert_int_equal(rs_hurwitz_sign_at(p, pt, t.ctx), -1);
+    flint_randclear(rs);
+    fmpq_clear(x); fmpq_clear(y); fmpq_clear(z); fmpq_clear(val);
+    fmpz_mpoly_clear(p, t.ctx);
+    tctx_clear(&t);
+}
+
 int
 main(void)
 {
@@ -1672,6 +1746,7 @@ main(void)
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
         cmocka_unit_test(test_chain_unfactored),
+        cmocka_unit_test(test_sign_filter),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();

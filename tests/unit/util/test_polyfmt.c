@@ -46,7 +46,10 @@ static void test_random_against_flint(void **state)
         fmpz_mpoly_ctx_t ctx;
         fmpz_mpoly_t p;
         slong len = (slong) n_randint(rs, 12);
-        flint_bitcnt_t cb = (it % 4 == 0) ? 1 + n_randint(rs, 2) : 1 + n_randint(rs, 200);
+        /* and now and then up to 1200 bits: the printer's own decimal
+         * conversion stops at 16 limbs and hands longer ones to GMP */
+        flint_bitcnt_t cb = (it % 4 == 0) ? 1 + n_randint(rs, 2)
+                          : (it % 10 == 1) ? 1 + n_randint(rs, 1200) : 1 + n_randint(rs, 200);
         ulong eb = (it % 50 == 0) ? 70 : 1 + n_randint(rs, 8);
         fmpz_mpoly_ctx_init(ctx, nv, ords[it % 3]);
         fmpz_mpoly_init(p, ctx);
@@ -58,6 +61,50 @@ static void test_random_against_flint(void **state)
         fmpz_mpoly_ctx_clear(ctx);
     }
     flint_randclear(rs);
+}
+
+/* Coefficients at the edges of the printer's 19-digit chunks (10^k - 1,
+ * 10^k, 10^k + 1 for k = 17..80, chunks of zeros inside), 2^64 +- 1 and
+ * the 16/17-limb boundary (2^1023, 2^1024 +- 1), either sign, against
+ * FLINT's route. */
+static void test_chunk_edges(void **state)
+{
+    static const char *names[] = {"m", "muh"};
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    fmpz_t c, t;
+    ulong e[2] = {1, 2};
+    slong k, d;
+    (void) state;
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    fmpz_init(c);
+    fmpz_init(t);
+    for (k = 17; k <= 80; k++)
+        for (d = -1; d <= 1; d++) {
+            fmpz_set_ui(c, 10);
+            fmpz_pow_ui(c, c, (ulong) k);
+            fmpz_add_si(c, c, d);
+            fmpz_mpoly_zero(p, ctx);
+            fmpz_mpoly_set_coeff_fmpz_ui(p, c, e, ctx);
+            fmpz_neg(t, c);
+            fmpz_mpoly_set_coeff_fmpz_ui(p, t, e + 1, ctx);
+            check_same(p, names, ctx);
+        }
+    for (k = 0; k < 3; k++)
+        for (d = -1; d <= 1; d++) {
+            fmpz_one(c);
+            fmpz_mul_2exp(c, c, k == 0 ? 64 : k == 1 ? 1023 : 1024);
+            fmpz_add_si(c, c, d);
+            fmpz_mpoly_set_fmpz(p, c, ctx);
+            check_same(p, names, ctx);
+            fmpz_mpoly_neg(p, p, ctx);
+            check_same(p, names, ctx);
+        }
+    fmpz_clear(c);
+    fmpz_clear(t);
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
 }
 
 /* Strings written out by hand for polynomials set from text. */
@@ -99,6 +146,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_against_flint),
+        cmocka_unit_test(test_chunk_edges),
         cmocka_unit_test(test_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
