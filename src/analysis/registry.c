@@ -379,8 +379,13 @@ int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q)
     memset(req, 0, sizeof *req);
     req->q = q;
     r = lookup(&req->def, run, q);
-    if (r == RS_OK) r = rs_an_qd_check(run, req);   /* rk sdirk2: three analyses only */
     if (r != RS_OK) return r;
+    r = rs_an_qd_check(run, req);   /* rk sdirk2: three analyses only */
+    if (r != RS_OK)
+    {
+        req->def = NULL;            /* refused before its parse: nothing for its clear */
+        return r;
+    }
     req->rest = rs_req_skip_word(q->text);
     if (req->def->parse != NULL) return req->def->parse(req, run);
     return opts_parse(req, run, req->rest);
