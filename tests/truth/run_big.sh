@@ -13,11 +13,12 @@ RS=${RS:-build/recstab}
 export RS
 total_fail=0
 for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
-            symcond symmat rk builders limit radmat map cosim; do
+            symcond symmat rk builders limit radmat map cosim zeros circle lmm3 algclaim simlimit; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     script=tests/truth/truth.py
     case $part in symcond|symmat|rk|builders|limit|radmat|map|cosim) script=tests/truth/truth2.py ;; esac
+    case $part in zeros|circle|lmm3|algclaim|simlimit) script=tests/truth/truth3.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
         out=$(python3 "$script" "$part" "$s" "$n" 2>&1)

@@ -16,7 +16,7 @@ rationals of truth.py; mpmath only where named):
            rational-tangent rotation) -- either semisimple (diagonal copies:
            marginal) or chained by identity blocks (Jordan: unstable), beside
            planted roots inside: stability / jury / routh verdict and the on count.
-  lmm      linear multistep methods from the literature written as a new user
+  lmm      (lmm3 in run_big.sh) linear multistep methods from the literature written as a new user
            would (`eq y[n+2] - y[n] = q/3*(y[n+2] + 4*y[n+1] + y[n])`, f = q y):
            Milne-Simpson, Nystrom (leapfrog), AB2, AB3, AM2 (3rd order), BDF2..BDF6
            zero-stable, BDF7 not (root condition of rho at q = 0: Hairer-Norsett-
@@ -433,7 +433,7 @@ def part_quick(rng, count):
     part_simlimit(rng, max(1, count // 2))
 
 
-PARTS = {"quick": part_quick, "zeros": part_zeros, "circle": part_circle, "lmm": part_lmm,
+PARTS = {"quick": part_quick, "zeros": part_zeros, "circle": part_circle, "lmm": part_lmm, "lmm3": part_lmm,
          "algclaim": part_algclaim, "simlimit": part_simlimit}
 
 if __name__ == "__main__":
