@@ -390,7 +390,7 @@ static void hurwitz_origins(rs_render_t *r, const json_t *o)
     }
     if (n > 0 && n == json_array_size(conds)) rs_render_line(r, "from", "%s", buf);
     if (json_is_true(json_object_get(o, "negated")))
-        rs_render_line(r, "negated", "%s", "q(z) -> -q(z) (its leading coefficient is negative under the assumptions)");
+        rs_render_line(r, "negated", "%s", "the conditions are those of -q(z) (the same roots)");
 }
 
 void rs_render_hurwitz(rs_render_t *r, const json_t *o)
