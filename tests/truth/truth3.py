@@ -124,7 +124,9 @@ def part_zeros(rng, count):
         if mode == "qi-set" and roots[0].im == 0:
             # a real set value: no complex set, the char line is over Q(i) only through the others
             mode = "qi-char"
-        cplx = any(r.im != 0 for r in roots)
+        # a char line over Q(i) is a block system only when p itself is not real
+        # (a conjugate pair multiplies out to real coefficients)
+        cplx = any(c.im != 0 for c in T.poly_from_roots(roots))
         analyses = ["stability", "jury", "routh"] + (["modes"] if mode != "system" else [])
         text = "title planted roots at 0\n" + body + "".join("analyse %s\n" % a for a in analyses)
         rc, doc, err = T.run(text, ["--time-limit", "20"])
