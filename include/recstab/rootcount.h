@@ -37,6 +37,10 @@ typedef struct {
      * (m = 1 .. RS_ROOTCOUNT_MAXMULT-1; larger multiplicities go into the
      * last slot). sum over m of m*on_mult[m] == on. */
     slong on_mult[RS_ROOTCOUNT_MAXMULT];
+    /* multiplicity of lambda = 0 (counted in inside), set by the analyses
+     * for det A = c lambda^k p: the k roots at 0 divided out of p and p's
+     * own; the counting methods leave it 0 and rs_rootcount_equal skips it */
+    slong at_zero;
 } rs_rootcount_struct;
 
 typedef rs_rootcount_struct rs_rootcount_t[1];

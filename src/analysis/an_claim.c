@@ -1658,6 +1658,93 @@ static int claim_part_region(json_t **reg, rs_run_t *run, const rs_request_t *q,
     return r;
 }
 
+/* An undecided claim whose for-all region has a failing interval: that
+ * interval's cell sample (a rational point) refutes it when, re-checked here,
+ * the point satisfies the assumptions and a part of the claim's condition and
+ * the exact point verdict violates the claim (the search's points can miss a
+ * thin failing interval between an algebraic end and a rational bound).
+ * 1 when refuted (status, counterexample and verdict put into o). */
+static int claim_refute_from_region(rs_run_t *run, claim_kind_t kind, const claim_dnf_t *d, const json_t *failing,
+                                    json_t *o)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    slong np = run->c->nparams, i, k, part;
+    size_t fi;
+    const json_t *f;
+    int done = 0;
+    if (rs_run_default_variant(run, &v) != RS_OK) { rs_error_init(run->err); return 0; }
+    s = v->s;
+    json_array_foreach(failing, fi, f) {
+        const json_t *cx = json_object_get(f, "counterexample"), *val;
+        const char *key;
+        fmpq *pt, **pp, *vals;
+        slong *vars, nv = 0;
+        int ok = 1, inside = 0, r;
+        if (done || !json_is_object(cx)) continue;
+        pt = _fmpq_vec_init(s->nvars);
+        vals = _fmpq_vec_init(np + 1);
+        pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+        vars = flint_malloc((size_t) (np + 1) * sizeof(slong));
+        for (i = 0; i < s->nvars; i++) pp[i] = pt + i;
+        for (i = 0; i < run->c->nsets; i++) {
+            k = rs_case_param_index(run->c, run->c->sets[i].name);
+            if (k >= 0 && k < s->nvars) fmpq_set(pt + k, run->c->sets[i].value);
+        }
+        json_object_foreach((json_t *) cx, key, val) {
+            k = rs_case_param_index(run->c, key);
+            if (k < 0 || k >= s->nvars || param_is_set(run, k) || !json_is_string(val)
+                || fmpq_set_str(pt + k, json_string_value(val), 10) != 0) { ok = 0; break; }
+            fmpq_canonicalise(pt + k);
+            vars[nv] = k;
+            fmpq_set(vals + nv++, pt + k);
+        }
+        /* the assumptions and one part of the claim's condition hold there */
+        for (part = 0; ok && part < d->nparts && !inside; part++) {
+            rs_condpoly_t *cps = calloc((size_t) (run->c->nassume + d->n[part] + 1), sizeof(rs_condpoly_t));
+            slong ncps = 0;
+            r = RS_OK;
+            for (i = 0; i < run->c->nassume && r == RS_OK; i++)
+                if ((r = rs_condpoly_compile(cps + ncps, &run->c->assume[i], s, run->c, run->err)) == RS_OK) ncps++;
+            for (i = 0; i < d->n[part] && r == RS_OK; i++)
+                if ((r = rs_condpoly_compile(cps + ncps, d->conds[part] + i, s, run->c, run->err)) == RS_OK) ncps++;
+            if (r == RS_OK) inside = rs_run_point_admissible(cps, ncps, pp, s);
+            else rs_error_init(run->err);
+            for (i = 0; i < ncps; i++) rs_condpoly_clear(cps + i, s);
+            free(cps);
+        }
+        if (ok && inside) {
+            rs_rootcount_t rc;
+            rs_status_t st;
+            rs_rootcount_init(rc);
+            r = rs_run_point_status(&st, rc, run, v, vars, vals, nv);
+            if (r == RS_OK && violates(kind, st)) {
+                json_t *at = json_object();
+                if (st != RS_STATUS_SINGULAR) rs_json_add_count(at, rc);
+                json_object_set_new(at, "status", json_string(rs_status_name(st)));
+                json_object_set_new(at, "decided_by", json_string("exact"));
+                json_object_set_new(o, "status", json_string("refuted"));
+                json_object_set(o, "counterexample", (json_t *) cx);
+                json_object_set_new(o, "at_counterexample", at);
+                json_object_set_new(o, "found_by", json_string(
+                    "the for-all region: a failing interval's cell sample, re-checked (the assumptions and the "
+                    "claim's condition hold there, the exact point verdict violates the claim)"));
+                json_object_del(o, "failed_at");
+                run->outcome |= RS_OUTCOME_FAILED;
+                done = 1;
+            } else if (r != RS_OK) {
+                rs_error_init(run->err);
+            }
+            rs_rootcount_clear(rc);
+        }
+        _fmpq_vec_clear(pt, s->nvars);
+        _fmpq_vec_clear(vals, np + 1);
+        flint_free(pp);
+        flint_free(vars);
+    }
+    return done;
+}
+
 static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t kind, const claim_dnf_t *d,
                               json_t *o)
 {
@@ -1747,6 +1834,8 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
             json_object_set(f, "hi", json_object_get(iv, "hi"));
             json_object_set(f, "lo_closed", json_object_get(iv, "lo_closed"));
             json_object_set(f, "hi_closed", json_object_get(iv, "hi_closed"));
+            if (json_object_get(iv, "lo_approx") != NULL) json_object_set(f, "lo_approx", json_object_get(iv, "lo_approx"));
+            if (json_object_get(iv, "hi_approx") != NULL) json_object_set(f, "hi_approx", json_object_get(iv, "hi_approx"));
             json_object_set(f, "status", json_object_get(iv, "status"));
             ev = json_object_get(iv, "evidence");
             json_array_foreach(ev, k, e) {      /* the first cell's counterexample */
@@ -1776,6 +1865,8 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
         json_decref(regs);
         return r;
     }
+    if (strcmp(st, "undecided") == 0 && some_bad && claim_refute_from_region(run, kind, d, failing, o))
+        st = "refuted";
     /* proved <=> inside the good part; undecided cells decide nothing */
     if (strcmp(st, "undecided") == 0 && all_good && region_proof(run, tv, kind, regs, o) == 1) {
         st = "proved";

@@ -350,12 +350,21 @@ static json_t *chain_json(const rs_routh_complex_t t)
     return arr;
 }
 
-/* the counts of lambda over the unit circle from those of q over the
- * half-planes: inside = left, on = axis + degree drop (lambda = -1) */
-static void counts_json(json_t *o, const rs_routh_complex_t t, slong n)
+/* the k roots at 0 charpoly.c divided out of a real det (a char line with
+ * i keeps them in p): counted inside with p's */
+static slong cpoint_zeros(const cpoint_t *cp)
 {
-    json_object_set_new(o, "degree", json_integer(n));
-    json_object_set_new(o, "inside", json_integer(t->left));
+    return cp->v->s->complex_char ? 0 : cp->v->cp->removed_lambda_power;
+}
+
+/* the counts of lambda over the unit circle from those of q over the
+ * half-planes: inside = left, on = axis + degree drop (lambda = -1); the
+ * roots at 0 divided out inside */
+static void counts_json(json_t *o, const rs_routh_complex_t t, slong n, slong zeros)
+{
+    json_object_set_new(o, "degree", json_integer(n + zeros));
+    json_object_set_new(o, "inside", json_integer(t->left + zeros));
+    if (zeros > 0) json_object_set_new(o, "at_zero", json_integer(zeros));
     json_object_set_new(o, "on", json_integer(t->axis + (n - t->degree)));
     json_object_set_new(o, "outside", json_integer(t->right));
 }
@@ -397,7 +406,7 @@ int rs_an_complex_routh(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "left", json_integer(t->left));
         json_object_set_new(o, "right", json_integer(t->right));
         json_object_set_new(o, "axis", json_integer(t->axis));
-        counts_json(o, t, n);
+        counts_json(o, t, n, cpoint_zeros(&cp));
         emit(run, &cp, o);
         rs_routh_complex_clear(t);
         fmpq_poly_clear(qr); fmpq_poly_clear(qi);
@@ -423,7 +432,7 @@ static int complex_verdict(rs_status_t *st, rs_routh_complex_t t, rs_run_t *run,
                             "bilinear transform says %s", rs_status_name(s1), rs_status_name(s2));
     *st = s1;
     json_object_set_new(o, "status", json_string(rs_status_name(s1)));
-    counts_json(o, t, n);
+    counts_json(o, t, n, cpoint_zeros(cp));
     if (s1 == RS_STATUS_SINGULAR)
         json_object_set_new(o, "singular", json_string("the leading coefficient of p vanishes at these values: "
                             "the step cannot be solved"));
@@ -504,7 +513,7 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
     rs_radius_t rr;
     fmpz_poly_t N;
     rs_status_t st;
-    int r;
+    int r, dead = 0;
     if (strcmp(rs_an_opt_choice(req, "method"), "certified") != 0)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
                             "radius at complex set values: only method=certified (found method=%s)",
@@ -516,14 +525,26 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
     if (r == RS_OK) {
         o = base_json("radius", &cp);
         rs_schur_complex_norm(N, cp.re, cp.im);
-        if (fmpz_poly_degree(N) < 1) {
+        if (fmpz_poly_degree(N) < 1 && cpoint_zeros(&cp) > 0 && !cp.v->singular) {
+            /* det = c lambda^k (the k roots at 0 divided out): dead-beat, radius exactly 0, as over Q */
+            json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
+            json_object_set_new(o, "certified", json_true());
+            json_object_set_new(o, "lower", json_string("0"));
+            json_object_set_new(o, "upper", json_string("0"));
+            json_object_set_new(o, "rho", json_string("0"));
+            json_object_set_new(o, "roots", json_array());
+            json_object_set_new(o, "exact_status", json_string("stable"));
+            json_object_set_new(o, "dead_beat", json_string(
+                "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0"));
+            dead = 1;
+        } else if (fmpz_poly_degree(N) < 1) {
             r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
                              "radius: p has no root at these values%s", "");
         } else {
             r = rs_radius_fmpz_poly(rr, N, digits, run->opt->max_prec, run->err);
         }
     }
-    if (r == RS_OK) {
+    if (r == RS_OK && !dead) {
         const char *nv;
         int consistent = 1;
         json_object_set_new(o, "method", json_string(

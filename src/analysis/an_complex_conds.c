@@ -50,13 +50,13 @@ static int cx_symbolic(fmpz_mpoly_t re, fmpz_mpoly_t im, slong *n, rs_variant_t 
     int r = rs_run_default_variant(run, vp);
     if (r != RS_OK) return r;
     s = (*vp)->s;
-    rs_run_cx_poly(re, im, run, *vp);
+    rs_run_cx_poly_det(re, im, run, *vp);   /* with det's roots at 0 */
     *n = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
     if (*n < 0)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_MATH, "%s: the characteristic polynomial vanishes at "
                             "the complex set values", req->def->name);
     /* the degree over Q(params) (of the block form: twice p's) must survive */
-    if ((*vp)->singular || (!s->complex_char && *n < (*vp)->cp->degree))
+    if ((*vp)->singular || (!s->complex_char && *n < rs_charpoly_top_degree((*vp)->cp)))
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: the leading coefficient of p vanishes at "
                             "the set values: the implicit step cannot be solved there", req->def->name);
     if (*n < 1)

@@ -285,6 +285,7 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
         }
         json_object_set_new(o, "rows", rows);
         json_object_set_new(o, "gcd_degree", json_integer(ju->gcd_degree));
+        rs_run_count_zeros(ju->count, v, p);   /* det's roots at 0 count inside */
         rs_json_add_count(o, ju->count);
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:b}", "with", "routh (bilinear)", "agree", agree));
         if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;

@@ -159,7 +159,7 @@ static int cx_limit(rs_run_t *run, const rs_an_req_t *req)
     if (r != RS_OK) return r;
     s = v->s;
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    n = rs_run_cx_poly(re, im, run, v);
+    n = rs_run_cx_poly_det(re, im, run, v);   /* det's roots at 0 stay at 0: listed */
     for (k = 0; k < s->nvars && r == RS_OK; k++) {
         char msg[300];
         if (k == s->lambda_var || k == tv) continue;
@@ -284,6 +284,9 @@ int rs_an_limit(rs_run_t *run, const rs_an_req_t *req)
             if (!fmpz_poly_is_zero(c)) break;
         }
     }
+    /* det = c lambda^k p: its k roots at 0 stay there for every value */
+    fmpz_poly_shift_left(c, c, v->cp->removed_lambda_power);
+    dl += v->cp->removed_lambda_power;
     o = json_object();
     json_object_set_new(o, "analysis", json_string("limit"));
     json_object_set_new(o, "param", json_string(name));

@@ -147,6 +147,9 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     } else {
         r = rs_run_numeric_variant(run, &v);
         if (r == RS_OK) r = rs_run_numeric_poly(p, run, q, v, "modes");
+        /* det = c lambda^k p: its roots at 0 are modes too (no continuous
+         * equivalent), listed as over Q(i), where p keeps them */
+        if (r == RS_OK) fmpz_poly_shift_left(p, p, v->cp->removed_lambda_power);
     }
     if (r != RS_OK) {
         fmpz_poly_clear(p);

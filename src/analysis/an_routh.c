@@ -17,7 +17,7 @@ static const char *event_name(rs_routh_event_kind_t k)
 }
 
 /* The exact Routh array of p (numbers) into o. */
-static int routh_numeric(rs_run_t *run, const fmpz_poly_t p, json_t *o)
+static int routh_numeric(rs_run_t *run, const rs_variant_t *v, const fmpz_poly_t p, json_t *o)
 {
     rs_routh_t ro;
     json_t *rows, *pw, *ev;
@@ -74,6 +74,8 @@ static int routh_numeric(rs_run_t *run, const fmpz_poly_t p, json_t *o)
     json_object_set_new(o, "rows", rows);
     json_object_set_new(o, "events", ev);
     json_object_set_new(o, "sign_changes", json_integer(ro->sign_changes));
+    /* the array is q's of p = det/lambda^k: the k roots at 0 (z = -1) count inside */
+    rs_run_count_zeros(ro->count, v, p);
     rs_json_add_count(o, ro->count);
     r = rs_run_numeric_verdict(run, p, ro->count, o);
     rs_routh_clear(ro);
@@ -166,7 +168,7 @@ static int routh_real(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "var", json_string("z"));
     fmpz_poly_init(p);
     if (rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx))
-        r = routh_numeric(run, p, o);
+        r = routh_numeric(run, v, p, o);
     else
         r = routh_symbolic(run, req->q, v, o);
     fmpz_poly_clear(p);

@@ -23,6 +23,7 @@ static int stability_real(rs_run_t *run, const rs_an_req_t *req)
         r = rs_run_exact_count(rc, run, p, o);
         if (r == RS_OK) {
             rs_status_t st;
+            rs_run_count_zeros(rc, v, p);   /* det's roots at 0 count inside */
             rs_json_add_count(o, rc);
             r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, o);
             /* a char line over Q(i): its real block form decided; the complex

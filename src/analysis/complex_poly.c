@@ -114,6 +114,23 @@ slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, cons
                      fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
 }
 
+slong rs_run_cx_poly_det(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    slong n = rs_run_cx_poly(re, im, run, v), k = s->complex_char ? 0 : v->cp->removed_lambda_power;
+    if (n >= 0 && k > 0) {
+        fmpz_mpoly_t lk;
+        fmpz_mpoly_init(lk, s->zctx);
+        fmpz_mpoly_gen(lk, s->lambda_var, s->zctx);
+        fmpz_mpoly_pow_ui(lk, lk, (ulong) k, s->zctx);
+        fmpz_mpoly_mul(re, re, lk, s->zctx);
+        fmpz_mpoly_mul(im, im, lk, s->zctx);
+        fmpz_mpoly_clear(lk, s->zctx);
+        n += k;
+    }
+    return n;
+}
+
 void rs_run_cx_eval(fmpq_poly_t out, const fmpz_mpoly_t p, fmpq *const *pt, const rs_scheme_struct *s)
 {
     slong len = fmpz_mpoly_length(p, s->zctx), i, v;
@@ -153,13 +170,13 @@ int rs_run_cx_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, co
     fmpq_poly_init(pr); fmpq_poly_init(pi);
     for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
     for (k = 0; k < nv; k++) fmpq_set(pt + vars[k], vals + k);
-    n = rs_run_cx_poly(re, im, run, v);
+    n = rs_run_cx_poly_det(re, im, run, v);   /* the counts of det: its roots at 0 too */
     rs_run_cx_eval(pr, re, pp, s);
     rs_run_cx_eval(pi, im, pp, s);
     rs_rootcount_clear(rc);
     rs_rootcount_init(rc);
     if (v->singular || n < 1 || FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi)) < n
-        || (!s->complex_char && n < v->cp->degree)) {
+        || (!s->complex_char && n < rs_charpoly_top_degree(v->cp))) {
         /* the leading coefficient of p vanishes here: no step can be solved */
         *st = RS_STATUS_SINGULAR;
     } else {

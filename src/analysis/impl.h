@@ -186,6 +186,9 @@ int rs_run_numeric_poly(fmpz_poly_t p, rs_run_t *run, const rs_request_t *q, con
                         const char *what);
 int rs_run_exact_count(rs_rootcount_t rc, rs_run_t *run, const fmpz_poly_t p, json_t *o);
 void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
+/* det A = c lambda^k p: p's count rc (p at the point, or NULL) plus the k
+ * roots at 0 charpoly.c divided out, inside; at_zero their multiplicity */
+void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_poly_t p);
 json_t *rs_json_jury_route(const rs_jury_t ju);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
@@ -220,6 +223,10 @@ json_t *rs_json_p_at(const rs_variant_t *v, slong x);
  * read back from its block form), returns its degree in lambda (-1: zero);
  * rs_run_cx_eval: re or im at the point pt (every variable but lambda). */
 slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v);
+/* the same times lambda^k, k the roots at 0 charpoly.c divided out of a real
+ * det (a char line with i keeps them in its block entries): the counts and
+ * roots of det itself, and a dead-beat det = c lambda^k still has degree k */
+slong rs_run_cx_poly_det(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, const rs_variant_t *v);
 /* complex_poly.c: qr + i qi += c i^ib x^ex with the complex set values
  * substituted (their exponents in ex zeroed; terms pushed unsorted) */
 void rs_cx_add_term(fmpq_mpoly_t qr, fmpq_mpoly_t qi, const fmpq_t c, int ib, slong *ex, const rs_run_t *run,

@@ -695,6 +695,17 @@ void rs_json_add_count(json_t *o, const rs_rootcount_t rc)
             json_array_append_new(m, json_pack("{s:I,s:I}", "multiplicity", (json_int_t) k,
                                                "roots", (json_int_t) rc->on_mult[k]));
     json_object_set_new(o, "on_multiplicities", m);
+    if (rc->at_zero > 0) json_object_set_new(o, "at_zero", json_integer(rc->at_zero));
+}
+
+void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_poly_t p)
+{
+    slong k = v->cp->removed_lambda_power, z = 0;
+    if (p != NULL && !fmpz_poly_is_zero(p))
+        while (z < fmpz_poly_length(p) && fmpz_is_zero(p->coeffs + z)) z++;
+    rc->inside += k;
+    rc->degree += k;
+    rc->at_zero = k + z;
 }
 
 /* Which exact Schur-Cohn route counted (jury.c): the key
@@ -874,6 +885,7 @@ int rs_run_point_status(rs_status_t *st, rs_rootcount_t rc, rs_run_t *run, const
         fmpz_poly_primitive_part(u, u);
         r = rs_run_exact_count(rc, run, u, NULL);
         if (r == RS_OK) r = rs_run_verdict(st, run, s, vars, vals, nv, u, rc, 0, NULL);
+        if (r == RS_OK) rs_run_count_zeros(rc, v, u);
         /* a char line over Q(i): p's own counts (not p conj(p)'s), its verdict
          * checked against the block form's */
         if (r == RS_OK && s->complex_char) r = rs_run_cx_point_status(st, rc, run, v, vars, vals, nv, (int) *st);
@@ -1003,6 +1015,7 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
             rs_status_t st;
             rs_rootcount_init(rc);
             r = rs_run_exact_count(rc, run, u, NULL);
+            rs_run_count_zeros(rc, v, u);
             st = rs_rootcount_status(rc);
             nok++;
             if (r == RS_OK && (st == RS_STATUS_STABLE) != (says == 1)) {

@@ -201,6 +201,7 @@ typedef struct {
     const rs_scheme_struct *s;
     fmpz_mpoly_t re, im;
     slong n, naxes, var[2], K1, max_prec, stride;
+    slong zeros;              /* det's roots at 0 divided out of p (counted inside) */
     const fmpq *vals[2];      /* axis values (read, not copied) */
     const char *names[2];
     int of;

@@ -202,6 +202,7 @@ static int point_stability(rs_sweep_row_t *pt, const job_t *J, slong idx, const 
         pt->on = (int) rc->on;
         pt->outside = (int) rc->outside;
     }
+    pt->inside += (int) J->v->cp->removed_lambda_power;   /* det's roots at 0 divided out of p */
     if (r == RS_OK) r = point_system(pt, J, idx, P, fmpz_poly_degree(P) > 0 ? rc : NULL, err);
     rs_rootcount_clear(rc);
     return r;
@@ -431,6 +432,7 @@ int rs_sweep_cx_init(rs_sweep_cx_t *J, rs_run_t *run, const rs_request_t *q, con
     }
     if (r != RS_OK) return r;
     J->n = rs_run_cx_poly(J->re, J->im, run, v);
+    J->zeros = s->complex_char ? 0 : v->cp->removed_lambda_power;   /* a char line with i keeps them in p */
     for (k = 0; r == RS_OK && k < s->nvars; k++) {
         char msg[300];
         if (k == s->lambda_var || k == J->var[0] || (J->naxes > 1 && k == J->var[1])
@@ -513,7 +515,7 @@ void rs_sweep_cx_point(rs_sweep_row_t *pt, slong idx, void *model, rs_error_t er
                              "root counts say %s", rs_status_name(st), rs_status_name(rs_rootcount_status(rc)));
         if (r == RS_OK && J->stride > 0 && idx % J->stride == 0) r = rs_cx_norm_check(st, pr, pi, err);
         pt->d.verdict = (int) st;
-        pt->inside = (int) rc->inside;
+        pt->inside = (int) (rc->inside + J->zeros);
         pt->on = (int) rc->on;
         pt->outside = (int) rc->outside;
         pt->d.repeated_on = rs_rootcount_max_on_mult(rc) > 1;

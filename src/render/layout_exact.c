@@ -374,6 +374,29 @@ static void complex_p(rs_render_t *r, const json_t *o)
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
 
+/* which coefficient or minor each listed condition comes from (the JSON's
+ * "details", one per condition not trivially true, in the same order), and
+ * those false for every value: "conditions -1 > 0" alone did not say that
+ * a_0 = -2 < 0 is the reason */
+static void hurwitz_origins(rs_render_t *r, const json_t *o)
+{
+    const json_t *conds = json_object_get(o, "conditions"), *det = json_object_get(o, "details"), *d;
+    char buf[1024];
+    size_t i, len = 0, n = 0;
+    buf[0] = '\0';
+    json_array_foreach(det, i, d) {
+        if (json_is_true(json_object_get(d, "trivially_true"))) continue;
+        n++;
+        if (len + 80 < sizeof buf)
+            len += (size_t) snprintf(buf + len, sizeof buf - len, "%s%s%s", len ? ", " : "", js(d, "origin"),
+                                     json_is_true(json_object_get(d, "trivially_false")) ? " (false for every value)"
+                                                                                         : "");
+    }
+    if (n > 0 && n == json_array_size(conds)) rs_render_line(r, "from", "%s", buf);
+    if (json_is_true(json_object_get(o, "negated")))
+        rs_render_line(r, "negated", "%s", "the conditions are those of -q(z) (the same roots)");
+}
+
 void rs_render_hurwitz(rs_render_t *r, const json_t *o)
 {
     const json_t *minors = json_object_get(o, "minors");
@@ -420,6 +443,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
                        "(every condition holds under the assumptions)");
     }
     condition_lines(r, o, "conditions", "", 1);
+    if (js(o, "never") == NULL) hurwitz_origins(r, o);
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
     rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");

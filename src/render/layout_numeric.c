@@ -88,20 +88,23 @@ void rs_render_modes(rs_render_t *r, const json_t *o)
 {
     const char *groups[] = {"modes", "spurious"};
     char buf2[300];
-    size_t g, i;
+    size_t g, i, zeros = 0;
     rs_render_line(r, "h", "%s", rs_render_jstr(o, "h"));
     for (g = 0; g < 2; g++) {
         const json_t *m = json_object_get(o, groups[g]);
+        int first = 1;
         for (i = 0; i < json_array_size(m); i++) {
             const json_t *e = json_array_get(m, i);
             char buf[400];
-            if (rs_render_jstr(e, "sigma") == NULL) continue;
+            if (rs_render_jstr(e, "sigma") == NULL) { zeros++; continue; }   /* a root at 0 */
             snprintf(buf, sizeof buf, "sigma %s omega %s damping %s%s%s", rs_render_jstr(e, "sigma"),
                      rs_render_jstr(e, "omega"), rs_render_jstr(e, "damping_ratio"), rs_render_jstr(e, "frequency_error") ? " freq.error " : "",
                      rs_render_jstr(e, "frequency_error") ? rs_render_jstr(e, "frequency_error") : "");
-            rs_render_line(r, i == 0 ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
+            rs_render_line(r, first ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
+            first = 0;
         }
     }
+    if (zeros > 0) rs_render_linef(r, "roots at 0", "%zu (no continuous equivalent)", zeros);
     if (json_object_get(o, "exact_check") != NULL) {
         /* over Q(i): p's own roots, their moduli against the exact counts */
         const json_t *ck = json_object_get(o, "exact_check"), *at = json_object_get(o, "at");

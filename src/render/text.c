@@ -59,6 +59,7 @@ static void text_count(FILE *out, const json_t *o)
     fprintf(out, "  %-*s %s: %lld inside, %lld on, %lld outside the unit circle", LABEL_W, "verdict",
             rs_render_jstr(o, "status"), rs_render_jint(o, "inside"), rs_render_jint(o, "on"),
             rs_render_jint(o, "outside"));
+    if (rs_render_jint(o, "at_zero") > 0) fprintf(out, "; lambda = 0 (x%lld)", rs_render_jint(o, "at_zero"));
     if (rs_render_jint(o, "at_one") > 0) fprintf(out, "; lambda = 1 (x%lld)", rs_render_jint(o, "at_one"));
     if (rs_render_jint(o, "at_minus_one") > 0)
         fprintf(out, "; lambda = -1 (x%lld)", rs_render_jint(o, "at_minus_one"));

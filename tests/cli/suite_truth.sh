@@ -40,9 +40,35 @@ if command -v jq >/dev/null 2>&1; then
         '[["0","0"],["0.333333333333333","0.142857142857143"],["-0.857142857142857","0"],["-0.857142857142857","0"]]' \
         "$(jfield $C 1 '.modes | map([.root.re, .root.im])')"
     check "modes Q(i) 0 and double root: exact check" '"stable"' "$(jfield $C 1 .exact_check.status)"
-    # dead-beat modes (was exit 2): no mode
+    # dead-beat modes (was exit 2): the two roots at 0 of det = lambda^2, no continuous
+    # equivalent (h-truth3: listed, as over Q(i); before, no mode)
     C=cases/truth/modes-dead-beat.case
-    check "modes dead-beat" '[]' "$(jfield $C 1 .modes)"
+    check "modes dead-beat" '[["0","0"],["0","0"]]' "$(jfield $C 1 '.modes | map([.root.re, .root.im])')"
+    check "modes dead-beat: note" '"root at 0: no continuous equivalent"' "$(jfield $C 1 '.modes[0].note')"
+    # roots at 0 divided out of p counted (h-truth3; by hand in the cases' comments)
+    C=cases/truth/counts-roots-at-zero.case
+    for k in 0 1 2; do
+        check "roots at 0: $(jfield $C $k .analysis) counts (was 1 inside)" '["unstable",4,3,0,1,2]' \
+            "$(jfield $C $k '| [.status, .degree, .inside, .on, .outside, .at_zero]')"
+    done
+    check "roots at 0: modes lists them" '[["0","0"],["0","0"],["0.5","0"],["3","0"]]' \
+        "$(jfield $C 3 '| [.modes[], .spurious[]] | map([.root.re, .root.im]) | sort_by(.[0] | tonumber)')"
+    C=cases/truth/routh-roots-at-zero.case
+    check "roots at 0: routh (was 1 inside)" '["unstable",3,0,1]' "$(jfield $C 0 '| [.status, .inside, .on, .outside]')"
+    check "roots at 0: jury" '["unstable",3,0,1]' "$(jfield $C 1 '| [.status, .inside, .on, .outside]')"
+    C=cases/truth/complex-dead-beat.case
+    check "dead-beat over Q(i): stability, jury, hurwitz, radius, modes (were exit 2)" \
+        '["stable",2,"stable under the assumptions","stable under the assumptions","0",2]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[0].inside, .[1].verdict, .[2].verdict, .[3].upper, (.[4].modes | length)]')"
+    C=cases/truth/limit-roots-at-zero.case
+    check "limit keeps the roots at 0" '[[["0",4]],[["0",2],["inf",2]]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map(.roots | map([.value, .multiplicity]))')"
+    C=cases/truth/claim-thin-algebraic-sliver.case
+    check "claim false on a sliver beyond sqrt 5: refuted by the region's sample (was undecided)" \
+        '["proved","refuted",{"a":"1145/512"},"unstable"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[1].status, .[2].status, .[2].counterexample, .[2].at_counterexample.status]')"
+    check "claim sliver: explanation's interval (was (~0, ...))" 'true' \
+        "$(jfield $C 2 '.explanation.summary | contains("unstable on (~2.23607, 559267/250000)")')"
     # uniform range of a planted family (by hand in the case's comment)
     C=cases/truth/forall-planted-double-minus-one.case
     check "forall planted: intervals" \
@@ -103,6 +129,12 @@ if command -v python3 >/dev/null 2>&1; then
     for spec in "quick 1 4"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth2.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # third batch (tests/truth/truth3.py, h-truth3): roots at 0, circle multiplicities,
+    # literature LMMs, algebraic claim ends, simulate and limit
+    for spec in "quick 1 8" "lmm 1 11"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth3.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"

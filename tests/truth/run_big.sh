@@ -7,17 +7,22 @@
 # Measured 2026-11-26 (2 shared cores, loaded): `sh tests/truth/run_big.sh 100 "101 102"`
 # ran 1833 planted cases, 0 failed, 94.2 s user + 45.5 s sys CPU (jordan skips
 # matrices above 6 x 6; pade has 24 distinct (m, n) per seed).
+# truth3.py (h-truth3, 2026-11-27, loaded): `python3 tests/truth/truth3.py zeros S 1500` for
+# S = 201, 202: 3000 planted cases, 0 failed, 27.8 + 26.1 s and 24.3 + 21.4 s (user + sys) CPU;
+# `circle 201 500`: 500, 0 failed, 9.3 + 8.4 s; algclaim, simlimit 40 and lmm (11 methods) for
+# both seeds: 0 failed (the first algclaim run, seed 1, found the claim fixed in bf1b474).
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
 export RS
 total_fail=0
 for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
-            symcond symmat rk builders limit radmat map cosim; do
+            symcond symmat rk builders limit radmat map cosim zeros circle lmm3 algclaim simlimit; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     script=tests/truth/truth.py
     case $part in symcond|symmat|rk|builders|limit|radmat|map|cosim) script=tests/truth/truth2.py ;; esac
+    case $part in zeros|circle|lmm3|algclaim|simlimit) script=tests/truth/truth3.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
         out=$(python3 "$script" "$part" "$s" "$n" 2>&1)

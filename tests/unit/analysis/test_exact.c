@@ -101,6 +101,35 @@ static void test_limits_bdf2(void **state)
     json_decref(doc);
 }
 
+/* det = lambda^2 (2 lambda - 1)(lambda - 3) (charpoly.c divides lambda^2 out
+ * of p): by hand 3 roots inside (two at 0, one 1/2), one outside (3); jury,
+ * stability and routh counted p only (1 inside).  Over Q(i) at z = i,
+ * lambda^2 (2 lambda - z)(lambda - 3): the roots 0, 0, i/2, 3 -- the same counts. */
+static void test_counts_roots_at_zero(void **state)
+{
+    const char *texts[] = {
+        "char lambda^2*(2*lambda - 1)*(lambda - 3)\nanalyse jury\nanalyse stability\nanalyse routh\n",
+        "param z complex\nchar lambda^2*(2*lambda - z)*(lambda - 3)\nset z = i\n"
+        "analyse jury\nanalyse stability\nanalyse routh\n"};
+    size_t t, k;
+    (void) state;
+    for (t = 0; t < 2; t++) {
+        int outcome;
+        json_t *doc = tu_run_text(texts[t], NULL, &outcome, NULL);
+        for (k = 0; k < 3; k++) {
+            const json_t *r = result(doc, k);
+            assert_string_equal(str(r, "status"), "unstable");
+            assert_int_equal(json_integer_value(json_object_get(r, "inside")), 3);
+            assert_int_equal(json_integer_value(json_object_get(r, "on")), 0);
+            assert_int_equal(json_integer_value(json_object_get(r, "outside")), 1);
+            assert_int_equal(json_integer_value(json_object_get(r, "degree")), 4);
+        }
+        /* the real counts name the multiplicity of lambda = 0 */
+        if (t == 0) assert_int_equal(json_integer_value(json_object_get(result(doc, 1), "at_zero")), 2);
+        json_decref(doc);
+    }
+}
+
 static void test_claims_textbook(void **state)
 {
     struct { const char *file, *claim, *status; } t[] = {
@@ -480,6 +509,7 @@ int main(void)
         cmocka_unit_test(test_park_symbolic_jury),
         cmocka_unit_test(test_jury_interval_assumptions),
         cmocka_unit_test(test_jury_factor_halves),
+        cmocka_unit_test(test_counts_roots_at_zero),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);
 }
