@@ -586,6 +586,36 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
 /* a `char` line over Q(i) with every parameter real and set: the complex
  * pair (Schur-Cohn over Q(i), Bilharz) beside the real verdict on the
  * block form; RS_ERR_INCONSISTENT when they differ */
+/* The block form's roots are p's and conj(p)'s, which have the same moduli: its
+ * counts must be twice p's (checked, exit 3 otherwise).  The report gives p's
+ * own counts; the block form's stay under "block_form". */
+static int char_counts_own(rs_run_t *run, json_t *o, const json_t *c)
+{
+    static const char *key[] = {"degree", "inside", "on", "outside"};
+    static const char *moved[] = {"at_one", "at_minus_one", "on_multiplicities", "at_zero", "circle_roots"};
+    json_t *b;
+    int k;
+    for (k = 0; k < 4; k++) {
+        json_t *bo = json_object_get(o, key[k]), *pc = json_object_get(c, key[k]);
+        if (!json_is_integer(bo) || !json_is_integer(pc)) return RS_OK;   /* no counts (singular) */
+        if (json_integer_value(bo) != 2 * json_integer_value(pc))
+            return rs_error_set(run->err, RS_ERR_INCONSISTENT, "the char line over Q(i): the real block form "
+                                "counts %s %lld, not twice p's %lld", key[k], (long long) json_integer_value(bo),
+                                (long long) json_integer_value(pc));
+    }
+    b = json_object();
+    for (k = 0; k < 4; k++) {
+        json_object_set(b, key[k], json_object_get(o, key[k]));
+        json_object_set(o, key[k], json_object_get(c, key[k]));
+    }
+    for (k = 0; k < 5; k++) {
+        json_t *x = json_object_get(o, moved[k]);
+        if (x != NULL) { json_object_set(b, moved[k], x); json_object_del(o, moved[k]); }
+    }
+    json_object_set_new(o, "block_form", b);
+    return RS_OK;
+}
+
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o)
 {
     cpoint_t cp;
@@ -600,10 +630,11 @@ int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t 
         json_object_set_new(c, "p", json_string(p));
         free(p);
         json_object_set_new(o, "complex_check", c);
-        c = NULL;
         if (st != real_st)
             r = rs_error_set(run->err, RS_ERR_INCONSISTENT, "the char line over Q(i): the real block form says %s, "
                              "complex Schur-Cohn and Bilharz say %s", rs_status_name(real_st), rs_status_name(st));
+        if (r == RS_OK) r = char_counts_own(run, o, c);
+        c = NULL;
     }
     json_decref(c);
     rs_routh_complex_clear(t);

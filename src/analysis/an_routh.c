@@ -167,6 +167,14 @@ static int routh_real(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "analysis", json_string("routh"));
     json_object_set_new(o, "var", json_string("z"));
     fmpz_poly_init(p);
+    if (rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx) && v->s->complex_char
+        && v->not_in_p == NULL) {
+        /* a char line over Q(i): Bilharz on p itself (the block form's table
+         * would count p's and conj(p)'s roots) */
+        fmpz_poly_clear(p);
+        json_decref(o);
+        return rs_an_complex_routh(run, req);
+    }
     if (rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx))
         r = routh_numeric(run, v, p, o);
     else

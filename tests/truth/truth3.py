@@ -140,12 +140,14 @@ def part_zeros(rng, count):
                 bad.append("%s missing" % a)
                 continue
             got = counts(r)
-            if mode == "qi-char" and cplx and a in ("stability", "routh"):
-                # the real block form's counts (README: a char line with i is the block
-                # [[A, -B], [B, A]] of det p conj(p)): every root twice; jury is p's own
-                want = (st, 2 * i, 2 * o, 2 * u)
-            else:
-                want = (st, i, o, u)
+            want = (st, i, o, u)
+            if mode == "qi-char" and cplx and a == "stability":
+                # the real block form [[A, -B], [B, A]] (det = p conj(p)) decides too: its
+                # counts, kept under block_form, are every root twice
+                b = r.get("block_form") or {}
+                bgot = (b.get("inside"), b.get("on"), b.get("outside"))
+                if bgot != (2 * i, 2 * o, 2 * u):
+                    bad.append("stability block_form %s, planted twice %s" % (bgot, (i, o, u)))
             # jury / routh over Q(i) with symbolic machinery print the counts beside conditions
             if got != want:
                 bad.append("%s %s, planted %s" % (a, got, want))
