@@ -15,29 +15,11 @@
 #include <flint/fmpz_poly.h>
 #include <mpfr.h>
 #include <arb.h>
+#include "util/qd.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* x + y sqrt(d) */
-typedef struct { fmpq x[1], y[1]; } rs_qd_struct;
-typedef rs_qd_struct rs_qd_t[1];
-
-void rs_qd_init(rs_qd_struct *a);
-void rs_qd_clear(rs_qd_struct *a);
-void rs_qd_set(rs_qd_struct *r, const rs_qd_struct *a);
-void rs_qd_set_fmpq(rs_qd_struct *r, const fmpq_t x, const fmpq_t y);
-int rs_qd_is_zero(const rs_qd_struct *a);
-void rs_qd_add(rs_qd_struct *r, const rs_qd_struct *a, const rs_qd_struct *b);
-void rs_qd_sub(rs_qd_struct *r, const rs_qd_struct *a, const rs_qd_struct *b);
-void rs_qd_mul(rs_qd_struct *r, const rs_qd_struct *a, const rs_qd_struct *b, slong d);
-/* a != 0 */
-void rs_qd_inv(rs_qd_struct *r, const rs_qd_struct *a, slong d);
-/* the exact sign of x + y sqrt(d): -1, 0, 1 */
-int rs_qd_sgn(const rs_qd_struct *a, slong d);
-/* "x + y*sqrt(d)" (flint_free it) */
-char *rs_qd_get_str(const rs_qd_struct *a, slong d);
 
 /* p0 + sqrt(d) p1 */
 typedef struct { fmpq_poly_struct p0[1], p1[1]; } rs_qdpoly_struct;

@@ -6,6 +6,7 @@
 #include <flint/fmpq_mat.h>
 #include <fmpq_vec.h>
 #include "lower/methods.h"
+#include "util/qd.h"
 
 void rs_tableau_init(rs_tableau_t t, slong s)
 {
@@ -21,35 +22,20 @@ void rs_tableau_clear(rs_tableau_t t)
 }
 
 /* x + y sqrt(d): the entries of the Gauss, Radau IIA(3) and SDIRK tableaux */
-typedef struct { fmpq_t x, y; } qd_t;
-
-static void qd_mul(qd_t *r, const qd_t *u, const qd_t *v, slong d)
-{
-    fmpq_t t, x;
-    fmpq_init(t); fmpq_init(x);
-    fmpq_mul(x, u->x, v->x);
-    fmpq_mul(t, u->y, v->y);
-    fmpq_mul_si(t, t, d);
-    fmpq_add(x, x, t);
-    fmpq_mul(t, u->x, v->y);
-    fmpq_addmul(t, u->y, v->x);
-    fmpq_swap(r->x, x);
-    fmpq_swap(r->y, t);
-    fmpq_clear(t); fmpq_clear(x);
-}
+typedef rs_qd_struct qd_t;
 
 static qd_t *qd_vec_init(slong n)
 {
     qd_t *v = flint_malloc(n * sizeof(qd_t));
     slong i;
-    for (i = 0; i < n; i++) { fmpq_init(v[i].x); fmpq_init(v[i].y); }
+    for (i = 0; i < n; i++) rs_qd_init(v + i);
     return v;
 }
 
 static void qd_vec_clear(qd_t *v, slong n)
 {
     slong i;
-    for (i = 0; i < n; i++) { fmpq_clear(v[i].x); fmpq_clear(v[i].y); }
+    for (i = 0; i < n; i++) rs_qd_clear(v + i);
     flint_free(v);
 }
 
@@ -62,7 +48,7 @@ static void qd_mat_mul(qd_t *C, const qd_t *A, const qd_t *B, slong s, slong d)
     for (i = 0; i < s; i++)
         for (j = 0; j < s; j++)
             for (k = 0; k < s; k++) {
-                qd_mul(&p, &A[i * s + k], &B[k * s + j], d);
+                rs_qd_mul(&p, &A[i * s + k], &B[k * s + j], d);
                 fmpq_add(T[i * s + j].x, T[i * s + j].x, p.x);
                 fmpq_add(T[i * s + j].y, T[i * s + j].y, p.y);
             }
@@ -84,7 +70,7 @@ static void qd_moments(qd_t *mk, qd_t *e, const qd_t *A, const qd_t *b, slong s,
         if (k < s)
             for (i = 0; i < s; i++)
                 for (j = 0; j < s; j++) {
-                    qd_mul(&p, &b[i], &P[i * s + j], d);
+                    rs_qd_mul(&p, &b[i], &P[i * s + j], d);
                     fmpq_add(mk[k].x, mk[k].x, p.x);
                     fmpq_add(mk[k].y, mk[k].y, p.y);
                 }
@@ -98,7 +84,7 @@ static void qd_moments(qd_t *mk, qd_t *e, const qd_t *A, const qd_t *b, slong s,
     fmpq_one(e[0].x);
     for (k = 1; k <= s; k++) {
         for (i = 1; i <= k; i++) {
-            qd_mul(&p, &e[k - i], &tr[i], d);
+            rs_qd_mul(&p, &e[k - i], &tr[i], d);
             if (i % 2 == 0) { fmpq_neg(p.x, p.x); fmpq_neg(p.y, p.y); }
             fmpq_add(e[k].x, e[k].x, p.x);
             fmpq_add(e[k].y, e[k].y, p.y);
