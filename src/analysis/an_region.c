@@ -278,6 +278,28 @@ static int sign_at_arf(const fmpz_poly_t g, const arf_t v, fmpz_t acc, fmpz_t tm
     return sg;
 }
 
+/* exact bisection of (a, b) / 2^tt (g's sign sa at a) until b - a <= 2^-bits
+ * min(|a|, |b|) with a, b of one sign; 0 if tt would pass maxtt first */
+static int bisect_rel(const fmpz_poly_t g, fmpz_t a, fmpz_t b, slong *ptt, int sa, slong bits, slong maxtt,
+                      fmpz_t m, fmpz_t acc, fmpz_t tmp)
+{
+    for (;;) {
+        fmpz_sub(m, b, a);
+        fmpz_mul_2exp(m, m, (ulong) bits);
+        if (fmpz_sgn(a) == fmpz_sgn(b) && fmpz_sgn(a) != 0
+            && fmpz_cmpabs(m, fmpz_cmpabs(a, b) < 0 ? a : b) <= 0)
+            return 1;
+        if (*ptt > maxtt) return 0;
+        fmpz_mul_2exp(a, a, 1);
+        fmpz_mul_2exp(b, b, 1);
+        (*ptt)++;
+        fmpz_add(m, a, b);
+        fmpz_fdiv_q_2exp(m, m, 1);
+        if (sign_at_dyadic(g, m, *ptt, acc, tmp) == sa) fmpz_swap(a, m);
+        else fmpz_swap(b, m);
+    }
+}
+
 /* x := a ball of relative radius <= 2^-(prec+2) around the one root of g in
  * (a, b) / 2^tt (sign sa at a), by bisection to 2^-24 and Newton's method
  * in Arb; 1 if two exact signs inside (a, b) confirm it, else 0 (a, b and
@@ -293,21 +315,8 @@ static int newton_bracket(arb_t x, const fmpz_poly_t g, const fmpz_poly_t dg,
     fmpz_t m, ex;
     int ok = 0;
     fmpz_init(m); fmpz_init(ex);
-    /* exact bisection while b - a > 2^-24 min(|a|, |b|) */
-    for (it = 0; it < 400; it++) {
-        fmpz_sub(m, b, a);
-        fmpz_mul_2exp(m, m, 24);
-        if (fmpz_sgn(a) == fmpz_sgn(b) && fmpz_sgn(a) != 0
-            && fmpz_cmpabs(m, fmpz_cmpabs(a, b) < 0 ? a : b) <= 0)
-            break;
-        fmpz_mul_2exp(a, a, 1);
-        fmpz_mul_2exp(b, b, 1);
-        tt++;
-        fmpz_add(m, a, b);
-        fmpz_fdiv_q_2exp(m, m, 1);
-        if (sign_at_dyadic(g, m, tt, acc, tmp) == sa) fmpz_swap(a, m);
-        else fmpz_swap(b, m);
-    }
+    /* exact bisection while b - a > 2^-24 min(|a|, |b|), at most 400 steps */
+    bisect_rel(g, a, b, &tt, sa, 24, tt + 399, m, acc, tmp);
     *ptt = tt;   /* the caller's bisection goes on from (a, b) / 2^tt */
     arb_init(y); arb_init(dy); arb_init(z);
     arf_init(lo); arf_init(hi); arf_init(al); arf_init(bl); arf_init(dl);
@@ -404,22 +413,7 @@ int rs_region_real_roots(arb_ptr x, const fmpz_poly_t g, slong nreal, slong prec
         if (newton_bracket(x + i, g, dg, a, b, &tt, sa, prec, acc, tmp))
             continue;
         /* until (b - a) 2^(prec+2) <= min(|a|, |b|) (a, b of one sign) */
-        for (;;) {
-            fmpz_sub(m, b, a);
-            fmpz_mul_2exp(m, m, (ulong) (prec + 2));
-            if (fmpz_sgn(a) == fmpz_sgn(b) && fmpz_sgn(a) != 0
-                && fmpz_cmpabs(m, fmpz_cmpabs(a, b) < 0 ? a : b) <= 0)
-                break;
-            if (tt > 4 * prec + 4000) { ok = 0; break; }
-            fmpz_mul_2exp(a, a, 1);
-            fmpz_mul_2exp(b, b, 1);
-            tt++;
-            fmpz_add(m, a, b);
-            fmpz_fdiv_q_2exp(m, m, 1);
-            if (sign_at_dyadic(g, m, tt, acc, tmp) == sa) fmpz_swap(a, m);
-            else fmpz_swap(b, m);
-        }
-        if (!ok) break;
+        if (!bisect_rel(g, a, b, &tt, sa, prec + 2, 4 * prec + 4000, m, acc, tmp)) { ok = 0; break; }
         fmpz_set_si(tmp, -tt);
         arf_set_fmpz_2exp(lo, a, tmp);
         arf_set_fmpz_2exp(hi, b, tmp);
