@@ -527,12 +527,7 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
         rs_schur_complex_norm(N, cp.re, cp.im);
         if (fmpz_poly_degree(N) < 1 && cpoint_zeros(&cp) > 0 && !cp.v->singular) {
             /* det = c lambda^k (the k roots at 0 divided out): dead-beat, radius exactly 0, as over Q */
-            json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
-            json_object_set_new(o, "certified", json_true());
-            json_object_set_new(o, "lower", json_string("0"));
-            json_object_set_new(o, "upper", json_string("0"));
-            json_object_set_new(o, "rho", json_string("0"));
-            json_object_set_new(o, "roots", json_array());
+            rs_run_radius_dead_beat_json(o);
             json_object_set_new(o, "exact_status", json_string("stable"));
             json_object_set_new(o, "dead_beat", json_string(
                 "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0"));

@@ -198,12 +198,7 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "analysis", json_string("radius"));
     if (fmpz_poly_degree(p) < 1) {
         /* det A = c*lambda^k: every root is 0 (dead-beat), radius exactly 0 */
-        json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
-        json_object_set_new(o, "certified", json_true());
-        json_object_set_new(o, "lower", json_string("0"));
-        json_object_set_new(o, "upper", json_string("0"));
-        json_object_set_new(o, "rho", json_string("0"));
-        json_object_set_new(o, "roots", json_array());
+        rs_run_radius_dead_beat_json(o);
         arb_zero(rr->lower);
         arb_zero(rr->upper);
         arb_zero(rr->rho);

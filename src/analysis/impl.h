@@ -189,6 +189,8 @@ void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 /* det A = c lambda^k p: p's count rc (p at the point, or NULL) plus the k
  * roots at 0 charpoly.c divided out, inside; at_zero their multiplicity */
 void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_poly_t p);
+/* a dead-beat radius (det A = c lambda^k, every root 0): its exact fields in o */
+void rs_run_radius_dead_beat_json(json_t *o);
 json_t *rs_json_jury_route(const rs_jury_t ju);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);

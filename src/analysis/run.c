@@ -698,6 +698,16 @@ void rs_json_add_count(json_t *o, const rs_rootcount_t rc)
     if (rc->at_zero > 0) json_object_set_new(o, "at_zero", json_integer(rc->at_zero));
 }
 
+void rs_run_radius_dead_beat_json(json_t *o)
+{
+    json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
+    json_object_set_new(o, "certified", json_true());
+    json_object_set_new(o, "lower", json_string("0"));
+    json_object_set_new(o, "upper", json_string("0"));
+    json_object_set_new(o, "rho", json_string("0"));
+    json_object_set_new(o, "roots", json_array());
+}
+
 void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_poly_t p)
 {
     slong k = v->cp->removed_lambda_power, z = 0;
