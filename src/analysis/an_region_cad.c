@@ -2085,12 +2085,24 @@ static void cad_arc_table(rs_region_arcs_t *A)
     }
 }
 
+/* the plane's decomposition and its arc table for a set-up A (freed on failure) */
+static int arcs_decompose(rs_region_arcs_t **out, rs_region_arcs_t *A)
+{
+    cad_t *c = &A->c;
+    int r = cad_critical(c);
+    if (r == RS_OK) r = cad_project(c);
+    if (r == RS_OK) r = cad_lift(c);
+    if (r != RS_OK) { rs_region_arcs_free(A); return r; }
+    cad_arc_table(A);
+    *out = A;
+    return RS_OK;
+}
+
 int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t *v, slong v1, slong v2)
 {
     rs_region_arcs_t *A = flint_calloc(1, sizeof(rs_region_arcs_t));
     cad_t *c = &A->c;
     slong i;
-    int r;
     *out = NULL;
     c->run = run;
     c->v = v;
@@ -2109,13 +2121,7 @@ int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t
             rs_region_arcs_free(A);
             return RS_ERR_INPUT;
         }
-    r = cad_critical(c);
-    if (r == RS_OK) r = cad_project(c);
-    if (r == RS_OK) r = cad_lift(c);
-    if (r != RS_OK) { rs_region_arcs_free(A); return r; }
-    cad_arc_table(A);
-    *out = A;
-    return RS_OK;
+    return arcs_decompose(out, A);
 }
 
 int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region_cx_t *cx,
@@ -2123,7 +2129,6 @@ int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region
 {
     rs_region_arcs_t *A = flint_calloc(1, sizeof(rs_region_arcs_t));
     cad_t *c = &A->c;
-    int r;
     *out = NULL;
     c->run = run;
     c->s = cx->s;
@@ -2140,13 +2145,7 @@ int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region
     A->src = src;
     A->gmap = flint_malloc(nsrc * sizeof(slong));
     memcpy(A->gmap, gmap, nsrc * sizeof(slong));
-    r = cad_critical(c);
-    if (r == RS_OK) r = cad_project(c);
-    if (r == RS_OK) r = cad_lift(c);
-    if (r != RS_OK) { rs_region_arcs_free(A); return r; }
-    cad_arc_table(A);
-    *out = A;
-    return RS_OK;
+    return arcs_decompose(out, A);
 }
 
 void rs_region_arcs_free(rs_region_arcs_t *A)
