@@ -34,31 +34,33 @@ static int holds_both(const void *data, fmpq *const *pt, const rs_scheme_struct 
 }
 
 /* det A = c lambda^k: once the roots at 0 are divided out p (and q) is a
- * constant, so there is no Hurwitz minor and no condition: every root is 0
- * (hurwitz.c refuses degree 0; jury and stability say the same) */
-static int holds_always(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
-{
-    (void) data; (void) pt; (void) s;
-    return 1;
-}
-
+ * constant c, so there is no Hurwitz minor: every root is 0 where c != 0,
+ * and where c = 0 there is no polynomial (hurwitz.c refuses degree 0; jury
+ * and stability say the same) */
 static int hurwitz_dead_beat(rs_run_t *run, const rs_variant_t *v)
 {
-    json_t *o = json_object();
+    json_t *o = json_object(), *conds = json_array();
+    fmpz_mpoly_t kept;
     int r;
+    fmpz_mpoly_init(kept, v->s->zctx);
+    rs_run_dead_beat_nonzero(kept, conds, run, v->s, v->cp->p);
     json_object_set_new(o, "analysis", json_string("hurwitz"));
     json_object_set_new(o, "var", json_string("z"));
     json_object_set_new(o, "degree", json_integer(0));
     json_object_set_new(o, "p_at_1", rs_json_p_at(v, 1));
     json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
     json_object_set_new(o, "minors", json_array());
-    json_object_set_new(o, "conditions", json_array());
     json_object_set_new(o, "nonzero", json_array());
     json_object_set_new(o, "dead_beat", json_string(
         "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0; q(z) is a constant"));
-    json_object_set_new(o, "verdict", json_string("stable under the assumptions (dead-beat: every root is 0)"));
-    /* the empty condition list against the exact point verdict */
-    r = rs_run_sample_check(run, v, holds_always, NULL, o);
+    json_object_set_new(o, "verdict", json_string(json_array_size(conds) == 0
+        ? "stable under the assumptions (dead-beat: every root is 0)"
+        : "stable iff the conditions hold (dead-beat there: every root is 0; where c = 0 det A vanishes "
+          "identically)"));
+    json_object_set_new(o, "conditions", conds);
+    /* c != 0 against the exact point verdict */
+    r = rs_run_sample_check(run, v, rs_run_nonzero_holds, kept, o);
+    fmpz_mpoly_clear(kept, v->s->zctx);
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
     return r;

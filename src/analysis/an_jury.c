@@ -121,6 +121,11 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     }
     fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
     fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(delta, s->zctx);
+    if (n == 0) {
+        /* dead-beat p = c: no row, stable iff c != 0 */
+        rs_run_dead_beat_nonzero(t, conds, run, s, a + 0);
+        if (!fmpz_mpoly_is_one(t, s->zctx)) jury_conds_add(&jc, t, 1);
+    }
     for (k = n; k >= 1 && r == RS_OK; k--) {
         json_t *row = json_array();
         fmpz_mpoly_factor_t f;

@@ -911,6 +911,24 @@ static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv,
     return decided;
 }
 
+/* 1 when p(lambda; t0) is the zero polynomial (t0 a zero of p's content in
+ * lambda), t0 an irrational real algebraic number */
+static int vanishes_at_algebraic(const fmpz_mpoly_t p, slong tv, const alg_t *t0, const rs_scheme_t s)
+{
+    slong n = fmpz_mpoly_degree_si(p, s->lambda_var, s->zctx);
+    int z;
+    fmpq_poly_t m;
+    kpoly_t P;
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    kp_init(&P, n + 1);
+    kp_from_mpoly(&P, p, n, tv, m, s);
+    z = P.deg < 0;
+    kp_clear(&P);
+    fmpq_poly_clear(m);
+    return z;
+}
+
 /* the status of P0 = sum c_j lambda^j of formal degree n over K = Q[t]/(m);
  * p, tv: the scheme's polynomial with t0 for tv (the semisimplicity test of
  * a system's repeated circle root); p == NULL: that case left undecided */
@@ -990,6 +1008,7 @@ typedef struct {
     alg_t *lo, *hi;      /* NULL = infinite (intervals); for points lo == hi */
     int decided;         /* status known exactly */
     rs_status_t status;
+    int vanishes;        /* a singular point where p vanishes identically */
     json_t *ev;          /* for all: the certificate or counterexample */
 } piece_t;
 
@@ -1603,13 +1622,24 @@ static int region_decide(region_t *rg)
         if (pc->is_point && !pc->lo->rational && rg->cx) {
             status_cx_alg(&pc->status, rg, pc->lo);
             pc->decided = 1;
+            /* |p|^2 = Re^2 + Im^2 vanishes at a real t iff p does */
+            if (pc->status == RS_STATUS_SINGULAR)
+                pc->vanishes = vanishes_at_algebraic(rg->pabs, rg->tv, pc->lo, rg->s);
         } else if (pc->is_point && !pc->lo->rational) {
             pc->decided = status_at_algebraic(&pc->status, rg->v->cp->p, rg->tv, pc->lo, rg->s);
+            if (pc->decided && pc->status == RS_STATUS_SINGULAR)
+                pc->vanishes = vanishes_at_algebraic(rg->v->cp->p, rg->tv, pc->lo, rg->s);
         } else {
             if (pc->is_point) fmpq_set(x, pc->lo->q);
             else rational_between(x, pc->lo, pc->hi);
             r = rg->cx ? status_at_cx(&pc->status, rg, x) : status_at(&pc->status, rg->run, rg->v, rg->tv, x);
-            if (r == RS_ERR_MATH) {
+            if (r == RS_ERR_MATH && pc->is_point) {
+                /* p = 0 at a critical value (a zero of its content in
+                 * lambda): a one-point interval of its own, not an error */
+                pc->status = RS_STATUS_SINGULAR;
+                pc->vanishes = 1;
+                r = RS_OK;
+            } else if (r == RS_ERR_MATH) {
                 char *xs = fmpq_get_str(NULL, 10, x);
                 r = rs_req_error(rg->run, rg->q, rg->rest, RS_ERR_MATH,
                                  "the characteristic polynomial vanishes identically at %s", xs);
@@ -2288,6 +2318,15 @@ static void region_json(region_t *rg, json_t *o)
         json_object_set_new(iv, "status", json_string(rs_status_name(pieces[i].status)));
         json_object_set_new(iv, "lo_approx", lo ? json_real(alg_double(lo)) : json_null());
         json_object_set_new(iv, "hi_approx", hi ? json_real(alg_double(hi)) : json_null());
+        if (i == j && pieces[i].is_point && pieces[i].status == RS_STATUS_SINGULAR) {
+            /* why singular: a degree drop, or no polynomial at all */
+            json_object_set_new(iv, "vanishes", json_boolean(pieces[i].vanishes));
+            json_object_set_new(iv, "note", json_string(pieces[i].vanishes
+                ? "the characteristic polynomial vanishes identically here (a zero of its content in lambda): "
+                  "every lambda is a root, no recurrence is defined; not stable"
+                : "degree drop: the leading coefficient of det A(lambda) vanishes here, the implicit step "
+                  "cannot be solved; not stable"));
+        }
         if (rg->forall) {
             /* one certificate or counterexample per cell (open interval or point) */
             json_t *evs = json_array();

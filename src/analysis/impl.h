@@ -189,6 +189,13 @@ void rs_json_add_count(json_t *o, const rs_rootcount_t rc);
 /* det A = c lambda^k p: p's count rc (p at the point, or NULL) plus the k
  * roots at 0 charpoly.c divided out, inside; at_zero their multiplicity */
 void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_poly_t p);
+/* det A = c lambda^k with c a polynomial in the parameters (dead-beat where
+ * c != 0, no polynomial where c = 0): the factors of c whose sign the
+ * assumptions do not settle appended to conds as "f != 0", their product in
+ * kept (1 when none); holds at a point as rs_holds_fn with data = kept */
+void rs_run_dead_beat_nonzero(fmpz_mpoly_t kept, json_t *conds, rs_run_t *run, const rs_scheme_t s,
+                              const fmpz_mpoly_t c);
+int rs_run_nonzero_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s);
 /* a dead-beat radius (det A = c lambda^k, every root 0): its exact fields in o */
 void rs_run_radius_dead_beat_json(json_t *o);
 json_t *rs_json_jury_route(const rs_jury_t ju);

@@ -14,6 +14,7 @@
 #include "recstab/semisimple.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
+#include "recstab/positivity.h"
 
 /* ---- variants: the scheme with some parameters substituted ------------- */
 
@@ -698,6 +699,45 @@ void rs_json_add_count(json_t *o, const rs_rootcount_t rc)
     if (rc->at_zero > 0) json_object_set_new(o, "at_zero", json_integer(rc->at_zero));
 }
 
+void rs_run_dead_beat_nonzero(fmpz_mpoly_t kept, json_t *conds, rs_run_t *run, const rs_scheme_t s,
+                              const fmpz_mpoly_t c)
+{
+    const rs_case_struct *cs = run->c;
+    rs_bound_t *bd = flint_malloc((cs->nparams + 1) * sizeof(rs_bound_t));
+    int *sign = rs_run_signs(run, s);
+    fmpz_mpoly_factor_t fa;
+    slong i;
+    rs_bounds_init(bd, cs->nparams);
+    for (i = 0; i < cs->nassume; i++) rs_bounds_add(bd, &cs->assume[i], cs, run->err);
+    fmpz_mpoly_one(kept, s->zctx);
+    fmpz_mpoly_factor_init(fa, s->zctx);
+    if (!fmpz_mpoly_factor(fa, c, s->zctx)) {
+        fmpz_mpoly_factor_one(fa, s->zctx);   /* unfactored: c != 0 as it is */
+        if (!fmpz_mpoly_is_fmpz(c, s->zctx)) fmpz_mpoly_factor_append_ui(fa, c, 1, s->zctx);
+    }
+    for (i = 0; i < fa->num; i++) {
+        /* the sign test as jury's: of one sign (strictly) for every admissible value */
+        if (rs_positivity_sign_bounds(fa->poly + i, (const rs_sign_t *) sign, bd, FLINT_MIN(cs->nparams, s->nvars),
+                                      s->zctx, NULL) != 0)
+            continue;
+        {
+            char *line = rs_cond_string(fa->poly + i, s, "!= 0");
+            rs_json_append_unique(conds, line);
+            free(line);
+        }
+        fmpz_mpoly_mul(kept, kept, fa->poly + i, s->zctx);
+    }
+    fmpz_mpoly_factor_clear(fa, s->zctx);
+    flint_free(sign);
+    rs_bounds_clear(bd, cs->nparams);
+    flint_free(bd);
+}
+
+int rs_run_nonzero_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    return rs_hurwitz_sign_at((const fmpz_mpoly_struct *) data, pt, s->zctx) != 0;
+}
+
 void rs_run_radius_dead_beat_json(json_t *o)
 {
     json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));
@@ -1039,6 +1079,17 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
                 rs_json_add_count(chk, rc);
             }
             rs_rootcount_clear(rc);
+        } else if (fmpz_poly_degree(u) < v->cp->degree && says == 1) {
+            /* a degree drop (or p = 0) is singular, never stable: conditions
+             * that hold there miss the leading coefficient's zero */
+            bad = json_object();
+            for (k = 0; k < np; k++)
+                if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
+                    json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
+            json_object_set_new(chk, "point", bad);
+            json_object_set_new(chk, "conditions_say", json_string("stable"));
+            json_object_set_new(chk, "exact_verdict", json_string(fmpz_poly_is_zero(u) ? "singular (p = 0)"
+                                                                                       : "singular"));
         }
         fmpz_poly_clear(u);
     }

@@ -596,6 +596,12 @@ static void region_where(rs_render_t *r, const json_t *o)
             rs_render_linef(r, "where", "%s is root %lld (from below, 0-based) of %s", js(hi, "approx"),
                             ji(hi, "root_index"), js(hi, "minpoly"));
     }
+    for (i = 0; i < json_array_size(ivs); i++) {
+        const json_t *iv = json_array_get(ivs, i);
+        if (js(iv, "note") != NULL && json_is_boolean(json_object_get(iv, "vanishes")))
+            rs_render_linef(r, "singular", "%s = %s: %s", js(o, "param"), endpoint(json_object_get(iv, "lo"), 0),
+                            js(iv, "note"));
+    }
     for (i = 0; i < json_array_size(pts); i++)
         rs_render_linef(r, "undecided", "%s (status at this point itself not decided exactly)",
                         endpoint(json_object_get(json_array_get(pts, i), "value"), 0));

@@ -126,6 +126,19 @@ if command -v jq >/dev/null 2>&1; then
     # the enclosure's verdict and its second method (Schur on T's ball characteristic polynomial)
     check "cosim double eigenvalue: stable from the enclosure (was exit 2), cross-checked" '["stable",true,"every root inside",true]' \
         "$("$RS" --json --max-prec 2048 $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, (.upper | tonumber) < 1, .cross_check.result, .cross_check.agree]')"
+    # det = a lambda^2 (h-truth4, by hand in the case): a = 0 its own singular point
+    # (was exit 2), the conditions a != 0 (were "none left")
+    C=cases/truth/lead-zero-polynomial.case
+    check "p = 0 at a = 0: region (was exit 2)" \
+        '[["stable",null,"0",null],["singular","0","0",true],["stable","0",null,null]]' \
+        "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .vanishes])')"
+    check "p = 0 at a = 0: hurwitz and jury say a != 0 (said none)" '[["a != 0"],["a != 0"]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[1].conditions, .[2].conditions]')"
+    C=cases/truth/lead-degree-drop.case
+    check "degree drop at a = 0: region" \
+        '[["stable",null,"-5/4",null],["marginal","-5/4","-5/4",null],["unstable","-5/4","0",null],["singular","0","0",false],["unstable","0","3/4",null],["marginal","3/4","3/4",null],["stable","3/4",null,null]]' \
+        "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .vanishes])')"
+    check "degree drop at a = 0: hurwitz agrees at its samples" 'true' "$(jfield $C 1 '.sample_check.agree')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
