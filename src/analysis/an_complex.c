@@ -459,11 +459,34 @@ int rs_an_complex_stability(rs_run_t *run, const rs_an_req_t *req)
 }
 
 /* p's own roots as certified balls when acb_poly_find_roots isolates them
- * (p squarefree); NULL when it does not within the precision */
-static json_t *croots_json(const fmpq_poly_t re, const fmpq_poly_t im, slong digits)
+ * (p / lambda^z squarefree); NULL when it does not within the precision.
+ * The roots at 0 first, exact: p's own z (its zero low coefficients) and
+ * the k the caller divided out */
+static json_t *croots_json(const fmpq_poly_t re0, const fmpq_poly_t im0, slong k, slong digits)
 {
-    slong n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)), k, prec;
+    slong n, z = 0, prec, j;
     json_t *out = NULL;
+    fmpq_poly_t re, im;
+    while (z <= FLINT_MAX(fmpq_poly_degree(re0), fmpq_poly_degree(im0))) {
+        fmpq_t c;
+        int zero;
+        fmpq_init(c);
+        fmpq_poly_get_coeff_fmpq(c, re0, z);
+        zero = fmpq_is_zero(c);
+        fmpq_poly_get_coeff_fmpq(c, im0, z);
+        zero &= fmpq_is_zero(c);
+        fmpq_clear(c);
+        if (!zero) break;
+        z++;
+    }
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    fmpq_poly_shift_right(re, re0, z);
+    fmpq_poly_shift_right(im, im0, z);
+    n = FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im));
+    if (n <= 0) {
+        out = json_array();
+        rs_json_zero_roots(out, z + k, digits);
+    }
     for (prec = 3.33 * digits + 64; prec <= 8 * (3.33 * digits + 64) && out == NULL; prec *= 2) {
         acb_poly_t p;
         acb_ptr rt = _acb_vec_init(n);
@@ -472,26 +495,28 @@ static json_t *croots_json(const fmpq_poly_t re, const fmpq_poly_t im, slong dig
         acb_poly_init(p);
         acb_init(c);
         fmpq_init(x);
-        for (k = 0; k <= n; k++) {
-            fmpq_poly_get_coeff_fmpq(x, re, k);
+        for (j = 0; j <= n; j++) {
+            fmpq_poly_get_coeff_fmpq(x, re, j);
             arb_set_fmpq(acb_realref(c), x, prec);
-            fmpq_poly_get_coeff_fmpq(x, im, k);
+            fmpq_poly_get_coeff_fmpq(x, im, j);
             arb_set_fmpq(acb_imagref(c), x, prec);
-            acb_poly_set_coeff_acb(p, k, c);
+            acb_poly_set_coeff_acb(p, j, c);
         }
         if (acb_poly_find_roots(rt, p, NULL, 0, prec) == n) {
             int fine = 1;
-            for (k = 0; k < n; k++) fine &= acb_rel_accuracy_bits(rt + k) >= 3.33 * digits;
+            for (j = 0; j < n; j++) fine &= acb_rel_accuracy_bits(rt + j) >= 3.33 * digits;
             if (fine) {
                 out = json_array();
-                for (k = 0; k < n; k++) {
-                    json_t *z = rs_json_acb(rt + k, digits);
+                rs_json_zero_roots(out, z + k, digits);
+                for (j = 0; j < n; j++) {
+                    json_t *e = rs_json_acb(rt + j, digits);
                     arb_t ab;
                     arb_init(ab);
-                    acb_abs(ab, rt + k, prec);
-                    json_object_set_new(z, "abs", rs_json_arb(ab, digits));
+                    acb_abs(ab, rt + j, prec);
+                    json_object_set_new(e, "abs", rs_json_arb(ab, digits));
+                    json_object_set_new(e, "multiplicity", json_integer(1));
                     arb_clear(ab);
-                    json_array_append_new(out, z);
+                    json_array_append_new(out, e);
                 }
             }
         }
@@ -500,7 +525,25 @@ static json_t *croots_json(const fmpq_poly_t re, const fmpq_poly_t im, slong dig
         acb_poly_clear(p);
         _acb_vec_clear(rt, n);
     }
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
     return out;
+}
+
+int rs_an_complex_char_roots(rs_run_t *run, const rs_an_req_t *req, json_t *o, slong digits)
+{
+    cpoint_t cp;
+    int r = cpoint_get(&cp, run, req->q, "radius");
+    if (r == RS_OK) {
+        json_t *roots = croots_json(cp.re, cp.im, cpoint_zeros(&cp), digits);
+        json_object_set_new(o, "roots", roots != NULL ? roots : json_null());
+        json_object_set_new(o, "roots_of", json_string("p (the char line over Q(i)); rho certified from the real "
+                                                       "block form's polynomial p conj(p), the same moduli"));
+        if (roots == NULL)
+            json_object_set_new(o, "roots_note", json_string("p has a repeated root: its roots are not isolated "
+                                "(the radius above is certified from p conj(p))"));
+        cpoint_clear(&cp);
+    }
+    return r;
 }
 
 int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
@@ -528,6 +571,7 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
         if (fmpz_poly_degree(N) < 1 && cpoint_zeros(&cp) > 0 && !cp.v->singular) {
             /* det = c lambda^k (the k roots at 0 divided out): dead-beat, radius exactly 0, as over Q */
             rs_run_radius_dead_beat_json(o);
+            rs_json_zero_roots(json_object_get(o, "roots"), cpoint_zeros(&cp), digits);
             json_object_set_new(o, "exact_status", json_string("stable"));
             json_object_set_new(o, "dead_beat", json_string(
                 "det A = c*lambda^k: every root is 0 (dead-beat), spectral radius 0"));
@@ -546,7 +590,7 @@ int rs_an_complex_radius(rs_run_t *run, const rs_an_req_t *req)
             "the roots of p conj(p) (an integer polynomial, the roots of p and their conjugates: the same "
             "moduli), certified by the real radius code; p's own roots by acb_poly_find_roots"));
         rs_json_radius(o, rr, digits);
-        roots = croots_json(cp.re, cp.im, digits);
+        roots = croots_json(cp.re, cp.im, cpoint_zeros(&cp), digits);
         json_object_set_new(o, "roots", roots != NULL ? roots : json_null());
         if (roots == NULL)
             json_object_set_new(o, "roots_note", json_string("p has a repeated root: its roots are not isolated "

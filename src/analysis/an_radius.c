@@ -199,6 +199,8 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
     if (fmpz_poly_degree(p) < 1) {
         /* det A = c*lambda^k: every root is 0 (dead-beat), radius exactly 0 */
         rs_run_radius_dead_beat_json(o);
+        if (!v->s->complex_char)
+            rs_json_zero_roots(json_object_get(o, "roots"), v->cp->removed_lambda_power, digits);
         arb_zero(rr->lower);
         arb_zero(rr->upper);
         arb_zero(rr->rho);
@@ -228,6 +230,9 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
                 : "certified enclosure"));
             rs_json_radius(o, rr, digits);
             roots = json_array();
+            /* det's roots at 0 that charpoly.c divided out, first (none
+             * left in p at the point: the variant's p is normalised there) */
+            if (!v->s->complex_char) rs_json_zero_roots(roots, v->cp->removed_lambda_power, digits);
             for (i = 0; i < rr->nroots; i++) {
                 json_t *z = rs_json_acb(rr->roots + i, digits);
                 arb_t ab;
@@ -242,6 +247,8 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
             if (rr->nouter > 0) radius_outer_json(o, rr);
         }
     }
+    /* a char line with i: rr has p conj(p)'s roots (the block form); list p's own */
+    if (r == RS_OK && v->s->complex_char) r = rs_an_complex_char_roots(run, req, o, digits);
     if (r == RS_OK) {
         /* the exact verdict at the same point decides; the radius must agree */
         if (fmpz_poly_degree(p) > RS_RADIUS_HIGH_DEGREE && strcmp(method, "double") != 0)

@@ -196,6 +196,9 @@ void rs_run_count_zeros(rs_rootcount_t rc, const rs_variant_t *v, const fmpz_pol
 void rs_run_dead_beat_nonzero(fmpz_mpoly_t kept, json_t *conds, rs_run_t *run, const rs_scheme_t s,
                               const fmpz_mpoly_t c);
 int rs_run_nonzero_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s);
+/* the entry of a root at 0 in a radius's "roots" (exact, |.| = 0) of the
+ * given multiplicity; k of them appended to roots */
+void rs_json_zero_roots(json_t *roots, slong k, slong digits);
 /* a dead-beat radius (det A = c lambda^k, every root 0): its exact fields in o */
 void rs_run_radius_dead_beat_json(json_t *o);
 json_t *rs_json_jury_route(const rs_jury_t ju);

@@ -178,6 +178,9 @@ int rs_an_complex_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_complex_point_poly(fmpq_poly_t pr, fmpq_poly_t pi, json_t **at, rs_variant_t **vp, rs_run_t *run,
                              const rs_an_req_t *req);
 int rs_an_complex_char_check(rs_run_t *run, const rs_an_req_t *req, rs_status_t real_st, json_t *o);
+/* a char line with i at real values: o's "roots" replaced by p's own (the
+ * block form's radius is p conj(p)'s, the same moduli) */
+int rs_an_complex_char_roots(rs_run_t *run, const rs_an_req_t *req, json_t *o, slong digits);
 /* `map re(NAME) A B N, im(NAME) C D M [of stability]` (req->u.sweep holds its request) */
 int rs_an_complex_map_is(const char *rest);
 /* 1 when rest is the plane of parameter name: re(name), ... */

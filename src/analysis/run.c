@@ -738,6 +738,20 @@ int rs_run_nonzero_holds(const void *data, fmpq *const *pt, const rs_scheme_stru
     return rs_hurwitz_sign_at((const fmpz_mpoly_struct *) data, pt, s->zctx) != 0;
 }
 
+void rs_json_zero_roots(json_t *roots, slong k, slong digits)
+{
+    slong i;
+    acb_t z;
+    acb_init(z);
+    for (i = 0; i < k; i++) {
+        json_t *e = rs_json_acb(z, digits);
+        json_object_set_new(e, "abs", rs_json_arb(acb_realref(z), digits));
+        json_object_set_new(e, "multiplicity", json_integer(k));
+        json_array_append_new(roots, e);
+    }
+    acb_clear(z);
+}
+
 void rs_run_radius_dead_beat_json(json_t *o)
 {
     json_object_set_new(o, "method", json_string("exact: det A = c*lambda^k, every root is 0"));

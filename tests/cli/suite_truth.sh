@@ -139,6 +139,13 @@ if command -v jq >/dev/null 2>&1; then
         '[["stable",null,"-5/4",null],["marginal","-5/4","-5/4",null],["unstable","-5/4","0",null],["singular","0","0",false],["unstable","0","3/4",null],["marginal","3/4","3/4",null],["stable","3/4",null,null]]' \
         "$(jfield $C 0 '.intervals | map([.status, .lo, .hi, .vanishes])')"
     check "degree drop at a = 0: hurwitz agrees at its samples" 'true' "$(jfield $C 1 '.sample_check.agree')"
+    # radius roots (h-truth4, by hand in the cases): the roots at 0 listed with their
+    # multiplicity; over Q(i) p's own roots, not p conj(p)'s (coordinates x 1e9, rounded)
+    RJ='.cases[0].results[0] | [(.roots | map([(.re | tonumber * 1e9 | round + 0), (.im | tonumber * 1e9 | round + 0), .multiplicity]) | sort), .upper]'
+    check "radius lists the roots at 0 (were left off)" '[[[-250000000,0,1],[0,0,2],[0,0,2],[500000000,0,1]],"0.5"]' \
+        "$("$RS" --json cases/truth/radius-roots-at-zero.case 2>/dev/null | jq -c "$RJ")"
+    check "radius over Q(i): p's roots (were p conj(p)'s)" '[[[-333333333,0,1],[0,0,1],[0,500000000,1]],"0.5"]' \
+        "$("$RS" --json cases/truth/radius-complex-char.case 2>/dev/null | jq -c "$RJ")"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
