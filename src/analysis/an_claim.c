@@ -1745,6 +1745,84 @@ static int claim_refute_from_region(rs_run_t *run, claim_kind_t kind, const clai
     return done;
 }
 
+/* An undecided claim over exactly two free parameters whose condition ties
+ * them together (no for-all region): the plane's decomposition (the CAD of
+ * `region N1, N2`) cut also by each part's comparisons, and every cell that
+ * is not stable offers its rational sample as a counterexample, re-checked
+ * exactly by claim_refute_from_region (the search's points can miss a thin
+ * failing sliver).  1 when refuted. */
+static int claim_refute_from_cad(rs_run_t *run, claim_kind_t kind, const claim_dnf_t *d, json_t *o)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    slong k, part, i, j, fv[2], nfree = 0;
+    int done = 0;
+    if (run->c->ncsets > 0 || rs_run_default_variant(run, &v) != RS_OK) { rs_error_init(run->err); return 0; }
+    s = v->s;
+    for (k = 0; k < run->c->nparams && k < s->nvars; k++)
+        if (!param_is_set(run, k) && fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0) {
+            if (nfree < 2) fv[nfree] = k;
+            nfree++;
+        }
+    if (nfree != 2 || s->complex_char) return 0;
+    for (part = 0; part < d->nparts && !done; part++) {
+        fmpz_mpoly_struct *dom = flint_malloc((size_t) (2 * d->n[part] + 1) * sizeof(fmpz_mpoly_struct));
+        int *closed = flint_malloc((size_t) (2 * d->n[part] + 1) * sizeof(int));
+        slong ndom = 0;
+        json_t *cells = NULL, *failing, *e;
+        size_t ci;
+        for (i = 0; i < d->n[part]; i++) {
+            rs_condpoly_t cp;
+            if (rs_condpoly_compile(&cp, d->conds[part] + i, s, run->c, run->err) != RS_OK) {
+                rs_error_init(run->err);
+                continue;
+            }
+            for (j = 0; j < cp.n; j++) {
+                rs_cmp_t op = cp.op[j];
+                int sg, other = 0;
+                if (!fmpq_mpoly_is_fmpq(cp.den + j, s->ctx) || fmpq_mpoly_is_zero(cp.num + j, s->ctx)
+                    || !(op == RS_CMP_LT || op == RS_CMP_LE || op == RS_CMP_GT || op == RS_CMP_GE))
+                    continue;     /* not a side of the domain: the re-check still applies it */
+                for (k = 0; k < s->nvars; k++)
+                    if (k != fv[0] && k != fv[1] && fmpq_mpoly_degree_si(cp.num + j, k, s->ctx) > 0) other = 1;
+                if (other) continue;
+                /* lhs - rhs op 0 as g > 0 (>= 0), g an integer polynomial */
+                sg = fmpq_sgn(cp.num[j].content) * fmpq_sgn(cp.den[j].content);
+                if (op == RS_CMP_LT || op == RS_CMP_LE) sg = -sg;
+                fmpz_mpoly_init(dom + ndom, s->zctx);
+                fmpz_mpoly_set(dom + ndom, cp.num[j].zpoly, s->zctx);
+                if (sg < 0) fmpz_mpoly_neg(dom + ndom, dom + ndom, s->zctx);
+                closed[ndom++] = op == RS_CMP_LE || op == RS_CMP_GE;
+            }
+            rs_condpoly_clear(&cp, s);
+        }
+        if (rs_an_region_cad_cells(&cells, run, v, fv[0], fv[1], dom, closed, ndom) != RS_OK) rs_error_init(run->err);
+        for (i = 0; i < ndom; i++) fmpz_mpoly_clear(dom + i, s->zctx);
+        flint_free(dom);
+        flint_free(closed);
+        failing = json_array();
+        json_array_foreach(cells, ci, e) {
+            const char *st = json_string_value(json_object_get(e, "status"));
+            json_t *a = json_object_get(e, run->c->params[fv[0]].name), *b = json_object_get(e, run->c->params[fv[1]].name);
+            if (st == NULL || strcmp(st, "stable") == 0 || strcmp(st, "outside") == 0 || strcmp(st, "undecided") == 0
+                || !json_is_string(a) || !json_is_string(b))
+                continue;
+            json_array_append_new(failing, json_pack("{s:{s:O,s:O}}", "counterexample",
+                                                     run->c->params[fv[0]].name, a, run->c->params[fv[1]].name, b));
+        }
+        json_decref(cells);
+        if (json_array_size(failing) > 0 && claim_refute_from_region(run, kind, d, failing, o)) {
+            done = 1;
+            json_object_set_new(o, "found_by", json_string(
+                "the decomposition of the plane (the CAD of `region N1, N2`, cut also by the claim's condition): "
+                "a cell's rational sample, re-checked (the assumptions and the claim's condition hold there, the "
+                "exact point verdict violates the claim)"));
+        }
+        json_decref(failing);
+    }
+    return done;
+}
+
 static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t kind, const claim_dnf_t *d,
                               json_t *o)
 {
@@ -1780,6 +1858,7 @@ static int claim_region_check(rs_run_t *run, const rs_request_t *q, claim_kind_t
             }
     if (why != NULL) {
         json_object_set_new(o, "cross_check", json_pack("{s:s,s:s}", "status", "not made", "reason", why));
+        if (strcmp(st, "undecided") == 0) claim_refute_from_cad(run, kind, d, o);
         return RS_OK;
     }
     failing = json_array();

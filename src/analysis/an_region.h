@@ -117,6 +117,13 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
 
 
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
+/* The cells of the plane (av, bv) of v's p (no other free parameter), the
+ * assume lines' bounds and the extra domain polynomials dom[i] > 0 (>= 0
+ * where closed[i]) cutting it (a claim's condition): *cells their JSON as
+ * in `region N1, N2` ("dim", the sample under each name, "status"), no
+ * result added.  RS_ERR_INPUT when another parameter is free. */
+int rs_an_region_cad_cells(json_t **cells, rs_run_t *run, const rs_variant_t *v, slong av, slong bv,
+                           const fmpz_mpoly_struct *dom, const int *closed, slong ndom);
 
 /* region re(z), im(z) (an_complex.c): the plane of z = x + i y from given
  * conditions.  s: a context of x, y, lambda (variables 0, 1, 2; ctx, zctx,

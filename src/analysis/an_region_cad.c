@@ -2434,6 +2434,26 @@ static int cad_solve(cad_t *c, json_t *substituted)
     return r;
 }
 
+/* the plane (av, bv) of v with the assume lines' bounds, nothing computed */
+static void cad_plane_init(cad_t *c, rs_run_t *run, const rs_variant_t *v, slong av, slong bv)
+{
+    slong i;
+    memset(c, 0, sizeof *c);
+    c->av = av;
+    c->bv = bv;
+    c->an = run->c->params[av].name;
+    c->bn = run->c->params[bv].name;
+    c->run = run;
+    c->v = v;
+    c->s = v->s;
+    c->blo = -1;
+    c->bhi = 1;
+    c->nb = run->c->nparams;
+    c->bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bounds_init(c->bounds, run->c->nparams);
+    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c->bounds, &run->c->assume[i], run->c, run->err);
+}
+
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *keep[2];
@@ -2442,38 +2462,53 @@ int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
     rs_variant_t *v;
     cad_t c;
     int r;
-    memset(&c, 0, sizeof c);
-    c.av = req->u.region.param;
-    c.bv = req->u.region.param2;
-    c.an = keep[0] = run->c->params[c.av].name;
-    c.bn = keep[1] = run->c->params[c.bv].name;
+    keep[0] = run->c->params[req->u.region.param].name;
+    keep[1] = run->c->params[req->u.region.param2].name;
     rs_run_assignments(run, &a, &na, keep, 2, req->u.region.at, req->u.region.nat);
     r = rs_run_variant(&v, run, a, na);
     rs_assign_free(a, na);
     if (r != RS_OK) return r;
-    c.run = run;
-    c.v = v;
-    c.s = v->s;
-    c.blo = -1;
-    c.bhi = 1;
+    cad_plane_init(&c, run, v, req->u.region.param, req->u.region.param2);
     for (i = 0; i < run->c->nparams; i++)
         if (i != c.av && i != c.bv && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0)
         {
             char msg[400];
             snprintf(msg, sizeof msg, "'%s' is symbolic: region N1, N2 decides two parameters; set the others "
                      "(region %s, %s at %s=VALUE)", run->c->params[i].name, c.an, c.bn, run->c->params[i].name);
+            cad_clear(&c);
             return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
         }
-    c.nb = run->c->nparams;
-    c.bounds = flint_malloc((run->c->nparams + 1) * sizeof(rs_bound_t));
-    rs_bounds_init(c.bounds, run->c->nparams);
-    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c.bounds, &run->c->assume[i], run->c, run->err);
     if (rs_bound_empty(c.bounds + c.av) || rs_bound_empty(c.bounds + c.bv)) {
         r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", "the assumptions are contradictory");
         cad_clear(&c);
         return r;
     }
     r = cad_solve(&c, v->assigned);
+    cad_clear(&c);
+    return r;
+}
+
+int rs_an_region_cad_cells(json_t **cells, rs_run_t *run, const rs_variant_t *v, slong av, slong bv,
+                           const fmpz_mpoly_struct *dom, const int *closed, slong ndom)
+{
+    cad_t c;
+    slong i;
+    int r;
+    *cells = NULL;
+    for (i = 0; i < run->c->nparams; i++)
+        if (i != av && i != bv && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0) return RS_ERR_INPUT;
+    cad_plane_init(&c, run, v, av, bv);
+    r = rs_bound_empty(c.bounds + av) || rs_bound_empty(c.bounds + bv) ? RS_ERR_INPUT : cad_critical(&c);
+    for (i = 0; i < ndom && r == RS_OK; i++) {
+        fmpz_mpoly_t g;
+        fmpz_mpoly_init(g, c.s->zctx);
+        fmpz_mpoly_set(g, dom + i, c.s->zctx);
+        if (!fmpz_mpoly_is_fmpz(g, c.s->zctx)) cad_push(&c, g, K_DOMAIN, closed[i]);   /* the sign matters */
+        fmpz_mpoly_clear(g, c.s->zctx);
+    }
+    if (r == RS_OK) r = cad_project(&c);
+    if (r == RS_OK) r = cad_lift(&c);
+    if (r == RS_OK) *cells = cad_cells_json(&c);
     cad_clear(&c);
     return r;
 }

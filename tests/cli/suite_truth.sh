@@ -146,6 +146,14 @@ if command -v jq >/dev/null 2>&1; then
         "$("$RS" --json cases/truth/radius-roots-at-zero.case 2>/dev/null | jq -c "$RJ")"
     check "radius over Q(i): p's roots (were p conj(p)'s)" '[[[-333333333,0,1],[0,0,1],[0,500000000,1]],"0.5"]' \
         "$("$RS" --json cases/truth/radius-complex-char.case 2>/dev/null | jq -c "$RJ")"
+    # two-parameter claim false on a thin sliver (h-truth4, by hand in the case): refuted
+    # by a cell sample of the plane's decomposition (was undecided); the true one stays undecided
+    C=cases/truth/claim-thin-sliver-two-params.case
+    check "claim 2-param sliver: refuted by the plane's cell sample (was undecided)" '["refuted","unstable","undecided"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[0].at_counterexample.status, .[1].status]')"
+    ab=$(jfield $C 0 '.counterexample | "\(.a) \(.b)"' | tr -d '"')
+    check "claim 2-param sliver: counterexample in the set, a^2 + b^2 < 1" 'True' \
+        "$(python3 -c "from fractions import Fraction as F; a, b = map(F, '$ab'.split()); print(F(1001001, 10**6) < a + b < F(2236, 1000) and 0 < b < F(1, 100) and a * a + b * b < 1)")"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
