@@ -176,6 +176,12 @@ if command -v python3 >/dev/null 2>&1; then
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth3.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
+    # fourth batch (tests/truth/truth4.py, h-truth4): radius roots (zeros, Q(i)) and outward
+    # rounding against mpmath, vanishing leading coefficients, singular implicit steps
+    for spec in "quick 1 5"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth4.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
 else
     ok "skipped the random planted truths: no python3"
 fi
