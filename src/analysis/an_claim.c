@@ -182,18 +182,6 @@ static void cert_note(claim_cx_t *cx, const char *text)
 
 #define CLAIM_POLYA_MAX RS_POLYA_MAX_POWER   /* Polya multipliers tried (positivity.h) */
 
-/* the one variable of P, -1 for none or several */
-static slong _single_var_q(const fmpq_mpoly_t P, const rs_scheme_t s)
-{
-    slong v, w = -1;
-    for (v = 0; v < s->nvars; v++)
-        if (fmpq_mpoly_degree_si(P, v, s->ctx) > 0) {
-            if (w >= 0) return -1;
-            w = v;
-        }
-    return w;
-}
-
 /* Certifies P > 0 for every s >= 0 (s_v > 0 where strict[v]).  A monomial
  * factor in strictly positive variables is divided out first: a condition
  * that vanishes at an open end of the interval (mapped to s_v = 0) has such
@@ -268,7 +256,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
     fmpq_mpoly_t P;
     int *strict = flint_calloc(s->nvars, sizeof(int));
     json_t *sub = json_object();
-    slong v, polya = 0;
+    slong v, polya = 0, single = -1;
     int ok = 1, by_roots = 0;
     char buf[512], *mono = NULL;
     if (depth > 8) { flint_free(strict); json_decref(sub); return 0; }
@@ -308,14 +296,15 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
     }
     if (ok) {
         ok = certify_nonneg(P, strict, s, &mono, &polya, &by_roots, &cx->inconsistent);
-        if (!ok && _single_var_q(P, s) >= 0 && !cx->inconsistent)
-            cx_add_hints(cx, P, _single_var_q(P, s), b + _single_var_q(P, s), strict, s);
+        single = rs_positivity_single_var(P->zpoly, s->ctx->zctx);   /* P's one variable, if one */
+        if (!ok && single >= 0 && !cx->inconsistent)
+            cx_add_hints(cx, P, single, b + single, strict, s);
         if (!ok) {
             snprintf(buf, sizeof buf, "after mapping the interval%s onto s >= 0 a coefficient stays negative "
                      "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)%s",
                      json_object_size(sub) > 1 ? "s" : "", CLAIM_POLYA_MAX,
                      cx->inconsistent ? "; the Sturm and Arb root counts of the one-variable numerator disagree"
-                     : _single_var_q(P, s) >= 0 ? "; the one-variable numerator has a real root there" : "");
+                     : single >= 0 ? "; the one-variable numerator has a real root there" : "");
             claim_fail(cx, buf, c, s);
         }
     }
@@ -328,7 +317,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         if (by_roots) {
             /* the report prints "text"; the fields stay for JSON readers */
             char *ps = rs_polyfmt_fmpq_mpoly(P, (const char **) s->vars, s->ctx);
-            slong sv = _single_var_q(P, s);
+            slong sv = single;
             char *txt = malloc(strlen(cs) + strlen(ps) + 2 * strlen(s->vars[sv]) + 400);
             sprintf(txt, "%s > 0 since with %s = %s (%s) the numerator %s has no real root with s_%s %s 0 "
                     "(Sturm sequence, re-counted by certified isolation) and is positive there", cs,
@@ -793,6 +782,13 @@ static void bounds_copy(rs_bound_t *dst, const rs_bound_t *src, slong n)
     }
 }
 
+/* x inside the bound b (its ends when closed) */
+static int in_bound(const fmpq_t x, const rs_bound_t *b)
+{
+    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
+    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
+}
+
 /* Rational values of variable i inside b (ends when closed) where p(1),
  * p(-1) or p's leading coefficient vanishes, as polynomials in i alone:
  * where roots reach lambda = +-1 or the step becomes singular.  Appended to
@@ -821,15 +817,11 @@ static void special_candidates(fmpq *c, slong *n, slong cap, const rs_variant_t 
         fmpz_poly_factor_init(f);
         fmpz_poly_factor(f, u);
         for (k = 0; k < f->num && *n < cap; k++) {
-            int cl, ch;
             if (fmpz_poly_degree(f->p + k) != 1) continue;
             fmpz_neg(fmpq_numref(r), f->p[k].coeffs);
             fmpz_set(fmpq_denref(r), f->p[k].coeffs + 1);
             fmpq_canonicalise(r);
-            cl = !b[i].has_lo ? 1 : fmpq_cmp(r, b[i].lo);
-            ch = !b[i].has_hi ? -1 : fmpq_cmp(r, b[i].hi);
-            if ((cl > 0 || (cl == 0 && b[i].lo_closed)) && (ch < 0 || (ch == 0 && b[i].hi_closed)))
-                fmpq_set(c + (*n)++, r);
+            if (in_bound(r, b + i)) fmpq_set(c + (*n)++, r);
         }
         fmpz_poly_factor_clear(f);
     }
@@ -1364,13 +1356,6 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
  * det_only: nothing is searched (*skipped = 1) when the points would be drawn
  * from st (too many candidates): a search made before the proof must not
  * change the random state the proof's re-checks use. */
-/* x inside the bound b (its ends when closed) */
-static int in_bound(const fmpq_t x, const rs_bound_t *b)
-{
-    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
-    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
-}
-
 static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, const rs_cond_t *conds,
                         slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at,
                         int det_only, int *skipped, const claim_cx_t *hx)

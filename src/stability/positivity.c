@@ -342,8 +342,8 @@ rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     return res;
 }
 
-/* The index of the one variable poly has, -1 for none or several. */
-static slong _single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx)
+slong
+rs_positivity_single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx)
 {
     slong v, nvars = fmpz_mpoly_ctx_nvars(ctx), w = -1;
     for (v = 0; v < nvars; v++)
@@ -391,7 +391,7 @@ int
 rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                          const fmpz_mpoly_ctx_t ctx, int *inconsistent)
 {
-    slong v = _single_var(poly, ctx), k, nneg = 0, npos = 0, an = 0, ap = 0, n;
+    slong v = rs_positivity_single_var(poly, ctx), k, nneg = 0, npos = 0, an = 0, ap = 0, n;
     rs_sign_t sv;
     fmpz_poly_t u, g, d;
     int res = 0;
@@ -443,7 +443,7 @@ slong
 rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
                               const fmpz_mpoly_ctx_t ctx)
 {
-    slong v = _single_var(poly, ctx), n, i, nr = 0, npts = 0, prec;
+    slong v = rs_positivity_single_var(poly, ctx), n, i, nr = 0, npts = 0, prec;
     fmpz_poly_t u, g, d;
     acb_ptr r = NULL;
     arb_ptr re = NULL;
