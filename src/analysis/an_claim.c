@@ -17,6 +17,7 @@
 #include "util/polyfmt.h"
 #include "analysis/an_region.h"
 #include "stability/routh_complex.h"
+#include "algebra/mfactor.h"
 
 /* ---- claim ------------------------------------------------------------------- */
 
@@ -2197,19 +2198,17 @@ static int alg_nonzero_on(const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, s
 static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
                        rs_sign_t sw, rs_alg_t *a, const rs_scheme_struct *s)
 {
-    fmpz_poly_t N, d;
+    fmpz_poly_t N;
     slong nw, nm = fmpz_poly_degree(m), i, k, prec, ours;
     acb_ptr wr = NULL, ar;
     acb_t val;
     int found = 0;
-    fmpz_poly_init(N); fmpz_poly_init(d);
+    fmpz_poly_init(N);
     if (!alg_norm(N, f, m, tv, wv, s) || fmpz_poly_degree(N) < 1) {
-        fmpz_poly_clear(N); fmpz_poly_clear(d);
+        fmpz_poly_clear(N);
         return 0;
     }
-    fmpz_poly_derivative(d, N);
-    fmpz_poly_gcd(d, N, d);
-    fmpz_poly_div(N, N, d);                  /* squarefree */
+    rs_fmpz_poly_squarefree_part(N, N);     /* simple roots, for the isolation */
     nw = fmpz_poly_degree(N);
     wr = _acb_vec_init(nw);
     ar = _acb_vec_init(nm);
@@ -2247,7 +2246,7 @@ static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz
     acb_clear(val);
     _acb_vec_clear(wr, nw);
     _acb_vec_clear(ar, nm);
-    fmpz_poly_clear(N); fmpz_poly_clear(d);
+    fmpz_poly_clear(N);
     return found;
 }
 
