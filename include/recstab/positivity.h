@@ -56,6 +56,10 @@ int rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                               const rs_bound_t *b, slong nbounds,
                               const fmpz_mpoly_ctx_t ctx, slong *power);
 
+/* The index of the one variable poly has (degree > 0), -1 for none or
+ * several. */
+slong rs_positivity_single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx);
+
 /* Exact one-variable test (issue 13: 16 w^2 - 31 w + 16 > 0 for w >= 0 needs
  * a Polya exponent far past RS_POLYA_MAX_POWER): when poly has exactly one
  * variable x, 1 if poly > 0 on the range sign[x] gives (x > 0, x >= 0, or

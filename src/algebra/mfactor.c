@@ -1,4 +1,4 @@
-/* mfactor.c -- rs_mpoly_factor: see mfactor.h. */
+/* mfactor.c -- rs_mpoly_factor, rs_fmpz_poly_squarefree_part: see mfactor.h. */
 #include <flint/flint.h>
 #include <flint/fmpz.h>
 #include "algebra/mfactor.h"
@@ -45,4 +45,20 @@ int rs_mpoly_factor(fmpz_mpoly_factor_t f, const fmpz_mpoly_t A, const fmpz_mpol
     fmpz_mpoly_ctx_clear(c2);
     flint_free(deg);
     return ok;
+}
+
+void rs_fmpz_poly_squarefree_part(fmpz_poly_t r, const fmpz_poly_t f)
+{
+    fmpz_poly_t d;
+    if (fmpz_poly_degree(f) < 1) {
+        if (fmpz_poly_is_zero(f)) fmpz_poly_zero(r);
+        else fmpz_poly_one(r);
+        return;
+    }
+    fmpz_poly_init(d);
+    fmpz_poly_derivative(d, f);
+    fmpz_poly_gcd(d, f, d);
+    fmpz_poly_div(r, f, d);          /* exact: d divides f */
+    fmpz_poly_primitive_part(r, r);  /* and the leading coefficient > 0 */
+    fmpz_poly_clear(d);
 }

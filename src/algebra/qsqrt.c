@@ -134,44 +134,104 @@ static void sample_between(fmpq_t q, const arb_t a, const arb_t b)
     arf_clear(u); arf_clear(l); fmpq_clear(t);
 }
 
-int rs_qdpoly_nonneg_real(const rs_qdpoly_t p, slong d, fmpq_t t0)
+/* a real root of an irreducible factor */
+typedef struct { slong f; arb_struct x[1]; } qroot_t;
+
+static int qroot_cmp(const void *a, const void *b)
+{
+    return arf_cmp(arb_midref(((const qroot_t *) a)->x), arb_midref(((const qroot_t *) b)->x));
+}
+
+/* the real roots of the irreducible factors of f, sorted, pairwise disjoint */
+static qroot_t *real_roots(slong *nr, const fmpz_poly_factor_t fac)
+{
+    qroot_t *r = NULL;
+    slong prec, i, j, n = 0;
+    int ok = 0;
+    for (prec = 64; !ok; prec *= 2) {
+        for (i = 0; i < n; i++) arb_clear(r[i].x);
+        flint_free(r);
+        r = NULL;
+        n = 0;
+        for (i = 0; i < fac->num; i++) {
+            slong deg = fmpz_poly_degree(fac->p + i);
+            acb_ptr z = _acb_vec_init(deg);
+            arb_fmpz_poly_complex_roots(z, fac->p + i, 0, prec);
+            for (j = 0; j < deg; j++) {
+                if (!arb_is_zero(acb_imagref(z + j))) continue;
+                r = flint_realloc(r, (n + 1) * sizeof(qroot_t));
+                r[n].f = i;
+                arb_init(r[n].x);
+                arb_set(r[n].x, acb_realref(z + j));
+                n++;
+            }
+            _acb_vec_clear(z, deg);
+        }
+        if (n > 0) qsort(r, (size_t) n, sizeof(qroot_t), qroot_cmp);
+        ok = 1;
+        for (i = 0; i + 1 < n; i++)
+            if (arb_overlaps(r[i].x, r[i + 1].x)) ok = 0;
+    }
+    *nr = n;
+    return r;
+}
+
+/* The cells of the real line cut by the real roots of g's norm (g != 0;
+ * the sign of g is constant on each cell): fac its irreducible factors
+ * (initialised here), *nr real roots returned sorted and disjoint; cell i
+ * lies below root i, cell nr above the last.  cells_clear frees both. */
+static qroot_t *norm_cells(slong *nr, fmpz_poly_factor_t fac, const rs_qdpoly_t g, slong d)
 {
     fmpq_poly_t n;
-    fmpz_poly_t f, g;
-    acb_ptr r;
-    slong deg, nreal = 0, i;
+    fmpz_poly_t f;
+    qroot_t *r;
+    fmpq_poly_init(n);
+    fmpz_poly_init(f);
+    fmpz_poly_factor_init(fac);
+    rs_qdpoly_norm(n, g, d);
+    fmpq_poly_get_numerator(f, n);
+    fmpz_poly_factor(fac, f);
+    r = real_roots(nr, fac);
+    fmpq_poly_clear(n);
+    fmpz_poly_clear(f);
+    return r;
+}
+
+/* the exact sign of g at the rational sample x of cell i */
+static int cell_sample(fmpq_t x, const rs_qdpoly_t g, slong d, const qroot_t *r, slong nr, slong i)
+{
+    rs_qd_t v;
+    int sg;
+    rs_qd_init(v);
+    sample_between(x, i == 0 ? NULL : r[i - 1].x, i == nr ? NULL : r[i].x);
+    rs_qdpoly_evaluate_fmpq(v, g, x);
+    sg = rs_qd_sgn(v, d);
+    rs_qd_clear(v);
+    return sg;
+}
+
+static void cells_clear(qroot_t *r, slong nr, fmpz_poly_factor_t fac)
+{
+    slong i;
+    for (i = 0; i < nr; i++) arb_clear(r[i].x);
+    flint_free(r);
+    fmpz_poly_factor_clear(fac);
+}
+
+int rs_qdpoly_nonneg_real(const rs_qdpoly_t p, slong d, fmpq_t t0)
+{
+    fmpz_poly_factor_t fac;
+    fmpq_t x;
+    qroot_t *r;
+    slong nr, i;
     int ok = 1;
     if (rs_qdpoly_degree(p) < 0) return 1;
-    fmpq_poly_init(n);
-    fmpz_poly_init(f); fmpz_poly_init(g);
-    rs_qdpoly_norm(n, p, d);
-    fmpq_poly_get_numerator(f, n);
-    /* the squarefree part: distinct roots, so Arb isolates them */
-    fmpz_poly_derivative(g, f);
-    fmpz_poly_gcd(g, f, g);
-    fmpz_poly_div(f, f, g);
-    deg = fmpz_poly_degree(f);
-    r = _acb_vec_init(FLINT_MAX(deg, 1));
-    if (deg > 0) {
-        /* real roots first, ascending, imaginary part exactly 0 */
-        arb_fmpz_poly_complex_roots(r, f, 0, 64);   /* raises its precision until isolated */
-        for (i = 0; i < deg; i++)
-            if (arb_is_zero(acb_imagref(r + i))) nreal++;
-    }
-    for (i = 0; i <= nreal && ok; i++) {
-        fmpq_t x;
-        rs_qd_t v;
-        fmpq_init(x);
-        rs_qd_init(v);
-        sample_between(x, i == 0 ? NULL : acb_realref(r + i - 1), i == nreal ? NULL : acb_realref(r + i));
-        rs_qdpoly_evaluate_fmpq(v, p, x);
-        if (rs_qd_sgn(v, d) < 0) { ok = 0; fmpq_set(t0, x); }
-        rs_qd_clear(v);
-        fmpq_clear(x);
-    }
-    _acb_vec_clear(r, FLINT_MAX(deg, 1));
-    fmpq_poly_clear(n);
-    fmpz_poly_clear(f); fmpz_poly_clear(g);
+    fmpq_init(x);
+    r = norm_cells(&nr, fac, p, d);
+    for (i = 0; i <= nr && ok; i++)
+        if (cell_sample(x, p, d, r, nr, i) < 0) { ok = 0; fmpq_set(t0, x); }
+    cells_clear(r, nr, fac);
+    fmpq_clear(x);
     return ok;
 }
 
@@ -216,10 +276,10 @@ int rs_qdpoly_hurwitz(const rs_qdpoly_t p, slong d)
  * odd k with (-1)^((k-1)/2) */
 void rs_qdpoly_abs2_imag_axis(rs_qdpoly_t r, const rs_qdpoly_t P, slong d)
 {
-    rs_qdpoly_t A, B, T;
+    rs_qdpoly_t A, B;
     rs_qd_t c;
     slong k;
-    rs_qdpoly_init(A); rs_qdpoly_init(B); rs_qdpoly_init(T);
+    rs_qdpoly_init(A); rs_qdpoly_init(B);
     rs_qd_init(c);
     for (k = 0; k <= rs_qdpoly_degree(P); k++) {
         rs_qdpoly_get_coeff(c, P, k);
@@ -231,7 +291,7 @@ void rs_qdpoly_abs2_imag_axis(rs_qdpoly_t r, const rs_qdpoly_t P, slong d)
     fmpq_poly_add(r->p0, A->p0, B->p0);
     fmpq_poly_add(r->p1, A->p1, B->p1);
     rs_qd_clear(c);
-    rs_qdpoly_clear(A); rs_qdpoly_clear(B); rs_qdpoly_clear(T);
+    rs_qdpoly_clear(A); rs_qdpoly_clear(B);
 }
 
 rs_qdc_struct *rs_qdc_vec_init(slong n)
@@ -277,7 +337,7 @@ static void qdc_comb(rs_qdc_struct *r, const rs_qdc_struct *a, const rs_qdc_stru
 }
 
 /* |c|^2 in Q(sqrt d) */
-static void qdc_abs2(rs_qd_struct *r, const rs_qdc_struct *c, slong d)
+void rs_qdc_abs2(rs_qd_struct *r, const rs_qdc_struct *c, slong d)
 {
     rs_qd_t t;
     rs_qd_init(t);
@@ -299,8 +359,8 @@ int rs_qdc_schur_stable(const rs_qdc_struct *c, slong n, slong d)
     rs_qd_init(x); rs_qd_init(y);
     for (k = 0; k <= n; k++) { rs_qd_set(a[k].re, c[k].re); rs_qd_set(a[k].im, c[k].im); }
     for (m = n; m > 0 && ok; m--) {
-        qdc_abs2(x, a + m, d);
-        qdc_abs2(y, a, d);
+        rs_qdc_abs2(x, a + m, d);
+        rs_qdc_abs2(y, a, d);
         rs_qd_sub(x, x, y);
         if (rs_qd_sgn(x, d) <= 0) { ok = 0; break; }
         /* b_k = conj(a_m) a_{k+1} - a_0 conj(a_{m-1-k}), k = 0..m-1 */
@@ -412,7 +472,7 @@ void rs_qd_astab_decide(rs_qd_astab_t a, const rs_qdpoly_t N, const rs_qdpoly_t 
 }
 
 /* c = P(zr + i zi), Horner over Q(sqrt d)(i) */
-static void qdpoly_eval_cx(rs_qdc_struct *v, const rs_qdpoly_t P, const fmpq_t zr, const fmpq_t zi, slong d)
+void rs_qdpoly_evaluate_cx(rs_qdc_struct *v, const rs_qdpoly_t P, const fmpq_t zr, const fmpq_t zi, slong d)
 {
     rs_qdc_struct z[1];
     rs_qd_t a, t, u;
@@ -444,8 +504,8 @@ int rs_qd_onestep_stable_at(const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, c
     int s, r, res;
     rs_qd_init(x);
     /* D(z) lambda - N(z) */
-    qdpoly_eval_cx(c + 1, D, zr, zi, d);
-    qdpoly_eval_cx(c, N, zr, zi, d);
+    rs_qdpoly_evaluate_cx(c + 1, D, zr, zi, d);
+    rs_qdpoly_evaluate_cx(c, N, zr, zi, d);
     fmpq_neg(c->re->x, c->re->x); fmpq_neg(c->re->y, c->re->y);
     fmpq_neg(c->im->x, c->im->x); fmpq_neg(c->im->y, c->im->y);
     if (rs_qd_is_zero(c[1].re) && rs_qd_is_zero(c[1].im)) {
@@ -456,11 +516,11 @@ int rs_qd_onestep_stable_at(const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, c
         /* Arb cannot settle a root on the circle: then Schur must say 0 and
          * |N| = |D| exactly */
         if (r == -1) {
-            qdc_abs2(x, c + 1, d);
+            rs_qdc_abs2(x, c + 1, d);
             {
                 rs_qd_t y;
                 rs_qd_init(y);
-                qdc_abs2(y, c, d);
+                rs_qdc_abs2(y, c, d);
                 rs_qd_sub(x, x, y);
                 rs_qd_clear(y);
             }
@@ -497,48 +557,6 @@ void rs_qd_iv_clear(rs_qd_iv_t iv)
     }
 }
 
-/* a real root of an irreducible factor */
-typedef struct { slong f; arb_struct x[1]; } qroot_t;
-
-static int qroot_cmp(const void *a, const void *b)
-{
-    return arf_cmp(arb_midref(((const qroot_t *) a)->x), arb_midref(((const qroot_t *) b)->x));
-}
-
-/* the real roots of the irreducible factors of f, sorted, pairwise disjoint */
-static qroot_t *real_roots(slong *nr, const fmpz_poly_factor_t fac)
-{
-    qroot_t *r = NULL;
-    slong prec, i, j, n = 0;
-    int ok = 0;
-    for (prec = 64; !ok; prec *= 2) {
-        for (i = 0; i < n; i++) arb_clear(r[i].x);
-        flint_free(r);
-        r = NULL;
-        n = 0;
-        for (i = 0; i < fac->num; i++) {
-            slong deg = fmpz_poly_degree(fac->p + i);
-            acb_ptr z = _acb_vec_init(deg);
-            arb_fmpz_poly_complex_roots(z, fac->p + i, 0, prec);
-            for (j = 0; j < deg; j++) {
-                if (!arb_is_zero(acb_imagref(z + j))) continue;
-                r = flint_realloc(r, (n + 1) * sizeof(qroot_t));
-                r[n].f = i;
-                arb_init(r[n].x);
-                arb_set(r[n].x, acb_realref(z + j));
-                n++;
-            }
-            _acb_vec_clear(z, deg);
-        }
-        if (n > 0) qsort(r, (size_t) n, sizeof(qroot_t), qroot_cmp);
-        ok = 1;
-        for (i = 0; i + 1 < n; i++)
-            if (arb_overlaps(r[i].x, r[i + 1].x)) ok = 0;
-    }
-    *nr = n;
-    return r;
-}
-
 static void end_set(rs_qd_end_struct *e, const qroot_t *r, const fmpz_poly_factor_t fac)
 {
     e->inf = 0;
@@ -555,16 +573,11 @@ int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t
 {
     int res = 0;
     rs_qdpoly_t g, t;
-    fmpq_poly_t n;
-    fmpz_poly_t f;
     fmpz_poly_factor_t fac;
     qroot_t *r;
     slong nr, i, zero = -1, j, c;
     int *ok;
     rs_qdpoly_init(g); rs_qdpoly_init(t);
-    fmpq_poly_init(n);
-    fmpz_poly_init(f);
-    fmpz_poly_factor_init(fac);
     if (imag) {
         rs_qdpoly_abs2_imag_axis(g, D, d);
         rs_qdpoly_abs2_imag_axis(t, N, d);
@@ -578,23 +591,13 @@ int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t
         iv->lo->inf = -1;
         iv->hi->inf = 1;
     } else {
-        rs_qdpoly_norm(n, g, d);
-        fmpq_poly_get_numerator(f, n);
-        fmpz_poly_factor(fac, f);
-        r = real_roots(&nr, fac);
+        fmpq_t x;
+        r = norm_cells(&nr, fac, g, d);
         /* ok[i]: g >= 0 on the cell below root i (i = nr: above the last) */
         ok = flint_malloc((nr + 1) * sizeof(int));
-        for (i = 0; i <= nr; i++) {
-            fmpq_t x;
-            rs_qd_t v;
-            fmpq_init(x);
-            rs_qd_init(v);
-            sample_between(x, i == 0 ? NULL : r[i - 1].x, i == nr ? NULL : r[i].x);
-            rs_qdpoly_evaluate_fmpq(v, g, x);
-            ok[i] = rs_qd_sgn(v, d) >= 0;
-            rs_qd_clear(v);
-            fmpq_clear(x);
-        }
+        fmpq_init(x);
+        for (i = 0; i <= nr; i++) ok[i] = cell_sample(x, g, d, r, nr, i) >= 0;
+        fmpq_clear(x);
         for (i = 0; i < nr; i++)
             if (arb_contains_zero(r[i].x) && fmpz_is_zero(fac->p[r[i].f].coeffs)) zero = i;
         if (zero < 0) {
@@ -615,14 +618,10 @@ int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t
         /* lo: root i (or -inf when i < 0); hi: root j (or +inf when j >= nr) */
         if (i < 0) iv->lo->inf = -1; else end_set(iv->lo, r + i, fac);
         if (j >= nr) iv->hi->inf = 1; else end_set(iv->hi, r + j, fac);
-        for (i = 0; i < nr; i++) arb_clear(r[i].x);
-        flint_free(r);
+        cells_clear(r, nr, fac);
         flint_free(ok);
     }
     rs_qdpoly_clear(g); rs_qdpoly_clear(t);
-    fmpq_poly_clear(n);
-    fmpz_poly_clear(f);
-    fmpz_poly_factor_clear(fac);
     return res;
 }
 

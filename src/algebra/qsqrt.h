@@ -58,6 +58,10 @@ typedef struct { rs_qd_struct re[1], im[1]; } rs_qdc_struct;
 
 rs_qdc_struct *rs_qdc_vec_init(slong n);
 void rs_qdc_vec_clear(rs_qdc_struct *v, slong n);
+/* |c|^2 = re^2 + im^2 in Q(sqrt d) */
+void rs_qdc_abs2(rs_qd_struct *r, const rs_qdc_struct *c, slong d);
+/* v = P(zr + i zi) for rational zr, zi (Horner over Q(sqrt d)(i)) */
+void rs_qdpoly_evaluate_cx(rs_qdc_struct *v, const rs_qdpoly_t P, const fmpq_t zr, const fmpq_t zi, slong d);
 
 /* the coefficients (c[0..n]) of the polynomial in lambda, c[n] != 0, has
  * every root strictly inside the unit circle: Schur-Cohn's recursion

@@ -17,6 +17,7 @@
 #include "util/polyfmt.h"
 #include "analysis/an_region.h"
 #include "stability/routh_complex.h"
+#include "algebra/mfactor.h"
 
 /* ---- claim ------------------------------------------------------------------- */
 
@@ -182,18 +183,6 @@ static void cert_note(claim_cx_t *cx, const char *text)
 
 #define CLAIM_POLYA_MAX RS_POLYA_MAX_POWER   /* Polya multipliers tried (positivity.h) */
 
-/* the one variable of P, -1 for none or several */
-static slong _single_var_q(const fmpq_mpoly_t P, const rs_scheme_t s)
-{
-    slong v, w = -1;
-    for (v = 0; v < s->nvars; v++)
-        if (fmpq_mpoly_degree_si(P, v, s->ctx) > 0) {
-            if (w >= 0) return -1;
-            w = v;
-        }
-    return w;
-}
-
 /* Certifies P > 0 for every s >= 0 (s_v > 0 where strict[v]).  A monomial
  * factor in strictly positive variables is divided out first: a condition
  * that vanishes at an open end of the interval (mapped to s_v = 0) has such
@@ -268,7 +257,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
     fmpq_mpoly_t P;
     int *strict = flint_calloc(s->nvars, sizeof(int));
     json_t *sub = json_object();
-    slong v, polya = 0;
+    slong v, polya = 0, single = -1;
     int ok = 1, by_roots = 0;
     char buf[512], *mono = NULL;
     if (depth > 8) { flint_free(strict); json_decref(sub); return 0; }
@@ -308,14 +297,15 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
     }
     if (ok) {
         ok = certify_nonneg(P, strict, s, &mono, &polya, &by_roots, &cx->inconsistent);
-        if (!ok && _single_var_q(P, s) >= 0 && !cx->inconsistent)
-            cx_add_hints(cx, P, _single_var_q(P, s), b + _single_var_q(P, s), strict, s);
+        single = rs_positivity_single_var(P->zpoly, s->ctx->zctx);   /* P's one variable, if one */
+        if (!ok && single >= 0 && !cx->inconsistent)
+            cx_add_hints(cx, P, single, b + single, strict, s);
         if (!ok) {
             snprintf(buf, sizeof buf, "after mapping the interval%s onto s >= 0 a coefficient stays negative "
                      "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)%s",
                      json_object_size(sub) > 1 ? "s" : "", CLAIM_POLYA_MAX,
                      cx->inconsistent ? "; the Sturm and Arb root counts of the one-variable numerator disagree"
-                     : _single_var_q(P, s) >= 0 ? "; the one-variable numerator has a real root there" : "");
+                     : single >= 0 ? "; the one-variable numerator has a real root there" : "");
             claim_fail(cx, buf, c, s);
         }
     }
@@ -328,7 +318,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         if (by_roots) {
             /* the report prints "text"; the fields stay for JSON readers */
             char *ps = rs_polyfmt_fmpq_mpoly(P, (const char **) s->vars, s->ctx);
-            slong sv = _single_var_q(P, s);
+            slong sv = single;
             char *txt = malloc(strlen(cs) + strlen(ps) + 2 * strlen(s->vars[sv]) + 400);
             sprintf(txt, "%s > 0 since with %s = %s (%s) the numerator %s has no real root with s_%s %s 0 "
                     "(Sturm sequence, re-counted by certified isolation) and is positive there", cs,
@@ -793,6 +783,13 @@ static void bounds_copy(rs_bound_t *dst, const rs_bound_t *src, slong n)
     }
 }
 
+/* x inside the bound b (its ends when closed) */
+static int in_bound(const fmpq_t x, const rs_bound_t *b)
+{
+    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
+    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
+}
+
 /* Rational values of variable i inside b (ends when closed) where p(1),
  * p(-1) or p's leading coefficient vanishes, as polynomials in i alone:
  * where roots reach lambda = +-1 or the step becomes singular.  Appended to
@@ -821,15 +818,11 @@ static void special_candidates(fmpq *c, slong *n, slong cap, const rs_variant_t 
         fmpz_poly_factor_init(f);
         fmpz_poly_factor(f, u);
         for (k = 0; k < f->num && *n < cap; k++) {
-            int cl, ch;
             if (fmpz_poly_degree(f->p + k) != 1) continue;
             fmpz_neg(fmpq_numref(r), f->p[k].coeffs);
             fmpz_set(fmpq_denref(r), f->p[k].coeffs + 1);
             fmpq_canonicalise(r);
-            cl = !b[i].has_lo ? 1 : fmpq_cmp(r, b[i].lo);
-            ch = !b[i].has_hi ? -1 : fmpq_cmp(r, b[i].hi);
-            if ((cl > 0 || (cl == 0 && b[i].lo_closed)) && (ch < 0 || (ch == 0 && b[i].hi_closed)))
-                fmpq_set(c + (*n)++, r);
+            if (in_bound(r, b + i)) fmpq_set(c + (*n)++, r);
         }
         fmpz_poly_factor_clear(f);
     }
@@ -1364,13 +1357,6 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
  * det_only: nothing is searched (*skipped = 1) when the points would be drawn
  * from st (too many candidates): a search made before the proof must not
  * change the random state the proof's re-checks use. */
-/* x inside the bound b (its ends when closed) */
-static int in_bound(const fmpq_t x, const rs_bound_t *b)
-{
-    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
-    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
-}
-
 static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, const rs_cond_t *conds,
                         slong nconds, flint_rand_t st, slong *ntried, json_t **counter, json_t **at,
                         int det_only, int *skipped, const claim_cx_t *hx)
@@ -2287,23 +2273,21 @@ static int alg_nonzero_on(const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, s
 
 /* a w0 on the range with f(alpha, w0) = 0 exactly: a positive (resp. any
  * real) root of the norm where f at every other conjugate of alpha is
- * certified non-zero; its approximation into buf */
-static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv, slong wv,
-                       rs_sign_t sw, rs_alg_t *a, const rs_scheme_struct *s)
+ * certified non-zero; its approximation into buf, its enclosure into w0 */
+static int alg_zero_on(char *buf, size_t bufsz, acb_t w0, const fmpz_mpoly_t f, const fmpz_poly_t m, slong tv,
+                       slong wv, rs_sign_t sw, rs_alg_t *a, const rs_scheme_struct *s)
 {
-    fmpz_poly_t N, d;
+    fmpz_poly_t N;
     slong nw, nm = fmpz_poly_degree(m), i, k, prec, ours;
     acb_ptr wr = NULL, ar;
     acb_t val;
     int found = 0;
-    fmpz_poly_init(N); fmpz_poly_init(d);
+    fmpz_poly_init(N);
     if (!alg_norm(N, f, m, tv, wv, s) || fmpz_poly_degree(N) < 1) {
-        fmpz_poly_clear(N); fmpz_poly_clear(d);
+        fmpz_poly_clear(N);
         return 0;
     }
-    fmpz_poly_derivative(d, N);
-    fmpz_poly_gcd(d, N, d);
-    fmpz_poly_div(N, N, d);                  /* squarefree */
+    rs_fmpz_poly_squarefree_part(N, N);     /* simple roots, for the isolation */
     nw = fmpz_poly_degree(N);
     wr = _acb_vec_init(nw);
     ar = _acb_vec_init(nm);
@@ -2334,6 +2318,7 @@ static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz
                 char *ws = arb_get_str(acb_realref(wr + i), 15, ARB_STR_NO_RADIUS);
                 found = 1;
                 snprintf(buf, bufsz, "%s", ws);
+                acb_set(w0, wr + i);
                 flint_free(ws);
             }
         }
@@ -2341,8 +2326,82 @@ static int alg_zero_on(char *buf, size_t bufsz, const fmpz_mpoly_t f, const fmpz
     acb_clear(val);
     _acb_vec_clear(wr, nw);
     _acb_vec_clear(ar, nm);
-    fmpz_poly_clear(N); fmpz_poly_clear(d);
+    fmpz_poly_clear(N);
     return found;
+}
+
+/* The second method for a marginal verdict (h-review): p(alpha, w, lambda)
+ * as a polynomial in lambda with ball coefficients (alpha's enclosure
+ * refined, w at each sample), its roots certified by acb_poly_find_roots.
+ * The exact argument puts every root in the closed unit disc for every w on
+ * the range, so a root ball certainly outside the circle (|root| > 1)
+ * contradicts it.  Returns 0 on such a disagreement, else 1; *out says what
+ * was checked (a sample whose roots are not isolated by 1024 bits checks
+ * nothing and says so). */
+static int alg_marginal_spot_check(json_t **out, const fmpz_mpoly_t p, slong tv, slong wv, rs_alg_t *a,
+                                   acb_srcptr w, const char *const *wname, slong nw, const rs_scheme_struct *s)
+{
+    slong lv = s->lambda_var, n = fmpz_mpoly_degree_si(p, lv, s->zctx), i, j, prec, nout = 0, niso = 0;
+    fmpz_mpoly_struct *cf = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct));
+    acb_ptr rt = _acb_vec_init(n);
+    acb_poly_t P;
+    acb_t al, c;
+    arb_t m;
+    arf_t ub, t;
+    json_t *smp = json_array();
+    for (j = 0; j <= n; j++) fmpz_mpoly_init(cf + j, s->zctx);
+    rs_polyfmt_coeffs(cf, p, lv, s->zctx);   /* in tv and wv only (the caller's test) */
+    acb_poly_init(P);
+    acb_init(al); acb_init(c);
+    arb_init(m);
+    arf_init(ub); arf_init(t);
+    for (i = 0; i < nw; i++) {
+        slong outside = 0;
+        int iso = 0;
+        json_t *e;
+        for (prec = 64; prec <= 1024 && !iso; prec *= 2) {
+            rs_alg_refine(a, prec);
+            acb_set_arb(al, a->x);
+            acb_poly_zero(P);
+            for (j = 0; j <= n; j++) {
+                alg_eval2(c, cf + j, tv, wv, al, w + i, s, prec);
+                acb_poly_set_coeff_acb(P, j, c);
+            }
+            if (acb_poly_length(P) != n + 1 || acb_contains_zero(P->coeffs + n)) continue;
+            iso = acb_poly_find_roots(rt, P, NULL, 0, prec) == n;
+            if (!iso) continue;
+            arf_zero(ub);
+            for (j = 0; j < n; j++) {
+                acb_abs(m, rt + j, prec);
+                arb_get_ubound_arf(t, m, prec);
+                arf_max(ub, ub, t);
+                arb_sub_ui(m, m, 1, prec);
+                if (arb_is_positive(m)) outside++;
+            }
+        }
+        e = json_pack("{s:s,s:b}", "value", wname[i], "roots_isolated", iso);
+        if (iso) {
+            niso++;
+            nout += outside > 0;
+            json_object_set_new(e, "roots_outside_circle", json_integer(outside));
+            /* the largest |root|, rounded up */
+            json_object_set_new(e, "abs_root_max_upper", json_real(arf_get_d(ub, ARF_RND_CEIL)));
+        }
+        json_array_append_new(smp, e);
+    }
+    *out = json_pack("{s:s,s:s,s:o,s:s}", "method",
+                     "p's roots in lambda as certified balls (acb_poly_find_roots) at the root's enclosure and "
+                     "sampled values of the quantified parameter: none may lie certainly outside the unit circle",
+                     "param", s->vars[wv], "samples", smp, "result",
+                     nout > 0 ? "disagree" : niso == nw ? "agree" : "agree where isolated");
+    for (j = 0; j <= n; j++) fmpz_mpoly_clear(cf + j, s->zctx);
+    flint_free(cf);
+    _acb_vec_clear(rt, n);
+    acb_poly_clear(P);
+    acb_clear(al); acb_clear(c);
+    arb_clear(m);
+    arf_clear(ub); arf_clear(t);
+    return nout == 0;
 }
 
 int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs_variant_t *v, slong tv,
@@ -2356,6 +2415,8 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
     fmpz_mpoly_t lc, disc, g;
     fmpz_t pm;
     char wbuf[2][80] = {"", ""};
+    acb_ptr w0;
+    json_t *cc = NULL;      /* the second method's check */
     int ok = 1, inc = 0, at[2] = {0, 0};
     *decided = 0;
     *ev = NULL;
@@ -2394,6 +2455,8 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
     fmpz_mpoly_init(disc, s->zctx);
     fmpz_mpoly_init(g, s->zctx);
     fmpz_init(pm);
+    w0 = _acb_vec_init(3);   /* w = 1, then the w found for lambda = 1, -1 */
+    acb_one(w0);
     rs_charpoly_coeff(lc, p, n, lv, s->zctx);
     /* bounded: lc(alpha, w) != 0 and all roots simple for every w */
     ok = alg_nonzero_on(lc, a->minpoly, tv, wv, sw, s, &inc);
@@ -2405,9 +2468,27 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
         fmpz_set_si(pm, k == 0 ? 1 : -1);
         fmpz_mpoly_evaluate_one_fmpz(g, p, lv, pm, s->zctx);
         at[k] = !fmpz_mpoly_is_zero(g, s->zctx)
-                && alg_zero_on(wbuf[k], sizeof wbuf[k], g, a->minpoly, tv, wv, sw, a, s);
+                && alg_zero_on(wbuf[k], sizeof wbuf[k], w0 + 1 + k, g, a->minpoly, tv, wv, sw, a, s);
     }
     if (inc) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    if (ok && (at[0] || at[1]) && !inc) {
+        const char *wn[3] = {"1", NULL, NULL};
+        slong nw = 1;
+        /* the second method at w = 1 and at the w where lambda = +-1 is a root */
+        for (k = 0; k < 2; k++)
+            if (at[k]) {
+                acb_swap(w0 + nw, w0 + 1 + k);
+                wn[nw++] = wbuf[k];
+            }
+        if (!alg_marginal_spot_check(&cc, p, tv, wv, a, w0, wn, nw, s)) {
+            /* the two methods disagree (a bug): exit 3, the point left undecided */
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+            *ev = json_pack("{s:s,s:o}", "inconsistent",
+                            "the exact marginal argument and the certified roots disagree", "cross_check", cc);
+            cc = NULL;
+            ok = 0;
+        }
+    }
     if (ok && (at[0] || at[1]) && !inc) {
         char *mp = fmpz_poly_get_str_pretty(a->minpoly, s->vars[tv]);
         char msg[900];
@@ -2421,9 +2502,13 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
                  sw == RS_SIGN_POSITIVE ? "> 0" : sw == RS_SIGN_NONNEGATIVE ? ">= 0" : "real",
                  at[0] ? "1" : "-1", s->vars[wv], at[0] ? wbuf[0] : wbuf[1], s->vars[tv], mp,
                  at[0] ? "lambda = 1" : "lambda = -1");
-        *ev = json_pack("{s:s,s:s,s:s}", "certificate_algebraic", msg, "minpoly", mp, "decided_by", "exact");
+        *ev = json_pack("{s:s,s:s,s:s,s:o}", "certificate_algebraic", msg, "minpoly", mp, "decided_by", "exact",
+                        "cross_check", cc);
+        cc = NULL;
         flint_free(mp);
     }
+    _acb_vec_clear(w0, 3);
+    json_decref(cc);
     fmpz_mpoly_clear(lc, s->zctx);
     fmpz_mpoly_clear(disc, s->zctx);
     fmpz_mpoly_clear(g, s->zctx);

@@ -182,9 +182,7 @@ int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
     qd_r_init(&R);
     r = qd_r_get(&R, run, req->q);
     if (r == RS_OK) {
-        rs_qd_t c;
         json_t *co = json_array();
-        rs_qd_init(c);
         o = json_object();
         json_object_set_new(o, "analysis", json_string("charpoly"));
         json_object_set_new(o, "var", json_string("lambda"));
@@ -205,50 +203,9 @@ int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "substituted", json_object());
         json_object_set_new(o, "decided_by", json_string("exact"));
         json_array_append_new(run->results, o);
-        rs_qd_clear(c);
     }
     qd_r_clear(&R);
     return r;
-}
-
-/* P(zr + i zi) = re + i im over Q(sqrt d) (Horner) */
-static void qd_eval_cx(rs_qd_struct *re, rs_qd_struct *im, const rs_qdpoly_t P, slong d, const fmpq_t zr,
-                       const fmpq_t zi)
-{
-    rs_qd_t c, a, b, t, u, zR, zI;
-    fmpq_t zero;
-    slong j;
-    rs_qd_init(c); rs_qd_init(a); rs_qd_init(b); rs_qd_init(t); rs_qd_init(u); rs_qd_init(zR); rs_qd_init(zI);
-    fmpq_init(zero);
-    rs_qd_set_fmpq(zR, zr, zero);
-    rs_qd_set_fmpq(zI, zi, zero);
-    rs_qd_set_fmpq(re, zero, zero);
-    rs_qd_set_fmpq(im, zero, zero);
-    for (j = rs_qdpoly_degree(P); j >= 0; j--) {
-        /* (re + i im)(zR + i zI) + c_j */
-        rs_qd_mul(t, re, zR, d);
-        rs_qd_mul(u, im, zI, d);
-        rs_qd_sub(a, t, u);
-        rs_qd_mul(t, re, zI, d);
-        rs_qd_mul(u, im, zR, d);
-        rs_qd_add(b, t, u);
-        rs_qdpoly_get_coeff(c, P, j);
-        rs_qd_add(re, a, c);
-        rs_qd_set(im, b);
-    }
-    rs_qd_clear(c); rs_qd_clear(a); rs_qd_clear(b); rs_qd_clear(t); rs_qd_clear(u); rs_qd_clear(zR);
-    rs_qd_clear(zI);
-    fmpq_clear(zero);
-}
-
-static void qd_abs2(rs_qd_struct *r, const rs_qd_struct *re, const rs_qd_struct *im, slong d)
-{
-    rs_qd_t t;
-    rs_qd_init(t);
-    rs_qd_mul(r, re, re, d);
-    rs_qd_mul(t, im, im, d);
-    rs_qd_add(r, r, t);
-    rs_qd_clear(t);
 }
 
 int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
@@ -274,16 +231,16 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
                              "expected %s set to a number (set NAME = VALUE or --set): stability decides one point", name);
     }
     if (r == RS_OK) {
-        rs_qd_t nr, ni, dr, di, n2, d2, diff, ratio;
+        rs_qdc_struct *nd = rs_qdc_vec_init(2);   /* N(z), D(z) */
+        rs_qd_t n2, d2, diff, ratio;
         int sg, sc;
         const char *status;
         json_t *o = json_object(), *sub = json_object();
-        rs_qd_init(nr); rs_qd_init(ni); rs_qd_init(dr); rs_qd_init(di);
         rs_qd_init(n2); rs_qd_init(d2); rs_qd_init(diff); rs_qd_init(ratio);
-        qd_eval_cx(nr, ni, R.N, R.d, zr, zi);
-        qd_eval_cx(dr, di, R.D, R.d, zr, zi);
-        qd_abs2(n2, nr, ni, R.d);
-        qd_abs2(d2, dr, di, R.d);
+        rs_qdpoly_evaluate_cx(nd, R.N, zr, zi, R.d);
+        rs_qdpoly_evaluate_cx(nd + 1, R.D, zr, zi, R.d);
+        rs_qdc_abs2(n2, nd, R.d);
+        rs_qdc_abs2(d2, nd + 1, R.d);
         rs_qd_sub(diff, d2, n2);
         sg = rs_qd_is_zero(d2) ? 2 : rs_qd_sgn(diff, R.d);
         sc = rs_qd_onestep_stable_at(R.N, R.D, R.d, zr, zi);
@@ -323,7 +280,7 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
             json_object_set_new(o, "decided_by", json_string("exact"));
             json_array_append_new(run->results, o);
         }
-        rs_qd_clear(nr); rs_qd_clear(ni); rs_qd_clear(dr); rs_qd_clear(di);
+        rs_qdc_vec_clear(nd, 2);
         rs_qd_clear(n2); rs_qd_clear(d2); rs_qd_clear(diff); rs_qd_clear(ratio);
     }
     fmpq_clear(zr);

@@ -1953,6 +1953,10 @@ static int region_forall_irrational(region_t *rg, slong i, int algebraic)
             ev = NULL;
             pc->decided = 1;
             pc->status = RS_STATUS_MARGINAL;
+        } else if (r == RS_OK && ev != NULL) {
+            /* undecided, with the disagreement of the two methods on record */
+            if (pc->ev == NULL) pc->ev = json_object();
+            json_object_update(pc->ev, ev);
         }
         json_decref(ev);
     }

@@ -111,7 +111,9 @@ int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong
  * when moreover p(a, w0, +-1) = 0 at a root w0 of the norm Res_t(minpoly,
  * p(t, w, +-1)) (exact: that norm is the product over a's conjugates, the
  * others certified non-zero at w0 by Arb).  *decided 0 when this does not
- * apply or does not settle it; *ev the evidence. */
+ * apply or does not settle it; *ev the evidence, with "cross_check": p's
+ * certified roots in lambda at w = 1 and at w0 (one certainly outside the
+ * circle: RS_OUTCOME_INCONSISTENT, *decided 0, *ev says so). */
 int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs_variant_t *v, slong tv,
                               rs_alg_t *a);
 

@@ -54,6 +54,7 @@
 #include "recstab/semisimple.h"
 #include "recstab/radius.h"
 #include "util/polyfmt.h"
+#include "algebra/mfactor.h"
 
 #define CAD_CHECK_POINTS 64
 /* deg alpha * deg beta above this: a column over an irrational alpha with a
@@ -1714,11 +1715,11 @@ static int upoly_no_root_in(const fmpz_poly_t e, const fmpq_t xl, const fmpq_t x
 static int cad_side_proved(const cad_t *c, const fmpq_t xl, const fmpq_t xr, const fmpq_t b0, rs_alg_t *al)
 {
     const fmpz_mpoly_ctx_struct *ctx = c->s->zctx;
-    fmpz_poly_t m, u, g, d;
+    fmpz_poly_t m, u, g;
     fmpz_mpoly_t t;
     slong k;
     int ok = 1;
-    fmpz_poly_init(m); fmpz_poly_init(u); fmpz_poly_init(g); fmpz_poly_init(d);
+    fmpz_poly_init(m); fmpz_poly_init(u); fmpz_poly_init(g);
     fmpz_mpoly_init(t, ctx);
     if (al->rational) {
         fmpz_t nn;                      /* m = den x - num */
@@ -1742,13 +1743,11 @@ static int cad_side_proved(const cad_t *c, const fmpq_t xl, const fmpq_t xr, con
         if (!fmpz_mpoly_get_fmpz_poly(u, t, c->av, ctx) || fmpz_poly_is_zero(u)) { ok = 0; break; }
         if (fmpz_poly_degree(u) < 1) continue;
         /* the squarefree part without the line's own factor */
-        fmpz_poly_derivative(d, u);
-        fmpz_poly_gcd(g, u, d);
-        fmpz_poly_div(u, u, g);
+        rs_fmpz_poly_squarefree_part(u, u);
         if (fmpz_poly_divides(g, u, m)) fmpz_poly_swap(u, g);
         ok = upoly_no_root_in(u, xl, xr);
     }
-    fmpz_poly_clear(m); fmpz_poly_clear(u); fmpz_poly_clear(g); fmpz_poly_clear(d);
+    fmpz_poly_clear(m); fmpz_poly_clear(u); fmpz_poly_clear(g);
     fmpz_mpoly_clear(t, ctx);
     return ok;
 }

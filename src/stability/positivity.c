@@ -18,6 +18,7 @@
 #include <acb.h>
 #include <arb_fmpz_poly.h>
 #include "recstab/positivity.h"
+#include "algebra/mfactor.h"
 
 /* Classify term i with its coefficient sign replaced by +1: 2 if the
  * monomial is > 0 under sign[], 1 if >= 0, 0 if neither. */
@@ -342,8 +343,8 @@ rs_positivity_sign_bounds(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     return res;
 }
 
-/* The index of the one variable poly has, -1 for none or several. */
-static slong _single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx)
+slong
+rs_positivity_single_var(const fmpz_mpoly_t poly, const fmpz_mpoly_ctx_t ctx)
 {
     slong v, nvars = fmpz_mpoly_ctx_nvars(ctx), w = -1;
     for (v = 0; v < nvars; v++)
@@ -391,9 +392,9 @@ int
 rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
                          const fmpz_mpoly_ctx_t ctx, int *inconsistent)
 {
-    slong v = _single_var(poly, ctx), k, nneg = 0, npos = 0, an = 0, ap = 0, n;
+    slong v = rs_positivity_single_var(poly, ctx), k, nneg = 0, npos = 0, an = 0, ap = 0, n;
     rs_sign_t sv;
-    fmpz_poly_t u, g, d;
+    fmpz_poly_t u, g;
     int res = 0;
 
     if (inconsistent != NULL)
@@ -403,7 +404,6 @@ rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
     sv = sign == NULL ? RS_SIGN_UNKNOWN : sign[v];
     fmpz_poly_init(u);
     fmpz_poly_init(g);
-    fmpz_poly_init(d);
     if (!fmpz_mpoly_get_fmpz_poly(u, poly, v, ctx))
         goto done;
     /* u = x^k g, g(0) != 0: a root at 0 is admissible unless x > 0 */
@@ -413,11 +413,7 @@ rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
         goto done;
     fmpz_poly_shift_right(g, u, k);
     /* the squarefree part: the distinct roots are those of g */
-    fmpz_poly_derivative(d, g);
-    if (fmpz_poly_degree(g) >= 1) {
-        fmpz_poly_gcd(d, g, d);
-        fmpz_poly_div(g, g, d);
-    }
+    rs_fmpz_poly_squarefree_part(g, g);
     if (fmpz_poly_degree(g) >= 1)
         _fmpz_poly_num_real_roots_sturm(&nneg, &npos, g->coeffs, g->length);
     /* the second count (THE cross-check): certified isolation */
@@ -435,7 +431,6 @@ rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
 done:
     fmpz_poly_clear(u);
     fmpz_poly_clear(g);
-    fmpz_poly_clear(d);
     return res;
 }
 
@@ -443,8 +438,8 @@ slong
 rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
                               const fmpz_mpoly_ctx_t ctx)
 {
-    slong v = _single_var(poly, ctx), n, i, nr = 0, npts = 0, prec;
-    fmpz_poly_t u, g, d;
+    slong v = rs_positivity_single_var(poly, ctx), n, i, nr = 0, npts = 0, prec;
+    fmpz_poly_t u, g;
     acb_ptr r = NULL;
     arb_ptr re = NULL;
     fmpq_t x, y;
@@ -454,14 +449,11 @@ rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, con
         return 0;
     fmpz_poly_init(u);
     fmpz_poly_init(g);
-    fmpz_poly_init(d);
     fmpq_init(x);
     fmpq_init(y);
     if (!fmpz_mpoly_get_fmpz_poly(u, poly, v, ctx) || fmpz_poly_degree(u) < 1)
         goto done;
-    fmpz_poly_derivative(d, u);
-    fmpz_poly_gcd(d, u, d);
-    fmpz_poly_div(g, u, d);
+    rs_fmpz_poly_squarefree_part(g, u);
     n = fmpz_poly_degree(g);
     r = _acb_vec_init(n);
     re = _arb_vec_init(n + 2);
@@ -520,7 +512,6 @@ done:
     }
     fmpz_poly_clear(u);
     fmpz_poly_clear(g);
-    fmpz_poly_clear(d);
     fmpq_clear(x);
     fmpq_clear(y);
     return npts;

@@ -105,6 +105,12 @@ if command -v jq >/dev/null 2>&1; then
     check "forall +-sqrt 8: unstable sides (were undecided), the points marginal over Q(sqrt 8) (were undecided)" \
         '[["unstable","marginal","stable","marginal","unstable"],0,"A^2 - 8"]' \
         "$(jfield $C 0 '| [(.intervals | map(.status)), (.undecided_points | length), .intervals[1].lo.minpoly]')"
+    # the second method at the two marginal points (h-review): certified roots at w = 1 and at the w
+    # where lambda = -1 is a root, none outside the circle.  By hand at A = -+sqrt 8, w = 1:
+    # p = 3 lambda +- sqrt 8, |lambda| = sqrt 8/3 = 0.94280904158...; at w = 1/sqrt 2: 2 lambda +- 2, |lambda| = 1
+    check "forall +-sqrt 8: the marginal points cross-checked by certified roots" \
+        '[["agree","agree"],[["1",0,true],["1",0,true]],[true,true]]' \
+        "$(jfield $C 0 '| [.intervals[] | select(.status == "marginal") | .evidence[0].cross_check] | [map(.result), map([.samples[0].value, .samples[0].roots_outside_circle, (.samples | length == 2)]), map(.samples[0].abs_root_max_upper | . >= 0.9428090415 and . < 0.9428090416)]')"
     # symbolic Routh array with q's leading coefficient negative where stable (h-truth2):
     # the column by hand (3a + 6, 4a + 2, 4a^2 + 2a); the note's criterion was "one sign"
     C=cases/truth/routh-negative-lead.case

@@ -315,6 +315,32 @@ test_negative_points(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* the one variable: read off the strings (variables x, y, c, k = 0..3) */
+static void
+test_single_var(void **state)
+{
+    static const struct { const char *text; slong want; } t[] = {
+        {"c^3 - 2*c + 5", 2},          /* c alone */
+        {"k", 3},
+        {"7", -1},                     /* a constant: none */
+        {"0", -1},
+        {"x*y + 1", -1},               /* two variables */
+        {"x^2 + k", -1},
+    };
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t p;
+    size_t i;
+    (void) state;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p, ctx);
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        assert_int_equal(fmpz_mpoly_set_str_pretty(p, t[i].text, vars, ctx), 0);
+        assert_int_equal(rs_positivity_single_var(p, ctx), t[i].want);
+    }
+    fmpz_mpoly_clear(p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
 int
 main(void)
 {
@@ -325,6 +351,7 @@ main(void)
         cmocka_unit_test(test_interval_mapping),
         cmocka_unit_test(test_univariate_roots),
         cmocka_unit_test(test_negative_points),
+        cmocka_unit_test(test_single_var),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
