@@ -32,7 +32,8 @@ char *rs_polyfmt_fmpz_poly(const fmpz_poly_t p, const char *var);
 /* The coefficients of p by powers of var, as rs_polyfmt_collected prints
  * them: c[e] (initialised by the caller, e = 0..deg_var p) gets the
  * coefficient of var^e (zero where p has none), in one pass over p's terms
- * (fmpz_mpoly_to_univar; a coefficient extracted per power reads p once per
+ * (terms moved straight into c[e] for single-word exponents, else
+ * fmpz_mpoly_to_univar; a coefficient extracted per power reads p once per
  * power: seconds for a dense degree-58 polynomial in 3 parameters). */
 void rs_polyfmt_coeffs(fmpz_mpoly_struct *c, const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx_t ctx);
 

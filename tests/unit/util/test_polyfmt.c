@@ -142,12 +142,83 @@ static void test_by_hand(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* rs_polyfmt_coeffs (issue 13: its own split for single-word exponents)
+ * against FLINT's fmpz_mpoly_to_univar, the route it replaced, on 3000
+ * random polynomials over every ordering (now and then times another
+ * variable to the power 2^66: exponents past one word, the FLINT route),
+ * each split variable; and independently: every c[e]
+ * canonical (sorted, no zero terms, no x_var) and sum c[e]*x^e == p. */
+static void test_coeffs_against_flint(void **state)
+{
+    static const ordering_t ords[] = {ORD_LEX, ORD_DEGLEX, ORD_DEGREVLEX};
+    flint_rand_t rs;
+    slong it;
+    (void) state;
+    flint_randinit(rs);
+    for (it = 0; it < 3000; it++) {
+        slong nv = 1 + (slong) n_randint(rs, 5), var = (slong) n_randint(rs, nv), d, e, k;
+        fmpz_mpoly_ctx_t ctx;
+        fmpz_mpoly_t p, sum, t;
+        fmpz_mpoly_univar_t u;
+        fmpz_mpoly_struct *c;
+        fmpz_mpoly_ctx_init(ctx, nv, ords[it % 3]);
+        fmpz_mpoly_init(p, ctx);
+        fmpz_mpoly_init(sum, ctx);
+        fmpz_mpoly_init(t, ctx);
+        fmpz_mpoly_randtest_bits(p, rs, (slong) n_randint(rs, 30), 1 + n_randint(rs, 150),
+                                 1 + n_randint(rs, 8), ctx);
+        if (it % 25 == 0 && nv > 1) {
+            fmpz_t big;
+            fmpz_init(big);
+            fmpz_one(big);
+            fmpz_mul_2exp(big, big, 66);
+            fmpz_mpoly_gen(t, (var + 1) % nv, ctx);
+            fmpz_mpoly_pow_fmpz(t, t, big, ctx);
+            fmpz_mpoly_mul(p, p, t, ctx);
+            fmpz_mpoly_zero(t, ctx);
+            fmpz_clear(big);
+        }
+        d = fmpz_mpoly_is_zero(p, ctx) ? 0 : fmpz_mpoly_degree_si(p, var, ctx);
+        c = flint_malloc((d + 1) * sizeof(fmpz_mpoly_struct));
+        for (e = 0; e <= d; e++) fmpz_mpoly_init(c + e, ctx);
+        rs_polyfmt_coeffs(c, p, var, ctx);
+        fmpz_mpoly_univar_init(u, ctx);
+        fmpz_mpoly_to_univar(u, p, var, ctx);
+        for (e = 0, k = fmpz_mpoly_univar_length(u, ctx) - 1; e <= d; e++) {
+            assert_true(fmpz_mpoly_is_canonical(c + e, ctx));
+            assert_true(fmpz_mpoly_degree_si(c + e, var, ctx) <= 0);
+            if (k >= 0 && fmpz_mpoly_univar_get_term_exp_si(u, k, ctx) == e) {
+                fmpz_mpoly_univar_get_term_coeff(t, u, k, ctx);
+                assert_true(fmpz_mpoly_equal(c + e, t, ctx));
+                k--;
+            } else {
+                assert_true(fmpz_mpoly_is_zero(c + e, ctx));
+            }
+            fmpz_mpoly_gen(t, var, ctx);
+            fmpz_mpoly_pow_ui(t, t, (ulong) e, ctx);
+            fmpz_mpoly_mul(t, t, c + e, ctx);
+            fmpz_mpoly_add(sum, sum, t, ctx);
+        }
+        assert_int_equal(k, -1);
+        assert_true(fmpz_mpoly_equal(sum, p, ctx));
+        for (e = 0; e <= d; e++) fmpz_mpoly_clear(c + e, ctx);
+        flint_free(c);
+        fmpz_mpoly_univar_clear(u, ctx);
+        fmpz_mpoly_clear(t, ctx);
+        fmpz_mpoly_clear(sum, ctx);
+        fmpz_mpoly_clear(p, ctx);
+        fmpz_mpoly_ctx_clear(ctx);
+    }
+    flint_randclear(rs);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_against_flint),
         cmocka_unit_test(test_chunk_edges),
         cmocka_unit_test(test_by_hand),
+        cmocka_unit_test(test_coeffs_against_flint),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
