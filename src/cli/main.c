@@ -23,7 +23,6 @@
 #include "recstab/sweep.h"
 #include "plot.h"
 #include "spool.h"
-#include "heap.h"
 #include "recstab/casefile.h"
 #include "recstab/model.h"
 #include "recstab/scheme.h"
@@ -548,7 +547,6 @@ int main(int argc, char **argv)
     rs_cli_out_t *csv_out = NULL, *script_out = NULL;
     int i, worst = 0, rc;
 
-    rs_cli_heap_prepare();
     memset(&cli, 0, sizeof cli);
     set.n = 0;
     cli.sets = calloc((size_t) argc, sizeof(char *));
