@@ -148,9 +148,19 @@ int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
  * Returns as rs_json_hurwitz_or through *verdict, or an error code. */
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict)
 {
+    return rs_run_symbolic_conditions_dropped(run, v, o, verdict, NULL);
+}
+
+/* The same, and when dropped != NULL every factor dropped as of one sign
+ * under the assumptions appended to it as {"factor", "from"} (jury's
+ * bilinear route, issue 17). */
+int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict,
+                                       json_t *dropped)
+{
     const rs_scheme_struct *s = v->s;
     rs_hurwitz_or_t hb;
     fmpz_mpoly_t qz;
+    slong b, i, k;
     int r;
     fmpz_mpoly_init(qz, s->zctx);
     rs_hurwitz_or_init(hb);
@@ -159,6 +169,13 @@ int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, 
         *verdict = rs_json_hurwitz_or(o, hb, s);
         if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
             json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
+        for (b = 0; dropped != NULL && b < hb->nbranch; b++)
+            for (i = 0; i < hb->branch[b].ncond; i++)
+                for (k = 0; k < hb->branch[b].cond[i].factors->num; k++)
+                    if (hb->branch[b].cond[i].dropped[k])
+                        json_array_append_new(dropped, json_pack("{s:o,s:s}", "factor",
+                            rs_json_factor(hb->branch[b].cond[i].factors->poly + k, s),
+                            "from", hb->branch[b].cond[i].origin));
         r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
     }
     rs_hurwitz_or_clear(hb, s->zctx);

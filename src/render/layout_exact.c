@@ -478,10 +478,14 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
     rs_render_line(r, "method", "%s", js(o, "method"));
     if (sym) {
         if (js(o, "over") != NULL) complex_p(r, o);
-        if (json_array_size(json_object_get(o, "conditions")) == 0)
-            rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
-                                                  "assumptions");
-        condition_lines(r, o, "stable iff", "and", 0);
+        /* the bilinear route's OR of branches or its "never" (issue 17) */
+        if (!branches(r, o)) {
+            if (json_array_size(json_object_get(o, "conditions")) == 0)
+                rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
+                                                      "assumptions");
+            condition_lines(r, o, "stable iff", "and", 0);
+        }
+        rs_render_line(r, "route", "%s", js(o, "route_reason"));
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
         rs_render_line(r, "note", "%s", js(o, "note"));
         rs_render_sample_check(r, o);

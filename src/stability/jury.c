@@ -640,3 +640,18 @@ slong rs_jury_factor_whole_terms(void)
 {
     return jury_whole_terms;
 }
+
+/* see jury.h; read by the symbolic table of an_jury.c (issue 17) */
+static slong jury_bilinear_terms = 20000;
+
+slong rs_jury_set_bilinear_terms(slong terms)
+{
+    slong old = jury_bilinear_terms;
+    jury_bilinear_terms = terms;
+    return old;
+}
+
+slong rs_jury_bilinear_terms(void)
+{
+    return jury_bilinear_terms;
+}
