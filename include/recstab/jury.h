@@ -65,6 +65,16 @@ int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
 slong rs_jury_set_factor_whole_terms(slong terms);
 slong rs_jury_factor_whole_terms(void);
 
+/* The symbolic table of `jury` gives way to the bilinear route (the
+ * Lienard-Chipart conditions of q(z) = (z - 1)^n p((z + 1)/(z - 1)), the
+ * same region) at the first lead^2 - const^2 of more than this many terms
+ * (default 20 000: the rows of the chains of issue 17 grow past 700 000
+ * terms, while the cases' tables stay under it); sets it (tests: 0 = the
+ * bilinear route from the first row, a huge value = the table throughout)
+ * and returns the previous value. */
+slong rs_jury_set_bilinear_terms(slong terms);
+slong rs_jury_bilinear_terms(void);
+
 #ifdef __cplusplus
 }
 #endif

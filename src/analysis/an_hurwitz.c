@@ -109,10 +109,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_t *ne = json_array();
         for (i = h->expanded; i < h->n; i++) json_array_append_new(ne, json_integer(i + 1));
         json_object_set_new(o, "not_expanded", ne);
-        json_object_set_new(o, "not_expanded_note", json_string(
-            "these Hurwitz minors were not expanded: the next fraction-free Routh row's estimated cost exceeded "
-            "its share of the time budget; their conditions D_k > 0 are decided at each sample point by the exact "
-            "rational determinant of the k x k Hurwitz matrix there"));
+        json_object_set_new(o, "not_expanded_note", json_string(rs_hurwitz_not_expanded_note));
     }
     conds = json_array();
     nonzero = json_array();

@@ -94,6 +94,48 @@ static int jury_factor_halves(fmpz_mpoly_factor_t f, const fmpz_mpoly_t ak, cons
     return ok;
 }
 
+/* The Schur-Cohn question through the bilinear transform (issue 17):
+ * lambda = (z + 1)/(z - 1) maps |lambda| < 1 onto Re z < 0, so every root
+ * of p is inside the circle iff every root of q(z) = (z - 1)^n
+ * p((z + 1)/(z - 1)) has negative real part (with deg q = n, which the
+ * Hurwitz branches take care of): the Lienard-Chipart conditions of q
+ * describe the same region as the Schur-Cohn table's.  They are not the
+ * table's polynomials (its minors are congruent to q's Hermite form, not
+ * equal), so the report says which route spoke.  The table's rows formed
+ * before the switch are not reported (they answer nothing alone); the
+ * exact point verdict (Routh and Schur-Cohn at each sample point) still
+ * checks the conditions.  dropped: emptied of the table's, then q's
+ * factors of one sign; row: the table's row that gave way, terms: its
+ * delta's. */
+static int jury_bilinear(rs_run_t *run, const rs_variant_t *v, json_t *o, json_t *dropped, slong row,
+                         slong terms)
+{
+    char buf[400];
+    int verdict, r;
+    json_array_clear(dropped);
+    r = rs_run_symbolic_conditions_dropped(run, v, o, &verdict, dropped);
+    if (r != RS_OK) {
+        json_decref(dropped);
+        return r;
+    }
+    json_object_set_new(o, "method", json_string("Schur-Cohn conditions through the bilinear transform "
+                                                 "(Lienard-Chipart of q(z)), symbolic"));
+    json_object_set_new(o, "symbolic", json_true());
+    json_object_set_new(o, "rows", json_array());
+    json_object_set_new(o, "dropped", dropped);
+    json_object_set_new(o, "route", json_string("bilinear"));
+    snprintf(buf, sizeof buf, "row %ld of the Schur-Cohn table has a lead^2 - const^2 of %ld terms (over %ld): "
+             "the conditions are those of q(z) = (z - 1)^n p((z + 1)/(z - 1)) instead, where D_k are the Hurwitz "
+             "minors of q", (long) row, (long) terms, (long) rs_jury_bilinear_terms());
+    json_object_set_new(o, "route_reason", json_string(buf));
+    json_object_set_new(o, "note", json_string(
+        "lambda = (z + 1)/(z - 1) maps |lambda| < 1 onto Re z < 0: all |lambda| < 1 iff q(z) = (z - 1)^n "
+        "p((z + 1)/(z - 1)) is Hurwitz stable, i.e. iff its Lienard-Chipart conditions hold (the same region "
+        "as the Schur-Cohn table's conditions, not the same polynomials; strict inequalities, exact for every "
+        "value)"));
+    return RS_OK;
+}
+
 static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
 {
     const rs_scheme_struct *s = v->s;
@@ -105,6 +147,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     int r = RS_OK;
     jury_conds_t jc;
     rs_budget_calib_t cal;
+    slong switched = 0;   /* terms of the delta at which the table gave way */
     /* the parameters' intervals for the factors' sign tests (interval
      * mapping before Polya, issue 17, as hurwitz does): a factor of one sign
      * on 0 < h < 1 but not for every h > 0 is dropped; params come first */
@@ -136,6 +179,12 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
         fmpz_mpoly_mul(t, a + k, a + k, s->zctx);
         fmpz_mpoly_mul(u, a + 0, a + 0, s->zctx);
         fmpz_mpoly_sub(delta, t, u, s->zctx);
+        if (fmpz_mpoly_length(delta, s->zctx) > rs_jury_bilinear_terms()) {
+            /* the table's rows grow past what factoring and the content
+             * gcds can carry (issue 17): the bilinear route answers */
+            switched = fmpz_mpoly_length(delta, s->zctx);
+            break;
+        }
         if (fmpz_mpoly_length(delta, s->zctx) > RS_CHARPOLY_MAX_TERMS) {
             r = rs_error_set(run->err, RS_ERR_LIMIT, "symbolic Schur-Cohn table: a condition has over %ld terms (limit)",
                              (long) RS_CHARPOLY_MAX_TERMS);
@@ -229,7 +278,11 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     flint_free(sign);
     rs_bounds_clear(bd, c->nparams);
     flint_free(bd);
-    if (r == RS_OK) {
+    if (r == RS_OK && switched > 0) {
+        json_decref(rows);
+        json_decref(conds);
+        r = jury_bilinear(run, v, o, dropped, n - k, switched);
+    } else if (r == RS_OK) {
         json_object_set_new(o, "symbolic", json_true());
         json_object_set_new(o, "rows", rows);
         json_object_set_new(o, "conditions", conds);

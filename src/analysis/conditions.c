@@ -20,6 +20,11 @@ json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s)
     return rs_json_zpoly(f, s);
 }
 
+const char rs_hurwitz_not_expanded_note[] =
+    "these Hurwitz minors were not expanded: the next fraction-free Routh row's estimated cost exceeded "
+    "its share of the time budget; their conditions D_k > 0 are decided at each sample point by the exact "
+    "rational determinant of the k x k Hurwitz matrix there";
+
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
 {
     const rs_scheme_struct *s = v->s;
@@ -148,9 +153,20 @@ int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
  * Returns as rs_json_hurwitz_or through *verdict, or an error code. */
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict)
 {
+    return rs_run_symbolic_conditions_dropped(run, v, o, verdict, NULL);
+}
+
+/* The same, and when dropped != NULL (jury's bilinear route, issue 17)
+ * every factor dropped as of one sign under the assumptions appended to it
+ * as {"factor", "from"}, and "not_expanded_note" when a minor was not
+ * expanded. */
+int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict,
+                                       json_t *dropped)
+{
     const rs_scheme_struct *s = v->s;
     rs_hurwitz_or_t hb;
     fmpz_mpoly_t qz;
+    slong b, i, k;
     int r;
     fmpz_mpoly_init(qz, s->zctx);
     rs_hurwitz_or_init(hb);
@@ -159,6 +175,16 @@ int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, 
         *verdict = rs_json_hurwitz_or(o, hb, s);
         if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
             json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
+        for (b = 0; dropped != NULL && b < hb->nbranch; b++)
+            if (hb->branch[b].expanded < hb->branch[b].n && json_object_get(o, "not_expanded_note") == NULL)
+                json_object_set_new(o, "not_expanded_note", json_string(rs_hurwitz_not_expanded_note));
+        for (b = 0; dropped != NULL && b < hb->nbranch; b++)
+            for (i = 0; i < hb->branch[b].ncond; i++)
+                for (k = 0; k < hb->branch[b].cond[i].factors->num; k++)
+                    if (hb->branch[b].cond[i].dropped[k])
+                        json_array_append_new(dropped, json_pack("{s:o,s:s}", "factor",
+                            rs_json_factor(hb->branch[b].cond[i].factors->poly + k, s),
+                            "from", hb->branch[b].cond[i].origin));
         r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
     }
     rs_hurwitz_or_clear(hb, s->zctx);

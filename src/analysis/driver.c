@@ -139,6 +139,99 @@ static void rowsets_swap(rowsets_t *rs, json_t *top)
     }
 }
 
+/* The long strings of the document (issue 17: the conditions of a 6-mass
+ * chain, 363 MB, whose copy and per-character scan in json_dumps took half
+ * of a --json run), swapped with placeholders while dumping and written
+ * straight to f: the same bytes as jansson's. */
+typedef struct {
+    json_t **str;      /* a reference to each string */
+    json_t **owner;    /* the object or array holding it */
+    char **key;        /* its key in an object (malloc'd), or NULL */
+    size_t *index;     /* its index in an array */
+    size_t n;
+} bigstrs_t;
+
+/* strings from this many bytes on are streamed; short ones are not worth
+ * a placeholder (and the snapshot cases' outputs exercise both) */
+#define BIGSTR_MIN_BYTES 1024
+
+static void bigstrs_push(bigstrs_t *b, json_t *str, json_t *owner, const char *key, size_t index)
+{
+    char ph[48];
+    b->str = realloc(b->str, (b->n + 1) * sizeof(json_t *));
+    b->owner = realloc(b->owner, (b->n + 1) * sizeof(json_t *));
+    b->key = realloc(b->key, (b->n + 1) * sizeof(char *));
+    b->index = realloc(b->index, (b->n + 1) * sizeof(size_t));
+    b->str[b->n] = json_incref(str);
+    b->owner[b->n] = owner;
+    b->key[b->n] = key != NULL ? strdup(key) : NULL;
+    b->index[b->n] = index;
+    snprintf(ph, sizeof ph, "\001str %zu\001", b->n);
+    if (key != NULL) json_object_set_new(owner, key, json_string(ph));   /* same place in the order */
+    else json_array_set_new(owner, index, json_string(ph));
+    b->n++;
+}
+
+static int bigstr_is(const json_t *x)
+{
+    return json_is_string(x) && json_string_length(x) >= BIGSTR_MIN_BYTES;
+}
+
+static void bigstrs_swap(bigstrs_t *b, json_t *x)
+{
+    if (json_is_object(x)) {
+        void *it;
+        for (it = json_object_iter(x); it != NULL; it = json_object_iter_next(x, it)) {
+            json_t *v = json_object_iter_value(it);
+            if (bigstr_is(v)) bigstrs_push(b, v, x, json_object_iter_key(it), 0);
+            else bigstrs_swap(b, v);
+        }
+    } else if (json_is_array(x)) {
+        size_t i;
+        for (i = 0; i < json_array_size(x); i++) {
+            json_t *v = json_array_get(x, i);
+            if (bigstr_is(v)) bigstrs_push(b, v, x, NULL, i);
+            else bigstrs_swap(b, v);
+        }
+    }
+}
+
+static void bigstrs_restore(bigstrs_t *b)
+{
+    size_t k;
+    for (k = 0; k < b->n; k++) {
+        if (b->key[k] != NULL) json_object_set_new(b->owner[k], b->key[k], b->str[k]);
+        else json_array_set_new(b->owner[k], b->index[k], b->str[k]);
+        free(b->key[k]);
+    }
+    free(b->str);
+    free(b->owner);
+    free(b->key);
+    free(b->index);
+}
+
+/* str as jansson dumps it (no JSON_ENSURE_ASCII, no JSON_ESCAPE_SLASH): a
+ * string without '"', '\\' and control characters verbatim in quotes (its
+ * UTF-8 was checked when it was made), any other through jansson */
+static void bigstr_put(FILE *f, const json_t *str)
+{
+    const char *p = json_string_value(str);
+    size_t len = json_string_length(str), i;
+    for (i = 0; i < len; i++) {
+        unsigned char c = (unsigned char) p[i];
+        if (c < 0x20 || c == '"' || c == '\\') break;
+    }
+    if (i == len) {
+        fputc('"', f);
+        fwrite(p, 1, len, f);
+        fputc('"', f);
+    } else {
+        char *t = json_dumps(str, JSON_ENCODE_ANY);
+        fputs(t != NULL ? t : "null", f);
+        free(t);
+    }
+}
+
 /* The first count rows of the spooled table (its header line first) as
  * rows of the document, each on its own line at indent + 2. */
 static void spool_rows(FILE *f, FILE *sp, slong count, size_t indent, const json_t *real)
@@ -194,21 +287,36 @@ char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), 
 int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
 {
     rowsets_t rs = {NULL, NULL, NULL, 0};
+    bigstrs_t bs = {NULL, NULL, NULL, NULL, 0};
     char *s;
     size_t k;
     int rc = -1;
     rowsets_swap(&rs, top);
-    /* the document without its rows, which go straight to f one by one */
+    bigstrs_swap(&bs, top);
+    /* the document without its rows and long strings, which go straight
+     * to f one by one */
     s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
     if (s == NULL) goto done;
     rc = 0;
     {
         const char *p = s;
         for (;;) {
-            const char *q = strstr(p, "\"\\u0001rows ");
-            const char *ls;
+            const char *q = strstr(p, "\"\\u0001"), *ls;
             size_t id, r, indent;
             if (q == NULL) break;
+            if (strncmp(q + 7, "str ", 4) == 0) {
+                id = (size_t) strtoul(q + 11, NULL, 10);
+                fwrite(p, 1, (size_t) (q - p), f);
+                if (id < bs.n) bigstr_put(f, bs.str[id]);
+                p = strchr(q + 1, '"') + 1;
+                continue;
+            }
+            if (strncmp(q + 7, "rows ", 5) != 0) {
+                /* a string of the case's own that starts with \001 */
+                fwrite(p, 1, (size_t) (q + 1 - p), f);
+                p = q + 1;
+                continue;
+            }
             id = (size_t) strtoul(q + 12, NULL, 10);
             fwrite(p, 1, (size_t) (q - p), f);
             /* the indentation of the key's line */
@@ -240,6 +348,7 @@ int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id),
     free(s);
 done:
     /* the document as it was */
+    bigstrs_restore(&bs);
     for (k = 0; k < rs.n; k++) json_object_set_new(rs.owner[k], rs.key[k], rs.arr[k]);
     free(rs.arr);
     free(rs.owner);

@@ -204,6 +204,10 @@ void rs_run_radius_dead_beat_json(json_t *o);
 json_t *rs_json_jury_route(const rs_jury_t ju);
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict);
+/* why a Hurwitz minor is "not expanded" (hurwitz, and jury's bilinear route) */
+extern const char rs_hurwitz_not_expanded_note[];
+int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict,
+                                       json_t *dropped);
 /* conditions.c: the OR of Hurwitz branches of qz (over the sign of its
  * leading coefficient), 1/0/-1 at a point as rs_holds_fn, as JSON (returns
  * the verdict: 1 always, 0 never, -1 conditions); a condition factor as

@@ -374,6 +374,16 @@ static void complex_p(rs_render_t *r, const json_t *o)
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
 
+/* hurwitz and jury's bilinear route: why some minors are "not expanded" */
+static void not_expanded(rs_render_t *r, const json_t *o)
+{
+    if (js(o, "not_expanded_note") == NULL) return;
+    rs_render_line(r, "not expanded", "%s", js(o, "not_expanded_note"));
+    rs_render_say(r, "Not expanded: ", "Not expanded: ");
+    rs_render_esc(r, js(o, "not_expanded_note"));
+    rs_render_say(r, ".\n\n", ".\n\n");
+}
+
 /* which coefficient or minor each listed condition comes from (the JSON's
  * "details", one per condition not trivially true, in the same order), and
  * those false for every value: "conditions -1 > 0" alone did not say that
@@ -447,12 +457,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
     rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
-    if (js(o, "not_expanded_note") != NULL) {
-        rs_render_line(r, "not expanded", "%s", js(o, "not_expanded_note"));
-        rs_render_say(r, "Not expanded: ", "Not expanded: ");
-        rs_render_esc(r, js(o, "not_expanded_note"));
-        rs_render_say(r, ".\n\n", ".\n\n");
-    }
+    not_expanded(r, o);
     rs_render_line(r, "p(1)", "%s (lambda = 1 is a root where this vanishes)", js(o, "p_at_1"));
     rs_render_line(r, "p(-1)", "%s (lambda = -1 is a root where this vanishes)", js(o, "p_at_minus_1"));
     rs_render_line(r, "verdict", "%s", js(o, "verdict"));
@@ -478,10 +483,15 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
     rs_render_line(r, "method", "%s", js(o, "method"));
     if (sym) {
         if (js(o, "over") != NULL) complex_p(r, o);
-        if (json_array_size(json_object_get(o, "conditions")) == 0)
-            rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
-                                                  "assumptions");
-        condition_lines(r, o, "stable iff", "and", 0);
+        /* the bilinear route's OR of branches or its "never" (issue 17) */
+        if (!branches(r, o)) {
+            if (json_array_size(json_object_get(o, "conditions")) == 0)
+                rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
+                                                      "assumptions");
+            condition_lines(r, o, "stable iff", "and", 0);
+        }
+        rs_render_line(r, "route", "%s", js(o, "route_reason"));
+        not_expanded(r, o);
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
         rs_render_line(r, "note", "%s", js(o, "note"));
         rs_render_sample_check(r, o);

@@ -626,17 +626,34 @@ int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err)
     return jury_run(j, p, 0, err);
 }
 
-/* see jury.h; read by the symbolic table of an_jury.c (issue 17) */
-static slong jury_whole_terms = 20000;
+/* see jury.h; the symbolic table's two thresholds, read by an_jury.c
+ * (issue 17): factoring a delta through its halves, and the bilinear route */
+enum { JURY_WHOLE, JURY_BILINEAR };
+static slong jury_terms[2] = {20000, 20000};
+
+static slong jury_terms_swap(int which, slong terms)
+{
+    slong old = jury_terms[which];
+    jury_terms[which] = terms;
+    return old;
+}
 
 slong rs_jury_set_factor_whole_terms(slong terms)
 {
-    slong old = jury_whole_terms;
-    jury_whole_terms = terms;
-    return old;
+    return jury_terms_swap(JURY_WHOLE, terms);
 }
 
 slong rs_jury_factor_whole_terms(void)
 {
-    return jury_whole_terms;
+    return jury_terms[JURY_WHOLE];
+}
+
+slong rs_jury_set_bilinear_terms(slong terms)
+{
+    return jury_terms_swap(JURY_BILINEAR, terms);
+}
+
+slong rs_jury_bilinear_terms(void)
+{
+    return jury_terms[JURY_BILINEAR];
 }

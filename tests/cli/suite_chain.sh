@@ -52,3 +52,13 @@ sed 's/^assume .*/assume h > 2, h < 3/' cases/euler-interval-jury.case >"$T/jury
 if [ "$rc" = 0 ] && grep -q '^  stable iff *-1 > 0$' "$T/out"; then
     ok "jury, 2 < h < 3: never stable (-1 > 0: |1 - h| > 1 there)"
 else fail "jury, 2 < h < 3: exit $rc, $(grep -E 'conditions|stable iff' "$T/out" | tr '\n' ' ')"; fi
+
+# jury on a 4-mass chain: the table's row 2 has a 40 658-term lead^2 - const^2,
+# so the bilinear route answers (before: the 60 s limit at rows of 229 723 and
+# 702 725 terms); its conditions agree with the exact verdict at the points
+sh bench/make_chain_case.sh 4 "$T/chain4.case"
+"$RS" --json --analyse jury --time-limit 60 "$T/chain4.case" >"$T/j4.json" 2>&1; rc=$?
+if [ "$rc" = 0 ] && grep -q '"route": "bilinear"' "$T/j4.json" \
+   && grep -q '"agree": true' "$T/j4.json"; then
+    ok "jury, 4-mass chain: bilinear route, sample check agrees"
+else fail "jury, 4-mass chain: exit $rc, $(grep -o '"route[^,]*' "$T/j4.json" | head -2 | tr '\n' ' ')"; fi

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <math.h>
 #include <flint/fmpq_poly.h>
+#include <flint/fmpq_mpoly.h>
 #include <arb_fmpz_poly.h>
 #include <acb.h>
 #include "recstab/casefile.h"
@@ -496,6 +497,151 @@ static void test_jury_factor_halves(void **state)
     }
 }
 
+/* `jury` through the bilinear route (issue 17): forced on from the first row
+ * (rs_jury_set_bilinear_terms(0)) against the Schur-Cohn table (the
+ * threshold out of reach) on the 2- and 3-mass trapezoidal chains of
+ * bench/make_chain_case.sh and on Park's staggered case.  The two routes
+ * state different polynomials for the same region, so they are compared as
+ * regions: at random rational points inside the assumptions each route's
+ * conjunction is evaluated and set against the exact point verdict, the
+ * integer Schur-Cohn count of p at the point (rs_jury_count_fmpz_poly on the
+ * charpoly's own polynomial, no symbolic condition involved).  Expected: on
+ * the chains every point is stable (the trapezoidal rule maps Re s < 0 into
+ * |lambda| < 1 and the damped chain, c > 0, k_i > 0, has every mode in
+ * Re s < 0), Park has stable and unstable points (its counterexample,
+ * test_park_counterexample). */
+static void chain_text(char *buf, size_t len, int n, const char *an)
+{
+    size_t o = 0;
+    int i;
+    o += (size_t) snprintf(buf + o, len - o, "param c");
+    for (i = 1; i <= n; i++) o += (size_t) snprintf(buf + o, len - o, " k%d", i);
+    o += (size_t) snprintf(buf + o, len - o, "\nassume c > 0");
+    for (i = 1; i <= n; i++) o += (size_t) snprintf(buf + o, len - o, ", k%d > 0", i);
+    o += (size_t) snprintf(buf + o, len - o, "\nunknown");
+    for (i = 1; i <= n; i++) o += (size_t) snprintf(buf + o, len - o, " x%d v%d a%d", i, i, i);
+    o += (size_t) snprintf(buf + o, len - o, "\n");
+    for (i = 1; i <= n; i++) {
+        o += (size_t) snprintf(buf + o, len - o, "eq a%d[n+1] + c*v%d[n+1] + k%d*x%d[n+1]", i, i, i, i);
+        if (i > 1) o += (size_t) snprintf(buf + o, len - o, " - k%d*x%d[n+1]", i, i - 1);
+        if (i < n) o += (size_t) snprintf(buf + o, len - o, " + k%d*x%d[n+1] - k%d*x%d[n+1]", i + 1, i, i + 1, i + 1);
+        o += (size_t) snprintf(buf + o, len - o, " = 0\neq x%d[n+1] - x%d[n] = (v%d[n+1] + v%d[n])/2\n"
+                               "eq v%d[n+1] - v%d[n] = (a%d[n+1] + a%d[n])/2\n", i, i, i, i, i, i, i, i);
+    }
+    snprintf(buf + o, len - o, "analyse %s\n", an);
+}
+
+/* every "poly > 0" / "poly != 0" of conds at the point (vars: the params) */
+static int conds_hold(const json_t *conds, const char **vars, const fmpq *pt, const fmpq_mpoly_ctx_t ctx)
+{
+    fmpq_mpoly_t f;
+    fmpq_t val;
+    fmpq *at[8];
+    size_t i;
+    int ok = 1;
+    for (i = 0; i < 8 && i < (size_t) ctx->zctx->minfo->nvars; i++) at[i] = (fmpq *) pt + i;
+    fmpq_mpoly_init(f, ctx);
+    fmpq_init(val);
+    for (i = 0; i < json_array_size(conds); i++) {
+        char *line = strdup(json_string_value(json_array_get(conds, i))), *cut = strstr(line, " > 0");
+        int ne = cut == NULL;
+        if (ne) cut = strstr(line, " != 0");
+        assert_non_null(cut);
+        *cut = '\0';
+        assert_int_equal(fmpq_mpoly_set_str_pretty(f, line, vars, ctx), 0);
+        assert_true(fmpq_mpoly_evaluate_all_fmpq(val, f, at, ctx));
+        free(line);
+        if (ne ? fmpq_is_zero(val) : fmpq_sgn(val) <= 0) ok = 0;
+    }
+    fmpq_clear(val);
+    fmpq_mpoly_clear(f, ctx);
+    return ok;
+}
+
+static void test_jury_bilinear_route(void **state)
+{
+    const char *req[] = {"jury"}, *creq[] = {"charpoly"};
+    int t;
+    flint_rand_t st;
+    (void) state;
+    flint_randinit(st);
+    for (t = 0; t < 3; t++) {
+        char text[4096];
+        json_t *doc[2], *cdoc;
+        const json_t *r[2], *params;
+        const char *vars[8];
+        fmpq_mpoly_ctx_t ctx;
+        fmpq_mpoly_t p;
+        fmpq *pt;
+        slong np, i, j, nstable = 0, npts = 60;
+        int outcome, h;
+        for (h = 0; h < 2; h++) {
+            slong old = rs_jury_set_bilinear_terms(h ? 0 : WORD(1) << 40);
+            if (t < 2) chain_text(text, sizeof text, t + 2, "jury");
+            doc[h] = t < 2 ? tu_run_text(text, NULL, &outcome, NULL)
+                           : tu_run_case("cases/park-staggered.case", req, 1, &outcome);
+            rs_jury_set_bilinear_terms(old);
+            r[h] = result(doc[h], 0);
+            assert_true(json_is_true(json_object_get(r[h], "symbolic")));
+            assert_true(json_is_true(json_object_get(json_object_get(r[h], "sample_check"), "agree")));
+        }
+        assert_null(json_object_get(r[0], "route"));
+        assert_string_equal(str(r[1], "route"), "bilinear");
+        if (t < 2) chain_text(text, sizeof text, t + 2, "charpoly");
+        cdoc = t < 2 ? tu_run_text(text, NULL, &outcome, NULL)
+                     : tu_run_case("cases/park-staggered.case", creq, 1, &outcome);
+        params = json_object_get(cdoc, "params");
+        np = (slong) json_array_size(params);
+        assert_true(np >= 1 && np < 7);
+        for (i = 0; i < np; i++) vars[i] = json_string_value(json_array_get(params, i));
+        vars[np] = "lambda";
+        fmpq_mpoly_ctx_init(ctx, np + 1, ORD_LEX);
+        fmpq_mpoly_init(p, ctx);
+        assert_int_equal(fmpq_mpoly_set_str_pretty(p, str(result(cdoc, 0), "poly"), vars, ctx), 0);
+        pt = _fmpq_vec_init(np + 1);
+        for (j = 0; j < npts; j++) {
+            fmpq_mpoly_t u;
+            fmpq_poly_t up;
+            fmpz_poly_t zp;
+            rs_jury_t ju;
+            rs_error_t err;
+            int stable;
+            /* positive rationals num/den, num 1..400, den 1..20: inside
+             * every assumption (c, k_i > 0; m, muh, wh > 0, alpha >= 0) */
+            for (i = 0; i < np; i++)
+                fmpq_set_si(pt + i, 1 + (slong) n_randint(st, 400), 1 + n_randint(st, 20));
+            fmpq_mpoly_init(u, ctx);
+            fmpq_poly_init(up);
+            fmpz_poly_init(zp);
+            rs_jury_init(ju);
+            rs_error_init(err);
+            /* p at the point, a polynomial in lambda alone */
+            for (i = 0; i < np; i++)
+                assert_true(fmpq_mpoly_evaluate_one_fmpq(u, i == 0 ? p : u, i, pt + i, ctx));
+            assert_true(fmpq_mpoly_get_fmpq_poly(up, u, np, ctx));
+            fmpq_poly_get_numerator(zp, up);
+            assert_int_equal(rs_jury_count_fmpz_poly(ju, zp, err), RS_OK);
+            stable = ju->count->inside == fmpz_poly_degree(zp);
+            nstable += stable;
+            for (h = 0; h < 2; h++)
+                assert_int_equal(conds_hold(json_object_get(r[h], "conditions"), vars, pt, ctx), stable);
+            rs_jury_clear(ju);
+            fmpz_poly_clear(zp);
+            fmpq_poly_clear(up);
+            fmpq_mpoly_clear(u, ctx);
+        }
+        if (t < 2) assert_int_equal(nstable, npts);
+        else assert_true(nstable > 0 && nstable < npts);
+        _fmpq_vec_clear(pt, np + 1);
+        fmpq_mpoly_clear(p, ctx);
+        fmpq_mpoly_ctx_clear(ctx);
+        json_decref(cdoc);
+        json_decref(doc[0]);
+        json_decref(doc[1]);
+    }
+    flint_randclear(st);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -509,6 +655,7 @@ int main(void)
         cmocka_unit_test(test_park_symbolic_jury),
         cmocka_unit_test(test_jury_interval_assumptions),
         cmocka_unit_test(test_jury_factor_halves),
+        cmocka_unit_test(test_jury_bilinear_route),
         cmocka_unit_test(test_counts_roots_at_zero),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);

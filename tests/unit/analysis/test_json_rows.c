@@ -4,7 +4,11 @@
  * 20000 random rows of map-like cells (integers, decimals in every printf
  * form, exponents, inf/nan, verdict words, fractions in NAME_exact columns,
  * empty and long cells); rows with cells that need JSON escaping are
- * refused (-1, nothing written).  jansson is the reference. */
+ * refused (-1, nothing written).  jansson is the reference.
+ * The document's long strings (issue 17: written straight to the output by
+ * rs_run_json_dumpf) are the bytes json_dumps writes: random documents with
+ * strings around the threshold, with quotes, backslashes, control
+ * characters, multi-byte UTF-8, slashes and \001, some shared. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -16,6 +20,7 @@
 #include <cmocka.h>
 #include <jansson.h>
 #include "analysis/sweep_impl.h"
+#include "recstab/api.h"
 
 static uint64_t st = 0x243f6a8885a308d3ULL;
 
@@ -110,11 +115,71 @@ static void test_refused(void **state)
     }
 }
 
+/* a random string of len bytes (whole UTF-8 characters) */
+static json_t *rand_string(size_t len)
+{
+    static const char *const pieces[] = {"7", "c", "*", "^", " + ", "k1", "\"", "\\", "\n", "\t", "\001", "/",
+                                         "\xc3\xa9", "\xe2\x82\xac", "\x7f", "u0001"};
+    char *b = malloc(len + 8);
+    size_t n = 0;
+    json_t *s;
+    int plain = rng() % 2 == 0;   /* half of them digits and operators only: written verbatim */
+    while (n < len) {
+        const char *p = pieces[rng() % (plain ? 6 : sizeof pieces / sizeof pieces[0])];
+        memcpy(b + n, p, strlen(p));
+        n += strlen(p);
+    }
+    s = json_stringn(b, n);
+    free(b);
+    assert_non_null(s);
+    return s;
+}
+
+static void test_long_strings_as_jansson(void **state)
+{
+    int d;
+    (void) state;
+    for (d = 0; d < 40; d++) {
+        json_t *top, *res = json_array(), *shared = rand_string(900 + rng() % 2000), *copy;
+        char *mine, *ref;
+        int k;
+        for (k = 0; k < 4; k++) {
+            json_t *o = json_object(), *arr = json_array(), *inner = json_object();
+            int j;
+            json_object_set_new(o, "analysis", json_string(k % 2 ? "jury" : "hurwitz"));
+            for (j = 0; j < 5; j++) json_array_append_new(arr, rand_string(rng() % 3000));
+            json_array_append(arr, shared);
+            json_object_set_new(o, "conditions", arr);
+            json_object_set(o, "poly", shared);
+            json_object_set_new(inner, "factor", rand_string(1000 + rng() % 60));
+            json_object_set_new(inner, "exponent", json_integer(k));
+            json_object_set_new(o, "details", json_pack("[o, [o]]", inner, rand_string(rng() % 2500)));
+            json_object_set_new(o, "tail", json_string("short"));
+            json_array_append_new(res, o);
+        }
+        top = json_pack("{s:[{s:s, s:o}]}", "cases", "case", "t.case", "results", res);
+        copy = json_deep_copy(top);
+        mine = rs_run_json_dumps(top);
+        ref = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
+        assert_non_null(mine);
+        assert_non_null(ref);
+        assert_int_equal(strlen(mine), strlen(ref) + 1);
+        assert_memory_equal(mine, ref, strlen(ref));
+        assert_true(json_equal(top, copy));   /* the document as it was */
+        free(mine);
+        free(ref);
+        json_decref(copy);
+        json_decref(shared);
+        json_decref(top);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rows_as_jansson),
         cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_long_strings_as_jansson),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
