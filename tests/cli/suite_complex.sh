@@ -100,6 +100,16 @@ if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T
     ok "z-plane map of forward Euler: 9 stable, 4 marginal, 12 unstable"
 else fail "z-plane map counts: $(grep -o '"verdicts":{[^}]*}' "$T/zp.json")"; fi
 if grep -q '"locus_table"' "$T/zp.json"; then fail "locus_table left in the JSON"; else ok "locus_table not in the JSON"; fi
+# the locus drawn only where it separates (issue 15 part 2): forward
+# Euler's circle |1 + z| = 1 separates at every one of its 721 points (by
+# hand: stable inside, unstable outside); AB4's loops in Re z > 0 have
+# unstable cells on both sides: 366 of 721 dropped, counted independently
+# by tests/cli/locus_sides.py (floats, side points, Durand-Kerner)
+if grep -q '"locus_points":{"drawn":721,"dropped":0,' "$T/zp.json"; then ok "forward Euler's locus: all 721 points drawn"
+else fail "forward Euler locus: $(grep -o '"locus_points":{[^}]*}' "$T/zp.json" | cut -c1-80)"; fi
+"$RS" --json cases/complex/adams-bashforth4-zplane.case | tr -d ' \n' >"$T/ab4.json"
+if grep -q '"locus_points":{"drawn":355,"dropped":366,' "$T/ab4.json"; then ok "AB4's locus: 366 of 721 points on loops that separate nothing dropped"
+else fail "AB4 locus: $(grep -o '"locus_points":{[^}]*}' "$T/ab4.json" | cut -c1-80)"; fi
 "$RS" --analyse "map re(q) -2 0 5, im(w) -1 1 5" cases/complex/forward-euler-zplane.case >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "\-\-analyse: expected the same parameter in re(...) and im(...), found 'w'" "$T/err"; then
     ok "map re(q), im(w): exit 2"; else fail "map re/im mismatch: rc=$rc $(cat "$T/err")"; fi
