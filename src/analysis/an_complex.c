@@ -86,6 +86,7 @@ typedef struct {
     fmpq_poly_t re, im;   /* p(lambda) over Q(i) */
     slong deg;            /* its degree over Q(params) (lower here: singular) */
     json_t *at;           /* {"z": "-1/2+3/2*i", ...} */
+    int neg;              /* p negated for a positive leading coefficient (det = -content lambda^k p) */
 } cpoint_t;
 
 static void cpoint_clear(cpoint_t *cp)
@@ -203,6 +204,7 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     fmpq_poly_init(cp->im);
     cp->at = rs_run_cx_at(run);
     cp->deg = 0;
+    cp->neg = 0;
     /* the real set values substituted; the complex ones stay symbolic */
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&cp->v, run, a, n);
@@ -244,6 +246,19 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     if (fmpq_poly_is_zero(cp->re) && fmpq_poly_is_zero(cp->im))
         return rs_req_error(run, q, q->text, RS_ERR_MATH, "%s: the characteristic polynomial vanishes at the "
                             "complex set values", what);
+    /* as the real path (rs_charpoly_normalise) and rs_run_cx_poly: the
+     * leading coefficient's real part positive (its imaginary part when
+     * the real part is zero) */
+    {
+        slong d = FLINT_MAX(fmpq_poly_degree(cp->re), fmpq_poly_degree(cp->im));
+        fmpq_t c;
+        fmpq_init(c);
+        fmpq_poly_get_coeff_fmpq(c, cp->re, d);
+        if (fmpq_is_zero(c)) fmpq_poly_get_coeff_fmpq(c, cp->im, d);
+        cp->neg = fmpq_sgn(c) < 0;
+        if (cp->neg) { fmpq_poly_neg(cp->re, cp->re); fmpq_poly_neg(cp->im, cp->im); }
+        fmpq_clear(c);
+    }
     return RS_OK;
 }
 
@@ -284,9 +299,14 @@ int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "poly", json_string(json_string_value(json_object_get(o, "p"))));
         /* the rational content split off the symbolic p (1 for a char line over Q(i)) */
         if (cp.v->s->complex_char) {
-            json_object_set_new(o, "content", json_string("1"));
+            json_object_set_new(o, "content", json_string(cp.neg ? "-1" : "1"));
         } else {
-            json_object_set_new(o, "content", rs_json_fmpq(cp.v->cp->content));
+            fmpq_t c;
+            fmpq_init(c);
+            fmpq_set(c, cp.v->cp->content);
+            if (cp.neg) fmpq_neg(c, c);
+            json_object_set_new(o, "content", rs_json_fmpq(c));
+            fmpq_clear(c);
             json_object_set_new(o, "removed_lambda_power", json_integer(cp.v->cp->removed_lambda_power));
         }
         emit(run, &cp, o);
