@@ -95,6 +95,21 @@ printf 'param h w\nunknown x\neq x[n+1] = x[n] + h*w*x[n]\nset h = 1\nanalyse st
 if [ "$rc" = 2 ] && grep -q "b.case:5:9: stability needs every parameter set to a number (real or complex); still symbolic: w" "$T/err"; then
     ok "a free parameter beside a complex one: exit 2"; else fail "free parameter: rc=$rc $(cat "$T/err")"; fi
 
+# A(alpha) of one-step methods that are not A-stable (issue 15 part 2): the
+# DIRK of dirk-alpha45.case has tan(alpha) = 1 by hand; that of
+# dirk-alpha86.case 86.46970638672578 degrees by tests/cli/alpha_rays.py
+"$RS" --json cases/complex/dirk-alpha45.case | tr -d ' \n' >"$T/a45.json"
+if grep -q '"tan_alpha_minpoly":"u-1","tan_alpha":1.0,"tan_alpha_exact":"1"' "$T/a45.json" \
+   && grep -q '"alpha_degrees_approx":45.0,' "$T/a45.json" && grep -q '"a_stable":false' "$T/a45.json"; then
+    ok "DIRK [1/4, 0; 1/4, 1/4 | 1/2, 1/2]: A(45 degrees), not A-stable"
+else fail "DIRK alpha 45: $(grep -o '"alpha_degrees[^,]*,[^,]*' "$T/a45.json")"; fi
+"$RS" --json cases/complex/dirk-alpha86.case | tr -d ' \n' >"$T/a86.json"
+a86=$(grep -o '"alpha_degrees_approx":[0-9.]*' "$T/a86.json" | cut -d: -f2)
+if grep -q '"exact":"(180/pi)atan(u),u=tan(alpha)therealroot4(ascending)of5\*u^4-1314\*u^2+81"' "$T/a86.json" \
+   && awk -v a="$a86" 'BEGIN { d = a - 86.46970638672578; exit !(d < 1e-9 && d > -1e-9) }'; then
+    ok "DIRK [1/3, 0; 1/4, 1/3 | 1/2, 1/2]: alpha = 86.4697063867 (float ray scan)"
+else fail "DIRK alpha 86: $a86 $(grep -o '"alpha_degrees":{[^}]*' "$T/a86.json")"; fi
+
 # the z-plane map (map re(q) ..., im(q) ...): counts derived in the case file
 "$RS" --json cases/complex/forward-euler-zplane.case | tr -d ' \n' >"$T/zp.json"
 if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T/zp.json"; then
