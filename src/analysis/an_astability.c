@@ -931,6 +931,19 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             fmpq_poly_t re, im;
             rs_status_t st;
             *inside = 0;
+            /* s = 0 is z = 0 itself (H(0, u0) > 0: an inconsistent method):
+             * a point just off it, f(w) < 0 there by continuity */
+            if (fmpq_is_zero(w0)) {
+                fmpq_t y;
+                fmpq_init(y);
+                for (t = 0; t < 200; t++) {
+                    fmpq_set_si(w0, 1, 1);
+                    fmpq_div_2exp(w0, w0, (ulong) t);
+                    fmpz_poly_evaluate_fmpq(y, f, w0);
+                    if (fmpq_sgn(y) < 0) break;
+                }
+                fmpq_clear(y);
+            }
             /* z0 = -w0^2 + i w0^2 u0 */
             fmpq_mul(zr, w0, w0);
             fmpq_mul(zi, zr, u0);
