@@ -16,7 +16,10 @@
  *    Re z > 0 (Hairer and Wanner, Solving ODEs II, IV.3).  Where both apply
  *    they must agree (exit 3), and so must the imaginary interval;
  *  - A(alpha) for p linear in z: tan(alpha) = min |Y/X| over the locus in
- *    Re z < 0, at a real root of Y' X - Y X' (an algebraic number);
+ *    Re z < 0, at a real root of Y' X - Y X' (an algebraic number); for a
+ *    one-step method with real coefficients by the rays z = -s (1 - i u)
+ *    (alpha_onestep: tan(alpha) a critical value of |N|^2 - |D|^2 on them),
+ *    cross-checked with the E-polynomial's A-stability and with the locus;
  *  - the limit of max |lambda| as z -> inf (L-stability: 0). */
 #include <stdlib.h>
 #include <string.h>
@@ -770,6 +773,244 @@ static json_t *lhp_evidence(const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, 
                      "a root on the unit circle at this point of Re z < 0 (boundary locus point)");
 }
 
+/* ---- A(alpha) of a one-step method ------------------------------------------- */
+
+/* acc += c(u) s^k (c in Z[u]; ctx: s = variable 0, u = variable 1) */
+static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz_t f, const fmpz_mpoly_ctx_t ctx)
+{
+    slong j;
+    fmpz_t t;
+    fmpz_mpoly_t m;
+    fmpz_init(t);
+    fmpz_mpoly_init(m, ctx);
+    for (j = 0; j <= fmpz_poly_degree(c); j++) {
+        ulong ex[2];
+        ex[0] = (ulong) k; ex[1] = (ulong) j;
+        fmpz_mul(t, c->coeffs + j, f);
+        if (fmpz_is_zero(t)) continue;
+        fmpz_mpoly_set_coeff_fmpz_ui(m, t, ex, ctx);
+        fmpz_mpoly_add(acc, acc, m, ctx);
+        fmpz_mpoly_zero(m, ctx);
+    }
+    fmpz_clear(t);
+    fmpz_mpoly_clear(m, ctx);
+}
+
+/* G(s, u) = |f(z)|^2 on the ray z = -s (1 - i u), f in Z[z]: with w = -1 + i u,
+ * f(s w) = sum_k f_k s^k (A_k + i B_k)(u), w^k = A_k + i B_k */
+static void ray_norm(fmpz_mpoly_t G, const fmpz_poly_t f, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_poly_t A, B, t, u;
+    fmpz_mpoly_t re, im;
+    slong k;
+    fmpz_poly_init(A); fmpz_poly_init(B); fmpz_poly_init(t); fmpz_poly_init(u);
+    fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx);
+    fmpz_poly_one(A);
+    fmpz_poly_set_coeff_si(u, 1, 1);
+    for (k = 0; k <= fmpz_poly_degree(f); k++) {
+        su_addmul(re, A, k, f->coeffs + k, ctx);
+        su_addmul(im, B, k, f->coeffs + k, ctx);
+        /* (A + i B)(-1 + i u) = (-A - u B) + i (u A - B) */
+        fmpz_poly_mul(t, u, B);
+        fmpz_poly_add(t, t, A);
+        fmpz_poly_mul(A, u, A);
+        fmpz_poly_sub(B, A, B);
+        fmpz_poly_neg(A, t);
+    }
+    fmpz_mpoly_mul(G, re, re, ctx);
+    fmpz_mpoly_mul(re, im, im, ctx);
+    fmpz_mpoly_add(G, G, re, ctx);
+    fmpz_poly_clear(A); fmpz_poly_clear(B); fmpz_poly_clear(t); fmpz_poly_clear(u);
+    fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx);
+}
+
+/* out = the coefficient of s^k of H (a polynomial in u) */
+static void su_coeff(fmpz_poly_t out, const fmpz_mpoly_t H, ulong k, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t c;
+    slong v = 0;
+    fmpz_mpoly_init(c, ctx);
+    fmpz_mpoly_get_coeff_vars_ui(c, H, &v, &k, 1, ctx);
+    mpoly_to_s(out, c, ctx);
+    fmpz_mpoly_clear(c, ctx);
+}
+
+/* A(alpha) of a one-step method p = D(z) lambda - N(z), real coefficients.
+ * On the ray z = -s (1 - i u), s > 0, |arg(-z)| = atan(u), and |R(z)| > 1
+ * iff G(s, u) = |N|^2 - |D|^2 > 0; H = G / s^m (m its lowest power of s).
+ * Whether the ray of u >= 0 has a point with H > 0 changes only at the real
+ * roots of disc_s(H) (two roots in s meet), lc_s(H) (a root from s = inf)
+ * and H(0, u) (a root from s = 0); each cell between them is decided at a
+ * rational u0: the ray lies in the region iff -H(w^2, u0) >= 0 for every
+ * real w (nonneg_everywhere, exact).  tan(alpha) is the left end of the
+ * first cell with a point outside; that point z0 = -w0^2 (1 - i u0) is
+ * re-checked by the exact point verdict (must not be stable: exit 3).
+ * *inside: 1 no cell has a point outside (A-stable, *out NULL), 0 one has
+ * (*out the angle), -1 the route does not apply (H's discriminant in s
+ * vanishes identically). */
+static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, const fmpz_poly_t D,
+                         const fmpz_poly_t N, rs_error_t err)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t G, T;
+    fmpz_poly_t c, f;
+    rs_alg_t *crit = NULL;
+    slong ncrit = 0, m, ds, du, i, first, prec = 256;
+    int r = RS_OK;
+    *out = NULL;
+    *ev = NULL;
+    *inside = -1;
+    fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
+    fmpz_mpoly_init(G, ctx); fmpz_mpoly_init(T, ctx);
+    fmpz_poly_init(c); fmpz_poly_init(f);
+    ray_norm(G, N, ctx);
+    ray_norm(T, D, ctx);
+    fmpz_mpoly_sub(G, G, T, ctx);
+    if (fmpz_mpoly_is_zero(G, ctx)) goto done;
+    m = rs_scheme_min_degree(G, 0, ctx);
+    fmpz_mpoly_gen(T, 0, ctx);
+    fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
+    fmpz_mpoly_divexact(G, G, T, ctx);
+    ds = fmpz_mpoly_degree_si(G, 0, ctx);
+    du = fmpz_mpoly_degree_si(G, 1, ctx);
+    /* the critical values of u: disc_s(H), lc_s(H), H(0, u) */
+    for (i = 0; i < 3; i++) {
+        if (i == 0) {
+            if (ds < 2) continue;
+            if (!fmpz_mpoly_discriminant(T, G, 0, ctx) || fmpz_mpoly_is_zero(T, ctx)) goto done;
+            mpoly_to_s(c, T, ctx);
+        } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
+        if (fmpz_poly_degree(c) >= 1) {
+            fmpz_poly_factor_t fac;
+            slong k;
+            fmpz_poly_factor_init(fac);
+            fmpz_poly_factor(fac, c);
+            for (k = 0; k < fac->num; k++) rs_alg_roots_append(&crit, &ncrit, fac->p + k, 0);
+            fmpz_poly_factor_clear(fac);
+        }
+    }
+    ralg_sort(crit, &ncrit);
+    /* the first critical value > 0 */
+    for (first = 0; first < ncrit; first++) {
+        rs_alg_refine(crit + first, prec);
+        if (crit[first].rational ? fmpq_sgn(crit[first].q) > 0 : arb_is_positive(crit[first].x)) break;
+    }
+    *inside = 1;
+    for (i = first; i <= ncrit && *inside == 1 && r == RS_OK; i++) {
+        fmpq_t u0, w0, zr, zi;
+        slong t;
+        fmpq_init(u0); fmpq_init(w0); fmpq_init(zr); fmpq_init(zi);
+        if (i == first) {
+            /* between 0 and the first critical value */
+            rs_alg_t zero;
+            rs_alg_init(&zero);
+            zero.rational = 1;
+            fmpq_zero(zero.q);
+            arb_zero(zero.x);
+            rational_between(u0, &zero, i == ncrit ? NULL : crit + i);
+            rs_alg_clear(&zero);
+        } else rational_between(u0, crit + i - 1, i == ncrit ? NULL : crit + i);
+        /* -H(w^2, u0) den^du in Z[w] */
+        fmpz_poly_zero(f);
+        for (t = 0; t < fmpz_mpoly_length(G, ctx); t++) {
+            ulong ex[2];
+            fmpz_t a, b;
+            fmpz_init(a); fmpz_init(b);
+            fmpz_mpoly_get_term_coeff_fmpz(a, G, t, ctx);
+            fmpz_mpoly_get_term_exp_ui(ex, G, t, ctx);
+            fmpz_pow_ui(b, fmpq_numref(u0), ex[1]);
+            fmpz_mul(a, a, b);
+            fmpz_pow_ui(b, fmpq_denref(u0), (ulong) du - ex[1]);
+            fmpz_mul(a, a, b);
+            fmpz_poly_get_coeff_fmpz(b, f, 2 * (slong) ex[0]);
+            fmpz_sub(b, b, a);
+            fmpz_poly_set_coeff_fmpz(f, 2 * (slong) ex[0], b);
+            fmpz_clear(a); fmpz_clear(b);
+        }
+        if (!nonneg_everywhere(f, w0)) {
+            fmpq_poly_t re, im;
+            rs_status_t st;
+            *inside = 0;
+            /* s = 0 is z = 0 itself (H(0, u0) > 0: an inconsistent method):
+             * a point just off it, f(w) < 0 there by continuity */
+            if (fmpq_is_zero(w0)) {
+                fmpq_t y;
+                fmpq_init(y);
+                for (t = 0; t < 200; t++) {
+                    fmpq_set_si(w0, 1, 1);
+                    fmpq_div_2exp(w0, w0, (ulong) t);
+                    fmpz_poly_evaluate_fmpq(y, f, w0);
+                    if (fmpq_sgn(y) < 0) break;
+                }
+                fmpq_clear(y);
+            }
+            /* z0 = -w0^2 + i w0^2 u0 */
+            fmpq_mul(zr, w0, w0);
+            fmpq_mul(zi, zr, u0);
+            fmpq_neg(zr, zr);
+            fmpq_poly_init(re); fmpq_poly_init(im);
+            eval_at(re, im, P, zr, zi);
+            if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) st = RS_STATUS_SINGULAR;
+            else r = rs_routh_complex_checked_status(&st, re, im, P->n, err);
+            fmpq_poly_clear(re); fmpq_poly_clear(im);
+            if (r == RS_OK && (st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL))
+                r = rs_error_set(err, RS_ERR_INCONSISTENT, "astability: A(alpha) of the one-step method: |R| > 1 "
+                                 "on the ray, yet the point verdict is %s", rs_status_name(st));
+            if (r == RS_OK) {
+                *ev = json_pack("{s:s,s:{s:o,s:o,s:s}}", "route",
+                    "one-step method: rays z = -s (1 - i u), u = tan|arg(-z)|; |N|^2 - |D|^2 on them, its critical u "
+                    "(discriminant and end coefficients in s), each cell between them decided exactly at a rational u",
+                    "first_point_outside", "re", rs_json_fmpq(zr), "im", rs_json_fmpq(zi), "status",
+                    rs_status_name(st));
+                if (i == first) {
+                    *out = json_integer(0);
+                    arb_zero(deg);
+                } else {
+                    /* as alpha_linear prints it: u = tan(alpha), its minimal polynomial */
+                    rs_alg_t *a = crit + i - 1;
+                    fmpz_poly_t mp;
+                    char *ms, *buf;
+                    arb_t pi;
+                    arb_init(pi);
+                    fmpz_poly_init(mp);
+                    rs_alg_refine(a, prec);
+                    if (a->rational) {
+                        fmpz_poly_set_coeff_fmpz(mp, 1, fmpq_denref(a->q));
+                        fmpz_poly_set_coeff_fmpz(mp, 0, fmpq_numref(a->q));
+                        fmpz_neg(mp->coeffs, mp->coeffs);
+                    } else fmpz_poly_set(mp, a->minpoly);
+                    ms = poly_str(mp, "u");
+                    buf = malloc(strlen(ms) + 120);
+                    sprintf(buf, "(180/pi) atan(u), u = tan(alpha) the real root %ld (ascending) of %s",
+                            (long) (a->rational ? 0 : a->idx) + 1, ms);
+                    *out = json_pack("{s:s,s:s,s:f}", "exact", buf, "tan_alpha_minpoly", ms, "tan_alpha",
+                                     arf_get_d(arb_midref(a->x), ARF_RND_NEAR));
+                    if (a->rational) json_object_set_new(*out, "tan_alpha_exact", rs_json_fmpq(a->q));
+                    arb_atan(deg, a->x, prec);
+                    arb_mul_ui(deg, deg, 180, prec);
+                    arb_const_pi(pi, prec);
+                    arb_div(deg, deg, pi, prec);
+                    free(buf);
+                    free(ms);
+                    fmpz_poly_clear(mp);
+                    arb_clear(pi);
+                }
+            }
+        }
+        fmpq_clear(u0); fmpq_clear(w0); fmpq_clear(zr); fmpq_clear(zi);
+        if (r == RS_OK) r = rs_budget_check(err, "astability");
+    }
+    /* every ray inside: A-stable, alpha = 90 as the E-polynomial prints it */
+    if (*inside == 1 && r == RS_OK) arb_set_ui(deg, 90);
+done:
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+    free(crit);
+    fmpz_poly_clear(c); fmpz_poly_clear(f);
+    fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(T, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return r;
+}
+
 /* ---- request ------------------------------------------------------------------ */
 
 int rs_an_astability_parse(rs_an_req_t *req, rs_run_t *run)
@@ -827,6 +1068,8 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     rs_status_t st_m1 = RS_STATUS_UNSTABLE;
     fmpq_t zr, zi;
     fmpz_mpoly_struct *pre = NULL, *pim = NULL;
+    json_t *alpha_one = NULL, *alpha_ev = NULL;   /* A(alpha) by the rays of a one-step method, its evidence */
+    arb_t alpha_one_deg;
     if (run->m->qd != NULL) return rs_an_qd_astability(run, req);   /* R over Q(sqrt d) */
     if (rs_an_complex_mode(run)) {
         /* complex set values stay symbolic in the variant; rs_run_cx_poly substitutes them over Q(i) */
@@ -892,6 +1135,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     }
     fmpz_poly_init(disc); fmpz_poly_init(disci); fmpz_poly_init(lc);
     fmpq_init(zr); fmpq_init(zi);
+    arb_init(alpha_one_deg);
     zdisc(disc, disci, &P);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("astability"));
@@ -1077,6 +1321,16 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         }
         one_decided = 1;
         one_astable = enonneg && poles_ok;
+        /* A(alpha) by the rays (real coefficients), cross-checked with A-stability */
+        if (fmpz_poly_is_zero(Di) && fmpz_poly_is_zero(Ni)) {
+            int inside;
+            if ((r = alpha_onestep(&alpha_one, &alpha_ev, alpha_one_deg, &inside, &P, D, N, run->err)) != RS_OK) goto one_out;
+            if (r == RS_OK && inside >= 0 && inside != one_astable) {
+                r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "the E-polynomial and the "
+                                    "rays of A(alpha) disagree on A-stability"), "astability");
+                goto one_out;
+            }
+        }
         {
             char *es = poly_str(E, "y");
             json_t *e = json_pack("{s:s,s:s,s:b,s:b}", "route", "E-polynomial (one-step method)", "E", es,
@@ -1114,6 +1368,32 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "a_stable_note", json_string(
             "undecided: neither linear in z nor a one-step method (degree 1 in lambda)"));
     }
+    if (alpha_one != NULL) {
+        json_t *have = json_object_get(o, "alpha_degrees");
+        if (have == NULL || json_is_null(have)) {
+            char *ds = rs_radius_arb_str(alpha_one_deg, 15);
+            json_object_set_new(o, "alpha_degrees", json_incref(alpha_one));
+            json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(alpha_one_deg), ARF_RND_NEAR)));
+            json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+            if (alpha_ev != NULL) json_object_set(o, "alpha_evidence", alpha_ev);
+            json_object_del(o, "alpha_note");
+            flint_free(ds);
+        } else if (json_real_value(json_object_get(o, "alpha_degrees_approx")) != 0 || !arb_is_zero(alpha_one_deg)) {
+            /* both routes (p linear in z and one-step): the angles must agree */
+            arb_t a;
+            arb_init(a);
+            arb_set_d(a, json_number_value(json_object_get(o, "alpha_degrees_approx")));
+            arb_add_error_2exp_si(a, -30);
+            if (!arb_overlaps(a, alpha_one_deg)) {
+                arb_clear(a);
+                json_decref(ev);
+                r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the boundary "
+                                    "locus and the rays of the one-step method disagree"), "astability");
+                goto out;
+            }
+            arb_clear(a);
+        }
+    }
     if (riv.empty || !riv.lo_inf) {
         /* A(alpha) for any alpha >= 0 needs the whole negative real axis (A(0), Widlund) */
         json_object_set_new(o, "alpha_degrees", json_null());
@@ -1127,7 +1407,8 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "alpha_degrees_approx", a_stable == 1 ? json_real(90.0) : json_null());
         if (a_stable != 1)
             json_object_set_new(o, "alpha_note", json_string(
-                "A(alpha) is computed for methods linear in z (multistep); not for this one"));
+                "A(alpha) is computed for methods linear in z (multistep) and one-step methods with real "
+                "coefficients; not for this one"));
     }
     json_object_set_new(o, "evidence", ev);
     /* z -> inf: the roots of the top coefficient in z; fewer than n: some go to infinity */
@@ -1206,5 +1487,8 @@ out:
     flint_free(P.Ci);
     fmpz_poly_clear(disc); fmpz_poly_clear(disci); fmpz_poly_clear(lc);
     fmpq_clear(zr); fmpq_clear(zi);
+    json_decref(alpha_one);
+    json_decref(alpha_ev);
+    arb_clear(alpha_one_deg);
     return r;
 }

@@ -86,6 +86,7 @@ typedef struct {
     fmpq_poly_t re, im;   /* p(lambda) over Q(i) */
     slong deg;            /* its degree over Q(params) (lower here: singular) */
     json_t *at;           /* {"z": "-1/2+3/2*i", ...} */
+    int neg;              /* p negated for a positive leading coefficient (det = -content lambda^k p) */
 } cpoint_t;
 
 static void cpoint_clear(cpoint_t *cp)
@@ -203,6 +204,7 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     fmpq_poly_init(cp->im);
     cp->at = rs_run_cx_at(run);
     cp->deg = 0;
+    cp->neg = 0;
     /* the real set values substituted; the complex ones stay symbolic */
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&cp->v, run, a, n);
@@ -244,6 +246,19 @@ static int cpoint_get(cpoint_t *cp, rs_run_t *run, const rs_request_t *q, const 
     if (fmpq_poly_is_zero(cp->re) && fmpq_poly_is_zero(cp->im))
         return rs_req_error(run, q, q->text, RS_ERR_MATH, "%s: the characteristic polynomial vanishes at the "
                             "complex set values", what);
+    /* as the real path (rs_charpoly_normalise) and rs_run_cx_poly: the
+     * leading coefficient's real part positive (its imaginary part when
+     * the real part is zero) */
+    {
+        slong d = FLINT_MAX(fmpq_poly_degree(cp->re), fmpq_poly_degree(cp->im));
+        fmpq_t c;
+        fmpq_init(c);
+        fmpq_poly_get_coeff_fmpq(c, cp->re, d);
+        if (fmpq_is_zero(c)) fmpq_poly_get_coeff_fmpq(c, cp->im, d);
+        cp->neg = fmpq_sgn(c) < 0;
+        if (cp->neg) { fmpq_poly_neg(cp->re, cp->re); fmpq_poly_neg(cp->im, cp->im); }
+        fmpq_clear(c);
+    }
     return RS_OK;
 }
 
@@ -284,9 +299,14 @@ int rs_an_complex_charpoly(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "poly", json_string(json_string_value(json_object_get(o, "p"))));
         /* the rational content split off the symbolic p (1 for a char line over Q(i)) */
         if (cp.v->s->complex_char) {
-            json_object_set_new(o, "content", json_string("1"));
+            json_object_set_new(o, "content", json_string(cp.neg ? "-1" : "1"));
         } else {
-            json_object_set_new(o, "content", rs_json_fmpq(cp.v->cp->content));
+            fmpq_t c;
+            fmpq_init(c);
+            fmpq_set(c, cp.v->cp->content);
+            if (cp.neg) fmpq_neg(c, c);
+            json_object_set_new(o, "content", rs_json_fmpq(c));
+            fmpq_clear(c);
             json_object_set_new(o, "removed_lambda_power", json_integer(cp.v->cp->removed_lambda_power));
         }
         emit(run, &cp, o);
@@ -863,15 +883,102 @@ static void eval_coeffs(fmpq_poly_t re, fmpq_poly_t im, const fmpq_poly_struct *
     fmpq_poly_clear(tr); fmpq_poly_clear(ti); fmpq_poly_clear(u);
 }
 
+/* the plane of NAME = x + i y: variables x = re(NAME), y = im(NAME),
+ * lambda (xn, yn: 24 chars each; vars: 3 names), contexts initialised */
+static void zplane_init(rs_scheme_struct *xs, char **vars, char *xn, char *yn, const char *name)
+{
+    snprintf(xn, 24, "re(%.16s)", name);
+    snprintf(yn, 24, "im(%.16s)", name);
+    vars[0] = xn; vars[1] = yn; vars[2] = (char *) "lambda";
+    memset(xs, 0, sizeof *xs);
+    fmpq_mpoly_ctx_init(xs->ctx, 3, ORD_LEX);
+    fmpz_mpoly_ctx_init(xs->zctx, 3, ORD_LEX);
+    xs->nvars = 3;
+    xs->lambda_var = 2;
+    xs->vars = vars;
+}
+
+static void zplane_clear(rs_scheme_struct *xs)
+{
+    fmpz_mpoly_ctx_clear(xs->zctx);
+    fmpq_mpoly_ctx_clear(xs->ctx);
+}
+
+/* c * D as an integer polynomial (D a multiple of c's denominator) */
+static void scaled_num(fmpz_poly_t out, const fmpq_poly_t c, const fmpz_t D)
+{
+    fmpz_t f;
+    fmpz_init(f);
+    fmpz_divexact(f, D, fmpq_poly_denref(c));
+    fmpq_poly_get_numerator(out, c);
+    fmpz_poly_scalar_mul_fmpz(out, out, f);
+    fmpz_clear(f);
+}
+
+/* D p(x + i y) = re + i im in Z[x, y, lambda] (ctx: zplane_init's), D > 0
+ * the common denominator of p = sum_k (CR_k + i CI_k)(lambda) NAME^k */
+static void zplane_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpq_poly_struct *CR, const fmpq_poly_struct *CI,
+                        slong K, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t zr, zi, t, u, x, y;
+    fmpz_poly_t c;
+    fmpz_t D;
+    slong k;
+    fmpz_mpoly_init(zr, ctx); fmpz_mpoly_init(zi, ctx); fmpz_mpoly_init(t, ctx); fmpz_mpoly_init(u, ctx);
+    fmpz_mpoly_init(x, ctx); fmpz_mpoly_init(y, ctx);
+    fmpz_poly_init(c);
+    fmpz_init(D);
+    fmpz_mpoly_zero(re, ctx);
+    fmpz_mpoly_zero(im, ctx);
+    fmpz_mpoly_gen(x, 0, ctx);
+    fmpz_mpoly_gen(y, 1, ctx);
+    fmpz_mpoly_one(zr, ctx);
+    fmpz_one(D);
+    for (k = 0; k <= K; k++) {
+        fmpz_lcm(D, D, fmpq_poly_denref(CR + k));
+        if (CI != NULL) fmpz_lcm(D, D, fmpq_poly_denref(CI + k));
+    }
+    for (k = 0; k <= K; k++) {
+        int part;
+        for (part = 0; part < (CI != NULL ? 2 : 1); part++) {
+            /* part 1: i CI_k (zr + i zi) = -CI_k zi + i CI_k zr */
+            scaled_num(c, part == 0 ? CR + k : CI + k, D);
+            fmpz_mpoly_set_fmpz_poly(t, c, 2, ctx);
+            fmpz_mpoly_mul(u, t, part == 0 ? zr : zi, ctx);
+            if (part == 0) fmpz_mpoly_add(re, re, u, ctx);
+            else fmpz_mpoly_sub(re, re, u, ctx);
+            fmpz_mpoly_mul(u, t, part == 0 ? zi : zr, ctx);
+            fmpz_mpoly_add(im, im, u, ctx);
+        }
+        /* (zr + i zi)(x + i y) */
+        fmpz_mpoly_mul(t, zr, x, ctx);
+        fmpz_mpoly_mul(u, zi, y, ctx);
+        fmpz_mpoly_sub(t, t, u, ctx);
+        fmpz_mpoly_mul(u, zr, y, ctx);
+        fmpz_mpoly_mul(zi, zi, x, ctx);
+        fmpz_mpoly_add(zi, zi, u, ctx);
+        fmpz_mpoly_swap(zr, t, ctx);
+    }
+    fmpz_mpoly_clear(zr, ctx); fmpz_mpoly_clear(zi, ctx); fmpz_mpoly_clear(t, ctx); fmpz_mpoly_clear(u, ctx);
+    fmpz_mpoly_clear(x, ctx); fmpz_mpoly_clear(y, ctx);
+    fmpz_poly_clear(c);
+    fmpz_clear(D);
+}
+
 /* The boundary locus, sampled for the plot: for phi on a grid, the roots z
  * of p(exp(i phi), z) = 0 (for p linear in z: z = -C0/C1 at lambda =
  * exp(i phi)); "re,im,branch" rows in double, the exact parametrisation
- * beside it in the result. */
-static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, slong K, slong nphi)
+ * beside it in the result.  A (NULL: every point drawn): the z-plane's
+ * decomposition; a point on an arc that separates nothing (both sides
+ * stable, or both not stable) is dropped; the counts into nd[0] (drawn),
+ * nd[1] (dropped). */
+static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, slong K, slong nphi,
+                         const rs_region_arcs_t *A, slong *nd)
 {
     size_t cap = 4096, len = 0;
     char *out = malloc(cap);
     slong j, k, prec = 128;
+    nd[0] = nd[1] = 0;
     len += (size_t) snprintf(out, cap, "re,im,branch\n");
     for (j = 0; j <= nphi; j++) {
         acb_t lam, c, x;
@@ -909,6 +1016,8 @@ static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI,
         for (k = 0; k < found; k++) {
             double a = arf_get_d(arb_midref(acb_realref(rt + k)), ARF_RND_NEAR);
             double b = arf_get_d(arb_midref(acb_imagref(rt + k)), ARF_RND_NEAR);
+            if (A != NULL && !rs_region_arcs_keep(A, NULL, a, b)) { nd[1]++; continue; }
+            nd[0]++;
             if (len + 80 > cap) { cap *= 2; out = realloc(out, cap); }
             len += (size_t) snprintf(out + len, cap - len, "%.10g,%.10g,%ld\n", a, b, (long) k);
         }
@@ -1059,6 +1168,27 @@ static void zmap_put(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, vo
     }
 }
 
+typedef struct {
+    const fmpq_poly_struct *CR, *CI;   /* CI NULL: real coefficients */
+    slong K, n;
+    rs_run_t *run;
+} cregion_pt_t;
+
+/* the decomposition of the z-plane for the map's locus (region re(z),
+ * im(z)'s conditions, stable / not stable only); A NULL when it failed */
+typedef struct {
+    rs_scheme_struct xs;
+    char *vars[3], xn[24], yn[24];
+    fmpz_mpoly_t re, im;
+    rs_schur_cx_conds_t cc;
+    rs_region_cx_t cx;
+    cregion_pt_t pt;
+    rs_region_arcs_t *A;
+} zarcs_t;
+static int zarcs_init(zarcs_t *Z, rs_run_t *run, const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, slong K,
+                      slong n, const char *name);
+static void zarcs_clear(zarcs_t *Z);
+
 int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -1120,7 +1250,13 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     r = rs_sweep_map_table(&T, run, q, &model, npoints, what, desc, header, zmap_put, &put);
     if (r == RS_OK) {
         slong nrow = T.hi - T.lo;
-        char *loc = locus_table(CR, CI, K, 720);
+        zarcs_t Za;
+        slong nd[2];
+        rs_error_struct saved = *run->err;
+        char *loc;
+        /* only the locus arcs that separate stable from not stable are drawn */
+        if (zarcs_init(&Za, run, CR, CI, K, n, name) != RS_OK) *run->err = saved;
+        loc = locus_table(CR, CI, K, 720, Za.A, nd);
         json_t *ranges = json_array(), *real = json_pack("[ii]", 3, 4);
         o = json_object();
         json_object_set_new(o, "analysis", json_string("map"));
@@ -1172,6 +1308,14 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
         }
         json_object_set_new(o, "locus_note", json_string("locus_table: the exact parametrisation evaluated in "
                             "floating point at 721 angles (for the plot); the verdicts are exact"));
+        json_object_set_new(o, "locus_points", json_pack("{s:I,s:I,s:s}", "drawn", (json_int_t) nd[0], "dropped",
+            (json_int_t) nd[1], "method", Za.A != NULL
+            ? "a sampled locus point is drawn iff its arc in the decomposition of the z-plane by the Schur-Cohn "
+              "conditions over Q(i)[re, im] (stable iff all > 0) has cells of different exact verdicts on its two "
+              "sides (each decided at a rational sample by Schur-Cohn over Q(i) and Bilharz)"
+            : "every sampled locus point is drawn: the decomposition of the z-plane did not complete, so arcs "
+              "separating nothing are included"));
+        zarcs_clear(&Za);
         json_object_set_new(o, "locus_table", json_string(loc));
         free(loc);
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
@@ -1232,12 +1376,6 @@ int rs_an_complex_region_parse(rs_an_req_t *req, rs_run_t *run)
     return RS_OK;
 }
 
-typedef struct {
-    const fmpq_poly_struct *CR, *CI;   /* CI NULL: real coefficients */
-    slong K, n;
-    rs_run_t *run;
-} cregion_pt_t;
-
 /* the exact point verdict at z = x + i y: Schur-Cohn over Q(i) and Bilharz */
 static int cregion_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void *arg)
 {
@@ -1250,6 +1388,43 @@ static int cregion_status(rs_status_t *st, const fmpq_t x, const fmpq_t y, void 
     if (r == RS_ERR_INCONSISTENT) a->run->outcome |= RS_OUTCOME_INCONSISTENT;
     fmpq_poly_clear(re); fmpq_poly_clear(im);
     return r;
+}
+
+static int zarcs_init(zarcs_t *Z, rs_run_t *run, const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, slong K,
+                      slong n, const char *name)
+{
+    slong gmap[3] = {0, 1, 2};
+    int r;
+    zplane_init(&Z->xs, Z->vars, Z->xn, Z->yn, name);
+    fmpz_mpoly_init(Z->re, Z->xs.zctx); fmpz_mpoly_init(Z->im, Z->xs.zctx);
+    zplane_poly(Z->re, Z->im, CR, CI, K, Z->xs.zctx);
+    rs_schur_cx_conds_init(&Z->cc);
+    Z->A = NULL;
+    if (!rs_schur_cx_conds(&Z->cc, Z->re, Z->im, 2, Z->xs.zctx)) return RS_ERR_LIMIT;
+    Z->pt.CR = CR;
+    Z->pt.CI = CI;
+    Z->pt.K = K;
+    Z->pt.n = n;
+    Z->pt.run = run;
+    memset(&Z->cx, 0, sizeof Z->cx);
+    Z->cx.s = &Z->xs;
+    Z->cx.lead = Z->cc.lead;
+    Z->cx.delta = Z->cc.delta;
+    Z->cx.ndelta = Z->cc.ndelta;
+    Z->cx.status = cregion_status;
+    Z->cx.arg = &Z->pt;
+    Z->cx.name = name;
+    r = rs_region_arcs_new_cx(&Z->A, run, &Z->cx, Z->xs.zctx, gmap, 3);
+    if (r != RS_OK) Z->A = NULL;
+    return r;
+}
+
+static void zarcs_clear(zarcs_t *Z)
+{
+    rs_region_arcs_free(Z->A);
+    rs_schur_cx_conds_clear(&Z->cc, Z->xs.zctx);
+    fmpz_mpoly_clear(Z->re, Z->xs.zctx); fmpz_mpoly_clear(Z->im, Z->xs.zctx);
+    zplane_clear(&Z->xs);
 }
 
 /* ---- the marginal set: where a root can reach the circle or double ------------ */
@@ -1440,17 +1615,6 @@ static void zregion_norms(fmpz_mpoly_struct *norms, slong cnt, const fmpz_mpoly_
     fmpz_clear(a); fmpz_clear(b); fmpz_clear(c); fmpz_clear(ur); fmpz_clear(ui); fmpz_clear(w); fmpz_clear(cpow);
 }
 
-/* c * D as an integer polynomial (D a multiple of c's denominator) */
-static void scaled_num(fmpz_poly_t out, const fmpq_poly_t c, const fmpz_t D)
-{
-    fmpz_t f;
-    fmpz_init(f);
-    fmpz_divexact(f, D, fmpq_poly_denref(c));
-    fmpq_poly_get_numerator(out, c);
-    fmpz_poly_scalar_mul_fmpz(out, out, f);
-    fmpz_clear(f);
-}
-
 int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -1461,10 +1625,8 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     rs_variant_t *v;
     rs_scheme_struct xs;
     fmpq_poly_struct *CR = NULL, *CI = NULL;
-    fmpz_mpoly_t re, im, zr, zi, t, u, x, y;
+    fmpz_mpoly_t re, im;
     fmpz_mpoly_struct E[5], *NR = NULL;
-    fmpz_poly_t c;
-    fmpz_t D;
     slong ne = 0, nn = 0;
     rs_schur_cx_conds_t cc;
     rs_region_cx_t cx;
@@ -1486,52 +1648,9 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "region re(%s), im(%s): the characteristic polynomial "
                             "must depend on the parameter and on lambda", name);
     }
-    /* the plane: variables x = re(NAME), y = im(NAME), lambda */
-    snprintf(xn, sizeof xn, "re(%.16s)", name);
-    snprintf(yn, sizeof yn, "im(%.16s)", name);
-    vars[0] = xn; vars[1] = yn; vars[2] = (char *) "lambda";
-    memset(&xs, 0, sizeof xs);
-    fmpq_mpoly_ctx_init(xs.ctx, 3, ORD_LEX);
-    fmpz_mpoly_ctx_init(xs.zctx, 3, ORD_LEX);
-    xs.nvars = 3;
-    xs.lambda_var = 2;
-    xs.vars = vars;
-    fmpz_mpoly_init(re, xs.zctx); fmpz_mpoly_init(im, xs.zctx); fmpz_mpoly_init(zr, xs.zctx);
-    fmpz_mpoly_init(zi, xs.zctx); fmpz_mpoly_init(t, xs.zctx); fmpz_mpoly_init(u, xs.zctx);
-    fmpz_mpoly_init(x, xs.zctx); fmpz_mpoly_init(y, xs.zctx);
-    fmpz_poly_init(c);
-    fmpz_init(D);
-    fmpz_mpoly_gen(x, 0, xs.zctx);
-    fmpz_mpoly_gen(y, 1, xs.zctx);
-    fmpz_mpoly_one(zr, xs.zctx);
-    /* a common denominator: p times D > 0 has integer coefficients */
-    fmpz_one(D);
-    for (k = 0; k <= K; k++) {
-        fmpz_lcm(D, D, fmpq_poly_denref(CR + k));
-        if (CI != NULL) fmpz_lcm(D, D, fmpq_poly_denref(CI + k));
-    }
-    /* D p(x + i y) = sum_k (CR_k + i CI_k)(lambda) (x + i y)^k = re + i im in Z[x, y, lambda] */
-    for (k = 0; k <= K; k++) {
-        int part;
-        for (part = 0; part < (CI != NULL ? 2 : 1); part++) {
-            /* part 1: i CI_k (zr + i zi) = -CI_k zi + i CI_k zr */
-            scaled_num(c, part == 0 ? CR + k : CI + k, D);
-            fmpz_mpoly_set_fmpz_poly(t, c, 2, xs.zctx);
-            fmpz_mpoly_mul(u, t, part == 0 ? zr : zi, xs.zctx);
-            if (part == 0) fmpz_mpoly_add(re, re, u, xs.zctx);
-            else fmpz_mpoly_sub(re, re, u, xs.zctx);
-            fmpz_mpoly_mul(u, t, part == 0 ? zi : zr, xs.zctx);
-            fmpz_mpoly_add(im, im, u, xs.zctx);
-        }
-        /* (zr + i zi)(x + i y) */
-        fmpz_mpoly_mul(t, zr, x, xs.zctx);
-        fmpz_mpoly_mul(u, zi, y, xs.zctx);
-        fmpz_mpoly_sub(t, t, u, xs.zctx);
-        fmpz_mpoly_mul(u, zr, y, xs.zctx);
-        fmpz_mpoly_mul(zi, zi, x, xs.zctx);
-        fmpz_mpoly_add(zi, zi, u, xs.zctx);
-        fmpz_mpoly_swap(zr, t, xs.zctx);
-    }
+    zplane_init(&xs, vars, xn, yn, name);
+    fmpz_mpoly_init(re, xs.zctx); fmpz_mpoly_init(im, xs.zctx);
+    zplane_poly(re, im, CR, CI, K, xs.zctx);
     rs_schur_cx_conds_init(&cc);
     if (!rs_schur_cx_conds(&cc, re, im, 2, xs.zctx)) {
         r = rs_budget_check(run->err, "region re(z), im(z) (Schur-Cohn conditions)");
@@ -1571,12 +1690,7 @@ int rs_an_complex_region(rs_run_t *run, const rs_an_req_t *req)
     for (k = 0; k < nn; k++) fmpz_mpoly_clear(NR + k, xs.zctx);
     flint_free(NR);
     zplane_coeffs_clear(CR, CI, K);
-    fmpz_poly_clear(c);
-    fmpz_clear(D);
-    fmpz_mpoly_clear(re, xs.zctx); fmpz_mpoly_clear(im, xs.zctx); fmpz_mpoly_clear(zr, xs.zctx);
-    fmpz_mpoly_clear(zi, xs.zctx); fmpz_mpoly_clear(t, xs.zctx); fmpz_mpoly_clear(u, xs.zctx);
-    fmpz_mpoly_clear(x, xs.zctx); fmpz_mpoly_clear(y, xs.zctx);
-    fmpz_mpoly_ctx_clear(xs.zctx);
-    fmpq_mpoly_ctx_clear(xs.ctx);
+    fmpz_mpoly_clear(re, xs.zctx); fmpz_mpoly_clear(im, xs.zctx);
+    zplane_clear(&xs);
     return r;
 }

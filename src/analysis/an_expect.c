@@ -127,39 +127,6 @@ static void zpoly_to_q(fmpq_mpoly_t out, const fmpz_mpoly_t p, const rs_scheme_s
     flint_free(ex);
 }
 
-/* c = 1, or c = sg = -1 (the printed text is p as the charpoly over Q(i)
- * shows it, before the sign of the real path) */
-static int cx_unit(const fmpq_t cr, const fmpq_t ci, int sg)
-{
-    return fmpq_is_zero(ci) && (fmpq_is_one(cr) || (sg < 0 && fmpz_equal_si(fmpq_numref(cr), -1)
-                                                    && fmpz_is_one(fmpq_denref(cr))));
-}
-
-/* The sign the real path's rs_charpoly_normalise gives p: that of the first
- * term of the leading coefficient in lambda, here of its real part (its
- * imaginary part when the real part is zero). -1 when p = dr + i di must be
- * negated to read as the real case prints p (positive leading term). */
-static int cx_lc_sign(const fmpq_mpoly_t dr, const fmpq_mpoly_t di, slong var, const fmpq_mpoly_ctx_t ctx)
-{
-    slong n = FLINT_MAX(fmpq_mpoly_degree_si(dr, var, ctx), fmpq_mpoly_degree_si(di, var, ctx));
-    ulong k = n < 0 ? 0 : (ulong) n;
-    fmpq_mpoly_t lc;
-    fmpq_t c;
-    int sg = 1, part;
-    if (n < 0) return 1;
-    fmpq_mpoly_init(lc, ctx);
-    fmpq_init(c);
-    for (part = 0; part < 2; part++) {
-        fmpq_mpoly_get_coeff_vars_ui(lc, part ? di : dr, &var, &k, 1, ctx);
-        if (fmpq_mpoly_is_zero(lc, ctx)) continue;
-        fmpq_mpoly_get_term_coeff_fmpq(c, lc, 0, ctx);
-        sg = fmpq_sgn(c) < 0 ? -1 : 1;
-        break;
-    }
-    fmpq_mpoly_clear(lc, ctx);
-    fmpq_clear(c);
-    return sg;
-}
 
 /* expect charpoly with i: the printed er + i ei against p = re + i im over
  * Q(i) (rs_run_cx_poly: complex set values substituted, a char line with i
@@ -176,7 +143,7 @@ static int expect_cx(rs_run_t *run, const rs_an_req_t *req)
     fmpq_t cr, ci;
     json_t *o;
     const char *status = "different";
-    int r, sg;
+    int r;
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, n);
     if (r != RS_OK) { rs_assign_free(a, n); return r; }
@@ -195,12 +162,10 @@ static int expect_cx(rs_run_t *run, const rs_an_req_t *req)
         rs_run_cx_poly(zr, zi, run, v);
         zpoly_to_q(dr, zr, s);
         zpoly_to_q(di, zi, s);
-        /* as the real path: "equal" to p with a positive leading term (or
-         * to p as the charpoly over Q(i) prints it, or to the raw determinant
-         * lambda^k p), else "proportional" with the ratio to that p */
-        sg = cx_lc_sign(dr, di, s->lambda_var, s->ctx);
-        if (sg < 0) { fmpq_mpoly_neg(dr, dr, s->ctx); fmpq_mpoly_neg(di, di, s->ctx); }
-        if (cx_ratio(cr, ci, er, ei, dr, di, s->ctx)) status = cx_unit(cr, ci, sg) ? "equal" : "proportional";
+        /* as the real path: "equal" to p with a positive leading term (as
+         * rs_run_cx_poly gives it and charpoly over Q(i) prints it) or to the
+         * raw determinant lambda^k p, else "proportional" with the ratio */
+        if (cx_ratio(cr, ci, er, ei, dr, di, s->ctx)) status = fmpq_is_zero(ci) && fmpq_is_one(cr) ? "equal" : "proportional";
         else if (!s->complex_char && v->cp->removed_lambda_power > 0) {
             /* the raw determinant lambda^k p */
             fmpq_mpoly_gen(lp, s->lambda_var, s->ctx);
@@ -208,11 +173,10 @@ static int expect_cx(rs_run_t *run, const rs_an_req_t *req)
             fmpq_mpoly_mul(dr, dr, lp, s->ctx);
             fmpq_mpoly_mul(di, di, lp, s->ctx);
             if (cx_ratio(cr, ci, er, ei, dr, di, s->ctx))
-                status = cx_unit(cr, ci, sg) ? "equal" : "proportional";
+                status = fmpq_is_zero(ci) && fmpq_is_one(cr) ? "equal" : "proportional";
             fmpq_mpoly_div(dr, dr, lp, s->ctx);
             fmpq_mpoly_div(di, di, lp, s->ctx);
         }
-        if (sg < 0) { fmpq_mpoly_neg(dr, dr, s->ctx); fmpq_mpoly_neg(di, di, s->ctx); }   /* printed as charpoly prints p */
         o = json_object();
         json_object_set_new(o, "analysis", json_string("expect"));
         json_object_set_new(o, "of", json_string("charpoly"));

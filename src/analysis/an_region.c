@@ -707,7 +707,8 @@ static void kp_divrem(kpoly_t *q, kpoly_t *r, const kpoly_t *a, const kpoly_t *b
     fmpq_poly_init(inv); fmpq_poly_init(f); fmpq_poly_init(t);
     kp_set(r, a);
     if (q != NULL) { for (i = 0; i < q->cap; i++) fmpq_poly_zero(q->c + i); q->deg = -1; }
-    k_inv(inv, b->c + b->deg, m);
+    if (fmpq_poly_is_one(b->c + b->deg)) fmpq_poly_one(inv);   /* monic (kp_gcd's, x -+ 1) */
+    else k_inv(inv, b->c + b->deg, m);
     while (r->deg >= b->deg) {
         d = r->deg - b->deg;
         k_mul(f, r->c + r->deg, inv, m);
@@ -738,7 +739,33 @@ static void kp_make_monic(kpoly_t *a, const fmpq_poly_t m)
     fmpq_poly_clear(inv);
 }
 
-/* g = gcd(a, b) (Euclid in K[lambda] with monic remainders; not both zero) */
+static void kp_primitive(kpoly_t *a);
+
+/* r = the pseudo-remainder lc(b)^e a mod b in K[lambda] (b != 0): no
+ * inversion in K */
+static void kp_prem(kpoly_t *r, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
+{
+    fmpq_poly_t f, t;
+    slong i, d;
+    fmpq_poly_init(f); fmpq_poly_init(t);
+    kp_set(r, a);
+    while (r->deg >= b->deg) {
+        d = r->deg - b->deg;
+        fmpq_poly_set(f, r->c + r->deg);
+        /* r = lc(b) r - lc(r) lambda^d b */
+        for (i = 0; i < r->deg; i++) k_mul(r->c + i, r->c + i, b->c + b->deg, m);
+        for (i = 0; i < b->deg; i++) {
+            k_mul(t, f, b->c + i, m);
+            fmpq_poly_sub(r->c + i + d, r->c + i + d, t);
+        }
+        fmpq_poly_zero(r->c + r->deg);   /* exactly cancelled */
+        kp_normalise(r);
+    }
+    fmpq_poly_clear(f); fmpq_poly_clear(t);
+}
+
+/* g = gcd(a, b), monic (Euclid in K[lambda] with pseudo-remainders made
+ * primitive over Q, one inversion at the end; not both zero) */
 static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_poly_t m)
 {
     slong cap = FLINT_MAX(a->cap, b->cap);
@@ -746,19 +773,36 @@ static void kp_gcd(kpoly_t *g, const kpoly_t *a, const kpoly_t *b, const fmpq_po
     kp_init(&x, cap); kp_init(&y, cap); kp_init(&r, cap);
     kp_set(&x, a);
     kp_set(&y, b);
-    kp_make_monic(&x, m);
-    kp_make_monic(&y, m);
+    kp_primitive(&x);
+    kp_primitive(&y);
     while (y.deg >= 0) {
         /* coefficients in Q[t]/(m) can swell: stop with the budget (sticky:
          * rs_analysis_run reports it and discards the result) */
         if (rs_budget_check(NULL, "the status at an algebraic endpoint") != RS_OK) break;
-        kp_divrem(NULL, &r, &x, &y, m);
-        kp_make_monic(&r, m);
+        kp_prem(&r, &x, &y, m);
+        kp_primitive(&r);
         kp_set(&x, &y);
         kp_set(&y, &r);
     }
+    kp_make_monic(&x, m);
     kp_set(g, &x);
     kp_clear(&x); kp_clear(&y); kp_clear(&r);
+}
+
+/* a divided by the positive rational content of its coefficients (a != 0) */
+static void kp_primitive(kpoly_t *a)
+{
+    fmpq_t c, g;
+    slong i;
+    fmpq_init(c); fmpq_init(g);
+    for (i = 0; i <= a->deg; i++) {
+        fmpq_poly_content(c, a->c + i);
+        if (fmpq_is_zero(g)) fmpq_set(g, c);
+        else if (!fmpq_is_zero(c)) fmpq_gcd(g, g, c);
+    }
+    if (!fmpq_is_zero(g) && !fmpq_is_one(g))
+        for (i = 0; i <= a->deg; i++) fmpq_poly_scalar_div_fmpq(a->c + i, a->c + i, g);
+    fmpq_clear(c); fmpq_clear(g);
 }
 
 /* every root strictly inside the unit circle: the Schur-Cohn recursion
@@ -786,9 +830,11 @@ static int kp_all_inside(const kpoly_t *p, const fmpq_poly_t m, alg_t *t0)
         }
         for (j = k; j < b.cap; j++) fmpq_poly_zero(b.c + j);
         b.deg = k - 1;      /* lead b_{k-1} = a_k^2 - a_0^2 != 0 */
-        /* dividing by the real d(t0) != 0 scales every later a_k^2 - a_0^2
-         * by a square: the signs stay, the sizes stop doubling per step */
-        kp_make_monic(&b, m);
+        /* dividing by a positive rational scales every later a_k^2 - a_0^2
+         * by a positive square: the signs stay; the rational content keeps
+         * the sizes down without an inversion in K (making b monic did,
+         * issue 15: AB3's region spent a fifth of its time there) */
+        kp_primitive(&b);
         kp_set(&a, &b);
     }
     kp_clear(&a); kp_clear(&b);

@@ -167,6 +167,7 @@ int rs_region_arcs_new(rs_region_arcs_t **out, rs_run_t *run, const rs_variant_t
 int rs_region_arcs_new_cx(rs_region_arcs_t **out, rs_run_t *run, const rs_region_cx_t *cx,
                           const fmpz_mpoly_ctx_t src, const slong *gmap, slong nsrc);
 void rs_region_arcs_free(rs_region_arcs_t *A);
+/* cond NULL: (x, y) on any boundary factor (a sampled z-plane locus point) */
 int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y);
 json_t *rs_region_arcs_json(const rs_region_arcs_t *A);
 #endif

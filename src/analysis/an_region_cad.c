@@ -2222,14 +2222,16 @@ static double arcs_vertical_dist(const cad_t *c, slong k, double x)
 
 /* 1 when the boundary point (x, y) of condition cond lies on an arc that
  * separates two statuses (or cannot be placed: kept); 0 also when cond has
- * no critical factor (its zero set is not where a status can change) */
+ * no critical factor (its zero set is not where a status can change);
+ * cond NULL: the point lies on some boundary factor (a z-plane locus
+ * point), the nearest arc of any of them decides */
 static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y, int nudged);
 
 int rs_region_arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double x, double y)
 {
     int keep;
     fmpz_mpoly_t m;
-    if (A->gmap == NULL) return arcs_keep(A, cond, x, y, 0);
+    if (A->gmap == NULL || cond == NULL) return arcs_keep(A, cond, x, y, 0);
     fmpz_mpoly_init(m, A->c.s->zctx);
     fmpz_mpoly_compose_fmpz_mpoly_gen(m, cond, A->gmap, A->src, A->c.s->zctx);
     keep = arcs_keep(A, m, x, y, 0);
@@ -2260,7 +2262,7 @@ static int arcs_keep(const rs_region_arcs_t *A, const fmpz_mpoly_t cond, double 
         int divides;
         if (c->kind[k] != K_BOUNDARY) continue;
         fmpz_mpoly_init(q, c->s->zctx);
-        divides = fmpz_mpoly_divides(q, cond, c->f + k, c->s->zctx);
+        divides = cond == NULL || fmpz_mpoly_divides(q, cond, c->f + k, c->s->zctx);
         fmpz_mpoly_clear(q, c->s->zctx);
         if (!divides) continue;
         factor = 1;

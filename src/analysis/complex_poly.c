@@ -102,6 +102,22 @@ slong rs_run_cx_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const rs_run_t *run, cons
     _fmpz_vec_content(g, re->coeffs, re->length);
     _fmpz_vec_content(d, im->coeffs, im->length);
     fmpz_gcd(g, g, d);
+    /* the sign of the real path (rs_charpoly_normalise): the first term of
+     * the leading coefficient in lambda positive, of its real part (of its
+     * imaginary part when the real part is zero); charpoly over Q(i) prints
+     * p so (cpoint_get) */
+    {
+        slong n = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx),
+                            fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
+        fmpz_mpoly_t lc;
+        fmpz_mpoly_init(lc, s->zctx);
+        if (n >= 0) {
+            rs_charpoly_coeff(lc, re, n, s->lambda_var, s->zctx);
+            if (fmpz_mpoly_is_zero(lc, s->zctx)) rs_charpoly_coeff(lc, im, n, s->lambda_var, s->zctx);
+            if (!fmpz_mpoly_is_zero(lc, s->zctx) && fmpz_sgn(lc->coeffs + 0) < 0) fmpz_neg(g, g);
+        }
+        fmpz_mpoly_clear(lc, s->zctx);
+    }
     if (!fmpz_is_zero(g) && !fmpz_is_one(g)) {
         fmpz_mpoly_scalar_divexact_fmpz(re, re, g, s->zctx);
         fmpz_mpoly_scalar_divexact_fmpz(im, im, g, s->zctx);

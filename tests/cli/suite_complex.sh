@@ -65,8 +65,9 @@ if grep -q '"rho":"0.500000000000000000000000000000"' "$T/fe.json" || grep -q '"
 "$RS" --json "$BD" | tr -d ' \n' >"$T/bd.json"
 if grep -q '"rho":"0.68989794855663561963945681494' "$T/bd.json"; then ok "bdf2 radius (sqrt 6 + 1)/5"
 else fail "bdf2 radius: $(grep -o '"rho":"[^"]*"' "$T/bd.json")"; fi
-# its charpoly over Q(i): 2p = (4 - 3i) l^2 - 4 l + 1 up to the sign the normalisation picks
-if grep -q '"p":"(-4+3\*i)\*lambda^2+4\*lambda-1"' "$T/bd.json"; then ok "bdf2 charpoly over Q(i)"
+# its charpoly over Q(i): 2p = (4 - 3i) l^2 - 4 l + 1, the leading coefficient's real part positive as
+# the real path prints p (issue 15: was printed negated before the normalisation at the source)
+if grep -q '"p":"(4-3\*i)\*lambda^2-4\*lambda+1"' "$T/bd.json"; then ok "bdf2 charpoly over Q(i)"
 else fail "bdf2 charpoly: $(grep -o '"p":"[^"]*"' "$T/bd.json" | head -1)"; fi
 # the Bilharz counts of the routh analysis: 2 inside
 if grep -q '"analysis":"routh"[^]]*\][^}]*"left":2,"right":0,"axis":0' "$T/bd.json"; then ok "bdf2 Bilharz counts"
@@ -94,12 +95,37 @@ printf 'param h w\nunknown x\neq x[n+1] = x[n] + h*w*x[n]\nset h = 1\nanalyse st
 if [ "$rc" = 2 ] && grep -q "b.case:5:9: stability needs every parameter set to a number (real or complex); still symbolic: w" "$T/err"; then
     ok "a free parameter beside a complex one: exit 2"; else fail "free parameter: rc=$rc $(cat "$T/err")"; fi
 
+# A(alpha) of one-step methods that are not A-stable (issue 15 part 2): the
+# DIRK of dirk-alpha45.case has tan(alpha) = 1 by hand; that of
+# dirk-alpha86.case 86.46970638672578 degrees by tests/cli/alpha_rays.py
+"$RS" --json cases/complex/dirk-alpha45.case | tr -d ' \n' >"$T/a45.json"
+if grep -q '"tan_alpha_minpoly":"u-1","tan_alpha":1.0,"tan_alpha_exact":"1"' "$T/a45.json" \
+   && grep -q '"alpha_degrees_approx":45.0,' "$T/a45.json" && grep -q '"a_stable":false' "$T/a45.json"; then
+    ok "DIRK [1/4, 0; 1/4, 1/4 | 1/2, 1/2]: A(45 degrees), not A-stable"
+else fail "DIRK alpha 45: $(grep -o '"alpha_degrees[^,]*,[^,]*' "$T/a45.json")"; fi
+"$RS" --json cases/complex/dirk-alpha86.case | tr -d ' \n' >"$T/a86.json"
+a86=$(grep -o '"alpha_degrees_approx":[0-9.]*' "$T/a86.json" | cut -d: -f2)
+if grep -q '"exact":"(180/pi)atan(u),u=tan(alpha)therealroot4(ascending)of5\*u^4-1314\*u^2+81"' "$T/a86.json" \
+   && awk -v a="$a86" 'BEGIN { d = a - 86.46970638672578; exit !(d < 1e-9 && d > -1e-9) }'; then
+    ok "DIRK [1/3, 0; 1/4, 1/3 | 1/2, 1/2]: alpha = 86.4697063867 (float ray scan)"
+else fail "DIRK alpha 86: $a86 $(grep -o '"alpha_degrees":{[^}]*' "$T/a86.json")"; fi
+
 # the z-plane map (map re(q) ..., im(q) ...): counts derived in the case file
 "$RS" --json cases/complex/forward-euler-zplane.case | tr -d ' \n' >"$T/zp.json"
 if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T/zp.json"; then
     ok "z-plane map of forward Euler: 9 stable, 4 marginal, 12 unstable"
 else fail "z-plane map counts: $(grep -o '"verdicts":{[^}]*}' "$T/zp.json")"; fi
 if grep -q '"locus_table"' "$T/zp.json"; then fail "locus_table left in the JSON"; else ok "locus_table not in the JSON"; fi
+# the locus drawn only where it separates (issue 15 part 2): forward
+# Euler's circle |1 + z| = 1 separates at every one of its 721 points (by
+# hand: stable inside, unstable outside); AB4's loops in Re z > 0 have
+# unstable cells on both sides: 366 of 721 dropped, counted independently
+# by tests/cli/locus_sides.py (floats, side points, Durand-Kerner)
+if grep -q '"locus_points":{"drawn":721,"dropped":0,' "$T/zp.json"; then ok "forward Euler's locus: all 721 points drawn"
+else fail "forward Euler locus: $(grep -o '"locus_points":{[^}]*}' "$T/zp.json" | cut -c1-80)"; fi
+"$RS" --json cases/complex/adams-bashforth4-zplane.case | tr -d ' \n' >"$T/ab4.json"
+if grep -q '"locus_points":{"drawn":355,"dropped":366,' "$T/ab4.json"; then ok "AB4's locus: 366 of 721 points on loops that separate nothing dropped"
+else fail "AB4 locus: $(grep -o '"locus_points":{[^}]*}' "$T/ab4.json" | cut -c1-80)"; fi
 "$RS" --analyse "map re(q) -2 0 5, im(w) -1 1 5" cases/complex/forward-euler-zplane.case >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "\-\-analyse: expected the same parameter in re(...) and im(...), found 'w'" "$T/err"; then
     ok "map re(q), im(w): exit 2"; else fail "map re/im mismatch: rc=$rc $(cat "$T/err")"; fi
