@@ -11,5 +11,6 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
 
 #endif

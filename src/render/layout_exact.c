@@ -514,21 +514,28 @@ static void decided_by(rs_render_t *r, const json_t *o)
         rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
 }
 
-/* R over Q(sqrt d) (rk sdirk2, an_qd.c): |R(z)|^2 decided exactly */
+/* over Q(sqrt d) (rk sdirk2, an_qd.c): |R(z)|^2 decided exactly on the
+ * test equation, else Schur-Cohn and the certified roots of p */
 static void stability_qd(rs_render_t *r, const json_t *o)
 {
     rs_render_line(r, "status", "%s", js(o, "status"));
     if (js(o, "abs_R_squared") != NULL) rs_render_line(r, "|R(z)|^2", "%s", js(o, "abs_R_squared"));
-    rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
-    rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "
-                   "root agree)", js(o, "decided_by"));
+    if (js(o, "poly") != NULL) rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
+    if (js(o, "note") != NULL) rs_render_line(r, "note", "%s", js(o, "note"));
+    if (json_object_get(o, "stability_function") != NULL)
+        rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "
+                       "root agree)", js(o, "decided_by"));
+    else
+        rs_render_linef(r, "decided by", "%s (Schur-Cohn over Q(sqrt d)(i): %s; certified roots: %s)",
+                       js(o, "decided_by"), json_is_true(json_object_get(o, "schur_cohn_stable")) ? "stable"
+                       : "not strictly stable", js(o, "roots_certified") ? js(o, "roots_certified") : "none");
     rs_render_assigned(r, o);
 }
 
 void rs_render_stability(rs_render_t *r, const json_t *o)
 {
     int sym;
-    if (json_object_get(o, "stability_function") != NULL) {
+    if (json_object_get(o, "stability_function") != NULL || json_object_get(o, "p0") != NULL) {
         stability_qd(r, o);
         return;
     }
