@@ -129,7 +129,7 @@ static slong qd_cp_param(const qd_cp_t *P, const rs_scheme_struct *s)
 
 /* Dahlquist's test equation: the case's only subsystem, one state y' = F,
  * nothing else (then p = D lambda - N with R = N/D) */
-static int is_test_equation(const rs_case_struct *c)
+int rs_an_qd_test_equation(const rs_case_struct *c)
 {
     return c->nsubs == 1 && c->subs[0].nstates == 1 && c->subs[0].ndeqs == 1 && c->subs[0].deqs[0].order == 1
            && c->neqs == 0 && c->charexpr == NULL && c->nrec == 0;
@@ -178,7 +178,7 @@ static int qd_r_get(qd_r_t *R, rs_run_t *run, const rs_request_t *q)
     rs_qd_init(c0); rs_qd_init(inv); rs_qd_init(t1); rs_qd_init(n1);
     if (r == RS_OK) {
         par = qd_cp_param(&P, s);
-        if (!is_test_equation(run->c) || P.degree != 1 || par < 0 || !qd_cp_coeff_uni(A1, &P, 1, par, s)
+        if (!rs_an_qd_test_equation(run->c) || P.degree != 1 || par < 0 || !qd_cp_coeff_uni(A1, &P, 1, par, s)
             || !qd_cp_coeff_uni(A0, &P, 0, par, s))
             r = rs_req_error(run, q, q->text, RS_ERR_INPUT,
                              "expected y' = F*y with H*F = k*NAME for one parameter NAME (rk %s is analysed on "
@@ -593,7 +593,7 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req)
 static int qd_onestep(rs_run_t *run, const rs_request_t *q, qd_cp_t *P, int *r)
 {
     *r = qd_cp_get(P, run, q);
-    return *r == RS_OK && is_test_equation(run->c) && P->degree == 1 && qd_cp_param(P, run->sym) >= 0;
+    return *r == RS_OK && rs_an_qd_test_equation(run->c) && P->degree == 1 && qd_cp_param(P, run->sym) >= 0;
 }
 
 int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
