@@ -305,45 +305,47 @@ static int param_value(fmpq_t re, fmpq_t im, const rs_case_struct *c, slong k)
     return 0;
 }
 
-/* a *= b over Q(i) */
-static void cx_mul(fmpq_t ar, fmpq_t ai, const fmpq_t br, const fmpq_t bi)
+/* parameter k has a complex set value */
+static int qd_is_cset(const rs_run_t *run, slong k)
 {
-    fmpq_t t, u, v;
-    fmpq_init(t); fmpq_init(u); fmpq_init(v);
-    fmpq_mul(t, ar, br);
-    fmpq_mul(u, ai, bi);
-    fmpq_sub(v, t, u);
-    fmpq_mul(t, ar, bi);
-    fmpq_mul(u, ai, br);
-    fmpq_add(ai, t, u);
-    fmpq_swap(ar, v);
-    fmpq_clear(t); fmpq_clear(u); fmpq_clear(v);
+    slong j;
+    for (j = 0; j < run->c->ncsets; j++)
+        if (strcmp(run->c->csets[j].name, run->c->params[k].name) == 0) return 1;
+    return 0;
 }
 
-/* a (no lambda, no sqrt(d)) at the parameters' values vr + i vi */
-static void cx_eval(fmpq_t re, fmpq_t im, const fmpz_mpoly_t a, const fmpq *vr, const fmpq *vi,
+/* a (no lambda, no sqrt(d)) at the set values: the real ones here, the
+ * complex ones by rs_cx_add_term (complex_poly.c) */
+static void cx_eval(fmpq_t re, fmpq_t im, const fmpz_mpoly_t a, const fmpq *vr, const rs_run_t *run,
                     const rs_scheme_struct *s)
 {
-    ulong *ex = flint_malloc(s->nvars * sizeof(ulong));
-    fmpq_t tr, ti;
-    slong i, j;
-    ulong e;
-    fmpq_init(tr);
-    fmpq_init(ti);
-    fmpq_zero(re);
-    fmpq_zero(im);
+    slong *ex = flint_malloc(s->nvars * sizeof(slong)), i, j;
+    fmpq_mpoly_t qr, qi;
+    fmpq_t c, t;
+    fmpq_mpoly_init(qr, s->ctx);
+    fmpq_mpoly_init(qi, s->ctx);
+    fmpq_init(c);
+    fmpq_init(t);
     for (i = 0; i < fmpz_mpoly_length(a, s->zctx); i++) {
-        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(tr), a, i, s->zctx);
-        fmpz_one(fmpq_denref(tr));
-        fmpq_zero(ti);
-        fmpz_mpoly_get_term_exp_ui(ex, a, i, s->zctx);
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), a, i, s->zctx);
+        fmpz_one(fmpq_denref(c));
+        fmpz_mpoly_get_term_exp_si(ex, a, i, s->zctx);
         for (j = 0; j < s->lambda_var; j++)
-            for (e = 0; e < ex[j]; e++) cx_mul(tr, ti, vr + j, vi + j);
-        fmpq_add(re, re, tr);
-        fmpq_add(im, im, ti);
+            if (ex[j] > 0 && !qd_is_cset(run, j)) {
+                fmpq_pow_si(t, vr + j, ex[j]);
+                fmpq_mul(c, c, t);
+                ex[j] = 0;
+            }
+        rs_cx_add_term(qr, qi, c, 0, ex, run, s);
     }
-    fmpq_clear(tr);
-    fmpq_clear(ti);
+    fmpq_mpoly_sort_terms(qr, s->ctx); fmpq_mpoly_combine_like_terms(qr, s->ctx);
+    fmpq_mpoly_sort_terms(qi, s->ctx); fmpq_mpoly_combine_like_terms(qi, s->ctx);
+    fmpq_mpoly_get_fmpq(re, qr, s->ctx);   /* constants: every parameter of p is set */
+    fmpq_mpoly_get_fmpq(im, qi, s->ctx);
+    fmpq_mpoly_clear(qr, s->ctx);
+    fmpq_mpoly_clear(qi, s->ctx);
+    fmpq_clear(c);
+    fmpq_clear(t);
     flint_free(ex);
 }
 
@@ -353,7 +355,7 @@ static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run
 {
     const rs_scheme_struct *s = run->sym;
     const rs_case_struct *cs = run->c;
-    fmpq *vr = _fmpq_vec_init(s->nvars), *vi = _fmpq_vec_init(s->nvars);
+    fmpq *vr = _fmpq_vec_init(s->nvars), *vi = _fmpq_vec_init(s->nvars);   /* vi: only whether set */
     fmpz_mpoly_t a;
     slong k, h;
     int r = RS_OK;
@@ -370,7 +372,7 @@ static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run
         for (k = 0; k <= P->degree; k++)
             for (h = 0; h < 2; h++) {
                 rs_charpoly_coeff(a, h ? P->p1 : P->p0, k, s->lambda_var, s->zctx);
-                cx_eval(h ? (*c)[k].re->y : (*c)[k].re->x, h ? (*c)[k].im->y : (*c)[k].im->x, a, vr, vi, s);
+                cx_eval(h ? (*c)[k].re->y : (*c)[k].re->x, h ? (*c)[k].im->y : (*c)[k].im->x, a, vr, run, s);
             }
         for (*n = P->degree; *n >= 0 && rs_qd_is_zero((*c)[*n].re) && rs_qd_is_zero((*c)[*n].im); (*n)--) ;
         fmpz_mpoly_clear(a, s->zctx);
