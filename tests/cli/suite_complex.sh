@@ -592,6 +592,10 @@ else ok "skipped sdirk2 coupled JSON: no python3"; fi
 check_status "sdirk2 coupled c=1/2+i/4 (rho = 0.6353 by sympy)" stable "$SC" --set 'c=1/2+i/4'
 "$RS" --json "$SC" --set 'c=1/2+i/4' | tr -d ' \n' | grep -q '"rho":"0.63534168006133' \
     && ok "sdirk2 coupled complex c: certified rho 0.63534168006133..." || fail "sdirk2 coupled complex rho"
+"$RS" --markdown "$SC" --set c=2 >"$T/sc.md" 2>"$T/err"
+if grep -q '^### Stability at the given values over Q(sqrt 2)$' "$T/sc.md" && grep -q 'Verdict: \*\*unstable\*\*' "$T/sc.md"; then
+    ok "sdirk2 coupled: Markdown derivation over Q(sqrt 2) with its verdict"
+else fail "sdirk2 coupled markdown: $(grep -i stab "$T/sc.md" | head -3)"; fi
 "$RS" --emit equations "$SC" >"$T/eq.txt" 2>"$T/err"
 if grep -qF 'eq y_k1[n+1] = (-a*(y[n] + (1)*((1 - 1/2*sqrt(2))*y_k1[n+1])) + c*x[n])' "$T/eq.txt" \
    && grep -qF 'eq 2*(y[n+1] - y[n]) = (1)*(sqrt(2)*y_k1[n+1] + (2 - sqrt(2))*y_k2[n+1])' "$T/eq.txt"; then
