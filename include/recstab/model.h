@@ -33,13 +33,13 @@ typedef enum {
 /* the linear forms of a co-simulation (private: src/lower/cosim_model.h) */
 typedef struct rs_cosim_model_struct rs_cosim_model_struct;
 
-/* Issue 15: the case's only subsystem, one state y' = F, integrated by a
- * named tableau whose stability function is not in Q(z) (rk sdirk2):
- * R = (n0 + sqrt(d) n1)/(d0 + sqrt(d) d1) (methods.h).  The model's
- * equations are then one explicit step of that subsystem (two stages,
- * R = 1 + z), lowered only so that z = H*F is read exactly from their
- * p = lambda - 1 - z; charpoly, stability and astability answer from R over
- * Q(sqrt d) (src/analysis/an_qd.c), every other analysis is refused. */
+/* Issue 15: a subsystem integrated by a named tableau with irrational
+ * entries whose R is not in Q(z) (rk sdirk2, entries in Q(sqrt d)).  Its
+ * stage equations are among the model's equations with sqrt(d) written
+ * exactly (the scheme reduces by sqrt(d)^2 = d: scheme.h's sqrt_d); qd
+ * records d and the tableau's R = (n0 + sqrt(d) n1)/(d0 + sqrt(d) d1)
+ * (methods.h), against which the test equation's R read from p is checked
+ * (src/analysis/an_qd.c). */
 typedef struct {
     slong d;
     fmpq_poly_struct n0[1], n1[1], d0[1], d1[1];

@@ -5,7 +5,8 @@
  * times the column of x.  Divisions by parameter expressions are multiplied
  * through and recorded as non-zero assumptions.  Rows are normalised so that
  * their lowest power of lambda is lambda^0.  Variables of the polynomial
- * context: the parameters in declaration order, then lambda. */
+ * context: the parameters in declaration order, then lambda (then sqrt(d)
+ * for a model over Q(sqrt d): sqrt_d below). */
 #ifndef RECSTAB_SCHEME_H
 #define RECSTAB_SCHEME_H
 
@@ -42,6 +43,10 @@ typedef struct {
     char **nonzero_text;        /* "m != 0" */
     rs_loc_t *nonzero_loc;      /* where each was first needed (file points into the
                                    model or its case: valid while they live) */
+    slong sqrt_d;               /* d > 0: the model has coefficients in Q(sqrt d) (rk sdirk2);
+                                   sqrt(d) is then the variable sqrt_var (after lambda), every
+                                   entry reduced by sqrt(d)^2 = d: entries and det are p0 + sqrt(d) p1 */
+    slong sqrt_var;
 } rs_scheme_struct;
 typedef rs_scheme_struct rs_scheme_t[1];
 
@@ -75,6 +80,10 @@ slong rs_scheme_min_degree(const fmpz_mpoly_t p, slong var, const fmpz_mpoly_ctx
 
 /* dst = a copy of src (dst initialised; its old contents are cleared). */
 void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src);
+
+/* Reduces p (in s's zctx) by sqrt(d)^2 = d when s->sqrt_d > 0: p becomes
+ * p0 + sqrt(d) p1 with sqrt_var's degree at most 1 (nothing otherwise). */
+void rs_scheme_reduce_sqrt(fmpz_mpoly_t p, const rs_scheme_t s);
 
 /* Substitutes the rational value for variable var in every entry. */
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value);

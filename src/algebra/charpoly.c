@@ -286,6 +286,7 @@ int rs_charpoly_compute(rs_charpoly_t cp, const rs_scheme_t s, rs_error_t err)
             fmpz_clear(L);
         }
         r = rs_charpoly_det(cp->p, A, n, RS_CHARPOLY_MAX_TERMS, zctx, err);
+        if (r == RS_OK) rs_scheme_reduce_sqrt(cp->p, s);   /* over Q(sqrt d): p0 + sqrt(d) p1 */
         for (i = 0; i < n * n; i++) fmpz_mpoly_clear(A + i, zctx);
         flint_free(A);
     }

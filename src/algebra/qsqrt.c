@@ -384,42 +384,52 @@ static void qd_arb(arb_t r, const rs_qd_struct *a, const arb_t sd, slong prec)
     arb_clear(t);
 }
 
+int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec)
+{
+    acb_poly_t p;
+    arb_t sd;
+    slong k;
+    int ok = 0;
+    acb_poly_init(p);
+    arb_init(sd);
+    arb_sqrt_ui(sd, (ulong) d, prec);
+    acb_poly_fit_length(p, n + 1);
+    for (k = 0; k <= n; k++) {
+        qd_arb(acb_realref(p->coeffs + k), c[k].re, sd, prec);
+        qd_arb(acb_imagref(p->coeffs + k), c[k].im, sd, prec);
+    }
+    _acb_poly_set_length(p, n + 1);
+    _acb_poly_normalise(p);
+    if (acb_poly_degree(p) == n && !acb_contains_zero(p->coeffs + n)) {
+        acb_poly_find_roots(z, p, NULL, 0, prec);
+        ok = _acb_poly_validate_roots(z, p->coeffs, n + 1, prec) == n;
+    }
+    acb_poly_clear(p);
+    arb_clear(sd);
+    return ok;
+}
+
 int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d)
 {
     slong prec, k;
     int res = -1;
     if (n < 1) return 1;
     for (prec = 64; prec <= 4096 && res == -1; prec *= 2) {
-        acb_poly_t p;
         acb_ptr z = _acb_vec_init(n);
-        arb_t sd, m;
-        slong isolated, below = 0, above = 0;
-        acb_poly_init(p);
-        arb_init(sd); arb_init(m);
-        arb_sqrt_ui(sd, (ulong) d, prec);
-        acb_poly_fit_length(p, n + 1);
-        for (k = 0; k <= n; k++) {
-            qd_arb(acb_realref(p->coeffs + k), c[k].re, sd, prec);
-            qd_arb(acb_imagref(p->coeffs + k), c[k].im, sd, prec);
-        }
-        _acb_poly_set_length(p, n + 1);
-        _acb_poly_normalise(p);
-        if (acb_poly_degree(p) == n && !acb_contains_zero(p->coeffs + n)) {
-            acb_poly_find_roots(z, p, NULL, 0, prec);
-            isolated = _acb_poly_validate_roots(z, p->coeffs, n + 1, prec);
-            if (isolated == n)
-                for (k = 0; k < n; k++) {
-                    acb_abs(m, z + k, prec);
-                    arb_sub_ui(m, m, 1, prec);
-                    if (arb_is_negative(m)) below++;
-                    else if (arb_is_positive(m)) above++;
-                }
-            if (above > 0) res = 0;
-            else if (below == n) res = 1;
-        }
+        arb_t m;
+        slong below = 0, above = 0;
+        arb_init(m);
+        if (rs_qdc_roots(z, c, n, d, prec))
+            for (k = 0; k < n; k++) {
+                acb_abs(m, z + k, prec);
+                arb_sub_ui(m, m, 1, prec);
+                if (arb_is_negative(m)) below++;
+                else if (arb_is_positive(m)) above++;
+            }
+        if (above > 0) res = 0;
+        else if (below == n) res = 1;
         _acb_vec_clear(z, n);
-        acb_poly_clear(p);
-        arb_clear(sd); arb_clear(m);
+        arb_clear(m);
     }
     return res;
 }

@@ -15,6 +15,7 @@
 #include <flint/fmpz_poly.h>
 #include <mpfr.h>
 #include <arb.h>
+#include <acb.h>
 #include "util/qd.h"
 
 #ifdef __cplusplus
@@ -73,6 +74,10 @@ int rs_qdc_schur_stable(const rs_qdc_struct *c, slong n, slong d);
  * ball): 1 all |root| < 1, 0 some |root| > 1, -1 undecided at every
  * precision up to 4096 bits (a root on or too near the circle) */
 int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d);
+/* the n roots of that polynomial as certified, isolated balls z[0..n) at
+ * precision prec (sqrt d a ball): 1, or 0 when they are not isolated there
+ * (a repeated root, or prec too low) */
+int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec);
 
 /* R = N/D (real coefficients in Q(sqrt d), lowest terms, D(0) != 0) as a
  * one-step method's stability function (Hairer and Wanner, Solving ODEs II,

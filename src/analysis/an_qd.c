@@ -1,16 +1,19 @@
-/* an_qd.c -- issue 15: the analyses of a case whose one-state subsystem
- * y' = F is integrated by a tableau with R(z) not in Q(z) (rk sdirk2, R over
- * Q(sqrt 2); model.h's qd).  z = H*F is read exactly from the stand-in
- * equations' p = lambda - 1 - z and must be k*NAME for one parameter NAME;
- * R(k NAME) = N/D over Q(sqrt d) then gives
- *  - charpoly: p = D lambda - N, printed with sqrt(d) exactly;
- *  - stability at the set (real or complex) NAME: the sign of
- *    |D|^2 - |N|^2 in Q(sqrt d) decides, Schur-Cohn over Q(sqrt d)(i) and
- *    the certified Arb root (rs_qd_onestep_stable_at) must agree (exit 3);
- *  - astability: E-polynomial and poles (rs_qd_astab_decide), the real and
- *    imaginary intervals (rs_qd_onestep_interval), checked against each
- *    other (E >= 0 with the poles right iff the imaginary interval is the
- *    whole axis; A-stable implies (-inf, 0] and a stable z = -1).
+/* an_qd.c -- issue 15: the analyses of a model with coefficients in
+ * Q(sqrt d) (rk sdirk2: gamma = 1 - sqrt(2)/2; model.h's qd).  The lowering
+ * writes the true stage equations with sqrt(d) exact; the scheme evaluates
+ * sqrt(d) as a variable reduced by sqrt(d)^2 = d, so the characteristic
+ * polynomial is p = p0 + sqrt(d) p1 with p0, p1 in Z[params][lambda]
+ * (lower/scheme.c, algebra/charpoly.c), whatever the coupling.  Then
+ *  - charpoly: p0 + sqrt(d) p1, each lambda-coefficient written over Q(sqrt d);
+ *  - stability at set (real or complex) values: p(lambda) over Q(sqrt d)(i),
+ *    Schur-Cohn (exact signs in Q(sqrt d)) and the certified Arb roots must
+ *    agree (exit 3); radius: the certified balls of the roots;
+ *  - the test equation (one subsystem, one state y' = F): p = D lambda - N
+ *    with R = N/D read from p is checked against the tableau's stability
+ *    function (methods.c) composed with z = k*NAME (exit 3 when they differ);
+ *    stability then also decides |D|^2 - |N|^2 in Q(sqrt d), astability runs
+ *    the E-polynomial and the stability intervals (rs_qd_astab_decide,
+ *    rs_qd_onestep_interval), checked against each other.
  * Every other analysis is refused at its line (rs_an_qd_check). */
 #include <stdlib.h>
 #include <string.h>
@@ -20,16 +23,116 @@
 #include <flint/fmpz_mpoly.h>
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
+#include <acb.h>
 #include "algebra/qsqrt.h"
+
+static json_t *json_str_free(char *s)
+{
+    json_t *j = json_string(s);
+    flint_free(s);
+    return j;
+}
+
+static char *over_str(slong d)
+{
+    char *s = flint_malloc(40);
+    snprintf(s, 40, "Q(sqrt %ld)", (long) d);
+    return s;
+}
 
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *n = req->def->name;
     if (run->m->qd == NULL) return RS_OK;
-    if (strcmp(n, "charpoly") == 0 || strcmp(n, "stability") == 0 || strcmp(n, "astability") == 0) return RS_OK;
+    if (strcmp(n, "charpoly") == 0 || strcmp(n, "stability") == 0 || strcmp(n, "astability") == 0
+        || strcmp(n, "radius") == 0)
+        return RS_OK;
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability or astability: %s is not available for rk sdirk2 (its "
-                        "R(z) has coefficients in Q(sqrt 2); only those three are decided over Q(sqrt 2))", n);
+                        "expected charpoly, stability, radius or astability: %s is not available for rk sdirk2 "
+                        "(its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
+}
+
+/* p = p0 + sqrt(d) p1 of the scheme, p0 and p1 in the scheme's zctx
+ * without sqrt(d) */
+typedef struct {
+    fmpz_mpoly_t p0, p1;
+    slong degree;
+} qd_cp_t;
+
+static int qd_cp_get(qd_cp_t *P, rs_run_t *run, const rs_request_t *q)
+{
+    const rs_scheme_struct *s = run->sym;
+    rs_charpoly_t cp;
+    int r;
+    fmpz_mpoly_init(P->p0, s->zctx);
+    fmpz_mpoly_init(P->p1, s->zctx);
+    P->degree = 0;
+    if (!run->have_sym || s->sqrt_d <= 0)
+        return rs_req_error(run, q, q->text, RS_ERR_INTERNAL, "no scheme over Q(sqrt d) for %s", run->m->qd->tableau);
+    rs_charpoly_init(cp, s);
+    r = rs_charpoly_compute(cp, s, run->err);
+    if (r != RS_OK) r = rs_req_relocate(run, q, r, "charpoly");
+    if (r == RS_OK) {
+        rs_charpoly_coeff(P->p0, cp->p, 0, s->sqrt_var, s->zctx);
+        rs_charpoly_coeff(P->p1, cp->p, 1, s->sqrt_var, s->zctx);
+        P->degree = cp->degree;
+    }
+    rs_charpoly_clear(cp, s);
+    return r;
+}
+
+static void qd_cp_clear(qd_cp_t *P, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_clear(P->p0, s->zctx);
+    fmpz_mpoly_clear(P->p1, s->zctx);
+}
+
+/* the coefficient of lambda^k of P as a polynomial in the one parameter
+ * par over Q(sqrt d); 0 when another parameter appears */
+static int qd_cp_coeff_uni(rs_qdpoly_t out, const qd_cp_t *P, slong k, slong par, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t c;
+    ulong *ex = flint_malloc(s->nvars * sizeof(ulong));
+    fmpq_t v;
+    slong h, i, j;
+    int ok = 1;
+    fmpz_mpoly_init(c, s->zctx);
+    fmpq_init(v);
+    fmpq_poly_zero(out->p0);
+    fmpq_poly_zero(out->p1);
+    for (h = 0; h < 2; h++) {
+        rs_charpoly_coeff(c, h ? P->p1 : P->p0, k, s->lambda_var, s->zctx);
+        for (i = 0; i < fmpz_mpoly_length(c, s->zctx); i++) {
+            fmpz_mpoly_get_term_exp_ui(ex, c, i, s->zctx);
+            for (j = 0; j < s->nvars; j++)
+                if (j != par && j != s->lambda_var && ex[j] != 0) ok = 0;
+            fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(v), c, i, s->zctx);
+            fmpz_one(fmpq_denref(v));
+            fmpq_poly_set_coeff_fmpq(h ? out->p1 : out->p0, par >= 0 ? (slong) ex[par] : 0, v);
+        }
+    }
+    fmpz_mpoly_clear(c, s->zctx);
+    fmpq_clear(v);
+    flint_free(ex);
+    return ok;
+}
+
+/* the only parameter p depends on, -1 for none, -2 for several */
+static slong qd_cp_param(const qd_cp_t *P, const rs_scheme_struct *s)
+{
+    slong j, par = -1;
+    for (j = 0; j < s->lambda_var; j++)
+        if (fmpz_mpoly_degree_si(P->p0, j, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, j, s->zctx) > 0)
+            par = par == -1 ? j : -2;
+    return par;
+}
+
+/* Dahlquist's test equation: the case's only subsystem, one state y' = F,
+ * nothing else (then p = D lambda - N with R = N/D) */
+int rs_an_qd_test_equation(const rs_case_struct *c)
+{
+    return c->nsubs == 1 && c->subs[0].nstates == 1 && c->subs[0].ndeqs == 1 && c->subs[0].deqs[0].order == 1
+           && c->neqs == 0 && c->charexpr == NULL && c->nrec == 0;
 }
 
 /* R(k t) = N/D in the parameter t: *par its index in the case */
@@ -55,93 +158,91 @@ static void qd_r_clear(qd_r_t *R)
     rs_qdpoly_clear(R->D);
 }
 
-/* z = H*F from the stand-in's p = a1 lambda + a0 (z = -(a0 + a1)/a1), which
- * must be k t for one parameter t and a rational k != 0; then N, D composed
- * with z = k t and checked coprime (their norms are) */
+/* R = N/D read from p = a1 lambda + a0 of the test equation (D = a1/a1(0),
+ * N = -a0/a1(0): D(0) = 1 as the tableau's), z = k t with k from N's
+ * linear coefficient; then the tableau's R composed with z = k t must be
+ * the same (two derivations: the stage equations' determinant and
+ * methods.c's R = 1 + z b^T (I - zA)^-1 1; exit 3 when they differ) */
 static int qd_r_get(qd_r_t *R, rs_run_t *run, const rs_request_t *q)
 {
     const rs_scheme_struct *s = run->sym;
     const rs_model_qd_struct *qd = run->m->qd;
-    rs_charpoly_t cp;
-    fmpz_mpoly_t a0, a1;
-    fmpz_t c;
+    qd_cp_t P;
+    rs_qdpoly_t A1, A0, Nt, Dt;
+    rs_qd_t c0, inv, t1, n1;
     fmpq_poly_t nn, nd, g;
-    slong j, var = -1;
-    int r = RS_OK;
-    if (!run->have_sym) return rs_req_error(run, q, q->text, RS_ERR_INTERNAL, "no scheme for %s", qd->tableau);
-    rs_charpoly_init(cp, s);
-    fmpz_mpoly_init(a0, s->zctx);
-    fmpz_mpoly_init(a1, s->zctx);
-    fmpz_init(c);
-    r = rs_charpoly_compute(cp, s, run->err);
-    if (r != RS_OK) r = rs_req_relocate(run, q, r, "charpoly");
-    if (r == RS_OK && cp->degree != 1) r = RS_ERR_INPUT;
+    slong par = -1, k;
+    int r;
+    r = qd_cp_get(&P, run, q);
+    rs_qdpoly_init(A1); rs_qdpoly_init(A0); rs_qdpoly_init(Nt); rs_qdpoly_init(Dt);
+    rs_qd_init(c0); rs_qd_init(inv); rs_qd_init(t1); rs_qd_init(n1);
     if (r == RS_OK) {
-        rs_charpoly_coeff(a1, cp->p, 1, s->lambda_var, s->zctx);
-        rs_charpoly_coeff(a0, cp->p, 0, s->lambda_var, s->zctx);
-        fmpz_mpoly_add(a0, a0, a1, s->zctx);   /* -z a1 */
-        if (!fmpz_mpoly_is_fmpz(a1, s->zctx) || fmpz_mpoly_length(a0, s->zctx) != 1
-            || fmpz_mpoly_total_degree_si(a0, s->zctx) != 1)
-            r = RS_ERR_INPUT;
+        par = qd_cp_param(&P, s);
+        if (!rs_an_qd_test_equation(run->c) || P.degree != 1 || par < 0 || !qd_cp_coeff_uni(A1, &P, 1, par, s)
+            || !qd_cp_coeff_uni(A0, &P, 0, par, s))
+            r = rs_req_error(run, q, q->text, RS_ERR_INPUT,
+                             "expected y' = F*y with H*F = k*NAME for one parameter NAME (rk %s is analysed on "
+                             "Dahlquist's test equation only)", qd->tableau);
     }
     if (r == RS_OK) {
-        for (j = 0; j < s->nvars; j++)
-            if (fmpz_mpoly_degree_si(a0, j, s->zctx) == 1) var = j;
-        R->par = var >= 0 && var != s->lambda_var ? rs_case_param_index(run->c, s->vars[var]) : -1;
-        if (R->par < 0) r = RS_ERR_INPUT;
+        R->par = rs_case_param_index(run->c, s->vars[par]);
+        R->d = qd->d;
+        rs_qdpoly_get_coeff(c0, A1, 0);
+        if (rs_qd_is_zero(c0)) r = RS_ERR_INCONSISTENT;
     }
     if (r == RS_OK) {
-        fmpz_mpoly_get_term_coeff_fmpz(c, a0, 0, s->zctx);
-        fmpz_neg(c, c);
-        {
-            fmpz_t den;
-            fmpz_init(den);
-            fmpz_mpoly_get_fmpz(den, a1, s->zctx);
-            fmpq_set_fmpz_frac(R->k, c, den);   /* a1 != 0: p has degree 1 */
-            fmpz_clear(den);
+        rs_qd_inv(inv, c0, R->d);
+        for (k = 0; k <= rs_qdpoly_degree(A1) || k <= rs_qdpoly_degree(A0); k++) {
+            rs_qdpoly_get_coeff(t1, A1, k);
+            rs_qd_mul(t1, t1, inv, R->d);
+            rs_qdpoly_set_coeff(R->D, k, t1);
+            rs_qdpoly_get_coeff(t1, A0, k);
+            rs_qd_mul(t1, t1, inv, R->d);
+            fmpq_neg(t1->x, t1->x);
+            fmpq_neg(t1->y, t1->y);
+            rs_qdpoly_set_coeff(R->N, k, t1);
         }
+        /* k = N'(0)/N_tab'(0), rational */
+        fmpq_poly_get_coeff_fmpq(n1->x, qd->n0, 1);
+        fmpq_poly_get_coeff_fmpq(n1->y, qd->n1, 1);
+        rs_qdpoly_get_coeff(t1, R->N, 1);
+        if (rs_qd_is_zero(n1) || rs_qd_is_zero(t1)) r = RS_ERR_INCONSISTENT;
     }
-    if (r == RS_ERR_INPUT)
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT,
-                         "expected y' = F*y with H*F = k*NAME for one parameter NAME (rk %s is analysed on "
-                         "Dahlquist's test equation only)", qd->tableau);
-    fmpz_mpoly_clear(a0, s->zctx);
-    fmpz_mpoly_clear(a1, s->zctx);
-    fmpz_clear(c);
-    rs_charpoly_clear(cp, s);
-    if (r != RS_OK) return r;
-    R->d = qd->d;
-    fmpq_poly_rescale(R->N->p0, qd->n0, R->k);
-    fmpq_poly_rescale(R->N->p1, qd->n1, R->k);
-    fmpq_poly_rescale(R->D->p0, qd->d0, R->k);
-    fmpq_poly_rescale(R->D->p1, qd->d1, R->k);
-    fmpq_poly_init(nn);
-    fmpq_poly_init(nd);
-    fmpq_poly_init(g);
-    rs_qdpoly_norm(nn, R->N, R->d);
-    rs_qdpoly_norm(nd, R->D, R->d);
-    fmpq_poly_gcd(g, nn, nd);
-    if (fmpq_poly_degree(g) > 0)   /* a common root of N and D is one of their norms */
-        r = rs_req_error(run, q, q->text, RS_ERR_INPUT,
-                         "%s: N and D of R may share a root (their norms do); not supported", qd->tableau);
-    fmpq_poly_clear(nn);
-    fmpq_poly_clear(nd);
-    fmpq_poly_clear(g);
+    if (r == RS_OK) {
+        rs_qd_inv(inv, n1, R->d);
+        rs_qd_mul(t1, t1, inv, R->d);
+        if (!fmpq_is_zero(t1->y)) r = RS_ERR_INCONSISTENT;
+        fmpq_set(R->k, t1->x);
+    }
+    if (r == RS_OK) {
+        fmpq_poly_rescale(Nt->p0, qd->n0, R->k);
+        fmpq_poly_rescale(Nt->p1, qd->n1, R->k);
+        fmpq_poly_rescale(Dt->p0, qd->d0, R->k);
+        fmpq_poly_rescale(Dt->p1, qd->d1, R->k);
+        if (!rs_qdpoly_equal(Nt, R->N) || !rs_qdpoly_equal(Dt, R->D)) r = RS_ERR_INCONSISTENT;
+    }
+    if (r == RS_ERR_INCONSISTENT)
+        r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT,
+                         "%s: R = N/D read from the stage equations' characteristic polynomial differs from the "
+                         "tableau's stability function (internal inconsistency)", qd->tableau);
+    if (r == RS_OK) {
+        fmpq_poly_init(nn);
+        fmpq_poly_init(nd);
+        fmpq_poly_init(g);
+        rs_qdpoly_norm(nn, R->N, R->d);
+        rs_qdpoly_norm(nd, R->D, R->d);
+        fmpq_poly_gcd(g, nn, nd);
+        if (fmpq_poly_degree(g) > 0)   /* a common root of N and D is one of their norms */
+            r = rs_req_error(run, q, q->text, RS_ERR_INPUT,
+                             "%s: N and D of R may share a root (their norms do); not supported", qd->tableau);
+        fmpq_poly_clear(nn);
+        fmpq_poly_clear(nd);
+        fmpq_poly_clear(g);
+    }
+    rs_qdpoly_clear(A1); rs_qdpoly_clear(A0); rs_qdpoly_clear(Nt); rs_qdpoly_clear(Dt);
+    rs_qd_clear(c0); rs_qd_clear(inv); rs_qd_clear(t1); rs_qd_clear(n1);
+    qd_cp_clear(&P, s);
     return r;
-}
-
-static json_t *json_str_free(char *s)
-{
-    json_t *j = json_string(s);
-    flint_free(s);
-    return j;
-}
-
-static char *over_str(slong d)
-{
-    char *s = flint_malloc(40);
-    snprintf(s, 40, "Q(sqrt %ld)", (long) d);
-    return s;
 }
 
 /* "(D)*lambda - (N)" in the parameter's name */
@@ -174,11 +275,341 @@ static void qd_common(json_t *o, const qd_r_t *R, rs_run_t *run)
     flint_free(z);
 }
 
+/* ---- any scheme over Q(sqrt d): p = p0 + sqrt(d) p1 ---- */
+
+/* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of the scheme without sqrt(d)) */
+static char *qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s)
+{
+    char *x = rs_scheme_zpoly_str(a0, s), *y = rs_scheme_zpoly_str(a1, s), *out;
+    size_t len = strlen(x) + strlen(y) + 48;
+    out = flint_malloc(len);
+    if (fmpz_mpoly_is_zero(a1, s->zctx)) snprintf(out, len, "%s", x);
+    else if (fmpz_mpoly_is_zero(a0, s->zctx)) snprintf(out, len, "sqrt(%ld)*(%s)", (long) s->sqrt_d, y);
+    else snprintf(out, len, "%s + sqrt(%ld)*(%s)", x, (long) s->sqrt_d, y);
+    flint_free(x);
+    flint_free(y);
+    return out;
+}
+
+/* the set value of parameter k (complex: im), 0 when it has none */
+static int param_value(fmpq_t re, fmpq_t im, const rs_case_struct *c, slong k)
+{
+    slong j;
+    const char *name = c->params[k].name;
+    fmpq_zero(re);
+    fmpq_zero(im);
+    for (j = 0; j < c->nsets; j++)
+        if (strcmp(c->sets[j].name, name) == 0) { fmpq_set(re, c->sets[j].value); return 1; }
+    for (j = 0; j < c->ncsets; j++)
+        if (strcmp(c->csets[j].name, name) == 0) { fmpq_set(re, c->csets[j].re); fmpq_set(im, c->csets[j].im); return 1; }
+    return 0;
+}
+
+/* parameter k has a complex set value */
+static int qd_is_cset(const rs_run_t *run, slong k)
+{
+    slong j;
+    for (j = 0; j < run->c->ncsets; j++)
+        if (strcmp(run->c->csets[j].name, run->c->params[k].name) == 0) return 1;
+    return 0;
+}
+
+/* a (no lambda, no sqrt(d)) at the set values: the real ones here, the
+ * complex ones by rs_cx_add_term (complex_poly.c) */
+static void cx_eval(fmpq_t re, fmpq_t im, const fmpz_mpoly_t a, const fmpq *vr, const rs_run_t *run,
+                    const rs_scheme_struct *s)
+{
+    slong *ex = flint_malloc(s->nvars * sizeof(slong)), i, j;
+    fmpq_mpoly_t qr, qi;
+    fmpq_t c, t;
+    fmpq_mpoly_init(qr, s->ctx);
+    fmpq_mpoly_init(qi, s->ctx);
+    fmpq_init(c);
+    fmpq_init(t);
+    for (i = 0; i < fmpz_mpoly_length(a, s->zctx); i++) {
+        fmpz_mpoly_get_term_coeff_fmpz(fmpq_numref(c), a, i, s->zctx);
+        fmpz_one(fmpq_denref(c));
+        fmpz_mpoly_get_term_exp_si(ex, a, i, s->zctx);
+        for (j = 0; j < s->lambda_var; j++)
+            if (ex[j] > 0 && !qd_is_cset(run, j)) {
+                fmpq_pow_si(t, vr + j, ex[j]);
+                fmpq_mul(c, c, t);
+                ex[j] = 0;
+            }
+        rs_cx_add_term(qr, qi, c, 0, ex, run, s);
+    }
+    fmpq_mpoly_sort_terms(qr, s->ctx); fmpq_mpoly_combine_like_terms(qr, s->ctx);
+    fmpq_mpoly_sort_terms(qi, s->ctx); fmpq_mpoly_combine_like_terms(qi, s->ctx);
+    fmpq_mpoly_get_fmpq(re, qr, s->ctx);   /* constants: every parameter of p is set */
+    fmpq_mpoly_get_fmpq(im, qi, s->ctx);
+    fmpq_mpoly_clear(qr, s->ctx);
+    fmpq_mpoly_clear(qi, s->ctx);
+    fmpq_clear(c);
+    fmpq_clear(t);
+    flint_free(ex);
+}
+
+/* p at the set values: c[0..*n] over Q(sqrt d)(i), c[*n] != 0 (*n = -1:
+ * p vanishes there); an input error when a parameter of p has no value */
+static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run, const rs_request_t *q)
+{
+    const rs_scheme_struct *s = run->sym;
+    const rs_case_struct *cs = run->c;
+    fmpq *vr = _fmpq_vec_init(s->nvars), *vi = _fmpq_vec_init(s->nvars);   /* vi: only whether set */
+    fmpz_mpoly_t a;
+    slong k, h;
+    int r = RS_OK;
+    *c = NULL;
+    *n = -1;
+    for (k = 0; k < s->lambda_var && r == RS_OK; k++)
+        if (!param_value(vr + k, vi + k, cs, k)
+            && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
+            r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected %s set to a number (set NAME = VALUE or --set): "
+                             "over Q(sqrt 2) this analysis decides one point", cs->params[k].name);
+    if (r == RS_OK) {
+        fmpz_mpoly_init(a, s->zctx);
+        *c = rs_qdc_vec_init(P->degree + 1);
+        for (k = 0; k <= P->degree; k++)
+            for (h = 0; h < 2; h++) {
+                rs_charpoly_coeff(a, h ? P->p1 : P->p0, k, s->lambda_var, s->zctx);
+                cx_eval(h ? (*c)[k].re->y : (*c)[k].re->x, h ? (*c)[k].im->y : (*c)[k].im->x, a, vr, run, s);
+            }
+        for (*n = P->degree; *n >= 0 && rs_qd_is_zero((*c)[*n].re) && rs_qd_is_zero((*c)[*n].im); (*n)--) ;
+        fmpz_mpoly_clear(a, s->zctx);
+    }
+    _fmpq_vec_clear(vr, s->nvars);
+    _fmpq_vec_clear(vi, s->nvars);
+    return r;
+}
+
+/* the substituted p: "(c0) + (c1)*lambda + ..." with ck = x + y*sqrt(d) [+ i*(...)] */
+static char *qdc_poly_str(const rs_qdc_struct *c, slong n, slong d)
+{
+    char *out = flint_malloc(1), *re, *im, *t;
+    slong k;
+    out[0] = '\0';
+    for (k = 0; k <= n; k++) {
+        size_t len;
+        if (rs_qd_is_zero(c[k].re) && rs_qd_is_zero(c[k].im)) continue;
+        re = rs_qd_get_str(c[k].re, d);
+        im = rs_qd_get_str(c[k].im, d);
+        len = strlen(out) + strlen(re) + strlen(im) + 64;
+        t = flint_malloc(len);
+        if (rs_qd_is_zero(c[k].im)) snprintf(t, len, "%s%s(%s)", out, out[0] ? " + " : "", re);
+        else snprintf(t, len, "%s%s(%s + i*(%s))", out, out[0] ? " + " : "", re, im);
+        if (k > 0) {
+            size_t l2 = strlen(t) + 32;
+            t = flint_realloc(t, l2);
+            if (k == 1) strcat(t, "*lambda");
+            else snprintf(t + strlen(t), 32, "*lambda^%ld", (long) k);
+        }
+        flint_free(out);
+        flint_free(re);
+        flint_free(im);
+        out = t;
+    }
+    return out;
+}
+
+/* the set values of p's parameters as JSON */
+static json_t *qd_substituted(const qd_cp_t *P, rs_run_t *run)
+{
+    const rs_scheme_struct *s = run->sym;
+    json_t *sub = json_object();
+    fmpq_t re, im;
+    slong k;
+    fmpq_init(re);
+    fmpq_init(im);
+    for (k = 0; k < s->lambda_var; k++) {
+        if (!param_value(re, im, run->c, k)) continue;
+        if (fmpz_mpoly_degree_si(P->p0, k, s->zctx) <= 0 && fmpz_mpoly_degree_si(P->p1, k, s->zctx) <= 0) continue;
+        if (fmpq_is_zero(im)) json_object_set_new(sub, run->c->params[k].name, rs_json_fmpq(re));
+        else {
+            char *v = rs_complex_str(re, im);
+            json_object_set_new(sub, run->c->params[k].name, json_string(v));
+            free(v);
+        }
+    }
+    fmpq_clear(re);
+    fmpq_clear(im);
+    return sub;
+}
+
+static void qd_generic_common(json_t *o, const qd_cp_t *P, rs_run_t *run)
+{
+    char m[80];
+    snprintf(m, sizeof m, "rk %s", run->m->qd->tableau);
+    json_object_set_new(o, "over", json_str_free(over_str(run->sym->sqrt_d)));
+    json_object_set_new(o, "method", json_string(m));
+    json_object_set_new(o, "p0", json_str_free(rs_scheme_zpoly_str(P->p0, run->sym)));
+    json_object_set_new(o, "p1", json_str_free(rs_scheme_zpoly_str(P->p1, run->sym)));
+}
+
+static int qd_generic_charpoly(rs_run_t *run, const rs_an_req_t *req, const qd_cp_t *P)
+{
+    const rs_scheme_struct *s = run->sym;
+    json_t *o = json_object(), *co = json_array();
+    fmpz_mpoly_t a0, a1;
+    slong k;
+    fmpz_mpoly_init(a0, s->zctx);
+    fmpz_mpoly_init(a1, s->zctx);
+    (void) req;
+    for (k = 0; k <= P->degree; k++) {
+        rs_charpoly_coeff(a0, P->p0, k, s->lambda_var, s->zctx);
+        rs_charpoly_coeff(a1, P->p1, k, s->lambda_var, s->zctx);
+        json_array_append_new(co, json_str_free(qd_mpoly_str(a0, a1, s)));
+    }
+    json_object_set_new(o, "analysis", json_string("charpoly"));
+    json_object_set_new(o, "var", json_string("lambda"));
+    json_object_set_new(o, "degree", json_integer(P->degree));
+    json_object_set_new(o, "coeffs", co);
+    json_object_set_new(o, "poly", json_str_free(qd_mpoly_str(P->p0, P->p1, s)));
+    qd_generic_common(o, P, run);
+    json_object_set_new(o, "substituted", json_object());
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    fmpz_mpoly_clear(a0, s->zctx);
+    fmpz_mpoly_clear(a1, s->zctx);
+    return RS_OK;
+}
+
+/* stability at the set values: Schur-Cohn over Q(sqrt d)(i) with exact
+ * signs and the certified Arb roots; they must agree (exit 3) */
+static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_cp_t *P)
+{
+    const rs_request_t *q = req->q;
+    rs_qdc_struct *c;
+    slong n, d = run->sym->sqrt_d;
+    int r = qd_cp_at(&c, &n, P, run, q), sc = 0, ar = -1;
+    const char *status;
+    json_t *o;
+    if (r != RS_OK) return r;
+    if (n >= 1) {
+        sc = rs_qdc_schur_stable(c, n, d);
+        ar = rs_qdc_roots_inside(c, n, d);
+        if ((sc == 1 && ar == 0) || (sc == 0 && ar == 1)) {
+            rs_qdc_vec_clear(c, P->degree + 1);
+            return rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT,
+                                "stability over Q(sqrt d): Schur-Cohn over Q(sqrt d)(i) and the certified roots "
+                                "disagree%s", "");
+        }
+    }
+    /* n < 1: p is constant there (the new step is not determined): singular */
+    status = n < 1 ? "singular" : sc == 1 ? "stable" : ar == 0 ? "unstable" : "undecided";
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("stability"));
+    json_object_set_new(o, "status", json_string(status));
+    if (n >= 1) json_object_set_new(o, "poly", json_str_free(qdc_poly_str(c, n, d)));
+    json_object_set_new(o, "degree", json_integer(n < 0 ? 0 : n));
+    qd_generic_common(o, P, run);
+    if (n >= 1) {
+        json_object_set_new(o, "schur_cohn_stable", json_boolean(sc == 1));
+        json_object_set_new(o, "roots_certified", json_string(ar == 1 ? "all inside" : ar == 0 ? "one outside"
+                                                              : "not separated from the circle"));
+        json_object_set_new(o, "evidence", json_pack("[s,s]", "Schur-Cohn over Q(sqrt d)(i), exact signs",
+                                                     "certified roots (Arb, sqrt d a ball)"));
+    }
+    if (strcmp(status, "undecided") == 0)
+        json_object_set_new(o, "note", json_string("not strictly stable (Schur-Cohn); a root on or too near the "
+                                                   "unit circle: marginal and unstable are not told apart over "
+                                                   "Q(sqrt d)"));
+    json_object_set_new(o, "substituted", qd_substituted(P, run));
+    json_object_set_new(o, "decided_by", json_string("exact"));
+    json_array_append_new(run->results, o);
+    rs_qdc_vec_clear(c, P->degree + 1);
+    return RS_OK;
+}
+
+int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_request_t *q = req->q;
+    const rs_optval_t *dg = rs_an_opt(req, "digits");
+    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, n = -1, k, prec, d;
+    rs_qdc_struct *c = NULL;
+    qd_cp_t P;
+    int r = qd_cp_get(&P, run, q), ok = 0, sc = 0;
+    d = run->sym->sqrt_d;
+    if (r == RS_OK) r = qd_cp_at(&c, &n, &P, run, q);
+    if (r == RS_OK && n < 1)
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "radius: p has no root at these values%s", "");
+    if (r == RS_OK) {
+        rs_radius_t rr;
+        acb_ptr z = _acb_vec_init(n);
+        rs_radius_init(rr);
+        for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec && !ok; prec *= 2) {
+            ok = rs_qdc_roots(z, c, n, d, prec);
+            for (k = 0; ok && k < n; k++) ok = acb_rel_accuracy_bits(z + k) >= 3.33 * digits;
+            if (ok) {
+                rs_radius_set_rho(rr, z, n, prec);
+                rr->prec = prec;
+                rr->digits = digits;
+            }
+        }
+        if (!ok) {
+            r = rs_req_error(run, q, q->text, RS_ERR_LIMIT, "radius over Q(sqrt d): the roots are not isolated up "
+                             "to max-prec (a repeated root?)%s", "");
+        } else {
+            json_t *o = json_object(), *roots = json_array();
+            const char *nv = rs_radius_verdict(rr);
+            sc = rs_qdc_schur_stable(c, n, d);
+            qd_generic_common(o, &P, run);
+            json_object_set_new(o, "analysis", json_string("radius"));
+            json_object_set_new(o, "method", json_string("the roots of p over Q(sqrt d)(i) as certified isolated "
+                                                         "balls (acb_poly_find_roots, validated; sqrt d a ball)"));
+            rs_json_radius(o, rr, digits);
+            for (k = 0; k < n; k++) {
+                json_t *zj = rs_json_acb(z + k, digits);
+                arb_t ab;
+                arb_init(ab);
+                acb_abs(ab, z + k, rr->prec);
+                json_object_set_new(zj, "abs", rs_json_arb(ab, digits));
+                arb_clear(ab);
+                json_array_append_new(roots, zj);
+            }
+            json_object_set_new(o, "roots", roots);
+            json_object_set_new(o, "exact_status", json_string(sc == 1 ? "stable" : "not strictly stable"));
+            json_object_set_new(o, "verdict_from_radius", json_string(strcmp(nv, "undecided") != 0 ? nv :
+                "undecided numerically (the interval contains 1): the exact side decides"));
+            /* certified comparisons only: upper < 1 needs Schur-Cohn stable, lower > 1 needs it not */
+            json_object_set_new(o, "consistent", json_boolean(!((strcmp(nv, "stable") == 0 && sc != 1)
+                                                                || (strcmp(nv, "unstable") == 0 && sc == 1))));
+            if ((strcmp(nv, "stable") == 0 && sc != 1) || (strcmp(nv, "unstable") == 0 && sc == 1)) {
+                json_decref(o);
+                r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT, "radius over Q(sqrt d): the certified "
+                                 "radius and Schur-Cohn disagree%s", "");
+            } else {
+                json_object_set_new(o, "substituted", qd_substituted(&P, run));
+                json_object_set_new(o, "decided_by", json_string("numeric"));
+                json_array_append_new(run->results, o);
+            }
+        }
+        _acb_vec_clear(z, n);
+        rs_radius_clear(rr);
+    }
+    if (c != NULL) rs_qdc_vec_clear(c, P.degree + 1);
+    qd_cp_clear(&P, run->sym);
+    return r;
+}
+
+/* the test equation's path (R = N/D) when the case is one, else the generic one */
+static int qd_onestep(rs_run_t *run, const rs_request_t *q, qd_cp_t *P, int *r)
+{
+    *r = qd_cp_get(P, run, q);
+    return *r == RS_OK && rs_an_qd_test_equation(run->c) && P->degree == 1 && qd_cp_param(P, run->sym) >= 0;
+}
+
 int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
 {
     qd_r_t R;
     json_t *o;
     int r;
+    {
+        qd_cp_t P;
+        int one = qd_onestep(run, req->q, &P, &r);
+        if (r == RS_OK && !one) r = qd_generic_charpoly(run, req, &P);
+        qd_cp_clear(&P, run->sym);
+        if (r != RS_OK || !one) return r;
+    }
     qd_r_init(&R);
     r = qd_r_get(&R, run, req->q);
     if (r == RS_OK) {
@@ -216,6 +647,13 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
     fmpq_t zr, zi;
     slong k;
     int r, found = 0;
+    {
+        qd_cp_t P;
+        int one = qd_onestep(run, q, &P, &r);
+        if (r == RS_OK && !one) r = qd_generic_stability(run, req, &P);
+        qd_cp_clear(&P, run->sym);
+        if (r != RS_OK || !one) return r;
+    }
     qd_r_init(&R);
     fmpq_init(zr);
     fmpq_init(zi);

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <flint/fmpz_vec.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "lower/recurrence.h"
 #include "recstab/cosim.h"
 #include "recstab/jury.h"
@@ -422,6 +423,7 @@ int rs_an_numeric_stability(rs_run_t *run, const rs_an_req_t *req)
 
 int rs_an_radius(rs_run_t *run, const rs_an_req_t *req)
 {
+    if (run->m->qd != NULL) return rs_an_qd_radius(run, req);   /* over Q(sqrt d) (an_qd.c) */
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_radius(run, req);
     return radius_real(run, req);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "util/polyfmt.h"
 
 void rs_options_default(rs_options_t *opt)
@@ -253,9 +254,11 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
     if (run->m->kind != RS_MODEL_EQUATIONS) {
         names[n++] = "stability";
     } else if (run->m->qd != NULL) {
-        /* R over Q(sqrt d) (an_qd.c): its polynomial, the point when set, else the region */
+        /* over Q(sqrt d) (an_qd.c): its polynomial, the point when set, else the test
+         * equation's region */
         names[n++] = "charpoly";
-        names[n++] = c->nsets + c->ncsets > 0 ? "stability" : "astability";
+        if (c->nsets + c->ncsets > 0) names[n++] = "stability";
+        else if (rs_an_qd_test_equation(c)) names[n++] = "astability";
     } else if (c->ncsets > 0) {
         /* complex set values: the polynomial and its verdict over Q(i) */
         names[n++] = "charpoly";
@@ -374,7 +377,7 @@ static json_t *case_doc(rs_run_t *run, const rs_request_t *defaults, slong ndefa
         for (i = 0; i < ndefaults; i++) json_array_append_new(arr, json_string(defaults[i].text));
         json_object_set_new(d, "default_analyses", arr);
     }
-    /* qd: the scheme is the stand-in's (model.h), not the method's */
+    /* qd: the scheme has sqrt(d) as a variable (an_qd.c prints p over Q(sqrt d)) */
     if (run->opt->with_scheme && run->m->kind == RS_MODEL_EQUATIONS && run->m->qd == NULL) {
         json_t *sc = scheme_json(run);
         if (sc == NULL) {

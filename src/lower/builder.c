@@ -170,17 +170,41 @@ static rs_expr_t *rat(const fmpq_t q, pos_t p)
     return op(RS_EXPR_DIV, e, num(fmpz_get_si(fmpq_denref(q)), p), p);
 }
 
-/* sum c[i]*t[i] over the nonzero c[i] (unit coefficients left out, signs as + and -); the
- * terms t[i] are consumed; NULL when every c[i] is zero */
-static rs_expr_t *lincomb(const fmpq *c, rs_expr_t **t, slong n, pos_t p)
+/* sqrt(d) as a tree: the exact constant the scheme evaluates as its
+ * variable s with s^2 = d (lower/scheme.c) */
+static rs_expr_t *sqrt_tree(slong d, pos_t p)
+{
+    rs_expr_t *e = rs_expr_new_name("sqrt", 0, 0, p.file, p.line, p.col);
+    e->kind = RS_EXPR_CALL;
+    e->a = num(d, p);
+    return e;
+}
+
+/* x + y sqrt(d), y != 0, as a tree "(x + y*sqrt(d))" (x = 0: "y*sqrt(d)", "(-y*sqrt(d))") */
+static rs_expr_t *qd_tree(const fmpq_t x, const fmpq_t y, slong d, pos_t p)
+{
+    rs_expr_t *e = sqrt_tree(d, p);
+    if (!fmpq_is_one(y) && !fmpq_is_pm1(y)) e = op(RS_EXPR_MUL, rat(y, p), e, p);
+    if (fmpq_is_zero(x)) return fmpq_sgn(y) < 0 ? P(rs_expr_new_op(RS_EXPR_NEG, e, NULL, p.file, p.line, p.col)) : e;
+    return P(op(fmpq_sgn(y) < 0 ? RS_EXPR_SUB : RS_EXPR_ADD,
+                fmpq_sgn(x) < 0 ? rs_expr_new_op(RS_EXPR_NEG, rat(x, p), NULL, p.file, p.line, p.col) : rat(x, p),
+                e, p));
+}
+
+/* sum (c[i] + c1[i] sqrt(d))*t[i] over the nonzero coefficients (c1 NULL:
+ * rational; unit coefficients left out, signs as + and -); the terms t[i]
+ * are consumed; NULL when every coefficient is zero */
+static rs_expr_t *lincomb(const fmpq *c, const fmpq *c1, slong d, rs_expr_t **t, slong n, pos_t p)
 {
     rs_expr_t *e = NULL, *x;
     slong i;
     for (i = 0; i < n; i++) {
-        if (fmpq_is_zero(c + i)) { rs_expr_free(t[i]); continue; }
-        x = fmpq_is_one(c + i) || fmpq_is_pm1(c + i) ? t[i] : op(RS_EXPR_MUL, rat(c + i, p), t[i], p);
-        if (e == NULL) e = fmpq_sgn(c + i) < 0 ? rs_expr_new_op(RS_EXPR_NEG, x, NULL, p.file, p.line, p.col) : x;
-        else e = op(fmpq_sgn(c + i) < 0 ? RS_EXPR_SUB : RS_EXPR_ADD, e, x, p);
+        int irr = c1 != NULL && !fmpq_is_zero(c1 + i), neg = !irr && fmpq_sgn(c + i) < 0;
+        if (fmpq_is_zero(c + i) && !irr) { rs_expr_free(t[i]); continue; }
+        if (irr) x = op(RS_EXPR_MUL, qd_tree(c + i, c1 + i, d, p), t[i], p);
+        else x = fmpq_is_one(c + i) || fmpq_is_pm1(c + i) ? t[i] : op(RS_EXPR_MUL, rat(c + i, p), t[i], p);
+        if (e == NULL) e = neg ? rs_expr_new_op(RS_EXPR_NEG, x, NULL, p.file, p.line, p.col) : x;
+        else e = op(neg ? RS_EXPR_SUB : RS_EXPR_ADD, e, x, p);
     }
     return e;
 }
@@ -230,7 +254,7 @@ static rs_expr_t *own(const gen_t *g, slong a, const char *x, slong j, pos_t at)
         slong l;
         pos_t p = pos_of(&s->intloc);
         for (l = 0; l < t->s; l++) k[l] = stage_var(x, l + 1, j, g->K, p);
-        sum = lincomb(t->A + g->stage * t->s, k, t->s, p);
+        sum = lincomb(t->A + g->stage * t->s, t->A1 ? t->A1 + g->stage * t->s : NULL, t->d, k, t->s, p);
         if (sum == NULL) return seq(x, 0, at);
         return P(op(RS_EXPR_ADD, seq(x, 0, p), op(RS_EXPR_MUL, P(copy(s->step)), P(sum), p), p));
     }
@@ -255,11 +279,13 @@ static int same_method(const gen_t *g, slong a, slong b)
     slong i;
     if (g->kind != 0 || strcmp(s->method, t->method) != 0 || !rs_expr_equal(s->step, t->step)) return 0;
     if (is_alpha(s)) return rs_expr_equal(s->arg1, t->arg1);
-    if (g->tab[a].s != g->tab[b].s) return 0;
+    if (g->tab[a].s != g->tab[b].s || g->tab[a].d != g->tab[b].d) return 0;
     for (i = 0; i < g->tab[a].s * g->tab[a].s; i++)
-        if (!fmpq_equal(g->tab[a].A + i, g->tab[b].A + i)) return 0;
+        if (!fmpq_equal(g->tab[a].A + i, g->tab[b].A + i)
+            || (g->tab[a].d && !fmpq_equal(g->tab[a].A1 + i, g->tab[b].A1 + i))) return 0;
     for (i = 0; i < g->tab[a].s; i++)
-        if (!fmpq_equal(g->tab[a].b + i, g->tab[b].b + i)) return 0;
+        if (!fmpq_equal(g->tab[a].b + i, g->tab[b].b + i)
+            || (g->tab[a].d && !fmpq_equal(g->tab[a].b1 + i, g->tab[b].b1 + i))) return 0;
     return 1;
 }
 
@@ -367,9 +393,15 @@ static rs_expr_t *coupled(const gen_t *g, slong a, const char *name, const rs_ex
     slong j, i;
     fmpq_init(tq);
     fmpq_one(tq);
-    if (g->stage >= 0) {   /* c_i = sum_l a_il */
+    if (g->stage >= 0) {   /* c_i = sum_l a_il (over Q(sqrt d): a tree) */
+        const rs_tableau_struct *t = &g->tab[a];
+        fmpq_t t1;
+        fmpq_init(t1);
         fmpq_zero(tq);
-        for (i = 0; i < g->tab[a].s; i++) fmpq_add(tq, tq, g->tab[a].A + g->stage * g->tab[a].s + i);
+        for (i = 0; i < t->s; i++) fmpq_add(tq, tq, t->A + g->stage * t->s + i);
+        for (i = 0; t->d && i < t->s; i++) fmpq_add(t1, t1, t->A1 + g->stage * t->s + i);
+        if (!fmpq_is_zero(t1)) tt = qd_tree(tq, t1, t->d, p);
+        fmpq_clear(t1);
     } else if (g->mix && (tt = alpha_f(s, p)) != NULL) {
         tt = P(op(RS_EXPR_SUB, num(1, p), tt, p));
     }
@@ -698,7 +730,8 @@ static void multistep_formula(rs_model_struct *mod, const gen_t *g, const rs_sub
 {
     const char *m = s->method;
     slong k = s->korder, n, i, a = s - g->c->subs;
-    fmpq *c = _fmpq_vec_init(RS_METHODS_MAX_STAGES + 2);
+    fmpq *c = _fmpq_vec_init(RS_METHODS_MAX_STAGES + 2), *c1 = NULL;   /* c + sqrt(d) c1 */
+    slong d = 0;
     rs_expr_t *t[RS_METHODS_MAX_STAGES + 2], *lhs, *rhs;
     fmpz_t D;
     fmpz_init(D);
@@ -706,6 +739,10 @@ static void multistep_formula(rs_model_struct *mod, const gen_t *g, const rs_sub
         n = g->tab[a].s;
         for (i = 0; i < n; i++) fmpq_set(c + i, g->tab[a].b + i);
         for (i = 0; i < n; i++) t[i] = stage_var(x, i + 1, j, g->K, p);
+        if ((d = g->tab[a].d) != 0) {
+            c1 = _fmpq_vec_init(n);
+            for (i = 0; i < n; i++) fmpq_set(c1 + i, g->tab[a].b1 + i);
+        }
     } else if (strcmp(m, "bdf") == 0) {
         n = k + 1;
         rs_methods_bdf(c, k);
@@ -719,19 +756,22 @@ static void multistep_formula(rs_model_struct *mod, const gen_t *g, const rs_sub
     }
     fmpz_one(D);
     for (i = 0; i < n; i++) fmpz_lcm(D, D, fmpq_denref(c + i));
+    for (i = 0; c1 != NULL && i < n; i++) fmpz_lcm(D, D, fmpq_denref(c1 + i));
     for (i = 0; i < n; i++) fmpq_mul_fmpz(c + i, c + i, D);
+    for (i = 0; c1 != NULL && i < n; i++) fmpq_mul_fmpz(c1 + i, c1 + i, D);
     if (strcmp(m, "bdf") == 0) {
-        lhs = lincomb(c, t, n, p);
+        lhs = lincomb(c, NULL, 0, t, n, p);
         rhs = op(RS_EXPR_MUL, h, DX, p);
         if (!fmpz_is_one(D)) rhs = op(RS_EXPR_MUL, num(fmpz_get_si(D), p), rhs, p);
     } else {
         lhs = op(RS_EXPR_SUB, X, seq(x, 0, p), p);
         if (!fmpz_is_one(D)) lhs = op(RS_EXPR_MUL, num(fmpz_get_si(D), p), P(lhs), p);
-        rhs = op(RS_EXPR_MUL, h, P(lincomb(c, t, n, p)), p);
+        rhs = op(RS_EXPR_MUL, h, P(lincomb(c, c1, d, t, n, p)), p);
         if (strcmp(m, "adams-bashforth") == 0 || strcmp(m, "rk") == 0) rs_expr_free(DX);
     }
     add_eq(mod, lhs, rhs, &s->intloc);
     _fmpq_vec_clear(c, RS_METHODS_MAX_STAGES + 2);
+    if (c1 != NULL) _fmpq_vec_clear(c1, n);
     fmpz_clear(D);
 }
 
@@ -840,22 +880,23 @@ static int gen_equations(gen_t *g, slong a, slong j, rs_error_t err)
     return RS_OK;
 }
 
-/* A tableau whose R is not in Q(z) (sdirk2): accepted for the test
- * equation only -- one subsystem, one state y' = F, no other equations --
- * as model.h's qd (R over Q(sqrt d)); t becomes the explicit stand-in
- * (two stages, A = 0, b = [1, 0]: R = 1 + z) from whose p = lambda - 1 - z
- * the analyses read z = H*F.  A coupled scheme would need R over Q(sqrt d)
- * inside the characteristic polynomial of the whole system: refused. */
+/* A tableau whose R is not in Q(z) (sdirk2): its stage equations are
+ * written with the exact constant sqrt(d) (qd_tree), which the scheme
+ * evaluates as a variable s reduced by s^2 = d, so the characteristic
+ * polynomial is p0 + sqrt(d) p1 (lower/scheme.c, algebra/charpoly.c) and
+ * the analyses run over Q(sqrt d) (analysis/an_qd.c).  model.h's qd records
+ * d and R = N/D of the tableau (the cross-check on the test equation).  One
+ * d per case: two different irrational fields are refused. */
 static int tableau_qd(rs_tableau_struct *t, rs_model_struct *m, const rs_subsystem_t *s, rs_error_t err)
 {
-    const rs_case_struct *c = m->c;
     rs_model_qd_struct *qd;
-    if (c->nsubs != 1 || s->nstates != 1 || s->ndeqs != 1 || s->deqs[0].order != 1 || c->neqs > 0
-        || c->charexpr != NULL || c->nrec > 0)
-        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "expected %s on one subsystem with one state y' = F*y "
-                      "and nothing else (its R(z) has coefficients in Q(sqrt 2) and is analysed exactly for the "
-                      "test equation only); a coupled scheme or a larger system with it is not supported: write "
-                      "a rational tableau inline: rk [A11, A12; A21, A22 | b1, b2]", s->tableau);
+    slong d;
+    rs_tableau_named_qd(t, s->tableau);
+    if (m->qd != NULL) {
+        if (m->qd->d == t->d) return RS_OK;
+        return err_at(err, RS_ERR_INPUT, &s->intloc, 0, "expected one irrational field per case: %s has "
+                      "entries in another Q(sqrt d) than an earlier tableau", s->tableau);
+    }
     qd = flint_calloc(1, sizeof *qd);
     fmpq_poly_init(qd->n0);
     fmpq_poly_init(qd->n1);
@@ -865,12 +906,10 @@ static int tableau_qd(rs_tableau_struct *t, rs_model_struct *m, const rs_subsyst
     qd->tableau = flint_malloc(strlen(s->tableau) + 1);
     strcpy(qd->tableau, s->tableau);
     m->qd = qd;   /* cleared with the model from here on */
-    if (!rs_methods_rk_stability_named_qd(qd->n0, qd->n1, qd->d0, qd->d1, &qd->d, s->tableau) || qd->d < 2)
+    if (!rs_methods_rk_stability_named_qd(qd->n0, qd->n1, qd->d0, qd->d1, &d, s->tableau) || d < 2 || d != t->d)
         return err_at(err, RS_ERR_INTERNAL, &s->intloc, 0, "no stability function over Q(sqrt d) for %s",
                       s->tableau);
-    rs_tableau_clear(t);
-    rs_tableau_init(t, 2);
-    fmpq_one(t->b);
+    qd->d = d;
     return RS_OK;
 }
 

@@ -128,9 +128,7 @@ char *rs_model_emit_equations(const rs_model_t m)
     if (m->qd != NULL) {
         cat(&b, "# rk ");
         cat(&b, m->qd->tableau);
-        cat(&b, ": R(z) has coefficients in Q(sqrt 2), not written as equations; below an explicit two-stage\n"
-                "# step (R = 1 + z) of the same subsystem, from which z = H*F is read; charpoly, stability and\n"
-                "# astability use R over Q(sqrt 2)\n");
+        cat(&b, ": coefficients in Q(sqrt 2), sqrt(2) exact (the analyses reduce by sqrt(2)^2 = 2)\n");
     }
     for (i = m->nuser_unknowns; i < m->nunknowns; i++) {
         cat(&b, i == m->nuser_unknowns ? "unknown " : " ");

@@ -13,12 +13,16 @@ void rs_tableau_init(rs_tableau_t t, slong s)
     t->s = s;
     t->A = _fmpq_vec_init(s * s);
     t->b = _fmpq_vec_init(s);
+    t->d = 0;
+    t->A1 = t->b1 = NULL;
 }
 
 void rs_tableau_clear(rs_tableau_t t)
 {
     _fmpq_vec_clear(t->A, t->s * t->s);
     _fmpq_vec_clear(t->b, t->s);
+    if (t->A1 != NULL) _fmpq_vec_clear(t->A1, t->s * t->s);
+    if (t->b1 != NULL) _fmpq_vec_clear(t->b1, t->s);
 }
 
 /* x + y sqrt(d): the entries of the Gauss, Radau IIA(3) and SDIRK tableaux */
@@ -303,6 +307,30 @@ int rs_tableau_named(rs_tableau_t t, const char *name)
         fmpq_init(q.x); fmpq_init(q.y);
         qd_set_str(&q, n->e[i]);
         fmpq_set(i < n->s * n->s ? t->A + i : t->b + (i - n->s * n->s), q.x);
+        fmpq_clear(q.x); fmpq_clear(q.y);
+    }
+    return 1;
+}
+
+int rs_tableau_named_qd(rs_tableau_t t, const char *name)
+{
+    const named_t *n = find_named(name);
+    slong i, ss;
+    if (n == NULL) return 0;
+    ss = n->s * n->s;
+    rs_tableau_clear(t);
+    rs_tableau_init(t, n->s);
+    t->d = n->d;
+    if (n->d != 0) {
+        t->A1 = _fmpq_vec_init(ss);
+        t->b1 = _fmpq_vec_init(n->s);
+    }
+    for (i = 0; i < ss + n->s; i++) {
+        qd_t q;
+        fmpq_init(q.x); fmpq_init(q.y);
+        qd_set_str(&q, n->e[i]);
+        fmpq_set(i < ss ? t->A + i : t->b + (i - ss), q.x);
+        if (n->d != 0) fmpq_set(i < ss ? t->A1 + i : t->b1 + (i - ss), q.y);
         fmpq_clear(q.x); fmpq_clear(q.y);
     }
     return 1;

@@ -17,10 +17,14 @@ extern "C" {
 #define RS_METHODS_MAX_STAGES 8
 #define RS_METHODS_MAX_STEPS 6
 
-/* a rational Butcher tableau with s stages: A (row-major s x s), b */
+/* a Butcher tableau with s stages: A (row-major s x s), b; rational, or
+ * over Q(sqrt d) when d > 0: the entries are then A + sqrt(d) A1, b + sqrt(d) b1
+ * (A1, b1 NULL when d = 0) */
 typedef struct {
     slong s;
     fmpq *A, *b;
+    slong d;
+    fmpq *A1, *b1;
 } rs_tableau_struct;
 typedef rs_tableau_struct rs_tableau_t[1];
 
@@ -52,6 +56,10 @@ void rs_tableau_stability(fmpq_poly_t num, fmpq_poly_t den, const rs_tableau_t t
  * not rational (t unchanged). */
 int rs_tableau_named(rs_tableau_t t, const char *name);
 
+/* the tableau of `name` exactly as written, over Q(sqrt d) when its
+ * entries are irrational (sdirk2: d = 2, gamma = 1 - sqrt(2)/2); 0 for an
+ * unknown name, else 1 */
+int rs_tableau_named_qd(rs_tableau_t t, const char *name);
 /* the realization above of R = num/den (den(0) = 1, deg num, deg den <= s) */
 void rs_tableau_realize(rs_tableau_t t, const fmpq_poly_t num, const fmpq_poly_t den);
 

@@ -462,6 +462,26 @@ static int eval_trig(lin_t *out, const rs_expr_t *e, ev_t *x)
     return RS_OK;
 }
 
+/* sqrt(d) of a model over Q(sqrt d): its variable (reduced by s^2 = d
+ * where the entries are stored) */
+static int eval_sqrt(lin_t *out, const rs_expr_t *e, ev_t *x)
+{
+    lin_t a;
+    slong k = 0;
+    int r;
+    lin_init(&a, out->ns, x->s->ctx);
+    r = eval(&a, e->a, x);
+    if (r == RS_OK) r = const_integer(&k, &a, e, x);
+    lin_clear(&a, x->s->ctx);
+    if (r != RS_OK) return r;
+    if (k != x->s->sqrt_d)
+        return rs_error_set_at(x->err, RS_ERR_INPUT, rs_expr_file(e, x->c->path), e->line, e->col,
+                               "expected sqrt(%ld) (the case's coefficients are in Q(sqrt %ld)), found another root",
+                               (long) x->s->sqrt_d, (long) x->s->sqrt_d);
+    fmpq_mpoly_gen(out->c + 0, x->s->sqrt_var, x->s->ctx);
+    return RS_OK;
+}
+
 static int eval(lin_t *out, const rs_expr_t *e, ev_t *x)
 {
     int r;
@@ -507,6 +527,8 @@ static int eval_node(lin_t *out, const rs_expr_t *e, ev_t *x)
                           "expected a shift in square brackets after '%s', as in x[n+1], found '('", e->name);
         if (strcmp(e->name, "sin") == 0 || strcmp(e->name, "cos") == 0)
             return eval_trig(out, e, x);
+        if (s->sqrt_d > 0 && strcmp(e->name, "sqrt") == 0)
+            return eval_sqrt(out, e, x);
         return err_at(x, e, RS_ERR_INPUT,
                       "the function %s(...) is not polynomial: exact analyses need polynomial entries "
                       "(a numeric `recurrence` case allows it for radius)", e->name);
@@ -639,10 +661,10 @@ void rs_scheme_clear(rs_scheme_t s)
     memset(s, 0, sizeof(rs_scheme_struct));
 }
 
-static void setup_ctx(rs_scheme_t s, const rs_case_t c)
+static void setup_ctx(rs_scheme_t s, const rs_case_t c, slong sqrt_d)
 {
     slong i;
-    s->nvars = c->nparams + 1;
+    s->nvars = c->nparams + 1 + (sqrt_d > 0);
     s->lambda_var = c->nparams;
     s->vars = flint_malloc(s->nvars * sizeof(char *));
     for (i = 0; i < c->nparams; i++) {
@@ -651,6 +673,14 @@ static void setup_ctx(rs_scheme_t s, const rs_case_t c)
     }
     s->vars[s->lambda_var] = flint_malloc(7);
     strcpy(s->vars[s->lambda_var], "lambda");
+    s->sqrt_d = sqrt_d;
+    s->sqrt_var = -1;
+    if (sqrt_d > 0) {
+        char b[40];
+        snprintf(b, sizeof b, "sqrt(%ld)", (long) sqrt_d);
+        s->sqrt_var = c->nparams + 1;
+        s->vars[s->sqrt_var] = rs_strdup(b);
+    }
     fmpq_mpoly_ctx_init(s->ctx, s->nvars, ORD_LEX);
     fmpz_mpoly_ctx_init(s->zctx, s->nvars, ORD_LEX);
     fmpq_mpoly_init(s->charpoly, s->ctx);
@@ -903,7 +933,7 @@ int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
     if (c == NULL || m->kind != RS_MODEL_EQUATIONS)
         return rs_error_set(err, RS_ERR_INTERNAL, "the lambda-matrix is built from an equations model "
                             "(rs_model_lower)%s", "");
-    setup_ctx(s, c);
+    setup_ctx(s, c, m->qd != NULL ? m->qd->d : 0);
     if (c->charexpr != NULL) {
         if (m->neqs > 0 || m->nunknowns > 0)
             return build_char(s, m, err);   /* reports the mix */
@@ -946,6 +976,9 @@ int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
             r = rs_error_set_at(err, RS_ERR_INPUT, q->loc.file, q->loc.line, q->loc.col,
                                 "expected a homogeneous equation, found a term without unknowns "
                                 "(stability concerns the homogeneous recurrence: drop forcing terms)");
+        if (r == RS_OK && s->sqrt_d > 0 && fmpq_mpoly_degree_si(v.den, s->sqrt_var, s->ctx) > 0)
+            r = rs_error_set_at(err, RS_ERR_INPUT, q->loc.file, q->loc.line, q->loc.col,
+                                "expected no division by an expression with sqrt(%ld)", (long) s->sqrt_d);
         if (r == RS_OK) {
             record_nonzero(&x, v.den, q->loc.file ? q->loc.file : c->path, q->loc.line, q->loc.col);
             for (j = 0; j < n; j++)
@@ -958,6 +991,10 @@ int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
                 fmpq_mpoly_struct *M = s->M + i * n + j;
                 slong d = v.low - rowmin;
                 fmpq_mpoly_set(M, v.c + 1 + j, s->ctx);
+                if (s->sqrt_d > 0) {   /* p0 + sqrt(d) p1 */
+                    rs_scheme_reduce_sqrt(M->zpoly, s);
+                    fmpq_mpoly_reduce(M, s->ctx);
+                }
                 if (fmpq_mpoly_is_zero(M, s->ctx)) continue;
                 if (d >= 0) {
                     mul_lambda_pow(M, d, s);
@@ -999,6 +1036,8 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
     fmpq_mpoly_init(dst->charpoly, dst->ctx);
     fmpq_mpoly_set(dst->charpoly, src->charpoly, dst->ctx);   /* equal contexts */
     dst->from_char = src->from_char;
+    dst->sqrt_d = src->sqrt_d;
+    dst->sqrt_var = src->sqrt_var;
     dst->complex_char = src->complex_char;
     dst->n = src->n;
     if (src->n > 0) {
@@ -1025,6 +1064,36 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
             strcpy(dst->nonzero_text[i], src->nonzero_text[i]);
         }
     }
+}
+
+void rs_scheme_reduce_sqrt(fmpz_mpoly_t p, const rs_scheme_t s)
+{
+    slong i, n, v = s->sqrt_var;
+    ulong *ex;
+    fmpz_t c, dk;
+    fmpz_mpoly_t r;
+    if (s->sqrt_d <= 0 || fmpz_mpoly_degree_si(p, v, s->zctx) < 2) return;
+    ex = flint_malloc(s->nvars * sizeof(ulong));
+    fmpz_init(c);
+    fmpz_init(dk);
+    fmpz_mpoly_init(r, s->zctx);
+    n = fmpz_mpoly_length(p, s->zctx);
+    for (i = 0; i < n; i++) {   /* c s^e -> c d^(e/2) s^(e mod 2) */
+        fmpz_mpoly_get_term_coeff_fmpz(c, p, i, s->zctx);
+        fmpz_mpoly_get_term_exp_ui(ex, p, i, s->zctx);
+        fmpz_set_si(dk, s->sqrt_d);
+        fmpz_pow_ui(dk, dk, ex[v] / 2);
+        fmpz_mul(c, c, dk);
+        ex[v] %= 2;
+        fmpz_mpoly_push_term_fmpz_ui(r, c, ex, s->zctx);
+    }
+    fmpz_mpoly_sort_terms(r, s->zctx);
+    fmpz_mpoly_combine_like_terms(r, s->zctx);
+    fmpz_mpoly_swap(p, r, s->zctx);
+    fmpz_mpoly_clear(r, s->zctx);
+    fmpz_clear(c);
+    fmpz_clear(dk);
+    flint_free(ex);
 }
 
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value)

@@ -524,21 +524,62 @@ static void decided_by(rs_render_t *r, const json_t *o)
         rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
 }
 
-/* R over Q(sqrt d) (rk sdirk2, an_qd.c): |R(z)|^2 decided exactly */
+/* over Q(sqrt d) (rk sdirk2, an_qd.c): |R(z)|^2 decided exactly on the
+ * test equation, else Schur-Cohn and the certified roots of p */
 static void stability_qd(rs_render_t *r, const json_t *o)
 {
+    const json_t *sf = json_object_get(o, "stability_function");
+    rs_render_heading(r, "Stability at the given values over Q(sqrt 2)",
+                      "Stability at the given values over $\\mathbb{Q}(\\sqrt{2})$");
+    taken_at(r, o);
+    rs_render_say(r, "The method (", "The method (");
+    rs_render_esc(r, js(o, "method"));
+    rs_render_say(r, ") has coefficients in Q(sqrt 2): its stage equations carry $\\sqrt{2}$ exactly, and the "
+                  "characteristic polynomial is $p = p_0 + \\sqrt{2}\\,p_1$ with rational $p_0$, $p_1$.",
+                  ") has coefficients in $\\mathbb{Q}(\\sqrt{2})$: its stage equations carry $\\sqrt{2}$ exactly, "
+                  "and the characteristic polynomial is $p = p_0 + \\sqrt{2}\\,p_1$ with rational $p_0$, $p_1$.");
+    if (sf != NULL) {
+        rs_render_say(r, " On the test equation $p = D\\,\\lambda - N$ with $R = N/D$, $N = ",
+                      " On the test equation $p = D\\,\\lambda - N$ with $R = N/D$, $N = ");
+        rs_render_poly(r, js(sf, "N"));
+        rs_render_say(r, "$, $D = ", "$, $D = ");
+        rs_render_poly(r, js(sf, "D"));
+        rs_render_say(r, "$", "$");
+        if (js(o, "abs_R_squared") != NULL) {
+            rs_render_say(r, "; here $|R|^2 = ", "; here $|R|^2 = ");
+            rs_render_poly(r, js(o, "abs_R_squared"));
+            rs_render_say(r, "$, compared with 1 by the exact sign in Q(sqrt 2)",
+                          "$, compared with 1 by the exact sign in $\\mathbb{Q}(\\sqrt{2})$");
+        }
+        rs_render_say(r, ".", ".");
+    } else if (js(o, "poly") != NULL) {
+        rs_render_say(r, " At these values:\n\n$$p(\\lambda) = ", " At these values:\n\n$p(\\lambda) = ");
+        rs_render_poly(r, js(o, "poly"));
+        rs_render_say(r, "$$\n\nSchur-Cohn's recursion with exact signs in Q(sqrt 2)(i) and the certified roots "
+                      "(Arb, $\\sqrt{2}$ as a ball) answer independently and must agree.",
+                      "$\n\nSchur--Cohn's recursion with exact signs in $\\mathbb{Q}(\\sqrt{2})(i)$ and the "
+                      "certified roots (Arb, $\\sqrt{2}$ as a ball) answer independently and must agree.");
+    }
+    rs_render_sayf(r, " Verdict: **%s** (decided by exact arithmetic).\n\n",
+                   " Verdict: \\textbf{%s} (decided by exact arithmetic).\n\n", js(o, "status"));
     rs_render_line(r, "status", "%s", js(o, "status"));
     if (js(o, "abs_R_squared") != NULL) rs_render_line(r, "|R(z)|^2", "%s", js(o, "abs_R_squared"));
-    rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
-    rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "
-                   "root agree)", js(o, "decided_by"));
+    if (js(o, "poly") != NULL) rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
+    if (js(o, "note") != NULL) rs_render_line(r, "note", "%s", js(o, "note"));
+    if (json_object_get(o, "stability_function") != NULL)
+        rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "
+                       "root agree)", js(o, "decided_by"));
+    else
+        rs_render_linef(r, "decided by", "%s (Schur-Cohn over Q(sqrt d)(i): %s; certified roots: %s)",
+                       js(o, "decided_by"), json_is_true(json_object_get(o, "schur_cohn_stable")) ? "stable"
+                       : "not strictly stable", js(o, "roots_certified") ? js(o, "roots_certified") : "none");
     rs_render_assigned(r, o);
 }
 
 void rs_render_stability(rs_render_t *r, const json_t *o)
 {
     int sym;
-    if (json_object_get(o, "stability_function") != NULL) {
+    if (json_object_get(o, "stability_function") != NULL || json_object_get(o, "p0") != NULL) {
         stability_qd(r, o);
         return;
     }

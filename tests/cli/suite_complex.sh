@@ -554,3 +554,79 @@ else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
 if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*jury is not available for rk sdirk2" "$T/err"; then
     ok "sdirk2: jury refused with its reason (exit 2)"
 else fail "sdirk2 jury refusal: rc=$rc $(head -1 "$T/err")"; fi
+# ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
+# Expected values derived independently with sympy (not recstab's equations):
+#   g = 1 - sqrt(2)/2; f = lambda y, x: -a*y + c*x
+#   k1 = f(yn + h*g*k1, xn); k2 = f(yn + h*((1-g)*k1 + g*k2), xn)   (solved for k1, k2)
+#   y1 = yn + h*((1-g)*k1 + g*k2); x1 = (xn - h*c*yn)/(1 + h)        (backward Euler, y frozen)
+#   M = d(y1, x1)/d(yn, xn) at h = 1; p = det(lambda I - M), made monic, radsimp'ed
+# and the verdict against a time-domain run of that step map in double (below).
+SC=cases/complex/sdirk2-coupled.case
+check_status "sdirk2 + backward Euler (Jacobi), a=1 c=1/2: rho = 0.5064" stable "$SC"
+check_status "sdirk2 + backward Euler (Jacobi), a=1 c=2: rho = 1.2142" unstable "$SC" --set c=2
+if command -v python3 >/dev/null 2>&1; then
+    for cv in 1/2 2; do
+        "$RS" --json "$SC" --set "c=$cv" >"$T/sc.json" 2>"$T/err"; rc=$?
+        res=$(python3 - "$T/sc.json" "$cv" <<'PY'
+import json, re, sys
+from fractions import Fraction as F
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+cv = F(sys.argv[2])
+def qd(s):   # "x + y*sqrt(2)", "x - y*sqrt(2)", "y*sqrt(2)", "x" -> (x, y)
+    s = s.replace(" ", "")
+    m = re.fullmatch(r"([-+]?[0-9/]+)?(?:([-+]?)([0-9/]*)\*?sqrt\(2\))?", s)
+    x = F(m.group(1)) if m.group(1) else F(0)
+    y = F(0)
+    if s.find("sqrt") >= 0: y = (F(m.group(3)) if m.group(3) else F(1)) * (-1 if m.group(2) == "-" else 1)
+    return x, y
+def div(a, b):   # (a0 + a1 s)/(b0 + b1 s), s^2 = 2
+    n = b[0] * b[0] - 2 * b[1] * b[1]
+    return ((a[0] * b[0] - 2 * a[1] * b[1]) / n, (a[1] * b[0] - a[0] * b[1]) / n)
+st = [r for r in rs if r["analysis"] == "stability"][0]
+co = {}
+for t, k in re.findall(r"\(((?:[^()]|\(2\))*)\)(\*lambda(?:\^\d+)?)?", st["poly"]):
+    co[0 if not k else (1 if k == "*lambda" else int(k.split("^")[1]))] = qd(t)
+lead = co[max(co)]
+monic = [div(co[k], lead) for k in sorted(co)]
+# sympy: the monic p at a = 1 (lambda^0, lambda^1, lambda^2)
+want = {F(1, 2): [(F(109, 392), F(-3, 196)), (F(-89, 98), F(2, 49)), (F(1), F(0))],
+        F(2): [(F(68, 49), F(3, 49)), (F(-89, 98), F(2, 49)), (F(1), F(0))]}[cv]
+rho_want = {F(1, 2): 0.5063744647344548791160227, F(2): 1.214223869745434236859886}[cv]
+rad = [r for r in rs if r["analysis"] == "radius"][0]
+bad = []
+if monic != want: bad.append("monic p %r" % (monic,))
+if abs(float(rad["rho"]) - rho_want) > 1e-20 or not (float(rad["lower"]) <= rho_want <= float(rad["upper"])): bad.append("rho " + rad["rho"])
+# time-domain run of the step map from the method's definition (double)
+a, c, h, g = 1.0, float(cv), 1.0, 1 - 2 ** 0.5 / 2
+y, x = 1.0, 1.0
+for _ in range(400):
+    k1 = (-a * y + c * x) / (1 + a * h * g)
+    k2 = (-a * (y + h * (1 - g) * k1) + c * x) / (1 + a * h * g)
+    y, x = y + h * ((1 - g) * k1 + g * k2), (x - h * c * y) / (1 + h)
+norm = (y * y + x * x) ** 0.5
+run = "stable" if norm < 1e-50 else "unstable" if norm > 1e20 else "unclear"
+if run != st["status"]: bad.append("run %s (|v_400| = %g) vs %s" % (run, norm, st["status"]))
+if not st["schur_cohn_stable"] == (st["status"] == "stable"): bad.append("schur flag")
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+        if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 coupled c=$cv: monic p over Q(sqrt 2), certified rho and a 400-step run agree with sympy"
+        else fail "sdirk2 coupled c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
+    done
+else ok "skipped sdirk2 coupled JSON: no python3"; fi
+# complex c = 1/2 + i/4 (sympy, same derivation): |eigenvalues| 0.39299628, 0.63534168006133
+check_status "sdirk2 coupled c=1/2+i/4 (rho = 0.6353 by sympy)" stable "$SC" --set 'c=1/2+i/4'
+"$RS" --json "$SC" --set 'c=1/2+i/4' | tr -d ' \n' | grep -q '"rho":"0.63534168006133' \
+    && ok "sdirk2 coupled complex c: certified rho 0.63534168006133..." || fail "sdirk2 coupled complex rho"
+"$RS" --markdown "$SC" --set c=2 >"$T/sc.md" 2>"$T/err"
+if grep -q '^### Stability at the given values over Q(sqrt 2)$' "$T/sc.md" && grep -q 'Verdict: \*\*unstable\*\*' "$T/sc.md"; then
+    ok "sdirk2 coupled: Markdown derivation over Q(sqrt 2) with its verdict"
+else fail "sdirk2 coupled markdown: $(grep -i stab "$T/sc.md" | head -3)"; fi
+"$RS" --emit equations "$SC" >"$T/eq.txt" 2>"$T/err"
+if grep -qF 'eq y_k1[n+1] = (-a*(y[n] + (1)*((1 - 1/2*sqrt(2))*y_k1[n+1])) + c*x[n])' "$T/eq.txt" \
+   && grep -qF 'eq 2*(y[n+1] - y[n]) = (1)*(sqrt(2)*y_k1[n+1] + (2 - sqrt(2))*y_k2[n+1])' "$T/eq.txt"; then
+    ok "sdirk2 --emit equations: stages with gamma = 1 - sqrt(2)/2 written exactly"
+else fail "sdirk2 emit: $(cat "$T/eq.txt" "$T/err")"; fi
+"$RS" --analyse stability "$SC" --set c=2 --analyse routh >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "routh is not available for rk sdirk2" "$T/err"; then ok "sdirk2 coupled: routh refused (exit 2)"
+else fail "sdirk2 coupled routh refusal: rc=$rc $(head -1 "$T/err")"; fi
