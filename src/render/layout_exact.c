@@ -471,6 +471,7 @@ static int schur_cohn_prose(rs_render_t *r, const json_t *o, const char *md, con
 {
     rs_render_heading(r, md, tex);
     if (!json_is_true(json_object_get(o, "symbolic"))) return 0;
+    if (js(o, "never") != NULL) return 1;   /* said by branches() with its reason */
     condition_list(r, json_object_get(o, "conditions"), "All |lambda| < 1 if and only if:\n\n",
                    "All $|\\lambda| < 1$ if and only if:\n", NULL);
     return 1;
@@ -490,6 +491,7 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
                                                       "assumptions");
             condition_lines(r, o, "stable iff", "and", 0);
         }
+        rs_render_line(r, "verdict", "%s", js(o, "verdict"));
         rs_render_line(r, "route", "%s", js(o, "route_reason"));
         not_expanded(r, o);
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);

@@ -77,3 +77,23 @@ if command -v pdflatex >/dev/null 2>&1 && command -v pdftotext >/dev/null 2>&1; 
 else
     echo "skip pdflatex astability: pdflatex/pdftotext not installed"
 fi
+
+# jury on a set identically false (h-polish): p = a lambda^2 + a lambda =
+# a lambda (lambda + 1) has lambda = -1 as a root for every a (by hand), so
+# no value is stable; with lambda divided out, p = a lambda + a has |p(0)| =
+# |lead| in row 0.  Said as hurwitz says it ("never" with the reason,
+# "verdict never stable"), not "stable iff 0 > 0", in every format.
+printf 'param a\nchar a*lambda^2 + a*lambda\nanalyse jury\n' >"$T/jn.case"
+"$RS" "$T/jn.case" >"$T/jn.txt" 2>&1
+grep -q '0 > 0' "$T/jn.txt" && fail "jury never: a '0 > 0' line in the text" || ok "jury never: no '0 > 0' line"
+grep -q '^  never  *|p_k(0)| = |lead p_k| for every parameter value in row 0 .*never asymptotically stable$' "$T/jn.txt" \
+    && grep -q '^  verdict  *never stable$' "$T/jn.txt" && ok "jury never: text says never stable with the reason" \
+    || fail "jury never text: $(cat "$T/jn.txt")"
+for f in markdown latex; do
+    "$RS" --$f "$T/jn.case" >"$T/jn.$f" 2>&1
+    grep -q 'in row 0 of the Schur-Cohn table.*never asymptotically stable\.$' "$T/jn.$f" \
+        && ! grep -q 'identically false' "$T/jn.$f" && ok "jury never: $f gives the reason" || fail "jury never $f: $(cat "$T/jn.$f")"
+done
+"$RS" --json "$T/jn.case" >"$T/jn.json" 2>&1
+grep -q '"verdict": "never stable"' "$T/jn.json" && grep -q '"conditions": \[' "$T/jn.json" \
+    && ok "jury never: JSON keeps conditions, adds never and verdict" || fail "jury never JSON"
