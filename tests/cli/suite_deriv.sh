@@ -97,3 +97,23 @@ done
 "$RS" --json "$T/jn.case" >"$T/jn.json" 2>&1
 grep -q '"verdict": "never stable"' "$T/jn.json" && grep -q '"conditions": \[' "$T/jn.json" \
     && ok "jury never: JSON keeps conditions, adds never and verdict" || fail "jury never JSON"
+
+# a claim refuted by the plane's decomposition (h-polish): the claim of
+# cases/truth/claim-thin-sliver-two-params.case ties a to b, so no for-all
+# region checks it and its 34 search points miss the sliver (the case's
+# comment, by hand): only the decomposition finds a = 127/128, b = 5/512.
+# Every format says so, with the JSON's found_by text.
+SL=cases/truth/claim-thin-sliver-two-params.case
+fb=$("$RS" --json "$SL" 2>/dev/null | sed -n 's/^ *"found_by": "\(.*\)",$/\1/p' | head -1)
+case "$fb" in
+"the decomposition of the plane"*) ok "sliver claim: JSON found_by names the decomposition" ;;
+*) fail "sliver claim: JSON found_by '$fb'" ;;
+esac
+"$RS" "$SL" >"$T/sl.txt" 2>&1
+grep -qxF "  found by     $fb" "$T/sl.txt" && ok "sliver claim: text says how it was found, as the JSON" \
+    || fail "sliver claim text: $(grep -A6 refuted "$T/sl.txt")"
+for f in markdown latex; do
+    "$RS" --$f "$SL" >"$T/sl.$f" 2>&1
+    grep -q '^Found by the decomposition of the plane (the CAD of .*violates the claim)\.$' "$T/sl.$f" \
+        && ok "sliver claim: $f says how it was found" || fail "sliver claim $f: $(grep -i found "$T/sl.$f")"
+done
