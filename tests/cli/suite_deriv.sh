@@ -117,3 +117,13 @@ for f in markdown latex; do
     grep -q '^Found by the decomposition of the plane (the CAD of .*violates the claim)\.$' "$T/sl.$f" \
         && ok "sliver claim: $f says how it was found" || fail "sliver claim $f: $(grep -i found "$T/sl.$f")"
 done
+
+# astability's text report (h-polish): alpha_degrees as the derivation says
+# it, not raw JSON.  BDF3: tan(alpha)^2 = 757687/3645 (the case's minimal
+# polynomial 3645 u^2 - 757687), atan(sqrt(757687/3645)) = 86.0324 degrees
+# by hand; the literature value is 86.03 (Hairer & Wanner, Solving ODEs II,
+# section V.2, the A(alpha) angles of BDF1-6: 90, 90, 86.03, 73.35, 51.84, 17.84).
+"$RS" "$AS/bdf3-astability.case" >"$T/bdf3.txt" 2>&1
+grep -q '^  alpha_degrees (180/pi) atan(u) = 86\.032[0-9]* (certified digits), u = tan(alpha) the root of 3645\*u^2 - 757687 near 14\.417[0-9]*$' "$T/bdf3.txt" \
+    && ok "astability text: alpha_degrees readable (86.03 degrees, BDF3)" || fail "astability text alpha: $(grep alpha_degrees "$T/bdf3.txt")"
+grep -q '^  alpha_degrees {' "$T/bdf3.txt" && fail "astability text: alpha_degrees as raw JSON" || ok "astability text: no raw JSON alpha_degrees"
