@@ -498,7 +498,8 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
                                                       "assumptions");
             condition_lines(r, o, "stable iff", "and", 0);
         }
-        rs_render_line(r, "verdict", "%s", js(o, "verdict"));
+        /* with "never" only: the other symbolic reports stay as they were */
+        if (js(o, "never") != NULL) rs_render_line(r, "verdict", "%s", js(o, "verdict"));
         rs_render_line(r, "route", "%s", js(o, "route_reason"));
         not_expanded(r, o);
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
