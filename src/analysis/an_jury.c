@@ -1,5 +1,6 @@
 /* an_jury.c -- `jury`: Schur-Cohn on p(lambda) directly, numeric or with
  * the symbolic Schur-Cohn (Jury) conditions, cross-checked against Routh. */
+#include <stdio.h>
 #include <stdlib.h>
 #include "analysis/registry.h"
 #include "recstab/routh.h"
@@ -199,6 +200,17 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             rs_json_append_unique(conds, "0 > 0");
             jury_conds_add(&jc, delta, 0);
             json_object_set_new(o, "singular_row", json_integer(n - k));
+            /* said as hurwitz says an identically false set ("never",
+             * "verdict"), not as a bare 0 > 0 */
+            {
+                char why[400];
+                snprintf(why, sizeof why, "|p_k(0)| = |lead p_k| for every parameter value in row %ld of the "
+                         "Schur-Cohn table (lead^2 - const^2 = 0 identically): the product of that row's roots "
+                         "has modulus 1, so one lies on or outside the unit circle, and all |lambda| < 1 needs "
+                         "every row's roots inside (Schur-Cohn); never asymptotically stable", (long) (n - k));
+                json_object_set_new(o, "never", json_string(why));
+                json_object_set_new(o, "verdict", json_string("never stable"));
+            }
             fmpz_mpoly_factor_clear(f, s->zctx);
             break;
         } else if (fmpz_mpoly_length(delta, s->zctx) > rs_jury_factor_whole_terms()

@@ -325,6 +325,30 @@ static void infinity(rs_render_t *r, const json_t *o, const char *q)
     rs_render_say(r, "\n\n", "\n\n");
 }
 
+/* The text report's lines (rs_render_generic), alpha_degrees said as the
+ * derivation says it (exact form, then the certified digits) instead of
+ * its raw JSON object. */
+static void report_lines(rs_render_t *r, const json_t *o)
+{
+    const json_t *a = json_object_get(o, "alpha_degrees"), *ap = json_object_get(o, "alpha_degrees_approx");
+    json_t *c;
+    char buf[512], deg[64];
+    if (r->be->kind != RS_RENDER_TEXT || !json_is_object(a)) {
+        rs_render_generic(r, o);
+        return;
+    }
+    if (js(o, "alpha_degrees_certified")) snprintf(deg, sizeof deg, "%s (certified digits)",
+                                                   js(o, "alpha_degrees_certified"));
+    else snprintf(deg, sizeof deg, "%.15g (approx)", json_real_value(ap));
+    snprintf(buf, sizeof buf, "(180/pi) atan(u) = %s, u = tan(alpha) the root of %s near %.15g", deg,
+             js(a, "tan_alpha_minpoly") ? js(a, "tan_alpha_minpoly") : "?",
+             json_real_value(json_object_get(a, "tan_alpha")));
+    c = json_copy((json_t *) o);   /* shallow: the other values shared; key order kept */
+    json_object_set_new(c, "alpha_degrees", json_string(buf));
+    rs_render_generic(r, c);
+    json_decref(c);
+}
+
 void rs_render_astability(rs_render_t *r, const json_t *o)
 {
     const char *q = js(o, "param") ? js(o, "param") : "z";
@@ -333,7 +357,7 @@ void rs_render_astability(rs_render_t *r, const json_t *o)
     const char *key;
     size_t i;
     int first = 1;
-    rs_render_generic(r, o);   /* the text report's lines, unchanged */
+    report_lines(r, o);
     if (!(r->be->kind & RS_RENDER_PROSE)) return;
     rs_render_heading_begin(r);
     rs_render_say(r, "Stability region of $y' = ", "Stability region of $y' = ");

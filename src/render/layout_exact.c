@@ -234,6 +234,13 @@ static void claim_prose(rs_render_t *r, const json_t *o)
         }
         rs_render_say(r, "$. ", "$. ");
         rs_render_count(r, json_object_get(o, "at_counterexample"), RS_RENDER_PROSE);
+        /* how a counterexample the search missed was found (for-all region,
+         * plane decomposition): the JSON's found_by */
+        if (js(o, "found_by") != NULL) {
+            rs_render_say(r, "Found by ", "Found by ");
+            rs_render_esc(r, js(o, "found_by"));
+            rs_render_say(r, ".\n\n", ".\n\n");
+        }
     }
     if (diff != NULL && strcmp(diff, "0") != 0) {
         rs_render_say(r, "Printed minus derived: ", "Printed minus derived: ");
@@ -471,6 +478,7 @@ static int schur_cohn_prose(rs_render_t *r, const json_t *o, const char *md, con
 {
     rs_render_heading(r, md, tex);
     if (!json_is_true(json_object_get(o, "symbolic"))) return 0;
+    if (js(o, "never") != NULL) return 1;   /* said by branches() with its reason */
     condition_list(r, json_object_get(o, "conditions"), "All |lambda| < 1 if and only if:\n\n",
                    "All $|\\lambda| < 1$ if and only if:\n", NULL);
     return 1;
@@ -490,6 +498,8 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
                                                       "assumptions");
             condition_lines(r, o, "stable iff", "and", 0);
         }
+        /* with "never" only: the other symbolic reports stay as they were */
+        if (js(o, "never") != NULL) rs_render_line(r, "verdict", "%s", js(o, "verdict"));
         rs_render_line(r, "route", "%s", js(o, "route_reason"));
         not_expanded(r, o);
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
@@ -919,6 +929,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         if (js(at, "reason")) rs_render_linef(r, "verdict", "%s: %s", js(at, "status"), js(at, "reason"));
         else rs_render_count(r, at, RS_RENDER_TEXT);
         if (js(at, "counts_of")) rs_render_line(r, "counts of", "%s", js(at, "counts_of"));
+        rs_render_line(r, "found by", "%s", js(o, "found_by"));
     } else if (st && strcmp(st, "proved") == 0) {
         certificate_lines(r, json_object_get(o, "certificate"));
     } else {

@@ -77,3 +77,53 @@ if command -v pdflatex >/dev/null 2>&1 && command -v pdftotext >/dev/null 2>&1; 
 else
     echo "skip pdflatex astability: pdflatex/pdftotext not installed"
 fi
+
+# jury on a set identically false (h-polish): p = a lambda^2 + a lambda =
+# a lambda (lambda + 1) has lambda = -1 as a root for every a (by hand), so
+# no value is stable; with lambda divided out, p = a lambda + a has |p(0)| =
+# |lead| in row 0.  Said as hurwitz says it ("never" with the reason,
+# "verdict never stable"), not "stable iff 0 > 0", in every format.
+printf 'param a\nchar a*lambda^2 + a*lambda\nanalyse jury\n' >"$T/jn.case"
+"$RS" "$T/jn.case" >"$T/jn.txt" 2>&1
+grep -q '0 > 0' "$T/jn.txt" && fail "jury never: a '0 > 0' line in the text" || ok "jury never: no '0 > 0' line"
+grep -q '^  never  *|p_k(0)| = |lead p_k| for every parameter value in row 0 .*never asymptotically stable$' "$T/jn.txt" \
+    && grep -q '^  verdict  *never stable$' "$T/jn.txt" && ok "jury never: text says never stable with the reason" \
+    || fail "jury never text: $(cat "$T/jn.txt")"
+for f in markdown latex; do
+    "$RS" --$f "$T/jn.case" >"$T/jn.$f" 2>&1
+    grep -q 'in row 0 of the Schur-Cohn table.*never asymptotically stable\.$' "$T/jn.$f" \
+        && ! grep -q 'identically false' "$T/jn.$f" && ok "jury never: $f gives the reason" || fail "jury never $f: $(cat "$T/jn.$f")"
+done
+"$RS" --json "$T/jn.case" >"$T/jn.json" 2>&1
+grep -q '"verdict": "never stable"' "$T/jn.json" && grep -q '"conditions": \[' "$T/jn.json" \
+    && ok "jury never: JSON keeps conditions, adds never and verdict" || fail "jury never JSON"
+
+# a claim refuted by the plane's decomposition (h-polish): the claim of
+# cases/truth/claim-thin-sliver-two-params.case ties a to b, so no for-all
+# region checks it and its 34 search points miss the sliver (the case's
+# comment, by hand): only the decomposition finds a = 127/128, b = 5/512.
+# Every format says so, with the JSON's found_by text.
+SL=cases/truth/claim-thin-sliver-two-params.case
+fb=$("$RS" --json "$SL" 2>/dev/null | sed -n 's/^ *"found_by": "\(.*\)",$/\1/p' | head -1)
+case "$fb" in
+"the decomposition of the plane"*) ok "sliver claim: JSON found_by names the decomposition" ;;
+*) fail "sliver claim: JSON found_by '$fb'" ;;
+esac
+"$RS" "$SL" >"$T/sl.txt" 2>&1
+grep -qxF "  found by     $fb" "$T/sl.txt" && ok "sliver claim: text says how it was found, as the JSON" \
+    || fail "sliver claim text: $(grep -A6 refuted "$T/sl.txt")"
+for f in markdown latex; do
+    "$RS" --$f "$SL" >"$T/sl.$f" 2>&1
+    grep -q '^Found by the decomposition of the plane (the CAD of .*violates the claim)\.$' "$T/sl.$f" \
+        && ok "sliver claim: $f says how it was found" || fail "sliver claim $f: $(grep -i found "$T/sl.$f")"
+done
+
+# astability's text report (h-polish): alpha_degrees as the derivation says
+# it, not raw JSON.  BDF3: tan(alpha)^2 = 757687/3645 (the case's minimal
+# polynomial 3645 u^2 - 757687), atan(sqrt(757687/3645)) = 86.0324 degrees
+# by hand; the literature value is 86.03 (Hairer & Wanner, Solving ODEs II,
+# section V.2, the A(alpha) angles of BDF1-6: 90, 90, 86.03, 73.35, 51.84, 17.84).
+"$RS" "$AS/bdf3-astability.case" >"$T/bdf3.txt" 2>&1
+grep -q '^  alpha_degrees (180/pi) atan(u) = 86\.032[0-9]* (certified digits), u = tan(alpha) the root of 3645\*u^2 - 757687 near 14\.417[0-9]*$' "$T/bdf3.txt" \
+    && ok "astability text: alpha_degrees readable (86.03 degrees, BDF3)" || fail "astability text alpha: $(grep alpha_degrees "$T/bdf3.txt")"
+grep -q '^  alpha_degrees {' "$T/bdf3.txt" && fail "astability text: alpha_degrees as raw JSON" || ok "astability text: no raw JSON alpha_degrees"
