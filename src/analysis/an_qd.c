@@ -20,6 +20,7 @@
 #include <flint/fmpz.h>
 #include <flint/fmpq.h>
 #include <flint/fmpq_poly.h>
+#include <flint/fmpq_vec.h>
 #include <flint/fmpz_mpoly.h>
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"

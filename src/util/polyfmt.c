@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpz.h>
+#include <flint/mpoly.h>
 #include "util/polyfmt.h"
 #include "recstab/budget.h"
 

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpq_mpoly.h>
+#include <flint/fmpq_vec.h>
 #include <arb_fmpz_poly.h>
 #include <acb.h>
 #include "recstab/casefile.h"
