@@ -941,16 +941,25 @@ static void kp_from_mpoly(kpoly_t *a, const fmpz_mpoly_t f, slong n, slong tv, c
     fmpz_poly_clear(u);
 }
 
+/* p(lambda; t0) over K = Q[t]/(m), m = t0's minimal polynomial: P and m
+ * initialised here (cleared by the caller); returns p's degree in lambda */
+static slong kp_at_algebraic(kpoly_t *P, fmpq_poly_t m, const fmpz_mpoly_t p, slong tv, const alg_t *t0,
+                             const rs_scheme_t s)
+{
+    slong n = fmpz_mpoly_degree_si(p, s->lambda_var, s->zctx);
+    fmpq_poly_init(m);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    kp_init(P, n + 1);
+    kp_from_mpoly(P, p, n, tv, m, s);
+    return n;
+}
+
 static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv, alg_t *t0, const rs_scheme_t s)
 {
     int decided;
-    slong n = fmpz_mpoly_degree_si(p, s->lambda_var, s->zctx);
     fmpq_poly_t m;
     kpoly_t P;
-    fmpq_poly_init(m);
-    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
-    kp_init(&P, n + 1);
-    kp_from_mpoly(&P, p, n, tv, m, s);
+    slong n = kp_at_algebraic(&P, m, p, tv, t0, s);
     decided = status_kp(out, &P, n, p, tv, t0, m, s);
     kp_clear(&P);
     fmpq_poly_clear(m);
@@ -961,14 +970,10 @@ static int status_at_algebraic(rs_status_t *out, const fmpz_mpoly_t p, slong tv,
  * lambda), t0 an irrational real algebraic number */
 static int vanishes_at_algebraic(const fmpz_mpoly_t p, slong tv, const alg_t *t0, const rs_scheme_t s)
 {
-    slong n = fmpz_mpoly_degree_si(p, s->lambda_var, s->zctx);
     int z;
     fmpq_poly_t m;
     kpoly_t P;
-    fmpq_poly_init(m);
-    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
-    kp_init(&P, n + 1);
-    kp_from_mpoly(&P, p, n, tv, m, s);
+    kp_at_algebraic(&P, m, p, tv, t0, s);
     z = P.deg < 0;
     kp_clear(&P);
     fmpq_poly_clear(m);
