@@ -64,6 +64,8 @@ typedef struct {
                                       minors; issue 17) */
 } rs_hurwitz_cond_struct;
 
+#define RS_HURWITZ_NOTE_LEN 300
+
 typedef struct {
     slong n;                       /* degree of q in z */
     fmpz_mpoly_struct *coeffs;     /* a_0 .. a_n (length n+1), params only */
@@ -80,12 +82,20 @@ typedef struct {
                                       over Z[params], 1 over the smaller
                                       coefficient ring of the substitution
                                       route (issue 17) */
+    char limit_note[RS_HURWITZ_NOTE_LEN];
+                                   /* "" or the budget's message when what is
+                                      left of the time or memory budget (not
+                                      the row share) left a minor unexpanded
+                                      or a condition unfactored: the one
+                                      decision that depends on the clock */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 
-/* Per-row share of the budget (seconds, default 2: the estimate runs about 3x low on the chain rows, issue 17): a fraction-free Routh
- * row whose estimated cost (rs_budget_mpoly_mul_seconds) exceeds it, or what
- * is left of the budget, is not formed; that minor and the later ones stay
+/* Per-row share of the budget (seconds, default 2): a fraction-free Routh
+ * row or a composition of the substitution route whose estimated cost (a
+ * fixed model of term counts, degrees and coefficient sizes, never the
+ * clock: rs_budget_mpoly_mul_seconds, 30x for heap products; issue 17)
+ * exceeds it, or what is left of the budget (then limit_note), is not formed; that minor and the later ones stay
  * unexpanded (issue 17).  Returns the previous value.  Documented global,
  * like the budget itself (one run per process). */
 double rs_hurwitz_set_row_seconds(double seconds);

@@ -111,6 +111,8 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "not_expanded", ne);
         json_object_set_new(o, "not_expanded_note", json_string(rs_hurwitz_not_expanded_note));
     }
+    for (i = 0; i < hb->nbranch; i++)
+        rs_json_hurwitz_limit_note(o, hb->branch + i);
     conds = json_array();
     nonzero = json_array();
     dropped = json_array();

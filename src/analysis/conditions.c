@@ -21,9 +21,17 @@ json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s)
 }
 
 const char rs_hurwitz_not_expanded_note[] =
-    "these Hurwitz minors were not expanded: the next fraction-free Routh row's estimated cost exceeded "
-    "its share of the time budget; their conditions D_k > 0 are decided at each sample point by the exact "
+    "these Hurwitz minors were not expanded: the estimated cost of the next fraction-free Routh row or "
+    "composition (a fixed model of term counts, degrees and coefficient sizes, not the clock, so the same "
+    "minors at any load) exceeded the row share (--row-share) or what was left of the budget (then "
+    "limit_note names the limit); their conditions D_k > 0 are decided at each sample point by the exact "
     "rational determinant of the k x k Hurwitz matrix there";
+
+void rs_json_hurwitz_limit_note(json_t *o, const rs_hurwitz_struct *h)
+{
+    if (h->limit_note[0] != '\0' && json_object_get(o, "limit_note") == NULL)
+        json_object_set_new(o, "limit_note", json_string(h->limit_note));
+}
 
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)
 {
@@ -175,9 +183,11 @@ int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, jso
         *verdict = rs_json_hurwitz_or(o, hb, s);
         if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
             json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
-        for (b = 0; dropped != NULL && b < hb->nbranch; b++)
+        for (b = 0; dropped != NULL && b < hb->nbranch; b++) {
             if (hb->branch[b].expanded < hb->branch[b].n && json_object_get(o, "not_expanded_note") == NULL)
                 json_object_set_new(o, "not_expanded_note", json_string(rs_hurwitz_not_expanded_note));
+            rs_json_hurwitz_limit_note(o, hb->branch + b);
+        }
         for (b = 0; dropped != NULL && b < hb->nbranch; b++)
             for (i = 0; i < hb->branch[b].ncond; i++)
                 for (k = 0; k < hb->branch[b].cond[i].factors->num; k++)

@@ -381,9 +381,16 @@ static void complex_p(rs_render_t *r, const json_t *o)
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
 
-/* hurwitz and jury's bilinear route: why some minors are "not expanded" */
+/* hurwitz and jury's bilinear route: why some minors are "not expanded"
+ * (and which budget limit, if one, left minors or factorisations out) */
 static void not_expanded(rs_render_t *r, const json_t *o)
 {
+    if (js(o, "limit_note") != NULL) {
+        rs_render_line(r, "limit", "%s", js(o, "limit_note"));
+        rs_render_say(r, "Budget: ", "Budget: ");
+        rs_render_esc(r, js(o, "limit_note"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+    }
     if (js(o, "not_expanded_note") == NULL) return;
     rs_render_line(r, "not expanded", "%s", js(o, "not_expanded_note"));
     rs_render_say(r, "Not expanded: ", "Not expanded: ");

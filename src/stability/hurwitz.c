@@ -130,6 +130,7 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->cond = NULL;
     h->negated = 0;
     h->route = 0;
+    h->limit_note[0] = '\0';
 }
 
 static void
@@ -289,17 +290,62 @@ _leading_minor_pivoting(fmpz_mpoly_t det, const fmpz_mpoly_struct *a,
     return RS_OK;
 }
 
-/* Seconds for the products of one fraction-free Routh row (below). */
+/* rs_budget_mpoly_mul_seconds is FLINT's dense (array) multiplication;
+ * when the product's box prod_v (deg_v a + deg_v b + 1) exceeds the term
+ * pairs FLINT multiplies by a heap, about 30x dearer per pair (the chain's
+ * rows over Z[c, E] with the exact division by D_{m-3}: 26-28x for rows
+ * 11-13 of N = 7, 40-60x for the smaller rows 9-11 of N = 6; issue 17,
+ * h-chain11).  A fixed model of term counts, degrees and coefficient sizes,
+ * never the clock, so the same input expands the same minors at any load
+ * and on any machine. */
+#define HEAP_FACTOR 30.0
+
+static double
+_mul_estimate(const fmpz_mpoly_t a, const slong *da, const fmpz_mpoly_t b,
+              const slong *db, slong nvars)
+{
+    double box = 1.0, pairs = (double) a->length * (double) b->length;
+    slong v;
+    if (pairs == 0.0)
+        return 0.0;
+    for (v = 0; v < nvars; v++)
+        box *= (double) (FLINT_MAX(da[v], 0) + FLINT_MAX(db[v], 0) + 1);
+    return rs_budget_mpoly_mul_seconds(a, b) * (box > pairs ? HEAP_FACTOR : 1.0);
+}
+
+/* Seconds for the products of one fraction-free Routh row (below); deg is
+ * scratch for 2 len nvars degrees. */
 static double
 _row_estimate(const fmpz_mpoly_struct *r0, const fmpz_mpoly_struct *r1,
-              slong len)
+              slong len, slong *deg, const fmpz_mpoly_ctx_t ctx)
 {
     double s = 0.0;
-    slong j;
+    slong j, nv = ctx->minfo->nvars;
+    for (j = 0; j < len; j++) {
+        fmpz_mpoly_degrees_si(deg + j * nv, r0 + j, ctx);
+        fmpz_mpoly_degrees_si(deg + (len + j) * nv, r1 + j, ctx);
+    }
     for (j = 0; j + 1 < len; j++)
-        s += rs_budget_mpoly_mul_seconds(r1, r0 + j + 1)
-             + rs_budget_mpoly_mul_seconds(r0, r1 + j + 1);
+        s += _mul_estimate(r1, deg + len * nv, r0 + j + 1, deg + (j + 1) * nv, nv)
+             + _mul_estimate(r0, deg, r1 + j + 1, deg + (len + j + 1) * nv, nv);
     return s;
+}
+
+/* 1 if WHAT, estimated at seconds and bytes, fits what is left of the time
+ * and memory budget; otherwise 0 and the budget's message (which limit, the
+ * estimate) into note unless one is there already (rs_hurwitz_struct's
+ * limit_note: only the budget, never the row share, depends on the clock). */
+static int
+_budget_fits(char *note, const char *what, double seconds, double bytes)
+{
+    rs_error_t e;
+    int ok;
+    rs_error_init(e);
+    ok = rs_budget_estimate(e, what, seconds, bytes) == RS_OK;
+    if (!ok && note != NULL && note[0] == '\0')
+        snprintf(note, RS_HURWITZ_NOTE_LEN, "%s", e->msg);
+    rs_error_clear(e);
+    return ok;
 }
 
 /* Integer content of the row r[0..len-1] (1 for a zero row) into g. */
@@ -362,12 +408,13 @@ _scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
  * stops before a division by an identically-zero D_{m-3}, or (which
  * should not happen) at an inexact division, or with *status = RS_ERR_LIMIT
  * (err untouched) when a row does not fit its share of the budget
- * (_row_estimate, rs_hurwitz_set_row_seconds), or with the error of an
+ * (_row_estimate, rs_hurwitz_set_row_seconds; or what is left of the
+ * budget: then its message goes into note), or with the error of an
  * interrupted product. */
 static slong
 _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                       slong n, const fmpz_mpoly_ctx_t ctx, int *status,
-                      rs_error_t err)
+                      char *note, rs_error_t err)
 {
     slong len = n / 2 + 2, m, j, done;
     double est;
@@ -377,9 +424,7 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
     fmpq_t s0, s1, s2;
     fmpz_t cd;
     int ok = 1;
-    /* the row estimate calibrated on the rows already formed */
-    rs_budget_calib_t cal;
-    rs_budget_calib_init(&cal);
+    slong *deg = flint_malloc(2 * len * FLINT_MAX(ctx->minfo->nvars, 1) * sizeof(slong));
 
     for (j = 0; j < 3 * len; j++)
         fmpz_mpoly_init(R + j, ctx);
@@ -408,9 +453,9 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
             break;
         /* a row over its share (or what is left) is not formed: the
          * minors from D_m on stay unexpanded, honestly marked */
-        est = rs_budget_calib_begin(&cal, _row_estimate(r0, r1, len));
+        est = _row_estimate(r0, r1, len, deg, ctx);
         if (est > row_seconds
-            || rs_budget_estimate(NULL, "a row of the Hurwitz minors", est, 0.0) != RS_OK) {
+            || !_budget_fits(note, "a row of the Hurwitz minors", est, 0.0)) {
             *status = RS_ERR_LIMIT;
             break;
         }
@@ -433,7 +478,6 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         }
         if (!ok || *status != RS_OK)
             break;
-        rs_budget_calib_end(&cal);
         fmpz_mpoly_zero(r2 + len - 1, ctx);
         fmpq_mul(s2, s0, s1);
         fmpq_div_fmpz(s2, s2, cd);
@@ -455,6 +499,7 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
     for (j = 0; j < 3 * len; j++)
         fmpz_mpoly_clear(R + j, ctx);
     flint_free(R);
+    flint_free(deg);
     return done;
 }
 
@@ -465,10 +510,10 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
 static int
 _hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
                 const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+                const fmpz_mpoly_ctx_t ctx, char *note, rs_error_t err)
 {
     int status = RS_OK;
-    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, err);
+    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, note, err);
 
     *expanded = k;
     if (status != RS_OK) {
@@ -567,17 +612,29 @@ _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
     return r;
 }
 
+/* CPU seconds of _subst_back producing terms terms: FLINT's Horner
+ * composition grows a little faster than its output, 1.7e-7 terms^1.25
+ * (fitted to D_8..D_11 of the 6-mass chain, 54 289 to 637 163 terms: 0.12,
+ * 0.48, 1.61, 3.05 s measured at load 3; 0.14, 0.50, 1.49, 3.04 s by the
+ * formula; issue 17, h-chain11).  A fixed function of the predicted size,
+ * not a measured time (it was the last composition's CPU time times the
+ * growth, so the set of expanded minors changed with the load). */
+static double
+_compose_estimate(double terms)
+{
+    return 1.7e-7 * pow(terms, 1.25);
+}
+
 /* All leading principal minors D_1..D_n into D[0..n-1] (*expanded of them;
  * the later ones zero and not expanded), over the smaller coefficient ring
  * of hurwitz_subst.c when its cost estimate is lower, otherwise directly. */
 static int
 _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
                 const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+                const fmpz_mpoly_ctx_t ctx, char *note, rs_error_t err)
 {
     rs_hurwitz_subst_t hs;
     fmpz_mpoly_struct *Dg;
-    double cpu[2] = {0.0, 0.0};   /* CPU s of the last two compositions */
     slong k, i;
     int r;
 
@@ -587,21 +644,21 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
     *route = hs->active;
     if (!hs->active) {
         rs_hurwitz_subst_clear(hs, ctx);
-        return _hurwitz_minors_direct(D, expanded, a, n, ctx, err);
+        return _hurwitz_minors_direct(D, expanded, a, n, ctx, note, err);
     }
     Dg = flint_malloc(n * sizeof(fmpz_mpoly_struct));
     for (i = 0; i < n; i++)
         fmpz_mpoly_init(Dg + i, hs->gctx);
-    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, err);
+    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, note, err);
     /* D_n = a_0 D_{n-1}: one product here, not a composition */
     if (k == n)
         k = n - 1;
     *expanded = 0;
     for (i = 0; i < k && r == RS_OK; i++) {
-        /* the composition's cost, extrapolated from the last two (their
-         * output grows about geometrically: D_9, D_10, D_11 of a 6-mass
-         * chain have 147 694, 362 136, 637 163 terms); over the row share
-         * or the budget, this minor and the later ones stay unexpanded */
+        /* the composition's cost from its predicted size (the output grows
+         * about geometrically: D_9, D_10, D_11 of a 6-mass chain have
+         * 147 694, 362 136, 637 163 terms); over the row share or the
+         * budget, this minor and the later ones stay unexpanded */
         if (i >= 2 && fmpz_mpoly_length(D + i - 2, ctx) > 0
             && fmpz_mpoly_length(Dg + i - 1, hs->gctx) > 0
             && fmpz_mpoly_length(Dg + i - 2, hs->gctx) > 0) {
@@ -615,19 +672,13 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
             double g1 = (double) fmpz_mpoly_length(Dg + i - 1, hs->gctx);
             double g2 = (double) fmpz_mpoly_length(Dg + i - 2, hs->gctx);
             double g = (g0 / g1) * ((t1 / g1) / (t2 / g2));
-            double est = cpu[1] * FLINT_MAX(g, 1.0);
             double bytes = g * t1 * (16.0 + (double) FLINT_ABS(fmpz_mpoly_max_bits(D + i - 1)) / 8.0);
+            double est = _compose_estimate(FLINT_MAX(g, 1.0) * t1);
             if (est > row_seconds
-                || rs_budget_estimate(NULL, "the composition of a Hurwitz minor",
-                                      est, bytes) != RS_OK)
+                || !_budget_fits(note, "the composition of a Hurwitz minor", est, bytes))
                 break;
         }
-        {
-            clock_t c0 = clock();
-            r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
-            cpu[0] = cpu[1];
-            cpu[1] = (double) (clock() - c0) / CLOCKS_PER_SEC;
-        }
+        r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
         if (r == RS_OK)
             *expanded = i + 1;
     }
@@ -788,7 +839,8 @@ _factor_cheap(fmpz_mpoly_factor_t f, int *whole, const fmpz_mpoly_t poly,
 static int
 _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
              fmpz_mpoly_struct *const *known, slong nknown,
-             const _assume_t *as, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+             const _assume_t *as, const fmpz_mpoly_ctx_t ctx, char *note,
+             rs_error_t err)
 {
     slong i, num, kept = 0, kept_odd = 0, len = fmpz_mpoly_length(c->poly, ctx);
     int s, r = 1;
@@ -798,8 +850,8 @@ _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
         fmpz_mpoly_factor_swap(c->factors, pre, ctx);
     } else if (len <= factor_terms && (len <= 64
                || (_factor_estimate(len) <= row_seconds
-               && rs_budget_estimate(NULL, "the factorisation of a Hurwitz condition",
-                                     _factor_estimate(len), 0.0) == RS_OK))) {
+               && _budget_fits(note, "the factorisation of a Hurwitz condition",
+                               _factor_estimate(len), 0.0)))) {
     /* gcc 12 inlines this into _add_cond and then reports FLINT 3's array
        parameters as a 48-byte access to an 8-byte region (the struct member
        is a full fmpz_mpoly_factor_t): a false positive, silenced here only */
@@ -978,7 +1030,8 @@ _hurwitz_conditions(rs_hurwitz_t h, fmpz_mpoly_factor_t anf, const _assume_t *as
         rs_hurwitz_cond_struct *c = h->cond + order[i];
         if (c->not_expanded)
             continue;
-        r = _cond_factor(c, order[i] == 0 ? anf : NULL, known, nknown, as, ctx, err);
+        r = _cond_factor(c, order[i] == 0 ? anf : NULL, known, nknown, as, ctx,
+                         h->limit_note, err);
         if (r != RS_OK || !c->factored)
             continue;
         if (nknown + c->factors->num > maxknown) {
@@ -1070,7 +1123,7 @@ rs_hurwitz_compute_partial_bounds(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zv
         for (i = 0; i < n; i++)
             fmpz_mpoly_init(h->minors + i, ctx);
         r = _hurwitz_minors(h->minors, &h->expanded, &h->route, h->coeffs,
-                            n, ctx, err);
+                            n, ctx, h->limit_note, err);
     }
     if (r == RS_OK)
         r = _hurwitz_conditions(h, anf, &as, ctx, err);

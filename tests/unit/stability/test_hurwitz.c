@@ -8,6 +8,7 @@
 #include "testutil.h"
 #include <stdlib.h>
 #include <string.h>
+#include <pthread.h>
 #include <flint/fmpz_poly.h>
 #include <flint/fmpz_mat.h>
 #include <flint/fmpq_mat.h>
@@ -1454,6 +1455,86 @@ test_chain_not_expanded(void **state)
     }
 }
 
+/* Issue 17, h-chain11: which minors get expanded is decided by a fixed cost
+ * model (term counts, degrees, coefficient sizes), never by the clock.  The
+ * 5-mass chain with a row share (0.005 s) that the model's estimates cross
+ * part-way (so some minors are expanded and some not) is computed three
+ * times: alone, and twice while a second thread of this process burns CPU.
+ * clock() counts the CPU time of every thread, so a decision taken from
+ * measured CPU time (as the composition's was: the last composition's CPU
+ * seconds times the growth) would see every step about twice as dear
+ * under the burner; the expanded set, the minors and the conditions must be
+ * identical.  Independent check of the expanded minors: equal to those of
+ * the run with the default share (every minor, itself checked against
+ * fmpz_mat_det in test_chain_routes). */
+static volatile int burn_stop;
+
+static void *
+burn(void *arg)
+{
+    volatile double x = 1.0;
+    (void) arg;
+    while (!burn_stop)
+        x = x * 1.0000001 + 1e-9;
+    return NULL;
+}
+
+static void
+test_chain_reproducible(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    const slong N = 5, nv = 7;
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t full, h[3];
+    rs_error_t err;
+    slong i, k, run;
+    double old;
+    (void) state;
+
+    tctx_init(&t, vars, nv);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    chain_q(q, N, &t);
+    rs_hurwitz_init(full);
+    assert_int_equal(rs_hurwitz_compute_partial(full, q, nv - 1, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(full->expanded, 2 * N);
+    old = rs_hurwitz_set_row_seconds(0.005);
+    for (run = 0; run < 3; run++) {
+        pthread_t th;
+        rs_hurwitz_init(h[run]);
+        burn_stop = 0;
+        if (run > 0)
+            assert_int_equal(pthread_create(&th, NULL, burn, NULL), 0);
+        assert_int_equal(rs_hurwitz_compute_partial(h[run], q, nv - 1, NULL, t.ctx, err), RS_OK);
+        if (run > 0) {
+            burn_stop = 1;
+            pthread_join(th, NULL);
+        }
+    }
+    rs_hurwitz_set_row_seconds(old);
+    /* the share cuts part-way: the test means something */
+    assert_true(h[0]->expanded > 2 && h[0]->expanded < 2 * N);
+    for (run = 1; run < 3; run++) {
+        assert_int_equal(h[run]->expanded, h[0]->expanded);
+        assert_int_equal(h[run]->ncond, h[0]->ncond);
+        assert_string_equal(h[run]->limit_note, "");
+        for (i = 0; i < h[0]->ncond; i++) {
+            assert_int_equal(h[run]->cond[i].not_expanded, h[0]->cond[i].not_expanded);
+            assert_int_equal(h[run]->cond[i].factored, h[0]->cond[i].factored);
+            assert_true(fmpz_mpoly_equal(h[run]->cond[i].reduced, h[0]->cond[i].reduced, t.ctx));
+        }
+    }
+    for (k = 0; k < h[0]->expanded; k++)
+        assert_true(fmpz_mpoly_equal(h[0]->minors + k, full->minors + k, t.ctx));
+    for (run = 0; run < 3; run++)
+        rs_hurwitz_clear(h[run], t.ctx);
+    rs_hurwitz_clear(full, t.ctx);
+    rs_error_clear(err);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
 /* The substitution route (hurwitz_subst.c, issue 17) against the direct
  * fraction-free Routh route: for the 2-, 3- and 4-mass chains both must give
  * the same polynomials D_1..D_n (the direct route is itself checked against
@@ -1743,6 +1824,7 @@ main(void)
         cmocka_unit_test(test_chain),
         cmocka_unit_test(test_chain_positive),
         cmocka_unit_test(test_chain_not_expanded),
+        cmocka_unit_test(test_chain_reproducible),
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
         cmocka_unit_test(test_chain_unfactored),
