@@ -88,6 +88,10 @@ typedef struct {
                                       the row share) left a minor unexpanded
                                       or a condition unfactored: the one
                                       decision that depends on the clock */
+    char stop_note[RS_HURWITZ_NOTE_LEN];
+                                   /* "" or which step the row share stopped
+                                      (the Routh row or the composition of
+                                      which D_k, its estimate): deterministic */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 

@@ -31,6 +31,8 @@ void rs_json_hurwitz_limit_note(json_t *o, const rs_hurwitz_struct *h)
 {
     if (h->limit_note[0] != '\0' && json_object_get(o, "limit_note") == NULL)
         json_object_set_new(o, "limit_note", json_string(h->limit_note));
+    if (h->expanded < h->n && h->stop_note[0] != '\0' && json_object_get(o, "not_expanded_reason") == NULL)
+        json_object_set_new(o, "not_expanded_reason", json_string(h->stop_note));
 }
 
 int rs_run_hurwitz(rs_hurwitz_t h, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz)

@@ -392,6 +392,8 @@ static void not_expanded(rs_render_t *r, const json_t *o)
         rs_render_say(r, ".\n\n", ".\n\n");
     }
     if (js(o, "not_expanded_note") == NULL) return;
+    if (js(o, "not_expanded_reason") != NULL)
+        rs_render_line(r, "stopped at", "%s", js(o, "not_expanded_reason"));
     rs_render_line(r, "not expanded", "%s", js(o, "not_expanded_note"));
     rs_render_say(r, "Not expanded: ", "Not expanded: ");
     rs_render_esc(r, js(o, "not_expanded_note"));

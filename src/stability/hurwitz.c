@@ -131,6 +131,7 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->negated = 0;
     h->route = 0;
     h->limit_note[0] = '\0';
+    h->stop_note[0] = '\0';
 }
 
 static void
@@ -409,12 +410,13 @@ _scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
  * should not happen) at an inexact division, or with *status = RS_ERR_LIMIT
  * (err untouched) when a row does not fit its share of the budget
  * (_row_estimate, rs_hurwitz_set_row_seconds; or what is left of the
- * budget: then its message goes into note), or with the error of an
+ * budget: then its message goes into hn->limit_note; which step the share
+ * stopped goes into hn->stop_note), or with the error of an
  * interrupted product. */
 static slong
 _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                       slong n, const fmpz_mpoly_ctx_t ctx, int *status,
-                      char *note, rs_error_t err)
+                      rs_hurwitz_struct *hn, rs_error_t err)
 {
     slong len = n / 2 + 2, m, j, done;
     double est;
@@ -454,8 +456,13 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         /* a row over its share (or what is left) is not formed: the
          * minors from D_m on stay unexpanded, honestly marked */
         est = _row_estimate(r0, r1, len, deg, ctx);
-        if (est > row_seconds
-            || !_budget_fits(note, "a row of the Hurwitz minors", est, 0.0)) {
+        if (est > row_seconds) {
+            snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "the fraction-free Routh row of D_%ld, "
+                     "estimated at %.3g s, is over the row share of %g s (--row-share)", (long) m, est, row_seconds);
+            *status = RS_ERR_LIMIT;
+            break;
+        }
+        if (!_budget_fits(hn->limit_note, "a row of the Hurwitz minors", est, 0.0)) {
             *status = RS_ERR_LIMIT;
             break;
         }
@@ -510,10 +517,10 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
 static int
 _hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
                 const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, char *note, rs_error_t err)
+                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn, rs_error_t err)
 {
     int status = RS_OK;
-    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, note, err);
+    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, hn, err);
 
     *expanded = k;
     if (status != RS_OK) {
@@ -631,7 +638,7 @@ _compose_estimate(double terms)
 static int
 _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
                 const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, char *note, rs_error_t err)
+                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn, rs_error_t err)
 {
     rs_hurwitz_subst_t hs;
     fmpz_mpoly_struct *Dg;
@@ -644,12 +651,12 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
     *route = hs->active;
     if (!hs->active) {
         rs_hurwitz_subst_clear(hs, ctx);
-        return _hurwitz_minors_direct(D, expanded, a, n, ctx, note, err);
+        return _hurwitz_minors_direct(D, expanded, a, n, ctx, hn, err);
     }
     Dg = flint_malloc(n * sizeof(fmpz_mpoly_struct));
     for (i = 0; i < n; i++)
         fmpz_mpoly_init(Dg + i, hs->gctx);
-    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, note, err);
+    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, hn, err);
     /* D_n = a_0 D_{n-1}: one product here, not a composition */
     if (k == n)
         k = n - 1;
@@ -674,9 +681,16 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
             double g = (g0 / g1) * ((t1 / g1) / (t2 / g2));
             double bytes = g * t1 * (16.0 + (double) FLINT_ABS(fmpz_mpoly_max_bits(D + i - 1)) / 8.0);
             double est = _compose_estimate(FLINT_MAX(g, 1.0) * t1);
-            if (est > row_seconds
-                || !_budget_fits(note, "the composition of a Hurwitz minor", est, bytes))
+            if (est > row_seconds) {
+                snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "the composition of D_%ld back into the "
+                         "parameters (about %.3g terms predicted), estimated at %.3g s, is over the row "
+                         "share of %g s (--row-share)", (long) (i + 1), FLINT_MAX(g, 1.0) * t1, est, row_seconds);
                 break;
+            }
+            if (!_budget_fits(hn->limit_note, "the composition of a Hurwitz minor", est, bytes)) {
+                hn->stop_note[0] = '\0';   /* a later row's, if any: the budget stopped first */
+                break;
+            }
         }
         r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
         if (r == RS_OK)
@@ -1123,7 +1137,7 @@ rs_hurwitz_compute_partial_bounds(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zv
         for (i = 0; i < n; i++)
             fmpz_mpoly_init(h->minors + i, ctx);
         r = _hurwitz_minors(h->minors, &h->expanded, &h->route, h->coeffs,
-                            n, ctx, h->limit_note, err);
+                            n, ctx, h, err);
     }
     if (r == RS_OK)
         r = _hurwitz_conditions(h, anf, &as, ctx, err);

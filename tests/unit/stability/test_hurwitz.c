@@ -1515,10 +1515,13 @@ test_chain_reproducible(void **state)
     rs_hurwitz_set_row_seconds(old);
     /* the share cuts part-way: the test means something */
     assert_true(h[0]->expanded > 2 && h[0]->expanded < 2 * N);
+    assert_non_null(strstr(h[0]->stop_note, "over the row share of 0.005 s"));
     for (run = 1; run < 3; run++) {
         assert_int_equal(h[run]->expanded, h[0]->expanded);
         assert_int_equal(h[run]->ncond, h[0]->ncond);
         assert_string_equal(h[run]->limit_note, "");
+        /* the step the share stopped, with its (deterministic) estimate */
+        assert_string_equal(h[run]->stop_note, h[0]->stop_note);
         for (i = 0; i < h[0]->ncond; i++) {
             assert_int_equal(h[run]->cond[i].not_expanded, h[0]->cond[i].not_expanded);
             assert_int_equal(h[run]->cond[i].factored, h[0]->cond[i].factored);
