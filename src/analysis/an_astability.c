@@ -85,6 +85,29 @@ static void ralg_sort(rs_alg_t *a, slong *n)
     }
 }
 
+/* the real roots of every irreducible factor of c (degree >= 1) appended */
+static void roots_append_factored(rs_alg_t **list, slong *n, const fmpz_poly_t c)
+{
+    fmpz_poly_factor_t fac;
+    slong k;
+    if (fmpz_poly_degree(c) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, c);
+    for (k = 0; k < fac->num; k++) rs_alg_roots_append(list, n, fac->p + k, 0);
+    fmpz_poly_factor_clear(fac);
+}
+
+/* the index of the first a[i] > 0 in the sorted a[0..n) (n if none) */
+static slong first_positive(rs_alg_t *a, slong n, slong prec)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        rs_alg_refine(a + i, prec);
+        if (a[i].rational ? fmpq_sgn(a[i].q) > 0 : arb_is_positive(a[i].x)) break;
+    }
+    return i;
+}
+
 /* the rational with the smallest power-of-two denominator strictly between
  * the enclosures of a and b (disjoint; NULL: infinite); 0 when it fits */
 static void rational_between(fmpq_t out, const rs_alg_t *a, const rs_alg_t *b)
@@ -254,19 +277,29 @@ static void bilinear_n(fmpz_poly_t out, const fmpz_poly_t c, slong n)
 }
 
 
-/* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
-static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
+/* out = the terms of R in variable v alone (all of R when it depends on no
+ * other variable), as a univariate polynomial; ctx has at most 3 variables */
+static void mpoly_univar(fmpz_poly_t out, const fmpz_mpoly_t R, slong v, const fmpz_mpoly_ctx_t ctx)
 {
-    slong i, e[2];
+    slong i, j, nv = ctx->minfo->nvars;
+    ulong e[3];
     fmpz_t c;
     fmpz_init(c);
     fmpz_poly_zero(out);
     for (i = 0; i < fmpz_mpoly_length(R, ctx); i++) {
+        int other = 0;
         fmpz_mpoly_get_term_coeff_fmpz(c, R, i, ctx);
-        fmpz_mpoly_get_term_exp_si(e, R, i, ctx);
-        if (e[0] == 0) fmpz_poly_set_coeff_fmpz(out, e[1], c);
+        fmpz_mpoly_get_term_exp_ui(e, R, i, ctx);
+        for (j = 0; j < nv; j++) other |= j != v && e[j] != 0;
+        if (!other) fmpz_poly_set_coeff_fmpz(out, (slong) e[v], c);
     }
     fmpz_clear(c);
+}
+
+/* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
+static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
+{
+    mpoly_univar(out, R, 1, ctx);
 }
 
 /* The critical values on the line z = i^e s: where a root can reach the
@@ -775,17 +808,20 @@ static json_t *lhp_evidence(const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, 
 
 /* ---- A(alpha) of a one-step method ------------------------------------------- */
 
-/* acc += c(u) s^k (c in Z[u]; ctx: s = variable 0, u = variable 1) */
-static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz_t f, const fmpz_mpoly_ctx_t ctx)
+/* acc += f c(u) x^pre, c in Z[u], u the last variable of ctx, pre the
+ * exponents of the others (ctx has at most three variables) */
+static void last_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, const ulong *pre, const fmpz_t f,
+                        const fmpz_mpoly_ctx_t ctx)
 {
-    slong j;
+    slong j, nv = ctx->minfo->nvars;
+    ulong ex[3];
     fmpz_t t;
     fmpz_mpoly_t m;
     fmpz_init(t);
     fmpz_mpoly_init(m, ctx);
+    for (j = 0; j + 1 < nv; j++) ex[j] = pre[j];
     for (j = 0; j <= fmpz_poly_degree(c); j++) {
-        ulong ex[2];
-        ex[0] = (ulong) k; ex[1] = (ulong) j;
+        ex[nv - 1] = (ulong) j;
         fmpz_mul(t, c->coeffs + j, f);
         if (fmpz_is_zero(t)) continue;
         fmpz_mpoly_set_coeff_fmpz_ui(m, t, ex, ctx);
@@ -794,6 +830,14 @@ static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz
     }
     fmpz_clear(t);
     fmpz_mpoly_clear(m, ctx);
+}
+
+/* acc += c(u) s^k (c in Z[u]; ctx: s = variable 0, u = variable 1) */
+static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz_t f, const fmpz_mpoly_ctx_t ctx)
+{
+    ulong pre[1];
+    pre[0] = (ulong) k;
+    last_addmul(acc, c, pre, f, ctx);
 }
 
 /* G(s, u) = |f(z)|^2 on the ray z = -s (1 - i u), f in Z[z]: with w = -1 + i u,
@@ -913,21 +957,11 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             if (!fmpz_mpoly_discriminant(T, G, 0, ctx) || fmpz_mpoly_is_zero(T, ctx)) goto done;
             mpoly_to_s(c, T, ctx);
         } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
-        if (fmpz_poly_degree(c) >= 1) {
-            fmpz_poly_factor_t fac;
-            slong k;
-            fmpz_poly_factor_init(fac);
-            fmpz_poly_factor(fac, c);
-            for (k = 0; k < fac->num; k++) rs_alg_roots_append(&crit, &ncrit, fac->p + k, 0);
-            fmpz_poly_factor_clear(fac);
-        }
+        roots_append_factored(&crit, &ncrit, c);
     }
     ralg_sort(crit, &ncrit);
     /* the first critical value > 0 */
-    for (first = 0; first < ncrit; first++) {
-        rs_alg_refine(crit + first, prec);
-        if (crit[first].rational ? fmpq_sgn(crit[first].q) > 0 : arb_is_positive(crit[first].x)) break;
-    }
+    first = first_positive(crit, ncrit, prec);
     *inside = 1;
     for (i = first; i <= ncrit && *inside == 1 && r == RS_OK; i++) {
         fmpq_t u0, w0, zr, zi;
@@ -1022,24 +1056,11 @@ done:
 
 /* acc += f c(u) s^ks t^kt in Z[t, s, u] */
 static void tsu_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, ulong kt, ulong ks, const fmpz_t f,
-                      const fmpz_mpoly_ctx_t ctx)
+                       const fmpz_mpoly_ctx_t ctx)
 {
-    slong j;
-    fmpz_t x;
-    fmpz_mpoly_t m;
-    fmpz_init(x);
-    fmpz_mpoly_init(m, ctx);
-    for (j = 0; j <= fmpz_poly_degree(c); j++) {
-        ulong ex[3];
-        ex[0] = kt; ex[1] = ks; ex[2] = (ulong) j;
-        fmpz_mul(x, c->coeffs + j, f);
-        if (fmpz_is_zero(x)) continue;
-        fmpz_mpoly_set_coeff_fmpz_ui(m, x, ex, ctx);
-        fmpz_mpoly_add(acc, acc, m, ctx);
-        fmpz_mpoly_zero(m, ctx);
-    }
-    fmpz_clear(x);
-    fmpz_mpoly_clear(m, ctx);
+    ulong pre[2];
+    pre[0] = kt; pre[1] = ks;
+    last_addmul(acc, c, pre, f, ctx);
 }
 
 /* q(i t, z) = A + i B on the ray z = s w, w = -1 + i sg u (sg = +-1), q the
@@ -1082,22 +1103,6 @@ static void ray_bilinear(fmpz_mpoly_t A, fmpz_mpoly_t B, const zpoly_t *P, int s
         fmpz_poly_neg(wr, t);
     }
     fmpz_poly_clear(wr); fmpz_poly_clear(wi); fmpz_poly_clear(t); fmpz_poly_clear(su); fmpz_poly_clear(cb);
-    fmpz_clear(c);
-}
-
-/* out = R as a polynomial in variable v (R depends on no other) */
-static void mpoly_univar(fmpz_poly_t out, const fmpz_mpoly_t R, slong v, const fmpz_mpoly_ctx_t ctx)
-{
-    slong i;
-    ulong e[3];
-    fmpz_t c;
-    fmpz_init(c);
-    fmpz_poly_zero(out);
-    for (i = 0; i < fmpz_mpoly_length(R, ctx); i++) {
-        fmpz_mpoly_get_term_coeff_fmpz(c, R, i, ctx);
-        fmpz_mpoly_get_term_exp_ui(e, R, i, ctx);
-        fmpz_poly_set_coeff_fmpz(out, (slong) e[v], c);
-    }
     fmpz_clear(c);
 }
 
@@ -1174,7 +1179,6 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
     slong nr = 0, i, k;
     fmpz_mpoly_t f;
     fmpz_poly_t g;
-    fmpz_poly_factor_t fac;
     int r = RS_OK;
     fmpz_mpoly_init(f, ctx);
     fmpz_poly_init(g);
@@ -1183,18 +1187,11 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
     for (i = 0; i < cyl->n; i++) {
         rs_an_forall_subst(f, cyl->p + i, 2, u0, ctx);
         mpoly_univar(g, f, 1, ctx);
-        if (fmpz_poly_degree(g) < 1) continue;
-        fmpz_poly_factor_init(fac);
-        fmpz_poly_factor(fac, g);
-        for (k = 0; k < fac->num; k++) rs_alg_roots_append(&rts, &nr, fac->p + k, 0);
-        fmpz_poly_factor_clear(fac);
+        roots_append_factored(&rts, &nr, g);
     }
     ralg_sort(rts, &nr);
     /* the positive roots only: samples from (0, first) on */
-    for (k = 0; k < nr; k++) {
-        rs_alg_refine(rts + k, 128);
-        if (rts[k].rational ? fmpq_sgn(rts[k].q) > 0 : arb_is_positive(rts[k].x)) break;
-    }
+    k = first_positive(rts, nr, 128);
     *bad = 0;
     for (i = k; i <= nr && !*bad && r == RS_OK; i++) {
         fmpq_t s0;
@@ -1272,10 +1269,7 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             fmpz_poly_clear(g);
         }
         ralg_sort(crit, &ncrit);
-        for (first = 0; first < ncrit; first++) {
-            rs_alg_refine(crit + first, prec);
-            if (crit[first].rational ? fmpq_sgn(crit[first].q) > 0 : arb_is_positive(crit[first].x)) break;
-        }
+        first = first_positive(crit, ncrit, prec);
         ncritall += ncrit - first;
         for (i = first; i <= ncrit && r == RS_OK; i++) {
             fmpq_t u0, zr, zi;
