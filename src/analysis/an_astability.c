@@ -20,6 +20,11 @@
  *    one-step method with real coefficients by the rays z = -s (1 - i u)
  *    (alpha_onestep: tan(alpha) a critical value of |N|^2 - |D|^2 on them),
  *    cross-checked with the E-polynomial's A-stability and with the locus;
+ *  - A(alpha) and A-stability of any p over Q(i) (alpha_general), and a
+ *    cross-check of the two routes above: on the rays z = -s (1 -+ i u) a
+ *    root meets the circle only on curves in (s, u) (Res_t of the bilinear
+ *    transform's parts), whose projection in s cuts u into cells decided
+ *    exactly on rational points of one ray each;
  *  - the limit of max |lambda| as z -> inf (L-stability: 0). */
 #include <stdlib.h>
 #include <string.h>
