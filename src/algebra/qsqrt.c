@@ -348,29 +348,47 @@ void rs_qdc_abs2(rs_qd_struct *r, const rs_qdc_struct *c, slong d)
 }
 
 /* Schur-Cohn (Henrici, Applied and Computational Complex Analysis I, 6.8):
- * all roots of p in |lambda| < 1 iff |c_0| < |c_n| and the same holds for
- * (conj(c_n) p - c_0 p*)/lambda, p*(lambda) = lambda^n conj(p(1/conj lambda)) */
-int rs_qdc_schur_stable(const rs_qdc_struct *c, slong n, slong d)
+ * with delta = |c_n|^2 - |c_0|^2 != 0, q = (conj(c_n) p - c_0 p*)/lambda
+ * (p*(lambda) = lambda^n conj(p(1/conj lambda))) has degree n - 1 and, by
+ * Rouche on the circle (|p*| = |p| there), inside(p) = inside(q) + 1 if
+ * delta > 0, inside(p) = outside(q) if delta < 0.  A root on the circle is
+ * a root of every q, so it forces some delta = 0: returns 0 then (counts
+ * not given), else 1 with *inside. */
+int rs_qdc_schur_count(slong *inside, const rs_qdc_struct *c, slong n, slong d)
 {
     rs_qdc_struct *a = rs_qdc_vec_init(n + 1), *b = rs_qdc_vec_init(n + 1);
     rs_qd_t x, y;
     slong k, m;
-    int ok = 1;
+    int ok = 1, *sg = flint_malloc((n + 1) * sizeof(int));
     rs_qd_init(x); rs_qd_init(y);
     for (k = 0; k <= n; k++) { rs_qd_set(a[k].re, c[k].re); rs_qd_set(a[k].im, c[k].im); }
     for (m = n; m > 0 && ok; m--) {
         rs_qdc_abs2(x, a + m, d);
         rs_qdc_abs2(y, a, d);
         rs_qd_sub(x, x, y);
-        if (rs_qd_sgn(x, d) <= 0) { ok = 0; break; }
+        sg[m] = rs_qd_sgn(x, d);
+        if (sg[m] == 0) { ok = 0; break; }
         /* b_k = conj(a_m) a_{k+1} - a_0 conj(a_{m-1-k}), k = 0..m-1 */
         for (k = 0; k < m; k++) qdc_comb(b + k, a + m, a + k + 1, a, a + m - 1 - k, d);
         for (k = 0; k < m; k++) { rs_qd_set(a[k].re, b[k].re); rs_qd_set(a[k].im, b[k].im); }
     }
+    /* from the constant up: inside of degree m from that of degree m - 1 */
+    if (ok) {
+        *inside = 0;
+        for (m = 1; m <= n; m++) *inside = sg[m] > 0 ? *inside + 1 : (m - 1) - *inside;
+    }
+    flint_free(sg);
     rs_qd_clear(x); rs_qd_clear(y);
     rs_qdc_vec_clear(a, n + 1);
     rs_qdc_vec_clear(b, n + 1);
     return ok;
+}
+
+int rs_qdc_schur_stable(const rs_qdc_struct *c, slong n, slong d)
+{
+    slong in;
+    /* every delta > 0 iff n inside (a delta < 0 leaves at most n - 1) */
+    return rs_qdc_schur_count(&in, c, n, d) && in == n;
 }
 
 static void qd_arb(arb_t r, const rs_qd_struct *a, const arb_t sd, slong prec)
@@ -409,29 +427,34 @@ int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec
     return ok;
 }
 
-int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d)
+int rs_qdc_roots_count(slong *below, slong *above, const rs_qdc_struct *c, slong n, slong d)
 {
     slong prec, k;
-    int res = -1;
+    *below = *above = 0;
     if (n < 1) return 1;
-    for (prec = 64; prec <= 4096 && res == -1; prec *= 2) {
+    for (prec = 64; prec <= 4096 && *below + *above < n; prec *= 2) {
         acb_ptr z = _acb_vec_init(n);
         arb_t m;
-        slong below = 0, above = 0;
+        *below = *above = 0;
         arb_init(m);
         if (rs_qdc_roots(z, c, n, d, prec))
             for (k = 0; k < n; k++) {
                 acb_abs(m, z + k, prec);
                 arb_sub_ui(m, m, 1, prec);
-                if (arb_is_negative(m)) below++;
-                else if (arb_is_positive(m)) above++;
+                if (arb_is_negative(m)) (*below)++;
+                else if (arb_is_positive(m)) (*above)++;
             }
-        if (above > 0) res = 0;
-        else if (below == n) res = 1;
         _acb_vec_clear(z, n);
         arb_clear(m);
     }
-    return res;
+    return *below + *above == n;
+}
+
+int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d)
+{
+    slong below, above;
+    rs_qdc_roots_count(&below, &above, c, n, d);
+    return above > 0 ? 0 : below == n ? 1 : -1;
 }
 
 void rs_qd_astab_init(rs_qd_astab_t a)

@@ -69,11 +69,17 @@ void rs_qdpoly_evaluate_cx(rs_qdc_struct *v, const rs_qdpoly_t P, const fmpq_t z
  * c' = (conj(c_n) p - c_0 p*)/lambda with the exact sign of
  * |c_n|^2 - |c_0|^2 in Q(sqrt d) at each step.  Returns 1 or 0. */
 int rs_qdc_schur_stable(const rs_qdc_struct *c, slong n, slong d);
+/* the same recursion counting: 1 and *inside (the roots in |lambda| < 1;
+ * none on the circle then), or 0 when some |c_n|^2 - |c_0|^2 vanishes */
+int rs_qdc_schur_count(slong *inside, const rs_qdc_struct *c, slong n, slong d);
 
 /* the same question answered from certified root enclosures (Arb, sqrt d a
  * ball): 1 all |root| < 1, 0 some |root| > 1, -1 undecided at every
  * precision up to 4096 bits (a root on or too near the circle) */
 int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d);
+/* the roots' certified sides: *below with |root| < 1, *above with |root| > 1;
+ * 1 when every root is on one side (none on or too near the circle) */
+int rs_qdc_roots_count(slong *below, slong *above, const rs_qdc_struct *c, slong n, slong d);
 /* the n roots of that polynomial as certified, isolated balls z[0..n) at
  * precision prec (sqrt d a ball): 1, or 0 when they are not isolated there
  * (a repeated root, or prec too low) */

@@ -20,6 +20,11 @@
  *    one-step method with real coefficients by the rays z = -s (1 - i u)
  *    (alpha_onestep: tan(alpha) a critical value of |N|^2 - |D|^2 on them),
  *    cross-checked with the E-polynomial's A-stability and with the locus;
+ *  - A(alpha) and A-stability of any p over Q(i) (alpha_general), and a
+ *    cross-check of the two routes above: on the rays z = -s (1 -+ i u) a
+ *    root meets the circle only on curves in (s, u) (Res_t of the bilinear
+ *    transform's parts), whose projection in s cuts u into cells decided
+ *    exactly on rational points of one ray each;
  *  - the limit of max |lambda| as z -> inf (L-stability: 0). */
 #include <stdlib.h>
 #include <string.h>
@@ -83,6 +88,29 @@ static void ralg_sort(rs_alg_t *a, slong *n)
             for (i = 0; i < *n; i++) rs_alg_refine(a + i, prec);
         }
     }
+}
+
+/* the real roots of every irreducible factor of c (degree >= 1) appended */
+static void roots_append_factored(rs_alg_t **list, slong *n, const fmpz_poly_t c)
+{
+    fmpz_poly_factor_t fac;
+    slong k;
+    if (fmpz_poly_degree(c) < 1) return;
+    fmpz_poly_factor_init(fac);
+    fmpz_poly_factor(fac, c);
+    for (k = 0; k < fac->num; k++) rs_alg_roots_append(list, n, fac->p + k, 0);
+    fmpz_poly_factor_clear(fac);
+}
+
+/* the index of the first a[i] > 0 in the sorted a[0..n) (n if none) */
+static slong first_positive(rs_alg_t *a, slong n, slong prec)
+{
+    slong i;
+    for (i = 0; i < n; i++) {
+        rs_alg_refine(a + i, prec);
+        if (a[i].rational ? fmpq_sgn(a[i].q) > 0 : arb_is_positive(a[i].x)) break;
+    }
+    return i;
 }
 
 /* the rational with the smallest power-of-two denominator strictly between
@@ -254,19 +282,29 @@ static void bilinear_n(fmpz_poly_t out, const fmpz_poly_t c, slong n)
 }
 
 
-/* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
-static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
+/* out = the terms of R in variable v alone (all of R when it depends on no
+ * other variable), as a univariate polynomial; ctx has at most 3 variables */
+static void mpoly_univar(fmpz_poly_t out, const fmpz_mpoly_t R, slong v, const fmpz_mpoly_ctx_t ctx)
 {
-    slong i, e[2];
+    slong i, j, nv = ctx->minfo->nvars;
+    ulong e[3];
     fmpz_t c;
     fmpz_init(c);
     fmpz_poly_zero(out);
     for (i = 0; i < fmpz_mpoly_length(R, ctx); i++) {
+        int other = 0;
         fmpz_mpoly_get_term_coeff_fmpz(c, R, i, ctx);
-        fmpz_mpoly_get_term_exp_si(e, R, i, ctx);
-        if (e[0] == 0) fmpz_poly_set_coeff_fmpz(out, e[1], c);
+        fmpz_mpoly_get_term_exp_ui(e, R, i, ctx);
+        for (j = 0; j < nv; j++) other |= j != v && e[j] != 0;
+        if (!other) fmpz_poly_set_coeff_fmpz(out, (slong) e[v], c);
     }
     fmpz_clear(c);
+}
+
+/* univariate in variable 1 (s) of ctx2, from an mpoly in s only */
+static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_ctx_t ctx)
+{
+    mpoly_univar(out, R, 1, ctx);
 }
 
 /* The critical values on the line z = i^e s: where a root can reach the
@@ -775,17 +813,20 @@ static json_t *lhp_evidence(const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, 
 
 /* ---- A(alpha) of a one-step method ------------------------------------------- */
 
-/* acc += c(u) s^k (c in Z[u]; ctx: s = variable 0, u = variable 1) */
-static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz_t f, const fmpz_mpoly_ctx_t ctx)
+/* acc += f c(u) x^pre, c in Z[u], u the last variable of ctx, pre the
+ * exponents of the others (ctx has at most three variables) */
+static void last_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, const ulong *pre, const fmpz_t f,
+                        const fmpz_mpoly_ctx_t ctx)
 {
-    slong j;
+    slong j, nv = ctx->minfo->nvars;
+    ulong ex[3];
     fmpz_t t;
     fmpz_mpoly_t m;
     fmpz_init(t);
     fmpz_mpoly_init(m, ctx);
+    for (j = 0; j + 1 < nv; j++) ex[j] = pre[j];
     for (j = 0; j <= fmpz_poly_degree(c); j++) {
-        ulong ex[2];
-        ex[0] = (ulong) k; ex[1] = (ulong) j;
+        ex[nv - 1] = (ulong) j;
         fmpz_mul(t, c->coeffs + j, f);
         if (fmpz_is_zero(t)) continue;
         fmpz_mpoly_set_coeff_fmpz_ui(m, t, ex, ctx);
@@ -794,6 +835,14 @@ static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz
     }
     fmpz_clear(t);
     fmpz_mpoly_clear(m, ctx);
+}
+
+/* acc += c(u) s^k (c in Z[u]; ctx: s = variable 0, u = variable 1) */
+static void su_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, slong k, const fmpz_t f, const fmpz_mpoly_ctx_t ctx)
+{
+    ulong pre[1];
+    pre[0] = (ulong) k;
+    last_addmul(acc, c, pre, f, ctx);
 }
 
 /* G(s, u) = |f(z)|^2 on the ray z = -s (1 - i u), f in Z[z]: with w = -1 + i u,
@@ -833,6 +882,39 @@ static void su_coeff(fmpz_poly_t out, const fmpz_mpoly_t H, ulong k, const fmpz_
     fmpz_mpoly_get_coeff_vars_ui(c, H, &v, &k, 1, ctx);
     mpoly_to_s(out, c, ctx);
     fmpz_mpoly_clear(c, ctx);
+}
+
+/* the JSON of alpha for tan(alpha) = a (a critical value of u), its ball in degrees */
+static json_t *alpha_of_tan(arb_t deg, rs_alg_t *a, slong prec)
+{
+    fmpz_poly_t mp;
+    char *ms, *buf;
+    arb_t pi;
+    json_t *o;
+    arb_init(pi);
+    fmpz_poly_init(mp);
+    rs_alg_refine(a, prec);
+    if (a->rational) {
+        fmpz_poly_set_coeff_fmpz(mp, 1, fmpq_denref(a->q));
+        fmpz_poly_set_coeff_fmpz(mp, 0, fmpq_numref(a->q));
+        fmpz_neg(mp->coeffs, mp->coeffs);
+    } else fmpz_poly_set(mp, a->minpoly);
+    ms = poly_str(mp, "u");
+    buf = malloc(strlen(ms) + 120);
+    sprintf(buf, "(180/pi) atan(u), u = tan(alpha) the real root %ld (ascending) of %s",
+            (long) (a->rational ? 0 : a->idx) + 1, ms);
+    o = json_pack("{s:s,s:s,s:f}", "exact", buf, "tan_alpha_minpoly", ms, "tan_alpha",
+                  arf_get_d(arb_midref(a->x), ARF_RND_NEAR));
+    if (a->rational) json_object_set_new(o, "tan_alpha_exact", rs_json_fmpq(a->q));
+    arb_atan(deg, a->x, prec);
+    arb_mul_ui(deg, deg, 180, prec);
+    arb_const_pi(pi, prec);
+    arb_div(deg, deg, pi, prec);
+    free(buf);
+    free(ms);
+    fmpz_poly_clear(mp);
+    arb_clear(pi);
+    return o;
 }
 
 /* A(alpha) of a one-step method p = D(z) lambda - N(z), real coefficients.
@@ -880,21 +962,11 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             if (!fmpz_mpoly_discriminant(T, G, 0, ctx) || fmpz_mpoly_is_zero(T, ctx)) goto done;
             mpoly_to_s(c, T, ctx);
         } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
-        if (fmpz_poly_degree(c) >= 1) {
-            fmpz_poly_factor_t fac;
-            slong k;
-            fmpz_poly_factor_init(fac);
-            fmpz_poly_factor(fac, c);
-            for (k = 0; k < fac->num; k++) rs_alg_roots_append(&crit, &ncrit, fac->p + k, 0);
-            fmpz_poly_factor_clear(fac);
-        }
+        roots_append_factored(&crit, &ncrit, c);
     }
     ralg_sort(crit, &ncrit);
     /* the first critical value > 0 */
-    for (first = 0; first < ncrit; first++) {
-        rs_alg_refine(crit + first, prec);
-        if (crit[first].rational ? fmpq_sgn(crit[first].q) > 0 : arb_is_positive(crit[first].x)) break;
-    }
+    first = first_positive(crit, ncrit, prec);
     *inside = 1;
     for (i = first; i <= ncrit && *inside == 1 && r == RS_OK; i++) {
         fmpq_t u0, w0, zr, zi;
@@ -967,33 +1039,7 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
                     arb_zero(deg);
                 } else {
                     /* as alpha_linear prints it: u = tan(alpha), its minimal polynomial */
-                    rs_alg_t *a = crit + i - 1;
-                    fmpz_poly_t mp;
-                    char *ms, *buf;
-                    arb_t pi;
-                    arb_init(pi);
-                    fmpz_poly_init(mp);
-                    rs_alg_refine(a, prec);
-                    if (a->rational) {
-                        fmpz_poly_set_coeff_fmpz(mp, 1, fmpq_denref(a->q));
-                        fmpz_poly_set_coeff_fmpz(mp, 0, fmpq_numref(a->q));
-                        fmpz_neg(mp->coeffs, mp->coeffs);
-                    } else fmpz_poly_set(mp, a->minpoly);
-                    ms = poly_str(mp, "u");
-                    buf = malloc(strlen(ms) + 120);
-                    sprintf(buf, "(180/pi) atan(u), u = tan(alpha) the real root %ld (ascending) of %s",
-                            (long) (a->rational ? 0 : a->idx) + 1, ms);
-                    *out = json_pack("{s:s,s:s,s:f}", "exact", buf, "tan_alpha_minpoly", ms, "tan_alpha",
-                                     arf_get_d(arb_midref(a->x), ARF_RND_NEAR));
-                    if (a->rational) json_object_set_new(*out, "tan_alpha_exact", rs_json_fmpq(a->q));
-                    arb_atan(deg, a->x, prec);
-                    arb_mul_ui(deg, deg, 180, prec);
-                    arb_const_pi(pi, prec);
-                    arb_div(deg, deg, pi, prec);
-                    free(buf);
-                    free(ms);
-                    fmpz_poly_clear(mp);
-                    arb_clear(pi);
+                    *out = alpha_of_tan(deg, crit + i - 1, prec);
                 }
             }
         }
@@ -1009,6 +1055,306 @@ done:
     fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(T, ctx);
     fmpz_mpoly_ctx_clear(ctx);
     return r;
+}
+
+/* ---- A(alpha) of any method: the rays against the boundary curves ------------- */
+
+/* acc += f c(u) s^ks t^kt in Z[t, s, u] */
+static void tsu_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, ulong kt, ulong ks, const fmpz_t f,
+                       const fmpz_mpoly_ctx_t ctx)
+{
+    ulong pre[2];
+    pre[0] = kt; pre[1] = ks;
+    last_addmul(acc, c, pre, f, ctx);
+}
+
+/* q(i t, z) = A + i B on the ray z = s w, w = -1 + i sg u (sg = +-1), q the
+ * bilinear transform (1 - i t)^n p((1 + i t)/(1 - i t), z); ctx: t, s, u */
+static void ray_bilinear(fmpz_mpoly_t A, fmpz_mpoly_t B, const zpoly_t *P, int sg, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_poly_t wr, wi, t, su, cb;
+    fmpz_t c;
+    slong k, a;
+    int part;
+    fmpz_poly_init(wr); fmpz_poly_init(wi); fmpz_poly_init(t); fmpz_poly_init(su); fmpz_poly_init(cb);
+    fmpz_init(c);
+    fmpz_mpoly_zero(A, ctx);
+    fmpz_mpoly_zero(B, ctx);
+    fmpz_poly_set_coeff_si(su, 1, sg);
+    fmpz_poly_one(wr);
+    for (k = 0; k <= P->K; k++) {
+        for (part = 0; part < 2; part++) {
+            bilinear_n(cb, (part ? P->Ci : P->C) + k, P->n);
+            for (a = 0; a <= fmpz_poly_degree(cb); a++) {
+                /* cb_a i^r (wr + i wi), r = a + part */
+                slong r = (a + part) % 4;
+                fmpz_set(c, cb->coeffs + a);
+                if (r >= 2) fmpz_neg(c, c);
+                if (r % 2 == 0) {
+                    tsu_addmul(A, wr, (ulong) a, (ulong) k, c, ctx);
+                    tsu_addmul(B, wi, (ulong) a, (ulong) k, c, ctx);
+                } else {   /* i (wr + i wi) = -wi + i wr */
+                    tsu_addmul(B, wr, (ulong) a, (ulong) k, c, ctx);
+                    fmpz_neg(c, c);
+                    tsu_addmul(A, wi, (ulong) a, (ulong) k, c, ctx);
+                }
+            }
+        }
+        /* (wr + i wi)(-1 + i sg u) = (-wr - sg u wi) + i (sg u wr - wi) */
+        fmpz_poly_mul(t, su, wi);
+        fmpz_poly_add(t, t, wr);
+        fmpz_poly_mul(wr, su, wr);
+        fmpz_poly_sub(wi, wr, wi);
+        fmpz_poly_neg(wr, t);
+    }
+    fmpz_poly_clear(wr); fmpz_poly_clear(wi); fmpz_poly_clear(t); fmpz_poly_clear(su); fmpz_poly_clear(cb);
+    fmpz_clear(c);
+}
+
+/* the curves in (s, u) where a root of p meets the unit circle on the rays:
+ * Res_t(A, B), and with a common factor G of A and B (roots staying on the
+ * circle) disc_t G and lc_t G; p(-1, z) = 0 (t = inf) from the t^n
+ * coefficients of A and B */
+static void ray_boundary(rs_plist_t *L, const fmpz_mpoly_t A0, const fmpz_mpoly_t B0, slong n,
+                         const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t A, B, G, R, c1, c2;
+    slong v = 0;
+    ulong e;
+    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(G, ctx);
+    fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(c1, ctx); fmpz_mpoly_init(c2, ctx);
+    fmpz_mpoly_set(A, A0, ctx);
+    fmpz_mpoly_set(B, B0, ctx);
+    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
+        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
+        fmpz_mpoly_divexact(A, A, G, ctx);
+        fmpz_mpoly_divexact(B, B, G, ctx);
+        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+        e = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(R, G, &v, &e, 1, ctx);
+        rs_plist_add(L, R, -1, NULL, ctx);
+    }
+    if (fmpz_mpoly_is_zero(A, ctx) || fmpz_mpoly_is_zero(B, ctx)) {
+        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
+        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
+               && fmpz_mpoly_resultant(R, A, B, 0, ctx))
+        rs_plist_add(L, R, -1, NULL, ctx);
+    /* lambda = -1: both t^n coefficients vanish (a curve: their gcd; points: their resultant in s) */
+    e = (ulong) n;
+    fmpz_mpoly_get_coeff_vars_ui(c1, A0, &v, &e, 1, ctx);
+    fmpz_mpoly_get_coeff_vars_ui(c2, B0, &v, &e, 1, ctx);
+    if (fmpz_mpoly_is_zero(c1, ctx) || fmpz_mpoly_is_zero(c2, ctx)) rs_plist_add(L, fmpz_mpoly_is_zero(c1, ctx) ? c2 : c1, -1, NULL, ctx);
+    else if (fmpz_mpoly_gcd(G, c1, c2, ctx)) {
+        rs_plist_add(L, G, -1, NULL, ctx);
+        fmpz_mpoly_divexact(c1, c1, G, ctx);
+        fmpz_mpoly_divexact(c2, c2, G, ctx);
+        if (fmpz_mpoly_degree_si(c1, 1, ctx) + fmpz_mpoly_degree_si(c2, 1, ctx) >= 1
+            && fmpz_mpoly_resultant(R, c1, c2, 1, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+    }
+    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
+    fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(c1, ctx); fmpz_mpoly_clear(c2, ctx);
+}
+
+/* exact status at z = s0 (-1 + i sg u0) */
+static int ray_status(rs_status_t *st, const zpoly_t *P, const fmpq_t s0, const fmpq_t u0, int sg, fmpq_t zr,
+                      fmpq_t zi, rs_error_t err)
+{
+    fmpq_poly_t re, im;
+    int r = RS_OK;
+    fmpq_neg(zr, s0);
+    fmpq_mul(zi, s0, u0);
+    if (sg < 0) fmpq_neg(zi, zi);
+    fmpq_poly_init(re); fmpq_poly_init(im);
+    eval_at(re, im, P, zr, zi);
+    if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) *st = RS_STATUS_SINGULAR;
+    else r = rs_routh_complex_checked_status(st, re, im, P->n, err);
+    fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return r;
+}
+
+/* Is the ray u = u0 (z = s (-1 + i sg u0), s > 0) in the region?  The
+ * status changes along it only at the positive roots in s of the curves
+ * (cyl: those of degree >= 1 in s), so one rational s per interval between
+ * them decides it.  *bad = 1 with (zr, zi) and *st a point that is not. */
+static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpoly_t *P, const rs_plist_t *cyl,
+                      const fmpq_t u0, int sg, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    rs_alg_t *rts = NULL, zero;
+    slong nr = 0, i, k;
+    fmpz_mpoly_t f;
+    fmpz_poly_t g;
+    int r = RS_OK;
+    fmpz_mpoly_init(f, ctx);
+    fmpz_poly_init(g);
+    rs_alg_init(&zero);
+    zero.rational = 1;
+    for (i = 0; i < cyl->n; i++) {
+        rs_an_forall_subst(f, cyl->p + i, 2, u0, ctx);
+        mpoly_univar(g, f, 1, ctx);
+        roots_append_factored(&rts, &nr, g);
+    }
+    ralg_sort(rts, &nr);
+    /* the positive roots only: samples from (0, first) on */
+    k = first_positive(rts, nr, 128);
+    *bad = 0;
+    for (i = k; i <= nr && !*bad && r == RS_OK; i++) {
+        fmpq_t s0;
+        fmpq_init(s0);
+        rational_between(s0, i == k ? &zero : rts + i - 1, i == nr ? NULL : rts + i);
+        r = ray_status(st, P, s0, u0, sg, zr, zi, err);
+        if (r == RS_OK && !bounded(*st)) *bad = 1;
+        if (r == RS_OK) r = rs_budget_check(err, "astability");
+        fmpq_clear(s0);
+    }
+    for (i = 0; i < nr; i++) rs_alg_clear(rts + i);
+    free(rts);
+    rs_alg_clear(&zero);
+    fmpz_mpoly_clear(f, ctx);
+    fmpz_poly_clear(g);
+    return r;
+}
+
+/* A(alpha) of any p(lambda, z) over Q(i): on the rays z = s (-1 + i sg u),
+ * s > 0, u >= 0 (sg = -1 too over Q(i), where the region need not be
+ * symmetric), a root crosses the unit circle only on the curves of
+ * ray_boundary; whether a ray has a point outside the region changes only
+ * at the critical u of their projection in s (leading coefficients,
+ * discriminants, pairwise resultants, values at s = 0: rs_proj_eliminate,
+ * as in `region ... for all`).  Each u-cell is decided at a rational u0 by
+ * ray_decide (exact statuses, complex Schur-Cohn checked by Bilharz).
+ * tan(alpha) is the left end of the first cell with a point outside (0 if
+ * it is the first), that point is the evidence.  The rays at the critical
+ * values themselves lie in the closure of the cells' rays; a repeated root
+ * on the circle at an isolated point there is not looked for.  *inside: 1
+ * every ray of Re z < 0 in the region, 0 not (*out the angle). */
+static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, int cx, rs_run_t *run)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t A, B;
+    rs_bound_t dom[3];
+    rs_alg_t best, zero;
+    int sg, r = RS_OK, have = 0, first_cell = 0;
+    slong ncells = 0, ncritall = 0, prec = 256;
+    fmpq_t bzr, bzi;
+    rs_status_t bst = RS_STATUS_STABLE;
+    *out = NULL;
+    *ev = NULL;
+    *inside = 1;
+    fmpz_mpoly_ctx_init(ctx, 3, ORD_LEX);
+    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx);
+    rs_bounds_init(dom, 3);
+    dom[1].has_lo = 1; fmpq_zero(dom[1].lo);              /* s > 0 */
+    dom[2].has_lo = 1; dom[2].lo_closed = 1; fmpq_zero(dom[2].lo);   /* u >= 0 */
+    rs_alg_init(&best); rs_alg_init(&zero);
+    zero.rational = 1;
+    fmpq_init(bzr); fmpq_init(bzi);
+    for (sg = 1; sg >= (cx ? -1 : 1) && r == RS_OK; sg -= 2) {
+        rs_plist_t L, cyl, U;
+        rs_alg_t *crit = NULL;
+        slong ncrit = 0, i, first;
+        rs_plist_init(&L); rs_plist_init(&cyl); rs_plist_init(&U);
+        ray_bilinear(A, B, P, sg, ctx);
+        ray_boundary(&L, A, B, P->n, ctx);
+        /* curves in s (the factor s itself never vanishes on a ray); u-only factors are critical values */
+        for (i = 0; i < L.n; i++) {
+            fmpz_mpoly_struct *f = L.p + i;
+            if (fmpz_mpoly_degree_si(f, 1, ctx) >= 1) {
+                if (!(fmpz_mpoly_length(f, ctx) == 1 && fmpz_mpoly_total_degree_si(f, ctx) == 1))
+                    rs_plist_add(&cyl, f, -1, NULL, ctx);
+            } else rs_plist_add(&U, f, -1, NULL, ctx);
+        }
+        r = rs_proj_eliminate(&U, run, &cyl, 1, dom + 1, 2, dom, ctx);
+        for (i = 0; i < U.n && r == RS_OK; i++) {
+            fmpz_poly_t g;
+            if (fmpz_mpoly_degree_si(U.p + i, 2, ctx) < 1 || fmpz_mpoly_degree_si(U.p + i, 1, ctx) > 0) continue;
+            fmpz_poly_init(g);
+            mpoly_univar(g, U.p + i, 2, ctx);
+            rs_alg_roots_append(&crit, &ncrit, g, 0);
+            fmpz_poly_clear(g);
+        }
+        ralg_sort(crit, &ncrit);
+        first = first_positive(crit, ncrit, prec);
+        ncritall += ncrit - first;
+        for (i = first; i <= ncrit && r == RS_OK; i++) {
+            fmpq_t u0, zr, zi;
+            rs_status_t st;
+            int bad;
+            /* past the angle found on the other side: nothing smaller here */
+            if (have && i > first && rs_alg_cmp(crit + i - 1, &best) >= 0) break;
+            fmpq_init(u0); fmpq_init(zr); fmpq_init(zi);
+            rational_between(u0, i == first ? &zero : crit + i - 1, i == ncrit ? NULL : crit + i);
+            r = ray_decide(&bad, &st, zr, zi, P, &cyl, u0, sg, ctx, run->err);
+            ncells++;
+            if (r == RS_OK && bad) {
+                *inside = 0;
+                have = 1;
+                fmpq_set(bzr, zr); fmpq_set(bzi, zi);
+                bst = st;
+                first_cell = (i == first);
+                rs_alg_clear(&best);
+                rs_alg_init(&best);
+                if (first_cell) { best.rational = 1; fmpq_zero(best.q); arb_zero(best.x); }
+                else {
+                    rs_alg_t *a = crit + i - 1;
+                    best.rational = a->rational; fmpq_set(best.q, a->q); fmpz_poly_set(best.minpoly, a->minpoly);
+                    best.idx = a->idx; arb_set(best.x, a->x); best.prec = a->prec;
+                }
+            }
+            fmpq_clear(u0); fmpq_clear(zr); fmpq_clear(zi);
+            if (r == RS_OK && bad) break;
+        }
+        for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+        free(crit);
+        rs_plist_clear(&L, ctx); rs_plist_clear(&cyl, ctx); rs_plist_clear(&U, ctx);
+    }
+    if (r == RS_OK) {
+        const char *route = "any method: rays z = -s (1 - i u), u = tan|arg(-z)|; the curves in (s, u) where a root "
+                            "meets the unit circle (resultant of the bilinear transform's real and imaginary parts "
+                            "in t, lambda = -1), their critical u (projection in s), each u-cell decided exactly "
+                            "at a rational u on rational points of its ray";
+        *ev = json_pack("{s:s,s:I,s:I}", "route", route, "critical_u", (json_int_t) ncritall, "cells_decided",
+                        (json_int_t) ncells);
+        if (have) {
+            json_object_set_new(*ev, "first_point_outside", json_pack("{s:o,s:o,s:s}", "re", rs_json_fmpq(bzr), "im",
+                                rs_json_fmpq(bzi), "status", rs_status_name(bst)));
+            if (first_cell) { *out = json_integer(0); arb_zero(deg); }
+            else *out = alpha_of_tan(deg, &best, prec);
+        } else arb_set_ui(deg, 90);
+    }
+    rs_alg_clear(&best); rs_alg_clear(&zero);
+    fmpq_clear(bzr); fmpq_clear(bzi);
+    rs_bounds_clear(dom, 3);
+    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return r;
+}
+
+/* o's alpha_degrees_approx (printed to double) and the ball deg overlap */
+static int alpha_agree(json_t *o, const arb_t deg)
+{
+    arb_t a;
+    int ok;
+    json_t *v = json_object_get(o, "alpha_degrees_approx");
+    if (v == NULL || !json_is_number(v)) return 0;
+    arb_init(a);
+    arb_set_d(a, json_number_value(v));
+    arb_add_error_2exp_si(a, -30);
+    ok = arb_overlaps(a, deg);
+    arb_clear(a);
+    return ok;
+}
+
+/* alpha_degrees (exact), its approximation, its ball and its evidence into o */
+static void alpha_set(json_t *o, json_t *exact, const arb_t deg, json_t *evidence)
+{
+    char *ds = rs_radius_arb_str(deg, 15);
+    json_object_set(o, "alpha_degrees", exact);
+    json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(deg), ARF_RND_NEAR)));
+    json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+    if (evidence != NULL) json_object_set(o, "alpha_evidence", evidence);
+    json_object_del(o, "alpha_note");
+    flint_free(ds);
 }
 
 /* ---- request ------------------------------------------------------------------ */
@@ -1070,6 +1416,9 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_struct *pre = NULL, *pim = NULL;
     json_t *alpha_one = NULL, *alpha_ev = NULL;   /* A(alpha) by the rays of a one-step method, its evidence */
     arb_t alpha_one_deg;
+    json_t *alpha_gen = NULL, *gen_ev = NULL;     /* A(alpha) by the rays against the boundary curves */
+    arb_t gen_deg;
+    int gen_inside = 0, axes;
     if (run->m->qd != NULL) return rs_an_qd_astability(run, req);   /* R over Q(sqrt d) */
     if (rs_an_complex_mode(run)) {
         /* complex set values stay symbolic in the variant; rs_run_cx_poly substitutes them over Q(i) */
@@ -1136,6 +1485,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     fmpz_poly_init(disc); fmpz_poly_init(disci); fmpz_poly_init(lc);
     fmpq_init(zr); fmpq_init(zi);
     arb_init(alpha_one_deg);
+    arb_init(gen_deg);
     zdisc(disc, disci, &P);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("astability"));
@@ -1353,46 +1703,73 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                             "the boundary locus and the E-polynomial disagree on A-stability"), "astability");
         goto out;
     }
+    /* route 3, any method: the rays of the open left half-plane (they need the whole negative real axis) */
+    if (!riv.empty && riv.lo_inf) {
+        if ((r = alpha_general(&alpha_gen, &gen_ev, gen_deg, &gen_inside, &P, cx, run)) != RS_OK) {
+            json_decref(ev);
+            goto out;
+        }
+        json_object_set_new(gen_ev, "every_ray_inside", json_boolean(gen_inside));
+        json_array_append(ev, gen_ev);
+    }
+    /* A-stable: the whole closed left half-plane is bounded, so are both axes' halves */
+    axes = !iiv.empty && iiv.lo_inf && iiv.hi_inf && !riv.empty && riv.lo_inf;
     if (lin_decided || one_decided) {
         a_stable = lin_decided ? lin_astable : one_astable;
-        /* A-stable: the whole closed left half-plane is bounded, so are both axes' halves */
-        if (a_stable && (iiv.empty || !iiv.lo_inf || !iiv.hi_inf || riv.empty || !riv.lo_inf)) {
+        if (a_stable && !axes) {
             json_decref(ev);
             r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT,
                                 "A-stable by the boundary locus, yet an axis interval is bounded"), "astability");
             goto out;
         }
+        if (gen_ev != NULL && a_stable != (gen_inside && axes)) {
+            json_decref(ev);
+            r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A-stability: the rays of the "
+                                "left half-plane disagree with the %s", lin_decided ? "boundary locus" : "E-polynomial"),
+                                "astability");
+            goto out;
+        }
         json_object_set_new(o, "a_stable", json_boolean(a_stable));
     } else {
-        json_object_set_new(o, "a_stable", json_null());
-        json_object_set_new(o, "a_stable_note", json_string(
-            "undecided: neither linear in z nor a one-step method (degree 1 in lambda)"));
+        /* the rays decide the open half-plane, the imaginary interval the axis */
+        a_stable = gen_ev != NULL && gen_inside && axes;
+        json_object_set_new(o, "a_stable", json_boolean(a_stable));
+        if (!a_stable)
+            json_object_set_new(o, "a_stable_note", json_string(gen_ev == NULL
+                ? "not A-stable: the real interval does not reach -inf"
+                : !gen_inside ? "not A-stable: a ray of Re z < 0 leaves the region (alpha_evidence)"
+                : "not A-stable: the imaginary interval is not the whole axis"));
     }
     if (alpha_one != NULL) {
         json_t *have = json_object_get(o, "alpha_degrees");
         if (have == NULL || json_is_null(have)) {
-            char *ds = rs_radius_arb_str(alpha_one_deg, 15);
-            json_object_set_new(o, "alpha_degrees", json_incref(alpha_one));
-            json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(alpha_one_deg), ARF_RND_NEAR)));
-            json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
-            if (alpha_ev != NULL) json_object_set(o, "alpha_evidence", alpha_ev);
-            json_object_del(o, "alpha_note");
-            flint_free(ds);
-        } else if (json_real_value(json_object_get(o, "alpha_degrees_approx")) != 0 || !arb_is_zero(alpha_one_deg)) {
+            alpha_set(o, alpha_one, alpha_one_deg, alpha_ev);
+        } else if (!alpha_agree(o, alpha_one_deg)) {
             /* both routes (p linear in z and one-step): the angles must agree */
-            arb_t a;
-            arb_init(a);
-            arb_set_d(a, json_number_value(json_object_get(o, "alpha_degrees_approx")));
-            arb_add_error_2exp_si(a, -30);
-            if (!arb_overlaps(a, alpha_one_deg)) {
-                arb_clear(a);
-                json_decref(ev);
-                r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the boundary "
-                                    "locus and the rays of the one-step method disagree"), "astability");
-                goto out;
-            }
-            arb_clear(a);
+            json_decref(ev);
+            r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the boundary "
+                                "locus and the rays of the one-step method disagree"), "astability");
+            goto out;
         }
+    }
+    if (gen_ev != NULL) {
+        json_t *have = json_object_get(o, "alpha_degrees");
+        if (have == NULL || json_is_null(have)) {
+            if (alpha_gen != NULL) alpha_set(o, alpha_gen, gen_deg, gen_ev);
+            else {
+                json_object_set_new(o, "alpha_degrees", json_integer(90));
+                json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
+                json_object_set(o, "alpha_evidence", gen_ev);
+                json_object_del(o, "alpha_note");
+            }
+        } else if (!alpha_agree(o, gen_deg)) {
+            /* the general route against the boundary locus or the one-step rays */
+            json_decref(ev);
+            r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the rays against the "
+                                "boundary curves disagree with the %s", alpha_one != NULL && !lin_decided
+                                ? "rays of the one-step method" : "boundary locus"), "astability");
+            goto out;
+        } else json_object_set_new(gen_ev, "alpha_agrees", json_true());
     }
     if (riv.empty || !riv.lo_inf) {
         /* A(alpha) for any alpha >= 0 needs the whole negative real axis (A(0), Widlund) */
@@ -1490,5 +1867,8 @@ out:
     json_decref(alpha_one);
     json_decref(alpha_ev);
     arb_clear(alpha_one_deg);
+    json_decref(alpha_gen);
+    json_decref(gen_ev);
+    arb_clear(gen_deg);
     return r;
 }

@@ -58,6 +58,7 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
 typedef struct {
     fmpz_mpoly_t p0, p1;
     slong degree;
+    slong zeros;      /* the roots at 0 the charpoly divided out (lambda^k) */
 } qd_cp_t;
 
 static int qd_cp_get(qd_cp_t *P, rs_run_t *run, const rs_request_t *q)
@@ -68,6 +69,7 @@ static int qd_cp_get(qd_cp_t *P, rs_run_t *run, const rs_request_t *q)
     fmpz_mpoly_init(P->p0, s->zctx);
     fmpz_mpoly_init(P->p1, s->zctx);
     P->degree = 0;
+    P->zeros = 0;
     if (!run->have_sym || s->sqrt_d <= 0)
         return rs_req_error(run, q, q->text, RS_ERR_INTERNAL, "no scheme over Q(sqrt d) for %s", run->m->qd->tableau);
     rs_charpoly_init(cp, s);
@@ -77,6 +79,7 @@ static int qd_cp_get(qd_cp_t *P, rs_run_t *run, const rs_request_t *q)
         rs_charpoly_coeff(P->p0, cp->p, 0, s->sqrt_var, s->zctx);
         rs_charpoly_coeff(P->p1, cp->p, 1, s->sqrt_var, s->zctx);
         P->degree = cp->degree;
+        P->zeros = cp->removed_lambda_power;
     }
     rs_charpoly_clear(cp, s);
     return r;
@@ -474,6 +477,29 @@ static int qd_generic_charpoly(rs_run_t *run, const rs_an_req_t *req, const qd_c
     return RS_OK;
 }
 
+/* the root counts of lambda^z0 p, p = c[0..n], as the rational path prints
+ * them (z0 the power the charpoly divided out): the roots at 0 from z0 and
+ * the trailing zero coefficients, counted inside; the others by the
+ * counting Schur-Cohn recursion over Q(sqrt d)(i) (exact; none on the
+ * circle when it is regular), cross-checked with the certified roots
+ * (RS_ERR_INCONSISTENT when both decide and differ).  No counts when the
+ * recursion meets a zero |c_n|^2 - |c_0|^2. */
+static int qd_counts(json_t *o, const rs_qdc_struct *c, slong n, slong z0, slong d)
+{
+    slong z = 0, in, below, above;
+    int cert;
+    while (z < n && rs_qd_is_zero(c[z].re) && rs_qd_is_zero(c[z].im)) z++;
+    if (!rs_qdc_schur_count(&in, c + z, n - z, d)) return RS_OK;
+    cert = rs_qdc_roots_count(&below, &above, c + z, n - z, d);
+    if (cert && below != in) return RS_ERR_INCONSISTENT;
+    json_object_set_new(o, "inside", json_integer(in + z + z0));
+    if (z + z0 > 0) json_object_set_new(o, "at_zero", json_integer(z + z0));
+    json_object_set_new(o, "on", json_integer(0));
+    json_object_set_new(o, "outside", json_integer(n - z - in));
+    json_object_set_new(o, "counts_certified_roots", json_string(cert ? "agree" : "not separated from the circle"));
+    return RS_OK;
+}
+
 /* stability at the set values: Schur-Cohn over Q(sqrt d)(i) with exact
  * signs and the certified Arb roots; they must agree (exit 3) */
 static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_cp_t *P)
@@ -509,6 +535,12 @@ static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_
                                                               : "not separated from the circle"));
         json_object_set_new(o, "evidence", json_pack("[s,s]", "Schur-Cohn over Q(sqrt d)(i), exact signs",
                                                      "certified roots (Arb, sqrt d a ball)"));
+    }
+    if (n >= 1 && (r = qd_counts(o, c, n, P->zeros, d)) != RS_OK) {
+        json_decref(o);
+        rs_qdc_vec_clear(c, P->degree + 1);
+        return rs_req_error(run, q, q->text, r, "stability over Q(sqrt d): the root counts of Schur-Cohn over "
+                            "Q(sqrt d)(i) and of the certified roots disagree%s", "");
     }
     if (strcmp(status, "undecided") == 0)
         json_object_set_new(o, "note", json_string("not strictly stable (Schur-Cohn); a root on or too near the "

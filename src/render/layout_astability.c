@@ -250,6 +250,29 @@ static void evidence(rs_render_t *r, const json_t *e, const char *q)
                           ": $R$ is analytic in the left half-plane and, by the maximum principle, "
                           "$|R| \\le 1$ there.");
         else rs_render_say(r, ".", ".");
+    } else if (route && strncmp(route, "any method: rays", 16) == 0) {
+        const json_t *fp = json_object_get(e, "first_point_outside");
+        rs_render_say(r, "*Rays route* (any $p$): on the rays $", "\\emph{Rays route} (any $p$): on the rays $");
+        rs_render_poly(r, q);
+        rs_render_say(r, " = -s\\,(1 - i\\,u)$, $s > 0$, a root meets the unit circle only on curves in $(s, u)$ "
+                         "(the resultant in $t$ of the real and imaginary parts of the bilinear transform, and "
+                         "$\\lambda = -1$); ",
+                      " = -s\\,(1 - i\\,u)$, $s > 0$, a root meets the unit circle only on curves in $(s, u)$ "
+                      "(the resultant in $t$ of the real and imaginary parts of the bilinear transform, and "
+                      "$\\lambda = -1$); ");
+        rs_render_sayf(r, "their %lld critical values of $u > 0$ bound the cells, %lld of them decided exactly on "
+                          "rational points of one ray",
+                       "their %lld critical values of $u > 0$ bound the cells, %lld of them decided exactly on "
+                       "rational points of one ray",
+                       (long long) json_integer_value(json_object_get(e, "critical_u")),
+                       (long long) json_integer_value(json_object_get(e, "cells_decided")));
+        if (json_is_object(fp)) {
+            rs_render_say(r, "; at ", "; at ");
+            point(r, fp, q);
+            rs_render_sayf(r, " the scheme is exactly **%s**.", " the scheme is exactly \\textbf{%s}.",
+                           js(fp, "status") ? js(fp, "status") : "?");
+        } else rs_render_say(r, ": every ray of the open left half-plane lies in the region.",
+                             ": every ray of the open left half-plane lies in the region.");
     } else {
         rs_render_code(r, route ? route : "?");
     }
@@ -404,7 +427,8 @@ void rs_render_astability(rs_render_t *r, const json_t *o)
         rs_render_say(r, ".", ".");
     }
     if (json_array_size(ev) > 0) {
-        const char *lead = json_array_size(ev) > 1 ? " Both routes apply, and they agree:"
+        const char *lead = json_array_size(ev) > 2 ? " All three routes apply, and they agree:"
+                           : json_array_size(ev) > 1 ? " Both routes apply, and they agree:"
                            : json_is_true(as) ? " Proof:" : " Evidence:";
         rs_render_say(r, lead, lead);
         rs_render_say(r, "\n\n", "\n");

@@ -584,6 +584,8 @@ static void stability_qd(rs_render_t *r, const json_t *o)
     rs_render_line(r, "status", "%s", js(o, "status"));
     if (js(o, "abs_R_squared") != NULL) rs_render_line(r, "|R(z)|^2", "%s", js(o, "abs_R_squared"));
     if (js(o, "poly") != NULL) rs_render_linef(r, "p(lambda)", "%s (over %s)", js(o, "poly"), js(o, "over"));
+    /* the counts of the counting Schur-Cohn recursion, as the rational path prints them */
+    if (json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_ALL);
     if (js(o, "note") != NULL) rs_render_line(r, "note", "%s", js(o, "note"));
     if (json_object_get(o, "stability_function") != NULL)
         rs_render_line(r, "decided by", "%s (|R(z)|^2 in Q(sqrt d), Schur-Cohn over Q(sqrt d)(i) and the certified "

@@ -110,6 +110,13 @@ if grep -q '"exact":"(180/pi)atan(u),u=tan(alpha)therealroot4(ascending)of5\*u^4
     ok "DIRK [1/3, 0; 1/4, 1/3 | 1/2, 1/2]: alpha = 86.4697063867 (float ray scan)"
 else fail "DIRK alpha 86: $a86 $(grep -o '"alpha_degrees":{[^}]*' "$T/a86.json")"; fi
 
+# the rays route (p of degree 2 in z, Enright k = 3; values tested in test_astability.c): the
+# derivation names it and its first point outside, where the exact verdict is unstable
+"$RS" --markdown cases/complex/enright3-astability.case >"$T/en3.md" 2>"$T/err"
+if grep -q '^- \*Rays route\* (any \$p\$)' "$T/en3.md" && grep -q 'the scheme is exactly \*\*unstable\*\*\.$' "$T/en3.md"; then
+    ok "astability Markdown: the rays route with its first point outside"
+else fail "rays route Markdown: $(grep -i rays "$T/en3.md" | head -2) $(head -1 "$T/err")"; fi
+
 # the z-plane map (map re(q) ..., im(q) ...): counts derived in the case file
 "$RS" --json cases/complex/forward-euler-zplane.case | tr -d ' \n' >"$T/zp.json"
 if grep -q '"verdicts":{"stable":9,"marginal":4,"unstable":12,"singular":0}' "$T/zp.json"; then
@@ -614,6 +621,38 @@ PY
         else fail "sdirk2 coupled c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
     done
 else ok "skipped sdirk2 coupled JSON: no python3"; fi
+# root counts over Q(sqrt 2) (as the rational path prints them): --emit equations below has 6
+# unknowns (y, y_dot, y_k1, y_k2, x, x_dot), each row of degree 1 in lambda, so det has degree 6;
+# sympy's step map M is 2 x 2, so 4 roots are lambda = 0 and 2 are M's eigenvalues: both
+# of modulus rho = 0.5064 at c = 1/2 (inside), a complex pair of modulus 1.2142 at c = 2 (outside)
+for cv in 1/2 2; do
+    case $cv in 1/2) want="stable: 6 inside, 0 on, 0 outside the unit circle; lambda = 0 (x4)" ;;
+                 2) want="unstable: 4 inside, 0 on, 2 outside the unit circle; lambda = 0 (x4)" ;; esac
+    "$RS" --analyse stability "$SC" --set "c=$cv" >"$T/scc.txt" 2>"$T/err"
+    "$RS" --json --analyse stability "$SC" --set "c=$cv" | tr -d ' \n' >"$T/scc.json" 2>>"$T/err"
+    if grep -qF "verdict      $want" "$T/scc.txt" && grep -q '"at_zero":4' "$T/scc.json" \
+       && grep -q '"counts_certified_roots":"agree"' "$T/scc.json"; then
+        ok "sdirk2 coupled c=$cv: counts over Q(sqrt 2) by Schur-Cohn, certified roots agree ($want)"
+    else fail "sdirk2 coupled counts c=$cv: $(grep verdict "$T/scc.txt") $(head -1 "$T/err")"; fi
+done
+# c = 1/2 + 2i, one root on each side: c enters M only through its two off-diagonal entries (both
+# proportional to c), so the monic p = lambda^2 + b lambda + e(c^2) with e linear in c^2 through
+# sympy's two values above: e(1/4) = 109/392 - 3/196 sqrt 2, e(4) = 68/49 + 3/49 sqrt 2; here
+# c^2 = -15/4 + 2i, and the quadratic formula in complex double gives |roots| 1.593, 0.771
+if command -v python3 >/dev/null 2>&1; then
+    want=$(python3 -c '
+import cmath
+s = 2 ** 0.5
+e1, e4, b = 109/392 - 3/196*s, 68/49 + 3/49*s, -89/98 + 2/49*s
+c2 = complex(-15/4, 2)
+e = e1 + (e4 - e1) * (c2 - 1/4) / (4 - 1/4)
+d = cmath.sqrt(b * b - 4 * e)
+n = sum(abs(r) < 1 for r in ((-b + d) / 2, (-b - d) / 2))
+print("%d inside, 0 on, %d outside the unit circle; lambda = 0 (x4)" % (n + 4, 2 - n))')
+    "$RS" --analyse stability "$SC" --set 'c=1/2+2*i' >"$T/scc.txt" 2>"$T/err"
+    if grep -qF "unstable: $want" "$T/scc.txt"; then ok "sdirk2 coupled c=1/2+2i: $want (one root each side)"
+    else fail "sdirk2 coupled c=1/2+2i counts: want '$want', $(grep verdict "$T/scc.txt") $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 coupled mixed counts: no python3"; fi
 # complex c = 1/2 + i/4 (sympy, same derivation): |eigenvalues| 0.39299628, 0.63534168006133
 check_status "sdirk2 coupled c=1/2+i/4 (rho = 0.6353 by sympy)" stable "$SC" --set 'c=1/2+i/4'
 "$RS" --json "$SC" --set 'c=1/2+i/4' | tr -d ' \n' | grep -q '"rho":"0.63534168006133' \

@@ -44,7 +44,9 @@ fi
 AS=cases/complex
 "$RS" --markdown "$AS/trapezoid-astability.case" >"$T/tr.md" 2>"$T/err"
 grep -q '^### Stability region of \$y'"'"' = q\\,y\$ (A-stability)$' "$T/tr.md" && ok "astability: Markdown heading" || fail "astability heading: $(grep -i stability "$T/tr.md" | head -3)"
-grep -q '^\*A-stability\.\* The method is \*\*A-stable\*\*' "$T/tr.md" && grep -q 'Both routes apply, and they agree' "$T/tr.md" \
+# (the rays route of any p, h-alpha2, is the third: "All three routes apply")
+grep -q '^\*A-stability\.\* The method is \*\*A-stable\*\*' "$T/tr.md" && grep -q 'All three routes apply, and they agree' "$T/tr.md" \
+    && grep -q '^- \*Boundary locus route\*' "$T/tr.md" && grep -q '^- \*E-polynomial route\*' "$T/tr.md" \
     && ok "trapezoid: A-stable, both proofs" || fail "trapezoid A-stability: $(grep -i 'A-stab' "$T/tr.md")"
 grep -q 'max|\\lambda| \\to 1\$ exactly\. Hence \*\*not L-stable\*\*: the limit is not 0\.' "$T/tr.md" \
     && ok "trapezoid: |R| -> 1 at infinity, not L-stable" || fail "trapezoid limit: $(grep -i infinity "$T/tr.md")"

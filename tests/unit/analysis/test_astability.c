@@ -36,6 +36,18 @@ static json_t *run(const char *rel, json_t **res)
     return doc;
 }
 
+/* the evidence of the rays route (any p), NULL without one */
+static const json_t *rays_evidence(const json_t *r)
+{
+    const json_t *ev = json_object_get(r, "evidence");
+    size_t i;
+    for (i = 0; i < json_array_size(ev); i++) {
+        const char *route = json_string_value(json_object_get(json_array_get(ev, i), "route"));
+        if (route != NULL && strncmp(route, "any method: rays", 16) == 0) return json_array_get(ev, i);
+    }
+    return NULL;
+}
+
 /* an interval end as a double: integers, "-inf"/"inf", {"approx"} */
 static double end_value(const json_t *iv, size_t i)
 {
@@ -145,6 +157,10 @@ static void test_bdf_alpha(void **state)
         assert_true(fabs(a - scan) < 1e-4);
         assert_false(json_is_true(json_object_get(r, "a_stable")));
         assert_true(json_is_object(json_object_get(r, "alpha_degrees")));
+        /* the rays route (any p) decided the same angle: the analysis
+         * exits 3 otherwise, and says so in its evidence */
+        assert_true(json_is_true(json_object_get(rays_evidence(r), "alpha_agrees")));
+        assert_false(json_is_true(json_object_get(rays_evidence(r), "every_ray_inside")));
         json_decref(doc);
     }
 }
@@ -324,6 +340,93 @@ static void test_complex_set(void **state)
     json_decref(doc);
 }
 
+/* the boundary locus of p = a(l) z^2 + b(l) z + c(l), l = e^{i phi} (a dense
+ * scan in complex double, both roots z of the quadratic): the least
+ * |arg(-z)| in degrees over its points with Re z < 0 (*minre: the least
+ * Re z).  Every boundary point of the region is on the locus, so the angle
+ * is a lower bound of alpha. */
+static double quad_locus_scan(void (*abc)(double complex *, double complex), double *minre)
+{
+    double best = 90, mr = INFINITY;
+    long j, n = 200000;
+    for (j = 1; j < n; j++) {
+        double complex l = cexp(I * 2 * PI_D * (double) j / (double) n), c[3], d, z[2];
+        int k;
+        abc(c, l);
+        d = csqrt(c[1] * c[1] - 4 * c[0] * c[2]);
+        z[0] = (-c[1] + d) / (2 * c[0]);
+        z[1] = (-c[1] - d) / (2 * c[0]);
+        for (k = 0; k < 2; k++) {
+            if (creal(z[k]) < mr) mr = creal(z[k]);
+            if (creal(z[k]) < 0) best = fmin(best, atan(fabs(cimag(z[k]) / creal(z[k]))) * 180 / PI_D);
+        }
+    }
+    *minre = mr;
+    return best;
+}
+
+/* Enright k = 3 and k = 2 (case comments: the method's definition times
+ * 1080 and 48, by hand), as a z^2 + b z + c */
+static void enright3_abc(double complex *c, double complex l)
+{
+    c[0] = 114 * l * l * l;
+    c[1] = -614 * l * l * l - 513 * l * l + 54 * l - 7;
+    c[2] = 1080 * l * l * l - 1080 * l * l;
+}
+
+static void enright2_abc(double complex *c, double complex l)
+{
+    c[0] = 6 * l * l;
+    c[1] = -29 * l * l - 20 * l + 1;
+    c[2] = 48 * l * l - 48 * l;
+}
+
+/* p of degree 2 in z and 2 or 3 in lambda, and a one-step method over Q(i):
+ * neither the boundary locus (linear in z) nor the one-step rays apply, the
+ * rays route (any p) decides */
+static void test_rays_route(void **state)
+{
+    json_t *r, *doc;
+    const json_t *a;
+    double lo, minre, got;
+    (void) state;
+    /* Enright k = 3: the locus scan bounds alpha from below; the float ray
+     * scan of tests/cli/alpha_rays_poly.py (87.88336280526764, bisection on
+     * the rays with |root| <= 1 + 1e-9) from above */
+    doc = run("cases/complex/enright3-astability.case", &r);
+    lo = quad_locus_scan(enright3_abc, &minre);
+    got = json_real_value(json_object_get(r, "alpha_degrees_approx"));
+    assert_true(got > lo - 1e-8 && got < 87.88336280526764 + 1e-9);
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    a = json_object_get(r, "alpha_degrees");
+    assert_true(json_is_object(a) && json_is_string(json_object_get(a, "tan_alpha_minpoly")));
+    assert_true(json_is_object(json_object_get(rays_evidence(r), "first_point_outside")));
+    json_decref(doc);
+    /* Enright k = 2: the locus stays in Re z >= 0, and at z = -1, p = 83 l^2 - 28 l - 1 has the roots
+     * (14 +- sqrt 279)/83 = 0.370, -0.033 (by hand): the open left half-plane is one stable region */
+    doc = run("cases/complex/enright2-astability.case", &r);
+    quad_locus_scan(enright2_abc, &minre);
+    assert_true(minre > -1e-12);
+    assert_true(json_is_true(json_object_get(r, "a_stable")));
+    assert_int_equal(json_integer_value(json_object_get(r, "alpha_degrees")), 90);
+    assert_true(json_is_true(json_object_get(rays_evidence(r), "every_ray_inside")));
+    /* p / z^2 -> 6 l^2: both roots -> 0 */
+    assert_int_equal(json_integer_value(json_object_get(r, "limit_at_infinity")), 0);
+    assert_true(json_is_true(json_object_get(r, "l_stable")));
+    json_decref(doc);
+    /* the DIRK of dirk-alpha45.case at w q, w = (24 + 7i)/25: tan(alpha) = tan(45 - atan(7/24)) = 17/31
+     * (case comment, by hand); the first point outside lies on the side Im q < 0 */
+    doc = run("cases/complex/dirk-rotated-alpha.case", &r);
+    a = json_object_get(r, "alpha_degrees");
+    assert_string_equal(json_string_value(json_object_get(a, "tan_alpha_exact")), "17/31");
+    assert_true(fabs(json_real_value(json_object_get(r, "alpha_degrees_approx"))
+                     - (45 - atan2(7.0, 24.0) * 180 / PI_D)) < 1e-12);
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    assert_true(json_string_value(json_object_get(json_object_get(rays_evidence(r), "first_point_outside"), "im"))[0]
+                == '-');
+    json_decref(doc);
+}
+
 /* a char line with i, z declared complex: p = lambda - 1 - i z, the one root
  * lambda = 1 + i z; on z = x: |1 + i x| <= 1 iff x = 0; on z = i y:
  * |1 - y| <= 1 iff 0 <= y <= 2 */
@@ -383,6 +486,7 @@ int main(void)
         cmocka_unit_test(test_adams),
         cmocka_unit_test(test_complex_set),
         cmocka_unit_test(test_complex_char),
+        cmocka_unit_test(test_rays_route),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
