@@ -248,6 +248,16 @@ static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
         if (rs_condpoly_compile(cps + ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
         ncp++;
     }
+    {
+        /* the set values stand in the points: the assumptions on them are checked too */
+        const char *key;
+        json_t *val;
+        json_object_foreach(v->assigned, key, val) {
+            slong idx = rs_case_param_index(run->c, key);
+            if (idx >= 0 && idx < s->nvars && fmpq_set_str(pt + idx, json_string_value(val), 10) == 0)
+                fmpq_canonicalise(pt + idx);
+        }
+    }
     for (j = 0; j < QD_SAMPLE_TRIES && nok < (nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL; j++) {
         int says, st;
         for (k = 0; k < nfree; k++) {

@@ -550,10 +550,10 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse jury "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*jury is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: jury refused with its reason (exit 2)"
-else fail "sdirk2 jury refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "region q" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*region is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: region refused with its reason (exit 2)"
+else fail "sdirk2 region refusal: rc=$rc $(head -1 "$T/err")"; fi
 # ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
 # Expected values derived independently with sympy (not recstab's equations):
 #   g = 1 - sqrt(2)/2; f = lambda y, x: -a*y + c*x
@@ -614,6 +614,91 @@ PY
         else fail "sdirk2 coupled c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
     done
 else ok "skipped sdirk2 coupled JSON: no python3"; fi
+# ---- jury and hurwitz over Q(sqrt 2)[a, c] (issue 15) ----
+# The printed conditions c0 + sqrt(2)*(c1) > 0 are evaluated here exactly
+# (Fractions: the sign of c0 + sqrt 2 c1 from c0^2 against 2 c1^2) and
+# compared on a grid with the root moduli of p derived independently with
+# sympy from the method's definition (cases/complex/sdirk2-coupled-conditions.case:
+# 2 (a^2 + 4a + 2)^2 p = A lambda^2 + B lambda + C), the roots by the quadratic
+# formula in double, points with |rho - 1| < 1e-6 skipped; on Dahlquist's test
+# equation against |R(q)| < 1 with R(z) = (1 + (sqrt 2 - 1) z)/(1 - g z)^2
+# (Hairer-Wanner IV.6, g = 1 - sqrt(2)/2).  By hand at a = 1 the boundary
+# is c^2 = (46 - 2 sqrt 2)/17 (C = A with complex roots, see the case), where
+# hurwitz's first condition must vanish exactly.
+SCC=cases/complex/sdirk2-coupled-conditions.case
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json "$SCC" >"$T/scc.json" 2>"$T/err"; rc=$?
+    "$RS" --json --set a=1 --analyse hurwitz "$SCC" >"$T/scc1.json" 2>>"$T/err"; rc1=$?
+    "$RS" --json --analyse jury --analyse hurwitz "$SD" >"$T/sdj.json" 2>>"$T/err"; rc2=$?
+    res=$(python3 - "$T/scc.json" "$T/scc1.json" "$T/sdj.json" <<'PY'
+import json, sys, cmath
+from fractions import Fraction as F
+def results(f): return json.load(open(f))["cases"][0]["results"]
+def val(poly, env):   # integer polynomial text in the parameters, exact at Fractions
+    return F(eval(poly.replace("^", "**"), {}, env))
+def sgn(x, y):        # sign of x + y sqrt 2, exactly
+    if y == 0 or (x != 0 and (x > 0) == (y > 0)): return (x > 0) - (x < 0) if x != 0 else (y > 0) - (y < 0)
+    return ((x > 0) - (x < 0)) if x * x > 2 * y * y else ((y > 0) - (y < 0))
+def holds(r, env):
+    ok = all(sgn(val(q["c0"], env), val(q["c1"], env)) > 0 for q in r["conditions_qd"])
+    for t in r["conditions"]:          # the rational "!= 0" lines, if any
+        if t.endswith("!= 0") and val(t[:-5], env) == 0: ok = False
+    return ok
+s2 = 2 ** 0.5
+def rho(a, c):
+    A = 2*a**4 + 16*a**3 + 40*a**2 + 32*a + 8
+    B = -a**4 - 4*a**3 + 4*s2*a**3 - 32*a**2 - 40*a - 12
+    C = a**3*c**2 - 2*s2*a**3 - 2*a**3 + 2*s2*a**2*c**2 + 10*a**2*c**2 + 6*a**2 + 14*a*c**2 + 12*a + 4*c**2 + 4
+    d = cmath.sqrt(B * B - 4 * A * C)
+    return max(abs((-B + d) / (2 * A)), abs((-B - d) / (2 * A)))
+bad = []
+rs = results(sys.argv[1])
+an = {r["analysis"]: r for r in rs}
+if not all(an[k]["sample_check"]["agree"] and an[k]["sample_check"]["points"] == 12 for k in ("jury", "hurwitz")):
+    bad.append("sample checks")
+if an["jury"]["over"] != "Q(sqrt 2)" or an["hurwitz"]["over"] != "Q(sqrt 2)": bad.append("over")
+n = st = 0
+for a in [F(1, 4), F(1, 2), F(1), F(3, 2), F(2), F(5)]:
+    for c in [F(0), F(1, 2), F(1), F(3, 2), F(8, 5), F(2), F(3), F(-5, 4)]:
+        r = rho(float(a), float(c))
+        if abs(r - 1) < 1e-6: continue
+        for k in ("jury", "hurwitz"):
+            if holds(an[k], {"a": a, "c": c}) != (r < 1): bad.append("%s at a=%s c=%s (rho %.6f)" % (k, a, c, r))
+        n += 1; st += r < 1
+if n < 40 or st in (0, n): bad.append("grid %d points, %d stable" % (n, st))
+# a = 1: the first Hurwitz condition vanishes at c^2 = (46 - 2 sqrt 2)/17 (hand algebra)
+h1 = [r for r in results(sys.argv[2]) if r["analysis"] == "hurwitz"][0]["conditions_qd"][0]
+def coeffs(poly):     # c0 at c^2 = u + v sqrt 2 -> (x, y): the polynomial in c^2 of degree 1
+    p0, p1 = val(poly, {"c": F(0)}), (val(poly, {"c": F(1)}) - val(poly, {"c": F(0)}))
+    return p0, p1
+x0, x1 = coeffs(h1["c0"]); y0, y1 = coeffs(h1["c1"])
+u, v = F(46, 17), F(-2, 17)
+# (x0 + x1 w) + sqrt2 (y0 + y1 w), w = u + v sqrt 2
+X = x0 + x1 * u + 2 * y1 * v
+Y = x1 * v + y0 + y1 * u
+if (X, Y) != (0, 0): bad.append("a=1 boundary: %s + %s sqrt 2" % (X, Y))
+# the test equation: |R(q)| < 1
+g = 1 - s2 / 2
+for r in results(sys.argv[3]):
+    for q in [F(-100), F(-3), F(-1), F(-1, 10), F(1, 10), F(1), F(2), F(3), F(5), F(10), F(100)]:
+        R = abs((1 + (s2 - 1) * float(q)) / (1 - g * float(q)) ** 2)
+        if abs(R - 1) < 1e-6: continue
+        if holds(r, {"q": q}) != (R < 1): bad.append("test equation %s at q=%s (|R| %.6f)" % (r["analysis"], q, R))
+print("yes" if not bad else "no " + "; ".join(bad[:4]))
+PY
+)
+    if [ "$rc$rc1$rc2" = 000 ] && [ "$res" = yes ]; then
+        ok "sdirk2 jury/hurwitz over Q(sqrt 2)[a, c]: conditions agree with sympy's p on a grid, the a=1 boundary (46 - 2 sqrt 2)/17 and |R(q)| < 1"
+    else fail "sdirk2 jury/hurwitz conditions: rc=$rc$rc1$rc2 $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 jury/hurwitz JSON: no python3"; fi
+"$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
+    ok "sdirk2 jury at a complex set value refused (exit 2)"
+else fail "sdirk2 jury complex refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --markdown "$SCC" >"$T/scc.md" 2>"$T/err"
+if grep -q '^### Hurwitz minors of q(z) over Q(sqrt 2)$' "$T/scc.md" && grep -q 'p_0 + \\sqrt{d}' "$T/scc.md"; then
+    ok "sdirk2 conditions: Markdown derivation over Q(sqrt 2)"
+else fail "sdirk2 conditions markdown"; fi
 # complex c = 1/2 + i/4 (sympy, same derivation): |eigenvalues| 0.39299628, 0.63534168006133
 check_status "sdirk2 coupled c=1/2+i/4 (rho = 0.6353 by sympy)" stable "$SC" --set 'c=1/2+i/4'
 "$RS" --json "$SC" --set 'c=1/2+i/4' | tr -d ' \n' | grep -q '"rho":"0.63534168006133' \
