@@ -19,6 +19,8 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
 /* an_qd_conds.c: the Schur-Cohn and Hurwitz conditions over Q(sqrt d)[params] */
 int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+/* region NAME [at P=V, ...]: exact intervals over Q(sqrt d), or the conditions with other parameters free */
+int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
 /* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of s without sqrt(d); flint_free
  * it); spaced: "a - c^2" as the conditions print, else FLINT's "a-c^2" */
 char *rs_an_qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s, int spaced);

@@ -25,6 +25,7 @@
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
 #include "algebra/qsqrt.h"
+#include "analysis/an_region.h"
 
 /* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0) */
 typedef struct {
@@ -310,11 +311,13 @@ typedef struct {
     qc_t q;
 } qd_sym_t;
 
-static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req)
+static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_variant_t *v)
 {
     const rs_scheme_struct *s;
     slong j;
-    int r = rs_run_default_variant(run, &S->v);
+    int r = RS_OK;
+    S->v = v;
+    if (v == NULL) r = rs_run_default_variant(run, &S->v);
     S->a = NULL;
     S->sign = NULL;
     if (r != RS_OK) return r;
@@ -395,55 +398,67 @@ static int too_big(const fmpz_mpoly_t f, rs_run_t *run, const rs_scheme_struct *
                         (long) RS_CHARPOLY_MAX_TERMS);
 }
 
-int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req)
+/* the Schur-Cohn table of S's p: its rows, the conditions delta_k > 0 into
+ * S->q and the lists; *na: the last index of S->a still initialised */
+static int qd_jury_table(qd_sym_t *S, rs_run_t *run, json_t *rows, json_t *conds, json_t *parts, json_t *dropped,
+                         json_t *always, int *never, slong *na)
 {
-    qd_sym_t S;
-    const rs_scheme_struct *s;
-    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
-           *always = json_array();
+    const rs_scheme_struct *s = S->s;
     fmpz_mpoly_t t, u, delta;
-    slong n, k, j, na;
-    int r = qd_sym_init(&S, run, req), never = 0;
-    if (r != RS_OK) {
-        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
-        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
-        return r;
-    }
-    s = S.s;
-    n = na = S.n;
+    slong k, j;
+    int r = RS_OK;
+    *na = S->n;
     fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx); fmpz_mpoly_init(delta, s->zctx);
-    for (k = n; k >= 1 && r == RS_OK; k--) {
+    for (k = S->n; k >= 1 && r == RS_OK; k--) {
         json_t *row = json_array();
         char origin[32];
         fmpz_mpoly_struct *b;
-        for (j = 0; j <= k; j++) json_array_append_new(row, qd_json(S.a + j, s));
+        for (j = 0; j <= k; j++) json_array_append_new(row, qd_json(S->a + j, s));
         json_array_append_new(rows, row);
-        mul_red(t, S.a + k, S.a + k, s);
-        mul_red(u, S.a + 0, S.a + 0, s);
+        mul_red(t, S->a + k, S->a + k, s);
+        mul_red(u, S->a + 0, S->a + 0, s);
         fmpz_mpoly_sub(delta, t, u, s->zctx);
         r = too_big(delta, run, s, "jury");
         if (r == RS_OK) r = rs_budget_check(run->err, "the symbolic Schur-Cohn table over Q(sqrt d)");
         if (r != RS_OK) break;
         snprintf(origin, sizeof origin, "delta_%ld", (long) k);
-        j = qc_add(&S.q, conds, parts, dropped, delta, origin, S.sign);
+        j = qc_add(&S->q, conds, parts, dropped, delta, origin, S->sign);
         if (j == 1) json_array_append_new(always, json_string(origin));
-        if (j == -1) never = 1;
+        if (j == -1) *never = 1;
         if (fmpz_mpoly_is_zero(delta, s->zctx)) break;   /* the recursion stops there */
         /* p_(k-1): coefficient j = a_k a_(j+1) - a_0 a_(k-1-j), j = 0..k-1 */
         b = flint_malloc((size_t) k * sizeof(fmpz_mpoly_struct));
         for (j = 0; j < k; j++) {
             fmpz_mpoly_init(b + j, s->zctx);
-            mul_red(t, S.a + k, S.a + j + 1, s);
-            mul_red(u, S.a + 0, S.a + k - 1 - j, s);
+            mul_red(t, S->a + k, S->a + j + 1, s);
+            mul_red(u, S->a + 0, S->a + k - 1 - j, s);
             fmpz_mpoly_sub(b + j, t, u, s->zctx);
         }
         qd_row_primitive(b, k, s);
-        for (j = 0; j <= k; j++) fmpz_mpoly_clear(S.a + j, s->zctx);
-        for (j = 0; j < k; j++) S.a[j] = b[j];
+        for (j = 0; j <= k; j++) fmpz_mpoly_clear(S->a + j, s->zctx);
+        for (j = 0; j < k; j++) S->a[j] = b[j];
         flint_free(b);
-        na = k - 1;
+        *na = k - 1;
     }
     fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
+    return r;
+}
+
+static const char qd_jury_note[] =
+    "Schur-Cohn reduction over Q(sqrt d)[params] without divisions, p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/"
+    "lambda with sqrt(d)^2 = d after every product, each row divided by its content in Z[params]: all |lambda| "
+    "< 1 iff every delta_k = lead^2 - const^2 > 0 (Schur 1917; sqrt(d) is real; strict inequalities, exact for "
+    "every value; c0 + sqrt(d)*(c1) > 0 is decided exactly by comparing c0^2 with d*c1^2)";
+
+int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req)
+{
+    qd_sym_t S;
+    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    slong na = -1;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    if (r == RS_OK) r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+    else na = S.a != NULL ? S.n : -1;
     if (r != RS_OK) {
         json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
         qd_sym_clear(&S, na);
@@ -454,11 +469,7 @@ int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "method", json_string("Schur-Cohn (Jury) table over Q(sqrt d), symbolic"));
     json_object_set_new(o, "symbolic", json_true());
     json_object_set_new(o, "rows", rows);
-    json_object_set_new(o, "note", json_string(
-        "Schur-Cohn reduction over Q(sqrt d)[params] without divisions, p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/"
-        "lambda with sqrt(d)^2 = d after every product, each row divided by its content in Z[params]: all |lambda| "
-        "< 1 iff every delta_k = lead^2 - const^2 > 0 (Schur 1917; sqrt(d) is real; strict inequalities, exact for "
-        "every value; c0 + sqrt(d)*(c1) > 0 is decided exactly by comparing c0^2 with d*c1^2)"));
+    json_object_set_new(o, "note", json_string(qd_jury_note));
     r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
     qd_sym_clear(&S, na);
     return r;
@@ -500,7 +511,7 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     fmpz_mpoly_t qz, zp, zm, t, u, dk;
     fmpz_mpoly_struct *b, *H;
     slong n, k, j, idx[8];
-    int r = qd_sym_init(&S, run, req), never = 0;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
     if (r == RS_OK && S.n > 8)
         r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "hurwitz over Q(sqrt d): degree over 8 in lambda "
                          "(the minors are expanded up to degree 8; jury answers the same question)%s", "");
@@ -590,5 +601,393 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_decref(o); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
     }
     qd_sym_clear(&S, n);
+    return r;
+}
+
+/* ---- region NAME over Q(sqrt d) ---------------------------------------------- */
+
+/* f (only variable tv) as a polynomial in t */
+static void qd_upoly(fmpz_poly_t out, const fmpz_mpoly_t f, slong tv, const rs_scheme_struct *s)
+{
+    slong i, *ex = flint_malloc((size_t) s->nvars * sizeof(slong));
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_poly_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(f, s->zctx); i++) {
+        fmpz_mpoly_get_term_exp_si(ex, f, i, s->zctx);
+        fmpz_mpoly_get_term_coeff_fmpz(c, f, i, s->zctx);
+        fmpz_poly_set_coeff_fmpz(out, tv >= 0 ? ex[tv] : 0, c);
+    }
+    fmpz_clear(c);
+    flint_free(ex);
+}
+
+/* the norm u0^2 - d u1^2 of u0 + sqrt(d) u1: every real root of u0 + sqrt(d) u1 is one of its roots */
+static void qd_unorm(fmpz_poly_t n, const fmpz_poly_t u0, const fmpz_poly_t u1, slong d)
+{
+    fmpz_poly_t t;
+    fmpz_poly_init(t);
+    fmpz_poly_mul(n, u0, u0);
+    fmpz_poly_mul(t, u1, u1);
+    fmpz_poly_scalar_mul_si(t, t, d);
+    fmpz_poly_sub(n, n, t);
+    fmpz_poly_clear(t);
+}
+
+/* the exact sign of u0(t0) + sqrt(d) u1(t0): the signs of u0, u1 at t0 in
+ * Q(t0) = Q[t]/(minpoly) and, where they differ, the sign of the norm */
+static int qd_alg_sign(const fmpz_poly_t u0, const fmpz_poly_t u1, slong d, rs_alg_t *t0)
+{
+    fmpq_poly_t m, x;
+    fmpz_poly_t nz;
+    int s0, s1, sn;
+    fmpq_poly_init(m); fmpq_poly_init(x); fmpz_poly_init(nz);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    fmpq_poly_set_fmpz_poly(x, u0); fmpq_poly_rem(x, x, m); s0 = rs_alg_sign(x, t0);
+    fmpq_poly_set_fmpz_poly(x, u1); fmpq_poly_rem(x, x, m); s1 = rs_alg_sign(x, t0);
+    qd_unorm(nz, u0, u1, d);
+    fmpq_poly_set_fmpz_poly(x, nz); fmpq_poly_rem(x, x, m); sn = rs_alg_sign(x, t0);
+    fmpq_poly_clear(m); fmpq_poly_clear(x); fmpz_poly_clear(nz);
+    if (s1 == 0 || s0 == s1) return s0 != 0 ? s0 : s1;
+    if (s0 == 0) return s1;
+    return sn > 0 ? s0 : sn < 0 ? s1 : 0;   /* sn = 0: u0 = -sqrt(d) u1 exactly */
+}
+
+/* a cell of the line: a critical value (pt) or the open interval after it */
+typedef struct {
+    const char *status;
+    int pt;
+    rs_alg_t *lo, *hi;   /* NULL: infinite */
+} qd_cell_t;
+
+static json_t *qd_end_json(rs_alg_t *a, const char *var)
+{
+    return a == NULL ? json_null() : rs_alg_json(a, var);
+}
+
+static json_t *qd_end_approx(rs_alg_t *a)
+{
+    return a == NULL ? json_null() : json_real(rs_alg_double(a));
+}
+
+/* t inside the domain bound b */
+static int qd_in_bound(const rs_bound_t *b, const fmpq_t t)
+{
+    int lo = !b->has_lo || fmpq_cmp(t, b->lo) > 0 || (b->lo_closed && fmpq_equal(t, b->lo));
+    int hi = !b->has_hi || fmpq_cmp(t, b->hi) < 0 || (b->hi_closed && fmpq_equal(t, b->hi));
+    return lo && hi;
+}
+
+/* e := the rational q as a critical value */
+static void qd_alg_set_fmpq(rs_alg_t *e, const fmpq_t q)
+{
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_neg(c, fmpq_numref(q));
+    fmpz_poly_zero(e->minpoly);
+    fmpz_poly_set_coeff_fmpz(e->minpoly, 1, fmpq_denref(q));
+    fmpz_poly_set_coeff_fmpz(e->minpoly, 0, c);
+    e->rational = 1;
+    fmpq_set(e->q, q);
+    e->prec = 0;
+    rs_alg_refine(e, 128);
+    fmpz_clear(c);
+}
+
+/* the critical value a inside the domain b (its ends by their closedness) */
+static int qd_alg_in_bound(const rs_bound_t *b, rs_alg_t *a)
+{
+    rs_alg_t e;
+    int in = 1;
+    if (a->rational) return qd_in_bound(b, a->q);
+    rs_alg_init(&e);
+    if (b->has_lo) {
+        qd_alg_set_fmpq(&e, b->lo);
+        in = rs_alg_cmp(a, &e) > 0;
+    }
+    if (b->has_hi && in) {
+        qd_alg_set_fmpq(&e, b->hi);
+        in = rs_alg_cmp(a, &e) < 0;
+    }
+    rs_alg_clear(&e);
+    return in;
+}
+
+/* The exact status of p at tv = t0 (rational or not) over Q(t0, sqrt d) =
+ * Q(gamma), gamma a primitive element (rs_alg_primitive), by the real
+ * route of region (rs_alg_status_coeffs: Schur-Cohn and the circle's roots
+ * in Q(gamma)); 0 when undecided there */
+static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_t *t0)
+{
+    const rs_scheme_struct *s = S->s;
+    rs_alg_t sq, g;
+    fmpq_poly_t A, B, m, x, y;
+    fmpq_poly_struct *c;
+    fmpz_poly_t u;
+    fmpz_mpoly_t a;
+    slong j, n = S->n;
+    int decided = 0, h;
+    rs_alg_init(&sq); rs_alg_init(&g);
+    fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(m); fmpq_poly_init(x); fmpq_poly_init(y);
+    fmpz_poly_init(u);
+    fmpz_mpoly_init(a, s->zctx);
+    /* sqrt(d): the positive root of t^2 - d */
+    fmpz_poly_set_coeff_si(sq.minpoly, 2, 1);
+    fmpz_poly_set_coeff_si(sq.minpoly, 0, -s->sqrt_d);
+    sq.idx = 1;
+    rs_alg_refine(&sq, 128);
+    c = flint_malloc((size_t) (n + 1) * sizeof(fmpq_poly_struct));
+    for (j = 0; j <= n; j++) fmpq_poly_init(c + j);
+    if (rs_alg_primitive(&g, A, B, t0, &sq)) {
+        fmpq_poly_set_fmpz_poly(m, g.minpoly);
+        for (j = 0; j <= n; j++)
+            for (h = 0; h < 2; h++) {
+                /* c_j += (p_h's lambda^j coefficient)(A(gamma)) * B(gamma)^h */
+                rs_charpoly_coeff(a, h ? S->p1 : S->p0, j, s->lambda_var, s->zctx);
+                qd_upoly(u, a, tv, s);
+                fmpq_poly_set_fmpz_poly(x, u);
+                fmpq_poly_compose(y, x, A);
+                if (h) fmpq_poly_mul(y, y, B);
+                fmpq_poly_rem(y, y, m);
+                fmpq_poly_add(c + j, c + j, y);
+            }
+        fmpq_poly_rem(c + n, c + n, m);
+        decided = fmpq_poly_is_zero(c + n) ? (*st = RS_STATUS_SINGULAR, 1) : rs_alg_status_coeffs(st, c, n, &g, s);
+    }
+    for (j = 0; j <= n; j++) fmpq_poly_clear(c + j);
+    flint_free(c);
+    rs_alg_clear(&sq); rs_alg_clear(&g);
+    fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(m); fmpq_poly_clear(x); fmpq_poly_clear(y);
+    fmpz_poly_clear(u);
+    fmpz_mpoly_clear(a, s->zctx);
+    return decided;
+}
+
+/* the status at the rational t: the exact point verdict over Q(sqrt d)
+ * (Schur-Cohn and the certified roots), the conditions and the route over
+ * Q(sqrt d) = Q(gamma) of qd_exact_status, which must agree (*bad) */
+static const char *qd_status_at(int *bad, qd_sym_t *S, fmpq **pp, slong tv, const fmpq_t t)
+{
+    rs_alg_t e;
+    rs_status_t ex = RS_STATUS_UNSTABLE;
+    int st, says, decided;
+    fmpq_set(pp[tv], t);
+    st = qd_point_stable(S->p0, S->p1, S->n, pp, S->s);
+    says = qc_hold(&S->q, pp);
+    rs_alg_init(&e);
+    qd_alg_set_fmpq(&e, t);
+    decided = qd_exact_status(&ex, S, tv, &e);
+    rs_alg_clear(&e);
+    *bad = st == -2 || (st >= 0 && st != says) || (decided && (ex == RS_STATUS_STABLE) != (st == 1));
+    if (st == -1) return "singular";   /* p vanishes identically there */
+    if (!decided) return st == 1 ? "stable" : "not stable";
+    return rs_status_name(ex);
+}
+
+/* The line of tv cut at the real roots of the conditions' norms, of the
+ * leading coefficient's norm and at the domain's ends; each open cell
+ * decided at a rational sample twice (conditions and point verdict), each
+ * critical value by the conditions' exact signs in Q(t0, sqrt d) (and twice
+ * when rational); equal neighbours merged into the intervals */
+static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, slong tv,
+                           const fmpz_mpoly_t lead)
+{
+    const rs_scheme_struct *s = S->s;
+    const char *name = run->c->params[tv].name;
+    rs_bound_t *bd = flint_malloc((size_t) (run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_alg_t *crit = NULL;
+    qd_cell_t *cell;
+    fmpz_poly_t u0, u1, nz, l0, l1;
+    fmpz_mpoly_t h0, h1;
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    fmpq_t t;
+    json_t *ivs = json_array();
+    slong ncrit = 0, m, i, k, ncell = 0, checked = 0;
+    int r = RS_OK, bad = 0;
+    fmpz_poly_init(u0); fmpz_poly_init(u1); fmpz_poly_init(nz); fmpz_poly_init(l0); fmpz_poly_init(l1);
+    fmpz_mpoly_init(h0, s->zctx); fmpz_mpoly_init(h1, s->zctx);
+    fmpq_init(t);
+    for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+    rs_bounds_init(bd, run->c->nparams);
+    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(bd, &run->c->assume[k], run->c, run->err);
+    rs_error_init(run->err);
+    /* the critical polynomials */
+    for (i = 0; i < S->q.n; i++) {
+        qd_upoly(u0, S->q.c0 + i, tv, s);
+        qd_upoly(u1, S->q.c1 + i, tv, s);
+        qd_unorm(nz, u0, u1, s->sqrt_d);
+        rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    }
+    qd_split(h0, h1, lead, s);
+    qd_upoly(l0, h0, tv, s);
+    qd_upoly(l1, h1, tv, s);
+    qd_unorm(nz, l0, l1, s->sqrt_d);
+    rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    for (k = 0; k < 2; k++) {
+        int has = k == 0 ? bd[tv].has_lo : bd[tv].has_hi;
+        const fmpq *e = k == 0 ? bd[tv].lo : bd[tv].hi;
+        if (!has) continue;
+        fmpz_poly_zero(nz);   /* den*t - num */
+        fmpz_poly_set_coeff_fmpz(nz, 0, fmpq_numref(e));
+        fmpz_poly_neg(nz, nz);
+        fmpz_poly_set_coeff_fmpz(nz, 1, fmpq_denref(e));
+        rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    }
+    rs_alg_sort(crit, ncrit);
+    for (i = m = 0; i < ncrit; i++) {   /* each value once */
+        if (m > 0 && rs_alg_cmp(crit + m - 1, crit + i) == 0) { rs_alg_clear(crit + i); continue; }
+        if (m != i) crit[m] = crit[i];
+        m++;
+    }
+    ncrit = m;
+    cell = flint_malloc((size_t) (2 * ncrit + 1) * sizeof(qd_cell_t));
+    for (i = 0; i <= ncrit && r == RS_OK && !bad; i++) {
+        rs_alg_t *lo = i > 0 ? crit + i - 1 : NULL, *hi = i < ncrit ? crit + i : NULL;
+        r = rs_budget_check(run->err, "region over Q(sqrt d)");
+        if (r != RS_OK) break;
+        rs_alg_between(t, lo, hi);
+        if (qd_in_bound(bd + tv, t)) {
+            cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
+            cell[ncell++].status = qd_status_at(&bad, S, pp, tv, t);
+            checked++;
+        }
+        if (hi == NULL || !qd_alg_in_bound(bd + tv, hi)) continue;
+        cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
+        if (hi->rational) {
+            cell[ncell++].status = qd_status_at(&bad, S, pp, tv, hi->q);
+            checked++;
+        } else {
+            /* the conditions' exact signs at t0 against the route over Q(t0, sqrt d) */
+            rs_status_t ex;
+            int ok = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
+            for (k = 0; k < S->q.n; k++) {
+                int sg;
+                qd_upoly(u0, S->q.c0 + k, tv, s);
+                qd_upoly(u1, S->q.c1 + k, tv, s);
+                sg = qd_alg_sign(u0, u1, s->sqrt_d, hi);
+                if (sg == 0) zero = 1;
+                if (S->q.ne[k] ? sg == 0 : sg <= 0) ok = 0;
+            }
+            if (decided && (ex == RS_STATUS_STABLE) != ok) bad = 1;
+            /* undecided there: every delta_k != 0 leaves no root on the circle (a
+             * circle root of p is one of p* and of every row), so not stable is unstable */
+            cell[ncell++].status = decided ? rs_status_name(ex) : ok ? "stable"
+                                 : qd_alg_sign(l0, l1, s->sqrt_d, hi) == 0 ? "singular" : zero ? "not stable"
+                                 : "unstable";
+            checked += decided;
+        }
+    }
+    if (r == RS_OK && bad)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INCONSISTENT, "region over Q(sqrt d): the conditions, "
+                         "Schur-Cohn and the certified roots disagree at a sample (internal inconsistency)%s", "");
+    for (i = 0; r == RS_OK && i < ncell; ) {
+        /* merge the run of cells of one status */
+        slong j = i;
+        json_t *iv;
+        while (j + 1 < ncell && strcmp(cell[j + 1].status, cell[i].status) == 0) j++;
+        iv = json_object();
+        json_object_set_new(iv, "lo", qd_end_json(cell[i].lo, name));
+        json_object_set_new(iv, "hi", qd_end_json(cell[j].hi, name));
+        json_object_set_new(iv, "lo_closed", json_boolean(cell[i].pt));
+        json_object_set_new(iv, "hi_closed", json_boolean(cell[j].pt));
+        json_object_set_new(iv, "status", json_string(cell[i].status));
+        json_object_set_new(iv, "lo_approx", qd_end_approx(cell[i].lo));
+        json_object_set_new(iv, "hi_approx", qd_end_approx(cell[j].hi));
+        json_array_append_new(ivs, iv);
+        i = j + 1;
+    }
+    if (r == RS_OK) {
+        json_object_set_new(o, "symbolic", json_false());
+        json_object_set_new(o, "intervals", ivs);
+        json_object_set_new(o, "undecided_points", json_array());
+        json_object_set_new(o, "critical_values", json_integer(ncrit));
+        json_object_set_new(o, "cross_checked_samples", json_integer(checked));
+    } else {
+        json_decref(ivs);
+    }
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+    free(crit);
+    flint_free(cell);
+    rs_bounds_clear(bd, run->c->nparams);
+    flint_free(bd);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    fmpq_clear(t);
+    fmpz_poly_clear(u0); fmpz_poly_clear(u1); fmpz_poly_clear(nz); fmpz_poly_clear(l0); fmpz_poly_clear(l1);
+    fmpz_mpoly_clear(h0, s->zctx); fmpz_mpoly_clear(h1, s->zctx);
+    return r;
+}
+
+int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    slong tv = req->u.region.param, na = -1, k;
+    const char *keep[1];
+    rs_assign_t *as = NULL;
+    slong nas = 0;
+    rs_variant_t *v;
+    qd_sym_t S;
+    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    fmpz_mpoly_t lead;
+    int r, never = 0, others = 0;
+    if (req->u.region.twod || req->u.region.forall) {
+        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected region NAME [at P=V, ...]: %s is "
+                            "not available over Q(sqrt 2) (rk sdirk2)", req->u.region.twod ? "region N1, N2"
+                            : "region NAME for all");
+    }
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
+    r = rs_run_variant(&v, run, as, nas);
+    rs_assign_free(as, nas);
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
+    else S.a = NULL;
+    if (r == RS_OK) {
+        fmpz_mpoly_init(lead, S.s->zctx);
+        fmpz_mpoly_set(lead, S.a + S.n, S.s->zctx);
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    if (r != RS_OK) {
+        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        if (S.a != NULL) fmpz_mpoly_clear(lead, S.s->zctx);
+        qd_sym_clear(&S, na);
+        return r;
+    }
+    json_decref(rows);
+    for (k = 0; k < S.s->lambda_var; k++)
+        if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
+            others = 1;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "param", json_string(keep[0]));
+    if (others) {
+        /* other parameters free: the conditions on all of them (jury's) */
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "note", json_string(qd_jury_note));
+        r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    } else {
+        r = qd_region_cells(o, &S, run, req, tv, lead);
+        if (r == RS_OK) {
+            rs_an_qd_json_p(o, S.p0, S.p1, run);
+            json_object_set_new(o, "method", json_string(
+                "cells cut at the real roots of the norms c0^2 - d c1^2 of the Schur-Cohn conditions c0 + sqrt(d) c1 "
+                "> 0 over Q(sqrt d) (jury's) and of the leading coefficient, and at the assumptions' ends; each "
+                "rational sample decided three ways: the conditions' exact signs, Schur-Cohn over Q(sqrt d) with the "
+                "certified roots, and region's exact route over Q(sqrt d) = Q(gamma) (stable, marginal, unstable); "
+                "each irrational critical value t0 by the conditions' exact signs in Q(t0, sqrt d) (signs of c0, c1 "
+                "in Q[t]/(minpoly), then of the norm) and by the exact route over Q(t0, sqrt d) = Q(gamma) (a "
+                "primitive element); all must agree, else exit 3"));
+            json_object_set_new(o, "dropped", dropped);
+            json_decref(conds); json_decref(parts); json_decref(always);
+            rs_run_emit_exact(run, S.v, o);
+        } else {
+            json_decref(o); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        }
+    }
+    fmpz_mpoly_clear(lead, S.s->zctx);
+    qd_sym_clear(&S, na);
     return r;
 }

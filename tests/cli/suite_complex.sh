@@ -550,10 +550,12 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse "region q" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*region is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: region refused with its reason (exit 2)"
-else fail "sdirk2 region refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "modes" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*modes is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: modes refused with its reason (exit 2)"
+else fail "sdirk2 modes refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "region q, r" "$SD" >/dev/null 2>"$T/err"; rc=$?
+[ "$rc" = 2 ] && ok "sdirk2: region N1, N2 refused (exit 2)" || fail "sdirk2 region N1, N2: rc=$rc $(head -1 "$T/err")"
 # ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
 # Expected values derived independently with sympy (not recstab's equations):
 #   g = 1 - sqrt(2)/2; f = lambda y, x: -a*y + c*x
@@ -691,6 +693,40 @@ PY
         ok "sdirk2 jury/hurwitz over Q(sqrt 2)[a, c]: conditions agree with sympy's p on a grid, the a=1 boundary (46 - 2 sqrt 2)/17 and |R(q)| < 1"
     else fail "sdirk2 jury/hurwitz conditions: rc=$rc$rc1$rc2 $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 jury/hurwitz JSON: no python3"; fi
+# region over Q(sqrt 2): the intervals against the hand derivations in the
+# cases (sdirk2-region.case: 0, the pole 2 + sqrt 2, R = 1 at 6 + 4 sqrt 2;
+# sdirk2-coupled-conditions.case: c*^2 = (46 - 2 sqrt 2)/17 at a = 1)
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json cases/complex/sdirk2-region.case >"$T/sr.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/sr.json" "$T/scc.json" <<'PY'
+import json, sys
+def region(f): return [r for r in json.load(open(f))["cases"][0]["results"] if r["analysis"] == "region"][0]
+def ends(r):
+    out = []
+    for iv in r["intervals"]:
+        e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
+        out.append((iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]))
+    return out
+bad = []
+P, Q = ("q^2 - 4*q + 2", 1), ("q^2 - 12*q + 4", 1)          # 2 + sqrt 2, 6 + 4 sqrt 2
+want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
+        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
+        ("stable", Q, None, False, False)]
+if ends(region(sys.argv[1])) != want: bad.append("test equation %r" % (ends(region(sys.argv[1])),))
+M = "17*c^4 - 92*c^2 + 124"                                   # c^2 = (46 -+ 2 sqrt 2)/17
+want = [("unstable", None, (M, 1), False, False), ("marginal", (M, 1), (M, 1), True, True),
+        ("stable", (M, 1), (M, 2), False, False), ("marginal", (M, 2), (M, 2), True, True),
+        ("unstable", (M, 2), None, False, False)]
+r2 = region(sys.argv[2])
+if ends(r2) != want or r2["over"] != "Q(sqrt 2)" or abs(r2["intervals"][2]["hi_approx"] - 1.5935822183934018) > 1e-12:
+    bad.append("coupled a=1 %r" % (ends(r2),))
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then
+        ok "sdirk2 region over Q(sqrt 2): exact ends 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal), c* = root of 17c^4 - 92c^2 + 124 (marginal)"
+    else fail "sdirk2 region: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 region JSON: no python3"; fi
 "$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
     ok "sdirk2 jury at a complex set value refused (exit 2)"
