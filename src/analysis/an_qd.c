@@ -50,13 +50,14 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         || strcmp(n, "radius") == 0)
         return RS_OK;
     /* the conditions over Q(sqrt d)[params] (an_qd_conds.c): real parameters */
-    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0) && run->c->ncsets == 0)
+    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0
+         || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
         return RS_OK;
-    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0)
+    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected real set values: %s over Q(sqrt 2) "
                             "does not run at a complex set value (stability and radius do)", n);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability, radius, astability, jury, hurwitz or region: %s is not available for "
+                        "expected charpoly, stability, radius, astability, jury, hurwitz, region or claim: %s is not available for "
                         "rk sdirk2 (its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
 }
 

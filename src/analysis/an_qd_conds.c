@@ -789,8 +789,12 @@ static const char *qd_status_at(int *bad, qd_sym_t *S, fmpq **pp, slong tv, cons
  * decided at a rational sample twice (conditions and point verdict), each
  * critical value by the conditions' exact signs in Q(t0, sqrt d) (and twice
  * when rational); equal neighbours merged into the intervals */
-static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, slong tv,
-                           const fmpz_mpoly_t lead)
+/* kind >= 0 (a claim: 0 stable, 1 bounded, 2 unstable, on the domain dom):
+ * *verdict 1 every cell satisfies it, -1 one does not (*counter its point:
+ * a rational sample, or an algebraic critical value), 0 undecided ("not
+ * stable" cells); the intervals go to o's "region" */
+static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_request_t *rq, slong tv,
+                           const fmpz_mpoly_t lead, const rs_bound_t *dom, int kind, int *verdict, json_t **counter)
 {
     const rs_scheme_struct *s = S->s;
     const char *name = run->c->params[tv].name;
@@ -802,6 +806,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
     fmpq *pt = _fmpq_vec_init(s->nvars);
     fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
     fmpq_t t;
+    fmpq *samp;
     json_t *ivs = json_array();
     slong ncrit = 0, m, i, k, ncell = 0, checked = 0;
     int r = RS_OK, bad = 0;
@@ -812,6 +817,13 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
     rs_bounds_init(bd, run->c->nparams);
     for (k = 0; k < run->c->nassume; k++) rs_bounds_add(bd, &run->c->assume[k], run->c, run->err);
     rs_error_init(run->err);
+    if (dom != NULL) {   /* the claim's set (with the assumptions already in it) */
+        bd[tv].has_lo = dom->has_lo; bd[tv].has_hi = dom->has_hi;
+        bd[tv].lo_closed = dom->lo_closed; bd[tv].hi_closed = dom->hi_closed;
+        fmpq_set(bd[tv].lo, dom->lo); fmpq_set(bd[tv].hi, dom->hi);
+    }
+    if (verdict != NULL) *verdict = 1;
+    if (counter != NULL) *counter = NULL;
     /* the critical polynomials */
     for (i = 0; i < S->q.n; i++) {
         qd_upoly(u0, S->q.c0 + i, tv, s);
@@ -842,6 +854,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
     }
     ncrit = m;
     cell = flint_malloc((size_t) (2 * ncrit + 1) * sizeof(qd_cell_t));
+    samp = _fmpq_vec_init(2 * ncrit + 1);
     for (i = 0; i <= ncrit && r == RS_OK && !bad; i++) {
         rs_alg_t *lo = i > 0 ? crit + i - 1 : NULL, *hi = i < ncrit ? crit + i : NULL;
         r = rs_budget_check(run->err, "region over Q(sqrt d)");
@@ -849,11 +862,13 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
         rs_alg_between(t, lo, hi);
         if (qd_in_bound(bd + tv, t)) {
             cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
+            fmpq_set(samp + ncell, t);
             cell[ncell++].status = qd_status_at(&bad, S, pp, tv, t);
             checked++;
         }
         if (hi == NULL || !qd_alg_in_bound(bd + tv, hi)) continue;
         cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
+        if (hi->rational) fmpq_set(samp + ncell, hi->q);
         if (hi->rational) {
             cell[ncell++].status = qd_status_at(&bad, S, pp, tv, hi->q);
             checked++;
@@ -879,7 +894,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
         }
     }
     if (r == RS_OK && bad)
-        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INCONSISTENT, "region over Q(sqrt d): the conditions, "
+        r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "region over Q(sqrt d): the conditions, "
                          "Schur-Cohn and the certified roots disagree at a sample (internal inconsistency)%s", "");
     for (i = 0; r == RS_OK && i < ncell; ) {
         /* merge the run of cells of one status */
@@ -897,7 +912,33 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
         json_array_append_new(ivs, iv);
         i = j + 1;
     }
-    if (r == RS_OK) {
+    for (i = 0; r == RS_OK && kind >= 0 && i < ncell && *verdict != -1; i++) {
+        /* the claim, cell by cell: the first bad one is the counterexample */
+        const char *st = cell[i].status;
+        int good = kind == 0 ? strcmp(st, "stable") == 0
+                 : kind == 1 ? strcmp(st, "stable") == 0 || strcmp(st, "marginal") == 0 : strcmp(st, "unstable") == 0;
+        if (good) continue;
+        if (strcmp(st, "not stable") == 0 && kind != 0) { *verdict = 0; continue; }
+        *verdict = -1;
+        *counter = json_object();
+        if (cell[i].pt && !cell[i].hi->rational) {
+            /* an algebraic point: its certified digits, and exactly which root of which polynomial */
+            json_t *aj = rs_alg_json(cell[i].hi, name);
+            char ex[400];
+            snprintf(ex, sizeof ex, "root %ld (from below, 0-based) of %s", (long) cell[i].hi->idx,
+                     json_string_value(json_object_get(aj, "minpoly")));
+            json_object_set_new(*counter, name, json_incref(json_object_get(aj, "approx")));
+            json_object_set_new(*counter, "exact", json_string(ex));
+            json_decref(aj);
+        } else {
+            json_object_set_new(*counter, name, rs_json_fmpq(samp + i));
+        }
+        json_object_set_new(*counter, "status", json_string(st));
+    }
+    if (r == RS_OK && kind >= 0) {
+        json_object_set_new(o, "region", ivs);
+        json_object_set_new(o, "cross_checked_samples", json_integer(checked));
+    } else if (r == RS_OK) {
         json_object_set_new(o, "symbolic", json_false());
         json_object_set_new(o, "intervals", ivs);
         json_object_set_new(o, "undecided_points", json_array());
@@ -909,6 +950,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_an_re
     for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
     free(crit);
     flint_free(cell);
+    _fmpq_vec_clear(samp, 2 * ncrit + 1);
     rs_bounds_clear(bd, run->c->nparams);
     flint_free(bd);
     _fmpq_vec_clear(pt, s->nvars);
@@ -969,7 +1011,7 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "note", json_string(qd_jury_note));
         r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
     } else {
-        r = qd_region_cells(o, &S, run, req, tv, lead);
+        r = qd_region_cells(o, &S, run, req->q, tv, lead, NULL, -1, NULL, NULL);
         if (r == RS_OK) {
             rs_an_qd_json_p(o, S.p0, S.p1, run);
             json_object_set_new(o, "method", json_string(
@@ -988,6 +1030,36 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
         }
     }
     fmpz_mpoly_clear(lead, S.s->zctx);
+    qd_sym_clear(&S, na);
+    return r;
+}
+
+int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                        slong tv, const rs_bound_t *dom)
+{
+    qd_sym_t S;
+    json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    fmpz_mpoly_t lead;
+    slong na = -1, k;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    *verdict = 0;
+    *counter = NULL;
+    if (r == RS_OK) {
+        fmpz_mpoly_init(lead, S.s->zctx);
+        fmpz_mpoly_set(lead, S.a + S.n, S.s->zctx);
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+        for (k = 0; r == RS_OK && k < S.s->lambda_var; k++)
+            if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
+                r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every parameter but %s set: a "
+                                 "claim over Q(sqrt 2) is decided on the exact region of one parameter",
+                                 run->c->params[tv].name);
+        if (r == RS_OK) r = qd_region_cells(o, &S, run, req->q, tv, lead, dom, kind, verdict, counter);
+        fmpz_mpoly_clear(lead, S.s->zctx);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
     qd_sym_clear(&S, na);
     return r;
 }

@@ -945,6 +945,26 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
     }
     rs_render_line(r, "claim", "%s", js(o, "text"));
     rs_render_line(r, "status", "%s", st);
+    if (json_is_array(json_object_get(o, "region"))) {
+        /* over Q(sqrt 2) (an_qd_conds.c): decided on the exact region of one parameter */
+        if (json_object_get(o, "counterexample") != NULL) {
+            rs_render_label(r, "counterexample");
+            assignments(r, json_object_get(o, "counterexample"));
+            rs_render_textf(r, "%s\n", "");
+        }
+        rs_render_linef(r, "decided by", "the exact region over %s (%lld cells; samples cross-checked: %lld)",
+                        js(o, "over"), (long long) json_array_size(json_object_get(o, "region")),
+                        ji(o, "cross_checked_samples"));
+        rs_render_assigned(r, o);
+        rs_render_heading(r, "Claim", "Claim");
+        taken_at(r, o);
+        rs_render_say(r, "Claim `", "Claim \\texttt{");
+        rs_render_esc(r, js(o, "text"));
+        rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of the one free parameter.\n\n",
+                       "}: \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{2})$ of the one free "
+                       "parameter.\n\n", st);
+        return;
+    }
     if (st && strcmp(st, "refuted") == 0) {
         const json_t *ce = json_object_get(o, "counterexample"), *at = json_object_get(o, "at_counterexample");
         rs_render_label(r, "counterexample");

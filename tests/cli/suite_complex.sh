@@ -727,6 +727,23 @@ PY
         ok "sdirk2 region over Q(sqrt 2): exact ends 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal), c* = root of 17c^4 - 92c^2 + 124 (marginal)"
     else fail "sdirk2 region: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 region JSON: no python3"; fi
+# claims over Q(sqrt 2) on the exact region (ends by hand in sdirk2-region.case)
+SR=cases/complex/sdirk2-region.case
+claim_qd() { # name want-status want-point-substring claim case [options]
+    name=$1; want=$2; wpt=$3; shift 3
+    "$RS" --json --analyse "$@" >"$T/cq.json" 2>"$T/err"; rc=$?
+    got=$(python3 -c 'import json,sys; r=[r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "claim"][0]; print(r["status"] if r.get("over") == "Q(sqrt 2)" else "no over")' "$T/cq.json" 2>/dev/null)
+    pt=$(tr -d ' \n' <"$T/cq.json" | sed -n 's/.*"counterexample":{\([^}]*\)}.*/\1/p')
+    want_rc=0; [ "$want" = refuted ] && want_rc=1
+    if [ "$got" = "$want" ] && [ "$rc" = "$want_rc" ] && { [ -z "$wpt" ] || echo "$pt" | grep -q "$wpt"; }; then ok "$name: $want"
+    else fail "$name: got '$got' rc=$rc point '$pt' $(head -1 "$T/err")"; fi
+}
+claim_qd "sdirk2 claim stable when q < 0 or q > 12" proved "" "claim stable when q < 0 or q > 12" "$SR"
+claim_qd "sdirk2 claim stable when q <= 0 (q = 0 marginal)" refuted '"q":"0","status":"marginal"' "claim stable when q <= 0" "$SR"
+claim_qd "sdirk2 claim stable when q > 11 (6 + 4 sqrt 2 = 11.66)" refuted '"status":"unstable"' "claim stable when q > 11" "$SR"
+claim_qd "sdirk2 claim unstable when 1 < q < 4 (the pole 2 + sqrt 2)" refuted 'root1.*q^2-4\*q+2","status":"singular"' "claim unstable when 1 < q < 4" "$SR"
+claim_qd "sdirk2 coupled claim stable when -3/2 <= c <= 3/2 at a = 1 (c* = 1.5936)" proved "" "claim stable when -3/2 <= c <= 3/2" "$SCC" --set a=1
+claim_qd "sdirk2 coupled claim stable when 0 <= c <= 8/5 at a = 1 (c* marginal)" refuted 'root2.*17\*c^4-92\*c^2+124","status":"marginal"' "claim stable when 0 <= c <= 8/5" "$SCC" --set a=1
 "$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
     ok "sdirk2 jury at a complex set value refused (exit 2)"
