@@ -22,6 +22,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpq_vec.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_mpoly_factor.h>
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
 #include "algebra/qsqrt.h"
@@ -278,18 +281,12 @@ static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
         if (st != says) {
             bad = json_object();
             for (k = 0; k < nfree; k++) json_object_set_new(bad, s->vars[fv[k]], rs_json_fmpq(pt + fv[k]));
-            json_object_set_new(chk, "point", bad);
-            json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
-            json_object_set_new(chk, "exact_verdict", json_string(st ? "stable" : "not stable"));
+            rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
         }
     }
-    json_object_set_new(chk, "points", json_integer(nok));
-    json_object_set_new(chk, "agree", json_boolean(bad == NULL));
-    json_object_set_new(chk, "against", json_string("exact verdict over Q(sqrt d) (Schur-Cohn with exact signs and "
-                                                    "the certified Arb roots, which must agree) at rational points "
-                                                    "satisfying the assumptions"));
-    json_object_set_new(o, "sample_check", chk);
-    if (bad != NULL) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
+                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
+                            "assumptions");
     for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
     free(cps);
     _fmpq_vec_clear(pt, s->nvars);
