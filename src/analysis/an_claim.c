@@ -16,6 +16,7 @@
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
 #include "analysis/an_region.h"
+#include "analysis/an_qd.h"
 #include "stability/routh_complex.h"
 #include "algebra/mfactor.h"
 
@@ -2036,6 +2037,83 @@ void rs_an_claim_req_clear(rs_an_req_t *req)
     req->u.claim.dnf = NULL;
 }
 
+/* over Q(sqrt d) (rk sdirk2): one parameter without a set value, the claim's
+ * sets intervals of it; each part decided on the exact region there
+ * (an_qd_conds.c: every cell decided two or three ways) */
+static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
+{
+    const rs_request_t *q = req->q;
+    const claim_dnf_t *d = req->u.claim.dnf;
+    slong i, j, k, tv = -1, nfree = 0, nparams = run->c->nparams;
+    rs_variant_t *v;
+    json_t *o, *counter = NULL;
+    int r, proved = 1;
+    for (k = 0; k < nparams; k++) {
+        int set = 0;
+        for (j = 0; j < run->c->nsets; j++) set |= strcmp(run->c->sets[j].name, run->c->params[k].name) == 0;
+        if (!set) { tv = k; nfree++; }
+    }
+    if (nfree != 1)
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected exactly one parameter without a set value: a "
+                            "claim over Q(sqrt 2) (rk sdirk2) is decided on the exact region of one parameter%s", "");
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    /* every condition a bound on tv (linear in it, nothing else) */
+    for (i = 0; i < d->nparts && r == RS_OK; i++)
+        for (j = 0; j < d->n[i] && r == RS_OK; j++) {
+            rs_condpoly_t cp;
+            r = rs_condpoly_compile(&cp, d->conds[i] + j, run->sym, run->c, run->err);
+            if (r != RS_OK) break;
+            for (k = 0; k < cp.n; k++)
+                if (fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx) > 1
+                    || fmpq_mpoly_degree_si(cp.num + k, tv, run->sym->ctx) != fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx)
+                    || !fmpq_mpoly_is_fmpq(cp.den + k, run->sym->ctx))
+                    r = RS_ERR_INPUT;
+            rs_condpoly_clear(&cp, run->sym);
+            if (r != RS_OK)
+                r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected bounds on %s (NAME < VALUE, A <= NAME <= B, "
+                                 "joined by and, or): a claim over Q(sqrt 2) is decided on the exact region of one "
+                                 "parameter", run->c->params[tv].name);
+        }
+    if (r != RS_OK) return r;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("claim"));
+    json_object_set_new(o, "text", json_string(q->text));
+    json_object_set_new(o, "claim", json_string(kindw));
+    for (i = 0; i < d->nparts && r == RS_OK && counter == NULL; i++) {
+        rs_bound_t *b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
+        int vd = 1;
+        claim_bounds(b, run, d->conds[i], d->n[i]);
+        if (!rs_bound_empty(b + tv))
+            r = rs_an_qd_claim_part(&vd, &counter, o, run, req, (int) req->u.claim.kind == CLAIM_STABLE ? 0
+                                    : req->u.claim.kind == CLAIM_BOUNDED ? 1 : 2, tv, b + tv);
+        if (vd != 1) proved = 0;
+        rs_bounds_clear(b, nparams);
+        flint_free(b);
+    }
+    if (r != RS_OK) {
+        json_decref(o);
+        json_decref(counter);
+        return r;
+    }
+    if (counter != NULL) {
+        json_object_set_new(o, "status", json_string("refuted"));
+        json_object_set_new(o, "counterexample", counter);
+        run->outcome |= RS_OUTCOME_FAILED;
+    } else {
+        json_object_set_new(o, "status", json_string(proved ? "proved" : "undecided"));
+    }
+    json_object_set_new(o, "over", json_string("Q(sqrt 2)"));
+    json_object_set_new(o, "tried", json_string(
+        "the exact region over Q(sqrt 2) of the one free parameter on the claim's set (region NAME's cells: rational "
+        "samples decided by the Schur-Cohn conditions, Schur-Cohn with certified roots and the exact route over "
+        "Q(sqrt 2); algebraic critical values by exact signs in Q(t0, sqrt 2) and the exact route there, all "
+        "agreeing): proved iff every cell meeting the set has the claimed status; refuted at the first cell that "
+        "does not, its point and exact status given"));
+    rs_run_emit_exact(run, v, o);
+    return RS_OK;
+}
+
 int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
 {
     static const char *const kind_words[] = {"stable", "bounded", "unstable"};
@@ -2051,6 +2129,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
     claim_cx_t cx;
 
     kindw = kind_words[kind == CLAIM_STABLE ? 0 : kind == CLAIM_BOUNDED ? 1 : 2];
+    if (run->m->qd != NULL) return claim_qd(run, req, kindw);   /* over Q(sqrt d) */
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     o = json_object();

@@ -214,18 +214,12 @@ static int cx_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
             bad = json_object();
             for (k = 0; k < nfree; k++)
                 json_object_set_new(bad, s->vars[free_vars[k]], rs_json_fmpq(pt + free_vars[k]));
-            json_object_set_new(chk, "point", bad);
-            json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
-            json_object_set_new(chk, "exact_verdict", json_string(rs_status_name(st)));
+            rs_run_sample_disagree(chk, bad, says, rs_status_name(st));
         }
     }
-    json_object_set_new(chk, "points", json_integer(nok));
-    json_object_set_new(chk, "agree", json_boolean(bad == NULL));
-    json_object_set_new(chk, "against", json_string("exact verdict over Q(i) (complex Schur-Cohn and Bilharz on the "
-                                                    "bilinear transform, which must agree) at rational points "
-                                                    "satisfying the assumptions"));
-    json_object_set_new(o, "sample_check", chk);
-    if (bad != NULL) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(i) (complex Schur-Cohn and Bilharz "
+                            "on the bilinear transform, which must agree) at rational points satisfying the "
+                            "assumptions");
     for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
     free(cps);
     _fmpq_vec_clear(pt, s->nvars);

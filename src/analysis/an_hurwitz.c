@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 
 /* Lienard-Chipart (the stated conditions) and Hurwitz's full criterion (every
  * D_k of the rational Hurwitz matrix at the point, rs_hurwitz_or_full_at)
@@ -78,6 +79,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     size_t cap = 0;
     slong i, k;
     int r, verdict;
+    if (run->m->qd != NULL) return rs_an_qd_hurwitz(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;

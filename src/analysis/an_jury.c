@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
 #include "recstab/positivity.h"
@@ -322,6 +323,7 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
     json_t *o, *rows;
     slong i;
     int r;
+    if (run->m->qd != NULL) return rs_an_qd_jury(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_jury(run, req);
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;

@@ -26,6 +26,7 @@
 #include "analysis/an_qd.h"
 #include <acb.h>
 #include "algebra/qsqrt.h"
+#include "util/polyfmt.h"
 
 static json_t *json_str_free(char *s)
 {
@@ -48,9 +49,16 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     if (strcmp(n, "charpoly") == 0 || strcmp(n, "stability") == 0 || strcmp(n, "astability") == 0
         || strcmp(n, "radius") == 0)
         return RS_OK;
+    /* the conditions over Q(sqrt d)[params] (an_qd_conds.c): real parameters */
+    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0
+         || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
+        return RS_OK;
+    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected real set values: %s over Q(sqrt 2) "
+                            "does not run at a complex set value (stability and radius do)", n);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability, radius or astability: %s is not available for rk sdirk2 "
-                        "(its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
+                        "expected charpoly, stability, radius, astability, jury, hurwitz, region or claim: %s is not available for "
+                        "rk sdirk2 (its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
 }
 
 /* p = p0 + sqrt(d) p1 of the scheme, p0 and p1 in the scheme's zctx
@@ -281,11 +289,20 @@ static void qd_common(json_t *o, const qd_r_t *R, rs_run_t *run)
 
 /* ---- any scheme over Q(sqrt d): p = p0 + sqrt(d) p1 ---- */
 
-/* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of the scheme without sqrt(d)) */
-static char *qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s)
+char *rs_an_qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s, int spaced)
 {
-    char *x = rs_scheme_zpoly_str(a0, s), *y = rs_scheme_zpoly_str(a1, s), *out;
-    size_t len = strlen(x) + strlen(y) + 48;
+    char *x, *y, *out;
+    size_t len;
+    if (spaced) {   /* as the rational conditions print (polyfmt.c) */
+        char *u = rs_polyfmt_fmpz_mpoly(a0, (const char **) s->vars, s->zctx);
+        char *v = rs_polyfmt_fmpz_mpoly(a1, (const char **) s->vars, s->zctx);
+        x = flint_malloc(strlen(u) + 1); strcpy(x, u); free(u);
+        y = flint_malloc(strlen(v) + 1); strcpy(y, v); free(v);
+    } else {
+        x = rs_scheme_zpoly_str(a0, s);
+        y = rs_scheme_zpoly_str(a1, s);
+    }
+    len = strlen(x) + strlen(y) + 48;
     out = flint_malloc(len);
     if (fmpz_mpoly_is_zero(a1, s->zctx)) snprintf(out, len, "%s", x);
     else if (fmpz_mpoly_is_zero(a0, s->zctx)) snprintf(out, len, "sqrt(%ld)*(%s)", (long) s->sqrt_d, y);
@@ -439,14 +456,20 @@ static json_t *qd_substituted(const qd_cp_t *P, rs_run_t *run)
     return sub;
 }
 
-static void qd_generic_common(json_t *o, const qd_cp_t *P, rs_run_t *run)
+void rs_an_qd_json_p(json_t *o, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, rs_run_t *run)
 {
     char m[80];
     snprintf(m, sizeof m, "rk %s", run->m->qd->tableau);
     json_object_set_new(o, "over", json_str_free(over_str(run->sym->sqrt_d)));
-    json_object_set_new(o, "method", json_string(m));
-    json_object_set_new(o, "p0", json_str_free(rs_scheme_zpoly_str(P->p0, run->sym)));
-    json_object_set_new(o, "p1", json_str_free(rs_scheme_zpoly_str(P->p1, run->sym)));
+    /* jury and hurwitz name their test in "method", the method in "rk" */
+    json_object_set_new(o, json_object_get(o, "method") == NULL ? "method" : "rk", json_string(m));
+    json_object_set_new(o, "p0", json_str_free(rs_scheme_zpoly_str(p0, run->sym)));
+    json_object_set_new(o, "p1", json_str_free(rs_scheme_zpoly_str(p1, run->sym)));
+}
+
+static void qd_generic_common(json_t *o, const qd_cp_t *P, rs_run_t *run)
+{
+    rs_an_qd_json_p(o, P->p0, P->p1, run);
 }
 
 static int qd_generic_charpoly(rs_run_t *run, const rs_an_req_t *req, const qd_cp_t *P)
@@ -461,13 +484,13 @@ static int qd_generic_charpoly(rs_run_t *run, const rs_an_req_t *req, const qd_c
     for (k = 0; k <= P->degree; k++) {
         rs_charpoly_coeff(a0, P->p0, k, s->lambda_var, s->zctx);
         rs_charpoly_coeff(a1, P->p1, k, s->lambda_var, s->zctx);
-        json_array_append_new(co, json_str_free(qd_mpoly_str(a0, a1, s)));
+        json_array_append_new(co, json_str_free(rs_an_qd_mpoly_str(a0, a1, s, 0)));
     }
     json_object_set_new(o, "analysis", json_string("charpoly"));
     json_object_set_new(o, "var", json_string("lambda"));
     json_object_set_new(o, "degree", json_integer(P->degree));
     json_object_set_new(o, "coeffs", co);
-    json_object_set_new(o, "poly", json_str_free(qd_mpoly_str(P->p0, P->p1, s)));
+    json_object_set_new(o, "poly", json_str_free(rs_an_qd_mpoly_str(P->p0, P->p1, s, 0)));
     qd_generic_common(o, P, run);
     json_object_set_new(o, "substituted", json_object());
     json_object_set_new(o, "decided_by", json_string("exact"));

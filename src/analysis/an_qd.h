@@ -6,7 +6,8 @@
 #include "analysis/registry.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
- * the analysis is not one of charpoly, stability, astability */
+ * the analysis is not one of charpoly, stability, astability, radius, jury,
+ * hurwitz (the last two with real set values only) */
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req);
 /* the case is Dahlquist's test equation: one subsystem, one state y' = F,
  * nothing else (R = N/D is read from p = D lambda - N) */
@@ -15,5 +16,21 @@ int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
+/* an_qd_conds.c: the Schur-Cohn and Hurwitz conditions over Q(sqrt d)[params] */
+int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+/* region NAME [at P=V, ...]: exact intervals over Q(sqrt d), or the conditions with other parameters free */
+int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
+/* a claim's part over Q(sqrt d): the exact region of tv (every other parameter
+ * set) on dom, kind 0 stable, 1 bounded, 2 unstable; *verdict 1 proved, -1
+ * refuted (*counter {NAME: value, "status"}), 0 undecided; the region's cells
+ * into o's "region" */
+int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                        slong tv, const rs_bound_t *dom);
+/* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of s without sqrt(d); flint_free
+ * it); spaced: "a - c^2" as the conditions print, else FLINT's "a-c^2" */
+char *rs_an_qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s, int spaced);
+/* "over", the method ("method", or "rk" when o names its test) and p0, p1 */
+void rs_an_qd_json_p(json_t *o, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, rs_run_t *run);
 
 #endif

@@ -13,6 +13,7 @@
 #include <fmpq_vec.h>
 #include "analysis/registry.h"
 #include "analysis/an_region.h"
+#include "analysis/an_qd.h"
 #include "recstab/bilinear.h"
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
@@ -2593,6 +2594,7 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     json_t *o;
     int r;
 
+    if (run->m->qd != NULL) return rs_an_qd_region(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (req->u.region.twod) return rs_an_region_cad(run, req);
     keep[0] = name;
     rs_run_assignments(run, &a, &na, keep, 1, req->u.region.at, req->u.region.nat);

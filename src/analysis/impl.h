@@ -172,6 +172,12 @@ int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
  * -1 (a condition vanishes: skipped) at point[v] for every variable. */
 typedef int (*rs_holds_fn)(const void *data, fmpq *const *point, const rs_scheme_struct *s);
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o);
+/* Checks made by their own loops (over Q(i), over Q(sqrt d)): chk's first
+ * disagreement (point, what the conditions say, the exact verdict), then
+ * o's "sample_check" {points, agree, against, ...}; a disagreement marks
+ * the run inconsistent (exit 3). */
+void rs_run_sample_disagree(json_t *chk, json_t *point, int says, const char *verdict);
+void rs_run_sample_check_set(rs_run_t *run, json_t *o, json_t *chk, slong points, int agree, const char *against);
 
 /* Shared steps of the analyses (run.c, conditions.c), once here instead of
  * copied into each caller.  rs_run_default_variant: the variant at the case's

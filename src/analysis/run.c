@@ -1026,6 +1026,22 @@ static void p_at_point(fmpz_poly_t u, const rs_variant_t *v, fmpq *const *pp)
  * few deterministic rational points that satisfy the assume lines and the
  * non-zero assumptions; points where p loses degree are skipped.  Adds
  * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
+void rs_run_sample_disagree(json_t *chk, json_t *point, int says, const char *verdict)
+{
+    json_object_set_new(chk, "point", point);
+    json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
+    json_object_set_new(chk, "exact_verdict", json_string(verdict));
+}
+
+void rs_run_sample_check_set(rs_run_t *run, json_t *o, json_t *chk, slong points, int agree, const char *against)
+{
+    json_object_set_new(chk, "points", json_integer(points));
+    json_object_set_new(chk, "agree", json_boolean(agree));
+    json_object_set_new(chk, "against", json_string(against));
+    json_object_set_new(o, "sample_check", chk);
+    if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
+}
+
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o)
 {
     const rs_scheme_struct *s = v->s;

@@ -2,6 +2,7 @@
  * user's unknowns and equations are copied into the model, the builders and
  * the recurrence terms add theirs (expression trees); the case is only
  * read, and nothing is re-parsed. */
+#include <stdio.h>
 #include <string.h>
 #include "recstab/model.h"
 #include "lower/lower.h"
@@ -128,7 +129,13 @@ char *rs_model_emit_equations(const rs_model_t m)
     if (m->qd != NULL) {
         cat(&b, "# rk ");
         cat(&b, m->qd->tableau);
-        cat(&b, ": coefficients in Q(sqrt 2), sqrt(2) exact (the analyses reduce by sqrt(2)^2 = 2)\n");
+        {
+            /* the field's own d (Gauss and Radau IIA(3) would carry sqrt 3, sqrt 6) */
+            char buf[160];
+            snprintf(buf, sizeof buf, ": coefficients in Q(sqrt %ld), sqrt(%ld) exact (the analyses reduce by "
+                     "sqrt(%ld)^2 = %ld)\n", (long) m->qd->d, (long) m->qd->d, (long) m->qd->d, (long) m->qd->d);
+            cat(&b, buf);
+        }
     }
     for (i = m->nuser_unknowns; i < m->nunknowns; i++) {
         cat(&b, i == m->nuser_unknowns ? "unknown " : " ");

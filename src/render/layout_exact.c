@@ -377,6 +377,26 @@ static void complex_p(rs_render_t *r, const json_t *o)
     const json_t *at = json_object_get(o, "at");
     const char *key;
     json_t *val;
+    if (js(o, "p0") != NULL) {
+        /* over Q(sqrt d) (an_qd_conds.c): p = p0 + sqrt(d) p1 */
+        rs_render_linef(r, "p(lambda)", "p0 + sqrt(d)*p1 (over %s, %s)", js(o, "over"),
+                        js(o, "rk") != NULL ? js(o, "rk") : js(o, "method"));
+        rs_render_line(r, "p0", "%s", js(o, "p0"));
+        rs_render_line(r, "p1", "%s", js(o, "p1"));
+        rs_render_say(r, "Over ", "Over ");
+        rs_render_esc(r, js(o, "over"));
+        rs_render_say(r, ", $p = p_0 + \\sqrt{d}\\,p_1$ with $p_0 = ", ", $p = p_0 + \\sqrt{d}\\,p_1$ with $p_0 = ");
+        rs_render_poly(r, js(o, "p0"));
+        rs_render_say(r, "$, $p_1 = ", "$, $p_1 = ");
+        rs_render_poly(r, js(o, "p1"));
+        rs_render_say(r, "$; every product is reduced by $\\sqrt{d}^2 = d$, each condition is $c_0 + \\sqrt{d}\\,c_1 > 0$ "
+                      "with $c_0, c_1$ polynomials in the parameters, decided exactly by comparing $c_0^2$ with "
+                      "$d\\,c_1^2$.\n\n",
+                      "$; every product is reduced by $\\sqrt{d}^2 = d$, each condition is $c_0 + \\sqrt{d}\\,c_1 > 0$ "
+                      "with $c_0, c_1$ polynomials in the parameters, decided exactly by comparing $c_0^2$ with "
+                      "$d\\,c_1^2$.\n\n");
+        return;
+    }
     rs_render_linef(r, "p(lambda)", "%s + i*(%s) (over Q(i))", js(o, "p_re"), js(o, "p_im"));
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
@@ -428,7 +448,12 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
     const json_t *minors = json_object_get(o, "minors");
     const json_t *conds = json_object_get(o, "conditions");
     size_t i;
-    if (js(o, "over") != NULL) {
+    if (js(o, "p0") != NULL) {
+        /* over Q(sqrt d): the Hurwitz minors of q (an_qd_conds.c) */
+        rs_render_heading(r, "Hurwitz minors of q(z) over Q(sqrt 2)", "Hurwitz minors of $q(z)$ over $\\mathbb{Q}(\\sqrt{2})$");
+        complex_p(r, o);
+        rs_render_line(r, "method", "%s", js(o, "method"));
+    } else if (js(o, "over") != NULL) {
         /* over Q(i): the Bilharz conditions (an_complex_conds.c) */
         rs_render_heading(r, "Bilharz conditions of q(z) over Q(i)", "Bilharz conditions of $q(z)$ over $Q(i)$");
         complex_p(r, o);
@@ -931,6 +956,26 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
     }
     rs_render_line(r, "claim", "%s", js(o, "text"));
     rs_render_line(r, "status", "%s", st);
+    if (json_is_array(json_object_get(o, "region"))) {
+        /* over Q(sqrt 2) (an_qd_conds.c): decided on the exact region of one parameter */
+        if (json_object_get(o, "counterexample") != NULL) {
+            rs_render_label(r, "counterexample");
+            assignments(r, json_object_get(o, "counterexample"));
+            rs_render_textf(r, "%s\n", "");
+        }
+        rs_render_linef(r, "decided by", "the exact region over %s (%lld cells; samples cross-checked: %lld)",
+                        js(o, "over"), (long long) json_array_size(json_object_get(o, "region")),
+                        ji(o, "cross_checked_samples"));
+        rs_render_assigned(r, o);
+        rs_render_heading(r, "Claim", "Claim");
+        taken_at(r, o);
+        rs_render_say(r, "Claim `", "Claim \\texttt{");
+        rs_render_esc(r, js(o, "text"));
+        rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of the one free parameter.\n\n",
+                       "}: \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{2})$ of the one free "
+                       "parameter.\n\n", st);
+        return;
+    }
     if (st && strcmp(st, "refuted") == 0) {
         const json_t *ce = json_object_get(o, "counterexample"), *at = json_object_get(o, "at_counterexample");
         rs_render_label(r, "counterexample");

@@ -557,10 +557,12 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse jury "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*jury is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: jury refused with its reason (exit 2)"
-else fail "sdirk2 jury refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "modes" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*modes is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: modes refused with its reason (exit 2)"
+else fail "sdirk2 modes refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "region q, r" "$SD" >/dev/null 2>"$T/err"; rc=$?
+[ "$rc" = 2 ] && ok "sdirk2: region N1, N2 refused (exit 2)" || fail "sdirk2 region N1, N2: rc=$rc $(head -1 "$T/err")"
 # ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
 # Expected values derived independently with sympy (not recstab's equations):
 #   g = 1 - sqrt(2)/2; f = lambda y, x: -a*y + c*x
@@ -653,6 +655,143 @@ print("%d inside, 0 on, %d outside the unit circle; lambda = 0 (x4)" % (n + 4, 2
     if grep -qF "unstable: $want" "$T/scc.txt"; then ok "sdirk2 coupled c=1/2+2i: $want (one root each side)"
     else fail "sdirk2 coupled c=1/2+2i counts: want '$want', $(grep verdict "$T/scc.txt") $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 coupled mixed counts: no python3"; fi
+
+# ---- jury and hurwitz over Q(sqrt 2)[a, c] (issue 15) ----
+# The printed conditions c0 + sqrt(2)*(c1) > 0 are evaluated here exactly
+# (Fractions: the sign of c0 + sqrt 2 c1 from c0^2 against 2 c1^2) and
+# compared on a grid with the root moduli of p derived independently with
+# sympy from the method's definition (cases/complex/sdirk2-coupled-conditions.case:
+# 2 (a^2 + 4a + 2)^2 p = A lambda^2 + B lambda + C), the roots by the quadratic
+# formula in double, points with |rho - 1| < 1e-6 skipped; on Dahlquist's test
+# equation against |R(q)| < 1 with R(z) = (1 + (sqrt 2 - 1) z)/(1 - g z)^2
+# (Hairer-Wanner IV.6, g = 1 - sqrt(2)/2).  By hand at a = 1 the boundary
+# is c^2 = (46 - 2 sqrt 2)/17 (C = A with complex roots, see the case), where
+# hurwitz's first condition must vanish exactly.
+SCC=cases/complex/sdirk2-coupled-conditions.case
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json "$SCC" >"$T/scc.json" 2>"$T/err"; rc=$?
+    "$RS" --json --set a=1 --analyse hurwitz "$SCC" >"$T/scc1.json" 2>>"$T/err"; rc1=$?
+    "$RS" --json --analyse jury --analyse hurwitz "$SD" >"$T/sdj.json" 2>>"$T/err"; rc2=$?
+    res=$(python3 - "$T/scc.json" "$T/scc1.json" "$T/sdj.json" <<'PY'
+import json, sys, cmath
+from fractions import Fraction as F
+def results(f): return json.load(open(f))["cases"][0]["results"]
+def val(poly, env):   # integer polynomial text in the parameters, exact at Fractions
+    return F(eval(poly.replace("^", "**"), {}, env))
+def sgn(x, y):        # sign of x + y sqrt 2, exactly
+    if y == 0 or (x != 0 and (x > 0) == (y > 0)): return (x > 0) - (x < 0) if x != 0 else (y > 0) - (y < 0)
+    return ((x > 0) - (x < 0)) if x * x > 2 * y * y else ((y > 0) - (y < 0))
+def holds(r, env):
+    ok = all(sgn(val(q["c0"], env), val(q["c1"], env)) > 0 for q in r["conditions_qd"])
+    for t in r["conditions"]:          # the rational "!= 0" lines, if any
+        if t.endswith("!= 0") and val(t[:-5], env) == 0: ok = False
+    return ok
+s2 = 2 ** 0.5
+def rho(a, c):
+    A = 2*a**4 + 16*a**3 + 40*a**2 + 32*a + 8
+    B = -a**4 - 4*a**3 + 4*s2*a**3 - 32*a**2 - 40*a - 12
+    C = a**3*c**2 - 2*s2*a**3 - 2*a**3 + 2*s2*a**2*c**2 + 10*a**2*c**2 + 6*a**2 + 14*a*c**2 + 12*a + 4*c**2 + 4
+    d = cmath.sqrt(B * B - 4 * A * C)
+    return max(abs((-B + d) / (2 * A)), abs((-B - d) / (2 * A)))
+bad = []
+rs = results(sys.argv[1])
+an = {r["analysis"]: r for r in rs}
+if not all(an[k]["sample_check"]["agree"] and an[k]["sample_check"]["points"] == 12 for k in ("jury", "hurwitz")):
+    bad.append("sample checks")
+if an["jury"]["over"] != "Q(sqrt 2)" or an["hurwitz"]["over"] != "Q(sqrt 2)": bad.append("over")
+n = st = 0
+for a in [F(1, 4), F(1, 2), F(1), F(3, 2), F(2), F(5)]:
+    for c in [F(0), F(1, 2), F(1), F(3, 2), F(8, 5), F(2), F(3), F(-5, 4)]:
+        r = rho(float(a), float(c))
+        if abs(r - 1) < 1e-6: continue
+        for k in ("jury", "hurwitz"):
+            if holds(an[k], {"a": a, "c": c}) != (r < 1): bad.append("%s at a=%s c=%s (rho %.6f)" % (k, a, c, r))
+        n += 1; st += r < 1
+if n < 40 or st in (0, n): bad.append("grid %d points, %d stable" % (n, st))
+# a = 1: the first Hurwitz condition vanishes at c^2 = (46 - 2 sqrt 2)/17 (hand algebra)
+h1 = [r for r in results(sys.argv[2]) if r["analysis"] == "hurwitz"][0]["conditions_qd"][0]
+def coeffs(poly):     # c0 at c^2 = u + v sqrt 2 -> (x, y): the polynomial in c^2 of degree 1
+    p0, p1 = val(poly, {"c": F(0)}), (val(poly, {"c": F(1)}) - val(poly, {"c": F(0)}))
+    return p0, p1
+x0, x1 = coeffs(h1["c0"]); y0, y1 = coeffs(h1["c1"])
+u, v = F(46, 17), F(-2, 17)
+# (x0 + x1 w) + sqrt2 (y0 + y1 w), w = u + v sqrt 2
+X = x0 + x1 * u + 2 * y1 * v
+Y = x1 * v + y0 + y1 * u
+if (X, Y) != (0, 0): bad.append("a=1 boundary: %s + %s sqrt 2" % (X, Y))
+# the test equation: |R(q)| < 1
+g = 1 - s2 / 2
+for r in results(sys.argv[3]):
+    for q in [F(-100), F(-3), F(-1), F(-1, 10), F(1, 10), F(1), F(2), F(3), F(5), F(10), F(100)]:
+        R = abs((1 + (s2 - 1) * float(q)) / (1 - g * float(q)) ** 2)
+        if abs(R - 1) < 1e-6: continue
+        if holds(r, {"q": q}) != (R < 1): bad.append("test equation %s at q=%s (|R| %.6f)" % (r["analysis"], q, R))
+print("yes" if not bad else "no " + "; ".join(bad[:4]))
+PY
+)
+    if [ "$rc$rc1$rc2" = 000 ] && [ "$res" = yes ]; then
+        ok "sdirk2 jury/hurwitz over Q(sqrt 2)[a, c]: conditions agree with sympy's p on a grid, the a=1 boundary (46 - 2 sqrt 2)/17 and |R(q)| < 1"
+    else fail "sdirk2 jury/hurwitz conditions: rc=$rc$rc1$rc2 $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 jury/hurwitz JSON: no python3"; fi
+# region over Q(sqrt 2): the intervals against the hand derivations in the
+# cases (sdirk2-region.case: 0, the pole 2 + sqrt 2, R = 1 at 6 + 4 sqrt 2;
+# sdirk2-coupled-conditions.case: c*^2 = (46 - 2 sqrt 2)/17 at a = 1)
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json cases/complex/sdirk2-region.case >"$T/sr.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/sr.json" "$T/scc.json" <<'PY'
+import json, sys
+def region(f): return [r for r in json.load(open(f))["cases"][0]["results"] if r["analysis"] == "region"][0]
+def ends(r):
+    out = []
+    for iv in r["intervals"]:
+        e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
+        out.append((iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]))
+    return out
+bad = []
+P, Q = ("q^2 - 4*q + 2", 1), ("q^2 - 12*q + 4", 1)          # 2 + sqrt 2, 6 + 4 sqrt 2
+want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
+        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
+        ("stable", Q, None, False, False)]
+if ends(region(sys.argv[1])) != want: bad.append("test equation %r" % (ends(region(sys.argv[1])),))
+M = "17*c^4 - 92*c^2 + 124"                                   # c^2 = (46 -+ 2 sqrt 2)/17
+want = [("unstable", None, (M, 1), False, False), ("marginal", (M, 1), (M, 1), True, True),
+        ("stable", (M, 1), (M, 2), False, False), ("marginal", (M, 2), (M, 2), True, True),
+        ("unstable", (M, 2), None, False, False)]
+r2 = region(sys.argv[2])
+if ends(r2) != want or r2["over"] != "Q(sqrt 2)" or abs(r2["intervals"][2]["hi_approx"] - 1.5935822183934018) > 1e-12:
+    bad.append("coupled a=1 %r" % (ends(r2),))
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then
+        ok "sdirk2 region over Q(sqrt 2): exact ends 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal), c* = root of 17c^4 - 92c^2 + 124 (marginal)"
+    else fail "sdirk2 region: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 region JSON: no python3"; fi
+# claims over Q(sqrt 2) on the exact region (ends by hand in sdirk2-region.case)
+SR=cases/complex/sdirk2-region.case
+claim_qd() { # name want-status want-point-substring claim case [options]
+    name=$1; want=$2; wpt=$3; shift 3
+    "$RS" --json --analyse "$@" >"$T/cq.json" 2>"$T/err"; rc=$?
+    got=$(python3 -c 'import json,sys; r=[r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "claim"][0]; print(r["status"] if r.get("over") == "Q(sqrt 2)" else "no over")' "$T/cq.json" 2>/dev/null)
+    pt=$(tr -d ' \n' <"$T/cq.json" | sed -n 's/.*"counterexample":{\([^}]*\)}.*/\1/p')
+    want_rc=0; [ "$want" = refuted ] && want_rc=1
+    if [ "$got" = "$want" ] && [ "$rc" = "$want_rc" ] && { [ -z "$wpt" ] || echo "$pt" | grep -q "$wpt"; }; then ok "$name: $want"
+    else fail "$name: got '$got' rc=$rc point '$pt' $(head -1 "$T/err")"; fi
+}
+claim_qd "sdirk2 claim stable when q < 0 or q > 12" proved "" "claim stable when q < 0 or q > 12" "$SR"
+claim_qd "sdirk2 claim stable when q <= 0 (q = 0 marginal)" refuted '"q":"0","status":"marginal"' "claim stable when q <= 0" "$SR"
+claim_qd "sdirk2 claim stable when q > 11 (6 + 4 sqrt 2 = 11.66)" refuted '"status":"unstable"' "claim stable when q > 11" "$SR"
+claim_qd "sdirk2 claim unstable when 1 < q < 4 (the pole 2 + sqrt 2)" refuted 'root1.*q^2-4\*q+2","status":"singular"' "claim unstable when 1 < q < 4" "$SR"
+claim_qd "sdirk2 coupled claim stable when -3/2 <= c <= 3/2 at a = 1 (c* = 1.5936)" proved "" "claim stable when -3/2 <= c <= 3/2" "$SCC" --set a=1
+claim_qd "sdirk2 coupled claim stable when 0 <= c <= 8/5 at a = 1 (c* marginal)" refuted 'root2.*17\*c^4-92\*c^2+124","status":"marginal"' "claim stable when 0 <= c <= 8/5" "$SCC" --set a=1
+"$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
+    ok "sdirk2 jury at a complex set value refused (exit 2)"
+else fail "sdirk2 jury complex refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --markdown "$SCC" >"$T/scc.md" 2>"$T/err"
+if grep -q '^### Hurwitz minors of q(z) over Q(sqrt 2)$' "$T/scc.md" && grep -q 'p_0 + \\sqrt{d}' "$T/scc.md"; then
+    ok "sdirk2 conditions: Markdown derivation over Q(sqrt 2)"
+else fail "sdirk2 conditions markdown"; fi
 # complex c = 1/2 + i/4 (sympy, same derivation): |eigenvalues| 0.39299628, 0.63534168006133
 check_status "sdirk2 coupled c=1/2+i/4 (rho = 0.6353 by sympy)" stable "$SC" --set 'c=1/2+i/4'
 "$RS" --json "$SC" --set 'c=1/2+i/4' | tr -d ' \n' | grep -q '"rho":"0.63534168006133' \

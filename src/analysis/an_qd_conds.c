@@ -1,0 +1,1062 @@
+/* an_qd_conds.c -- issue 15: `jury` and `hurwitz` of a model over
+ * Q(sqrt d)[params] (rk sdirk2 in any scheme; model.h's qd).  p lives in the
+ * scheme's zctx with sqrt(d) as a variable; every product is reduced by
+ * sqrt(d)^2 = d (rs_scheme_reduce_sqrt), so each quantity is c0 + sqrt(d) c1
+ * with c0, c1 in Z[params].  No division is needed:
+ *   jury     Schur-Cohn without divisions, p_(k-1) = (a_k p_k - a_0 p_k*)/lambda
+ *            (real coefficients: sqrt(d) is real), rows divided only by their
+ *            content in Z[params] (a factor g scales delta by g^2);
+ *            conditions delta_k = a_k^2 - a_0^2 > 0 (Schur 1917);
+ *   hurwitz  q(z) = (z - 1)^n p((z + 1)/(z - 1)) = b_n z^n + ... + b_0, its
+ *            Hurwitz minors D_k by cofactor expansion; with a leading
+ *            coefficient of either sign, D_k(-q) = (-1)^k D_k(q), so every
+ *            root of q in Re z < 0 iff b_n^k D_k > 0 for k = 1..n, i.e.
+ *            b_n D_k > 0 (k odd), D_k > 0 (k even) and, as D_n = b_0 D_(n-1),
+ *            b_n b_0 > 0 in place of the last (Hurwitz 1895).
+ * Each condition c0 + sqrt(d) c1 > 0: the gcd of c0 and c1 in Z[params] is
+ * factored (factors of one sign under the assumptions dropped, even powers as
+ * "!= 0"), the rest printed as "c0 + sqrt(d)*(c1) > 0".  Both are checked at
+ * admissible rational points against the exact point verdict over Q(sqrt d)
+ * (Schur-Cohn with exact signs and the certified Arb roots, which must agree):
+ * a disagreement is exit 3. */
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpq_vec.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpq_mpoly.h>
+#include <flint/fmpz_mpoly_factor.h>
+#include "analysis/registry.h"
+#include "analysis/an_qd.h"
+#include "algebra/qsqrt.h"
+#include "analysis/an_region.h"
+
+/* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0) */
+typedef struct {
+    slong n;
+    fmpz_mpoly_struct *c0, *c1;
+    int *ne;
+    const rs_scheme_struct *s;
+} qc_t;
+
+static void qc_push(qc_t *q, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, int ne)
+{
+    const fmpz_mpoly_ctx_struct *ctx = q->s->zctx;
+    q->c0 = flint_realloc(q->c0, (size_t) (q->n + 1) * sizeof(fmpz_mpoly_struct));
+    q->c1 = flint_realloc(q->c1, (size_t) (q->n + 1) * sizeof(fmpz_mpoly_struct));
+    q->ne = flint_realloc(q->ne, (size_t) (q->n + 1) * sizeof(int));
+    fmpz_mpoly_init(q->c0 + q->n, ctx);
+    fmpz_mpoly_init(q->c1 + q->n, ctx);
+    fmpz_mpoly_set(q->c0 + q->n, c0, ctx);
+    fmpz_mpoly_set(q->c1 + q->n, c1, ctx);
+    q->ne[q->n++] = ne;
+}
+
+static void qc_clear(qc_t *q)
+{
+    slong i;
+    for (i = 0; i < q->n; i++) {
+        fmpz_mpoly_clear(q->c0 + i, q->s->zctx);
+        fmpz_mpoly_clear(q->c1 + i, q->s->zctx);
+    }
+    flint_free(q->c0);
+    flint_free(q->c1);
+    flint_free(q->ne);
+}
+
+/* a = a0 + sqrt(d) a1 */
+static void qd_split(fmpz_mpoly_t a0, fmpz_mpoly_t a1, const fmpz_mpoly_t a, const rs_scheme_struct *s)
+{
+    rs_charpoly_coeff(a0, a, 0, s->sqrt_var, s->zctx);
+    rs_charpoly_coeff(a1, a, 1, s->sqrt_var, s->zctx);
+}
+
+static void mul_red(fmpz_mpoly_t r, const fmpz_mpoly_t a, const fmpz_mpoly_t b, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_mul(r, a, b, s->zctx);
+    rs_scheme_reduce_sqrt(r, s);
+}
+
+/* "c0 + sqrt(d)*(c1)" of a (reduced) */
+static json_t *qd_json(const fmpz_mpoly_t a, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t a0, a1;
+    json_t *j;
+    fmpz_mpoly_init(a0, s->zctx);
+    fmpz_mpoly_init(a1, s->zctx);
+    qd_split(a0, a1, a, s);
+    {
+        char *str = rs_an_qd_mpoly_str(a0, a1, s, 1);
+        j = json_string(str);
+        flint_free(str);
+    }
+    fmpz_mpoly_clear(a0, s->zctx);
+    fmpz_mpoly_clear(a1, s->zctx);
+    return j;
+}
+
+/* f > 0 into the lists (see the top); returns 1 when nothing is left to
+ * hold (always true), -1 when f is a constant <= 0 (never), else 0 */
+static int qc_add(qc_t *q, json_t *conds, json_t *parts, json_t *dropped, const fmpz_mpoly_t f, const char *origin,
+                  const int *sign)
+{
+    const rs_scheme_struct *s = q->s;
+    fmpz_mpoly_t f0, f1, g, kept;
+    fmpz_mpoly_factor_t fa;
+    rs_qd_t cv;
+    slong i, before = q->n;
+    int neg = 0, ret = 0, pos = 0;
+    fmpz_mpoly_init(f0, s->zctx); fmpz_mpoly_init(f1, s->zctx);
+    fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(kept, s->zctx);
+    fmpz_mpoly_factor_init(fa, s->zctx);
+    qd_split(f0, f1, f, s);
+    fmpz_mpoly_one(kept, s->zctx);
+    if (!fmpz_mpoly_is_zero(f, s->zctx) && fmpz_mpoly_gcd(g, f0, f1, s->zctx) && fmpz_mpoly_factor(fa, g, s->zctx)) {
+        fmpz_mpoly_divexact(f0, f0, g, s->zctx);
+        fmpz_mpoly_divexact(f1, f1, g, s->zctx);
+        neg = fmpz_sgn(fa->constant) < 0;
+        for (i = 0; i < fa->num; i++) {
+            int sg = rs_hurwitz_sign(fa->poly + i, (const rs_sign_t *) sign, s->zctx);
+            int odd = (int) (fmpz_get_si(fa->exp + i) & 1);
+            if (sg != 0) {
+                if (sg < 0 && odd) neg = !neg;
+                json_array_append_new(dropped, json_pack("{s:o,s:s,s:s}", "factor", rs_json_factor(fa->poly + i, s),
+                                                         "from", origin, "reason", "of one sign under the assumptions"));
+            } else if (odd) {
+                fmpz_mpoly_mul(kept, kept, fa->poly + i, s->zctx);
+            } else {
+                char *line = rs_cond_string(fa->poly + i, s, "!= 0");
+                fmpz_mpoly_zero(g, s->zctx);
+                rs_json_append_unique(conds, line);
+                qc_push(q, fa->poly + i, g, 1);
+                free(line);
+            }
+        }
+        fmpz_mpoly_mul(f0, f0, kept, s->zctx);
+        fmpz_mpoly_mul(f1, f1, kept, s->zctx);
+        if (neg) {
+            fmpz_mpoly_neg(f0, f0, s->zctx);
+            fmpz_mpoly_neg(f1, f1, s->zctx);
+        }
+    }
+    rs_qd_init(cv);
+    if (fmpz_mpoly_is_fmpz(f0, s->zctx) && fmpz_mpoly_is_fmpz(f1, s->zctx)) {
+        fmpz_mpoly_get_fmpz(fmpq_numref(cv->x), f0, s->zctx);
+        fmpz_mpoly_get_fmpz(fmpq_numref(cv->y), f1, s->zctx);
+        pos = rs_qd_sgn(cv, s->sqrt_d) > 0;
+        ret = pos ? (q->n == before) : -1;
+    }
+    if (!pos) {
+        char *p = rs_an_qd_mpoly_str(f0, f1, s, 1), *line = malloc(strlen(p) + 8);
+        sprintf(line, "%s > 0", p);
+        rs_json_append_unique(conds, line);
+        json_array_append_new(parts, json_pack("{s:s,s:o,s:o,s:s}", "origin", origin, "c0", rs_json_zpoly(f0, s),
+                                               "c1", rs_json_zpoly(f1, s), "rel", ">"));
+        qc_push(q, f0, f1, 0);
+        free(line);
+        flint_free(p);
+    }
+    rs_qd_clear(cv);
+    fmpz_mpoly_factor_clear(fa, s->zctx);
+    fmpz_mpoly_clear(f0, s->zctx); fmpz_mpoly_clear(f1, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(kept, s->zctx);
+    return ret;
+}
+
+/* the value of a (no lambda) at pt */
+static void qd_part_at(fmpq_t v, const fmpz_mpoly_t a, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    fmpq_poly_t e;
+    fmpq_poly_init(e);
+    rs_run_cx_eval(e, a, pt, s);
+    fmpq_poly_get_coeff_fmpq(v, e, 0);
+    fmpq_poly_clear(e);
+}
+
+/* 1 when every condition holds at pt (strict), else 0 */
+static int qc_hold(const qc_t *q, fmpq *const *pt)
+{
+    rs_qd_t v;
+    slong i;
+    int ok = 1;
+    rs_qd_init(v);
+    for (i = 0; i < q->n && ok; i++) {
+        int sg;
+        qd_part_at(v->x, q->c0 + i, pt, q->s);
+        qd_part_at(v->y, q->c1 + i, pt, q->s);
+        sg = rs_qd_sgn(v, q->s->sqrt_d);
+        ok = q->ne[i] ? sg != 0 : sg > 0;
+    }
+    rs_qd_clear(v);
+    return ok;
+}
+
+/* the exact verdict at pt: 1 stable, 0 not (p's degree drops: singular),
+ * -1 p vanishes there, -2 Schur-Cohn over Q(sqrt d) and the certified roots
+ * disagree */
+static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n, fmpq *const *pt,
+                           const rs_scheme_struct *s)
+{
+    fmpq_poly_t e0, e1;
+    rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
+    slong k, deg;
+    int sc = -1, ar;
+    fmpq_poly_init(e0);
+    fmpq_poly_init(e1);
+    rs_run_cx_eval(e0, p0, pt, s);
+    rs_run_cx_eval(e1, p1, pt, s);
+    deg = FLINT_MAX(fmpq_poly_degree(e0), fmpq_poly_degree(e1));
+    for (k = 0; k <= n; k++) {
+        fmpq_poly_get_coeff_fmpq(c[k].re->x, e0, k);
+        fmpq_poly_get_coeff_fmpq(c[k].re->y, e1, k);
+    }
+    if (deg >= 0 && deg < n) sc = 0;
+    else if (deg == n) {
+        sc = rs_qdc_schur_stable(c, n, s->sqrt_d);
+        ar = rs_qdc_roots_inside(c, n, s->sqrt_d);
+        if ((sc == 1 && ar == 0) || (sc == 0 && ar == 1)) sc = -2;
+    }
+    rs_qdc_vec_clear(c, n + 1);
+    fmpq_poly_clear(e0);
+    fmpq_poly_clear(e1);
+    return sc;
+}
+
+#define QD_SAMPLE_POINTS 12
+#define QD_SAMPLE_TRIES 200
+
+/* the conditions against qd_point_stable at admissible rational points of
+ * the free parameters ("sample_check"; a disagreement: exit 3) */
+static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1,
+                           slong n, const qc_t *q, json_t *o, const rs_request_t *rq)
+{
+    /* numerators and denominators: both signs, 0, near 1, a large one */
+    static const slong num[] = {1, 1, 2, 1, 3, -1, 5, -1, 7, 0, 13, -2, 1, 9, 10, -3, 99, 3};
+    static const slong den[] = {2, 1, 1, 3, 2, 2, 1, 1, 10, 1, 10, 1, 7, 8, 1, 2, 100, 4};
+    const slong nc = (slong) (sizeof num / sizeof num[0]);
+    const rs_scheme_struct *s = v->s;
+    slong nfree = 0, j, k, nok = 0, ncp = 0, *fv = flint_malloc((size_t) (s->nvars + 1) * sizeof(slong));
+    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    json_t *chk = json_object(), *bad = NULL;
+    rs_error_t e2;
+    int r = RS_OK;
+    rs_error_init(e2);
+    for (k = 0; k < s->nvars; k++) {
+        pp[k] = pt + k;
+        if (k != s->lambda_var && k != s->sqrt_var
+            && (fmpz_mpoly_degree_si(p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(p1, k, s->zctx) > 0))
+            fv[nfree++] = k;
+    }
+    for (k = 0; k < run->c->nassume; k++) {
+        if (rs_condpoly_compile(cps + ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
+        ncp++;
+    }
+    {
+        /* the set values stand in the points: the assumptions on them are checked too */
+        const char *key;
+        json_t *val;
+        json_object_foreach(v->assigned, key, val) {
+            slong idx = rs_case_param_index(run->c, key);
+            if (idx >= 0 && idx < s->nvars && fmpq_set_str(pt + idx, json_string_value(val), 10) == 0)
+                fmpq_canonicalise(pt + idx);
+        }
+    }
+    for (j = 0; j < QD_SAMPLE_TRIES && nok < (nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL; j++) {
+        int says, st;
+        for (k = 0; k < nfree; k++) {
+            slong i = (j * (2 * k + 1) + j / nc + 5 * k) % nc;
+            fmpq_set_si(pt + fv[k], num[i], (ulong) den[i]);
+        }
+        if (!rs_run_point_admissible(cps, ncp, pp, s)) continue;
+        st = qd_point_stable(p0, p1, n, pp, s);
+        if (st == -1) continue;
+        if (st == -2) {
+            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): Schur-Cohn and the certified "
+                             "roots disagree at a sample point", rq->text);
+            break;
+        }
+        says = qc_hold(q, pp);
+        nok++;
+        if (st != says) {
+            bad = json_object();
+            for (k = 0; k < nfree; k++) json_object_set_new(bad, s->vars[fv[k]], rs_json_fmpq(pt + fv[k]));
+            rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
+        }
+    }
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
+                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
+                            "assumptions");
+    for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
+    free(cps);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    flint_free(fv);
+    rs_error_clear(e2);
+    return r;
+}
+
+/* the shared start: the variant (set values substituted), p = p0 + sqrt(d)
+ * p1, its lambda-coefficients a[0..n] (flint_free'd by qd_sym_clear) */
+typedef struct {
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    slong n;
+    fmpz_mpoly_t p0, p1;
+    fmpz_mpoly_struct *a;
+    int *sign;
+    qc_t q;
+} qd_sym_t;
+
+static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_variant_t *v)
+{
+    const rs_scheme_struct *s;
+    slong j;
+    int r = RS_OK;
+    S->v = v;
+    if (v == NULL) r = rs_run_default_variant(run, &S->v);
+    S->a = NULL;
+    S->sign = NULL;
+    if (r != RS_OK) return r;
+    s = S->s = S->v->s;
+    S->n = S->v->cp->degree;
+    S->q.n = 0; S->q.c0 = S->q.c1 = NULL; S->q.ne = NULL; S->q.s = s;
+    fmpz_mpoly_init(S->p0, s->zctx);
+    fmpz_mpoly_init(S->p1, s->zctx);
+    qd_split(S->p0, S->p1, S->v->cp->p, s);
+    S->a = flint_malloc((size_t) (S->n + 1) * sizeof(fmpz_mpoly_struct));
+    for (j = 0; j <= S->n; j++) {
+        fmpz_mpoly_init(S->a + j, s->zctx);
+        rs_charpoly_coeff(S->a + j, S->v->cp->p, j, s->lambda_var, s->zctx);
+    }
+    S->sign = rs_run_signs(run, s);
+    if (S->v->singular)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: the leading coefficient of p vanishes at "
+                            "the set values: the implicit step cannot be solved there", req->def->name);
+    if (S->n < 1)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: p has no root (degree 0 in lambda)",
+                            req->def->name);
+    return RS_OK;
+}
+
+static void qd_sym_clear(qd_sym_t *S, slong na)
+{
+    slong j;
+    if (S->a == NULL) return;
+    for (j = 0; j <= na; j++) fmpz_mpoly_clear(S->a + j, S->s->zctx);
+    flint_free(S->a);
+    flint_free(S->sign);
+    qc_clear(&S->q);
+    fmpz_mpoly_clear(S->p0, S->s->zctx);
+    fmpz_mpoly_clear(S->p1, S->s->zctx);
+}
+
+/* the verdict, the sample check, the report */
+static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, json_t *o, json_t *conds,
+                         json_t *parts, json_t *dropped, json_t *always, int never)
+{
+    int r;
+    rs_an_qd_json_p(o, S->p0, S->p1, run);
+    json_object_set_new(o, "degree", json_integer(S->n));
+    json_object_set_new(o, "conditions", conds);
+    json_object_set_new(o, "conditions_qd", parts);
+    json_object_set_new(o, "dropped", dropped);
+    json_object_set_new(o, "always_true", always);
+    json_object_set_new(o, "verdict", json_string(never ? "never stable" : S->q.n == 0 ? "stable under the assumptions"
+                                                  : "stable iff the conditions hold"));
+    r = qc_sample_check(run, S->v, S->p0, S->p1, S->n, &S->q, o, req->q);
+    if (r == RS_OK) rs_run_emit_exact(run, S->v, o);
+    else json_decref(o);
+    return r;
+}
+
+/* a row's content in Z[params] divided out (both parts of every entry) */
+static void qd_row_primitive(fmpz_mpoly_struct *b, slong m, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t g, h0, h1;
+    slong j;
+    fmpz_mpoly_init(g, s->zctx); fmpz_mpoly_init(h0, s->zctx); fmpz_mpoly_init(h1, s->zctx);
+    for (j = 0; j < m; j++) {
+        qd_split(h0, h1, b + j, s);
+        if (!fmpz_mpoly_gcd(g, g, h0, s->zctx) || !fmpz_mpoly_gcd(g, g, h1, s->zctx)) {
+            fmpz_mpoly_one(g, s->zctx);
+            break;
+        }
+    }
+    if (!fmpz_mpoly_is_zero(g, s->zctx) && !fmpz_mpoly_is_one(g, s->zctx))
+        for (j = 0; j < m; j++) fmpz_mpoly_divexact(b + j, b + j, g, s->zctx);
+    fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(h0, s->zctx); fmpz_mpoly_clear(h1, s->zctx);
+}
+
+static int too_big(const fmpz_mpoly_t f, rs_run_t *run, const rs_scheme_struct *s, const char *what)
+{
+    if (fmpz_mpoly_length(f, s->zctx) <= RS_CHARPOLY_MAX_TERMS) return RS_OK;
+    return rs_error_set(run->err, RS_ERR_LIMIT, "%s over Q(sqrt d): a condition has over %ld terms (limit)", what,
+                        (long) RS_CHARPOLY_MAX_TERMS);
+}
+
+/* the Schur-Cohn table of S's p: its rows, the conditions delta_k > 0 into
+ * S->q and the lists; *na: the last index of S->a still initialised */
+static int qd_jury_table(qd_sym_t *S, rs_run_t *run, json_t *rows, json_t *conds, json_t *parts, json_t *dropped,
+                         json_t *always, int *never, slong *na)
+{
+    const rs_scheme_struct *s = S->s;
+    fmpz_mpoly_t t, u, delta;
+    slong k, j;
+    int r = RS_OK;
+    *na = S->n;
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx); fmpz_mpoly_init(delta, s->zctx);
+    for (k = S->n; k >= 1 && r == RS_OK; k--) {
+        json_t *row = json_array();
+        char origin[32];
+        fmpz_mpoly_struct *b;
+        for (j = 0; j <= k; j++) json_array_append_new(row, qd_json(S->a + j, s));
+        json_array_append_new(rows, row);
+        mul_red(t, S->a + k, S->a + k, s);
+        mul_red(u, S->a + 0, S->a + 0, s);
+        fmpz_mpoly_sub(delta, t, u, s->zctx);
+        r = too_big(delta, run, s, "jury");
+        if (r == RS_OK) r = rs_budget_check(run->err, "the symbolic Schur-Cohn table over Q(sqrt d)");
+        if (r != RS_OK) break;
+        snprintf(origin, sizeof origin, "delta_%ld", (long) k);
+        j = qc_add(&S->q, conds, parts, dropped, delta, origin, S->sign);
+        if (j == 1) json_array_append_new(always, json_string(origin));
+        if (j == -1) *never = 1;
+        if (fmpz_mpoly_is_zero(delta, s->zctx)) break;   /* the recursion stops there */
+        /* p_(k-1): coefficient j = a_k a_(j+1) - a_0 a_(k-1-j), j = 0..k-1 */
+        b = flint_malloc((size_t) k * sizeof(fmpz_mpoly_struct));
+        for (j = 0; j < k; j++) {
+            fmpz_mpoly_init(b + j, s->zctx);
+            mul_red(t, S->a + k, S->a + j + 1, s);
+            mul_red(u, S->a + 0, S->a + k - 1 - j, s);
+            fmpz_mpoly_sub(b + j, t, u, s->zctx);
+        }
+        qd_row_primitive(b, k, s);
+        for (j = 0; j <= k; j++) fmpz_mpoly_clear(S->a + j, s->zctx);
+        for (j = 0; j < k; j++) S->a[j] = b[j];
+        flint_free(b);
+        *na = k - 1;
+    }
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
+    return r;
+}
+
+static const char qd_jury_note[] =
+    "Schur-Cohn reduction over Q(sqrt d)[params] without divisions, p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/"
+    "lambda with sqrt(d)^2 = d after every product, each row divided by its content in Z[params]: all |lambda| "
+    "< 1 iff every delta_k = lead^2 - const^2 > 0 (Schur 1917; sqrt(d) is real; strict inequalities, exact for "
+    "every value; c0 + sqrt(d)*(c1) > 0 is decided exactly by comparing c0^2 with d*c1^2)";
+
+int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req)
+{
+    qd_sym_t S;
+    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    slong na = -1;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    if (r == RS_OK) r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+    else na = S.a != NULL ? S.n : -1;
+    if (r != RS_OK) {
+        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        qd_sym_clear(&S, na);
+        return r;
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("jury"));
+    json_object_set_new(o, "method", json_string("Schur-Cohn (Jury) table over Q(sqrt d), symbolic"));
+    json_object_set_new(o, "symbolic", json_true());
+    json_object_set_new(o, "rows", rows);
+    json_object_set_new(o, "note", json_string(qd_jury_note));
+    r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    qd_sym_clear(&S, na);
+    return r;
+}
+
+/* det of the k x k matrix m[rows][cols] (row-major, stride w) by cofactor
+ * expansion along the first row, reduced by sqrt(d)^2 = d; k <= 8 */
+static void qd_det(fmpz_mpoly_t d, const fmpz_mpoly_struct *m, slong w, const slong *rows, const slong *cols,
+                   slong k, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t minor, t;
+    slong sub[8], c, j, i;
+    if (k == 1) {
+        fmpz_mpoly_set(d, m + rows[0] * w + cols[0], s->zctx);
+        return;
+    }
+    fmpz_mpoly_init(minor, s->zctx);
+    fmpz_mpoly_init(t, s->zctx);
+    fmpz_mpoly_zero(d, s->zctx);
+    for (c = 0; c < k; c++) {
+        const fmpz_mpoly_struct *e = m + rows[0] * w + cols[c];
+        if (fmpz_mpoly_is_zero(e, s->zctx)) continue;
+        for (j = 0, i = 0; j < k; j++)
+            if (j != c) sub[i++] = cols[j];
+        qd_det(minor, m, w, rows + 1, sub, k - 1, s);
+        mul_red(t, e, minor, s);
+        if (c & 1) fmpz_mpoly_sub(d, d, t, s->zctx);
+        else fmpz_mpoly_add(d, d, t, s->zctx);
+    }
+    fmpz_mpoly_clear(minor, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
+}
+
+int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
+{
+    qd_sym_t S;
+    const rs_scheme_struct *s;
+    json_t *o, *minors, *conds, *parts, *dropped, *always;
+    fmpz_mpoly_t qz, zp, zm, t, u, dk;
+    fmpz_mpoly_struct *b, *H;
+    slong n, k, j, idx[8];
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    if (r == RS_OK && S.n > 8)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "hurwitz over Q(sqrt d): degree over 8 in lambda "
+                         "(the minors are expanded up to degree 8; jury answers the same question)%s", "");
+    if (r != RS_OK) {
+        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
+        return r;
+    }
+    s = S.s;
+    n = S.n;
+    fmpz_mpoly_init(qz, s->zctx); fmpz_mpoly_init(zp, s->zctx); fmpz_mpoly_init(zm, s->zctx);
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx); fmpz_mpoly_init(dk, s->zctx);
+    /* q(z) = sum_j a_j (z + 1)^j (z - 1)^(n - j), z in lambda's place */
+    for (j = 0; j <= n; j++) {
+        fmpz_mpoly_gen(zp, s->lambda_var, s->zctx);
+        fmpz_mpoly_add_si(zp, zp, 1, s->zctx);
+        fmpz_mpoly_gen(zm, s->lambda_var, s->zctx);
+        fmpz_mpoly_sub_si(zm, zm, 1, s->zctx);
+        fmpz_mpoly_pow_ui(t, zp, (ulong) j, s->zctx);
+        fmpz_mpoly_pow_ui(u, zm, (ulong) (n - j), s->zctx);
+        fmpz_mpoly_mul(t, t, u, s->zctx);
+        fmpz_mpoly_mul(t, t, S.a + j, s->zctx);
+        fmpz_mpoly_add(qz, qz, t, s->zctx);
+    }
+    b = flint_malloc((size_t) (n + 1) * sizeof(fmpz_mpoly_struct));
+    for (j = 0; j <= n; j++) {
+        fmpz_mpoly_init(b + j, s->zctx);
+        rs_charpoly_coeff(b + j, qz, j, s->lambda_var, s->zctx);
+    }
+    /* Hurwitz matrix H_(r,c) = a_(2c - r + 1) (0-based) with a_i = b_(n - i) */
+    H = flint_malloc((size_t) (n * n) * sizeof(fmpz_mpoly_struct));
+    for (j = 0; j < n * n; j++) {
+        slong i = 2 * (j % n) - j / n + 1;
+        fmpz_mpoly_init(H + j, s->zctx);
+        if (i >= 0 && i <= n) fmpz_mpoly_set(H + j, b + n - i, s->zctx);
+    }
+    for (j = 0; j < n; j++) idx[j] = j;
+    o = json_object();
+    minors = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
+    for (k = 1; k <= n && r == RS_OK; k++) {
+        char origin[40];
+        int a;
+        qd_det(dk, H, n, idx, idx, k, s);
+        json_array_append_new(minors, qd_json(dk, s));
+        r = rs_budget_check(run->err, "the Hurwitz minors over Q(sqrt d)");
+        if (r != RS_OK) break;
+        /* b_n^k D_k > 0; the last as b_n b_0 > 0 (D_n = b_0 D_(n-1)) */
+        if (k == n) {
+            mul_red(t, b + n, b + 0, s);
+            snprintf(origin, sizeof origin, "b_%ld*b_0", (long) n);
+        } else if (k & 1) {
+            mul_red(t, b + n, dk, s);
+            snprintf(origin, sizeof origin, "b_%ld*D_%ld", (long) n, (long) k);
+        } else {
+            fmpz_mpoly_set(t, dk, s->zctx);
+            snprintf(origin, sizeof origin, "D_%ld", (long) k);
+        }
+        r = too_big(t, run, s, "hurwitz");
+        if (r != RS_OK) break;
+        a = qc_add(&S.q, conds, parts, dropped, t, origin, S.sign);
+        if (a == 1) json_array_append_new(always, json_string(origin));
+        if (a == -1) never = 1;
+    }
+    json_object_set_new(o, "analysis", json_string("hurwitz"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "method", json_string(
+        "Hurwitz minors over Q(sqrt d) of q(z) = (z - 1)^n p((z + 1)/(z - 1)) = b_n z^n + ... + b_0 (cofactor "
+        "expansion, sqrt(d)^2 = d after every product): every |lambda| < 1 iff every root of q has Re z < 0 iff "
+        "b_n^k D_k > 0 for k = 1..n (Hurwitz; D_k(-q) = (-1)^k D_k(q)), the last as b_n b_0 > 0 since D_n = b_0 "
+        "D_(n-1)"));
+    json_object_set_new(o, "minors", minors);
+    json_object_set_new(o, "nonzero", json_array());
+    for (k = 1; k >= -1; k -= 2) {
+        fmpz_t x;
+        fmpz_init_set_si(x, k);
+        fmpz_mpoly_evaluate_one_fmpz(t, S.v->cp->p, s->lambda_var, x, s->zctx);
+        json_object_set_new(o, k == 1 ? "p_at_1" : "p_at_minus_1", qd_json(t, s));
+        fmpz_clear(x);
+    }
+    for (j = 0; j < n * n; j++) fmpz_mpoly_clear(H + j, s->zctx);
+    for (j = 0; j <= n; j++) fmpz_mpoly_clear(b + j, s->zctx);
+    flint_free(H);
+    flint_free(b);
+    fmpz_mpoly_clear(qz, s->zctx); fmpz_mpoly_clear(zp, s->zctx); fmpz_mpoly_clear(zm, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx); fmpz_mpoly_clear(dk, s->zctx);
+    if (r == RS_OK) r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    else {
+        json_decref(o); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+    }
+    qd_sym_clear(&S, n);
+    return r;
+}
+
+/* ---- region NAME over Q(sqrt d) ---------------------------------------------- */
+
+/* f (only variable tv) as a polynomial in t */
+static void qd_upoly(fmpz_poly_t out, const fmpz_mpoly_t f, slong tv, const rs_scheme_struct *s)
+{
+    slong i, *ex = flint_malloc((size_t) s->nvars * sizeof(slong));
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_poly_zero(out);
+    for (i = 0; i < fmpz_mpoly_length(f, s->zctx); i++) {
+        fmpz_mpoly_get_term_exp_si(ex, f, i, s->zctx);
+        fmpz_mpoly_get_term_coeff_fmpz(c, f, i, s->zctx);
+        fmpz_poly_set_coeff_fmpz(out, tv >= 0 ? ex[tv] : 0, c);
+    }
+    fmpz_clear(c);
+    flint_free(ex);
+}
+
+/* the norm u0^2 - d u1^2 of u0 + sqrt(d) u1: every real root of u0 + sqrt(d) u1 is one of its roots */
+static void qd_unorm(fmpz_poly_t n, const fmpz_poly_t u0, const fmpz_poly_t u1, slong d)
+{
+    fmpz_poly_t t;
+    fmpz_poly_init(t);
+    fmpz_poly_mul(n, u0, u0);
+    fmpz_poly_mul(t, u1, u1);
+    fmpz_poly_scalar_mul_si(t, t, d);
+    fmpz_poly_sub(n, n, t);
+    fmpz_poly_clear(t);
+}
+
+/* the exact sign of u0(t0) + sqrt(d) u1(t0): the signs of u0, u1 at t0 in
+ * Q(t0) = Q[t]/(minpoly) and, where they differ, the sign of the norm */
+static int qd_alg_sign(const fmpz_poly_t u0, const fmpz_poly_t u1, slong d, rs_alg_t *t0)
+{
+    fmpq_poly_t m, x;
+    fmpz_poly_t nz;
+    int s0, s1, sn;
+    fmpq_poly_init(m); fmpq_poly_init(x); fmpz_poly_init(nz);
+    fmpq_poly_set_fmpz_poly(m, t0->minpoly);
+    fmpq_poly_set_fmpz_poly(x, u0); fmpq_poly_rem(x, x, m); s0 = rs_alg_sign(x, t0);
+    fmpq_poly_set_fmpz_poly(x, u1); fmpq_poly_rem(x, x, m); s1 = rs_alg_sign(x, t0);
+    qd_unorm(nz, u0, u1, d);
+    fmpq_poly_set_fmpz_poly(x, nz); fmpq_poly_rem(x, x, m); sn = rs_alg_sign(x, t0);
+    fmpq_poly_clear(m); fmpq_poly_clear(x); fmpz_poly_clear(nz);
+    if (s1 == 0 || s0 == s1) return s0 != 0 ? s0 : s1;
+    if (s0 == 0) return s1;
+    return sn > 0 ? s0 : sn < 0 ? s1 : 0;   /* sn = 0: u0 = -sqrt(d) u1 exactly */
+}
+
+/* a cell of the line: a critical value (pt) or the open interval after it */
+typedef struct {
+    const char *status;
+    int pt;
+    rs_alg_t *lo, *hi;   /* NULL: infinite */
+} qd_cell_t;
+
+static json_t *qd_end_json(rs_alg_t *a, const char *var)
+{
+    return a == NULL ? json_null() : rs_alg_json(a, var);
+}
+
+static json_t *qd_end_approx(rs_alg_t *a)
+{
+    return a == NULL ? json_null() : json_real(rs_alg_double(a));
+}
+
+/* t inside the domain bound b */
+static int qd_in_bound(const rs_bound_t *b, const fmpq_t t)
+{
+    int lo = !b->has_lo || fmpq_cmp(t, b->lo) > 0 || (b->lo_closed && fmpq_equal(t, b->lo));
+    int hi = !b->has_hi || fmpq_cmp(t, b->hi) < 0 || (b->hi_closed && fmpq_equal(t, b->hi));
+    return lo && hi;
+}
+
+/* e := the rational q as a critical value */
+static void qd_alg_set_fmpq(rs_alg_t *e, const fmpq_t q)
+{
+    fmpz_t c;
+    fmpz_init(c);
+    fmpz_neg(c, fmpq_numref(q));
+    fmpz_poly_zero(e->minpoly);
+    fmpz_poly_set_coeff_fmpz(e->minpoly, 1, fmpq_denref(q));
+    fmpz_poly_set_coeff_fmpz(e->minpoly, 0, c);
+    e->rational = 1;
+    fmpq_set(e->q, q);
+    e->prec = 0;
+    rs_alg_refine(e, 128);
+    fmpz_clear(c);
+}
+
+/* the critical value a inside the domain b (its ends by their closedness) */
+static int qd_alg_in_bound(const rs_bound_t *b, rs_alg_t *a)
+{
+    rs_alg_t e;
+    int in = 1;
+    if (a->rational) return qd_in_bound(b, a->q);
+    rs_alg_init(&e);
+    if (b->has_lo) {
+        qd_alg_set_fmpq(&e, b->lo);
+        in = rs_alg_cmp(a, &e) > 0;
+    }
+    if (b->has_hi && in) {
+        qd_alg_set_fmpq(&e, b->hi);
+        in = rs_alg_cmp(a, &e) < 0;
+    }
+    rs_alg_clear(&e);
+    return in;
+}
+
+/* The exact status of p at tv = t0 (rational or not) over Q(t0, sqrt d) =
+ * Q(gamma), gamma a primitive element (rs_alg_primitive), by the real
+ * route of region (rs_alg_status_coeffs: Schur-Cohn and the circle's roots
+ * in Q(gamma)); 0 when undecided there */
+static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_t *t0)
+{
+    const rs_scheme_struct *s = S->s;
+    rs_alg_t sq, g;
+    fmpq_poly_t A, B, m, x, y;
+    fmpq_poly_struct *c;
+    fmpz_poly_t u;
+    fmpz_mpoly_t a;
+    slong j, n = S->n;
+    int decided = 0, h;
+    rs_alg_init(&sq); rs_alg_init(&g);
+    fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(m); fmpq_poly_init(x); fmpq_poly_init(y);
+    fmpz_poly_init(u);
+    fmpz_mpoly_init(a, s->zctx);
+    /* sqrt(d): the positive root of t^2 - d */
+    fmpz_poly_set_coeff_si(sq.minpoly, 2, 1);
+    fmpz_poly_set_coeff_si(sq.minpoly, 0, -s->sqrt_d);
+    sq.idx = 1;
+    rs_alg_refine(&sq, 128);
+    c = flint_malloc((size_t) (n + 1) * sizeof(fmpq_poly_struct));
+    for (j = 0; j <= n; j++) fmpq_poly_init(c + j);
+    if (rs_alg_primitive(&g, A, B, t0, &sq)) {
+        fmpq_poly_set_fmpz_poly(m, g.minpoly);
+        for (j = 0; j <= n; j++)
+            for (h = 0; h < 2; h++) {
+                /* c_j += (p_h's lambda^j coefficient)(A(gamma)) * B(gamma)^h */
+                rs_charpoly_coeff(a, h ? S->p1 : S->p0, j, s->lambda_var, s->zctx);
+                qd_upoly(u, a, tv, s);
+                fmpq_poly_set_fmpz_poly(x, u);
+                fmpq_poly_compose(y, x, A);
+                if (h) fmpq_poly_mul(y, y, B);
+                fmpq_poly_rem(y, y, m);
+                fmpq_poly_add(c + j, c + j, y);
+            }
+        fmpq_poly_rem(c + n, c + n, m);
+        decided = fmpq_poly_is_zero(c + n) ? (*st = RS_STATUS_SINGULAR, 1) : rs_alg_status_coeffs(st, c, n, &g, s);
+    }
+    for (j = 0; j <= n; j++) fmpq_poly_clear(c + j);
+    flint_free(c);
+    rs_alg_clear(&sq); rs_alg_clear(&g);
+    fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(m); fmpq_poly_clear(x); fmpq_poly_clear(y);
+    fmpz_poly_clear(u);
+    fmpz_mpoly_clear(a, s->zctx);
+    return decided;
+}
+
+/* the status at the rational t: the exact point verdict over Q(sqrt d)
+ * (Schur-Cohn and the certified roots), the conditions and the route over
+ * Q(sqrt d) = Q(gamma) of qd_exact_status, which must agree (*bad) */
+static const char *qd_status_at(int *bad, qd_sym_t *S, fmpq **pp, slong tv, const fmpq_t t)
+{
+    rs_alg_t e;
+    rs_status_t ex = RS_STATUS_UNSTABLE;
+    int st, says, decided;
+    fmpq_set(pp[tv], t);
+    st = qd_point_stable(S->p0, S->p1, S->n, pp, S->s);
+    says = qc_hold(&S->q, pp);
+    rs_alg_init(&e);
+    qd_alg_set_fmpq(&e, t);
+    decided = qd_exact_status(&ex, S, tv, &e);
+    rs_alg_clear(&e);
+    *bad = st == -2 || (st >= 0 && st != says) || (decided && (ex == RS_STATUS_STABLE) != (st == 1));
+    if (st == -1) return "singular";   /* p vanishes identically there */
+    if (!decided) return st == 1 ? "stable" : "not stable";
+    return rs_status_name(ex);
+}
+
+/* The line of tv cut at the real roots of the conditions' norms, of the
+ * leading coefficient's norm and at the domain's ends; each open cell
+ * decided at a rational sample twice (conditions and point verdict), each
+ * critical value by the conditions' exact signs in Q(t0, sqrt d) (and twice
+ * when rational); equal neighbours merged into the intervals */
+/* kind >= 0 (a claim: 0 stable, 1 bounded, 2 unstable, on the domain dom):
+ * *verdict 1 every cell satisfies it, -1 one does not (*counter its point:
+ * a rational sample, or an algebraic critical value), 0 undecided ("not
+ * stable" cells); the intervals go to o's "region" */
+static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_request_t *rq, slong tv,
+                           const fmpz_mpoly_t lead, const rs_bound_t *dom, int kind, int *verdict, json_t **counter)
+{
+    const rs_scheme_struct *s = S->s;
+    const char *name = run->c->params[tv].name;
+    rs_bound_t *bd = flint_malloc((size_t) (run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_alg_t *crit = NULL;
+    qd_cell_t *cell;
+    fmpz_poly_t u0, u1, nz, l0, l1;
+    fmpz_mpoly_t h0, h1;
+    fmpq *pt = _fmpq_vec_init(s->nvars);
+    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    fmpq_t t;
+    fmpq *samp;
+    json_t *ivs = json_array();
+    slong ncrit = 0, m, i, k, ncell = 0, checked = 0;
+    int r = RS_OK, bad = 0;
+    fmpz_poly_init(u0); fmpz_poly_init(u1); fmpz_poly_init(nz); fmpz_poly_init(l0); fmpz_poly_init(l1);
+    fmpz_mpoly_init(h0, s->zctx); fmpz_mpoly_init(h1, s->zctx);
+    fmpq_init(t);
+    for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
+    rs_bounds_init(bd, run->c->nparams);
+    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(bd, &run->c->assume[k], run->c, run->err);
+    rs_error_init(run->err);
+    if (dom != NULL) {   /* the claim's set (with the assumptions already in it) */
+        bd[tv].has_lo = dom->has_lo; bd[tv].has_hi = dom->has_hi;
+        bd[tv].lo_closed = dom->lo_closed; bd[tv].hi_closed = dom->hi_closed;
+        fmpq_set(bd[tv].lo, dom->lo); fmpq_set(bd[tv].hi, dom->hi);
+    }
+    if (verdict != NULL) *verdict = 1;
+    if (counter != NULL) *counter = NULL;
+    /* the critical polynomials */
+    for (i = 0; i < S->q.n; i++) {
+        qd_upoly(u0, S->q.c0 + i, tv, s);
+        qd_upoly(u1, S->q.c1 + i, tv, s);
+        qd_unorm(nz, u0, u1, s->sqrt_d);
+        rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    }
+    qd_split(h0, h1, lead, s);
+    qd_upoly(l0, h0, tv, s);
+    qd_upoly(l1, h1, tv, s);
+    qd_unorm(nz, l0, l1, s->sqrt_d);
+    rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    for (k = 0; k < 2; k++) {
+        int has = k == 0 ? bd[tv].has_lo : bd[tv].has_hi;
+        const fmpq *e = k == 0 ? bd[tv].lo : bd[tv].hi;
+        if (!has) continue;
+        fmpz_poly_zero(nz);   /* den*t - num */
+        fmpz_poly_set_coeff_fmpz(nz, 0, fmpq_numref(e));
+        fmpz_poly_neg(nz, nz);
+        fmpz_poly_set_coeff_fmpz(nz, 1, fmpq_denref(e));
+        rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    }
+    rs_alg_sort(crit, ncrit);
+    for (i = m = 0; i < ncrit; i++) {   /* each value once */
+        if (m > 0 && rs_alg_cmp(crit + m - 1, crit + i) == 0) { rs_alg_clear(crit + i); continue; }
+        if (m != i) crit[m] = crit[i];
+        m++;
+    }
+    ncrit = m;
+    cell = flint_malloc((size_t) (2 * ncrit + 1) * sizeof(qd_cell_t));
+    samp = _fmpq_vec_init(2 * ncrit + 1);
+    for (i = 0; i <= ncrit && r == RS_OK && !bad; i++) {
+        rs_alg_t *lo = i > 0 ? crit + i - 1 : NULL, *hi = i < ncrit ? crit + i : NULL;
+        r = rs_budget_check(run->err, "region over Q(sqrt d)");
+        if (r != RS_OK) break;
+        rs_alg_between(t, lo, hi);
+        if (qd_in_bound(bd + tv, t)) {
+            cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
+            fmpq_set(samp + ncell, t);
+            cell[ncell++].status = qd_status_at(&bad, S, pp, tv, t);
+            checked++;
+        }
+        if (hi == NULL || !qd_alg_in_bound(bd + tv, hi)) continue;
+        cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
+        if (hi->rational) fmpq_set(samp + ncell, hi->q);
+        if (hi->rational) {
+            cell[ncell++].status = qd_status_at(&bad, S, pp, tv, hi->q);
+            checked++;
+        } else {
+            /* the conditions' exact signs at t0 against the route over Q(t0, sqrt d) */
+            rs_status_t ex;
+            int ok = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
+            for (k = 0; k < S->q.n; k++) {
+                int sg;
+                qd_upoly(u0, S->q.c0 + k, tv, s);
+                qd_upoly(u1, S->q.c1 + k, tv, s);
+                sg = qd_alg_sign(u0, u1, s->sqrt_d, hi);
+                if (sg == 0) zero = 1;
+                if (S->q.ne[k] ? sg == 0 : sg <= 0) ok = 0;
+            }
+            if (decided && (ex == RS_STATUS_STABLE) != ok) bad = 1;
+            /* undecided there: every delta_k != 0 leaves no root on the circle (a
+             * circle root of p is one of p* and of every row), so not stable is unstable */
+            cell[ncell++].status = decided ? rs_status_name(ex) : ok ? "stable"
+                                 : qd_alg_sign(l0, l1, s->sqrt_d, hi) == 0 ? "singular" : zero ? "not stable"
+                                 : "unstable";
+            checked += decided;
+        }
+    }
+    if (r == RS_OK && bad)
+        r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "region over Q(sqrt d): the conditions, "
+                         "Schur-Cohn and the certified roots disagree at a sample (internal inconsistency)%s", "");
+    for (i = 0; r == RS_OK && i < ncell; ) {
+        /* merge the run of cells of one status */
+        slong j = i;
+        json_t *iv;
+        while (j + 1 < ncell && strcmp(cell[j + 1].status, cell[i].status) == 0) j++;
+        iv = json_object();
+        json_object_set_new(iv, "lo", qd_end_json(cell[i].lo, name));
+        json_object_set_new(iv, "hi", qd_end_json(cell[j].hi, name));
+        json_object_set_new(iv, "lo_closed", json_boolean(cell[i].pt));
+        json_object_set_new(iv, "hi_closed", json_boolean(cell[j].pt));
+        json_object_set_new(iv, "status", json_string(cell[i].status));
+        json_object_set_new(iv, "lo_approx", qd_end_approx(cell[i].lo));
+        json_object_set_new(iv, "hi_approx", qd_end_approx(cell[j].hi));
+        json_array_append_new(ivs, iv);
+        i = j + 1;
+    }
+    for (i = 0; r == RS_OK && kind >= 0 && i < ncell && *verdict != -1; i++) {
+        /* the claim, cell by cell: the first bad one is the counterexample */
+        const char *st = cell[i].status;
+        int good = kind == 0 ? strcmp(st, "stable") == 0
+                 : kind == 1 ? strcmp(st, "stable") == 0 || strcmp(st, "marginal") == 0 : strcmp(st, "unstable") == 0;
+        if (good) continue;
+        if (strcmp(st, "not stable") == 0 && kind != 0) { *verdict = 0; continue; }
+        *verdict = -1;
+        *counter = json_object();
+        if (cell[i].pt && !cell[i].hi->rational) {
+            /* an algebraic point: its certified digits, and exactly which root of which polynomial */
+            json_t *aj = rs_alg_json(cell[i].hi, name);
+            char ex[400];
+            snprintf(ex, sizeof ex, "root %ld (from below, 0-based) of %s", (long) cell[i].hi->idx,
+                     json_string_value(json_object_get(aj, "minpoly")));
+            json_object_set_new(*counter, name, json_incref(json_object_get(aj, "approx")));
+            json_object_set_new(*counter, "exact", json_string(ex));
+            json_decref(aj);
+        } else {
+            json_object_set_new(*counter, name, rs_json_fmpq(samp + i));
+        }
+        json_object_set_new(*counter, "status", json_string(st));
+    }
+    if (r == RS_OK && kind >= 0) {
+        json_object_set_new(o, "region", ivs);
+        json_object_set_new(o, "cross_checked_samples", json_integer(checked));
+    } else if (r == RS_OK) {
+        json_object_set_new(o, "symbolic", json_false());
+        json_object_set_new(o, "intervals", ivs);
+        json_object_set_new(o, "undecided_points", json_array());
+        json_object_set_new(o, "critical_values", json_integer(ncrit));
+        json_object_set_new(o, "cross_checked_samples", json_integer(checked));
+    } else {
+        json_decref(ivs);
+    }
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+    free(crit);
+    flint_free(cell);
+    _fmpq_vec_clear(samp, 2 * ncrit + 1);
+    rs_bounds_clear(bd, run->c->nparams);
+    flint_free(bd);
+    _fmpq_vec_clear(pt, s->nvars);
+    flint_free(pp);
+    fmpq_clear(t);
+    fmpz_poly_clear(u0); fmpz_poly_clear(u1); fmpz_poly_clear(nz); fmpz_poly_clear(l0); fmpz_poly_clear(l1);
+    fmpz_mpoly_clear(h0, s->zctx); fmpz_mpoly_clear(h1, s->zctx);
+    return r;
+}
+
+int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
+{
+    slong tv = req->u.region.param, na = -1, k;
+    const char *keep[1];
+    rs_assign_t *as = NULL;
+    slong nas = 0;
+    rs_variant_t *v;
+    qd_sym_t S;
+    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    fmpz_mpoly_t lead;
+    int r, never = 0, others = 0;
+    if (req->u.region.twod || req->u.region.forall) {
+        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected region NAME [at P=V, ...]: %s is "
+                            "not available over Q(sqrt 2) (rk sdirk2)", req->u.region.twod ? "region N1, N2"
+                            : "region NAME for all");
+    }
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
+    r = rs_run_variant(&v, run, as, nas);
+    rs_assign_free(as, nas);
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
+    else S.a = NULL;
+    if (r == RS_OK) {
+        fmpz_mpoly_init(lead, S.s->zctx);
+        fmpz_mpoly_set(lead, S.a + S.n, S.s->zctx);
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    if (r != RS_OK) {
+        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        if (S.a != NULL) fmpz_mpoly_clear(lead, S.s->zctx);
+        qd_sym_clear(&S, na);
+        return r;
+    }
+    json_decref(rows);
+    for (k = 0; k < S.s->lambda_var; k++)
+        if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
+            others = 1;
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("region"));
+    json_object_set_new(o, "param", json_string(keep[0]));
+    if (others) {
+        /* other parameters free: the conditions on all of them (jury's) */
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "note", json_string(qd_jury_note));
+        r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    } else {
+        r = qd_region_cells(o, &S, run, req->q, tv, lead, NULL, -1, NULL, NULL);
+        if (r == RS_OK) {
+            rs_an_qd_json_p(o, S.p0, S.p1, run);
+            json_object_set_new(o, "method", json_string(
+                "cells cut at the real roots of the norms c0^2 - d c1^2 of the Schur-Cohn conditions c0 + sqrt(d) c1 "
+                "> 0 over Q(sqrt d) (jury's) and of the leading coefficient, and at the assumptions' ends; each "
+                "rational sample decided three ways: the conditions' exact signs, Schur-Cohn over Q(sqrt d) with the "
+                "certified roots, and region's exact route over Q(sqrt d) = Q(gamma) (stable, marginal, unstable); "
+                "each irrational critical value t0 by the conditions' exact signs in Q(t0, sqrt d) (signs of c0, c1 "
+                "in Q[t]/(minpoly), then of the norm) and by the exact route over Q(t0, sqrt d) = Q(gamma) (a "
+                "primitive element); all must agree, else exit 3"));
+            json_object_set_new(o, "dropped", dropped);
+            json_decref(conds); json_decref(parts); json_decref(always);
+            rs_run_emit_exact(run, S.v, o);
+        } else {
+            json_decref(o); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+        }
+    }
+    fmpz_mpoly_clear(lead, S.s->zctx);
+    qd_sym_clear(&S, na);
+    return r;
+}
+
+int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                        slong tv, const rs_bound_t *dom)
+{
+    qd_sym_t S;
+    json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    fmpz_mpoly_t lead;
+    slong na = -1, k;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    *verdict = 0;
+    *counter = NULL;
+    if (r == RS_OK) {
+        fmpz_mpoly_init(lead, S.s->zctx);
+        fmpz_mpoly_set(lead, S.a + S.n, S.s->zctx);
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+        for (k = 0; r == RS_OK && k < S.s->lambda_var; k++)
+            if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
+                r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every parameter but %s set: a "
+                                 "claim over Q(sqrt 2) is decided on the exact region of one parameter",
+                                 run->c->params[tv].name);
+        if (r == RS_OK) r = qd_region_cells(o, &S, run, req->q, tv, lead, dom, kind, verdict, counter);
+        fmpz_mpoly_clear(lead, S.s->zctx);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+    qd_sym_clear(&S, na);
+    return r;
+}
