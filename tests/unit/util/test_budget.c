@@ -5,6 +5,8 @@
 #include <setjmp.h>
 #include <string.h>
 #include <time.h>
+#include <malloc.h>
+#include <pthread.h>
 #include <cmocka.h>
 #include <flint/fmpz_mpoly.h>
 #include "recstab/budget.h"
@@ -270,12 +272,61 @@ static void test_region_contradictory(void **state)
     assert_string_equal(err->msg, "the assumptions are contradictory: no value of 'w' satisfies them");
 }
 
+/* budget.c's cache of small freed blocks: a reused block holds its request
+ * (usable size >= the request, every byte written), flint_calloc's reused
+ * block is zero although it was freed dirty, the cached blocks stay counted
+ * (the count never drops below what is held), and freeing everything brings
+ * the count back to within the cache's bound (16 classes x 64 blocks x 248
+ * bytes < 1 MB per thread; a thread's cache is emptied when it exits). */
+#define NSMALL 4000
+static void small_blocks_round(void)
+{
+    static unsigned char *b[NSMALL];
+    slong i, j, held = 0, before = rs_budget_memory_used();
+    for (i = 0; i < NSMALL; i++) {
+        size_t n = (size_t) (i * 37) % 300;
+        b[i] = (i % 2) ? flint_malloc(n + 1) : flint_calloc(n + 1, 1);
+        assert_non_null(b[i]);
+        assert_true(malloc_usable_size(b[i]) >= n + 1);
+        for (j = 0; j <= (slong) n; j++) {
+            if (i % 2 == 0) assert_int_equal(b[i][j], 0);
+            b[i][j] = 0xa5;
+        }
+        held += (slong) n + 1;
+    }
+    assert_true(rs_budget_memory_used() - before >= held - (1 << 20));
+    for (i = 0; i < NSMALL; i++) flint_free(b[i]);
+}
+
+static void *small_blocks_thread(void *arg)
+{
+    (void) arg;
+    small_blocks_round();
+    return NULL;
+}
+
+static void test_small_block_cache(void **state)
+{
+    slong before;
+    pthread_t th;
+    int k;
+    (void) state;
+    rs_budget_start(0, 0, 0);
+    before = rs_budget_memory_used();
+    for (k = 0; k < 3; k++) small_blocks_round();   /* the later rounds reuse cached blocks */
+    assert_true(rs_budget_memory_used() - before < (1 << 20));
+    assert_int_equal(pthread_create(&th, NULL, small_blocks_thread, NULL), 0);
+    assert_int_equal(pthread_join(th, NULL), 0);
+    assert_true(rs_budget_memory_used() - before < (1 << 20));
+    rs_budget_stop();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
         cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_routh_stop), cmocka_unit_test(test_region_single_value),
-        cmocka_unit_test(test_region_contradictory),
+        cmocka_unit_test(test_region_contradictory), cmocka_unit_test(test_small_block_cache),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
