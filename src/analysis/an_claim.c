@@ -6,6 +6,7 @@
 #include <string.h>
 #include <math.h>
 #include <flint/fmpz_poly_factor.h>
+#include <flint/fmpz_vec.h>
 #include <fmpq_vec.h>
 #include <mpfr.h>
 #include <acb.h>
