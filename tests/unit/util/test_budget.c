@@ -321,12 +321,72 @@ static void test_small_block_cache(void **state)
     rs_budget_stop();
 }
 
+/* GMP's blocks of up to 16 bytes come from budget.c's reserved region (16 MB,
+ * then malloc): many small mpz (past the region's 2^20 blocks, so both
+ * sources), grown past 16 bytes (realloc out of the region) and shrunk
+ * again, each value checked against the same arithmetic in fmpz; then freed
+ * and allocated again (the freed blocks are reused: the count does not grow
+ * by another region), also from a second thread. */
+#define NMPZ 1100000
+static void small_mpz_round(void)
+{
+    mpz_t *z = flint_malloc(NMPZ * sizeof(mpz_t));
+    slong i;
+    fmpz_t f, g;
+    fmpz_init(f); fmpz_init(g);
+    for (i = 0; i < NMPZ; i++) {
+        mpz_init2(z[i], 64);
+        mpz_set_si(z[i], (slong) i * 7919 - 3);
+    }
+    for (i = 0; i < NMPZ; i += 1013) {   /* grown to about 200 bits, then reduced */
+        mpz_mul_2exp(z[i], z[i], 150 + (ulong) (i % 50));
+        mpz_add_ui(z[i], z[i], 1);
+        fmpz_set_si(f, (slong) i * 7919 - 3);
+        fmpz_mul_2exp(f, f, 150 + (ulong) (i % 50));
+        fmpz_add_ui(f, f, 1);
+        fmpz_set_mpz(g, z[i]);
+        assert_true(fmpz_equal(f, g));
+        mpz_realloc2(z[i], 64);           /* too big for 64 bits: GMP sets it to 0 */
+        mpz_set_si(z[i], (slong) i * 7919 - 3);
+    }
+    for (i = 0; i < NMPZ; i += 7)
+        assert_int_equal(mpz_get_si(z[i]), (slong) i * 7919 - 3);
+    for (i = 0; i < NMPZ; i++) mpz_clear(z[i]);
+    flint_free(z);
+    fmpz_clear(f); fmpz_clear(g);
+}
+
+static void *small_mpz_thread(void *arg)
+{
+    (void) arg;
+    small_mpz_round();
+    return NULL;
+}
+
+static void test_gmp_small_blocks(void **state)
+{
+    slong before, after1;
+    pthread_t th;
+    (void) state;
+    rs_budget_start(0, 0, 0);
+    before = rs_budget_memory_used();
+    small_mpz_round();
+    after1 = rs_budget_memory_used();
+    small_mpz_round();
+    assert_true(rs_budget_memory_used() - after1 < (4 << 20));
+    assert_int_equal(pthread_create(&th, NULL, small_mpz_thread, NULL), 0);
+    assert_int_equal(pthread_join(th, NULL), 0);
+    assert_true(rs_budget_memory_used() - before < (40 << 20));
+    rs_budget_stop();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
         cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_routh_stop), cmocka_unit_test(test_region_single_value),
         cmocka_unit_test(test_region_contradictory), cmocka_unit_test(test_small_block_cache),
+        cmocka_unit_test(test_gmp_small_blocks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
