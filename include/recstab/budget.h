@@ -10,7 +10,9 @@
  * memory it counts is the process's.  Memory is counted by wrapping the
  * GMP and FLINT allocators (installed on the first rs_budget_start; they
  * forward to malloc and count malloc_usable_size), so blocks allocated
- * before are only approximately counted.  Every field is atomic: checks are
+ * before are only approximately counted.  Each thread keeps a small cache
+ * of freed blocks of up to 248 bytes (64 per size) that it hands out again;
+ * those stay counted as used until they go back to malloc.  Every field is atomic: checks are
  * safe from OpenMP workers.  Once a limit is hit the budget stays exceeded
  * until the next rs_budget_start, so every loop stops at its next check. */
 #ifndef RECSTAB_BUDGET_H

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <math.h>
 #include <flint/fmpz_poly_factor.h>
+#include <flint/fmpz_vec.h>
 #include <fmpq_vec.h>
 #include <mpfr.h>
 #include <acb.h>
@@ -101,7 +102,18 @@ typedef struct {
     fmpq hint[CLAIM_MAX_HINTS];
     slong hint_var[CLAIM_MAX_HINTS];
     slong nhints;
+    /* the failed one-variable numerators, in order, whose negative points
+     * become hints only when the hint search runs (cx_hints_resolve): most
+     * failed proofs are settled by the plain search first */
+    struct claim_pending_hint *pend;
+    slong npend;
 } claim_cx_t;
+
+typedef struct claim_pending_hint {
+    fmpz_poly_t u;          /* the numerator in s_v, made of positive content */
+    slong v;
+    rs_bound_t bv;          /* v's interval (its ends map s back to v) */
+} claim_pending_hint_t;
 
 static void cx_init(claim_cx_t *cx)
 {
@@ -110,6 +122,8 @@ static void cx_init(claim_cx_t *cx)
     cx->fail_progress = 0;
     cx->inconsistent = 0;
     cx->nhints = 0;
+    cx->pend = NULL;
+    cx->npend = 0;
     for (i = 0; i < CLAIM_MAX_HINTS; i++) fmpq_init(cx->hint + i);
     cx->cert = json_array();
     flint_randinit(cx->st);
@@ -119,44 +133,78 @@ static void cx_clear(claim_cx_t *cx)
 {
     slong i;
     for (i = 0; i < CLAIM_MAX_HINTS; i++) fmpq_clear(cx->hint + i);
+    for (i = 0; i < cx->npend; i++) {
+        fmpz_poly_clear(cx->pend[i].u);
+        fmpq_clear(cx->pend[i].bv.lo);
+        fmpq_clear(cx->pend[i].bv.hi);
+    }
+    free(cx->pend);
     json_decref(cx->cert);
     flint_randclear(cx->st);
 }
 
-/* where the one-variable numerator P (in s_v) is < 0: v's values there */
-static void cx_add_hints(claim_cx_t *cx, const fmpq_mpoly_t P, slong v, const rs_bound_t *bv, const int *strict,
-                         const rs_scheme_t s)
+/* the one-variable numerator P (in s_v) is not positive: where it is < 0,
+ * v's values are candidates of the hint search (kept for cx_hints_resolve) */
+static void cx_add_hints(claim_cx_t *cx, const fmpq_mpoly_t P, slong v, const rs_bound_t *bv, const rs_scheme_t s)
+{
+    claim_pending_hint_t *h;
+    cx->pend = realloc(cx->pend, (size_t) (cx->npend + 1) * sizeof(claim_pending_hint_t));
+    h = cx->pend + cx->npend++;
+    fmpz_poly_init(h->u);
+    fmpz_mpoly_get_fmpz_poly(h->u, P->zpoly, v, s->ctx->zctx);
+    if (fmpq_sgn(P->content) < 0) fmpz_poly_neg(h->u, h->u);
+    h->v = v;
+    h->bv = *bv;
+    fmpq_init(h->bv.lo);
+    fmpq_init(h->bv.hi);
+    fmpq_set(h->bv.lo, bv->lo);
+    fmpq_set(h->bv.hi, bv->hi);
+}
+
+/* the pending numerators' negative points (rs_positivity_negative_points on
+ * the range s >= 0), mapped back to v, in the order they failed */
+static void cx_hints_resolve(claim_cx_t *cx)
 {
     fmpq pts[4];
+    fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t z;
-    rs_sign_t *sg = flint_malloc(s->nvars * sizeof(rs_sign_t));
+    rs_sign_t sg = RS_SIGN_NONNEGATIVE;
     slong n, i, k;
-    for (k = 0; k < s->nvars; k++) sg[k] = strict[k] ? RS_SIGN_POSITIVE : RS_SIGN_NONNEGATIVE;
+    if (cx->npend == 0) return;
     for (i = 0; i < 4; i++) fmpq_init(pts + i);
-    fmpz_mpoly_init(z, s->ctx->zctx);
-    fmpz_mpoly_set(z, P->zpoly, s->ctx->zctx);
-    if (fmpq_sgn(P->content) < 0) fmpz_mpoly_neg(z, z, s->ctx->zctx);
-    n = rs_positivity_negative_points(pts, 4, z, sg, s->ctx->zctx);
-    for (i = 0; i < n && cx->nhints < CLAIM_MAX_HINTS; i++) {
-        fmpq *h = cx->hint + cx->nhints;
-        if (bv->has_lo && bv->has_hi) {              /* (lo + hi s) / (1 + s) */
-            fmpq_t t;
-            fmpq_init(t);
-            fmpq_mul(h, bv->hi, pts + i);
-            fmpq_add(h, h, bv->lo);
-            fmpq_add_si(t, pts + i, 1);
-            fmpq_div(h, h, t);
-            fmpq_clear(t);
-        } else if (bv->has_lo) {
-            fmpq_add(h, bv->lo, pts + i);
-        } else {
-            fmpq_sub(h, bv->hi, pts + i);
+    fmpz_mpoly_ctx_init(ctx, 1, ORD_LEX);
+    fmpz_mpoly_init(z, ctx);
+    for (k = 0; k < cx->npend && cx->nhints < CLAIM_MAX_HINTS; k++) {
+        const rs_bound_t *bv = &cx->pend[k].bv;
+        fmpz_mpoly_set_fmpz_poly(z, cx->pend[k].u, 0, ctx);
+        n = rs_positivity_negative_points(pts, 4, z, &sg, ctx);
+        for (i = 0; i < n && cx->nhints < CLAIM_MAX_HINTS; i++) {
+            fmpq *h = cx->hint + cx->nhints;
+            if (bv->has_lo && bv->has_hi) {              /* (lo + hi s) / (1 + s) */
+                fmpq_t t;
+                fmpq_init(t);
+                fmpq_mul(h, bv->hi, pts + i);
+                fmpq_add(h, h, bv->lo);
+                fmpq_add_si(t, pts + i, 1);
+                fmpq_div(h, h, t);
+                fmpq_clear(t);
+            } else if (bv->has_lo) {
+                fmpq_add(h, bv->lo, pts + i);
+            } else {
+                fmpq_sub(h, bv->hi, pts + i);
+            }
+            cx->hint_var[cx->nhints++] = cx->pend[k].v;
         }
-        cx->hint_var[cx->nhints++] = v;
     }
-    fmpz_mpoly_clear(z, s->ctx->zctx);
+    for (k = 0; k < cx->npend; k++) {
+        fmpz_poly_clear(cx->pend[k].u);
+        fmpq_clear(cx->pend[k].bv.lo);
+        fmpq_clear(cx->pend[k].bv.hi);
+    }
+    cx->npend = 0;
+    fmpz_mpoly_clear(z, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
     for (i = 0; i < 4; i++) fmpq_clear(pts + i);
-    flint_free(sg);
 }
 
 
@@ -300,7 +348,7 @@ static int prove_positive(const fmpq_mpoly_t c, const rs_bound_t *b, const rs_sc
         ok = certify_nonneg(P, strict, s, &mono, &polya, &by_roots, &cx->inconsistent);
         single = rs_positivity_single_var(P->zpoly, s->ctx->zctx);   /* P's one variable, if one */
         if (!ok && single >= 0 && !cx->inconsistent)
-            cx_add_hints(cx, P, single, b + single, strict, s);
+            cx_add_hints(cx, P, single, b + single, s);
         if (!ok) {
             snprintf(buf, sizeof buf, "after mapping the interval%s onto s >= 0 a coefficient stays negative "
                      "(monomial factors in s divided out, (1 + sum s)^N tried up to N = %d)%s",
@@ -1353,6 +1401,54 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
     }
 }
 
+/* 1 when every root of c[0..n] lies strictly inside the unit circle, by
+ * Schur's recursion in exact integers: |c_n| > |c_0| at every step, c <-
+ * (c_n c - c_0 c*) / lambda, each row divided by its content (signs and the
+ * comparison keep).  Unlike the Schur-Cohn count it decides only this case,
+ * with no table for the singular ones, which is what makes it cheap. */
+static int schur_inside_fmpz(fmpz *c, fmpz *d, slong n)
+{
+    fmpz_t g;
+    slong k;
+    int ok = 1;
+    fmpz_init(g);
+    for (; n > 0 && ok; n--) {
+        ok = fmpz_cmpabs(c + n, c + 0) > 0;
+        for (k = 0; k < n && ok; k++) {
+            fmpz_mul(d + k, c + n, c + k + 1);
+            fmpz_submul(d + k, c + 0, c + n - 1 - k);
+        }
+        _fmpz_vec_content(g, d, n);
+        if (ok && !fmpz_is_zero(g)) _fmpz_vec_scalar_divexact_fmpz(c, d, n, g);
+        else ok = 0;
+    }
+    fmpz_clear(g);
+    return ok;
+}
+
+/* 1 when the characteristic polynomial at the point has every root strictly
+ * inside the unit circle (schur_inside_fmpz): the point is stable, so no
+ * counterexample to a stable or bounded claim, and needs no exact verdict
+ * (a small part of its cost).  0 when not, when the step is singular there,
+ * or over Q(i): the exact verdict decides. */
+static int point_surely_stable(const rs_run_t *run, const rs_variant_t *v, const slong *vars,
+                               const fmpq *pt, slong n)
+{
+    fmpq_poly_t w;
+    slong d;
+    int ok = 0;
+    if (run->c->ncsets > 0 || v->singular || v->s->complex_char) return 0;
+    fmpq_poly_init(w);
+    if (rs_run_charpoly_at(w, v, vars, pt, n) && (d = fmpq_poly_degree(w)) == v->cp->degree && d > 0) {
+        fmpz *c = _fmpz_vec_init(2 * (d + 1));
+        _fmpz_vec_set(c, w->coeffs, d + 1);
+        ok = schur_inside_fmpz(c, c + d + 1, d);
+        _fmpz_vec_clear(c, 2 * (d + 1));
+    }
+    fmpq_poly_clear(w);
+    return ok;
+}
+
 /* Searches one part for a counterexample, exactly, on a deterministic set of
  * points.  On success *counter is {NAME: value} and *at the verdict there.
  * det_only: nothing is searched (*skipped = 1) when the points would be drawn
@@ -1410,6 +1506,11 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
         }
         if (!ok) break;
         if (!rs_run_point_admissible(cps, ncps, pp, s)) continue;
+        /* a point certified stable is no counterexample (counted as checked) */
+        if (kind != CLAIM_UNSTABLE && point_surely_stable(run, v, vars, pt, nparams)) {
+            (*ntried)++;
+            continue;
+        }
         {
             rs_rootcount_t rc;
             rs_status_t stp;
@@ -2163,7 +2264,7 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
                     pr = claim_prove(run, kind, b, &cx, 0, &split);
                     if (counter != NULL && pr) inconsistent = 1;
                     /* the failed proof's hints: points its one-variable conditions violate */
-                    if (counter == NULL && !pr && cx.nhints > 0)
+                    if (counter == NULL && !pr && (cx_hints_resolve(&cx), cx.nhints > 0))
                         r = claim_search(run, kind, b, dnf.conds[i], dnf.n[i], cx.st, &ntried, &counter, &at, 0,
                                          NULL, &cx);
                     proved = proved && pr;
@@ -2260,7 +2361,7 @@ int rs_an_claim_decide(int *verdict, json_t **ev, rs_run_t *run, int kind, const
         r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, NULL);
     /* only then the failed proof's hints (the plain search's point, e.g. a
      * singular one, is kept where it finds one) */
-    if (r == RS_OK && counter == NULL && !pr && cx.nhints > 0)
+    if (r == RS_OK && counter == NULL && !pr && (cx_hints_resolve(&cx), cx.nhints > 0))
         r = claim_search(run, (claim_kind_t) kind, b, NULL, 0, cx.st, &ntried, &counter, &at, 0, NULL, &cx);
     if (r == RS_OK && rs_budget_exceeded()) r = rs_budget_error(run->err);
     if (cx.inconsistent) run->outcome |= RS_OUTCOME_INCONSISTENT;

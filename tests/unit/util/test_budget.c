@@ -5,6 +5,8 @@
 #include <setjmp.h>
 #include <string.h>
 #include <time.h>
+#include <malloc.h>
+#include <pthread.h>
 #include <cmocka.h>
 #include <flint/fmpz_mpoly.h>
 #include "recstab/budget.h"
@@ -270,12 +272,121 @@ static void test_region_contradictory(void **state)
     assert_string_equal(err->msg, "the assumptions are contradictory: no value of 'w' satisfies them");
 }
 
+/* budget.c's cache of small freed blocks: a reused block holds its request
+ * (usable size >= the request, every byte written), flint_calloc's reused
+ * block is zero although it was freed dirty, the cached blocks stay counted
+ * (the count never drops below what is held), and freeing everything brings
+ * the count back to within the cache's bound (16 classes x 64 blocks x 248
+ * bytes < 1 MB per thread; a thread's cache is emptied when it exits). */
+#define NSMALL 4000
+static void small_blocks_round(void)
+{
+    static unsigned char *b[NSMALL];
+    slong i, j, held = 0, before = rs_budget_memory_used();
+    for (i = 0; i < NSMALL; i++) {
+        size_t n = (size_t) (i * 37) % 300;
+        b[i] = (i % 2) ? flint_malloc(n + 1) : flint_calloc(n + 1, 1);
+        assert_non_null(b[i]);
+        assert_true(malloc_usable_size(b[i]) >= n + 1);
+        for (j = 0; j <= (slong) n; j++) {
+            if (i % 2 == 0) assert_int_equal(b[i][j], 0);
+            b[i][j] = 0xa5;
+        }
+        held += (slong) n + 1;
+    }
+    assert_true(rs_budget_memory_used() - before >= held - (1 << 20));
+    for (i = 0; i < NSMALL; i++) flint_free(b[i]);
+}
+
+static void *small_blocks_thread(void *arg)
+{
+    (void) arg;
+    small_blocks_round();
+    return NULL;
+}
+
+static void test_small_block_cache(void **state)
+{
+    slong before;
+    pthread_t th;
+    int k;
+    (void) state;
+    rs_budget_start(0, 0, 0);
+    before = rs_budget_memory_used();
+    for (k = 0; k < 3; k++) small_blocks_round();   /* the later rounds reuse cached blocks */
+    assert_true(rs_budget_memory_used() - before < (1 << 20));
+    assert_int_equal(pthread_create(&th, NULL, small_blocks_thread, NULL), 0);
+    assert_int_equal(pthread_join(th, NULL), 0);
+    assert_true(rs_budget_memory_used() - before < (1 << 20));
+    rs_budget_stop();
+}
+
+/* GMP's blocks of up to 16 bytes come from budget.c's reserved region (16 MB,
+ * then malloc): many small mpz (past the region's 2^20 blocks, so both
+ * sources), grown past 16 bytes (realloc out of the region) and shrunk
+ * again, each value checked against the same arithmetic in fmpz; then freed
+ * and allocated again (the freed blocks are reused: the count does not grow
+ * by another region), also from a second thread. */
+#define NMPZ 1100000
+static void small_mpz_round(void)
+{
+    mpz_t *z = flint_malloc(NMPZ * sizeof(mpz_t));
+    slong i;
+    fmpz_t f, g;
+    fmpz_init(f); fmpz_init(g);
+    for (i = 0; i < NMPZ; i++) {
+        mpz_init2(z[i], 64);
+        mpz_set_si(z[i], (slong) i * 7919 - 3);
+    }
+    for (i = 0; i < NMPZ; i += 1013) {   /* grown to about 200 bits, then reduced */
+        mpz_mul_2exp(z[i], z[i], 150 + (ulong) (i % 50));
+        mpz_add_ui(z[i], z[i], 1);
+        fmpz_set_si(f, (slong) i * 7919 - 3);
+        fmpz_mul_2exp(f, f, 150 + (ulong) (i % 50));
+        fmpz_add_ui(f, f, 1);
+        fmpz_set_mpz(g, z[i]);
+        assert_true(fmpz_equal(f, g));
+        mpz_realloc2(z[i], 64);           /* too big for 64 bits: GMP sets it to 0 */
+        mpz_set_si(z[i], (slong) i * 7919 - 3);
+    }
+    for (i = 0; i < NMPZ; i += 7)
+        assert_int_equal(mpz_get_si(z[i]), (slong) i * 7919 - 3);
+    for (i = 0; i < NMPZ; i++) mpz_clear(z[i]);
+    flint_free(z);
+    fmpz_clear(f); fmpz_clear(g);
+}
+
+static void *small_mpz_thread(void *arg)
+{
+    (void) arg;
+    small_mpz_round();
+    return NULL;
+}
+
+static void test_gmp_small_blocks(void **state)
+{
+    slong before, after1;
+    pthread_t th;
+    (void) state;
+    rs_budget_start(0, 0, 0);
+    before = rs_budget_memory_used();
+    small_mpz_round();
+    after1 = rs_budget_memory_used();
+    small_mpz_round();
+    assert_true(rs_budget_memory_used() - after1 < (4 << 20));
+    assert_int_equal(pthread_create(&th, NULL, small_mpz_thread, NULL), 0);
+    assert_int_equal(pthread_join(th, NULL), 0);
+    assert_true(rs_budget_memory_used() - before < (40 << 20));
+    rs_budget_stop();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_time_limit), cmocka_unit_test(test_memory_limit), cmocka_unit_test(test_estimate),
         cmocka_unit_test(test_det_estimate), cmocka_unit_test(test_routh_row_estimate), cmocka_unit_test(test_routh_stop), cmocka_unit_test(test_region_single_value),
-        cmocka_unit_test(test_region_contradictory),
+        cmocka_unit_test(test_region_contradictory), cmocka_unit_test(test_small_block_cache),
+        cmocka_unit_test(test_gmp_small_blocks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
