@@ -91,6 +91,20 @@ static void count_fix(void *p, long counted)
     count((p != NULL ? (long) malloc_usable_size(p) : 0) - counted);
 }
 
+/* The two pools below hide blocks from AddressSanitizer (a freed block is
+ * reused without going through its allocator), so a sanitizer build does
+ * without them: every allocation then goes to malloc and is checked. */
+#if defined(__SANITIZE_ADDRESS__)
+#define RS_BUDGET_POOLS 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RS_BUDGET_POOLS 0
+#endif
+#endif
+#ifndef RS_BUDGET_POOLS
+#define RS_BUDGET_POOLS 1
+#endif
+
 /* ---- a cache of small freed blocks ---------------------------------------------
  * FLINT and GMP allocate and free many small blocks (an exact run of a
  * small case: ~20 000 allocations of under 256 bytes); glibc's calloc never
@@ -153,7 +167,7 @@ static inline void *cache_pop(size_t n)
 {
     bcache_t *c = tcache_;
     size_t k = cache_class_req(n);
-    if (c == NULL || k >= CACHE_CLASSES || c->n[k] == 0) return NULL;
+    if (!RS_BUDGET_POOLS || c == NULL || k >= CACHE_CLASSES || c->n[k] == 0) return NULL;
     return c->blk[k][--c->n[k]];
 }
 
@@ -217,7 +231,7 @@ static void b_free(void *p)
     if (p == NULL) return;
     if (in_slab(p)) { slab_release(p); return; }
     u = (long) malloc_usable_size(p);
-    if (u >= 24 && ((u - 8) >> 4) < CACHE_CLASSES) {
+    if (RS_BUDGET_POOLS && u >= 24 && ((u - 8) >> 4) < CACHE_CLASSES) {
         bcache_t *c = cache_get();
         size_t k = (size_t) (u - 8) >> 4;        /* rounded down: 16 k + 8 <= u */
         if (c != NULL && c->n[k] < CACHE_DEPTH) {
@@ -309,8 +323,8 @@ static void install(void)
     void *r;
     if (!atomic_compare_exchange_strong(&installed, &expect, 1)) return;
     /* address space only: a page is backed when a block in it is written */
-    r = mmap(NULL, (size_t) SLAB_REGION, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE,
-             -1, 0);
+    r = RS_BUDGET_POOLS ? mmap(NULL, (size_t) SLAB_REGION, PROT_READ | PROT_WRITE,
+                               MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0) : MAP_FAILED;
     slab_base = r == MAP_FAILED ? NULL : r;
     __flint_set_memory_functions(b_malloc, b_calloc, b_realloc, b_free);
     mp_set_memory_functions(g_malloc, g_realloc, g_free);
