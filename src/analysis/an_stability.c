@@ -13,6 +13,7 @@ static int stability_real(rs_run_t *run, const rs_an_req_t *req)
     json_t *o;
     int r;
     r = rs_run_numeric_variant(run, &v);
+    if (r != RS_OK && v != NULL && v->vanishes) return rs_run_emit_vanishing(run, v, "stability");
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "stability");

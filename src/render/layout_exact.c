@@ -14,7 +14,7 @@
 void rs_render_assigned(rs_render_t *r, const json_t *o)
 {
     const json_t *sub = json_object_get(o, "substituted");
-    const json_t *nip = json_object_get(o, "not_in_p");
+    const json_t *nip = json_object_get(o, "not_in_p"), *vif = json_object_get(o, "valid_if");
     const char *key;
     json_t *val;
     size_t i;
@@ -22,7 +22,15 @@ void rs_render_assigned(rs_render_t *r, const json_t *o)
     for (i = 0; i < json_array_size(nip); i++) {
         if (i == 0) rs_render_label(r, "not in p");
         rs_render_textf(r, "%s%s%s", i == 0 ? "" : ", ", json_string_value(json_array_get(nip, i)),
-                        i + 1 == json_array_size(nip) ? " (p does not depend on them: no value needed)\n" : "");
+                        i + 1 == json_array_size(nip)
+                            ? (vif != NULL ? " (only in p's factor free of lambda: no value needed)\n"
+                                           : " (p does not depend on them: no value needed)\n") : "");
+    }
+    /* that factor's zeros: p vanishes identically there, the result does not hold */
+    for (i = 0; i < json_array_size(vif); i++) {
+        if (i == 0) rs_render_label(r, "valid if");
+        rs_render_textf(r, "%s%s%s", i == 0 ? "" : " and ", json_string_value(json_array_get(vif, i)),
+                        i + 1 == json_array_size(vif) ? " (elsewhere p vanishes identically: singular)\n" : "");
     }
     if (!json_is_object(sub) || json_object_size(sub) == 0) return;
     rs_render_label(r, "at");
@@ -594,6 +602,17 @@ void rs_render_stability(rs_render_t *r, const json_t *o)
         return;
     }
     sym = schur_cohn_prose(r, o, "Stability at the given values", "Stability at the given values");
+    if (json_is_true(json_object_get(o, "vanishes"))) {
+        /* det A = 0 at these values: no counts, the reason */
+        rs_render_sayf(r, "Verdict: **%s**: ", "Verdict: \\textbf{%s}: ", js(o, "status"));
+        rs_render_esc(r, js(o, "singular"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+        rs_render_line(r, "verdict", "%s", js(o, "status"));
+        rs_render_line(r, "singular", "%s", js(o, "singular"));
+        rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
+        rs_render_assigned(r, o);
+        return;
+    }
     if (json_object_get(o, "inside") == NULL) {
         /* a co-simulation's stability is its certified radius in the report */
         rs_render_radius(r, o);

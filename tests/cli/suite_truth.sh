@@ -160,6 +160,18 @@ if command -v jq >/dev/null 2>&1; then
     ab=$(jfield $C 0 '.counterexample | "\(.a) \(.b)"' | tr -d '"')
     check "claim 2-param sliver: counterexample in the set, a^2 + b^2 < 1" 'True' \
         "$(python3 -c "from fractions import Fraction as F; a, b = map(F, '$ab'.split()); print(F(1001001, 10**6) < a + b < F(2236, 1000) and 0 < b < F(1, 100) and a * a + b * b < 1)")"
+    # det A = 0 at the set value (h-truth5, by hand in the case): singular as region says (was exit 2)
+    C=cases/truth/stability-det-vanishes-at-set.case
+    "$RS" $C >/dev/null 2>&1
+    check "det vanishes at set a = 1: exit" 0 $?
+    check "det vanishes at set a = 1: stability (was exit 2)" '["singular",true,{"a":"1"}]' \
+        "$(jfield $C 0 '| [.status, .vanishes, .substituted]')"
+    check "det vanishes at a = 1: region agrees" '["singular",true]' \
+        "$("$RS" --json --analyse 'region a' $C 2>/dev/null | jq -c '.cases[0].results[0].intervals | map(select(.lo == "1" and .hi == "1"))[0] | [.status, .vanishes]')"
+    # p = a lambda^2 with a unset (h-truth5, by hand in the case): rho 0 only where a != 0
+    C=cases/truth/radius-content-only.case
+    check "content-only parameter: valid_if" '[["radius","0",["a != 0"]],["stability","stable",["a != 0"]]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.analysis, (.upper // .status), .valid_if])')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
