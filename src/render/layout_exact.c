@@ -652,7 +652,8 @@ static void region_intervals(rs_render_t *r, const json_t *o)
         rs_render_item_begin(r);
         rs_render_sayf(r, "**%s**: $", "%s: $", js(iv, "status"));
         rs_render_poly(r, param);
-        rs_render_sayf(r, " \\in %s%s, %s%s$", " \\in %s%s, %s%s$", open, a, strcmp(b, "inf") == 0 ? "\\infty" : b, close);
+        rs_render_sayf(r, " \\in %s%s, %s%s$", " \\in %s%s, %s%s$", open,
+                       strcmp(a, "-inf") == 0 ? "-\\infty" : a, strcmp(b, "inf") == 0 ? "\\infty" : b, close);
         if (json_is_object(hi)) {
             rs_render_say(r, " (upper end: a root of ", " (upper end: a root of ");
             rs_render_math(r, js(hi, "minpoly"));
