@@ -125,6 +125,8 @@ static int jury_bilinear(rs_run_t *run, const rs_variant_t *v, json_t *o, json_t
     json_object_set_new(o, "rows", json_array());
     json_object_set_new(o, "dropped", dropped);
     json_object_set_new(o, "route", json_string("bilinear"));
+    /* an identically false set: the verdict as the table route and hurwitz say it */
+    if (verdict < 0) json_object_set_new(o, "verdict", json_string("never stable"));
     snprintf(buf, sizeof buf, "row %ld of the Schur-Cohn table has a lead^2 - const^2 of %ld terms (over %ld): "
              "the conditions are those of q(z) = (z - 1)^n p((z + 1)/(z - 1)) instead, where D_k are the Hurwitz "
              "minors of q", (long) row, (long) terms, (long) rs_jury_bilinear_terms());
