@@ -1107,7 +1107,8 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
         fmpz_poly_init(u);
         p_at_point(u, v, pp);
         says = holds(data, pp, s);
-        if (fmpz_poly_degree(u) == v->cp->degree && says >= 0) {
+        /* v->singular: the set values already dropped the degree, u's is v's */
+        if (fmpz_poly_degree(u) == v->cp->degree && !v->singular && says >= 0) {
             rs_rootcount_t rc;
             rs_status_t st;
             rs_rootcount_init(rc);
@@ -1126,7 +1127,9 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
                 rs_json_add_count(chk, rc);
             }
             rs_rootcount_clear(rc);
-        } else if (fmpz_poly_degree(u) < v->cp->degree && says == 1) {
+        } else if ((fmpz_poly_degree(u) < v->cp->degree || v->singular) && says >= 0) {
+            nok += v->singular;
+            if (says == 0) { fmpz_poly_clear(u); continue; }
             /* a degree drop (or p = 0) is singular, never stable: conditions
              * that hold there miss the leading coefficient's zero */
             bad = json_object();

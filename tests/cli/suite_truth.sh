@@ -172,6 +172,11 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/radius-content-only.case
     check "content-only parameter: valid_if" '[["radius","0",["a != 0"]],["stability","stable",["a != 0"]]]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.analysis, (.upper // .status), .valid_if])')"
+    # hurwitz at a singular set point (h-truth5, by hand in the cases): never stable, as jury says singular
+    for C in cases/truth/hurwitz-singular-set-point.case cases/truth/hurwitz-singular-degree-drop.case; do
+        check "$(basename $C .case): hurwitz (was stable under the assumptions)" '["never stable",true,"singular"]' \
+            "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[0].sample_check.agree, .[1].status]')"
+    done
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
