@@ -97,10 +97,10 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     char *scratch = NULL;   /* one printing buffer for every polynomial (rs_json_zpoly_line) */
     size_t cap = 0;
     slong i, k;
-    int r, verdict;
+    int r, verdict, done;
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "hurwitz", 0);
+    if (r != RS_OK || done) return r;
     if (v->cp->degree < 1) return hurwitz_dead_beat(run, v);
     s = v->s;
     fmpz_mpoly_init(qz, s->zctx);

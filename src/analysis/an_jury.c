@@ -323,10 +323,10 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
     rs_routh_t ro;
     json_t *o, *rows;
     slong i;
-    int r;
+    int r, done;
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_jury(run, req);
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "jury", 0);
+    if (r != RS_OK || done) return r;
     fmpz_poly_init(p);
     if (!rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx)) {
         fmpz_poly_clear(p);

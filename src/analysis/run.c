@@ -177,6 +177,8 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         if (strcmp(run->variants[i]->key, key) == 0) {
             free(key);
             *out = run->variants[i];
+            /* the error again: an analysis before may have cleared run->err */
+            if (run->variants[i]->status != RS_OK) *run->err = run->variants[i]->err;
             return run->variants[i]->status;
         }
     v = calloc(1, sizeof(rs_variant_t));
@@ -220,6 +222,7 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         }
     }
     v->status = r;
+    if (r != RS_OK) v->err = *run->err;
     run->variants = realloc(run->variants, (size_t) (run->nvariants + 1) * sizeof(rs_variant_t *));
     run->variants[run->nvariants++] = v;
     *out = v;
@@ -427,6 +430,17 @@ void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o)
     json_array_append_new(run->results, o);
 }
 
+int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, const char *what, int numeric)
+{
+    int r = numeric ? rs_run_numeric_variant(run, v) : rs_run_default_variant(run, v);
+    *done = 0;
+    if (r != RS_OK && *v != NULL && (*v)->vanishes) {
+        *done = 1;
+        return rs_run_emit_vanishing(run, *v, what);
+    }
+    return r;
+}
+
 int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what)
 {
     json_t *o = json_object();
@@ -434,6 +448,7 @@ int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what
     json_object_set_new(o, "analysis", json_string(what));
     json_object_set_new(o, "status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
     json_object_set_new(o, "vanishes", json_true());
+    if (strcmp(what, "hurwitz") == 0) json_object_set_new(o, "verdict", json_string("never stable"));
     json_object_set_new(o, "singular", json_string(
         "det A(lambda) vanishes identically at these values: every lambda is a root, the equations are "
         "dependent and define no recurrence; not stable"));

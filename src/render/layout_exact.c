@@ -594,6 +594,20 @@ static void stability_qd(rs_render_t *r, const json_t *o)
     rs_render_assigned(r, o);
 }
 
+/* any analysis at values where det A vanishes identically (run.c's
+ * rs_run_emit_vanishing): no counts, the verdict and its reason */
+void rs_render_vanishing(rs_render_t *r, const json_t *o)
+{
+    rs_render_sayf(r, "Verdict of `%s`: **%s**: ", "Verdict of \\texttt{%s}: \\textbf{%s}: ", js(o, "analysis"),
+                   js(o, "status"));
+    rs_render_esc(r, js(o, "singular"));
+    rs_render_say(r, ".\n\n", ".\n\n");
+    rs_render_line(r, "verdict", "%s", js(o, "status"));
+    rs_render_line(r, "singular", "%s", js(o, "singular"));
+    rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
+    rs_render_assigned(r, o);
+}
+
 void rs_render_stability(rs_render_t *r, const json_t *o)
 {
     int sym;
@@ -602,17 +616,6 @@ void rs_render_stability(rs_render_t *r, const json_t *o)
         return;
     }
     sym = schur_cohn_prose(r, o, "Stability at the given values", "Stability at the given values");
-    if (json_is_true(json_object_get(o, "vanishes"))) {
-        /* det A = 0 at these values: no counts, the reason */
-        rs_render_sayf(r, "Verdict: **%s**: ", "Verdict: \\textbf{%s}: ", js(o, "status"));
-        rs_render_esc(r, js(o, "singular"));
-        rs_render_say(r, ".\n\n", ".\n\n");
-        rs_render_line(r, "verdict", "%s", js(o, "status"));
-        rs_render_line(r, "singular", "%s", js(o, "singular"));
-        rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
-        rs_render_assigned(r, o);
-        return;
-    }
     if (json_object_get(o, "inside") == NULL) {
         /* a co-simulation's stability is its certified radius in the report */
         rs_render_radius(r, o);
