@@ -25,7 +25,7 @@ counts are the books' own, re-derived by hand in the comments):
            "file:line:col:" on stderr, an exit 0 with valid JSON, and the expected
            verdict where one is planted.
 
-Usage: truth5.py PART SEED COUNT   (PART: textbook, circle, hostile, quick)
+Usage: truth5.py PART SEED COUNT   (PART: textbook, circle (alias circle5), hostile, quick)
 prints "ok ..." / "FAIL ..." lines.
 """
 import json
@@ -178,6 +178,7 @@ def part_circle(rng, count):
         inside = on = out = 0
         rho2 = F(0)
         repeated_circle = False
+        circ = {}
         nz = rng.choice([0, 0, 1, 2])
         p = pmul(p, ppow([F(0), F(1)], nz))
         inside += nz
@@ -198,7 +199,9 @@ def part_circle(rng, count):
             p = pmul(p, ppow(f, m))
             on += (len(f) - 1) * m
             rho2 = max(rho2, F(1))
-            repeated_circle |= m > 1
+            # the same factor picked twice adds up (as (lambda + 1)(lambda + 1))
+            circ[tuple(f)] = circ.get(tuple(f), 0) + m
+            repeated_circle = max(circ.values()) > 1
         for _ in range(rng.randint(0, 3)):
             kind = rng.choice(["in", "out", "cin", "cout"])
             if kind in ("in", "out"):
@@ -360,7 +363,7 @@ def part_hostile(rng, count):
 def main():
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     rng = random.Random(seed)
-    parts = {"textbook": part_textbook, "circle": part_circle, "hostile": part_hostile}
+    parts = {"textbook": part_textbook, "circle": part_circle, "circle5": part_circle, "hostile": part_hostile}
     if part == "quick":
         for name in ("textbook", "circle", "hostile"):
             parts[name](rng, count)
