@@ -52,12 +52,7 @@ def fail(msg, text=None, tag=None):
 
 
 # ---------------------------------------------------------------- polynomials (Fractions, c[k] of x^k)
-def pmul(a, b):
-    out = [F(0)] * (len(a) + len(b) - 1)
-    for i, x in enumerate(a):
-        for j, y in enumerate(b):
-            out[i + j] += x * y
-    return out
+pmul, padd = T.pmul, T.padd
 
 
 def ppow(a, k):
@@ -78,8 +73,7 @@ def to_unit_circle(q):
     p = [F(0)]
     for k, a in enumerate(q):
         t = pmul(ppow([F(-1), F(1)], k), ppow([F(1), F(1)], n - k))
-        t = [a * x for x in t]
-        p = [x + y for x, y in zip(p + [F(0)] * (len(t) - len(p)), t + [F(0)] * (len(p) - len(t)))]
+        p = padd(p, [a * x for x in t])
     return p
 
 
