@@ -231,8 +231,12 @@ static void claim_prose(rs_render_t *r, const json_t *o)
     if (json_is_object(ce)) {
         const char *k;
         json_t *v;
+        const json_t *at = json_object_get(o, "at_counterexample");
         int first = 1;
-        rs_render_say(r, "Counterexample: $", "Counterexample: $");
+        /* no free parameter: the scheme itself (was an empty "$$") */
+        if (json_object_size(ce) == 0) rs_render_say(r, "Counterexample: the scheme as given", "Counterexample: the "
+                                                     "scheme as given");
+        else rs_render_say(r, "Counterexample: $", "Counterexample: $");
         json_object_foreach((json_t *) ce, k, v) {
             if (!first) rs_render_say(r, ",\\ ", ",\\ ");
             rs_render_poly(r, k);
@@ -240,8 +244,15 @@ static void claim_prose(rs_render_t *r, const json_t *o)
             rs_render_poly(r, json_string_value(v));
             first = 0;
         }
-        rs_render_say(r, "$. ", "$. ");
-        rs_render_count(r, json_object_get(o, "at_counterexample"), RS_RENDER_PROSE);
+        rs_render_say(r, json_object_size(ce) == 0 ? ". " : "$. ", json_object_size(ce) == 0 ? ". " : "$. ");
+        /* a singular point has a reason, no counts (they were printed as 0, 0, 0) */
+        if (json_object_get(at, "inside") == NULL && js(at, "reason") != NULL) {
+            rs_render_sayf(r, "Verdict: **%s**: ", "Verdict: \\textbf{%s}: ", js(at, "status"));
+            rs_render_esc(r, js(at, "reason"));
+            rs_render_say(r, ".\n\n", ".\n\n");
+        } else {
+            rs_render_count(r, at, RS_RENDER_PROSE);
+        }
         /* how a counterexample the search missed was found (for-all region,
          * plane decomposition): the JSON's found_by */
         if (js(o, "found_by") != NULL) {

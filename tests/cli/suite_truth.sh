@@ -163,12 +163,14 @@ if command -v jq >/dev/null 2>&1; then
     # det A = 0 at the set value (h-truth5, by hand in the case): singular as region says (was exit 2)
     C=cases/truth/stability-det-vanishes-at-set.case
     "$RS" $C >/dev/null 2>&1
-    check "det vanishes at set a = 1: exit" 0 $?
+    check "det vanishes at set a = 1: exit (the claim refuted)" 1 $?
     check "det vanishes at set a = 1: stability (was exit 2)" '["singular",true,{"a":"1"}]' \
         "$(jfield $C 0 '| [.status, .vanishes, .substituted]')"
     check "det vanishes at set a = 1: jury, routh, hurwitz, radius (were exit 2)" \
         '[["jury","singular",true],["routh","singular",true],["hurwitz","singular",true],["radius","singular",true]]' \
-        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[1:] | map([.analysis, .status, .vanishes])')"
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[1:5] | map([.analysis, .status, .vanishes])')"
+    check "det vanishes at set a = 1: claim bounded refuted (was exit 2)" '["refuted","singular",true]' \
+        "$(jfield $C 5 '| [.status, .at_counterexample.status, .at_counterexample.vanishes]')"
     check "det vanishes at a = 1: region agrees" '["singular",true]' \
         "$("$RS" --json --analyse 'region a' $C 2>/dev/null | jq -c '.cases[0].results[0].intervals | map(select(.lo == "1" and .hi == "1"))[0] | [.status, .vanishes]')"
     # p = a lambda^2 with a unset (h-truth5, by hand in the case): rho 0 only where a != 0
