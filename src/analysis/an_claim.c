@@ -2232,6 +2232,19 @@ int rs_an_claim(rs_run_t *run, const rs_an_req_t *req)
     kindw = kind_words[kind == CLAIM_STABLE ? 0 : kind == CLAIM_BOUNDED ? 1 : 2];
     if (run->m->qd != NULL) return claim_qd(run, req, kindw);   /* over Q(sqrt d) */
     r = rs_run_default_variant(run, &v);
+    /* every parameter set and det A = 0 there: a singular point, which
+     * refutes every claim (as a degree drop does) */
+    if (r != RS_OK && v != NULL && v->vanishes && (slong) json_object_size(v->assigned) == nparams) {
+        rs_error_init(run->err);
+        o = json_pack("{s:s,s:s,s:s,s:s,s:{},s:{s:s,s:b,s:s,s:s},s:i}", "analysis", "claim", "text", q->text,
+                      "claim", kindw, "status", "refuted", "counterexample", "at_counterexample", "status",
+                      "singular", "vanishes", 1, "reason", "det A(lambda) vanishes identically at these values: "
+                      "the equations are dependent and define no recurrence", "decided_by", "exact",
+                      "points_checked", 1);
+        run->outcome |= RS_OUTCOME_FAILED;
+        rs_run_emit_exact(run, v, o);
+        return RS_OK;
+    }
     if (r != RS_OK) return r;
     o = json_object();
     json_object_set_new(o, "analysis", json_string("claim"));

@@ -34,6 +34,25 @@ static int holds_both(const void *data, fmpq *const *pt, const rs_scheme_struct 
     return lc;
 }
 
+/* The set values drop the degree of det A in lambda (v->singular): the
+ * implicit step cannot be solved there, never stable whatever the minors of
+ * the reduced q say (jury, stability and claim say singular) */
+static int never_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    (void) data; (void) pt; (void) s;
+    return 0;
+}
+
+static void hurwitz_singular(json_t *o)
+{
+    json_object_del(o, "branches");
+    json_object_set_new(o, "conditions", json_array());
+    json_object_set_new(o, "never", json_string(
+        "the leading coefficient of det A(lambda) vanishes at these values (its degree in lambda drops): "
+        "the implicit step cannot be solved; never asymptotically stable"));
+    json_object_set_new(o, "verdict", json_string("never stable"));
+}
+
 /* det A = c lambda^k: once the roots at 0 are divided out p (and q) is a
  * constant c, so there is no Hurwitz minor: every root is 0 where c != 0,
  * and where c = 0 there is no polynomial (hurwitz.c refuses degree 0; jury
@@ -59,8 +78,9 @@ static int hurwitz_dead_beat(rs_run_t *run, const rs_variant_t *v)
         : "stable iff the conditions hold (dead-beat there: every root is 0; where c = 0 det A vanishes "
           "identically)"));
     json_object_set_new(o, "conditions", conds);
+    if (v->singular) hurwitz_singular(o);
     /* c != 0 against the exact point verdict */
-    r = rs_run_sample_check(run, v, rs_run_nonzero_holds, kept, o);
+    r = rs_run_sample_check(run, v, v->singular ? never_holds : rs_run_nonzero_holds, kept, o);
     fmpz_mpoly_clear(kept, v->s->zctx);
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
@@ -78,11 +98,11 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     char *scratch = NULL;   /* one printing buffer for every polynomial (rs_json_zpoly_line) */
     size_t cap = 0;
     slong i, k;
-    int r, verdict;
+    int r, verdict, done;
     if (run->m->qd != NULL) return rs_an_qd_hurwitz(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_hurwitz(run, req);
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "hurwitz", 0);
+    if (r != RS_OK || done) return r;
     if (v->cp->degree < 1) return hurwitz_dead_beat(run, v);
     s = v->s;
     fmpz_mpoly_init(qz, s->zctx);
@@ -195,10 +215,11 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
                                                   : verdict < 0 ? "never stable"
                                                   : hb->nbranch == 2 ? "stable iff one branch holds"
                                                   : "stable iff the conditions hold"));
+    if (v->singular) hurwitz_singular(o);
     {
         full_check_t fc = {hb, run, 0, NULL, 0};
         json_t *chk;
-        r = rs_run_sample_check(run, v, holds_both, &fc, o);
+        r = rs_run_sample_check(run, v, v->singular ? never_holds : holds_both, &fc, o);
         chk = json_object_get(o, "sample_check");
         if (r == RS_OK && chk != NULL) {
             json_object_set_new(chk, "full_hurwitz_points", json_integer(fc.points));

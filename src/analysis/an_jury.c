@@ -126,6 +126,8 @@ static int jury_bilinear(rs_run_t *run, const rs_variant_t *v, json_t *o, json_t
     json_object_set_new(o, "rows", json_array());
     json_object_set_new(o, "dropped", dropped);
     json_object_set_new(o, "route", json_string("bilinear"));
+    /* an identically false set: the verdict as the table route and hurwitz say it */
+    if (verdict < 0) json_object_set_new(o, "verdict", json_string("never stable"));
     snprintf(buf, sizeof buf, "row %ld of the Schur-Cohn table has a lead^2 - const^2 of %ld terms (over %ld): "
              "the conditions are those of q(z) = (z - 1)^n p((z + 1)/(z - 1)) instead, where D_k are the Hurwitz "
              "minors of q", (long) row, (long) terms, (long) rs_jury_bilinear_terms());
@@ -322,11 +324,11 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
     rs_routh_t ro;
     json_t *o, *rows;
     slong i;
-    int r;
+    int r, done;
     if (run->m->qd != NULL) return rs_an_qd_jury(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_jury(run, req);
-    r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "jury", 0);
+    if (r != RS_OK || done) return r;
     fmpz_poly_init(p);
     if (!rs_charpoly_get_fmpz_poly(p, v->cp->p, v->s->lambda_var, v->s->zctx)) {
         fmpz_poly_clear(p);

@@ -187,9 +187,9 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
     const char *method = rs_an_opt_choice(req, "method");
     slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, i;
     json_t *o, *roots;
-    int r;
-    r = rs_run_numeric_variant(run, &v);
-    if (r != RS_OK) return r;
+    int r, done;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "radius", 1);
+    if (r != RS_OK || done) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "radius");
     if (r != RS_OK) { fmpz_poly_clear(p); return r; }

@@ -161,8 +161,8 @@ static int routh_real(rs_run_t *run, const rs_an_req_t *req)
     rs_variant_t *v;
     fmpz_poly_t p;
     json_t *o;
-    int r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
+    int done, r = rs_run_variant_or_vanishing(&v, &done, run, "routh", 0);
+    if (r != RS_OK || done) return r;
     o = json_object();
     json_object_set_new(o, "analysis", json_string("routh"));
     json_object_set_new(o, "var", json_string("z"));

@@ -11,9 +11,9 @@ static int stability_real(rs_run_t *run, const rs_an_req_t *req)
     fmpz_poly_t p;
     rs_rootcount_t rc;
     json_t *o;
-    int r;
-    r = rs_run_numeric_variant(run, &v);
-    if (r != RS_OK) return r;
+    int r, done;
+    r = rs_run_variant_or_vanishing(&v, &done, run, "stability", 1);
+    if (r != RS_OK || done) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "stability");
     if (r == RS_OK) {

@@ -28,7 +28,8 @@ static json_t *scheme_json(rs_run_t *run)
     slong n, i, j;
     rs_variant_t *v;
     json_t *o = json_object(), *eqs = json_array(), *lets = json_array(), *M = json_array();
-    if (rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0), rs_run_variant(&v, run, a, n) != RS_OK) {
+    /* det = 0 at the set values (v->vanishes) still has its matrix to show */
+    if (rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0), rs_run_variant(&v, run, a, n) != RS_OK && !v->vanishes) {
         rs_assign_free(a, n);
         json_decref(o); json_decref(eqs); json_decref(lets); json_decref(M);
         return NULL;
@@ -270,6 +271,12 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
         names[n++] = region;
     } else {
         r = rs_run_numeric_variant(run, &v);
+        if (r != RS_OK && v != NULL && v->vanishes) {
+            /* p = 0 at the set values: stability says singular and why */
+            rs_error_init(run->err);
+            names[n++] = "stability";
+            goto build;
+        }
         if (r != RS_OK) return r;
         for (i = 0; i < v->s->nvars; i++)
             if (i != v->s->lambda_var && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0) {
@@ -287,6 +294,7 @@ static int default_requests(rs_run_t *run, rs_request_t **out, slong *nout)
             }
         }
     }
+build:
     *out = calloc((size_t) n, sizeof(rs_request_t));
     for (i = 0; i < n; i++) {
         (*out)[i].text = rs_strdup(names[i]);

@@ -105,6 +105,7 @@ typedef struct {
     json_t **arr;
     json_t **owner;
     const char **key;
+    json_t **ph;       /* the placeholder strings put in their place */
     size_t n;
 } rowsets_t;
 
@@ -128,11 +129,13 @@ static void rowsets_swap(rowsets_t *rs, json_t *top)
                 rs->arr = realloc(rs->arr, (rs->n + 1) * sizeof(json_t *));
                 rs->owner = realloc(rs->owner, (rs->n + 1) * sizeof(json_t *));
                 rs->key = realloc(rs->key, (rs->n + 1) * sizeof(char *));
+                rs->ph = realloc(rs->ph, (rs->n + 1) * sizeof(json_t *));
                 rs->arr[rs->n] = json_incref(r);
                 rs->owner[rs->n] = o;
                 rs->key[rs->n] = keys[m];
                 snprintf(ph, sizeof ph, "\001rows %zu\001", rs->n);
-                json_object_set_new(o, keys[m], json_string(ph));
+                rs->ph[rs->n] = json_string(ph);
+                json_object_set_new(o, keys[m], rs->ph[rs->n]);
                 rs->n++;
             }
         }
@@ -172,26 +175,33 @@ static void bigstrs_push(bigstrs_t *b, json_t *str, json_t *owner, const char *k
     b->n++;
 }
 
-static int bigstr_is(const json_t *x)
+/* long strings, and every string that starts with \001 as the placeholders
+ * do (a title "\001rows 0\001" of the case's own): then each "\u0001 at
+ * the start of a value in the dump is a placeholder */
+static int bigstr_is(const json_t *x, const rowsets_t *rs)
 {
-    return json_is_string(x) && json_string_length(x) >= BIGSTR_MIN_BYTES;
+    size_t k;
+    if (!json_is_string(x)) return 0;
+    for (k = 0; k < rs->n; k++)
+        if (x == rs->ph[k]) return 0;
+    return json_string_length(x) >= BIGSTR_MIN_BYTES || (json_string_length(x) > 0 && json_string_value(x)[0] == '\001');
 }
 
-static void bigstrs_swap(bigstrs_t *b, json_t *x)
+static void bigstrs_swap(bigstrs_t *b, json_t *x, const rowsets_t *rs)
 {
     if (json_is_object(x)) {
         void *it;
         for (it = json_object_iter(x); it != NULL; it = json_object_iter_next(x, it)) {
             json_t *v = json_object_iter_value(it);
-            if (bigstr_is(v)) bigstrs_push(b, v, x, json_object_iter_key(it), 0);
-            else bigstrs_swap(b, v);
+            if (bigstr_is(v, rs)) bigstrs_push(b, v, x, json_object_iter_key(it), 0);
+            else bigstrs_swap(b, v, rs);
         }
     } else if (json_is_array(x)) {
         size_t i;
         for (i = 0; i < json_array_size(x); i++) {
             json_t *v = json_array_get(x, i);
-            if (bigstr_is(v)) bigstrs_push(b, v, x, NULL, i);
-            else bigstrs_swap(b, v);
+            if (bigstr_is(v, rs)) bigstrs_push(b, v, x, NULL, i);
+            else bigstrs_swap(b, v, rs);
         }
     }
 }
@@ -286,13 +296,13 @@ char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), 
 
 int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
 {
-    rowsets_t rs = {NULL, NULL, NULL, 0};
+    rowsets_t rs = {NULL, NULL, NULL, NULL, 0};
     bigstrs_t bs = {NULL, NULL, NULL, NULL, 0};
     char *s;
     size_t k;
     int rc = -1;
     rowsets_swap(&rs, top);
-    bigstrs_swap(&bs, top);
+    bigstrs_swap(&bs, top, &rs);
     /* the document without its rows and long strings, which go straight
      * to f one by one */
     s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
@@ -312,7 +322,7 @@ int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id),
                 continue;
             }
             if (strncmp(q + 7, "rows ", 5) != 0) {
-                /* a string of the case's own that starts with \001 */
+                /* not a value (an object key): as it is */
                 fwrite(p, 1, (size_t) (q + 1 - p), f);
                 p = q + 1;
                 continue;
@@ -353,6 +363,7 @@ done:
     free(rs.arr);
     free(rs.owner);
     free(rs.key);
+    free(rs.ph);
     return rc;
 }
 

@@ -25,10 +25,15 @@ typedef struct {
     rs_charpoly_t cp;
     int have_cp;
     int status;           /* RS_OK or the error building it */
+    rs_error_struct err;  /* that error, given again with the cached variant */
     int singular;         /* the values drop the degree of det A in lambda:
                              the implicit step cannot be solved there */
+    int vanishes;         /* the values make det A(lambda) vanish identically
+                             (status RS_ERR_MATH): singular, no recurrence */
     json_t *not_in_p;     /* parameters given a placeholder value because p does
                              not depend on them (rs_run_numeric_variant), or NULL */
+    json_t *valid_if;     /* with not_in_p: "f != 0" for the factors of p's
+                             parameter content (p = 0 where one vanishes), or NULL */
 } rs_variant_t;
 
 typedef struct {
@@ -110,6 +115,12 @@ int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **v);
 /* Close an exact result o of variant v ("substituted", "decided_by":
  * "exact") and append it to the run's results (takes o). */
 void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o);
+/* v->vanishes: the `what` result at those values is "singular" with the
+ * reason (as region lists such a point), run->err cleared; RS_OK. */
+int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what);
+/* The numeric (numeric != 0) or default variant; where it vanishes the
+ * `what` result is emitted as rs_run_emit_vanishing does and *done = 1. */
+int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, const char *what, int numeric);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);

@@ -409,7 +409,11 @@ int rs_an_req_run(rs_run_t *run, const rs_an_req_t *req)
         rs_variant_t *v;
         if (rs_run_numeric_variant(run, &v) == RS_OK && v->not_in_p != NULL)
             for (k = before; k < json_array_size(run->results); k++)
+            {
                 json_object_set(json_array_get(run->results, k), "not_in_p", v->not_in_p);
+                if (v->valid_if != NULL)
+                    json_object_set(json_array_get(run->results, k), "valid_if", v->valid_if);
+            }
     }
     return r;
 }

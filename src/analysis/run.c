@@ -25,6 +25,7 @@ void rs_variant_free(rs_variant_t *v)
     free(v->key);
     json_decref(v->assigned);
     json_decref(v->not_in_p);
+    json_decref(v->valid_if);
     free(v);
 }
 
@@ -176,6 +177,8 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         if (strcmp(run->variants[i]->key, key) == 0) {
             free(key);
             *out = run->variants[i];
+            /* the error again: an analysis before may have cleared run->err */
+            if (run->variants[i]->status != RS_OK) *run->err = run->variants[i]->err;
             return run->variants[i]->status;
         }
     v = calloc(1, sizeof(rs_variant_t));
@@ -199,7 +202,11 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         r = check_divisors(run, v->s, a, n);
         rs_charpoly_init(v->cp, v->s);
         v->have_cp = 1;
-        if (r == RS_OK) r = rs_charpoly_compute(v->cp, v->s, run->err);
+        if (r == RS_OK) {
+            r = rs_charpoly_compute(v->cp, v->s, run->err);
+            /* the generic det is not zero (have_sym): these values make it vanish */
+            v->vanishes = r == RS_ERR_MATH && n > 0 && run->have_sym && fmpz_mpoly_is_zero(v->cp->p, v->s->zctx);
+        }
         if (r == RS_OK && n == 0 && run->have_sym && run->deg_exact < 0)
             run->deg_exact = rs_charpoly_top_degree(v->cp);   /* nothing substituted: generic */
         if (r == RS_OK) r = rs_run_is_singular(&v->singular, run, rs_charpoly_top_degree(v->cp));
@@ -215,6 +222,7 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         }
     }
     v->status = r;
+    if (r != RS_OK) v->err = *run->err;
     run->variants = realloc(run->variants, (size_t) (run->nvariants + 1) * sizeof(rs_variant_t *));
     run->variants[run->nvariants++] = v;
     *out = v;
@@ -391,6 +399,19 @@ int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **out)
                     json_array_append_new(w->not_in_p, json_string(extra[i].name));
                     json_object_del(w->assigned, extra[i].name);
                 }
+                /* the verdict at the placeholders holds only where the content
+                 * (p = content * p0) is not 0: at its zeros p vanishes */
+                if (!fmpz_mpoly_is_fmpz(v->cp->param_content, s->zctx)) {
+                    fmpz_mpoly_t kept;
+                    fmpz_mpoly_init(kept, s->zctx);
+                    w->valid_if = json_array();
+                    rs_run_dead_beat_nonzero(kept, w->valid_if, run, v->s, v->cp->param_content);
+                    fmpz_mpoly_clear(kept, s->zctx);
+                    if (json_array_size(w->valid_if) == 0) {
+                        json_decref(w->valid_if);
+                        w->valid_if = NULL;
+                    }
+                }
             }
         }
         free(key);
@@ -403,9 +424,36 @@ int rs_run_numeric_variant(rs_run_t *run, rs_variant_t **out)
 void rs_run_emit_exact(rs_run_t *run, const rs_variant_t *v, json_t *o)
 {
     if (v->not_in_p != NULL) json_object_set_new(o, "not_in_p", json_deep_copy(v->not_in_p));
+    if (v->valid_if != NULL) json_object_set_new(o, "valid_if", json_deep_copy(v->valid_if));
     json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
     json_object_set_new(o, "decided_by", json_string("exact"));
     json_array_append_new(run->results, o);
+}
+
+int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, const char *what, int numeric)
+{
+    int r = numeric ? rs_run_numeric_variant(run, v) : rs_run_default_variant(run, v);
+    *done = 0;
+    if (r != RS_OK && *v != NULL && (*v)->vanishes) {
+        *done = 1;
+        return rs_run_emit_vanishing(run, *v, what);
+    }
+    return r;
+}
+
+int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what)
+{
+    json_t *o = json_object();
+    rs_error_init(run->err);
+    json_object_set_new(o, "analysis", json_string(what));
+    json_object_set_new(o, "status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
+    json_object_set_new(o, "vanishes", json_true());
+    if (strcmp(what, "hurwitz") == 0) json_object_set_new(o, "verdict", json_string("never stable"));
+    json_object_set_new(o, "singular", json_string(
+        "det A(lambda) vanishes identically at these values: every lambda is a root, the equations are "
+        "dependent and define no recurrence; not stable"));
+    rs_run_emit_exact(run, v, o);
+    return RS_OK;
 }
 
 char *rs_cond_string(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel)
@@ -1090,7 +1138,8 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
         fmpz_poly_init(u);
         p_at_point(u, v, pp);
         says = holds(data, pp, s);
-        if (fmpz_poly_degree(u) == v->cp->degree && says >= 0) {
+        /* v->singular: the set values already dropped the degree, u's is v's */
+        if (fmpz_poly_degree(u) == v->cp->degree && !v->singular && says >= 0) {
             rs_rootcount_t rc;
             rs_status_t st;
             rs_rootcount_init(rc);
@@ -1109,7 +1158,9 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
                 rs_json_add_count(chk, rc);
             }
             rs_rootcount_clear(rc);
-        } else if (fmpz_poly_degree(u) < v->cp->degree && says == 1) {
+        } else if ((fmpz_poly_degree(u) < v->cp->degree || v->singular) && says >= 0) {
+            nok += v->singular;
+            if (says == 0) { fmpz_poly_clear(u); continue; }
             /* a degree drop (or p = 0) is singular, never stable: conditions
              * that hold there miss the leading coefficient's zero */
             bad = json_object();

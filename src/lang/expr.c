@@ -14,6 +14,8 @@ typedef struct {
     rs_error_struct *err;
 } parser_t;
 
+static int depth_enter(parser_t *p);
+
 /* Tree height limit: long chains (a+b+c+...) are as deep as nesting for the
  * recursive walkers (free, copy, evaluation), so they are bounded too. */
 #define RS_EXPR_MAX_HEIGHT 2000
@@ -223,8 +225,11 @@ static rs_expr_t *parse_primary(parser_t *p)
     skip_ws(p);
     start = p->pos;
     if (t[p->pos] == '(') {
+        if (!depth_enter(p))
+            return NULL;
         p->pos++;
         e = parse_expr(p);
+        p->depth--;
         if (e == NULL)
             return NULL;
         skip_ws(p);
@@ -361,7 +366,8 @@ static int depth_enter(parser_t *p)
         int line, col;
         rs_src_pos(p->src, p->pos, &line, &col);
         rs_error_set_at(p->err, RS_ERR_LIMIT, p->src->file, line, col,
-                        "expression nested too deeply (limit %d)", RS_EXPR_MAX_DEPTH);
+                        "expression nested too deeply (limit %d levels of parentheses and signs)",
+                        RS_EXPR_MAX_DEPTH);
     }
     return 0;
 }
@@ -370,23 +376,20 @@ static rs_expr_t *parse_unary(parser_t *p)
 {
     const char *t = p->src->text;
     skip_ws(p);
-    if (!depth_enter(p))
-        return NULL;
     if (t[p->pos] == '-' || t[p->pos] == '+') {
         size_t at = p->pos;
         int neg = (t[p->pos] == '-');
         rs_expr_t *a;
+        if (!depth_enter(p))
+            return NULL;
         p->pos++;
         a = parse_unary(p);
         p->depth--;
         if (a == NULL || !neg)
             return a;
         return binary_h(p, RS_EXPR_NEG, at, a, p->height, NULL);
-    } else {
-        rs_expr_t *a = parse_power(p);
-        p->depth--;
-        return a;
     }
+    return parse_power(p);
 }
 
 /* operand (op operand)*, left associative, for one precedence level */
@@ -420,14 +423,12 @@ static rs_expr_t *parse_term(parser_t *p)
     return parse_chain(p, parse_unary, '*', RS_EXPR_MUL, '/', RS_EXPR_DIV);
 }
 
+/* no level of its own: a level is a '(' (parse_primary) or a sign
+ * (parse_unary), one each, as the limit's message says (counted twice
+ * before: 100 parentheses were "over 200") */
 static rs_expr_t *parse_expr(parser_t *p)
 {
-    rs_expr_t *a;
-    if (!depth_enter(p))
-        return NULL;
-    a = parse_chain(p, parse_term, '+', RS_EXPR_ADD, '-', RS_EXPR_SUB);
-    p->depth--;
-    return a;
+    return parse_chain(p, parse_term, '+', RS_EXPR_ADD, '-', RS_EXPR_SUB);
 }
 
 int rs_expr_parse(rs_expr_t **out, const rs_src_t *src, size_t *pos, rs_error_t err)

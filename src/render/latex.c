@@ -111,8 +111,16 @@ void rs_render_tex_text(FILE *out, const char *s)
         case '~': fputs("\\~{}", out); break;
         case '<': fputs("$<$", out); break;
         case '>': fputs("$>$", out); break;
+        /* typewriter quotes as typed, not typographic ones; '|' is a dash in
+         * OT1, "--" an en dash */
+        case '`': fputs("\\textasciigrave{}", out); break;
+        case '\'': fputs("\\textquotesingle{}", out); break;
+        case '"': fputs("{\\ttfamily\\char34}", out); break;   /* OT1 has no \\textquotedbl */
+        case '|': fputs("\\textbar{}", out); break;
+        case '-': fputs(s[1] == '-' ? "-{}" : "-", out); break;
         default:
-            if ((unsigned char) *s < 128) fputc(*s, out);
+            /* control bytes and non-ASCII: '?' (no input encoding assumed) */
+            if ((unsigned char) *s < 128 && ((unsigned char) *s >= 0x20 || *s == '\n')) fputc(*s, out);
             else fputc('?', out);
         }
     }
@@ -143,6 +151,7 @@ void rs_derivation_latex_begin(FILE *out)
 {
     fputs("\\documentclass[10pt]{article}\n"
           "\\usepackage{amsmath}\n"
+          "\\usepackage{textcomp}\n"
           "\\setlength{\\textwidth}{16cm}\\setlength{\\oddsidemargin}{0cm}\n"
           "\\setlength{\\textheight}{23cm}\\setlength{\\topmargin}{-1cm}\n"
           "\\setlength{\\parindent}{0pt}\\setlength{\\parskip}{4pt}\n"

@@ -14,7 +14,7 @@
 void rs_render_assigned(rs_render_t *r, const json_t *o)
 {
     const json_t *sub = json_object_get(o, "substituted");
-    const json_t *nip = json_object_get(o, "not_in_p");
+    const json_t *nip = json_object_get(o, "not_in_p"), *vif = json_object_get(o, "valid_if");
     const char *key;
     json_t *val;
     size_t i;
@@ -22,7 +22,15 @@ void rs_render_assigned(rs_render_t *r, const json_t *o)
     for (i = 0; i < json_array_size(nip); i++) {
         if (i == 0) rs_render_label(r, "not in p");
         rs_render_textf(r, "%s%s%s", i == 0 ? "" : ", ", json_string_value(json_array_get(nip, i)),
-                        i + 1 == json_array_size(nip) ? " (p does not depend on them: no value needed)\n" : "");
+                        i + 1 == json_array_size(nip)
+                            ? (vif != NULL ? " (only in p's factor free of lambda: no value needed)\n"
+                                           : " (p does not depend on them: no value needed)\n") : "");
+    }
+    /* that factor's zeros: p vanishes identically there, the result does not hold */
+    for (i = 0; i < json_array_size(vif); i++) {
+        if (i == 0) rs_render_label(r, "valid if");
+        rs_render_textf(r, "%s%s%s", i == 0 ? "" : " and ", json_string_value(json_array_get(vif, i)),
+                        i + 1 == json_array_size(vif) ? " (elsewhere p vanishes identically: singular)\n" : "");
     }
     if (!json_is_object(sub) || json_object_size(sub) == 0) return;
     rs_render_label(r, "at");
@@ -223,8 +231,12 @@ static void claim_prose(rs_render_t *r, const json_t *o)
     if (json_is_object(ce)) {
         const char *k;
         json_t *v;
+        const json_t *at = json_object_get(o, "at_counterexample");
         int first = 1;
-        rs_render_say(r, "Counterexample: $", "Counterexample: $");
+        /* no free parameter: the scheme itself (was an empty "$$") */
+        if (json_object_size(ce) == 0) rs_render_say(r, "Counterexample: the scheme as given", "Counterexample: the "
+                                                     "scheme as given");
+        else rs_render_say(r, "Counterexample: $", "Counterexample: $");
         json_object_foreach((json_t *) ce, k, v) {
             if (!first) rs_render_say(r, ",\\ ", ",\\ ");
             rs_render_poly(r, k);
@@ -232,8 +244,15 @@ static void claim_prose(rs_render_t *r, const json_t *o)
             rs_render_poly(r, json_string_value(v));
             first = 0;
         }
-        rs_render_say(r, "$. ", "$. ");
-        rs_render_count(r, json_object_get(o, "at_counterexample"), RS_RENDER_PROSE);
+        rs_render_say(r, json_object_size(ce) == 0 ? ". " : "$. ", json_object_size(ce) == 0 ? ". " : "$. ");
+        /* a singular point has a reason, no counts (they were printed as 0, 0, 0) */
+        if (json_object_get(at, "inside") == NULL && js(at, "reason") != NULL) {
+            rs_render_sayf(r, "Verdict: **%s**: ", "Verdict: \\textbf{%s}: ", js(at, "status"));
+            rs_render_esc(r, js(at, "reason"));
+            rs_render_say(r, ".\n\n", ".\n\n");
+        } else {
+            rs_render_count(r, at, RS_RENDER_PROSE);
+        }
         /* how a counterexample the search missed was found (for-all region,
          * plane decomposition): the JSON's found_by */
         if (js(o, "found_by") != NULL) {
@@ -622,6 +641,20 @@ static void stability_qd(rs_render_t *r, const json_t *o)
     rs_render_assigned(r, o);
 }
 
+/* any analysis at values where det A vanishes identically (run.c's
+ * rs_run_emit_vanishing): no counts, the verdict and its reason */
+void rs_render_vanishing(rs_render_t *r, const json_t *o)
+{
+    rs_render_sayf(r, "Verdict of `%s`: **%s**: ", "Verdict of \\texttt{%s}: \\textbf{%s}: ", js(o, "analysis"),
+                   js(o, "status"));
+    rs_render_esc(r, js(o, "singular"));
+    rs_render_say(r, ".\n\n", ".\n\n");
+    rs_render_line(r, "verdict", "%s", js(o, "status"));
+    rs_render_line(r, "singular", "%s", js(o, "singular"));
+    rs_render_line(r, "decided by", "%s", js(o, "decided_by"));
+    rs_render_assigned(r, o);
+}
+
 void rs_render_stability(rs_render_t *r, const json_t *o)
 {
     int sym;
@@ -669,7 +702,8 @@ static void region_intervals(rs_render_t *r, const json_t *o)
         rs_render_item_begin(r);
         rs_render_sayf(r, "**%s**: $", "%s: $", js(iv, "status"));
         rs_render_poly(r, param);
-        rs_render_sayf(r, " \\in %s%s, %s%s$", " \\in %s%s, %s%s$", open, a, strcmp(b, "inf") == 0 ? "\\infty" : b, close);
+        rs_render_sayf(r, " \\in %s%s, %s%s$", " \\in %s%s, %s%s$", open,
+                       strcmp(a, "-inf") == 0 ? "-\\infty" : a, strcmp(b, "inf") == 0 ? "\\infty" : b, close);
         if (json_is_object(hi)) {
             rs_render_say(r, " (upper end: a root of ", " (upper end: a root of ");
             rs_render_math(r, js(hi, "minpoly"));

@@ -103,6 +103,7 @@ void rs_render_routh(rs_render_t *r, const json_t *o);
 void rs_render_hurwitz(rs_render_t *r, const json_t *o);
 void rs_render_jury(rs_render_t *r, const json_t *o);
 void rs_render_stability(rs_render_t *r, const json_t *o);
+void rs_render_vanishing(rs_render_t *r, const json_t *o);
 void rs_render_region(rs_render_t *r, const json_t *o);
 void rs_render_limit(rs_render_t *r, const json_t *o);
 void rs_render_astability(rs_render_t *r, const json_t *o);   /* layout_astability.c */

@@ -119,6 +119,24 @@ for f in markdown latex; do
     grep -q '^Found by the decomposition of the plane (the CAD of .*violates the claim)\.$' "$T/sl.$f" \
         && ok "sliver claim: $f says how it was found" || fail "sliver claim $f: $(grep -i found "$T/sl.$f")"
 done
+# LaTeX text of user and found_by strings (h-truth5): the backquotes and
+# apostrophes as typed (they were typographic quotes), '|' not a dash, "--"
+# not an en dash, control bytes and non-ASCII as '?'; the document compiles
+grep -qF 'the CAD of \textasciigrave{}region N1, N2\textasciigrave{}, cut also by the claim\textquotesingle{}s condition' \
+    "$T/sl.latex" && ok "sliver claim: latex found_by escaped" || fail "sliver claim latex: $(grep -i found "$T/sl.latex")"
+printf 'title q "d" `b` it'"'"'s a|b --c \001 caf\303\251\nchar lambda - 1/2\n' >"$T/esc.case"
+"$RS" --latex "$T/esc.case" >"$T/esc.tex" 2>&1
+grep -qxF '\section*{q {\ttfamily\char34}d{\ttfamily\char34} \textasciigrave{}b\textasciigrave{} it\textquotesingle{}s a\textbar{}b -{}-c ? caf??}' \
+    "$T/esc.tex" && ok "latex title escaped" || fail "latex title: $(grep section "$T/esc.tex")"
+if command -v pdflatex >/dev/null 2>&1; then
+    for d in esc sl; do
+        [ -f "$T/$d.tex" ] || cp "$T/$d.latex" "$T/$d.tex"
+        (cd "$T" && timeout 60 pdflatex -interaction=nonstopmode -halt-on-error "$d.tex" >/dev/null 2>&1) \
+            && ok "pdflatex compiles $d.tex" || fail "pdflatex $d.tex: $(grep -m2 -A2 '^!' "$T/$d.log")"
+    done
+else
+    echo "skip pdflatex compile: no pdflatex"
+fi
 
 # astability's text report (h-polish): alpha_degrees as the derivation says
 # it, not raw JSON.  BDF3: tan(alpha)^2 = 757687/3645 (the case's minimal

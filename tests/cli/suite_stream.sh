@@ -146,3 +146,26 @@ if [ -n "$TIME" ] && [ "$rc" = 0 ]; then
         || fail "streamed sweep: peak RSS $(tail -1 "$T/rss") KB"
 elif [ -n "$TIME" ]; then fail "streamed sweep: no run to measure (exit $rc)"
 else echo "skip sweep peak RSS: sanitizer build or no /usr/bin/time"; fi
+
+# ---- the placeholders of the --json dump are unambiguous (h-truth5) ----
+# rows and strings >= 1 KiB are swapped for "\001rows N\001" / "\001str N\001"
+# while dumping; a title of the case's own that looked like one was replaced
+# by the sweep's rows or dropped (invalid JSON).  Each title must come back
+# byte for byte and the sweep keep its 5 rows (a = -2, -1, 0, 1, 2).
+if command -v jq >/dev/null 2>&1; then
+    for t in 'rows 0' 'str 0' 'str 7'; do
+        printf 'title \001%s\001\nparam a\nunknown x\neq x[n+1] = a*x[n]\n' "$t" >"$T/ph.case"
+        got=$("$RS" --json --analyse "sweep a from -2 to 2 steps 4 of stability" "$T/ph.case" 2>/dev/null \
+              | jq -c '[.cases[0].title, (.cases[0].results[0].rows | length)]')
+        want=$(printf '["\\u0001%s\\u0001",5]' "$t")
+        [ "$got" = "$want" ] && ok "json placeholder look-alike title '$t' kept" || fail "title '$t': got $got, expected $want"
+    done
+    # with a long string in the same document (a title of 2000 bytes in the first case)
+    printf 'title %s\nchar lambda - 1/2\n' "$(head -c 2000 /dev/zero | tr '\0' x)" >"$T/long.case"
+    printf 'title \001str 0\001\nchar lambda - 1/3\n' >"$T/ph.case"
+    got=$("$RS" --json "$T/long.case" "$T/ph.case" 2>/dev/null | jq -c '[(.cases[0].title | length), .cases[1].title]')
+    [ "$got" = '[2000,"\u0001str 0\u0001"]' ] && ok "json placeholder look-alike beside a streamed long string" \
+        || fail "long string and look-alike: got $got"
+else
+    echo "skip json placeholder checks: no jq"
+fi

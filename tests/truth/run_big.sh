@@ -14,6 +14,10 @@
 # truth4.py (h-truth4, 2026-11-27, loaded): radius 3 200, lead 3 150, implicit 3 150: 500 planted
 # cases, 0 failed; at 3548634 (before): radius 53 of 60 (seed 2) failed (roots at 0 missing, Q(i)
 # listed p conj(p)'s roots), lead 24 of 40 (seed 1) exited 2 at a zero of p's content.
+# truth5.py (h-truth5, 2026-11-27, loaded): textbook (14 literature polynomials x 2 scalings),
+# circle 1 300 and hostile (41 inputs): 369 cases, 0 failed after the fixes; before them nest-200
+# (100 parentheses rejected as "over 200") failed, and the hunt's hand probes found hurwitz
+# "stable" at singular set points and exit 2 where det A vanishes at set values.
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
@@ -21,13 +25,14 @@ export RS
 total_fail=0
 for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
             symcond symmat rk builders limit radmat map cosim zeros circle lmm3 algclaim simlimit \
-            radius lead implicit; do
+            radius lead implicit textbook circle5 hostile; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     script=tests/truth/truth.py
     case $part in symcond|symmat|rk|builders|limit|radmat|map|cosim) script=tests/truth/truth2.py ;; esac
     case $part in zeros|circle|lmm3|algclaim|simlimit) script=tests/truth/truth3.py ;; esac
     case $part in radius|lead|implicit) script=tests/truth/truth4.py ;; esac
+    case $part in textbook|circle5|hostile) script=tests/truth/truth5.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
         out=$(python3 "$script" "$part" "$s" "$n" 2>&1)

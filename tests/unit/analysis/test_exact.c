@@ -16,6 +16,7 @@
 #include <acb.h>
 #include "recstab/casefile.h"
 #include "recstab/scheme.h"
+#include "recstab/report.h"
 #include "recstab/analysis.h"
 #include "recstab/jury.h"
 
@@ -559,6 +560,37 @@ static int conds_hold(const json_t *conds, const char **vars, const fmpq *pt, co
     return ok;
 }
 
+/* The bilinear route's "never" (h-truth5): p = (lambda - 1)(lambda - a) has the
+ * root 1 for every a (p(1) = 0 identically, by hand), so q(z) = (z - 1)^2
+ * p((z + 1)/(z - 1)) has the factor z: never asymptotically stable.  Forced
+ * onto the bilinear route, jury said "never" but printed no verdict line (the
+ * table route and hurwitz say "never stable"). */
+static void test_jury_bilinear_never(void **state)
+{
+    const char *text = "param a\nchar (lambda - 1)*(lambda - a)\nanalyse jury\nanalyse hurwitz\n";
+    char *rep = NULL;
+    size_t len = 0;
+    FILE *f;
+    json_t *doc;
+    int outcome;
+    slong old = rs_jury_set_bilinear_terms(0);
+    (void) state;
+    doc = tu_run_text(text, NULL, &outcome, NULL);
+    rs_jury_set_bilinear_terms(old);
+    assert_string_equal(str(result(doc, 0), "route"), "bilinear");
+    assert_non_null(str(result(doc, 0), "never"));
+    assert_string_equal(str(result(doc, 0), "verdict"), "never stable");
+    assert_string_equal(str(result(doc, 1), "verdict"), "never stable");
+    f = open_memstream(&rep, &len);
+    rs_report_text(f, doc);
+    fclose(f);
+    /* one verdict line each: jury's and hurwitz's */
+    assert_non_null(strstr(rep, "  verdict      never stable\n"));
+    assert_non_null(strstr(strstr(rep, "  verdict      never stable\n") + 1, "  verdict      never stable\n"));
+    free(rep);
+    json_decref(doc);
+}
+
 static void test_jury_bilinear_route(void **state)
 {
     const char *req[] = {"jury"}, *creq[] = {"charpoly"};
@@ -657,6 +689,7 @@ int main(void)
         cmocka_unit_test(test_jury_interval_assumptions),
         cmocka_unit_test(test_jury_factor_halves),
         cmocka_unit_test(test_jury_bilinear_route),
+        cmocka_unit_test(test_jury_bilinear_never),
         cmocka_unit_test(test_counts_roots_at_zero),
     };
     return cmocka_run_group_tests_name("exact", tests, NULL, NULL);

@@ -100,6 +100,21 @@ static void test_depth_limit(void **state)
     rs_error_init(err);
     assert_int_equal(rs_expr_parse_number(q, buf, err), RS_ERR_LIMIT);
     assert_non_null(strstr(err->msg, "nested too deeply"));
+    /* the limit is what it says (h-truth5): 200 parentheses parse (1), 201 do not;
+     * 100 failed before, each level counted twice */
+    for (i = 0; i < 200; i++) buf[i] = '(';
+    buf[200] = '1';
+    for (i = 0; i < 200; i++) buf[201 + i] = ')';
+    buf[401] = '\0';
+    rs_error_init(err);
+    assert_int_equal(rs_expr_parse_number(q, buf, err), RS_OK);
+    assert_true(fmpq_is_one(q));
+    memmove(buf + 1, buf, 402);
+    buf[0] = '(';
+    buf[402] = ')';
+    buf[403] = '\0';
+    rs_error_init(err);
+    assert_int_equal(rs_expr_parse_number(q, buf, err), RS_ERR_LIMIT);
     fmpq_clear(q);
 }
 
