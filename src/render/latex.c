@@ -65,6 +65,18 @@ void rs_derivation_tex_poly(FILE *out, const char *s)
         if (isalpha((unsigned char) ch) || ch == '_') {
             size_t j = i;
             while (j < n && (isalnum((unsigned char) s[j]) || s[j] == '_')) j++;
+            if (j - i == 4 && strncmp(s + i, "sqrt", 4) == 0 && j + 1 < n && s[j] == '('
+                && isdigit((unsigned char) s[j + 1])) {
+                /* sqrt(d) of the Q(sqrt d) analyses (an_qd*.c): \sqrt{d}, not \mathit{sqrt}(d) */
+                size_t k = j + 1;
+                while (k < n && isdigit((unsigned char) s[k])) k++;
+                if (k < n && s[k] == ')') {
+                    fprintf(out, "\\sqrt{%.*s}", (int) (k - j - 1), s + j + 1);
+                    i = k + 1;
+                    prev_num = 0;
+                    continue;
+                }
+            }
             tex_name(out, s + i, j - i);
             i = j;
             prev_num = 0;

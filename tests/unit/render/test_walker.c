@@ -267,6 +267,20 @@ static void test_branches_latex(void **state)
           "\\end{itemize}\n");
 }
 
+/* sqrt(d) in a condition over Q(sqrt d) (an_qd_conds.c prints c0 + sqrt(d)*(c1))
+ * is LaTeX's \sqrt{d}; any other name followed by '(' stays a name */
+static void test_tex_sqrt(void **state)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    (void) state;
+    rs_derivation_tex_poly(f, "3 + sqrt(2)*(a^2 - 1) + sqrtx(2) + sqrt(b)");
+    fclose(f);
+    assert_string_equal(buf, "3 + \\sqrt{2}\\,(a^{2} - 1) + \\mathit{sqrtx}(2) + \\mathit{sqrt}(b)");
+    free(buf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -277,6 +291,7 @@ int main(void)
         cmocka_unit_test(test_branches_text),
         cmocka_unit_test(test_branches_markdown),
         cmocka_unit_test(test_branches_latex),
+        cmocka_unit_test(test_tex_sqrt),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
