@@ -79,6 +79,16 @@ int rs_positivity_sign_roots(const fmpz_mpoly_t poly, const rs_sign_t *sign,
 slong rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
                                     const fmpz_mpoly_ctx_t ctx);
 
+/* Exact emptiness of a set of one-variable conditions: 1 if no x allowed
+ * by the bound b (NULL: every real x) makes every poly[i] > 0 (i < n, each
+ * a polynomial in the variable x alone), 0 if some x does or if it is not
+ * decided (a poly not in x alone, or the real roots not separated by the
+ * precision cap).  The real roots of the conditions and the bound's ends
+ * are isolated (Arb); each gap between them has one sign per condition, so
+ * one rational point in each admissible gap, evaluated exactly, decides. */
+int rs_positivity_none_positive(const fmpz_mpoly_struct *const *poly, slong n, slong x,
+                                const rs_bound_t *b, const fmpz_mpoly_ctx_t ctx);
+
 #ifdef __cplusplus
 }
 #endif

@@ -208,6 +208,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_decref(nonzero);
     }
     verdict = rs_json_hurwitz_or(o, hb, s);
+    if (rs_run_hurwitz_or_never(run, o, hb, s)) verdict = -1;
     json_object_set_new(o, "dropped", dropped);
     json_object_set_new(o, "always_true", always);
     json_object_set_new(o, "details", details);
@@ -219,7 +220,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     {
         full_check_t fc = {hb, run, 0, NULL, 0};
         json_t *chk;
-        r = rs_run_sample_check(run, v, v->singular ? never_holds : holds_both, &fc, o);
+        r = rs_run_sample_check_never(run, v, v->singular ? never_holds : holds_both, &fc, o);
         chk = json_object_get(o, "sample_check");
         if (r == RS_OK && chk != NULL) {
             json_object_set_new(chk, "full_hurwitz_points", json_integer(fc.points));

@@ -2,6 +2,7 @@
  * the symbolic Schur-Cohn (Jury) conditions, cross-checked against Routh. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
 #include "recstab/routh.h"
@@ -306,7 +307,13 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
             "all |lambda| < 1 iff every lead^2 - const^2 > 0 (Schur 1917, strict inequalities: exact for every "
             "value; where the leading coefficient of p vanishes the first condition fails)"));
-        r = rs_run_sample_check(run, v, jury_conds_holds, &jc, o);
+        char why[1100];
+        /* a set that can never all hold: said as the singular row says it */
+        if (json_object_get(o, "never") == NULL && rs_run_conds_never(why, 1000, run, jc.poly, jc.ne, jc.n, s)) {
+            strcat(why, "; never asymptotically stable");
+            rs_json_set_never_conditions(o, why);
+        }
+        r = rs_run_sample_check_never(run, v, jury_conds_holds, &jc, o);
     } else {
         json_decref(rows);
         json_decref(conds);

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "analysis/impl.h"
 #include "recstab/bilinear.h"
+#include "recstab/positivity.h"
 
 void rs_json_append_unique(json_t *arr, const char *str)
 {
@@ -128,6 +129,203 @@ static const char *hurwitz_never_reason(const rs_hurwitz_or_t hb, char *buf, siz
     return buf;
 }
 
+/* "NAME op END" of one end of a parameter's assumed interval, appended */
+static void bound_text(char *buf, size_t len, const char *name, const rs_bound_t *b)
+{
+    char *lo = b != NULL && b->has_lo ? fmpq_get_str(NULL, 10, b->lo) : NULL;
+    char *hi = b != NULL && b->has_hi ? fmpq_get_str(NULL, 10, b->hi) : NULL;
+    if (lo != NULL && hi != NULL)
+        snprintf(buf, len, "%s %s %s %s %s", lo, b->lo_closed ? "<=" : "<", name, b->hi_closed ? "<=" : "<", hi);
+    else if (lo != NULL)
+        snprintf(buf, len, "%s %s %s", name, b->lo_closed ? ">=" : ">", lo);
+    else if (hi != NULL)
+        snprintf(buf, len, "%s %s %s", name, b->hi_closed ? "<=" : "<", hi);
+    else
+        snprintf(buf, len, "%s real", name);
+    flint_free(lo);
+    flint_free(hi);
+}
+
+/* Whether the conditions c[i] > 0 (i < n) can never all hold for the values
+ * the bounds b (nb parameters, the first variables) allow, decided cheaply
+ * and exactly (no sample): a constant <= 0; two conditions c, c' with
+ * c' = -k c, k > 0 rational (lc(c) c' = lc(c') c with leading coefficients
+ * of opposite signs); or the conditions in one parameter alone without a
+ * common solution in its interval (rs_positivity_none_positive).  1 and the
+ * reason into buf, else 0.  Only a subset is needed to be empty, so the
+ * other conditions ("!= 0" ones included) may be left out.  The reason
+ * ends without "never asymptotically stable" (the caller adds it once). */
+int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
+                   slong nb, const rs_scheme_struct *s)
+{
+    const fmpz_mpoly_ctx_struct *ctx = s->zctx;
+    const fmpz_mpoly_struct **one = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct *));
+    fmpz_mpoly_t t, u;
+    slong i, j, v, m;
+    int found = 0;
+    fmpz_mpoly_init(t, ctx);
+    fmpz_mpoly_init(u, ctx);
+    for (i = 0; i < n && !found; i++) {
+        if (fmpz_mpoly_is_fmpz(c[i], ctx) && (fmpz_mpoly_is_zero(c[i], ctx) || fmpz_sgn(c[i]->coeffs) < 0)) {
+            char *li = rs_cond_string(c[i], s, "> 0");
+            snprintf(buf, len, "the condition %s never holds", li);
+            free(li);
+            found = 1;
+        }
+        for (j = i + 1; j < n && !found && !fmpz_mpoly_is_zero(c[i], ctx); j++) {
+            if (fmpz_mpoly_is_zero(c[j], ctx) || fmpz_sgn(c[i]->coeffs) == fmpz_sgn(c[j]->coeffs)
+                || fmpz_mpoly_length(c[i], ctx) != fmpz_mpoly_length(c[j], ctx))
+                continue;
+            fmpz_mpoly_scalar_mul_fmpz(t, c[j], c[i]->coeffs, ctx);
+            fmpz_mpoly_scalar_mul_fmpz(u, c[i], c[j]->coeffs, ctx);
+            if (fmpz_mpoly_equal(t, u, ctx)) {
+                char *li = rs_cond_string(c[i], s, "> 0"), *lj = rs_cond_string(c[j], s, "> 0");
+                snprintf(buf, len, "the conditions %s and %s contradict (one is a negative multiple of the "
+                         "other, both strict): no value satisfies both", li, lj);
+                free(li);
+                free(lj);
+                found = 1;
+            }
+        }
+    }
+    /* per parameter, the conditions in it alone against its interval */
+    for (v = 0; v < s->nvars && !found; v++) {
+        if (v == s->lambda_var) continue;
+        for (m = 0, i = 0; i < n; i++)
+            if (rs_positivity_single_var(c[i], ctx) == v) one[m++] = c[i];
+        if (m > 0 && rs_positivity_none_positive(one, m, v, v < nb ? b + v : NULL, ctx)) {
+            size_t at;
+            char range[200];
+            bound_text(range, sizeof range, s->vars[v], v < nb ? b + v : NULL);
+            snprintf(buf, len, "no value with %s satisfies ", range);
+            for (i = 0; i < m; i++) {
+                char *li = rs_cond_string(one[i], s, "> 0");
+                at = strlen(buf);
+                snprintf(buf + at, len - at, "%s%s", i == 0 ? "" : " and ", li);
+                free(li);
+            }
+            at = strlen(buf);
+            snprintf(buf + at, len - at, " (real roots isolated, one exact sample in each gap of the admissible "
+                     "interval)");
+            found = 1;
+        }
+    }
+    fmpz_mpoly_clear(t, ctx);
+    fmpz_mpoly_clear(u, ctx);
+    flint_free(one);
+    return found;
+}
+
+/* The parameters' intervals from the assume lines (params first) */
+static rs_bound_t *run_bounds(rs_run_t *run)
+{
+    const rs_case_struct *c = run->c;
+    rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
+    slong i;
+    rs_bounds_init(b, c->nparams);
+    for (i = 0; i < c->nassume; i++) rs_bounds_add(b, &c->assume[i], c, run->err);
+    return b;
+}
+
+static void run_bounds_clear(rs_bound_t *b, rs_run_t *run)
+{
+    rs_bounds_clear(b, run->c->nparams);
+    flint_free(b);
+}
+
+/* rs_conds_never on conditions given as polynomials (ne[i]: a "!= 0" one,
+ * left out; NULL: none), the intervals from the run's assume lines */
+int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
+                       slong n, const rs_scheme_struct *s)
+{
+    const fmpz_mpoly_struct **c = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct *));
+    rs_bound_t *b = run_bounds(run);
+    slong i, m = 0;
+    int r;
+    for (i = 0; i < n; i++)
+        if (ne == NULL || !ne[i]) c[m++] = poly + i;
+    r = rs_conds_never(buf, len, c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
+    run_bounds_clear(b, run);
+    flint_free(c);
+    return r;
+}
+
+/* "never" (the reason) with "never_from": "conditions" -- the stated
+ * conditions stay in o and are printed after the reason -- and "verdict" */
+void rs_json_set_never_conditions(json_t *o, const char *why)
+{
+    json_object_set_new(o, "never", json_string(why));
+    json_object_set_new(o, "never_from", json_string("conditions"));
+    json_object_set_new(o, "verdict", json_string("never stable"));
+}
+
+/* Hurwitz's branches all contradictory (rs_conds_never on each branch's
+ * stated "> 0" conditions): "never" into o (the conditions stay) and 1;
+ * 0 when some branch may hold or o already says never. */
+int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_struct *s)
+{
+    char why[2][1000], all[2100];
+    rs_bound_t *b;
+    const fmpz_mpoly_struct **c;
+    slong k, i, m, nmax = 0;
+    int never = hb->nbranch > 0;
+    if (json_object_get(o, "never") != NULL || hb->nbranch == 0) return 0;
+    for (k = 0; k < hb->nbranch; k++) nmax = FLINT_MAX(nmax, hb->branch[k].ncond);
+    b = run_bounds(run);
+    c = flint_malloc((nmax + 1) * sizeof(fmpz_mpoly_struct *));
+    for (k = 0; k < hb->nbranch && never; k++) {
+        for (m = 0, i = 0; i < hb->branch[k].ncond; i++)
+            if (!hb->branch[k].cond[i].trivially_true && !hb->branch[k].cond[i].not_expanded)
+                c[m++] = hb->branch[k].cond[i].reduced;
+        never = rs_conds_never(why[k], sizeof why[k], c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
+    }
+    flint_free(c);
+    run_bounds_clear(b, run);
+    if (!never) return 0;
+    if (hb->nbranch == 2)
+        snprintf(all, sizeof all, "neither branch can hold: branch 1: %s; branch 2: %s; never asymptotically "
+                 "stable", why[0], why[1]);
+    else
+        snprintf(all, sizeof all, "%s; never asymptotically stable", why[0]);
+    rs_json_set_never_conditions(o, all);
+    return 1;
+}
+
+/* The sample check, and where o says "never" its cross-check: no admissible
+ * sample point may satisfy the conditions (holds = 1 there contradicts the
+ * exact emptiness proof: exit 3). */
+typedef struct {
+    rs_holds_fn holds;
+    const void *data;
+    int held;
+} never_check_t;
+
+static int never_check_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    never_check_t *w = (never_check_t *) data;   /* our own, writable */
+    int h = w->holds(w->data, pt, s);
+    if (h == 1) w->held = 1;
+    return h;
+}
+
+int rs_run_sample_check_never(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o)
+{
+    never_check_t w = {holds, data, 0};
+    json_t *chk;
+    int r;
+    if (json_object_get(o, "never") == NULL) return rs_run_sample_check(run, v, holds, data, o);
+    r = rs_run_sample_check(run, v, never_check_holds, &w, o);
+    chk = json_object_get(o, "sample_check");
+    if (r == RS_OK && chk != NULL) {
+        json_object_set_new(chk, "never_confirmed", json_boolean(!w.held));
+        if (w.held) {
+            json_object_set_new(chk, "agree", json_false());
+            run->outcome |= RS_OUTCOME_INCONSISTENT;
+        }
+    }
+    return r;
+}
+
 /* "conditions" (one branch) or "branches" (an OR of two), "never" when
  * no branch can hold; returns 1 if every condition of a branch holds under
  * the assumptions, -1 if no branch can hold, 0 otherwise. */
@@ -183,6 +381,7 @@ int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, jso
     r = rs_run_hurwitz_or(hb, run, v, qz);
     if (r == RS_OK) {
         *verdict = rs_json_hurwitz_or(o, hb, s);
+        if (rs_run_hurwitz_or_never(run, o, hb, s)) *verdict = -1;
         if (hb->nbranch == 1 && json_object_get(o, "never") == NULL)
             json_object_set_new(o, "conditions", branch_json(hb->branch + 0, s));
         for (b = 0; dropped != NULL && b < hb->nbranch; b++) {
@@ -197,7 +396,7 @@ int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, jso
                         json_array_append_new(dropped, json_pack("{s:o,s:s}", "factor",
                             rs_json_factor(hb->branch[b].cond[i].factors->poly + k, s),
                             "from", hb->branch[b].cond[i].origin));
-        r = rs_run_sample_check(run, v, rs_run_hurwitz_or_holds, hb, o);
+        r = rs_run_sample_check_never(run, v, rs_run_hurwitz_or_holds, hb, o);
     }
     rs_hurwitz_or_clear(hb, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);

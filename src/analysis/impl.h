@@ -236,6 +236,22 @@ int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, jso
 int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, fmpz_mpoly_t qz);
 int rs_run_hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s);
 int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s);
+/* Condition sets that can never all hold (conditions.c): rs_conds_never
+ * decides cheaply and exactly for c[i] > 0 (a constant <= 0, c' = -k c with
+ * k > 0, or one parameter's conditions without a common solution in its
+ * interval); the reason into buf.  rs_run_conds_never: the same on
+ * poly[i] > 0 (ne[i]: a "!= 0" one, left out), intervals from the assume
+ * lines.  rs_run_hurwitz_or_never: every branch so: "never" into o, 1.
+ * rs_run_sample_check_never: rs_run_sample_check, and with "never" in o
+ * no sample may satisfy the conditions (else exit 3). */
+int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
+                   slong nb, const rs_scheme_struct *s);
+int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
+                       slong n, const rs_scheme_struct *s);
+void rs_json_set_never_conditions(json_t *o, const char *why);
+int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_struct *s);
+int rs_run_sample_check_never(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data,
+                              json_t *o);
 json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s);
 void rs_json_append_unique(json_t *arr, const char *str);
 

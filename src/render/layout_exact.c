@@ -108,7 +108,9 @@ static int branches(rs_render_t *r, const json_t *o)
         rs_render_line(r, "never", "%s", js(o, "never"));
         rs_render_esc(r, js(o, "never"));
         rs_render_say(r, ".\n\n", ".\n\n");
-        return 1;
+        /* a set that can never all hold (never_from "conditions"): the
+         * conditions shown after the reason, as found */
+        if (js(o, "never_from") == NULL || !json_is_array(br)) return 1;
     }
     if (!json_is_array(br)) return 0;
     rs_render_say(r, "All |lambda| < 1 if and only if every condition of one branch holds (the sign of the leading "
@@ -122,7 +124,8 @@ static int branches(rs_render_t *r, const json_t *o)
         rs_render_say(r, i == 0 ? "either: " : "or: ", i == 0 ? "either: " : "or: ");
         for (j = 0; j < json_array_size(b); j++) {
             const char *c = json_string_value(json_array_get(b, j));
-            rs_render_line(r, j > 0 ? "and" : i == 0 ? "stable iff" : "or", "%s", c);
+            rs_render_line(r, j > 0 ? "and" : i > 0 ? "or" : js(o, "never") != NULL ? "conditions" : "stable iff",
+                           "%s", c);
             if (j) rs_render_say(r, ", ", ", ");
             rs_render_math(r, c);
         }
@@ -512,7 +515,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
                        "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
                        "(every condition holds under the assumptions)");
     }
-    condition_lines(r, o, "conditions", "", 1);
+    condition_lines(r, o, "conditions", "", js(o, "never_from") == NULL);
     if (js(o, "never") == NULL) hurwitz_origins(r, o);
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
@@ -550,6 +553,8 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
                 rs_render_line(r, "conditions", "%s", "none left: every Schur-Cohn condition holds under the "
                                                       "assumptions");
             condition_lines(r, o, "stable iff", "and", 0);
+        } else if (js(o, "never_from") != NULL && json_object_get(o, "branches") == NULL) {
+            condition_lines(r, o, "conditions", "and", 0);
         }
         /* with "never" only: the other symbolic reports stay as they were */
         if (js(o, "never") != NULL) rs_render_line(r, "verdict", "%s", js(o, "verdict"));

@@ -516,3 +516,140 @@ done:
     fmpq_clear(y);
     return npts;
 }
+
+/* x inside the bound b (NULL: anywhere) */
+static int _in_bound(const fmpq_t x, const rs_bound_t *b)
+{
+    int c;
+    if (b == NULL)
+        return 1;
+    if (b->has_lo && ((c = fmpq_cmp(x, b->lo)) < 0 || (c == 0 && !b->lo_closed)))
+        return 0;
+    if (b->has_hi && ((c = fmpq_cmp(x, b->hi)) > 0 || (c == 0 && !b->hi_closed)))
+        return 0;
+    return 1;
+}
+
+/* g *= den x - num for the end e = num/den: the end becomes a breakpoint */
+static void _mul_end(fmpz_poly_t g, const fmpq_t e)
+{
+    fmpz_poly_t l;
+    fmpz_poly_init(l);
+    fmpz_poly_set_coeff_fmpz(l, 1, fmpq_denref(e));
+    fmpz_poly_set_coeff_fmpz(l, 0, fmpq_numref(e));
+    fmpz_neg(l->coeffs + 0, l->coeffs + 0);
+    fmpz_poly_mul(g, g, l);
+    fmpz_poly_clear(l);
+}
+
+int
+rs_positivity_none_positive(const fmpz_mpoly_struct *const *poly, slong n, slong x, const rs_bound_t *b,
+                            const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_poly_struct *u = flint_malloc((n + 1) * sizeof(fmpz_poly_struct));
+    fmpz_poly_t g, sq;
+    acb_ptr r = NULL;
+    arb_ptr re = NULL;
+    fmpq_t pt, y;
+    slong i, j, d = 0, nr = 0, prec = 64;
+    int res = 0, ok = 1, sep = 0;
+
+    for (i = 0; i < n; i++)
+        fmpz_poly_init(u + i);
+    fmpz_poly_init(g);
+    fmpz_poly_init(sq);
+    fmpq_init(pt);
+    fmpq_init(y);
+    if (b != NULL && rs_bound_empty(b))
+        goto done;   /* the assumptions' own contradiction: not ours to report */
+    fmpz_poly_one(g);
+    for (i = 0; i < n && ok; i++) {
+        ok = fmpz_mpoly_get_fmpz_poly(u + i, poly[i], x, ctx) && !fmpz_poly_is_zero(u + i);
+        if (ok && fmpz_poly_degree(u + i) >= 1) {
+            rs_fmpz_poly_squarefree_part(sq, u + i);
+            fmpz_poly_mul(g, g, sq);
+        }
+    }
+    if (!ok)
+        goto done;
+    /* the interval's ends as breakpoints too: then the conditions' signs
+     * are constant on each gap, and an open set meeting the interval meets
+     * a gap inside it (a single point is tested as itself) */
+    if (b != NULL && b->has_lo && b->has_hi && fmpq_equal(b->lo, b->hi)) {
+        fmpq_set(pt, b->lo);
+        nr = -1;
+    } else {
+        if (b != NULL && b->has_lo)
+            _mul_end(g, b->lo);
+        if (b != NULL && b->has_hi)
+            _mul_end(g, b->hi);
+        rs_fmpz_poly_squarefree_part(g, g);
+        d = fmpz_poly_degree(g);
+        if (d >= 1) {
+            r = _acb_vec_init(d);
+            re = _arb_vec_init(d);
+            for (prec = 64; prec <= 1024 && !sep; prec *= 4) {
+                arb_fmpz_poly_complex_roots(r, g, 0, prec);
+                for (nr = 0; nr < d && acb_is_real(r + nr); nr++)
+                    arb_set(re + nr, acb_realref(r + nr));
+                for (sep = 1, i = 0; i + 1 < nr; i++)
+                    sep &= arb_lt(re + i, re + i + 1);
+            }
+            if (!sep)
+                goto done;
+            prec /= 4;
+        }
+    }
+    /* one rational in each gap (or the single point): some admissible one
+     * where every condition is > 0 (exact evaluation) decides "possible" */
+    res = 1;
+    for (i = (nr < 0 ? -1 : 0); i <= FLINT_MAX(nr, 0) && res; i++) {
+        arf_t a;
+        int all = 1;
+        arf_init(a);
+        if (nr < 0)
+            ;   /* pt is the point */
+        else if (nr == 0)
+            fmpq_zero(pt);
+        else if (i == 0) {
+            arb_get_lbound_arf(a, re, prec);
+            arf_get_fmpq(pt, a);
+            fmpq_sub_si(pt, pt, 1);
+        } else if (i == nr) {
+            arb_get_ubound_arf(a, re + nr - 1, prec);
+            arf_get_fmpq(pt, a);
+            fmpq_add_si(pt, pt, 1);
+        } else {
+            arb_get_ubound_arf(a, re + i - 1, prec);
+            arf_get_fmpq(pt, a);
+            arb_get_lbound_arf(a, re + i, prec);
+            arf_get_fmpq(y, a);
+            fmpq_add(pt, pt, y);
+            fmpq_div_2exp(pt, pt, 1);
+        }
+        arf_clear(a);
+        if (!_in_bound(pt, b))
+            continue;
+        for (j = 0; j < n && all; j++) {
+            fmpz_poly_evaluate_fmpq(y, u + j, pt);
+            all = fmpq_sgn(y) > 0;
+        }
+        if (all)
+            res = 0;
+        if (nr < 0)
+            break;
+    }
+done:
+    if (r != NULL) {
+        _acb_vec_clear(r, d);
+        _arb_vec_clear(re, d);
+    }
+    for (i = 0; i < n; i++)
+        fmpz_poly_clear(u + i);
+    flint_free(u);
+    fmpz_poly_clear(g);
+    fmpz_poly_clear(sq);
+    fmpq_clear(pt);
+    fmpq_clear(y);
+    return res;
+}
