@@ -182,6 +182,19 @@ if command -v jq >/dev/null 2>&1; then
         check "$(basename $C .case): hurwitz (was stable under the assumptions)" '["never stable",true,"singular"]' \
             "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[0].sample_check.agree, .[1].status]')"
     done
+    # condition sets that can never all hold (h-never; each expectation by hand in its case):
+    # verdict, the sample check agreeing and confirming no admissible sample satisfies them
+    for C in cases/truth/never-disjoint-roots.case cases/truth/never-one-param-bound.case; do
+        check "$(basename $C .case): hurwitz and jury never stable" \
+            '[["never stable",true,true,"conditions"],["never stable",true,true,"conditions"]]' \
+            "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, .sample_check.agree, .sample_check.never_confirmed, .never_from])')"
+    done
+    C=cases/truth/never-sympy-p6.case
+    check "SymPy p6: hurwitz never stable, b0 > 0 against -b0 > 0 in both branches" '["never stable",true,true,2,true]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, (.branches | length), (.never | test("branch 1: the conditions b0 > 0 and -b0 > 0 contradict.*branch 2: the conditions -b0 > 0 and b0 > 0 contradict"))]')"
+    C=cases/truth/never-sympy-p4-nonpositive.case
+    check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
