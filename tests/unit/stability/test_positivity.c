@@ -341,6 +341,64 @@ test_single_var(void **state)
     fmpz_mpoly_ctx_clear(ctx);
 }
 
+/* rs_positivity_none_positive (h-never): every condition > 0 at once in x
+ * within the bound b (NULL: every real x); the expectations by hand */
+static int
+none_positive(const char *a, const char *b2, const rs_bound_t *b)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_struct p[2];
+    const fmpz_mpoly_struct *pp[2] = {p + 0, p + 1};
+    int got;
+    fmpz_mpoly_ctx_init(ctx, 4, ORD_LEX);
+    fmpz_mpoly_init(p + 0, ctx);
+    fmpz_mpoly_init(p + 1, ctx);
+    assert_int_equal(fmpz_mpoly_set_str_pretty(p + 0, a, vars, ctx), 0);
+    if (b2 != NULL) assert_int_equal(fmpz_mpoly_set_str_pretty(p + 1, b2, vars, ctx), 0);
+    got = rs_positivity_none_positive(pp, b2 != NULL ? 2 : 1, 0, b, ctx);
+    print_message("%s, %s: none positive %d\n", a, b2 != NULL ? b2 : "-", got);
+    fmpz_mpoly_clear(p + 0, ctx);
+    fmpz_mpoly_clear(p + 1, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return got;
+}
+
+static void
+test_none_positive(void **state)
+{
+    rs_bound_t b[1];
+    (void) state;
+    rs_bounds_init(b, 1);
+    /* x > 0 with x <= 0: empty (SymPy's p4 under a nonpositive); x >= 0
+     * with x <= 0 is not strict: x > 0 is still empty, -x > 0 is not
+     * (x = -1) */
+    set_bound(b, NULL, 0, "0", 1);
+    assert_int_equal(none_positive("x", NULL, b), 1);
+    assert_int_equal(none_positive("-x", NULL, b), 0);
+    /* x^2 - 1 > 0 on x <= 0: x = -2 (value 3) */
+    assert_int_equal(none_positive("x^2 - 1", NULL, b), 0);
+    /* every real x: 1 - x^2 > 0 on (-1, 1) and x^2 - 4x + 3 = (x - 1)(x - 3)
+     * > 0 off [1, 3]: both on (-1, 1) (x = 0: 1 and 3) */
+    assert_int_equal(none_positive("1 - x^2", "x^2 - 4*x + 3", NULL), 0);
+    /* 1 - x^2 > 0 and -(x - 1)(x - 3) > 0: (-1, 1) and (1, 3), disjoint
+     * (the roots a and a - 2 of never-disjoint-roots.case) */
+    assert_int_equal(none_positive("1 - x^2", "-x^2 + 4*x - 3", NULL), 1);
+    /* x^2 - 2 > 0 and 3/2 - x > 0 on 1 <= x < 3/2: x^2 < 9/4 but > 2 on
+     * (sqrt 2, 3/2) (x = 29/20: 841/400 > 2): not empty; on 1 <= x <= 7/5
+     * (7/5 < sqrt 2, 49/25 < 2) empty */
+    set_bound(b, "1", 1, "3/2", 0);
+    assert_int_equal(none_positive("x^2 - 2", "3 - 2*x", b), 0);
+    set_bound(b, "1", 1, "7/5", 1);
+    assert_int_equal(none_positive("x^2 - 2", "3 - 2*x", b), 1);
+    /* a single point x = 1: x - 1/2 > 0 holds there, x - 1 > 0 does not */
+    set_bound(b, "1", 1, "1", 1);
+    assert_int_equal(none_positive("2*x - 1", NULL, b), 0);
+    assert_int_equal(none_positive("x - 1", NULL, b), 1);
+    /* not in x alone: undecided */
+    assert_int_equal(none_positive("x*y", NULL, NULL), 0);
+    rs_bounds_clear(b, 1);
+}
+
 int
 main(void)
 {
@@ -352,6 +410,7 @@ main(void)
         cmocka_unit_test(test_univariate_roots),
         cmocka_unit_test(test_negative_points),
         cmocka_unit_test(test_single_var),
+        cmocka_unit_test(test_none_positive),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
