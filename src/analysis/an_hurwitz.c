@@ -46,6 +46,7 @@ static int never_holds(const void *data, fmpq *const *pt, const rs_scheme_struct
 static void hurwitz_singular(json_t *o)
 {
     json_object_del(o, "branches");
+    json_object_del(o, "never_from");   /* the singular reason replaces a contradiction found */
     json_object_set_new(o, "conditions", json_array());
     json_object_set_new(o, "never", json_string(
         "the leading coefficient of det A(lambda) vanishes at these values (its degree in lambda drops): "

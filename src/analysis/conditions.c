@@ -160,6 +160,7 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
 {
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
     const fmpz_mpoly_struct **one = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct *));
+    slong *var = flint_malloc((n + 1) * sizeof(slong));
     fmpz_mpoly_t t, u;
     slong i, j, v, m;
     int found = 0;
@@ -188,11 +189,13 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
             }
         }
     }
-    /* per parameter, the conditions in it alone against its interval */
+    /* per parameter, the conditions in it alone against its interval (each
+     * condition's one variable found once: the minors can be large) */
+    for (i = 0; i < n && !found; i++) var[i] = rs_positivity_single_var(c[i], ctx);
     for (v = 0; v < s->nvars && !found; v++) {
         if (v == s->lambda_var) continue;
         for (m = 0, i = 0; i < n; i++)
-            if (rs_positivity_single_var(c[i], ctx) == v) one[m++] = c[i];
+            if (var[i] == v) one[m++] = c[i];
         if (m > 0 && rs_positivity_none_positive(one, m, v, v < nb ? b + v : NULL, ctx)) {
             size_t at;
             char range[200];
@@ -213,6 +216,7 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
     fmpz_mpoly_clear(t, ctx);
     fmpz_mpoly_clear(u, ctx);
     flint_free(one);
+    flint_free(var);
     return found;
 }
 
@@ -270,6 +274,10 @@ int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, 
     slong k, i, m, nmax = 0;
     int never = hb->nbranch > 0;
     if (json_object_get(o, "never") != NULL || hb->nbranch == 0) return 0;
+    /* one branch with an identically false condition: already "never
+     * stable", said in words by the report (rs_json_hurwitz_or) */
+    for (i = 0; hb->nbranch == 1 && i < hb->branch[0].ncond; i++)
+        if (hb->branch[0].cond[i].trivially_false) return 0;
     for (k = 0; k < hb->nbranch; k++) nmax = FLINT_MAX(nmax, hb->branch[k].ncond);
     b = run_bounds(run);
     c = flint_malloc((nmax + 1) * sizeof(fmpz_mpoly_struct *));
