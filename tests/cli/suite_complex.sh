@@ -557,10 +557,34 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse "modes" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*modes is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: modes refused with its reason (exit 2)"
-else fail "sdirk2 modes refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "map" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*map is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: map refused with its reason (exit 2)"
+else fail "sdirk2 map refusal: rc=$rc $(head -1 "$T/err")"; fi
+# modes and simulate over Q(sqrt 2) at z = -1: p = D lambda - N has the one
+# root R(-1) = (20 - 2 sqrt 2)/49 (by hand, sdirk2-point.case) and the
+# charpoly's two roots at 0; sigma = ln R(-1), omega 0, damping ratio 1; the
+# run's growth per step is R(-1) (one state, one root)
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json --analyse modes --analyse "simulate steps=400" "$SP" >"$T/spm.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/spm.json" <<'PY'
+import json, math, sys
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+m, sim = rs[0], rs[1]
+R = (20 - 2 * 2 ** 0.5) / 49
+bad = []
+if m.get("over") != "Q(sqrt 2)" or not m["exact_check"]["agree"] or m["exact_check"]["status"] != "stable": bad.append("exact_check")
+nz = [e for e in m["modes"] if "sigma" in e]
+if len(m["modes"]) != 3 or len(nz) != 1: bad.append("%d modes" % len(m["modes"]))
+elif abs(float(nz[0]["sigma"]) - math.log(R)) > 1e-13 or abs(float(nz[0]["omega"])) > 1e-13 \
+        or abs(float(nz[0]["damping_ratio"]) - 1) > 1e-13: bad.append("mode %r" % nz[0])
+if abs(sim["growth_approx"] - R) > 1e-6 or not sim["check"]["consistent"] or sim["verdict"]["status"] != "stable": bad.append("simulate %r" % sim.get("growth"))
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 z=-1: modes (sigma = ln R(-1)) and simulate (growth R(-1)) over Q(sqrt 2)"
+    else fail "sdirk2 z=-1 modes/simulate: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 modes/simulate: no python3"; fi
 "$RS" --analyse "region q, r" "$SD" >/dev/null 2>"$T/err"; rc=$?
 [ "$rc" = 2 ] && ok "sdirk2: region N1, N2 refused (exit 2)" || fail "sdirk2 region N1, N2: rc=$rc $(head -1 "$T/err")"
 # ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
@@ -623,6 +647,49 @@ PY
         else fail "sdirk2 coupled c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
     done
 else ok "skipped sdirk2 coupled JSON: no python3"; fi
+# modes and simulate over Q(sqrt 2) in the coupled scheme, against the same
+# sympy values: the two principal modes have |lambda| = rho (sigma = ln rho),
+# Re lambda = -(coefficient of lambda)/2 = 89/196 - sqrt 2/49 for both c, the
+# four roots at 0 no continuous equivalent; simulate's growth per step is
+# rho and 400 steps of it match, within the start's factor, the 400-step run
+# of the step map from the method's definition (|v| ~ 9e-119 at c = 1/2,
+# ~ 7e33 at c = 2)
+if command -v python3 >/dev/null 2>&1; then
+    for cv in 1/2 2; do
+        "$RS" --json --analyse modes --analyse "simulate steps=400" "$SC" --set "c=$cv" >"$T/scm.json" 2>"$T/err"; rc=$?
+        res=$(python3 - "$T/scm.json" "$cv" <<'PY'
+import json, math, sys
+from fractions import Fraction as F
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+cv = F(sys.argv[2])
+m, sim = rs[0], rs[1]
+rho = {F(1, 2): 0.5063744647344548791160227, F(2): 1.214223869745434236859886}[cv]
+bad = []
+zeros = [e for e in m["modes"] if "sigma" not in e]
+nz = [e for e in m["modes"] if "sigma" in e]
+if len(zeros) != 4 or len(nz) != 2: bad.append("modes %d + %d" % (len(zeros), len(nz)))
+for e in nz:
+    if abs(float(e["sigma"]) - math.log(rho)) > 1e-13: bad.append("sigma " + e["sigma"])
+    if abs(float(e["root"]["re"]) - (89 / 196 - 2 ** 0.5 / 49)) > 1e-13: bad.append("re " + e["root"]["re"])
+ck = m["exact_check"]
+if not ck["agree"] or ck["status"] != ("stable" if cv < 1 else "unstable"): bad.append("exact_check %r" % ck)
+a, c, h, g = 1.0, float(cv), 1.0, 1 - 2 ** 0.5 / 2
+y, x = 1.0, 1.0
+for _ in range(400):
+    k1 = (-a * y + c * x) / (1 + a * h * g)
+    k2 = (-a * (y + h * (1 - g) * k1) + c * x) / (1 + a * h * g)
+    y, x = y + h * ((1 - g) * k1 + g * k2), (x - h * c * y) / (1 + h)
+run = math.log10((y * y + x * x) ** 0.5)
+if abs(sim["growth_approx"] - rho) / rho > 1e-4: bad.append("growth %r" % sim["growth_approx"])
+if abs(400 * math.log10(sim["growth_approx"]) - run) > 2: bad.append("400 steps 10^%.1f vs run 10^%.1f" % (400 * math.log10(sim["growth_approx"]), run))
+if not sim["check"]["consistent"] or sim["recurrence"].startswith("scalar"): bad.append("check/recurrence")
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+        if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 coupled c=$cv: modes and simulate over Q(sqrt 2) agree with sympy's rho and a 400-step run"
+        else fail "sdirk2 coupled modes/simulate c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
+    done
+else ok "skipped sdirk2 coupled modes/simulate: no python3"; fi
 # root counts over Q(sqrt 2) (as the rational path prints them): --emit equations below has 6
 # unknowns (y, y_dot, y_k1, y_k2, x, x_dot), each row of degree 1 in lambda, so det has degree 6;
 # sympy's step map M is 2 x 2, so 4 roots are lambda = 0 and 2 are M's eigenvalues: both
