@@ -630,13 +630,9 @@ bad = []
 if monic != want: bad.append("monic p %r" % (monic,))
 if abs(float(rad["rho"]) - rho_want) > 1e-20 or not (float(rad["lower"]) <= rho_want <= float(rad["upper"])): bad.append("rho " + rad["rho"])
 # time-domain run of the step map from the method's definition (double)
-a, c, h, g = 1.0, float(cv), 1.0, 1 - 2 ** 0.5 / 2
-y, x = 1.0, 1.0
-for _ in range(400):
-    k1 = (-a * y + c * x) / (1 + a * h * g)
-    k2 = (-a * (y + h * (1 - g) * k1) + c * x) / (1 + a * h * g)
-    y, x = y + h * ((1 - g) * k1 + g * k2), (x - h * c * y) / (1 + h)
-norm = (y * y + x * x) ** 0.5
+sys.path.insert(0, "tests/cli")
+from sdirk2_steps import run as steps_run
+norm = steps_run(1.0, float(cv))
 run = "stable" if norm < 1e-50 else "unstable" if norm > 1e20 else "unclear"
 if run != st["status"]: bad.append("run %s (|v_400| = %g) vs %s" % (run, norm, st["status"]))
 if not st["schur_cohn_stable"] == (st["status"] == "stable"): bad.append("schur flag")
@@ -673,13 +669,9 @@ for e in nz:
     if abs(float(e["root"]["re"]) - (89 / 196 - 2 ** 0.5 / 49)) > 1e-13: bad.append("re " + e["root"]["re"])
 ck = m["exact_check"]
 if not ck["agree"] or ck["status"] != ("stable" if cv < 1 else "unstable"): bad.append("exact_check %r" % ck)
-a, c, h, g = 1.0, float(cv), 1.0, 1 - 2 ** 0.5 / 2
-y, x = 1.0, 1.0
-for _ in range(400):
-    k1 = (-a * y + c * x) / (1 + a * h * g)
-    k2 = (-a * (y + h * (1 - g) * k1) + c * x) / (1 + a * h * g)
-    y, x = y + h * ((1 - g) * k1 + g * k2), (x - h * c * y) / (1 + h)
-run = math.log10((y * y + x * x) ** 0.5)
+sys.path.insert(0, "tests/cli")
+from sdirk2_steps import run as steps_run
+run = math.log10(steps_run(1.0, float(cv)))
 if abs(sim["growth_approx"] - rho) / rho > 1e-4: bad.append("growth %r" % sim["growth_approx"])
 if abs(400 * math.log10(sim["growth_approx"]) - run) > 2: bad.append("400 steps 10^%.1f vs run 10^%.1f" % (400 * math.log10(sim["growth_approx"]), run))
 if not sim["check"]["consistent"] or sim["recurrence"].startswith("scalar"): bad.append("check/recurrence")
@@ -721,6 +713,21 @@ print("%d inside, 0 on, %d outside the unit circle; lambda = 0 (x4)" % (n + 4, 2
     "$RS" --analyse stability "$SC" --set 'c=1/2+2*i' >"$T/scc.txt" 2>"$T/err"
     if grep -qF "unstable: $want" "$T/scc.txt"; then ok "sdirk2 coupled c=1/2+2i: $want (one root each side)"
     else fail "sdirk2 coupled c=1/2+2i counts: want '$want', $(grep verdict "$T/scc.txt") $(head -1 "$T/err")"; fi
+    # simulate at that complex value (p's scalar recurrence over Q(sqrt 2)(i)): growth = the
+    # larger modulus by the same quadratic formula
+    rmax=$(python3 -c '
+import cmath
+s = 2 ** 0.5
+e1, e4, b = 109/392 - 3/196*s, 68/49 + 3/49*s, -89/98 + 2/49*s
+e = e1 + (e4 - e1) * (complex(-15/4, 2) - 1/4) / (4 - 1/4)
+d = cmath.sqrt(b * b - 4 * e)
+print(max(abs((-b + d) / 2), abs((-b - d) / 2)))')
+    "$RS" --json --analyse "simulate steps=400" "$SC" --set 'c=1/2+2*i' | tr -d ' \n' >"$T/scs.json" 2>"$T/err"
+    g=$(sed -n 's/.*"growth_approx":\([0-9.e+-]*\).*/\1/p' "$T/scs.json")
+    if grep -q '"consistent":true' "$T/scs.json" && [ -n "$g" ] \
+       && python3 -c "import sys; sys.exit(0 if abs($g - $rmax) < 1e-6 * $rmax else 1)"; then
+        ok "sdirk2 coupled c=1/2+2i: simulate growth $g = max |root| $rmax"
+    else fail "sdirk2 coupled c=1/2+2i simulate: growth '$g' want $rmax $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 coupled mixed counts: no python3"; fi
 
 # ---- jury and hurwitz over Q(sqrt 2)[a, c] (issue 15) ----
