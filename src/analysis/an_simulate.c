@@ -563,8 +563,9 @@ static int qd_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
             sim_verdict_check(run, o, vst, rc, arf_get_d(arb_midref(t1), ARF_RND_NEAR), n, steps,
                               "exact (Schur-Cohn over Q(sqrt d)(i) and the certified roots)");
         else
-            json_object_set_new(o, "check", json_pack("{s:s}", "note", "not compared: the verdict over Q(sqrt d) "
-                                                      "is undecided (a root on or too near the unit circle)"));
+            json_object_set_new(o, "verdict", json_pack("{s:s,s:s}", "status", "undecided", "note", "not compared "
+                                                        "with the run: a root on or too near the unit circle, "
+                                                        "marginal and unstable not told apart over Q(sqrt d)"));
     }
     if (r == RS_OK) {
         json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));

@@ -141,6 +141,10 @@ void rs_render_simulate(rs_render_t *r, const json_t *o)
                  json_is_true(json_object_get(ck, "consistent")) ? "consistent with the run"
                                                                 : rs_render_jstr(ck, "disagreement"));
         rs_render_line(r, "verdict", "%s", buf);
+    } else if (json_object_get(o, "verdict")) {   /* over Q(sqrt d): an undecided verdict is not compared */
+        const json_t *vd = json_object_get(o, "verdict");
+        rs_render_linef(r, "verdict", "%s (exact): %s", rs_render_jstr(vd, "status"),
+                        rs_render_jstr(vd, "note") ? rs_render_jstr(vd, "note") : "not compared");
     }
     rs_render_assigned(r, o);
 }

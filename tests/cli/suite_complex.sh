@@ -552,6 +552,13 @@ else ok "skipped sdirk2 astability JSON: no python3"; fi
 check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
 check_status "sdirk2 z=3 (R = 76 + 54 sqrt 2)" unstable "$SP" --set 'q=3'
 check_status "sdirk2 z=0 (R = 1)" marginal "$SP" --set 'q=0'
+# simulate there: R = 1 is a root on the circle, which the verdict over Q(sqrt 2) leaves undecided
+# (marginal and unstable not told apart): the run (growth 1) is reported, not compared, exit 0
+"$RS" --analyse "simulate steps=400" "$SP" --set 'q=0' >"$T/sp0.txt" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ] && grep -q "growth       1.00000000000000 per step" "$T/sp0.txt" \
+   && grep -q "verdict      undecided (exact): not compared" "$T/sp0.txt"; then
+    ok "sdirk2 z=0: simulate growth 1, undecided verdict not compared"
+else fail "sdirk2 z=0 simulate: rc=$rc $(grep -E 'growth|verdict' "$T/sp0.txt") $(head -1 "$T/err")"; fi
 # |R(-1 + 2i)|^2 = 152/867 + 16/289 sqrt 2 ~ 0.253 (A-stable: inside Re z < 0)
 check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
