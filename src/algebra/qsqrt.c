@@ -402,20 +402,26 @@ static void qd_arb(arb_t r, const rs_qd_struct *a, const arb_t sd, slong prec)
     arb_clear(t);
 }
 
+void rs_qdc_vec_get_acb(acb_ptr z, const rs_qdc_struct *c, slong len, slong d, slong prec)
+{
+    arb_t sd;
+    slong k;
+    arb_init(sd);
+    arb_sqrt_ui(sd, (ulong) d, prec);
+    for (k = 0; k < len; k++) {
+        qd_arb(acb_realref(z + k), c[k].re, sd, prec);
+        qd_arb(acb_imagref(z + k), c[k].im, sd, prec);
+    }
+    arb_clear(sd);
+}
+
 int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec)
 {
     acb_poly_t p;
-    arb_t sd;
-    slong k;
     int ok = 0;
     acb_poly_init(p);
-    arb_init(sd);
-    arb_sqrt_ui(sd, (ulong) d, prec);
     acb_poly_fit_length(p, n + 1);
-    for (k = 0; k <= n; k++) {
-        qd_arb(acb_realref(p->coeffs + k), c[k].re, sd, prec);
-        qd_arb(acb_imagref(p->coeffs + k), c[k].im, sd, prec);
-    }
+    rs_qdc_vec_get_acb(p->coeffs, c, n + 1, d, prec);
     _acb_poly_set_length(p, n + 1);
     _acb_poly_normalise(p);
     if (acb_poly_degree(p) == n && !acb_contains_zero(p->coeffs + n)) {
@@ -423,7 +429,6 @@ int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec
         ok = _acb_poly_validate_roots(z, p->coeffs, n + 1, prec) == n;
     }
     acb_poly_clear(p);
-    arb_clear(sd);
     return ok;
 }
 

@@ -84,6 +84,8 @@ int rs_qdc_roots_count(slong *below, slong *above, const rs_qdc_struct *c, slong
  * precision prec (sqrt d a ball): 1, or 0 when they are not isolated there
  * (a repeated root, or prec too low) */
 int rs_qdc_roots(acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong prec);
+/* c[0..len) as complex balls z[0..len) at precision prec (sqrt d a ball) */
+void rs_qdc_vec_get_acb(acb_ptr z, const rs_qdc_struct *c, slong len, slong d, slong prec);
 
 /* R = N/D (real coefficients in Q(sqrt d), lowest terms, D(0) != 0) as a
  * one-step method's stability function (Hairer and Wanner, Solving ODEs II,

@@ -7,6 +7,7 @@
 #include <fmpq_poly.h>
 #include <acb_poly.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "numeric/modes.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
@@ -136,12 +137,15 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     slong nref = 0, i, prec = 128, digits = 15;
     json_t *o;
     int r;
-    int cx = rs_an_complex_conds_applies(run);
+    int qd = run->m->qd != NULL, cx = !qd && rs_an_complex_conds_applies(run);
     fmpq_poly_t pr, pi;
     json_t *at = NULL;
     fmpz_poly_init(p);
     fmpq_poly_init(pr); fmpq_poly_init(pi);
-    if (cx) {
+    if (qd) {
+        /* over Q(sqrt d): the variant only evaluates h and reference */
+        r = rs_run_default_variant(run, &v);
+    } else if (cx) {
         /* p over Q(i): its own roots, not those of the real block form p conj(p) */
         r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
     } else {
@@ -179,10 +183,25 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     o = NULL;
     /* a real dead-beat p = c (det A = c lambda^k, the roots at 0 divided out):
      * no mode, as `stability` and `radius` accept it */
-    if (r == RS_OK && (cx || fmpz_poly_degree(p) >= 1))
+    if (r == RS_OK && qd) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("modes"));
+        r = rs_an_qd_modes_roots(rr, o, run, q, digits);
+        if (r == RS_OK) {
+            json_object_set_new(o, "roots_of", json_string(
+                "p over Q(sqrt d)(i) at the set values (acb_poly_find_roots, validated; sqrt d a ball) and the "
+                "roots at 0 the charpoly divided out"));
+            rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
+            json_object_set_new(o, "decided_by", json_string("certified"));
+            json_array_append_new(run->results, o);
+        } else {
+            json_decref(o);
+        }
+        o = NULL;
+    } else if (r == RS_OK && (cx || fmpz_poly_degree(p) >= 1))
         r = cx ? modes_cx_roots(rr, pr, pi, run->opt->max_prec, run->err)
                : rs_radius_fmpz_poly(rr, p, 30, run->opt->max_prec, run->err);
-    if (r == RS_OK) {
+    if (r == RS_OK && !qd) {
         o = json_object();
         json_object_set_new(o, "analysis", json_string("modes"));
         if (cx) {
@@ -196,7 +215,7 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
         rs_an_modes_json(o, rr, h, refs, nref, prec, digits);
         if (cx) r = complex_check(run, rr, pr, pi, o);
     }
-    if (r == RS_OK) {
+    if (r == RS_OK && !qd) {
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
         json_array_append_new(run->results, o);

@@ -14,6 +14,9 @@
  *    stability then also decides |D|^2 - |N|^2 in Q(sqrt d), astability runs
  *    the E-polynomial and the stability intervals (rs_qd_astab_decide,
  *    rs_qd_onestep_interval), checked against each other.
+ *  - modes and simulate at set values (an_modes.c, an_simulate.c): the
+ *    certified roots of p and the exact verdict from here
+ *    (rs_an_qd_modes_roots, rs_an_qd_point).
  * Every other analysis is refused at its line (rs_an_qd_check). */
 #include <stdlib.h>
 #include <string.h>
@@ -47,7 +50,7 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     const char *n = req->def->name;
     if (run->m->qd == NULL) return RS_OK;
     if (strcmp(n, "charpoly") == 0 || strcmp(n, "stability") == 0 || strcmp(n, "astability") == 0
-        || strcmp(n, "radius") == 0)
+        || strcmp(n, "radius") == 0 || strcmp(n, "modes") == 0 || strcmp(n, "simulate") == 0)
         return RS_OK;
     /* the conditions over Q(sqrt d)[params] (an_qd_conds.c): real parameters */
     if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0
@@ -57,7 +60,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected real set values: %s over Q(sqrt 2) "
                             "does not run at a complex set value (stability and radius do)", n);
     return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability, radius, astability, jury, hurwitz, region or claim: %s is not available for "
+                        "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, region or claim: %s is "
+                        "not available for "
                         "rk sdirk2 (its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
 }
 
@@ -576,11 +580,32 @@ static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_
     return RS_OK;
 }
 
+/* z[0..n): the roots of c[0..n] as isolated balls of digits relative
+ * digits, the first precision from 3.33 digits + 64 bits doubling up to
+ * max_prec that gives them; rr's rho, prec and digits from them; 0 when
+ * none does (a repeated root) */
+static int qd_roots_cert(rs_radius_t rr, acb_ptr z, const rs_qdc_struct *c, slong n, slong d, slong digits,
+                         slong max_prec)
+{
+    slong prec, k;
+    int ok = 0;
+    for (prec = 3.33 * digits + 64; prec <= max_prec && !ok; prec *= 2) {
+        ok = rs_qdc_roots(z, c, n, d, prec);
+        for (k = 0; ok && k < n; k++) ok = acb_rel_accuracy_bits(z + k) >= 3.33 * digits;
+        if (ok) {
+            rs_radius_set_rho(rr, z, n, prec);
+            rr->prec = prec;
+            rr->digits = digits;
+        }
+    }
+    return ok;
+}
+
 int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
     const rs_optval_t *dg = rs_an_opt(req, "digits");
-    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, n = -1, k, prec, d;
+    slong digits = dg->at != NULL ? dg->num : run->opt->default_digits, n = -1, k, d;
     rs_qdc_struct *c = NULL;
     qd_cp_t P;
     int r = qd_cp_get(&P, run, q), ok = 0, sc = 0;
@@ -592,15 +617,7 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req)
         rs_radius_t rr;
         acb_ptr z = _acb_vec_init(n);
         rs_radius_init(rr);
-        for (prec = 3.33 * digits + 64; prec <= run->opt->max_prec && !ok; prec *= 2) {
-            ok = rs_qdc_roots(z, c, n, d, prec);
-            for (k = 0; ok && k < n; k++) ok = acb_rel_accuracy_bits(z + k) >= 3.33 * digits;
-            if (ok) {
-                rs_radius_set_rho(rr, z, n, prec);
-                rr->prec = prec;
-                rr->digits = digits;
-            }
-        }
+        ok = qd_roots_cert(rr, z, c, n, d, digits, run->opt->max_prec);
         if (!ok) {
             r = rs_req_error(run, q, q->text, RS_ERR_LIMIT, "radius over Q(sqrt d): the roots are not isolated up "
                              "to max-prec (a repeated root?)%s", "");
@@ -895,5 +912,127 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
     rs_qd_iv_clear(iiv);
     rs_qd_astab_clear(a);
     qd_r_clear(&R);
+    return r;
+}
+
+/* ---- modes and simulate at the set values (an_modes.c, an_simulate.c) ------------------- */
+
+/* the exact verdict at the set values from c[0..n] (n >= 1): stable by
+ * Schur-Cohn over Q(sqrt d)(i), unstable when a root is certified outside;
+ * the counts from the counting recursion (the roots at 0 z0 inside).  0
+ * when neither decides (a root on or too near the circle: marginal and
+ * unstable are not told apart) or the counts are not available */
+static int qd_verdict(rs_status_t *st, rs_rootcount_t rc, const rs_qdc_struct *c, slong n, slong z0, slong d)
+{
+    slong z = 0, in;
+    int sc = rs_qdc_schur_stable(c, n, d), ar = sc == 1 ? 1 : rs_qdc_roots_inside(c, n, d);
+    if (sc != 1 && ar != 0) return 0;
+    while (z < n && rs_qd_is_zero(c[z].re) && rs_qd_is_zero(c[z].im)) z++;
+    if (!rs_qdc_schur_count(&in, c + z, n - z, d)) return 0;
+    rc->degree = n + z0;
+    rc->inside = in + z + z0;
+    rc->at_zero = z + z0;
+    rc->on = 0;
+    rc->outside = n - z - in;
+    *st = sc == 1 ? RS_STATUS_STABLE : RS_STATUS_UNSTABLE;
+    return 1;
+}
+
+int rs_an_qd_point(acb_ptr *z, slong *n, int *decided, rs_status_t *st, rs_rootcount_t rc, json_t *o,
+                   rs_run_t *run, const rs_request_t *q, slong prec)
+{
+    rs_qdc_struct *c = NULL;
+    slong d = run->sym->sqrt_d;
+    qd_cp_t P;
+    int r = qd_cp_get(&P, run, q);
+    *z = NULL;
+    *n = -1;
+    *decided = 0;
+    if (r == RS_OK) r = qd_cp_at(&c, n, &P, run, q);
+    if (r == RS_OK && *n < 1)
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "p has degree %s in lambda at these values over Q(sqrt d): "
+                         "no root and no recurrence", *n < 0 ? "-inf (it vanishes)" : "0");
+    if (r == RS_OK) {
+        *z = _acb_vec_init(*n + 1);
+        rs_qdc_vec_get_acb(*z, c, *n + 1, d, prec);
+        *decided = qd_verdict(st, rc, c, *n, P.zeros, d);
+        qd_generic_common(o, &P, run);
+        {   /* the certified spectral radius beside the measured growth */
+            rs_radius_t rr;
+            acb_ptr w = _acb_vec_init(*n);
+            rs_radius_init(rr);
+            if (qd_roots_cert(rr, w, c, *n, d, 15, run->opt->max_prec))
+                json_object_set_new(o, "radius", rs_json_arb(rr->rho, 15));
+            rs_radius_clear(rr);
+            _acb_vec_clear(w, *n);
+        }
+        json_object_set_new(o, "poly", json_str_free(qdc_poly_str(c, *n, d)));
+        json_object_set_new(o, "at_zero_divided_out", json_integer(P.zeros));
+        json_object_set_new(o, "substituted", qd_substituted(&P, run));
+    }
+    if (c != NULL) rs_qdc_vec_clear(c, P.degree + 1);
+    qd_cp_clear(&P, run->sym);
+    return r;
+}
+
+int rs_an_qd_modes_roots(rs_radius_t rr, json_t *o, rs_run_t *run, const rs_request_t *q, slong digits)
+{
+    rs_qdc_struct *c = NULL;
+    slong d = run->sym->sqrt_d, n = -1, k, in = 0, out = 0;
+    rs_rootcount_t rc;
+    rs_status_t st;
+    qd_cp_t P;
+    int r = qd_cp_get(&P, run, q), decided = 0;
+    rs_rootcount_init(rc);
+    if (r == RS_OK) r = qd_cp_at(&c, &n, &P, run, q);
+    if (r == RS_OK && n < 1)
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "modes: p has no root at these values%s", "");
+    if (r == RS_OK) {
+        /* lambda^zeros p: the roots at 0 the charpoly divided out are modes
+         * too (no continuous equivalent), as on the rational path */
+        acb_ptr z = _acb_vec_init(n + P.zeros);
+        if (!qd_roots_cert(rr, z + P.zeros, c, n, d, digits, run->opt->max_prec)) {
+            _acb_vec_clear(z, n + P.zeros);
+            r = rs_req_error(run, q, q->text, RS_ERR_LIMIT, "modes over Q(sqrt d): the roots are not isolated up "
+                             "to max-prec (a repeated root?)%s", "");
+        } else {
+            rr->roots = z;
+            rr->nroots = n + P.zeros;
+            rr->mult = flint_malloc(rr->nroots * sizeof(slong));
+            for (k = 0; k < rr->nroots; k++) rr->mult[k] = 1;
+            decided = qd_verdict(&st, rc, c, n, P.zeros, d);
+            /* the certified moduli against the exact counts: a root
+             * certified inside (outside) needs one counted there */
+            for (k = 0; k < rr->nroots; k++) {
+                arb_t m, one;
+                arb_init(m);
+                arb_init(one);
+                arb_one(one);
+                acb_abs(m, z + k, rr->prec);
+                if (arb_lt(m, one)) in++;
+                else if (arb_gt(m, one)) out++;
+                arb_clear(m);
+                arb_clear(one);
+            }
+            qd_generic_common(o, &P, run);
+            json_object_set_new(o, "poly", json_str_free(qdc_poly_str(c, n, d)));
+            if (decided) {
+                int agree = in <= rc->inside && out <= rc->outside;
+                json_object_set_new(o, "exact_check", json_pack("{s:s,s:I,s:I,s:I,s:I,s:I,s:I,s:b}", "status",
+                                    rs_status_name(st), "inside", (json_int_t) rc->inside, "on", (json_int_t) 0,
+                                    "outside",
+                                    (json_int_t) rc->outside, "certified_inside", (json_int_t) in,
+                                    "certified_outside", (json_int_t) out, "modulus_undecided",
+                                    (json_int_t) (rr->nroots - in - out), "agree", agree));
+                if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
+            } else {
+                json_object_set_new(o, "exact_check", json_pack("{s:s}", "status", "undecided"));
+            }
+            json_object_set_new(o, "substituted", qd_substituted(&P, run));
+        }
+    }
+    rs_rootcount_clear(rc);
+    if (c != NULL) rs_qdc_vec_clear(c, P.degree + 1);
+    qd_cp_clear(&P, run->sym);
     return r;
 }

@@ -6,7 +6,7 @@
 #include "analysis/registry.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
- * the analysis is not one of charpoly, stability, astability, radius, jury,
+ * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
  * hurwitz (the last two with real set values only) */
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req);
 /* the case is Dahlquist's test equation: one subsystem, one state y' = F,
@@ -32,5 +32,18 @@ int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run
 char *rs_an_qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s, int spaced);
 /* "over", the method ("method", or "rk" when o names its test) and p0, p1 */
 void rs_an_qd_json_p(json_t *o, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, rs_run_t *run);
+
+/* simulate at the set values: p there as complex balls z[0..*n] (prec bits,
+ * sqrt d a ball; _acb_vec_clear(*z, *n + 1)), the exact verdict (*decided 1:
+ * st, rc from Schur-Cohn over Q(sqrt d)(i) and the certified roots), o's
+ * "over", "rk", "p0", "p1", "poly", "at_zero_divided_out", "radius", "substituted";
+ * an input error when p is constant there */
+int rs_an_qd_point(acb_ptr *z, slong *n, int *decided, rs_status_t *st, rs_rootcount_t rc, json_t *o,
+                   rs_run_t *run, const rs_request_t *q, slong prec);
+/* modes at the set values: rr's roots (the certified isolated roots of p to
+ * digits, and the roots at 0 the charpoly divided out), o's "over", "rk",
+ * "p0", "p1", "poly", "exact_check" (certified moduli against the Schur-Cohn
+ * counts; a disagreement marks the run inconsistent) and "substituted" */
+int rs_an_qd_modes_roots(rs_radius_t rr, json_t *o, rs_run_t *run, const rs_request_t *q, slong digits);
 
 #endif

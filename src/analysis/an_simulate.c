@@ -8,6 +8,7 @@
 #include <acb.h>
 #include <fmpq_poly.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "stability/schur_complex.h"
 
 /* ---- simulate: cross-check against the exact verdict ---------------------------- */
@@ -83,19 +84,37 @@ static int simulate_check(rs_run_t *run, json_t *o, const rs_variant_t *v, const
 
 /* ---- simulate ------------------------------------------------------------------------ */
 
-/* coefficient of lambda^k of a (numeric) entry */
-static void entry_coeff(fmpq_t c, const fmpq_mpoly_t e, slong k, const rs_scheme_t s)
+/* coefficient of lambda^k of a (numeric) entry as a ball: over Q(sqrt d)
+ * (rk sdirk2) the entry is a polynomial in sqrt(d), evaluated at its ball */
+static void entry_coeff(arb_t out, const fmpq_mpoly_t e, slong k, const rs_scheme_t s, slong prec)
 {
-    fmpq_mpoly_t t;
-    ulong kk;
-    slong lv = s->lambda_var;
-    if (k < 0) { fmpq_zero(c); return; }
-    kk = (ulong) k;
-    fmpq_mpoly_init(t, s->ctx);
-    fmpq_mpoly_get_coeff_vars_ui(t, e, &lv, &kk, 1, s->ctx);
-    if (fmpq_mpoly_is_zero(t, s->ctx)) fmpq_zero(c);
-    else fmpq_mpoly_get_fmpq(c, t, s->ctx);
-    fmpq_mpoly_clear(t, s->ctx);
+    fmpq_t c;
+    arb_t sd, t;
+    slong v[2] = {s->lambda_var, s->sqrt_var}, j, top;
+    ulong ex[2];
+    arb_zero(out);
+    if (k < 0) return;
+    top = s->sqrt_d > 0 ? fmpq_mpoly_degree_si(e, s->sqrt_var, s->ctx) : 0;
+    fmpq_init(c);
+    arb_init(sd);
+    arb_init(t);
+    if (s->sqrt_d > 0) arb_sqrt_ui(sd, (ulong) s->sqrt_d, prec);
+    for (j = top; j >= 0; j--) {    /* Horner in sqrt(d) */
+        fmpq_mpoly_t m;
+        fmpq_mpoly_init(m, s->ctx);
+        ex[0] = (ulong) k;
+        ex[1] = (ulong) j;
+        fmpq_mpoly_get_coeff_vars_ui(m, e, v, ex, s->sqrt_d > 0 ? 2 : 1, s->ctx);
+        if (fmpq_mpoly_is_zero(m, s->ctx)) fmpq_zero(c);
+        else fmpq_mpoly_get_fmpq(c, m, s->ctx);
+        arb_set_fmpq(t, c, prec);
+        if (j < top) arb_mul(out, out, sd, prec);
+        arb_add(out, out, t, prec);
+        fmpq_mpoly_clear(m, s->ctx);
+    }
+    fmpq_clear(c);
+    arb_clear(sd);
+    arb_clear(t);
 }
 
 /* The recurrence stepped by simulate: for each unknown u its shifts mu_u..M_u
@@ -112,9 +131,9 @@ typedef struct {
     arb_ptr rhs, znew;
 } sim_t;
 
-/* the shifts of each unknown and L; the scalar recurrence of p when L is
- * singular or the case is a `char` polynomial */
-static void sim_shifts(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, fmpq_t c)
+/* the shifts of each unknown and L; the scalar recurrence of p (pc[0..N],
+ * balls) when L is singular or the case is a `char` polynomial */
+static void sim_shifts(sim_t *sm, const rs_scheme_struct *s, arb_srcptr pc, slong N)
 {
     slong n = sm->n, u, i;
     if (s->from_char) sm->scalar = 1;
@@ -133,28 +152,26 @@ static void sim_shifts(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p
         if (sm->Mu[u] == WORD_MIN) sm->scalar = 1;
     }
     for (i = 0; i < n && !sm->scalar; i++)
-        for (u = 0; u < n; u++) {
-            entry_coeff(c, s->M + i * n + u, sm->Mu[u] - s->row_shift[i], s);
-            arb_set_fmpq(arb_mat_entry(sm->L, i, u), c, sm->prec);
-        }
+        for (u = 0; u < n; u++)
+            entry_coeff(arb_mat_entry(sm->L, i, u), s->M + i * n + u, sm->Mu[u] - s->row_shift[i], s, sm->prec);
     if (!sm->scalar && !arb_mat_inv(sm->Linv, sm->L, sm->prec)) sm->scalar = 1;
     if (sm->scalar) {
         /* the scalar recurrence of p: c_N x[n+N] = -sum c_i x[n+i] */
-        slong N = fmpz_poly_degree(p);
         arb_mat_clear(sm->L);
         arb_mat_clear(sm->Linv);
         sm->n = 1;
         arb_mat_init(sm->L, 1, 1);
         arb_mat_init(sm->Linv, 1, 1);
-        arb_set_fmpz(arb_mat_entry(sm->L, 0, 0), p->coeffs + N);
+        arb_set(arb_mat_entry(sm->L, 0, 0), pc + N);
         arb_inv(arb_mat_entry(sm->Linv, 0, 0), arb_mat_entry(sm->L, 0, 0), sm->prec);
         sm->Mu[0] = N;
         sm->mu[0] = 0;
     }
 }
 
-/* the recurrence, a seeded random start in [-1, 1] and the coefficients */
-static void sim_init(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, slong prec, flint_rand_t st)
+/* the recurrence, a seeded random start in [-1, 1] and the coefficients;
+ * pc[0..N]: p's coefficients as balls, for the scalar recurrence */
+static void sim_init(sim_t *sm, const rs_scheme_struct *s, arb_srcptr pc, slong N, slong prec, flint_rand_t st)
 {
     slong n, u, i;
     fmpq_t c;
@@ -166,7 +183,7 @@ static void sim_init(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, 
     sm->mu = flint_calloc(n, sizeof(slong));
     arb_mat_init(sm->L, n, n);
     arb_mat_init(sm->Linv, n, n);
-    sim_shifts(sm, s, p, c);
+    sim_shifts(sm, s, pc, N);
     n = sm->n;
     sm->hist = flint_malloc(n * sizeof(arb_ptr));
     for (u = 0; u < n; u++) {
@@ -186,11 +203,8 @@ static void sim_init(sim_t *sm, const rs_scheme_struct *s, const fmpz_poly_t p, 
             slong sft, len = sm->Mu[u] - sm->mu[u];
             arb_ptr cv = _arb_vec_init(len > 0 ? len : 1);
             for (sft = sm->mu[u]; sft < sm->Mu[u]; sft++) {
-                if (sm->scalar) {
-                    fmpz_set(fmpq_numref(c), p->coeffs + sft);
-                    fmpz_one(fmpq_denref(c));
-                } else entry_coeff(c, s->M + i * n + u, sft - s->row_shift[i], s);
-                arb_set_fmpq(cv + (sft - sm->mu[u]), c, prec);
+                if (sm->scalar) arb_set(cv + (sft - sm->mu[u]), pc + sft);
+                else entry_coeff(cv + (sft - sm->mu[u]), s->M + i * n + u, sft - s->row_shift[i], s, prec);
             }
             sm->cf[i * n + u] = cv;
         }
@@ -324,47 +338,59 @@ static int simulate_growth(rs_run_t *run, json_t *o, const rs_variant_t *v, cons
     return r;
 }
 
+/* "analysis", "steps", "seed", "precision_bits" of a new simulate result */
+static json_t *sim_json_head(slong steps, slong seed, slong prec)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "analysis", json_string("simulate"));
+    json_object_set_new(o, "steps", json_integer(steps));
+    json_object_set_new(o, "seed", json_integer(seed));
+    json_object_set_new(o, "precision_bits", json_integer(prec));
+    return o;
+}
+
+static const char *sim_recurrence_str(const sim_t *sm)
+{
+    return sm->scalar ? "scalar recurrence of p(lambda) (the equations' leading matrix is singular or absent)"
+                      : "the case's equations as written, solved for the newest value of every unknown at each step";
+}
+
+/* the equations' run: the time limit's estimate, then steps steps with the
+ * window sums of log |state| in lm, le */
+static int sim_run(sim_t *sm, rs_run_t *run, const rs_an_req_t *req, slong steps, arb_t lm, arb_t le)
+{
+    arb_t norm, t1, t2;
+    slong step;
+    int r;
+    arb_init(norm); arb_init(t1); arb_init(t2);
+    r = sim_estimate(sm, run, req, steps);
+    for (step = 1; step <= steps && r == RS_OK; step++) {
+        if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
+        sim_step(sm, norm, t1);
+        sim_window_add(lm, le, norm, step, steps, t2);
+    }
+    arb_clear(norm); arb_clear(t1); arb_clear(t2);
+    return r;
+}
+
 /* ---- simulate at complex set values ------------------------------------------------- */
 
-/* The scalar recurrence of p over Q(i), c_n x[k+n] = -sum_{j<n} c_j x[k+j],
- * with complex coefficients (acb midpoints at prec bits) from a seeded random
- * complex start in [-1, 1]^2; growth measured as for real cases and checked
- * against the exact Q(i) verdict (rs_simulate_disagreement: exit 3). */
-static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong seed, slong prec)
+/* The scalar recurrence c_n x[k+n] = -sum_{j<n} c_j x[k+j] with complex
+ * ball coefficients c[0..n] (acb midpoints at prec bits) from a seeded
+ * random complex start in [-1, 1]^2: the window sums lm, le of log |x|. */
+static int acb_recurrence_run(arb_t lm, arb_t le, rs_run_t *run, const rs_an_req_t *req, acb_srcptr c, slong n,
+                              slong steps, slong seed, slong prec)
 {
-    fmpq_poly_t pr, pi;
-    json_t *at = NULL, *o;
-    rs_variant_t *v = NULL;
-    slong n, j, step;
-    acb_ptr c, x;
-    acb_t lcinv, t;
-    arb_t norm, a, lm, le, t1, t2;
+    slong j, step;
+    acb_ptr x = _acb_vec_init(n + 1);
+    acb_t lcinv;
+    arb_t norm, a, t2;
     fmpq_t qr, qi;
     flint_rand_t st;
     int r;
-    fmpq_poly_init(pr); fmpq_poly_init(pi);
-    r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
-    n = FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi));
-    if (r == RS_OK && n < 1) {
-        r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "simulate: p has degree %s in lambda at the complex "
-                         "set values: no recurrence to run", n < 0 ? "-inf (it vanishes)" : "0");
-    }
-    if (r != RS_OK) {
-        fmpq_poly_clear(pr); fmpq_poly_clear(pi);
-        json_decref(at);
-        return r;
-    }
-    c = _acb_vec_init(n + 1);
-    x = _acb_vec_init(n + 1);
-    acb_init(lcinv); acb_init(t);
-    arb_init(norm); arb_init(a); arb_init(lm); arb_init(le); arb_init(t1); arb_init(t2);
+    acb_init(lcinv);
+    arb_init(norm); arb_init(a); arb_init(t2);
     fmpq_init(qr); fmpq_init(qi);
-    for (j = 0; j <= n; j++) {
-        fmpq_poly_get_coeff_fmpq(qr, pr, j);
-        fmpq_poly_get_coeff_fmpq(qi, pi, j);
-        arb_set_fmpq(acb_realref(c + j), qr, prec);
-        arb_set_fmpq(acb_imagref(c + j), qi, prec);
-    }
     acb_inv(lcinv, c + n, prec);
     flint_randinit(st);
     flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
@@ -399,12 +425,51 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
         for (j = 0; j < n; j++) acb_swap(x + j, x + j + 1);
         sim_window_add(lm, le, norm, step, steps, t2);
     }
+    flint_randclear(st);
+    _acb_vec_clear(x, n + 1);
+    acb_clear(lcinv);
+    arb_clear(norm); arb_clear(a); arb_clear(t2);
+    fmpq_clear(qr); fmpq_clear(qi);
+    return r;
+}
+
+/* The scalar recurrence of p over Q(i) from a complex start; growth measured
+ * as for real cases and checked against the exact Q(i) verdict
+ * (rs_simulate_disagreement: exit 3). */
+static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong seed, slong prec)
+{
+    fmpq_poly_t pr, pi;
+    json_t *at = NULL, *o;
+    rs_variant_t *v = NULL;
+    slong n, j;
+    acb_ptr c;
+    arb_t lm, le, t1;
+    fmpq_t qr, qi;
+    int r;
+    fmpq_poly_init(pr); fmpq_poly_init(pi);
+    r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
+    n = FLINT_MAX(fmpq_poly_degree(pr), fmpq_poly_degree(pi));
+    if (r == RS_OK && n < 1) {
+        r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "simulate: p has degree %s in lambda at the complex "
+                         "set values: no recurrence to run", n < 0 ? "-inf (it vanishes)" : "0");
+    }
+    if (r != RS_OK) {
+        fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+        json_decref(at);
+        return r;
+    }
+    c = _acb_vec_init(n + 1);
+    arb_init(lm); arb_init(le); arb_init(t1);
+    fmpq_init(qr); fmpq_init(qi);
+    for (j = 0; j <= n; j++) {
+        fmpq_poly_get_coeff_fmpq(qr, pr, j);
+        fmpq_poly_get_coeff_fmpq(qi, pi, j);
+        arb_set_fmpq(acb_realref(c + j), qr, prec);
+        arb_set_fmpq(acb_imagref(c + j), qi, prec);
+    }
+    r = acb_recurrence_run(lm, le, run, req, c, n, steps, seed, prec);
     if (r == RS_OK) {
-        o = json_object();
-        json_object_set_new(o, "analysis", json_string("simulate"));
-        json_object_set_new(o, "steps", json_integer(steps));
-        json_object_set_new(o, "seed", json_integer(seed));
-        json_object_set_new(o, "precision_bits", json_integer(prec));
+        o = sim_json_head(steps, seed, prec);
         json_object_set_new(o, "over", json_string("Q(i)"));
         json_object_set_new(o, "recurrence", json_string("scalar recurrence of p(lambda) over Q(i): complex "
                                                          "coefficients, complex states"));
@@ -441,14 +506,77 @@ static int cx_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
         if (r == RS_OK) json_array_append_new(run->results, o);
         else json_decref(o);
     }
-    flint_randclear(st);
     _acb_vec_clear(c, n + 1);
-    _acb_vec_clear(x, n + 1);
-    acb_clear(lcinv); acb_clear(t);
-    arb_clear(norm); arb_clear(a); arb_clear(lm); arb_clear(le); arb_clear(t1); arb_clear(t2);
+    arb_clear(lm); arb_clear(le); arb_clear(t1);
     fmpq_clear(qr); fmpq_clear(qi);
     fmpq_poly_clear(pr); fmpq_poly_clear(pi);
     json_decref(at);
+    return r;
+}
+
+/* ---- simulate over Q(sqrt d) (rk sdirk2) --------------------------------------------- */
+
+/* At real set values the case's equations as the rational path runs them,
+ * their coefficients in Q(sqrt d) as balls (sqrt d enclosed); at complex
+ * ones the scalar recurrence of p over Q(sqrt d)(i).  The growth is checked
+ * against the exact verdict over Q(sqrt d)(i) (exit 3 on a disagreement);
+ * no check when that verdict is undecided (a root on or near the circle). */
+static int qd_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong seed, slong prec)
+{
+    json_t *o = sim_json_head(steps, seed, prec);
+    rs_rootcount_t rc;
+    rs_status_t vst = RS_STATUS_STABLE;
+    rs_variant_t *v;
+    acb_ptr c = NULL;
+    arb_ptr pc = NULL;
+    arb_t lm, le, t1;
+    slong n = -1, j;
+    int r, decided = 0;
+    rs_rootcount_init(rc);
+    arb_init(lm); arb_init(le); arb_init(t1);
+    r = rs_an_qd_point(&c, &n, &decided, &vst, rc, o, run, req->q, prec);
+    if (r == RS_OK && run->c->ncsets > 0) {
+        json_object_set_new(o, "recurrence", json_string("scalar recurrence of p(lambda) over Q(sqrt d)(i): complex "
+                                                         "coefficients (sqrt d a ball), complex states"));
+        json_object_set_new(o, "arithmetic", json_string("Arb complex midpoints at the working precision"));
+        r = acb_recurrence_run(lm, le, run, req, c, n, steps, seed, prec);
+    } else if (r == RS_OK) {
+        sim_t sm;
+        flint_rand_t st;
+        r = rs_run_default_variant(run, &v);
+        if (r == RS_OK) {
+            pc = _arb_vec_init(n + 1);
+            for (j = 0; j <= n; j++) arb_set(pc + j, acb_realref(c + j));   /* real set values: p is real */
+            flint_randinit(st);
+            flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+            sim_init(&sm, v->s, pc, n, prec, st);
+            json_object_set_new(o, "recurrence", json_string(sim_recurrence_str(&sm)));
+            json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision, the "
+                                                             "coefficients' sqrt(d) a ball"));
+            r = sim_run(&sm, run, req, steps, lm, le);
+            sim_clear(&sm);
+            flint_randclear(st);
+        }
+    }
+    if (r == RS_OK && sim_growth_json(t1, o, lm, le, steps, prec) && steps >= SIM_CHECK_MIN_STEPS) {
+        if (decided)
+            sim_verdict_check(run, o, vst, rc, arf_get_d(arb_midref(t1), ARF_RND_NEAR), n, steps,
+                              "exact (Schur-Cohn over Q(sqrt d)(i) and the certified roots)");
+        else
+            json_object_set_new(o, "verdict", json_pack("{s:s,s:s}", "status", "undecided", "note", "not compared "
+                                                        "with the run: a root on or too near the unit circle, "
+                                                        "marginal and unstable not told apart over Q(sqrt d)"));
+    }
+    if (r == RS_OK) {
+        json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
+        json_array_append_new(run->results, o);
+    } else {
+        json_decref(o);
+    }
+    if (c != NULL) _acb_vec_clear(c, n + 1);
+    if (pc != NULL) _arb_vec_clear(pc, n + 1);
+    rs_rootcount_clear(rc);
+    arb_clear(lm); arb_clear(le); arb_clear(t1);
     return r;
 }
 
@@ -457,40 +585,33 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
     const rs_optval_t *o_steps = rs_an_opt(req, "steps"), *o_seed = rs_an_opt(req, "seed"),
                       *o_prec = rs_an_opt(req, "prec");
     slong steps = o_steps->at != NULL ? o_steps->num : 1000, seed = o_seed->at != NULL ? o_seed->num : 1;
-    slong prec = o_prec->at != NULL ? o_prec->num : 128, step;
+    slong prec = o_prec->at != NULL ? o_prec->num : 128, j, N;
     rs_variant_t *v;
     fmpz_poly_t p;
+    arb_ptr pc;
     sim_t sm;
     json_t *o;
-    arb_t norm, lognorm_mid, lognorm_end, t1, t2;
+    arb_t lognorm_mid, lognorm_end;
     flint_rand_t st;
     int r;
+    if (run->m->qd != NULL) return qd_simulate(run, req, steps, seed, prec);
     if (run->c->ncsets > 0) return cx_simulate(run, req, steps, seed, prec);
     r = rs_run_numeric_variant(run, &v);
     if (r != RS_OK) return r;
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, req->q, v, "simulate");
     if (r != RS_OK) { fmpz_poly_clear(p); return r; }
+    N = fmpz_poly_degree(p);
+    pc = _arb_vec_init(N + 1);
+    for (j = 0; j <= N; j++) arb_set_fmpz(pc + j, p->coeffs + j);
     flint_randinit(st);
     flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
-    sim_init(&sm, v->s, p, prec, st);
-    arb_init(norm); arb_init(lognorm_mid); arb_init(lognorm_end); arb_init(t1); arb_init(t2);
-    r = sim_estimate(&sm, run, req, steps);
-    for (step = 1; step <= steps && r == RS_OK; step++) {
-        if ((r = rs_budget_check(run->err, "simulate")) != RS_OK) break;
-        sim_step(&sm, norm, t1);
-        sim_window_add(lognorm_mid, lognorm_end, norm, step, steps, t2);
-    }
+    sim_init(&sm, v->s, pc, N, prec, st);
+    arb_init(lognorm_mid); arb_init(lognorm_end);
+    r = sim_run(&sm, run, req, steps, lognorm_mid, lognorm_end);
     if (r == RS_OK) {
-        o = json_object();
-        json_object_set_new(o, "analysis", json_string("simulate"));
-        json_object_set_new(o, "steps", json_integer(steps));
-        json_object_set_new(o, "seed", json_integer(seed));
-        json_object_set_new(o, "precision_bits", json_integer(prec));
-        json_object_set_new(o, "recurrence", json_string(sm.scalar ? "scalar recurrence of p(lambda) (the equations' "
-                                                                     "leading matrix is singular or absent)"
-                                                                   : "the case's equations as written, solved for the "
-                                                                     "newest value of every unknown at each step"));
+        o = sim_json_head(steps, seed, prec);
+        json_object_set_new(o, "recurrence", json_string(sim_recurrence_str(&sm)));
         json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision"));
         r = simulate_growth(run, o, v, p, steps, lognorm_mid, lognorm_end, prec);
         json_object_set_new(o, "decided_by", json_string("time-domain run (measurement, not a certificate)"));
@@ -499,7 +620,8 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
         else json_decref(o);
     }
     sim_clear(&sm);
-    arb_clear(norm); arb_clear(lognorm_mid); arb_clear(lognorm_end); arb_clear(t1); arb_clear(t2);
+    _arb_vec_clear(pc, N + 1);
+    arb_clear(lognorm_mid); arb_clear(lognorm_end);
     flint_randclear(st);
     fmpz_poly_clear(p);
     return r;

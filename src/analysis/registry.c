@@ -380,7 +380,7 @@ int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q)
     req->q = q;
     r = lookup(&req->def, run, q);
     if (r != RS_OK) return r;
-    r = rs_an_qd_check(run, req);   /* rk sdirk2: three analyses only */
+    r = rs_an_qd_check(run, req);   /* rk sdirk2: the analyses over Q(sqrt d) only */
     if (r != RS_OK)
     {
         req->def = NULL;            /* refused before its parse: nothing for its clear */

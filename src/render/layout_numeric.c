@@ -106,15 +106,21 @@ void rs_render_modes(rs_render_t *r, const json_t *o)
     }
     if (zeros > 0) rs_render_linef(r, "roots at 0", "%zu (no continuous equivalent)", zeros);
     if (json_object_get(o, "exact_check") != NULL) {
-        /* over Q(i): p's own roots, their moduli against the exact counts */
+        /* over Q(i) or Q(sqrt d): p's own roots, their moduli against the exact counts */
         const json_t *ck = json_object_get(o, "exact_check"), *at = json_object_get(o, "at");
         const char *key;
         json_t *val;
         json_object_foreach((json_t *) at, key, val)
             rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
-        snprintf(buf2, sizeof buf2, "%s over Q(i) (%lld inside, %lld on, %lld outside); certified moduli %s",
-                 rs_render_jstr(ck, "status"), rs_render_jint(ck, "inside"), rs_render_jint(ck, "on"),
-                 rs_render_jint(ck, "outside"), json_is_true(json_object_get(ck, "agree")) ? "agree" : "DISAGREE");
+        const char *over = rs_render_jstr(o, "over") ? rs_render_jstr(o, "over") : "Q(i)";
+        if (json_object_get(ck, "inside") == NULL)   /* over Q(sqrt d): no exact verdict to compare */
+            snprintf(buf2, sizeof buf2, "%s over %s; certified moduli not compared", rs_render_jstr(ck, "status"),
+                     over);
+        else
+            snprintf(buf2, sizeof buf2, "%s over %s (%lld inside, %lld on, %lld outside); certified moduli %s",
+                     rs_render_jstr(ck, "status"), over, rs_render_jint(ck, "inside"), rs_render_jint(ck, "on"),
+                     rs_render_jint(ck, "outside"),
+                     json_is_true(json_object_get(ck, "agree")) ? "agree" : "DISAGREE");
         rs_render_line(r, "exact", "%s", buf2);
     }
     rs_render_assigned(r, o);
@@ -135,6 +141,10 @@ void rs_render_simulate(rs_render_t *r, const json_t *o)
                  json_is_true(json_object_get(ck, "consistent")) ? "consistent with the run"
                                                                 : rs_render_jstr(ck, "disagreement"));
         rs_render_line(r, "verdict", "%s", buf);
+    } else if (json_object_get(o, "verdict")) {   /* over Q(sqrt d): an undecided verdict is not compared */
+        const json_t *vd = json_object_get(o, "verdict");
+        rs_render_linef(r, "verdict", "%s (exact): %s", rs_render_jstr(vd, "status"),
+                        rs_render_jstr(vd, "note") ? rs_render_jstr(vd, "note") : "not compared");
     }
     rs_render_assigned(r, o);
 }

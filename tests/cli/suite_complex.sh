@@ -552,15 +552,46 @@ else ok "skipped sdirk2 astability JSON: no python3"; fi
 check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
 check_status "sdirk2 z=3 (R = 76 + 54 sqrt 2)" unstable "$SP" --set 'q=3'
 check_status "sdirk2 z=0 (R = 1)" marginal "$SP" --set 'q=0'
+# simulate there: R = 1 is a root on the circle, which the verdict over Q(sqrt 2) leaves undecided
+# (marginal and unstable not told apart): the run (growth 1) is reported, not compared, exit 0
+"$RS" --analyse "simulate steps=400" "$SP" --set 'q=0' >"$T/sp0.txt" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ] && grep -q "growth       1.00000000000000 per step" "$T/sp0.txt" \
+   && grep -q "verdict      undecided (exact): not compared" "$T/sp0.txt"; then
+    ok "sdirk2 z=0: simulate growth 1, undecided verdict not compared"
+else fail "sdirk2 z=0 simulate: rc=$rc $(grep -E 'growth|verdict' "$T/sp0.txt") $(head -1 "$T/err")"; fi
 # |R(-1 + 2i)|^2 = 152/867 + 16/289 sqrt 2 ~ 0.253 (A-stable: inside Re z < 0)
 check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse "modes" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*modes is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: modes refused with its reason (exit 2)"
-else fail "sdirk2 modes refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "map" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*map is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: map refused with its reason (exit 2)"
+else fail "sdirk2 map refusal: rc=$rc $(head -1 "$T/err")"; fi
+# modes and simulate over Q(sqrt 2) at z = -1: p = D lambda - N has the one
+# root R(-1) = (20 - 2 sqrt 2)/49 (by hand, sdirk2-point.case) and the
+# charpoly's two roots at 0; sigma = ln R(-1), omega 0, damping ratio 1; the
+# run's growth per step is R(-1) (one state, one root)
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json --analyse modes --analyse "simulate steps=400" "$SP" >"$T/spm.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/spm.json" <<'PY'
+import json, math, sys
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+m, sim = rs[0], rs[1]
+R = (20 - 2 * 2 ** 0.5) / 49
+bad = []
+if m.get("over") != "Q(sqrt 2)" or not m["exact_check"]["agree"] or m["exact_check"]["status"] != "stable": bad.append("exact_check")
+nz = [e for e in m["modes"] if "sigma" in e]
+if len(m["modes"]) != 3 or len(nz) != 1: bad.append("%d modes" % len(m["modes"]))
+elif abs(float(nz[0]["sigma"]) - math.log(R)) > 1e-13 or abs(float(nz[0]["omega"])) > 1e-13 \
+        or abs(float(nz[0]["damping_ratio"]) - 1) > 1e-13: bad.append("mode %r" % nz[0])
+if abs(sim["growth_approx"] - R) > 1e-6 or not sim["check"]["consistent"] or sim["verdict"]["status"] != "stable": bad.append("simulate %r" % sim.get("growth"))
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 z=-1: modes (sigma = ln R(-1)) and simulate (growth R(-1)) over Q(sqrt 2)"
+    else fail "sdirk2 z=-1 modes/simulate: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 modes/simulate: no python3"; fi
 "$RS" --analyse "region q, r" "$SD" >/dev/null 2>"$T/err"; rc=$?
 [ "$rc" = 2 ] && ok "sdirk2: region N1, N2 refused (exit 2)" || fail "sdirk2 region N1, N2: rc=$rc $(head -1 "$T/err")"
 # ---- rk sdirk2 in a coupled scheme: its true stage equations, p over Q(sqrt 2) ----
@@ -606,13 +637,9 @@ bad = []
 if monic != want: bad.append("monic p %r" % (monic,))
 if abs(float(rad["rho"]) - rho_want) > 1e-20 or not (float(rad["lower"]) <= rho_want <= float(rad["upper"])): bad.append("rho " + rad["rho"])
 # time-domain run of the step map from the method's definition (double)
-a, c, h, g = 1.0, float(cv), 1.0, 1 - 2 ** 0.5 / 2
-y, x = 1.0, 1.0
-for _ in range(400):
-    k1 = (-a * y + c * x) / (1 + a * h * g)
-    k2 = (-a * (y + h * (1 - g) * k1) + c * x) / (1 + a * h * g)
-    y, x = y + h * ((1 - g) * k1 + g * k2), (x - h * c * y) / (1 + h)
-norm = (y * y + x * x) ** 0.5
+sys.path.insert(0, "tests/cli")
+from sdirk2_steps import run as steps_run
+norm = steps_run(1.0, float(cv))
 run = "stable" if norm < 1e-50 else "unstable" if norm > 1e20 else "unclear"
 if run != st["status"]: bad.append("run %s (|v_400| = %g) vs %s" % (run, norm, st["status"]))
 if not st["schur_cohn_stable"] == (st["status"] == "stable"): bad.append("schur flag")
@@ -623,6 +650,45 @@ PY
         else fail "sdirk2 coupled c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
     done
 else ok "skipped sdirk2 coupled JSON: no python3"; fi
+# modes and simulate over Q(sqrt 2) in the coupled scheme, against the same
+# sympy values: the two principal modes have |lambda| = rho (sigma = ln rho),
+# Re lambda = -(coefficient of lambda)/2 = 89/196 - sqrt 2/49 for both c, the
+# four roots at 0 no continuous equivalent; simulate's growth per step is
+# rho and 400 steps of it match, within the start's factor, the 400-step run
+# of the step map from the method's definition (|v| ~ 9e-119 at c = 1/2,
+# ~ 7e33 at c = 2)
+if command -v python3 >/dev/null 2>&1; then
+    for cv in 1/2 2; do
+        "$RS" --json --analyse modes --analyse "simulate steps=400" "$SC" --set "c=$cv" >"$T/scm.json" 2>"$T/err"; rc=$?
+        res=$(python3 - "$T/scm.json" "$cv" <<'PY'
+import json, math, sys
+from fractions import Fraction as F
+rs = json.load(open(sys.argv[1]))["cases"][0]["results"]
+cv = F(sys.argv[2])
+m, sim = rs[0], rs[1]
+rho = {F(1, 2): 0.5063744647344548791160227, F(2): 1.214223869745434236859886}[cv]
+bad = []
+zeros = [e for e in m["modes"] if "sigma" not in e]
+nz = [e for e in m["modes"] if "sigma" in e]
+if len(zeros) != 4 or len(nz) != 2: bad.append("modes %d + %d" % (len(zeros), len(nz)))
+for e in nz:
+    if abs(float(e["sigma"]) - math.log(rho)) > 1e-13: bad.append("sigma " + e["sigma"])
+    if abs(float(e["root"]["re"]) - (89 / 196 - 2 ** 0.5 / 49)) > 1e-13: bad.append("re " + e["root"]["re"])
+ck = m["exact_check"]
+if not ck["agree"] or ck["status"] != ("stable" if cv < 1 else "unstable"): bad.append("exact_check %r" % ck)
+sys.path.insert(0, "tests/cli")
+from sdirk2_steps import run as steps_run
+run = math.log10(steps_run(1.0, float(cv)))
+if abs(sim["growth_approx"] - rho) / rho > 1e-4: bad.append("growth %r" % sim["growth_approx"])
+if abs(400 * math.log10(sim["growth_approx"]) - run) > 2: bad.append("400 steps 10^%.1f vs run 10^%.1f" % (400 * math.log10(sim["growth_approx"]), run))
+if not sim["check"]["consistent"] or sim["recurrence"].startswith("scalar"): bad.append("check/recurrence")
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+        if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 coupled c=$cv: modes and simulate over Q(sqrt 2) agree with sympy's rho and a 400-step run"
+        else fail "sdirk2 coupled modes/simulate c=$cv: rc=$rc $res $(head -1 "$T/err")"; fi
+    done
+else ok "skipped sdirk2 coupled modes/simulate: no python3"; fi
 # root counts over Q(sqrt 2) (as the rational path prints them): --emit equations below has 6
 # unknowns (y, y_dot, y_k1, y_k2, x, x_dot), each row of degree 1 in lambda, so det has degree 6;
 # sympy's step map M is 2 x 2, so 4 roots are lambda = 0 and 2 are M's eigenvalues: both
@@ -654,6 +720,21 @@ print("%d inside, 0 on, %d outside the unit circle; lambda = 0 (x4)" % (n + 4, 2
     "$RS" --analyse stability "$SC" --set 'c=1/2+2*i' >"$T/scc.txt" 2>"$T/err"
     if grep -qF "unstable: $want" "$T/scc.txt"; then ok "sdirk2 coupled c=1/2+2i: $want (one root each side)"
     else fail "sdirk2 coupled c=1/2+2i counts: want '$want', $(grep verdict "$T/scc.txt") $(head -1 "$T/err")"; fi
+    # simulate at that complex value (p's scalar recurrence over Q(sqrt 2)(i)): growth = the
+    # larger modulus by the same quadratic formula
+    rmax=$(python3 -c '
+import cmath
+s = 2 ** 0.5
+e1, e4, b = 109/392 - 3/196*s, 68/49 + 3/49*s, -89/98 + 2/49*s
+e = e1 + (e4 - e1) * (complex(-15/4, 2) - 1/4) / (4 - 1/4)
+d = cmath.sqrt(b * b - 4 * e)
+print(max(abs((-b + d) / 2), abs((-b - d) / 2)))')
+    "$RS" --json --analyse "simulate steps=400" "$SC" --set 'c=1/2+2*i' | tr -d ' \n' >"$T/scs.json" 2>"$T/err"
+    g=$(sed -n 's/.*"growth_approx":\([0-9.e+-]*\).*/\1/p' "$T/scs.json")
+    if grep -q '"consistent":true' "$T/scs.json" && [ -n "$g" ] \
+       && python3 -c "import sys; sys.exit(0 if abs($g - $rmax) < 1e-6 * $rmax else 1)"; then
+        ok "sdirk2 coupled c=1/2+2i: simulate growth $g = max |root| $rmax"
+    else fail "sdirk2 coupled c=1/2+2i simulate: growth '$g' want $rmax $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 coupled mixed counts: no python3"; fi
 
 # ---- jury and hurwitz over Q(sqrt 2)[a, c] (issue 15) ----
