@@ -52,7 +52,13 @@ void rs_an_modes_json(json_t *o, const rs_radius_t rr, const arb_t h, const arb_
             rs_modes_continuous(sig, om, mag, xi, rr->roots + i, h, prec);
             json_object_set_new(m, "sigma", rs_json_arb(sig, digits));
             json_object_set_new(m, "omega", rs_json_arb(om, digits));
-            json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
+            if (arb_is_finite(xi)) {
+                json_object_set_new(m, "damping_ratio", rs_json_arb(xi, digits));
+            } else {   /* -sigma/|lambda_c| with lambda_c = 0 (or not certified away from 0): 0/0 */
+                json_object_set_new(m, "damping_ratio", json_null());
+                json_object_set_new(m, "damping_note", json_string(arb_is_zero(mag)
+                    ? "undefined: lambda = 1, so lambda_c = 0" : "undefined: |lambda_c| is not certified away from 0"));
+            }
             if (principal[i]) {
                 arb_sub(err, mag, refs[principal[i] - 1], prec);
                 arb_div(err, err, refs[principal[i] - 1], prec);

@@ -98,7 +98,7 @@ void rs_render_modes(rs_render_t *r, const json_t *o)
             char buf[400];
             if (rs_render_jstr(e, "sigma") == NULL) { zeros++; continue; }   /* a root at 0 */
             snprintf(buf, sizeof buf, "sigma %s omega %s damping %s%s%s", rs_render_jstr(e, "sigma"),
-                     rs_render_jstr(e, "omega"), rs_render_jstr(e, "damping_ratio"), rs_render_jstr(e, "frequency_error") ? " freq.error " : "",
+                     rs_render_jstr(e, "omega"), rs_render_jstr(e, "damping_ratio") ? rs_render_jstr(e, "damping_ratio") : "undefined", rs_render_jstr(e, "frequency_error") ? " freq.error " : "",
                      rs_render_jstr(e, "frequency_error") ? rs_render_jstr(e, "frequency_error") : "");
             rs_render_line(r, first ? (g == 0 ? "principal" : "spurious") : "", "%s", buf);
             first = 0;

@@ -127,6 +127,11 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/modes-negative-real-root.case
     check "modes negative real root (was 0e+1, nan)" '["-1.09861228866811","3.14159265358979","0.330097420439083"]' \
         "$(jfield $C 0 '.modes[0] | [.sigma, .omega, .damping_ratio]')"
+    # a root at 1: lambda_c = 0, damping ratio 0/0 (by hand in the case; was "damping nan")
+    C=cases/truth/modes-root-at-one.case
+    check "modes root at 1: damping undefined (was nan)" '[["-0.693147180559945","1.00000000000000"],["0",null,"undefined: lambda = 1, so lambda_c = 0"]]' \
+        "$(jfield $C 0 '.modes | [[.[0].sigma, .[0].damping_ratio], [.[1].sigma, .[1].damping_ratio, .[1].damping_note]]')"
+    check "modes root at 1: text" '1' "$("$RS" $C 2>/dev/null | grep -c 'sigma 0 omega 0 damping undefined$')"
     # co-simulation with a double eigenvalue (h-truth2): the enclosure excludes 1 (was exit 2)
     C=cases/truth/cosim-double-eigenvalue.case
     # the enclosure's verdict and its second method (Schur on T's ball characteristic polynomial)
