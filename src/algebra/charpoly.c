@@ -221,6 +221,15 @@ int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
                                         "have %.0f terms (limit %ld); set more parameters to numbers",
                                         b1 > b2 ? b1 : b2, (long) (50 * max_terms));
                 }
+                /* FLINT's products cannot be interrupted: refuse them when they would not
+                 * fit into what is left of the time budget (a fuzzed degree-59 p conj(p)) */
+                rb = rs_budget_estimate(err, "the products of the determinant",
+                                        rs_budget_mpoly_mul_seconds(A + k * n + k, aij)
+                                        + rs_budget_mpoly_mul_seconds(A + i * n + k, A + k * n + j), 0.0);
+                if (rb != RS_OK) {
+                    fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
+                    return rb;
+                }
                 fmpz_mpoly_mul(t, A + k * n + k, aij, ctx);
                 fmpz_mpoly_mul(aij, A + i * n + k, A + k * n + j, ctx);
                 fmpz_mpoly_sub(aij, t, aij, ctx);

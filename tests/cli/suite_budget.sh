@@ -92,3 +92,13 @@ if [ "$rc0" = 0 ] && grep -q 'D_5 > 0 (not expanded)' "$T/rs0" && [ "$rc1" = 0 ]
    && grep -q '^  stopped at .*over the row share of 0 s (--row-share)' "$T/rs0"; then
     ok "--row-share 0 leaves the chain's minors not expanded (the step that stopped named), 0.5 expands them"
 else fail "--row-share: exit $rc0/$rc1, $(grep -c 'not expanded' "$T/rs0")/$(grep -c 'not expanded' "$T/rs1") not-expanded lines"; fi
+
+# the determinant's uninterruptible products are estimated first (CI's fuzz_case
+# found p = P + i Q of degree 59 in four variables: P^2 + Q^2 multiplies two
+# 34 220-term polynomials, C(60, 3) terms each, seconds per product): with 5 s
+# left the run stops at once, naming the estimate, instead of overrunning.
+printf 'param a b c\nchar (a+b+c+lambda)^56 + (a+b+c+lambda)^56 + (a+b+c+lambda)^57 + (i+b+lambda)^59\n' >"$T/big-complex.case"
+"$RS" --time-limit 5 --analyse charpoly "$T/big-complex.case" >"$T/bc.out" 2>&1; rc=$?
+if [ "$rc" = 2 ] && grep -q 'the products of the determinant would take about .* more than the time limit of 5 s' "$T/bc.out"; then
+    ok "charpoly: a determinant product over the time limit is refused by its estimate"
+else fail "charpoly big complex: exit $rc, $(head -c 300 "$T/bc.out")"; fi

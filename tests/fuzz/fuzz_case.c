@@ -30,7 +30,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         json_t *doc = NULL;
         int outcome = 0;
         rs_options_t opt;
-        rs_options_default(&opt);
+        fuzz_options(&opt, FUZZ_MAX_PREC);   /* the budget: an uninterruptible product is refused */
         rs_case_clear_requests(c);
         rs_case_add_request(c, "charpoly", "fuzz", 0, 0);
         rs_error_init(err);
