@@ -48,6 +48,8 @@ int rs_bounds_add(rs_bound_t *b, const rs_cond_t *cond, const rs_case_t c,
                   rs_error_t err);
 /* 1 if the interval is empty. */
 int rs_bound_empty(const rs_bound_t *b);
+/* 1 if x lies in the interval (an end only when it is closed). */
+int rs_bound_contains(const rs_bound_t *b, const fmpq_t x);
 
 int rs_condpoly_compile(rs_condpoly_t *cp, const rs_cond_t *cond,
                         const rs_scheme_t s, const rs_case_t c, rs_error_t err);

@@ -98,6 +98,12 @@ int rs_bound_empty(const rs_bound_t *b)
     return c > 0 || (c == 0 && !(b->lo_closed && b->hi_closed));
 }
 
+int rs_bound_contains(const rs_bound_t *b, const fmpq_t x)
+{
+    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
+    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
+}
+
 void rs_bounds_signs(int *sign, const rs_bound_t *b, slong nparams)
 {
     slong i;

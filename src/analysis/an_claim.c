@@ -832,13 +832,6 @@ static void bounds_copy(rs_bound_t *dst, const rs_bound_t *src, slong n)
     }
 }
 
-/* x inside the bound b (its ends when closed) */
-static int in_bound(const fmpq_t x, const rs_bound_t *b)
-{
-    int cl = !b->has_lo ? 1 : fmpq_cmp(x, b->lo), ch = !b->has_hi ? -1 : fmpq_cmp(x, b->hi);
-    return (cl > 0 || (cl == 0 && b->lo_closed)) && (ch < 0 || (ch == 0 && b->hi_closed));
-}
-
 /* Rational values of variable i inside b (ends when closed) where p(1),
  * p(-1) or p's leading coefficient vanishes, as polynomials in i alone:
  * where roots reach lambda = +-1 or the step becomes singular.  Appended to
@@ -871,7 +864,7 @@ static void special_candidates(fmpq *c, slong *n, slong cap, const rs_variant_t 
             fmpz_neg(fmpq_numref(r), f->p[k].coeffs);
             fmpz_set(fmpq_denref(r), f->p[k].coeffs + 1);
             fmpq_canonicalise(r);
-            if (in_bound(r, b + i)) fmpq_set(c + (*n)++, r);
+            if (rs_bound_contains(b + i, r)) fmpq_set(c + (*n)++, r);
         }
         fmpz_poly_factor_clear(f);
     }
@@ -1480,7 +1473,7 @@ static int claim_search(rs_run_t *run, claim_kind_t kind, const rs_bound_t *b, c
         /* hints: the proof's one-variable conditions are < 0 there; first,
          * so that the deterministic enumeration reaches them */
         for (j = 0; hx != NULL && !b[i].fixed && j < hx->nhints && ncand[i] < 40; j++)
-            if (hx->hint_var[j] == i && in_bound(hx->hint + j, b + i)) {
+            if (hx->hint_var[j] == i && rs_bound_contains(b + i, hx->hint + j)) {
                 fmpq_swap(cand[i] + ncand[i], cand[i]);
                 fmpq_set(cand[i], hx->hint + j);
                 ncand[i]++;

@@ -434,6 +434,54 @@ done:
     return res;
 }
 
+/* The real roots of the squarefree g (degree d >= 1), isolated: disjoint
+ * balls in ascending order in re[0 .. nr - 1] (r, re of length d); the
+ * number nr, or -1 when 1024 bits do not separate them.  *prec is the
+ * precision that did (for the balls' ends). */
+static slong _real_roots_sorted(arb_ptr re, slong *prec, acb_ptr r, const fmpz_poly_t g)
+{
+    slong d = fmpz_poly_degree(g), nr, i;
+    for (*prec = 64; *prec <= 1024; *prec *= 4) {
+        int sep = 1;
+        arb_fmpz_poly_complex_roots(r, g, 0, *prec);   /* real roots first, ascending */
+        for (nr = 0; nr < d && acb_is_real(r + nr); nr++)
+            arb_set(re + nr, acb_realref(r + nr));
+        for (i = 0; i + 1 < nr; i++)
+            sep &= arb_lt(re + i, re + i + 1);
+        if (sep)
+            return nr;
+    }
+    return -1;
+}
+
+/* x := a rational in gap i (0 <= i <= nr, nr >= 1) of the isolated roots
+ * re[0 .. nr - 1]: below the first, between re[i - 1] and re[i], above the last */
+static void _gap_point(fmpq_t x, arb_srcptr re, slong nr, slong i, slong prec)
+{
+    arf_t a;
+    fmpq_t y;
+    arf_init(a);
+    if (i == 0) {
+        arb_get_lbound_arf(a, re, prec);
+        arf_get_fmpq(x, a);
+        fmpq_sub_si(x, x, 1);
+    } else if (i == nr) {
+        arb_get_ubound_arf(a, re + nr - 1, prec);
+        arf_get_fmpq(x, a);
+        fmpq_add_si(x, x, 1);
+    } else {
+        fmpq_init(y);
+        arb_get_ubound_arf(a, re + i - 1, prec);
+        arf_get_fmpq(x, a);
+        arb_get_lbound_arf(a, re + i, prec);
+        arf_get_fmpq(y, a);
+        fmpq_add(x, x, y);
+        fmpq_div_2exp(x, x, 1);
+        fmpq_clear(y);
+    }
+    arf_clear(a);
+}
+
 slong
 rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, const rs_sign_t *sign,
                               const fmpz_mpoly_ctx_t ctx)
@@ -458,41 +506,14 @@ rs_positivity_negative_points(fmpq *pts, slong cap, const fmpz_mpoly_t poly, con
     r = _acb_vec_init(n);
     re = _arb_vec_init(n + 2);
     /* the real roots, isolated (disjoint balls, ascending) */
-    for (prec = 64; prec <= 1024; prec *= 4) {
-        int sep = 1;
-        arb_fmpz_poly_complex_roots(r, g, 0, prec);
-        for (nr = 0; nr < n && acb_is_real(r + nr); nr++)
-            arb_set(re + nr, acb_realref(r + nr));
-        for (i = 0; i + 1 < nr; i++)
-            sep &= arb_lt(re + i, re + i + 1);
-        if (sep)
-            break;
-        nr = 0;
-    }
+    nr = FLINT_MAX(_real_roots_sorted(re, &prec, r, g), 0);
     /* one rational in each gap between roots and beyond them: the points
      * where poly < 0 (exact evaluation) are kept */
     for (i = 0; i <= nr && npts < cap; i++) {
-        arf_t a;
-        arf_init(a);
         if (nr == 0)
             fmpq_one(x);
-        else if (i == 0) {
-            arb_get_lbound_arf(a, re, prec);
-            arf_get_fmpq(x, a);
-            fmpq_sub_si(x, x, 1);
-        } else if (i == nr) {
-            arb_get_ubound_arf(a, re + nr - 1, prec);
-            arf_get_fmpq(x, a);
-            fmpq_add_si(x, x, 1);
-        } else {
-            arb_get_ubound_arf(a, re + i - 1, prec);
-            arf_get_fmpq(x, a);
-            arb_get_lbound_arf(a, re + i, prec);
-            arf_get_fmpq(y, a);
-            fmpq_add(x, x, y);
-            fmpq_div_2exp(x, x, 1);
-        }
-        arf_clear(a);
+        else
+            _gap_point(x, re, nr, i, prec);
         if (pos && fmpq_sgn(x) <= 0)
             continue;
         fmpz_poly_evaluate_fmpq(y, u, x);
@@ -517,19 +538,6 @@ done:
     return npts;
 }
 
-/* x inside the bound b (NULL: anywhere) */
-static int _in_bound(const fmpq_t x, const rs_bound_t *b)
-{
-    int c;
-    if (b == NULL)
-        return 1;
-    if (b->has_lo && ((c = fmpq_cmp(x, b->lo)) < 0 || (c == 0 && !b->lo_closed)))
-        return 0;
-    if (b->has_hi && ((c = fmpq_cmp(x, b->hi)) > 0 || (c == 0 && !b->hi_closed)))
-        return 0;
-    return 1;
-}
-
 /* g *= den x - num for the end e = num/den: the end becomes a breakpoint */
 static void _mul_end(fmpz_poly_t g, const fmpq_t e)
 {
@@ -552,7 +560,7 @@ rs_positivity_none_positive(const fmpz_mpoly_struct *const *poly, slong n, slong
     arb_ptr re = NULL;
     fmpq_t pt, y;
     slong i, j, d = 0, nr = 0, prec = 64;
-    int res = 0, ok = 1, sep = 0;
+    int res = 0, ok = 1;
 
     for (i = 0; i < n; i++)
         fmpz_poly_init(u + i);
@@ -588,47 +596,20 @@ rs_positivity_none_positive(const fmpz_mpoly_struct *const *poly, slong n, slong
         if (d >= 1) {
             r = _acb_vec_init(d);
             re = _arb_vec_init(d);
-            for (prec = 64; prec <= 1024 && !sep; prec *= 4) {
-                arb_fmpz_poly_complex_roots(r, g, 0, prec);
-                for (nr = 0; nr < d && acb_is_real(r + nr); nr++)
-                    arb_set(re + nr, acb_realref(r + nr));
-                for (sep = 1, i = 0; i + 1 < nr; i++)
-                    sep &= arb_lt(re + i, re + i + 1);
-            }
-            if (!sep)
+            if ((nr = _real_roots_sorted(re, &prec, r, g)) < 0)
                 goto done;
-            prec /= 4;
         }
     }
     /* one rational in each gap (or the single point): some admissible one
      * where every condition is > 0 (exact evaluation) decides "possible" */
     res = 1;
     for (i = (nr < 0 ? -1 : 0); i <= FLINT_MAX(nr, 0) && res; i++) {
-        arf_t a;
         int all = 1;
-        arf_init(a);
-        if (nr < 0)
-            ;   /* pt is the point */
-        else if (nr == 0)
+        if (nr == 0)
             fmpq_zero(pt);
-        else if (i == 0) {
-            arb_get_lbound_arf(a, re, prec);
-            arf_get_fmpq(pt, a);
-            fmpq_sub_si(pt, pt, 1);
-        } else if (i == nr) {
-            arb_get_ubound_arf(a, re + nr - 1, prec);
-            arf_get_fmpq(pt, a);
-            fmpq_add_si(pt, pt, 1);
-        } else {
-            arb_get_ubound_arf(a, re + i - 1, prec);
-            arf_get_fmpq(pt, a);
-            arb_get_lbound_arf(a, re + i, prec);
-            arf_get_fmpq(y, a);
-            fmpq_add(pt, pt, y);
-            fmpq_div_2exp(pt, pt, 1);
-        }
-        arf_clear(a);
-        if (!_in_bound(pt, b))
+        else if (nr > 0)
+            _gap_point(pt, re, nr, i, prec);   /* nr < 0: pt is the single point */
+        if (b != NULL && !rs_bound_contains(b, pt))
             continue;
         for (j = 0; j < n && all; j++) {
             fmpz_poly_evaluate_fmpq(y, u + j, pt);

@@ -399,6 +399,35 @@ test_none_positive(void **state)
     rs_bounds_clear(b, 1);
 }
 
+/* rs_bound_contains: an end belongs to the interval only when closed */
+static void
+test_bound_contains(void **state)
+{
+    rs_bound_t b[1];
+    fmpq_t x;
+    (void) state;
+    rs_bounds_init(b, 1);
+    fmpq_init(x);
+    set_bound(b, "1", 1, "3/2", 0);          /* [1, 3/2) */
+    fmpq_set_si(x, 1, 1);
+    assert_true(rs_bound_contains(b, x));
+    fmpq_set_si(x, 3, 2);
+    assert_false(rs_bound_contains(b, x));
+    fmpq_set_si(x, 5, 4);
+    assert_true(rs_bound_contains(b, x));
+    fmpq_set_si(x, 99, 100);
+    assert_false(rs_bound_contains(b, x));
+    set_bound(b, NULL, 0, "0", 1);           /* (-inf, 0] */
+    fmpq_set_si(x, -1000000, 1);
+    assert_true(rs_bound_contains(b, x));
+    fmpq_zero(x);
+    assert_true(rs_bound_contains(b, x));
+    fmpq_set_si(x, 1, 1000);
+    assert_false(rs_bound_contains(b, x));
+    fmpq_clear(x);
+    rs_bounds_clear(b, 1);
+}
+
 int
 main(void)
 {
@@ -411,6 +440,7 @@ main(void)
         cmocka_unit_test(test_negative_points),
         cmocka_unit_test(test_single_var),
         cmocka_unit_test(test_none_positive),
+        cmocka_unit_test(test_bound_contains),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup_master();
