@@ -2614,9 +2614,7 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
         }
     if (wv < 0 || wv >= np) return RS_OK;
     /* w's range: w > 0, w >= 0 or every real (what the root tests take) */
-    b = flint_malloc((np + 1) * sizeof(rs_bound_t));
-    rs_bounds_init(b, np);
-    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(b, &run->c->assume[k], run->c, run->err);
+    b = rs_run_bounds(run);
     if (!b[wv].has_lo && !b[wv].has_hi) sw = RS_SIGN_UNKNOWN;
     else if (b[wv].has_lo && !b[wv].has_hi && fmpq_is_zero(b[wv].lo))
         sw = b[wv].lo_closed ? RS_SIGN_NONNEGATIVE : RS_SIGN_POSITIVE;

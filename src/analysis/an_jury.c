@@ -157,10 +157,8 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
      * mapping before Polya, issue 17, as hurwitz does): a factor of one sign
      * on 0 < h < 1 but not for every h > 0 is dropped; params come first */
     const rs_case_struct *c = run->c;
-    rs_bound_t *bd = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bound_t *bd = rs_run_bounds(run);
     slong nb = FLINT_MIN(c->nparams, s->nvars);
-    rs_bounds_init(bd, c->nparams);
-    for (j = 0; j < c->nassume; j++) rs_bounds_add(bd, &c->assume[j], c, run->err);
     jc.n = 0; jc.poly = NULL; jc.ne = NULL; jc.ctx = s->zctx;
     rs_budget_calib_init(&cal);
     for (j = 0; j <= n; j++) {
@@ -292,8 +290,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
     fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
     fmpz_mpoly_clear(g, s->zctx); fmpz_mpoly_clear(delta, s->zctx);
     flint_free(sign);
-    rs_bounds_clear(bd, c->nparams);
-    flint_free(bd);
+    rs_run_bounds_clear(bd, run);
     if (r == RS_OK && switched > 0) {
         json_decref(rows);
         json_decref(conds);

@@ -692,10 +692,8 @@ static rs_status_t status_named(const json_t *ev)
 /* the set of a cell: the assumptions, the set values, tv in [lo, hi] */
 static rs_bound_t *forall_bounds(rs_run_t *run, slong tv, const fmpq_t lo, const fmpq_t hi)
 {
-    slong np = run->c->nparams, i;
-    rs_bound_t *b = flint_malloc((np + 1) * sizeof(rs_bound_t));
-    rs_bounds_init(b, np);
-    for (i = 0; i < run->c->nassume; i++) rs_bounds_add(b, &run->c->assume[i], run->c, run->err);
+    rs_bound_t *b = rs_run_bounds(run);
+    slong i;
     for (i = 0; i < run->c->nsets; i++) {
         slong k = rs_case_param_index(run->c, run->c->sets[i].name);
         b[k].has_lo = b[k].has_hi = b[k].lo_closed = b[k].hi_closed = b[k].fixed = 1;

@@ -65,18 +65,14 @@ int rs_run_hurwitz_or(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, 
     const rs_scheme_struct *s = v->s;
     const rs_case_struct *c = run->c;
     int *sign = rs_run_signs(run, s);
-    rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
-    slong i;
-    int r;
     /* the parameters' intervals for the factors' sign tests (interval
      * mapping before Polya, issue 17); params are the first variables */
-    rs_bounds_init(b, c->nparams);
-    for (i = 0; i < c->nassume; i++) rs_bounds_add(b, &c->assume[i], c, run->err);
+    rs_bound_t *b = rs_run_bounds(run);
+    int r;
     rs_bilinear_fmpz_mpoly(qz, v->cp->p, s->lambda_var, s->zctx);
     r = rs_hurwitz_or_compute_bounds(hb, qz, s->lambda_var, v->cp->degree, (const rs_sign_t *) sign, b,
                                      FLINT_MIN(c->nparams, s->nvars), s->zctx, run->err);
-    rs_bounds_clear(b, c->nparams);
-    flint_free(b);
+    rs_run_bounds_clear(b, run);
     flint_free(sign);
     return r;
 }
@@ -220,36 +216,19 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
     return found;
 }
 
-/* The parameters' intervals from the assume lines (params first) */
-static rs_bound_t *run_bounds(rs_run_t *run)
-{
-    const rs_case_struct *c = run->c;
-    rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
-    slong i;
-    rs_bounds_init(b, c->nparams);
-    for (i = 0; i < c->nassume; i++) rs_bounds_add(b, &c->assume[i], c, run->err);
-    return b;
-}
-
-static void run_bounds_clear(rs_bound_t *b, rs_run_t *run)
-{
-    rs_bounds_clear(b, run->c->nparams);
-    flint_free(b);
-}
-
 /* rs_conds_never on conditions given as polynomials (ne[i]: a "!= 0" one,
  * left out; NULL: none), the intervals from the run's assume lines */
 int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
                        slong n, const rs_scheme_struct *s)
 {
     const fmpz_mpoly_struct **c = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct *));
-    rs_bound_t *b = run_bounds(run);
+    rs_bound_t *b = rs_run_bounds(run);
     slong i, m = 0;
     int r;
     for (i = 0; i < n; i++)
         if (ne == NULL || !ne[i]) c[m++] = poly + i;
     r = rs_conds_never(buf, len, c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
-    run_bounds_clear(b, run);
+    rs_run_bounds_clear(b, run);
     flint_free(c);
     return r;
 }
@@ -279,7 +258,7 @@ int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, 
     for (i = 0; hb->nbranch == 1 && i < hb->branch[0].ncond; i++)
         if (hb->branch[0].cond[i].trivially_false) return 0;
     for (k = 0; k < hb->nbranch; k++) nmax = FLINT_MAX(nmax, hb->branch[k].ncond);
-    b = run_bounds(run);
+    b = rs_run_bounds(run);
     c = flint_malloc((nmax + 1) * sizeof(fmpz_mpoly_struct *));
     for (k = 0; k < hb->nbranch && never; k++) {
         for (m = 0, i = 0; i < hb->branch[k].ncond; i++)
@@ -288,7 +267,7 @@ int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, 
         never = rs_conds_never(why[k], sizeof why[k], c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
     }
     flint_free(c);
-    run_bounds_clear(b, run);
+    rs_run_bounds_clear(b, run);
     if (!never) return 0;
     if (hb->nbranch == 2)
         snprintf(all, sizeof all, "neither branch can hold: branch 1: %s; branch 2: %s; never asymptotically "

@@ -177,6 +177,10 @@ const char *rs_simulate_disagreement(double *tau, rs_status_t st, slong outside,
 /* Sign information for the parameters from the case's `assume` lines
  * (RS_SIGN_* of hurwitz.h per variable, lambda's entry unknown). */
 int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
+/* The parameters' intervals from the case's `assume` lines (params first,
+ * nparams entries); free with rs_run_bounds_clear. */
+rs_bound_t *rs_run_bounds(rs_run_t *run);
+void rs_run_bounds_clear(rs_bound_t *b, rs_run_t *run);
 
 /* Symbolic conditions checked against the exact point verdict
  * (src/analysis/run.c): holds(data, point, s) is 1 (stable), 0 (not) or

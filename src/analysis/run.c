@@ -558,18 +558,29 @@ json_t *rs_json_nonzero(const rs_scheme_t s)
     return arr;
 }
 
-int *rs_run_signs(rs_run_t *run, const rs_scheme_t s)
+rs_bound_t *rs_run_bounds(rs_run_t *run)
 {
     const rs_case_struct *c = run->c;
     rs_bound_t *b = flint_malloc((c->nparams + 1) * sizeof(rs_bound_t));
-    int *sign = flint_calloc(s->nvars, sizeof(int));
     slong i;
     rs_bounds_init(b, c->nparams);
     for (i = 0; i < c->nassume; i++)
         rs_bounds_add(b, &c->assume[i], c, run->err);
-    rs_bounds_signs(sign, b, c->nparams);
-    rs_bounds_clear(b, c->nparams);
+    return b;
+}
+
+void rs_run_bounds_clear(rs_bound_t *b, rs_run_t *run)
+{
+    rs_bounds_clear(b, run->c->nparams);
     flint_free(b);
+}
+
+int *rs_run_signs(rs_run_t *run, const rs_scheme_t s)
+{
+    rs_bound_t *b = rs_run_bounds(run);
+    int *sign = flint_calloc(s->nvars, sizeof(int));
+    rs_bounds_signs(sign, b, run->c->nparams);
+    rs_run_bounds_clear(b, run);
     return sign;
 }
 
