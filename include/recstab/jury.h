@@ -57,6 +57,13 @@ int rs_jury_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
  * word-size primes under a Hadamard bound (jury.c); a table singular or
  * defective modulo the first prime goes to the integer table. */
 int rs_jury_count_fmpz_poly(rs_jury_t j, const fmpz_poly_t p, rs_error_t err);
+/* 1 when every root of c[0] + c[1] x + ... + c[n] x^n (n >= 1, c[n] != 0)
+ * lies strictly inside the unit circle, else 0: Schur's recursion in exact
+ * integers, |c_n| > |c_0| at every step, c <- (c_n c - c_0 c*)/x, each row
+ * divided by its content.  Decides only this case (0 also where the table
+ * would be singular), which makes it much cheaper than the count: a screen
+ * for points that cannot refute a stable or bounded claim. */
+int rs_jury_all_inside(const fmpz *c, slong n);
 
 /* The symbolic table of `jury` factors a lead^2 - const^2 of more than this
  * many terms (default 20 000) through its halves lead - const and

@@ -13,6 +13,7 @@
 #include <arb_fmpz_poly.h>
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
+#include "recstab/jury.h"
 #include "recstab/positivity.h"
 #include "recstab/semisimple.h"
 #include "util/polyfmt.h"
@@ -1394,33 +1395,8 @@ static void claim_bounds(rs_bound_t *b, rs_run_t *run, const rs_cond_t *conds, s
     }
 }
 
-/* 1 when every root of c[0..n] lies strictly inside the unit circle, by
- * Schur's recursion in exact integers: |c_n| > |c_0| at every step, c <-
- * (c_n c - c_0 c*) / lambda, each row divided by its content (signs and the
- * comparison keep).  Unlike the Schur-Cohn count it decides only this case,
- * with no table for the singular ones, which is what makes it cheap. */
-static int schur_inside_fmpz(fmpz *c, fmpz *d, slong n)
-{
-    fmpz_t g;
-    slong k;
-    int ok = 1;
-    fmpz_init(g);
-    for (; n > 0 && ok; n--) {
-        ok = fmpz_cmpabs(c + n, c + 0) > 0;
-        for (k = 0; k < n && ok; k++) {
-            fmpz_mul(d + k, c + n, c + k + 1);
-            fmpz_submul(d + k, c + 0, c + n - 1 - k);
-        }
-        _fmpz_vec_content(g, d, n);
-        if (ok && !fmpz_is_zero(g)) _fmpz_vec_scalar_divexact_fmpz(c, d, n, g);
-        else ok = 0;
-    }
-    fmpz_clear(g);
-    return ok;
-}
-
 /* 1 when the characteristic polynomial at the point has every root strictly
- * inside the unit circle (schur_inside_fmpz): the point is stable, so no
+ * inside the unit circle (rs_jury_all_inside): the point is stable, so no
  * counterexample to a stable or bounded claim, and needs no exact verdict
  * (a small part of its cost).  0 when not, when the step is singular there,
  * or over Q(i): the exact verdict decides. */
@@ -1432,12 +1408,8 @@ static int point_surely_stable(const rs_run_t *run, const rs_variant_t *v, const
     int ok = 0;
     if (run->c->ncsets > 0 || v->singular || v->s->complex_char) return 0;
     fmpq_poly_init(w);
-    if (rs_run_charpoly_at(w, v, vars, pt, n) && (d = fmpq_poly_degree(w)) == v->cp->degree && d > 0) {
-        fmpz *c = _fmpz_vec_init(2 * (d + 1));
-        _fmpz_vec_set(c, w->coeffs, d + 1);
-        ok = schur_inside_fmpz(c, c + d + 1, d);
-        _fmpz_vec_clear(c, 2 * (d + 1));
-    }
+    if (rs_run_charpoly_at(w, v, vars, pt, n) && (d = fmpq_poly_degree(w)) == v->cp->degree && d > 0)
+        ok = rs_jury_all_inside(w->coeffs, d);
     fmpq_poly_clear(w);
     return ok;
 }

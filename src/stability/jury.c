@@ -657,3 +657,27 @@ slong rs_jury_bilinear_terms(void)
 {
     return jury_terms[JURY_BILINEAR];
 }
+
+int rs_jury_all_inside(const fmpz *c0, slong n)
+{
+    const slong len = 2 * (n + 1);   /* n counts down below */
+    fmpz *c = _fmpz_vec_init(len), *d = c + n + 1;
+    fmpz_t g;
+    slong k;
+    int ok = n >= 1;
+    fmpz_init(g);
+    _fmpz_vec_set(c, c0, n + 1);
+    for (; n > 0 && ok; n--) {
+        ok = fmpz_cmpabs(c + n, c + 0) > 0;
+        for (k = 0; k < n && ok; k++) {
+            fmpz_mul(d + k, c + n, c + k + 1);
+            fmpz_submul(d + k, c + 0, c + n - 1 - k);
+        }
+        _fmpz_vec_content(g, d, n);
+        if (ok && !fmpz_is_zero(g)) _fmpz_vec_scalar_divexact_fmpz(c, d, n, g);
+        else ok = 0;
+    }
+    fmpz_clear(g);
+    _fmpz_vec_clear(c, len);
+    return ok;
+}

@@ -545,6 +545,51 @@ static void test_count_routes(void **state)
     fmpz_poly_clear(p);
 }
 
+/* rs_jury_all_inside against planted roots: products of k x - m (root m/k)
+ * and k x^2 + m (roots of modulus sqrt|m/k|), all inside iff every |m| < |k|
+ * (by construction, not from another Schur-Cohn route); plus hand cases:
+ * x^2 + 1 (on the circle), 2 x - 1 inside, x - 2 outside, x^3 (roots at 0) */
+static void test_all_inside(void **state)
+{
+    flint_rand_t st;
+    fmpz_poly_t p, f;
+    slong t, i;
+    (void) state;
+    flint_randinit(st);
+    fmpz_poly_init(p);
+    fmpz_poly_init(f);
+    fmpz_poly_set_str(p, "3  1 0 1");
+    assert_false(rs_jury_all_inside(p->coeffs, 2));
+    fmpz_poly_set_str(p, "2  -1 2");
+    assert_true(rs_jury_all_inside(p->coeffs, 1));
+    fmpz_poly_set_str(p, "2  -2 1");
+    assert_false(rs_jury_all_inside(p->coeffs, 1));
+    fmpz_poly_set_str(p, "4  0 0 0 1");
+    assert_true(rs_jury_all_inside(p->coeffs, 3));
+    for (t = 0; t < 400; t++) {
+        int want = 1;
+        fmpz_poly_one(p);
+        for (i = 0; i < 1 + (slong) n_randint(st, 6); i++) {
+            slong k = 1 + (slong) n_randint(st, 9), m = (slong) n_randint(st, 19) - 9;
+            if (n_randint(st, 8) == 0) m = k;      /* on the circle now and then */
+            want &= FLINT_ABS(m) < k;
+            fmpz_poly_zero(f);
+            if (n_randint(st, 2)) {
+                fmpz_poly_set_coeff_si(f, 1, k);
+                fmpz_poly_set_coeff_si(f, 0, -m);
+            } else {
+                fmpz_poly_set_coeff_si(f, 2, k);
+                fmpz_poly_set_coeff_si(f, 0, m);
+            }
+            fmpz_poly_mul(p, p, f);
+        }
+        assert_int_equal(rs_jury_all_inside(p->coeffs, fmpz_poly_degree(p)), want);
+    }
+    fmpz_poly_clear(p);
+    fmpz_poly_clear(f);
+    flint_randclear(st);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -559,6 +604,7 @@ int main(void)
         cmocka_unit_test(test_count_modular_closed_forms),
         cmocka_unit_test(test_count_identities_symbolic),
         cmocka_unit_test(test_count_routes),
+        cmocka_unit_test(test_all_inside),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     flint_cleanup();
