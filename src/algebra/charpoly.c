@@ -204,6 +204,7 @@ int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
         }
         for (i = k + 1; i < n; i++) {
             int rb = rs_budget_check(err, "the determinant");
+            double sec;
             if (rb != RS_OK) {
                 fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
                 return rb;
@@ -222,10 +223,11 @@ int rs_charpoly_det(fmpz_mpoly_t det, fmpz_mpoly_struct *A, slong n,
                                         b1 > b2 ? b1 : b2, (long) (50 * max_terms));
                 }
                 /* FLINT's products cannot be interrupted: refuse them when they would not
-                 * fit into what is left of the time budget (a fuzzed degree-59 p conj(p)) */
-                rb = rs_budget_estimate(err, "the products of the determinant",
-                                        rs_budget_mpoly_mul_seconds(A + k * n + k, aij)
-                                        + rs_budget_mpoly_mul_seconds(A + i * n + k, A + k * n + j), 0.0);
+                 * fit into what is left of the time budget (a fuzzed degree-59 p conj(p));
+                 * the clock is read only for products that could matter (> 10 ms) */
+                sec = rs_budget_mpoly_mul_seconds(A + k * n + k, aij)
+                      + rs_budget_mpoly_mul_seconds(A + i * n + k, A + k * n + j);
+                rb = sec > 0.01 ? rs_budget_estimate(err, "the products of the determinant", sec, 0.0) : RS_OK;
                 if (rb != RS_OK) {
                     fmpz_mpoly_clear(prev, ctx); fmpz_mpoly_clear(t, ctx);
                     return rb;
