@@ -46,7 +46,6 @@ static int never_holds(const void *data, fmpq *const *pt, const rs_scheme_struct
 static void hurwitz_singular(json_t *o)
 {
     json_object_del(o, "branches");
-    json_object_del(o, "never_from");   /* the singular reason replaces a contradiction found */
     json_object_set_new(o, "conditions", json_array());
     json_object_set_new(o, "never", json_string(
         "the leading coefficient of det A(lambda) vanishes at these values (its degree in lambda drops): "
@@ -209,7 +208,8 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         json_decref(nonzero);
     }
     verdict = rs_json_hurwitz_or(o, hb, s);
-    if (rs_run_hurwitz_or_never(run, o, hb, s)) verdict = -1;
+    /* singular set values override any contradiction found (hurwitz_singular below) */
+    if (!v->singular && rs_run_hurwitz_or_never(run, o, hb, s)) verdict = -1;
     json_object_set_new(o, "dropped", dropped);
     json_object_set_new(o, "always_true", always);
     json_object_set_new(o, "details", details);
