@@ -90,18 +90,6 @@ static void ralg_sort(rs_alg_t *a, slong *n)
     }
 }
 
-/* the real roots of every irreducible factor of c (degree >= 1) appended */
-static void roots_append_factored(rs_alg_t **list, slong *n, const fmpz_poly_t c)
-{
-    fmpz_poly_factor_t fac;
-    slong k;
-    if (fmpz_poly_degree(c) < 1) return;
-    fmpz_poly_factor_init(fac);
-    fmpz_poly_factor(fac, c);
-    for (k = 0; k < fac->num; k++) rs_alg_roots_append(list, n, fac->p + k, 0);
-    fmpz_poly_factor_clear(fac);
-}
-
 /* the index of the first a[i] > 0 in the sorted a[0..n) (n if none) */
 static slong first_positive(rs_alg_t *a, slong n, slong prec)
 {
@@ -962,7 +950,7 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             if (!fmpz_mpoly_discriminant(T, G, 0, ctx) || fmpz_mpoly_is_zero(T, ctx)) goto done;
             mpoly_to_s(c, T, ctx);
         } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
-        roots_append_factored(&crit, &ncrit, c);
+        rs_alg_roots_append(&crit, &ncrit, c, 0);   /* it factors c itself */
     }
     ralg_sort(crit, &ncrit);
     /* the first critical value > 0 */
@@ -1192,7 +1180,7 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
     for (i = 0; i < cyl->n; i++) {
         rs_an_forall_subst(f, cyl->p + i, 2, u0, ctx);
         mpoly_univar(g, f, 1, ctx);
-        roots_append_factored(&rts, &nr, g);
+        rs_alg_roots_append(&rts, &nr, g, 0);
     }
     ralg_sort(rts, &nr);
     /* the positive roots only: samples from (0, first) on */
