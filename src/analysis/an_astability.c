@@ -372,15 +372,12 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
 
 static int bounded(rs_status_t st) { return st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL; }
 
-/* exact status at z = i^e s0 */
-static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0, rs_error_t err)
+/* exact status at z = zr + i zi */
+static int status_at(rs_status_t *st, const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, rs_error_t err)
 {
     fmpq_poly_t re, im;
-    fmpq_t zr, zi;
     int r;
     fmpq_poly_init(re); fmpq_poly_init(im);
-    fmpq_init(zr); fmpq_init(zi);
-    fmpq_set(e ? zi : zr, s0);
     eval_at(re, im, P, zr, zi);
     /* p vanishes identically at a zero of a factor common to its coefficients
      * (e.g. det(I - zA) of an RK tableau with a repeated stage): the step
@@ -389,9 +386,21 @@ static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0
         *st = RS_STATUS_SINGULAR;
         r = RS_OK;
     } else
-    /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if they differ) */
+    /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if
+     * they differ; both say singular where the degree in lambda drops) */
     r = rs_routh_complex_checked_status(st, re, im, P->n, err);
     fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return r;
+}
+
+/* exact status at z = i^e s0 */
+static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0, rs_error_t err)
+{
+    fmpq_t zr, zi;
+    int r;
+    fmpq_init(zr); fmpq_init(zi);
+    fmpq_set(e ? zi : zr, s0);
+    r = status_at(st, P, zr, zi, err);
     fmpq_clear(zr); fmpq_clear(zi);
     return r;
 }
@@ -1144,21 +1153,14 @@ static void ray_boundary(rs_plist_t *L, const fmpz_mpoly_t A0, const fmpz_mpoly_
     fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(c1, ctx); fmpz_mpoly_clear(c2, ctx);
 }
 
-/* exact status at z = s0 (-1 + i sg u0) */
+/* exact status at z = s0 (-1 + i sg u0), that point into (zr, zi) */
 static int ray_status(rs_status_t *st, const zpoly_t *P, const fmpq_t s0, const fmpq_t u0, int sg, fmpq_t zr,
                       fmpq_t zi, rs_error_t err)
 {
-    fmpq_poly_t re, im;
-    int r = RS_OK;
     fmpq_neg(zr, s0);
     fmpq_mul(zi, s0, u0);
     if (sg < 0) fmpq_neg(zi, zi);
-    fmpq_poly_init(re); fmpq_poly_init(im);
-    eval_at(re, im, P, zr, zi);
-    if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) *st = RS_STATUS_SINGULAR;
-    else r = rs_routh_complex_checked_status(st, re, im, P->n, err);
-    fmpq_poly_clear(re); fmpq_poly_clear(im);
-    return r;
+    return status_at(st, P, zr, zi, err);
 }
 
 /* Is the ray u = u0 (z = s (-1 + i sg u0), s > 0) in the region?  The
