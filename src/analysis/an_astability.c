@@ -1206,8 +1206,8 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
 }
 
 /* A(alpha) of any p(lambda, z) over Q(i): on the rays z = s (-1 + i sg u),
- * s > 0, u >= 0 (sg = -1 too over Q(i), where the region need not be
- * symmetric), a root crosses the unit circle only on the curves of
+ * s > 0, u >= 0 (sg = -1 too when a coefficient is not real: only then
+ * need the region not be symmetric about the real axis), a root crosses the unit circle only on the curves of
  * ray_boundary; whether a ray has a point outside the region changes only
  * at the critical u of their projection in s (leading coefficients,
  * discriminants, pairwise resultants, values at s = 0: rs_proj_eliminate,
@@ -1218,14 +1218,14 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
  * values themselves lie in the closure of the cells' rays; a repeated root
  * on the circle at an isolated point there is not looked for.  *inside: 1
  * every ray of Re z < 0 in the region, 0 not (*out the angle). */
-static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, int cx, rs_run_t *run)
+static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, rs_run_t *run)
 {
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t A, B;
     rs_bound_t dom[3];
     rs_alg_t best, zero;
-    int sg, r = RS_OK, have = 0, first_cell = 0;
-    slong ncells = 0, ncritall = 0, prec = 256;
+    int sg, r = RS_OK, have = 0, first_cell = 0, cx = 0;
+    slong ncells = 0, ncritall = 0, prec = 256, k;
     fmpq_t bzr, bzi;
     rs_status_t bst = RS_STATUS_STABLE;
     *out = NULL;
@@ -1239,6 +1239,7 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     rs_alg_init(&best); rs_alg_init(&zero);
     zero.rational = 1;
     fmpq_init(bzr); fmpq_init(bzi);
+    for (k = 0; k <= P->K; k++) cx |= !fmpz_poly_is_zero(P->Ci + k);
     for (sg = 1; sg >= (cx ? -1 : 1) && r == RS_OK; sg -= 2) {
         rs_plist_t L, cyl, U;
         rs_alg_t *crit = NULL;
@@ -1695,7 +1696,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     }
     /* route 3, any method: the rays of the open left half-plane (they need the whole negative real axis) */
     if (!riv.empty && riv.lo_inf) {
-        if ((r = alpha_general(&alpha_gen, &gen_ev, gen_deg, &gen_inside, &P, cx, run)) != RS_OK) {
+        if ((r = alpha_general(&alpha_gen, &gen_ev, gen_deg, &gen_inside, &P, run)) != RS_OK) {
             json_decref(ev);
             goto out;
         }
