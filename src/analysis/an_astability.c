@@ -295,18 +295,50 @@ static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_c
     mpoly_univar(out, R, 1, ctx);
 }
 
+/* The curves where a root of q(t) = A + i B (t = variable 0 of ctx, A and B
+ * real, overwritten) is real, i.e. where a root of p lies on the unit
+ * circle, into L (factored): Res_t(A, B); with a common factor G of A and B
+ * (circle roots along the whole curve, e.g. A-stable methods on the
+ * imaginary axis) also disc_t G and lc_t G, where they collide or drop;
+ * with one part zero the discriminant of the other. */
+static void circle_curves(rs_plist_t *L, fmpz_mpoly_t A, fmpz_mpoly_t B, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t G, R;
+    slong v = 0;
+    ulong e;
+    fmpz_mpoly_init(G, ctx); fmpz_mpoly_init(R, ctx);
+    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
+        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
+        fmpz_mpoly_divexact(A, A, G, ctx);
+        fmpz_mpoly_divexact(B, B, G, ctx);
+        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+        e = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(R, G, &v, &e, 1, ctx);
+        rs_plist_add(L, R, -1, NULL, ctx);
+    }
+    if (fmpz_mpoly_is_zero(A, ctx) || fmpz_mpoly_is_zero(B, ctx)) {
+        /* one part vanishes: its real t-roots are the other's; project with the discriminant */
+        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
+        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
+               && fmpz_mpoly_resultant(R, A, B, 0, ctx))
+        rs_plist_add(L, R, -1, NULL, ctx);
+    fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(R, ctx);
+}
+
 /* The critical values on the line z = i^e s: where a root can reach the
  * unit circle or the leading coefficient vanish. */
 static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e)
 {
     fmpz_mpoly_ctx_t ctx;
-    fmpz_mpoly_t A, B, G, R, T;
+    fmpz_mpoly_t A, B, T;
+    rs_plist_t L;
     fmpz_poly_t cb, ci, re, im, u, g;
     slong k, a;
     int part;
     fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
-    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(G, ctx);
-    fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(T, ctx);
+    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(T, ctx);
+    rs_plist_init(&L);
     fmpz_poly_init(cb); fmpz_poly_init(ci); fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(u);
     fmpz_poly_init(g);
     /* q(i t, i^e s) = A + i B; the imaginary parts of p's coefficients turn by one more i */
@@ -327,35 +359,10 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
             fmpz_clear(c);
         }
     }
-    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
-        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
-        /* circle roots along the whole line (e.g. A-stable methods on the
-         * imaginary axis): their collisions and degree drops are critical */
-        fmpz_mpoly_divexact(A, A, G, ctx);
-        fmpz_mpoly_divexact(B, B, G, ctx);
-        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) {
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-        {
-            ulong d0 = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
-            slong v0 = 0;
-            fmpz_mpoly_get_coeff_vars_ui(R, G, &v0, &d0, 1, ctx);
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-    }
-    if (fmpz_mpoly_is_zero(B, ctx) || fmpz_mpoly_is_zero(A, ctx)) {
-        /* one part vanishes: its real t-roots are the other's; project with the discriminant */
-        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
-        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) {
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
-               && fmpz_mpoly_resultant(R, A, B, 0, ctx)) {
-        mpoly_to_s(u, R, ctx);
-        if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
+    circle_curves(&L, A, B, ctx);
+    for (k = 0; k < L.n; k++) {
+        mpoly_to_s(u, L.p + k, ctx);
+        rs_alg_roots_append(crit, ncrit, u, 0);
     }
     /* lambda = -1 (t = inf) and the leading coefficient: common real roots of both parts */
     for (k = 0; k < 2; k++) {
@@ -365,8 +372,8 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
         if (!fmpz_poly_is_zero(g)) rs_alg_roots_append(crit, ncrit, g, 0);
     }
     fmpz_poly_clear(cb); fmpz_poly_clear(ci); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
-    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
-    fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(T, ctx);
+    rs_plist_clear(&L, ctx);
+    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(T, ctx);
     fmpz_mpoly_ctx_clear(ctx);
 }
 
@@ -1122,21 +1129,7 @@ static void ray_boundary(rs_plist_t *L, const fmpz_mpoly_t A0, const fmpz_mpoly_
     fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(c1, ctx); fmpz_mpoly_init(c2, ctx);
     fmpz_mpoly_set(A, A0, ctx);
     fmpz_mpoly_set(B, B0, ctx);
-    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
-        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
-        fmpz_mpoly_divexact(A, A, G, ctx);
-        fmpz_mpoly_divexact(B, B, G, ctx);
-        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
-        e = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
-        fmpz_mpoly_get_coeff_vars_ui(R, G, &v, &e, 1, ctx);
-        rs_plist_add(L, R, -1, NULL, ctx);
-    }
-    if (fmpz_mpoly_is_zero(A, ctx) || fmpz_mpoly_is_zero(B, ctx)) {
-        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
-        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
-    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
-               && fmpz_mpoly_resultant(R, A, B, 0, ctx))
-        rs_plist_add(L, R, -1, NULL, ctx);
+    circle_curves(L, A, B, ctx);
     /* lambda = -1: both t^n coefficients vanish (a curve: their gcd; points: their resultant in s) */
     e = (ulong) n;
     fmpz_mpoly_get_coeff_vars_ui(c1, A0, &v, &e, 1, ctx);
