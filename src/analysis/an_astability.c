@@ -1314,23 +1314,9 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     return r;
 }
 
-/* o's alpha_degrees_approx (printed to double) and the ball deg overlap */
-static int alpha_agree(json_t *o, const arb_t deg)
-{
-    arb_t a;
-    int ok;
-    json_t *v = json_object_get(o, "alpha_degrees_approx");
-    if (v == NULL || !json_is_number(v)) return 0;
-    arb_init(a);
-    arb_set_d(a, json_number_value(v));
-    arb_add_error_2exp_si(a, -30);
-    ok = arb_overlaps(a, deg);
-    arb_clear(a);
-    return ok;
-}
-
-/* alpha_degrees (exact), its approximation, its ball and its evidence into o */
-static void alpha_set(json_t *o, json_t *exact, const arb_t deg, json_t *evidence)
+/* alpha_degrees (exact), its approximation, its ball and its evidence into
+ * o; the ball into have (the next route is compared with it) */
+static void alpha_set(json_t *o, arb_t have, json_t *exact, const arb_t deg, json_t *evidence)
 {
     char *ds = rs_radius_arb_str(deg, 15);
     json_object_set(o, "alpha_degrees", exact);
@@ -1338,6 +1324,7 @@ static void alpha_set(json_t *o, json_t *exact, const arb_t deg, json_t *evidenc
     json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
     if (evidence != NULL) json_object_set(o, "alpha_evidence", evidence);
     json_object_del(o, "alpha_note");
+    arb_set(have, deg);
     flint_free(ds);
 }
 
@@ -1402,6 +1389,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     arb_t alpha_one_deg;
     json_t *alpha_gen = NULL, *gen_ev = NULL;     /* A(alpha) by the rays against the boundary curves */
     arb_t gen_deg;
+    arb_t set_deg;   /* the ball of the alpha_degrees in o, once set: the later routes must overlap it */
     int gen_inside = 0, axes;
     if (run->m->qd != NULL) return rs_an_qd_astability(run, req);   /* R over Q(sqrt d) */
     if (rs_an_complex_mode(run)) {
@@ -1470,6 +1458,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     fmpq_init(zr); fmpq_init(zi);
     arb_init(alpha_one_deg);
     arb_init(gen_deg);
+    arb_init(set_deg);
     zdisc(disc, disci, &P);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("astability"));
@@ -1571,9 +1560,11 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
             if (lin_astable) {
                 json_object_set_new(o, "alpha_degrees", json_integer(90));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
+                arb_set_ui(set_deg, 90);
             } else if (!infok || !lcok) {
                 json_object_set_new(o, "alpha_degrees", json_integer(0));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(0.0));
+                arb_zero(set_deg);
             } else {
                 arb_t deg;
                 int found;
@@ -1585,6 +1576,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                     json_object_set_new(o, "alpha_degrees", aj);
                     json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(deg), ARF_RND_NEAR)));
                     json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+                    arb_set(set_deg, deg);
                     flint_free(ds);
                 } else {
                     json_decref(aj);
@@ -1727,8 +1719,8 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     if (alpha_one != NULL) {
         json_t *have = json_object_get(o, "alpha_degrees");
         if (have == NULL || json_is_null(have)) {
-            alpha_set(o, alpha_one, alpha_one_deg, alpha_ev);
-        } else if (!alpha_agree(o, alpha_one_deg)) {
+            alpha_set(o, set_deg, alpha_one, alpha_one_deg, alpha_ev);
+        } else if (!arb_overlaps(set_deg, alpha_one_deg)) {
             /* both routes (p linear in z and one-step): the angles must agree */
             json_decref(ev);
             r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the boundary "
@@ -1739,14 +1731,14 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     if (gen_ev != NULL) {
         json_t *have = json_object_get(o, "alpha_degrees");
         if (have == NULL || json_is_null(have)) {
-            if (alpha_gen != NULL) alpha_set(o, alpha_gen, gen_deg, gen_ev);
+            if (alpha_gen != NULL) alpha_set(o, set_deg, alpha_gen, gen_deg, gen_ev);
             else {
                 json_object_set_new(o, "alpha_degrees", json_integer(90));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
                 json_object_set(o, "alpha_evidence", gen_ev);
                 json_object_del(o, "alpha_note");
             }
-        } else if (!alpha_agree(o, gen_deg)) {
+        } else if (!arb_overlaps(set_deg, gen_deg)) {
             /* the general route against the boundary locus or the one-step rays */
             json_decref(ev);
             r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the rays against the "
@@ -1854,5 +1846,6 @@ out:
     json_decref(alpha_gen);
     json_decref(gen_ev);
     arb_clear(gen_deg);
+    arb_clear(set_deg);
     return r;
 }
