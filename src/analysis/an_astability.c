@@ -1276,14 +1276,7 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
                 fmpq_set(bzr, zr); fmpq_set(bzi, zi);
                 bst = st;
                 first_cell = (i == first);
-                rs_alg_clear(&best);
-                rs_alg_init(&best);
-                if (first_cell) { best.rational = 1; fmpq_zero(best.q); arb_zero(best.x); }
-                else {
-                    rs_alg_t *a = crit + i - 1;
-                    best.rational = a->rational; fmpq_set(best.q, a->q); fmpz_poly_set(best.minpoly, a->minpoly);
-                    best.idx = a->idx; arb_set(best.x, a->x); best.prec = a->prec;
-                }
+                rs_alg_set(&best, first_cell ? &zero : crit + i - 1);
             }
             fmpq_clear(u0); fmpq_clear(zr); fmpq_clear(zi);
             if (r == RS_OK && bad) break;
