@@ -90,18 +90,6 @@ static void ralg_sort(rs_alg_t *a, slong *n)
     }
 }
 
-/* the real roots of every irreducible factor of c (degree >= 1) appended */
-static void roots_append_factored(rs_alg_t **list, slong *n, const fmpz_poly_t c)
-{
-    fmpz_poly_factor_t fac;
-    slong k;
-    if (fmpz_poly_degree(c) < 1) return;
-    fmpz_poly_factor_init(fac);
-    fmpz_poly_factor(fac, c);
-    for (k = 0; k < fac->num; k++) rs_alg_roots_append(list, n, fac->p + k, 0);
-    fmpz_poly_factor_clear(fac);
-}
-
 /* the index of the first a[i] > 0 in the sorted a[0..n) (n if none) */
 static slong first_positive(rs_alg_t *a, slong n, slong prec)
 {
@@ -307,18 +295,50 @@ static void mpoly_to_s(fmpz_poly_t out, const fmpz_mpoly_t R, const fmpz_mpoly_c
     mpoly_univar(out, R, 1, ctx);
 }
 
+/* The curves where a root of q(t) = A + i B (t = variable 0 of ctx, A and B
+ * real, overwritten) is real, i.e. where a root of p lies on the unit
+ * circle, into L (factored): Res_t(A, B); with a common factor G of A and B
+ * (circle roots along the whole curve, e.g. A-stable methods on the
+ * imaginary axis) also disc_t G and lc_t G, where they collide or drop;
+ * with one part zero the discriminant of the other. */
+static void circle_curves(rs_plist_t *L, fmpz_mpoly_t A, fmpz_mpoly_t B, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_mpoly_t G, R;
+    slong v = 0;
+    ulong e;
+    fmpz_mpoly_init(G, ctx); fmpz_mpoly_init(R, ctx);
+    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
+        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
+        fmpz_mpoly_divexact(A, A, G, ctx);
+        fmpz_mpoly_divexact(B, B, G, ctx);
+        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+        e = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
+        fmpz_mpoly_get_coeff_vars_ui(R, G, &v, &e, 1, ctx);
+        rs_plist_add(L, R, -1, NULL, ctx);
+    }
+    if (fmpz_mpoly_is_zero(A, ctx) || fmpz_mpoly_is_zero(B, ctx)) {
+        /* one part vanishes: its real t-roots are the other's; project with the discriminant */
+        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
+        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
+    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
+               && fmpz_mpoly_resultant(R, A, B, 0, ctx))
+        rs_plist_add(L, R, -1, NULL, ctx);
+    fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(R, ctx);
+}
+
 /* The critical values on the line z = i^e s: where a root can reach the
  * unit circle or the leading coefficient vanish. */
 static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e)
 {
     fmpz_mpoly_ctx_t ctx;
-    fmpz_mpoly_t A, B, G, R, T;
+    fmpz_mpoly_t A, B, T;
+    rs_plist_t L;
     fmpz_poly_t cb, ci, re, im, u, g;
     slong k, a;
     int part;
     fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
-    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(G, ctx);
-    fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(T, ctx);
+    fmpz_mpoly_init(A, ctx); fmpz_mpoly_init(B, ctx); fmpz_mpoly_init(T, ctx);
+    rs_plist_init(&L);
     fmpz_poly_init(cb); fmpz_poly_init(ci); fmpz_poly_init(re); fmpz_poly_init(im); fmpz_poly_init(u);
     fmpz_poly_init(g);
     /* q(i t, i^e s) = A + i B; the imaginary parts of p's coefficients turn by one more i */
@@ -339,35 +359,10 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
             fmpz_clear(c);
         }
     }
-    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
-        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
-        /* circle roots along the whole line (e.g. A-stable methods on the
-         * imaginary axis): their collisions and degree drops are critical */
-        fmpz_mpoly_divexact(A, A, G, ctx);
-        fmpz_mpoly_divexact(B, B, G, ctx);
-        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) {
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-        {
-            ulong d0 = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
-            slong v0 = 0;
-            fmpz_mpoly_get_coeff_vars_ui(R, G, &v0, &d0, 1, ctx);
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-    }
-    if (fmpz_mpoly_is_zero(B, ctx) || fmpz_mpoly_is_zero(A, ctx)) {
-        /* one part vanishes: its real t-roots are the other's; project with the discriminant */
-        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
-        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) {
-            mpoly_to_s(u, R, ctx);
-            if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
-        }
-    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
-               && fmpz_mpoly_resultant(R, A, B, 0, ctx)) {
-        mpoly_to_s(u, R, ctx);
-        if (!fmpz_poly_is_zero(u)) rs_alg_roots_append(crit, ncrit, u, 0);
+    circle_curves(&L, A, B, ctx);
+    for (k = 0; k < L.n; k++) {
+        mpoly_to_s(u, L.p + k, ctx);
+        rs_alg_roots_append(crit, ncrit, u, 0);
     }
     /* lambda = -1 (t = inf) and the leading coefficient: common real roots of both parts */
     for (k = 0; k < 2; k++) {
@@ -377,22 +372,19 @@ static void line_critical(rs_alg_t **crit, slong *ncrit, const zpoly_t *P, int e
         if (!fmpz_poly_is_zero(g)) rs_alg_roots_append(crit, ncrit, g, 0);
     }
     fmpz_poly_clear(cb); fmpz_poly_clear(ci); fmpz_poly_clear(re); fmpz_poly_clear(im); fmpz_poly_clear(u); fmpz_poly_clear(g);
-    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(G, ctx);
-    fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(T, ctx);
+    rs_plist_clear(&L, ctx);
+    fmpz_mpoly_clear(A, ctx); fmpz_mpoly_clear(B, ctx); fmpz_mpoly_clear(T, ctx);
     fmpz_mpoly_ctx_clear(ctx);
 }
 
 static int bounded(rs_status_t st) { return st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL; }
 
-/* exact status at z = i^e s0 */
-static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0, rs_error_t err)
+/* exact status at z = zr + i zi */
+static int status_at(rs_status_t *st, const zpoly_t *P, const fmpq_t zr, const fmpq_t zi, rs_error_t err)
 {
     fmpq_poly_t re, im;
-    fmpq_t zr, zi;
     int r;
     fmpq_poly_init(re); fmpq_poly_init(im);
-    fmpq_init(zr); fmpq_init(zi);
-    fmpq_set(e ? zi : zr, s0);
     eval_at(re, im, P, zr, zi);
     /* p vanishes identically at a zero of a factor common to its coefficients
      * (e.g. det(I - zA) of an RK tableau with a repeated stage): the step
@@ -401,9 +393,21 @@ static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0
         *st = RS_STATUS_SINGULAR;
         r = RS_OK;
     } else
-    /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if they differ) */
+    /* Schur-Cohn over Q(i) and Bilharz on the bilinear transform (exit 3 if
+     * they differ; both say singular where the degree in lambda drops) */
     r = rs_routh_complex_checked_status(st, re, im, P->n, err);
     fmpq_poly_clear(re); fmpq_poly_clear(im);
+    return r;
+}
+
+/* exact status at z = i^e s0 */
+static int status_line(rs_status_t *st, const zpoly_t *P, int e, const fmpq_t s0, rs_error_t err)
+{
+    fmpq_t zr, zi;
+    int r;
+    fmpq_init(zr); fmpq_init(zi);
+    fmpq_set(e ? zi : zr, s0);
+    r = status_at(st, P, zr, zi, err);
     fmpq_clear(zr); fmpq_clear(zi);
     return r;
 }
@@ -962,7 +966,7 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
             if (!fmpz_mpoly_discriminant(T, G, 0, ctx) || fmpz_mpoly_is_zero(T, ctx)) goto done;
             mpoly_to_s(c, T, ctx);
         } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
-        roots_append_factored(&crit, &ncrit, c);
+        rs_alg_roots_append(&crit, &ncrit, c, 0);   /* it factors c itself */
     }
     ralg_sort(crit, &ncrit);
     /* the first critical value > 0 */
@@ -1125,21 +1129,7 @@ static void ray_boundary(rs_plist_t *L, const fmpz_mpoly_t A0, const fmpz_mpoly_
     fmpz_mpoly_init(R, ctx); fmpz_mpoly_init(c1, ctx); fmpz_mpoly_init(c2, ctx);
     fmpz_mpoly_set(A, A0, ctx);
     fmpz_mpoly_set(B, B0, ctx);
-    if (!fmpz_mpoly_is_zero(A, ctx) && !fmpz_mpoly_is_zero(B, ctx)
-        && fmpz_mpoly_gcd(G, A, B, ctx) && fmpz_mpoly_degree_si(G, 0, ctx) > 0) {
-        fmpz_mpoly_divexact(A, A, G, ctx);
-        fmpz_mpoly_divexact(B, B, G, ctx);
-        if (fmpz_mpoly_degree_si(G, 0, ctx) >= 2 && fmpz_mpoly_discriminant(R, G, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
-        e = (ulong) fmpz_mpoly_degree_si(G, 0, ctx);
-        fmpz_mpoly_get_coeff_vars_ui(R, G, &v, &e, 1, ctx);
-        rs_plist_add(L, R, -1, NULL, ctx);
-    }
-    if (fmpz_mpoly_is_zero(A, ctx) || fmpz_mpoly_is_zero(B, ctx)) {
-        fmpz_mpoly_struct *X = fmpz_mpoly_is_zero(B, ctx) ? A : B;
-        if (fmpz_mpoly_degree_si(X, 0, ctx) >= 1 && fmpz_mpoly_discriminant(R, X, 0, ctx)) rs_plist_add(L, R, -1, NULL, ctx);
-    } else if (fmpz_mpoly_degree_si(A, 0, ctx) + fmpz_mpoly_degree_si(B, 0, ctx) >= 1
-               && fmpz_mpoly_resultant(R, A, B, 0, ctx))
-        rs_plist_add(L, R, -1, NULL, ctx);
+    circle_curves(L, A, B, ctx);
     /* lambda = -1: both t^n coefficients vanish (a curve: their gcd; points: their resultant in s) */
     e = (ulong) n;
     fmpz_mpoly_get_coeff_vars_ui(c1, A0, &v, &e, 1, ctx);
@@ -1156,21 +1146,14 @@ static void ray_boundary(rs_plist_t *L, const fmpz_mpoly_t A0, const fmpz_mpoly_
     fmpz_mpoly_clear(R, ctx); fmpz_mpoly_clear(c1, ctx); fmpz_mpoly_clear(c2, ctx);
 }
 
-/* exact status at z = s0 (-1 + i sg u0) */
+/* exact status at z = s0 (-1 + i sg u0), that point into (zr, zi) */
 static int ray_status(rs_status_t *st, const zpoly_t *P, const fmpq_t s0, const fmpq_t u0, int sg, fmpq_t zr,
                       fmpq_t zi, rs_error_t err)
 {
-    fmpq_poly_t re, im;
-    int r = RS_OK;
     fmpq_neg(zr, s0);
     fmpq_mul(zi, s0, u0);
     if (sg < 0) fmpq_neg(zi, zi);
-    fmpq_poly_init(re); fmpq_poly_init(im);
-    eval_at(re, im, P, zr, zi);
-    if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) *st = RS_STATUS_SINGULAR;
-    else r = rs_routh_complex_checked_status(st, re, im, P->n, err);
-    fmpq_poly_clear(re); fmpq_poly_clear(im);
-    return r;
+    return status_at(st, P, zr, zi, err);
 }
 
 /* Is the ray u = u0 (z = s (-1 + i sg u0), s > 0) in the region?  The
@@ -1192,7 +1175,7 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
     for (i = 0; i < cyl->n; i++) {
         rs_an_forall_subst(f, cyl->p + i, 2, u0, ctx);
         mpoly_univar(g, f, 1, ctx);
-        roots_append_factored(&rts, &nr, g);
+        rs_alg_roots_append(&rts, &nr, g, 0);
     }
     ralg_sort(rts, &nr);
     /* the positive roots only: samples from (0, first) on */
@@ -1216,8 +1199,8 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
 }
 
 /* A(alpha) of any p(lambda, z) over Q(i): on the rays z = s (-1 + i sg u),
- * s > 0, u >= 0 (sg = -1 too over Q(i), where the region need not be
- * symmetric), a root crosses the unit circle only on the curves of
+ * s > 0, u >= 0 (sg = -1 too when a coefficient is not real: only then
+ * need the region not be symmetric about the real axis), a root crosses the unit circle only on the curves of
  * ray_boundary; whether a ray has a point outside the region changes only
  * at the critical u of their projection in s (leading coefficients,
  * discriminants, pairwise resultants, values at s = 0: rs_proj_eliminate,
@@ -1228,14 +1211,14 @@ static int ray_decide(int *bad, rs_status_t *st, fmpq_t zr, fmpq_t zi, const zpo
  * values themselves lie in the closure of the cells' rays; a repeated root
  * on the circle at an isolated point there is not looked for.  *inside: 1
  * every ray of Re z < 0 in the region, 0 not (*out the angle). */
-static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, int cx, rs_run_t *run)
+static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, const zpoly_t *P, rs_run_t *run)
 {
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t A, B;
     rs_bound_t dom[3];
     rs_alg_t best, zero;
-    int sg, r = RS_OK, have = 0, first_cell = 0;
-    slong ncells = 0, ncritall = 0, prec = 256;
+    int sg, r = RS_OK, have = 0, first_cell = 0, cx = 0;
+    slong ncells = 0, ncritall = 0, prec = 256, k;
     fmpq_t bzr, bzi;
     rs_status_t bst = RS_STATUS_STABLE;
     *out = NULL;
@@ -1249,6 +1232,7 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     rs_alg_init(&best); rs_alg_init(&zero);
     zero.rational = 1;
     fmpq_init(bzr); fmpq_init(bzi);
+    for (k = 0; k <= P->K; k++) cx |= !fmpz_poly_is_zero(P->Ci + k);
     for (sg = 1; sg >= (cx ? -1 : 1) && r == RS_OK; sg -= 2) {
         rs_plist_t L, cyl, U;
         rs_alg_t *crit = NULL;
@@ -1292,14 +1276,7 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
                 fmpq_set(bzr, zr); fmpq_set(bzi, zi);
                 bst = st;
                 first_cell = (i == first);
-                rs_alg_clear(&best);
-                rs_alg_init(&best);
-                if (first_cell) { best.rational = 1; fmpq_zero(best.q); arb_zero(best.x); }
-                else {
-                    rs_alg_t *a = crit + i - 1;
-                    best.rational = a->rational; fmpq_set(best.q, a->q); fmpz_poly_set(best.minpoly, a->minpoly);
-                    best.idx = a->idx; arb_set(best.x, a->x); best.prec = a->prec;
-                }
+                rs_alg_set(&best, first_cell ? &zero : crit + i - 1);
             }
             fmpq_clear(u0); fmpq_clear(zr); fmpq_clear(zi);
             if (r == RS_OK && bad) break;
@@ -1330,23 +1307,9 @@ static int alpha_general(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     return r;
 }
 
-/* o's alpha_degrees_approx (printed to double) and the ball deg overlap */
-static int alpha_agree(json_t *o, const arb_t deg)
-{
-    arb_t a;
-    int ok;
-    json_t *v = json_object_get(o, "alpha_degrees_approx");
-    if (v == NULL || !json_is_number(v)) return 0;
-    arb_init(a);
-    arb_set_d(a, json_number_value(v));
-    arb_add_error_2exp_si(a, -30);
-    ok = arb_overlaps(a, deg);
-    arb_clear(a);
-    return ok;
-}
-
-/* alpha_degrees (exact), its approximation, its ball and its evidence into o */
-static void alpha_set(json_t *o, json_t *exact, const arb_t deg, json_t *evidence)
+/* alpha_degrees (exact), its approximation, its ball and its evidence into
+ * o; the ball into have (the next route is compared with it) */
+static void alpha_set(json_t *o, arb_t have, json_t *exact, const arb_t deg, json_t *evidence)
 {
     char *ds = rs_radius_arb_str(deg, 15);
     json_object_set(o, "alpha_degrees", exact);
@@ -1354,6 +1317,7 @@ static void alpha_set(json_t *o, json_t *exact, const arb_t deg, json_t *evidenc
     json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
     if (evidence != NULL) json_object_set(o, "alpha_evidence", evidence);
     json_object_del(o, "alpha_note");
+    arb_set(have, deg);
     flint_free(ds);
 }
 
@@ -1418,6 +1382,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     arb_t alpha_one_deg;
     json_t *alpha_gen = NULL, *gen_ev = NULL;     /* A(alpha) by the rays against the boundary curves */
     arb_t gen_deg;
+    arb_t set_deg;   /* the ball of the alpha_degrees in o, once set: the later routes must overlap it */
     int gen_inside = 0, axes;
     if (run->m->qd != NULL) return rs_an_qd_astability(run, req);   /* R over Q(sqrt d) */
     if (rs_an_complex_mode(run)) {
@@ -1486,6 +1451,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     fmpq_init(zr); fmpq_init(zi);
     arb_init(alpha_one_deg);
     arb_init(gen_deg);
+    arb_init(set_deg);
     zdisc(disc, disci, &P);
     o = json_object();
     json_object_set_new(o, "analysis", json_string("astability"));
@@ -1587,9 +1553,11 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
             if (lin_astable) {
                 json_object_set_new(o, "alpha_degrees", json_integer(90));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
+                arb_set_ui(set_deg, 90);
             } else if (!infok || !lcok) {
                 json_object_set_new(o, "alpha_degrees", json_integer(0));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(0.0));
+                arb_zero(set_deg);
             } else {
                 arb_t deg;
                 int found;
@@ -1601,6 +1569,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                     json_object_set_new(o, "alpha_degrees", aj);
                     json_object_set_new(o, "alpha_degrees_approx", json_real(arf_get_d(arb_midref(deg), ARF_RND_NEAR)));
                     json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+                    arb_set(set_deg, deg);
                     flint_free(ds);
                 } else {
                     json_decref(aj);
@@ -1705,7 +1674,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     }
     /* route 3, any method: the rays of the open left half-plane (they need the whole negative real axis) */
     if (!riv.empty && riv.lo_inf) {
-        if ((r = alpha_general(&alpha_gen, &gen_ev, gen_deg, &gen_inside, &P, cx, run)) != RS_OK) {
+        if ((r = alpha_general(&alpha_gen, &gen_ev, gen_deg, &gen_inside, &P, run)) != RS_OK) {
             json_decref(ev);
             goto out;
         }
@@ -1743,8 +1712,8 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     if (alpha_one != NULL) {
         json_t *have = json_object_get(o, "alpha_degrees");
         if (have == NULL || json_is_null(have)) {
-            alpha_set(o, alpha_one, alpha_one_deg, alpha_ev);
-        } else if (!alpha_agree(o, alpha_one_deg)) {
+            alpha_set(o, set_deg, alpha_one, alpha_one_deg, alpha_ev);
+        } else if (!arb_overlaps(set_deg, alpha_one_deg)) {
             /* both routes (p linear in z and one-step): the angles must agree */
             json_decref(ev);
             r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the boundary "
@@ -1755,14 +1724,14 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
     if (gen_ev != NULL) {
         json_t *have = json_object_get(o, "alpha_degrees");
         if (have == NULL || json_is_null(have)) {
-            if (alpha_gen != NULL) alpha_set(o, alpha_gen, gen_deg, gen_ev);
+            if (alpha_gen != NULL) alpha_set(o, set_deg, alpha_gen, gen_deg, gen_ev);
             else {
                 json_object_set_new(o, "alpha_degrees", json_integer(90));
                 json_object_set_new(o, "alpha_degrees_approx", json_real(90.0));
                 json_object_set(o, "alpha_evidence", gen_ev);
                 json_object_del(o, "alpha_note");
             }
-        } else if (!alpha_agree(o, gen_deg)) {
+        } else if (!arb_overlaps(set_deg, gen_deg)) {
             /* the general route against the boundary locus or the one-step rays */
             json_decref(ev);
             r = rs_req_relocate(run, q, rs_error_set(run->err, RS_ERR_INCONSISTENT, "A(alpha): the rays against the "
@@ -1870,5 +1839,6 @@ out:
     json_decref(alpha_gen);
     json_decref(gen_ev);
     arb_clear(gen_deg);
+    arb_clear(set_deg);
     return r;
 }

@@ -2704,6 +2704,7 @@ int rs_an_region_cx_on(json_t **out, rs_run_t *run, const rs_variant_t *v, slong
 
 void rs_alg_init(rs_alg_t *a) { alg_init(a); }
 void rs_alg_clear(rs_alg_t *a) { alg_clear(a); }
+void rs_alg_set(rs_alg_t *d, const rs_alg_t *a) { alg_copy(d, a); }
 void rs_alg_refine(rs_alg_t *a, slong prec) { alg_refine(a, prec); }
 int rs_alg_cmp(rs_alg_t *a, rs_alg_t *b) { return alg_cmp(a, b); }
 void rs_alg_roots_append(rs_alg_t **list, slong *n, const fmpz_poly_t f, int boundary)

@@ -57,6 +57,8 @@ typedef struct {
 
 void rs_alg_init(rs_alg_t *a);
 void rs_alg_clear(rs_alg_t *a);
+/* d := a (initialised) */
+void rs_alg_set(rs_alg_t *d, const rs_alg_t *a);
 /* the enclosure refined to at least prec bits */
 void rs_alg_refine(rs_alg_t *a, slong prec);
 /* -1, 0, 1 */

@@ -5,8 +5,10 @@ only, no recstab: f(theta) = max over r > 0 of the largest |root| of
 p(., -r e^{i theta}) (mpmath.polyroots; a log-r scan, then ternary search
 around the worst r), alpha = the largest theta with f <= 1 + 1e-9 on both
 sides (theta and -theta) by bisection.  Usage: alpha_rays_poly.py NAME,
-NAME one of the methods below.  Used for tests/cli/suite_complex.sh, which
-keeps the printed degrees as a literal (a run takes about 7 minutes).
+NAME one of the methods below.  Used for tests/unit/analysis/test_astability.c
+(test_rays_route), which keeps the printed degrees of enright3 as a literal
+upper bound of alpha (a run takes about 7 minutes; the lower bound there is
+its own boundary-locus scan).
 When every ray up to 89.9 degrees is inside it also scans theta = 90
 (the imaginary axis) and says whether it is inside.
   enright3: Enright's second-derivative method, k = 3 (order 5):
