@@ -1069,11 +1069,6 @@ static void p_at_point(fmpz_poly_t u, const rs_variant_t *v, fmpq *const *pp)
 #define SAMPLE_POINTS 12
 #define SAMPLE_TRIES 80
 
-/* Checks conditions (holds(data, point) = 1 stable, 0 not, -1 on a boundary)
- * against the exact verdict (Routh and Schur-Cohn on p at the point) at a
- * few deterministic rational points that satisfy the assume lines and the
- * non-zero assumptions; points where p loses degree are skipped.  Adds
- * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
 void rs_run_sample_disagree(json_t *chk, json_t *point, int says, const char *verdict)
 {
     json_object_set_new(chk, "point", point);
@@ -1090,6 +1085,11 @@ void rs_run_sample_check_set(rs_run_t *run, json_t *o, json_t *chk, slong points
     if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
 }
 
+/* Checks conditions (holds(data, point) = 1 stable, 0 not, -1 on a boundary)
+ * against the exact verdict (Routh and Schur-Cohn on p at the point) at a
+ * few deterministic rational points that satisfy the assume lines and the
+ * non-zero assumptions; points where p loses degree are skipped.  Adds
+ * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o)
 {
     const rs_scheme_struct *s = v->s;
@@ -1152,9 +1152,7 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
                 for (k = 0; k < np; k++)
                     if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
                         json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
-                json_object_set_new(chk, "point", bad);
-                json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
-                json_object_set_new(chk, "exact_verdict", json_string(rs_status_name(st)));
+                rs_run_sample_disagree(chk, bad, says, rs_status_name(st));
                 rs_json_add_count(chk, rc);
             }
             rs_rootcount_clear(rc);
@@ -1167,19 +1165,12 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
             for (k = 0; k < np; k++)
                 if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
                     json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
-            json_object_set_new(chk, "point", bad);
-            json_object_set_new(chk, "conditions_say", json_string("stable"));
-            json_object_set_new(chk, "exact_verdict", json_string(fmpz_poly_is_zero(u) ? "singular (p = 0)"
-                                                                                       : "singular"));
+            rs_run_sample_disagree(chk, bad, says, fmpz_poly_is_zero(u) ? "singular (p = 0)" : "singular");
         }
         fmpz_poly_clear(u);
     }
-    json_object_set_new(chk, "points", json_integer(nok));
-    json_object_set_new(chk, "agree", json_boolean(bad == NULL));
-    json_object_set_new(chk, "against", json_string("exact verdict (Routh and Schur-Cohn) at rational points "
-                                                    "satisfying the assumptions"));
-    json_object_set_new(o, "sample_check", chk);
-    if (bad != NULL) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict (Routh and Schur-Cohn) at rational points "
+                            "satisfying the assumptions");
     for (i = 0; i < ncp; i++) rs_condpoly_clear(cps + i, s);
     free(cps);
     rs_bounds_clear(b, np);
