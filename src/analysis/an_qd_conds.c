@@ -222,77 +222,36 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
 }
 
 #define QD_SAMPLE_POINTS 12
-#define QD_SAMPLE_TRIES 200
 
 /* the conditions against qd_point_stable at admissible rational points of
- * the free parameters ("sample_check"; a disagreement: exit 3) */
+ * the free parameters (rs_sample_pts_t; "sample_check"; a disagreement: exit 3) */
 static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1,
                            slong n, const qc_t *q, json_t *o, const rs_request_t *rq)
 {
-    /* numerators and denominators: both signs, 0, near 1, a large one */
-    static const slong num[] = {1, 1, 2, 1, 3, -1, 5, -1, 7, 0, 13, -2, 1, 9, 10, -3, 99, 3};
-    static const slong den[] = {2, 1, 1, 3, 2, 2, 1, 1, 10, 1, 10, 1, 7, 8, 1, 2, 100, 4};
-    const slong nc = (slong) (sizeof num / sizeof num[0]);
-    const rs_scheme_struct *s = v->s;
-    slong nfree = 0, j, k, nok = 0, ncp = 0, *fv = flint_malloc((size_t) (s->nvars + 1) * sizeof(slong));
-    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
-    fmpq *pt = _fmpq_vec_init(s->nvars);
-    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    rs_sample_pts_t P;
+    slong nok = 0;
     json_t *chk = json_object(), *bad = NULL;
-    rs_error_t e2;
     int r = RS_OK;
-    rs_error_init(e2);
-    for (k = 0; k < s->nvars; k++) {
-        pp[k] = pt + k;
-        if (k != s->lambda_var && k != s->sqrt_var
-            && (fmpz_mpoly_degree_si(p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(p1, k, s->zctx) > 0))
-            fv[nfree++] = k;
-    }
-    for (k = 0; k < run->c->nassume; k++) {
-        if (rs_condpoly_compile(cps + ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
-        ncp++;
-    }
-    {
-        /* the set values stand in the points: the assumptions on them are checked too */
-        const char *key;
-        json_t *val;
-        json_object_foreach(v->assigned, key, val) {
-            slong idx = rs_case_param_index(run->c, key);
-            if (idx >= 0 && idx < s->nvars && fmpq_set_str(pt + idx, json_string_value(val), 10) == 0)
-                fmpq_canonicalise(pt + idx);
-        }
-    }
-    for (j = 0; j < QD_SAMPLE_TRIES && nok < (nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL; j++) {
-        int says, st;
-        for (k = 0; k < nfree; k++) {
-            slong i = (j * (2 * k + 1) + j / nc + 5 * k) % nc;
-            fmpq_set_si(pt + fv[k], num[i], (ulong) den[i]);
-        }
-        if (!rs_run_point_admissible(cps, ncp, pp, s)) continue;
-        st = qd_point_stable(p0, p1, n, pp, s);
+    rs_sample_pts_init(&P, run, v, p0, p1, v->s->sqrt_var);
+    while (nok < (P.nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
+        int says, st = qd_point_stable(p0, p1, n, P.pp, v->s);
         if (st == -1) continue;
         if (st == -2) {
             r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): Schur-Cohn and the certified "
                              "roots disagree at a sample point", rq->text);
             break;
         }
-        says = qc_hold(q, pp);
+        says = qc_hold(q, P.pp);
         nok++;
         if (st != says) {
-            bad = json_object();
-            for (k = 0; k < nfree; k++) json_object_set_new(bad, s->vars[fv[k]], rs_json_fmpq(pt + fv[k]));
+            bad = rs_sample_pts_json(&P);
             rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
         }
     }
     rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
                             "signs and the certified Arb roots, which must agree) at rational points satisfying the "
                             "assumptions");
-    for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
-    free(cps);
-    _fmpq_vec_clear(pt, s->nvars);
-    flint_free(pp);
-    flint_free(fv);
-    rs_error_clear(e2);
+    rs_sample_pts_clear(&P);
     return r;
 }
 
