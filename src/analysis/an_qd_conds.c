@@ -199,7 +199,7 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
     fmpq_poly_t e0, e1;
     rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
     slong k, deg;
-    int sc = -1, ar;
+    int sc = -1;
     fmpq_poly_init(e0);
     fmpq_poly_init(e1);
     rs_run_cx_eval(e0, p0, pt, s);
@@ -211,9 +211,8 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
     }
     if (deg >= 0 && deg < n) sc = 0;
     else if (deg == n) {
-        sc = rs_qdc_schur_stable(c, n, s->sqrt_d);
-        ar = rs_qdc_roots_inside(c, n, s->sqrt_d);
-        if ((sc == 1 && ar == 0) || (sc == 0 && ar == 1)) sc = -2;
+        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
+        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
     }
     rs_qdc_vec_clear(c, n + 1);
     fmpq_poly_clear(e0);
