@@ -462,6 +462,14 @@ int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d)
     return above > 0 ? 0 : below == n ? 1 : -1;
 }
 
+int rs_qdc_stable_checked(int *ar, const rs_qdc_struct *c, slong n, slong d)
+{
+    int sc = rs_qdc_schur_stable(c, n, d), a = rs_qdc_roots_inside(c, n, d);
+    if (ar != NULL) *ar = a;
+    if ((sc == 1 && a == 0) || (sc == 0 && a == 1)) return -2;
+    return sc == 1 ? 1 : a == 0 ? 0 : -1;
+}
+
 void rs_qd_astab_init(rs_qd_astab_t a)
 {
     memset(a, 0, sizeof(rs_qd_astab_struct));

@@ -77,6 +77,13 @@ int rs_qdc_schur_count(slong *inside, const rs_qdc_struct *c, slong n, slong d);
  * ball): 1 all |root| < 1, 0 some |root| > 1, -1 undecided at every
  * precision up to 4096 bits (a root on or too near the circle) */
 int rs_qdc_roots_inside(const rs_qdc_struct *c, slong n, slong d);
+/* rs_qdc_schur_stable and rs_qdc_roots_inside on the same polynomial,
+ * which must agree: 1 stable (Schur-Cohn; no root certified outside), 0 a
+ * root certified outside (Schur-Cohn not stable), -1 not stable by
+ * Schur-Cohn with no root certified outside (a root on or too near the
+ * circle: marginal and unstable not told apart), -2 they disagree (a bug:
+ * the caller exits 3).  *ar (unless NULL): rs_qdc_roots_inside's answer */
+int rs_qdc_stable_checked(int *ar, const rs_qdc_struct *c, slong n, slong d);
 /* the roots' certified sides: *below with |root| < 1, *above with |root| > 1;
  * 1 when every root is on one side (none on or too near the circle) */
 int rs_qdc_roots_count(slong *below, slong *above, const rs_qdc_struct *c, slong n, slong d);

@@ -160,73 +160,43 @@ static int cond_add(cx_conds_t *jc, json_t *conds, json_t *dropped, const fmpz_m
 }
 
 #define CX_SAMPLE_POINTS 12
-#define CX_SAMPLE_TRIES 200
 
 /* The conditions against the exact Q(i) verdict (complex Schur-Cohn and
  * Bilharz, rs_routh_complex_checked_status: RS_ERR_INCONSISTENT when those
- * two differ) at admissible rational points; a disagreement is recorded in
- * o's "sample_check" and makes the run inconsistent (exit 3). */
+ * two differ) at admissible rational points (rs_sample_pts_t); a
+ * disagreement is recorded in o's "sample_check" and makes the run
+ * inconsistent (exit 3). */
 static int cx_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
                            slong n, const cx_conds_t *jc, json_t *o)
 {
-    /* small rationals of both signs, 0 and a large one */
-    static const slong cand[][2] = {{1, 2}, {1, 1}, {2, 1}, {1, 3}, {3, 2}, {-1, 2}, {5, 1}, {-1, 1}, {7, 10},
-                                    {0, 1}, {13, 10}, {-2, 1}, {1, 7}, {9, 8}, {10, 1}, {-3, 2}, {99, 100}};
-    const slong ncand = (slong) (sizeof cand / sizeof cand[0]);
     const rs_scheme_struct *s = v->s;
-    slong nfree = 0, j, k, nok = 0, ncp = 0, *free_vars = flint_malloc((size_t) (s->nvars + 1) * sizeof(slong));
-    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
-    fmpq *pt = _fmpq_vec_init(s->nvars);
-    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    rs_sample_pts_t P;
+    slong nok = 0;
     fmpq_poly_t pr, pi;
     json_t *chk = json_object(), *bad = NULL;
-    rs_error_t e2;
     int r = RS_OK;
-    rs_error_init(e2);
     fmpq_poly_init(pr); fmpq_poly_init(pi);
-    for (k = 0; k < s->nvars; k++) {
-        pp[k] = pt + k;
-        if (k != s->lambda_var
-            && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
-            free_vars[nfree++] = k;
-    }
-    for (k = 0; k < run->c->nassume; k++) {
-        if (rs_condpoly_compile(cps + ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
-        ncp++;
-    }
-    for (j = 0; j < CX_SAMPLE_TRIES && nok < (nfree > 0 ? CX_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL; j++) {
+    rs_sample_pts_init(&P, run, v, re, im, -1);
+    while (nok < (P.nfree > 0 ? CX_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
         rs_status_t st;
         int says;
-        for (k = 0; k < nfree; k++) {
-            /* a different stride per parameter: the points mix the candidates */
-            const slong *c = cand[(j * (2 * k + 1) + j / ncand + 3 * k) % ncand];
-            fmpq_set_si(pt + free_vars[k], c[0], (ulong) c[1]);
-        }
-        if (!rs_run_point_admissible(cps, ncp, pp, s)) continue;
-        rs_run_cx_eval(pr, re, pp, s);
-        rs_run_cx_eval(pi, im, pp, s);
+        rs_run_cx_eval(pr, re, P.pp, s);
+        rs_run_cx_eval(pi, im, P.pp, s);
         if (fmpq_poly_is_zero(pr) && fmpq_poly_is_zero(pi)) continue;
-        says = conds_hold(jc, pp);
+        says = conds_hold(jc, P.pp);
         r = rs_routh_complex_checked_status(&st, pr, pi, n, run->err);
         if (r != RS_OK) break;
         nok++;
         if ((st == RS_STATUS_STABLE) != (says == 1)) {
-            bad = json_object();
-            for (k = 0; k < nfree; k++)
-                json_object_set_new(bad, s->vars[free_vars[k]], rs_json_fmpq(pt + free_vars[k]));
+            bad = rs_sample_pts_json(&P);
             rs_run_sample_disagree(chk, bad, says, rs_status_name(st));
         }
     }
     rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(i) (complex Schur-Cohn and Bilharz "
                             "on the bilinear transform, which must agree) at rational points satisfying the "
                             "assumptions");
-    for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
-    free(cps);
-    _fmpq_vec_clear(pt, s->nvars);
-    flint_free(pp);
-    flint_free(free_vars);
+    rs_sample_pts_clear(&P);
     fmpq_poly_clear(pr); fmpq_poly_clear(pi);
-    rs_error_clear(e2);
     return r;
 }
 

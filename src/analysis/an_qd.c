@@ -534,14 +534,13 @@ static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_
     const rs_request_t *q = req->q;
     rs_qdc_struct *c;
     slong n, d = run->sym->sqrt_d;
-    int r = qd_cp_at(&c, &n, P, run, q), sc = 0, ar = -1;
+    int r = qd_cp_at(&c, &n, P, run, q), sc = -1, ar = -1;
     const char *status;
     json_t *o;
     if (r != RS_OK) return r;
     if (n >= 1) {
-        sc = rs_qdc_schur_stable(c, n, d);
-        ar = rs_qdc_roots_inside(c, n, d);
-        if ((sc == 1 && ar == 0) || (sc == 0 && ar == 1)) {
+        sc = rs_qdc_stable_checked(&ar, c, n, d);
+        if (sc == -2) {
             rs_qdc_vec_clear(c, P->degree + 1);
             return rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT,
                                 "stability over Q(sqrt d): Schur-Cohn over Q(sqrt d)(i) and the certified roots "
@@ -549,7 +548,7 @@ static int qd_generic_stability(rs_run_t *run, const rs_an_req_t *req, const qd_
         }
     }
     /* n < 1: p is constant there (the new step is not determined): singular */
-    status = n < 1 ? "singular" : sc == 1 ? "stable" : ar == 0 ? "unstable" : "undecided";
+    status = n < 1 ? "singular" : sc == 1 ? "stable" : sc == 0 ? "unstable" : "undecided";
     o = json_object();
     json_object_set_new(o, "analysis", json_string("stability"));
     json_object_set_new(o, "status", json_string(status));
@@ -921,12 +920,13 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
  * Schur-Cohn over Q(sqrt d)(i), unstable when a root is certified outside;
  * the counts from the counting recursion (the roots at 0 z0 inside).  0
  * when neither decides (a root on or too near the circle: marginal and
- * unstable are not told apart) or the counts are not available */
+ * unstable are not told apart) or the counts are not available, -2 when
+ * Schur-Cohn and the certified roots disagree (exit 3) */
 static int qd_verdict(rs_status_t *st, rs_rootcount_t rc, const rs_qdc_struct *c, slong n, slong z0, slong d)
 {
     slong z = 0, in;
-    int sc = rs_qdc_schur_stable(c, n, d), ar = sc == 1 ? 1 : rs_qdc_roots_inside(c, n, d);
-    if (sc != 1 && ar != 0) return 0;
+    int sc = rs_qdc_stable_checked(NULL, c, n, d);
+    if (sc < 0) return sc == -2 ? -2 : 0;
     while (z < n && rs_qd_is_zero(c[z].re) && rs_qd_is_zero(c[z].im)) z++;
     if (!rs_qdc_schur_count(&in, c + z, n - z, d)) return 0;
     rc->degree = n + z0;
@@ -956,6 +956,11 @@ int rs_an_qd_point(acb_ptr *z, slong *n, int *decided, rs_status_t *st, rs_rootc
         *z = _acb_vec_init(*n + 1);
         rs_qdc_vec_get_acb(*z, c, *n + 1, d, prec);
         *decided = qd_verdict(st, rc, c, *n, P.zeros, d);
+        if (*decided == -2) {
+            *decided = 0;
+            r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT, "over Q(sqrt d): Schur-Cohn over Q(sqrt d)(i) "
+                             "and the certified roots disagree at these values%s", "");
+        }
         qd_generic_common(o, &P, run);
         {   /* the certified spectral radius beside the measured growth */
             rs_radius_t rr;
@@ -1001,6 +1006,11 @@ int rs_an_qd_modes_roots(rs_radius_t rr, json_t *o, rs_run_t *run, const rs_requ
             rr->mult = flint_malloc(rr->nroots * sizeof(slong));
             for (k = 0; k < rr->nroots; k++) rr->mult[k] = 1;
             decided = qd_verdict(&st, rc, c, n, P.zeros, d);
+            if (decided == -2) {
+                decided = 0;
+                r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT, "modes over Q(sqrt d): Schur-Cohn over "
+                                 "Q(sqrt d)(i) and the certified roots disagree%s", "");
+            }
             /* the certified moduli against the exact counts: a root
              * certified inside (outside) needs one counted there */
             for (k = 0; k < rr->nroots; k++) {

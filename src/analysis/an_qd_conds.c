@@ -199,7 +199,7 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
     fmpq_poly_t e0, e1;
     rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
     slong k, deg;
-    int sc = -1, ar;
+    int sc = -1;
     fmpq_poly_init(e0);
     fmpq_poly_init(e1);
     rs_run_cx_eval(e0, p0, pt, s);
@@ -211,9 +211,8 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
     }
     if (deg >= 0 && deg < n) sc = 0;
     else if (deg == n) {
-        sc = rs_qdc_schur_stable(c, n, s->sqrt_d);
-        ar = rs_qdc_roots_inside(c, n, s->sqrt_d);
-        if ((sc == 1 && ar == 0) || (sc == 0 && ar == 1)) sc = -2;
+        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
+        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
     }
     rs_qdc_vec_clear(c, n + 1);
     fmpq_poly_clear(e0);
@@ -222,77 +221,36 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
 }
 
 #define QD_SAMPLE_POINTS 12
-#define QD_SAMPLE_TRIES 200
 
 /* the conditions against qd_point_stable at admissible rational points of
- * the free parameters ("sample_check"; a disagreement: exit 3) */
+ * the free parameters (rs_sample_pts_t; "sample_check"; a disagreement: exit 3) */
 static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1,
                            slong n, const qc_t *q, json_t *o, const rs_request_t *rq)
 {
-    /* numerators and denominators: both signs, 0, near 1, a large one */
-    static const slong num[] = {1, 1, 2, 1, 3, -1, 5, -1, 7, 0, 13, -2, 1, 9, 10, -3, 99, 3};
-    static const slong den[] = {2, 1, 1, 3, 2, 2, 1, 1, 10, 1, 10, 1, 7, 8, 1, 2, 100, 4};
-    const slong nc = (slong) (sizeof num / sizeof num[0]);
-    const rs_scheme_struct *s = v->s;
-    slong nfree = 0, j, k, nok = 0, ncp = 0, *fv = flint_malloc((size_t) (s->nvars + 1) * sizeof(slong));
-    rs_condpoly_t *cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
-    fmpq *pt = _fmpq_vec_init(s->nvars);
-    fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    rs_sample_pts_t P;
+    slong nok = 0;
     json_t *chk = json_object(), *bad = NULL;
-    rs_error_t e2;
     int r = RS_OK;
-    rs_error_init(e2);
-    for (k = 0; k < s->nvars; k++) {
-        pp[k] = pt + k;
-        if (k != s->lambda_var && k != s->sqrt_var
-            && (fmpz_mpoly_degree_si(p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(p1, k, s->zctx) > 0))
-            fv[nfree++] = k;
-    }
-    for (k = 0; k < run->c->nassume; k++) {
-        if (rs_condpoly_compile(cps + ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
-        ncp++;
-    }
-    {
-        /* the set values stand in the points: the assumptions on them are checked too */
-        const char *key;
-        json_t *val;
-        json_object_foreach(v->assigned, key, val) {
-            slong idx = rs_case_param_index(run->c, key);
-            if (idx >= 0 && idx < s->nvars && fmpq_set_str(pt + idx, json_string_value(val), 10) == 0)
-                fmpq_canonicalise(pt + idx);
-        }
-    }
-    for (j = 0; j < QD_SAMPLE_TRIES && nok < (nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL; j++) {
-        int says, st;
-        for (k = 0; k < nfree; k++) {
-            slong i = (j * (2 * k + 1) + j / nc + 5 * k) % nc;
-            fmpq_set_si(pt + fv[k], num[i], (ulong) den[i]);
-        }
-        if (!rs_run_point_admissible(cps, ncp, pp, s)) continue;
-        st = qd_point_stable(p0, p1, n, pp, s);
+    rs_sample_pts_init(&P, run, v, p0, p1, v->s->sqrt_var);
+    while (nok < (P.nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
+        int says, st = qd_point_stable(p0, p1, n, P.pp, v->s);
         if (st == -1) continue;
         if (st == -2) {
             r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): Schur-Cohn and the certified "
                              "roots disagree at a sample point", rq->text);
             break;
         }
-        says = qc_hold(q, pp);
+        says = qc_hold(q, P.pp);
         nok++;
         if (st != says) {
-            bad = json_object();
-            for (k = 0; k < nfree; k++) json_object_set_new(bad, s->vars[fv[k]], rs_json_fmpq(pt + fv[k]));
+            bad = rs_sample_pts_json(&P);
             rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
         }
     }
     rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
                             "signs and the certified Arb roots, which must agree) at rational points satisfying the "
                             "assumptions");
-    for (k = 0; k < ncp; k++) rs_condpoly_clear(cps + k, s);
-    free(cps);
-    _fmpq_vec_clear(pt, s->nvars);
-    flint_free(pp);
-    flint_free(fv);
-    rs_error_clear(e2);
+    rs_sample_pts_clear(&P);
     return r;
 }
 
@@ -603,51 +561,55 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
 
 /* ---- region NAME over Q(sqrt d) ---------------------------------------------- */
 
-/* f (only variable tv) as a polynomial in t */
-static void qd_upoly(fmpz_poly_t out, const fmpz_mpoly_t f, slong tv, const rs_scheme_struct *s)
+/* f (only variable tv: region's cells) as a polynomial in t */
+static void qd_upoly1(fmpq_poly_t out, const fmpz_mpoly_t f, slong tv, const rs_scheme_struct *s)
 {
-    slong i, *ex = flint_malloc((size_t) s->nvars * sizeof(slong));
-    fmpz_t c;
-    fmpz_init(c);
-    fmpz_poly_zero(out);
-    for (i = 0; i < fmpz_mpoly_length(f, s->zctx); i++) {
-        fmpz_mpoly_get_term_exp_si(ex, f, i, s->zctx);
-        fmpz_mpoly_get_term_coeff_fmpz(c, f, i, s->zctx);
-        fmpz_poly_set_coeff_fmpz(out, tv >= 0 ? ex[tv] : 0, c);
-    }
-    fmpz_clear(c);
-    flint_free(ex);
+    fmpz_poly_t u;
+    fmpz_poly_init(u);
+    if (!fmpz_mpoly_get_fmpz_poly(u, f, tv, s->zctx)) fmpz_poly_zero(u);   /* not reached: no other variable */
+    fmpq_poly_set_fmpz_poly(out, u);
+    fmpz_poly_clear(u);
 }
 
-/* the norm u0^2 - d u1^2 of u0 + sqrt(d) u1: every real root of u0 + sqrt(d) u1 is one of its roots */
-static void qd_unorm(fmpz_poly_t n, const fmpz_poly_t u0, const fmpz_poly_t u1, slong d)
+/* c0 + sqrt(d) c1 (only variable tv) as p0 + sqrt(d) p1 in Q[t] */
+static void qd_upoly(rs_qdpoly_t out, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, slong tv,
+                     const rs_scheme_struct *s)
 {
-    fmpz_poly_t t;
-    fmpz_poly_init(t);
-    fmpz_poly_mul(n, u0, u0);
-    fmpz_poly_mul(t, u1, u1);
-    fmpz_poly_scalar_mul_si(t, t, d);
-    fmpz_poly_sub(n, n, t);
-    fmpz_poly_clear(t);
+    qd_upoly1(out->p0, c0, tv, s);
+    qd_upoly1(out->p1, c1, tv, s);
 }
 
-/* the exact sign of u0(t0) + sqrt(d) u1(t0): the signs of u0, u1 at t0 in
- * Q(t0) = Q[t]/(minpoly) and, where they differ, the sign of the norm */
-static int qd_alg_sign(const fmpz_poly_t u0, const fmpz_poly_t u1, slong d, rs_alg_t *t0)
+/* the real roots of u's norm p0^2 - d p1^2 (every real root of u is one of
+ * them) appended to the critical values */
+static void qd_norm_roots(rs_alg_t **crit, slong *ncrit, const rs_qdpoly_t u, slong d)
+{
+    fmpq_poly_t nq;
+    fmpz_poly_t nz;
+    fmpq_poly_init(nq);
+    fmpz_poly_init(nz);
+    rs_qdpoly_norm(nq, u, d);
+    fmpq_poly_get_numerator(nz, nq);
+    rs_alg_roots_append(crit, ncrit, nz, 1);
+    fmpq_poly_clear(nq);
+    fmpz_poly_clear(nz);
+}
+
+/* the exact sign of u(t0) = p0(t0) + sqrt(d) p1(t0): the signs of p0, p1 at
+ * t0 in Q(t0) = Q[t]/(minpoly) and, where they differ, the sign of the norm */
+static int qd_alg_sign(const rs_qdpoly_t u, slong d, rs_alg_t *t0)
 {
     fmpq_poly_t m, x;
-    fmpz_poly_t nz;
     int s0, s1, sn;
-    fmpq_poly_init(m); fmpq_poly_init(x); fmpz_poly_init(nz);
+    fmpq_poly_init(m); fmpq_poly_init(x);
     fmpq_poly_set_fmpz_poly(m, t0->minpoly);
-    fmpq_poly_set_fmpz_poly(x, u0); fmpq_poly_rem(x, x, m); s0 = rs_alg_sign(x, t0);
-    fmpq_poly_set_fmpz_poly(x, u1); fmpq_poly_rem(x, x, m); s1 = rs_alg_sign(x, t0);
-    qd_unorm(nz, u0, u1, d);
-    fmpq_poly_set_fmpz_poly(x, nz); fmpq_poly_rem(x, x, m); sn = rs_alg_sign(x, t0);
-    fmpq_poly_clear(m); fmpq_poly_clear(x); fmpz_poly_clear(nz);
+    fmpq_poly_rem(x, u->p0, m); s0 = rs_alg_sign(x, t0);
+    fmpq_poly_rem(x, u->p1, m); s1 = rs_alg_sign(x, t0);
+    rs_qdpoly_norm(x, u, d);
+    fmpq_poly_rem(x, x, m); sn = rs_alg_sign(x, t0);
+    fmpq_poly_clear(m); fmpq_poly_clear(x);
     if (s1 == 0 || s0 == s1) return s0 != 0 ? s0 : s1;
     if (s0 == 0) return s1;
-    return sn > 0 ? s0 : sn < 0 ? s1 : 0;   /* sn = 0: u0 = -sqrt(d) u1 exactly */
+    return sn > 0 ? s0 : sn < 0 ? s1 : 0;   /* sn = 0: p0 = -sqrt(d) p1 exactly */
 }
 
 /* a cell of the line: a critical value (pt) or the open interval after it */
@@ -720,13 +682,11 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
     rs_alg_t sq, g;
     fmpq_poly_t A, B, m, x, y;
     fmpq_poly_struct *c;
-    fmpz_poly_t u;
     fmpz_mpoly_t a;
     slong j, n = S->n;
     int decided = 0, h;
     rs_alg_init(&sq); rs_alg_init(&g);
     fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(m); fmpq_poly_init(x); fmpq_poly_init(y);
-    fmpz_poly_init(u);
     fmpz_mpoly_init(a, s->zctx);
     /* sqrt(d): the positive root of t^2 - d */
     fmpz_poly_set_coeff_si(sq.minpoly, 2, 1);
@@ -741,8 +701,7 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
             for (h = 0; h < 2; h++) {
                 /* c_j += (p_h's lambda^j coefficient)(A(gamma)) * B(gamma)^h */
                 rs_charpoly_coeff(a, h ? S->p1 : S->p0, j, s->lambda_var, s->zctx);
-                qd_upoly(u, a, tv, s);
-                fmpq_poly_set_fmpz_poly(x, u);
+                qd_upoly1(x, a, tv, s);
                 fmpq_poly_compose(y, x, A);
                 if (h) fmpq_poly_mul(y, y, B);
                 fmpq_poly_rem(y, y, m);
@@ -755,7 +714,6 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
     flint_free(c);
     rs_alg_clear(&sq); rs_alg_clear(&g);
     fmpq_poly_clear(A); fmpq_poly_clear(B); fmpq_poly_clear(m); fmpq_poly_clear(x); fmpq_poly_clear(y);
-    fmpz_poly_clear(u);
     fmpz_mpoly_clear(a, s->zctx);
     return decided;
 }
@@ -798,7 +756,9 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     rs_bound_t *bd = flint_malloc((size_t) (run->c->nparams + 1) * sizeof(rs_bound_t));
     rs_alg_t *crit = NULL;
     qd_cell_t *cell;
-    fmpz_poly_t u0, u1, nz, l0, l1;
+    rs_qdpoly_struct *cu = flint_malloc((size_t) (S->q.n + 1) * sizeof(rs_qdpoly_struct));
+    rs_qdpoly_t lu;
+    fmpz_poly_t nz;
     fmpz_mpoly_t h0, h1;
     fmpq *pt = _fmpq_vec_init(s->nvars);
     fmpq **pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
@@ -807,7 +767,8 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     json_t *ivs = json_array();
     slong ncrit = 0, m, i, k, ncell = 0, checked = 0;
     int r = RS_OK, bad = 0;
-    fmpz_poly_init(u0); fmpz_poly_init(u1); fmpz_poly_init(nz); fmpz_poly_init(l0); fmpz_poly_init(l1);
+    fmpz_poly_init(nz);
+    rs_qdpoly_init(lu);
     fmpz_mpoly_init(h0, s->zctx); fmpz_mpoly_init(h1, s->zctx);
     fmpq_init(t);
     for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
@@ -821,18 +782,16 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     }
     if (verdict != NULL) *verdict = 1;
     if (counter != NULL) *counter = NULL;
-    /* the critical polynomials */
+    /* the critical polynomials: the conditions (in t once, for the signs
+     * at the critical values too) and the leading coefficient */
     for (i = 0; i < S->q.n; i++) {
-        qd_upoly(u0, S->q.c0 + i, tv, s);
-        qd_upoly(u1, S->q.c1 + i, tv, s);
-        qd_unorm(nz, u0, u1, s->sqrt_d);
-        rs_alg_roots_append(&crit, &ncrit, nz, 1);
+        rs_qdpoly_init(cu + i);
+        qd_upoly(cu + i, S->q.c0 + i, S->q.c1 + i, tv, s);
+        qd_norm_roots(&crit, &ncrit, cu + i, s->sqrt_d);
     }
     qd_split(h0, h1, lead, s);
-    qd_upoly(l0, h0, tv, s);
-    qd_upoly(l1, h1, tv, s);
-    qd_unorm(nz, l0, l1, s->sqrt_d);
-    rs_alg_roots_append(&crit, &ncrit, nz, 1);
+    qd_upoly(lu, h0, h1, tv, s);
+    qd_norm_roots(&crit, &ncrit, lu, s->sqrt_d);
     for (k = 0; k < 2; k++) {
         int has = k == 0 ? bd[tv].has_lo : bd[tv].has_hi;
         const fmpq *e = k == 0 ? bd[tv].lo : bd[tv].hi;
@@ -865,8 +824,8 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
         }
         if (hi == NULL || !qd_alg_in_bound(bd + tv, hi)) continue;
         cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
-        if (hi->rational) fmpq_set(samp + ncell, hi->q);
         if (hi->rational) {
+            fmpq_set(samp + ncell, hi->q);
             cell[ncell++].status = qd_status_at(&bad, S, pp, tv, hi->q);
             checked++;
         } else {
@@ -874,10 +833,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
             rs_status_t ex;
             int ok = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
             for (k = 0; k < S->q.n; k++) {
-                int sg;
-                qd_upoly(u0, S->q.c0 + k, tv, s);
-                qd_upoly(u1, S->q.c1 + k, tv, s);
-                sg = qd_alg_sign(u0, u1, s->sqrt_d, hi);
+                int sg = qd_alg_sign(cu + k, s->sqrt_d, hi);
                 if (sg == 0) zero = 1;
                 if (S->q.ne[k] ? sg == 0 : sg <= 0) ok = 0;
             }
@@ -885,7 +841,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
             /* undecided there: every delta_k != 0 leaves no root on the circle (a
              * circle root of p is one of p* and of every row), so not stable is unstable */
             cell[ncell++].status = decided ? rs_status_name(ex) : ok ? "stable"
-                                 : qd_alg_sign(l0, l1, s->sqrt_d, hi) == 0 ? "singular" : zero ? "not stable"
+                                 : qd_alg_sign(lu, s->sqrt_d, hi) == 0 ? "singular" : zero ? "not stable"
                                  : "unstable";
             checked += decided;
         }
@@ -953,7 +909,10 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     _fmpq_vec_clear(pt, s->nvars);
     flint_free(pp);
     fmpq_clear(t);
-    fmpz_poly_clear(u0); fmpz_poly_clear(u1); fmpz_poly_clear(nz); fmpz_poly_clear(l0); fmpz_poly_clear(l1);
+    for (i = 0; i < S->q.n; i++) rs_qdpoly_clear(cu + i);
+    flint_free(cu);
+    rs_qdpoly_clear(lu);
+    fmpz_poly_clear(nz);
     fmpz_mpoly_clear(h0, s->zctx); fmpz_mpoly_clear(h1, s->zctx);
     return r;
 }

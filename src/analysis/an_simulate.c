@@ -169,6 +169,14 @@ static void sim_shifts(sim_t *sm, const rs_scheme_struct *s, arb_srcptr pc, slon
     }
 }
 
+/* the generator of the random start for the `seed` option (one mapping for
+ * every recurrence simulate runs) */
+static void sim_rand_init(flint_rand_t st, slong seed)
+{
+    flint_randinit(st);
+    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+}
+
 /* the recurrence, a seeded random start in [-1, 1] and the coefficients;
  * pc[0..N]: p's coefficients as balls, for the scalar recurrence */
 static void sim_init(sim_t *sm, const rs_scheme_struct *s, arb_srcptr pc, slong N, slong prec, flint_rand_t st)
@@ -392,8 +400,7 @@ static int acb_recurrence_run(arb_t lm, arb_t le, rs_run_t *run, const rs_an_req
     arb_init(norm); arb_init(a); arb_init(t2);
     fmpq_init(qr); fmpq_init(qi);
     acb_inv(lcinv, c + n, prec);
-    flint_randinit(st);
-    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+    sim_rand_init(st, seed);
     for (j = 0; j < n; j++) {                   /* seeded random start in [-1, 1]^2 */
         fmpq_set_si(qr, (slong) n_randint(st, 2001) - 1000, 1000);
         fmpq_set_si(qi, (slong) n_randint(st, 2001) - 1000, 1000);
@@ -547,8 +554,7 @@ static int qd_simulate(rs_run_t *run, const rs_an_req_t *req, slong steps, slong
         if (r == RS_OK) {
             pc = _arb_vec_init(n + 1);
             for (j = 0; j <= n; j++) arb_set(pc + j, acb_realref(c + j));   /* real set values: p is real */
-            flint_randinit(st);
-            flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+            sim_rand_init(st, seed);
             sim_init(&sm, v->s, pc, n, prec, st);
             json_object_set_new(o, "recurrence", json_string(sim_recurrence_str(&sm)));
             json_object_set_new(o, "arithmetic", json_string("Arb midpoints at the working precision, the "
@@ -604,8 +610,7 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
     N = fmpz_poly_degree(p);
     pc = _arb_vec_init(N + 1);
     for (j = 0; j <= N; j++) arb_set_fmpz(pc + j, p->coeffs + j);
-    flint_randinit(st);
-    flint_randseed(st, (ulong) seed + 1, (ulong) seed * 7919 + 3);
+    sim_rand_init(st, seed);
     sim_init(&sm, v->s, pc, N, prec, st);
     arb_init(lognorm_mid); arb_init(lognorm_end);
     r = sim_run(&sm, run, req, steps, lognorm_mid, lognorm_end);

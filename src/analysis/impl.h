@@ -193,6 +193,25 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
  * the run inconsistent (exit 3). */
 void rs_run_sample_disagree(json_t *chk, json_t *point, int says, const char *verdict);
 void rs_run_sample_check_set(rs_run_t *run, json_t *o, json_t *chk, slong points, int agree, const char *against);
+/* The rational points of those loops: the parameters a or b depends on
+ * (not lambda, not the variable skip) take small rationals of both signs,
+ * 0 and a large one, mixed by a stride per parameter; the set values stand
+ * in the others, so the assume lines on set parameters are checked too.
+ * rs_sample_pts_next: 1 with the next admissible point in P->pp, 0 after
+ * RS_SAMPLE_PTS_TRIES tries; rs_sample_pts_json: the free values. */
+#define RS_SAMPLE_PTS_TRIES 200
+typedef struct {
+    const rs_scheme_struct *s;
+    slong nfree, *fv, ncp, j;
+    rs_condpoly_t *cps;
+    fmpq *pt;
+    fmpq **pp;
+} rs_sample_pts_t;
+void rs_sample_pts_init(rs_sample_pts_t *P, rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t a,
+                        const fmpz_mpoly_t b, slong skip);
+int rs_sample_pts_next(rs_sample_pts_t *P);
+json_t *rs_sample_pts_json(const rs_sample_pts_t *P);
+void rs_sample_pts_clear(rs_sample_pts_t *P);
 
 /* Shared steps of the analyses (run.c, conditions.c), once here instead of
  * copied into each caller.  rs_run_default_variant: the variant at the case's

@@ -1080,11 +1080,6 @@ static void p_at_point(fmpz_poly_t u, const rs_variant_t *v, fmpq *const *pp)
 #define SAMPLE_POINTS 12
 #define SAMPLE_TRIES 80
 
-/* Checks conditions (holds(data, point) = 1 stable, 0 not, -1 on a boundary)
- * against the exact verdict (Routh and Schur-Cohn on p at the point) at a
- * few deterministic rational points that satisfy the assume lines and the
- * non-zero assumptions; points where p loses degree are skipped.  Adds
- * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
 void rs_run_sample_disagree(json_t *chk, json_t *point, int says, const char *verdict)
 {
     json_object_set_new(chk, "point", point);
@@ -1101,6 +1096,81 @@ void rs_run_sample_check_set(rs_run_t *run, json_t *o, json_t *chk, slong points
     if (!agree) run->outcome |= RS_OUTCOME_INCONSISTENT;
 }
 
+void rs_sample_pts_init(rs_sample_pts_t *P, rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t a,
+                        const fmpz_mpoly_t b, slong skip)
+{
+    const rs_scheme_struct *s = P->s = v->s;
+    const char *key;
+    json_t *val;
+    rs_error_t e2;
+    slong k;
+    P->nfree = P->ncp = P->j = 0;
+    P->fv = flint_malloc((size_t) (s->nvars + 1) * sizeof(slong));
+    P->cps = calloc((size_t) run->c->nassume + 1, sizeof(rs_condpoly_t));
+    P->pt = _fmpq_vec_init(s->nvars);
+    P->pp = flint_malloc((size_t) s->nvars * sizeof(fmpq *));
+    for (k = 0; k < s->nvars; k++) {
+        P->pp[k] = P->pt + k;
+        if (k != s->lambda_var && k != skip
+            && (fmpz_mpoly_degree_si(a, k, s->zctx) > 0 || fmpz_mpoly_degree_si(b, k, s->zctx) > 0))
+            P->fv[P->nfree++] = k;
+    }
+    rs_error_init(e2);
+    for (k = 0; k < run->c->nassume; k++) {
+        if (rs_condpoly_compile(P->cps + P->ncp, &run->c->assume[k], s, run->c, e2) != RS_OK) break;
+        P->ncp++;
+    }
+    rs_error_clear(e2);
+    json_object_foreach(v->assigned, key, val) {
+        slong idx = rs_case_param_index(run->c, key);
+        if (idx >= 0 && idx < s->nvars && fmpq_set_str(P->pt + idx, json_string_value(val), 10) == 0)
+            fmpq_canonicalise(P->pt + idx);
+    }
+}
+
+int rs_sample_pts_next(rs_sample_pts_t *P)
+{
+    static const slong num[] = {1, 1, 2, 1, 3, -1, 5, -1, 7, 0, 13, -2, 1, 9, 10, -3, 99, 3};
+    static const slong den[] = {2, 1, 1, 3, 2, 2, 1, 1, 10, 1, 10, 1, 7, 8, 1, 2, 100, 4};
+    const slong nc = (slong) (sizeof num / sizeof num[0]);
+    slong k;
+    for (; P->j < RS_SAMPLE_PTS_TRIES; P->j++) {
+        slong j = P->j;
+        for (k = 0; k < P->nfree; k++) {
+            slong i = (j * (2 * k + 1) + j / nc + 5 * k) % nc;
+            fmpq_set_si(P->pt + P->fv[k], num[i], (ulong) den[i]);
+        }
+        if (rs_run_point_admissible(P->cps, P->ncp, P->pp, P->s)) {
+            P->j++;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+json_t *rs_sample_pts_json(const rs_sample_pts_t *P)
+{
+    json_t *o = json_object();
+    slong k;
+    for (k = 0; k < P->nfree; k++) json_object_set_new(o, P->s->vars[P->fv[k]], rs_json_fmpq(P->pt + P->fv[k]));
+    return o;
+}
+
+void rs_sample_pts_clear(rs_sample_pts_t *P)
+{
+    slong k;
+    for (k = 0; k < P->ncp; k++) rs_condpoly_clear(P->cps + k, P->s);
+    free(P->cps);
+    _fmpq_vec_clear(P->pt, P->s->nvars);
+    flint_free(P->pp);
+    flint_free(P->fv);
+}
+
+/* Checks conditions (holds(data, point) = 1 stable, 0 not, -1 on a boundary)
+ * against the exact verdict (Routh and Schur-Cohn on p at the point) at a
+ * few deterministic rational points that satisfy the assume lines and the
+ * non-zero assumptions; points where p loses degree are skipped.  Adds
+ * "sample_check" to o; a disagreement marks the run inconsistent (exit 3). */
 int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds, const void *data, json_t *o)
 {
     const rs_scheme_struct *s = v->s;
@@ -1163,9 +1233,7 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
                 for (k = 0; k < np; k++)
                     if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
                         json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
-                json_object_set_new(chk, "point", bad);
-                json_object_set_new(chk, "conditions_say", json_string(says ? "stable" : "not stable"));
-                json_object_set_new(chk, "exact_verdict", json_string(rs_status_name(st)));
+                rs_run_sample_disagree(chk, bad, says, rs_status_name(st));
                 rs_json_add_count(chk, rc);
             }
             rs_rootcount_clear(rc);
@@ -1178,19 +1246,12 @@ int rs_run_sample_check(rs_run_t *run, const rs_variant_t *v, rs_holds_fn holds,
             for (k = 0; k < np; k++)
                 if (fmpz_mpoly_degree_si(v->cp->p, k, s->zctx) > 0)
                     json_object_set_new(bad, run->c->params[k].name, rs_json_fmpq(pt + k));
-            json_object_set_new(chk, "point", bad);
-            json_object_set_new(chk, "conditions_say", json_string("stable"));
-            json_object_set_new(chk, "exact_verdict", json_string(fmpz_poly_is_zero(u) ? "singular (p = 0)"
-                                                                                       : "singular"));
+            rs_run_sample_disagree(chk, bad, says, fmpz_poly_is_zero(u) ? "singular (p = 0)" : "singular");
         }
         fmpz_poly_clear(u);
     }
-    json_object_set_new(chk, "points", json_integer(nok));
-    json_object_set_new(chk, "agree", json_boolean(bad == NULL));
-    json_object_set_new(chk, "against", json_string("exact verdict (Routh and Schur-Cohn) at rational points "
-                                                    "satisfying the assumptions"));
-    json_object_set_new(o, "sample_check", chk);
-    if (bad != NULL) run->outcome |= RS_OUTCOME_INCONSISTENT;
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict (Routh and Schur-Cohn) at rational points "
+                            "satisfying the assumptions");
     for (i = 0; i < ncp; i++) rs_condpoly_clear(cps + i, s);
     free(cps);
     rs_bounds_clear(b, np);

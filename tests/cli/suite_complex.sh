@@ -408,6 +408,26 @@ if grep -q '"verdict":"neverstable","status":"unstable","inside":1,"on":0,"outsi
 "$RS" --json --set 'h=i' --analyse hurwitz --analyse jury "$T/b.case" | tr -d ' \n' >"$T/h4.json"; rc=$?
 if [ "$rc" = 0 ] && [ "$(grep -o '"verdict":"neverstable"' "$T/h4.json" | wc -l)" = 2 ]; then
     ok "hurwitz/jury with a free real w at h = i: never stable"; else fail "free w at h = i: rc=$rc $(head -c 600 "$T/h4.json")"; fi
+# an assume line on a set parameter: the sample points carry the set value
+# (a = 2 satisfies a > 1; the check once evaluated it at a = 0 and took no
+# point).  By hand: p = lambda - (1 + a z + b) = lambda - ((1/2 + b) + i/2),
+# |1/2 + b + i/2|^2 < 1 iff (1/2 + b)^2 < 3/4 iff -2 b^2 - 2 b + 1 > 0.
+cat >"$T/asm.case" <<'CASE'
+param z complex
+param a b
+assume a > 1
+set z = -1/4 + i/4
+set a = 2
+subsystem S state y
+  y' = z*a*y + b*y
+integrate S euler-forward 1
+analyse jury
+CASE
+"$RS" --json "$T/asm.case" | tr -d ' \n' >"$T/asm.json"; rc=$?
+if [ "$rc" = 0 ] && grep -q '"conditions":\["-2\*b^2-2\*b+1>0"\]' "$T/asm.json" \
+   && grep -q '"sample_check":{"points":12,"agree":true' "$T/asm.json"; then
+    ok "jury over Q(i) with assume a > 1, set a = 2: -2 b^2 - 2 b + 1 > 0, checked at 12 points"
+else fail "jury over Q(i), assume on a set parameter: rc=$rc $(head -c 600 "$T/asm.json")"; fi
 # modes over Q(i): p's own roots (not those of p conj(p)).  Forward Euler at
 # z = -1 + i/2: the root 1 + z = i/2, ln(i/2) = -ln 2 + i pi/2 (by hand), and
 # det's root at 0 of the stage unknown y_k1 (det = lambda (lambda - 1 - z); listed

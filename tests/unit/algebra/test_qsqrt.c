@@ -261,6 +261,21 @@ static void test_schur(void **state)
         quad_from_roots(c, (const char **) R[pairs[k][0]], (const char **) R[pairs[k][1]]);
         assert_int_equal(rs_qdc_schur_stable(c, 2, 2), pairs[k][2]);
         assert_int_equal(rs_qdc_roots_inside(c, 2, 2), pairs[k][2]);
+        {   /* both at once: 1 stable, 0 a root outside; ar as rs_qdc_roots_inside */
+            int ar = -3;
+            assert_int_equal(rs_qdc_stable_checked(&ar, c, 2, 2), pairs[k][2]);
+            assert_int_equal(ar, pairs[k][2]);
+        }
+        rs_qdc_vec_clear(c, 3);
+    }
+    {   /* roots 1 (on the circle) and 1/2: Schur-Cohn not stable, no root
+         * certified outside: -1 (marginal and unstable not told apart) */
+        static const char *const one[4] = {"1", "0", "0", "0"};
+        rs_qdc_struct *c = rs_qdc_vec_init(3);
+        int ar = -3;
+        quad_from_roots(c, (const char **) one, (const char **) R[0]);
+        assert_int_equal(rs_qdc_stable_checked(&ar, c, 2, 2), -1);
+        assert_int_equal(ar, -1);
         rs_qdc_vec_clear(c, 3);
     }
 }
@@ -294,6 +309,7 @@ static void test_schur_random(void **state)
         r = rs_qdc_roots_inside(c, n, 2);
         if (r == -1) assert_int_equal(s, 0);
         else { assert_int_equal(s, r); agree++; }
+        assert_int_equal(rs_qdc_stable_checked(NULL, c, n, 2), r == -1 ? -1 : s);
         stable += s;
         rs_qdc_vec_clear(c, n + 1);
     }
