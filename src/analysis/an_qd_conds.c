@@ -629,14 +629,6 @@ static json_t *qd_end_approx(rs_alg_t *a)
     return a == NULL ? json_null() : json_real(rs_alg_double(a));
 }
 
-/* t inside the domain bound b */
-static int qd_in_bound(const rs_bound_t *b, const fmpq_t t)
-{
-    int lo = !b->has_lo || fmpq_cmp(t, b->lo) > 0 || (b->lo_closed && fmpq_equal(t, b->lo));
-    int hi = !b->has_hi || fmpq_cmp(t, b->hi) < 0 || (b->hi_closed && fmpq_equal(t, b->hi));
-    return lo && hi;
-}
-
 /* e := the rational q as a critical value */
 static void qd_alg_set_fmpq(rs_alg_t *e, const fmpq_t q)
 {
@@ -658,7 +650,7 @@ static int qd_alg_in_bound(const rs_bound_t *b, rs_alg_t *a)
 {
     rs_alg_t e;
     int in = 1;
-    if (a->rational) return qd_in_bound(b, a->q);
+    if (a->rational) return rs_bound_contains(b, a->q);
     rs_alg_init(&e);
     if (b->has_lo) {
         qd_alg_set_fmpq(&e, b->lo);
@@ -753,7 +745,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
 {
     const rs_scheme_struct *s = S->s;
     const char *name = run->c->params[tv].name;
-    rs_bound_t *bd = flint_malloc((size_t) (run->c->nparams + 1) * sizeof(rs_bound_t));
+    rs_bound_t *bd = rs_run_bounds(run);
     rs_alg_t *crit = NULL;
     qd_cell_t *cell;
     rs_qdpoly_struct *cu = flint_malloc((size_t) (S->q.n + 1) * sizeof(rs_qdpoly_struct));
@@ -772,8 +764,6 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     fmpz_mpoly_init(h0, s->zctx); fmpz_mpoly_init(h1, s->zctx);
     fmpq_init(t);
     for (k = 0; k < s->nvars; k++) pp[k] = pt + k;
-    rs_bounds_init(bd, run->c->nparams);
-    for (k = 0; k < run->c->nassume; k++) rs_bounds_add(bd, &run->c->assume[k], run->c, run->err);
     rs_error_init(run->err);
     if (dom != NULL) {   /* the claim's set (with the assumptions already in it) */
         bd[tv].has_lo = dom->has_lo; bd[tv].has_hi = dom->has_hi;
@@ -816,7 +806,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
         r = rs_budget_check(run->err, "region over Q(sqrt d)");
         if (r != RS_OK) break;
         rs_alg_between(t, lo, hi);
-        if (qd_in_bound(bd + tv, t)) {
+        if (rs_bound_contains(bd + tv, t)) {
             cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
             fmpq_set(samp + ncell, t);
             cell[ncell++].status = qd_status_at(&bad, S, pp, tv, t);
@@ -904,8 +894,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     free(crit);
     flint_free(cell);
     _fmpq_vec_clear(samp, 2 * ncrit + 1);
-    rs_bounds_clear(bd, run->c->nparams);
-    flint_free(bd);
+    rs_run_bounds_clear(bd, run);
     _fmpq_vec_clear(pt, s->nvars);
     flint_free(pp);
     fmpq_clear(t);
