@@ -2121,7 +2121,7 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
     }
     if (nfree != 1)
         return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected exactly one parameter without a set value: a "
-                            "claim over Q(sqrt 2) (rk sdirk2) is decided on the exact region of one parameter%s", "");
+                            "claim over Q(sqrt d) is decided on the exact region of one parameter%s", "");
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     /* every condition a bound on tv (linear in it, nothing else) */
@@ -2138,7 +2138,7 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
             rs_condpoly_clear(&cp, run->sym);
             if (r != RS_OK)
                 r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected bounds on %s (NAME < VALUE, A <= NAME <= B, "
-                                 "joined by and, or): a claim over Q(sqrt 2) is decided on the exact region of one "
+                                 "joined by and, or): a claim over Q(sqrt d) is decided on the exact region of one "
                                  "parameter", run->c->params[tv].name);
         }
     if (r != RS_OK) return r;
@@ -2169,13 +2169,19 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
     } else {
         json_object_set_new(o, "status", json_string(proved ? "proved" : "undecided"));
     }
-    json_object_set_new(o, "over", json_string("Q(sqrt 2)"));
-    json_object_set_new(o, "tried", json_string(
-        "the exact region over Q(sqrt 2) of the one free parameter on the claim's set (region NAME's cells: rational "
-        "samples decided by the Schur-Cohn conditions, Schur-Cohn with certified roots and the exact route over "
-        "Q(sqrt 2); algebraic critical values by exact signs in Q(t0, sqrt 2) and the exact route there, all "
-        "agreeing): proved iff every cell meeting the set has the claimed status; refuted at the first cell that "
-        "does not, its point and exact status given"));
+    {
+        char *over = rs_an_qd_over_str(run->sym->sqrt_d), tried[1024];
+        snprintf(tried, sizeof tried,
+                 "the exact region over %s of the one free parameter on the claim's set (region NAME's cells: "
+                 "rational samples decided by the Schur-Cohn conditions, Schur-Cohn with certified roots and the "
+                 "exact route over %s; algebraic critical values by exact signs in Q(t0, sqrt %ld) and the exact "
+                 "route there, all agreeing): proved iff every cell meeting the set has the claimed status; refuted "
+                 "at the first cell that does not, its point and exact status given",
+                 over, over, (long) run->sym->sqrt_d);
+        json_object_set_new(o, "over", json_string(over));
+        json_object_set_new(o, "tried", json_string(tried));
+        flint_free(over);
+    }
     rs_run_emit_exact(run, v, o);
     return RS_OK;
 }

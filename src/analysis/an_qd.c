@@ -38,7 +38,7 @@ static json_t *json_str_free(char *s)
     return j;
 }
 
-static char *over_str(slong d)
+char *rs_an_qd_over_str(slong d)
 {
     char *s = flint_malloc(40);
     snprintf(s, 40, "Q(sqrt %ld)", (long) d);
@@ -280,7 +280,7 @@ static void qd_common(json_t *o, const qd_r_t *R, rs_run_t *run)
     char *z = flint_malloc(strlen(kq) + strlen(name) + 8);
     if (fmpq_is_one(R->k)) strcpy(z, name);
     else sprintf(z, "%s*%s", kq, name);
-    json_object_set_new(o, "over", json_str_free(over_str(R->d)));
+    json_object_set_new(o, "over", json_str_free(rs_an_qd_over_str(R->d)));
     json_object_set_new(o, "z", json_string(z));
     snprintf(ks, sizeof ks, "rk %s", run->m->qd->tableau);
     json_object_set_new(o, "method", json_string(ks));
@@ -464,7 +464,7 @@ void rs_an_qd_json_p(json_t *o, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, rs
 {
     char m[80];
     snprintf(m, sizeof m, "rk %s", run->m->qd->tableau);
-    json_object_set_new(o, "over", json_str_free(over_str(run->sym->sqrt_d)));
+    json_object_set_new(o, "over", json_str_free(rs_an_qd_over_str(run->sym->sqrt_d)));
     /* jury and hurwitz name their test in "method", the method in "rk" */
     json_object_set_new(o, json_object_get(o, "method") == NULL ? "method" : "rk", json_string(m));
     json_object_set_new(o, "p0", json_str_free(rs_scheme_zpoly_str(p0, run->sym)));

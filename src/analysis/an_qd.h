@@ -27,6 +27,8 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
  * into o's "region" */
 int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                         slong tv, const rs_bound_t *dom);
+/* "Q(sqrt d)" for the JSON key "over" and the texts (flint_free it) */
+char *rs_an_qd_over_str(slong d);
 /* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of s without sqrt(d); flint_free
  * it); spaced: "a - c^2" as the conditions print, else FLINT's "a-c^2" */
 char *rs_an_qd_mpoly_str(const fmpz_mpoly_t a0, const fmpz_mpoly_t a1, const rs_scheme_struct *s, int spaced);
