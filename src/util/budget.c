@@ -12,6 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <gmp.h>
+#include <jansson.h>
 #include "recstab/budget.h"
 
 static _Atomic double deadline_start;   /* monotonic seconds at the start */
@@ -225,6 +226,45 @@ static inline void slab_release(void *p)
     slab_list = p;
 }
 
+/* ---- large blocks on transparent huge pages --------------------------------------
+ * The exact engine's large blocks (the composed minors, their printed text:
+ * 27 MB strings for a 6-mass chain) are fresh mappings written once, and
+ * with 4 KB pages each page is a fault: 150 000 faults, about 15 % of that
+ * run on this VM (issue 17, h-chain12).  glibc maps every such block on its
+ * own (its header says so: IS_MMAPPED, bit 1 of the size word, the mapping
+ * starting 16 bytes before the block), so the whole mapping is advised for
+ * huge pages (the kernel's "madvise" mode) without splitting any other
+ * mapping; blocks from the heap, or from another allocator, are left alone.
+ * Only the page size of memory the block already holds changes. */
+#define HUGE_MIN (4L << 20)
+
+static void huge_advise(void *p, size_t n)
+{
+#if RS_BUDGET_POOLS && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
+    size_t sz;
+    char *start;
+    long pg = sysconf(_SC_PAGESIZE);
+    if (p == NULL || n < (size_t) HUGE_MIN || pg <= 0) return;
+    sz = ((const size_t *) p)[-1];
+    start = (char *) p - 2 * sizeof(size_t);
+    if (!(sz & 2) || ((uintptr_t) start & (uintptr_t) (pg - 1)) != 0) return;
+    sz &= ~(size_t) 7;
+    sz &= ~(size_t) (pg - 1);
+    if (sz >= n) (void) madvise(start, sz, MADV_HUGEPAGE);
+#else
+    (void) p;
+    (void) n;
+#endif
+}
+
+/* jansson's strings (every printed polynomial is copied into one) */
+static void *j_malloc(size_t n)
+{
+    void *p = malloc(n);
+    huge_advise(p, n);
+    return p;
+}
+
 static void b_free(void *p)
 {
     long u;
@@ -255,6 +295,7 @@ static void *b_malloc(size_t n)
     count_flush(as_count(n));
     p = malloc(n);
     count_fix(p, as_count(n));
+    huge_advise(p, n);
     return p;
 }
 
@@ -271,6 +312,7 @@ static void *b_calloc(size_t k, size_t n)
     count_flush(c);
     p = calloc(k, n);
     count_fix(p, c);
+    huge_advise(p, (size_t) c);
     return p;
 }
 
@@ -301,6 +343,7 @@ static void *b_realloc(void *q, size_t n)
     p = realloc(q, n);
     if (p != NULL) count_fix(p, c);
     else count(old - c);   /* q is unchanged */
+    huge_advise(p, n);
     return p;
 }
 
@@ -328,6 +371,8 @@ static void install(void)
     slab_base = r == MAP_FAILED ? NULL : r;
     __flint_set_memory_functions(b_malloc, b_calloc, b_realloc, b_free);
     mp_set_memory_functions(g_malloc, g_realloc, g_free);
+    /* malloc's own blocks, so those made before are freed the same way */
+    json_set_alloc_funcs(j_malloc, free);
 }
 
 /* ---- the budget --------------------------------------------------------------- */
