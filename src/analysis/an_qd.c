@@ -824,8 +824,11 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
     qd_r_t R;
     rs_qd_astab_t a;
     rs_qd_iv_t riv, iiv;
-    int r, rr = 0, ri = 0;
+    int r, rr = 0, ri = 0, alpha_inside = -1;
+    json_t *alpha_out = NULL, *alpha_ev = NULL;
+    arb_t alpha_deg;
     slong k;
+    arb_init(alpha_deg);
     qd_r_init(&R);
     rs_qd_astab_init(a);
     rs_qd_iv_init(riv);
@@ -862,6 +865,16 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
                              "astability over Q(sqrt d): the E-polynomial and the stability intervals disagree%s", "");
     }
     if (r == RS_OK) {
+        r = rs_an_astability_alpha_qd(&alpha_out, &alpha_ev, alpha_deg, &alpha_inside, R.N, R.D, R.d, run->err);
+        if (r != RS_OK) r = rs_req_relocate(run, q, r, "astability");
+        /* the rays against the E-polynomial: A-stable iff every ray is inside
+         * (the open left half-plane; poles right) */
+        else if (alpha_inside >= 0 && (alpha_inside == 1) != (a->a_stable != 0))
+            r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT, "astability over Q(sqrt d): the rays and the "
+                             "E-polynomial disagree on A-stability (the E-polynomial says %s)",
+                             a->a_stable ? "A-stable" : "not A-stable");
+    }
+    if (r == RS_OK) {
         const char *name = c->params[R.par].name;
         json_t *o = json_object();
         char *ps = p_str(&R, name), *loc;
@@ -875,17 +888,31 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
         sprintf(loc, "p(lambda, %s) = 0 with lambda = exp(i*phi), p = %s", name, ps);
         json_object_set_new(o, "boundary_locus", json_str_free(loc));
         json_object_set_new(o, "a_stable", json_boolean(a->a_stable));
-        /* A(alpha) is computed for p linear in z only; A-stable is A(90) */
-        json_object_set_new(o, "alpha_degrees", a->a_stable ? json_integer(90) : json_null());
-        json_object_set_new(o, "alpha_degrees_approx", a->a_stable ? json_real(90.0) : json_null());
-        if (!a->a_stable)
-            json_object_set_new(o, "note", json_string("alpha of A(alpha) is not computed over Q(sqrt d)"));
+        /* A(alpha) by the rays (A-stable is A(90)), the second route to A-stability */
+        if (alpha_out != NULL) {
+            char *ds = rs_radius_arb_str(alpha_deg, 15);
+            json_object_set_new(o, "alpha_degrees", alpha_out);
+            json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+            flint_free(ds);
+            alpha_out = NULL;
+        } else {
+            json_object_set_new(o, "alpha_degrees", alpha_inside == 1 ? json_integer(90) : json_null());
+        }
+        json_object_set_new(o, "alpha_degrees_approx", alpha_inside >= 0 ?
+                            json_real(arf_get_d(arb_midref(alpha_deg), ARF_RND_NEAR)) : json_null());
+        if (alpha_inside < 0)
+            json_object_set_new(o, "note", json_string("alpha of A(alpha): the rays route does not apply "
+                                                       "(|N|^2 - |D|^2 has a vanishing discriminant on the rays)"));
         {
             json_t *e = json_pack("{s:s,s:o,s:b,s:b}", "route", "E-polynomial (one-step method) over Q(sqrt d)",
                                   "E", json_str_free(rs_qdpoly_get_str(a->E, R.d, "y")), "E_nonnegative",
                                   a->e_nonneg, "poles_in_right_half_plane", a->poles_right);
             if (!a->e_nonneg) json_object_set_new(e, "E_negative_at", rs_json_fmpq(a->witness));
-            json_object_set_new(o, "evidence", json_pack("[o]", e));
+            if (alpha_ev == NULL && alpha_inside == 1)
+                alpha_ev = json_pack("{s:s,s:b}", "route", "one-step method over Q(sqrt d): rays z = -s (1 - i u), "
+                                     "every cell of u decided exactly", "every_ray_inside", 1);
+            json_object_set_new(o, "evidence", alpha_ev != NULL ? json_pack("[o,o]", e, alpha_ev) : json_pack("[o]", e));
+            alpha_ev = NULL;
         }
         if (a->r_inf_finite) {
             rs_qd_t ab;
@@ -911,6 +938,9 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
     rs_qd_iv_clear(iiv);
     rs_qd_astab_clear(a);
     qd_r_clear(&R);
+    json_decref(alpha_out);
+    json_decref(alpha_ev);
+    arb_clear(alpha_deg);
     return r;
 }
 

@@ -570,6 +570,33 @@ PY
     else fail "sdirk2 astability: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 astability JSON: no python3"; fi
 check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
+
+# ---- rk sdirk3 / sdirk3-low over Q(sqrt 3): A(alpha) by the rays route over Q(sqrt d) ----
+# (R(inf), E by hand in the case comments; alpha 90 and 0 also from the float ray scan of
+# tests/cli/alpha_sdirk3.py plus|low, run by hand: about 10 s each)
+for c in sdirk3 sdirk3-low; do
+    "$RS" --json "cases/complex/$c-astability.case" >"$T/s3.json" 2>"$T/err"; rc=$?
+    if command -v python3 >/dev/null 2>&1; then
+        res=$(python3 - "$T/s3.json" "$c" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+low = sys.argv[2] == "sdirk3-low"
+want = {"a_stable": not low, "alpha_degrees": 0 if low else 90, "over": "Q(sqrt 3)", "l_stable": False,
+        "limit_at_infinity": "1 + 1*sqrt(3)" if low else "-1 + 1*sqrt(3)", "decided_by": "exact"}
+bad = ["%s=%r" % (k, a.get(k)) for k in want if a.get(k) != want[k]]
+E = "(1/12 - 1/18*sqrt(3))*y^4" if low else "(1/12 + 1/18*sqrt(3))*y^4"
+if a["evidence"][0]["E"] != E: bad.append("E=" + a["evidence"][0]["E"])
+rays = a["evidence"][1]
+if low and rays.get("first_point_outside", {}).get("status") != "unstable": bad.append("no point outside")
+if not low and rays.get("every_ray_inside") is not True: bad.append("rays not inside")
+if low and a["imag_interval"] != [0, 0]: bad.append("imag %r" % a["imag_interval"])
+print("yes" if not bad else "no " + " ".join(bad))
+PY
+)
+        if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "$c astability over Q(sqrt 3): rays and E-polynomial agree (alpha $([ $c = sdirk3 ] && echo 90 || echo 0))"
+        else fail "$c astability: rc=$rc $res $(head -1 "$T/err")"; fi
+    else ok "skipped $c astability JSON: no python3"; fi
+done
 check_status "sdirk2 z=3 (R = 76 + 54 sqrt 2)" unstable "$SP" --set 'q=3'
 check_status "sdirk2 z=0 (R = 1)" marginal "$SP" --set 'q=0'
 # simulate there: R = 1 is a root on the circle, which the verdict over Q(sqrt 2) leaves undecided
