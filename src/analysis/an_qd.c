@@ -53,16 +53,23 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         || strcmp(n, "radius") == 0 || strcmp(n, "modes") == 0 || strcmp(n, "simulate") == 0)
         return RS_OK;
     /* the conditions over Q(sqrt d)[params] (an_qd_conds.c): real parameters */
-    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0
+    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
          || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
         return RS_OK;
-    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected real set values: %s over Q(sqrt 2) "
-                            "does not run at a complex set value (stability and radius do)", n);
-    return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, region or claim: %s is "
-                        "not available for "
-                        "rk sdirk2 (its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
+    {
+        /* the message names the model's field and tableau */
+        char msg[400];
+        if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
+            || strcmp(n, "claim") == 0)
+            snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
+                     "(stability and radius do)", n, (long) run->m->qd->d);
+        else
+            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
+                     "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
+                     "those are decided over Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d,
+                     (long) run->m->qd->d);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
 }
 
 /* p = p0 + sqrt(d) p1 of the scheme, p0 and p1 in the scheme's zctx
@@ -390,7 +397,7 @@ static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run
         if (!param_value(vr + k, vi + k, cs, k)
             && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
             r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected %s set to a number (set NAME = VALUE or --set): "
-                             "over Q(sqrt 2) this analysis decides one point", cs->params[k].name);
+                             "over Q(sqrt d) this analysis decides one point", cs->params[k].name);
     if (r == RS_OK) {
         fmpz_mpoly_init(a, s->zctx);
         *c = rs_qdc_vec_init(P->degree + 1);

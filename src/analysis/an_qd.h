@@ -20,6 +20,9 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
 /* an_qd_conds.c: the Schur-Cohn and Hurwitz conditions over Q(sqrt d)[params] */
 int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+/* the fraction-free Routh array over Q(sqrt d)[params], its conditions
+ * cross-checked against hurwitz's and the point verdict at sample points */
+int rs_an_qd_routh(rs_run_t *run, const rs_an_req_t *req);
 /* region NAME [at P=V, ...]: exact intervals over Q(sqrt d), or the conditions with other parameters free */
 int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
 /* a claim's part over Q(sqrt d): the exact region of tv (every other parameter
