@@ -396,8 +396,12 @@ static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run
     for (k = 0; k < s->lambda_var && r == RS_OK; k++)
         if (!param_value(vr + k, vi + k, cs, k)
             && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
-            r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected %s set to a number (set NAME = VALUE or --set): "
-                             "over Q(sqrt d) this analysis decides one point", cs->params[k].name);
+        {
+            char msg[300];
+            snprintf(msg, sizeof msg, "expected %s set to a number (set NAME = VALUE or --set): over Q(sqrt %ld) this "
+                     "analysis decides one point", cs->params[k].name, (long) s->sqrt_d);
+            r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+        }
     if (r == RS_OK) {
         fmpz_mpoly_init(a, s->zctx);
         *c = rs_qdc_vec_init(P->degree + 1);
