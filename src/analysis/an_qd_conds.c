@@ -1073,9 +1073,12 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
     int r, never = 0, others = 0;
     if (req->u.region.twod || req->u.region.forall) {
         json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected region NAME [at P=V, ...]: %s is "
-                            "not available over Q(sqrt 2) (rk sdirk2)", req->u.region.twod ? "region N1, N2"
-                            : "region NAME for all");
+        char msg[400];
+        snprintf(msg, sizeof msg, "expected region NAME [at P=V, ...]: %s is not available over Q(sqrt %ld) (rk %s); "
+                 "region NAME with the other parameters set (at P=V), or jury, hurwitz and routh with them free, run",
+                 req->u.region.twod ? "region N1, N2" : "region NAME for all", (long) run->m->qd->d,
+                 run->m->qd->tableau);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     keep[0] = run->c->params[tv].name;
     rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
@@ -1150,7 +1153,8 @@ int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run
         for (k = 0; r == RS_OK && k < S.s->lambda_var; k++)
             if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
                 r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every parameter but %s set: a "
-                                 "claim over Q(sqrt 2) is decided on the exact region of one parameter",
+                                 "claim over Q(sqrt d) is decided on the exact region of one parameter (jury, "
+                                 "hurwitz and routh give the conditions with more parameters free)",
                                  run->c->params[tv].name);
         if (r == RS_OK) r = qd_region_cells(o, &S, run, req->q, tv, lead, dom, kind, verdict, counter);
         fmpz_mpoly_clear(lead, S.s->zctx);
