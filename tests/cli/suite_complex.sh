@@ -975,6 +975,12 @@ if grep -qF 'eq y_k1[n+1] = (-a*(y[n] + (1)*((1 - 1/2*sqrt(2))*y_k1[n+1])) + c*x
    && grep -qF 'eq 2*(y[n+1] - y[n]) = (1)*(sqrt(2)*y_k1[n+1] + (2 - sqrt(2))*y_k2[n+1])' "$T/eq.txt"; then
     ok "sdirk2 --emit equations: stages with gamma = 1 - sqrt(2)/2 written exactly"
 else fail "sdirk2 emit: $(cat "$T/eq.txt" "$T/err")"; fi
-"$RS" --analyse stability "$SC" --set c=2 --analyse routh >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "routh is not available for rk sdirk2" "$T/err"; then ok "sdirk2 coupled: routh refused (exit 2)"
-else fail "sdirk2 coupled routh refusal: rc=$rc $(head -1 "$T/err")"; fi
+# routh runs over Q(sqrt d) now (sdirk2-coupled-routh.case); bilinear is still refused, naming what runs
+"$RS" --analyse stability "$SC" --set c=2 --analyse bilinear >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "bilinear is not available for rk sdirk2 .*jury, hurwitz, routh" "$T/err" \
+   || { [ "$rc" = 2 ] && grep -q "hurwitz, routh, region or claim: bilinear is not available for rk sdirk2" "$T/err"; }; then
+    ok "sdirk2 coupled: bilinear refused (exit 2), naming what runs"
+else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ]; then ok "sdirk2 coupled: routh at set values runs over Q(sqrt 2)"
+else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi
