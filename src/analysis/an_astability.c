@@ -40,6 +40,7 @@
 #include "stability/routh_complex.h"
 #include "util/polyfmt.h"
 #include "analysis/an_qd.h"
+#include "algebra/qsqrt.h"
 #include "recstab/budget.h"
 
 /* p = sum_k (C[k] + i Ci[k])(lambda) z^k: Ci is zero unless p is over Q(i)
@@ -921,6 +922,149 @@ static json_t *alpha_of_tan(arb_t deg, rs_alg_t *a, slong prec)
     return o;
 }
 
+/* acc += f c(u) s^ks t^kt in Z[t, s, u] */
+static void tsu_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, ulong kt, ulong ks, const fmpz_t f,
+                       const fmpz_mpoly_ctx_t ctx)
+{
+    ulong pre[2];
+    pre[0] = kt; pre[1] = ks;
+    last_addmul(acc, c, pre, f, ctx);
+}
+
+/* the ray of slope u0 of alpha_cells: *out 1 with a point z0 = zr + i zi on
+ * it where |R| > 1 and the exact point verdict *st there, 0 when the ray
+ * lies in the region */
+typedef int (*ray_test_fn)(int *out, fmpq_t zr, fmpq_t zi, rs_status_t *st, const fmpq_t u0, void *data,
+                           rs_error_t err);
+
+/* w0 = 0 is z = 0 itself (H(0, u0) > 0: an inconsistent method): a point
+ * 2^-t just off it where neg_at still holds, by continuity */
+static void off_zero(fmpq_t w0, int (*neg_at)(const void *f, const fmpq_t w), const void *f)
+{
+    slong t;
+    if (!fmpq_is_zero(w0)) return;
+    for (t = 0; t < 200; t++) {
+        fmpq_set_si(w0, 1, 1);
+        fmpq_div_2exp(w0, w0, (ulong) t);
+        if (neg_at(f, w0)) break;
+    }
+}
+
+/* A(alpha) from the sorted critical values crit[0..ncrit) of u: the cells
+ * of u > 0 between them, each decided by test at a rational u0; tan(alpha)
+ * is the left end of the first cell with a point outside, whose point
+ * verdict must not be bounded (exit 3).  *inside as alpha_onestep. */
+static int alpha_cells(json_t **out, json_t **ev, arb_t deg, int *inside, rs_alg_t *crit, slong ncrit,
+                       ray_test_fn test, void *data, const char *route, rs_error_t err)
+{
+    slong i, first, prec = 256;
+    int r = RS_OK, o = 0;
+    ralg_sort(crit, &ncrit);
+    first = first_positive(crit, ncrit, prec);
+    *inside = 1;
+    for (i = first; i <= ncrit && *inside == 1 && r == RS_OK; i++) {
+        fmpq_t u0, zr, zi;
+        rs_status_t st = RS_STATUS_UNSTABLE;
+        fmpq_init(u0); fmpq_init(zr); fmpq_init(zi);
+        if (i == first) {
+            /* between 0 and the first critical value */
+            rs_alg_t zero;
+            rs_alg_init(&zero);
+            zero.rational = 1;
+            fmpq_zero(zero.q);
+            arb_zero(zero.x);
+            rational_between(u0, &zero, i == ncrit ? NULL : crit + i);
+            rs_alg_clear(&zero);
+        } else rational_between(u0, crit + i - 1, i == ncrit ? NULL : crit + i);
+        r = test(&o, zr, zi, &st, u0, data, err);
+        if (r == RS_OK && o) {
+            *inside = 0;
+            if (st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL)
+                r = rs_error_set(err, RS_ERR_INCONSISTENT, "astability: A(alpha) of the one-step method: |R| > 1 "
+                                 "on the ray, yet the point verdict is %s", rs_status_name(st));
+            if (r == RS_OK) {
+                *ev = json_pack("{s:s,s:{s:o,s:o,s:s}}", "route", route, "first_point_outside", "re",
+                                rs_json_fmpq(zr), "im", rs_json_fmpq(zi), "status", rs_status_name(st));
+                if (i == first) {
+                    *out = json_integer(0);
+                    arb_zero(deg);
+                } else {
+                    /* as alpha_linear prints it: u = tan(alpha), its minimal polynomial */
+                    *out = alpha_of_tan(deg, crit + i - 1, prec);
+                }
+            }
+        }
+        fmpq_clear(u0); fmpq_clear(zr); fmpq_clear(zi);
+        if (r == RS_OK) r = rs_budget_check(err, "astability");
+    }
+    /* every ray inside: A-stable, alpha = 90 as the E-polynomial prints it */
+    if (*inside == 1 && r == RS_OK) arb_set_ui(deg, 90);
+    return r;
+}
+
+typedef struct {
+    const fmpz_mpoly_struct *G;
+    const fmpz_mpoly_ctx_struct *ctx;
+    slong du;
+    const zpoly_t *P;
+} ray_q_t;
+
+static int fmpz_poly_neg_at(const void *f, const fmpq_t w)
+{
+    fmpq_t y;
+    int n;
+    fmpq_init(y);
+    fmpz_poly_evaluate_fmpq(y, (const fmpz_poly_struct *) f, w);
+    n = fmpq_sgn(y) < 0;
+    fmpq_clear(y);
+    return n;
+}
+
+/* over Q: -H(w^2, u0) den^du >= 0 for every real w (nonneg_everywhere), the
+ * point verdict by the checked complex Routh test */
+static int ray_test_q(int *out, fmpq_t zr, fmpq_t zi, rs_status_t *st, const fmpq_t u0, void *data, rs_error_t err)
+{
+    ray_q_t *D = data;
+    fmpz_poly_t f;
+    fmpq_t w0;
+    slong t;
+    int r = RS_OK;
+    fmpz_poly_init(f);
+    fmpq_init(w0);
+    for (t = 0; t < fmpz_mpoly_length(D->G, D->ctx); t++) {
+        ulong ex[2];
+        fmpz_t a, b;
+        fmpz_init(a); fmpz_init(b);
+        fmpz_mpoly_get_term_coeff_fmpz(a, D->G, t, D->ctx);
+        fmpz_mpoly_get_term_exp_ui(ex, D->G, t, D->ctx);
+        fmpz_pow_ui(b, fmpq_numref(u0), ex[1]);
+        fmpz_mul(a, a, b);
+        fmpz_pow_ui(b, fmpq_denref(u0), (ulong) D->du - ex[1]);
+        fmpz_mul(a, a, b);
+        fmpz_poly_get_coeff_fmpz(b, f, 2 * (slong) ex[0]);
+        fmpz_sub(b, b, a);
+        fmpz_poly_set_coeff_fmpz(f, 2 * (slong) ex[0], b);
+        fmpz_clear(a); fmpz_clear(b);
+    }
+    *out = !nonneg_everywhere(f, w0);
+    if (*out) {
+        fmpq_poly_t re, im;
+        off_zero(w0, fmpz_poly_neg_at, f);
+        /* z0 = -w0^2 + i w0^2 u0 */
+        fmpq_mul(zr, w0, w0);
+        fmpq_mul(zi, zr, u0);
+        fmpq_neg(zr, zr);
+        fmpq_poly_init(re); fmpq_poly_init(im);
+        eval_at(re, im, D->P, zr, zi);
+        if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < D->P->n) *st = RS_STATUS_SINGULAR;
+        else r = rs_routh_complex_checked_status(st, re, im, D->P->n, err);
+        fmpq_poly_clear(re); fmpq_poly_clear(im);
+    }
+    fmpz_poly_clear(f);
+    fmpq_clear(w0);
+    return r;
+}
+
 /* A(alpha) of a one-step method p = D(z) lambda - N(z), real coefficients.
  * On the ray z = -s (1 - i u), s > 0, |arg(-z)| = atan(u), and |R(z)| > 1
  * iff G(s, u) = |N|^2 - |D|^2 > 0; H = G / s^m (m its lowest power of s).
@@ -939,16 +1083,17 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
 {
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_t G, T;
-    fmpz_poly_t c, f;
+    fmpz_poly_t c;
     rs_alg_t *crit = NULL;
-    slong ncrit = 0, m, ds, du, i, first, prec = 256;
+    slong ncrit = 0, m, ds, i;
     int r = RS_OK;
+    ray_q_t data;
     *out = NULL;
     *ev = NULL;
     *inside = -1;
     fmpz_mpoly_ctx_init(ctx, 2, ORD_LEX);
     fmpz_mpoly_init(G, ctx); fmpz_mpoly_init(T, ctx);
-    fmpz_poly_init(c); fmpz_poly_init(f);
+    fmpz_poly_init(c);
     ray_norm(G, N, ctx);
     ray_norm(T, D, ctx);
     fmpz_mpoly_sub(G, G, T, ctx);
@@ -958,7 +1103,6 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
     fmpz_mpoly_divexact(G, G, T, ctx);
     ds = fmpz_mpoly_degree_si(G, 0, ctx);
-    du = fmpz_mpoly_degree_si(G, 1, ctx);
     /* the critical values of u: disc_s(H), lc_s(H), H(0, u) */
     for (i = 0; i < 3; i++) {
         if (i == 0) {
@@ -968,109 +1112,242 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
         } else su_coeff(c, G, i == 1 ? (ulong) ds : 0, ctx);
         rs_alg_roots_append(&crit, &ncrit, c, 0);   /* it factors c itself */
     }
-    ralg_sort(crit, &ncrit);
-    /* the first critical value > 0 */
-    first = first_positive(crit, ncrit, prec);
-    *inside = 1;
-    for (i = first; i <= ncrit && *inside == 1 && r == RS_OK; i++) {
-        fmpq_t u0, w0, zr, zi;
-        slong t;
-        fmpq_init(u0); fmpq_init(w0); fmpq_init(zr); fmpq_init(zi);
-        if (i == first) {
-            /* between 0 and the first critical value */
-            rs_alg_t zero;
-            rs_alg_init(&zero);
-            zero.rational = 1;
-            fmpq_zero(zero.q);
-            arb_zero(zero.x);
-            rational_between(u0, &zero, i == ncrit ? NULL : crit + i);
-            rs_alg_clear(&zero);
-        } else rational_between(u0, crit + i - 1, i == ncrit ? NULL : crit + i);
-        /* -H(w^2, u0) den^du in Z[w] */
-        fmpz_poly_zero(f);
-        for (t = 0; t < fmpz_mpoly_length(G, ctx); t++) {
-            ulong ex[2];
-            fmpz_t a, b;
-            fmpz_init(a); fmpz_init(b);
-            fmpz_mpoly_get_term_coeff_fmpz(a, G, t, ctx);
-            fmpz_mpoly_get_term_exp_ui(ex, G, t, ctx);
-            fmpz_pow_ui(b, fmpq_numref(u0), ex[1]);
-            fmpz_mul(a, a, b);
-            fmpz_pow_ui(b, fmpq_denref(u0), (ulong) du - ex[1]);
-            fmpz_mul(a, a, b);
-            fmpz_poly_get_coeff_fmpz(b, f, 2 * (slong) ex[0]);
-            fmpz_sub(b, b, a);
-            fmpz_poly_set_coeff_fmpz(f, 2 * (slong) ex[0], b);
-            fmpz_clear(a); fmpz_clear(b);
-        }
-        if (!nonneg_everywhere(f, w0)) {
-            fmpq_poly_t re, im;
-            rs_status_t st;
-            *inside = 0;
-            /* s = 0 is z = 0 itself (H(0, u0) > 0: an inconsistent method):
-             * a point just off it, f(w) < 0 there by continuity */
-            if (fmpq_is_zero(w0)) {
-                fmpq_t y;
-                fmpq_init(y);
-                for (t = 0; t < 200; t++) {
-                    fmpq_set_si(w0, 1, 1);
-                    fmpq_div_2exp(w0, w0, (ulong) t);
-                    fmpz_poly_evaluate_fmpq(y, f, w0);
-                    if (fmpq_sgn(y) < 0) break;
-                }
-                fmpq_clear(y);
-            }
-            /* z0 = -w0^2 + i w0^2 u0 */
-            fmpq_mul(zr, w0, w0);
-            fmpq_mul(zi, zr, u0);
-            fmpq_neg(zr, zr);
-            fmpq_poly_init(re); fmpq_poly_init(im);
-            eval_at(re, im, P, zr, zi);
-            if (FLINT_MAX(fmpq_poly_degree(re), fmpq_poly_degree(im)) < P->n) st = RS_STATUS_SINGULAR;
-            else r = rs_routh_complex_checked_status(&st, re, im, P->n, err);
-            fmpq_poly_clear(re); fmpq_poly_clear(im);
-            if (r == RS_OK && (st == RS_STATUS_STABLE || st == RS_STATUS_MARGINAL))
-                r = rs_error_set(err, RS_ERR_INCONSISTENT, "astability: A(alpha) of the one-step method: |R| > 1 "
-                                 "on the ray, yet the point verdict is %s", rs_status_name(st));
-            if (r == RS_OK) {
-                *ev = json_pack("{s:s,s:{s:o,s:o,s:s}}", "route",
+    data.G = G;
+    data.ctx = ctx;
+    data.du = fmpz_mpoly_degree_si(G, 1, ctx);
+    data.P = P;
+    r = alpha_cells(out, ev, deg, inside, crit, ncrit, ray_test_q, &data,
                     "one-step method: rays z = -s (1 - i u), u = tan|arg(-z)|; |N|^2 - |D|^2 on them, its critical u "
                     "(discriminant and end coefficients in s), each cell between them decided exactly at a rational u",
-                    "first_point_outside", "re", rs_json_fmpq(zr), "im", rs_json_fmpq(zi), "status",
-                    rs_status_name(st));
-                if (i == first) {
-                    *out = json_integer(0);
-                    arb_zero(deg);
-                } else {
-                    /* as alpha_linear prints it: u = tan(alpha), its minimal polynomial */
-                    *out = alpha_of_tan(deg, crit + i - 1, prec);
-                }
-            }
-        }
-        fmpq_clear(u0); fmpq_clear(w0); fmpq_clear(zr); fmpq_clear(zi);
-        if (r == RS_OK) r = rs_budget_check(err, "astability");
-    }
-    /* every ray inside: A-stable, alpha = 90 as the E-polynomial prints it */
-    if (*inside == 1 && r == RS_OK) arb_set_ui(deg, 90);
+                    err);
 done:
     for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
     free(crit);
-    fmpz_poly_clear(c); fmpz_poly_clear(f);
+    fmpz_poly_clear(c);
     fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(T, ctx);
     fmpz_mpoly_ctx_clear(ctx);
     return r;
 }
 
-/* ---- A(alpha) of any method: the rays against the boundary curves ------------- */
+/* ---- A(alpha) over Q(sqrt d): the same rays with G in Z[s, r, u], r = sqrt(d) ---- */
 
-/* acc += f c(u) s^ks t^kt in Z[t, s, u] */
-static void tsu_addmul(fmpz_mpoly_t acc, const fmpz_poly_t c, ulong kt, ulong ks, const fmpz_t f,
-                       const fmpz_mpoly_ctx_t ctx)
+/* acc = |f(s w)|^2 on the ray w = -1 + i u, f = (f0 + r f1) (integer
+ * coefficients), reduced by r^2 = d; ctx: s, r, u */
+static void ray_norm_qd(fmpz_mpoly_t acc, const fmpz_poly_t f0, const fmpz_poly_t f1, slong d,
+                        const fmpz_mpoly_ctx_t ctx)
 {
-    ulong pre[2];
-    pre[0] = kt; pre[1] = ks;
-    last_addmul(acc, c, pre, f, ctx);
+    fmpz_poly_t A, B, t, u;
+    fmpz_mpoly_t re, im;
+    slong k, e;
+    fmpz_poly_init(A); fmpz_poly_init(B); fmpz_poly_init(t); fmpz_poly_init(u);
+    fmpz_mpoly_init(re, ctx); fmpz_mpoly_init(im, ctx);
+    fmpz_poly_one(A);
+    fmpz_poly_set_coeff_si(u, 1, 1);
+    for (k = 0; k <= FLINT_MAX(fmpz_poly_degree(f0), fmpz_poly_degree(f1)); k++) {
+        for (e = 0; e < 2; e++) {
+            const fmpz_poly_struct *f = e ? f1 : f0;
+            if (k > fmpz_poly_degree(f)) continue;
+            tsu_addmul(re, A, (ulong) k, (ulong) e, f->coeffs + k, ctx);
+            tsu_addmul(im, B, (ulong) k, (ulong) e, f->coeffs + k, ctx);
+        }
+        /* (A + i B)(-1 + i u) = (-A - u B) + i (u A - B) */
+        fmpz_poly_mul(t, u, B);
+        fmpz_poly_add(t, t, A);
+        fmpz_poly_mul(A, u, A);
+        fmpz_poly_sub(B, A, B);
+        fmpz_poly_neg(A, t);
+    }
+    fmpz_mpoly_mul(acc, re, re, ctx);
+    fmpz_mpoly_mul(re, im, im, ctx);
+    fmpz_mpoly_add(acc, acc, re, ctx);
+    rs_qd_mpoly_reduce(acc, 1, d, ctx);
+    fmpz_poly_clear(A); fmpz_poly_clear(B); fmpz_poly_clear(t); fmpz_poly_clear(u);
+    fmpz_mpoly_clear(re, ctx); fmpz_mpoly_clear(im, ctx);
 }
+
+/* the critical polynomial over Q of c0(u) + sqrt(d) c1(u) (c in Z[r, u] after
+ * reduction, no s): its norm c0^2 - d c1^2, whose real roots hold c's */
+static void qd_norm_u(fmpz_poly_t out, const fmpz_mpoly_t c, slong d, const fmpz_mpoly_ctx_t ctx)
+{
+    fmpz_poly_t c0, c1, t;
+    fmpz_mpoly_t h;
+    ulong k;
+    slong v = 1;
+    fmpz_poly_init(c0); fmpz_poly_init(c1); fmpz_poly_init(t);
+    fmpz_mpoly_init(h, ctx);
+    for (k = 0; k < 2; k++) {
+        fmpz_mpoly_get_coeff_vars_ui(h, c, &v, &k, 1, ctx);
+        mpoly_univar(k ? c1 : c0, h, 2, ctx);
+    }
+    fmpz_poly_mul(out, c0, c0);
+    fmpz_poly_mul(t, c1, c1);
+    fmpz_poly_scalar_mul_si(t, t, d);
+    fmpz_poly_sub(out, out, t);
+    fmpz_poly_clear(c0); fmpz_poly_clear(c1); fmpz_poly_clear(t);
+    fmpz_mpoly_clear(h, ctx);
+}
+
+typedef struct {
+    const fmpz_mpoly_struct *G;
+    const fmpz_mpoly_ctx_struct *ctx;
+    const rs_qdpoly_struct *N, *D;
+    slong d;
+} ray_qd_t;
+
+typedef struct { const rs_qdpoly_struct *f; slong d; } qd_at_t;
+
+static int qdpoly_neg_at(const void *f, const fmpq_t w)
+{
+    const qd_at_t *a = f;
+    rs_qd_t v;
+    int n;
+    rs_qd_init(v);
+    rs_qdpoly_evaluate_fmpq(v, a->f, w);
+    n = rs_qd_sgn(v, a->d) < 0;
+    rs_qd_clear(v);
+    return n;
+}
+
+/* over Q(sqrt d): -H(w^2, u0) >= 0 for every real w (rs_qdpoly_nonneg_real),
+ * the point verdict from |D(z0)|^2 - |N(z0)|^2 exactly, which must agree with
+ * Schur-Cohn and the certified root (rs_qd_onestep_stable_at; exit 3) */
+static int ray_test_qd(int *out, fmpq_t zr, fmpq_t zi, rs_status_t *st, const fmpq_t u0, void *data,
+                       rs_error_t err)
+{
+    ray_qd_t *D = data;
+    rs_qdpoly_t f;
+    rs_qd_t c, v;
+    fmpq_t w0, a;
+    slong t;
+    int r = RS_OK;
+    rs_qdpoly_init(f);
+    rs_qd_init(c); rs_qd_init(v);
+    fmpq_init(w0); fmpq_init(a);
+    for (t = 0; t < fmpz_mpoly_length(D->G, D->ctx); t++) {
+        ulong ex[3];
+        fmpz_t q;
+        fmpz_init(q);
+        fmpz_mpoly_get_term_coeff_fmpz(q, D->G, t, D->ctx);
+        fmpz_mpoly_get_term_exp_ui(ex, D->G, t, D->ctx);
+        fmpq_pow_si(a, u0, (slong) ex[2]);
+        fmpq_mul_fmpz(a, a, q);
+        rs_qdpoly_get_coeff(c, f, 2 * (slong) ex[0]);
+        fmpq_sub(ex[1] ? c->y : c->x, ex[1] ? c->y : c->x, a);
+        rs_qdpoly_set_coeff(f, 2 * (slong) ex[0], c);
+        fmpz_clear(q);
+    }
+    *out = !rs_qdpoly_nonneg_real(f, D->d, w0);
+    if (*out) {
+        qd_at_t at;
+        rs_qdc_struct *nd = rs_qdc_vec_init(2);
+        int sg, sc;
+        at.f = f;
+        at.d = D->d;
+        off_zero(w0, qdpoly_neg_at, &at);
+        fmpq_mul(zr, w0, w0);
+        fmpq_mul(zi, zr, u0);
+        fmpq_neg(zr, zr);
+        rs_qdpoly_evaluate_cx(nd, D->N, zr, zi, D->d);
+        rs_qdpoly_evaluate_cx(nd + 1, D->D, zr, zi, D->d);
+        rs_qdc_abs2(c, nd + 1, D->d);
+        rs_qdc_abs2(v, nd, D->d);
+        sg = rs_qd_is_zero(c) ? 2 : (rs_qd_sub(c, c, v), rs_qd_sgn(c, D->d));
+        sc = rs_qd_onestep_stable_at(D->N, D->D, D->d, zr, zi);
+        if (sc == -2 || (sg == 2) != (sc == -1) || (sg != 2 && (sg > 0) != (sc == 1)))
+            r = rs_error_set(err, RS_ERR_INCONSISTENT, "astability over Q(sqrt d): |R|^2, Schur-Cohn and the "
+                             "certified root disagree on the ray%s", "");
+        *st = sg == 2 ? RS_STATUS_SINGULAR : sg > 0 ? RS_STATUS_STABLE : sg == 0 ? RS_STATUS_MARGINAL
+            : RS_STATUS_UNSTABLE;
+        rs_qdc_vec_clear(nd, 2);
+    }
+    rs_qdpoly_clear(f);
+    rs_qd_clear(c); rs_qd_clear(v);
+    fmpq_clear(w0); fmpq_clear(a);
+    return r;
+}
+
+/* the common denominator's multiple of f0 + r f1 in Z[z] */
+static void qd_scaled(fmpz_poly_t out, const fmpq_poly_t f, const fmpz_t den)
+{
+    fmpq_poly_t t;
+    fmpq_poly_init(t);
+    fmpq_poly_scalar_mul_fmpz(t, f, den);
+    fmpq_poly_get_numerator(out, t);
+    fmpq_poly_clear(t);
+}
+
+int rs_an_astability_alpha_qd(json_t **out, json_t **ev, arb_t deg, int *inside, const rs_qdpoly_t N,
+                              const rs_qdpoly_t D, slong d, rs_error_t err)
+{
+    fmpz_mpoly_ctx_t ctx;
+    fmpz_mpoly_t G, T, c;
+    fmpz_poly_t f0, f1, cu;
+    fmpz_t den;
+    rs_alg_t *crit = NULL;
+    slong ncrit = 0, m, ds, i, vs = 0;
+    int r = RS_OK;
+    ray_qd_t data;
+    *out = NULL;
+    *ev = NULL;
+    *inside = -1;
+    fmpz_mpoly_ctx_init(ctx, 3, ORD_LEX);
+    fmpz_mpoly_init(G, ctx); fmpz_mpoly_init(T, ctx); fmpz_mpoly_init(c, ctx);
+    fmpz_poly_init(f0); fmpz_poly_init(f1); fmpz_poly_init(cu);
+    fmpz_init(den);
+    /* one denominator for N and D: |R| does not change */
+    fmpz_lcm(den, fmpq_poly_denref(N->p0), fmpq_poly_denref(N->p1));
+    fmpz_lcm(den, den, fmpq_poly_denref(D->p0));
+    fmpz_lcm(den, den, fmpq_poly_denref(D->p1));
+    qd_scaled(f0, N->p0, den);
+    qd_scaled(f1, N->p1, den);
+    ray_norm_qd(G, f0, f1, d, ctx);
+    qd_scaled(f0, D->p0, den);
+    qd_scaled(f1, D->p1, den);
+    ray_norm_qd(T, f0, f1, d, ctx);
+    fmpz_mpoly_sub(G, G, T, ctx);
+    if (fmpz_mpoly_is_zero(G, ctx)) goto done;
+    m = rs_scheme_min_degree(G, 0, ctx);
+    fmpz_mpoly_gen(T, 0, ctx);
+    fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
+    fmpz_mpoly_divexact(G, G, T, ctx);
+    ds = fmpz_mpoly_degree_si(G, 0, ctx);
+    /* the critical values of u as over Q, each from the norm of its
+     * polynomial over Q(sqrt d) (the discriminant computed with r a
+     * variable, then reduced: it is a polynomial in the coefficients) */
+    for (i = 0; i < 3; i++) {
+        if (i == 0) {
+            if (ds < 2) continue;
+            if (!fmpz_mpoly_discriminant(c, G, 0, ctx)) goto done;
+            rs_qd_mpoly_reduce(c, 1, d, ctx);
+            if (fmpz_mpoly_is_zero(c, ctx)) goto done;
+        } else {
+            ulong k = i == 1 ? (ulong) ds : 0;
+            fmpz_mpoly_get_coeff_vars_ui(c, G, &vs, &k, 1, ctx);
+        }
+        qd_norm_u(cu, c, d, ctx);
+        rs_alg_roots_append(&crit, &ncrit, cu, 0);
+    }
+    data.G = G;
+    data.ctx = ctx;
+    data.N = N;
+    data.D = D;
+    data.d = d;
+    r = alpha_cells(out, ev, deg, inside, crit, ncrit, ray_test_qd, &data,
+                    "one-step method over Q(sqrt d): rays z = -s (1 - i u), u = tan|arg(-z)|; |N|^2 - |D|^2 = G0 + "
+                    "sqrt(d) G1 on them, its critical u (the real roots of the norms c0^2 - d c1^2 of the discriminant "
+                    "and end coefficients in s), each cell between them decided exactly over Q(sqrt d) at a rational u",
+                    err);
+done:
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+    free(crit);
+    fmpz_poly_clear(f0); fmpz_poly_clear(f1); fmpz_poly_clear(cu);
+    fmpz_clear(den);
+    fmpz_mpoly_clear(G, ctx); fmpz_mpoly_clear(T, ctx); fmpz_mpoly_clear(c, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+    return r;
+}
+
+/* ---- A(alpha) of any method: the rays against the boundary curves ------------- */
 
 /* q(i t, z) = A + i B on the ray z = s w, w = -1 + i sg u (sg = +-1), q the
  * bilinear transform (1 - i t)^n p((1 + i t)/(1 - i t), z); ctx: t, s, u */

@@ -53,16 +53,23 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         || strcmp(n, "radius") == 0 || strcmp(n, "modes") == 0 || strcmp(n, "simulate") == 0)
         return RS_OK;
     /* the conditions over Q(sqrt d)[params] (an_qd_conds.c): real parameters */
-    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0
+    if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
          || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
         return RS_OK;
-    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected real set values: %s over Q(sqrt 2) "
-                            "does not run at a complex set value (stability and radius do)", n);
-    return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT,
-                        "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, region or claim: %s is "
-                        "not available for "
-                        "rk sdirk2 (its coefficients are in Q(sqrt 2); only those are decided over Q(sqrt 2))", n);
+    {
+        /* the message names the model's field and tableau */
+        char msg[400];
+        if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
+            || strcmp(n, "claim") == 0)
+            snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
+                     "(stability and radius do)", n, (long) run->m->qd->d);
+        else
+            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
+                     "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
+                     "those are decided over Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d,
+                     (long) run->m->qd->d);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
+    }
 }
 
 /* p = p0 + sqrt(d) p1 of the scheme, p0 and p1 in the scheme's zctx
@@ -389,8 +396,12 @@ static int qd_cp_at(rs_qdc_struct **c, slong *n, const qd_cp_t *P, rs_run_t *run
     for (k = 0; k < s->lambda_var && r == RS_OK; k++)
         if (!param_value(vr + k, vi + k, cs, k)
             && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
-            r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected %s set to a number (set NAME = VALUE or --set): "
-                             "over Q(sqrt 2) this analysis decides one point", cs->params[k].name);
+        {
+            char msg[300];
+            snprintf(msg, sizeof msg, "expected %s set to a number (set NAME = VALUE or --set): over Q(sqrt %ld) this "
+                     "analysis decides one point", cs->params[k].name, (long) s->sqrt_d);
+            r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+        }
     if (r == RS_OK) {
         fmpz_mpoly_init(a, s->zctx);
         *c = rs_qdc_vec_init(P->degree + 1);
@@ -824,8 +835,11 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
     qd_r_t R;
     rs_qd_astab_t a;
     rs_qd_iv_t riv, iiv;
-    int r, rr = 0, ri = 0;
+    int r, rr = 0, ri = 0, alpha_inside = -1;
+    json_t *alpha_out = NULL, *alpha_ev = NULL;
+    arb_t alpha_deg;
     slong k;
+    arb_init(alpha_deg);
     qd_r_init(&R);
     rs_qd_astab_init(a);
     rs_qd_iv_init(riv);
@@ -862,6 +876,16 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
                              "astability over Q(sqrt d): the E-polynomial and the stability intervals disagree%s", "");
     }
     if (r == RS_OK) {
+        r = rs_an_astability_alpha_qd(&alpha_out, &alpha_ev, alpha_deg, &alpha_inside, R.N, R.D, R.d, run->err);
+        if (r != RS_OK) r = rs_req_relocate(run, q, r, "astability");
+        /* the rays against the E-polynomial: A-stable iff every ray is inside
+         * (the open left half-plane; poles right) */
+        else if (alpha_inside >= 0 && (alpha_inside == 1) != (a->a_stable != 0))
+            r = rs_req_error(run, q, q->text, RS_ERR_INCONSISTENT, "astability over Q(sqrt d): the rays and the "
+                             "E-polynomial disagree on A-stability (the E-polynomial says %s)",
+                             a->a_stable ? "A-stable" : "not A-stable");
+    }
+    if (r == RS_OK) {
         const char *name = c->params[R.par].name;
         json_t *o = json_object();
         char *ps = p_str(&R, name), *loc;
@@ -875,17 +899,31 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
         sprintf(loc, "p(lambda, %s) = 0 with lambda = exp(i*phi), p = %s", name, ps);
         json_object_set_new(o, "boundary_locus", json_str_free(loc));
         json_object_set_new(o, "a_stable", json_boolean(a->a_stable));
-        /* A(alpha) is computed for p linear in z only; A-stable is A(90) */
-        json_object_set_new(o, "alpha_degrees", a->a_stable ? json_integer(90) : json_null());
-        json_object_set_new(o, "alpha_degrees_approx", a->a_stable ? json_real(90.0) : json_null());
-        if (!a->a_stable)
-            json_object_set_new(o, "note", json_string("alpha of A(alpha) is not computed over Q(sqrt d)"));
+        /* A(alpha) by the rays (A-stable is A(90)), the second route to A-stability */
+        if (alpha_out != NULL) {
+            char *ds = rs_radius_arb_str(alpha_deg, 15);
+            json_object_set_new(o, "alpha_degrees", alpha_out);
+            json_object_set_new(o, "alpha_degrees_certified", json_string(ds));
+            flint_free(ds);
+            alpha_out = NULL;
+        } else {
+            json_object_set_new(o, "alpha_degrees", alpha_inside == 1 ? json_integer(90) : json_null());
+        }
+        json_object_set_new(o, "alpha_degrees_approx", alpha_inside >= 0 ?
+                            json_real(arf_get_d(arb_midref(alpha_deg), ARF_RND_NEAR)) : json_null());
+        if (alpha_inside < 0)
+            json_object_set_new(o, "note", json_string("alpha of A(alpha): the rays route does not apply "
+                                                       "(|N|^2 - |D|^2 has a vanishing discriminant on the rays)"));
         {
             json_t *e = json_pack("{s:s,s:o,s:b,s:b}", "route", "E-polynomial (one-step method) over Q(sqrt d)",
                                   "E", json_str_free(rs_qdpoly_get_str(a->E, R.d, "y")), "E_nonnegative",
                                   a->e_nonneg, "poles_in_right_half_plane", a->poles_right);
             if (!a->e_nonneg) json_object_set_new(e, "E_negative_at", rs_json_fmpq(a->witness));
-            json_object_set_new(o, "evidence", json_pack("[o]", e));
+            if (alpha_ev == NULL && alpha_inside == 1)
+                alpha_ev = json_pack("{s:s,s:b}", "route", "one-step method over Q(sqrt d): rays z = -s (1 - i u), "
+                                     "every cell of u decided exactly", "every_ray_inside", 1);
+            json_object_set_new(o, "evidence", alpha_ev != NULL ? json_pack("[o,o]", e, alpha_ev) : json_pack("[o]", e));
+            alpha_ev = NULL;
         }
         if (a->r_inf_finite) {
             rs_qd_t ab;
@@ -911,6 +949,9 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
     rs_qd_iv_clear(iiv);
     rs_qd_astab_clear(a);
     qd_r_clear(&R);
+    json_decref(alpha_out);
+    json_decref(alpha_ev);
+    arb_clear(alpha_deg);
     return r;
 }
 

@@ -4,6 +4,7 @@
 #define RECSTAB_ANALYSIS_AN_QD_H
 
 #include "analysis/registry.h"
+#include "algebra/qsqrt.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
  * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
@@ -19,6 +20,9 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
 /* an_qd_conds.c: the Schur-Cohn and Hurwitz conditions over Q(sqrt d)[params] */
 int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+/* the fraction-free Routh array over Q(sqrt d)[params], its conditions
+ * cross-checked against hurwitz's and the point verdict at sample points */
+int rs_an_qd_routh(rs_run_t *run, const rs_an_req_t *req);
 /* region NAME [at P=V, ...]: exact intervals over Q(sqrt d), or the conditions with other parameters free */
 int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
 /* a claim's part over Q(sqrt d): the exact region of tv (every other parameter
@@ -27,6 +31,13 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
  * into o's "region" */
 int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                         slong tv, const rs_bound_t *dom);
+/* an_astability.c: A(alpha) of the one-step method R = N/D over Q(sqrt d)
+ * by the rays z = -s (1 - i u): *inside 1 every ray inside (A-stable, deg
+ * 90, *out NULL), 0 *out the angle (0 or {"exact", "tan_alpha_minpoly", ...}
+ * as over Q) with *ev its evidence (the first point outside, re-checked
+ * exactly), -1 the route does not apply */
+int rs_an_astability_alpha_qd(json_t **out, json_t **ev, arb_t deg, int *inside, const rs_qdpoly_t N,
+                              const rs_qdpoly_t D, slong d, rs_error_t err);
 /* "Q(sqrt d)" for the JSON key "over" and the texts (flint_free it) */
 char *rs_an_qd_over_str(slong d);
 /* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of s without sqrt(d); flint_free

@@ -29,6 +29,7 @@
 #include "analysis/an_qd.h"
 #include "algebra/qsqrt.h"
 #include "analysis/an_region.h"
+#include "recstab/routh.h"
 
 /* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0) */
 typedef struct {
@@ -225,10 +226,10 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
 /* the conditions against qd_point_stable at admissible rational points of
  * the free parameters (rs_sample_pts_t; "sample_check"; a disagreement: exit 3) */
 static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1,
-                           slong n, const qc_t *q, json_t *o, const rs_request_t *rq)
+                           slong n, const qc_t *q, const qc_t *alt, json_t *o, const rs_request_t *rq)
 {
     rs_sample_pts_t P;
-    slong nok = 0;
+    slong nok = 0, nalt = 0;
     json_t *chk = json_object(), *bad = NULL;
     int r = RS_OK;
     rs_sample_pts_init(&P, run, v, p0, p1, v->s->sqrt_var);
@@ -241,6 +242,13 @@ static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
             break;
         }
         says = qc_hold(q, P.pp);
+        /* a second method's conditions (routh: Hurwitz's) must say the same */
+        if (alt != NULL && qc_hold(alt, P.pp) != says) {
+            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): the Routh and the Hurwitz "
+                             "conditions disagree at a sample point", rq->text);
+            break;
+        }
+        if (alt != NULL) nalt++;
         nok++;
         if (st != says) {
             bad = rs_sample_pts_json(&P);
@@ -250,6 +258,10 @@ static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpol
     rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
                             "signs and the certified Arb roots, which must agree) at rational points satisfying the "
                             "assumptions");
+    if (alt != NULL)
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", "hurwitz over Q(sqrt d): its "
+                            "conditions b_n^k D_k > 0 at the same sample points", "points", (json_int_t) nalt,
+                            "agree", r == RS_OK));
     rs_sample_pts_clear(&P);
     return r;
 }
@@ -311,7 +323,7 @@ static void qd_sym_clear(qd_sym_t *S, slong na)
 
 /* the verdict, the sample check, the report */
 static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, json_t *o, json_t *conds,
-                         json_t *parts, json_t *dropped, json_t *always, int never)
+                         json_t *parts, json_t *dropped, json_t *always, int never, const qc_t *alt)
 {
     int r;
     rs_an_qd_json_p(o, S->p0, S->p1, run);
@@ -322,7 +334,7 @@ static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, jso
     json_object_set_new(o, "always_true", always);
     json_object_set_new(o, "verdict", json_string(never ? "never stable" : S->q.n == 0 ? "stable under the assumptions"
                                                   : "stable iff the conditions hold"));
-    r = qc_sample_check(run, S->v, S->p0, S->p1, S->n, &S->q, o, req->q);
+    r = qc_sample_check(run, S->v, S->p0, S->p1, S->n, &S->q, alt, o, req->q);
     if (r == RS_OK) rs_run_emit_exact(run, S->v, o);
     else json_decref(o);
     return r;
@@ -425,7 +437,7 @@ int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req)
     json_object_set_new(o, "symbolic", json_true());
     json_object_set_new(o, "rows", rows);
     json_object_set_new(o, "note", json_string(qd_jury_note));
-    r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never, NULL);
     qd_sym_clear(&S, na);
     return r;
 }
@@ -458,38 +470,43 @@ static void qd_det(fmpz_mpoly_t d, const fmpz_mpoly_struct *m, slong w, const sl
     fmpz_mpoly_clear(t, s->zctx);
 }
 
-int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
+/* q(z) = sum_j a_j (z + 1)^j (z - 1)^(n - j), z in lambda's place (S's
+ * a_j have sqrt(d) at most linearly, so q has too) */
+static void qd_bilinear(fmpz_mpoly_t qz, const qd_sym_t *S)
 {
-    qd_sym_t S;
-    const rs_scheme_struct *s;
-    json_t *o, *minors, *conds, *parts, *dropped, *always;
-    fmpz_mpoly_t qz, zp, zm, t, u, dk;
-    fmpz_mpoly_struct *b, *H;
-    slong n, k, j, idx[8];
-    int r = qd_sym_init(&S, run, req, NULL), never = 0;
-    if (r == RS_OK && S.n > 8)
-        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "hurwitz over Q(sqrt d): degree over 8 in lambda "
-                         "(the minors are expanded up to degree 8; jury answers the same question)%s", "");
-    if (r != RS_OK) {
-        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
-        return r;
-    }
-    s = S.s;
-    n = S.n;
-    fmpz_mpoly_init(qz, s->zctx); fmpz_mpoly_init(zp, s->zctx); fmpz_mpoly_init(zm, s->zctx);
-    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx); fmpz_mpoly_init(dk, s->zctx);
-    /* q(z) = sum_j a_j (z + 1)^j (z - 1)^(n - j), z in lambda's place */
-    for (j = 0; j <= n; j++) {
-        fmpz_mpoly_gen(zp, s->lambda_var, s->zctx);
-        fmpz_mpoly_add_si(zp, zp, 1, s->zctx);
-        fmpz_mpoly_gen(zm, s->lambda_var, s->zctx);
-        fmpz_mpoly_sub_si(zm, zm, 1, s->zctx);
+    const rs_scheme_struct *s = S->s;
+    fmpz_mpoly_t zp, zm, t, u;
+    slong j;
+    fmpz_mpoly_init(zp, s->zctx); fmpz_mpoly_init(zm, s->zctx);
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
+    fmpz_mpoly_zero(qz, s->zctx);
+    fmpz_mpoly_gen(zp, s->lambda_var, s->zctx);
+    fmpz_mpoly_add_si(zp, zp, 1, s->zctx);
+    fmpz_mpoly_gen(zm, s->lambda_var, s->zctx);
+    fmpz_mpoly_sub_si(zm, zm, 1, s->zctx);
+    for (j = 0; j <= S->n; j++) {
         fmpz_mpoly_pow_ui(t, zp, (ulong) j, s->zctx);
-        fmpz_mpoly_pow_ui(u, zm, (ulong) (n - j), s->zctx);
+        fmpz_mpoly_pow_ui(u, zm, (ulong) (S->n - j), s->zctx);
         fmpz_mpoly_mul(t, t, u, s->zctx);
-        fmpz_mpoly_mul(t, t, S.a + j, s->zctx);
+        fmpz_mpoly_mul(t, t, S->a + j, s->zctx);
         fmpz_mpoly_add(qz, qz, t, s->zctx);
     }
+    fmpz_mpoly_clear(zp, s->zctx); fmpz_mpoly_clear(zm, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
+}
+
+/* the Hurwitz minors of S's q into minors and the conditions b_n^k D_k > 0
+ * into S->q and the lists (hurwitz; routh's cross-check) */
+static int qd_hurwitz_conds(qd_sym_t *S, rs_run_t *run, json_t *minors, json_t *conds, json_t *parts,
+                            json_t *dropped, json_t *always, int *never)
+{
+    const rs_scheme_struct *s = S->s;
+    fmpz_mpoly_t qz, t, dk;
+    fmpz_mpoly_struct *b, *H;
+    slong n = S->n, k, j, idx[8];
+    int r = RS_OK;
+    fmpz_mpoly_init(qz, s->zctx); fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(dk, s->zctx);
+    qd_bilinear(qz, S);
     b = flint_malloc((size_t) (n + 1) * sizeof(fmpz_mpoly_struct));
     for (j = 0; j <= n; j++) {
         fmpz_mpoly_init(b + j, s->zctx);
@@ -503,8 +520,6 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         if (i >= 0 && i <= n) fmpz_mpoly_set(H + j, b + n - i, s->zctx);
     }
     for (j = 0; j < n; j++) idx[j] = j;
-    o = json_object();
-    minors = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
     for (k = 1; k <= n && r == RS_OK; k++) {
         char origin[40];
         int a;
@@ -525,10 +540,50 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         }
         r = too_big(t, run, s, "hurwitz");
         if (r != RS_OK) break;
-        a = qc_add(&S.q, conds, parts, dropped, t, origin, S.sign);
+        a = qc_add(&S->q, conds, parts, dropped, t, origin, S->sign);
         if (a == 1) json_array_append_new(always, json_string(origin));
-        if (a == -1) never = 1;
+        if (a == -1) *never = 1;
     }
+    for (j = 0; j < n * n; j++) fmpz_mpoly_clear(H + j, s->zctx);
+    for (j = 0; j <= n; j++) fmpz_mpoly_clear(b + j, s->zctx);
+    flint_free(H);
+    flint_free(b);
+    fmpz_mpoly_clear(qz, s->zctx); fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(dk, s->zctx);
+    return r;
+}
+
+/* "p_at_1", "p_at_minus_1" */
+static void qd_p_at_pm1(json_t *o, const qd_sym_t *S)
+{
+    const rs_scheme_struct *s = S->s;
+    fmpz_mpoly_t t;
+    slong k;
+    fmpz_mpoly_init(t, s->zctx);
+    for (k = 1; k >= -1; k -= 2) {
+        fmpz_t x;
+        fmpz_init_set_si(x, k);
+        fmpz_mpoly_evaluate_one_fmpz(t, S->v->cp->p, s->lambda_var, x, s->zctx);
+        json_object_set_new(o, k == 1 ? "p_at_1" : "p_at_minus_1", qd_json(t, s));
+        fmpz_clear(x);
+    }
+    fmpz_mpoly_clear(t, s->zctx);
+}
+
+int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
+{
+    qd_sym_t S;
+    json_t *o, *minors, *conds, *parts, *dropped, *always;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    if (r == RS_OK && S.n > 8)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "hurwitz over Q(sqrt d): degree over 8 in lambda "
+                         "(the minors are expanded up to degree 8; jury answers the same question)%s", "");
+    if (r != RS_OK) {
+        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
+        return r;
+    }
+    o = json_object();
+    minors = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
+    r = qd_hurwitz_conds(&S, run, minors, conds, parts, dropped, always, &never);
     json_object_set_new(o, "analysis", json_string("hurwitz"));
     json_object_set_new(o, "var", json_string("z"));
     json_object_set_new(o, "method", json_string(
@@ -538,24 +593,122 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         "D_(n-1)"));
     json_object_set_new(o, "minors", minors);
     json_object_set_new(o, "nonzero", json_array());
-    for (k = 1; k >= -1; k -= 2) {
-        fmpz_t x;
-        fmpz_init_set_si(x, k);
-        fmpz_mpoly_evaluate_one_fmpz(t, S.v->cp->p, s->lambda_var, x, s->zctx);
-        json_object_set_new(o, k == 1 ? "p_at_1" : "p_at_minus_1", qd_json(t, s));
-        fmpz_clear(x);
-    }
-    for (j = 0; j < n * n; j++) fmpz_mpoly_clear(H + j, s->zctx);
-    for (j = 0; j <= n; j++) fmpz_mpoly_clear(b + j, s->zctx);
-    flint_free(H);
-    flint_free(b);
-    fmpz_mpoly_clear(qz, s->zctx); fmpz_mpoly_clear(zp, s->zctx); fmpz_mpoly_clear(zm, s->zctx);
-    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx); fmpz_mpoly_clear(dk, s->zctx);
-    if (r == RS_OK) r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+    qd_p_at_pm1(o, &S);
+    if (r == RS_OK) r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never, NULL);
     else {
         json_decref(o); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
     }
-    qd_sym_clear(&S, n);
+    qd_sym_clear(&S, S.n);
+    return r;
+}
+
+/* routh over Q(sqrt d)[params]: the fraction-free Routh array of q
+ * (rs_routh_mpoly with sqrt(d) one more variable: its exact divisions are
+ * identities in the coefficients, so they stay exact; each entry reduced by
+ * sqrt(d)^2 = d only for the report).  First column f_0 = r_0, f_k = r_1 ...
+ * r_k (r the textbook column): every root of q in Re z < 0 iff every r_k has
+ * r_0's sign, i.e. f_0 f_k > 0 (k odd), f_k > 0 (k even) -- the conditions,
+ * checked at the sample points against the exact point verdict and against
+ * Hurwitz's conditions b_n^k D_k > 0 (exit 3 on a disagreement). */
+int rs_an_qd_routh(rs_run_t *run, const rs_an_req_t *req)
+{
+    qd_sym_t S, Hs;
+    const rs_scheme_struct *s;
+    rs_routh_mpoly_t rm;
+    fmpz_mpoly_t qz, t, f0;
+    json_t *o = NULL, *rows = NULL, *col, *conds, *parts, *dropped, *always;
+    slong i, j;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0, hnever = 0;
+    Hs.a = NULL;
+    if (r == RS_OK && S.n > 8)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "routh over Q(sqrt d): degree over 8 in lambda "
+                         "(its Hurwitz cross-check expands the minors up to degree 8; jury answers the same "
+                         "question)%s", "");
+    if (r != RS_OK) {
+        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
+        return r;
+    }
+    s = S.s;
+    fmpz_mpoly_init(qz, s->zctx); fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(f0, s->zctx);
+    conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
+    col = json_array();
+    qd_bilinear(qz, &S);
+    rs_routh_mpoly_init(rm);
+    r = rs_routh_mpoly(rm, qz, s->lambda_var, s->zctx, run->err);
+    if (r == RS_ERR_MATH)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "routh over Q(sqrt d): a pivot of the Routh array "
+                         "vanishes for every parameter value; hurwitz and jury over Q(sqrt d) answer the same question "
+                         "(%s)", "set the parameters for stability at a point");
+    else if (r != RS_OK) r = rs_req_relocate(run, req->q, r, "routh");
+    if (r == RS_OK && rm->zero_row >= 0)
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "routh over Q(sqrt d): row %s vanishes identically "
+                         "(roots symmetric about z = 0 for every value: never asymptotically stable); hurwitz and jury "
+                         "over Q(sqrt d) run on this case", "of the array");
+    if (r == RS_OK) {
+        rows = json_array();
+        for (i = 0; i < rm->nrows && r == RS_OK; i++) {
+            json_t *row = json_array();
+            for (j = 0; j < rm->rowlen[i]; j++) {
+                fmpz_mpoly_set(t, rm->rows[i] + j, s->zctx);
+                rs_scheme_reduce_sqrt(t, s);
+                json_array_append_new(row, qd_json(t, s));
+                if (j > 0) continue;
+                json_array_append_new(col, qd_json(t, s));
+                if (fmpz_mpoly_is_zero(t, s->zctx))
+                    r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "routh over Q(sqrt d): a first-column "
+                                     "entry is 0 for every parameter value once sqrt(d)^2 = d; hurwitz and jury over "
+                                     "Q(sqrt d) answer the same question%s", "");
+            }
+            json_array_append_new(rows, row);
+            if (r != RS_OK) break;
+            if (i == 0) { fmpz_mpoly_set(f0, t, s->zctx); continue; }
+            /* f_0 f_k > 0 (k odd), f_k > 0 (k even) */
+            {
+                char origin[40];
+                int a;
+                fmpz_mpoly_set(t, rm->rows[i], s->zctx);
+                rs_scheme_reduce_sqrt(t, s);
+                if (i & 1) mul_red(t, f0, t, s);
+                snprintf(origin, sizeof origin, i & 1 ? "f_0*f_%ld" : "f_%ld", (long) i);
+                r = too_big(t, run, s, "routh");
+                if (r != RS_OK) break;
+                a = qc_add(&S.q, conds, parts, dropped, t, origin, S.sign);
+                if (a == 1) json_array_append_new(always, json_string(origin));
+                if (a == -1) never = 1;
+            }
+        }
+    }
+    if (r == RS_OK) {
+        /* the second method: Hurwitz's conditions on the same p */
+        json_t *m = json_array(), *c2 = json_array(), *p2 = json_array(), *d2 = json_array(), *a2 = json_array();
+        r = qd_sym_init(&Hs, run, req, S.v);
+        if (r == RS_OK) r = qd_hurwitz_conds(&Hs, run, m, c2, p2, d2, a2, &hnever);
+        json_decref(m); json_decref(c2); json_decref(p2); json_decref(d2); json_decref(a2);
+    }
+    if (r == RS_OK) {
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("routh"));
+        json_object_set_new(o, "var", json_string("z"));
+        json_object_set_new(o, "symbolic", json_true());
+        json_object_set_new(o, "rows", rows);
+        rows = NULL;
+        json_object_set_new(o, "first_column", col);
+        col = NULL;
+        json_object_set_new(o, "note", json_string(
+            "fraction-free rows over Q(sqrt d)[params] of q(z) = (z - 1)^n p((z + 1)/(z - 1)) (each divided exactly "
+            "by the pivot three rows up, sqrt(d) kept as a variable there, then sqrt(d)^2 = d): first column "
+            "f_0 = r_0, f_k = r_1 r_2 ... r_k (r the textbook column); all roots have Re z < 0 iff every r_k has the "
+            "sign of r_0, i.e. f_0 f_k > 0 (k odd) and f_k > 0 (k even), the conditions"));
+        qd_p_at_pm1(o, &S);
+        r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never, &Hs.q);
+        conds = parts = dropped = always = NULL;
+    }
+    json_decref(rows); json_decref(col);
+    json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+    rs_routh_mpoly_clear(rm, s->zctx);
+    fmpz_mpoly_clear(qz, s->zctx); fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(f0, s->zctx);
+    if (Hs.a != NULL) qd_sym_clear(&Hs, Hs.n);
+    qd_sym_clear(&S, S.n);
     return r;
 }
 
@@ -920,9 +1073,12 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
     int r, never = 0, others = 0;
     if (req->u.region.twod || req->u.region.forall) {
         json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected region NAME [at P=V, ...]: %s is "
-                            "not available over Q(sqrt 2) (rk sdirk2)", req->u.region.twod ? "region N1, N2"
-                            : "region NAME for all");
+        char msg[400];
+        snprintf(msg, sizeof msg, "expected region NAME [at P=V, ...]: %s is not available over Q(sqrt %ld) (rk %s); "
+                 "region NAME with the other parameters set (at P=V), or jury, hurwitz and routh with them free, run",
+                 req->u.region.twod ? "region N1, N2" : "region NAME for all", (long) run->m->qd->d,
+                 run->m->qd->tableau);
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     keep[0] = run->c->params[tv].name;
     rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
@@ -954,7 +1110,7 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
         /* other parameters free: the conditions on all of them (jury's) */
         json_object_set_new(o, "symbolic", json_true());
         json_object_set_new(o, "note", json_string(qd_jury_note));
-        r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never);
+        r = qd_sym_finish(&S, run, req, o, conds, parts, dropped, always, never, NULL);
     } else {
         r = qd_region_cells(o, &S, run, req->q, tv, lead, NULL, -1, NULL, NULL);
         if (r == RS_OK) {
@@ -997,7 +1153,8 @@ int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run
         for (k = 0; r == RS_OK && k < S.s->lambda_var; k++)
             if (k != tv && (fmpz_mpoly_degree_si(S.p0, k, S.s->zctx) > 0 || fmpz_mpoly_degree_si(S.p1, k, S.s->zctx) > 0))
                 r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every parameter but %s set: a "
-                                 "claim over Q(sqrt 2) is decided on the exact region of one parameter",
+                                 "claim over Q(sqrt d) is decided on the exact region of one parameter (jury, "
+                                 "hurwitz and routh give the conditions with more parameters free)",
                                  run->c->params[tv].name);
         if (r == RS_OK) r = qd_region_cells(o, &S, run, req->q, tv, lead, dom, kind, verdict, counter);
         fmpz_mpoly_clear(lead, S.s->zctx);

@@ -2,6 +2,7 @@
  * (zero pivot, zero row, degree drop, q(0) = 0) handled and named. */
 #include <stdio.h>
 #include "analysis/registry.h"
+#include "analysis/an_qd.h"
 #include "recstab/bilinear.h"
 #include "recstab/routh.h"
 
@@ -187,6 +188,7 @@ static int routh_real(rs_run_t *run, const rs_an_req_t *req)
 
 int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
 {
+    if (run->m->qd != NULL) return rs_an_qd_routh(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_routh(run, req);
     return routh_real(run, req);

@@ -134,7 +134,7 @@ static const char *const methods[] = {"euler-forward", "euler-backward", "trapez
                                       "adams-moulton", "bdf", "hht", "generalized-alpha", "wbz", "leapfrog", NULL};
 
 static const char *const tableaux[] = {"euler", "heun", "midpoint", "rk4", "gauss2", "radau-iia2", "radau-iia3",
-                                       "sdirk2", NULL};
+                                       "sdirk2", "sdirk3", "sdirk3-low", NULL};
 
 #define MAX_STAGES 8
 
@@ -223,7 +223,7 @@ static int rk_tableau(rs_stmt_t *x, rs_subsystem_t *s, size_t *i)
         if (strcmp(w, tableaux[k]) == 0) { s->tableau = w; return RS_OK; }
     flint_free(w);
     return at(x, p0, "expected a Butcher tableau (euler, heun, midpoint, rk4, gauss2, radau-iia2, radau-iia3, "
-              "sdirk2, or [A11, A12; A21, A22 | b1, b2]), found '%s'", t + p0);
+              "sdirk2, sdirk3, sdirk3-low, or [A11, A12; A21, A22 | b1, b2]), found '%s'", t + p0);
 }
 
 /* the K of adams-bashforth K, adams-moulton K (1..6) and bdf K (1..7: BDF7 shows the loss of zero-stability) */

@@ -153,7 +153,7 @@ void rs_tableau_stability(fmpq_poly_t num, fmpq_poly_t den, const rs_tableau_t t
 
 /* The tableaux as written in Hairer and Wanner, Solving ODEs II, IV.5
  * (Tables 5.1, 5.5, 5.6) and IV.6 (SDIRK of order 2, gamma = 1 - sqrt(2)/2,
- * Alexander 1977); Hairer, Norsett, Wanner I, II.1 (explicit ones).  An
+ * Alexander 1977; of order 3, gamma = (3 +- sqrt 3)/6); Hairer, Norsett, Wanner I, II.1 (explicit ones).  An
  * entry "X Y" is X + Y sqrt(d); the b row follows A. */
 typedef struct { const char *name; slong s, d; const char *e[20]; } named_t;
 
@@ -168,6 +168,11 @@ static const named_t named[] = {
     {"radau-iia3", 3, 6, {"11/45 -7/360", "37/225 -169/1800", "-2/225 1/75", "37/225 169/1800", "11/45 7/360",
                           "-2/225 -1/75", "4/9 -1/36", "4/9 1/36", "1/9 0", "4/9 -1/36", "4/9 1/36", "1/9 0"}},
     {"sdirk2", 2, 2, {"1 -1/2", "0 0", "0 1/2", "1 -1/2", "0 1/2", "1 -1/2"}},
+    /* the 2-stage SDIRK of order 3 (Norsett 1974, Crouzeix 1975; Hairer and
+     * Wanner II, IV.6): A = [g, 0; 1 - 2g, g], b = [1/2, 1/2], g = (3 +- sqrt 3)/6;
+     * A-stable only for the + sign (sdirk3), not for the - sign (sdirk3-low) */
+    {"sdirk3", 2, 3, {"1/2 1/6", "0 0", "0 -1/3", "1/2 1/6", "1/2 0", "1/2 0"}},
+    {"sdirk3-low", 2, 3, {"1/2 -1/6", "0 0", "0 1/3", "1/2 -1/6", "1/2 0", "1/2 0"}},
     {NULL, 0, 0, {NULL}}
 };
 

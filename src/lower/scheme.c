@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "recstab/scheme.h"
+#include "util/qd.h"
 
 /* Evaluation limits (lets are expanded where they are used, so a few short
  * lines can describe a huge tree): recursion depth, total nodes evaluated,
@@ -1068,32 +1069,7 @@ void rs_scheme_copy(rs_scheme_t dst, const rs_scheme_t src)
 
 void rs_scheme_reduce_sqrt(fmpz_mpoly_t p, const rs_scheme_t s)
 {
-    slong i, n, v = s->sqrt_var;
-    ulong *ex;
-    fmpz_t c, dk;
-    fmpz_mpoly_t r;
-    if (s->sqrt_d <= 0 || fmpz_mpoly_degree_si(p, v, s->zctx) < 2) return;
-    ex = flint_malloc(s->nvars * sizeof(ulong));
-    fmpz_init(c);
-    fmpz_init(dk);
-    fmpz_mpoly_init(r, s->zctx);
-    n = fmpz_mpoly_length(p, s->zctx);
-    for (i = 0; i < n; i++) {   /* c s^e -> c d^(e/2) s^(e mod 2) */
-        fmpz_mpoly_get_term_coeff_fmpz(c, p, i, s->zctx);
-        fmpz_mpoly_get_term_exp_ui(ex, p, i, s->zctx);
-        fmpz_set_si(dk, s->sqrt_d);
-        fmpz_pow_ui(dk, dk, ex[v] / 2);
-        fmpz_mul(c, c, dk);
-        ex[v] %= 2;
-        fmpz_mpoly_push_term_fmpz_ui(r, c, ex, s->zctx);
-    }
-    fmpz_mpoly_sort_terms(r, s->zctx);
-    fmpz_mpoly_combine_like_terms(r, s->zctx);
-    fmpz_mpoly_swap(p, r, s->zctx);
-    fmpz_mpoly_clear(r, s->zctx);
-    fmpz_clear(c);
-    fmpz_clear(dk);
-    flint_free(ex);
+    rs_qd_mpoly_reduce(p, s->sqrt_var, s->sqrt_d, s->zctx);
 }
 
 void rs_scheme_substitute(rs_scheme_t s, slong var, const fmpq_t value)

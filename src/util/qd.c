@@ -87,3 +87,33 @@ char *rs_qd_get_str(const rs_qd_struct *a, slong d)
     return out;
 }
 
+
+void rs_qd_mpoly_reduce(fmpz_mpoly_t p, slong v, slong d, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i, n;
+    ulong *ex;
+    fmpz_t c, dk;
+    fmpz_mpoly_t r;
+    if (d <= 0 || fmpz_mpoly_degree_si(p, v, ctx) < 2) return;
+    ex = flint_malloc(ctx->minfo->nvars * sizeof(ulong));
+    fmpz_init(c);
+    fmpz_init(dk);
+    fmpz_mpoly_init(r, ctx);
+    n = fmpz_mpoly_length(p, ctx);
+    for (i = 0; i < n; i++) {   /* c s^e -> c d^(e/2) s^(e mod 2) */
+        fmpz_mpoly_get_term_coeff_fmpz(c, p, i, ctx);
+        fmpz_mpoly_get_term_exp_ui(ex, p, i, ctx);
+        fmpz_set_si(dk, d);
+        fmpz_pow_ui(dk, dk, ex[v] / 2);
+        fmpz_mul(c, c, dk);
+        ex[v] %= 2;
+        fmpz_mpoly_push_term_fmpz_ui(r, c, ex, ctx);
+    }
+    fmpz_mpoly_sort_terms(r, ctx);
+    fmpz_mpoly_combine_like_terms(r, ctx);
+    fmpz_mpoly_swap(p, r, ctx);
+    fmpz_mpoly_clear(r, ctx);
+    fmpz_clear(c);
+    fmpz_clear(dk);
+    flint_free(ex);
+}

@@ -570,6 +570,75 @@ PY
     else fail "sdirk2 astability: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 astability JSON: no python3"; fi
 check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
+
+# ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
+SR=cases/complex/sdirk2-coupled-routh.case
+"$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
+if command -v python3 >/dev/null 2>&1; then
+    res=$(cd tests/cli && python3 - "$T/sr.json" <<'PY'
+import json, sys
+from sdirk2_steps import run as steps_run
+r = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+bad = []
+if r.get("over") != "Q(sqrt 2)" or r.get("symbolic") is not True: bad.append("over/symbolic")
+if not r.get("cross_check", {}).get("agree") or r["cross_check"].get("points", 0) < 1: bad.append("cross_check")
+if not r.get("sample_check", {}).get("agree"): bad.append("sample_check")
+if len(r["first_column"]) != 3: bad.append("first column")
+def holds(cq, a, c):
+    v = lambda t: eval(t.replace("^", "**"), {"a": a, "c": c, "sqrt": lambda x: x ** 0.5})
+    val = v(cq["c0"]) + 2 ** 0.5 * v(cq["c1"])
+    return val > 0 if cq["rel"] == ">" else val != 0
+n = 0
+for a in (0.25, 0.5, 1.0, 2.0, 4.0):
+    for c in (0.1, 0.5, 1.0, 1.5, 2.0, 3.0):
+        g = steps_run(a, c)
+        if 1e-3 < g < 1e3:
+            continue   # too near the boundary for 400 steps to tell
+        says = all(holds(cq, a, c) for cq in r["conditions_qd"])
+        n += 1
+        if says != (g < 1e-3): bad.append("a=%g c=%g: conditions %s, run %g" % (a, c, says, g))
+if n < 20: bad.append("only %d points" % n)
+print("yes" if not bad else "no " + " ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 coupled: routh over Q(sqrt 2) agrees with hurwitz and with 400-step runs of the definition"
+    else fail "sdirk2 coupled routh: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 coupled routh: no python3"; fi
+for pt in "1/2 stable" "2 unstable"; do
+    set -- $pt
+    "$RS" --json --set a=1 --set "c=$1" "$SR" >"$T/sr1.json" 2>"$T/err"; rc=$?
+    v=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["cases"][0]["results"][0]["verdict"])' "$T/sr1.json" 2>/dev/null)
+    want="stable under the assumptions"; [ "$2" = unstable ] && want="never stable"
+    if [ "$rc" = 0 ] && [ "$v" = "$want" ]; then ok "sdirk2 coupled a=1 c=$1: routh over Q(sqrt 2) says $2 (sympy rho in the coupled tests above)"
+    else fail "sdirk2 coupled routh a=1 c=$1: rc=$rc '$v'"; fi
+done
+
+# ---- rk sdirk3 / sdirk3-low over Q(sqrt 3): A(alpha) by the rays route over Q(sqrt d) ----
+# (R(inf), E by hand in the case comments; alpha 90 and 0 also from the float ray scan of
+# tests/cli/alpha_sdirk3.py plus|low, run by hand: about 10 s each)
+for c in sdirk3 sdirk3-low; do
+    "$RS" --json "cases/complex/$c-astability.case" >"$T/s3.json" 2>"$T/err"; rc=$?
+    if command -v python3 >/dev/null 2>&1; then
+        res=$(python3 - "$T/s3.json" "$c" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+low = sys.argv[2] == "sdirk3-low"
+want = {"a_stable": not low, "alpha_degrees": 0 if low else 90, "over": "Q(sqrt 3)", "l_stable": False,
+        "limit_at_infinity": "1 + 1*sqrt(3)" if low else "-1 + 1*sqrt(3)", "decided_by": "exact"}
+bad = ["%s=%r" % (k, a.get(k)) for k in want if a.get(k) != want[k]]
+E = "(1/12 - 1/18*sqrt(3))*y^4" if low else "(1/12 + 1/18*sqrt(3))*y^4"
+if a["evidence"][0]["E"] != E: bad.append("E=" + a["evidence"][0]["E"])
+rays = a["evidence"][1]
+if low and rays.get("first_point_outside", {}).get("status") != "unstable": bad.append("no point outside")
+if not low and rays.get("every_ray_inside") is not True: bad.append("rays not inside")
+if low and a["imag_interval"] != [0, 0]: bad.append("imag %r" % a["imag_interval"])
+print("yes" if not bad else "no " + " ".join(bad))
+PY
+)
+        if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "$c astability over Q(sqrt 3): rays and E-polynomial agree (alpha $([ $c = sdirk3 ] && echo 90 || echo 0))"
+        else fail "$c astability: rc=$rc $res $(head -1 "$T/err")"; fi
+    else ok "skipped $c astability JSON: no python3"; fi
+done
 check_status "sdirk2 z=3 (R = 76 + 54 sqrt 2)" unstable "$SP" --set 'q=3'
 check_status "sdirk2 z=0 (R = 1)" marginal "$SP" --set 'q=0'
 # simulate there: R = 1 is a root on the circle, which the verdict over Q(sqrt 2) leaves undecided
@@ -906,6 +975,12 @@ if grep -qF 'eq y_k1[n+1] = (-a*(y[n] + (1)*((1 - 1/2*sqrt(2))*y_k1[n+1])) + c*x
    && grep -qF 'eq 2*(y[n+1] - y[n]) = (1)*(sqrt(2)*y_k1[n+1] + (2 - sqrt(2))*y_k2[n+1])' "$T/eq.txt"; then
     ok "sdirk2 --emit equations: stages with gamma = 1 - sqrt(2)/2 written exactly"
 else fail "sdirk2 emit: $(cat "$T/eq.txt" "$T/err")"; fi
-"$RS" --analyse stability "$SC" --set c=2 --analyse routh >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "routh is not available for rk sdirk2" "$T/err"; then ok "sdirk2 coupled: routh refused (exit 2)"
-else fail "sdirk2 coupled routh refusal: rc=$rc $(head -1 "$T/err")"; fi
+# routh runs over Q(sqrt d) now (sdirk2-coupled-routh.case); bilinear is still refused, naming what runs
+"$RS" --analyse stability "$SC" --set c=2 --analyse bilinear >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "bilinear is not available for rk sdirk2 .*jury, hurwitz, routh" "$T/err" \
+   || { [ "$rc" = 2 ] && grep -q "hurwitz, routh, region or claim: bilinear is not available for rk sdirk2" "$T/err"; }; then
+    ok "sdirk2 coupled: bilinear refused (exit 2), naming what runs"
+else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ]; then ok "sdirk2 coupled: routh at set values runs over Q(sqrt 2)"
+else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi

@@ -16,6 +16,7 @@
  *     2 Re z + (1 - 2 alpha)|z|^2 < 0 by expanding |R(z)| < 1 by hand (the
  *     case comment), checked again here on |R| in complex double; the
  *     rotated Euler root lambda = 1 + i z. */
+#include "analysis/an_qd.h"   /* before cmocka: FLINT's headers */
 #include "testutil.h"
 #include <string.h>
 #include <math.h>
@@ -446,6 +447,66 @@ static void test_complex_char(void **state)
     json_decref(doc);
 }
 
+/* A(alpha) over Q(sqrt d) (rs_an_astability_alpha_qd, the rays route):
+ *  - the Pade (0, 3) approximation at sqrt(2) z, R = 1/(1 - sqrt2 z + z^2 -
+ *    (sqrt2/3) z^3): z -> sqrt(2) z maps each ray onto itself, so alpha is
+ *    that of 1/(1 - z + z^2/2 - z^3/6), 88.23015200721602..88.23015200721609
+ *    degrees by a float ray scan (bisection on max_r |R(-r e^{i theta})| <= 1,
+ *    tests/cli/alpha_sdirk3.py pade03, which also derives tan(alpha)'s
+ *    minimal polynomial with sympy);
+ *  - sdirk3 (gamma = (3 + sqrt 3)/6) A-stable (Hairer and Wanner II, IV.6):
+ *    every ray inside; sdirk3-low: |R(inf)| = 1 + sqrt 3 > 1 (by hand, the
+ *    case comment), so no sector lies in the region: alpha = 0. */
+static void test_alpha_qd(void **state)
+{
+    rs_qdpoly_t N, D;
+    rs_qd_t c;
+    json_t *out, *ev, *doc, *r;
+    arb_t deg;
+    int inside;
+    rs_error_t err;
+    double got;
+    (void) state;
+    rs_qdpoly_init(N); rs_qdpoly_init(D);
+    rs_qd_init(c);
+    arb_init(deg);
+    rs_error_init(err);
+    fmpq_set_si(c->x, 1, 1);
+    rs_qdpoly_set_coeff(N, 0, c);
+    rs_qdpoly_set_coeff(D, 0, c);
+    fmpq_set_si(c->x, 0, 1); fmpq_set_si(c->y, -1, 1);
+    rs_qdpoly_set_coeff(D, 1, c);
+    fmpq_set_si(c->x, 1, 1); fmpq_set_si(c->y, 0, 1);
+    rs_qdpoly_set_coeff(D, 2, c);
+    fmpq_set_si(c->x, 0, 1); fmpq_set_si(c->y, -1, 3);
+    rs_qdpoly_set_coeff(D, 3, c);
+    assert_int_equal(rs_an_astability_alpha_qd(&out, &ev, deg, &inside, N, D, 2, err), RS_OK);
+    assert_int_equal(inside, 0);
+    got = arf_get_d(arb_midref(deg), ARF_RND_NEAR);
+    assert_true(got > 88.23015200721602 - 1e-7 && got < 88.23015200721609 + 1e-7);
+    /* tan(alpha)'s minimal polynomial: the factor of disc_s(|N|^2 - |D|^2 on the rays of the rational
+     * Pade (0, 3)) with that root, derived by sympy in tests/cli/alpha_sdirk3.py pade03 */
+    assert_string_equal(json_string_value(json_object_get(out, "tan_alpha_minpoly")),
+                        "81*u^14 - 84830*u^12 - 6537*u^10 - 129912*u^8 - 78065*u^6 - 39990*u^4 - 6711*u^2 - 340");
+    assert_string_equal(json_string_value(json_object_get(json_object_get(ev, "first_point_outside"), "status")),
+                        "unstable");
+    json_decref(out);
+    json_decref(ev);
+    rs_qdpoly_clear(N); rs_qdpoly_clear(D);
+    rs_qd_clear(c);
+    arb_clear(deg);
+    rs_error_clear(err);
+    doc = run("cases/complex/sdirk3-astability.case", &r);
+    assert_true(json_is_true(json_object_get(r, "a_stable")));
+    assert_int_equal(json_integer_value(json_object_get(r, "alpha_degrees")), 90);
+    assert_true(json_is_true(json_object_get(json_array_get(json_object_get(r, "evidence"), 1), "every_ray_inside")));
+    json_decref(doc);
+    doc = run("cases/complex/sdirk3-low-astability.case", &r);
+    assert_false(json_is_true(json_object_get(r, "a_stable")));
+    assert_int_equal(json_integer_value(json_object_get(r, "alpha_degrees")), 0);
+    json_decref(doc);
+}
+
 /* bad requests: exit-2 style errors */
 static void test_errors(void **state)
 {
@@ -487,6 +548,7 @@ int main(void)
         cmocka_unit_test(test_complex_set),
         cmocka_unit_test(test_complex_char),
         cmocka_unit_test(test_rays_route),
+        cmocka_unit_test(test_alpha_qd),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
