@@ -24,7 +24,7 @@ set -eu
 cd "$(dirname "$0")/.."
 OUT=${OUT:-build/static-libs}
 MIRROR=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
-ROOT="$(pwd)/$OUT/root"
+case $OUT in /*) ROOT="$OUT/root" ;; *) ROOT="$(pwd)/$OUT/root" ;; esac
 STAMP="$ROOT/.done"
 JOBS=${JOBS:-2}
 
