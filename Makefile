@@ -55,6 +55,7 @@ DEB_WHY := \
 FUZZ_WHY := libclang-rt-14-dev:the_libFuzzer_runtime_of_make_fuzz clang:make_fuzz
 VALGRIND_WHY := valgrind:make_check-valgrind
 FLINT3_WHY := curl:make_check-flint3_fetches_FLINT_3_from_the_Debian_archive xz-utils:the_package_index_of_the_archive
+STATIC_WHY := curl:make_static_fetches_FLINT_and_Arb_sources_from_the_Debian_archive dpkg-dev:dpkg-buildflags_gives_the_compiler_flags_of_Debian_builds
 BENCH_WHY := qepcad:the_QEPCAD_B_peer_of_make_bench pari-gp:the_PARI_peer_of_make_bench mpsolve:the_MPSolve_peer_of_make_bench
 DEB_PKGS := $(foreach p,$(DEB_WHY),$(firstword $(subst :, ,$(p))))
 
@@ -118,7 +119,7 @@ print-flint:
 	@echo "FLINT_LIBS=$(FLINT_LIBS)"
 
 deps-list:
-	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY) $(FLINT3_WHY) $(BENCH_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done
+	@for w in $(DEB_WHY) $(FUZZ_WHY) $(VALGRIND_WHY) $(FLINT3_WHY) $(STATIC_WHY) $(BENCH_WHY); do echo "$${w%%:*}: $${w#*:}" | tr _ ' '; done
 
 $(BUILD)/obj/%.o: src/%.c $(HDRS)
 	@mkdir -p $(dir $@)
@@ -194,20 +195,30 @@ demo: deps
 	@$(MAKE) --no-print-directory all
 	@$(BIN) cases/park-staggered.case; rc=$$?; [ $$rc -le 1 ] || exit $$rc
 
-# build/recstab-static (`make static`, issue 17): the command with GSL, its
-# CBLAS and jansson linked statically -- three shared objects fewer to map and
+# build/recstab-static (`make static`; issue 17, then issue 13): the command
+# linked fully static -- no dynamic loader, no shared object to map or
 # relocate at start-up (bench/README.md has the figures).  Debian ships no
-# static FLINT or Arb, and GMP/MPFR stay shared: libflint.so loads them anyway,
-# and a second, static copy would have its own allocator (budget.c counts
-# through GMP's).  build/recstab itself is unchanged.  OpenMP's runtime is
-# static too (gcc's libgomp.a; issue 13: one more shared object fewer, about
-# 2 ms of the start-up's CPU time here): linked without -fopenmp, which would
-# add the shared libgomp.
-STATIC_DEP_LIBS := $(FLINT_LIBS) -Wl,-Bstatic -lgsl -lgslcblas -ljansson -lgomp -Wl,-Bdynamic -lmpfr -lgmp -lm -lpthread -ldl
+# libflint.a or libflint-arb.a, so bench/static_libs.sh builds them once from
+# Debian's source packages of the installed versions (checksums from the
+# .dsc; a few minutes, cached under $(BUILD)/static-libs; never run by `make
+# all` or `make check`).  GMP, MPFR, GSL, CBLAS, jansson, OpenMP's runtime and
+# glibc are Debian's lib*.a: one copy of GMP, whose allocator budget.c counts
+# for FLINT and GMP alike.  Linked without -fopenmp (which would add the
+# shared libgomp).  The objects are build/recstab's, compiled against
+# Debian's FLINT 2.9 + Arb headers, the same versions as the static
+# libraries; not for a FLINT 3 build (FLINT3=yes).  build/recstab itself is
+# unchanged.
+STATIC_ROOT := $(BUILD)/static-libs/root
+STATIC_DEP_LIBS := -static -L$(STATIC_ROOT)/lib -larb -lflint -lgsl -lgslcblas -ljansson -lgomp -lmpfr -lgmp -lm -lpthread
 static: $(BUILD)/recstab-static
 
-$(BUILD)/recstab-static: $(CLI_OBJ) $(LIBRS)
-	$(CC) $(filter-out -fopenmp,$(CFLAGS_ALL)) -o $@ $(CLI_OBJ) $(LIBRS) $(RUN_ORDER) $(STATIC_DEP_LIBS)
+$(STATIC_ROOT)/.done:
+	@[ "$(FLINT3)" != yes ] || { echo "make static: needs Debian's FLINT 2.9 + Arb (FLINT3=yes here)" >&2; exit 1; }
+	$(call deb-install,static,$(STATIC_WHY))
+	OUT=$(BUILD)/static-libs sh bench/static_libs.sh
+
+$(BUILD)/recstab-static: $(CLI_OBJ) $(LIBRS) $(STATIC_ROOT)/.done
+	$(CC) $(filter-out -fopenmp,$(CFLAGS_ALL)) -o $@ $(CLI_OBJ) $(LIBRS) $(STATIC_DEP_LIBS)
 
 # the in-process Park bench (issue 17): the one-call API N times in one
 # process, beside SymPy's in-process figure (bench/run.sh, part (c'))

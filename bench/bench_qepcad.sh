@@ -18,9 +18,10 @@
 set -u
 cd "$(dirname "$0")/.." || exit 2
 BIN=${RECSTAB:-build/recstab}   # RECSTAB=path: another build, side by side
-# the documented `make static` product (GSL, CBLAS, jansson and libgomp
-# linked statically; FLINT, Arb, GMP, MPFR shared), timed beside the shipped
-# build/recstab when it exists (issue 13: both figures printed)
+# the documented `make static` product (fully static since h-static13: FLINT
+# and Arb built from Debian's sources, GMP, MPFR, GSL, jansson, libgomp and
+# glibc from Debian's lib*.a), timed beside the shipped build/recstab when it
+# exists (issue 13: both ratios printed, side by side)
 SBIN=${RECSTAB_STATIC:-$(dirname "$BIN")/recstab-static}
 RUNS=${BENCH_RUNS:-5}
 # QEPCAD's default garbage-collected space (+N1000000 cells); a larger +N costs
@@ -71,7 +72,8 @@ qe0=$(timeit qepcad "$T/trivial.qe" qepcad $QE_OPTS)
 echo "$rs0 $qe0" | awk '{ printf "start-up: recstab %.4f s CPU (%.4f wall), QEPCAD %.4f s CPU (%.4f wall)\n", $1, $2, $3, $4 }'
 if [ -n "$SBIN" ]; then
     st0=$(timeit recstab-static /dev/null "$T/recstab-static" --version)
-    echo "$st0" | awk '{ printf "start-up: recstab-static (make static) %.4f s CPU (%.4f wall)\n", $1, $2 }'
+    kind=dynamic; file -L "$SBIN" 2>/dev/null | grep -q 'statically linked' && kind="fully static"
+    echo "$st0" | awk -v k="$kind" '{ printf "start-up: recstab-static (make static, %s) %.4f s CPU (%.4f wall)\n", k, $1, $2 }'
 fi
 printf '%-34s %10s %10s %10s %10s %8s %8s %8s\n' case rs_cpu_s rs_wall_s qe_cpu_s qe_wall_s cpu_x wall_x work_x
 run_case() { # label case P Q sets...
@@ -87,7 +89,8 @@ run_case() { # label case P Q sets...
                (w1 > 0 && w2 > 0) ? sprintf("%.1f", w2 / w1) : "n/a" }'
     if [ -n "$SBIN" ]; then
         st=$(timeit recstab-static /dev/null "$T/recstab-static" "$@" --analyse "region $p for all [$q]" "$case")
-        echo "$st $qe" | awk '{ printf "    make static: %.4f s CPU (%.4f wall), cpu_x %.2f, wall_x %.2f\n", $1, $2, $3 / $1, $4 / $2 }'
+        echo "$st $qe $rs" | awk '{ printf "    make static: %.4f s CPU (%.4f wall), cpu_x %.2f, wall_x %.2f (build/recstab: cpu_x %.2f, wall_x %.2f)\n",
+                                        $1, $2, $3 / $1, $4 / $2, $3 / $5, $4 / $6 }'
     fi
     ans_rs=$("$T/recstab" "$@" --analyse "region $p for all [$q]" "$case" 2>&1 | grep -E '^  (stable|marginal|unstable|singular|undecided) ' | tr -s ' ' | tr '\n' ';')
     ans_qe=$(qepcad $QE_OPTS <"$T/in.qe" 2>&1 | sed -n '/equivalent quantifier-free/{n;n;p}')
