@@ -191,3 +191,21 @@ assert 'dead-beat' in h['verdict'] and j['conditions'] == [], (h, j)
 assert h['sample_check']['agree'] is True and h['sample_check']['points'] > 0, h
 " 2>"$T/deadbeat.py"; then ok "hurwitz dead-beat: no minor, no condition, as jury"
 else fail "hurwitz dead-beat: $(head -c 400 "$T/deadbeat.py")"; fi
+
+# a flat sum is not nesting: 5000 terms parse (they were "too deep" past 2000).
+# By hand: 2500 terms 3/10000 x[n] and 2500 terms -1/10000 x[n] give
+# x[n+1] = (7500 - 2500)/10000 x[n] = x[n]/2, p = lambda - 1/2; the alternating
+# signs check that the balanced tree keeps every '-' on its own term
+awk 'BEGIN { printf "unknown x\neq x[n+1] = 0";
+             for (i = 0; i < 5000; i++) printf (i % 2 == 0 ? " + 3*x[n]/10000" : " - x[n]/10000");
+             printf "\nexpect charpoly lambda - 1/2\n" }' >"$T/flatsum.case"
+"$RS" "$T/flatsum.case" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "5000-term flat sum parses, p = lambda - 1/2" 0 "$rc"
+# the same sum starting with a '-' after a long positive run: x[n+1] = x[n]
+# - 100 * x[n]/200 + 99 * x[n]/396 = (1 - 1/2 + 1/4) x[n] = 3/4 x[n]
+awk 'BEGIN { printf "unknown x\neq x[n+1] = x[n]";
+             for (i = 0; i < 100; i++) printf " - x[n]/200";
+             for (i = 0; i < 99; i++) printf " + x[n]/396";
+             printf "\nexpect charpoly lambda - 3/4\n" }' >"$T/flatsum2.case"
+"$RS" "$T/flatsum2.case" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "200-term sum with a run of '-' then '+', p = lambda - 3/4" 0 "$rc"
