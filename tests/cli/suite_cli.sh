@@ -209,3 +209,23 @@ awk 'BEGIN { printf "unknown x\neq x[n+1] = x[n]";
              printf "\nexpect charpoly lambda - 3/4\n" }' >"$T/flatsum2.case"
 "$RS" "$T/flatsum2.case" >"$T/out" 2>"$T/err"; rc=$?
 check_exit "200-term sum with a run of '-' then '+', p = lambda - 3/4" 0 "$rc"
+
+# modes of a real root print omega 0 exactly (it printed "omega 0e-44": the
+# root's ball straddled the axis).  By hand: 10 l^3 - 5 l - 1 has no rational
+# root (+-1, +-1/2, +-1/5, +-1/10 all fail), discriminant -4*10*(-5)^3 -
+# 27*10^2*1 = 2300 > 0 so three real roots; Descartes: one positive (signs
+# + - -), two negative (p(-l) = -10 l^3 + 5 l - 1: signs - + -).  So every
+# root has im "0", the positive one omega "0", the negative ones omega pi.
+printf 'char 10*lambda^3 - 5*lambda - 1\nanalyse modes\n' >"$T/realroots.case"
+"$RS" --json "$T/realroots.case" >"$T/realroots.json" 2>&1; rc=$?
+check_exit "modes of three real roots exit" 0 "$rc"
+if python3 -c "
+import json
+m = json.load(open('$T/realroots.json'))['cases'][0]['results'][0]['modes']
+assert len(m) == 3 and all(x['root']['im'] == '0' for x in m), m
+pos = [x for x in m if float(x['root']['re']) > 0]
+neg = [x for x in m if float(x['root']['re']) < 0]
+assert len(pos) == 1 and pos[0]['omega'] == '0', m
+assert len(neg) == 2 and all(x['omega'].startswith('3.14159265358979') for x in neg), m
+" 2>"$T/realroots.py"; then ok "modes: real roots have im 0 and omega 0 or pi exactly"
+else fail "modes real roots: $(head -c 400 "$T/realroots.py")"; fi
