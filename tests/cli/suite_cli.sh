@@ -229,3 +229,13 @@ assert len(pos) == 1 and pos[0]['omega'] == '0', m
 assert len(neg) == 2 and all(x['omega'].startswith('3.14159265358979') for x in neg), m
 " 2>"$T/realroots.py"; then ok "modes: real roots have im 0 and omega 0 or pi exactly"
 else fail "modes real roots: $(head -c 400 "$T/realroots.py")"; fi
+
+# Markdown escapes user text (it printed titles raw: * _ ` | [ ] became
+# emphasis, code, tables and links; '#' starts a comment in a case file, so a
+# title cannot hold one).  By hand, CommonMark's backslash escapes:
+# "a*b_c `d` |e| [f](g)" -> "a\*b\_c \`d\` \|e\| \[f\](g)"
+printf 'title a*b_c `d` |e| [f](g)\nchar lambda - 1/2\nanalyse stability\n' >"$T/mdesc.case"
+"$RS" --markdown "$T/mdesc.case" >"$T/mdesc.md" 2>"$T/err"; rc=$?
+check_exit "markdown with metacharacters in the title" 0 "$rc"
+if grep -qxF '## a\*b\_c \`d\` \|e\| \[f\](g)' "$T/mdesc.md"; then ok "markdown escapes the title"
+else fail "markdown title: $(grep '^## ' "$T/mdesc.md")"; fi
