@@ -137,7 +137,7 @@ static void bound_text(char *buf, size_t len, const char *name, const rs_bound_t
     else if (hi != NULL)
         snprintf(buf, len, "%s %s %s", name, b->hi_closed ? "<=" : "<", hi);
     else
-        snprintf(buf, len, "%s real", name);
+        snprintf(buf, len, "%s real", name);   /* not reached from rs_conds_never */
     flint_free(lo);
     flint_free(hi);
 }
@@ -195,8 +195,13 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
         if (m > 0 && rs_positivity_none_positive(one, m, v, v < nb ? b + v : NULL, ctx)) {
             size_t at;
             char range[200];
-            bound_text(range, sizeof range, s->vars[v], v < nb ? b + v : NULL);
-            snprintf(buf, len, "no value with %s satisfies ", range);
+            /* "no value with a >= 1", or "no real value of a" with no bound */
+            if (v < nb && (b[v].has_lo || b[v].has_hi)) {
+                bound_text(range, sizeof range, s->vars[v], b + v);
+                snprintf(buf, len, "no value with %s satisfies ", range);
+            } else {
+                snprintf(buf, len, "no real value of %s satisfies ", s->vars[v]);
+            }
             for (i = 0; i < m; i++) {
                 char *li = rs_cond_string(one[i], s, "> 0");
                 at = strlen(buf);

@@ -217,6 +217,11 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/hurwitz-singular-set-point.case
     check "singular dead-beat step: radius singular without rho" '["singular",null]' \
         "$("$RS" --json --analyse radius $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, .rho]')"
+    # never-stable reasons (h-polish, by hand in the cases): the wording for a parameter
+    # without an assumption
+    C=cases/truth/never-unbounded-param-wording.case
+    check "never, a unbounded: hurwitz and jury say 'no real value of a'" '["never stable","never stable",true,true]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[1].verdict, (.[0].never | startswith("no real value of a satisfies")), (.[1].never | startswith("no real value of a satisfies"))]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
