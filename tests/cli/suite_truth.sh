@@ -218,10 +218,13 @@ if command -v jq >/dev/null 2>&1; then
     check "singular dead-beat step: radius singular without rho" '["singular",null]' \
         "$("$RS" --json --analyse radius $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, .rho]')"
     # never-stable reasons (h-polish, by hand in the cases): the wording for a parameter
-    # without an assumption
+    # without an assumption, and a pair of conditions with a negative sum (jury said "stable iff")
     C=cases/truth/never-unbounded-param-wording.case
     check "never, a unbounded: hurwitz and jury say 'no real value of a'" '["never stable","never stable",true,true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[1].verdict, (.[0].never | startswith("no real value of a satisfies")), (.[1].never | startswith("no real value of a satisfies"))]')"
+    C=cases/truth/never-sympy-p6-positive.case
+    check "SymPy p6, b0 b1 b3 > 0: jury never stable by a negative sum, the samples agree" '["never stable",true,true]' \
+        "$(jfield $C 1 '| [.verdict, (.never | contains("their sum is negative")), .sample_check.agree]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
