@@ -212,7 +212,9 @@ int rs_cond_parse(rs_cond_t *cond, const rs_src_t *src, size_t *pos,
 void rs_cond_clear(rs_cond_t *cond);
 
 /* Name validity helpers. */
-int rs_name_is_reserved(const char *name); /* lambda, z, n */
+int rs_name_is_reserved(const char *name); /* lambda, z, n, i */
+/* Why name cannot be declared (a short phrase), or NULL when it can. */
+const char *rs_name_reserved_why(const char *name);
 
 #ifdef __cplusplus
 }

@@ -31,13 +31,14 @@ static int charpoly_real(rs_run_t *run, const rs_an_req_t *req)
 {
     rs_assign_t *a;
     slong n;
-    rs_variant_t *v;
+    rs_variant_t *v = NULL;
     int r;
     (void) req;
     rs_run_assignments(run, &a, &n, NULL, 0, NULL, 0);
     r = rs_run_variant(&v, run, a, n);
     rs_assign_free(a, n);
-    if (r != RS_OK) return r;
+    /* det A identically 0 at the set values: singular, as stability says */
+    if (r != RS_OK) return rs_run_failed_or_vanishing(run, r, v, "charpoly");
     json_array_append_new(run->results, rs_charpoly_json(v));
     return RS_OK;
 }

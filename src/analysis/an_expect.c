@@ -7,11 +7,11 @@
 #include "recstab/bilinear.h"
 #include "util/polyfmt.h"
 
-/* the name i, not declared by the case: the imaginary unit */
+/* the name i: the imaginary unit (reserved, no case can declare it) */
 static int uses_i(const rs_expr_t *e, const rs_model_t m)
 {
     if (e == NULL) return 0;
-    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0 && rs_an_undeclared_name(e, m) != NULL) return 1;
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0) return 1;
     return uses_i(e->a, m) || uses_i(e->b, m);
 }
 

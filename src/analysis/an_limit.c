@@ -154,9 +154,10 @@ static int cx_limit(rs_run_t *run, const rs_an_req_t *req)
             return rs_req_error(run, q, req->rest, RS_ERR_INPUT, "limit: '%s' has a complex set value: the limit is "
                                 "taken in a parameter without one", name);
     rs_run_assignments(run, &a, &na, keep, 1, NULL, 0);
+    v = NULL;
     r = rs_run_variant(&v, run, a, na);
     rs_assign_free(a, na);
-    if (r != RS_OK) return r;
+    if (r != RS_OK) return rs_run_failed_or_vanishing(run, r, v, "limit");
     s = v->s;
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
     n = rs_run_cx_poly_det(re, im, run, v);   /* det's roots at 0 stay at 0: listed */
@@ -269,8 +270,10 @@ int rs_an_limit(rs_run_t *run, const rs_an_req_t *req)
     fmpz_poly_t c;
     json_t *o, *roots;
     if (run->c->ncsets > 0) return cx_limit(run, req);
+    v = NULL;
     r = rs_run_variant_one_free(&v, run, q, rest, tv, "limit");
-    if (r != RS_OK) return r;
+    /* det A identically 0 in lambda and the limit parameter at the others' set values */
+    if (r != RS_OK) return rs_run_failed_or_vanishing(run, r, v, "limit");
     s = v->s;
     d = fmpz_mpoly_degree_si(v->cp->p, tv, s->zctx);
     dl = v->cp->degree;

@@ -155,7 +155,13 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
         /* p over Q(i): its own roots, not those of the real block form p conj(p) */
         r = rs_an_complex_point_poly(pr, pi, &at, &v, run, req);
     } else {
+        v = NULL;
         r = rs_run_numeric_variant(run, &v);
+        if (r != RS_OK && v != NULL && v->vanishes) {   /* singular: no mode, as stability says */
+            fmpz_poly_clear(p);
+            fmpq_poly_clear(pr); fmpq_poly_clear(pi);
+            return rs_run_failed_or_vanishing(run, r, v, "modes");
+        }
         if (r == RS_OK) r = rs_run_numeric_poly(p, run, q, v, "modes");
         /* det = c lambda^k p: its roots at 0 are modes too (no continuous
          * equivalent), listed as over Q(i), where p keeps them */

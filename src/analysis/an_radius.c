@@ -190,6 +190,19 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
     int r, done;
     r = rs_run_variant_or_vanishing(&v, &done, run, "radius", 1);
     if (r != RS_OK || done) return r;
+    if (v->singular) {
+        /* the implicit step cannot be solved: no recurrence, so no radius is
+         * claimed (not even a dead-beat rho 0 of the reduced polynomial);
+         * singular as stability says */
+        o = json_object();
+        json_object_set_new(o, "analysis", json_string("radius"));
+        json_object_set_new(o, "status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
+        json_object_set_new(o, "exact_status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
+        json_object_set_new(o, "singular", json_string("the leading coefficient of det A(lambda) vanishes here: the "
+                            "implicit step cannot be solved, so there is no recurrence and no spectral radius"));
+        rs_run_emit_exact(run, v, o);
+        return RS_OK;
+    }
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, q, v, "radius");
     if (r != RS_OK) { fmpz_poly_clear(p); return r; }
@@ -262,10 +275,7 @@ static int radius_real(rs_run_t *run, const rs_an_req_t *req)
         int consistent = 1;
         r = rs_run_verdict(&st, run, v->s, NULL, NULL, 0, p, rc, v->singular, NULL);
         json_object_set_new(o, "exact_status", json_string(rs_status_name(st)));
-        if (v->singular)
-            json_object_set_new(o, "singular", json_string("the leading coefficient of det A(lambda) vanishes "
-                                "here: the step cannot be solved; the radius is that of the reduced polynomial"));
-        if (strcmp(method, "double") != 0 && !v->singular) {
+        if (strcmp(method, "double") != 0) {
             const char *nv;
             slong got = radius_refine(rr, run, p, rc, method, digits);
             if (got > digits) {

@@ -602,8 +602,10 @@ int rs_an_simulate(rs_run_t *run, const rs_an_req_t *req)
     int r;
     if (run->m->qd != NULL) return qd_simulate(run, req, steps, seed, prec);
     if (run->c->ncsets > 0) return cx_simulate(run, req, steps, seed, prec);
+    v = NULL;
     r = rs_run_numeric_variant(run, &v);
-    if (r != RS_OK) return r;
+    /* det A identically 0: no recurrence to run, singular as stability says */
+    if (r != RS_OK) return rs_run_failed_or_vanishing(run, r, v, "simulate");
     fmpz_poly_init(p);
     r = rs_run_numeric_poly(p, run, req->q, v, "simulate");
     if (r != RS_OK) { fmpz_poly_clear(p); return r; }

@@ -137,7 +137,7 @@ static void bound_text(char *buf, size_t len, const char *name, const rs_bound_t
     else if (hi != NULL)
         snprintf(buf, len, "%s %s %s", name, b->hi_closed ? "<=" : "<", hi);
     else
-        snprintf(buf, len, "%s real", name);
+        snprintf(buf, len, "%s real", name);   /* not reached from rs_conds_never */
     flint_free(lo);
     flint_free(hi);
 }
@@ -146,11 +146,15 @@ static void bound_text(char *buf, size_t len, const char *name, const rs_bound_t
  * the bounds b (nb parameters, the first variables) allow, decided cheaply
  * and exactly (no sample): a constant <= 0; two conditions c, c' with
  * c' = -k c, k > 0 rational (lc(c) c' = lc(c') c with leading coefficients
- * of opposite signs); or the conditions in one parameter alone without a
- * common solution in its interval (rs_positivity_none_positive).  1 and the
+ * of opposite signs); the conditions in one parameter alone without a
+ * common solution in its interval (rs_positivity_none_positive); or two
+ * conditions whose sum is provably < 0 under the bounds.  1 and the
  * reason into buf, else 0.  Only a subset is needed to be empty, so the
  * other conditions ("!= 0" ones included) may be left out.  The reason
  * ends without "never asymptotically stable" (the caller adds it once). */
+/* conditions longer than this are left out of the pairwise sum test */
+#define RS_CONDS_NEVER_PAIR_TERMS 200
+
 int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
                    slong nb, const rs_scheme_struct *s)
 {
@@ -195,8 +199,13 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
         if (m > 0 && rs_positivity_none_positive(one, m, v, v < nb ? b + v : NULL, ctx)) {
             size_t at;
             char range[200];
-            bound_text(range, sizeof range, s->vars[v], v < nb ? b + v : NULL);
-            snprintf(buf, len, "no value with %s satisfies ", range);
+            /* "no value with a >= 1", or "no real value of a" with no bound */
+            if (v < nb && (b[v].has_lo || b[v].has_hi)) {
+                bound_text(range, sizeof range, s->vars[v], b + v);
+                snprintf(buf, len, "no value with %s satisfies ", range);
+            } else {
+                snprintf(buf, len, "no real value of %s satisfies ", s->vars[v]);
+            }
             for (i = 0; i < m; i++) {
                 char *li = rs_cond_string(one[i], s, "> 0");
                 at = strlen(buf);
@@ -208,6 +217,36 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
                      "interval)");
             found = 1;
         }
+    }
+    /* two conditions whose sum is < 0 for every value the assumptions allow
+     * (the coefficient test, Polya and the interval mapping of
+     * rs_positivity_sign_bounds: sufficient, exact) cannot both be > 0
+     * (SymPy's p6 under b0, b1, b3 > 0).  Only small conditions: the test
+     * runs on every pair */
+    if (!found && n > 1) {
+        int *sign = flint_calloc(s->nvars + 1, sizeof(int));
+        if (b != NULL) rs_bounds_signs(sign, b, FLINT_MIN(nb, s->nvars));
+        for (i = 0; i < n && !found; i++) {
+            if (fmpz_mpoly_length(c[i], ctx) > RS_CONDS_NEVER_PAIR_TERMS) continue;
+            for (j = i + 1; j < n && !found; j++) {
+                if (fmpz_mpoly_length(c[j], ctx) > RS_CONDS_NEVER_PAIR_TERMS) continue;
+                fmpz_mpoly_add(t, c[i], c[j], ctx);
+                if (fmpz_mpoly_is_zero(t, ctx)
+                    || rs_positivity_sign_bounds(t, (const rs_sign_t *) sign, b, nb, ctx, NULL) >= 0)
+                    continue;
+                {
+                    char *li = rs_cond_string(c[i], s, "> 0"), *lj = rs_cond_string(c[j], s, "> 0");
+                    char *st = rs_cond_string(t, s, "< 0");
+                    snprintf(buf, len, "the conditions %s and %s cannot both hold: their sum is negative for "
+                             "every value the assumptions allow (%s)", li, lj, st);
+                    free(li);
+                    free(lj);
+                    free(st);
+                    found = 1;
+                }
+            }
+        }
+        flint_free(sign);
     }
     fmpz_mpoly_clear(t, ctx);
     fmpz_mpoly_clear(u, ctx);

@@ -121,6 +121,10 @@ int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what
 /* The numeric (numeric != 0) or default variant; where it vanishes the
  * `what` result is emitted as rs_run_emit_vanishing does and *done = 1. */
 int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, const char *what, int numeric);
+/* The status r of a failed variant request, or (when v says det A vanishes
+ * identically there) the `what` result of rs_run_emit_vanishing and RS_OK:
+ * `return rs_run_failed_or_vanishing(run, r, v, "modes");` */
+int rs_run_failed_or_vanishing(rs_run_t *run, int r, const rs_variant_t *v, const char *what);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
@@ -261,8 +265,9 @@ int rs_run_hurwitz_or_holds(const void *data, fmpq *const *pt, const rs_scheme_s
 int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s);
 /* Condition sets that can never all hold (conditions.c): rs_conds_never
  * decides cheaply and exactly for c[i] > 0 (a constant <= 0, c' = -k c with
- * k > 0, or one parameter's conditions without a common solution in its
- * interval); the reason into buf.  rs_run_conds_never: the same on
+ * k > 0, one parameter's conditions without a common solution in its
+ * interval, or two whose sum is provably < 0 under the intervals); the
+ * reason into buf.  rs_run_conds_never: the same on
  * poly[i] > 0 (ne[i]: a "!= 0" one, left out), intervals from the assume
  * lines.  rs_run_hurwitz_or_never: every branch so: "never" into o, 1.
  * rs_run_sample_check_never: rs_run_sample_check, and with "never" in o

@@ -441,6 +441,11 @@ int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, cons
     return r;
 }
 
+int rs_run_failed_or_vanishing(rs_run_t *run, int r, const rs_variant_t *v, const char *what)
+{
+    return (r != RS_OK && v != NULL && v->vanishes) ? rs_run_emit_vanishing(run, v, what) : r;
+}
+
 int rs_run_emit_vanishing(rs_run_t *run, const rs_variant_t *v, const char *what)
 {
     json_t *o = json_object();

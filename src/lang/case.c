@@ -184,7 +184,18 @@ slong rs_case_let_index(const rs_case_t c, const char *name)
 
 int rs_name_is_reserved(const char *name)
 {
-    return strcmp(name, "lambda") == 0 || strcmp(name, "z") == 0 || strcmp(name, "n") == 0;
+    return rs_name_reserved_why(name) != NULL;
+}
+
+/* i is reserved too: a declared i silently changed what i means in a char,
+ * expect or set line (the imaginary unit or the name), so it is refused */
+const char *rs_name_reserved_why(const char *name)
+{
+    if (strcmp(name, "lambda") == 0 || strcmp(name, "z") == 0 || strcmp(name, "n") == 0)
+        return "lambda, z and n have fixed meanings";
+    if (strcmp(name, "i") == 0)
+        return "i is the imaginary unit";
+    return NULL;
 }
 
 void rs_case_add_request(rs_case_t c, const char *text, const char *file, int line, int col)

@@ -18,9 +18,12 @@ static int name_taken(const rs_case_struct *c, const char *name)
 
 static int check_new_name(rs_stmt_t *x, size_t at, const char *name)
 {
-    if (rs_name_is_reserved(name))
-        return _rs_at_err(x, at, RS_ERR_INPUT,
-                          "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
+    if (rs_name_is_reserved(name)) {
+        char fmt[96];
+        /* the phrase is a fixed string of ours, so it can sit in the format */
+        snprintf(fmt, sizeof fmt, "'%%s' is reserved (%s); choose another name", rs_name_reserved_why(name));
+        return _rs_at_err(x, at, RS_ERR_INPUT, fmt, name);
+    }
     if (name_taken(x->c, name))
         return _rs_at_err(x, at, RS_ERR_INPUT, "'%s' is already declared", name);
     if (x->c->nparams + x->c->nunknowns + x->c->nlets >= RS_CASE_MAX_NAMES)

@@ -423,12 +423,109 @@ static rs_expr_t *parse_term(parser_t *p)
     return parse_chain(p, parse_unary, '*', RS_EXPR_MUL, '/', RS_EXPR_DIV);
 }
 
+/* Terms of a long sum t0 k1 t1 k2 t2 ... (k: ADD or SUB) */
+typedef struct {
+    rs_expr_t **t;
+    int *h;                /* heights of the terms */
+    rs_expr_kind_t *k;     /* k[j] joins t[j-1] and t[j] */
+    size_t *at;            /* where k[j] stands */
+} sum_terms_t;
+
+static rs_expr_kind_t sum_kind(const sum_terms_t *s, slong j, int flip)
+{
+    return flip ? (s->k[j] == RS_EXPR_ADD ? RS_EXPR_SUB : RS_EXPR_ADD) : s->k[j];
+}
+
+/* The balanced tree of t[l..r) (signs flipped when flip: the range stands
+ * after a '-'): a - b + c = a - (b - c).  Consumes the terms, also on error;
+ * p->height is the tree's height. */
+static rs_expr_t *sum_balanced(parser_t *p, const sum_terms_t *s, slong l, slong r, int flip)
+{
+    slong mid = l + (r - l) / 2, j;
+    rs_expr_t *a, *b;
+    int ha;
+    rs_expr_kind_t k;
+    if (r - l == 1) {
+        p->height = s->h[l];
+        return s->t[l];
+    }
+    k = sum_kind(s, mid, flip);
+    a = sum_balanced(p, s, l, mid, flip);
+    if (a == NULL) {
+        for (j = mid; j < r; j++) rs_expr_free(s->t[j]);
+        return NULL;
+    }
+    ha = p->height;
+    b = sum_balanced(p, s, mid, r, flip ^ (k == RS_EXPR_SUB));
+    if (b == NULL) {
+        rs_expr_free(a);
+        return NULL;
+    }
+    return binary_h(p, k, s->at[mid], a, ha, b);
+}
+
+/* Sums longer than this are built balanced: a flat sum is not nesting, and
+ * its height (which bounds the recursive walkers) stays logarithmic.  Short
+ * sums keep the left-associative tree they always had. */
+#define RS_EXPR_FLAT_SUM 64
+
+/* expr := term (('+'|'-') term)* */
+static rs_expr_t *parse_sum(parser_t *p)
+{
+    const char *t = p->src->text;
+    sum_terms_t s;
+    slong n = 0, alloc = 0, j;
+    rs_expr_t *e = parse_term(p), *res;
+    if (e == NULL)
+        return NULL;
+    memset(&s, 0, sizeof s);
+    for (;;) {
+        if (n == alloc) {
+            alloc = alloc ? 2 * alloc : 16;
+            s.t = flint_realloc(s.t, alloc * sizeof *s.t);
+            s.h = flint_realloc(s.h, alloc * sizeof *s.h);
+            s.k = flint_realloc(s.k, alloc * sizeof *s.k);
+            s.at = flint_realloc(s.at, alloc * sizeof *s.at);
+        }
+        s.t[n] = e;
+        s.h[n] = p->height;
+        n++;
+        skip_ws(p);
+        if (t[p->pos] != '+' && t[p->pos] != '-')
+            break;
+        s.k[n] = (t[p->pos] == '+') ? RS_EXPR_ADD : RS_EXPR_SUB;
+        s.at[n] = p->pos;
+        p->pos++;
+        e = parse_term(p);
+        if (e == NULL) {
+            for (j = 0; j < n; j++) rs_expr_free(s.t[j]);
+            res = NULL;
+            goto done;
+        }
+    }
+    if (n > RS_EXPR_FLAT_SUM) {
+        res = sum_balanced(p, &s, 0, n, 0);
+    } else {
+        res = s.t[0];
+        p->height = s.h[0];
+        for (j = 1; j < n && res != NULL; j++) {
+            int ha = p->height;
+            p->height = s.h[j];
+            res = binary_h(p, s.k[j], s.at[j], res, ha, s.t[j]);
+        }
+        for (; j < n; j++) rs_expr_free(s.t[j]);   /* after a failed join */
+    }
+done:
+    flint_free(s.t); flint_free(s.h); flint_free(s.k); flint_free(s.at);
+    return res;
+}
+
 /* no level of its own: a level is a '(' (parse_primary) or a sign
  * (parse_unary), one each, as the limit's message says (counted twice
  * before: 100 parentheses were "over 200") */
 static rs_expr_t *parse_expr(parser_t *p)
 {
-    return parse_chain(p, parse_term, '+', RS_EXPR_ADD, '-', RS_EXPR_SUB);
+    return parse_sum(p);
 }
 
 int rs_expr_parse(rs_expr_t **out, const rs_src_t *src, size_t *pos, rs_error_t err)

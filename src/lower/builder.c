@@ -624,8 +624,8 @@ static int add_unknown(rs_model_struct *m, const rs_case_struct *c, const char *
 {
     const rs_loc_t *u;
     if (rs_name_is_reserved(name))
-        return err_at(err, RS_ERR_INPUT, &st->loc, 0,
-                      "'%s' is reserved (lambda, z and n have fixed meanings); choose another name", name);
+        return rs_error_set_at(err, RS_ERR_INPUT, st->loc.file, st->loc.line, st->loc.col,
+                               "'%s' is reserved (%s); choose another name", name, rs_name_reserved_why(name));
     if ((u = user_decl(c, name)) != NULL)
         return rs_error_set_at(err, RS_ERR_INPUT, u->file, u->line, u->col,
                                "'%s' is also a name the builders generate (for state %s of subsystem %s); choose "

@@ -98,6 +98,8 @@ void rs_render_sample_check(rs_render_t *r, const json_t *o)
     }
 }
 
+static void condition_list(rs_render_t *r, const json_t *c, const char *md, const char *tex, const char *empty);
+
 /* "never" (no branch can hold) or "branches" (an OR of condition lists);
  * 1 if the result has either (then printed), else 0. */
 static int branches(rs_render_t *r, const json_t *o)
@@ -109,8 +111,15 @@ static int branches(rs_render_t *r, const json_t *o)
         rs_render_esc(r, js(o, "never"));
         rs_render_say(r, ".\n\n", ".\n\n");
         /* a set that can never all hold (never_from "conditions"): the
-         * conditions shown after the reason, as found */
-        if (js(o, "never_from") == NULL || !json_is_array(br)) return 1;
+         * conditions shown after the reason, as found (the text report
+         * lists them with condition_lines) */
+        if (js(o, "never_from") == NULL) return 1;
+        if (!json_is_array(br)) {
+            if (json_array_size(json_object_get(o, "conditions")) > 0)
+                condition_list(r, json_object_get(o, "conditions"), "The conditions as found:\n\n",
+                               "The conditions as found:\n", NULL);
+            return 1;
+        }
     }
     if (!json_is_array(br)) return 0;
     rs_render_say(r, "All |lambda| < 1 if and only if every condition of one branch holds (the sign of the leading "

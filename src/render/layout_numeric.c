@@ -43,6 +43,11 @@ void rs_render_radius(rs_render_t *r, const json_t *o)
 {
     const json_t *roots = json_object_get(o, "roots");
     size_t i;
+    /* singular (an_radius.c): the reason, no radius */
+    if (json_object_get(o, "rho") == NULL && rs_render_jstr(o, "singular") != NULL) {
+        rs_render_vanishing(r, o);
+        return;
+    }
     rs_render_line(r, "method", "%s", rs_render_jstr(o, "method"));
     if (json_is_true(json_object_get(o, "certified"))) {
         char buf[160];

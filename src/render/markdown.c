@@ -1,15 +1,43 @@
 /* markdown.c -- the Markdown derivation backend. */
 #include "recstab/derivation.h"
+#include <string.h>
 #include "render_impl.h"
 
+/* user text (titles, names, reasons) as running text: every character
+ * Markdown (CommonMark, GitHub, pandoc) could read as markup is
+ * backslash-escaped, as rs_render_tex_text escapes LaTeX's */
 static void md_raw(FILE *out, const char *s)
 {
-    fputs(s ? s : "(null)", out);   /* as glibc prints a NULL %s */
+    if (s == NULL) {
+        fputs("(null)", out);   /* as glibc prints a NULL %s */
+        return;
+    }
+    for (; *s; s++) {
+        if (strchr("\\`*_[]<#|~$&", *s) != NULL)
+            fputc('\\', out);
+        fputc(*s, out);
+    }
 }
 
+/* case-file text as a code span: the fence is one backtick longer than the
+ * longest run inside (CommonMark), padded when s starts or ends with one */
 static void md_code(FILE *out, const char *s)
 {
-    fprintf(out, "`%s`", s ? s : "");
+    size_t run = 0, longest = 0, i, n;
+    const char *c;
+    int pad;
+    if (s == NULL) s = "";
+    for (c = s; *c; c++) {
+        run = (*c == '`') ? run + 1 : 0;
+        if (run > longest) longest = run;
+    }
+    n = strlen(s);
+    pad = n > 0 && (s[0] == '`' || s[n - 1] == '`');
+    for (i = 0; i <= longest; i++) fputc('`', out);
+    if (pad) fputc(' ', out);
+    fputs(s, out);
+    if (pad) fputc(' ', out);
+    for (i = 0; i <= longest; i++) fputc('`', out);
 }
 
 /* math in $...$ (GitHub, Jupyter, pandoc), the LaTeX form of the derivation */

@@ -34,8 +34,11 @@ awk 'BEGIN { printf "param h\nunknown x\neq x[n+1] = ";
              for (i = 0; i < 30000; i++) printf "-"; printf "x[n]\n" }' >"$G/gen-deep-minus.case"
 awk 'BEGIN { printf "param h\nunknown x\neq x[n+1] = ";
              for (i = 0; i < 30000; i++) printf "h*"; printf "x[n]\n" }' >"$G/gen-long-product.case"
-awk 'BEGIN { printf "param h\nunknown x\neq x[n+1] = x[n]";
-             for (i = 0; i < 12000; i++) printf "+x[n]"; printf "\n" }' >"$G/gen-long-sum.case"
+# a flat 12000-term sum parses (suite_cli), but not inside 201 parentheses
+awk 'BEGIN { printf "param h\nunknown x\neq x[n+1] = ";
+             for (i = 0; i < 201; i++) printf "("; printf "x[n]";
+             for (i = 0; i < 12000; i++) printf "+x[n]";
+             for (i = 0; i < 201; i++) printf ")"; printf "\n" }' >"$G/gen-long-sum.case"
 { printf 'param '; head -c 10485760 /dev/zero | tr '\000' a; printf '\n'; } >"$G/gen-10mb-line.case"
 awk 'BEGIN { printf "param"; for (i = 0; i < 1000; i++) printf " p%d", i; printf "\n" }' >"$G/gen-1000-params.case"
 awk 'BEGIN { for (i = 0; i < 1000; i++) printf "param p%d\n", i }' >"$G/gen-1000-param-lines.case"

@@ -191,3 +191,51 @@ assert 'dead-beat' in h['verdict'] and j['conditions'] == [], (h, j)
 assert h['sample_check']['agree'] is True and h['sample_check']['points'] > 0, h
 " 2>"$T/deadbeat.py"; then ok "hurwitz dead-beat: no minor, no condition, as jury"
 else fail "hurwitz dead-beat: $(head -c 400 "$T/deadbeat.py")"; fi
+
+# a flat sum is not nesting: 5000 terms parse (they were "too deep" past 2000).
+# By hand: 2500 terms 3/10000 x[n] and 2500 terms -1/10000 x[n] give
+# x[n+1] = (7500 - 2500)/10000 x[n] = x[n]/2, p = lambda - 1/2; the alternating
+# signs check that the balanced tree keeps every '-' on its own term
+awk 'BEGIN { printf "unknown x\neq x[n+1] = 0";
+             for (i = 0; i < 5000; i++) printf (i % 2 == 0 ? " + 3*x[n]/10000" : " - x[n]/10000");
+             printf "\nexpect charpoly lambda - 1/2\n" }' >"$T/flatsum.case"
+"$RS" "$T/flatsum.case" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "5000-term flat sum parses, p = lambda - 1/2" 0 "$rc"
+# the same sum starting with a '-' after a long positive run: x[n+1] = x[n]
+# - 100 * x[n]/200 + 99 * x[n]/396 = (1 - 1/2 + 1/4) x[n] = 3/4 x[n]
+awk 'BEGIN { printf "unknown x\neq x[n+1] = x[n]";
+             for (i = 0; i < 100; i++) printf " - x[n]/200";
+             for (i = 0; i < 99; i++) printf " + x[n]/396";
+             printf "\nexpect charpoly lambda - 3/4\n" }' >"$T/flatsum2.case"
+"$RS" "$T/flatsum2.case" >"$T/out" 2>"$T/err"; rc=$?
+check_exit "200-term sum with a run of '-' then '+', p = lambda - 3/4" 0 "$rc"
+
+# modes of a real root print omega 0 exactly (it printed "omega 0e-44": the
+# root's ball straddled the axis).  By hand: 10 l^3 - 5 l - 1 has no rational
+# root (+-1, +-1/2, +-1/5, +-1/10 all fail), discriminant -4*10*(-5)^3 -
+# 27*10^2*1 = 2300 > 0 so three real roots; Descartes: one positive (signs
+# + - -), two negative (p(-l) = -10 l^3 + 5 l - 1: signs - + -).  So every
+# root has im "0", the positive one omega "0", the negative ones omega pi.
+printf 'char 10*lambda^3 - 5*lambda - 1\nanalyse modes\n' >"$T/realroots.case"
+"$RS" --json "$T/realroots.case" >"$T/realroots.json" 2>&1; rc=$?
+check_exit "modes of three real roots exit" 0 "$rc"
+if python3 -c "
+import json
+m = json.load(open('$T/realroots.json'))['cases'][0]['results'][0]['modes']
+assert len(m) == 3 and all(x['root']['im'] == '0' for x in m), m
+pos = [x for x in m if float(x['root']['re']) > 0]
+neg = [x for x in m if float(x['root']['re']) < 0]
+assert len(pos) == 1 and pos[0]['omega'] == '0', m
+assert len(neg) == 2 and all(x['omega'].startswith('3.14159265358979') for x in neg), m
+" 2>"$T/realroots.py"; then ok "modes: real roots have im 0 and omega 0 or pi exactly"
+else fail "modes real roots: $(head -c 400 "$T/realroots.py")"; fi
+
+# Markdown escapes user text (it printed titles raw: * _ ` | [ ] became
+# emphasis, code, tables and links; '#' starts a comment in a case file, so a
+# title cannot hold one).  By hand, CommonMark's backslash escapes:
+# "a*b_c `d` |e| [f](g)" -> "a\*b\_c \`d\` \|e\| \[f\](g)"
+printf 'title a*b_c `d` |e| [f](g)\nchar lambda - 1/2\nanalyse stability\n' >"$T/mdesc.case"
+"$RS" --markdown "$T/mdesc.case" >"$T/mdesc.md" 2>"$T/err"; rc=$?
+check_exit "markdown with metacharacters in the title" 0 "$rc"
+if grep -qxF '## a\*b\_c \`d\` \|e\| \[f\](g)' "$T/mdesc.md"; then ok "markdown escapes the title"
+else fail "markdown title: $(grep '^## ' "$T/mdesc.md")"; fi

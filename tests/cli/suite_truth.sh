@@ -200,6 +200,31 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
+    # det A = 0 at the set values (h-polish, by hand in the cases): charpoly, modes,
+    # simulate and limit say singular with the reason and "vanishes" as stability (were exit 2)
+    C=cases/truth/det-vanishes-charpoly-modes-simulate-limit.case
+    check "det vanishes: charpoly, modes, simulate, stability, radius singular (were exit 2)" \
+        '[["charpoly","singular",true],["modes","singular",true],["simulate","singular",true],["stability","singular",true],["radius","singular",true]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.analysis, .status, .vanishes])')"
+    C=cases/truth/det-vanishes-limit.case
+    check "det vanishes for every b: limit b -> 0 singular (was exit 2)" '[["limit","singular",true,{"a":"1"}]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.analysis, .status, .vanishes, .substituted])')"
+    # radius where the implicit step is singular (h-polish, by hand in the case): singular
+    # wins, no rho (it printed the reduced polynomial's rho 1/2, or "rho 0" when dead-beat)
+    C=cases/truth/radius-singular-step.case
+    check "singular step: stability singular, radius singular without rho" '["singular","singular",null,null]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].status, .[1].rho, .[1].roots]')"
+    C=cases/truth/hurwitz-singular-set-point.case
+    check "singular dead-beat step: radius singular without rho" '["singular",null]' \
+        "$("$RS" --json --analyse radius $C 2>/dev/null | jq -c '.cases[0].results[0] | [.status, .rho]')"
+    # never-stable reasons (h-polish, by hand in the cases): the wording for a parameter
+    # without an assumption, and a pair of conditions with a negative sum (jury said "stable iff")
+    C=cases/truth/never-unbounded-param-wording.case
+    check "never, a unbounded: hurwitz and jury say 'no real value of a'" '["never stable","never stable",true,true]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[1].verdict, (.[0].never | startswith("no real value of a satisfies")), (.[1].never | startswith("no real value of a satisfies"))]')"
+    C=cases/truth/never-sympy-p6-positive.case
+    check "SymPy p6, b0 b1 b3 > 0: jury never stable by a negative sum, the samples agree" '["never stable",true,true]' \
+        "$(jfield $C 1 '| [.verdict, (.never | contains("their sum is negative")), .sample_check.agree]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi

@@ -84,7 +84,7 @@ static void test_scheme_markdown(void **state)
     (void) state;
     /* the derivations skip analyses they have no layout for (xyz) */
     check(doc_scheme, MARKDOWN,
-          "## Demo_1\n"
+          "## Demo\\_1\n"
           "\n"
           "Assumptions: $w > 0$.\n"
           "\n"
