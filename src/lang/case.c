@@ -293,11 +293,8 @@ int rs_case_set_value(rs_case_t c, const char *assignment, rs_error_t err)
     }
     fmpq_init(v);
     fmpq_init(w);
-    /* i is the imaginary unit unless the case declares a name i */
-    if (rs_case_param_index(c, "i") < 0 && rs_case_let_index(c, "i") < 0 && rs_case_unknown_index(c, "i") < 0)
-        r = rs_expr_parse_complex(v, w, eq + 1, err);
-    else
-        r = rs_expr_parse_number(v, eq + 1, err);
+    /* i is the imaginary unit (a reserved name, never declared) */
+    r = rs_expr_parse_complex(v, w, eq + 1, err);
     if (r != RS_OK) {
         char msg[RS_ERROR_MSG_LEN];
         snprintf(msg, sizeof msg, "%s", err->msg);

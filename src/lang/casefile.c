@@ -293,12 +293,8 @@ static int st_set(rs_stmt_t *x, size_t i)
         if (r != RS_OK) { flint_free(name); return r; }
         fmpq_init(v);
         fmpq_init(w);
-        /* i is the imaginary unit unless the case declares a name i */
-        if (rs_case_param_index(x->c, "i") < 0 && rs_case_let_index(x->c, "i") < 0
-            && rs_case_unknown_index(x->c, "i") < 0)
-            r = rs_expr_eval_const_complex(v, w, e, &x->src, x->err);
-        else
-            r = rs_expr_eval_const(v, e, &x->src, x->err);
+        /* i is the imaginary unit (a reserved name, never declared) */
+        r = rs_expr_eval_const_complex(v, w, e, &x->src, x->err);
         rs_expr_free(e);
         if (r != RS_OK) { fmpq_clear(v); fmpq_clear(w); flint_free(name); return r; }
         rs_src_pos(&x->src, at, &line, &col);

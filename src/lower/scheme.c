@@ -824,12 +824,11 @@ static void strip_angle_den(fmpq_mpoly_t den, const rs_scheme_struct *s, const r
     fmpq_mpoly_clear(q, s->ctx);
 }
 
-/* does the name i (not declared) appear in e or in a let? */
+/* does the name i (the imaginary unit: reserved) appear in e or in a let? */
 static int uses_i(const rs_expr_t *e, const rs_case_struct *c)
 {
     if (e == NULL) return 0;
-    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0 && rs_case_param_index(c, "i") < 0
-        && rs_case_let_index(c, "i") < 0 && rs_case_unknown_index(c, "i") < 0)
+    if (e->kind == RS_EXPR_NAME && strcmp(e->name, "i") == 0)
         return 1;
     return uses_i(e->a, c) || uses_i(e->b, c);
 }
