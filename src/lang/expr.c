@@ -480,7 +480,7 @@ static rs_expr_t *parse_sum(parser_t *p)
         return NULL;
     memset(&s, 0, sizeof s);
     for (;;) {
-        if (n == alloc) {
+        if (n + 2 > alloc) {   /* t[n] now, k[n + 1] and at[n + 1] below */
             alloc = alloc ? 2 * alloc : 16;
             s.t = flint_realloc(s.t, alloc * sizeof *s.t);
             s.h = flint_realloc(s.h, alloc * sizeof *s.h);
