@@ -1065,6 +1065,20 @@ static int ray_test_q(int *out, fmpq_t zr, fmpq_t zi, rs_status_t *st, const fmp
     return r;
 }
 
+/* G := (G - T) / s^m, s^m (s = variable 0) the largest power dividing it:
+ * H of the rays, both routes; its degree in s, -1 when G - T vanishes */
+static slong ray_difference(fmpz_mpoly_t G, fmpz_mpoly_t T, const fmpz_mpoly_ctx_t ctx)
+{
+    slong m;
+    fmpz_mpoly_sub(G, G, T, ctx);
+    if (fmpz_mpoly_is_zero(G, ctx)) return -1;
+    m = rs_scheme_min_degree(G, 0, ctx);
+    fmpz_mpoly_gen(T, 0, ctx);
+    fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
+    fmpz_mpoly_divexact(G, G, T, ctx);
+    return fmpz_mpoly_degree_si(G, 0, ctx);
+}
+
 /* A(alpha) of a one-step method p = D(z) lambda - N(z), real coefficients.
  * On the ray z = -s (1 - i u), s > 0, |arg(-z)| = atan(u), and |R(z)| > 1
  * iff G(s, u) = |N|^2 - |D|^2 > 0; H = G / s^m (m its lowest power of s).
@@ -1085,7 +1099,7 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     fmpz_mpoly_t G, T;
     fmpz_poly_t c;
     rs_alg_t *crit = NULL;
-    slong ncrit = 0, m, ds, i;
+    slong ncrit = 0, ds, i;
     int r = RS_OK;
     ray_q_t data;
     *out = NULL;
@@ -1096,13 +1110,8 @@ static int alpha_onestep(json_t **out, json_t **ev, arb_t deg, int *inside, cons
     fmpz_poly_init(c);
     ray_norm(G, N, ctx);
     ray_norm(T, D, ctx);
-    fmpz_mpoly_sub(G, G, T, ctx);
-    if (fmpz_mpoly_is_zero(G, ctx)) goto done;
-    m = rs_scheme_min_degree(G, 0, ctx);
-    fmpz_mpoly_gen(T, 0, ctx);
-    fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
-    fmpz_mpoly_divexact(G, G, T, ctx);
-    ds = fmpz_mpoly_degree_si(G, 0, ctx);
+    ds = ray_difference(G, T, ctx);
+    if (ds < 0) goto done;
     /* the critical values of u: disc_s(H), lc_s(H), H(0, u) */
     for (i = 0; i < 3; i++) {
         if (i == 0) {
@@ -1284,7 +1293,7 @@ int rs_an_astability_alpha_qd(json_t **out, json_t **ev, arb_t deg, int *inside,
     fmpz_poly_t f0, f1, cu;
     fmpz_t den;
     rs_alg_t *crit = NULL;
-    slong ncrit = 0, m, ds, i, vs = 0;
+    slong ncrit = 0, ds, i, vs = 0;
     int r = RS_OK;
     ray_qd_t data;
     *out = NULL;
@@ -1304,13 +1313,8 @@ int rs_an_astability_alpha_qd(json_t **out, json_t **ev, arb_t deg, int *inside,
     qd_scaled(f0, D->p0, den);
     qd_scaled(f1, D->p1, den);
     ray_norm_qd(T, f0, f1, d, ctx);
-    fmpz_mpoly_sub(G, G, T, ctx);
-    if (fmpz_mpoly_is_zero(G, ctx)) goto done;
-    m = rs_scheme_min_degree(G, 0, ctx);
-    fmpz_mpoly_gen(T, 0, ctx);
-    fmpz_mpoly_pow_ui(T, T, (ulong) m, ctx);
-    fmpz_mpoly_divexact(G, G, T, ctx);
-    ds = fmpz_mpoly_degree_si(G, 0, ctx);
+    ds = ray_difference(G, T, ctx);
+    if (ds < 0) goto done;
     /* the critical values of u as over Q, each from the norm of its
      * polynomial over Q(sqrt d) (the discriminant computed with r a
      * variable, then reduced: it is a polynomial in the coefficients) */
