@@ -5,6 +5,7 @@
 #include <string.h>
 #include <flint/fmpq.h>
 #include "stability/schur_complex.h"
+#include "util/qd.h"
 
 static slong cdeg(const fmpq_poly_t re, const fmpq_poly_t im)
 {
@@ -289,28 +290,10 @@ int rs_schur_complex_status(rs_status_t *st, const fmpq_poly_t re, const fmpq_po
  * reduced by I^2 = -1 after every product: then resultants, discriminants and
  * the Schur-Cohn recursion are FLINT's integer multivariate routines. */
 
-/* I^e -> I^(e mod 2) with the sign of I^2 = -1 */
+/* I^e -> I^(e mod 2) with the sign of I^2 = -1: the Q(sqrt d) reduction with d = -1 */
 static void cx_reduce(fmpz_mpoly_t f, slong iv, const fmpz_mpoly_ctx_t cx)
 {
-    slong nv = cx->minfo->nvars, len = fmpz_mpoly_length(f, cx), k;
-    ulong *e = flint_malloc((size_t) nv * sizeof(ulong));
-    fmpz_mpoly_t g;
-    fmpz_t c;
-    fmpz_mpoly_init(g, cx);
-    fmpz_init(c);
-    for (k = 0; k < len; k++) {
-        fmpz_mpoly_get_term_coeff_fmpz(c, f, k, cx);
-        fmpz_mpoly_get_term_exp_ui(e, f, k, cx);
-        if (e[iv] & 2) fmpz_neg(c, c);
-        e[iv] &= 1;
-        fmpz_mpoly_push_term_fmpz_ui(g, c, e, cx);
-    }
-    fmpz_mpoly_sort_terms(g, cx);
-    fmpz_mpoly_combine_like_terms(g, cx);
-    fmpz_mpoly_swap(f, g, cx);
-    fmpz_mpoly_clear(g, cx);
-    fmpz_clear(c);
-    flint_free(e);
+    rs_qd_mpoly_reduce(f, iv, -1, cx);
 }
 
 /* the complex conjugate of f (reduced): its odd powers of I negated; out may be f */

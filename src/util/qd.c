@@ -94,7 +94,7 @@ void rs_qd_mpoly_reduce(fmpz_mpoly_t p, slong v, slong d, const fmpz_mpoly_ctx_t
     ulong *ex;
     fmpz_t c, dk;
     fmpz_mpoly_t r;
-    if (d <= 0 || fmpz_mpoly_degree_si(p, v, ctx) < 2) return;
+    if (d == 0 || fmpz_mpoly_degree_si(p, v, ctx) < 2) return;
     ex = flint_malloc(ctx->minfo->nvars * sizeof(ulong));
     fmpz_init(c);
     fmpz_init(dk);

@@ -32,7 +32,8 @@ int rs_qd_sgn(const rs_qd_struct *a, slong d);
 /* "x + y*sqrt(d)" (flint_free it) */
 char *rs_qd_get_str(const rs_qd_struct *a, slong d);
 /* p with variable v standing for sqrt(d): every term c v^e becomes
- * c d^(e/2) v^(e mod 2), so p = p0 + v p1 with p0, p1 free of v */
+ * c d^(e/2) v^(e mod 2), so p = p0 + v p1 with p0, p1 free of v (any
+ * d != 0: d = -1 reduces by the imaginary unit; d = 0 leaves p as it is) */
 void rs_qd_mpoly_reduce(fmpz_mpoly_t p, slong v, slong d, const fmpz_mpoly_ctx_t ctx);
 
 #ifdef __cplusplus
