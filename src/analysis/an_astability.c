@@ -1178,21 +1178,22 @@ static void ray_norm_qd(fmpz_mpoly_t acc, const fmpz_poly_t f0, const fmpz_poly_
  * reduction, no s): its norm c0^2 - d c1^2, whose real roots hold c's */
 static void qd_norm_u(fmpz_poly_t out, const fmpz_mpoly_t c, slong d, const fmpz_mpoly_ctx_t ctx)
 {
-    fmpz_poly_t c0, c1, t;
+    rs_qdpoly_t q;
+    fmpq_poly_t n;
+    fmpz_poly_t ck;
     fmpz_mpoly_t h;
     ulong k;
     slong v = 1;
-    fmpz_poly_init(c0); fmpz_poly_init(c1); fmpz_poly_init(t);
+    rs_qdpoly_init(q); fmpq_poly_init(n); fmpz_poly_init(ck);
     fmpz_mpoly_init(h, ctx);
     for (k = 0; k < 2; k++) {
         fmpz_mpoly_get_coeff_vars_ui(h, c, &v, &k, 1, ctx);
-        mpoly_univar(k ? c1 : c0, h, 2, ctx);
+        mpoly_univar(ck, h, 2, ctx);
+        fmpq_poly_set_fmpz_poly(k ? q->p1 : q->p0, ck);
     }
-    fmpz_poly_mul(out, c0, c0);
-    fmpz_poly_mul(t, c1, c1);
-    fmpz_poly_scalar_mul_si(t, t, d);
-    fmpz_poly_sub(out, out, t);
-    fmpz_poly_clear(c0); fmpz_poly_clear(c1); fmpz_poly_clear(t);
+    rs_qdpoly_norm(n, q, d);
+    fmpq_poly_get_numerator(out, n);   /* integer coefficients: n's denominator is 1 */
+    rs_qdpoly_clear(q); fmpq_poly_clear(n); fmpz_poly_clear(ck);
     fmpz_mpoly_clear(h, ctx);
 }
 
