@@ -243,8 +243,10 @@ static void huge_advise(void *p, size_t n)
 #if RS_BUDGET_POOLS && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
     size_t sz;
     char *start;
-    long pg = sysconf(_SC_PAGESIZE);
-    if (p == NULL || n < (size_t) HUGE_MIN || pg <= 0) return;
+    long pg;
+    if (p == NULL || n < (size_t) HUGE_MIN) return;   /* every allocation passes here: the size first */
+    pg = sysconf(_SC_PAGESIZE);
+    if (pg <= 0) return;
     sz = ((const size_t *) p)[-1];
     start = (char *) p - 2 * sizeof(size_t);
     if (!(sz & 2) || ((uintptr_t) start & (uintptr_t) (pg - 1)) != 0) return;
