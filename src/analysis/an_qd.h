@@ -5,6 +5,7 @@
 
 #include "analysis/registry.h"
 #include "algebra/qsqrt.h"
+#include "analysis/an_region.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
  * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
@@ -31,6 +32,30 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req);
  * into o's "region" */
 int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                         slong tv, const rs_bound_t *dom);
+/* rs_an_qd_claim_part at the case's set values overridden and extended by
+ * extra[0..nextra) (tv free; nextra = 0: the default variant) */
+int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                   slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra);
+/* region NAME for all [Q] over Q(sqrt d) (an_qd_forall.c) */
+int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req);
+/* the norms c0^2 - d c1^2 of p's leading coefficient, of its discriminant
+ * and of jury's conditions (the default variant: every unset parameter
+ * free) into l (rs_plist_add with tv, dom); *s the scheme of their zctx */
+int rs_an_qd_forall_norms(rs_plist_t *l, const rs_scheme_struct **s, rs_run_t *run, const rs_an_req_t *req,
+                          slong tv, const rs_bound_t *dom);
+/* the exact verdict over Q(sqrt d) of the default variant's p at the
+ * rational point pt (every scheme variable): 1 stable, 0 not stable, -1 p
+ * vanishes, -2 Schur-Cohn and the certified roots disagree, -3 no variant */
+int rs_an_qd_point_verdict(rs_run_t *run, const rs_an_req_t *req, fmpq *const *pt);
+/* the exact status at tv = t0 (algebraic), the other parameters at the set
+ * values and extra[]: over Q(t0, sqrt d) = Q(gamma); 0 when undecided */
+int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0,
+                        const rs_assign_t *extra, slong nextra);
+/* the same at tv = t0 and qv = q0 both algebraic (the default variant: no
+ * other free parameter), over Q(t0, sqrt d, q0) = Q(gamma) */
+int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0, slong qv,
+                         rs_alg_t *q0);
+
 /* an_astability.c: A(alpha) of the one-step method R = N/D over Q(sqrt d)
  * by the rays z = -s (1 - i u): *inside 1 every ray inside (A-stable, deg
  * 90, *out NULL), 0 *out the angle (0 or {"exact", "tan_alpha_minpoly", ...}

@@ -817,6 +817,42 @@ static int qd_alg_in_bound(const rs_bound_t *b, rs_alg_t *a)
     return in;
 }
 
+/* c_j (j <= n, initialised to 0) := p's lambda^j coefficient at tv = T,
+ * qv = Q (qv < 0: p has no other parameter), sqrt(d) = R, elements of
+ * Q[x]/(m) */
+static void qd_coeffs_at(fmpq_poly_struct *c, const qd_sym_t *S, slong tv, const fmpq_poly_t T, slong qv,
+                         const fmpq_poly_t Q, const fmpq_poly_t R, const fmpq_poly_t m)
+{
+    const rs_scheme_struct *s = S->s;
+    fmpz_mpoly_t a, b;
+    fmpq_poly_t x, y, qk;
+    slong j, k, dq;
+    int h;
+    fmpz_mpoly_init(a, s->zctx); fmpz_mpoly_init(b, s->zctx);
+    fmpq_poly_init(x); fmpq_poly_init(y); fmpq_poly_init(qk);
+    for (j = 0; j <= S->n; j++)
+        for (h = 0; h < 2; h++) {
+            /* c_j += sum_k (p_h's lambda^j q^k coefficient)(T) Q^k R^h */
+            rs_charpoly_coeff(a, h ? S->p1 : S->p0, j, s->lambda_var, s->zctx);
+            dq = qv < 0 ? 0 : FLINT_MAX(fmpz_mpoly_degree_si(a, qv, s->zctx), 0);
+            fmpq_poly_one(qk);
+            for (k = 0; k <= dq; k++) {
+                if (qv < 0) fmpz_mpoly_set(b, a, s->zctx);
+                else rs_charpoly_coeff(b, a, k, qv, s->zctx);
+                qd_upoly1(x, b, tv, s);
+                fmpq_poly_compose(y, x, T);
+                fmpq_poly_mul(y, y, qk);
+                if (h) fmpq_poly_mul(y, y, R);
+                fmpq_poly_rem(y, y, m);
+                fmpq_poly_add(c + j, c + j, y);
+                if (qv >= 0) { fmpq_poly_mul(qk, qk, Q); fmpq_poly_rem(qk, qk, m); }
+            }
+        }
+    fmpq_poly_rem(c + S->n, c + S->n, m);
+    fmpz_mpoly_clear(a, s->zctx); fmpz_mpoly_clear(b, s->zctx);
+    fmpq_poly_clear(x); fmpq_poly_clear(y); fmpq_poly_clear(qk);
+}
+
 /* The exact status of p at tv = t0 (rational or not) over Q(t0, sqrt d) =
  * Q(gamma), gamma a primitive element (rs_alg_primitive), by the real
  * route of region (rs_alg_status_coeffs: Schur-Cohn and the circle's roots
@@ -829,7 +865,7 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
     fmpq_poly_struct *c;
     fmpz_mpoly_t a;
     slong j, n = S->n;
-    int decided = 0, h;
+    int decided = 0;
     rs_alg_init(&sq); rs_alg_init(&g);
     fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(m); fmpq_poly_init(x); fmpq_poly_init(y);
     fmpz_mpoly_init(a, s->zctx);
@@ -842,17 +878,7 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
     for (j = 0; j <= n; j++) fmpq_poly_init(c + j);
     if (rs_alg_primitive(&g, A, B, t0, &sq)) {
         fmpq_poly_set_fmpz_poly(m, g.minpoly);
-        for (j = 0; j <= n; j++)
-            for (h = 0; h < 2; h++) {
-                /* c_j += (p_h's lambda^j coefficient)(A(gamma)) * B(gamma)^h */
-                rs_charpoly_coeff(a, h ? S->p1 : S->p0, j, s->lambda_var, s->zctx);
-                qd_upoly1(x, a, tv, s);
-                fmpq_poly_compose(y, x, A);
-                if (h) fmpq_poly_mul(y, y, B);
-                fmpq_poly_rem(y, y, m);
-                fmpq_poly_add(c + j, c + j, y);
-            }
-        fmpq_poly_rem(c + n, c + n, m);
+        qd_coeffs_at(c, S, tv, A, -1, NULL, B, m);
         decided = fmpq_poly_is_zero(c + n) ? (*st = RS_STATUS_SINGULAR, 1) : rs_alg_status_coeffs(st, c, n, &g, s);
     }
     for (j = 0; j <= n; j++) fmpq_poly_clear(c + j);
@@ -1071,7 +1097,8 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
            *always = json_array();
     fmpz_mpoly_t lead;
     int r, never = 0, others = 0;
-    if (req->u.region.twod || req->u.region.forall) {
+    if (req->u.region.forall && !req->u.region.twod) return rs_an_qd_region_forall(run, req);   /* an_qd_forall.c */
+    if (req->u.region.twod) {
         json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
         char msg[400];
         snprintf(msg, sizeof msg, "expected region NAME [at P=V, ...]: %s is not available over Q(sqrt %ld) (rk %s); "
@@ -1138,12 +1165,30 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
 int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                         slong tv, const rs_bound_t *dom)
 {
+    return rs_an_qd_fiber(verdict, counter, o, run, req, kind, tv, dom, NULL, 0);
+}
+
+int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                   slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
+{
     qd_sym_t S;
     json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
            *always = json_array();
     fmpz_mpoly_t lead;
     slong na = -1, k;
-    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    rs_variant_t *v = NULL;
+    int r = RS_OK, never = 0;
+    if (nextra > 0) {   /* the case's set values and extra[], tv kept free */
+        const char *keep[1];
+        rs_assign_t *as = NULL;
+        slong nas = 0;
+        keep[0] = run->c->params[tv].name;
+        rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
+        r = rs_run_variant(&v, run, as, nas);
+        rs_assign_free(as, nas);
+    }
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
+    else S.a = NULL;
     *verdict = 0;
     *counter = NULL;
     if (r == RS_OK) {
@@ -1164,4 +1209,136 @@ int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run
     json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
     qd_sym_clear(&S, na);
     return r;
+}
+
+/* ---- the pieces of region NAME for all over Q(sqrt d) (an_qd_forall.c) ---- */
+
+/* the norm c0^2 - d c1^2 of c0 + sqrt(d) c1 into l (it vanishes wherever
+ * c0 + sqrt(d) c1 does) */
+static void qd_norm_add(rs_plist_t *l, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, slong tv, const rs_bound_t *dom,
+                        const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t t, u;
+    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
+    fmpz_mpoly_mul(t, c0, c0, s->zctx);
+    fmpz_mpoly_mul(u, c1, c1, s->zctx);
+    fmpz_mpoly_scalar_mul_si(u, u, s->sqrt_d, s->zctx);
+    fmpz_mpoly_sub(t, t, u, s->zctx);
+    rs_plist_add(l, t, tv, dom, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
+}
+
+/* the same for a (reduced: sqrt(d) at most linearly) */
+static void qd_norm_add_split(rs_plist_t *l, const fmpz_mpoly_t a, slong tv, const rs_bound_t *dom,
+                              const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t a0, a1;
+    fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+    qd_split(a0, a1, a, s);
+    qd_norm_add(l, a0, a1, tv, dom, s);
+    fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+}
+
+int rs_an_qd_forall_norms(rs_plist_t *l, const rs_scheme_struct **sp, rs_run_t *run, const rs_an_req_t *req,
+                          slong tv, const rs_bound_t *dom)
+{
+    qd_sym_t S;
+    json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    fmpz_mpoly_t t;
+    slong na = -1, i;
+    int r = qd_sym_init(&S, run, req, NULL), never = 0;
+    if (r == RS_OK) {
+        *sp = S.s;
+        fmpz_mpoly_init(t, S.s->zctx);
+        /* the leading coefficient (singular) and the discriminant (a repeated
+         * circle root: marginal against unstable) before the table consumes S.a */
+        qd_norm_add_split(l, S.a + S.n, tv, dom, S.s);
+        if (S.n >= 2 && fmpz_mpoly_discriminant(t, S.v->cp->p, S.s->lambda_var, S.s->zctx)) {
+            rs_scheme_reduce_sqrt(t, S.s);
+            qd_norm_add_split(l, t, tv, dom, S.s);
+        }
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+        for (i = 0; r == RS_OK && i < S.q.n; i++) qd_norm_add(l, S.q.c0 + i, S.q.c1 + i, tv, dom, S.s);
+        fmpz_mpoly_clear(t, S.s->zctx);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+    qd_sym_clear(&S, na);
+    return r;
+}
+
+int rs_an_qd_point_verdict(rs_run_t *run, const rs_an_req_t *req, fmpq *const *pt)
+{
+    qd_sym_t S;
+    int r = qd_sym_init(&S, run, req, NULL), st = -3;
+    if (r == RS_OK) st = qd_point_stable(S.p0, S.p1, S.n, pt, S.s);
+    else rs_error_init(run->err);
+    qd_sym_clear(&S, S.a != NULL ? S.n : -1);
+    return st;
+}
+
+int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0,
+                        const rs_assign_t *extra, slong nextra)
+{
+    const char *keep[1];
+    rs_assign_t *as = NULL;
+    slong nas = 0;
+    rs_variant_t *v;
+    qd_sym_t S;
+    int r, decided = 0;
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
+    r = rs_run_variant(&v, run, as, nas);
+    rs_assign_free(as, nas);
+    S.a = NULL;
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
+    if (r == RS_OK) decided = qd_exact_status(st, &S, tv, t0);
+    else if (S.a != NULL && S.v->singular) { *st = RS_STATUS_SINGULAR; decided = 1; }
+    rs_error_init(run->err);
+    if (S.a != NULL) qd_sym_clear(&S, S.n);
+    return decided;
+}
+
+int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0, slong qv,
+                         rs_alg_t *q0)
+{
+    qd_sym_t S;
+    rs_alg_t sq, g1, g2;
+    fmpq_poly_t A1, B1, A2, B2, T, R, m;
+    fmpq_poly_struct *c = NULL;
+    slong j;
+    int r = qd_sym_init(&S, run, req, NULL), decided = 0;
+    if (r != RS_OK) {
+        rs_error_init(run->err);
+        qd_sym_clear(&S, S.a != NULL ? S.n : -1);
+        return 0;
+    }
+    rs_alg_init(&sq); rs_alg_init(&g1); rs_alg_init(&g2);
+    fmpq_poly_init(A1); fmpq_poly_init(B1); fmpq_poly_init(A2); fmpq_poly_init(B2);
+    fmpq_poly_init(T); fmpq_poly_init(R); fmpq_poly_init(m);
+    fmpz_poly_set_coeff_si(sq.minpoly, 2, 1);
+    fmpz_poly_set_coeff_si(sq.minpoly, 0, -S.s->sqrt_d);
+    sq.idx = 1;
+    rs_alg_refine(&sq, 128);
+    /* Q(t0, sqrt d) = Q(g1), then Q(g1, q0) = Q(g2): t0 = A1(A2(g2)),
+     * sqrt(d) = B1(A2(g2)), q0 = B2(g2) */
+    if (rs_alg_primitive(&g1, A1, B1, t0, &sq) && rs_alg_primitive(&g2, A2, B2, &g1, q0)) {
+        fmpq_poly_set_fmpz_poly(m, g2.minpoly);
+        fmpq_poly_compose(T, A1, A2); fmpq_poly_rem(T, T, m);
+        fmpq_poly_compose(R, B1, A2); fmpq_poly_rem(R, R, m);
+        c = flint_malloc((size_t) (S.n + 1) * sizeof(fmpq_poly_struct));
+        for (j = 0; j <= S.n; j++) fmpq_poly_init(c + j);
+        qd_coeffs_at(c, &S, tv, T, qv, B2, R, m);
+        decided = fmpq_poly_is_zero(c + S.n) ? (*st = RS_STATUS_SINGULAR, 1)
+                : rs_alg_status_coeffs(st, c, S.n, &g2, S.s);
+        for (j = 0; j <= S.n; j++) fmpq_poly_clear(c + j);
+        flint_free(c);
+    }
+    rs_alg_clear(&sq); rs_alg_clear(&g1); rs_alg_clear(&g2);
+    fmpq_poly_clear(A1); fmpq_poly_clear(B1); fmpq_poly_clear(A2); fmpq_poly_clear(B2);
+    fmpq_poly_clear(T); fmpq_poly_clear(R); fmpq_poly_clear(m);
+    qd_sym_clear(&S, S.n);
+    return decided;
 }
