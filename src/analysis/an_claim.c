@@ -2110,18 +2110,21 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
 {
     const rs_request_t *q = req->q;
     const claim_dnf_t *d = req->u.claim.dnf;
-    slong i, j, k, tv = -1, nfree = 0, nparams = run->c->nparams;
+    slong i, j, k, tv = -1, tv2 = -1, nfree = 0, nparams = run->c->nparams;
     rs_variant_t *v;
     json_t *o, *counter = NULL;
     int r, proved = 1;
     for (k = 0; k < nparams; k++) {
         int set = 0;
         for (j = 0; j < run->c->nsets; j++) set |= strcmp(run->c->sets[j].name, run->c->params[k].name) == 0;
-        if (!set) { tv = k; nfree++; }
+        if (!set) { if (tv < 0) tv = k; else tv2 = k; nfree++; }
     }
-    if (nfree != 1)
-        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected exactly one parameter without a set value: a "
-                            "claim over Q(sqrt d) is decided on the exact region of one parameter%s", "");
+    /* two free parameters: the cells of region ... for all (an_qd_forall.c) on the claim's box */
+    if (nfree > 2 || nfree < 1 || (nfree == 2 && req->u.claim.kind == CLAIM_UNSTABLE))
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected one parameter without a set value (two for a "
+                            "stable or bounded claim): a claim over Q(sqrt d) is decided on the exact region of one "
+                            "parameter, or of one for every value of a second; set the others (jury, hurwitz and "
+                            "routh give the conditions with all of them free)%s", "");
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     /* every condition a bound on tv (linear in it, nothing else) */
@@ -2130,16 +2133,18 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
             rs_condpoly_t cp;
             r = rs_condpoly_compile(&cp, d->conds[i] + j, run->sym, run->c, run->err);
             if (r != RS_OK) break;
-            for (k = 0; k < cp.n; k++)
-                if (fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx) > 1
-                    || fmpq_mpoly_degree_si(cp.num + k, tv, run->sym->ctx) != fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx)
-                    || !fmpq_mpoly_is_fmpq(cp.den + k, run->sym->ctx))
+            for (k = 0; k < cp.n; k++) {
+                slong td = fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx);
+                if (td > 1 || !fmpq_mpoly_is_fmpq(cp.den + k, run->sym->ctx)
+                    || (fmpq_mpoly_degree_si(cp.num + k, tv, run->sym->ctx) != td
+                        && (tv2 < 0 || fmpq_mpoly_degree_si(cp.num + k, tv2, run->sym->ctx) != td)))
                     r = RS_ERR_INPUT;
+            }
             rs_condpoly_clear(&cp, run->sym);
             if (r != RS_OK)
-                r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected bounds on %s (NAME < VALUE, A <= NAME <= B, "
-                                 "joined by and, or): a claim over Q(sqrt d) is decided on the exact region of one "
-                                 "parameter", run->c->params[tv].name);
+                r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected bounds on the free parameters (NAME < VALUE, "
+                                 "A <= NAME <= B, joined by and, or): a claim over Q(sqrt d) is decided on exact "
+                                 "regions, one parameter at a time (here %s)", run->c->params[tv].name);
         }
     if (r != RS_OK) return r;
     o = json_object();
@@ -2150,8 +2155,10 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
         rs_bound_t *b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
         int vd = 1;
         claim_bounds(b, run, d->conds[i], d->n[i]);
-        if (!rs_bound_empty(b + tv))
-            r = rs_an_qd_claim_part(&vd, &counter, o, run, req, (int) req->u.claim.kind == CLAIM_STABLE ? 0
+        if (!rs_bound_empty(b + tv) && (tv2 < 0 || !rs_bound_empty(b + tv2)))
+            r = tv2 >= 0 ? rs_an_qd_claim_forall(&vd, &counter, o, run, req, req->u.claim.kind == CLAIM_STABLE ? 0 : 1,
+                                                 tv, tv2, b)
+              : rs_an_qd_claim_part(&vd, &counter, o, run, req, (int) req->u.claim.kind == CLAIM_STABLE ? 0
                                     : req->u.claim.kind == CLAIM_BOUNDED ? 1 : 2, tv, b + tv);
         if (vd != 1) proved = 0;
         rs_bounds_clear(b, nparams);

@@ -38,6 +38,11 @@ int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, con
                    slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra);
 /* region NAME for all [Q] over Q(sqrt d) (an_qd_forall.c) */
 int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req);
+/* a claim (kind 0 stable, 1 bounded) on the box b[tv] x b[qv] (b: every
+ * parameter's bounds, the assumptions in them) by the same cells: *verdict
+ * 1 proved, -1 refuted (*counter), 0 undecided; the cells into o's "region" */
+int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                          slong tv, slong qv, const rs_bound_t *b);
 /* the norms c0^2 - d c1^2 of p's leading coefficient, of its discriminant
  * and of jury's conditions (the default variant: every unset parameter
  * free) into l (rs_plist_add with tv, dom); *s the scheme of their zctx */

@@ -115,7 +115,7 @@ static int qf_rational(qf_t *F, const fmpq_t t, const char **st, json_t **ev)
     e.var = F->tv;
     fmpq_init(e.value);
     fmpq_set(e.value, t);
-    r = rs_an_qd_fiber(&verdict, &counter, o, run, F->req, 1, F->qv, NULL, &e, 1);
+    r = rs_an_qd_fiber(&verdict, &counter, o, run, F->req, 1, F->qv, F->b + F->qv, &e, 1);
     fmpq_clear(e.value);
     *ev = json_object();
     if (r != RS_OK) {
@@ -380,16 +380,85 @@ static const char qf_method[] =
     "parameter there over Q(sqrt d), each irrational critical value t0 by the fibre's cut points over Q(t0, sqrt d); "
     "every verdict cross-checked against the exact point verdict of p derived with both parameters symbolic";
 
-int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req)
+/* the cells of NAME on F->b[tv] (every Q in F->b[qv]); *crit, *cell for
+ * the caller to free (qf_cells_clear) */
+static int qf_cells(qf_t *F, rs_alg_t **critp, slong *ncritp, qf_cell_t **cellp, slong *ncellp)
 {
-    slong tv = req->u.region.param, i, k, ncrit = 0, ncell = 0;
-    const char *name = run->c->params[tv].name;
-    qf_t F;
+    rs_run_t *run = F->run;
+    slong tv = F->tv, i, ncrit = 0, ncell = 0;
     rs_plist_t l, m;
     rs_alg_t *crit = NULL;
-    qf_cell_t *cell = NULL;
-    json_t *o, *fa;
+    qf_cell_t *cell;
     fmpq_t t;
+    int r;
+    rs_plist_init(&l);
+    rs_plist_init(&m);
+    fmpq_init(t);
+    r = rs_an_qd_forall_norms(&l, &F->s, run, F->req, tv, F->b);
+    if (r == RS_OK) r = rs_proj_eliminate(&m, run, &l, F->qv, F->b + F->qv, tv, F->b, F->s->zctx);
+    F->norms = &l;
+    for (i = 0; r == RS_OK && i < m.n; i++) {
+        fmpz_poly_t u;
+        if (fmpz_mpoly_degree_si(m.p + i, tv, F->s->zctx) <= 0) continue;
+        fmpz_poly_init(u);
+        if (fmpz_mpoly_get_fmpz_poly(u, m.p + i, tv, F->s->zctx)) rs_alg_roots_append(&crit, &ncrit, u, 1);
+        fmpz_poly_clear(u);
+    }
+    if (F->b[tv].has_lo) crit_push_fmpq(&crit, &ncrit, F->b[tv].lo);
+    if (F->b[tv].has_hi) crit_push_fmpq(&crit, &ncrit, F->b[tv].hi);
+    ncrit = alg_unique(crit, ncrit);
+    cell = flint_malloc((size_t) (2 * ncrit + 1) * sizeof(qf_cell_t));
+    for (i = 0; r == RS_OK && i <= ncrit && !F->bad; i++) {
+        rs_alg_t *lo = i > 0 ? crit + i - 1 : NULL, *hi = i < ncrit ? crit + i : NULL;
+        r = rs_budget_check(run->err, "region for all over Q(sqrt d)");
+        if (r != RS_OK) break;
+        rs_alg_between(t, lo, hi);
+        if (rs_bound_contains(F->b + tv, t)) {
+            cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
+            r = qf_rational(F, t, &cell[ncell].status, &cell[ncell].ev);
+            ncell++;
+        }
+        if (r != RS_OK || hi == NULL || !alg_inside(F->b + tv, hi)) continue;
+        cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
+        if (hi->rational) r = qf_rational(F, hi->q, &cell[ncell].status, &cell[ncell].ev);
+        else r = qf_algebraic(F, hi, &cell[ncell].status, &cell[ncell].ev);
+        ncell++;
+    }
+    if (r == RS_OK && F->bad)
+        r = rs_req_error(run, F->req->q, F->req->q->text, RS_ERR_INCONSISTENT, "region for all over Q(sqrt d): a "
+                         "cell's verdict and the exact point verdict of p with both parameters symbolic disagree at a "
+                         "sample (internal inconsistency)%s", "");
+    if (F->s != NULL) { rs_plist_clear(&l, F->s->zctx); rs_plist_clear(&m, F->s->zctx); }
+    F->norms = NULL;
+    fmpq_clear(t);
+    *critp = crit; *ncritp = ncrit; *cellp = cell; *ncellp = ncell;
+    return r;
+}
+
+static void qf_cells_clear(rs_alg_t *crit, slong ncrit, qf_cell_t *cell, slong ncell)
+{
+    slong i;
+    for (i = 0; i < ncell; i++) json_decref(cell[i].ev);
+    flint_free(cell);
+    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
+    free(crit);
+}
+
+static json_t *qf_for_all(const qf_t *F)
+{
+    json_t *fa = json_array();
+    json_array_append_new(fa, json_string(F->run->c->params[F->qv].name));
+    return fa;
+}
+
+int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req)
+{
+    slong ncrit = 0, ncell = 0;
+    const char *name = run->c->params[req->u.region.param].name;
+    qf_t F;
+    rs_alg_t *crit = NULL;
+    qf_cell_t *cell = NULL;
+    json_t *o;
     int r;
     if (req->u.region.nq != 1) {
         char msg[400];
@@ -400,45 +469,9 @@ int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req)
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
     memset(&F, 0, sizeof F);
-    F.run = run; F.req = req; F.tv = tv; F.qv = req->u.region.qv[0];
+    F.run = run; F.req = req; F.tv = req->u.region.param; F.qv = req->u.region.qv[0];
     F.b = rs_run_bounds(run);
-    rs_plist_init(&l);
-    rs_plist_init(&m);
-    fmpq_init(t);
-    r = rs_an_qd_forall_norms(&l, &F.s, run, req, tv, F.b);
-    if (r == RS_OK) r = rs_proj_eliminate(&m, run, &l, F.qv, F.b + F.qv, tv, F.b, F.s->zctx);
-    F.norms = &l;
-    for (i = 0; r == RS_OK && i < m.n; i++) {
-        fmpz_poly_t u;
-        if (fmpz_mpoly_degree_si(m.p + i, tv, F.s->zctx) <= 0) continue;
-        fmpz_poly_init(u);
-        if (fmpz_mpoly_get_fmpz_poly(u, m.p + i, tv, F.s->zctx)) rs_alg_roots_append(&crit, &ncrit, u, 1);
-        fmpz_poly_clear(u);
-    }
-    if (F.b[tv].has_lo) crit_push_fmpq(&crit, &ncrit, F.b[tv].lo);
-    if (F.b[tv].has_hi) crit_push_fmpq(&crit, &ncrit, F.b[tv].hi);
-    ncrit = alg_unique(crit, ncrit);
-    cell = flint_malloc((size_t) (2 * ncrit + 1) * sizeof(qf_cell_t));
-    for (i = 0; r == RS_OK && i <= ncrit && !F.bad; i++) {
-        rs_alg_t *lo = i > 0 ? crit + i - 1 : NULL, *hi = i < ncrit ? crit + i : NULL;
-        r = rs_budget_check(run->err, "region for all over Q(sqrt d)");
-        if (r != RS_OK) break;
-        rs_alg_between(t, lo, hi);
-        if (rs_bound_contains(F.b + tv, t)) {
-            cell[ncell].pt = 0; cell[ncell].lo = lo; cell[ncell].hi = hi;
-            r = qf_rational(&F, t, &cell[ncell].status, &cell[ncell].ev);
-            ncell++;
-        }
-        if (r != RS_OK || hi == NULL || !alg_inside(F.b + tv, hi)) continue;
-        cell[ncell].pt = 1; cell[ncell].lo = cell[ncell].hi = hi;
-        if (hi->rational) r = qf_rational(&F, hi->q, &cell[ncell].status, &cell[ncell].ev);
-        else r = qf_algebraic(&F, hi, &cell[ncell].status, &cell[ncell].ev);
-        ncell++;
-    }
-    if (r == RS_OK && F.bad)
-        r = rs_req_error(run, req->q, req->q->text, RS_ERR_INCONSISTENT, "region for all over Q(sqrt d): a cell's "
-                         "verdict and the exact point verdict of p with both parameters symbolic disagree at a "
-                         "sample (internal inconsistency)%s", "");
+    r = qf_cells(&F, &crit, &ncrit, &cell, &ncell);
     if (r == RS_OK) {
         o = json_object();
         json_object_set_new(o, "analysis", json_string("region"));
@@ -446,20 +479,63 @@ int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "over", json_str_free(rs_an_qd_over_str(run->m->qd->d)));
         qf_emit(o, cell, ncell, name);
         json_object_set_new(o, "critical_values", json_integer(ncrit));
-        fa = json_array();
-        json_array_append_new(fa, json_string(run->c->params[F.qv].name));
-        json_object_set_new(o, "for_all", fa);
+        json_object_set_new(o, "for_all", qf_for_all(&F));
         json_object_set_new(o, "method", json_string(qf_method));
         json_object_set_new(o, "point_checks", json_pack("{s:I,s:b}", "points", (json_int_t) F.checked, "agree", 1));
         json_object_set_new(o, "decided_by", json_string("exact"));
         json_array_append_new(run->results, o);
     }
-    for (k = 0; k < ncell; k++) json_decref(cell[k].ev);
-    flint_free(cell);
-    for (i = 0; i < ncrit; i++) rs_alg_clear(crit + i);
-    free(crit);
-    if (F.s != NULL) { rs_plist_clear(&l, F.s->zctx); rs_plist_clear(&m, F.s->zctx); }
+    qf_cells_clear(crit, ncrit, cell, ncell);
     rs_run_bounds_clear(F.b, run);
-    fmpq_clear(t);
+    return r;
+}
+
+int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                          slong tv, slong qv, const rs_bound_t *b)
+{
+    slong ncrit = 0, ncell = 0, i, k;
+    const char *name = run->c->params[tv].name;
+    qf_t F;
+    rs_alg_t *crit = NULL;
+    qf_cell_t *cell = NULL;
+    json_t *ivs;
+    int r;
+    memset(&F, 0, sizeof F);
+    F.run = run; F.req = req; F.tv = tv; F.qv = qv;
+    F.b = rs_run_bounds(run);
+    for (k = 0; k < 2; k++) {   /* the claim's box (its bounds with the assumptions) */
+        rs_bound_t *d = F.b + (k ? qv : tv);
+        const rs_bound_t *e = b + (k ? qv : tv);
+        d->has_lo = e->has_lo; d->has_hi = e->has_hi; d->lo_closed = e->lo_closed; d->hi_closed = e->hi_closed;
+        d->fixed = e->fixed;
+        fmpq_set(d->lo, e->lo); fmpq_set(d->hi, e->hi);
+    }
+    *verdict = 1;
+    *counter = NULL;
+    r = qf_cells(&F, &crit, &ncrit, &cell, &ncell);
+    for (i = 0; r == RS_OK && i < ncell && *counter == NULL; i++) {
+        const char *st = cell[i].status;
+        const json_t *cx = json_object_get(cell[i].ev, "counterexample");
+        if (strcmp(st, "stable") == 0 || (kind == 1 && strcmp(st, "marginal") == 0)) continue;
+        if (strcmp(st, "undecided") == 0) { *verdict = 0; continue; }
+        *verdict = -1;
+        *counter = cx != NULL ? json_deep_copy(cx) : json_object();
+        if (cx == NULL) {   /* marginal against a stable claim: the sample and the fibre's piece not stable */
+            json_object_set(*counter, name, cell[i].pt && !cell[i].hi->rational
+                            ? json_object_get(cell[i].ev, "fibre_samples") : json_object_get(cell[i].ev, "sample"));
+            json_object_set(*counter, "not_stable_on", json_object_get(cell[i].ev, "not_stable_on"));
+        }
+        json_object_set_new(*counter, "status", json_string(st));
+    }
+    if (r == RS_OK) {
+        ivs = json_object();
+        qf_emit(ivs, cell, ncell, name);
+        json_object_set(o, "region", json_object_get(ivs, "intervals"));
+        json_object_set_new(o, "for_all", qf_for_all(&F));
+        json_object_set_new(o, "point_checks", json_pack("{s:I,s:b}", "points", (json_int_t) F.checked, "agree", 1));
+        json_decref(ivs);
+    }
+    qf_cells_clear(crit, ncrit, cell, ncell);
+    rs_run_bounds_clear(F.b, run);
     return r;
 }
