@@ -2179,7 +2179,8 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
     {
         char *over = rs_an_qd_over_str(run->sym->sqrt_d), tried[1024];
         snprintf(tried, sizeof tried,
-                 "the exact region over %s of the one free parameter on the claim's set (region NAME's cells: "
+                 "the exact region over %s of the one free parameter on the claim's set (with two free parameters: "
+                 "the first's cells of region ... for all on the claim's box, an_qd_forall.c; region NAME's cells: "
                  "rational samples decided by the Schur-Cohn conditions, Schur-Cohn with certified roots and the "
                  "exact route over %s; algebraic critical values by exact signs in Q(t0, sqrt %ld) and the exact "
                  "route there, all agreeing): proved iff every cell meeting the set has the claimed status; refuted "

@@ -32,6 +32,8 @@
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
 
+#define QF_MAX_FIELD_DEGREE 32
+
 /* the verdict of one cell of NAME */
 typedef struct {
     const char *status;     /* stable, marginal, unstable, singular, undecided */
@@ -272,7 +274,10 @@ static int qf_algebraic(qf_t *F, rs_alg_t *t0, const char **st, json_t **ev)
                     /* an irrational cut point q0: over Q(t0, sqrt d, q0) */
                     r = rs_budget_check(run->err, "region for all over Q(sqrt d)");
                     if (r != RS_OK) break;
-                    decided = rs_an_qd_alg2_status(&ps, run, F->req, F->tv, t0, F->qv, hi);
+                    /* Q(t0, sqrt d, q0) of degree up to 2 deg t0 deg q0: beyond QF_MAX_FIELD_DEGREE
+                     * the primitive element's arithmetic is too slow to be worth it here */
+                    decided = 2 * fmpz_poly_degree(t0->minpoly) * fmpz_poly_degree(hi->minpoly) <= QF_MAX_FIELD_DEGREE
+                              && rs_an_qd_alg2_status(&ps, run, F->req, F->tv, t0, F->qv, hi);
                     nsamp++;
                     json_array_append_new(samples, json_pack("{s:o,s:s}", qn, rs_alg_json(hi, qn), "status",
                                                              decided ? rs_status_name(ps) : "undecided"));
@@ -308,7 +313,8 @@ static int qf_algebraic(qf_t *F, rs_alg_t *t0, const char **st, json_t **ev)
             json_object_set_new(*ev, "reason", json_string(identically
                 ? "a condition's norm vanishes on the whole fibre at this value: its cut points are not known"
                 : "a sample or cut point of the fibre at this irrational value is undecided (a repeated non-real "
-                  "circle root, or no primitive element within the budget); no counterexample at the others"));
+                  "circle root, no primitive element within the budget, or Q(t0, sqrt d, q0) of degree over 32); "
+                  "no counterexample at the others"));
         } else {
             *st = any_marg ? "marginal" : "stable";
             json_object_set_new(*ev, "certificate", json_pack("{s:s}", "text",
@@ -533,6 +539,7 @@ int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *r
         json_object_set(o, "region", json_object_get(ivs, "intervals"));
         json_object_set_new(o, "for_all", qf_for_all(&F));
         json_object_set_new(o, "point_checks", json_pack("{s:I,s:b}", "points", (json_int_t) F.checked, "agree", 1));
+        json_object_set_new(o, "cross_checked_samples", json_integer(F.checked));
         json_decref(ivs);
     }
     qf_cells_clear(crit, ncrit, cell, ncell);

@@ -1019,9 +1019,14 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         taken_at(r, o);
         rs_render_say(r, "Claim `", "Claim \\texttt{");
         rs_render_esc(r, js(o, "text"));
-        rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of the one free parameter.\n\n",
-                       "}: \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{2})$ of the one free "
-                       "parameter.\n\n", st);
+        if (json_object_get(o, "for_all") != NULL)   /* two free parameters: region ... for all's cells */
+            rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of one free parameter for every "
+                           "value of the other.\n\n", "}: \\textbf{%s}, decided on the exact region over "
+                           "$\\mathbb{Q}(\\sqrt{2})$ of one free parameter for every value of the other.\n\n", st);
+        else
+            rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of the one free parameter.\n\n",
+                           "}: \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{2})$ of the one free "
+                           "parameter.\n\n", st);
         return;
     }
     if (st && strcmp(st, "refuted") == 0) {

@@ -954,6 +954,61 @@ claim_qd "sdirk2 claim stable when q > 11 (6 + 4 sqrt 2 = 11.66)" refuted '"stat
 claim_qd "sdirk2 claim unstable when 1 < q < 4 (the pole 2 + sqrt 2)" refuted 'root1.*q^2-4\*q+2","status":"singular"' "claim unstable when 1 < q < 4" "$SR"
 claim_qd "sdirk2 coupled claim stable when -3/2 <= c <= 3/2 at a = 1 (c* = 1.5936)" proved "" "claim stable when -3/2 <= c <= 3/2" "$SCC" --set a=1
 claim_qd "sdirk2 coupled claim stable when 0 <= c <= 8/5 at a = 1 (c* marginal)" refuted 'root2.*17\*c^4-92\*c^2+124","status":"marginal"' "claim stable when 0 <= c <= 8/5" "$SCC" --set a=1
+# region c for all over Q(sqrt 2) (cases/complex/sdirk2-forall.case: z = c a, a in [1, 2]; the ends by
+# hand there from R's: 0, the pole 2 + sqrt 2, R = 1 at 6 + 4 sqrt 2, the last closed and marginal);
+# independently, |R(c a)| on a grid of a in [1, 2] at each open interval's sample (mpmath, R from the
+# tableau: R(z) = 1 + z b^T (I - z A)^-1 1 with A = [g, 0; 1 - g, g], b = (1 - g, g), g = 1 - sqrt(2)/2)
+SF=cases/complex/sdirk2-forall.case
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json "$SF" >"$T/sf.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/sf.json" <<'PY'
+import json, sys
+from fractions import Fraction
+import mpmath as mp
+mp.mp.dps = 30
+r = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "region"][0]
+e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
+got = [(iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]) for iv in r["intervals"]]
+P, Q = ("c^2 - 4*c + 2", 1), ("c^2 - 12*c + 4", 1)           # 2 + sqrt 2, 6 + 4 sqrt 2
+want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
+        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
+        ("stable", Q, None, False, False)]
+bad = []
+if got != want: bad.append("intervals %r" % (got,))
+if r.get("over") != "Q(sqrt 2)" or r.get("for_all") != ["a"] or not r["point_checks"]["agree"]: bad.append("keys")
+g = 1 - mp.sqrt(2) / 2
+def R(z):
+    A = mp.matrix([[g, 0], [1 - g, g]]); b = mp.matrix([[1 - g, g]])
+    return 1 + z * (b * mp.inverse(mp.eye(2) - z * A) * mp.matrix([1, 1]))[0]
+for iv in r["intervals"]:
+    for ev in iv["evidence"]:
+        if ev["cell"] != "interval": continue
+        c = mp.mpf(Fraction(ev["sample"]).numerator) / Fraction(ev["sample"]).denominator
+        m = max(abs(R(c * (1 + mp.mpf(k) / 200))) for k in range(201))
+        if (iv["status"] == "stable") != (m < 1): bad.append("sample %s: max |R| %s" % (ev["sample"], m))
+        if iv["status"] == "unstable" and "counterexample" not in ev: bad.append("no counterexample")
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then
+        ok "sdirk2 region c for all a in [1, 2] over Q(sqrt 2): ends 0, 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal, closed), samples against |R(c a)|"
+    else fail "sdirk2 region for all: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 region for all JSON: no python3"; fi
+# claims with two free parameters over Q(sqrt 2) (the same cells on the claim's box; by hand in $SF)
+claim_qd "sdirk2 claim stable when c > 11, a in [1, 2] (a = 1: z = c < 6 + 4 sqrt 2)" refuted '"a":"1","status":"unstable"' "claim stable when c > 11" "$SF"
+claim_qd "sdirk2 claim bounded when c >= 6 and a >= 3/2 (z = 9)" refuted '"c":"6","a":"3/2","status":"unstable"' "claim bounded when c >= 6 and a >= 3/2" "$SF"
+claim_qd "sdirk2 claim stable when c <= 0, a in [1, 2] (c = 0: R = 1)" refuted '"c":"0".*"status":"marginal"' "claim stable when c <= 0" "$SF"
+claim_qd "sdirk2 claim bounded when c >= 6 and a >= 2 (z >= 12 > 6 + 4 sqrt 2)" proved "" "claim bounded when c >= 6 and a >= 2" "$SF"
+# still refused, naming what runs: two quantified parameters, an unstable claim with two free parameters
+printf 'param c a b\nassume 1 <= a <= 2\nassume b > 0\nsubsystem S state y\n  y'"'"' = c*a*y - b*y\nintegrate S rk sdirk2 1\nanalyse region c for all\n' >"$T/two.case"
+"$RS" "$T/two.case" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "two.case:7:.*expected one quantified parameter: region NAME for all over Q(sqrt 2).*set the others" "$T/err"; then
+    ok "sdirk2 region for all over two quantified parameters refused (exit 2), naming what runs"
+else fail "sdirk2 two quantified: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --analyse "claim unstable when 1 < c < 2" "$SF" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "two for a stable or bounded claim" "$T/err"; then
+    ok "sdirk2 unstable claim with two free parameters refused (exit 2)"
+else fail "sdirk2 unstable claim two free: rc=$rc $(head -1 "$T/err")"; fi
 "$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
     ok "sdirk2 jury at a complex set value refused (exit 2)"
