@@ -994,6 +994,34 @@ PY
         ok "sdirk2 region c for all a in [1, 2] over Q(sqrt 2): ends 0, 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal, closed), samples against |R(c a)|"
     else fail "sdirk2 region for all: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 region for all JSON: no python3"; fi
+# the coupled SDIRK2 for every c > 0 (cases/complex/sdirk2-coupled-forall.case: C/A grows like c^2, by
+# hand): one interval (0, inf) "unstable"; each counterexample's max |lambda| > 1 with mpmath on the
+# sympy-derived p of sdirk2-coupled-conditions.case
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json cases/complex/sdirk2-coupled-forall.case >"$T/scf.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/scf.json" <<'PY'
+import json, sys
+from fractions import Fraction
+import mpmath as mp
+r = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "region"][0]
+ivs = r["intervals"]
+bad = []
+if [(iv["status"], iv["lo"], iv["hi"]) for iv in ivs] != [("unstable", "0", None)] or r["for_all"] != ["c"]: bad.append("intervals")
+s2 = mp.sqrt(2)
+for ev in ivs[0]["evidence"]:
+    # an irrational a (a critical value): its certified 30 digits
+    q = lambda x: mp.mpf(x["approx"]) if isinstance(x, dict) else mp.mpf(Fraction(x).numerator) / Fraction(x).denominator
+    a = q(ev["counterexample"]["a"]); c = q(ev["counterexample"]["c"])
+    A = 2*a**4 + 16*a**3 + 40*a**2 + 32*a + 8
+    B = -a**4 - 4*a**3 + 4*s2*a**3 - 32*a**2 - 40*a - 12
+    C = a**3*c**2 - 2*s2*a**3 - 2*a**3 + 2*s2*a**2*c**2 + 10*a**2*c**2 + 6*a**2 + 14*a*c**2 + 12*a + 4*c**2 + 4
+    if not max(abs(x) for x in mp.polyroots([A, B, C])) > 1: bad.append("counterexample %r" % ev["counterexample"])
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 coupled region a for all c > 0: unstable on (0, inf), counterexamples re-checked with mpmath"
+    else fail "sdirk2 coupled for all: rc=$rc $res $(head -1 "$T/err")"; fi
+fi
 # claims with two free parameters over Q(sqrt 2) (the same cells on the claim's box; by hand in $SF)
 claim_qd "sdirk2 claim stable when c > 11, a in [1, 2] (a = 1: z = c < 6 + 4 sqrt 2)" refuted '"a":"1","status":"unstable"' "claim stable when c > 11" "$SF"
 claim_qd "sdirk2 claim bounded when c >= 6 and a >= 3/2 (z = 9)" refuted '"c":"6","a":"3/2","status":"unstable"' "claim bounded when c >= 6 and a >= 3/2" "$SF"
