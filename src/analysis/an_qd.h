@@ -38,6 +38,10 @@ int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, con
                    slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra);
 /* region NAME for all [Q] over Q(sqrt d) (an_qd_forall.c) */
 int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req);
+/* {"lo", "hi", "lo_closed", "hi_closed", "status", "lo_approx", "hi_approx"}
+ * of an interval of region's cells (NULL ends: infinite) */
+json_t *rs_an_qd_interval_json(rs_alg_t *lo, rs_alg_t *hi, int lo_closed, int hi_closed, const char *status,
+                               const char *name);
 /* a claim (kind 0 stable, 1 bounded) on the box b[tv] x b[qv] (b: every
  * parameter's bounds, the assumptions in them) by the same cells: *verdict
  * 1 proved, -1 refuted (*counter), 0 undecided; the cells into o's "region" */

@@ -782,6 +782,20 @@ static json_t *qd_end_approx(rs_alg_t *a)
     return a == NULL ? json_null() : json_real(rs_alg_double(a));
 }
 
+json_t *rs_an_qd_interval_json(rs_alg_t *lo, rs_alg_t *hi, int lo_closed, int hi_closed, const char *status,
+                               const char *name)
+{
+    json_t *iv = json_object();
+    json_object_set_new(iv, "lo", qd_end_json(lo, name));
+    json_object_set_new(iv, "hi", qd_end_json(hi, name));
+    json_object_set_new(iv, "lo_closed", json_boolean(lo_closed));
+    json_object_set_new(iv, "hi_closed", json_boolean(hi_closed));
+    json_object_set_new(iv, "status", json_string(status));
+    json_object_set_new(iv, "lo_approx", qd_end_approx(lo));
+    json_object_set_new(iv, "hi_approx", qd_end_approx(hi));
+    return iv;
+}
+
 /* e := the rational q as a critical value */
 static void qd_alg_set_fmpq(rs_alg_t *e, const fmpq_t q)
 {
@@ -1023,14 +1037,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
         slong j = i;
         json_t *iv;
         while (j + 1 < ncell && strcmp(cell[j + 1].status, cell[i].status) == 0) j++;
-        iv = json_object();
-        json_object_set_new(iv, "lo", qd_end_json(cell[i].lo, name));
-        json_object_set_new(iv, "hi", qd_end_json(cell[j].hi, name));
-        json_object_set_new(iv, "lo_closed", json_boolean(cell[i].pt));
-        json_object_set_new(iv, "hi_closed", json_boolean(cell[j].pt));
-        json_object_set_new(iv, "status", json_string(cell[i].status));
-        json_object_set_new(iv, "lo_approx", qd_end_approx(cell[i].lo));
-        json_object_set_new(iv, "hi_approx", qd_end_approx(cell[j].hi));
+        iv = rs_an_qd_interval_json(cell[i].lo, cell[j].hi, cell[i].pt, cell[j].pt, cell[i].status, name);
         json_array_append_new(ivs, iv);
         i = j + 1;
     }

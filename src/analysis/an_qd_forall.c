@@ -337,38 +337,22 @@ static int qf_algebraic(qf_t *F, rs_alg_t *t0, const char **st, json_t **ev)
     return r;
 }
 
-static json_t *end_json(rs_alg_t *a, const char *var)
-{
-    return a == NULL ? json_null() : rs_alg_json(a, var);
-}
-
-static json_t *end_approx(rs_alg_t *a)
-{
-    return a == NULL ? json_null() : json_real(rs_alg_double(a));
-}
-
 /* the cells merged into intervals of one status, rational region's shape */
 static void qf_emit(json_t *o, qf_cell_t *cell, slong ncell, const char *name)
 {
     json_t *ivs = json_array(), *und = json_array();
     slong i, j, k;
     for (i = 0; i < ncell; i = j + 1) {
-        json_t *iv = json_object(), *evs = json_array();
+        json_t *iv, *evs = json_array();
         for (j = i; j + 1 < ncell && strcmp(cell[j + 1].status, cell[i].status) == 0; j++) ;
-        json_object_set_new(iv, "lo", end_json(cell[i].lo, name));
-        json_object_set_new(iv, "hi", end_json(cell[j].hi, name));
-        json_object_set_new(iv, "lo_closed", json_boolean(cell[i].pt));
-        json_object_set_new(iv, "hi_closed", json_boolean(cell[j].pt));
-        json_object_set_new(iv, "status", json_string(cell[i].status));
-        json_object_set_new(iv, "lo_approx", end_approx(cell[i].lo));
-        json_object_set_new(iv, "hi_approx", end_approx(cell[j].hi));
+        iv = rs_an_qd_interval_json(cell[i].lo, cell[j].hi, cell[i].pt, cell[j].pt, cell[i].status, name);
         for (k = i; k <= j; k++) {
             json_t *e = json_object();
             json_object_set_new(e, "cell", json_string(cell[k].pt ? "point" : "interval"));
             json_object_update(e, cell[k].ev);
             json_array_append_new(evs, e);
             if (strcmp(cell[k].status, "undecided") == 0 && cell[k].pt)
-                json_array_append_new(und, end_json(cell[k].hi, name));
+                json_array_append_new(und, rs_alg_json(cell[k].hi, name));
         }
         json_object_set_new(iv, "evidence", evs);
         json_array_append_new(ivs, iv);
