@@ -984,3 +984,19 @@ else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
 "$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 0 ]; then ok "sdirk2 coupled: routh at set values runs over Q(sqrt 2)"
 else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi
+# astability over Q(sqrt 3) in Markdown and LaTeX (h-sqrt8): SDIRK3 with
+# gamma = (3 - sqrt 3)/6 has E(y) = (1/12 - sqrt(3)/18) y^4 (the JSON's E),
+# negative for every y != 0 by hand (1/12 = 3/36 < 2 sqrt(3)/36 as 9 < 12),
+# so the witness y = -1 the JSON gives must print (not "?"); the real
+# interval's end is the root -6 - sqrt(48) = -12.92820323027550917... of
+# x^2 + 12 x - 12 (quadratic formula), printed by its digits inside the math
+# and defined after it, never as the raw "root of ... in [..]" string.
+SL=cases/complex/sdirk3-low-astability.case
+for fmt in markdown latex; do
+    "$RS" --$fmt "$SL" >"$T/sl.$fmt" 2>"$T/err"; rc=$?
+    if [ "$rc" = 0 ] && grep -qF 'is negative at $y = -1$' "$T/sl.$fmt" && ! grep -qF 'y = ?' "$T/sl.$fmt" \
+       && grep -qF 'q \in [-12.9282032302755' "$T/sl.$fmt" && ! grep -qF '\mathit{root}' "$T/sl.$fmt" \
+       && grep -qF 'stands for the root of $x^{2}+12\,x-12$' "$T/sl.$fmt"; then
+        ok "sdirk3-low astability --$fmt: E's witness y = -1 and the end -6 - sqrt 48 written in math"
+    else fail "sdirk3-low astability --$fmt: rc=$rc $(grep -n 'negative at\|interval is' "$T/sl.$fmt" | head -3)"; fi
+done
