@@ -1000,3 +1000,17 @@ for fmt in markdown latex; do
         ok "sdirk3-low astability --$fmt: E's witness y = -1 and the end -6 - sqrt 48 written in math"
     else fail "sdirk3-low astability --$fmt: rc=$rc $(grep -n 'negative at\|interval is' "$T/sl.$fmt" | head -3)"; fi
 done
+# region a, c over Q(sqrt 2) (h-sqrt8): the 2-D exact region, checked by
+# tests/cli/sdirk2_region2.py against the step matrix from the method's
+# definition (mpmath) at 300 random rational points and at the marginal
+# cells, and its boundary at a = 1 against the hand-derived quartic
+R2=cases/complex/sdirk2-coupled-region2.case
+"$RS" --json "$R2" >"$T/r2.json" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ]; then ok "sdirk2 region a, c over Q(sqrt 2) runs (exit 0)"
+else fail "sdirk2 region a, c: rc=$rc $(head -1 "$T/err")"; fi
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import mpmath' 2>/dev/null; then
+    python3 tests/cli/sdirk2_region2.py "$T/r2.json" 2>&1 | sed 's/^Traceback/FAIL sdirk2_region2.py: Traceback/'
+else ok "skipped sdirk2 region a, c comparison: no python3 with mpmath"; fi
+tr -d ' \n' <"$T/r2.json" | grep -q '"over":"Q(sqrt2)".*"samples_cross_checked":{[^}]*"disagree":0' \
+    && ok "sdirk2 region a, c: JSON says over Q(sqrt 2) and no sample disagreed" \
+    || fail "sdirk2 region a, c: over / samples_cross_checked missing"
