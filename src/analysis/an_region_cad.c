@@ -887,6 +887,16 @@ static void cad_eval_acb(acb_t out, const cad_t *c, const fmpz_mpoly_t f, const 
         acb_pow_ui(t, x, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx), prec);
         acb_pow_ui(u, y, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx), prec);
         acb_mul(t, t, u, prec);
+        if (c->qd != NULL) {
+            /* over Q(sqrt d): p's sqrt(d) is a variable of the scheme */
+            slong e = fmpz_mpoly_get_term_var_exp_si(f, i, c->s->sqrt_var, c->s->zctx);
+            if (e > 0) {
+                acb_set_si(u, c->s->sqrt_d);
+                acb_sqrt(u, u, prec);
+                acb_pow_ui(u, u, (ulong) e, prec);
+                acb_mul(t, t, u, prec);
+            }
+        }
         acb_addmul_fmpz(out, t, cf, prec);
     }
     acb_clear(t); acb_clear(u);
@@ -1334,15 +1344,21 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             } else if (!e->outside && !tower) {
                 /* no tower: balls decide stable / unstable; a root on the
                  * circle needs the tower after all, when it is not too big */
-                e->decided = c->cx == NULL && c->qd == NULL
-                             && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
-                e->balls = e->decided;
-                if (!e->decided && c->cx == NULL
+                /* over Q(sqrt d) the exact tower first (its verdict is
+                 * cross-checked by jury's conditions), the balls after */
+                int qt = c->qd != NULL
+                         && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
+                         && rs_alg_primitive(&g, A, B, al, cand + i);
+                e->decided = qt && c->qd->field(&e->st, A, B, &g, c->qd->arg);
+                if (!e->decided) {
+                    e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
+                    e->balls = e->decided;
+                }
+                if (!e->decided && c->cx == NULL && c->qd == NULL
                     && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
                     && rs_alg_primitive(&g, A, B, al, cand + i)) {
                     fmpq_poly_set_fmpz_poly(m, g.minpoly);
-                    e->decided = c->qd != NULL ? c->qd->field(&e->st, A, B, &g, c->qd->arg)
-                                 : cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
+                    e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
                 }
                 if (!e->decided)
                     e->why = c->cx != NULL ? "a section whose tower is above the cap (complex plane)"
