@@ -301,10 +301,9 @@ static const char qr_check[] =
 
 int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req)
 {
-    const char *keep[2], *why = NULL;
+    const char *why = NULL;
     char msg[400];
-    rs_assign_t *as = NULL;
-    slong nas = 0, i, ncrit = 0;
+    slong i, ncrit = 0;
     rs_variant_t *v;
     const rs_scheme_struct *s;
     fmpz_mpoly_struct *crit = NULL;
@@ -313,20 +312,9 @@ int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req)
     int *hne = NULL, r;
     slong nh = 0;
     memset(&Q, 0, sizeof Q);
-    keep[0] = run->c->params[req->u.region.param].name;
-    keep[1] = run->c->params[req->u.region.param2].name;
-    rs_run_assignments(run, &as, &nas, keep, 2, req->u.region.at, req->u.region.nat);
-    r = rs_run_variant(&v, run, as, nas);
-    rs_assign_free(as, nas);
+    r = rs_region2_variant(&v, run, req);
     if (r != RS_OK) return r;
     s = v->s;
-    for (i = 0; i < run->c->nparams; i++)
-        if (i != req->u.region.param && i != req->u.region.param2 && fmpz_mpoly_degree_si(v->cp->p, i, s->zctx) > 0)
-        {
-            snprintf(msg, sizeof msg, "'%s' is symbolic: region N1, N2 decides two parameters; set the others "
-                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, keep[0], keep[1], run->c->params[i].name);
-            return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
-        }
     Q.run = run;
     Q.s = s;
     Q.av = req->u.region.param;

@@ -121,6 +121,10 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
 
 
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
+/* region N1, N2's variant: the case's set values and the request's `at`
+ * with N1, N2 kept symbolic; an input error at the request when another
+ * parameter is still symbolic */
+int rs_region2_variant(rs_variant_t **v, rs_run_t *run, const rs_an_req_t *req);
 /* The cells of the plane (av, bv) of v's p (no other free parameter), the
  * assume lines' bounds and the extra domain polynomials dom[i] > 0 (>= 0
  * where closed[i]) cutting it (a claim's condition): *cells their JSON as

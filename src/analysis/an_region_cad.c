@@ -2514,30 +2514,36 @@ static void cad_plane_init(cad_t *c, rs_run_t *run, const rs_variant_t *v, slong
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c->bounds, &run->c->assume[i], run->c, run->err);
 }
 
-int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
+int rs_region2_variant(rs_variant_t **v, rs_run_t *run, const rs_an_req_t *req)
 {
     const char *keep[2];
     rs_assign_t *a = NULL;
     slong na = 0, i;
-    rs_variant_t *v;
-    cad_t c;
     int r;
     keep[0] = run->c->params[req->u.region.param].name;
     keep[1] = run->c->params[req->u.region.param2].name;
     rs_run_assignments(run, &a, &na, keep, 2, req->u.region.at, req->u.region.nat);
-    r = rs_run_variant(&v, run, a, na);
+    r = rs_run_variant(v, run, a, na);
     rs_assign_free(a, na);
-    if (r != RS_OK) return r;
-    cad_plane_init(&c, run, v, req->u.region.param, req->u.region.param2);
-    for (i = 0; i < run->c->nparams; i++)
-        if (i != c.av && i != c.bv && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0)
+    for (i = 0; r == RS_OK && i < run->c->nparams; i++)
+        if (i != req->u.region.param && i != req->u.region.param2
+            && fmpz_mpoly_degree_si((*v)->cp->p, i, (*v)->s->zctx) > 0)
         {
             char msg[400];
             snprintf(msg, sizeof msg, "'%s' is symbolic: region N1, N2 decides two parameters; set the others "
-                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, c.an, c.bn, run->c->params[i].name);
-            cad_clear(&c);
-            return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
+                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, keep[0], keep[1], run->c->params[i].name);
+            r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
         }
+    return r;
+}
+
+int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
+{
+    rs_variant_t *v;
+    cad_t c;
+    int r = rs_region2_variant(&v, run, req);
+    if (r != RS_OK) return r;
+    cad_plane_init(&c, run, v, req->u.region.param, req->u.region.param2);
     if (rs_bound_empty(c.bounds + c.av) || rs_bound_empty(c.bounds + c.bv)) {
         r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", "the assumptions are contradictory");
         cad_clear(&c);

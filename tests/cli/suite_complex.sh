@@ -1014,3 +1014,17 @@ else ok "skipped sdirk2 region a, c comparison: no python3 with mpmath"; fi
 tr -d ' \n' <"$T/r2.json" | grep -q '"over":"Q(sqrt2)".*"samples_cross_checked":{[^}]*"disagree":0' \
     && ok "sdirk2 region a, c: JSON says over Q(sqrt 2) and no sample disagreed" \
     || fail "sdirk2 region a, c: over / samples_cross_checked missing"
+# a region's own parameter with a complex set value (h-sqrt8): the value is
+# not used (the region keeps the parameter symbolic), so region c runs at
+# c = 1/2 + i/4 and gives the real line's answer at a = 1: marginal at
+# c = +-c*, c* a root of 17 c^4 - 92 c^2 + 124 (hand derivation in
+# sdirk2-coupled-conditions.case); jury there stays refused, naming what runs
+"$RS" --json --set 'c=1/2+i/4' --set a=1 --analyse 'region c' "$SC" >"$T/rc.json" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ] && tr -d ' \n' <"$T/rc.json" | grep -q '"status":"marginal".*17\*c^4-92\*c^2+124' \
+   && [ "$(tr -d ' \n' <"$T/rc.json" | grep -o '"status":"stable"' | wc -l)" = 1 ]; then
+    ok "sdirk2 region c with c complex-set: runs, |c| < c* stable, +-c* marginal"
+else fail "sdirk2 region c with c complex-set: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --set 'c=1/2+i/4' --set a=1 --analyse 'region a' "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "stability, radius, modes and simulate do" "$T/err"; then
+    ok "sdirk2 region a at a complex c refused (exit 2), naming what runs"
+else fail "sdirk2 region a at complex c: rc=$rc $(head -1 "$T/err")"; fi
