@@ -45,6 +45,18 @@ char *rs_an_qd_over_str(slong d)
     return s;
 }
 
+/* every complex set value is of the region's own parameters (and no `at`
+ * gives another one) */
+static int qd_csets_only(const rs_run_t *run, const rs_an_req_t *req)
+{
+    slong j;
+    for (j = 0; j < run->c->ncsets; j++) {
+        slong k = rs_case_param_index(run->c, run->c->csets[j].name);
+        if (k != req->u.region.param && !(req->u.region.twod && k == req->u.region.param2)) return 0;
+    }
+    return 1;
+}
+
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *n = req->def->name;
@@ -56,13 +68,18 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
          || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
         return RS_OK;
+    /* a region's own parameters keep no set value: a complex one there is
+     * unused (decided once the request is parsed: rest set) */
+    if (strcmp(n, "region") == 0 && (req->rest == NULL || (!req->u.region.forall && qd_csets_only(run, req))))
+        return RS_OK;
     {
         /* the message names the model's field and tableau */
         char msg[400];
         if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
             || strcmp(n, "claim") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
-                     "(stability and radius do)", n, (long) run->m->qd->d);
+                     "(stability, radius, modes and simulate do; region runs when only its own parameters have "
+                     "complex values)", n, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
                      "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "

@@ -21,6 +21,15 @@ int rs_an_qd_radius(rs_run_t *run, const rs_an_req_t *req);
 /* an_qd_conds.c: the Schur-Cohn and Hurwitz conditions over Q(sqrt d)[params] */
 int rs_an_qd_jury(rs_run_t *run, const rs_an_req_t *req);
 int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
+/* jury's conditions (hurwitz's when hurwitz and deg p <= 8) c0[k] +
+ * sqrt(d) c1[k] > 0 (ne[k]: != 0), k < *n, on v's p (all |lambda| < 1 iff
+ * they hold; an_qd_region2.c's cells and second route); the caller clears
+ * the c0, c1 in v->s->zctx and flint_frees the arrays */
+int rs_an_qd_jury_conds(fmpz_mpoly_struct **c0, fmpz_mpoly_struct **c1, int **ne, slong *n, rs_run_t *run,
+                        const rs_an_req_t *req, rs_variant_t *v, int hurwitz);
+/* an_qd_region2.c: region N1, N2 over Q(sqrt d) (the rational CAD on the
+ * norms of the critical polynomials, each cell decided over Q(sqrt d)) */
+int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req);
 /* the fraction-free Routh array over Q(sqrt d)[params], its conditions
  * cross-checked against hurwitz's and the point verdict at sample points */
 int rs_an_qd_routh(rs_run_t *run, const rs_an_req_t *req);

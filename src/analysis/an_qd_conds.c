@@ -1276,6 +1276,35 @@ int rs_an_qd_forall_norms(rs_plist_t *l, const rs_scheme_struct **sp, rs_run_t *
     return r;
 }
 
+int rs_an_qd_jury_conds(fmpz_mpoly_struct **c0, fmpz_mpoly_struct **c1, int **ne, slong *n, rs_run_t *run,
+                        const rs_an_req_t *req, rs_variant_t *v, int hurwitz)
+{
+    qd_sym_t S;
+    json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
+           *always = json_array();
+    slong na = -1;
+    int r = qd_sym_init(&S, run, req, v), never = 0;
+    *c0 = *c1 = NULL;
+    *ne = NULL;
+    *n = 0;
+    if (r == RS_OK && hurwitz && S.n <= 8) {
+        na = S.n;
+        r = qd_hurwitz_conds(&S, run, rows, conds, parts, dropped, always, &never);
+    } else if (r == RS_OK) {
+        r = qd_jury_table(&S, run, rows, conds, parts, dropped, always, &never, &na);
+    } else {
+        na = S.a != NULL ? S.n : -1;
+    }
+    if (r == RS_OK) {
+        /* handed over: qd_sym_clear then frees nothing of them */
+        *c0 = S.q.c0; *c1 = S.q.c1; *ne = S.q.ne; *n = S.q.n;
+        S.q.c0 = S.q.c1 = NULL; S.q.ne = NULL; S.q.n = 0;
+    }
+    json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
+    qd_sym_clear(&S, na);
+    return r;
+}
+
 int rs_an_qd_point_verdict(rs_run_t *run, const rs_an_req_t *req, fmpq *const *pt)
 {
     qd_sym_t S;

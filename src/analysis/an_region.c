@@ -2594,6 +2594,7 @@ int rs_an_region(rs_run_t *run, const rs_an_req_t *req)
     json_t *o;
     int r;
 
+    if (run->m->qd != NULL && req->u.region.twod) return rs_an_qd_region2(run, req);   /* an_qd_region2.c */
     if (run->m->qd != NULL) return rs_an_qd_region(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
     if (req->u.region.twod) return rs_an_region_cad(run, req);
     keep[0] = name;

@@ -121,6 +121,10 @@ int rs_an_forall_alg_marginal(int *decided, json_t **ev, rs_run_t *run, const rs
 
 
 int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req);
+/* region N1, N2's variant: the case's set values and the request's `at`
+ * with N1, N2 kept symbolic; an input error at the request when another
+ * parameter is still symbolic */
+int rs_region2_variant(rs_variant_t **v, rs_run_t *run, const rs_an_req_t *req);
 /* The cells of the plane (av, bv) of v's p (no other free parameter), the
  * assume lines' bounds and the extra domain polynomials dom[i] > 0 (>= 0
  * where closed[i]) cutting it (a claim's condition): *cells their JSON as
@@ -157,6 +161,27 @@ typedef struct {
     slong nnorm;
 } rs_region_cx_t;
 int rs_an_region_cad_cx(rs_run_t *run, const rs_region_cx_t *cx);
+
+/* region N1, N2 over Q(sqrt d) (an_qd_region2.c): the plane (av, bv) of v
+ * (p = p0 + sqrt(d) p1, no other free parameter) cut by the given rational
+ * critical polynomials (norms c0^2 - d c1^2 of the Q(sqrt d) ones) instead
+ * of p's own, each cell decided by the callbacks: point at a rational
+ * sample (RS_OK, or the error of a disagreement of its routes), field at
+ * (N1, N2) = (A, B)(g) in Q(g) = Q[x]/(minpoly g) (1 decided, 0 not; a
+ * disagreement of its routes marks the run inconsistent).  method and
+ * check_method: the result's "method" and its cross-check's. */
+typedef struct {
+    const fmpz_mpoly_struct *crit;
+    slong ncrit;
+    int (*point)(rs_status_t *st, const fmpq *vals, void *arg);
+    int (*field)(rs_status_t *st, const fmpq_poly_t A, const fmpq_poly_t B, rs_alg_t *g, void *arg);
+    void *arg;
+    const char *method, *check_method;
+} rs_region_qd_t;
+int rs_an_region_cad_qd(rs_run_t *run, const rs_variant_t *v, slong av, slong bv, const rs_region_qd_t *qd);
+/* f (in variables av, bv only) at (A(g), B(g)) in Q(g) = Q[x]/(m) */
+void rs_region_eval_field(fmpq_poly_t out, const fmpz_mpoly_t f, slong av, slong bv, const fmpq_poly_t A,
+                          const fmpq_poly_t B, const fmpq_poly_t m, const fmpz_mpoly_ctx_t ctx);
 
 /* The map's exact boundary drawn only where it separates (issue 13 part 3):
  * the decomposition of the (v1, v2) plane of variant v, then per boundary

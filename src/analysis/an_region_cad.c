@@ -126,6 +126,7 @@ typedef struct {
      * from the cell's sign vector, with no field arithmetic */
     struct cx_fac_struct *fac;
     slong nfac;
+    const rs_region_qd_t *qd;  /* over Q(sqrt d): given critical polynomials, statuses by callbacks */
 } cad_t;
 
 /* P = sgn * prod f[idx[j]]^exp[j] times a positive constant (zero: sgn 0) */
@@ -204,6 +205,7 @@ static int cad_point_status(rs_status_t *st, const cad_t *c, fmpq *vals)
 {
     rs_rootcount_t rc;
     int r;
+    if (c->qd != NULL) return c->qd->point(st, vals, c->qd->arg);
     if (c->cx != NULL) {
         r = c->cx->status(st, vals + 0, vals + 1, c->cx->arg);
         if (r == RS_OK && *st != RS_STATUS_STABLE && !(c->cx->norm != NULL && *st == RS_STATUS_MARGINAL))
@@ -214,6 +216,20 @@ static int cad_point_status(rs_status_t *st, const cad_t *c, fmpq *vals)
     r = rs_run_point_status(st, rc, c->run, c->v, (slong[]) {c->av, c->bv}, vals, 2);
     rs_rootcount_clear(rc);
     return r;
+}
+
+/* over Q(sqrt d): the status at (a0, x) (a0 != NULL) or (x, b0), x
+ * algebraic, by the caller's field verdict in Q(x) */
+static int qd_line_status(rs_status_t *st, const cad_t *c, const fmpq *a0, const fmpq *b0, rs_alg_t *x)
+{
+    fmpq_poly_t A, B;
+    int dec;
+    fmpq_poly_init(A); fmpq_poly_init(B);
+    if (a0 != NULL) { fmpq_poly_set_fmpq(A, a0); fmpq_poly_set_coeff_si(B, 1, 1); }
+    else { fmpq_poly_set_coeff_si(A, 1, 1); fmpq_poly_set_fmpq(B, b0); }
+    dec = c->qd->field(st, A, B, x, c->qd->arg);
+    fmpq_poly_clear(A); fmpq_poly_clear(B);
+    return dec;
 }
 
 /* complex mode at a rational sample: the sign verdict, checked against
@@ -474,6 +490,18 @@ static int cx_status_sg(rs_status_t *st, int *on, const cad_t *c, const signed c
     return 1;
 }
 
+/* the domain from the assume lines */
+static void cad_add_domain(cad_t *c)
+{
+    slong k;
+    for (k = 0; k < 2; k++) {
+        slong var = k == 0 ? c->av : c->bv;
+        const rs_bound_t *b = c->bounds + var;
+        if (b->has_lo) cad_add_end(c, var, b->lo, 0, b->lo_closed);
+        if (b->has_hi) cad_add_end(c, var, b->hi, 1, b->hi_closed);
+    }
+}
+
 /* step 1: where the status can change (as region NAME's critical values) */
 static int cad_critical(cad_t *c)
 {
@@ -484,6 +512,12 @@ static int cad_critical(cad_t *c)
     fmpz_mpoly_factor_t fac;
     fmpz_t pm;
     int r = RS_OK;
+    if (c->qd != NULL) {
+        /* over Q(sqrt d): the caller's norms, then the domain */
+        for (k = 0; k < c->qd->ncrit; k++) cad_add_factors(c, c->qd->crit + k, K_BOUNDARY);
+        cad_add_domain(c);
+        return rs_budget_check(c->run->err, "region N1, N2 over Q(sqrt d) (critical polynomials)");
+    }
     if (c->cx != NULL) {
         /* the given conditions: lead and the Schur-Cohn deltas */
         cad_add_factors(c, c->cx->lead, K_BOUNDARY);
@@ -545,13 +579,7 @@ static int cad_critical(cad_t *c)
         if (fmpz_mpoly_degree_si(sqf, lv, s->zctx) >= 2 && fmpz_mpoly_discriminant(t, sqf, lv, s->zctx))
             cad_add_factors(c, t, K_BOUNDARY);
     }
-    /* the domain from the assume lines */
-    for (k = 0; k < 2; k++) {
-        slong var = k == 0 ? c->av : c->bv;
-        const rs_bound_t *b = c->bounds + var;
-        if (b->has_lo) cad_add_end(c, var, b->lo, 0, b->lo_closed);
-        if (b->has_hi) cad_add_end(c, var, b->hi, 1, b->hi_closed);
-    }
+    cad_add_domain(c);
     r = rs_budget_check(c->run->err, "region N1, N2 (critical polynomials)");
     fmpz_mpoly_clear(sqf, s->zctx);
     fmpz_mpoly_clear(t, s->zctx);
@@ -683,7 +711,7 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
         if (lo < c->blo) c->blo = lo;
         if (hi > c->bhi) c->bhi = hi;
     }
-    if (c->cx == NULL) rs_an_forall_subst(pa, c->v->cp->p, c->av, a0, s->zctx);
+    if (c->cx == NULL && c->qd == NULL) rs_an_forall_subst(pa, c->v->cp->p, c->av, a0, s->zctx);
     /* cells from below: sector, root, sector, ..., sector */
     for (i = 0; i <= 2 * nroots && r == RS_OK; i++) {
         int on_root = i % 2 == 1;
@@ -709,6 +737,8 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
                     e->st = cx_status(c, &pt);
                     cx_marginal_at(c, e, &pt);
                     e->decided = 1;
+                } else if (c->qd != NULL) {
+                    e->decided = qd_line_status(&e->st, c, a0, NULL, rt);
                 } else if (!fmpz_mpoly_is_zero(pa, s->zctx)) {
                     e->decided = rs_alg_status(&e->st, pa, c->bv, rt, s);
                 }
@@ -743,7 +773,13 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
 static void cad_eval_field(fmpq_poly_t out, const cad_t *c, const fmpz_mpoly_t f, const fmpq_poly_t A,
                            const fmpq_poly_t B, const fmpq_poly_t m)
 {
-    slong da = fmpz_mpoly_degree_si(f, c->av, c->s->zctx), db = fmpz_mpoly_degree_si(f, c->bv, c->s->zctx), i;
+    rs_region_eval_field(out, f, c->av, c->bv, A, B, m, c->s->zctx);
+}
+
+void rs_region_eval_field(fmpq_poly_t out, const fmpz_mpoly_t f, slong av, slong bv, const fmpq_poly_t A,
+                          const fmpq_poly_t B, const fmpq_poly_t m, const fmpz_mpoly_ctx_t ctx)
+{
+    slong da = fmpz_mpoly_degree_si(f, av, ctx), db = fmpz_mpoly_degree_si(f, bv, ctx), i;
     fmpq_poly_struct *pa = flint_malloc((FLINT_MAX(da, 0) + 1) * sizeof(fmpq_poly_struct));
     fmpq_poly_struct *pb = flint_malloc((FLINT_MAX(db, 0) + 1) * sizeof(fmpq_poly_struct));
     fmpq_poly_t t;
@@ -759,10 +795,10 @@ static void cad_eval_field(fmpq_poly_t out, const cad_t *c, const fmpz_mpoly_t f
         if (i == 0) fmpq_poly_one(pb); else { fmpq_poly_mul(pb + i, pb + i - 1, B); fmpq_poly_rem(pb + i, pb + i, m); }
     }
     fmpq_poly_zero(out);
-    for (i = 0; i < fmpz_mpoly_length(f, c->s->zctx); i++) {
-        slong ea = fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx);
-        slong eb = fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx);
-        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, c->s->zctx);
+    for (i = 0; i < fmpz_mpoly_length(f, ctx); i++) {
+        slong ea = fmpz_mpoly_get_term_var_exp_si(f, i, av, ctx);
+        slong eb = fmpz_mpoly_get_term_var_exp_si(f, i, bv, ctx);
+        fmpz_mpoly_get_term_coeff_fmpz(cf, f, i, ctx);
         fmpq_poly_mul(t, pa + ea, pb + eb);
         fmpq_poly_scalar_mul_fmpz(t, t, cf);
         fmpq_poly_add(out, out, t);
@@ -826,6 +862,8 @@ static int cad_alg_rational(cad_t *c, cell_t *e, rs_alg_t *al, const fmpq_t b0)
         e->st = cx_status(c, &pt);
         cx_marginal_at(c, e, &pt);
         dec = 1;
+    } else if (!e->outside && c->qd != NULL) {
+        dec = qd_line_status(&e->st, c, NULL, b0, al);
     } else if (!e->outside) {
         rs_an_forall_subst(t, c->v->cp->p, c->bv, b0, s->zctx);
         if (!fmpz_mpoly_is_zero(t, s->zctx)) dec = rs_alg_status(&e->st, t, c->av, al, s);
@@ -849,6 +887,16 @@ static void cad_eval_acb(acb_t out, const cad_t *c, const fmpz_mpoly_t f, const 
         acb_pow_ui(t, x, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->av, c->s->zctx), prec);
         acb_pow_ui(u, y, (ulong) fmpz_mpoly_get_term_var_exp_si(f, i, c->bv, c->s->zctx), prec);
         acb_mul(t, t, u, prec);
+        if (c->qd != NULL) {
+            /* over Q(sqrt d): p's sqrt(d) is a variable of the scheme */
+            slong e = fmpz_mpoly_get_term_var_exp_si(f, i, c->s->sqrt_var, c->s->zctx);
+            if (e > 0) {
+                acb_set_si(u, c->s->sqrt_d);
+                acb_sqrt(u, u, prec);
+                acb_pow_ui(u, u, (ulong) e, prec);
+                acb_mul(t, t, u, prec);
+            }
+        }
         acb_addmul_fmpz(out, t, cf, prec);
     }
     acb_clear(t); acb_clear(u);
@@ -1296,9 +1344,17 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
             } else if (!e->outside && !tower) {
                 /* no tower: balls decide stable / unstable; a root on the
                  * circle needs the tower after all, when it is not too big */
-                e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
-                e->balls = e->decided;
-                if (!e->decided && c->cx == NULL
+                /* over Q(sqrt d) the exact tower first (its verdict is
+                 * cross-checked by jury's conditions), the balls after */
+                int qt = c->qd != NULL
+                         && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
+                         && rs_alg_primitive(&g, A, B, al, cand + i);
+                e->decided = qt && c->qd->field(&e->st, A, B, &g, c->qd->arg);
+                if (!e->decided) {
+                    e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
+                    e->balls = e->decided;
+                }
+                if (!e->decided && c->cx == NULL && c->qd == NULL
                     && fmpz_poly_degree(al->minpoly) * fmpz_poly_degree(cand[i].minpoly) <= CAD_MAX_TOWER_DEGREE_CELL
                     && rs_alg_primitive(&g, A, B, al, cand + i)) {
                     fmpq_poly_set_fmpz_poly(m, g.minpoly);
@@ -1313,6 +1369,8 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                 e->st = cx_status(c, &pt);
                 cx_marginal_at(c, e, &pt);
                 e->decided = 1;
+            } else if (!e->outside && c->qd != NULL) {
+                e->decided = c->qd->field(&e->st, A, B, &g, c->qd->arg);
             } else if (!e->outside) {
                 e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
             }
@@ -1643,7 +1701,8 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
     if (r == RS_OK && agree != tried && complete) c->run->outcome |= RS_OUTCOME_INCONSISTENT;
     json_object_set_new(o, "cross_check", json_pack("{s:I,s:I,s:o,s:s}", "points", (json_int_t) tried,
         "agree", (json_int_t) agree, "disagree_at", bad, "method",
-        c->cx != NULL && c->cx->norm != NULL ? "the stable and marginal formulas re-parsed from their text and "
+        c->qd != NULL ? c->qd->check_method
+        : c->cx != NULL && c->cx->norm != NULL ? "the stable and marginal formulas re-parsed from their text and "
         "evaluated exactly at random rational points, against the exact point verdict over Q(i) (Schur-Cohn over "
         "Q(i) and Bilharz)"
         : c->cx != NULL ? "the stable formula re-parsed from its text and evaluated exactly at random rational points, "
@@ -2358,7 +2417,7 @@ static int cad_solve(cad_t *c, json_t *substituted)
                   "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "
                   "root): the formula is exact off those cells"));
         cad_boundary(o, c);
-        if (c->cx == NULL) cad_qepcad(o, c);
+        if (c->cx == NULL && c->qd == NULL) cad_qepcad(o, c);
         json_object_set_new(o, "cells", cad_cells_json(c));
         for (k = 0; k < c->ncrit; k++) json_array_append_new(cv, rs_alg_json(c->crit + k, c->an));
         json_object_set_new(o, "critical_values", cv);
@@ -2383,7 +2442,7 @@ static int cad_solve(cad_t *c, json_t *substituted)
             json_object_set_new(o, "domain", dom);
         }
         json_object_set_new(o, "undecided_lines", json_integer(c->undecided_lines));
-        json_object_set_new(o, "method", json_string(c->cx != NULL
+        json_object_set_new(o, "method", json_string(c->qd != NULL ? c->qd->method : c->cx != NULL
             ? "cylindrical algebraic decomposition of the plane (Collins) of z = x + i y: critical polynomials "
               "|a_n|^2 and the division-free Schur-Cohn deltas of p over Q(i)[x, y] (stable iff all > 0), their "
               "projection onto x, each cell's signs; rational samples re-decided by the point verdict over Q(i)"
@@ -2455,30 +2514,36 @@ static void cad_plane_init(cad_t *c, rs_run_t *run, const rs_variant_t *v, slong
     for (i = 0; i < run->c->nassume; i++) rs_bounds_add(c->bounds, &run->c->assume[i], run->c, run->err);
 }
 
-int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
+int rs_region2_variant(rs_variant_t **v, rs_run_t *run, const rs_an_req_t *req)
 {
     const char *keep[2];
     rs_assign_t *a = NULL;
     slong na = 0, i;
-    rs_variant_t *v;
-    cad_t c;
     int r;
     keep[0] = run->c->params[req->u.region.param].name;
     keep[1] = run->c->params[req->u.region.param2].name;
     rs_run_assignments(run, &a, &na, keep, 2, req->u.region.at, req->u.region.nat);
-    r = rs_run_variant(&v, run, a, na);
+    r = rs_run_variant(v, run, a, na);
     rs_assign_free(a, na);
-    if (r != RS_OK) return r;
-    cad_plane_init(&c, run, v, req->u.region.param, req->u.region.param2);
-    for (i = 0; i < run->c->nparams; i++)
-        if (i != c.av && i != c.bv && fmpz_mpoly_degree_si(v->cp->p, i, v->s->zctx) > 0)
+    for (i = 0; r == RS_OK && i < run->c->nparams; i++)
+        if (i != req->u.region.param && i != req->u.region.param2
+            && fmpz_mpoly_degree_si((*v)->cp->p, i, (*v)->s->zctx) > 0)
         {
             char msg[400];
             snprintf(msg, sizeof msg, "'%s' is symbolic: region N1, N2 decides two parameters; set the others "
-                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, c.an, c.bn, run->c->params[i].name);
-            cad_clear(&c);
-            return rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
+                     "(region %s, %s at %s=VALUE)", run->c->params[i].name, keep[0], keep[1], run->c->params[i].name);
+            r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", msg);
         }
+    return r;
+}
+
+int rs_an_region_cad(rs_run_t *run, const rs_an_req_t *req)
+{
+    rs_variant_t *v;
+    cad_t c;
+    int r = rs_region2_variant(&v, run, req);
+    if (r != RS_OK) return r;
+    cad_plane_init(&c, run, v, req->u.region.param, req->u.region.param2);
     if (rs_bound_empty(c.bounds + c.av) || rs_bound_empty(c.bounds + c.bv)) {
         r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", "the assumptions are contradictory");
         cad_clear(&c);
@@ -2510,6 +2575,17 @@ int rs_an_region_cad_cells(json_t **cells, rs_run_t *run, const rs_variant_t *v,
     if (r == RS_OK) r = cad_project(&c);
     if (r == RS_OK) r = cad_lift(&c);
     if (r == RS_OK) *cells = cad_cells_json(&c);
+    cad_clear(&c);
+    return r;
+}
+
+int rs_an_region_cad_qd(rs_run_t *run, const rs_variant_t *v, slong av, slong bv, const rs_region_qd_t *qd)
+{
+    cad_t c;
+    int r;
+    cad_plane_init(&c, run, v, av, bv);
+    c.qd = qd;
+    r = rs_bound_empty(c.bounds + av) || rs_bound_empty(c.bounds + bv) ? RS_ERR_INPUT : cad_solve(&c, v->assigned);
     cad_clear(&c);
     return r;
 }

@@ -387,8 +387,10 @@ int rs_an_req_parse(rs_an_req_t *req, rs_run_t *run, const rs_request_t *q)
         return r;
     }
     req->rest = rs_req_skip_word(q->text);
-    if (req->def->parse != NULL) return req->def->parse(req, run);
-    return opts_parse(req, run, req->rest);
+    r = req->def->parse != NULL ? req->def->parse(req, run) : opts_parse(req, run, req->rest);
+    /* over Q(sqrt d) a region is checked again once its parameters are known */
+    if (r == RS_OK && run->m->qd != NULL && strcmp(req->def->name, "region") == 0) r = rs_an_qd_check(run, req);
+    return r;
 }
 
 void rs_an_req_clear(rs_an_req_t *req)

@@ -19,15 +19,49 @@ static void num_str(char *buf, size_t n, const json_t *v)
     else snprintf(buf, n, "?");
 }
 
+/* an end over Q(sqrt d) is the string "root of MINPOLY in [LO, HI]"
+ * (rs_qd_end_get_str): 1 and its parts (free them), else 0 */
+static int qd_end_parse(const char *s, char **mp, char **lo, char **hi)
+{
+    const char *in, *comma, *close;
+    if (s == NULL || strncmp(s, "root of ", 8) != 0 || (in = strstr(s, " in [")) == NULL
+        || (comma = strstr(in, ", ")) == NULL || (close = strrchr(comma, ']')) == NULL)
+        return 0;
+    *mp = strndup(s + 8, (size_t) (in - s - 8));
+    *lo = strndup(in + 5, (size_t) (comma - in - 5));
+    *hi = strndup(comma + 2, (size_t) (close - comma - 2));
+    return 1;
+}
+
+/* the digits LO and HI share (a truncation of every number between them),
+ * when they share one after the point; else LO */
+static char *qd_end_digits(const char *lo, const char *hi)
+{
+    size_t n = 0;
+    const char *dot = strchr(lo, '.');
+    if (strchr(lo, 'e') != NULL || strchr(hi, 'e') != NULL || dot == NULL || lo[0] != hi[0]) return strdup(lo);
+    while (lo[n] != '\0' && lo[n] == hi[n]) n++;
+    if (n <= (size_t) (dot - lo) + 1) return strdup(lo);
+    return strndup(lo, n);
+}
+
 /* one end of an interval inside math already opened: +-infinity, a rational,
  * or an algebraic number by its certified digits (its definition follows the
  * interval, in ends_defined) */
 static void interval_end(rs_render_t *r, const json_t *e, int hi)
 {
-    char buf[64];
+    char buf[64], *mp, *lo, *up;
     const char *s = json_is_string(e) ? json_string_value(e) : NULL;
     if (e == NULL || json_is_null(e) || (s && strcmp(s, hi ? "inf" : "-inf") == 0)) {
         rs_render_say(r, hi ? "\\infty" : "-\\infty", hi ? "\\infty" : "-\\infty");
+        return;
+    }
+    if (qd_end_parse(s, &mp, &lo, &up)) {
+        /* the shared digits, then "\\ldots" (the root lies in [lo, up]) */
+        char *dg = qd_end_digits(lo, up);
+        rs_render_poly(r, dg);
+        if (strcmp(dg, lo) != 0) rs_render_say(r, "\\ldots", "\\ldots");
+        free(dg); free(mp); free(lo); free(up);
         return;
     }
     if (json_is_object(e)) {
@@ -47,6 +81,25 @@ static void ends_defined(rs_render_t *r, const json_t *iv)
     for (i = 0; i < json_array_size(iv); i++) {
         const json_t *e = json_array_get(iv, i);
         const char *ex = js(e, "exact"), *mp = js(e, "minpoly"), *of;
+        char *qmp, *qlo, *qhi;
+        if (json_is_string(e) && qd_end_parse(json_string_value(e), &qmp, &qlo, &qhi)) {
+            /* over Q(sqrt d): the root of the norm polynomial in [lo, hi] */
+            char *dg = qd_end_digits(qlo, qhi);
+            if (i == 1 && json_equal(e, json_array_get(iv, 0))) { free(dg); free(qmp); free(qlo); free(qhi); continue; }
+            rs_render_say(r, first ? " where $" : "; $", first ? " where $" : "; $");
+            rs_render_poly(r, dg);
+            if (strcmp(dg, qlo) != 0) rs_render_say(r, "\\ldots", "\\ldots");
+            rs_render_say(r, "$ stands for the root of $", "$ stands for the root of $");
+            rs_render_poly(r, qmp);
+            rs_render_say(r, "$ (in $x$) in $[", "$ (in $x$) in $[");
+            rs_render_poly(r, qlo);
+            rs_render_say(r, ", ", ", ");
+            rs_render_poly(r, qhi);
+            rs_render_say(r, "]$", "]$");
+            free(dg); free(qmp); free(qlo); free(qhi);
+            first = 0;
+            continue;
+        }
         if (!json_is_object(e) || mp == NULL || ex == NULL) continue;
         if (i == 1 && json_equal(e, json_array_get(iv, 0))) continue;
         of = strstr(ex, " of ");
@@ -230,7 +283,9 @@ static void evidence(rs_render_t *r, const json_t *e, const char *q)
                           " \\ge 0$ for every real $y$ (so $|R| \\le 1$ on the imaginary axis)");
         else {
             char y[64];
-            num_str(y, sizeof y, json_object_get(e, "counterexample_imag"));
+            /* over Q: "counterexample_imag"; over Q(sqrt d): "E_negative_at" */
+            num_str(y, sizeof y, json_object_get(e, json_object_get(e, "counterexample_imag") != NULL
+                                                    ? "counterexample_imag" : "E_negative_at"));
             rs_render_say(r, "$ is negative at $y = ", "$ is negative at $y = ");
             rs_render_poly(r, y);
             rs_render_say(r, "$, where $|R(iy)| > 1$", "$, where $|R(iy)| > 1$");

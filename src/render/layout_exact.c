@@ -805,6 +805,17 @@ static void region2(rs_render_t *r, const json_t *o)
                   "the sets as sign conditions of the critical polynomials:\n\n",
                   "A cylindrical decomposition of the plane into cells, one exact verdict per cell; "
                   "the sets as sign conditions of the critical polynomials:\n\n");
+    if (js(o, "over") != NULL)   /* over Q(sqrt d): the polynomials are norms */
+    {
+        rs_render_linef(r, "over", "%s: %s", js(o, "over"), js(o, "norm_note") != NULL ? js(o, "norm_note") : "");
+        rs_render_sayf(r, "The coefficients lie in %s; the polynomials below are norms $g_0^2 - d\\,g_1^2$ of "
+                       "polynomials $g_0 + \\sqrt{d}\\,g_1$ over it: exact, but possibly of higher degree than the "
+                       "true boundary curve (a norm also vanishes on its conjugate's curve, whose arcs separate "
+                       "nothing).\n\n", "The coefficients lie in %s; the polynomials below are norms "
+                       "$g_0^2 - d\\,g_1^2$ of polynomials $g_0 + \\sqrt{d}\\,g_1$ over it: exact, but possibly of "
+                       "higher degree than the true boundary curve (a norm also vanishes on its conjugate's curve, "
+                       "whose arcs separate nothing).\n\n", js(o, "over"));
+    }
     region2_dnf(r, json_object_get(fo, "stable"), "stable iff", "Stable if and only if one of:\n\n");
     region2_dnf(r, json_object_get(fo, "marginal"), "marginal iff", "Marginally stable if and only if one of:\n\n");
     for (i = 0; i < json_array_size(json_object_get(o, "domain")); i++)

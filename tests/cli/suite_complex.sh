@@ -1067,3 +1067,47 @@ else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
 "$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 0 ]; then ok "sdirk2 coupled: routh at set values runs over Q(sqrt 2)"
 else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi
+# astability over Q(sqrt 3) in Markdown and LaTeX (h-sqrt8): SDIRK3 with
+# gamma = (3 - sqrt 3)/6 has E(y) = (1/12 - sqrt(3)/18) y^4 (the JSON's E),
+# negative for every y != 0 by hand (1/12 = 3/36 < 2 sqrt(3)/36 as 9 < 12),
+# so the witness y = -1 the JSON gives must print (not "?"); the real
+# interval's end is the root -6 - sqrt(48) = -12.92820323027550917... of
+# x^2 + 12 x - 12 (quadratic formula), printed by its digits inside the math
+# and defined after it, never as the raw "root of ... in [..]" string.
+SL=cases/complex/sdirk3-low-astability.case
+for fmt in markdown latex; do
+    "$RS" --$fmt "$SL" >"$T/sl.$fmt" 2>"$T/err"; rc=$?
+    if [ "$rc" = 0 ] && grep -qF 'is negative at $y = -1$' "$T/sl.$fmt" && ! grep -qF 'y = ?' "$T/sl.$fmt" \
+       && grep -qF 'q \in [-12.9282032302755' "$T/sl.$fmt" && ! grep -qF '\mathit{root}' "$T/sl.$fmt" \
+       && grep -qF 'stands for the root of $x^{2}+12\,x-12$' "$T/sl.$fmt"; then
+        ok "sdirk3-low astability --$fmt: E's witness y = -1 and the end -6 - sqrt 48 written in math"
+    else fail "sdirk3-low astability --$fmt: rc=$rc $(grep -n 'negative at\|interval is' "$T/sl.$fmt" | head -3)"; fi
+done
+# region a, c over Q(sqrt 2) (h-sqrt8): the 2-D exact region, checked by
+# tests/cli/sdirk2_region2.py against the step matrix from the method's
+# definition (mpmath) at 300 random rational points and at the marginal
+# cells, and its boundary at a = 1 against the hand-derived quartic
+R2=cases/complex/sdirk2-coupled-region2.case
+"$RS" --json "$R2" >"$T/r2.json" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ]; then ok "sdirk2 region a, c over Q(sqrt 2) runs (exit 0)"
+else fail "sdirk2 region a, c: rc=$rc $(head -1 "$T/err")"; fi
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import mpmath' 2>/dev/null; then
+    python3 tests/cli/sdirk2_region2.py "$T/r2.json" 2>&1 | sed 's/^Traceback/FAIL sdirk2_region2.py: Traceback/'
+else ok "skipped sdirk2 region a, c comparison: no python3 with mpmath"; fi
+tr -d ' \n' <"$T/r2.json" | grep -q '"over":"Q(sqrt2)".*"samples_cross_checked":{[^}]*"disagree":0' \
+    && ok "sdirk2 region a, c: JSON says over Q(sqrt 2) and no sample disagreed" \
+    || fail "sdirk2 region a, c: over / samples_cross_checked missing"
+# a region's own parameter with a complex set value (h-sqrt8): the value is
+# not used (the region keeps the parameter symbolic), so region c runs at
+# c = 1/2 + i/4 and gives the real line's answer at a = 1: marginal at
+# c = +-c*, c* a root of 17 c^4 - 92 c^2 + 124 (hand derivation in
+# sdirk2-coupled-conditions.case); jury there stays refused, naming what runs
+"$RS" --json --set 'c=1/2+i/4' --set a=1 --analyse 'region c' "$SC" >"$T/rc.json" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ] && tr -d ' \n' <"$T/rc.json" | grep -q '"status":"marginal".*17\*c^4-92\*c^2+124' \
+   && [ "$(tr -d ' \n' <"$T/rc.json" | grep -o '"status":"stable"' | wc -l)" = 1 ]; then
+    ok "sdirk2 region c with c complex-set: runs, |c| < c* stable, +-c* marginal"
+else fail "sdirk2 region c with c complex-set: rc=$rc $(head -1 "$T/err")"; fi
+"$RS" --set 'c=1/2+i/4' --set a=1 --analyse 'region a' "$SC" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "stability, radius, modes and simulate do" "$T/err"; then
+    ok "sdirk2 region a at a complex c refused (exit 2), naming what runs"
+else fail "sdirk2 region a at complex c: rc=$rc $(head -1 "$T/err")"; fi
