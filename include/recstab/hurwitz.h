@@ -135,7 +135,7 @@ double rs_hurwitz_set_expand_seconds(double seconds);
 int rs_hurwitz_set_subst(int on);
 
 /* A condition of more than this many terms (default 200 000), or whose full
- * factorisation's estimate does not fit the per-row share or what is left of
+ * factorisation's estimate does not fit the row share (2 s when none is set) or what is left of
  * the budget, gets only the cheap factoring steps (issue 17; cond->factored
  * = 0).  0 forces the cheap steps everywhere (tests).  Returns the previous
  * value.  Documented global like rs_hurwitz_set_row_seconds. */
