@@ -24,12 +24,25 @@
  *
  * Build: cc -O2 -I/usr/include/flint bench/chain_minor_size.c \
  *            -o build/chain_minor_size -lflint -lgmp -lm
- * Run:   build/chain_minor_size N [from_m] [stage-B limit s]
+ * Run:   build/chain_minor_size N [from_m] [stage-B limit s] [bound]
+ *
+ * With the fourth argument "bound" (issue 17, h-chain13) stage B is not run:
+ * for each D_m an upper bound on its terms in c, k_1..k_N is counted from its
+ * terms in c, E alone.  E_j = e_j(K) is homogeneous of degree j in k, and
+ * k_i occurs only in rows and columns i-1, i of K, so a principal minor has
+ * degree <= 2 in k_i: the monomial c^a E^b expands into monomials c^a k^e
+ * with |e| = w = sum_j j b_j and every e_i <= d = sum_j b_j min(j, 2) (and
+ * <= w).  The bound is the sum over the distinct (a, w) of the number of
+ * e in N parts of sum w with parts <= the largest d of that (a, w) (a
+ * dynamic programme).  It ignores cancellation and the finer structure, so
+ * it overestimates; its ratio to the true count where stage B runs (N <= 7)
+ * says by how much.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>
 #include <flint/fmpz_vec.h>
 
@@ -53,6 +66,67 @@ primitive(fmpz_mpoly_struct *r, slong len, const fmpz_mpoly_ctx_t ctx)
         for (j = 0; j < len; j++)
             fmpz_mpoly_scalar_divexact_fmpz(r + j, r + j, g, ctx);
     fmpz_clear(g);
+}
+
+/* number of e in N parts, each in 0..d, of sum w (doubles: up to 1e20) */
+static double
+count_box(slong N, slong w, slong d)
+{
+    double *c = calloc(w + 1, sizeof(double)), *c2 = calloc(w + 1, sizeof(double)), r;
+    slong i, s, t;
+    c[0] = 1.0;
+    for (i = 0; i < N; i++) {
+        for (s = 0; s <= w; s++) {
+            c2[s] = 0.0;
+            for (t = 0; t <= d && t <= s; t++)
+                c2[s] += c[s - t];
+        }
+        memcpy(c, c2, (w + 1) * sizeof(double));
+    }
+    r = c[w];
+    free(c);
+    free(c2);
+    return r;
+}
+
+/* the bound of the header comment for one minor in c, E_1..E_N (variable 0
+ * z, 1 c, 1 + j E_j) */
+static void
+print_bound(const fmpz_mpoly_t Dm, slong N, const fmpz_mpoly_ctx_t ec)
+{
+    slong len = fmpz_mpoly_length(Dm, ec), i, j, amax = 0, wmax = 0;
+    ulong *ex = flint_malloc((N + 2) * sizeof(ulong));
+    slong *best;
+    double total = 0.0;
+    for (i = 0; i < len; i++) {
+        slong w = 0;
+        fmpz_mpoly_get_term_exp_ui(ex, Dm, i, ec);
+        for (j = 1; j <= N; j++)
+            w += j * (slong) ex[1 + j];
+        amax = FLINT_MAX(amax, (slong) ex[1]);
+        wmax = FLINT_MAX(wmax, w);
+    }
+    best = calloc((amax + 1) * (wmax + 1), sizeof(slong));
+    for (i = 0; i < (amax + 1) * (wmax + 1); i++)
+        best[i] = -1;
+    for (i = 0; i < len; i++) {
+        slong w = 0, d = 0;
+        fmpz_mpoly_get_term_exp_ui(ex, Dm, i, ec);
+        for (j = 1; j <= N; j++) {
+            w += j * (slong) ex[1 + j];
+            d += FLINT_MIN(j, 2) * (slong) ex[1 + j];
+        }
+        d = FLINT_MIN(d, w);
+        if (d > best[ex[1] * (wmax + 1) + w])
+            best[ex[1] * (wmax + 1) + w] = d;
+    }
+    for (i = 0; i < (amax + 1) * (wmax + 1); i++)
+        if (best[i] >= 0)
+            total += count_box(N, i % (wmax + 1), best[i]);
+    printf("bound N = %ld: %ld terms in c, E; at most %.4g terms in c, k (deg c %ld, k-degree %ld)\n",
+           (long) N, (long) len, total, (long) amax, (long) wmax);
+    free(best);
+    flint_free(ex);
 }
 
 int
@@ -220,6 +294,11 @@ main(int argc, char **argv)
     printf("%-5s %8s %10s %6s %10s %8s  %s\n", "D_m", "E-terms", "terms", "bits",
            "compose s", "tdeg", "deg c, k_1..k_N");
 
+    if (argc > 4 && strcmp(argv[4], "bound") == 0) {
+        for (m = from; m < n; m++)
+            print_bound(D + m, N, ec);
+        return 0;
+    }
     img = flint_malloc(sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_init(img, kc);
     for (m = from; m < n; m++) {

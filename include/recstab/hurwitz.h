@@ -45,7 +45,7 @@ typedef struct {
                                       condition always holds */
     int trivially_false;           /* reduced is a non-positive constant */
     int not_expanded;              /* a minor D_k left unexpanded (its row did
-                                      not fit the per-row share of the budget):
+                                      not fit the expansion budget or the row share):
                                       poly, reduced are 0 and factors empty;
                                       its sign at a point comes from the Hurwitz
                                       matrix evaluated there (fmpq_mat_det) */
@@ -89,20 +89,42 @@ typedef struct {
                                       or a condition unfactored: the one
                                       decision that depends on the clock */
     char stop_note[RS_HURWITZ_NOTE_LEN];
-                                   /* "" or which step the row share stopped
-                                      (the Routh row or the composition of
-                                      which D_k, its estimate): deterministic */
+                                   /* "" or which step the row share or the
+                                      expansion budget stopped (the Routh row
+                                      or the composition of which D_k, its
+                                      estimate, which limit): deterministic */
+    double expand_estimate;        /* the cost model's seconds for the
+                                      expansion steps taken (Routh rows and
+                                      compositions; rs_hurwitz_set_expand_seconds) */
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 
-/* Per-row share of the budget (seconds, default 2): a fraction-free Routh
- * row or a composition of the substitution route whose estimated cost (a
- * fixed model of term counts, degrees and coefficient sizes, never the
- * clock: rs_budget_mpoly_mul_seconds, 30x for heap products; issue 17)
- * exceeds it, or what is left of the budget (then limit_note), is not formed; that minor and the later ones stay
- * unexpanded (issue 17).  Returns the previous value.  Documented global,
- * like the budget itself (one run per process). */
+/* Per-row share of the budget (seconds; none by default, a negative value
+ * restores that): a fraction-free Routh row or a composition of the
+ * substitution route whose estimated cost (a fixed model of term counts,
+ * degrees and coefficient sizes, never the clock:
+ * rs_budget_mpoly_mul_seconds, 30x for heap products; issue 17) exceeds it,
+ * or what is left of the budget (then limit_note), is not formed; that minor
+ * and the later ones stay unexpanded (issue 17).  The share also bounds a
+ * condition's full factorisation (2 s when none is set).  Setting a share
+ * without an expansion budget turns the default expansion budget off (the
+ * share alone decides, as before h-chain13).  Returns the previous value.
+ * Documented global, like the budget itself (one run per process). */
 double rs_hurwitz_set_row_seconds(double seconds);
+
+/* Default expansion budget, model seconds: N = 6 of the chain of
+ * bench/make_chain_case.sh is fully expanded within it (issue 17, h-chain13). */
+#define RS_HURWITZ_EXPAND_SECONDS 6.0
+
+/* Expansion budget (model seconds) over the whole set of minors of one
+ * computation: a Routh row or composition is formed only while the cost
+ * model's estimates of all expansion steps so far plus its own stay within
+ * it (h->expand_estimate; fixed formulas, never the clock); otherwise that
+ * minor and the later ones stay unexpanded and stop_note names the budget.
+ * A negative value (the default) means RS_HURWITZ_EXPAND_SECONDS when no row
+ * share is set and no expansion budget when one is.  Returns the previous
+ * value.  Documented global like rs_hurwitz_set_row_seconds. */
+double rs_hurwitz_set_expand_seconds(double seconds);
 
 /* The substitution route of the minors (issue 17): when the coefficients of
  * q with respect to one parameter span a small space, the minors are formed
@@ -113,7 +135,7 @@ double rs_hurwitz_set_row_seconds(double seconds);
 int rs_hurwitz_set_subst(int on);
 
 /* A condition of more than this many terms (default 200 000), or whose full
- * factorisation's estimate does not fit the per-row share or what is left of
+ * factorisation's estimate does not fit the row share (2 s when none is set) or what is left of
  * the budget, gets only the cheap factoring steps (issue 17; cond->factored
  * = 0).  0 forces the cheap steps everywhere (tests).  Returns the previous
  * value.  Documented global like rs_hurwitz_set_row_seconds. */

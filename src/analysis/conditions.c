@@ -24,7 +24,8 @@ json_t *rs_json_factor(const fmpz_mpoly_t f, const rs_scheme_t s)
 const char rs_hurwitz_not_expanded_note[] =
     "these Hurwitz minors were not expanded: the estimated cost of the next fraction-free Routh row or "
     "composition (a fixed model of term counts, degrees and coefficient sizes, not the clock, so the same "
-    "minors at any load) exceeded the row share (--row-share) or what was left of the budget (then "
+    "minors at any load) would have taken the estimates of all expansion steps over the expansion budget "
+    "(--expand-seconds), exceeded a per-step row share (--row-share) or what was left of the budget (then "
     "limit_note names the limit); their conditions D_k > 0 are decided at each sample point by the exact "
     "rational determinant of the k x k Hurwitz matrix there";
 

@@ -252,7 +252,7 @@ int rs_run_symbolic_conditions(rs_run_t *run, const rs_variant_t *v, json_t *o, 
 extern const char rs_hurwitz_not_expanded_note[];
 /* "limit_note": the first branch's budget message (h->limit_note), if any
  * and not set already (issue 17: the only clock-dependent decision), and
- * "not_expanded_reason": which step the row share stopped (h->stop_note) */
+ * "not_expanded_reason": which step the row share or the expansion budget stopped (h->stop_note) */
 void rs_json_hurwitz_limit_note(json_t *o, const rs_hurwitz_struct *h);
 int rs_run_symbolic_conditions_dropped(rs_run_t *run, const rs_variant_t *v, json_t *o, int *verdict,
                                        json_t *dropped);

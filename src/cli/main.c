@@ -61,7 +61,11 @@ static void usage(FILE *f)
           "  --memory-limit MB              memory for the computation (default half of the RAM; 0 = none)\n"
           "  --row-share SECONDS            estimated seconds (a fixed cost model, not the clock) one Routh row\n"
           "                                 or one minor's composition may take before hurwitz leaves the\n"
-          "                                 minors from it on not expanded (default 2)\n"
+          "                                 minors from it on not expanded (default: none; given alone it\n"
+          "                                 replaces the expansion budget, as before)\n"
+          "  --expand-seconds SECONDS       estimated seconds (the same model) all of hurwitz's Routh rows and\n"
+          "                                 compositions together may take; the minor whose step would\n"
+          "                                 cross it and the later ones are not expanded (default 6)\n"
           "  --list-analyses                the analyses, their options and the models they apply to\n"
           "  --help, --version\n"
           "exit status: 0 done; 1 an expectation or claim failed; 2 bad input or usage;\n"
@@ -364,15 +368,17 @@ static int parse_arg(cli_t *cli, int argc, char **argv, int *i)
         if (a[2] == 't') cli->opt.time_limit = (double) v;
         else cli->opt.memory_limit = v;
         (*i)++;
-    } else if (strcmp(a, "--row-share") == 0) {
-        /* the per-row share of the not-expanded mode of `hurwitz` (issue 17) */
+    } else if (strcmp(a, "--row-share") == 0 || strcmp(a, "--expand-seconds") == 0) {
+        /* the per-row share and the expansion budget of the not-expanded
+         * mode of `hurwitz` (issue 17) */
         char *end = NULL;
         double v = 0.0;
         if (*i + 1 < argc) v = strtod(argv[*i + 1], &end);
         if (*i + 1 >= argc || argv[*i + 1][0] == '\0' || *end != '\0' || !(v >= 0.0 && v <= 1e8))
             return usage_error("%s expects seconds between 0 and 100000000, found '%s'", a,
                                *i + 1 < argc ? argv[*i + 1] : "nothing", 0);
-        rs_hurwitz_set_row_seconds(v);
+        if (a[2] == 'r') rs_hurwitz_set_row_seconds(v);
+        else rs_hurwitz_set_expand_seconds(v);
         (*i)++;
     } else if (strncmp(a, "--set=", 6) == 0) cli->sets[cli->nsets++] = a + 6;
     else if (strncmp(a, "--analyse=", 10) == 0 || strncmp(a, "--analyze=", 10) == 0)

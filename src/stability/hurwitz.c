@@ -53,8 +53,19 @@
  * not be computable anyway. */
 #define RS_HURWITZ_MAX_DEGREE 256
 
-/* per-row share of the budget, seconds (rs_hurwitz_set_row_seconds) */
-static double row_seconds = 2.0;
+/* per-step share, seconds (rs_hurwitz_set_row_seconds); < 0: none set, then
+ * the expansions are bounded by the expansion budget alone and the
+ * factorisations by RS_HURWITZ_FACTOR_SHARE */
+static double row_seconds = -1.0;
+
+/* the factorisations' share when no row share is set (the share's default
+ * before the expansion budget, issue 17) */
+#define RS_HURWITZ_FACTOR_SHARE 2.0
+
+/* expansion budget, seconds (rs_hurwitz_set_expand_seconds); < 0: the
+ * default, RS_HURWITZ_EXPAND_SECONDS when no row share is set, none when
+ * one is (so --row-share alone works as before) */
+static double expand_seconds = -1.0;
 
 double
 rs_hurwitz_set_row_seconds(double seconds)
@@ -62,6 +73,54 @@ rs_hurwitz_set_row_seconds(double seconds)
     double old = row_seconds;
     row_seconds = seconds;
     return old;
+}
+
+double
+rs_hurwitz_set_expand_seconds(double seconds)
+{
+    double old = expand_seconds;
+    expand_seconds = seconds;
+    return old;
+}
+
+/* the share one expansion step (a Routh row, a composition) may take */
+static double
+_step_share(void)
+{
+    return row_seconds >= 0.0 ? row_seconds : HUGE_VAL;
+}
+
+/* the budget all expansion steps of one rs_hurwitz_compute* share */
+static double
+_expand_total(void)
+{
+    if (expand_seconds >= 0.0)
+        return expand_seconds;
+    return row_seconds >= 0.0 ? HUGE_VAL : RS_HURWITZ_EXPAND_SECONDS;
+}
+
+/* 1 if the expansion step what (of D_k) estimated at est seconds may be
+ * taken: within the step share and, with the estimates of the steps taken
+ * so far (hn->expand_estimate), within the expansion budget; then est is
+ * added to hn->expand_estimate.  Otherwise 0 and which limit stopped it
+ * into hn->stop_note.  Fixed formulas only, never the clock. */
+static int
+_step_fits(rs_hurwitz_struct *hn, const char *what, double est)
+{
+    double share = _step_share(), total = _expand_total();
+    if (est > share) {
+        snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "%s, estimated at %.3g s, is over the row share of %g s "
+                 "(--row-share)", what, est, share);
+        return 0;
+    }
+    if (hn->expand_estimate + est > total) {
+        snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "%s, estimated at %.3g s, would bring the estimated "
+                 "expansions to %.3g s, over the expansion budget of %g s (--expand-seconds)", what, est,
+                 hn->expand_estimate + est, total);
+        return 0;
+    }
+    hn->expand_estimate += est;
+    return 1;
 }
 
 /* the substitution route: 0 never, 1 by its cost estimate, 2 whenever it
@@ -132,6 +191,7 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->route = 0;
     h->limit_note[0] = '\0';
     h->stop_note[0] = '\0';
+    h->expand_estimate = 0.0;
 }
 
 static void
@@ -413,13 +473,28 @@ _scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
  * budget: then its message goes into hn->limit_note; which step the share
  * stopped goes into hn->stop_note), or with the error of an
  * interrupted product. */
+/* the substitution route's compositions, made as the rows come (below) */
+typedef struct {
+    fmpz_mpoly_struct *D;          /* the minors in the parameters */
+    const fmpz_mpoly_struct *Dg;   /* the minors over the smaller ring */
+    const rs_hurwitz_subst_struct *hs;
+    const fmpz_mpoly_ctx_struct *ctx;
+    rs_hurwitz_struct *hn;
+    slong done;                    /* D_1..D_done composed */
+    int stopped;                   /* a composition did not fit: no more */
+    int r;                         /* a composition's error, RS_OK */
+} _compose_state;
+
+static int _compose_upto(_compose_state *cs, slong k, rs_error_t err);
+
 static slong
 _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
                       slong n, const fmpz_mpoly_ctx_t ctx, int *status,
-                      rs_hurwitz_struct *hn, rs_error_t err)
+                      rs_hurwitz_struct *hn, _compose_state *cs, rs_error_t err)
 {
     slong len = n / 2 + 2, m, j, done;
     double est;
+    char what[80];
     fmpz_mpoly_struct *R = flint_malloc(3 * len * sizeof(fmpz_mpoly_struct));
     fmpz_mpoly_struct *r0 = R, *r1 = R + len, *r2 = R + 2 * len, *tmp;
     fmpz_mpoly_t t, u, pd;
@@ -456,9 +531,8 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         /* a row over its share (or what is left) is not formed: the
          * minors from D_m on stay unexpanded, honestly marked */
         est = _row_estimate(r0, r1, len, deg, ctx);
-        if (est > row_seconds) {
-            snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "the fraction-free Routh row of D_%ld, "
-                     "estimated at %.3g s, is over the row share of %g s (--row-share)", (long) m, est, row_seconds);
+        snprintf(what, sizeof(what), "the fraction-free Routh row of D_%ld", (long) m);
+        if (!_step_fits(hn, what, est)) {
             *status = RS_ERR_LIMIT;
             break;
         }
@@ -491,6 +565,13 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
         _row_split_content(r2, len, s2, ctx);
         _scaled_set(D + m - 1, r2 + 0, s2, ctx);
         done = m;
+        /* compose D_m right away: a row whose minor cannot be composed
+         * within the budget is not worth forming (the N = 7 chain's row of
+         * D_12 estimated at 2.7 s, its compositions stopping at D_9) */
+        if (cs != NULL && (_compose_upto(cs, m, err) != RS_OK || cs->stopped)) {
+            *status = RS_ERR_LIMIT;
+            break;
+        }
         tmp = r0; r0 = r1; r1 = r2; r2 = tmp;
         fmpq_swap(s0, s1);
         fmpq_swap(s1, s2);
@@ -517,10 +598,11 @@ _hurwitz_minors_routh(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a,
 static int
 _hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
                 const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn, rs_error_t err)
+                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn,
+                _compose_state *cs, rs_error_t err)
 {
     int status = RS_OK;
-    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, hn, err);
+    slong k = _hurwitz_minors_routh(D, a, n, ctx, &status, hn, cs, err);
 
     *expanded = k;
     if (status != RS_OK) {
@@ -632,40 +714,25 @@ _compose_estimate(double terms)
     return 1.7e-7 * pow(terms, 1.25);
 }
 
-/* All leading principal minors D_1..D_n into D[0..n-1] (*expanded of them;
- * the later ones zero and not expanded), over the smaller coefficient ring
- * of hurwitz_subst.c when its cost estimate is lower, otherwise directly. */
+/* Composes D_{cs->done + 1}..D_k (cs->Dg formed) back into the parameters
+ * while each fits the row share, the expansion budget and what is left of
+ * the budget; the first that does not sets cs->stopped (the later minors
+ * stay unexpanded).  Errors of a composition go into cs->r (returned). */
 static int
-_hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
-                const fmpz_mpoly_struct *a, slong n,
-                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn, rs_error_t err)
+_compose_upto(_compose_state *cs, slong k, rs_error_t err)
 {
-    rs_hurwitz_subst_t hs;
-    fmpz_mpoly_struct *Dg;
-    slong k, i;
-    int r;
+    fmpz_mpoly_struct *D = cs->D;
+    const fmpz_mpoly_struct *Dg = cs->Dg;
+    const rs_hurwitz_subst_struct *hs = cs->hs;
+    const fmpz_mpoly_ctx_struct *ctx = cs->ctx;
+    rs_hurwitz_struct *hn = cs->hn;
+    slong i;
 
-    rs_hurwitz_subst_init(hs);
-    if (subst_on)
-        rs_hurwitz_subst_find(hs, a, n, subst_on == 2, ctx);
-    *route = hs->active;
-    if (!hs->active) {
-        rs_hurwitz_subst_clear(hs, ctx);
-        return _hurwitz_minors_direct(D, expanded, a, n, ctx, hn, err);
-    }
-    Dg = flint_malloc(n * sizeof(fmpz_mpoly_struct));
-    for (i = 0; i < n; i++)
-        fmpz_mpoly_init(Dg + i, hs->gctx);
-    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, hn, err);
-    /* D_n = a_0 D_{n-1}: one product here, not a composition */
-    if (k == n)
-        k = n - 1;
-    *expanded = 0;
-    for (i = 0; i < k && r == RS_OK; i++) {
+    for (i = cs->done; i < k && cs->r == RS_OK && !cs->stopped; i++) {
         /* the composition's cost from its predicted size (the output grows
          * about geometrically: D_9, D_10, D_11 of a 6-mass chain have
          * 147 694, 362 136, 637 163 terms); over the row share or the
-         * budget, this minor and the later ones stay unexpanded */
+         * budgets, this minor and the later ones stay unexpanded */
         if (i >= 2 && fmpz_mpoly_length(D + i - 2, ctx) > 0
             && fmpz_mpoly_length(Dg + i - 1, hs->gctx) > 0
             && fmpz_mpoly_length(Dg + i - 2, hs->gctx) > 0) {
@@ -681,21 +748,74 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
             double g = (g0 / g1) * ((t1 / g1) / (t2 / g2));
             double bytes = g * t1 * (16.0 + (double) FLINT_ABS(fmpz_mpoly_max_bits(D + i - 1)) / 8.0);
             double est = _compose_estimate(FLINT_MAX(g, 1.0) * t1);
-            if (est > row_seconds) {
-                snprintf(hn->stop_note, RS_HURWITZ_NOTE_LEN, "the composition of D_%ld back into the "
-                         "parameters (about %.3g terms predicted), estimated at %.3g s, is over the row "
-                         "share of %g s (--row-share)", (long) (i + 1), FLINT_MAX(g, 1.0) * t1, est, row_seconds);
+            char what[120];
+            snprintf(what, sizeof(what), "the composition of D_%ld back into the parameters (about %.3g "
+                     "terms predicted)", (long) (i + 1), FLINT_MAX(g, 1.0) * t1);
+            if (!_step_fits(hn, what, est)) {
+                cs->stopped = 1;
                 break;
             }
             if (!_budget_fits(hn->limit_note, "the composition of a Hurwitz minor", est, bytes)) {
-                hn->stop_note[0] = '\0';   /* a later row's, if any: the budget stopped first */
+                hn->stop_note[0] = '\0';   /* the budget stopped it, not the model */
+                cs->stopped = 1;
                 break;
             }
         }
-        r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
-        if (r == RS_OK)
-            *expanded = i + 1;
+        cs->r = _subst_back(D + i, Dg + i, i + 1, hs, ctx, err);
+        if (cs->r == RS_OK)
+            cs->done = i + 1;
     }
+    return cs->r;
+}
+
+/* All leading principal minors D_1..D_n into D[0..n-1] (*expanded of them;
+ * the later ones zero and not expanded), over the smaller coefficient ring
+ * of hurwitz_subst.c when its cost estimate is lower, otherwise directly.
+ * On the substitution route each minor is composed back as soon as its row
+ * is formed, so the expansion budget is spent in the order of the minors
+ * and no row is formed whose minor could not be composed. */
+static int
+_hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
+                const fmpz_mpoly_struct *a, slong n,
+                const fmpz_mpoly_ctx_t ctx, rs_hurwitz_struct *hn, rs_error_t err)
+{
+    rs_hurwitz_subst_t hs;
+    fmpz_mpoly_struct *Dg;
+    _compose_state cs;
+    slong k, i;
+    int r;
+
+    rs_hurwitz_subst_init(hs);
+    if (subst_on)
+        rs_hurwitz_subst_find(hs, a, n, subst_on == 2, ctx);
+    *route = hs->active;
+    if (!hs->active) {
+        rs_hurwitz_subst_clear(hs, ctx);
+        return _hurwitz_minors_direct(D, expanded, a, n, ctx, hn, NULL, err);
+    }
+    Dg = flint_malloc(n * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i < n; i++)
+        fmpz_mpoly_init(Dg + i, hs->gctx);
+    cs.D = D;
+    cs.Dg = Dg;
+    cs.hs = hs;
+    cs.ctx = ctx;
+    cs.hn = hn;
+    cs.done = 0;
+    cs.stopped = 0;
+    cs.r = RS_OK;
+    r = _hurwitz_minors_direct(Dg, &k, hs->A, n, hs->gctx, hn, &cs, err);
+    /* a composition's own error first (the rows then stopped quietly) */
+    if (cs.r != RS_OK)
+        r = cs.r;
+    /* D_n = a_0 D_{n-1}: one product here, not a composition */
+    if (k == n)
+        k = n - 1;
+    /* the minors the rows did not hand over (D_1, those after a zero
+     * divisor) */
+    if (r == RS_OK)
+        r = _compose_upto(&cs, k, err);
+    *expanded = cs.done;
     if (r == RS_OK && *expanded == n - 1) {
         fmpz_mpoly_mul(D + n - 1, a + 0, D + n - 2, ctx);
         *expanded = n;
@@ -863,7 +983,7 @@ _cond_factor(rs_hurwitz_cond_struct *c, fmpz_mpoly_factor_t pre,
     if (pre != NULL) {
         fmpz_mpoly_factor_swap(c->factors, pre, ctx);
     } else if (len <= factor_terms && (len <= 64
-               || (_factor_estimate(len) <= row_seconds
+               || (_factor_estimate(len) <= (row_seconds >= 0.0 ? row_seconds : RS_HURWITZ_FACTOR_SHARE)
                && _budget_fits(note, "the factorisation of a Hurwitz condition",
                                _factor_estimate(len), 0.0)))) {
     /* gcc 12 inlines this into _add_cond and then reports FLINT 3's array
@@ -1157,11 +1277,12 @@ rs_hurwitz_compute(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zvar,
     int r = rs_hurwitz_compute_partial(h, q, zvar, sign, ctx, err);
     if (r == RS_OK && h->expanded < h->n) {
         slong k = h->expanded + 1;
+        char why[RS_HURWITZ_NOTE_LEN];
+        snprintf(why, sizeof(why), "%s", h->stop_note[0] != '\0' ? h->stop_note : h->limit_note);
         rs_hurwitz_clear(h, ctx);
         return rs_error_set(err, RS_ERR_LIMIT,
-                            "the Hurwitz minor D_%ld was not expanded within the per-row budget share "
-                            "(%g s; raise it with --row-share); this analysis needs every minor as a polynomial "
-                            "(`hurwitz` reports the unexpanded minors instead)", (long) k, row_seconds);
+                            "the Hurwitz minor D_%ld was not expanded (%s); this analysis needs every minor as "
+                            "a polynomial (`hurwitz` reports the unexpanded minors instead)", (long) k, why);
     }
     return r;
 }

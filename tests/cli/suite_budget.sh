@@ -93,6 +93,22 @@ if [ "$rc0" = 0 ] && grep -q 'D_5 > 0 (not expanded)' "$T/rs0" && [ "$rc1" = 0 ]
     ok "--row-share 0 leaves the chain's minors not expanded (the step that stopped named), 0.5 expands them"
 else fail "--row-share: exit $rc0/$rc1, $(grep -c 'not expanded' "$T/rs0")/$(grep -c 'not expanded' "$T/rs1") not-expanded lines"; fi
 
+# --expand-seconds SECONDS (issue 17, h-chain13): the budget of all expansion
+# steps together.  0 admits no step (D_2's row is the first); the default
+# (6) expands the 3-mass chain; given with --row-share both apply.
+for bad in "--expand-seconds" "--expand-seconds -1" "--expand-seconds x"; do
+    # shellcheck disable=SC2086
+    check "usage: $bad" 1 "^recstab: --expand-seconds expects seconds between 0 and 100000000" -- $bad cases/park-staggered.case
+done
+"$RS" --expand-seconds 0 "$T/chain3.case" >"$T/es0" 2>&1; rc0=$?
+"$RS" "$T/chain3.case" >"$T/es1" 2>&1; rc1=$?
+"$RS" --row-share 10 --expand-seconds 0 "$T/chain3.case" >"$T/es2" 2>&1; rc2=$?
+if [ "$rc0" = 0 ] && grep -q 'D_5 > 0 (not expanded)' "$T/es0" && [ "$rc1" = 0 ] && ! grep -q 'not expanded' "$T/es1" \
+   && grep -q '^  stopped at .*over the expansion budget of 0 s (--expand-seconds)' "$T/es0" \
+   && [ "$rc2" = 0 ] && grep -q 'over the expansion budget of 0 s' "$T/es2"; then
+    ok "--expand-seconds 0 leaves the chain's minors not expanded (the budget named), also beside --row-share; the default expands them"
+else fail "--expand-seconds: exit $rc0/$rc1/$rc2, $(grep -c 'not expanded' "$T/es0")/$(grep -c 'not expanded' "$T/es1") not-expanded lines"; fi
+
 # the determinant's uninterruptible products are estimated first (CI's fuzz_case
 # found p = P + i Q of degree 59 in four variables: P^2 + Q^2 multiplies two
 # 34 220-term polynomials, C(60, 3) terms each, seconds per product): with 5 s

@@ -1538,6 +1538,91 @@ test_chain_reproducible(void **state)
     tctx_clear(&t);
 }
 
+/* Issue 17, h-chain13: the expansion budget bounds the cost model's
+ * estimates of all expansion steps together, not each step.  The 5-mass
+ * chain under the default budget expands every minor; its model total T
+ * (h->expand_estimate, fixed formulas) is the sum of its steps, the last
+ * the composition of D_9 (D_10 = a_0 D_9 is a product, not a step).  With
+ * the budget just under T every single step still fits (each is well under
+ * T) but the sum does not: D_9 (and so D_10) must stay unexpanded, the
+ * stop note names the budget, and D_1..D_8 equal the full run's (an
+ * independent run, the minors themselves checked in test_chain_routes).
+ * Run a second time beside a CPU burner (see test_chain_reproducible): the
+ * same.  A row share set alone turns the default budget off (as before the
+ * budget existed); a budget set explicitly applies beside the share. */
+static void
+test_chain_expand_budget(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    const slong N = 5, nv = 7;
+    tctx_struct t;
+    fmpz_mpoly_t q;
+    rs_hurwitz_t full, h[3];
+    rs_error_t err;
+    slong k, run;
+    double old_e, old_r, T;
+    slong e2;
+    char want[64];
+    (void) state;
+
+    tctx_init(&t, vars, nv);
+    fmpz_mpoly_init(q, t.ctx);
+    rs_error_init(err);
+    chain_q(q, N, &t);
+    rs_hurwitz_init(full);
+    assert_int_equal(rs_hurwitz_compute_partial(full, q, nv - 1, NULL, t.ctx, err), RS_OK);
+    assert_int_equal(full->expanded, 2 * N);
+    T = full->expand_estimate;
+    assert_true(T > 0.0 && T <= RS_HURWITZ_EXPAND_SECONDS);
+    old_e = rs_hurwitz_set_expand_seconds(0.999 * T);
+    for (run = 0; run < 2; run++) {
+        pthread_t th;
+        rs_hurwitz_init(h[run]);
+        burn_stop = 0;
+        if (run > 0)
+            assert_int_equal(pthread_create(&th, NULL, burn, NULL), 0);
+        assert_int_equal(rs_hurwitz_compute_partial(h[run], q, nv - 1, NULL, t.ctx, err), RS_OK);
+        if (run > 0) {
+            burn_stop = 1;
+            pthread_join(th, NULL);
+        }
+    }
+    assert_int_equal(h[0]->expanded, 2 * N - 2);
+    assert_true(h[0]->expand_estimate <= 0.999 * T);
+    snprintf(want, sizeof(want), "over the expansion budget of %g s", 0.999 * T);
+    assert_non_null(strstr(h[0]->stop_note, "the composition of D_9"));
+    assert_non_null(strstr(h[0]->stop_note, want));
+    assert_int_equal(h[1]->expanded, h[0]->expanded);
+    assert_string_equal(h[1]->stop_note, h[0]->stop_note);
+    for (k = 0; k < h[0]->expanded; k++) {
+        assert_true(fmpz_mpoly_equal(h[0]->minors + k, full->minors + k, t.ctx));
+        assert_true(fmpz_mpoly_equal(h[1]->minors + k, full->minors + k, t.ctx));
+    }
+    /* a share and a budget given: the budget still cuts (every step is
+     * under the share of T) */
+    old_r = rs_hurwitz_set_row_seconds(T);
+    rs_hurwitz_init(h[2]);
+    assert_int_equal(rs_hurwitz_compute_partial(h[2], q, nv - 1, NULL, t.ctx, err), RS_OK);
+    e2 = h[2]->expanded;
+    rs_hurwitz_clear(h[2], t.ctx);
+    /* the share alone: the default budget is off, the share (T, over every
+     * step) cuts nothing */
+    rs_hurwitz_set_expand_seconds(-1.0);
+    rs_hurwitz_init(h[2]);
+    assert_int_equal(rs_hurwitz_compute_partial(h[2], q, nv - 1, NULL, t.ctx, err), RS_OK);
+    rs_hurwitz_set_row_seconds(old_r);
+    rs_hurwitz_set_expand_seconds(old_e);
+    assert_int_equal(e2, 2 * N - 2);
+    assert_int_equal(h[2]->expanded, 2 * N);
+    assert_string_equal(h[2]->stop_note, "");
+    for (run = 0; run < 3; run++)
+        rs_hurwitz_clear(h[run], t.ctx);
+    rs_hurwitz_clear(full, t.ctx);
+    rs_error_clear(err);
+    fmpz_mpoly_clear(q, t.ctx);
+    tctx_clear(&t);
+}
+
 /* The substitution route (hurwitz_subst.c, issue 17) against the direct
  * fraction-free Routh route: for the 2-, 3- and 4-mass chains both must give
  * the same polynomials D_1..D_n (the direct route is itself checked against
@@ -1828,6 +1913,7 @@ main(void)
         cmocka_unit_test(test_chain_positive),
         cmocka_unit_test(test_chain_not_expanded),
         cmocka_unit_test(test_chain_reproducible),
+        cmocka_unit_test(test_chain_expand_budget),
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
         cmocka_unit_test(test_chain_unfactored),
