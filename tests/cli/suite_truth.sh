@@ -197,6 +197,12 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/never-sympy-p6.case
     check "SymPy p6: hurwitz never stable, b0 > 0 against -b0 > 0 in both branches" '["never stable",true,true,2,true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, (.branches | length), (.never | test("branch 1: the conditions b0 > 0 and -b0 > 0 contradict.*branch 2: the conditions -b0 > 0 and b0 > 0 contradict"))]')"
+    # jury on p6 (h-truth6): the table's conditions hide D_2 = 0 from rs_conds_never; the
+    # bilinear image's never (hurwitz's route, same p) is jury's answer, and its conditions
+    # agree with the table's at every sample point (was "stable iff" an empty set)
+    check "SymPy p6: jury never stable through the bilinear image, the two routes agree" \
+        '["never stable","bilinear","hurwitz",true,true,true]' \
+        "$(jfield $C 1 '| [.verdict, .never_from, .cross_route.never_proved_by, .cross_route.agree, .sample_check.agree, .sample_check.never_confirmed]')"
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
