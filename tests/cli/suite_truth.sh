@@ -203,6 +203,11 @@ if command -v jq >/dev/null 2>&1; then
     check "SymPy p6: jury never stable through the bilinear image, the two routes agree" \
         '["never stable","bilinear","hurwitz",true,true,true]' \
         "$(jfield $C 1 '| [.verdict, .never_from, .cross_route.never_proved_by, .cross_route.agree, .sample_check.agree, .sample_check.never_confirmed]')"
+    # conditions reduced to constants name their coefficient (h-truth6, by hand in the case)
+    C=cases/truth/hurwitz-stripped-constant.case
+    check "hurwitz: 1 > 0 / -1 > 0 said with a_2 = (a + 1)^2, a_0 = -(a - 1)^2" \
+        '["never stable",true,true,"0 > 0"]' \
+        "$(jfield $C 0 '| [.verdict, (.conditions[0] | startswith("a_2 = a^2 + 2*a + 1 > 0, i.e. 1 > 0 once (a + 1)^2")), (.conditions[1] | startswith("a_0 = -a^2 + 2*a - 1 > 0, i.e. -1 > 0 once (a - 1)^2")), .conditions[2]]')"
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
