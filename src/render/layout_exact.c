@@ -218,6 +218,8 @@ void rs_render_charpoly(rs_render_t *r, const json_t *o)
     if (removed > 0) rs_render_linef(r, "removed", "lambda^%lld (roots at 0) divided out", removed);
     rs_render_line(r, "content", "%s (det = content * lambda^k * p)", js(o, "content"));
     rs_render_line(r, "param factor", "%s (common factor of all coefficients)", js(o, "param_content"));
+    rs_render_line(r, "verdict", "%s", js(o, "status"));
+    rs_render_line(r, "singular", "%s", js(o, "singular"));
     rs_render_assigned(r, o);
     rs_render_string_list(r, "assuming", json_object_get(o, "nonzero_assumptions"), ", ");
 

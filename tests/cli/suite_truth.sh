@@ -208,6 +208,15 @@ if command -v jq >/dev/null 2>&1; then
     check "hurwitz: 1 > 0 / -1 > 0 said with a_2 = (a + 1)^2, a_0 = -(a - 1)^2" \
         '["never stable",true,true,"0 > 0"]' \
         "$(jfield $C 0 '| [.verdict, (.conditions[0] | startswith("a_2 = a^2 + 2*a + 1 > 0, i.e. 1 > 0 once (a + 1)^2")), (.conditions[1] | startswith("a_0 = -a^2 + 2*a - 1 > 0, i.e. -1 > 0 once (a - 1)^2")), .conditions[2]]')"
+    # det A drops a degree at the set value (h-truth6, by hand in the case): every route singular
+    C=cases/truth/degree-drop-charpoly-modes.case
+    check "degree drop: stability, charpoly, modes, simulate singular (charpoly and modes said nothing)" \
+        '["singular","singular","singular","singular"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].status, .[2].status, .[3].verdict.status]')"
+    C=cases/truth/simulate-dead-beat.case
+    check "dead-beat p = lambda: simulate gives the exact verdict stable (was growth undefined, no verdict)" \
+        '["stable","stable",null]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].verdict.status, .[1].growth]')"
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
