@@ -217,6 +217,11 @@ if command -v jq >/dev/null 2>&1; then
     check "dead-beat p = lambda: simulate gives the exact verdict stable (was growth undefined, no verdict)" \
         '["stable","stable",null]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].verdict.status, .[1].growth]')"
+    # a fixed root outside over Q(i) times (lambda - a) (h-truth6, by hand in the case): never
+    C=cases/truth/complex-never-root-outside.case
+    check "Q(i), root 2i outside: jury and hurwitz never stable, samples agree (was stable iff)" \
+        '[["never stable",true,"conditions"],["never stable",true,"conditions"]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, .sample_check.agree, .never_from])')"
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"

@@ -285,8 +285,8 @@ def part_routes(rng, count):
                 bad.append("%s cross_route disagrees at %s" % (name, cr.get("point")))
             if not never and not planted_stable:
                 weak += 1
-                print("weak %s: %s says '%s' where the planted part is %s (never stable is the truth)"
-                      % (tag, name, v, status))
+                print("weak %s: %s says '%s' where the planted part is %s (never stable is the truth) case %s"
+                      % (tag, name, v, status, T.save_failing(text3, tag + "-weak")))
         reg = T.find(doc, "region")
         if reg is not None and reg.get("intervals") is not None:
             for probe in (F(0), F(1, 2), F(-1, 2), F(1), F(-1), F(2), F(-3)):
