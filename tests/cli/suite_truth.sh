@@ -285,6 +285,13 @@ if command -v python3 >/dev/null 2>&1; then
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth5.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
+    # sixth batch (tests/truth/truth6.py, h-truth6): planted roots (rational, +-1, circle
+    # pairs, conjugate pairs, u +- v sqrt 2, over Q(i)) against stability, jury, hurwitz,
+    # routh, radius, modes, simulate, claim, at a set parameter and symbolic, and region
+    for spec in "routes 2 3" "systems 2 4"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth6.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
 else
     ok "skipped the random planted truths: no python3"
 fi

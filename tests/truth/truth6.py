@@ -18,10 +18,10 @@ recstab (Fractions / Gaussian rationals; no recstab output feeds an expectation)
            says never on a stable planted part is wrong; one that cannot prove never is
            counted as "weak" (not a failure: the conditions may still be empty), and its
            sample check and cross_route must agree.
-  systems  x[n+1] = M x[n], M = S J S^-1 with J block diagonal: semisimple repeated
-           circle eigenvalues (+1, -1, rotations twice: marginal), Jordan blocks on the
-           circle (unstable), inside / outside blocks; stability, jury, routh, modes
-           count, simulate verdict, claim bounded.
+  systems  x[n+1] = M x[n] (eq lines), M = S J S^-1 with J block diagonal: semisimple
+           repeated circle eigenvalues (+1, -1, rotations twice: marginal), Jordan blocks on
+           the circle (unstable), inside (also Jordan) / outside / complex blocks; the same
+           routes as `routes` at the point (a system's counts are det A's).
 
 Usage: truth6.py PART SEED COUNT   (PART: routes, systems)
 prints "ok ..." / "FAIL ..." / "weak ..." lines.
@@ -302,7 +302,73 @@ def part_routes(rng, count):
 
 
 def part_systems(rng, count):
-    T.part_jordan(rng, count)
+    """x[n+1] = M x[n], M = S J S^-1: every route against J's planted eigenvalues"""
+    k = 0
+    while k < count:
+        blocks, roots = [], []
+        defective = False
+        for kd in rng.sample(["one", "minus", "rot", "in", "in2", "out", "cin"], rng.randint(1, 3)):
+            sem = rng.random()
+            if kd in ("one", "minus"):
+                v = F(1) if kd == "one" else F(-1)
+                if sem < 0.5:
+                    blocks += [[[v]], [[v]]]                 # semisimple double: marginal
+                    roots += [complex(v)] * 2
+                elif sem < 0.8:
+                    blocks.append([[v]])
+                    roots.append(complex(v))
+                else:
+                    blocks.append([[v, 1], [0, v]])          # Jordan block on the circle
+                    roots += [complex(v)] * 2
+                    defective = True
+            elif kd == "rot":
+                t = rand_frac(rng, -3, 3) or F(1, 2)
+                c, sn = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+                R = [[c, -sn], [sn, c]]
+                reps = 2 if sem < 0.5 else 1
+                blocks += [R] * reps
+                roots += [complex(c, sn), complex(c, -sn)] * reps
+            elif kd in ("in", "in2"):
+                v = rand_frac(rng, -1, 1) * F(9, 10)
+                blocks.append([[v]] if kd == "in" else [[v, 1], [0, v]])
+                roots += [complex(v)] * (1 if kd == "in" else 2)
+            elif kd == "cin":
+                a, b = rand_frac(rng, -1, 1) * F(1, 2), rand_frac(rng, -1, 1) * F(1, 2) or F(1, 3)
+                blocks.append([[a, -b], [b, a]])
+                roots += [complex(a, b), complex(a, -b)]
+            else:
+                v = rng.choice([F(3, 2), F(-5, 4), F(2)])
+                blocks.append([[v]])
+                roots.append(complex(v))
+        rng.shuffle(blocks)
+        J = T.block_diag(blocks)
+        n = len(J)
+        if n > 6:
+            continue
+        S, Si = T.rand_invertible(rng, n)
+        M = T.mat_mul(T.mat_mul(S, J), Si)
+        inside = sum(1 for z in roots if abs(z) < 1 - 1e-12)
+        out = sum(1 for z in roots if abs(z) > 1 + 1e-12)
+        on = len(roots) - inside - out
+        status = "unstable" if out or defective else ("marginal" if on else "stable")
+        rho2 = max(abs(z) ** 2 for z in roots)
+        names = ["x%d" % (i + 1) for i in range(n)]
+        body = "unknown " + " ".join(names) + "\n" + "".join(
+            "eq %s[n+1] = %s\n" % (names[i], " + ".join("(%s)*%s[n]" % (M[i][j], names[j]) for j in range(n)))
+            for i in range(n))
+        text = "title planted system\n%s%s" % (body, ANALYSES)
+        tag = "systems-%d" % k
+        k += 1
+        rc, doc, err = T.run(text, ["--time-limit", "30"])
+        if rc not in (0, 1) or doc is None:
+            fail("%s: exit %d (%s)" % (tag, rc, err.strip()[:200]), text, tag)
+            continue
+        bad = []
+        check_point(doc, (status, inside, on, out), roots, rho2, bad)
+        if bad:
+            fail("%s: %s" % (tag, "; ".join(bad)), text, tag)
+        else:
+            print("ok %s: %s (%d x %d)" % (tag, status, n, n))
 
 
 def main():
