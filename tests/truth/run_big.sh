@@ -25,7 +25,7 @@ export RS
 total_fail=0
 for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
             symcond symmat rk builders limit radmat map cosim zeros circle lmm3 algclaim simlimit \
-            radius lead implicit textbook circle5 hostile; do
+            radius lead implicit textbook circle5 hostile routes systems; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     script=tests/truth/truth.py
@@ -33,6 +33,7 @@ for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregi
     case $part in zeros|circle|lmm3|algclaim|simlimit) script=tests/truth/truth3.py ;; esac
     case $part in radius|lead|implicit) script=tests/truth/truth4.py ;; esac
     case $part in textbook|circle5|hostile) script=tests/truth/truth5.py ;; esac
+    case $part in routes|systems) script=tests/truth/truth6.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
         out=$(python3 "$script" "$part" "$s" "$n" 2>&1)
