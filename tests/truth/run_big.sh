@@ -18,6 +18,17 @@
 # circle 1 300 and hostile (41 inputs): 369 cases, 0 failed after the fixes; before them nest-200
 # (100 parentheses rejected as "over 200") failed, and the hunt's hand probes found hurwitz
 # "stable" at singular set points and exit 2 where det A vanishes at set values.
+# truth6.py (h-truth6, 2026-11-27, 2 cores shared with 4 other jobs): `truth6.py routes S 120` for
+# S = 11, 12 and 106 of seed 13 (at 9800f11's parent d21816e, before the Q(i) fix): 347 planted
+# cases, 4 with jury and hurwitz over Q(i) saying "stable iff" an empty condition set in a
+# (fixed in 9800f11), 4 with simulate giving no verdict on a dead-beat p = lambda (fixed in
+# d21816e), 2 planting bugs of the script (fixed); 441 + 536 s wall per seed.  After the
+# fixes: routes 31 and 32 (100 each) and 23 of seed 33: 223 cases, 0 failed, 0 weak (466 s
+# wall for seed 31); `truth6.py systems S 100` for S = 51..54: 400 cases, 8 failed, all with
+# a zero row or column of M (det A drops that root at 0: counts only, the verdicts agree;
+# now skipped by the script); truth.py's jordan through truth6 (seeds 41..43): 352, 0 failed.
+# CPU: /usr/bin/time reports ~1 s user per 100 recstab runs, which undercounts (recstab's
+# workers are not reaped into the parent's rusage); the wall figures above are the measure.
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
