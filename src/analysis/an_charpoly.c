@@ -39,7 +39,11 @@ static int charpoly_real(rs_run_t *run, const rs_an_req_t *req)
     rs_assign_free(a, n);
     /* det A identically 0 at the set values: singular, as stability says */
     if (r != RS_OK) return rs_run_failed_or_vanishing(run, r, v, "charpoly");
-    json_array_append_new(run->results, rs_charpoly_json(v));
+    {
+        json_t *o = rs_charpoly_json(v);
+        if (v->singular) rs_json_set_singular_step(o);   /* the degree drops here: as stability says */
+        json_array_append_new(run->results, o);
+    }
     return RS_OK;
 }
 

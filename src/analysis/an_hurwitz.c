@@ -2,8 +2,10 @@
  * conditions of q(z), factored, checked at sample points. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "analysis/registry.h"
 #include "analysis/an_qd.h"
+#include "util/polyfmt.h"
 
 /* Lienard-Chipart (the stated conditions) and Hurwitz's full criterion (every
  * D_k of the rational Hurwitz matrix at the point, rs_hurwitz_or_full_at)
@@ -85,6 +87,37 @@ static int hurwitz_dead_beat(rs_run_t *run, const rs_variant_t *v)
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
     return r;
+}
+
+/* "a_2 = a^2 + 2*a + 1 > 0, i.e. 1 > 0 once (a + 1)^2 is taken out (...)"
+ * for a condition whose factors all went (even powers kept as != 0, factors
+ * of one sign under the assumptions dropped); a static buffer, used at once */
+static const char *hurwitz_constant_line(const rs_hurwitz_cond_struct *c, const rs_scheme_struct *s)
+{
+    static char line[1200];
+    char *red = rs_polyfmt_fmpz_mpoly(c->reduced, (const char **) s->vars, s->zctx);
+    size_t at;
+    slong k;
+    if (fmpz_mpoly_length(c->poly, s->zctx) <= 40) {
+        char *full = rs_polyfmt_fmpz_mpoly(c->poly, (const char **) s->vars, s->zctx);
+        snprintf(line, sizeof line, "%s = %s > 0, i.e. %s > 0 once ", c->origin, full, red);
+        free(full);
+    } else {
+        snprintf(line, sizeof line, "%s > 0, i.e. %s > 0 once ", c->origin, red);
+    }
+    for (k = 0; k < c->factors->num; k++) {
+        char *f = rs_polyfmt_fmpz_mpoly(c->factors->poly + k, (const char **) s->vars, s->zctx);
+        slong e = fmpz_get_si(c->factors->exp + k);
+        at = strlen(line);
+        if (e > 1) snprintf(line + at, sizeof line - at, "%s(%s)^%ld", k > 0 ? " " : "", f, (long) e);
+        else snprintf(line + at, sizeof line - at, "%s(%s)", k > 0 ? " " : "", f);
+        free(f);
+    }
+    at = strlen(line);
+    snprintf(line + at, sizeof line - at, " %s taken out (even powers are kept as != 0, factors of one sign "
+             "under the assumptions dropped)", c->factors->num > 1 ? "are" : "is");
+    free(red);
+    return line;
 }
 
 int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
@@ -193,6 +226,11 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             char line[64];
             snprintf(line, sizeof line, "%s > 0 (not expanded)", c->origin);
             json_array_append_new(conds, json_string(line));
+        } else if (fmpz_mpoly_is_fmpz(c->reduced, s->zctx) && !fmpz_mpoly_is_fmpz(c->poly, s->zctx)) {
+            /* a bare "1 > 0" does not say which coefficient it was: the
+             * condition before its factors were taken out (h-truth6) */
+            json_array_append_new(conds, json_string(hurwitz_constant_line(c, s)));
+            json_decref(jline);
         } else {
             /* rs_cond_string's text; the cofactor of a condition too large
              * for a full factorisation (hurwitz.h) is said to be one in words */

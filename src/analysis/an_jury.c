@@ -60,6 +60,66 @@ static int jury_conds_holds(const void *data, fmpq *const *pt, const rs_scheme_s
     return ok;
 }
 
+/* The second exact route to the same question (h-truth6): the
+ * Lienard-Chipart conditions of the bilinear image q(z) = (z - 1)^n
+ * p((z + 1)/(z - 1)), hurwitz's code on the same p.  Both describe the set
+ * where every |lambda| < 1, so at each sample point they must agree (else
+ * exit 3), and a "never" proved by either is the answer of both.  Only for
+ * p of at most this many terms: the minors of a large q cost more than the
+ * table (issue 17's chains) */
+#define JURY_CROSS_MAX_TERMS 400
+
+typedef struct {
+    const jury_conds_t *jc;
+    const rs_hurwitz_or_struct *hb;   /* NULL: no second route */
+    const rs_run_t *run;
+    json_t *bad;                      /* the first point where the routes differ */
+    int table_says;
+    slong points;
+} jury_cross_t;
+
+static int jury_conds_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s);
+
+static int jury_cross_holds(const void *data, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    jury_cross_t *w = (jury_cross_t *) data;   /* our own, writable */
+    int t = jury_conds_holds(w->jc, pt, s), h;
+    slong k;
+    if (w->hb == NULL || t < 0) return t;
+    h = rs_hurwitz_or_holds(w->hb, pt, s->zctx);
+    if (h < 0) return t;
+    w->points++;
+    if (h != t && w->bad == NULL) {
+        w->bad = json_object();
+        w->table_says = t;
+        for (k = 0; k < w->run->c->nparams && k < s->nvars; k++)
+            json_object_set_new(w->bad, w->run->c->params[k].name, rs_json_fmpq(pt[k]));
+    }
+    return t;
+}
+
+/* hb := the bilinear image's branches; 1 if computed, 0 if skipped (too
+ * large, or hurwitz's code stopped: the table's answer stands alone, said in
+ * cross_route.skipped) */
+static int jury_cross_route(rs_hurwitz_or_t hb, rs_run_t *run, const rs_variant_t *v, json_t *cr)
+{
+    fmpz_mpoly_t qz;
+    int r;
+    if (fmpz_mpoly_length(v->cp->p, v->s->zctx) > JURY_CROSS_MAX_TERMS) {
+        json_object_set_new(cr, "skipped", json_string("p has too many terms for a second symbolic route"));
+        return 0;
+    }
+    fmpz_mpoly_init(qz, v->s->zctx);
+    r = rs_run_hurwitz_or(hb, run, v, qz);
+    fmpz_mpoly_clear(qz, v->s->zctx);
+    if (r != RS_OK) {
+        json_object_set_new(cr, "skipped", json_string(run->err->msg));
+        rs_error_init(run->err);   /* the table's answer goes on */
+        return 0;
+    }
+    return 1;
+}
+
 /* delta_k with more than rs_jury_factor_whole_terms() terms is factored
  * through its known factors a_k - a_0 and a_k + a_0 (issue 17: row 5 of the
  * 4-mass chain's table has a 229 723-term delta whose whole factorisation
@@ -305,12 +365,55 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             "all |lambda| < 1 iff every lead^2 - const^2 > 0 (Schur 1917, strict inequalities: exact for every "
             "value; where the leading coefficient of p vanishes the first condition fails)"));
         char why[1100];
+        rs_hurwitz_or_t hb;
+        json_t *cr = json_pack("{s:s}", "with", "hurwitz (Lienard-Chipart of the bilinear image q(z))");
+        jury_cross_t w = {&jc, NULL, run, NULL, 0, 0};
+        rs_hurwitz_or_init(hb);
+        if (jury_cross_route(hb, run, v, cr)) w.hb = hb;
         /* a set that can never all hold: said as the singular row says it */
         if (json_object_get(o, "never") == NULL && rs_run_conds_never(why, 1000, run, jc.poly, jc.ne, jc.n, s)) {
             strcat(why, "; never asymptotically stable");
             rs_json_set_never_conditions(o, why);
+            json_object_set_new(cr, "never_proved_by", json_string("jury"));
+        } else if (json_object_get(o, "never") != NULL) {
+            json_object_set_new(cr, "never_proved_by", json_string("jury"));
         }
-        r = rs_run_sample_check_never(run, v, jury_conds_holds, &jc, o);
+        if (w.hb != NULL) {
+            /* the bilinear image's own "never" (SymPy's p6: D_2 = 0
+             * identically, while the table's conditions admit no relation
+             * rs_conds_never sees): the answer of this route too, the table's
+             * conditions kept and checked against it at the sample points */
+            json_t *ho = json_object();
+            int hv = rs_json_hurwitz_or(ho, hb, s);
+            if (hv >= 0 && rs_run_hurwitz_or_never(run, ho, hb, s)) hv = -1;
+            if (hv < 0) {
+                const char *hw = json_string_value(json_object_get(ho, "never"));
+                json_object_set_new(cr, "never", json_string(hw != NULL ? hw : "a condition never holds"));
+                if (json_object_get(o, "never") == NULL) {
+                    snprintf(why, sizeof why, "the bilinear image q(z) = (z - 1)^n p((z + 1)/(z - 1)) (hurwitz's "
+                             "route, the same question) proves it: %s", hw != NULL ? hw : "a condition never holds");
+                    rs_json_set_never_conditions(o, why);
+                    json_object_set_new(o, "never_from", json_string("bilinear"));
+                    json_object_set_new(cr, "never_proved_by", json_string("hurwitz"));
+                } else {
+                    json_object_set_new(cr, "never_proved_by", json_string("both"));
+                }
+            }
+            json_decref(ho);
+        }
+        r = rs_run_sample_check_never(run, v, jury_cross_holds, &w, o);
+        if (w.hb != NULL) {
+            json_object_set_new(cr, "points", json_integer(w.points));
+            json_object_set_new(cr, "agree", json_boolean(w.bad == NULL));
+            if (w.bad != NULL) {
+                /* two theorems about the same set: a bug */
+                json_object_set_new(cr, "point", w.bad);
+                json_object_set_new(cr, "table_says", json_string(w.table_says ? "stable" : "not stable"));
+                run->outcome |= RS_OUTCOME_INCONSISTENT;
+            }
+        }
+        rs_hurwitz_or_clear(hb, s->zctx);
+        json_object_set_new(o, "cross_route", cr);
     } else {
         json_decref(rows);
         json_decref(conds);

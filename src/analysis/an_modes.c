@@ -230,6 +230,8 @@ int rs_an_modes(rs_run_t *run, const rs_an_req_t *req)
     if (r == RS_OK && !qd) {
         json_object_set_new(o, "decided_by", json_string("certified"));
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
+        /* det A drops its degree here: the modes are the reduced p's, the step singular (h-truth6) */
+        if (v->singular) rs_json_set_singular_step(o);
         json_array_append_new(run->results, o);
     } else {
         json_decref(o);

@@ -125,6 +125,10 @@ int rs_run_variant_or_vanishing(rs_variant_t **v, int *done, rs_run_t *run, cons
  * identically there) the `what` result of rs_run_emit_vanishing and RS_OK:
  * `return rs_run_failed_or_vanishing(run, r, v, "modes");` */
 int rs_run_failed_or_vanishing(rs_run_t *run, int r, const rs_variant_t *v, const char *what);
+/* "status": "singular" and the reason, as stability says it, for a result
+ * at set values where det A drops its degree in lambda (v->singular)
+ * without vanishing: charpoly and modes print p of the reduced degree */
+void rs_json_set_singular_step(json_t *o);
 
 json_t *rs_json_fmpq(const fmpq_t q);
 json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);

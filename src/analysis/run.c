@@ -917,6 +917,14 @@ static json_t *circle_roots_json(const rs_semisimple_t ss)
     return arr;
 }
 
+void rs_json_set_singular_step(json_t *o)
+{
+    json_object_set_new(o, "status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
+    json_object_set_new(o, "singular", json_string(
+        "the leading coefficient of det A(lambda) vanishes here: the implicit step cannot be solved "
+        "(the counts are those of the reduced polynomial)"));
+}
+
 int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const slong *vars,
                    const fmpq *vals, slong nv, const fmpz_poly_t p, const rs_rootcount_t rc,
                    int singular, json_t *o)
@@ -925,12 +933,7 @@ int rs_run_verdict(rs_status_t *st, rs_run_t *run, const rs_scheme_t s, const sl
     int r = RS_OK;
     if (singular) {
         *st = RS_STATUS_SINGULAR;
-        if (o != NULL) {
-            json_object_set_new(o, "status", json_string(rs_status_name(*st)));
-            json_object_set_new(o, "singular", json_string(
-                "the leading coefficient of det A(lambda) vanishes here: the implicit step cannot be solved "
-                "(the counts are those of the reduced polynomial)"));
-        }
+        if (o != NULL) rs_json_set_singular_step(o);
         return RS_OK;
     }
     rs_semisimple_init(ss);

@@ -218,6 +218,8 @@ void rs_render_charpoly(rs_render_t *r, const json_t *o)
     if (removed > 0) rs_render_linef(r, "removed", "lambda^%lld (roots at 0) divided out", removed);
     rs_render_line(r, "content", "%s (det = content * lambda^k * p)", js(o, "content"));
     rs_render_line(r, "param factor", "%s (common factor of all coefficients)", js(o, "param_content"));
+    rs_render_line(r, "verdict", "%s", js(o, "status"));
+    rs_render_line(r, "singular", "%s", js(o, "singular"));
     rs_render_assigned(r, o);
     rs_render_string_list(r, "assuming", json_object_get(o, "nonzero_assumptions"), ", ");
 
@@ -568,6 +570,15 @@ void rs_render_jury(rs_render_t *r, const json_t *o)
         /* with "never" only: the other symbolic reports stay as they were */
         if (js(o, "never") != NULL) rs_render_line(r, "verdict", "%s", js(o, "verdict"));
         rs_render_line(r, "route", "%s", js(o, "route_reason"));
+        /* the second exact route (hurwitz's on the bilinear image) said only
+         * when it disagrees at a point: the run exits 3 */
+        {
+            const json_t *cr = json_object_get(o, "cross_route");
+            if (json_is_false(json_object_get(cr, "agree")))
+                rs_render_linef(r, "disagree", "%s: the Schur-Cohn conditions say %s at a sample point, the bilinear "
+                               "image's Lienard-Chipart conditions the opposite (a bug: both are exact)",
+                               js(cr, "with"), js(cr, "table_says"));
+        }
         not_expanded(r, o);
         if (js(o, "over") != NULL && json_object_get(o, "inside") != NULL) rs_render_count(r, o, RS_RENDER_TEXT);
         rs_render_line(r, "note", "%s", js(o, "note"));

@@ -110,6 +110,8 @@ void rs_render_modes(rs_render_t *r, const json_t *o)
         }
     }
     if (zeros > 0) rs_render_linef(r, "roots at 0", "%zu (no continuous equivalent)", zeros);
+    rs_render_line(r, "verdict", "%s", rs_render_jstr(o, "status"));
+    rs_render_line(r, "singular", "%s", rs_render_jstr(o, "singular"));
     if (json_object_get(o, "exact_check") != NULL) {
         /* over Q(i) or Q(sqrt d): p's own roots, their moduli against the exact counts */
         const json_t *ck = json_object_get(o, "exact_check"), *at = json_object_get(o, "at");

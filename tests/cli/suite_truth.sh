@@ -197,6 +197,31 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/never-sympy-p6.case
     check "SymPy p6: hurwitz never stable, b0 > 0 against -b0 > 0 in both branches" '["never stable",true,true,2,true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, (.branches | length), (.never | test("branch 1: the conditions b0 > 0 and -b0 > 0 contradict.*branch 2: the conditions -b0 > 0 and b0 > 0 contradict"))]')"
+    # jury on p6 (h-truth6): the table's conditions hide D_2 = 0 from rs_conds_never; the
+    # bilinear image's never (hurwitz's route, same p) is jury's answer, and its conditions
+    # agree with the table's at every sample point (was "stable iff" an empty set)
+    check "SymPy p6: jury never stable through the bilinear image, the two routes agree" \
+        '["never stable","bilinear","hurwitz",true,true,true]' \
+        "$(jfield $C 1 '| [.verdict, .never_from, .cross_route.never_proved_by, .cross_route.agree, .sample_check.agree, .sample_check.never_confirmed]')"
+    # conditions reduced to constants name their coefficient (h-truth6, by hand in the case)
+    C=cases/truth/hurwitz-stripped-constant.case
+    check "hurwitz: 1 > 0 / -1 > 0 said with a_2 = (a + 1)^2, a_0 = -(a - 1)^2" \
+        '["never stable",true,true,"0 > 0"]' \
+        "$(jfield $C 0 '| [.verdict, (.conditions[0] | startswith("a_2 = a^2 + 2*a + 1 > 0, i.e. 1 > 0 once (a + 1)^2")), (.conditions[1] | startswith("a_0 = -a^2 + 2*a - 1 > 0, i.e. -1 > 0 once (a - 1)^2")), .conditions[2]]')"
+    # det A drops a degree at the set value (h-truth6, by hand in the case): every route singular
+    C=cases/truth/degree-drop-charpoly-modes.case
+    check "degree drop: stability, charpoly, modes, simulate singular (charpoly and modes said nothing)" \
+        '["singular","singular","singular","singular"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].status, .[2].status, .[3].verdict.status]')"
+    C=cases/truth/simulate-dead-beat.case
+    check "dead-beat p = lambda: simulate gives the exact verdict stable (was growth undefined, no verdict)" \
+        '["stable","stable",null]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[1].verdict.status, .[1].growth]')"
+    # a fixed root outside over Q(i) times (lambda - a) (h-truth6, by hand in the case): never
+    C=cases/truth/complex-never-root-outside.case
+    check "Q(i), root 2i outside: jury and hurwitz never stable, samples agree (was stable iff)" \
+        '[["never stable",true,"conditions"],["never stable",true,"conditions"]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, .sample_check.agree, .never_from])')"
     C=cases/truth/never-sympy-p4-nonpositive.case
     check "SymPy p4, a <= 0: hurwitz never stable, a > 0 impossible" '["never stable",true,true,["b0 > 0","a > 0"],true]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .sample_check.agree, .sample_check.never_confirmed, .conditions, (.never | startswith("no value with a <= 0 satisfies a > 0"))]')"
@@ -259,6 +284,13 @@ if command -v python3 >/dev/null 2>&1; then
     for spec in "quick 1 6"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth5.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # sixth batch (tests/truth/truth6.py, h-truth6): planted roots (rational, +-1, circle
+    # pairs, conjugate pairs, u +- v sqrt 2, over Q(i)) against stability, jury, hurwitz,
+    # routh, radius, modes, simulate, claim, at a set parameter and symbolic, and region
+    for spec in "routes 2 3" "systems 2 4"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth6.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"
