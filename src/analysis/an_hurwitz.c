@@ -22,16 +22,13 @@ static int holds_both(const void *data, fmpq *const *pt, const rs_scheme_struct 
 {
     full_check_t *fc = (full_check_t *) data;   /* our own, writable */
     int lc = rs_hurwitz_or_holds(fc->hb, pt, s->zctx), full;
-    slong k;
     if (lc < 0) return lc;
     full = rs_hurwitz_or_full_at(fc->hb, pt, s->zctx);
     if (full < 0) return lc;
     fc->points++;
     if (full != lc && fc->bad == NULL) {
-        fc->bad = json_object();
+        fc->bad = rs_run_point_json(fc->run, pt, s->nvars);
         fc->lc_says = lc;
-        for (k = 0; k < fc->run->c->nparams && k < s->nvars; k++)
-            json_object_set_new(fc->bad, fc->run->c->params[k].name, rs_json_fmpq(pt[k]));
     }
     return lc;
 }

@@ -84,16 +84,13 @@ static int jury_cross_holds(const void *data, fmpq *const *pt, const rs_scheme_s
 {
     jury_cross_t *w = (jury_cross_t *) data;   /* our own, writable */
     int t = jury_conds_holds(w->jc, pt, s), h;
-    slong k;
     if (w->hb == NULL || t < 0) return t;
     h = rs_hurwitz_or_holds(w->hb, pt, s->zctx);
     if (h < 0) return t;
     w->points++;
     if (h != t && w->bad == NULL) {
-        w->bad = json_object();
+        w->bad = rs_run_point_json(w->run, pt, s->nvars);
         w->table_says = t;
-        for (k = 0; k < w->run->c->nparams && k < s->nvars; k++)
-            json_object_set_new(w->bad, w->run->c->params[k].name, rs_json_fmpq(pt[k]));
     }
     return t;
 }

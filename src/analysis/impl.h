@@ -190,6 +190,9 @@ int *rs_run_signs(rs_run_t *run, const rs_scheme_t s);
 rs_bound_t *rs_run_bounds(rs_run_t *run);
 void rs_run_bounds_clear(rs_bound_t *b, rs_run_t *run);
 
+/* {name: value} of a sample point pt (one fmpq per parameter, the first n) */
+json_t *rs_run_point_json(const rs_run_t *run, fmpq *const *pt, slong n);
+
 /* Symbolic conditions checked against the exact point verdict
  * (src/analysis/run.c): holds(data, point, s) is 1 (stable), 0 (not) or
  * -1 (a condition vanishes: skipped) at point[v] for every variable. */

@@ -917,6 +917,15 @@ static json_t *circle_roots_json(const rs_semisimple_t ss)
     return arr;
 }
 
+json_t *rs_run_point_json(const rs_run_t *run, fmpq *const *pt, slong n)
+{
+    json_t *o = json_object();
+    slong k;
+    for (k = 0; k < run->c->nparams && k < n; k++)
+        json_object_set_new(o, run->c->params[k].name, rs_json_fmpq(pt[k]));
+    return o;
+}
+
 void rs_json_set_singular_step(json_t *o)
 {
     json_object_set_new(o, "status", json_string(rs_status_name(RS_STATUS_SINGULAR)));
