@@ -8,6 +8,17 @@
 #define js rs_render_jstr
 #define ji rs_render_jint
 
+/* d of a result over Q(sqrt d), read from its "over" ("Q(sqrt 3)"); the
+ * field is the model's, so no layout may name Q(sqrt 2) itself */
+static const char *qd_d(const json_t *o, char *buf, size_t n)
+{
+    const char *over = js(o, "over");
+    long d;
+    if (over == NULL || sscanf(over, "Q(sqrt %ld)", &d) != 1) return "d";
+    snprintf(buf, n, "%ld", d);
+    return buf;
+}
+
 /* ---- blocks shared by several layouts -------------------------------------------- */
 
 /* The values substituted ("at") and the parameters p does not depend on. */
@@ -483,7 +494,11 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
     size_t i;
     if (js(o, "p0") != NULL) {
         /* over Q(sqrt d): the Hurwitz minors of q (an_qd_conds.c) */
-        rs_render_heading(r, "Hurwitz minors of q(z) over Q(sqrt 2)", "Hurwitz minors of $q(z)$ over $\\mathbb{Q}(\\sqrt{2})$");
+        char db[24];
+        const char *d = qd_d(o, db, sizeof db);
+        rs_render_heading_begin(r);
+        rs_render_sayf(r, "Hurwitz minors of q(z) over Q(sqrt %s)", "Hurwitz minors of $q(z)$ over $\\mathbb{Q}(\\sqrt{%s})$", d);
+        rs_render_heading_end(r);
         complex_p(r, o);
         rs_render_line(r, "method", "%s", js(o, "method"));
     } else if (js(o, "over") != NULL) {
@@ -617,15 +632,20 @@ static void decided_by(rs_render_t *r, const json_t *o)
 static void stability_qd(rs_render_t *r, const json_t *o)
 {
     const json_t *sf = json_object_get(o, "stability_function");
-    rs_render_heading(r, "Stability at the given values over Q(sqrt 2)",
-                      "Stability at the given values over $\\mathbb{Q}(\\sqrt{2})$");
+    char db[24];
+    const char *d = qd_d(o, db, sizeof db);
+    rs_render_heading_begin(r);
+    rs_render_sayf(r, "Stability at the given values over Q(sqrt %s)",
+                   "Stability at the given values over $\\mathbb{Q}(\\sqrt{%s})$", d);
+    rs_render_heading_end(r);
     taken_at(r, o);
     rs_render_say(r, "The method (", "The method (");
     rs_render_esc(r, js(o, "method"));
-    rs_render_say(r, ") has coefficients in Q(sqrt 2): its stage equations carry $\\sqrt{2}$ exactly, and the "
-                  "characteristic polynomial is $p = p_0 + \\sqrt{2}\\,p_1$ with rational $p_0$, $p_1$.",
-                  ") has coefficients in $\\mathbb{Q}(\\sqrt{2})$: its stage equations carry $\\sqrt{2}$ exactly, "
-                  "and the characteristic polynomial is $p = p_0 + \\sqrt{2}\\,p_1$ with rational $p_0$, $p_1$.");
+    rs_render_sayf(r, ") has coefficients in Q(sqrt %s): its stage equations carry $\\sqrt{%s}$ exactly, and the "
+                   "characteristic polynomial is $p = p_0 + \\sqrt{%s}\\,p_1$ with rational $p_0$, $p_1$.",
+                   ") has coefficients in $\\mathbb{Q}(\\sqrt{%s})$: its stage equations carry $\\sqrt{%s}$ exactly, "
+                   "and the characteristic polynomial is $p = p_0 + \\sqrt{%s}\\,p_1$ with rational $p_0$, $p_1$.",
+                   d, d, d);
     if (sf != NULL) {
         rs_render_say(r, " On the test equation $p = D\\,\\lambda - N$ with $R = N/D$, $N = ",
                       " On the test equation $p = D\\,\\lambda - N$ with $R = N/D$, $N = ");
@@ -636,17 +656,17 @@ static void stability_qd(rs_render_t *r, const json_t *o)
         if (js(o, "abs_R_squared") != NULL) {
             rs_render_say(r, "; here $|R|^2 = ", "; here $|R|^2 = ");
             rs_render_poly(r, js(o, "abs_R_squared"));
-            rs_render_say(r, "$, compared with 1 by the exact sign in Q(sqrt 2)",
-                          "$, compared with 1 by the exact sign in $\\mathbb{Q}(\\sqrt{2})$");
+            rs_render_sayf(r, "$, compared with 1 by the exact sign in Q(sqrt %s)",
+                           "$, compared with 1 by the exact sign in $\\mathbb{Q}(\\sqrt{%s})$", d);
         }
         rs_render_say(r, ".", ".");
     } else if (js(o, "poly") != NULL) {
         rs_render_say(r, " At these values:\n\n$$p(\\lambda) = ", " At these values:\n\n$p(\\lambda) = ");
         rs_render_poly(r, js(o, "poly"));
-        rs_render_say(r, "$$\n\nSchur-Cohn's recursion with exact signs in Q(sqrt 2)(i) and the certified roots "
-                      "(Arb, $\\sqrt{2}$ as a ball) answer independently and must agree.",
-                      "$\n\nSchur--Cohn's recursion with exact signs in $\\mathbb{Q}(\\sqrt{2})(i)$ and the "
-                      "certified roots (Arb, $\\sqrt{2}$ as a ball) answer independently and must agree.");
+        rs_render_sayf(r, "$$\n\nSchur-Cohn's recursion with exact signs in Q(sqrt %s)(i) and the certified roots "
+                       "(Arb, $\\sqrt{%s}$ as a ball) answer independently and must agree.",
+                       "$\n\nSchur--Cohn's recursion with exact signs in $\\mathbb{Q}(\\sqrt{%s})(i)$ and the "
+                       "certified roots (Arb, $\\sqrt{%s}$ as a ball) answer independently and must agree.", d, d);
     }
     rs_render_sayf(r, " Verdict: **%s** (decided by exact arithmetic).\n\n",
                    " Verdict: \\textbf{%s} (decided by exact arithmetic).\n\n", js(o, "status"));
@@ -1027,7 +1047,9 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
     rs_render_line(r, "claim", "%s", js(o, "text"));
     rs_render_line(r, "status", "%s", st);
     if (json_is_array(json_object_get(o, "region"))) {
-        /* over Q(sqrt 2) (an_qd_conds.c): decided on the exact region of one parameter */
+        /* over Q(sqrt d) (an_qd_conds.c): decided on the exact region of one parameter */
+        char db[24];
+        const char *d = qd_d(o, db, sizeof db);
         if (json_object_get(o, "counterexample") != NULL) {
             rs_render_label(r, "counterexample");
             assignments(r, json_object_get(o, "counterexample"));
@@ -1039,16 +1061,16 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         rs_render_assigned(r, o);
         rs_render_heading(r, "Claim", "Claim");
         taken_at(r, o);
-        rs_render_say(r, "Claim `", "Claim \\texttt{");
-        rs_render_esc(r, js(o, "text"));
+        rs_render_say(r, "Claim ", "Claim ");
+        rs_render_code(r, js(o, "text"));   /* a code span: no escapes inside */
         if (json_object_get(o, "for_all") != NULL)   /* two free parameters: region ... for all's cells */
-            rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of one free parameter for every "
-                           "value of the other.\n\n", "}: \\textbf{%s}, decided on the exact region over "
-                           "$\\mathbb{Q}(\\sqrt{2})$ of one free parameter for every value of the other.\n\n", st);
+            rs_render_sayf(r, ": **%s**, decided on the exact region over Q(sqrt %s) of one free parameter for every "
+                           "value of the other.\n\n", ": \\textbf{%s}, decided on the exact region over "
+                           "$\\mathbb{Q}(\\sqrt{%s})$ of one free parameter for every value of the other.\n\n", st, d);
         else
-            rs_render_sayf(r, "`: **%s**, decided on the exact region over Q(sqrt 2) of the one free parameter.\n\n",
-                           "}: \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{2})$ of the one free "
-                           "parameter.\n\n", st);
+            rs_render_sayf(r, ": **%s**, decided on the exact region over Q(sqrt %s) of the one free parameter.\n\n",
+                           ": \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{%s})$ of the one free "
+                           "parameter.\n\n", st, d);
         return;
     }
     if (st && strcmp(st, "refuted") == 0) {
