@@ -1111,3 +1111,21 @@ else fail "sdirk2 region c with c complex-set: rc=$rc $(head -1 "$T/err")"; fi
 if [ "$rc" = 2 ] && grep -q "stability, radius, modes and simulate do" "$T/err"; then
     ok "sdirk2 region a at a complex c refused (exit 2), naming what runs"
 else fail "sdirk2 region a at complex c: rc=$rc $(head -1 "$T/err")"; fi
+# The field in the derivations is the model's (lead review): sdirk3's stage
+# equations carry sqrt 3 (gamma = (3 + sqrt 3)/6), so a stability, hurwitz
+# and claim derivation of it must say Q(sqrt 3) and never Q(sqrt 2); the
+# claim's text is a Markdown code span, where a backslash would be literal.
+S3="$T/s3.case"
+sed -e '/^analyse /d' -e '/^claim /d' cases/complex/sdirk3-astability.case >"$S3"
+printf 'analyse hurwitz\nclaim stable when q < 0\n' >>"$S3"
+for fmt in markdown latex; do
+    "$RS" --$fmt "$S3" >"$T/s3.$fmt" 2>"$T/err"; rc=$?
+    if [ $fmt = markdown ]; then want='over Q(sqrt 3) of the one free parameter'
+    else want='over $\mathbb{Q}(\sqrt{3})$ of the one free'; fi
+    if [ "$rc" = 0 ] && ! grep -qF 'sqrt 2' "$T/s3.$fmt" && ! grep -qF 'sqrt{2}' "$T/s3.$fmt" \
+       && grep -qF "$want" "$T/s3.$fmt" && grep -qF 'Hurwitz minors of' "$T/s3.$fmt"; then
+        ok "sdirk3 hurwitz/claim --$fmt name Q(sqrt 3)"
+    else fail "sdirk3 hurwitz/claim --$fmt: rc=$rc $(grep -n 'sqrt 2\|sqrt{2}' "$T/s3.$fmt" | head -3)"; fi
+done
+if grep -qF 'Claim `claim stable when q < 0`' "$T/s3.markdown"; then ok "claim text is a plain code span in Markdown"
+else fail "claim text in Markdown: $(grep -n '^Claim' "$T/s3.markdown" | head -2)"; fi
