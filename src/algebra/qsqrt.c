@@ -90,17 +90,20 @@ char *rs_qdpoly_get_str(const rs_qdpoly_t p, slong d, const char *var)
     for (k = 0; k <= deg; k++) {
         char *cs, term[64];
         size_t need;
+        int paren, minus;
         rs_qdpoly_get_coeff(c, p, k);
         if (rs_qd_is_zero(c)) continue;
         cs = rs_qd_get_str(c, d);
         if (k == 0) term[0] = '\0';
         else if (k == 1) snprintf(term, sizeof term, "*%s", var);
         else snprintf(term, sizeof term, "*%s^%ld", var, (long) k);
+        paren = k > 0 && !fmpq_is_zero(c->y) && !fmpq_is_zero(c->x);
+        /* a lone negative part after the first term: " - 1/3*sqrt(3)*q", not " + -1/3..." */
+        minus = len > 0 && !paren && cs[0] == '-';
         need = len + strlen(cs) + strlen(term) + 8;
         if (need > cap) { cap = 2 * need; out = flint_realloc(out, cap); }
-        len += (size_t) snprintf(out + len, cap - len, "%s%s%s%s%s", len ? " + " : "",
-                                      (k > 0 && !fmpq_is_zero(c->y) && !fmpq_is_zero(c->x)) ? "(" : "", cs,
-                                      (k > 0 && !fmpq_is_zero(c->y) && !fmpq_is_zero(c->x)) ? ")" : "", term);
+        len += (size_t) snprintf(out + len, cap - len, "%s%s%s%s%s", len ? (minus ? " - " : " + ") : "",
+                                 paren ? "(" : "", cs + minus, paren ? ")" : "", term);
         flint_free(cs);
     }
     if (len == 0) strcpy(out, "0");

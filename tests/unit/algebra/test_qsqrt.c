@@ -112,6 +112,12 @@ static void test_sdirk2_R(void **state)
     s = rs_qdpoly_get_str(N, 2, "z");
     assert_string_equal(s, "1 + (-1 + 1*sqrt(2))*z");
     flint_free(s);
+    /* a lone negative part after the first term reads as a subtraction
+     * (sdirk3's N = 1 - 1/3 sqrt(3) q + ..., by hand from its tableau) */
+    qdpoly_set(eN, "1:0 0:-1/3 -1/6:-1/6");
+    s = rs_qdpoly_get_str(eN, 3, "q");
+    assert_string_equal(s, "1 - 1/3*sqrt(3)*q + (-1/6 - 1/6*sqrt(3))*q^2");
+    flint_free(s);
     /* a rational tableau: y parts zero, the same R as the rational route (rk4: 1 + z + z^2/2 + ...) */
     assert_int_equal(rs_methods_rk_stability_named_qd(N->p0, N->p1, D->p0, D->p1, &d, "rk4"), 1);
     qdpoly_set(eN, "1:0 1:0 1/2:0 1/6:0 1/24:0");
