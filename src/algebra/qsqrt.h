@@ -148,7 +148,9 @@ typedef rs_qd_iv_struct rs_qd_iv_t[1];
 void rs_qd_iv_init(rs_qd_iv_t iv);
 void rs_qd_iv_clear(rs_qd_iv_t iv);
 int rs_qd_onestep_interval(rs_qd_iv_t iv, const rs_qdpoly_t N, const rs_qdpoly_t D, slong d, int imag);
-/* "-inf", "inf", a rational, or "root of MINPOLY in [lo, hi]" (flint_free it) */
+/* "-inf", "inf", a rational, or "root of MINPOLY in [lo, hi]" (flint_free it);
+ * the JSON writes the object of rs_an_alg_end_json instead, this string only
+ * when the enclosure does not single out one root */
 char *rs_qd_end_get_str(const rs_qd_end_struct *e);
 
 #ifdef __cplusplus

@@ -136,7 +136,7 @@ static void rational_between(fmpq_t out, const rs_alg_t *a, const rs_alg_t *b)
 
 /* JSON of an interval end: integers as numbers, other rationals and
  * algebraic numbers as {"exact", "approx"} (approx: certified digits). */
-static json_t *ralg_json(rs_alg_t *a, const char *var)
+json_t *rs_an_alg_end_json(rs_alg_t *a, const char *var)
 {
     json_t *o;
     char *s;
@@ -561,8 +561,8 @@ static void line_iv_clear(line_iv_t *iv) { rs_alg_clear(&iv->lo); rs_alg_clear(&
 static json_t *line_iv_json(line_iv_t *iv, const char *var)
 {
     if (iv->empty) return json_null();
-    return json_pack("[o,o]", iv->lo_inf ? json_string("-inf") : ralg_json(&iv->lo, var),
-                     iv->hi_inf ? json_string("inf") : ralg_json(&iv->hi, var));
+    return json_pack("[o,o]", iv->lo_inf ? json_string("-inf") : rs_an_alg_end_json(&iv->lo, var),
+                     iv->hi_inf ? json_string("inf") : rs_an_alg_end_json(&iv->hi, var));
 }
 
 static json_t *line_iv_detail(line_iv_t *iv)
@@ -2084,7 +2084,7 @@ int rs_an_astability(rs_run_t *run, const rs_an_req_t *req)
                 rs_alg_init(&a);
                 a.rational = 1;
                 fmpq_set(a.q, best);
-                lim = ralg_json(&a, "r");
+                lim = rs_an_alg_end_json(&a, "r");
                 l0 = fmpq_is_zero(best);
                 rs_alg_clear(&a);
             } else {

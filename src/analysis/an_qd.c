@@ -827,15 +827,32 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
-static json_t *end_json(const rs_qd_end_struct *e)
+/* an end in the shape astability writes over Q and Q(i) (the issue's
+ * interface): the irrational end becomes the real root of its minimal
+ * polynomial whose isolating ball meets e's enclosure */
+static json_t *end_json(const rs_qd_end_struct *e, const char *var)
 {
+    rs_alg_t *roots = NULL;
+    slong n = 0, i, hit = -1, nhit = 0;
+    json_t *o;
     if (e->inf) return json_string(e->inf < 0 ? "-inf" : "inf");
     if (fmpz_poly_degree(e->minpoly) == 1) {
         if (fmpz_is_one(fmpq_denref(e->q)) && fmpz_fits_si(fmpq_numref(e->q)))
             return json_integer(fmpz_get_si(fmpq_numref(e->q)));
         return rs_json_fmpq(e->q);
     }
-    return json_str_free(rs_qd_end_get_str(e));
+    rs_alg_roots_append(&roots, &n, e->minpoly, 0);
+    rs_alg_sort(roots, n);
+    for (i = 0; i < n; i++) {
+        rs_alg_refine(roots + i, 128);
+        if (arb_overlaps(roots[i].x, e->x)) { hit = i; nhit++; }
+    }
+    /* e's ball is certified, the roots' balls disjoint: one meets it unless
+     * e's ball is wider than the gap between two roots */
+    o = nhit == 1 ? rs_an_alg_end_json(roots + hit, var) : json_str_free(rs_qd_end_get_str(e));
+    for (i = 0; i < n; i++) rs_alg_clear(roots + i);
+    free(roots);   /* rs_alg_roots_append reallocs */
+    return o;
 }
 
 static json_t *iv_detail(const rs_qd_iv_struct *iv)
@@ -908,8 +925,8 @@ int rs_an_qd_astability(rs_run_t *run, const rs_an_req_t *req)
         char *ps = p_str(&R, name), *loc;
         json_object_set_new(o, "analysis", json_string("astability"));
         json_object_set_new(o, "param", json_string(name));
-        json_object_set_new(o, "real_interval", json_pack("[o,o]", end_json(riv->lo), end_json(riv->hi)));
-        json_object_set_new(o, "imag_interval", json_pack("[o,o]", end_json(iiv->lo), end_json(iiv->hi)));
+        json_object_set_new(o, "real_interval", json_pack("[o,o]", end_json(riv->lo, name), end_json(riv->hi, name)));
+        json_object_set_new(o, "imag_interval", json_pack("[o,o]", end_json(iiv->lo, name), end_json(iiv->hi, name)));
         json_object_set_new(o, "real_interval_detail", iv_detail(riv));
         json_object_set_new(o, "imag_interval_detail", iv_detail(iiv));
         loc = flint_malloc(strlen(ps) + strlen(name) + 64);

@@ -81,6 +81,10 @@ int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req,
  * exactly), -1 the route does not apply */
 int rs_an_astability_alpha_qd(json_t **out, json_t **ev, arb_t deg, int *inside, const rs_qdpoly_t N,
                               const rs_qdpoly_t D, slong d, rs_error_t err);
+/* an_astability.c: an interval end as astability's JSON writes it: integers
+ * as numbers, other rationals and algebraic numbers as {"exact", "minpoly",
+ * "approx", "certified"} (refines a) */
+json_t *rs_an_alg_end_json(rs_alg_t *a, const char *var);
 /* "Q(sqrt d)" for the JSON key "over" and the texts (flint_free it) */
 char *rs_an_qd_over_str(slong d);
 /* "A0 + sqrt(d)*(A1)" (A0, A1 polynomials of s without sqrt(d); flint_free

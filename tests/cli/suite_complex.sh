@@ -1073,13 +1073,16 @@ else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi
 # so the witness y = -1 the JSON gives must print (not "?"); the real
 # interval's end is the root -6 - sqrt(48) = -12.92820323027550917... of
 # x^2 + 12 x - 12 (quadratic formula), printed by its digits inside the math
-# and defined after it, never as the raw "root of ... in [..]" string.
+# and defined after it, never as the raw "root of ... in [..]" string.  The
+# JSON end is the object astability writes over Q ({"exact", "minpoly",
+# "approx", "certified"}, the issue's interface), its certified digits those
+# of -6 - sqrt 48 = -12.928203230275509174109785...
 SL=cases/complex/sdirk3-low-astability.case
 for fmt in markdown latex; do
     "$RS" --$fmt "$SL" >"$T/sl.$fmt" 2>"$T/err"; rc=$?
     if [ "$rc" = 0 ] && grep -qF 'is negative at $y = -1$' "$T/sl.$fmt" && ! grep -qF 'y = ?' "$T/sl.$fmt" \
        && grep -qF 'q \in [-12.9282032302755' "$T/sl.$fmt" && ! grep -qF '\mathit{root}' "$T/sl.$fmt" \
-       && grep -qF 'stands for the root of $x^{2}+12\,x-12$' "$T/sl.$fmt"; then
+       && grep -qF 'stands for the real root 1 (ascending) of $q^{2} + 12\,q - 12$' "$T/sl.$fmt"; then
         ok "sdirk3-low astability --$fmt: E's witness y = -1 and the end -6 - sqrt 48 written in math"
     else fail "sdirk3-low astability --$fmt: rc=$rc $(grep -n 'negative at\|interval is' "$T/sl.$fmt" | head -3)"; fi
 done
@@ -1129,3 +1132,17 @@ for fmt in markdown latex; do
 done
 if grep -qF 'Claim `claim stable when q < 0`' "$T/s3.markdown"; then ok "claim text is a plain code span in Markdown"
 else fail "claim text in Markdown: $(grep -n '^Claim' "$T/s3.markdown" | head -2)"; fi
+# the same end in the JSON: an object as over Q, the minimal polynomial
+# q^2 + 12 q - 12 and digits of -6 - sqrt(48) (by hand)
+"$RS" --json "$SL" >"$T/sl.json" 2>"$T/err"
+if python3 - "$T/sl.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+a = [r for r in d["cases"][0]["results"] if r.get("analysis") == "astability"][0]
+lo = a["real_interval"][0]
+ok = isinstance(lo, dict) and lo.get("minpoly") == "q^2 + 12*q - 12" \
+     and lo["certified"].startswith("-12.92820323027550917") and abs(lo["approx"] + 6 + 48 ** 0.5) < 1e-12
+sys.exit(0 if ok else 1)
+PY
+then ok "sdirk3-low astability JSON: the real end is {exact, minpoly, approx, certified} as over Q"
+else fail "sdirk3-low astability JSON end: $(head -c 300 "$T/sl.json")"; fi
