@@ -96,14 +96,14 @@ void rs_render_cosim_claim(rs_render_t *r, const json_t *o)
     rs_render_linef(r, "boxes", "%lld sub-boxes evaluated in ball arithmetic", rs_render_jint(o, "boxes_checked"));
     rs_render_assigned(r, o);
     rs_render_heading(r, "Claim", "Claim");
-    /* user text as code (escaped per backend: Markdown fences, LaTeX specials) */
+    /* the claim as code (Markdown fences it, LaTeX escapes its specials) */
     rs_render_code(r, js(o, "text"));
     rs_render_sayf(r, ": %s (%lld sub-boxes, Stein certificates over ball one-step maps).\n\n",
                    ": %s (%lld sub-boxes, Stein certificates over ball one-step maps).\n\n",
                    st, rs_render_jint(o, "boxes_checked"));
     if (json_object_get(o, "not_proved")) {
         rs_render_say(r, "Not proved: ", "Not proved: ");
-        rs_render_code(r, js(o, "not_proved"));
+        rs_render_esc(r, js(o, "not_proved"));   /* prose: escaped, not code */
         rs_render_say(r, ".\n\n", ".\n\n");
     }
 }
