@@ -1100,20 +1100,12 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
     slong nas = 0;
     rs_variant_t *v;
     qd_sym_t S;
-    json_t *o, *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
-           *always = json_array();
+    json_t *o, *rows, *conds, *parts, *dropped, *always;
     fmpz_mpoly_t lead;
     int r, never = 0, others = 0;
-    if (req->u.region.forall && !req->u.region.twod) return rs_an_qd_region_forall(run, req);   /* an_qd_forall.c */
-    if (req->u.region.twod) {
-        json_decref(rows); json_decref(conds); json_decref(parts); json_decref(dropped); json_decref(always);
-        char msg[400];
-        snprintf(msg, sizeof msg, "expected region NAME [at P=V, ...]: %s is not available over Q(sqrt %ld) (rk %s); "
-                 "region NAME with the other parameters set (at P=V), or jury, hurwitz and routh with them free, run",
-                 req->u.region.twod ? "region N1, N2" : "region NAME for all", (long) run->m->qd->d,
-                 run->m->qd->tableau);
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
-    }
+    /* region N1, N2 goes to an_qd_region2.c before this (an_region.c) */
+    if (req->u.region.forall) return rs_an_qd_region_forall(run, req);   /* an_qd_forall.c */
+    rows = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
     keep[0] = run->c->params[tv].name;
     rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
     r = rs_run_variant(&v, run, as, nas);
