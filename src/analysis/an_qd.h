@@ -59,6 +59,9 @@ int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *r
 /* the norms c0^2 - d c1^2 of p's leading coefficient, of its discriminant
  * and of jury's conditions (the default variant: every unset parameter
  * free) into l (rs_plist_add with tv, dom); *s the scheme of their zctx */
+/* n = c0^2 - d c1^2, the norm of c0 + sqrt(d) c1 (an_qd_conds.c): zero
+ * exactly where c0 + sqrt(d) c1 or its conjugate vanishes */
+void rs_an_qd_mpoly_norm(fmpz_mpoly_t n, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, const rs_scheme_struct *s);
 int rs_an_qd_forall_norms(rs_plist_t *l, const rs_scheme_struct **s, rs_run_t *run, const rs_an_req_t *req,
                           slong tv, const rs_bound_t *dom);
 /* the exact verdict over Q(sqrt d) of the default variant's p at the

@@ -1214,17 +1214,25 @@ int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, con
 
 /* the norm c0^2 - d c1^2 of c0 + sqrt(d) c1 into l (it vanishes wherever
  * c0 + sqrt(d) c1 does) */
+void rs_an_qd_mpoly_norm(fmpz_mpoly_t n, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, const rs_scheme_struct *s)
+{
+    fmpz_mpoly_t u;
+    fmpz_mpoly_init(u, s->zctx);
+    fmpz_mpoly_mul(u, c1, c1, s->zctx);
+    fmpz_mpoly_scalar_mul_si(u, u, s->sqrt_d, s->zctx);
+    fmpz_mpoly_mul(n, c0, c0, s->zctx);
+    fmpz_mpoly_sub(n, n, u, s->zctx);
+    fmpz_mpoly_clear(u, s->zctx);
+}
+
 static void qd_norm_add(rs_plist_t *l, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, slong tv, const rs_bound_t *dom,
                         const rs_scheme_struct *s)
 {
-    fmpz_mpoly_t t, u;
-    fmpz_mpoly_init(t, s->zctx); fmpz_mpoly_init(u, s->zctx);
-    fmpz_mpoly_mul(t, c0, c0, s->zctx);
-    fmpz_mpoly_mul(u, c1, c1, s->zctx);
-    fmpz_mpoly_scalar_mul_si(u, u, s->sqrt_d, s->zctx);
-    fmpz_mpoly_sub(t, t, u, s->zctx);
+    fmpz_mpoly_t t;
+    fmpz_mpoly_init(t, s->zctx);
+    rs_an_qd_mpoly_norm(t, c0, c1, s);
     rs_plist_add(l, t, tv, dom, s->zctx);
-    fmpz_mpoly_clear(t, s->zctx); fmpz_mpoly_clear(u, s->zctx);
+    fmpz_mpoly_clear(t, s->zctx);
 }
 
 /* the same for a (reduced: sqrt(d) at most linearly) */

@@ -211,10 +211,7 @@ static int qr_push_norm(fmpz_mpoly_struct **crit, slong *ncrit, const fmpz_mpoly
     rs_charpoly_coeff(g0, g, 0, s->sqrt_var, s->zctx);
     rs_charpoly_coeff(g1, g, 1, s->sqrt_var, s->zctx);
     if (h1 != NULL) { fmpz_mpoly_set(g0, g, s->zctx); fmpz_mpoly_set(g1, h1, s->zctx); }
-    fmpz_mpoly_mul(g0, g0, g0, s->zctx);
-    fmpz_mpoly_mul(g1, g1, g1, s->zctx);
-    fmpz_mpoly_scalar_mul_si(g1, g1, s->sqrt_d, s->zctx);
-    fmpz_mpoly_sub(t, g0, g1, s->zctx);
+    rs_an_qd_mpoly_norm(t, g0, g1, s);
     nz = !fmpz_mpoly_is_zero(t, s->zctx);
     if (nz) {
         /* the norm, and g0, g1 themselves: with the three signs the sign of
@@ -224,9 +221,6 @@ static int qr_push_norm(fmpz_mpoly_struct **crit, slong *ncrit, const fmpz_mpoly
         fmpz_mpoly_init(*crit + *ncrit, s->zctx);
         fmpz_mpoly_swap(*crit + (*ncrit)++, t, s->zctx);
         if (parts && !fmpz_mpoly_is_zero(g1, s->zctx)) {
-            rs_charpoly_coeff(g0, g, 0, s->sqrt_var, s->zctx);
-            rs_charpoly_coeff(g1, g, 1, s->sqrt_var, s->zctx);
-            if (h1 != NULL) { fmpz_mpoly_set(g0, g, s->zctx); fmpz_mpoly_set(g1, h1, s->zctx); }
             fmpz_mpoly_init(*crit + *ncrit, s->zctx);
             fmpz_mpoly_swap(*crit + (*ncrit)++, g0, s->zctx);
             fmpz_mpoly_init(*crit + *ncrit, s->zctx);
