@@ -1479,6 +1479,22 @@ burn(void *arg)
     return NULL;
 }
 
+/* the chain's minors, alone or while a second thread burns CPU (clock()
+ * counts every thread: a timed decision would see each step dearer) */
+static void compute_beside_burner(rs_hurwitz_t h, const fmpz_mpoly_t q, slong zv, const fmpz_mpoly_ctx_t ctx,
+                                  rs_error_t err, int burner)
+{
+    pthread_t th;
+    rs_hurwitz_init(h);
+    burn_stop = 0;
+    if (burner) assert_int_equal(pthread_create(&th, NULL, burn, NULL), 0);
+    assert_int_equal(rs_hurwitz_compute_partial(h, q, zv, NULL, ctx, err), RS_OK);
+    if (burner) {
+        burn_stop = 1;
+        pthread_join(th, NULL);
+    }
+}
+
 static void
 test_chain_reproducible(void **state)
 {
@@ -1501,16 +1517,7 @@ test_chain_reproducible(void **state)
     assert_int_equal(full->expanded, 2 * N);
     old = rs_hurwitz_set_row_seconds(0.005);
     for (run = 0; run < 3; run++) {
-        pthread_t th;
-        rs_hurwitz_init(h[run]);
-        burn_stop = 0;
-        if (run > 0)
-            assert_int_equal(pthread_create(&th, NULL, burn, NULL), 0);
-        assert_int_equal(rs_hurwitz_compute_partial(h[run], q, nv - 1, NULL, t.ctx, err), RS_OK);
-        if (run > 0) {
-            burn_stop = 1;
-            pthread_join(th, NULL);
-        }
+        compute_beside_burner(h[run], q, nv - 1, t.ctx, err, run > 0);
     }
     rs_hurwitz_set_row_seconds(old);
     /* the share cuts part-way: the test means something */
@@ -1576,16 +1583,7 @@ test_chain_expand_budget(void **state)
     assert_true(T > 0.0 && T <= RS_HURWITZ_EXPAND_SECONDS);
     old_e = rs_hurwitz_set_expand_seconds(0.999 * T);
     for (run = 0; run < 2; run++) {
-        pthread_t th;
-        rs_hurwitz_init(h[run]);
-        burn_stop = 0;
-        if (run > 0)
-            assert_int_equal(pthread_create(&th, NULL, burn, NULL), 0);
-        assert_int_equal(rs_hurwitz_compute_partial(h[run], q, nv - 1, NULL, t.ctx, err), RS_OK);
-        if (run > 0) {
-            burn_stop = 1;
-            pthread_join(th, NULL);
-        }
+        compute_beside_burner(h[run], q, nv - 1, t.ctx, err, run > 0);
     }
     assert_int_equal(h[0]->expanded, 2 * N - 2);
     assert_true(h[0]->expand_estimate <= 0.999 * T);
