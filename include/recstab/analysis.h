@@ -14,6 +14,7 @@
 #include "recstab/casefile.h"
 #include "recstab/budget.h"
 #include "recstab/sweep.h"
+#include "recstab/str.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,6 +35,8 @@ typedef struct {
     double time_spent;     /* of which already used (e.g. by earlier cases) */
     slong memory_limit;    /* MB of counted memory (<= 0: none; budget.h) */
     rs_sweep_options_t sweep; /* sweeps and maps: shard, point limit, progress, first level (sweep.h) */
+    struct rs_polytext_struct *polytext; /* NULL, or where long polynomials go until the report
+                                            is written (str.h; the document holds placeholders) */
 } rs_options_t;
 
 void rs_options_default(rs_options_t *opt);

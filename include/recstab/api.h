@@ -58,6 +58,10 @@ char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), 
 /* The same written to f (a map's rows go from its spool to f one at a
  * time); 0, or -1 when memory ran out (f's own errors: ferror(f)). */
 int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg);
+/* The same for documents whose long polynomials wait in pt (rs_options_t
+ * .polytext, str.h): each printed where its placeholder is. */
+int rs_run_json_dumpf_polytext(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg,
+                               rs_polytext_t pt);
 
 /* The one-call API: runs case_text (named source_name in messages, includes
  * relative to it; NULL: "<string>") exactly as `recstab --json` would and

@@ -20,6 +20,29 @@ int rs_utf8_seq_len(const char *s, size_t n);
  * UTF-8 written as \xNN: file names in text and JSON output. */
 char *rs_utf8_escape(const char *s);
 
+/* Long polynomials held back from a run's document and printed only when
+ * the report is written (issue 17: the minors of a 6-mass chain are 220 MB
+ * of text, copied once more into jansson's strings).  The document holds a
+ * short placeholder string for each; rs_report_text_polytext and
+ * rs_run_json_dumpf_polytext print the polynomial where the placeholder
+ * is (recognised by the json_t itself, never by its text).  A run fills it
+ * when rs_options_t.polytext points to one (one thread at a time); every
+ * other reader of such a document sees the placeholders.  Its fields are
+ * util/polytext.c's. */
+typedef struct rs_polytext_struct {
+    struct rs_polytext_poly_s *poly;   /* the polynomials, each with its own context and names */
+    struct rs_polytext_ph_s *ph;       /* the placeholders standing for them */
+    long npoly, nph, alloc_poly, alloc_ph;
+    char *scratch;                     /* the printing buffer of text used once */
+    size_t cap;
+} rs_polytext_struct;
+typedef rs_polytext_struct rs_polytext_t[1];
+
+void rs_polytext_init(rs_polytext_t pt);
+/* Frees the polynomials and drops the registry's references to the
+ * placeholders (the documents keep theirs). */
+void rs_polytext_clear(rs_polytext_t pt);
+
 #ifdef __cplusplus
 }
 #endif

@@ -122,7 +122,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     rs_variant_t *v;
     const rs_scheme_struct *s;
     rs_hurwitz_or_t hb;
-    const rs_hurwitz_struct *h;
+    rs_hurwitz_struct *h;   /* its polynomials lent to the report (rs_run_json_zpoly_line) */
     fmpz_mpoly_t qz;
     json_t *o, *minors, *conds, *nonzero, *dropped, *always, *details;
     char *scratch = NULL;   /* one printing buffer for every polynomial (rs_json_zpoly_line) */
@@ -154,7 +154,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     minors = json_array();
     for (i = 0; i < h->n; i++)
         json_array_append_new(minors, i < h->expanded
-                                          ? rs_json_zpoly_line(h->minors + i, s, NULL, NULL, &scratch, &cap)
+                                          ? rs_run_json_zpoly_line(run, h->minors + i, s, NULL, NULL, &scratch, &cap)
                                           : json_string("not expanded"));
     json_object_set_new(o, "minors", minors);
     if (hb->nbranch > 0 && h->expanded < h->n) {
@@ -171,7 +171,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     always = json_array();
     details = json_array();
     for (i = 0; i < h->ncond; i++) {
-        const rs_hurwitz_cond_struct *c = h->cond + i;
+        rs_hurwitz_cond_struct *c = h->cond + i;
         json_t *d = json_object(), *fl = json_array(), *jred, *jline = NULL;
         json_object_set_new(d, "origin", json_string(c->origin));
         /* the same strings shared, not printed again (jansson counts the
@@ -181,11 +181,11 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         if (c->minor >= 1 && c->minor <= h->expanded && !c->not_expanded)
             json_object_set(d, "poly", json_array_get(minors, (size_t) (c->minor - 1)));
         else
-            json_object_set_new(d, "poly", rs_json_zpoly_line(c->poly, s, NULL, NULL, &scratch, &cap));
+            json_object_set_new(d, "poly", rs_run_json_zpoly_line(run, c->poly, s, NULL, NULL, &scratch, &cap));
         /* the condition line "reduced > 0" printed with the reduced
          * condition, not formatted again from its 27 MB string (D_11 of a
          * 6-mass chain, issue 17) */
-        jred = rs_json_zpoly_line(c->reduced, s,
+        jred = rs_run_json_zpoly_line(run, c->reduced, s,
                                   c->trivially_true || c->not_expanded ? NULL
                                   : c->factored ? "> 0" : "> 0 (not factored)", &jline, &scratch, &cap);
         for (k = 0; k < c->factors->num; k++) {
@@ -193,7 +193,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
             if (fmpz_mpoly_equal(c->factors->poly + k, c->reduced, s->zctx))
                 json_object_set(f, "factor", jred);
             else
-                json_object_set_new(f, "factor", rs_json_zpoly_line(c->factors->poly + k, s, NULL, NULL,
+                json_object_set_new(f, "factor", rs_run_json_zpoly_line(run, c->factors->poly + k, s, NULL, NULL,
                                                                     &scratch, &cap));
             json_object_set_new(f, "exponent", json_integer(fmpz_get_si(c->factors->exp + k)));
             json_object_set_new(f, "dropped", json_boolean(c->dropped[k]));
@@ -276,6 +276,7 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
     }
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
+    rs_run_polytext_keep(run);   /* before the polynomials lent to the report go */
     rs_hurwitz_or_clear(hb, s->zctx);
     fmpz_mpoly_clear(qz, s->zctx);
     return r;

@@ -17,6 +17,7 @@ void rs_options_default(rs_options_t *opt)
     opt->time_spent = 0;
     opt->memory_limit = rs_budget_memory_default();
     rs_sweep_options_default(&opt->sweep);
+    opt->polytext = NULL;
 }
 
 /* The equations as written and the lambda-matrix (set values substituted),

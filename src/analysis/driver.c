@@ -11,6 +11,7 @@
 #include "recstab/casefile.h"
 #include "recstab/model.h"
 #include "recstab/str.h"
+#include "util/polytext.h"
 #include "analysis/sweep_impl.h"
 
 void rs_run_options_default(rs_run_options_t *ro)
@@ -187,21 +188,30 @@ static int bigstr_is(const json_t *x, const rowsets_t *rs)
     return json_string_length(x) >= BIGSTR_MIN_BYTES || (json_string_length(x) > 0 && json_string_value(x)[0] == '\001');
 }
 
-static void bigstrs_swap(bigstrs_t *b, json_t *x, const rowsets_t *rs)
+/* pt: each of its placeholders met is a write to come (rs_polytext_hold) */
+static void bigstrs_swap(bigstrs_t *b, json_t *x, const rowsets_t *rs, rs_polytext_struct *pt)
 {
     if (json_is_object(x)) {
         void *it;
         for (it = json_object_iter(x); it != NULL; it = json_object_iter_next(x, it)) {
             json_t *v = json_object_iter_value(it);
-            if (bigstr_is(v, rs)) bigstrs_push(b, v, x, json_object_iter_key(it), 0);
-            else bigstrs_swap(b, v, rs);
+            if (!bigstr_is(v, rs)) bigstrs_swap(b, v, rs, pt);
+            else {
+                slong k = rs_polytext_find(pt, v);
+                if (k >= 0) rs_polytext_hold(pt, k);
+                bigstrs_push(b, v, x, json_object_iter_key(it), 0);
+            }
         }
     } else if (json_is_array(x)) {
         size_t i;
         for (i = 0; i < json_array_size(x); i++) {
             json_t *v = json_array_get(x, i);
-            if (bigstr_is(v, rs)) bigstrs_push(b, v, x, NULL, i);
-            else bigstrs_swap(b, v, rs);
+            if (!bigstr_is(v, rs)) bigstrs_swap(b, v, rs, pt);
+            else {
+                slong k = rs_polytext_find(pt, v);
+                if (k >= 0) rs_polytext_hold(pt, k);
+                bigstrs_push(b, v, x, NULL, i);
+            }
         }
     }
 }
@@ -223,10 +233,13 @@ static void bigstrs_restore(bigstrs_t *b)
 /* str as jansson dumps it (no JSON_ENSURE_ASCII, no JSON_ESCAPE_SLASH): a
  * string without '"', '\\' and control characters verbatim in quotes (its
  * UTF-8 was checked when it was made), any other through jansson */
-static void bigstr_put(FILE *f, const json_t *str)
+static int bigstr_put(FILE *f, const json_t *str, rs_polytext_struct *pt)
 {
     const char *p = json_string_value(str);
     size_t len = json_string_length(str), i;
+    slong k = rs_polytext_find(pt, str);
+    /* a polynomial held back: printed here (util/polytext.h) */
+    if (k >= 0) return rs_polytext_write(f, pt, k, 1);
     for (i = 0; i < len; i++) {
         unsigned char c = (unsigned char) p[i];
         if (c < 0x20 || c == '"' || c == '\\') break;
@@ -240,6 +253,7 @@ static void bigstr_put(FILE *f, const json_t *str)
         fputs(t != NULL ? t : "null", f);
         free(t);
     }
+    return 0;
 }
 
 /* The first count rows of the spooled table (its header line first) as
@@ -296,13 +310,19 @@ char *rs_run_json_dumps_spool(json_t *top, FILE *(*spool)(void *arg, slong id), 
 
 int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg)
 {
+    return rs_run_json_dumpf_polytext(f, top, spool, arg, NULL);
+}
+
+int rs_run_json_dumpf_polytext(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id), void *arg,
+                               rs_polytext_t pt)
+{
     rowsets_t rs = {NULL, NULL, NULL, NULL, 0};
     bigstrs_t bs = {NULL, NULL, NULL, NULL, 0};
     char *s;
     size_t k;
     int rc = -1;
     rowsets_swap(&rs, top);
-    bigstrs_swap(&bs, top, &rs);
+    bigstrs_swap(&bs, top, &rs, pt);
     /* the document without its rows and long strings, which go straight
      * to f one by one */
     s = json_dumps(top, JSON_INDENT(2) | JSON_PRESERVE_ORDER);
@@ -317,7 +337,7 @@ int rs_run_json_dumpf(FILE *f, json_t *top, FILE *(*spool)(void *arg, slong id),
             if (strncmp(q + 7, "str ", 4) == 0) {
                 id = (size_t) strtoul(q + 11, NULL, 10);
                 fwrite(p, 1, (size_t) (q - p), f);
-                if (id < bs.n) bigstr_put(f, bs.str[id]);
+                if (id < bs.n && bigstr_put(f, bs.str[id], pt) != 0) rc = -1;
                 p = strchr(q + 1, '"') + 1;
                 continue;
             }

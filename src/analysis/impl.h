@@ -136,6 +136,12 @@ json_t *rs_json_zpoly(const fmpz_mpoly_t p, const rs_scheme_t s);
  * "TEXT rel" (rs_cond_string's text) from the same printing; printed in
  * *scratch (size *cap, grown as needed, the caller frees it) when given, so
  * that a run printing many large polynomials reuses pages already touched. */
+/* rs_json_zpoly_line, or placeholders printed when the report is written
+ * (util/polytext.h) for a long p when run->opt->polytext is set: then p is
+ * borrowed, unchanged until rs_run_polytext_keep takes it (and leaves 0) */
+json_t *rs_run_json_zpoly_line(const rs_run_t *run, fmpz_mpoly_t p, const rs_scheme_t s, const char *rel,
+                               json_t **line, char **scratch, size_t *cap);
+void rs_run_polytext_keep(const rs_run_t *run);
 json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char *rel, json_t **line,
                            char **scratch, size_t *cap);
 /* "poly REL" for a condition (REL "> 0", "!= 0"); malloc'd, free(). */

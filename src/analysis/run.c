@@ -11,6 +11,7 @@
 #include "analysis/impl.h"
 #include "analysis/registry.h"
 #include "util/polyfmt.h"
+#include "util/polytext.h"
 #include "recstab/semisimple.h"
 #include "recstab/routh.h"
 #include "recstab/jury.h"
@@ -516,6 +517,24 @@ json_t *rs_json_zpoly_line(const fmpz_mpoly_t p, const rs_scheme_t s, const char
     free(tail);
     free(own);
     return j;
+}
+
+/* from this many terms on (some kilobytes of text) a polynomial waits for
+ * the report; shorter ones, which the analyses and renderers may compare
+ * as text ("0 > 0"), stay strings */
+#define POLYTEXT_MIN_TERMS 64
+
+json_t *rs_run_json_zpoly_line(const rs_run_t *run, fmpz_mpoly_t p, const rs_scheme_t s, const char *rel,
+                               json_t **line, char **scratch, size_t *cap)
+{
+    if (run->opt->polytext == NULL || fmpz_mpoly_length(p, s->zctx) < POLYTEXT_MIN_TERMS || !names_ascii(s))
+        return rs_json_zpoly_line(p, s, rel, line, scratch, cap);
+    return rs_polytext_defer(run->opt->polytext, p, (const char *const *) s->vars, s->zctx, rel, line);
+}
+
+void rs_run_polytext_keep(const rs_run_t *run)
+{
+    if (run->opt->polytext != NULL) rs_polytext_keep(run->opt->polytext);
 }
 
 json_t *rs_json_collected(const fmpz_mpoly_t p, slong var, const rs_scheme_t s, const char *varname)

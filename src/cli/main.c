@@ -466,7 +466,7 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
     } else if (cli->json) {
         /* the rows of streamed maps go from their spools to out one by one */
         json_t *top = rs_run_json_document(docs, cli->ncases);
-        rs_run_json_dumpf(out, top, rs_cli_spool_get, NULL);
+        rs_run_json_dumpf_polytext(out, top, rs_cli_spool_get, NULL, cli->opt.polytext);
         json_decref(top);
     } else if (cli->markdown) {
         for (k = 0; k < json_array_size(docs); k++) rs_derivation_markdown(out, json_array_get(docs, k));
@@ -477,7 +477,7 @@ static void render(FILE *out, const cli_t *cli, json_t *docs)
     } else {
         for (k = 0; k < json_array_size(docs); k++) {
             if (k > 0) fputc('\n', out);
-            rs_report_text(out, json_array_get(docs, k));
+            rs_report_text_polytext(out, json_array_get(docs, k), cli->opt.polytext);
         }
     }
 }
@@ -552,6 +552,7 @@ int main(int argc, char **argv)
     json_t *docs = json_array();
     rs_cli_outs_t set;
     rs_cli_out_t *csv_out = NULL, *script_out = NULL;
+    rs_polytext_t pt;
     int i, worst = 0, rc;
 
     memset(&cli, 0, sizeof cli);
@@ -578,8 +579,12 @@ int main(int argc, char **argv)
      * workers included) returns its status instead of aborting */
     gsl_set_error_handler_off();
     raise_stack_limit();
+    rs_polytext_init(pt);
     rc = parse_args(&cli, argc, argv);
     if (rc >= 0) goto end;
+    /* the text report and --json print long polynomials straight from the
+     * polynomial (issue 17); the derivations read every string */
+    if (!cli.markdown && !cli.latex && !cli.emit) cli.opt.polytext = pt;
     if (outputs_init(&cli, &set, &csv_out, &script_out) != 0) {
         rc = 2;
         goto end;
@@ -601,6 +606,7 @@ end:
     rs_cli_signals_stop();
     rs_cli_spools_close();
     json_decref(docs);
+    rs_polytext_clear(pt);
     free(cli.sets); free(cli.analyses); free(cli.cases); free(cli.plot_paths);
 #ifdef RS_MPI
     MPI_Finalize();

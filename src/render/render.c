@@ -4,6 +4,7 @@
 #include "recstab/report.h"
 #include "recstab/derivation.h"
 #include "render_impl.h"
+#include "util/polytext.h"
 
 const char *rs_render_jstr(const json_t *o, const char *key)
 {
@@ -35,7 +36,17 @@ static void field(rs_render_t *r, const char *label, const char *fmt, ...)
 
 void rs_render_line(rs_render_t *r, const char *label, const char *fmt, const char *a)
 {
+    slong k;
     if (a == NULL || r->be->field == NULL) return;
+    /* a polynomial held back (util/polytext.h): the field as text_field
+     * writes it, the text printed straight into the report */
+    if (r->pt != NULL && r->be->kind == RS_RENDER_TEXT && strcmp(fmt, "%s") == 0
+        && (k = rs_polytext_find_value(r->pt, a)) >= 0) {
+        r->be->label(r->out, label);
+        rs_polytext_write(r->out, r->pt, k, 0);
+        fputc('\n', r->out);
+        return;
+    }
     field(r, label, fmt, a);
 }
 
@@ -219,13 +230,14 @@ static void render_scheme(rs_render_t *r, const json_t *sc)
     render_matrix(r, json_object_get(sc, "matrix"));
 }
 
-static void render_doc(FILE *out, const rs_render_backend_t *be, const json_t *doc)
+static void render_doc(FILE *out, const rs_render_backend_t *be, const json_t *doc, rs_polytext_struct *pt)
 {
     rs_render_t r;
     const json_t *res = json_object_get(doc, "results");
     size_t i;
     r.out = out;
     r.be = be;
+    r.pt = pt;
     render_title(&r, doc);
     if (be->kind != RS_RENDER_TEXT && json_object_get(doc, "scheme") != NULL)
         render_scheme(&r, json_object_get(doc, "scheme"));
@@ -241,17 +253,22 @@ static void render_doc(FILE *out, const rs_render_backend_t *be, const json_t *d
 
 void rs_report_text(FILE *out, const json_t *doc)
 {
-    render_doc(out, &rs_render_text_backend, doc);
+    render_doc(out, &rs_render_text_backend, doc, NULL);
+}
+
+void rs_report_text_polytext(FILE *out, const json_t *doc, rs_polytext_t pt)
+{
+    render_doc(out, &rs_render_text_backend, doc, pt);
 }
 
 void rs_derivation_markdown(FILE *out, const json_t *doc)
 {
-    render_doc(out, &rs_render_markdown_backend, doc);
+    render_doc(out, &rs_render_markdown_backend, doc, NULL);
 }
 
 void rs_derivation_latex(FILE *out, const json_t *doc, int standalone)
 {
     if (standalone) rs_derivation_latex_begin(out);
-    render_doc(out, &rs_render_latex_backend, doc);
+    render_doc(out, &rs_render_latex_backend, doc, NULL);
     if (standalone) rs_derivation_latex_end(out);
 }

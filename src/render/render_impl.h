@@ -17,6 +17,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <jansson.h>
+#include "recstab/str.h"
 
 /* backend kinds, also used as masks of which backends a block is for */
 #define RS_RENDER_TEXT 1
@@ -46,6 +47,7 @@ typedef struct {
 typedef struct {
     FILE *out;
     const rs_render_backend_t *be;
+    rs_polytext_struct *pt;   /* placeholders of long polynomials printed here, or NULL (str.h) */
 } rs_render_t;
 
 extern const rs_render_backend_t rs_render_text_backend;
