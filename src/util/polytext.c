@@ -30,17 +30,21 @@ void rs_polytext_init(rs_polytext_t pt)
     memset(pt, 0, sizeof(rs_polytext_struct));
 }
 
+static void poly_clear(struct rs_polytext_poly_s *q)
+{
+    fmpz_mpoly_ctx_struct *ctx = q->ctx;
+    slong j;
+    for (j = 0; j < ctx->minfo->nvars; j++) free(q->vars[j]);
+    free(q->vars);
+    free(q->text);
+    fmpz_mpoly_clear(q->p, ctx);
+    fmpz_mpoly_ctx_clear(ctx);
+}
+
 void rs_polytext_clear(rs_polytext_t pt)
 {
-    slong i, j;
-    for (i = 0; i < pt->npoly; i++) {
-        struct rs_polytext_poly_s *q = pt->poly + i;
-        for (j = 0; j < q->ctx->minfo->nvars; j++) free(q->vars[j]);
-        free(q->vars);
-        free(q->text);
-        fmpz_mpoly_clear(q->p, q->ctx);
-        fmpz_mpoly_ctx_clear(q->ctx);
-    }
+    slong i;
+    for (i = 0; i < pt->npoly; i++) poly_clear(pt->poly + i);
     for (i = 0; i < pt->nph; i++) {
         json_decref(pt->ph[i].ph);
         free(pt->ph[i].tail);
