@@ -31,13 +31,8 @@
 #include "analysis/an_region.h"
 #include "recstab/routh.h"
 
-/* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0) */
-typedef struct {
-    slong n;
-    fmpz_mpoly_struct *c0, *c1;
-    int *ne;
-    const rs_scheme_struct *s;
-} qc_t;
+/* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0; an_qd.h) */
+typedef rs_an_qd_conds_t qc_t;
 
 static void qc_push(qc_t *q, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, int ne)
 {
@@ -1378,3 +1373,14 @@ int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req,
     qd_sym_clear(&S, S.n);
     return decided;
 }
+
+/* qc_add, qc_hold and qc_clear for the conditions over Q(sqrt d)(i) (an_qd_complex.c) */
+int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t *dropped, const fmpz_mpoly_t f,
+                       const char *origin, const int *sign)
+{
+    return qc_add(q, conds, parts, dropped, f, origin, sign);
+}
+
+int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt) { return qc_hold(q, pt); }
+
+void rs_an_qd_conds_clear(rs_an_qd_conds_t *q) { qc_clear(q); }
