@@ -34,6 +34,7 @@ typedef struct {
     fmpz_mpoly_struct *c0, *c1;
     int *ne;
     const rs_scheme_struct *s;
+    int never;        /* proved never to hold together: rs_an_qd_conds_hold says 0 */
 } rs_an_qd_conds_t;
 /* f > 0 (f in s's zctx, sqrt(d) reduced) into q and the lists: the gcd of
  * its parts factored, factors of one sign under the assumptions (sign)
@@ -44,6 +45,10 @@ int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t
 /* 1 when every condition of q holds at pt (every variable of s), else 0 */
 int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt);
 void rs_an_qd_conds_clear(rs_an_qd_conds_t *q);
+/* an_qd_never.c: 1 (the reason into buf) when q's conditions provably never
+ * all hold under the assume lines (each split into the sign cases of c0,
+ * c1 and the norm c0^2 - d c1^2, every choice refuted by rs_run_conds_never) */
+int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_conds_t *q);
 /* an_qd_complex.c: jury (kind 0), hurwitz (1) and routh (2) at complex set
  * values: conditions over Q(sqrt d)(i)[params], Schur-Cohn and Bilharz
  * cross-checked at sample points against the exact point verdict */

@@ -173,7 +173,7 @@ static int qc_hold(const qc_t *q, fmpq *const *pt)
 {
     rs_qd_t v;
     slong i;
-    int ok = 1;
+    int ok = !q->never;
     rs_qd_init(v);
     for (i = 0; i < q->n && ok; i++) {
         int sg;
@@ -285,7 +285,7 @@ static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_va
     if (r != RS_OK) return r;
     s = S->s = S->v->s;
     S->n = S->v->cp->degree;
-    S->q.n = 0; S->q.c0 = S->q.c1 = NULL; S->q.ne = NULL; S->q.s = s;
+    S->q.n = 0; S->q.c0 = S->q.c1 = NULL; S->q.ne = NULL; S->q.s = s; S->q.never = 0;
     fmpz_mpoly_init(S->p0, s->zctx);
     fmpz_mpoly_init(S->p1, s->zctx);
     qd_split(S->p0, S->p1, S->v->cp->p, s);
@@ -321,6 +321,14 @@ static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, jso
                          json_t *parts, json_t *dropped, json_t *always, int never, const qc_t *alt)
 {
     int r;
+    char why[1100];
+    /* a set that never holds under the assumptions (an_qd_never.c); the
+     * sample check then expects no stable point */
+    if (!never && S->q.n > 0 && rs_an_qd_conds_never(why, 1000, run, &S->q)) {
+        strcat(why, "; never asymptotically stable");
+        rs_json_set_never_conditions(o, why);
+        never = S->q.never = 1;
+    }
     rs_an_qd_json_p(o, S->p0, S->p1, run);
     json_object_set_new(o, "degree", json_integer(S->n));
     json_object_set_new(o, "conditions", conds);

@@ -618,6 +618,16 @@ for pt in "1 stable" "-5 stable" "-1 unstable" "0 unstable"; do
     else fail "sdirk2 complex k=$1: '$v' $(head -1 "$T/err")"; fi
 done
 
+# never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
+# (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
+sed 's/^param q k/param q k\nassume -3 <= k <= -1/' "$SQ" >"$T/sqn.case"
+sed 's/^param q k/param q k\nassume -4 <= k <= -1/' "$SQ" >"$T/sqn4.case"
+v=$("$RS" --json "$T/sqn.case" 2>"$T/err" | python3 -c 'import json,sys; print(" ".join(r["verdict"].replace(" ", "_") + ":" + str(r["sample_check"]["agree"]) for r in json.load(sys.stdin)["cases"][0]["results"]))' 2>/dev/null)
+w=$("$RS" --json --analyse jury "$T/sqn4.case" 2>/dev/null | python3 -c 'import json,sys; print(json.load(sys.stdin)["cases"][0]["results"][0]["verdict"])' 2>/dev/null)
+if [ "$v" = "never_stable:True never_stable:True never_stable:True" ] && [ "$w" = "stable iff the conditions hold" ]; then
+    ok "sdirk2 z = k(-1/2+3i/2), -3 <= k <= -1: never stable over Q(sqrt 2)(i); -4 <= k <= -1 not"
+else fail "sdirk2 complex never: '$v' '$w' $(head -1 "$T/err")"; fi
+
 # ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
 SR=cases/complex/sdirk2-coupled-routh.case
 "$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
