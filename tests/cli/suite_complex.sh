@@ -628,6 +628,26 @@ if [ "$v" = "never_stable:True never_stable:True never_stable:True" ] && [ "$w" 
     ok "sdirk2 z = k(-1/2+3i/2), -3 <= k <= -1: never stable over Q(sqrt 2)(i); -4 <= k <= -1 not"
 else fail "sdirk2 complex never: '$v' '$w' $(head -1 "$T/err")"; fi
 
+# region a, b over Q(sqrt 2) with a repeated circle root at the rational sample (0, 0)
+# (by hand in the case: stable iff a < 0 and b < 0): that cell undecided with its
+# reason, the run finished (it stopped there with RS_ERR_UNDECIDED before)
+SU=cases/complex/sdirk2-euler-region2-undecided.case
+"$RS" --json "$SU" >"$T/su.json" 2>"$T/err"; rc=$?
+res=$(python3 - "$T/su.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+und = [c for c in r["cells"] if c["status"] == "undecided"]
+ok = (r["over"] == "Q(sqrt 2)" and r["formula"]["stable"] == [["a < 0", "b < 0"]]
+      and len(und) == 1 and und[0]["a"] == "0" and und[0]["b"] == "0"
+      and "repeated root on the unit circle" in und[0]["undecided_because"]
+      and r["formula_complete"] is False and r["cross_check"]["agree"] == r["cross_check"]["points"]
+      and r["samples_cross_checked"]["disagree"] == 0)
+print("yes" if ok else "no %s %s" % (r["formula"], und))
+PY
+)
+if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 + forward Euler region a, b: stable iff a < 0 and b < 0, (0, 0) undecided (repeated circle root), run finished"
+else fail "sdirk2 region2 undecided: rc=$rc $res $(head -1 "$T/err")"; fi
+
 # ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
 SR=cases/complex/sdirk2-coupled-routh.case
 "$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
