@@ -79,8 +79,10 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         char msg[400];
         if (strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
-                     "(stability, radius, modes, simulate, jury, hurwitz and routh do; region runs when only its own "
-                     "parameters have complex values)", n, (long) run->m->qd->d);
+                     "(its cells would need Q(sqrt %ld)(i); stability, radius, modes, simulate, jury, hurwitz and routh "
+                     "do, the last three with the conditions over Q(sqrt %ld)(i)[params]; region runs when only its "
+                     "own parameters have complex values)", n, (long) run->m->qd->d, (long) run->m->qd->d,
+                     (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
                      "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "

@@ -648,6 +648,16 @@ PY
 if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 + forward Euler region a, b: stable iff a < 0 and b < 0, (0, 0) undecided (repeated circle root), run finished"
 else fail "sdirk2 region2 undecided: rc=$rc $res $(head -1 "$T/err")"; fi
 
+# region a, c over Q(sqrt 2) at a complex value of a third parameter: not built, refused at
+# its line (exit 2) naming what runs (jury there gives the conditions over Q(sqrt 2)(i)[a, c])
+printf 'param a c q\nassume a > 0\nsubsystem S state y\n  y'"'"' = -a*y + c*x\nsubsystem T state x\n  x'"'"' = -c*y - q*x\nintegrate S rk sdirk2 1\nintegrate T euler-backward 1\ncouple jacobi\nset q = 1 + i/2\nanalyse region a, c\nanalyse jury\n' >"$T/r3.case"
+"$RS" "$T/r3.case" >/dev/null 2>"$T/err"; rc=$?
+v=$("$RS" --json --analyse jury "$T/r3.case" 2>/dev/null | python3 -c 'import json,sys; r=json.load(sys.stdin)["cases"][0]["results"][0]; print(r["over"], r["sample_check"]["agree"], r["cross_check"]["agree"])' 2>/dev/null)
+if [ "$rc" = 2 ] && grep -q "r3.case:11:9: expected real set values: region over Q(sqrt 2) .*its cells would need Q(sqrt 2)(i)" "$T/err" \
+   && [ "$v" = "Q(sqrt 2)(i) True True" ]; then
+    ok "sdirk2 region a, c at complex q refused (exit 2, file:line:col); jury there runs over Q(sqrt 2)(i)[a, c]"
+else fail "sdirk2 region2 complex third: rc=$rc '$v' $(head -1 "$T/err")"; fi
+
 # ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
 SR=cases/complex/sdirk2-coupled-routh.case
 "$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
