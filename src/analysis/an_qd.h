@@ -53,6 +53,12 @@ int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_co
  * values: conditions over Q(sqrt d)(i)[params], Schur-Cohn and Bilharz
  * cross-checked at sample points against the exact point verdict */
 int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind);
+/* the exact verdict at pt of p = part[0] + sqrt(d) part[1] + i (part[2] +
+ * sqrt(d) part[3]) (parts without sqrt(d), NULL: zero) of degree n in
+ * lambda: 1 every root inside, 0 not (a degree drop: singular), -1 p
+ * vanishes there, -2 Schur-Cohn over Q(sqrt d)(i) and the certified roots
+ * disagree */
+int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s);
 /* an_qd_region2.c: region N1, N2 over Q(sqrt d) (the rational CAD on the
  * norms of the critical polynomials, each cell decided over Q(sqrt d)) */
 int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req);

@@ -79,46 +79,47 @@ static json_t *qdc_poly_json(const fmpz_mpoly_t f, const rs_scheme_struct *s, co
     return j;
 }
 
-/* the part sqrt(d)^e (e = 0, 1) of f at pt, as a polynomial in lambda */
-static void qdc_eval_part(fmpq_poly_t out, const fmpz_mpoly_t f, ulong e, fmpq *const *pt,
-                          const rs_scheme_struct *s)
+int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s)
 {
-    fmpz_mpoly_t a;
-    fmpz_mpoly_init(a, s->zctx);
-    rs_charpoly_coeff(a, f, (slong) e, s->sqrt_var, s->zctx);
-    rs_run_cx_eval(out, a, pt, s);
-    fmpz_mpoly_clear(a, s->zctx);
-}
-
-/* the exact verdict at pt: 1 every root inside, 0 not (a degree drop:
- * singular), -1 p vanishes there, -2 Schur-Cohn over Q(sqrt d)(i) and the
- * certified roots disagree */
-static int qdc_point_stable(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong n, fmpq *const *pt,
-                            const rs_scheme_struct *s)
-{
-    fmpq_poly_t e[4];
+    fmpq_poly_t e;
     rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
     slong k, deg = -1;
     int sc = -1, j;
+    fmpq_poly_init(e);
     for (j = 0; j < 4; j++) {
-        fmpq_poly_init(e[j]);
-        qdc_eval_part(e[j], j < 2 ? re : im, (ulong) (j & 1), pt, s);
-        deg = FLINT_MAX(deg, fmpq_poly_degree(e[j]));
-    }
-    for (k = 0; k <= n; k++) {
-        fmpq_poly_get_coeff_fmpq(c[k].re->x, e[0], k);
-        fmpq_poly_get_coeff_fmpq(c[k].re->y, e[1], k);
-        fmpq_poly_get_coeff_fmpq(c[k].im->x, e[2], k);
-        fmpq_poly_get_coeff_fmpq(c[k].im->y, e[3], k);
+        if (part[j] == NULL) continue;
+        rs_run_cx_eval(e, part[j], pt, s);
+        deg = FLINT_MAX(deg, fmpq_poly_degree(e));
+        for (k = 0; k <= n; k++) {
+            rs_qd_struct *x = j < 2 ? c[k].re : c[k].im;
+            fmpq_poly_get_coeff_fmpq((j & 1) ? x->y : x->x, e, k);
+        }
     }
     /* x + sqrt(d) y = 0 only for x = y = 0: the degree over Q(sqrt d)(i) is deg */
     if (deg >= 0 && deg < n) sc = 0;
     else if (deg == n) {
         sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
-        if (sc == -1) sc = 0;
+        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
     }
     rs_qdc_vec_clear(c, n + 1);
-    for (j = 0; j < 4; j++) fmpq_poly_clear(e[j]);
+    fmpq_poly_clear(e);
+    return sc;
+}
+
+/* rs_an_qd_parts_stable of re + i im (sqrt(d) a variable in both) */
+static int qdc_point_stable(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong n, fmpq *const *pt,
+                            const rs_scheme_struct *s)
+{
+    fmpz_mpoly_struct q[4];
+    const fmpz_mpoly_struct *part[4];
+    int j, sc;
+    for (j = 0; j < 4; j++) {
+        fmpz_mpoly_init(q + j, s->zctx);
+        rs_charpoly_coeff(q + j, j < 2 ? re : im, j & 1, s->sqrt_var, s->zctx);
+        part[j] = q + j;
+    }
+    sc = rs_an_qd_parts_stable(part, n, pt, s);
+    for (j = 0; j < 4; j++) fmpz_mpoly_clear(q + j, s->zctx);
     return sc;
 }
 

@@ -192,28 +192,8 @@ static int qc_hold(const qc_t *q, fmpq *const *pt)
 static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n, fmpq *const *pt,
                            const rs_scheme_struct *s)
 {
-    fmpq_poly_t e0, e1;
-    rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
-    slong k, deg;
-    int sc = -1;
-    fmpq_poly_init(e0);
-    fmpq_poly_init(e1);
-    rs_run_cx_eval(e0, p0, pt, s);
-    rs_run_cx_eval(e1, p1, pt, s);
-    deg = FLINT_MAX(fmpq_poly_degree(e0), fmpq_poly_degree(e1));
-    for (k = 0; k <= n; k++) {
-        fmpq_poly_get_coeff_fmpq(c[k].re->x, e0, k);
-        fmpq_poly_get_coeff_fmpq(c[k].re->y, e1, k);
-    }
-    if (deg >= 0 && deg < n) sc = 0;
-    else if (deg == n) {
-        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
-        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
-    }
-    rs_qdc_vec_clear(c, n + 1);
-    fmpq_poly_clear(e0);
-    fmpq_poly_clear(e1);
-    return sc;
+    const fmpz_mpoly_struct *part[4] = {p0, p1, NULL, NULL};
+    return rs_an_qd_parts_stable(part, n, pt, s);
 }
 
 #define QD_SAMPLE_POINTS 12
