@@ -429,7 +429,8 @@ int rs_an_jury(rs_run_t *run, const rs_an_req_t *req)
     json_t *o, *rows;
     slong i;
     int r, done;
-    if (run->m->qd != NULL) return rs_an_qd_jury(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
+    if (run->m->qd != NULL)   /* over Q(sqrt d) (an_qd_conds.c), at complex set values over Q(sqrt d)(i) */
+        return run->c->ncsets > 0 ? rs_an_qd_cx_conds(run, req, 0) : rs_an_qd_jury(run, req);
     if (rs_an_complex_conds_applies(run)) return rs_an_complex_jury(run, req);
     r = rs_run_variant_or_vanishing(&v, &done, run, "jury", 0);
     if (r != RS_OK || done) return r;

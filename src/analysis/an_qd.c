@@ -68,6 +68,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     if ((strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
          || strcmp(n, "claim") == 0) && run->c->ncsets == 0)
         return RS_OK;
+    /* at complex set values: the conditions over Q(sqrt d)(i)[params] (an_qd_complex.c) */
+    if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0) return RS_OK;
     /* a region's own parameters keep no set value: a complex one there is
      * unused (decided once the request is parsed: rest set) */
     if (strcmp(n, "region") == 0 && (req->rest == NULL || (!req->u.region.forall && qd_csets_only(run, req))))
@@ -75,11 +77,12 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     {
         /* the message names the model's field and tableau */
         char msg[400];
-        if (strcmp(n, "jury") == 0 || strcmp(n, "hurwitz") == 0 || strcmp(n, "routh") == 0 || strcmp(n, "region") == 0
-            || strcmp(n, "claim") == 0)
+        if (strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
-                     "(stability, radius, modes and simulate do; region runs when only its own parameters have "
-                     "complex values)", n, (long) run->m->qd->d);
+                     "(its cells would need Q(sqrt %ld)(i); stability, radius, modes, simulate, jury, hurwitz and routh "
+                     "do, the last three with the conditions over Q(sqrt %ld)(i)[params]; region runs when only its "
+                     "own parameters have complex values)", n, (long) run->m->qd->d, (long) run->m->qd->d,
+                     (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
                      "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "

@@ -27,6 +27,38 @@ int rs_an_qd_hurwitz(rs_run_t *run, const rs_an_req_t *req);
  * the c0, c1 in v->s->zctx and flint_frees the arrays */
 int rs_an_qd_jury_conds(fmpz_mpoly_struct **c0, fmpz_mpoly_struct **c1, int **ne, slong *n, rs_run_t *run,
                         const rs_an_req_t *req, rs_variant_t *v, int hurwitz);
+/* the conditions c0[k] + sqrt(d) c1[k] > 0 (ne[k]: != 0), k < n, in s's zctx
+ * (an_qd_conds.c; start with n = 0 and NULL arrays) */
+typedef struct {
+    slong n;
+    fmpz_mpoly_struct *c0, *c1;
+    int *ne;
+    const rs_scheme_struct *s;
+    int never;        /* proved never to hold together: rs_an_qd_conds_hold says 0 */
+} rs_an_qd_conds_t;
+/* f > 0 (f in s's zctx, sqrt(d) reduced) into q and the lists: the gcd of
+ * its parts factored, factors of one sign under the assumptions (sign)
+ * dropped, even ones as "!= 0"; 1 when nothing is left (always true), -1
+ * when f is a constant <= 0 (never), else 0 */
+int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t *dropped, const fmpz_mpoly_t f,
+                       const char *origin, const int *sign);
+/* 1 when every condition of q holds at pt (every variable of s), else 0 */
+int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt);
+void rs_an_qd_conds_clear(rs_an_qd_conds_t *q);
+/* an_qd_never.c: 1 (the reason into buf) when q's conditions provably never
+ * all hold under the assume lines (each split into the sign cases of c0,
+ * c1 and the norm c0^2 - d c1^2, every choice refuted by rs_run_conds_never) */
+int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_conds_t *q);
+/* an_qd_complex.c: jury (kind 0), hurwitz (1) and routh (2) at complex set
+ * values: conditions over Q(sqrt d)(i)[params], Schur-Cohn and Bilharz
+ * cross-checked at sample points against the exact point verdict */
+int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind);
+/* the exact verdict at pt of p = part[0] + sqrt(d) part[1] + i (part[2] +
+ * sqrt(d) part[3]) (parts without sqrt(d), NULL: zero) of degree n in
+ * lambda: 1 every root inside, 0 not (a degree drop: singular), -1 p
+ * vanishes there, -2 Schur-Cohn over Q(sqrt d)(i) and the certified roots
+ * disagree */
+int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s);
 /* an_qd_region2.c: region N1, N2 over Q(sqrt d) (the rational CAD on the
  * norms of the critical polynomials, each cell decided over Q(sqrt d)) */
 int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req);

@@ -31,13 +31,8 @@
 #include "analysis/an_region.h"
 #include "recstab/routh.h"
 
-/* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0) */
-typedef struct {
-    slong n;
-    fmpz_mpoly_struct *c0, *c1;
-    int *ne;
-    const rs_scheme_struct *s;
-} qc_t;
+/* the conditions c0 + sqrt(d) c1 > 0 (ne: != 0; an_qd.h) */
+typedef rs_an_qd_conds_t qc_t;
 
 static void qc_push(qc_t *q, const fmpz_mpoly_t c0, const fmpz_mpoly_t c1, int ne)
 {
@@ -178,7 +173,7 @@ static int qc_hold(const qc_t *q, fmpq *const *pt)
 {
     rs_qd_t v;
     slong i;
-    int ok = 1;
+    int ok = !q->never;
     rs_qd_init(v);
     for (i = 0; i < q->n && ok; i++) {
         int sg;
@@ -197,28 +192,8 @@ static int qc_hold(const qc_t *q, fmpq *const *pt)
 static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n, fmpq *const *pt,
                            const rs_scheme_struct *s)
 {
-    fmpq_poly_t e0, e1;
-    rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
-    slong k, deg;
-    int sc = -1;
-    fmpq_poly_init(e0);
-    fmpq_poly_init(e1);
-    rs_run_cx_eval(e0, p0, pt, s);
-    rs_run_cx_eval(e1, p1, pt, s);
-    deg = FLINT_MAX(fmpq_poly_degree(e0), fmpq_poly_degree(e1));
-    for (k = 0; k <= n; k++) {
-        fmpq_poly_get_coeff_fmpq(c[k].re->x, e0, k);
-        fmpq_poly_get_coeff_fmpq(c[k].re->y, e1, k);
-    }
-    if (deg >= 0 && deg < n) sc = 0;
-    else if (deg == n) {
-        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
-        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
-    }
-    rs_qdc_vec_clear(c, n + 1);
-    fmpq_poly_clear(e0);
-    fmpq_poly_clear(e1);
-    return sc;
+    const fmpz_mpoly_struct *part[4] = {p0, p1, NULL, NULL};
+    return rs_an_qd_parts_stable(part, n, pt, s);
 }
 
 #define QD_SAMPLE_POINTS 12
@@ -290,7 +265,7 @@ static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_va
     if (r != RS_OK) return r;
     s = S->s = S->v->s;
     S->n = S->v->cp->degree;
-    S->q.n = 0; S->q.c0 = S->q.c1 = NULL; S->q.ne = NULL; S->q.s = s;
+    S->q.n = 0; S->q.c0 = S->q.c1 = NULL; S->q.ne = NULL; S->q.s = s; S->q.never = 0;
     fmpz_mpoly_init(S->p0, s->zctx);
     fmpz_mpoly_init(S->p1, s->zctx);
     qd_split(S->p0, S->p1, S->v->cp->p, s);
@@ -326,6 +301,14 @@ static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, jso
                          json_t *parts, json_t *dropped, json_t *always, int never, const qc_t *alt)
 {
     int r;
+    char why[1100];
+    /* a set that never holds under the assumptions (an_qd_never.c); the
+     * sample check then expects no stable point */
+    if (!never && S->q.n > 0 && rs_an_qd_conds_never(why, 1000, run, &S->q)) {
+        strcat(why, "; never asymptotically stable");
+        rs_json_set_never_conditions(o, why);
+        never = S->q.never = 1;
+    }
     rs_an_qd_json_p(o, S->p0, S->p1, run);
     json_object_set_new(o, "degree", json_integer(S->n));
     json_object_set_new(o, "conditions", conds);
@@ -1378,3 +1361,14 @@ int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req,
     qd_sym_clear(&S, S.n);
     return decided;
 }
+
+/* qc_add, qc_hold and qc_clear for the conditions over Q(sqrt d)(i) (an_qd_complex.c) */
+int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t *dropped, const fmpz_mpoly_t f,
+                       const char *origin, const int *sign)
+{
+    return qc_add(q, conds, parts, dropped, f, origin, sign);
+}
+
+int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt) { return qc_hold(q, pt); }
+
+void rs_an_qd_conds_clear(rs_an_qd_conds_t *q) { qc_clear(q); }

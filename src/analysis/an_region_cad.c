@@ -254,6 +254,23 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
     return r;
 }
 
+/* a rational sample's cell decided; over Q(sqrt d) a sample the point
+ * verdict leaves open (RS_ERR_UNDECIDED: a repeated root on the circle,
+ * marginal or unstable by the matrix only) keeps its cell undecided with
+ * the reason, as the irrational columns do, and the run goes on */
+static int cad_sample_status(cell_t *e, cad_t *c, fmpq *vals)
+{
+    int r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
+    e->decided = r == RS_OK;
+    if (r == RS_ERR_UNDECIDED && c->qd != NULL) {
+        e->why = "a repeated root on the unit circle at the rational sample: marginal and unstable are not told "
+                 "apart over Q(sqrt d) (Schur-Cohn and the roots see only that no root is outside)";
+        rs_error_init(c->run->err);
+        r = RS_OK;
+    }
+    return r;
+}
+
 /* the status of N (a polynomial in lambda over Z[N1, N2]) at the point
  * (A, B)(gamma) of the tower Q(gamma) = Q[x]/(m), g its algebraic number:
  * exact (rs_alg_status_coeffs); 0 when undecided */
@@ -730,8 +747,7 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
             if (!e->outside && r == RS_OK) {
                 if (rt->rational) {
                     fmpq_set(vals + 1, rt->q);
-                    r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
-                    e->decided = r == RS_OK;
+                    r = cad_sample_status(e, c, vals);
                 } else if (c->cx != NULL) {
                     cx_pt_t pt = {a0, NULL, NULL, rt, NULL, NULL, NULL, NULL};
                     e->st = cx_status(c, &pt);
@@ -751,8 +767,7 @@ static int cad_column(cad_t *c, const fmpq_t a0, int sector, slong col)
             e->outside = cad_outside(c, e->sg);
             if (!e->outside && r == RS_OK) {
                 fmpq_set(vals + 1, bs.q);
-                r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
-                e->decided = r == RS_OK;
+                r = cad_sample_status(e, c, vals);
             }
         }
         e->a = rs_json_fmpq(a0);
@@ -1683,6 +1698,11 @@ static int cad_cross_check(json_t *o, cad_t *c, const json_t *stable, const json
         rand_in(vals + 0, st, c->bounds + c->av, alo, ahi);
         rand_in(vals + 1, st, c->bounds + c->bv, c->blo, c->bhi);
         r = cad_point_status(&ps, c, vals);
+        if (r == RS_ERR_UNDECIDED && c->qd != NULL) {   /* a repeated circle root there: not compared */
+            rs_error_init(c->run->err);
+            r = RS_OK;
+            continue;
+        }
         if (r != RS_OK) break;
         if (!dnf_holds(&hs, stable, c, vals + 0, vals + 1)
             || (marginal != NULL ? !dnf_holds(&hm, marginal, c, vals + 0, vals + 1) : (hm = 0, 0))) {
@@ -2412,6 +2432,12 @@ static int cad_solve(cad_t *c, json_t *substituted)
                 ? "some cells over irrational critical values of the first parameter are not decided (a sign "
                   "the norms and balls did not separate, a line of degree above 12, or signs and root balls that "
                   "disagree; each such cell says why in undecided_because): the formula is exact off those cells"
+                : c->qd != NULL
+                ? "some cells are not decided (over irrational critical values of the first parameter: a "
+                  "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
+                  "norms and balls did not separate, a line of degree above 8; or a system's repeated circle "
+                  "root, at a rational sample too; each such cell says why in undecided_because): the formula "
+                  "is exact off those cells"
                 : "some cells over irrational critical values of the first parameter are not decided (a "
                   "section with a root on the circle whose algebraic tower has degree above 64, a sign the "
                   "norms and balls did not separate, a line of degree above 8, or a system's repeated circle "

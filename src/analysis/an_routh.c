@@ -188,7 +188,8 @@ static int routh_real(rs_run_t *run, const rs_an_req_t *req)
 
 int rs_an_routh(rs_run_t *run, const rs_an_req_t *req)
 {
-    if (run->m->qd != NULL) return rs_an_qd_routh(run, req);   /* over Q(sqrt d) (an_qd_conds.c) */
+    if (run->m->qd != NULL)   /* over Q(sqrt d) (an_qd_conds.c), at complex set values over Q(sqrt d)(i) */
+        return run->c->ncsets > 0 ? rs_an_qd_cx_conds(run, req, 2) : rs_an_qd_routh(run, req);
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_routh(run, req);
     return routh_real(run, req);

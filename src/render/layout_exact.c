@@ -377,6 +377,11 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
         rs_render_assigned(r, o);
         return;
     }
+    if (json_object_get(o, "bilharz") != NULL) {
+        /* at complex set values over Q(sqrt d)(i): hurwitz's Bilharz conditions (an_qd_complex.c) */
+        rs_render_hurwitz(r, o);
+        return;
+    }
     rs_render_heading(r, "Routh array of q(z)", "Routh array of $q(z)$");
     if (sym) rs_render_line(r, "array", "%s", "fraction-free, symbolic");
     rs_render_rows(r, json_object_get(o, "rows"), sym ? NULL : json_object_get(o, "powers"));
@@ -441,7 +446,7 @@ static void complex_p(rs_render_t *r, const json_t *o)
                       "$d\\,c_1^2$.\n\n");
         return;
     }
-    rs_render_linef(r, "p(lambda)", "%s + i*(%s) (over Q(i))", js(o, "p_re"), js(o, "p_im"));
+    rs_render_linef(r, "p(lambda)", "%s + i*(%s) (over %s)", js(o, "p_re"), js(o, "p_im"), js(o, "over"));
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
 
@@ -503,7 +508,10 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
         rs_render_line(r, "method", "%s", js(o, "method"));
     } else if (js(o, "over") != NULL) {
         /* over Q(i): the Bilharz conditions (an_complex_conds.c) */
-        rs_render_heading(r, "Bilharz conditions of q(z) over Q(i)", "Bilharz conditions of $q(z)$ over $Q(i)$");
+        /* over Q(i), or over Q(sqrt d)(i) (an_qd_complex.c) */
+        rs_render_heading_begin(r);
+        rs_render_sayf(r, "Bilharz conditions of q(z) over %s", "Bilharz conditions of $q(z)$ over $%s$", js(o, "over"));
+        rs_render_heading_end(r);
         complex_p(r, o);
         rs_render_line(r, "q(i w)", "conj(c) i^-n q(i w) = P + i Q, P = %s", js(o, "P"));
         rs_render_line(r, "", "Q = %s", js(o, "Q"));

@@ -571,6 +571,93 @@ PY
 else ok "skipped sdirk2 astability JSON: no python3"; fi
 check_status "sdirk2 z=-1 (|R|^2 = (408 - 80 sqrt 2)/2401)" stable "$SP"
 
+# ---- jury / hurwitz / routh at a complex set value over Q(sqrt 2)(i) (issue 15) ----
+# cases/complex/sdirk2-complex-conditions.case: z = k (-1/2 + 3/2 i), k free.
+# Independently: R(z) from SDIRK2's Butcher tableau (the two stages solved in
+# complex double, no recstab), |R(k q)| < 1 against the printed conditions;
+# the hand values k = 1, -5 stable, k = -1, 0 not (derivation in the case).
+SQ=cases/complex/sdirk2-complex-conditions.case
+"$RS" --json "$SQ" >"$T/sq.json" 2>"$T/err"; rc=$?
+if command -v python3 >/dev/null 2>&1; then
+    res=$(python3 - "$T/sq.json" <<'PY'
+import json, sys
+res = json.load(open(sys.argv[1]))["cases"][0]["results"]
+bad = []
+g = 1 - 2 ** 0.5 / 2
+def R(z):   # one step of SDIRK2 on y' = z y from y = 1 (A = [g, 0; 1-g, g], b = (1-g, g))
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - g) * k1) / (1 - g * z)
+    return 1 + (1 - g) * k1 + g * k2
+def holds(cq, k):
+    v = lambda t: eval(t.replace("^", "**"), {"k": k})
+    val = v(cq["c0"]) + 2 ** 0.5 * v(cq["c1"])
+    return val > 0 if cq["rel"] == ">" else val != 0
+if [r["analysis"] for r in res] != ["jury", "hurwitz", "routh"]: bad.append("analyses")
+for r in res:
+    if r.get("over") != "Q(sqrt 2)(i)": bad.append(r["analysis"] + " over")
+    if not r.get("sample_check", {}).get("agree") or not r.get("cross_check", {}).get("agree"): bad.append(r["analysis"] + " checks")
+    n = 0
+    for i in range(-120, 121):
+        k = i / 16 + 1 / 64
+        a = abs(R(k * complex(-0.5, 1.5)))
+        if abs(a - 1) < 1e-9: continue
+        n += 1
+        if all(holds(cq, k) for cq in r["conditions_qd"]) != (a < 1): bad.append("%s k=%g" % (r["analysis"], k))
+    if n < 200: bad.append("few points")
+print("yes" if not bad else "no " + " ".join(bad[:5]))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 z = k(-1/2+3i/2): jury, hurwitz, routh over Q(sqrt 2)(i) match |R(kq)| < 1 from the tableau"
+    else fail "sdirk2 complex conditions: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 complex conditions: no python3"; fi
+for pt in "1 stable" "-5 stable" "-1 unstable" "0 unstable"; do
+    set -- $pt
+    v=$("$RS" --json --set "k=$1" "$SQ" 2>"$T/err" | python3 -c 'import json,sys; print(" ".join(r["verdict"] for r in json.load(sys.stdin)["cases"][0]["results"]))' 2>/dev/null)
+    w="stable under the assumptions"; [ "$2" = unstable ] && w="never stable"
+    if [ "$v" = "$w $w $w" ]; then ok "sdirk2 z = $1*(-1/2+3i/2): $2 over Q(sqrt 2)(i) (by hand in the case)"
+    else fail "sdirk2 complex k=$1: '$v' $(head -1 "$T/err")"; fi
+done
+
+# never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
+# (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
+sed 's/^param q k/param q k\nassume -3 <= k <= -1/' "$SQ" >"$T/sqn.case"
+sed 's/^param q k/param q k\nassume -4 <= k <= -1/' "$SQ" >"$T/sqn4.case"
+v=$("$RS" --json "$T/sqn.case" 2>"$T/err" | python3 -c 'import json,sys; print(" ".join(r["verdict"].replace(" ", "_") + ":" + str(r["sample_check"]["agree"]) for r in json.load(sys.stdin)["cases"][0]["results"]))' 2>/dev/null)
+w=$("$RS" --json --analyse jury "$T/sqn4.case" 2>/dev/null | python3 -c 'import json,sys; print(json.load(sys.stdin)["cases"][0]["results"][0]["verdict"])' 2>/dev/null)
+if [ "$v" = "never_stable:True never_stable:True never_stable:True" ] && [ "$w" = "stable iff the conditions hold" ]; then
+    ok "sdirk2 z = k(-1/2+3i/2), -3 <= k <= -1: never stable over Q(sqrt 2)(i); -4 <= k <= -1 not"
+else fail "sdirk2 complex never: '$v' '$w' $(head -1 "$T/err")"; fi
+
+# region a, b over Q(sqrt 2) with a repeated circle root at the rational sample (0, 0)
+# (by hand in the case: stable iff a < 0 and b < 0): that cell undecided with its
+# reason, the run finished (it stopped there with RS_ERR_UNDECIDED before)
+SU=cases/complex/sdirk2-euler-region2-undecided.case
+"$RS" --json "$SU" >"$T/su.json" 2>"$T/err"; rc=$?
+res=$(python3 - "$T/su.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+und = [c for c in r["cells"] if c["status"] == "undecided"]
+ok = (r["over"] == "Q(sqrt 2)" and r["formula"]["stable"] == [["a < 0", "b < 0"]]
+      and len(und) == 1 and und[0]["a"] == "0" and und[0]["b"] == "0"
+      and "repeated root on the unit circle" in und[0]["undecided_because"]
+      and r["formula_complete"] is False and r["cross_check"]["agree"] == r["cross_check"]["points"]
+      and r["samples_cross_checked"]["disagree"] == 0)
+print("yes" if ok else "no %s %s" % (r["formula"], und))
+PY
+)
+if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 + forward Euler region a, b: stable iff a < 0 and b < 0, (0, 0) undecided (repeated circle root), run finished"
+else fail "sdirk2 region2 undecided: rc=$rc $res $(head -1 "$T/err")"; fi
+
+# region a, c over Q(sqrt 2) at a complex value of a third parameter: not built, refused at
+# its line (exit 2) naming what runs (jury there gives the conditions over Q(sqrt 2)(i)[a, c])
+printf 'param a c q\nassume a > 0\nsubsystem S state y\n  y'"'"' = -a*y + c*x\nsubsystem T state x\n  x'"'"' = -c*y - q*x\nintegrate S rk sdirk2 1\nintegrate T euler-backward 1\ncouple jacobi\nset q = 1 + i/2\nanalyse region a, c\nanalyse jury\n' >"$T/r3.case"
+"$RS" "$T/r3.case" >/dev/null 2>"$T/err"; rc=$?
+v=$("$RS" --json --analyse jury "$T/r3.case" 2>/dev/null | python3 -c 'import json,sys; r=json.load(sys.stdin)["cases"][0]["results"][0]; print(r["over"], r["sample_check"]["agree"], r["cross_check"]["agree"])' 2>/dev/null)
+if [ "$rc" = 2 ] && grep -q "r3.case:11:9: expected real set values: region over Q(sqrt 2) .*its cells would need Q(sqrt 2)(i)" "$T/err" \
+   && [ "$v" = "Q(sqrt 2)(i) True True" ]; then
+    ok "sdirk2 region a, c at complex q refused (exit 2, file:line:col); jury there runs over Q(sqrt 2)(i)[a, c]"
+else fail "sdirk2 region2 complex third: rc=$rc '$v' $(head -1 "$T/err")"; fi
+
 # ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
 SR=cases/complex/sdirk2-coupled-routh.case
 "$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
@@ -1037,10 +1124,45 @@ else fail "sdirk2 two quantified: rc=$rc $(head -1 "$T/err")"; fi
 if [ "$rc" = 2 ] && grep -q "two for a stable or bounded claim" "$T/err"; then
     ok "sdirk2 unstable claim with two free parameters refused (exit 2)"
 else fail "sdirk2 unstable claim two free: rc=$rc $(head -1 "$T/err")"; fi
-"$RS" --analyse jury --set 'c=1/2+i/4' "$SC" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "expected real set values: jury over Q(sqrt 2)" "$T/err"; then
-    ok "sdirk2 jury at a complex set value refused (exit 2)"
-else fail "sdirk2 jury complex refusal: rc=$rc $(head -1 "$T/err")"; fi
+# jury at the complex coupling c = 1/2 + i/4 with a free (a > 0): conditions
+# over Q(sqrt 2)(i)[a]; independently the step matrix M of (y, x) from the
+# method's definition in complex double (the stages of sdirk2_steps.py, one
+# step from each unit vector) and its spectral radius from the quadratic
+# formula: the conditions hold exactly where rho(M) < 1
+"$RS" --json --analyse jury --set 'c=1/2+i/4' cases/complex/sdirk2-coupled-conditions.case >"$T/jc.json" 2>"$T/err"; rc=$?
+res=$(python3 - "$T/jc.json" <<'PY'
+import json, sys, cmath
+r = json.load(open(sys.argv[1]))["cases"][0]["results"][0]
+g = 1 - 2 ** 0.5 / 2
+c = complex(0.5, 0.25)
+def step(a, y, x):   # sdirk2 on y' = -a y + c x (x frozen), backward Euler on x' = -c y - x (y frozen), h = 1
+    k1 = (-a * y + c * x) / (1 + a * g)
+    k2 = (-a * (y + (1 - g) * k1) + c * x) / (1 + a * g)
+    return y + (1 - g) * k1 + g * k2, (x - c * y) / 2
+def rho(a):
+    (m11, m21), (m12, m22) = step(a, 1, 0), step(a, 0, 1)
+    tr, det = m11 + m22, m11 * m22 - m12 * m21
+    w = cmath.sqrt(tr * tr - 4 * det)
+    return max(abs((tr + w) / 2), abs((tr - w) / 2))
+def holds(cq, a):
+    v = lambda t: eval(t.replace("^", "**"), {"a": a})
+    val = v(cq["c0"]) + 2 ** 0.5 * v(cq["c1"])
+    return val > 0 if cq["rel"] == ">" else val != 0
+bad = []
+if r.get("over") != "Q(sqrt 2)(i)" or not r["sample_check"]["agree"] or not r["cross_check"]["agree"]: bad.append("checks")
+n = 0
+for i in range(1, 400):
+    a = i / 40
+    q = rho(a)
+    if abs(q - 1) < 1e-9: continue
+    n += 1
+    if all(holds(cq, a) for cq in r["conditions_qd"]) != (q < 1): bad.append("a=%g rho=%g" % (a, q))
+print("yes" if not bad and n > 390 else "no %s" % bad[:4])
+PY
+)
+if [ "$rc" = 0 ] && [ "$res" = yes ]; then
+    ok "sdirk2 jury at complex coupling c = 1/2+i/4 over Q(sqrt 2)(i)[a]: matches rho(M) < 1 from the definition"
+else fail "sdirk2 jury at complex c: rc=$rc $res $(head -1 "$T/err")"; fi
 "$RS" --markdown "$SCC" >"$T/scc.md" 2>"$T/err"
 if grep -q '^### Hurwitz minors of q(z) over Q(sqrt 2)$' "$T/scc.md" && grep -q 'p_0 + \\sqrt{d}' "$T/scc.md"; then
     ok "sdirk2 conditions: Markdown derivation over Q(sqrt 2)"
@@ -1111,7 +1233,7 @@ if [ "$rc" = 0 ] && tr -d ' \n' <"$T/rc.json" | grep -q '"status":"marginal".*17
     ok "sdirk2 region c with c complex-set: runs, |c| < c* stable, +-c* marginal"
 else fail "sdirk2 region c with c complex-set: rc=$rc $(head -1 "$T/err")"; fi
 "$RS" --set 'c=1/2+i/4' --set a=1 --analyse 'region a' "$SC" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "stability, radius, modes and simulate do" "$T/err"; then
+if [ "$rc" = 2 ] && grep -q "stability, radius, modes, simulate, jury, hurwitz and routh do" "$T/err"; then
     ok "sdirk2 region a at a complex c refused (exit 2), naming what runs"
 else fail "sdirk2 region a at complex c: rc=$rc $(head -1 "$T/err")"; fi
 # The field in the derivations is the model's (lead review): sdirk3's stage

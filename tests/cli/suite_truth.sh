@@ -250,6 +250,17 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/never-sympy-p6-positive.case
     check "SymPy p6, b0 b1 b3 > 0: jury never stable by a negative sum, the samples agree" '["never stable",true,true]' \
         "$(jfield $C 1 '| [.verdict, (.never | contains("their sum is negative")), .sample_check.agree]')"
+    # never over Q(sqrt 2) (issue 15; by hand in the case: z = 1 + c^2 in [1, 2], |R| > 1 there):
+    # jury, hurwitz and routh said "stable iff" a condition holding nowhere on 0 <= c <= 1
+    C=cases/truth/sdirk2-never-qd.case
+    check "sdirk2 z = 1 + c^2, 0 <= c <= 1: never stable over Q(sqrt 2), samples agree" \
+        '[["never stable","conditions",true],["never stable","conditions",true],["never stable","conditions",true]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '[.cases[0].results[] | [.verdict, .never_from, .sample_check.agree]]')"
+    # the control: 0 <= c <= 4 reaches z = 17 > 6 + 4 sqrt 2, where |R| < 1: not never
+    sed 's/assume 0 <= c <= 1/assume 0 <= c <= 4/' $C >"$T/never4.case"
+    check "sdirk2 z = 1 + c^2, 0 <= c <= 4: stable iff (z > 6 + 4 sqrt 2 reached)" \
+        '["stable iff the conditions hold",null]' \
+        "$("$RS" --json --analyse jury "$T/never4.case" 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .never]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi

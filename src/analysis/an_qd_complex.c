@@ -1,0 +1,325 @@
+/* an_qd_complex.c -- issue 15: `jury`, `hurwitz` and `routh` of a model over
+ * Q(sqrt d) (rk sdirk2, sdirk3, ...) at complex set values (`set z = -1/2 +
+ * 3/2*i`), the other parameters real and set or free.  The arithmetic is the
+ * composition of the two pieces already there: the scheme keeps sqrt(d) as a
+ * real variable s (reduced by s^2 = d), the complex set values make p = re +
+ * i im with re, im in Z[params, s][lambda] (complex_poly.c), and the Q(i)
+ * conditions (stability/schur_complex.c, stability/routh_complex.c: I a
+ * variable reduced by I^2 = -1) run on it with s one more real parameter.
+ * Both are polynomial identities in the coefficients (Schur-Cohn divides
+ * only by lambda; Bilharz's subresultants specialise), so reducing each
+ * condition by s^2 = d gives the conditions at s = sqrt(d): c0 + sqrt(d) c1
+ * > 0 with c0, c1 in Z[params], decided exactly (an_qd_conds.c's qc_add).
+ *   jury    Schur-Cohn over Q(sqrt d)(i): delta_k = |a_k|^2 - |a_0|^2 > 0;
+ *   hurwitz, routh  Bilharz on the bilinear image (the complex Routh-Hurwitz).
+ * The other method's conditions are computed too: at admissible rational
+ * points both must agree with each other and with the exact point verdict
+ * (Schur-Cohn over Q(sqrt d)(i) against the certified Arb roots,
+ * rs_qdc_stable_checked); any disagreement is exit 3. */
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpq_vec.h>
+#include <flint/fmpz_mpoly.h>
+#include "analysis/registry.h"
+#include "analysis/an_qd.h"
+#include "algebra/qsqrt.h"
+#include "stability/routh_complex.h"
+#include "stability/schur_complex.h"
+
+#define QDC_SAMPLE_POINTS 12
+
+static const char *const kind_name[3] = {"jury", "hurwitz", "routh"};
+
+/* "Q(sqrt d)(i)" (flint_free it) */
+static char *qdc_over_str(slong d)
+{
+    char *s = flint_malloc(48);
+    snprintf(s, 48, "Q(sqrt %ld)(i)", (long) d);
+    return s;
+}
+
+/* f as "(c0 + sqrt(d)*(c1))*lambda^k + ..." (each lambda-coefficient over
+ * Q(sqrt d)[params]; flint_free it) */
+static char *qdc_poly_str(const fmpz_mpoly_t f, slong n, const rs_scheme_struct *s, const char *var)
+{
+    fmpz_mpoly_t a, a0, a1;
+    char *out = flint_malloc(1);
+    size_t len = 0;
+    slong k;
+    out[0] = '\0';
+    fmpz_mpoly_init(a, s->zctx); fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+    for (k = n; k >= 0; k--) {
+        char *c;
+        size_t m;
+        rs_charpoly_coeff(a, f, k, s->lambda_var, s->zctx);
+        if (fmpz_mpoly_is_zero(a, s->zctx)) continue;
+        rs_charpoly_coeff(a0, a, 0, s->sqrt_var, s->zctx);
+        rs_charpoly_coeff(a1, a, 1, s->sqrt_var, s->zctx);
+        c = rs_an_qd_mpoly_str(a0, a1, s, 1);
+        m = len + strlen(c) + strlen(var) + 40;   /* the capacity */
+        out = flint_realloc(out, m);
+        len += (size_t) snprintf(out + len, m - len, "%s(%s)%s%s", len > 0 ? " + " : "", c,
+                                 k == 0 ? "" : "*", k == 0 ? "" : var);
+        if (k > 1) len += (size_t) snprintf(out + len, m - len, "^%ld", (long) k);
+        flint_free(c);
+    }
+    if (len == 0) {
+        out = flint_realloc(out, 2);
+        strcpy(out, "0");
+    }
+    fmpz_mpoly_clear(a, s->zctx); fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+    return out;
+}
+
+static json_t *qdc_poly_json(const fmpz_mpoly_t f, const rs_scheme_struct *s, const char *var)
+{
+    char *str = qdc_poly_str(f, fmpz_mpoly_degree_si(f, s->lambda_var, s->zctx), s, var);
+    json_t *j = json_string(str);
+    flint_free(str);
+    return j;
+}
+
+int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s)
+{
+    fmpq_poly_t e;
+    rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
+    slong k, deg = -1;
+    int sc = -1, j;
+    fmpq_poly_init(e);
+    for (j = 0; j < 4; j++) {
+        if (part[j] == NULL) continue;
+        rs_run_cx_eval(e, part[j], pt, s);
+        deg = FLINT_MAX(deg, fmpq_poly_degree(e));
+        for (k = 0; k <= n; k++) {
+            rs_qd_struct *x = j < 2 ? c[k].re : c[k].im;
+            fmpq_poly_get_coeff_fmpq((j & 1) ? x->y : x->x, e, k);
+        }
+    }
+    /* x + sqrt(d) y = 0 only for x = y = 0: the degree over Q(sqrt d)(i) is deg */
+    if (deg >= 0 && deg < n) sc = 0;
+    else if (deg == n) {
+        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
+        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
+    }
+    rs_qdc_vec_clear(c, n + 1);
+    fmpq_poly_clear(e);
+    return sc;
+}
+
+/* rs_an_qd_parts_stable of re + i im (sqrt(d) a variable in both) */
+static int qdc_point_stable(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong n, fmpq *const *pt,
+                            const rs_scheme_struct *s)
+{
+    fmpz_mpoly_struct q[4];
+    const fmpz_mpoly_struct *part[4];
+    int j, sc;
+    for (j = 0; j < 4; j++) {
+        fmpz_mpoly_init(q + j, s->zctx);
+        rs_charpoly_coeff(q + j, j < 2 ? re : im, j & 1, s->sqrt_var, s->zctx);
+        part[j] = q + j;
+    }
+    sc = rs_an_qd_parts_stable(part, n, pt, s);
+    for (j = 0; j < 4; j++) fmpz_mpoly_clear(q + j, s->zctx);
+    return sc;
+}
+
+/* the two lists: Schur-Cohn's deltas (m = 0) and Bilharz's conditions (m = 1) */
+typedef struct {
+    rs_an_qd_conds_t q[2];
+    int never[2];
+    json_t *raw[2], *conds[2], *parts[2], *dropped[2], *always[2];
+} qdc_lists_t;
+
+static void qdc_lists_init(qdc_lists_t *L, const rs_scheme_struct *s)
+{
+    int m;
+    for (m = 0; m < 2; m++) {
+        L->q[m].n = 0; L->q[m].c0 = L->q[m].c1 = NULL; L->q[m].ne = NULL; L->q[m].s = s; L->q[m].never = 0;
+        L->never[m] = 0;
+        L->raw[m] = json_array(); L->conds[m] = json_array(); L->parts[m] = json_array();
+        L->dropped[m] = json_array(); L->always[m] = json_array();
+    }
+}
+
+static void qdc_lists_clear(qdc_lists_t *L)
+{
+    int m;
+    for (m = 0; m < 2; m++) {
+        rs_an_qd_conds_clear(&L->q[m]);
+        json_decref(L->raw[m]); json_decref(L->conds[m]); json_decref(L->parts[m]);
+        json_decref(L->dropped[m]); json_decref(L->always[m]);
+    }
+}
+
+/* f > 0 (f in Z[params, s], reduced here by s^2 = d) into list m */
+static void qdc_add(qdc_lists_t *L, int m, fmpz_mpoly_t f, const char *origin, const int *sign,
+                    const rs_scheme_struct *s)
+{
+    int a;
+    rs_scheme_reduce_sqrt(f, s);
+    json_array_append_new(L->raw[m], json_pack("{s:s,s:o}", "origin", origin, "poly", rs_json_zpoly(f, s)));
+    if (fmpz_mpoly_is_zero(f, s->zctx)) {
+        rs_json_append_unique(L->conds[m], "0 > 0");
+        L->never[m] = 1;
+        return;
+    }
+    a = rs_an_qd_conds_add(&L->q[m], L->conds[m], L->parts[m], L->dropped[m], f, origin, sign);
+    if (a == 1) json_array_append_new(L->always[m], json_string(origin));
+    if (a == -1) L->never[m] = 1;
+}
+
+/* what list m says at pt: 1 stable */
+static int qdc_says(const qdc_lists_t *L, int m, fmpq *const *pt)
+{
+    return !L->never[m] && rs_an_qd_conds_hold(&L->q[m], pt);
+}
+
+/* both lists against each other and the exact point verdict at admissible
+ * rational points of the free parameters (sqrt(d)'s variable skipped) */
+static int qdc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
+                            slong n, const qdc_lists_t *L, int m, json_t *o, const rs_request_t *rq)
+{
+    rs_sample_pts_t P;
+    slong nok = 0;
+    json_t *chk = json_object(), *bad = NULL;
+    int r = RS_OK;
+    rs_sample_pts_init(&P, run, v, re, im, v->s->sqrt_var);
+    while (nok < (P.nfree > 0 ? QDC_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
+        int says, st = qdc_point_stable(re, im, n, P.pp, v->s);
+        if (st == -1) continue;
+        if (st == -2) {
+            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): Schur-Cohn and the "
+                             "certified roots disagree at a sample point", rq->text);
+            break;
+        }
+        says = qdc_says(L, m, P.pp);
+        if (qdc_says(L, 1 - m, P.pp) != says) {
+            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): the Schur-Cohn and the "
+                             "Bilharz conditions disagree at a sample point", rq->text);
+            break;
+        }
+        nok++;
+        if (st != says) {
+            bad = rs_sample_pts_json(&P);
+            rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
+        }
+    }
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d)(i) (Schur-Cohn with exact "
+                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
+                            "assumptions");
+    json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", m == 0 ? "Bilharz (complex "
+                        "Routh-Hurwitz on the bilinear image) over Q(sqrt d)(i): its conditions at the same sample "
+                        "points" : "Schur-Cohn over Q(sqrt d)(i): its conditions delta_k > 0 at the same sample "
+                        "points", "points", (json_int_t) nok, "agree", r == RS_OK));
+    rs_sample_pts_clear(&P);
+    return r;
+}
+
+static const char qdc_note_jury[] =
+    "Schur-Cohn over Q(sqrt d)(i) without divisions: p_(k-1) = (conj(a_k) p_k - a_0 p_k*)/lambda, p* = lambda^k "
+    "conj(p(1/conj(lambda))), sqrt(d) real (s^2 = d and i^2 = -1 after every product); all |lambda| < 1 iff every "
+    "delta_k = |a_k|^2 - |a_0|^2 > 0 (Marden, Geometry of Polynomials, Thm 43.1); c0 + sqrt(d)*(c1) > 0 decided "
+    "exactly by comparing c0^2 with d*c1^2";
+static const char qdc_note_bilharz[] =
+    "Bilharz (generalised Routh-Hurwitz) over Q(sqrt d)(i) on q(s) = (1 - s)^n p((1 + s)/(1 - s)): with c = "
+    "(-1)^n p(-1), conj(c) i^(-n) q(i w) = P(w) + i Q(w) (P, Q real, in Q(sqrt d)[params]); every |lambda| < 1 iff "
+    "|c|^2 > 0 and the fraction-free signed remainder chain of P, Q (subresultants, polynomial in sqrt(d), then "
+    "sqrt(d)^2 = d) has (-1)^k lc(T_k) > 0 for k = 1..n";
+
+int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t re, im;
+    rs_schur_cx_conds_t sc;
+    rs_routh_cx_conds_t bc;
+    qdc_lists_t L;
+    json_t *o;
+    slong n, k;
+    int r, m = kind == 0 ? 0 : 1, *sign;
+    char buf[80], buf2[1100], *over;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    if (v->singular)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: the leading coefficient of p vanishes at "
+                            "the set values: the implicit step cannot be solved there", req->def->name);
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    /* the roots at 0 the charpoly divided out are inside: left out */
+    rs_run_cx_poly(re, im, run, v);
+    rs_scheme_reduce_sqrt(re, s);
+    rs_scheme_reduce_sqrt(im, s);
+    n = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
+    if (n < 1) {
+        fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+        snprintf(buf, sizeof buf, "%s", req->def->name);
+        return rs_req_error(run, req->q, req->q->text, n < 0 ? RS_ERR_MATH : RS_ERR_INPUT, n < 0 ? "%s: the "
+                            "characteristic polynomial vanishes at the complex set values" : "%s: p has no root "
+                            "(degree 0 in lambda) at the complex set values", buf);
+    }
+    rs_schur_cx_conds_init(&sc);
+    rs_routh_cx_conds_init(&bc, s->zctx);
+    qdc_lists_init(&L, s);
+    sign = rs_run_signs(run, s);
+    if (!rs_schur_cx_conds(&sc, re, im, s->lambda_var, s->zctx)
+        || !rs_routh_cx_conds(&bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS))
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "%s over Q(sqrt d)(i): a condition grew over the "
+                         "term limit", req->def->name);
+    if (r == RS_OK) r = rs_budget_check(run->err, "the conditions over Q(sqrt d)(i)");
+    for (k = 0; r == RS_OK && k < sc.ndelta; k++) {
+        snprintf(buf, sizeof buf, "delta_%ld", (long) (n - k));
+        qdc_add(&L, 0, sc.delta + k, buf, sign, s);
+        if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) break;   /* the recursion stops there */
+    }
+    for (k = 0; r == RS_OK && k < bc.ncond; k++) {
+        if (k == 0) snprintf(buf, sizeof buf, "|c|^2");
+        else snprintf(buf, sizeof buf, "%slc(T_%ld)", (k & 1) ? "-" : "", (long) k);
+        qdc_add(&L, 1, bc.cond + k, buf, sign, s);
+    }
+    if (r != RS_OK) goto done;
+    o = json_object();
+    over = qdc_over_str(s->sqrt_d);
+    json_object_set_new(o, "analysis", json_string(kind_name[kind]));
+    json_object_set_new(o, "over", json_string(over));
+    flint_free(over);
+    json_object_set_new(o, "method", json_string(m == 0 ? "Schur-Cohn over Q(sqrt d)(i), symbolic"
+                                                 : "Bilharz (complex Routh-Hurwitz) over Q(sqrt d)(i), symbolic"));
+    json_object_set_new(o, "symbolic", json_true());
+    json_object_set_new(o, "at", rs_run_cx_at(run));
+    json_object_set_new(o, "p_re", qdc_poly_json(re, s, "lambda"));
+    json_object_set_new(o, "p_im", qdc_poly_json(im, s, "lambda"));
+    if (m == 1) {
+        /* P + i Q = conj(c) i^(-n) q(i w), sqrt(d)^2 = d */
+        rs_scheme_reduce_sqrt(bc.P, s);
+        rs_scheme_reduce_sqrt(bc.Q, s);
+        json_object_set_new(o, "var", json_string("z"));
+        json_object_set_new(o, "P", qdc_poly_json(bc.P, s, "w"));
+        json_object_set_new(o, "Q", qdc_poly_json(bc.Q, s, "w"));
+    }
+    json_object_set_new(o, "degree", json_integer(n));
+    json_object_set_new(o, m == 0 ? "deltas" : "bilharz", json_incref(L.raw[m]));
+    json_object_set_new(o, "conditions", json_incref(L.conds[m]));
+    json_object_set_new(o, "conditions_qd", json_incref(L.parts[m]));
+    json_object_set_new(o, "dropped", json_incref(L.dropped[m]));
+    json_object_set_new(o, "always_true", json_incref(L.always[m]));
+    json_object_set_new(o, "note", json_string(m == 0 ? qdc_note_jury : qdc_note_bilharz));
+    /* never under the assumptions (an_qd_never.c): both lists say so, the
+     * sample check then expects no stable point */
+    if (!L.never[m] && L.q[m].n > 0 && rs_an_qd_conds_never(buf2, 1000, run, &L.q[m])) {
+        strcat(buf2, "; never asymptotically stable");
+        rs_json_set_never_conditions(o, buf2);
+        L.never[m] = L.q[m].never = 1;
+    }
+    json_object_set_new(o, "verdict", json_string(L.never[m] ? "never stable" : L.q[m].n == 0
+                                                  ? "stable under the assumptions" : "stable iff the conditions hold"));
+    r = qdc_sample_check(run, v, re, im, n, &L, m, o, req->q);
+    if (r == RS_OK) rs_run_emit_exact(run, v, o);
+    else json_decref(o);
+done:
+    flint_free(sign);
+    qdc_lists_clear(&L);
+    rs_schur_cx_conds_clear(&sc, s->zctx);
+    rs_routh_cx_conds_clear(&bc, s->zctx);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return r;
+}
