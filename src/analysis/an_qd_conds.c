@@ -1338,18 +1338,34 @@ int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, 
 }
 
 int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0, slong qv,
-                         rs_alg_t *q0)
+                         rs_alg_t *q0, const rs_assign_t *extra, slong nextra)
 {
     qd_sym_t S;
     rs_alg_t sq, g1, g2;
     fmpq_poly_t A1, B1, A2, B2, T, R, m;
     fmpq_poly_struct *c = NULL;
+    rs_variant_t *v = NULL;
     slong j;
-    int r = qd_sym_init(&S, run, req, NULL), decided = 0;
+    int r = RS_OK, decided = 0;
+    if (nextra > 0) {   /* the set values and extra[], tv and qv kept free */
+        const char *keep[2];
+        rs_assign_t *as = NULL;
+        slong nas = 0;
+        keep[0] = run->c->params[tv].name;
+        keep[1] = run->c->params[qv].name;
+        rs_run_assignments(run, &as, &nas, keep, 2, extra, nextra);
+        r = rs_run_variant(&v, run, as, nas);
+        rs_assign_free(as, nas);
+    }
+    S.a = NULL;
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
     if (r != RS_OK) {
+        /* the leading coefficient vanishing for every tv, qv at extra[]: singular */
+        decided = S.a != NULL && S.v->singular;
+        if (decided) *st = RS_STATUS_SINGULAR;
         rs_error_init(run->err);
         qd_sym_clear(&S, S.a != NULL ? S.n : -1);
-        return 0;
+        return decided;
     }
     rs_alg_init(&sq); rs_alg_init(&g1); rs_alg_init(&g2);
     fmpq_poly_init(A1); fmpq_poly_init(B1); fmpq_poly_init(A2); fmpq_poly_init(B2);
