@@ -786,6 +786,33 @@ int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
+/* a counterexample as a claim over Q(sqrt d) gives it (an_qd_conds.c's
+ * one-parameter claims): each algebraic value by its digits, exactly which
+ * root of which polynomial in "exact" */
+static json_t *qf_claim_point(const json_t *cx)
+{
+    json_t *out = json_object(), *v;
+    const char *k;
+    char *ex = NULL;
+    json_object_foreach((json_t *) cx, k, v) {
+        if (json_is_object(v) && json_object_get(v, "minpoly") != NULL) {
+            char buf[600];
+            snprintf(buf, sizeof buf, "%s%s%s: root %ld (from below, 0-based) of %s", ex != NULL ? ex : "",
+                     ex != NULL ? "; " : "", k, (long) json_integer_value(json_object_get(v, "root_index")),
+                     json_string_value(json_object_get(v, "minpoly")));
+            free(ex);
+            ex = strdup(buf);
+            json_object_set(out, k, json_object_get(v, "approx"));
+        } else if (strcmp(k, "exact") != 0) {
+            json_object_set(out, k, v);
+        }
+    }
+    if (ex != NULL) json_object_set_new(out, "exact", json_string(ex));
+    else if (json_object_get(cx, "exact") != NULL) json_object_set(out, "exact", json_object_get(cx, "exact"));
+    free(ex);
+    return out;
+}
+
 int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                           slong tv, const slong *qvs, slong nq, const rs_bound_t *b)
 {
@@ -817,7 +844,7 @@ int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *r
                       : strcmp(st, "stable") == 0 || (kind == 1 && strcmp(st, "marginal") == 0)) continue;
         if (strcmp(st, "undecided") == 0) { *verdict = 0; continue; }
         *verdict = -1;
-        *counter = cx != NULL ? json_deep_copy(cx) : json_object();
+        *counter = cx != NULL ? qf_claim_point(cx) : json_object();
         if (cx == NULL) {   /* marginal against a stable claim: the sample and the fibre's piece not stable */
             json_object_set(*counter, name, cell[i].pt && !cell[i].hi->rational
                             ? json_object_get(cell[i].ev, "fibre_samples") : json_object_get(cell[i].ev, "sample"));
