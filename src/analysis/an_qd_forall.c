@@ -426,6 +426,22 @@ static int qf_signs(rs_status_t *ps, qf_t *F, rs_alg_t *t0, rs_alg_t *q0, const 
     return rs_qd_signs_status(ps, *F->signs, F->run, ex, nex, av, a, n);
 }
 
+/* the exact route's status (decided) cross-checked against the certified
+ * signs where both decide (a disagreement: *F->bad, exit 3), or the signs'
+ * where the exact route did not (*by says so); returns decided */
+static int qf_signs_check(rs_status_t *ps, const char **by, int decided, qf_t *F, rs_alg_t *t0, rs_alg_t *q0,
+                          const rs_assign_t *ex, slong nex)
+{
+    rs_status_t sg;
+    *by = NULL;
+    /* the signs decide only stable and unstable: no check at a marginal or singular point */
+    if (decided && *ps != RS_STATUS_STABLE && *ps != RS_STATUS_UNSTABLE) return 1;
+    if (!qf_signs(&sg, F, t0, q0, ex, nex)) return decided;
+    if (decided && sg != *ps) *F->bad = 1;
+    if (!decided) { *ps = sg; *by = qf_by_signs; }
+    return 1;
+}
+
 /* a sample of the fibre {Q: value, status} (value consumed), with the next
  * level's samples there when there is one; by: how when not exactly */
 static void qf_sample_push(json_t *samples, json_t *val, const char *qn, const char *st, const json_t *sub,
@@ -542,7 +558,7 @@ static int qf_algebraic(qf_t *F, rs_alg_t *t0, const char **st, json_t **ev)
                         if (r != RS_OK) { json_decref(sub); break; }
                     }
                     by = NULL;
-                    if (!decided && sub == NULL && (decided = qf_signs(&ps, F, t0, hi, F->ex, F->nex))) by = qf_by_signs;
+                    if (sub == NULL) decided = qf_signs_check(&ps, &by, decided, F, t0, hi, F->ex, F->nex);
                     nsamp++;
                     qf_sample_push(samples, rs_alg_json(hi, qn), qn, decided ? rs_status_name(ps) : "undecided", sub, by);
                     if (decided && ps == RS_STATUS_MARGINAL) any_marg = 1;
@@ -563,7 +579,7 @@ static int qf_algebraic(qf_t *F, rs_alg_t *t0, const char **st, json_t **ev)
             if (F->nq == 1) {
                 decided = F->a2 == NULL ? rs_an_qd_alg_status(&ps, run, F->req, F->tv, t0, ee, F->nex + 1)
                         : rs_an_qd_alg2_status(&ps, run, F->req, F->tv, t0, F->av2, F->a2, ee, F->nex + 1);
-                if (!decided && (decided = qf_signs(&ps, F, t0, NULL, ee, F->nex + 1))) by = qf_by_signs;
+                decided = qf_signs_check(&ps, &by, decided, F, t0, NULL, ee, F->nex + 1);
             } else {   /* Q = q: the next quantified parameter's fibre at t0 */
                 qf_t G;
                 rs_plist_t l;
