@@ -962,31 +962,11 @@ SF=cases/complex/sdirk2-forall.case
 if command -v python3 >/dev/null 2>&1; then
     "$RS" --json "$SF" >"$T/sf.json" 2>"$T/err"; rc=$?
     res=$(python3 - "$T/sf.json" <<'PY'
-import json, sys
-from fractions import Fraction
+import sys
+sys.path.insert(0, "tests/cli")
 import mpmath as mp
-mp.mp.dps = 30
-r = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "region"][0]
-e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
-got = [(iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]) for iv in r["intervals"]]
-P, Q = ("c^2 - 4*c + 2", 1), ("c^2 - 12*c + 4", 1)           # 2 + sqrt 2, 6 + 4 sqrt 2
-want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
-        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
-        ("stable", Q, None, False, False)]
-bad = []
-if got != want: bad.append("intervals %r" % (got,))
-if r.get("over") != "Q(sqrt 2)" or r.get("for_all") != ["a"] or not r["point_checks"]["agree"]: bad.append("keys")
-g = 1 - mp.sqrt(2) / 2
-def R(z):
-    A = mp.matrix([[g, 0], [1 - g, g]]); b = mp.matrix([[1 - g, g]])
-    return 1 + z * (b * mp.inverse(mp.eye(2) - z * A) * mp.matrix([1, 1]))[0]
-for iv in r["intervals"]:
-    for ev in iv["evidence"]:
-        if ev["cell"] != "interval": continue
-        c = mp.mpf(Fraction(ev["sample"]).numerator) / Fraction(ev["sample"]).denominator
-        m = max(abs(R(c * (1 + mp.mpf(k) / 200))) for k in range(201))
-        if (iv["status"] == "stable") != (m < 1): bad.append("sample %s: max |R| %s" % (ev["sample"], m))
-        if iv["status"] == "unstable" and "counterexample" not in ev: bad.append("no counterexample")
+from sdirk2_forall import check
+res, r, bad = check(sys.argv[1], ["a"], [1 + mp.mpf(k) / 200 for k in range(201)])
 print("yes" if not bad else "no " + "; ".join(bad))
 PY
 )
@@ -1067,36 +1047,13 @@ S3=cases/complex/sdirk2-forall3.case
 if command -v python3 >/dev/null 2>&1; then
     "$RS" --json "$S3" >"$T/s3.json" 2>"$T/err"; rc=$?
     res=$(python3 - "$T/s3.json" <<'PY'
-import json, sys
-from fractions import Fraction
+import sys
+sys.path.insert(0, "tests/cli")
 import mpmath as mp
-mp.mp.dps = 30
-res = json.load(open(sys.argv[1]))["cases"][0]["results"]
-r = [r for r in res if r["analysis"] == "region"][0]
-e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
-got = [(iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]) for iv in r["intervals"]]
-P, Q = ("c^2 - 4*c + 2", 1), ("c^2 - 12*c + 4", 1)           # 2 + sqrt 2, 6 + 4 sqrt 2
-want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
-        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
-        ("stable", Q, None, False, False)]
-bad = []
-if got != want: bad.append("intervals %r" % (got,))
-if r.get("for_all") != ["a", "b"] or not r["point_checks"]["agree"] or r["undecided_points"]: bad.append("keys")
+from sdirk2_forall import check
+res, r, bad = check(sys.argv[1], ["a", "b"], [(1 + mp.mpf(i) / 20) * (1 + mp.mpf(j) / 20) for i in range(21) for j in range(21)])
+if r["undecided_points"]: bad.append("undecided points")
 if [c["status"] for c in res if c["analysis"] == "claim"] != ["proved", "proved"]: bad.append("claims")
-g = 1 - mp.sqrt(2) / 2
-def R(z):
-    A = mp.matrix([[g, 0], [1 - g, g]]); b = mp.matrix([[1 - g, g]])
-    return 1 + z * (b * mp.inverse(mp.eye(2) - z * A) * mp.matrix([1, 1]))[0]
-q = lambda x: mp.mpf(x["approx"]) if isinstance(x, dict) else mp.mpf(Fraction(x).numerator) / Fraction(x).denominator
-for iv in r["intervals"]:
-    for ev in iv["evidence"]:
-        if ev["cell"] == "interval":
-            c = q(ev["sample"])
-            m = max(abs(R(c * (1 + mp.mpf(i) / 20) * (1 + mp.mpf(j) / 20))) for i in range(21) for j in range(21))
-            if (iv["status"] == "stable") != (m < 1): bad.append("sample %s: max |R| %s" % (ev["sample"], m))
-        if iv["status"] == "unstable":
-            cx = ev["counterexample"]; z = q(cx["c"]) * q(cx["a"]) * q(cx["b"])
-            if not abs(R(z)) > 1: bad.append("counterexample %r" % cx)
 print("yes" if not bad else "no " + "; ".join(bad))
 PY
 )
