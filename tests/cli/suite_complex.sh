@@ -1061,6 +1061,11 @@ PY
         ok "sdirk2 region c for all a, b in [1, 2] over Q(sqrt 2): ends 0, 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal, closed), no undecided point, samples against |R(c a b)|"
     else fail "sdirk2 region for all a, b: rc=$rc $res $(head -1 "$T/err")"; fi
 fi
+# nothing to quantify (q the only free parameter of $SR): refused with exit 2, naming what runs
+"$RS" --analyse "region q for all" "$SR" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && [ ! -s "$T/out" ] && grep -q "expected a parameter to quantify: region q for all over Q(sqrt d).*region NAME alone" "$T/err"; then
+    ok "sdirk2 region for all with no parameter to quantify refused (exit 2)"
+else fail "sdirk2 region for all, nothing quantified: rc=$rc $(head -1 "$T/err")"; fi
 claim_qd "sdirk2 claim stable when c > 11, a, b in [1, 2] (a = b = 1: z = c < 6 + 4 sqrt 2)" refuted '"a":"1","b":"1","c":"23/2","status":"unstable"' "claim stable when c > 11" "$S3"
 claim_qd "sdirk2 claim bounded when c <= 0, three parameters (c < 0 stable, c = 0 R = 1)" proved "" "claim bounded when c <= 0" "$S3"
 claim_qd "sdirk2 claim unstable when 1/2 <= c <= 2, a, b in [1, 2] (4c = 2 + sqrt 2: the pole)" refuted '"c":"0.85355339059327376.*8\*c^2-8\*c+1","status":"singular"' "claim unstable when 1/2 <= c <= 2" "$S3"
