@@ -2103,42 +2103,43 @@ void rs_an_claim_req_clear(rs_an_req_t *req)
     req->u.claim.dnf = NULL;
 }
 
-/* over Q(sqrt d) (rk sdirk2): one parameter without a set value, the claim's
- * sets intervals of it; each part decided on the exact region there
- * (an_qd_conds.c: every cell decided two or three ways) */
+/* over Q(sqrt d) (rk sdirk2): the claim's sets boxes of the parameters
+ * without a set value; each part decided on the exact region of the first
+ * (one free parameter, an_qd_conds.c: every cell decided two or three
+ * ways), or on its cells for every value of the others (an_qd_forall.c) */
 static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
 {
     const rs_request_t *q = req->q;
     const claim_dnf_t *d = req->u.claim.dnf;
-    slong i, j, k, tv = -1, tv2 = -1, nfree = 0, nparams = run->c->nparams;
+    slong i, j, k, tv = -1, nfree = 0, nparams = run->c->nparams, *fv = flint_malloc((size_t) (nparams + 1) * sizeof(slong));
     rs_variant_t *v;
     json_t *o, *counter = NULL;
     int r, proved = 1;
     for (k = 0; k < nparams; k++) {
         int set = 0;
         for (j = 0; j < run->c->nsets; j++) set |= strcmp(run->c->sets[j].name, run->c->params[k].name) == 0;
-        if (!set) { if (tv < 0) tv = k; else tv2 = k; nfree++; }
+        if (!set) fv[nfree++] = k;
     }
-    /* two free parameters: the cells of region ... for all (an_qd_forall.c) on the claim's box */
-    if (nfree > 2 || nfree < 1 || (nfree == 2 && req->u.claim.kind == CLAIM_UNSTABLE))
-        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected one parameter without a set value (two for a "
-                            "stable or bounded claim): a claim over Q(sqrt d) is decided on the exact region of one "
-                            "parameter, or of one for every value of a second; set the others (jury, hurwitz and "
-                            "routh give the conditions with all of them free)%s", "");
+    tv = nfree > 0 ? fv[0] : -1;
+    if (nfree < 1) {
+        flint_free(fv);
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "expected a parameter without a set value: a claim over "
+                            "Q(sqrt d) is decided on the exact region of its free parameters (stability gives the "
+                            "verdict at the set values)%s", "");
+    }
     r = rs_run_default_variant(run, &v);
-    if (r != RS_OK) return r;
-    /* every condition a bound on tv (linear in it, nothing else) */
+    if (r != RS_OK) { flint_free(fv); return r; }
+    /* every condition a bound on one free parameter (linear in it, nothing else) */
     for (i = 0; i < d->nparts && r == RS_OK; i++)
         for (j = 0; j < d->n[i] && r == RS_OK; j++) {
             rs_condpoly_t cp;
             r = rs_condpoly_compile(&cp, d->conds[i] + j, run->sym, run->c, run->err);
             if (r != RS_OK) break;
             for (k = 0; k < cp.n; k++) {
-                slong td = fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx);
-                if (td > 1 || !fmpq_mpoly_is_fmpq(cp.den + k, run->sym->ctx)
-                    || (fmpq_mpoly_degree_si(cp.num + k, tv, run->sym->ctx) != td
-                        && (tv2 < 0 || fmpq_mpoly_degree_si(cp.num + k, tv2, run->sym->ctx) != td)))
-                    r = RS_ERR_INPUT;
+                slong td = fmpq_mpoly_total_degree_si(cp.num + k, run->sym->ctx), f;
+                int one = 0;
+                for (f = 0; f < nfree; f++) one |= fmpq_mpoly_degree_si(cp.num + k, fv[f], run->sym->ctx) == td;
+                if (td > 1 || !fmpq_mpoly_is_fmpq(cp.den + k, run->sym->ctx) || !one) r = RS_ERR_INPUT;
             }
             rs_condpoly_clear(&cp, run->sym);
             if (r != RS_OK)
@@ -2146,24 +2147,24 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
                                  "A <= NAME <= B, joined by and, or): a claim over Q(sqrt d) is decided on exact "
                                  "regions, one parameter at a time (here %s)", run->c->params[tv].name);
         }
-    if (r != RS_OK) return r;
+    if (r != RS_OK) { flint_free(fv); return r; }
     o = json_object();
     json_object_set_new(o, "analysis", json_string("claim"));
     json_object_set_new(o, "text", json_string(q->text));
     json_object_set_new(o, "claim", json_string(kindw));
     for (i = 0; i < d->nparts && r == RS_OK && counter == NULL; i++) {
         rs_bound_t *b = flint_malloc((nparams + 1) * sizeof(rs_bound_t));
-        int vd = 1;
+        int vd = 1, kd = req->u.claim.kind == CLAIM_STABLE ? 0 : req->u.claim.kind == CLAIM_BOUNDED ? 1 : 2, empty = 0;
         claim_bounds(b, run, d->conds[i], d->n[i]);
-        if (!rs_bound_empty(b + tv) && (tv2 < 0 || !rs_bound_empty(b + tv2)))
-            r = tv2 >= 0 ? rs_an_qd_claim_forall(&vd, &counter, o, run, req, req->u.claim.kind == CLAIM_STABLE ? 0 : 1,
-                                                 tv, tv2, b)
-              : rs_an_qd_claim_part(&vd, &counter, o, run, req, (int) req->u.claim.kind == CLAIM_STABLE ? 0
-                                    : req->u.claim.kind == CLAIM_BOUNDED ? 1 : 2, tv, b + tv);
+        for (k = 0; k < nfree; k++) empty |= rs_bound_empty(b + fv[k]);
+        if (!empty)
+            r = nfree >= 2 ? rs_an_qd_claim_forall(&vd, &counter, o, run, req, kd, tv, fv + 1, nfree - 1, b)
+                           : rs_an_qd_claim_part(&vd, &counter, o, run, req, kd, tv, b + tv);
         if (vd != 1) proved = 0;
         rs_bounds_clear(b, nparams);
         flint_free(b);
     }
+    flint_free(fv);
     if (r != RS_OK) {
         json_decref(o);
         json_decref(counter);
@@ -2179,8 +2180,9 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
     {
         char *over = rs_an_qd_over_str(run->sym->sqrt_d), tried[1024];
         snprintf(tried, sizeof tried,
-                 "the exact region over %s of the one free parameter on the claim's set (with two free parameters: "
-                 "the first's cells of region ... for all on the claim's box, an_qd_forall.c; region NAME's cells: "
+                 "the exact region over %s of the one free parameter on the claim's set (with two or more free "
+                 "parameters: the first's cells of region ... for all on the claim's box, an_qd_forall.c, for a claim "
+                 "unstable with the quantifier 'at every point'; region NAME's cells: "
                  "rational samples decided by the Schur-Cohn conditions, Schur-Cohn with certified roots and the "
                  "exact route over %s; algebraic critical values by exact signs in Q(t0, sqrt %ld) and the exact "
                  "route there, all agreeing): proved iff every cell meeting the set has the claimed status; refuted "

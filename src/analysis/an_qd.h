@@ -83,11 +83,13 @@ int rs_an_qd_region_forall(rs_run_t *run, const rs_an_req_t *req);
  * of an interval of region's cells (NULL ends: infinite) */
 json_t *rs_an_qd_interval_json(rs_alg_t *lo, rs_alg_t *hi, int lo_closed, int hi_closed, const char *status,
                                const char *name);
-/* a claim (kind 0 stable, 1 bounded) on the box b[tv] x b[qv] (b: every
- * parameter's bounds, the assumptions in them) by the same cells: *verdict
- * 1 proved, -1 refuted (*counter), 0 undecided; the cells into o's "region" */
+/* a claim (kind 0 stable, 1 bounded, 2 unstable) on the box b[tv] x
+ * b[qvs[0]] x ... (b: every parameter's bounds, the assumptions in them)
+ * by the same cells (kind 2: "unstable at every point" in place of "for
+ * every point stable"): *verdict 1 proved, -1 refuted (*counter), 0
+ * undecided; the cells of tv into o's "region" */
 int rs_an_qd_claim_forall(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
-                          slong tv, slong qv, const rs_bound_t *b);
+                          slong tv, const slong *qvs, slong nq, const rs_bound_t *b);
 /* the norms c0^2 - d c1^2 of p's leading coefficient, of its discriminant
  * and of jury's conditions (the default variant: every unset parameter
  * free) into l (rs_plist_add with tv, dom); *s the scheme of their zctx */
@@ -104,10 +106,22 @@ int rs_an_qd_point_verdict(rs_run_t *run, const rs_an_req_t *req, fmpq *const *p
  * values and extra[]: over Q(t0, sqrt d) = Q(gamma); 0 when undecided */
 int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0,
                         const rs_assign_t *extra, slong nextra);
-/* the same at tv = t0 and qv = q0 both algebraic (the default variant: no
- * other free parameter), over Q(t0, sqrt d, q0) = Q(gamma) */
+/* the same at tv = t0 and qv = q0 both algebraic (the other parameters at
+ * the set values and extra[]), over Q(t0, sqrt d, q0) = Q(gamma) */
 int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0, slong qv,
-                         rs_alg_t *q0);
+                         rs_alg_t *q0, const rs_assign_t *extra, slong nextra);
+
+/* an_qd_forall2.c: the status at a point with up to three irrational
+ * coordinates by the certified signs of jury's conditions over Q(sqrt d)
+ * (the default variant's, computed once by rs_qd_signs_init; NULL-safe
+ * clear): ex[] rational, a[k] at parameter av[k]; 1 decided (stable, or
+ * unstable with every condition away from 0), 0 when a condition's ball
+ * keeps 0 at 4096 bits or the leading coefficient's does */
+typedef struct rs_qd_signs_s rs_qd_signs_t;
+int rs_qd_signs_init(rs_qd_signs_t **g, rs_run_t *run, const rs_an_req_t *req);
+void rs_qd_signs_clear(rs_qd_signs_t *g);
+int rs_qd_signs_status(rs_status_t *st, rs_qd_signs_t *g, rs_run_t *run, const rs_assign_t *ex, slong nex,
+                       const slong *av, rs_alg_t *const *a, slong na);
 
 /* an_astability.c: A(alpha) of the one-step method R = N/D over Q(sqrt d)
  * by the rays z = -s (1 - i u): *inside 1 every ray inside (A-stable, deg

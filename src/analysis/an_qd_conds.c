@@ -1298,19 +1298,28 @@ int rs_an_qd_point_verdict(rs_run_t *run, const rs_an_req_t *req, fmpq *const *p
     return st;
 }
 
+/* the variant at the set values and extra[], tv (and qv >= 0) kept free */
+static int qd_variant_keeping(rs_variant_t **v, rs_run_t *run, slong tv, slong qv, const rs_assign_t *extra,
+                              slong nextra)
+{
+    const char *keep[2];
+    rs_assign_t *as = NULL;
+    slong nas = 0;
+    int r;
+    keep[0] = run->c->params[tv].name;
+    if (qv >= 0) keep[1] = run->c->params[qv].name;
+    rs_run_assignments(run, &as, &nas, keep, qv >= 0 ? 2 : 1, extra, nextra);
+    r = rs_run_variant(v, run, as, nas);
+    rs_assign_free(as, nas);
+    return r;
+}
+
 int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0,
                         const rs_assign_t *extra, slong nextra)
 {
-    const char *keep[1];
-    rs_assign_t *as = NULL;
-    slong nas = 0;
     rs_variant_t *v;
     qd_sym_t S;
-    int r, decided = 0;
-    keep[0] = run->c->params[tv].name;
-    rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
-    r = rs_run_variant(&v, run, as, nas);
-    rs_assign_free(as, nas);
+    int r = qd_variant_keeping(&v, run, tv, -1, extra, nextra), decided = 0;
     S.a = NULL;
     if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
     if (r == RS_OK) decided = qd_exact_status(st, &S, tv, t0);
@@ -1321,18 +1330,25 @@ int rs_an_qd_alg_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, 
 }
 
 int rs_an_qd_alg2_status(rs_status_t *st, rs_run_t *run, const rs_an_req_t *req, slong tv, rs_alg_t *t0, slong qv,
-                         rs_alg_t *q0)
+                         rs_alg_t *q0, const rs_assign_t *extra, slong nextra)
 {
     qd_sym_t S;
     rs_alg_t sq, g1, g2;
     fmpq_poly_t A1, B1, A2, B2, T, R, m;
     fmpq_poly_struct *c = NULL;
+    rs_variant_t *v = NULL;
     slong j;
-    int r = qd_sym_init(&S, run, req, NULL), decided = 0;
+    int r = RS_OK, decided = 0;
+    if (nextra > 0) r = qd_variant_keeping(&v, run, tv, qv, extra, nextra);
+    S.a = NULL;
+    if (r == RS_OK) r = qd_sym_init(&S, run, req, v);
     if (r != RS_OK) {
+        /* the leading coefficient vanishing for every tv, qv at extra[]: singular */
+        decided = S.a != NULL && S.v->singular;
+        if (decided) *st = RS_STATUS_SINGULAR;
         rs_error_init(run->err);
         qd_sym_clear(&S, S.a != NULL ? S.n : -1);
-        return 0;
+        return decided;
     }
     rs_alg_init(&sq); rs_alg_init(&g1); rs_alg_init(&g2);
     fmpq_poly_init(A1); fmpq_poly_init(B1); fmpq_poly_init(A2); fmpq_poly_init(B2);

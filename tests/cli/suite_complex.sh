@@ -1049,31 +1049,11 @@ SF=cases/complex/sdirk2-forall.case
 if command -v python3 >/dev/null 2>&1; then
     "$RS" --json "$SF" >"$T/sf.json" 2>"$T/err"; rc=$?
     res=$(python3 - "$T/sf.json" <<'PY'
-import json, sys
-from fractions import Fraction
+import sys
+sys.path.insert(0, "tests/cli")
 import mpmath as mp
-mp.mp.dps = 30
-r = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "region"][0]
-e = lambda x: None if x is None else (x if isinstance(x, str) else (x["minpoly"], x["root_index"]))
-got = [(iv["status"], e(iv["lo"]), e(iv["hi"]), iv["lo_closed"], iv["hi_closed"]) for iv in r["intervals"]]
-P, Q = ("c^2 - 4*c + 2", 1), ("c^2 - 12*c + 4", 1)           # 2 + sqrt 2, 6 + 4 sqrt 2
-want = [("stable", None, "0", False, False), ("marginal", "0", "0", True, True), ("unstable", "0", P, False, False),
-        ("singular", P, P, True, True), ("unstable", P, Q, False, False), ("marginal", Q, Q, True, True),
-        ("stable", Q, None, False, False)]
-bad = []
-if got != want: bad.append("intervals %r" % (got,))
-if r.get("over") != "Q(sqrt 2)" or r.get("for_all") != ["a"] or not r["point_checks"]["agree"]: bad.append("keys")
-g = 1 - mp.sqrt(2) / 2
-def R(z):
-    A = mp.matrix([[g, 0], [1 - g, g]]); b = mp.matrix([[1 - g, g]])
-    return 1 + z * (b * mp.inverse(mp.eye(2) - z * A) * mp.matrix([1, 1]))[0]
-for iv in r["intervals"]:
-    for ev in iv["evidence"]:
-        if ev["cell"] != "interval": continue
-        c = mp.mpf(Fraction(ev["sample"]).numerator) / Fraction(ev["sample"]).denominator
-        m = max(abs(R(c * (1 + mp.mpf(k) / 200))) for k in range(201))
-        if (iv["status"] == "stable") != (m < 1): bad.append("sample %s: max |R| %s" % (ev["sample"], m))
-        if iv["status"] == "unstable" and "counterexample" not in ev: bad.append("no counterexample")
+from sdirk2_forall import check
+res, r, bad = check(sys.argv[1], ["a"], [1 + mp.mpf(k) / 200 for k in range(201)])
 print("yes" if not bad else "no " + "; ".join(bad))
 PY
 )
@@ -1114,16 +1094,68 @@ claim_qd "sdirk2 claim stable when c > 11, a in [1, 2] (a = 1: z = c < 6 + 4 sqr
 claim_qd "sdirk2 claim bounded when c >= 6 and a >= 3/2 (z = 9)" refuted '"c":"6","a":"3/2","status":"unstable"' "claim bounded when c >= 6 and a >= 3/2" "$SF"
 claim_qd "sdirk2 claim stable when c <= 0, a in [1, 2] (c = 0: R = 1)" refuted '"c":"0".*"status":"marginal"' "claim stable when c <= 0" "$SF"
 claim_qd "sdirk2 claim bounded when c >= 6 and a >= 2 (z >= 12 > 6 + 4 sqrt 2)" proved "" "claim bounded when c >= 6 and a >= 2" "$SF"
-# still refused, naming what runs: two quantified parameters, an unstable claim with two free parameters
+# two quantified parameters over Q(sqrt 2) (refused before issue 15's h-sqrt9): y' = (c a - b) y, a in
+# [1, 2], b > 0.  By hand from R (sdirk2-region.case): for each a, b > 0 moves z = c a - b over
+# (-inf, c a); c <= 0 keeps z < 0 (stable; c = 0: z = -b < 0), c > 0 lets z enter (0, min(c a, 2 + sqrt 2))
+# where |R| > 1: stable exactly on (-inf, 0], unstable on (0, inf); each counterexample re-checked with
+# mpmath |R(c a - b)| > 1 (or the pole)
 printf 'param c a b\nassume 1 <= a <= 2\nassume b > 0\nsubsystem S state y\n  y'"'"' = c*a*y - b*y\nintegrate S rk sdirk2 1\nanalyse region c for all\n' >"$T/two.case"
-"$RS" "$T/two.case" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "two.case:7:.*expected one quantified parameter: region NAME for all over Q(sqrt 2).*set the others" "$T/err"; then
-    ok "sdirk2 region for all over two quantified parameters refused (exit 2), naming what runs"
-else fail "sdirk2 two quantified: rc=$rc $(head -1 "$T/err")"; fi
-"$RS" --analyse "claim unstable when 1 < c < 2" "$SF" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "two for a stable or bounded claim" "$T/err"; then
-    ok "sdirk2 unstable claim with two free parameters refused (exit 2)"
-else fail "sdirk2 unstable claim two free: rc=$rc $(head -1 "$T/err")"; fi
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json "$T/two.case" >"$T/two.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/two.json" <<'PY'
+import json, sys
+from fractions import Fraction
+import mpmath as mp
+mp.mp.dps = 30
+r = [r for r in json.load(open(sys.argv[1]))["cases"][0]["results"] if r["analysis"] == "region"][0]
+got = [(iv["status"], iv["lo"], iv["hi"], iv["lo_closed"], iv["hi_closed"]) for iv in r["intervals"]]
+bad = []
+if got != [("stable", None, "0", False, True), ("unstable", "0", None, False, False)]: bad.append("intervals %r" % (got,))
+if r.get("for_all") != ["a", "b"] or r.get("over") != "Q(sqrt 2)": bad.append("keys")
+g = 1 - mp.sqrt(2) / 2
+R = lambda z: (1 + (mp.sqrt(2) - 1) * z) / (1 - g * z) ** 2
+q = lambda x: mp.mpf(x["approx"]) if isinstance(x, dict) else mp.mpf(Fraction(x).numerator) / Fraction(x).denominator
+for ev in r["intervals"][1]["evidence"]:
+    cx = ev["counterexample"]; z = q(cx["c"]) * q(cx["a"]) - q(cx["b"])
+    if not (abs(1 - g * z) < mp.mpf(10) ** -20 or abs(R(z)) > 1): bad.append("counterexample %r" % cx)
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 region c for all a, b (two quantified) over Q(sqrt 2): stable iff c <= 0, counterexamples re-checked"
+    else fail "sdirk2 two quantified: rc=$rc $res $(head -1 "$T/err")"; fi
+fi
+# claim unstable with two free parameters (the quantifier 'at every point'; by hand in $SF: z = c a)
+claim_qd "sdirk2 claim unstable when 1 <= c <= 3/2, a in [1, 2] (z in [1, 3] inside (0, 2 + sqrt 2))" proved "" "claim unstable when 1 <= c <= 3/2" "$SF"
+claim_qd "sdirk2 claim unstable when 1 < c < 2, a in [1, 2] (c a = 2 + sqrt 2: the pole)" refuted '"c":"1.7071067811865475.*"a":"2".*2\*c^2-4\*c+1","status":"singular"' "claim unstable when 1 < c < 2" "$SF"
+# three free parameters (cases/complex/sdirk2-forall3.case: z = c a b, a, b in [1, 2]; ends by hand
+# there): the intervals, max |R(c a b)| on a grid of (a, b) at every open interval's sample (mpmath, R
+# from the tableau), every counterexample re-checked; claims proved and refuted with three parameters
+S3=cases/complex/sdirk2-forall3.case
+if command -v python3 >/dev/null 2>&1; then
+    "$RS" --json "$S3" >"$T/s3.json" 2>"$T/err"; rc=$?
+    res=$(python3 - "$T/s3.json" <<'PY'
+import sys
+sys.path.insert(0, "tests/cli")
+import mpmath as mp
+from sdirk2_forall import check
+res, r, bad = check(sys.argv[1], ["a", "b"], [(1 + mp.mpf(i) / 20) * (1 + mp.mpf(j) / 20) for i in range(21) for j in range(21)])
+if r["undecided_points"]: bad.append("undecided points")
+if [c["status"] for c in res if c["analysis"] == "claim"] != ["proved", "proved"]: bad.append("claims")
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then
+        ok "sdirk2 region c for all a, b in [1, 2] over Q(sqrt 2): ends 0, 2 + sqrt 2 (singular), 6 + 4 sqrt 2 (marginal, closed), no undecided point, samples against |R(c a b)|"
+    else fail "sdirk2 region for all a, b: rc=$rc $res $(head -1 "$T/err")"; fi
+fi
+# nothing to quantify (q the only free parameter of $SR): refused with exit 2, naming what runs
+"$RS" --analyse "region q for all" "$SR" >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && [ ! -s "$T/out" ] && grep -q "expected a parameter to quantify: region q for all over Q(sqrt d).*region NAME alone" "$T/err"; then
+    ok "sdirk2 region for all with no parameter to quantify refused (exit 2)"
+else fail "sdirk2 region for all, nothing quantified: rc=$rc $(head -1 "$T/err")"; fi
+claim_qd "sdirk2 claim stable when c > 11, a, b in [1, 2] (a = b = 1: z = c < 6 + 4 sqrt 2)" refuted '"a":"1","b":"1","c":"23/2","status":"unstable"' "claim stable when c > 11" "$S3"
+claim_qd "sdirk2 claim bounded when c <= 0, three parameters (c < 0 stable, c = 0 R = 1)" proved "" "claim bounded when c <= 0" "$S3"
+claim_qd "sdirk2 claim unstable when 1/2 <= c <= 2, a, b in [1, 2] (4c = 2 + sqrt 2: the pole)" refuted '"c":"0.85355339059327376.*8\*c^2-8\*c+1","status":"singular"' "claim unstable when 1/2 <= c <= 2" "$S3"
 # jury at the complex coupling c = 1/2 + i/4 with a free (a > 0): conditions
 # over Q(sqrt 2)(i)[a]; independently the step matrix M of (y, x) from the
 # method's definition in complex double (the stages of sdirk2_steps.py, one
