@@ -649,8 +649,15 @@ static void qf_emit(json_t *o, qf_cell_t *cell, slong ncell, const char *name)
             json_object_set_new(e, "cell", json_string(cell[k].pt ? "point" : "interval"));
             json_object_update(e, cell[k].ev);
             json_array_append_new(evs, e);
-            if (strcmp(cell[k].status, "undecided") == 0 && cell[k].pt)
-                json_array_append_new(und, rs_alg_json(cell[k].hi, name));
+            if (strcmp(cell[k].status, "undecided") == 0 && cell[k].pt) {
+                /* the rational path's shape (an_region.c): the renderer reads "value" */
+                json_t *pj = json_object();
+                json_object_set_new(pj, "value", rs_alg_json(cell[k].hi, name));
+                json_object_set_new(pj, "approx", json_real(rs_alg_double(cell[k].hi)));
+                json_object_set_new(pj, "status", json_string("undecided"));
+                json_object_set(pj, "evidence", cell[k].ev);
+                json_array_append_new(und, pj);
+            }
         }
         json_object_set_new(iv, "evidence", evs);
         json_array_append_new(ivs, iv);
