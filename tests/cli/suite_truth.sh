@@ -250,6 +250,23 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/never-sympy-p6-positive.case
     check "SymPy p6, b0 b1 b3 > 0: jury never stable by a negative sum, the samples agree" '["never stable",true,true]' \
         "$(jfield $C 1 '| [.verdict, (.never | contains("their sum is negative")), .sample_check.agree]')"
+    # a zero row of x[n+1] = M x[n] (h-truth7, by hand in the case): det(lambda I - M) =
+    # lambda (lambda - 1/2)(lambda + 2), the root at 0 counted (was 1 inside)
+    C=cases/truth/zero-row-system.case
+    check "zero row: stability, jury, routh count the root at 0 (was 1 inside)" \
+        '[["unstable",2,0,1],["unstable",2,0,1],["unstable",2,0,1]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0:3] | map([.status, .inside, .on, .outside])')"
+    check "zero row: modes list the root at 0" '[["-2","0"],["0","0"],["0.5","0"]]' \
+        "$(jfield $C 3 '| [.modes[], (.spurious // [])[]] | map([.root.re, .root.im]) | sort_by(.[0] | tonumber)')"
+    # M = 0 (h-truth7, by hand in the case): dead-beat, stable, radius 0 (was exit 2)
+    C=cases/truth/dead-beat-zero-matrix.case
+    check "x[n+1] = 0*x[n]: stable dead-beat on every route (was exit 2 'no dynamics')" \
+        '["stable",1,"stable","stable under the assumptions (dead-beat: every root is 0)","0","stable","proved"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[0].inside, .[1].status, .[2].verdict, .[3].upper, .[4].verdict.status, .[5].status]')"
+    printf 'title x is zero\nunknown x\neq x[n+1] = 0\nanalyse stability\n' >"$T/zero.case"
+    "$RS" "$T/zero.case" >"$T/out" 2>"$T/err"; rc=$?
+    check "x[n+1] = 0 alone (x = 0 from n = 0): exit 2 with the dead-beat spelling" "2 1" \
+        "$rc $(grep -c 'zero.case:3:4: .*no dynamics.*written x\[n+1\] = 0\*x\[n\]' "$T/err")"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
