@@ -267,6 +267,11 @@ if command -v jq >/dev/null 2>&1; then
     "$RS" "$T/zero.case" >"$T/out" 2>"$T/err"; rc=$?
     check "x[n+1] = 0 alone (x = 0 from n = 0): exit 2 with the dead-beat spelling" "2 1" \
         "$rc $(grep -c 'zero.case:3:4: .*no dynamics.*written x\[n+1\] = 0\*x\[n\]' "$T/err")"
+    # never reasons over 1000 characters (h-truth7, by hand in the case): whole, not cut
+    C=cases/truth/never-long-reason.case
+    check "long never reasons end as written (were cut at 1000 characters mid-number)" \
+        '[["never stable",true,true],["never stable",true,true]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, (.never | length > 1000), (.never | test("(interval\\)|allow \\(.*\\)|both|never holds|proves it: .*); never asymptotically stable$"))])')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
