@@ -272,6 +272,10 @@ if command -v jq >/dev/null 2>&1; then
     check "long never reasons end as written (were cut at 1000 characters mid-number)" \
         '[["never stable",true,true],["never stable",true,true]]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, (.never | length > 1000), (.never | test("(interval\\)|allow \\(.*\\)|both|never holds|proves it: .*); never asymptotically stable$"))])')"
+    # a dead-beat simulate has no "check" object (h-truth7: it was built and dropped)
+    C=cases/truth/simulate-dead-beat.case
+    check "dead-beat simulate: the exact verdict decides, no check object" '["exact",null]' \
+        "$(jfield $C 1 '| [.verdict.decided_by, .check]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
