@@ -318,6 +318,14 @@ if command -v python3 >/dev/null 2>&1; then
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth6.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
+    # seventh batch (tests/truth/truth7.py, h-truth7): the 2-step family (1 + a, a) with its
+    # zero-stability boundary, integrators in a cascade under every coupling, textbook Routh
+    # special cases through the bilinear map, Jury's reciprocal pairs, a factor whose sign is
+    # free, degenerate inputs (all of them)
+    for spec in "lmmfam 3 4" "builders 3 3" "routh 3 3" "jurysp 3 3" "symsign 3 2" "degen 3 1"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth7.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
 else
     ok "skipped the random planted truths: no python3"
 fi

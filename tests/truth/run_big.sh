@@ -38,7 +38,8 @@ export RS
 total_fail=0
 for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregion claimreg \
             symcond symmat rk builders limit radmat map cosim zeros circle lmm3 algclaim simlimit \
-            radius lead implicit textbook circle5 hostile routes systems; do
+            radius lead implicit textbook circle5 hostile routes systems \
+            lmmfam builders routh jurysp symsign degen; do
     n=$COUNT
     [ "$part" = jordan-param ] && n=$((COUNT / 10 + 1))
     script=tests/truth/truth.py
@@ -47,6 +48,7 @@ for part in qi jordan jordan-param pade lmm region2 sweep forall qi-region zregi
     case $part in radius|lead|implicit) script=tests/truth/truth4.py ;; esac
     case $part in textbook|circle5|hostile) script=tests/truth/truth5.py ;; esac
     case $part in routes|systems) script=tests/truth/truth6.py ;; esac
+    case $part in lmmfam|builders|routh|jurysp|symsign|degen) script=tests/truth/truth7.py ;; esac
     okc=0; fc=0
     for s in $SEEDS; do
         out=$(python3 "$script" "$part" "$s" "$n" 2>&1)
