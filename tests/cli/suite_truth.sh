@@ -263,6 +263,8 @@ if command -v jq >/dev/null 2>&1; then
     check "x[n+1] = 0*x[n]: stable dead-beat on every route (was exit 2 'no dynamics')" \
         '["stable",1,"stable","stable under the assumptions (dead-beat: every root is 0)","0","stable","proved"]' \
         "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[0].inside, .[1].status, .[2].verdict, .[3].upper, .[4].verdict.status, .[5].status]')"
+    check "claim without a free parameter: the certificate names no empty point (was 'at : stable')" \
+        '"stable (the exact point verdict)"' "$(jfield $C 5 '.certificate[0].text')"
     printf 'title x is zero\nunknown x\neq x[n+1] = 0\nanalyse stability\n' >"$T/zero.case"
     "$RS" "$T/zero.case" >"$T/out" 2>"$T/err"; rc=$?
     check "x[n+1] = 0 alone (x = 0 from n = 0): exit 2 with the dead-beat spelling" "2 1" \
