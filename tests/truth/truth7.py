@@ -18,8 +18,9 @@ the bilinear map z -> lambda = (z + 1)/(z - 1) of textbook Routh polynomials):
            coupling's delays are not compared: only status, on, outside).
   routh    textbook Routh special cases in z (a zero first-column entry with the rest of the row
            nonzero; a whole zero row from a factor even/odd in z, the auxiliary polynomial;
-           repeated imaginary-axis roots) carried to p(lambda) = (lambda - 1)^n q((lambda + 1)/
-           (lambda - 1)): a root z with Re z < 0 / = 0 / > 0 is a root inside / on / outside.
+           repeated imaginary-axis roots) carried to p(lambda) = (lambda + 1)^n q((lambda - 1)/
+           (lambda + 1)), whose bilinear image is q again: a root z with Re z < 0 / = 0 / > 0 is
+           a root lambda = (1 + z)/(1 - z) inside / on / outside.
   jurysp   Jury's singular cases: reciprocal pairs r, 1/r (real and complex, |p_k(0)| = |lead|
            in a row of the table) beside circle roots and roots inside.
   symsign  planted(lambda) times (lambda^2 - a) (the sign of a decides real or imaginary roots:
@@ -253,11 +254,13 @@ def ppow(a, k):
 
 
 def to_lambda(q):
-    """p(lambda) = (lambda - 1)^n q((lambda + 1)/(lambda - 1)), n = deg q"""
+    """p(lambda) = (lambda + 1)^n q((lambda - 1)/(lambda + 1)), n = deg q: recstab's own
+    bilinear image of p is then q itself (lambda = (1 + z)/(1 - z)), so its Routh array
+    meets the textbook special case"""
     n = len(q) - 1
     p = [F(0)] * (n + 1)
     for k, c in enumerate(q):
-        t = pmul(ppow([F(1), F(1)], k), ppow([F(-1), F(1)], n - k))
+        t = pmul(ppow([F(-1), F(1)], k), ppow([F(1), F(1)], n - k))
         for i, x in enumerate(t):
             p[i] += c * x
     return p
@@ -327,7 +330,7 @@ def part_routh(rng, count):
     for k in range(count):
         q, zroots, rep = routh_plant(rng)
         p = to_lambda(q)
-        lroots = [(c, (z + 1) / (z - 1)) for c, z in zroots]
+        lroots = [(c, (1 + z) / (1 - z)) for c, z in zroots]
         want = classify(lroots, rep)
         tag = "routh-%d" % k
         text = "title textbook routh\n# q(z) = %s\nchar %s\n%s" % (ztext(q, "z"), ztext(p), T6.ANALYSES)
