@@ -31,6 +31,17 @@
 # 0 failed, 0 weak.  CPU (/usr/bin/time, user + sys): routes 109, 89, 68, 50, 37, 157 s for
 # seeds 11, 12, 31, 32, 61, 62; systems about 5 s per 100 (small numeric cases): about 9 CPU
 # minutes in all, short of the hour asked for (the session ended first; the machine was loaded).
+# truth7.py (h-truth7, 2026-11-28, 2 cores at load 7-10 from other jobs; CPU by /usr/bin/time -v,
+# user + sys, children included): `truth7.py P S 60` for P = lmmfam builders routh jurysp symsign,
+# S = 711..716: 1693 ok, 0 failed (116 s); `truth7.py P S 200`, S = 721..728: 8000 ok, 0 failed,
+# 0 weak (442 s); `truth6.py systems|routes S 100`, S = 81..86 (systems without the zero-row skip,
+# fixed in this session): 1100 ok, 0 failed (356 s); `run_big.sh 60 "701 702"` (every part
+# before truth7): 3208 ok and 17 failed (400 s), none of them recstab's: symcond/symmat 4 (truth2
+# could not parse h-truth6's 'a_0 = ..., i.e. -1 > 0' wording; fixed), implicit 3 (truth4 still
+# wanted exit 2 where h-polish says singular; fixed), cosim 8 (the 20 s wall time limit under
+# load: each case takes about 3 s CPU).  About 22 CPU minutes in all, short of the hour asked for
+# (the machine ran 8-10 jobs on its 2 cores).  Found before the big runs: truth6 systems' 8
+# skipped zero-row cases (det A lost a root at 0; M = 0 exited 2), fixed in scheme.c.
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
