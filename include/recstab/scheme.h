@@ -3,8 +3,9 @@
  * Each equation (lhs - rhs = 0) is evaluated exactly as a linear form in the
  * shifted unknowns with coefficients in Q[params]; x[n+k] becomes lambda^k
  * times the column of x.  Divisions by parameter expressions are multiplied
- * through and recorded as non-zero assumptions.  Rows are normalised so that
- * their lowest power of lambda is lambda^0.  Variables of the polynomial
+ * through and recorded as non-zero assumptions.  Each row is divided by
+ * lambda^k, k the lowest shift its equation writes (terms with a zero
+ * coefficient included: x[n+1] = 0*x[n] keeps its lambda).  Variables of the polynomial
  * context: the parameters in declaration order, then lambda (then sqrt(d)
  * for a model over Q(sqrt d): sqrt_d below). */
 #ifndef RECSTAB_SCHEME_H
@@ -34,7 +35,7 @@ typedef struct {
     slong n;                    /* unknowns (0 for a `char` case) */
     char **unknowns;            /* their names, the columns of M */
     fmpq_mpoly_struct *M;       /* n*n row-major lambda-matrix */
-    slong *row_shift;           /* lowest shift of each row before normalising */
+    slong *row_shift;           /* lowest shift each row's equation writes (the row was divided by lambda^it) */
     int from_char;              /* p given directly by `char` */
     int complex_char;           /* a `char` line over Q(i): M is its real 2x2 block form */
     fmpq_mpoly_t charpoly;      /* the `char` polynomial when from_char */

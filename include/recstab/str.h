@@ -11,6 +11,9 @@ extern "C" {
 /* Copies of strings (flint_malloc'd; free with flint_free). */
 char *rs_strdup(const char *s);
 char *rs_strndup(const char *s, size_t n);
+/* Appends printf-style text to *s (flint_realloc'd; *s NULL starts an empty
+ * string; free with flint_free): text of any length, never cut. */
+void rs_str_catf(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Length (1 to 4) of the valid UTF-8 sequence at s (n bytes readable), 0
  * when the bytes there are none (overlong forms and surrogates included,

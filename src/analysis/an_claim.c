@@ -1082,7 +1082,9 @@ static int claim_prove_direct(rs_run_t *run, claim_kind_t kind, const rs_variant
                 if (!param_is_set(run, rs_case_param_index(run->c, key)))
                     snprintf(pt + strlen(pt), sizeof pt - strlen(pt), "%s%s = %s", pt[0] ? ", " : "", key,
                              json_string_value(val));
-            snprintf(msg, sizeof msg, "at %s: %s (the exact point verdict)", pt, rs_status_name(stt));
+            /* every parameter set (or none declared): no point to name */
+            snprintf(msg, sizeof msg, "%s%s%s%s (the exact point verdict)", pt[0] ? "at " : "", pt,
+                     pt[0] ? ": " : "", rs_status_name(stt));
             if (ok) cert_note(cx, msg);
             else claim_fail(cx, msg, NULL, s);
         } else {

@@ -269,15 +269,16 @@ static int cx_finish(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re
 {
     const rs_scheme_struct *s = v->s;
     int r = RS_OK;
-    char why[1100];
+    char *why = NULL;
     /* a set that can never all hold, said as over Q (h-truth6: a planted root
      * outside times (lambda - a) printed "stable iff" conditions in a alone
      * without a common solution) */
-    if (!never && jc->n > 0 && rs_run_conds_never(why, 1000, run, jc->poly, jc->ne, jc->n, s)) {
-        strcat(why, "; never asymptotically stable");
+    if (!never && jc->n > 0 && rs_run_conds_never(&why, run, jc->poly, jc->ne, jc->n, s)) {
+        rs_str_catf(&why, "; never asymptotically stable");
         rs_json_set_never_conditions(o, why);
         never = 1;
     }
+    flint_free(why);
     json_object_set_new(o, "verdict", json_string(never ? "never stable" : jc->n == 0 ? "stable under the assumptions"
                                                   : "stable iff the conditions hold"));
     if (rs_run_count_free(re, s, s->lambda_var) == 0 && rs_run_count_free(im, s, s->lambda_var) == 0) {

@@ -361,15 +361,15 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             "Schur-Cohn reduction p_{k-1} = (lead p_k * p_k - p_k(0) p_k*)/lambda, each row divided by its content: "
             "all |lambda| < 1 iff every lead^2 - const^2 > 0 (Schur 1917, strict inequalities: exact for every "
             "value; where the leading coefficient of p vanishes the first condition fails)"));
-        char why[1100];
+        char *why = NULL;
         rs_hurwitz_or_t hb;
         json_t *cr = json_pack("{s:s}", "with", "hurwitz (Lienard-Chipart of the bilinear image q(z))");
         jury_cross_t w = {&jc, NULL, run, NULL, 0, 0};
         rs_hurwitz_or_init(hb);
         if (jury_cross_route(hb, run, v, cr)) w.hb = hb;
         /* a set that can never all hold: said as the singular row says it */
-        if (json_object_get(o, "never") == NULL && rs_run_conds_never(why, 1000, run, jc.poly, jc.ne, jc.n, s)) {
-            strcat(why, "; never asymptotically stable");
+        if (json_object_get(o, "never") == NULL && rs_run_conds_never(&why, run, jc.poly, jc.ne, jc.n, s)) {
+            rs_str_catf(&why, "; never asymptotically stable");
             rs_json_set_never_conditions(o, why);
             json_object_set_new(cr, "never_proved_by", json_string("jury"));
         } else if (json_object_get(o, "never") != NULL) {
@@ -387,8 +387,10 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
                 const char *hw = json_string_value(json_object_get(ho, "never"));
                 json_object_set_new(cr, "never", json_string(hw != NULL ? hw : "a condition never holds"));
                 if (json_object_get(o, "never") == NULL) {
-                    snprintf(why, sizeof why, "the bilinear image q(z) = (z - 1)^n p((z + 1)/(z - 1)) (hurwitz's "
-                             "route, the same question) proves it: %s", hw != NULL ? hw : "a condition never holds");
+                    flint_free(why);
+                    why = NULL;
+                    rs_str_catf(&why, "the bilinear image q(z) = (z - 1)^n p((z + 1)/(z - 1)) (hurwitz's "
+                                "route, the same question) proves it: %s", hw != NULL ? hw : "a condition never holds");
                     rs_json_set_never_conditions(o, why);
                     json_object_set_new(o, "never_from", json_string("bilinear"));
                     json_object_set_new(cr, "never_proved_by", json_string("hurwitz"));
@@ -398,6 +400,7 @@ static int jury_symbolic(rs_run_t *run, const rs_variant_t *v, json_t *o)
             }
             json_decref(ho);
         }
+        flint_free(why);
         r = rs_run_sample_check_never(run, v, jury_cross_holds, &w, o);
         if (w.hb != NULL) {
             json_object_set_new(cr, "points", json_integer(w.points));

@@ -47,7 +47,7 @@ static void sim_verdict_check(rs_run_t *run, json_t *o, rs_status_t st, const rs
 {
     double tau;
     const char *why = rs_simulate_disagreement(&tau, st, rc->outside, lg, degree, steps);
-    json_t *vd = json_object(), *chk = json_object();
+    json_t *vd = json_object(), *chk;
     rs_json_add_count(vd, rc);
     json_object_set_new(vd, "status", json_string(rs_status_name(st)));
     json_object_set_new(vd, "decided_by", json_string(decided_by));
@@ -55,10 +55,10 @@ static void sim_verdict_check(rs_run_t *run, json_t *o, rs_status_t st, const rs
     if (isnan(lg)) {
         /* no growth measured (the state became exactly zero or not finite):
          * the exact verdict alone, nothing to compare (h-truth6: a dead-beat
-         * p = lambda had no verdict beside "growth": null) */
-        json_decref(chk);
+         * p = lambda had no verdict beside "growth": null); no "check" */
         return;
     }
+    chk = json_object();
     json_object_set_new(chk, "log_growth", json_real(lg));
     json_object_set_new(chk, "threshold", json_real(tau));
     json_object_set_new(chk, "rule", json_string("|log growth| beyond (deg p * ln(7/3) + ln 1e6) / (steps/2): "

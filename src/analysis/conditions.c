@@ -7,6 +7,7 @@
 #include "analysis/impl.h"
 #include "recstab/bilinear.h"
 #include "recstab/positivity.h"
+#include "recstab/str.h"
 
 void rs_json_append_unique(json_t *arr, const char *str)
 {
@@ -150,13 +151,13 @@ static void bound_text(char *buf, size_t len, const char *name, const rs_bound_t
  * of opposite signs); the conditions in one parameter alone without a
  * common solution in its interval (rs_positivity_none_positive); or two
  * conditions whose sum is provably < 0 under the bounds.  1 and the
- * reason into buf, else 0.  Only a subset is needed to be empty, so the
+ * reason appended to *why, else 0.  Only a subset is needed to be empty, so the
  * other conditions ("!= 0" ones included) may be left out.  The reason
  * ends without "never asymptotically stable" (the caller adds it once). */
 /* conditions longer than this are left out of the pairwise sum test */
 #define RS_CONDS_NEVER_PAIR_TERMS 200
 
-int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
+int rs_conds_never(char **why, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
                    slong nb, const rs_scheme_struct *s)
 {
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
@@ -170,7 +171,7 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
     for (i = 0; i < n && !found; i++) {
         if (fmpz_mpoly_is_fmpz(c[i], ctx) && (fmpz_mpoly_is_zero(c[i], ctx) || fmpz_sgn(c[i]->coeffs) < 0)) {
             char *li = rs_cond_string(c[i], s, "> 0");
-            snprintf(buf, len, "the condition %s never holds", li);
+            rs_str_catf(why, "the condition %s never holds", li);
             free(li);
             found = 1;
         }
@@ -182,8 +183,8 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
             fmpz_mpoly_scalar_mul_fmpz(u, c[i], c[j]->coeffs, ctx);
             if (fmpz_mpoly_equal(t, u, ctx)) {
                 char *li = rs_cond_string(c[i], s, "> 0"), *lj = rs_cond_string(c[j], s, "> 0");
-                snprintf(buf, len, "the conditions %s and %s contradict (one is a negative multiple of the "
-                         "other, both strict): no value satisfies both", li, lj);
+                rs_str_catf(why, "the conditions %s and %s contradict (one is a negative multiple of the "
+                            "other, both strict): no value satisfies both", li, lj);
                 free(li);
                 free(lj);
                 found = 1;
@@ -198,24 +199,20 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
         for (m = 0, i = 0; i < n; i++)
             if (var[i] == v) one[m++] = c[i];
         if (m > 0 && rs_positivity_none_positive(one, m, v, v < nb ? b + v : NULL, ctx)) {
-            size_t at;
             char range[200];
             /* "no value with a >= 1", or "no real value of a" with no bound */
             if (v < nb && (b[v].has_lo || b[v].has_hi)) {
                 bound_text(range, sizeof range, s->vars[v], b + v);
-                snprintf(buf, len, "no value with %s satisfies ", range);
+                rs_str_catf(why, "no value with %s satisfies ", range);
             } else {
-                snprintf(buf, len, "no real value of %s satisfies ", s->vars[v]);
+                rs_str_catf(why, "no real value of %s satisfies ", s->vars[v]);
             }
             for (i = 0; i < m; i++) {
                 char *li = rs_cond_string(one[i], s, "> 0");
-                at = strlen(buf);
-                snprintf(buf + at, len - at, "%s%s", i == 0 ? "" : " and ", li);
+                rs_str_catf(why, "%s%s", i == 0 ? "" : " and ", li);
                 free(li);
             }
-            at = strlen(buf);
-            snprintf(buf + at, len - at, " (real roots isolated, one exact sample in each gap of the admissible "
-                     "interval)");
+            rs_str_catf(why, " (real roots isolated, one exact sample in each gap of the admissible interval)");
             found = 1;
         }
     }
@@ -238,8 +235,8 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
                 {
                     char *li = rs_cond_string(c[i], s, "> 0"), *lj = rs_cond_string(c[j], s, "> 0");
                     char *st = rs_cond_string(t, s, "< 0");
-                    snprintf(buf, len, "the conditions %s and %s cannot both hold: their sum is negative for "
-                             "every value the assumptions allow (%s)", li, lj, st);
+                    rs_str_catf(why, "the conditions %s and %s cannot both hold: their sum is negative for "
+                                "every value the assumptions allow (%s)", li, lj, st);
                     free(li);
                     free(lj);
                     free(st);
@@ -258,7 +255,7 @@ int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slo
 
 /* rs_conds_never on conditions given as polynomials (ne[i]: a "!= 0" one,
  * left out; NULL: none), the intervals from the run's assume lines */
-int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
+int rs_run_conds_never(char **why, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
                        slong n, const rs_scheme_struct *s)
 {
     const fmpz_mpoly_struct **c = flint_malloc((n + 1) * sizeof(fmpz_mpoly_struct *));
@@ -267,7 +264,7 @@ int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_st
     int r;
     for (i = 0; i < n; i++)
         if (ne == NULL || !ne[i]) c[m++] = poly + i;
-    r = rs_conds_never(buf, len, c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
+    r = rs_conds_never(why, c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
     rs_run_bounds_clear(b, run);
     flint_free(c);
     return r;
@@ -287,7 +284,7 @@ void rs_json_set_never_conditions(json_t *o, const char *why)
  * 0 when some branch may hold or o already says never. */
 int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_struct *s)
 {
-    char why[2][1000], all[2100];
+    char *why[2] = {NULL, NULL}, *all = NULL;
     rs_bound_t *b;
     const fmpz_mpoly_struct **c;
     slong k, i, m, nmax = 0;
@@ -304,18 +301,20 @@ int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, 
         for (m = 0, i = 0; i < hb->branch[k].ncond; i++)
             if (!hb->branch[k].cond[i].trivially_true && !hb->branch[k].cond[i].not_expanded)
                 c[m++] = hb->branch[k].cond[i].reduced;
-        never = rs_conds_never(why[k], sizeof why[k], c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
+        never = rs_conds_never(why + k, c, m, b, FLINT_MIN(run->c->nparams, s->nvars), s);
     }
     flint_free(c);
     rs_run_bounds_clear(b, run);
-    if (!never) return 0;
-    if (hb->nbranch == 2)
-        snprintf(all, sizeof all, "neither branch can hold: branch 1: %s; branch 2: %s; never asymptotically "
-                 "stable", why[0], why[1]);
-    else
-        snprintf(all, sizeof all, "%s; never asymptotically stable", why[0]);
-    rs_json_set_never_conditions(o, all);
-    return 1;
+    if (never && hb->nbranch == 2)
+        rs_str_catf(&all, "neither branch can hold: branch 1: %s; branch 2: %s; never asymptotically stable",
+                    why[0], why[1]);
+    else if (never)
+        rs_str_catf(&all, "%s; never asymptotically stable", why[0]);
+    if (never) rs_json_set_never_conditions(o, all);
+    flint_free(why[0]);
+    flint_free(why[1]);
+    flint_free(all);
+    return never;
 }
 
 /* The sample check, and where o says "never" its cross-check: no admissible

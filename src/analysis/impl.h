@@ -280,14 +280,15 @@ int rs_json_hurwitz_or(json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_t s)
  * decides cheaply and exactly for c[i] > 0 (a constant <= 0, c' = -k c with
  * k > 0, one parameter's conditions without a common solution in its
  * interval, or two whose sum is provably < 0 under the intervals); the
- * reason into buf.  rs_run_conds_never: the same on
+ * reason appended to *why (rs_str_catf: any length; the caller frees it).
+ * rs_run_conds_never: the same on
  * poly[i] > 0 (ne[i]: a "!= 0" one, left out), intervals from the assume
  * lines.  rs_run_hurwitz_or_never: every branch so: "never" into o, 1.
  * rs_run_sample_check_never: rs_run_sample_check, and with "never" in o
  * no sample may satisfy the conditions (else exit 3). */
-int rs_conds_never(char *buf, size_t len, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
+int rs_conds_never(char **why, const fmpz_mpoly_struct *const *c, slong n, const rs_bound_t *b,
                    slong nb, const rs_scheme_struct *s);
-int rs_run_conds_never(char *buf, size_t len, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
+int rs_run_conds_never(char **why, rs_run_t *run, const fmpz_mpoly_struct *poly, const int *ne,
                        slong n, const rs_scheme_struct *s);
 void rs_json_set_never_conditions(json_t *o, const char *why);
 int rs_run_hurwitz_or_never(rs_run_t *run, json_t *o, const rs_hurwitz_or_t hb, const rs_scheme_struct *s);

@@ -211,9 +211,15 @@ int rs_run_variant(rs_variant_t **out, rs_run_t *run, const rs_assign_t *a, slon
         if (r == RS_OK && n == 0 && run->have_sym && run->deg_exact < 0)
             run->deg_exact = rs_charpoly_top_degree(v->cp);   /* nothing substituted: generic */
         if (r == RS_OK) r = rs_run_is_singular(&v->singular, run, rs_charpoly_top_degree(v->cp));
-        if (r == RS_OK && !v->singular && rs_charpoly_top_degree(v->cp) < 1)
+        if (r == RS_OK && !v->singular && rs_charpoly_top_degree(v->cp) < 1) {
+            /* an equation that writes one shift only (x[n+1] = 0) holds from there on: x = 0 */
+            int shifted = 0;
+            for (i = 0; i < v->s->n && v->s->row_shift != NULL; i++) shifted |= v->s->row_shift[i] > 0;
             r = rs_error_set(run->err, RS_ERR_MATH, "the characteristic polynomial has no root (degree 0 "
-                             "in lambda): the scheme has no dynamics");
+                             "in lambda): the scheme has no dynamics%s", shifted ? " (an equation holds from the "
+                             "lowest shift it writes: x[n+1] = 0 says x[n] = 0 for every n; the dead-beat "
+                             "recurrence x[n+1] = 0 x[n] is written x[n+1] = 0*x[n])" : "");
+        }
         if (r != RS_OK && run->err->file[0] == '\0') {
             /* point determinant failures at the equations */
             const rs_loc_t *l = run->m->neqs > 0 ? &run->m->eqs[0].loc : &run->c->charloc;

@@ -923,6 +923,27 @@ static int build_char(rs_scheme_t s, const rs_model_t m, rs_error_t err)
     return r;
 }
 
+/* The lowest shift at which e (plus off) writes an unknown, through lets; WORD_MAX
+ * for none.  Zero coefficients count: (0)*x1[n] writes x1[n].  Walked after
+ * eval succeeded on e, so lets are acyclic and the walk costs no more than eval. */
+static slong written_low(const rs_expr_t *e, const ev_t *x, slong off)
+{
+    slong k, a, b;
+    if (e == NULL) return WORD_MAX;
+    if (e->kind == RS_EXPR_NAME) {
+        if (unknown_index(x->s, e->name) >= 0)
+            return e->shifted ? e->shift + off : WORD_MAX;
+        if ((k = rs_case_let_index(x->c, e->name)) >= 0) {
+            const rs_let_t *l = &x->c->lets[k];
+            return written_low(l->e, x, off + (l->shifted ? e->shift - l->shift : 0));
+        }
+        return WORD_MAX;
+    }
+    a = written_low(e->a, x, off);
+    b = written_low(e->b, x, off);
+    return FLINT_MIN(a, b);
+}
+
 int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
 {
     const rs_case_struct *c = m->c;
@@ -986,6 +1007,9 @@ int rs_scheme_build(rs_scheme_t s, const rs_model_t m, rs_error_t err)
                     slong low = v.low + rs_scheme_min_degree(v.c[1 + j].zpoly, s->lambda_var, s->ctx->zctx);
                     if (low < rowmin) rowmin = low;
                 }
+            /* an equation holds from the lowest shift it writes: x3[n+1] = 0*x1[n] + ... is a
+             * zero row of x[n+1] = M x[n] (x3[0] free, a root at 0), not x3[n] = 0 */
+            rowmin = FLINT_MIN(rowmin, FLINT_MIN(written_low(q->lhs, &x, 0), written_low(q->rhs, &x, 0)));
             s->row_shift[i] = rowmin;
             for (j = 0; j < n; j++) {
                 fmpq_mpoly_struct *M = s->M + i * n + j;

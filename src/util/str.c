@@ -1,4 +1,5 @@
 /* str.c -- string copies and UTF-8 checks; see include/recstab/str.h. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <flint/flint.h>
@@ -18,6 +19,21 @@ char *rs_strndup(const char *s, size_t n)
     memcpy(d, s, n);
     d[n] = '\0';
     return d;
+}
+
+void rs_str_catf(char **s, const char *fmt, ...)
+{
+    va_list ap;
+    size_t len = *s != NULL ? strlen(*s) : 0;
+    int n;
+    va_start(ap, fmt);
+    n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (n < 0) return;
+    *s = flint_realloc(*s, len + (size_t) n + 1);
+    va_start(ap, fmt);
+    vsnprintf(*s + len, (size_t) n + 1, fmt, ap);
+    va_end(ap);
 }
 
 int rs_utf8_seq_len(const char *s, size_t n)

@@ -261,6 +261,34 @@ if command -v jq >/dev/null 2>&1; then
     check "sdirk2 z = 1 + c^2, 0 <= c <= 4: stable iff (z > 6 + 4 sqrt 2 reached)" \
         '["stable iff the conditions hold",null]' \
         "$("$RS" --json --analyse jury "$T/never4.case" 2>/dev/null | jq -c '.cases[0].results[0] | [.verdict, .never]')"
+    # a zero row of x[n+1] = M x[n] (h-truth7, by hand in the case): det(lambda I - M) =
+    # lambda (lambda - 1/2)(lambda + 2), the root at 0 counted (was 1 inside)
+    C=cases/truth/zero-row-system.case
+    check "zero row: stability, jury, routh count the root at 0 (was 1 inside)" \
+        '[["unstable",2,0,1],["unstable",2,0,1],["unstable",2,0,1]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results[0:3] | map([.status, .inside, .on, .outside])')"
+    check "zero row: modes list the root at 0" '[["-2","0"],["0","0"],["0.5","0"]]' \
+        "$(jfield $C 3 '| [.modes[], (.spurious // [])[]] | map([.root.re, .root.im]) | sort_by(.[0] | tonumber)')"
+    # M = 0 (h-truth7, by hand in the case): dead-beat, stable, radius 0 (was exit 2)
+    C=cases/truth/dead-beat-zero-matrix.case
+    check "x[n+1] = 0*x[n]: stable dead-beat on every route (was exit 2 'no dynamics')" \
+        '["stable",1,"stable","stable under the assumptions (dead-beat: every root is 0)","0","stable","proved"]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].status, .[0].inside, .[1].status, .[2].verdict, .[3].upper, .[4].verdict.status, .[5].status]')"
+    check "claim without a free parameter: the certificate names no empty point (was 'at : stable')" \
+        '"stable (the exact point verdict)"' "$(jfield $C 5 '.certificate[0].text')"
+    printf 'title x is zero\nunknown x\neq x[n+1] = 0\nanalyse stability\n' >"$T/zero.case"
+    "$RS" "$T/zero.case" >"$T/out" 2>"$T/err"; rc=$?
+    check "x[n+1] = 0 alone (x = 0 from n = 0): exit 2 with the dead-beat spelling" "2 1" \
+        "$rc $(grep -c 'zero.case:3:4: .*no dynamics.*written x\[n+1\] = 0\*x\[n\]' "$T/err")"
+    # never reasons over 1000 characters (h-truth7, by hand in the case): whole, not cut
+    C=cases/truth/never-long-reason.case
+    check "long never reasons end as written (were cut at 1000 characters mid-number)" \
+        '[["never stable",true,true],["never stable",true,true]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([.verdict, (.never | length > 1000), (.never | test("(interval\\)|allow \\(.*\\)|both|never holds|proves it: .*); never asymptotically stable$"))])')"
+    # a dead-beat simulate has no "check" object (h-truth7: it was built and dropped)
+    C=cases/truth/simulate-dead-beat.case
+    check "dead-beat simulate: the exact verdict decides, no check object" '["exact",null]' \
+        "$(jfield $C 1 '| [.verdict.decided_by, .check]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
@@ -302,6 +330,14 @@ if command -v python3 >/dev/null 2>&1; then
     for spec in "routes 2 3" "systems 2 4"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth6.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # seventh batch (tests/truth/truth7.py, h-truth7): the 2-step family (1 + a, a) with its
+    # zero-stability boundary, integrators in a cascade under every coupling, textbook Routh
+    # special cases through the bilinear map, Jury's reciprocal pairs, a factor whose sign is
+    # free, degenerate inputs (all of them)
+    for spec in "lmmfam 3 4" "builders 3 3" "routh 3 3" "jurysp 3 3" "symsign 3 2" "degen 3 1"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth7.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"

@@ -51,6 +51,9 @@ def ev(expr, env):
 
 
 def ev_cond(c, env):
+    # a condition reduced to a constant is said as "a_0 = EXPR > 0, i.e. -1 > 0 once
+    # FACTORS are taken out ..." (h-truth6): EXPR > 0 itself is the condition
+    c = re.sub(r"^[A-Za-z]_\d+ = ", "", c.split(", i.e. ")[0])
     for op in ("<=", ">=", "!=", "<", ">", "="):
         k = " %s " % op
         if k in c:

@@ -239,11 +239,14 @@ def part_implicit(rng, count):
         st_c = T.find(doc2, "stability")
         bad = None
         # det(lambda A1(c) - B) at n + 1 values of lambda: all 0 iff it vanishes identically
-        # (B singular on A1(c)'s kernel): then no recurrence at a = c, stability's input error
+        # (B singular on A1(c)'s kernel): then no recurrence at a = c, stability says singular
+        # with "vanishes" (h-polish; it was an input error, exit 2, when truth4 was written)
         vanish = all(det([[x * A1(cval)[i][j] - B[i][j] for j in range(n)] for i in range(n)]) == 0
                      for x in range(n + 1))
-        if vanish and not (rc2 == 2 and "identically zero" in err2):
-            bad = "stability at a = c (det vanishes): exit %d %s" % (rc2, err2.strip()[:120])
+        if vanish and not (rc2 == 0 and st_c is not None and st_c.get("status") == "singular"
+                           and st_c.get("vanishes") is True):
+            bad = "stability at a = c (det vanishes): exit %d %s %s" % (rc2, st_c and st_c.get("status"),
+                                                                         err2.strip()[:120])
         elif not vanish and (rc2 != 0 or st_c is None or st_c.get("status") != "singular"):
             bad = "stability at a = c: exit %d %s" % (rc2, st_c and st_c.get("status"))
         pt = [x for x in reg["intervals"] if x.get("lo") == str(cval) and x.get("hi") == str(cval)]
