@@ -48,7 +48,7 @@ void rs_an_qd_conds_clear(rs_an_qd_conds_t *q);
 /* an_qd_never.c: 1 (the reason into buf) when q's conditions provably never
  * all hold under the assume lines (each split into the sign cases of c0,
  * c1 and the norm c0^2 - d c1^2, every choice refuted by rs_run_conds_never) */
-int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_conds_t *q);
+int rs_an_qd_conds_never(char **why, rs_run_t *run, const rs_an_qd_conds_t *q);
 /* an_qd_complex.c: jury (kind 0), hurwitz (1) and routh (2) at complex set
  * values: conditions over Q(sqrt d)(i)[params], Schur-Cohn and Bilharz
  * cross-checked at sample points against the exact point verdict */

@@ -237,7 +237,7 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     json_t *o;
     slong n, k;
     int r, m = kind == 0 ? 0 : 1, *sign;
-    char buf[80], buf2[1100], *over;
+    char buf[80], *why = NULL, *over;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
@@ -305,11 +305,13 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     json_object_set_new(o, "note", json_string(m == 0 ? qdc_note_jury : qdc_note_bilharz));
     /* never under the assumptions (an_qd_never.c): both lists say so, the
      * sample check then expects no stable point */
-    if (!L.never[m] && L.q[m].n > 0 && rs_an_qd_conds_never(buf2, 1000, run, &L.q[m])) {
-        strcat(buf2, "; never asymptotically stable");
-        rs_json_set_never_conditions(o, buf2);
+    if (!L.never[m] && L.q[m].n > 0 && rs_an_qd_conds_never(&why, run, &L.q[m])) {
+        rs_str_catf(&why, "; never asymptotically stable");
+        rs_json_set_never_conditions(o, why);
         L.never[m] = L.q[m].never = 1;
     }
+    flint_free(why);
+    why = NULL;
     json_object_set_new(o, "verdict", json_string(L.never[m] ? "never stable" : L.q[m].n == 0
                                                   ? "stable under the assumptions" : "stable iff the conditions hold"));
     r = qdc_sample_check(run, v, re, im, n, &L, m, o, req->q);

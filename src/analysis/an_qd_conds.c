@@ -301,14 +301,15 @@ static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, jso
                          json_t *parts, json_t *dropped, json_t *always, int never, const qc_t *alt)
 {
     int r;
-    char why[1100];
+    char *why = NULL;
     /* a set that never holds under the assumptions (an_qd_never.c); the
      * sample check then expects no stable point */
-    if (!never && S->q.n > 0 && rs_an_qd_conds_never(why, 1000, run, &S->q)) {
-        strcat(why, "; never asymptotically stable");
+    if (!never && S->q.n > 0 && rs_an_qd_conds_never(&why, run, &S->q)) {
+        rs_str_catf(&why, "; never asymptotically stable");
         rs_json_set_never_conditions(o, why);
         never = S->q.never = 1;
     }
+    flint_free(why);
     rs_an_qd_json_p(o, S->p0, S->p1, run);
     json_object_set_new(o, "degree", json_integer(S->n));
     json_object_set_new(o, "conditions", conds);

@@ -20,7 +20,7 @@
 
 #define QD_NEVER_MAX_CASES 243
 
-int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_conds_t *q)
+int rs_an_qd_conds_never(char **why, rs_run_t *run, const rs_an_qd_conds_t *q)
 {
     const rs_scheme_struct *s = q->s;
     const fmpz_mpoly_ctx_struct *ctx = s->zctx;
@@ -30,8 +30,7 @@ int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_co
     slong *ncase = flint_malloc((size_t) (q->n + 1) * sizeof(slong));
     slong i, total = 1, combo, m;
     int never = 0;
-    char first[900];
-    first[0] = '\0';
+    char *first = NULL;
     /* cases[6 i + 2 j + {0, 1}]: case j of condition i, two conditions > 0
      * (the second a zero polynomial when there is one: left out below);
      * shallow copies of q's parts and the norms */
@@ -64,7 +63,7 @@ int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_co
     never = total <= QD_NEVER_MAX_CASES;
     for (combo = 0; never && combo < total; combo++) {
         slong rest = combo;
-        char why[900];
+        char *w = NULL;
         m = 0;
         for (i = 0; i < q->n; i++) {
             slong j;
@@ -74,13 +73,15 @@ int rs_an_qd_conds_never(char *buf, size_t len, rs_run_t *run, const rs_an_qd_co
             sel[m++] = cases[6 * i + 2 * j];
             if (!fmpz_mpoly_is_zero(cases + 6 * i + 2 * j + 1, ctx)) sel[m++] = cases[6 * i + 2 * j + 1];
         }
-        never = m > 0 && rs_run_conds_never(why, sizeof why, run, sel, NULL, m, s);
-        if (never && combo == 0) snprintf(first, sizeof first, "%s", why);
+        never = m > 0 && rs_run_conds_never(&w, run, sel, NULL, m, s);
+        if (never && combo == 0) { first = w; w = NULL; }
+        flint_free(w);
     }
     if (never)
-        snprintf(buf, len, "over Q(sqrt %ld) each condition c0 + sqrt(d)*(c1) > 0 needs c0 > 0 and c1 > 0, or "
+        rs_str_catf(why, "over Q(sqrt %ld) each condition c0 + sqrt(d)*(c1) > 0 needs c0 > 0 and c1 > 0, or "
                  "c0 > 0 and c0^2 - d*c1^2 > 0, or c1 > 0 and d*c1^2 - c0^2 > 0; all %ld such cases are "
-                 "contradictory (the first: %s)", (long) s->sqrt_d, (long) total, first);
+                 "contradictory (the first: %s)", (long) s->sqrt_d, (long) total, first ? first : "");
+    flint_free(first);
     for (i = 0; i < q->n; i++) {
         if (ncase[i] == 3 && total <= QD_NEVER_MAX_CASES) fmpz_mpoly_clear(cases + 6 * i + 5, ctx);
         fmpz_mpoly_clear(norm + i, ctx);
