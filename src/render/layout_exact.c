@@ -976,8 +976,11 @@ static void certificate_lines(rs_render_t *r, const json_t *c)
         rs_render_label(r, label);
         rs_render_textf(r, "%s > 0 since with ", js(e, "condition"));
         assignments(r, json_object_get(e, "substitution"));
-        rs_render_textf(r, " (every s >= 0) the numerator's %lld coefficients are all >= 0",
-                        ji(e, "transformed_terms"));
+        if (ji(e, "transformed_terms") == 1)
+            rs_render_textf(r, " (every s >= 0) the numerator's one coefficient is >= 0");
+        else
+            rs_render_textf(r, " (every s >= 0) the numerator's %lld coefficients are all >= 0",
+                            ji(e, "transformed_terms"));
         if (js(e, "positive_factor")) rs_render_textf(r, " after dividing by %s > 0", js(e, "positive_factor"));
         if (ji(e, "polya_power") > 0) rs_render_textf(r, " times (1 + sum s)^%lld", ji(e, "polya_power"));
         rs_render_textf(r, "\n");
