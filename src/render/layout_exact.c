@@ -349,6 +349,8 @@ static void epsilon_signs(rs_render_t *r, const json_t *es)
     rs_render_line(r, "eps -> 0+", "first column signs %s (zero first entries replaced by eps)", buf);
 }
 
+static void routh_conditions(rs_render_t *r, const json_t *o);
+
 void rs_render_routh(rs_render_t *r, const json_t *o)
 {
     const json_t *ev = json_object_get(o, "events");
@@ -398,6 +400,8 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
         rs_render_esc(r, js(o, "note"));
         rs_render_say(r, "\n\n", "\n\n");
     }
+    /* over Q(sqrt d) (an_qd_conds.c) the array ends in conditions and a verdict */
+    if (sym && json_object_get(o, "conditions") != NULL) routh_conditions(r, o);
     /* the report counts the numeric array; the derivation whatever has a status */
     rs_render_count(r, o, (sym ? 0 : RS_RENDER_TEXT) | (js(o, "status") ? RS_RENDER_PROSE : 0));
     rs_render_assigned(r, o);
@@ -418,6 +422,30 @@ static void dropped_factors(rs_render_t *r, const json_t *dropped)
         rs_render_say(r, ".\n", ".\n\n");
     }
     rs_render_say(r, "\n", NULL);
+}
+
+/* routh's symbolic conditions over Q(sqrt d): the signs of the first column
+ * as conditions, checked against hurwitz's and the exact point verdict (the
+ * JSON had them; the text report stopped at the note) */
+static void routh_conditions(rs_render_t *r, const json_t *o)
+{
+    const json_t *conds = json_object_get(o, "conditions"), *cc = json_object_get(o, "cross_check");
+    if (!branches(r, o)) {
+        if (json_array_size(conds) == 0)
+            rs_render_line(r, "conditions", "%s", "none left: every first-column condition holds under the "
+                                                  "assumptions");
+        condition_list(r, conds, "All |lambda| < 1 if and only if:\n\n",
+                       "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
+                       "(every condition holds under the assumptions)");
+    }
+    condition_lines(r, o, "conditions", "", js(o, "never_from") == NULL);
+    dropped_factors(r, json_object_get(o, "dropped"));
+    rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
+    rs_render_line(r, "verdict", "%s", js(o, "verdict"));
+    if (cc != NULL)
+        rs_render_linef(r, "cross-check", "%s: %s at %lld sample points", js(cc, "method"),
+                        json_is_true(json_object_get(cc, "agree")) ? "agree" : "DISAGREE", ji(cc, "points"));
+    rs_render_sample_check(r, o);
 }
 
 /* p = A + i B over Q(i)[params] (an_complex_conds.c) */
