@@ -2120,6 +2120,7 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
     for (k = 0; k < nparams; k++) {
         int set = 0;
         for (j = 0; j < run->c->nsets; j++) set |= strcmp(run->c->sets[j].name, run->c->params[k].name) == 0;
+        for (j = 0; j < run->c->ncsets; j++) set |= strcmp(run->c->csets[j].name, run->c->params[k].name) == 0;
         if (!set) fv[nfree++] = k;
     }
     tv = nfree > 0 ? fv[0] : -1;
@@ -2190,6 +2191,17 @@ static int claim_qd(rs_run_t *run, const rs_an_req_t *req, const char *kindw)
                  "route there, all agreeing): proved iff every cell meeting the set has the claimed status; refuted "
                  "at the first cell that does not, its point and exact status given",
                  over, over, (long) run->sym->sqrt_d);
+        if (run->c->ncsets > 0) {
+            /* at complex set values (an_qd_complex.c): both condition lists and the point verdict decide */
+            snprintf(tried, sizeof tried, "the exact region over %s(i) of the one free parameter on the claim's set "
+                     "(cells cut at the real roots of the norms of the Schur-Cohn and Bilharz conditions over "
+                     "%s(i); rational samples decided by both lists and Schur-Cohn with certified roots, algebraic "
+                     "cuts by both lists' exact signs, all agreeing): proved iff every cell meeting the set has the "
+                     "claimed status; refuted at the first cell that does not", over, over);
+            over = flint_realloc(over, strlen(over) + 4);
+            strcat(over, "(i)");
+            json_object_set_new(o, "at", rs_run_cx_at(run));
+        }
         json_object_set_new(o, "over", json_string(over));
         json_object_set_new(o, "tried", json_string(tried));
         flint_free(over);

@@ -74,6 +74,9 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
      * unused (decided once the request is parsed: rest set) */
     if (strcmp(n, "region") == 0 && (req->rest == NULL || (!req->u.region.forall && qd_csets_only(run, req))))
         return RS_OK;
+    /* one real parameter's cells over Q(sqrt d)(i) (an_qd_complex.c's rs_an_qd_cx_fiber) */
+    if (strcmp(n, "region") == 0 && !req->u.region.forall && !req->u.region.twod) return RS_OK;
+    if (strcmp(n, "claim") == 0) return RS_OK;
     {
         /* the message names the model's field and tableau */
         char msg[400];

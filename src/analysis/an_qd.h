@@ -59,6 +59,25 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind);
  * vanishes there, -2 Schur-Cohn over Q(sqrt d)(i) and the certified roots
  * disagree */
 int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s);
+/* the same, finer: 1 stable, 0 a root certified outside (unstable), -1 not
+ * stable with no root certified outside (on or too near the circle), -2
+ * the two disagree, -3 the degree drops (singular), -4 p vanishes */
+int rs_an_qd_parts_verdict(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s);
+/* an_qd_conds.c: region's cells of tv (the only free parameter) at complex
+ * set values: cut at the real roots of the norms of q's (Schur-Cohn) and
+ * alt's (Bilharz) conditions and of lead (|a_n|^2); each rational sample
+ * decided by both lists and rs_an_qd_parts_verdict, each irrational cut by
+ * both lists' exact signs (any disagreement exit 3); kind and the rest as
+ * rs_an_qd_claim_part (kind -1: region's "intervals") */
+int rs_an_qd_cx_cells(json_t *o, rs_run_t *run, const rs_request_t *rq, slong tv, const rs_an_qd_conds_t *q,
+                      const rs_an_qd_conds_t *alt, const fmpz_mpoly_struct *const *part, slong n,
+                      const fmpz_mpoly_t lead, const rs_bound_t *dom, int kind, int *verdict, json_t **counter);
+/* region NAME (kind -1) and a claim's part (kind 0..2, as rs_an_qd_fiber)
+ * at complex set values of other parameters (an_qd_complex.c) */
+int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra);
+/* 1 when a complex set value is of a parameter other than tv */
+int rs_an_qd_cx_other(const rs_run_t *run, slong tv);
 /* an_qd_region2.c: region N1, N2 over Q(sqrt d) (the rational CAD on the
  * norms of the critical polynomials, each cell decided over Q(sqrt d)) */
 int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req);

@@ -81,10 +81,16 @@ static json_t *qdc_poly_json(const fmpz_mpoly_t f, const rs_scheme_struct *s, co
 
 int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s)
 {
+    int sc = rs_an_qd_parts_verdict(part, n, pt, s);
+    return sc == -4 ? -1 : sc == -2 ? -2 : sc == 1;   /* a degree drop, marginal or unstable: not stable */
+}
+
+int rs_an_qd_parts_verdict(const fmpz_mpoly_struct *const *part, slong n, fmpq *const *pt, const rs_scheme_struct *s)
+{
     fmpq_poly_t e;
     rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
     slong k, deg = -1;
-    int sc = -1, j;
+    int sc = -4, j;
     fmpq_poly_init(e);
     for (j = 0; j < 4; j++) {
         if (part[j] == NULL) continue;
@@ -96,11 +102,8 @@ int rs_an_qd_parts_stable(const fmpz_mpoly_struct *const *part, slong n, fmpq *c
         }
     }
     /* x + sqrt(d) y = 0 only for x = y = 0: the degree over Q(sqrt d)(i) is deg */
-    if (deg >= 0 && deg < n) sc = 0;
-    else if (deg == n) {
-        sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
-        if (sc == -1) sc = 0;   /* not stable (marginal or unstable) */
-    }
+    if (deg >= 0 && deg < n) sc = -3;
+    else if (deg == n) sc = rs_qdc_stable_checked(NULL, c, n, s->sqrt_d);
     rs_qdc_vec_clear(c, n + 1);
     fmpq_poly_clear(e);
     return sc;
@@ -226,6 +229,48 @@ static const char qdc_note_bilharz[] =
     "|c|^2 > 0 and the fraction-free signed remainder chain of P, Q (subresultants, polynomial in sqrt(d), then "
     "sqrt(d)^2 = d) has (-1)^k lc(T_k) > 0 for k = 1..n";
 
+/* re + i im of v's p (sqrt(d) reduced; *np its degree), both condition
+ * lists into L, sc's and bc's (initialised by the caller, who clears all) */
+static int qdc_build(fmpz_mpoly_t re, fmpz_mpoly_t im, slong *np, rs_schur_cx_conds_t *sc, rs_routh_cx_conds_t *bc,
+                     qdc_lists_t *L, int *sign, rs_run_t *run, const rs_an_req_t *req, const rs_variant_t *v)
+{
+    const rs_scheme_struct *s = v->s;
+    slong n, k;
+    int r = RS_OK;
+    char buf[80];
+    if (v->singular)
+        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: the leading coefficient of p vanishes at "
+                            "the set values: the implicit step cannot be solved there", req->def->name);
+    /* the roots at 0 the charpoly divided out are inside: left out */
+    rs_run_cx_poly(re, im, run, v);
+    rs_scheme_reduce_sqrt(re, s);
+    rs_scheme_reduce_sqrt(im, s);
+    n = *np = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx),
+                        fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
+    if (n < 1) {
+        snprintf(buf, sizeof buf, "%s", req->def->name);
+        return rs_req_error(run, req->q, req->q->text, n < 0 ? RS_ERR_MATH : RS_ERR_INPUT, n < 0 ? "%s: the "
+                            "characteristic polynomial vanishes at the complex set values" : "%s: p has no root "
+                            "(degree 0 in lambda) at the complex set values", buf);
+    }
+    if (!rs_schur_cx_conds(sc, re, im, s->lambda_var, s->zctx)
+        || !rs_routh_cx_conds(bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS))
+        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "%s over Q(sqrt d)(i): a condition grew over the "
+                         "term limit", req->def->name);
+    if (r == RS_OK) r = rs_budget_check(run->err, "the conditions over Q(sqrt d)(i)");
+    for (k = 0; r == RS_OK && k < sc->ndelta; k++) {
+        snprintf(buf, sizeof buf, "delta_%ld", (long) (n - k));
+        qdc_add(L, 0, sc->delta + k, buf, sign, s);
+        if (fmpz_mpoly_is_zero(sc->delta + k, s->zctx)) break;   /* the recursion stops there */
+    }
+    for (k = 0; r == RS_OK && k < bc->ncond; k++) {
+        if (k == 0) snprintf(buf, sizeof buf, "|c|^2");
+        else snprintf(buf, sizeof buf, "%slc(T_%ld)", (k & 1) ? "-" : "", (long) k);
+        qdc_add(L, 1, bc->cond + k, buf, sign, s);
+    }
+    return r;
+}
+
 int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
 {
     rs_variant_t *v;
@@ -235,47 +280,18 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     rs_routh_cx_conds_t bc;
     qdc_lists_t L;
     json_t *o;
-    slong n, k;
+    slong n = 0;
     int r, m = kind == 0 ? 0 : 1, *sign;
-    char buf[80], *why = NULL, *over;
+    char *why = NULL, *over;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
-    if (v->singular)
-        return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s: the leading coefficient of p vanishes at "
-                            "the set values: the implicit step cannot be solved there", req->def->name);
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    /* the roots at 0 the charpoly divided out are inside: left out */
-    rs_run_cx_poly(re, im, run, v);
-    rs_scheme_reduce_sqrt(re, s);
-    rs_scheme_reduce_sqrt(im, s);
-    n = FLINT_MAX(fmpz_mpoly_degree_si(re, s->lambda_var, s->zctx), fmpz_mpoly_degree_si(im, s->lambda_var, s->zctx));
-    if (n < 1) {
-        fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
-        snprintf(buf, sizeof buf, "%s", req->def->name);
-        return rs_req_error(run, req->q, req->q->text, n < 0 ? RS_ERR_MATH : RS_ERR_INPUT, n < 0 ? "%s: the "
-                            "characteristic polynomial vanishes at the complex set values" : "%s: p has no root "
-                            "(degree 0 in lambda) at the complex set values", buf);
-    }
     rs_schur_cx_conds_init(&sc);
     rs_routh_cx_conds_init(&bc, s->zctx);
     qdc_lists_init(&L, s);
     sign = rs_run_signs(run, s);
-    if (!rs_schur_cx_conds(&sc, re, im, s->lambda_var, s->zctx)
-        || !rs_routh_cx_conds(&bc, re, im, s->lambda_var, s->zctx, RS_CHARPOLY_MAX_TERMS))
-        r = rs_req_error(run, req->q, req->q->text, RS_ERR_LIMIT, "%s over Q(sqrt d)(i): a condition grew over the "
-                         "term limit", req->def->name);
-    if (r == RS_OK) r = rs_budget_check(run->err, "the conditions over Q(sqrt d)(i)");
-    for (k = 0; r == RS_OK && k < sc.ndelta; k++) {
-        snprintf(buf, sizeof buf, "delta_%ld", (long) (n - k));
-        qdc_add(&L, 0, sc.delta + k, buf, sign, s);
-        if (fmpz_mpoly_is_zero(sc.delta + k, s->zctx)) break;   /* the recursion stops there */
-    }
-    for (k = 0; r == RS_OK && k < bc.ncond; k++) {
-        if (k == 0) snprintf(buf, sizeof buf, "|c|^2");
-        else snprintf(buf, sizeof buf, "%slc(T_%ld)", (k & 1) ? "-" : "", (long) k);
-        qdc_add(&L, 1, bc.cond + k, buf, sign, s);
-    }
+    r = qdc_build(re, im, &n, &sc, &bc, &L, sign, run, req, v);
     if (r != RS_OK) goto done;
     o = json_object();
     over = qdc_over_str(s->sqrt_d);
@@ -323,5 +339,105 @@ done:
     rs_schur_cx_conds_clear(&sc, s->zctx);
     rs_routh_cx_conds_clear(&bc, s->zctx);
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    return r;
+}
+
+int rs_an_qd_cx_other(const rs_run_t *run, slong tv)
+{
+    slong j;
+    for (j = 0; j < run->c->ncsets; j++)
+        if (rs_case_param_index(run->c, run->c->csets[j].name) != tv) return 1;
+    return 0;
+}
+
+int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
+{
+    const char *keep[1];
+    rs_assign_t *as = NULL;
+    slong nas = 0, n = 0, k;
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t re, im, lead, x;
+    fmpz_mpoly_struct q[4];
+    const fmpz_mpoly_struct *part[4];
+    rs_schur_cx_conds_t sc;
+    rs_routh_cx_conds_t bc;
+    qdc_lists_t L;
+    int r, *sign, vd = 0;
+    json_t *ce = NULL;
+    if (verdict == NULL) verdict = &vd;
+    if (counter == NULL) counter = &ce;
+    *verdict = 0;
+    *counter = NULL;
+    /* the case's real set values and extra[] (region's `at`), tv kept free */
+    keep[0] = run->c->params[tv].name;
+    rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
+    r = rs_run_variant(&v, run, as, nas);
+    rs_assign_free(as, nas);
+    if (r != RS_OK) return r;
+    s = v->s;
+    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    fmpz_mpoly_init(lead, s->zctx); fmpz_mpoly_init(x, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_init(q + k, s->zctx);
+    rs_schur_cx_conds_init(&sc);
+    rs_routh_cx_conds_init(&bc, s->zctx);
+    qdc_lists_init(&L, s);
+    sign = rs_run_signs(run, s);
+    r = qdc_build(re, im, &n, &sc, &bc, &L, sign, run, req, v);
+    for (k = 0; r == RS_OK && k < s->lambda_var; k++)
+        if (k != tv && k != s->sqrt_var && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0
+                                            || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
+            r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every real parameter but %s set: "
+                             "region and claim over Q(sqrt d)(i) are decided on the exact cells of one parameter "
+                             "(jury, hurwitz and routh give the conditions with more parameters free)", keep[0]);
+    if (r == RS_OK) {
+        json_t *oo = kind < 0 ? json_object() : o;
+        /* |a_n|^2 = lr^2 + li^2: zero exactly where the step is singular */
+        rs_charpoly_coeff(x, re, n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(lead, x, x, s->zctx);
+        rs_charpoly_coeff(x, im, n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(x, x, x, s->zctx);
+        fmpz_mpoly_add(lead, lead, x, s->zctx);
+        rs_scheme_reduce_sqrt(lead, s);
+        for (k = 0; k < 4; k++) {
+            rs_charpoly_coeff(q + k, k < 2 ? re : im, k & 1, s->sqrt_var, s->zctx);
+            part[k] = q + k;
+        }
+        for (k = 0; k < 2; k++) L.q[k].never |= L.never[k];
+        r = rs_an_qd_cx_cells(oo, run, req->q, tv, &L.q[0], &L.q[1], part, n, lead, dom, kind, verdict, counter);
+        if (r == RS_OK && kind < 0) {
+            char *over = qdc_over_str(s->sqrt_d);
+            json_object_set_new(oo, "analysis", json_string("region"));
+            json_object_set_new(oo, "param", json_string(keep[0]));
+            json_object_set_new(oo, "over", json_string(over));
+            flint_free(over);
+            json_object_set_new(oo, "at", rs_run_cx_at(run));
+            json_object_set_new(oo, "p_re", qdc_poly_json(re, s, "lambda"));
+            json_object_set_new(oo, "p_im", qdc_poly_json(im, s, "lambda"));
+            json_object_set_new(oo, "conditions", json_incref(L.conds[0]));
+            json_object_set_new(oo, "conditions_bilharz", json_incref(L.conds[1]));
+            json_object_set_new(oo, "dropped", json_incref(L.dropped[0]));
+            json_object_set_new(oo, "method", json_string(
+                "cells cut at the real roots of the norms c0^2 - d c1^2 of the Schur-Cohn conditions over "
+                "Q(sqrt d)(i) (jury's, delta_k = |a_k|^2 - |a_0|^2 > 0), of the Bilharz conditions (hurwitz's) and "
+                "of |a_n|^2, and at the assumptions' ends; each rational sample decided three ways: both condition "
+                "lists' exact signs and Schur-Cohn over Q(sqrt d)(i) with the certified Arb roots (unstable: a root "
+                "certified outside; not stable: marginal and unstable not told apart); each irrational cut t0 by "
+                "both lists' exact signs in Q(t0, sqrt d) (no delta_k zero there: no root on the circle, so not "
+                "stable is unstable); all must agree, else exit 3"));
+            rs_run_emit_exact(run, v, oo);
+        } else if (kind < 0) {
+            json_decref(oo);
+        }
+    }
+    json_decref(ce);
+    flint_free(sign);
+    qdc_lists_clear(&L);
+    rs_schur_cx_conds_clear(&sc, s->zctx);
+    rs_routh_cx_conds_clear(&bc, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_clear(q + k, s->zctx);
+    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
+    fmpz_mpoly_clear(lead, s->zctx); fmpz_mpoly_clear(x, s->zctx);
     return r;
 }

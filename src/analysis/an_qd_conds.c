@@ -251,6 +251,10 @@ typedef struct {
     fmpz_mpoly_struct *a;
     int *sign;
     qc_t q;
+    /* at complex set values (rs_an_qd_cx_cells): p = cx[0] + sqrt(d) cx[1]
+     * + i (cx[2] + sqrt(d) cx[3]) and Bilharz's conditions alt; else NULL */
+    const fmpz_mpoly_struct *const *cx;
+    const qc_t *alt;
 } qd_sym_t;
 
 static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_variant_t *v)
@@ -262,6 +266,8 @@ static int qd_sym_init(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, rs_va
     if (v == NULL) r = rs_run_default_variant(run, &S->v);
     S->a = NULL;
     S->sign = NULL;
+    S->cx = NULL;
+    S->alt = NULL;
     if (r != RS_OK) return r;
     s = S->s = S->v->s;
     S->n = S->v->cp->degree;
@@ -864,6 +870,7 @@ static int qd_exact_status(rs_status_t *st, const qd_sym_t *S, slong tv, rs_alg_
     fmpz_mpoly_t a;
     slong j, n = S->n;
     int decided = 0;
+    if (S->cx != NULL) return 0;   /* the real route only: complex cells are decided by the two condition lists */
     rs_alg_init(&sq); rs_alg_init(&g);
     fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(m); fmpq_poly_init(x); fmpq_poly_init(y);
     fmpz_mpoly_init(a, s->zctx);
@@ -896,6 +903,13 @@ static const char *qd_status_at(int *bad, qd_sym_t *S, fmpq **pp, slong tv, cons
     rs_status_t ex = RS_STATUS_UNSTABLE;
     int st, says, decided;
     fmpq_set(pp[tv], t);
+    if (S->cx != NULL) {
+        /* over Q(sqrt d)(i): Schur-Cohn's and Bilharz's conditions and the point verdict */
+        st = rs_an_qd_parts_verdict(S->cx, S->n, pp, S->s);
+        says = qc_hold(&S->q, pp);
+        *bad = st == -2 || qc_hold(S->alt, pp) != says || (st >= -1 && (st == 1) != says) || (st < -2 && says);
+        return st < -2 ? "singular" : st == 1 ? "stable" : st == 0 ? "unstable" : "not stable";
+    }
     st = qd_point_stable(S->p0, S->p1, S->n, pp, S->s);
     says = qc_hold(&S->q, pp);
     rs_alg_init(&e);
@@ -925,7 +939,8 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     rs_bound_t *bd = rs_run_bounds(run);
     rs_alg_t *crit = NULL;
     qd_cell_t *cell;
-    rs_qdpoly_struct *cu = flint_malloc((size_t) (S->q.n + 1) * sizeof(rs_qdpoly_struct));
+    slong nalt = S->alt != NULL ? S->alt->n : 0;
+    rs_qdpoly_struct *cu = flint_malloc((size_t) (S->q.n + nalt + 1) * sizeof(rs_qdpoly_struct));
     rs_qdpoly_t lu;
     fmpz_poly_t nz;
     fmpz_mpoly_t h0, h1;
@@ -951,9 +966,11 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     if (counter != NULL) *counter = NULL;
     /* the critical polynomials: the conditions (in t once, for the signs
      * at the critical values too) and the leading coefficient */
-    for (i = 0; i < S->q.n; i++) {
+    for (i = 0; i < S->q.n + nalt; i++) {
+        const qc_t *q = i < S->q.n ? &S->q : S->alt;
+        slong j = i < S->q.n ? i : i - S->q.n;
         rs_qdpoly_init(cu + i);
-        qd_upoly(cu + i, S->q.c0 + i, S->q.c1 + i, tv, s);
+        qd_upoly(cu + i, q->c0 + j, q->c1 + j, tv, s);
         qd_norm_roots(&crit, &ncrit, cu + i, s->sqrt_d);
     }
     qd_split(h0, h1, lead, s);
@@ -998,13 +1015,15 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
         } else {
             /* the conditions' exact signs at t0 against the route over Q(t0, sqrt d) */
             rs_status_t ex;
-            int ok = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
-            for (k = 0; k < S->q.n; k++) {
+            int ok = 1, okalt = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
+            for (k = 0; k < S->q.n + nalt; k++) {
                 int sg = qd_alg_sign(cu + k, s->sqrt_d, hi);
-                if (sg == 0) zero = 1;
-                if (S->q.ne[k] ? sg == 0 : sg <= 0) ok = 0;
+                int ne = k < S->q.n ? S->q.ne[k] : S->alt->ne[k - S->q.n];
+                if (k < S->q.n && sg == 0) zero = 1;
+                if (ne ? sg == 0 : sg <= 0) *(k < S->q.n ? &ok : &okalt) = 0;
             }
             if (decided && (ex == RS_STATUS_STABLE) != ok) bad = 1;
+            if (S->alt != NULL && (S->alt->never ? 0 : okalt) != ok) bad = 1;   /* Bilharz's signs there */
             /* undecided there: every delta_k != 0 leaves no root on the circle (a
              * circle root of p is one of p* and of every row), so not stable is unstable */
             cell[ncell++].status = decided ? rs_status_name(ex) : ok ? "stable"
@@ -1068,7 +1087,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
     _fmpq_vec_clear(pt, s->nvars);
     flint_free(pp);
     fmpq_clear(t);
-    for (i = 0; i < S->q.n; i++) rs_qdpoly_clear(cu + i);
+    for (i = 0; i < S->q.n + nalt; i++) rs_qdpoly_clear(cu + i);
     flint_free(cu);
     rs_qdpoly_clear(lu);
     fmpz_poly_clear(nz);
@@ -1089,6 +1108,8 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
     int r, never = 0, others = 0;
     /* region N1, N2 goes to an_qd_region2.c before this (an_region.c) */
     if (req->u.region.forall) return rs_an_qd_region_forall(run, req);   /* an_qd_forall.c */
+    if (rs_an_qd_cx_other(run, tv))   /* complex set values of other parameters: over Q(sqrt d)(i) */
+        return rs_an_qd_cx_fiber(NULL, NULL, NULL, run, req, -1, tv, NULL, req->u.region.at, req->u.region.nat);
     rows = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
     keep[0] = run->c->params[tv].name;
     rs_run_assignments(run, &as, &nas, keep, 1, req->u.region.at, req->u.region.nat);
@@ -1145,6 +1166,20 @@ int rs_an_qd_region(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
+int rs_an_qd_cx_cells(json_t *o, rs_run_t *run, const rs_request_t *rq, slong tv, const rs_an_qd_conds_t *q,
+                      const rs_an_qd_conds_t *alt, const fmpz_mpoly_struct *const *part, slong n,
+                      const fmpz_mpoly_t lead, const rs_bound_t *dom, int kind, int *verdict, json_t **counter)
+{
+    qd_sym_t S;
+    memset(&S, 0, sizeof S);
+    S.s = q->s;
+    S.n = n;
+    S.q = *q;   /* read only: not cleared here */
+    S.cx = part;
+    S.alt = alt;
+    return qd_region_cells(o, &S, run, rq, tv, lead, dom, kind, verdict, counter);
+}
+
 int rs_an_qd_claim_part(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
                         slong tv, const rs_bound_t *dom)
 {
@@ -1161,6 +1196,8 @@ int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, con
     slong na = -1, k;
     rs_variant_t *v = NULL;
     int r = RS_OK, never = 0;
+    if (rs_an_qd_cx_other(run, tv))   /* over Q(sqrt d)(i) (an_qd_complex.c) */
+        return rs_an_qd_cx_fiber(verdict, counter, o, run, req, kind, tv, dom, extra, nextra);
     if (nextra > 0) {   /* the case's set values and extra[], tv kept free */
         const char *keep[1];
         rs_assign_t *as = NULL;
