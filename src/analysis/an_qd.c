@@ -57,6 +57,19 @@ static int qd_csets_only(const rs_run_t *run, const rs_an_req_t *req)
     return 1;
 }
 
+/* the parameters with neither a real nor a complex set value */
+static slong qd_nfree(const rs_run_t *run)
+{
+    slong k, j, n = 0;
+    for (k = 0; k < run->c->nparams; k++) {
+        int set = 0;
+        for (j = 0; j < run->c->nsets; j++) set |= strcmp(run->c->sets[j].name, run->c->params[k].name) == 0;
+        for (j = 0; j < run->c->ncsets; j++) set |= strcmp(run->c->csets[j].name, run->c->params[k].name) == 0;
+        n += !set;
+    }
+    return n;
+}
+
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
 {
     const char *n = req->def->name;
@@ -76,16 +89,17 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         return RS_OK;
     /* one real parameter's cells over Q(sqrt d)(i) (an_qd_complex.c's rs_an_qd_cx_fiber) */
     if (strcmp(n, "region") == 0 && !req->u.region.forall && !req->u.region.twod) return RS_OK;
-    if (strcmp(n, "claim") == 0) return RS_OK;
+    if (strcmp(n, "claim") == 0 && qd_nfree(run) <= 1) return RS_OK;
     {
         /* the message names the model's field and tableau */
-        char msg[400];
+        char msg[600];
         if (strcmp(n, "region") == 0 || strcmp(n, "claim") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) does not run at a complex set value "
-                     "(its cells would need Q(sqrt %ld)(i); stability, radius, modes, simulate, jury, hurwitz and routh "
-                     "do, the last three with the conditions over Q(sqrt %ld)(i)[params]; region runs when only its "
-                     "own parameters have complex values)", n, (long) run->m->qd->d, (long) run->m->qd->d,
-                     (long) run->m->qd->d);
+                     "with two free parameters or for all (its cells would need Q(sqrt %ld)(i) in two parameters; "
+                     "stability, radius, modes, simulate, jury, hurwitz and routh do, the last three with the "
+                     "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
+                     "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
+                     (long) run->m->qd->d, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
                      "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "

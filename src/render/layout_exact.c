@@ -1106,10 +1106,10 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
             rs_render_sayf(r, ": **%s**, decided on the exact region over Q(sqrt %s) of one free parameter for every "
                            "value of the other.\n\n", ": \\textbf{%s}, decided on the exact region over "
                            "$\\mathbb{Q}(\\sqrt{%s})$ of one free parameter for every value of the other.\n\n", st, d);
-        else
-            rs_render_sayf(r, ": **%s**, decided on the exact region over Q(sqrt %s) of the one free parameter.\n\n",
-                           ": \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{%s})$ of the one free "
-                           "parameter.\n\n", st, d);
+        else   /* "(i)": at complex set values (an_qd_complex.c) */
+            rs_render_sayf(r, ": **%s**, decided on the exact region over Q(sqrt %s)%s of the one free parameter.\n\n",
+                           ": \\textbf{%s}, decided on the exact region over $\\mathbb{Q}(\\sqrt{%s})%s$ of the one "
+                           "free parameter.\n\n", st, d, strstr(js(o, "over") ? js(o, "over") : "", "(i)") ? "(i)" : "");
         return;
     }
     if (st && strcmp(st, "refuted") == 0) {

@@ -628,6 +628,103 @@ if [ "$v" = "never_stable:True never_stable:True never_stable:True" ] && [ "$w" 
     ok "sdirk2 z = k(-1/2+3i/2), -3 <= k <= -1: never stable over Q(sqrt 2)(i); -4 <= k <= -1 not"
 else fail "sdirk2 complex never: '$v' '$w' $(head -1 "$T/err")"; fi
 
+# region k and claims over Q(sqrt 2)(i) (an_qd_complex.c's rs_an_qd_cx_fiber):
+# cases/complex/sdirk2-complex-region.case, z = k (-1/2 + 3/2 i).  Independently
+# (mpmath, 50 digits, no recstab): R(z) from SDIRK2's Butcher tableau (the two
+# stages solved), each printed open interval's points have |R(k q)| < 1 iff it
+# says stable, the cut k* is where |R(k q)| = 1 on (-5, -1) (bisection; by hand
+# k* = -3.7678..., the case's comment), the claims proved / refuted as |R| says.
+SR=cases/complex/sdirk2-complex-region.case
+"$RS" --json "$SR" >"$T/sr.json" 2>"$T/err"; rc=$?
+res=$(python3 - "$T/sr.json" <<'PY'
+import json, sys
+from mpmath import mp, mpf, mpc, sqrt, findroot
+mp.dps = 50
+res = json.load(open(sys.argv[1]))["cases"][0]["results"]
+bad = []
+g = 1 - sqrt(2) / 2
+def R(z):   # one step of SDIRK2 on y' = z y from y = 1 (A = [g, 0; 1-g, g], b = (1-g, g))
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - g) * k1) / (1 - g * z)
+    return 1 + (1 - g) * k1 + g * k2
+q = mpc(-0.5, 1.5)
+f = lambda k: abs(R(k * q)) - 1
+lo, hi = mpf(-5), mpf(-1)   # f(-5) < 0 (stable), f(-1) > 0
+for _ in range(200):
+    mid = (lo + hi) / 2
+    if f(mid) < 0: lo = mid
+    else: hi = mid
+kstar = lo
+reg = res[0]
+if reg.get("analysis") != "region" or reg.get("over") != "Q(sqrt 2)(i)": bad.append("region head")
+ivs = reg["intervals"]
+def end(e, inf):
+    return inf if e is None else mpf(e["approx"]) if isinstance(e, dict) else mpf(eval(e + ".0") if "/" not in e else mpf(e.split("/")[0]) / mpf(e.split("/")[1]))
+cuts = sorted({float(end(iv["lo"], mpf(-1e9))) for iv in ivs if iv["lo"] is not None})
+if len(cuts) != 2 or abs(cuts[0] - float(kstar)) > 1e-12 or cuts[1] != 0: bad.append("cuts %s" % cuts)
+for iv in ivs:
+    a, b = end(iv["lo"], mpf(-40)), end(iv["hi"], mpf(40))
+    if a == b:   # a cut: |R| = 1 there (the root on the circle), printed not stable
+        if iv["status"] != "not stable" or abs(f(a)) > mpf(10) ** -25: bad.append("cut %s" % iv["status"])
+        continue
+    for j in range(1, 40):
+        k = a + (b - a) * j / 40
+        if (f(k) < 0) != (iv["status"] == "stable"): bad.append("k=%s %s" % (mp.nstr(k, 6), iv["status"]))
+cl = [(r["status"], r.get("over"), r.get("counterexample")) for r in res[1:]]
+want = ["proved", "proved", "refuted", "proved"]
+if [c[0] for c in cl] != want or any(c[1] != "Q(sqrt 2)(i)" for c in cl): bad.append("claims %s" % cl)
+ce = cl[2][2] or {}
+kc = mpf(ce.get("k", "0").split("/")[0]) / (mpf(ce["k"].split("/")[1]) if "/" in ce.get("k", "") else 1)
+if not (-1 < kc < 0) or f(kc) <= 0 or ce.get("status") != "unstable": bad.append("counterexample %s" % ce)
+print("yes" if not bad else "no " + " ".join(bad[:5]))
+PY
+)
+if [ "$rc" = 1 ] && [ "$res" = yes ]; then ok "sdirk2 z = k(-1/2+3i/2): region k and claims over Q(sqrt 2)(i) match |R(kq)| from the tableau (mpmath)"
+else fail "sdirk2 complex region: rc=$rc $res $(head -1 "$T/err")"; fi
+
+# region a at the complex coupling c = 1/2 + i/4 (cases/complex/sdirk2-coupled-conditions.case,
+# a free): the cells against the roots of that case's hand p (its comment; sympy from the
+# method's definition, polynomial in c) at c complex, by mpmath polyroots
+sed -e '/^analyse /d' -e 's/^assume a > 0/assume a > 0\nset c = 1\/2 + 1\/4*i/' cases/complex/sdirk2-coupled-conditions.case >"$T/cr.case"
+printf 'analyse region a\nclaim stable when a > 1/10\nclaim stable when a > 0\n' >>"$T/cr.case"
+"$RS" --json "$T/cr.case" >"$T/cr.json" 2>"$T/err"; rc=$?
+res=$(python3 - "$T/cr.json" <<'PY'
+import json, sys
+from mpmath import mp, mpf, mpc, sqrt, polyroots
+mp.dps = 40
+res = json.load(open(sys.argv[1]))["cases"][0]["results"]
+bad = []
+c = mpc(0.5, 0.25)
+s2 = sqrt(2)
+def rho(a):
+    A = 2*a**4 + 16*a**3 + 40*a**2 + 32*a + 8
+    B = -a**4 - 4*a**3 + 4*s2*a**3 - 32*a**2 - 40*a - 12
+    C = (a**3*c**2 - 2*s2*a**3 - 2*a**3 + 2*s2*a**2*c**2 + 10*a**2*c**2 + 6*a**2
+         + 14*a*c**2 + 12*a + 4*c**2 + 4)
+    return max(abs(x) for x in polyroots([A, B, C], maxsteps=200, extraprec=60))
+reg = res[0]
+if reg.get("analysis") != "region" or reg.get("over") != "Q(sqrt 2)(i)": bad.append("head")
+def end(e, inf):
+    if e is None: return inf
+    if isinstance(e, dict): return mpf(e["approx"])
+    n, _, d = e.partition("/")
+    return mpf(n) / (mpf(d) if d else 1)
+for iv in reg["intervals"]:
+    a, b = end(iv["lo"], mpf(0)), end(iv["hi"], mpf(50))
+    if a == b:
+        if abs(rho(a) - 1) > mpf(10) ** -20: bad.append("cut %s" % mp.nstr(a, 8))
+        continue
+    for j in range(1, 30):
+        x = a + (b - a) * j / 30
+        if (rho(x) < 1) != (iv["status"] == "stable"): bad.append("a=%s %s" % (mp.nstr(x, 6), iv["status"]))
+if len(reg["intervals"]) < 2: bad.append("one cell")
+if [r["status"] for r in res[1:]] != ["proved", "refuted"]: bad.append("claims")
+print("yes" if not bad else "no " + " ".join(bad[:5]))
+PY
+)
+if [ "$rc" = 1 ] && [ "$res" = yes ]; then ok "sdirk2 + backward Euler at c = 1/2 + i/4: region a over Q(sqrt 2)(i) matches the hand p's roots (mpmath)"
+else fail "sdirk2 coupled complex region: rc=$rc $res $(head -1 "$T/err")"; fi
+
 # region a, b over Q(sqrt 2) with a repeated circle root at the rational sample (0, 0)
 # (by hand in the case: stable iff a < 0 and b < 0): that cell undecided with its
 # reason, the run finished (it stopped there with RS_ERR_UNDECIDED before)
@@ -1264,10 +1361,12 @@ if [ "$rc" = 0 ] && tr -d ' \n' <"$T/rc.json" | grep -q '"status":"marginal".*17
    && [ "$(tr -d ' \n' <"$T/rc.json" | grep -o '"status":"stable"' | wc -l)" = 1 ]; then
     ok "sdirk2 region c with c complex-set: runs, |c| < c* stable, +-c* marginal"
 else fail "sdirk2 region c with c complex-set: rc=$rc $(head -1 "$T/err")"; fi
-"$RS" --set 'c=1/2+i/4' --set a=1 --analyse 'region a' "$SC" >/dev/null 2>"$T/err"; rc=$?
+# region a at complex c runs since h-sqrt11 (checked against mpmath above);
+# region a for all at complex c stays refused, naming what runs
+"$RS" --set 'c=1/2+i/4' --analyse 'region a for all' "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "stability, radius, modes, simulate, jury, hurwitz and routh do" "$T/err"; then
-    ok "sdirk2 region a at a complex c refused (exit 2), naming what runs"
-else fail "sdirk2 region a at complex c: rc=$rc $(head -1 "$T/err")"; fi
+    ok "sdirk2 region a for all at a complex c refused (exit 2), naming what runs"
+else fail "sdirk2 region a for all at complex c: rc=$rc $(head -1 "$T/err")"; fi
 # The field in the derivations is the model's (lead review): sdirk3's stage
 # equations carry sqrt 3 (gamma = (3 + sqrt 3)/6), so a stability, hurwitz
 # and claim derivation of it must say Q(sqrt 3) and never Q(sqrt 2); the
