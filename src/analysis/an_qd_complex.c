@@ -15,7 +15,9 @@
  * The other method's conditions are computed too: at admissible rational
  * points both must agree with each other and with the exact point verdict
  * (Schur-Cohn over Q(sqrt d)(i) against the certified Arb roots,
- * rs_qdc_stable_checked); any disagreement is exit 3. */
+ * rs_qdc_stable_checked); any disagreement is exit 3.
+ * `region NAME` and a claim with one free real parameter (rs_an_qd_cx_fiber)
+ * feed both lists to an_qd_conds.c's cells (rs_an_qd_cx_cells). */
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpq_vec.h>

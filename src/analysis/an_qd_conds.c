@@ -1015,7 +1015,7 @@ static int qd_region_cells(json_t *o, qd_sym_t *S, rs_run_t *run, const rs_reque
         } else {
             /* the conditions' exact signs at t0 against the route over Q(t0, sqrt d) */
             rs_status_t ex;
-            int ok = 1, okalt = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
+            int ok = !S->q.never, okalt = 1, zero = 0, decided = qd_exact_status(&ex, S, tv, hi);
             for (k = 0; k < S->q.n + nalt; k++) {
                 int sg = qd_alg_sign(cu + k, s->sqrt_d, hi);
                 int ne = k < S->q.n ? S->q.ne[k] : S->alt->ne[k - S->q.n];
@@ -1190,14 +1190,14 @@ int rs_an_qd_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, con
                    slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
 {
     qd_sym_t S;
-    json_t *rows = json_array(), *conds = json_array(), *parts = json_array(), *dropped = json_array(),
-           *always = json_array();
+    json_t *rows, *conds, *parts, *dropped, *always;
     fmpz_mpoly_t lead;
     slong na = -1, k;
     rs_variant_t *v = NULL;
     int r = RS_OK, never = 0;
     if (rs_an_qd_cx_other(run, tv))   /* over Q(sqrt d)(i) (an_qd_complex.c) */
         return rs_an_qd_cx_fiber(verdict, counter, o, run, req, kind, tv, dom, extra, nextra);
+    rows = json_array(); conds = json_array(); parts = json_array(); dropped = json_array(); always = json_array();
     if (nextra > 0) {   /* the case's set values and extra[], tv kept free */
         const char *keep[1];
         rs_assign_t *as = NULL;
