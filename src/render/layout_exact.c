@@ -478,6 +478,19 @@ static void complex_p(rs_render_t *r, const json_t *o)
     json_object_foreach((json_t *) at, key, val) rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
 }
 
+/* region and claim over Q(sqrt d)(i) (an_qd_complex.c): the field and the complex set values */
+static void qdc_over_at(rs_render_t *r, const json_t *o, int over)
+{
+    const char *key;
+    json_t *val;
+    if (js(o, "over") == NULL || strstr(js(o, "over"), "sqrt") == NULL || strstr(js(o, "over"), "(i)") == NULL
+        || !json_is_object(json_object_get(o, "at")))
+        return;
+    if (over) rs_render_linef(r, "over", "%s", js(o, "over"));   /* a claim's "decided by" names it */
+    json_object_foreach(json_object_get(o, "at"), key, val)
+        rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
+}
+
 /* hurwitz and jury's bilinear route: why some minors are "not expanded"
  * (and which budget limit, if one, left minors or factorisations out) */
 static void not_expanded(rs_render_t *r, const json_t *o)
@@ -934,6 +947,7 @@ void rs_render_region(rs_render_t *r, const json_t *o)
     }
     region_intervals(r, o);
     region_where(r, o);
+    qdc_over_at(r, o, 1);
     if (json_is_array(json_object_get(o, "for_all"))) {   /* region NAME for all [...] */
         const json_t *fa = json_object_get(o, "for_all");
         char names[256] = "";
@@ -1097,6 +1111,7 @@ void rs_render_claim(rs_render_t *r, const json_t *o)
         rs_render_linef(r, "decided by", "the exact region over %s (%lld cells; samples cross-checked: %lld)",
                         js(o, "over"), (long long) json_array_size(json_object_get(o, "region")),
                         ji(o, "cross_checked_samples"));
+        qdc_over_at(r, o, 0);
         rs_render_assigned(r, o);
         rs_render_heading(r, "Claim", "Claim");
         taken_at(r, o);
