@@ -219,6 +219,22 @@ static void condition_lines(rs_render_t *r, const json_t *o, const char *first, 
         rs_render_line(r, i == 0 ? first : next, "%s", json_string_value(json_array_get(c, i)));
 }
 
+/* the conditions on the bilinear image q (hurwitz's Lienard-Chipart ones,
+ * routh's first column over Q(sqrt d)): the branches or "never" when there
+ * are, else the list; KIND names them when none is left */
+static void bilinear_conditions(rs_render_t *r, const json_t *o, const char *kind)
+{
+    const json_t *conds = json_object_get(o, "conditions");
+    if (!branches(r, o)) {
+        if (json_array_size(conds) == 0)
+            rs_render_linef(r, "conditions", "none left: every %s condition holds under the assumptions", kind);
+        condition_list(r, conds, "All |lambda| < 1 if and only if:\n\n",
+                       "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
+                       "(every condition holds under the assumptions)");
+    }
+    condition_lines(r, o, "conditions", "", js(o, "never_from") == NULL);
+}
+
 /* ---- the layouts ------------------------------------------------------------------ */
 
 void rs_render_charpoly(rs_render_t *r, const json_t *o)
@@ -429,16 +445,8 @@ static void dropped_factors(rs_render_t *r, const json_t *dropped)
  * JSON had them; the text report stopped at the note) */
 static void routh_conditions(rs_render_t *r, const json_t *o)
 {
-    const json_t *conds = json_object_get(o, "conditions"), *cc = json_object_get(o, "cross_check");
-    if (!branches(r, o)) {
-        if (json_array_size(conds) == 0)
-            rs_render_line(r, "conditions", "%s", "none left: every first-column condition holds under the "
-                                                  "assumptions");
-        condition_list(r, conds, "All |lambda| < 1 if and only if:\n\n",
-                       "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
-                       "(every condition holds under the assumptions)");
-    }
-    condition_lines(r, o, "conditions", "", js(o, "never_from") == NULL);
+    const json_t *cc = json_object_get(o, "cross_check");
+    bilinear_conditions(r, o, "first-column");
     dropped_factors(r, json_object_get(o, "dropped"));
     rs_render_string_list(r, "always true", json_object_get(o, "always_true"), ", ");
     rs_render_line(r, "verdict", "%s", js(o, "verdict"));
@@ -536,7 +544,6 @@ static void hurwitz_origins(rs_render_t *r, const json_t *o)
 void rs_render_hurwitz(rs_render_t *r, const json_t *o)
 {
     const json_t *minors = json_object_get(o, "minors");
-    const json_t *conds = json_object_get(o, "conditions");
     size_t i;
     if (js(o, "p0") != NULL) {
         /* over Q(sqrt d): the Hurwitz minors of q (an_qd_conds.c) */
@@ -582,15 +589,7 @@ void rs_render_hurwitz(rs_render_t *r, const json_t *o)
         rs_render_say(r, "$\n", "$\n\n");
     }
     rs_render_say(r, "\n", NULL);
-    if (!branches(r, o)) {
-        if (json_array_size(conds) == 0)
-            rs_render_line(r, "conditions", "%s", "none left: every Lienard-Chipart condition holds under the "
-                                                  "assumptions");
-        condition_list(r, conds, "All |lambda| < 1 if and only if:\n\n",
-                       "All roots of $q$ have negative real part (all $|\\lambda| < 1$) if and only if:\n",
-                       "(every condition holds under the assumptions)");
-    }
-    condition_lines(r, o, "conditions", "", js(o, "never_from") == NULL);
+    bilinear_conditions(r, o, "Lienard-Chipart");
     if (js(o, "never") == NULL) hurwitz_origins(r, o);
     rs_render_string_list(r, "and", json_object_get(o, "nonzero"), ", ");
     dropped_factors(r, json_object_get(o, "dropped"));
