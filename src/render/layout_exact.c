@@ -497,6 +497,17 @@ static void qdc_over_at(rs_render_t *r, const json_t *o, int over)
     if (over) rs_render_linef(r, "over", "%s", js(o, "over"));   /* a claim's "decided by" names it */
     json_object_foreach(json_object_get(o, "at"), key, val)
         rs_render_linef(r, "complex", "%s = %s", key, json_string_value(val));
+    if (!over) return;   /* the claim's sentence names the field */
+    rs_render_say(r, "The cells are decided over ", "The cells are decided over ");
+    rs_render_esc(r, js(o, "over"));
+    json_object_foreach(json_object_get(o, "at"), key, val) {
+        rs_render_say(r, ", at $", ", at $");
+        rs_render_poly(r, key);
+        rs_render_say(r, " = ", " = ");
+        rs_render_poly(r, json_string_value(val));
+        rs_render_say(r, "$", "$");
+    }
+    rs_render_say(r, ".\n\n", ".\n\n");
 }
 
 /* hurwitz and jury's bilinear route: why some minors are "not expanded"
