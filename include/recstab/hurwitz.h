@@ -134,6 +134,13 @@ double rs_hurwitz_set_expand_seconds(double seconds);
  * like rs_hurwitz_set_row_seconds. */
 int rs_hurwitz_set_subst(int on);
 
+/* How the substitution route composes its minors back: 1 (default) by
+ * Horner's scheme in a fixed variable order with the powers of the images
+ * cached across all minors (issue 17, h-chain15), 0 by FLINT's
+ * fmpz_mpoly_compose_fmpz_mpoly (cross-checks; the same polynomials).
+ * Returns the previous value.  Documented global like rs_hurwitz_set_subst. */
+int rs_hurwitz_set_compose(int cached);
+
 /* A condition of more than this many terms (default 200 000), or whose full
  * factorisation's estimate does not fit the row share (2 s when none is set) or what is left of
  * the budget, gets only the cheap factoring steps (issue 17; cond->factored

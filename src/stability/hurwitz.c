@@ -477,7 +477,7 @@ _scaled_set(fmpz_mpoly_t D, const fmpz_mpoly_t r, const fmpq_t scale,
 typedef struct {
     fmpz_mpoly_struct *D;          /* the minors in the parameters */
     const fmpz_mpoly_struct *Dg;   /* the minors over the smaller ring */
-    const rs_hurwitz_subst_struct *hs;
+    rs_hurwitz_subst_struct *hs;   /* its power cache grows */
     const fmpz_mpoly_ctx_struct *ctx;
     rs_hurwitz_struct *hn;
     slong done;                    /* D_1..D_done composed */
@@ -633,7 +633,7 @@ _hurwitz_minors_direct(fmpz_mpoly_struct *D, slong *expanded,
  * every GMP coefficient about log2(slices) + 1 times (issue 17, h-chain8). */
 static int
 _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
-            const rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx,
+            rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx,
             rs_error_t err)
 {
     slong e, d = fmpz_mpoly_degree_si(Dg, 0, hs->gctx), zero = 0, i;
@@ -659,7 +659,7 @@ _subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
             fmpz_mpoly_scalar_divexact_fmpz(sl, sl, g, hs->gctx);
         if (fmpz_mpoly_is_zero(sl, hs->gctx))
             continue;
-        if (!fmpz_mpoly_compose_fmpz_mpoly(part, sl, hs->gens, hs->gctx, ctx)) {
+        if (!rs_hurwitz_subst_compose(part, sl, hs, ctx)) {
             r = rs_error_set(err, RS_ERR_LIMIT,
                              "hurwitz: exponents too large composing D_%ld", (long) m);
             break;
@@ -723,7 +723,7 @@ _compose_upto(_compose_state *cs, slong k, rs_error_t err)
 {
     fmpz_mpoly_struct *D = cs->D;
     const fmpz_mpoly_struct *Dg = cs->Dg;
-    const rs_hurwitz_subst_struct *hs = cs->hs;
+    rs_hurwitz_subst_struct *hs = cs->hs;
     const fmpz_mpoly_ctx_struct *ctx = cs->ctx;
     rs_hurwitz_struct *hn = cs->hn;
     slong i;

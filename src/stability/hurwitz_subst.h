@@ -16,6 +16,9 @@ typedef struct {
     fmpz_t L;                       /* common denominator, > 0 */
     slong n, s, var;
     int active;
+    fmpz_mpoly_struct **pw;         /* pw[k][d] = img[k]^d, grown on demand
+                                       (rs_hurwitz_subst_compose) */
+    slong *npw;                     /* powers held per variable */
 } rs_hurwitz_subst_struct;
 typedef rs_hurwitz_subst_struct rs_hurwitz_subst_t[1];
 
@@ -32,7 +35,15 @@ void rs_hurwitz_subst_find(rs_hurwitz_subst_t hs, const fmpz_mpoly_struct *a,
 /* D = (1/L^m) Dg(x_v, G(x)): a minor D_m of the A_i as a minor of the a_i.
  * Returns 0 if the composition failed (exponent overflow). */
 int rs_hurwitz_subst_back(fmpz_mpoly_t D, const fmpz_mpoly_t Dg, slong m,
-                          const rs_hurwitz_subst_t hs,
+                          rs_hurwitz_subst_t hs,
                           const fmpz_mpoly_ctx_t ctx);
+
+/* A = B(x_v, G(x)) for B over gctx: Horner's scheme in a fixed variable
+ * order with the powers of the images cached in hs (shared by every
+ * composition of one route), or FLINT's fmpz_mpoly_compose_fmpz_mpoly when
+ * rs_hurwitz_set_compose(0).  Returns 0 if the composition failed (exponent
+ * overflow). */
+int rs_hurwitz_subst_compose(fmpz_mpoly_t A, const fmpz_mpoly_t B,
+                             rs_hurwitz_subst_t hs, const fmpz_mpoly_ctx_t ctx);
 
 #endif

@@ -1771,6 +1771,76 @@ test_chain_unfactored(void **state)
     }
 }
 
+/* The composition back (rs_hurwitz_set_compose, issue 17, h-chain15): the
+ * cached Horner of hurwitz_subst.c (default) and FLINT's
+ * fmpz_mpoly_compose_fmpz_mpoly give the same minors, term for term, on the
+ * 2- to 5-mass chains (every minor, forced onto the substitution route) and
+ * on test_subst_rational's q (common denominator 2, a constant basis
+ * element).  FLINT's composition is the independent derivation here; the
+ * chains' minors are also checked against the direct route and fmpz_mat_det
+ * in test_chain_routes. */
+static void
+test_subst_compose(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    const char *rv[] = {"t", "x", "y", "z"};
+    slong N, k;
+    int old, oldc;
+    (void) state;
+
+    for (N = 2; N <= 6; N++) {
+        const char *v[8];
+        tctx_struct t;
+        fmpz_mpoly_t q;
+        rs_hurwitz_t hc, hf;
+        rs_error_t err;
+        slong nv, i;
+        char buf[512];
+
+        if (N <= 5) {
+            nv = N + 2;
+            for (i = 0; i + 1 < nv; i++)
+                v[i] = vars[i];
+            v[nv - 1] = "z";
+            tctx_init(&t, v, nv);
+        } else {
+            nv = 4;
+            tctx_init(&t, rv, nv);
+        }
+        fmpz_mpoly_init(q, t.ctx);
+        if (N <= 5)
+            chain_q(q, N, &t);
+        else {
+            const char *E1 = "(x^2 + x*y + y^2 + x + y)", *E2 = "(x*y^3 + 2*x^3 - y + 7)";
+            snprintf(buf, sizeof buf,
+                     "4*z^4 + (2*t*%s + 1)*z^3 + (3*%s + t^2*%s + 5)*z^2 + (t*%s)*z + 5*t*%s",
+                     E1, E1, E2, E2, E2);
+            set_str(q, buf, &t);
+        }
+        rs_hurwitz_init(hc);
+        rs_hurwitz_init(hf);
+        rs_error_init(err);
+        old = rs_hurwitz_set_subst(2);
+        oldc = rs_hurwitz_set_compose(1);
+        assert_int_equal(rs_hurwitz_compute(hc, q, nv - 1, NULL, t.ctx, err), RS_OK);
+        rs_hurwitz_set_compose(0);
+        assert_int_equal(rs_hurwitz_compute(hf, q, nv - 1, NULL, t.ctx, err), RS_OK);
+        rs_hurwitz_set_compose(oldc);
+        rs_hurwitz_set_subst(old);
+        assert_int_equal(hc->route, 1);
+        assert_int_equal(hf->route, 1);
+        assert_int_equal(hc->expanded, hc->n);
+        assert_int_equal(hf->expanded, hf->n);
+        for (k = 0; k < hc->n; k++)
+            assert_true(fmpz_mpoly_equal(hc->minors + k, hf->minors + k, t.ctx));
+        rs_hurwitz_clear(hc, t.ctx);
+        rs_hurwitz_clear(hf, t.ctx);
+        rs_error_clear(err);
+        fmpz_mpoly_clear(q, t.ctx);
+        tctx_clear(&t);
+    }
+}
+
 /* The substitution route on a non-chain q whose coefficients with respect
  * to t are 2 E1, 3 E1 (= 3/2 of the first: common denominator L = 2), the
  * constant 1 (kept as a number) and E2: the route is taken and its minors
@@ -1914,6 +1984,7 @@ main(void)
         cmocka_unit_test(test_chain_expand_budget),
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
+        cmocka_unit_test(test_subst_compose),
         cmocka_unit_test(test_chain_unfactored),
         cmocka_unit_test(test_sign_filter),
     };
