@@ -24,7 +24,7 @@
  *
  * Build: cc -O2 -I/usr/include/flint bench/chain_minor_size.c \
  *            -o build/chain_minor_size -lflint -lgmp -lm
- * Run:   build/chain_minor_size N [from_m] [stage-B limit s] [bound]
+ * Run:   build/chain_minor_size N [from_m] [stage-B limit s] [bound|homog]
  *
  * With the fourth argument "bound" (issue 17, h-chain13) stage B is not run:
  * for each D_m an upper bound on its terms in c, k_1..k_N is counted from its
@@ -294,6 +294,29 @@ main(int argc, char **argv)
     printf("%-5s %8s %10s %6s %10s %8s  %s\n", "D_m", "E-terms", "terms", "bits",
            "compose s", "tdeg", "deg c, k_1..k_N");
 
+    /* "homog" (issue 17, h-chain15): the weight of every term of D_m with
+     * weight 1 for c and 2j for E_j; q = sum_j E_j w^{N-j} has weight 2N
+     * (w = 4 z^2 + 2 c z weight 2, z weight 1), so a_i has weight 2N - i,
+     * H_ij = a_{n-2j+i} weight 2j - i and D_m weight m(m+1)/2: one value
+     * per minor expected */
+    if (argc > 4 && strcmp(argv[4], "homog") == 0) {
+        for (m = from; m < n; m++) {
+            slong ti, wmin = WORD_MAX, wmax = -1;
+            ulong ex[16];
+            for (ti = 0; ti < D[m].length; ti++) {
+                slong wt;
+                fmpz_mpoly_get_term_exp_ui(ex, D + m, ti, ec);
+                wt = (slong) ex[1];
+                for (j = 1; j <= N; j++)
+                    wt += 2 * j * (slong) ex[1 + j];
+                wmin = FLINT_MIN(wmin, wt);
+                wmax = FLINT_MAX(wmax, wt);
+            }
+            printf("D_%ld: %ld terms, weight (c 1, E_j 2j) from %ld to %ld\n", (long) m,
+                   (long) D[m].length, (long) wmin, (long) wmax);
+        }
+        return 0;
+    }
     if (argc > 4 && strcmp(argv[4], "bound") == 0) {
         for (m = from; m < n; m++)
             print_bound(D + m, N, ec);
