@@ -195,7 +195,7 @@ static int routh_never(rs_run_t *run, const rs_request_t *q, const rs_variant_t 
     routh_cross_t w = {NULL, run, NULL, 0};
     rs_hurwitz_or_t hb;
     fmpz_mpoly_t qh;
-    int r, hv = -2;
+    int r, hv = -1;
     if (rm->zero_row >= 0) {
         fmpz_mpoly_t A;
         const char **names = flint_malloc(s->nvars * sizeof(char *));
@@ -242,10 +242,11 @@ static int routh_never(rs_run_t *run, const rs_request_t *q, const rs_variant_t 
     r = rs_run_hurwitz_or(hb, run, v, qh);
     if (r == RS_OK) {
         json_t *ho = json_object();
+        /* rs_json_hurwitz_or: 1 always, -1 never, 0 conditions */
         hv = rs_json_hurwitz_or(ho, hb, s);
-        if (hv >= 0 && rs_run_hurwitz_or_never(run, ho, hb, s)) hv = 0;
+        if (hv >= 0 && rs_run_hurwitz_or_never(run, ho, hb, s)) hv = -1;
         json_decref(ho);
-        json_object_set_new(cr, "hurwitz_verdict", json_string(hv == 0 ? "never stable" : hv == 1
+        json_object_set_new(cr, "hurwitz_verdict", json_string(hv < 0 ? "never stable" : hv == 1
                             ? "always stable" : "stable iff the conditions hold"));
         w.hb = hb;
     } else {

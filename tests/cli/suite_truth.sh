@@ -289,6 +289,19 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/simulate-dead-beat.case
     check "dead-beat simulate: the exact verdict decides, no check object" '["exact",null]' \
         "$(jfield $C 1 '| [.verdict.decided_by, .check]')"
+    # symbolic Routh arrays singular for every value (h-truth8, by hand in the cases): routh
+    # decides never (was: no verdict; a zero pivot was exit 1), hurwitz on the same q agrees
+    C=cases/truth/routh-zero-row-symbolic.case
+    check "routh zero row: never, A(z) divides q, hurwitz and the samples agree (was no verdict)" \
+        '["never stable","16*a + 16*z^2",true,true,"never stable",true]' \
+        "$(jfield $C 0 '| [.verdict, .auxiliary, .auxiliary_divides_q, .sample_check.agree, .cross_route.hurwitz_verdict, .cross_route.agree]')"
+    C=cases/truth/routh-zero-pivot-symbolic.case
+    check "routh zero pivot D_2 = 0: never, rows up to the z^2 row (was exit 1)" \
+        '["never stable",[4,3,2],true,["never stable","never stable"]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[0].powers, .[0].cross_route.agree, [.[1].verdict, .[2].verdict]]')"
+    C=cases/truth/routh-last-row-symbolic.case
+    check "routh last row 0 (q(0) = 0): never, lambda = 1 named (was no verdict)" \
+        '["never stable",true]' "$(jfield $C 0 '| [.verdict, (.never | test("lambda = 1"))]')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
@@ -338,6 +351,12 @@ if command -v python3 >/dev/null 2>&1; then
     for spec in "lmmfam 3 4" "builders 3 3" "routh 3 3" "jurysp 3 3" "symsign 3 2" "degen 3 1"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth7.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # eighth batch (tests/truth/truth8.py, h-truth8): symbolic Routh arrays singular for every
+    # value (zero row, zero pivot, last row 0) and a control, against mpmath roots
+    for spec in "rsym 8 8"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth8.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"
