@@ -19,6 +19,14 @@ derived here independently of recstab (SymPy expansion; mpmath roots at 50 digit
            control    q = (z + c)(z^2 + a z + d), c, d > 0: stable at a = 1 (Routh by hand:
                         a d > 0 ... all coefficients positive, a + c > 0, (a + c)(a c + d) > c d):
                         routh must not say never.
+  astab    `analyse astability` of random rational Butcher tableaux (1-3 stages: explicit,
+           diagonally implicit, full; b random or summing to 1) on y' = q y: R(z) =
+           det(I - zA + z 1 b^T)/det(I - zA) by SymPy (cases with a common factor of N and D
+           skipped); the real and imaginary intervals are the cells around 0 of the exact
+           real roots of N^2 - D^2, D (real axis) and |D(iy)|^2 - |N(iy)|^2, |D(iy)|^2
+           (imaginary axis), each cell decided at a rational midpoint; a_stable iff
+           |D(iy)|^2 - |N(iy)|^2 >= 0 for every y and every pole in Re z > 0 (Hairer-Wanner
+           II, IV.3); l_stable iff also deg N < deg D.  Ends compared to 1e-9, closedness too.
 
 Usage: truth8.py PART SEED COUNT   prints "ok ..." / "FAIL ..." / "weak ..." lines.
 """
@@ -161,10 +169,178 @@ def part_rsym(rng, count):
             print("ok %s: %s" % (tag, res["routh"].get("verdict", "no verdict")))
 
 
+# ---------------------------------------------------------------- part astab
+y = sp.symbols("y", real=True)
+
+
+def rand_tableau(rng):
+    n = rng.choice([1, 2, 2, 3, 3])
+    kind = rng.choice(["explicit", "dirk", "full"])
+    A = [[F(0)] * n for _ in range(n)]
+    for i in range(n):
+        for j in range(n):
+            if (kind == "explicit" and j < i) or (kind == "dirk" and j <= i) or kind == "full":
+                A[i][j] = rf(rng, -1, 1) if rng.random() < 0.8 else F(0)
+    bb = [rf(rng, -1, 1) for _ in range(n)]
+    if rng.random() < 0.7:
+        bb[-1] = 1 - sum(bb[:-1])
+    return A, bb
+
+
+def stab_fn(A, bb):
+    n = len(A)
+    M = sp.Matrix(n, n, lambda i, j: R(A[i][j]))
+    e = sp.ones(n, 1)
+    bt = sp.Matrix(1, n, [R(v) for v in bb])
+    D = sp.expand((sp.eye(n) - z * M).det())
+    N = sp.expand((sp.eye(n) - z * M + z * e * bt).det())
+    return sp.Poly(N, z), sp.Poly(D, z)
+
+
+def crit_points(polys, var):
+    pts = {}
+    for P in polys:
+        P = sp.Poly(P, var)
+        if P.degree() <= 0:
+            continue
+        for r in sp.real_roots(P):
+            v = sp.N(r, 40)
+            if all(abs(v - w) > 1e-25 for w in pts):
+                pts[v] = r
+    return sorted(pts.items(), key=lambda kv: kv[0])
+
+
+def interval(bounded_at, is_pole, crit):
+    """the bounded cells around 0 (0 is a critical point): (lo, lo_closed, hi, hi_closed),
+    ends as floats or +-inf"""
+    vals = [v for v, _ in crit]
+    i0 = min(range(len(vals)), key=lambda i: abs(vals[i]))
+    assert abs(vals[i0]) < 1e-30
+    out = []
+    for step in (1, -1):
+        j = i0
+        while True:
+            nxt = j + step
+            if 0 <= nxt < len(vals):
+                mid = sp.Rational(str(sp.N((vals[j] + vals[nxt]) / 2, 30)))
+            else:
+                mid = sp.Rational(str(sp.N(vals[j] + step, 30)))
+            if not bounded_at(mid):
+                out.append((float(vals[j]), not is_pole(vals[j])))
+                break
+            if not 0 <= nxt < len(vals):
+                out.append((step * float("inf"), False))
+                break
+            if is_pole(vals[nxt]):
+                out.append((float(vals[nxt]), False))
+                break
+            j = nxt
+    (hi, hic), (lo, loc) = out
+    return lo, loc, hi, hic
+
+
+def rs_end(e):
+    if e == "-inf":
+        return float("-inf")
+    if e == "inf":
+        return float("inf")
+    if isinstance(e, dict):
+        return float(e["approx"])
+    return float(sp.Rational(str(e)))
+
+
+def same_end(x, yv):
+    if x in (float("inf"), float("-inf")) or yv in (float("inf"), float("-inf")):
+        return x == yv
+    return abs(x - yv) <= 1e-9 * max(1.0, abs(x))
+
+
+def part_astab(rng, count):
+    k = 0
+    while k < count:
+        A, bb = rand_tableau(rng)
+        N, D = stab_fn(A, bb)
+        if sp.gcd(N, D).degree() > 0 or N.is_zero:
+            continue
+        tag = "astab-%d" % k
+        k += 1
+        n = len(A)
+        tab = "; ".join(" ".join(str(A[i][j]) for j in range(n)) for i in range(n)) + " | " + \
+            " ".join(str(v) for v in bb)
+        text = ("title truth8 astability\nparam q\nsubsystem S state y\n  y' = q*y\n"
+                "integrate S rk [%s] 1\nanalyse astability q\n" % tab)
+        # real axis
+        NpD = (N ** 2 - D ** 2)
+
+        def rb(t):
+            dv, nv = D.eval(t), N.eval(t)
+            return dv != 0 and abs(nv) <= abs(dv)
+
+        def rpole(v):
+            return abs(sp.N(D.as_expr().subs(z, v), 40)) < 1e-25
+        real = interval(rb, rpole, crit_points([NpD.as_expr(), D.as_expr()], z))
+        # imaginary axis: E(y) = |D(iy)|^2 - |N(iy)|^2
+        Di = sp.expand(D.as_expr().subs(z, sp.I * y))
+        Ni = sp.expand(N.as_expr().subs(z, sp.I * y))
+        D2 = sp.expand(sp.re(Di) ** 2 + sp.im(Di) ** 2)
+        N2 = sp.expand(sp.re(Ni) ** 2 + sp.im(Ni) ** 2)
+        E = sp.expand(D2 - N2)
+
+        def ib(t):
+            d2 = D2.subs(y, t)
+            return d2 != 0 and E.subs(y, t) >= 0
+
+        def ipole(v):
+            return abs(sp.N(D2.subs(y, v), 40)) < 1e-25
+        imag = interval(ib, ipole, crit_points([E, D2], y))
+        # A-stability: E >= 0 everywhere and the poles in Re z > 0
+        ecrit = crit_points([E], y) if sp.Poly(E, y).degree() > 0 else []
+        ev = [v for v, _ in ecrit]
+        probes = [sp.Rational(str(sp.N((ev[i] + ev[i + 1]) / 2, 30))) for i in range(len(ev) - 1)]
+        probes += [sp.Rational(str(sp.N(ev[0] - 1, 30))), sp.Rational(str(sp.N(ev[-1] + 1, 30)))] if ev else [0]
+        e_ok = all(E.subs(y, t) >= 0 for t in probes)
+        poles = sp.Poly(D, z).nroots(n=30) if D.degree() > 0 else []
+        p_ok = all(sp.re(p) > 1e-20 for p in poles)
+        a_st = e_ok and p_ok
+        l_st = a_st and N.degree() < D.degree()
+        rc, doc, err = T.run(text, ["--time-limit", "60"])
+        if rc != 0 or doc is None:
+            if rc == 2 and "time" in err:
+                print("weak %s: %s" % (tag, err.strip()[:160]))
+                continue
+            fail("%s: exit %d (%s)" % (tag, rc, err.strip()[:200]), text, tag)
+            continue
+        res = T.find(doc, "astability")
+        bad = []
+        for name, want in (("real_interval", real), ("imag_interval", imag)):
+            got = res.get(name)
+            det = res.get(name + "_detail") or {}
+            if got is None:
+                bad.append("%s null, truth %s" % (name, want))
+                continue
+            lo, hi = rs_end(got[0]), rs_end(got[1])
+            if not (same_end(lo, want[0]) and same_end(hi, want[2])):
+                bad.append("%s [%s, %s], truth [%s, %s]" % (name, lo, hi, want[0], want[2]))
+            elif det.get("ends_decided"):
+                if abs(want[0]) != float("inf") and det.get("lo_closed") != want[1]:
+                    bad.append("%s lo_closed %s, truth %s" % (name, det.get("lo_closed"), want[1]))
+                if abs(want[2]) != float("inf") and det.get("hi_closed") != want[3]:
+                    bad.append("%s hi_closed %s, truth %s" % (name, det.get("hi_closed"), want[3]))
+        if res.get("a_stable") != a_st:
+            bad.append("a_stable %s, truth %s" % (res.get("a_stable"), a_st))
+        if res.get("l_stable") is not None and res.get("l_stable") != l_st:
+            bad.append("l_stable %s, truth %s" % (res.get("l_stable"), l_st))
+        if bad:
+            fail("%s: R = (%s)/(%s): %s" % (tag, N.as_expr(), D.as_expr(), "; ".join(bad)), text, tag)
+        else:
+            print("ok %s: a_stable %s real [%.6g, %.6g] imag [%.6g, %.6g]" % (tag, a_st, real[0], real[2],
+                                                                             imag[0], imag[2]))
+
+
 def main():
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     rng = random.Random(seed)
-    parts = {"rsym": part_rsym}
+    parts = {"rsym": part_rsym, "astab": part_astab}
     if part not in parts:
         sys.exit("unknown part " + part)
     parts[part](rng, count)
