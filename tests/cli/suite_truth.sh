@@ -302,6 +302,15 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/routh-last-row-symbolic.case
     check "routh last row 0 (q(0) = 0): never, lambda = 1 named (was no verdict)" \
         '["never stable",true]' "$(jfield $C 0 '| [.verdict, (.never | test("lambda = 1"))]')"
+    # a root 10^-199998 off the circle (h-truth8, by hand in the case): stability and jury
+    # decide (were exit 2 with no file:line:col), and inside with z = i (1 - 10^-99999)
+    C=cases/truth/complex-near-circle-root.case
+    check "root 10^-199998 outside the circle: stability, jury, modes' exact check (were exit 2)" \
+        '[["unstable",1],["unstable",1],["unstable",1]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([(.status // .exact_check.status), (.outside // .exact_check.outside)])')"
+    sed 's/^set z = .*/set z = i*(1 - 10^-99999)/' $C >"$T/near.case"
+    check "root 10^-199998 inside the circle: stability, jury" '[["stable",0],["stable",0]]' \
+        "$("$RS" --json "$T/near.case" 2>/dev/null | jq -c '.cases[0].results[0:2] | map([.status, .outside])')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
