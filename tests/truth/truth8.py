@@ -27,6 +27,16 @@ derived here independently of recstab (SymPy expansion; mpmath roots at 50 digit
            (imaginary axis), each cell decided at a rational midpoint; a_stable iff
            |D(iy)|^2 - |N(iy)|^2 >= 0 for every y and every pole in Re z > 0 (Hairer-Wanner
            II, IV.3); l_stable iff also deg N < deg D.  Ends compared to 1e-9, closedness too.
+  qdcouple S: y' = -a y + c x integrated by sdirk2 / sdirk3 / sdirk3-low (tableaux over
+           Q(sqrt 2), Q(sqrt 3): Alexander's / Crouzeix's, the README's), T: x' = -c y - d x by
+           euler-backward / euler-forward / trapezoidal, coupled Jacobi or Gauss-Seidel
+           (S T or T S), step 1, random rational a, c, d (a sometimes complex): the step
+           matrix of (y, x, x_dot) from the tableaux, S with the partner frozen over the step
+           (y1 = R(l) y0 + Q(l) k u, R = 1 + l b^T (I - lA)^-1 1, Q = l b^T (I - lA)^-1 A 1
+           + b^T 1), T keeping (x, x_dot) as the README's builders do (x_dot[n+1] = -c ys -
+           d x[n+1] with the partner at t (Jacobi, first of Gauss-Seidel) or t + h, x[n+1] =
+           x[n] + al x_dot[n] + be x_dot[n+1]), its eigenvalues by mpmath at 50 digits: stability and jury's status,
+           radius's certified interval must contain the spectral radius.
 
 Usage: truth8.py PART SEED COUNT   prints "ok ..." / "FAIL ..." / "weak ..." lines.
 """
@@ -260,7 +270,8 @@ def part_astab(rng, count):
     while k < count:
         A, bb = rand_tableau(rng)
         N, D = stab_fn(A, bb)
-        if sp.gcd(N, D).degree() > 0 or N.is_zero:
+        # a common factor (the scheme is singular at its roots), R = 0 or |R| = 1 identically
+        if sp.gcd(N, D).degree() > 0 or N.is_zero or (N ** 2 - D ** 2).is_zero:
             continue
         tag = "astab-%d" % k
         k += 1
@@ -337,10 +348,111 @@ def part_astab(rng, count):
                                                                              imag[0], imag[2]))
 
 
+# ---------------------------------------------------------------- part qdcouple
+S2, S3 = sp.sqrt(2), sp.sqrt(3)
+G2 = 1 - S2 / 2
+G3 = sp.Rational(1, 2) + S3 / 6
+G3L = sp.Rational(1, 2) - S3 / 6
+TABLEAUX = {
+    "sdirk2": ([[G2, 0], [1 - G2, G2]], [1 - G2, G2]),
+    "sdirk3": ([[G3, 0], [-S3 / 3, G3]], [sp.Rational(1, 2), sp.Rational(1, 2)]),
+    "sdirk3-low": ([[G3L, 0], [S3 / 3, G3L]], [sp.Rational(1, 2), sp.Rational(1, 2)]),
+    "euler-backward": ([[1]], [1]),
+    "euler-forward": ([[0]], [1]),
+    "trapezoidal": ([[0, 0], [sp.Rational(1, 2), sp.Rational(1, 2)]], [sp.Rational(1, 2), sp.Rational(1, 2)]),
+}
+
+
+def rq(name, lv):
+    """R(l), Q(l) of a tableau at l (h = 1), exact"""
+    A, bb = TABLEAUX[name]
+    n = len(A)
+    M = sp.Matrix(A)
+    bt = sp.Matrix(1, n, bb)
+    one = sp.ones(n, 1)
+    Inv = (sp.eye(n) - lv * M).inv()
+    Rv = 1 + lv * (bt * Inv * one)[0]
+    Qv = lv * (bt * Inv * M * one)[0] + (bt * one)[0]
+    return sp.nsimplify(sp.simplify(Rv)), sp.simplify(Qv)
+
+
+def cplx_text(v):
+    re_, im_ = sp.re(v), sp.im(v)
+    if im_ == 0:
+        return str(re_)
+    return "%s + %s*i" % (re_, im_)
+
+
+def part_qdcouple(rng, count):
+    for k in range(count):
+        ms = rng.choice(["sdirk2", "sdirk3", "sdirk3-low"])
+        mt = rng.choice(["euler-backward", "euler-forward", "trapezoidal"])
+        cp = rng.choice(["jacobi", "gauss-seidel S T", "gauss-seidel T S"])
+        av = R(rf(rng, -1, 4))
+        if rng.random() < 0.3:
+            av += R(rf(rng, -2, 2)) * sp.I
+        cv, dv = R(rf(rng, -2, 2)), R(rf(rng, -1, 3))
+        tag = "qdcouple-%d" % k
+        Rs, Qs = rq(ms, -av)
+        # T keeps (x, x_dot) as the builders do (Olivier et al. 2019): x_dot[n+1] = -c ys -
+        # d x[n+1] at t + h with the partner's ys, x[n+1] = x[n] + al x_dot[n] + be x_dot[n+1]
+        al, be = {"euler-backward": (0, 1), "euler-forward": (1, 0),
+                  "trapezoidal": (sp.Rational(1, 2), sp.Rational(1, 2))}[mt]
+        y0, x0, xd0 = sp.symbols("y0 x0 xd0")
+
+        def t_step(ys):
+            x1 = (x0 + al * xd0 - be * cv * ys) / (1 + be * dv)
+            return x1, -cv * ys - dv * x1
+        if cp == "jacobi":
+            y1 = Rs * y0 + Qs * cv * x0
+            x1, xd1 = t_step(y0)
+        elif cp == "gauss-seidel S T":
+            y1 = Rs * y0 + Qs * cv * x0
+            x1, xd1 = t_step(y1)
+        else:
+            x1, xd1 = t_step(y0)
+            y1 = Rs * y0 + Qs * cv * x1
+        M = sp.Matrix([[sp.diff(e, v) for v in (y0, x0, xd0)] for e in (y1, x1, xd1)])
+        Mn = mpmath.matrix([[mpmath.mpc(str(sp.re(sp.N(M[i, j], 60))), str(sp.im(sp.N(M[i, j], 60))))
+                             for j in range(3)] for i in range(3)])
+        ev = mpmath.eig(Mn, left=False, right=False)
+        rho = max(abs(e) for e in ev)
+        if abs(rho - 1) < mpmath.mpf(10) ** -30:
+            continue
+        want = "stable" if rho < 1 else "unstable"
+        text = ("title truth8 coupled %s / %s (%s)\nparam a c d\nsubsystem S state y\n  y' = -a*y + c*x\n"
+                "subsystem T state x\n  x' = -c*y - d*x\nintegrate S rk %s 1\nintegrate T %s 1\ncouple %s\n"
+                "set a = %s, c = %s, d = %s\nanalyse stability\nanalyse jury\nanalyse radius\n"
+                % (ms, mt, cp, ms, mt, cp, cplx_text(av), cv, dv))
+        rc, doc, err = T.run(text, ["--time-limit", "60"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s)" % (tag, rc, err.strip()[:200]), text, tag)
+            continue
+        bad = []
+        st = T.find(doc, "stability")
+        ju = T.find(doc, "jury")
+        ra = T.find(doc, "radius")
+        for name, r in (("stability", st), ("jury", ju)):
+            got = (r.get("status") or {"stable under the assumptions": "stable", "never stable": "unstable"}.get(
+                r.get("verdict"), r.get("verdict"))) if r else None
+            if got != want:
+                bad.append("%s %s, truth %s (rho %s)" % (name, got, want, mpmath.nstr(rho, 20)))
+        if ra is not None and ra.get("lower") is not None:
+            lo, hi = mpmath.mpf(ra["lower"]), mpmath.mpf(ra["upper"])
+            if not (lo - mpmath.mpf(10) ** -40 <= rho <= hi + mpmath.mpf(10) ** -40):
+                bad.append("radius [%s, %s] misses rho %s" % (ra["lower"], ra["upper"], mpmath.nstr(rho, 30)))
+        elif ra is None:
+            bad.append("no radius result")
+        if bad:
+            fail("%s: %s" % (tag, "; ".join(bad)), text, tag)
+        else:
+            print("ok %s: %s/%s %s a=%s: %s rho %s" % (tag, ms, mt, cp, av, want, mpmath.nstr(rho, 12)))
+
+
 def main():
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     rng = random.Random(seed)
-    parts = {"rsym": part_rsym, "astab": part_astab}
+    parts = {"rsym": part_rsym, "astab": part_astab, "qdcouple": part_qdcouple}
     if part not in parts:
         sys.exit("unknown part " + part)
     parts[part](rng, count)
