@@ -38,6 +38,13 @@ derived here independently of recstab (SymPy expansion; mpmath roots at 50 digit
            x[n] + al x_dot[n] + be x_dot[n+1]), its eigenvalues by mpmath at 50 digits: stability and jury's status,
            radius's certified interval must contain the spectral radius.
 
+  lmmz     y' = a y by adams-bashforth K, adams-moulton K, bdf K (K = 1..6) or leapfrog, step 1,
+           at random real and complex a (not 0): rho(lambda) - a sigma(lambda) with the
+           coefficients derived here from the definitions (SymPy: integrals over [0, 1] of the
+           Lagrange basis on the nodes 0, -1, .. (AB), 1, 0, -1, .. (AM); derivative at 1 of
+           the basis on 1, 0, -1, .. (BDF); leapfrog y[n+1] - y[n-1] = 2 f[n]), its roots by
+           mpmath: stability's status and radius's certified interval.
+
 Usage: truth8.py PART SEED COUNT   prints "ok ..." / "FAIL ..." / "weak ..." lines.
 """
 import os
@@ -310,7 +317,7 @@ def part_astab(rng, count):
         probes = [sp.Rational(str(sp.N((ev[i] + ev[i + 1]) / 2, 30))) for i in range(len(ev) - 1)]
         probes += [sp.Rational(str(sp.N(ev[0] - 1, 30))), sp.Rational(str(sp.N(ev[-1] + 1, 30)))] if ev else [0]
         e_ok = all(E.subs(y, t) >= 0 for t in probes)
-        poles = sp.Poly(D, z).nroots(n=30) if D.degree() > 0 else []
+        poles = sp.Poly(D, z).nroots(n=30, maxsteps=2000) if D.degree() > 0 else []
         p_ok = all(sp.re(p) > 1e-20 for p in poles)
         a_st = e_ok and p_ok
         l_st = a_st and N.degree() < D.degree()
@@ -449,10 +456,84 @@ def part_qdcouple(rng, count):
             print("ok %s: %s/%s %s a=%s: %s rho %s" % (tag, ms, mt, cp, av, want, mpmath.nstr(rho, 12)))
 
 
+# ---------------------------------------------------------------- part lmmz
+sv = sp.symbols("s")
+
+
+def lagrange(nodes, j):
+    e = sp.Integer(1)
+    for m, t in enumerate(nodes):
+        if m != j:
+            e *= (sv - t) / (nodes[j] - t)
+    return e
+
+
+def lmm_poly(name, K, av):
+    """coefficients (highest power first) of rho(lambda) - a sigma(lambda)"""
+    if name == "leapfrog":
+        return [1, -2 * av, -1]
+    if name in ("adams-bashforth", "adams-moulton"):
+        nodes = ([sp.Integer(1)] if name == "adams-moulton" else []) + [sp.Integer(-j) for j in range(K)]
+        beta = [sp.integrate(lagrange(nodes, j), (sv, 0, 1)) for j in range(len(nodes))]
+        # nodes at t[n+1] (AM), t[n], t[n-1], ...: powers lambda^K .. lambda^0
+        deg = K
+        c = [sp.Integer(0)] * (deg + 1)            # c[m]: coefficient of lambda^(deg - m)
+        c[0] += 1
+        c[1] -= 1
+        off = 0 if name == "adams-moulton" else 1
+        for j, bj in enumerate(beta):
+            c[j + off] -= av * bj
+        return c
+    nodes = [sp.Integer(1 - j) for j in range(K + 1)]
+    alpha = [sp.diff(lagrange(nodes, j), sv).subs(sv, 1) for j in range(K + 1)]
+    c = list(alpha)
+    c[0] -= av
+    return c
+
+
+def part_lmmz(rng, count):
+    for k in range(count):
+        name = rng.choice(["adams-bashforth", "adams-moulton", "bdf", "leapfrog"])
+        K = rng.randint(1, 6)
+        # mostly small a (near the methods' stability boundaries), some anywhere
+        av = R(nzf(rng, -3, 1)) if rng.random() < 0.3 else -abs(R(nzf(rng, -1, 1))) / rng.choice([1, 2, 4])
+        if rng.random() < 0.4:
+            av += R(nzf(rng, -1, 1)) * sp.I / rng.choice([1, 2, 4])
+        cs = lmm_poly(name, K, av)
+        ccs = [mpmath.mpc(str(sp.re(sp.N(c, 60))), str(sp.im(sp.N(c, 60)))) for c in cs]
+        roots = mpmath.polyroots(ccs, maxsteps=500, extraprec=300)
+        rho = max(abs(r) for r in roots)
+        if abs(rho - 1) < mpmath.mpf(10) ** -25:
+            continue
+        want = "stable" if rho < 1 else "unstable"
+        meth = name if name == "leapfrog" else "%s %d" % (name, K)
+        tag = "lmmz-%d" % k
+        text = ("title truth8 %s\nparam a\nsubsystem S state y\n  y' = a*y\nintegrate S %s 1\n"
+                "set a = %s\nanalyse stability\nanalyse radius\n" % (meth, meth, cplx_text(av)))
+        rc, doc, err = T.run(text, ["--time-limit", "60"])
+        if rc != 0 or doc is None:
+            fail("%s: exit %d (%s)" % (tag, rc, err.strip()[:200]), text, tag)
+            continue
+        bad = []
+        st, ra = T.find(doc, "stability"), T.find(doc, "radius")
+        if st is None or st.get("status") != want:
+            bad.append("stability %s, truth %s (rho %s)" % (st and st.get("status"), want, mpmath.nstr(rho, 20)))
+        if ra is None or ra.get("lower") is None:
+            bad.append("no radius interval")
+        else:
+            lo, hi = mpmath.mpf(ra["lower"]), mpmath.mpf(ra["upper"])
+            if not (lo - mpmath.mpf(10) ** -40 <= rho <= hi + mpmath.mpf(10) ** -40):
+                bad.append("radius [%s, %s] misses rho %s" % (ra["lower"], ra["upper"], mpmath.nstr(rho, 30)))
+        if bad:
+            fail("%s: %s" % (tag, "; ".join(bad)), text, tag)
+        else:
+            print("ok %s: %s a=%s: %s rho %s" % (tag, meth, av, want, mpmath.nstr(rho, 12)))
+
+
 def main():
     part, seed, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     rng = random.Random(seed)
-    parts = {"rsym": part_rsym, "astab": part_astab, "qdcouple": part_qdcouple}
+    parts = {"rsym": part_rsym, "astab": part_astab, "qdcouple": part_qdcouple, "lmmz": part_lmmz}
     if part not in parts:
         sys.exit("unknown part " + part)
     parts[part](rng, count)
