@@ -231,8 +231,9 @@ def interval(bounded_at, is_pole, crit):
     """the bounded cells around 0 (0 is a critical point): (lo, lo_closed, hi, hi_closed),
     ends as floats or +-inf"""
     vals = [v for v, _ in crit]
+    if not any(abs(v) < 1e-30 for v in vals):     # |R| = 1 identically on the axis: 0 added
+        vals = sorted(vals + [sp.Float(0, 40)])
     i0 = min(range(len(vals)), key=lambda i: abs(vals[i]))
-    assert abs(vals[i0]) < 1e-30
     out = []
     for step in (1, -1):
         j = i0
@@ -420,9 +421,13 @@ def part_qdcouple(rng, count):
             x1, xd1 = t_step(y0)
             y1 = Rs * y0 + Qs * cv * x1
         M = sp.Matrix([[sp.diff(e, v) for v in (y0, x0, xd0)] for e in (y1, x1, xd1)])
-        Mn = mpmath.matrix([[mpmath.mpc(str(sp.re(sp.N(M[i, j], 60))), str(sp.im(sp.N(M[i, j], 60))))
-                             for j in range(3)] for i in range(3)])
-        ev = mpmath.eig(Mn, left=False, right=False)
+        # det(lambda I - M) exactly (sqrt(d) kept), its roots by mpmath (eig's QR can stall on
+        # the zero eigenvalues of x_dot)
+        cpoly = sp.Poly(sp.expand((lam * sp.eye(3) - M).det()), lam).all_coeffs()
+        ccs = [mpmath.mpc(str(sp.re(sp.N(c, 60))), str(sp.im(sp.N(c, 60)))) for c in cpoly]
+        while len(ccs) > 1 and ccs[-1] == 0:
+            ccs.pop()
+        ev = mpmath.polyroots(ccs, maxsteps=500, extraprec=300) if len(ccs) > 1 else [mpmath.mpf(0)]
         rho = max(abs(e) for e in ev)
         if abs(rho - 1) < mpmath.mpf(10) ** -30:
             continue
