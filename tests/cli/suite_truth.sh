@@ -362,8 +362,10 @@ if command -v python3 >/dev/null 2>&1; then
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth7.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
     # eighth batch (tests/truth/truth8.py, h-truth8): symbolic Routh arrays singular for every
-    # value (zero row, zero pivot, last row 0) and a control, against mpmath roots
-    for spec in "rsym 8 8"; do
+    # value (zero row, zero pivot, last row 0) and a control, against mpmath roots; astability
+    # of random rational tableaux; sdirk2/3 couplings over Q(sqrt d) at real and complex values
+    # against the step matrix's eigenvalues; multistep builders at complex a
+    for spec in "rsym 8 8" "astab 8 4" "qdcouple 8 2" "lmmz 8 4"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth8.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
