@@ -405,6 +405,9 @@ int rs_an_req_run(rs_run_t *run, const rs_an_req_t *req)
 {
     size_t before = json_array_size(run->results), k;
     int r = req->def->run(run, req);
+    /* a numeric limit raised below the analyses (root isolation) names no
+     * place: the request's, as radius names it */
+    if (r == RS_ERR_UNDECIDED && req->q != NULL) r = rs_req_relocate(run, req->q, r, req->def->name);
     /* numeric analyses that set their own "substituted": name the
      * parameters p does not depend on (placeholders) */
     if (r == RS_OK && (req->def->flags & RS_AN_NOT_IN_P)) {

@@ -367,6 +367,25 @@ static void epsilon_signs(rs_render_t *r, const json_t *es)
 
 static void routh_conditions(rs_render_t *r, const json_t *o);
 
+/* routh over Q deciding "never" from its symbolic array (an_routh.c: a
+ * first-column entry or a row 0 for every value, or q's degree dropped),
+ * and hurwitz's route on the same q only when it disagrees (exit 3) */
+static void routh_never(rs_render_t *r, const json_t *o)
+{
+    const json_t *cr = json_object_get(o, "cross_route");
+    branches(r, o);
+    if (js(o, "auxiliary") != NULL) {
+        rs_render_line(r, "auxiliary", "A(z) = %s", js(o, "auxiliary"));
+        if (json_is_false(json_object_get(o, "auxiliary_divides_q")))
+            rs_render_line(r, "disagree", "%s", "A(z) does not divide q(z) (a bug: the zero row says it does)");
+    }
+    rs_render_line(r, "verdict", "%s", js(o, "verdict"));
+    if (json_is_false(json_object_get(cr, "agree")))
+        rs_render_linef(r, "disagree", "%s says %s (a bug: both are exact)", js(cr, "with"),
+                        js(cr, "hurwitz_verdict"));
+    rs_render_sample_check(r, o);
+}
+
 void rs_render_routh(rs_render_t *r, const json_t *o)
 {
     const json_t *ev = json_object_get(o, "events");
@@ -402,7 +421,7 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
     }
     rs_render_heading(r, "Routh array of q(z)", "Routh array of $q(z)$");
     if (sym) rs_render_line(r, "array", "%s", "fraction-free, symbolic");
-    rs_render_rows(r, json_object_get(o, "rows"), sym ? NULL : json_object_get(o, "powers"));
+    rs_render_rows(r, json_object_get(o, "rows"), json_object_get(o, "powers"));
     if (!sym) epsilon_signs(r, json_object_get(o, "epsilon_signs"));
     for (i = 0; i < json_array_size(ev); i++) {
         const json_t *e = json_array_get(ev, i);
@@ -418,6 +437,7 @@ void rs_render_routh(rs_render_t *r, const json_t *o)
     }
     /* over Q(sqrt d) (an_qd_conds.c) the array ends in conditions and a verdict */
     if (sym && json_object_get(o, "conditions") != NULL) routh_conditions(r, o);
+    else if (sym && js(o, "never") != NULL) routh_never(r, o);
     /* the report counts the numeric array; the derivation whatever has a status */
     rs_render_count(r, o, (sym ? 0 : RS_RENDER_TEXT) | (js(o, "status") ? RS_RENDER_PROSE : 0));
     rs_render_assigned(r, o);

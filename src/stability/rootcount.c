@@ -234,6 +234,26 @@ static int count_isolated(rs_rootcount_t rc, const fmpz_poly_t f, slong e,
     _acb_vec_clear(roots, deg);
     if (status != RS_OK)
         return status;
+    if (!done && deg == 2) {
+        /* roots closer to the circle than 2^-65536 (e.g. |z|^2 = 1 + 10^-199998):
+         * a quadratic a x^2 + b x + c is decided exactly -- a complex pair has
+         * |r|^2 = c/a, real roots are counted in (-1, 1) by Sturm (f(+-1) != 0) */
+        fmpz_t d, t;
+        fmpz_init(d);
+        fmpz_init(t);
+        fmpz_mul(d, f->coeffs + 1, f->coeffs + 1);
+        fmpz_mul(t, f->coeffs + 0, f->coeffs + 2);
+        fmpz_submul_ui(d, t, 4);
+        if (fmpz_sgn(d) < 0) {
+            in = fmpz_cmpabs(f->coeffs + 0, f->coeffs + 2) < 0 ? 2 : 0;
+        } else {
+            in = rs_rootcount_real_roots_open(f, -1, 1);
+        }
+        out = 2 - in;
+        done = 1;
+        fmpz_clear(d);
+        fmpz_clear(t);
+    }
     if (!done)
         return rs_error_set(err, RS_ERR_UNDECIDED,
             "root isolation of a degree %ld factor did not separate its "

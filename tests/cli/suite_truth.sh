@@ -289,6 +289,28 @@ if command -v jq >/dev/null 2>&1; then
     C=cases/truth/simulate-dead-beat.case
     check "dead-beat simulate: the exact verdict decides, no check object" '["exact",null]' \
         "$(jfield $C 1 '| [.verdict.decided_by, .check]')"
+    # symbolic Routh arrays singular for every value (h-truth8, by hand in the cases): routh
+    # decides never (was: no verdict; a zero pivot was exit 1), hurwitz on the same q agrees
+    C=cases/truth/routh-zero-row-symbolic.case
+    check "routh zero row: never, A(z) divides q, hurwitz and the samples agree (was no verdict)" \
+        '["never stable","16*a + 16*z^2",true,true,"never stable",true]' \
+        "$(jfield $C 0 '| [.verdict, .auxiliary, .auxiliary_divides_q, .sample_check.agree, .cross_route.hurwitz_verdict, .cross_route.agree]')"
+    C=cases/truth/routh-zero-pivot-symbolic.case
+    check "routh zero pivot D_2 = 0: never, rows up to the z^2 row (was exit 1)" \
+        '["never stable",[4,3,2],true,["never stable","never stable"]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | [.[0].verdict, .[0].powers, .[0].cross_route.agree, [.[1].verdict, .[2].verdict]]')"
+    C=cases/truth/routh-last-row-symbolic.case
+    check "routh last row 0 (q(0) = 0): never, lambda = 1 named (was no verdict)" \
+        '["never stable",true]' "$(jfield $C 0 '| [.verdict, (.never | test("lambda = 1"))]')"
+    # a root 10^-199998 off the circle (h-truth8, by hand in the case): stability and jury
+    # decide (were exit 2 with no file:line:col), and inside with z = i (1 - 10^-99999)
+    C=cases/truth/complex-near-circle-root.case
+    check "root 10^-199998 outside the circle: stability, jury, modes' exact check (were exit 2)" \
+        '[["unstable",1],["unstable",1],["unstable",1]]' \
+        "$("$RS" --json $C 2>/dev/null | jq -c '.cases[0].results | map([(.status // .exact_check.status), (.outside // .exact_check.outside)])')"
+    sed 's/^set z = .*/set z = i*(1 - 10^-99999)/' $C >"$T/near.case"
+    check "root 10^-199998 inside the circle: stability, jury" '[["stable",0],["stable",0]]' \
+        "$("$RS" --json "$T/near.case" 2>/dev/null | jq -c '.cases[0].results[0:2] | map([.status, .outside])')"
 else
     ok "skipped the cases/truth field checks: no jq"
 fi
@@ -338,6 +360,14 @@ if command -v python3 >/dev/null 2>&1; then
     for spec in "lmmfam 3 4" "builders 3 3" "routh 3 3" "jurysp 3 3" "symsign 3 2" "degen 3 1"; do
         # shellcheck disable=SC2086
         RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth7.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
+    done
+    # eighth batch (tests/truth/truth8.py, h-truth8): symbolic Routh arrays singular for every
+    # value (zero row, zero pivot, last row 0) and a control, against mpmath roots; astability
+    # of random rational tableaux; sdirk2/3 couplings over Q(sqrt d) at real and complex values
+    # against the step matrix's eigenvalues; multistep builders at complex a
+    for spec in "rsym 8 8" "astab 8 4" "qdcouple 8 2" "lmmz 8 4"; do
+        # shellcheck disable=SC2086
+        RS="$RS" TRUTH_KEEP="$T/failures" python3 tests/truth/truth8.py $spec 2>&1 | sed -n '/^ok /p; /^FAIL /p; /Traceback/,$s/^/FAIL /p'
     done
 else
     ok "skipped the random planted truths: no python3"

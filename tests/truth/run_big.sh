@@ -42,6 +42,14 @@
 # load: each case takes about 3 s CPU).  About 22 CPU minutes in all, short of the hour asked for
 # (the machine ran 8-10 jobs on its 2 cores).  Found before the big runs: truth6 systems' 8
 # skipped zero-row cases (det A lost a root at 0; M = 0 exited 2), fixed in scheme.c.
+# truth8.py (h-truth8, 2026-11-28, 2 shared cores; CPU by /usr/bin/time, user + sys, children
+# excluded): `truth8.py rsym 81 40` 40 ok (9.5 + 2.5 s; recstab's share is in the 297 s wall),
+# `astab 82 40` 40 ok (3.5 + 1.3 s), `qdcouple 83 30` 27 ok (14.2 + 1.1 s), `lmmz 84 40` 40 ok
+# (3.5 + 1.3 s).  Other seeds: rsym 11..15 x 40: 200 ok (at the parent every non-control case would
+# fail: routh gave no verdict, or exit 1 on a zero pivot, by hand probes); astab 21..27, 41..47: 603 ok;
+# qdcouple 31..36: 266 ok, 5 singular set values (T's step at d = -1: jury over Q(sqrt d)
+# exits 2 there, the other fields say "singular" over Q); lmmz 51..53: 120 ok.  Failures seen
+# were the script's own (nsimplify rounding R, mpmath QR stalls; fixed).
 COUNT=${1:-200}
 SEEDS=${2:-"101 102 103"}
 RS=${RS:-build/recstab}
