@@ -174,4 +174,23 @@ int rs_an_qd_point(acb_ptr *z, slong *n, int *decided, rs_status_t *st, rs_rootc
  * counts; a disagreement marks the run inconsistent) and "substituted" */
 int rs_an_qd_modes_roots(rs_radius_t rr, json_t *o, rs_run_t *run, const rs_request_t *q, slong digits);
 
+/* an_qd_map.c: map re(NAME), im(NAME) over Q(sqrt d) (an_complex.c's map).
+ * p = sum_k (CR[k] + sqrt(d) CS[k]) NAME^k with CR[k], CS[k] in Q[lambda],
+ * K its degree in NAME, *n in lambda (every other parameter set: v one free);
+ * clear as an_complex.c's coefficients */
+int rs_an_qd_zplane_coeffs(fmpq_poly_struct **CR, fmpq_poly_struct **CS, slong *K, slong *n, const rs_variant_t *v,
+                           slong param);
+/* the verdict code at a point of p = re0 + sqrt(d) re1 + i (im0 + sqrt(d)
+ * im1) of degree n: stable, unstable, singular (the degree drops), -1 (p
+ * vanishes) or RS_SWEEP_UNDECIDED (a root on or too near the circle); by
+ * Schur-Cohn over Q(sqrt d)(i) and the certified roots, RS_ERR_INCONSISTENT
+ * when they disagree */
+int rs_an_qd_zplane_verdict(int *code, const fmpq_poly_t re0, const fmpq_poly_t im0, const fmpq_poly_t re1,
+                            const fmpq_poly_t im1, slong n, slong d);
+/* "A0 + sqrt(d)*(A1)" of polynomials in lambda (malloc'd) */
+char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d);
+/* the map's "over", "rk", "methods", "cross_check" (checked points),
+ * verdicts' "undecided" and its note */
+void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked);
+
 #endif

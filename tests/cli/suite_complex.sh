@@ -1312,7 +1312,7 @@ else fail "sdirk2 emit: $(cat "$T/eq.txt" "$T/err")"; fi
 # routh runs over Q(sqrt d) now (sdirk2-coupled-routh.case); bilinear is still refused, naming what runs
 "$RS" --analyse stability "$SC" --set c=2 --analyse bilinear >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 2 ] && grep -q "bilinear is not available for rk sdirk2 .*jury, hurwitz, routh" "$T/err" \
-   || { [ "$rc" = 2 ] && grep -q "hurwitz, routh, region or claim: bilinear is not available for rk sdirk2" "$T/err"; }; then
+   || { [ "$rc" = 2 ] && grep -q "hurwitz, routh, region, claim or map re(NAME), im(NAME) without complex set values: bilinear is not available for rk sdirk2" "$T/err"; }; then
     ok "sdirk2 coupled: bilinear refused (exit 2), naming what runs"
 else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
 "$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?

@@ -1,0 +1,101 @@
+/* an_qd_map.c -- `map re(NAME) A B N, im(NAME) C D M` of a model over
+ * Q(sqrt d) (rk sdirk2, sdirk3): the z-plane of one parameter, drawn by
+ * an_complex.c's map (the same grid, table, JSON and locus) with p =
+ * P0 + sqrt(d) P1 split here and each point decided over Q(sqrt d)(i) as
+ * `stability` decides it there (rs_qdc_stable_checked: Schur-Cohn with
+ * exact signs in Q(sqrt d) and the certified Arb roots, which must agree). */
+#include <stdlib.h>
+#include <string.h>
+#include <flint/fmpz_mpoly.h>
+#include "analysis/an_qd.h"
+#include "recstab/charpoly.h"
+#include "analysis/sweep_impl.h"
+
+int rs_an_qd_zplane_coeffs(fmpq_poly_struct **CR, fmpq_poly_struct **CS, slong *K, slong *n, const rs_variant_t *v,
+                           slong param)
+{
+    const rs_scheme_struct *s = v->s;
+    fmpz_mpoly_t part;
+    slong k, j;
+    *K = fmpz_mpoly_degree_si(v->cp->p, param, s->zctx);
+    *n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    *CR = flint_malloc((FLINT_MAX(*K, 0) + 1) * sizeof(fmpq_poly_struct));
+    *CS = flint_malloc((FLINT_MAX(*K, 0) + 1) * sizeof(fmpq_poly_struct));
+    for (k = 0; k <= FLINT_MAX(*K, 0); k++) {
+        fmpq_poly_init(*CR + k);
+        fmpq_poly_init(*CS + k);
+    }
+    fmpz_mpoly_init(part, s->zctx);
+    for (j = 0; j < 2; j++) {
+        /* p's part without sqrt(d) (j = 0) and its sqrt(d) part (j = 1) */
+        rs_charpoly_coeff(part, v->cp->p, j, s->sqrt_var, s->zctx);
+        for (k = 0; k <= *K; k++) {
+            fmpz_poly_t c;
+            fmpz_poly_init(c);
+            rs_run_coeff_in(c, part, param, k, s);
+            fmpq_poly_set_fmpz_poly((j == 0 ? *CR : *CS) + k, c);
+            fmpz_poly_clear(c);
+        }
+    }
+    fmpz_mpoly_clear(part, s->zctx);
+    return 1;
+}
+
+int rs_an_qd_zplane_verdict(int *code, const fmpq_poly_t re0, const fmpq_poly_t im0, const fmpq_poly_t re1,
+                            const fmpq_poly_t im1, slong n, slong d)
+{
+    const fmpq_poly_struct *e[4] = {re0, re1, im0, im1};
+    rs_qdc_struct *c = rs_qdc_vec_init(n + 1);
+    slong k, deg = -1;
+    int j, sc = 1;
+    for (j = 0; j < 4; j++) {
+        deg = FLINT_MAX(deg, fmpq_poly_degree(e[j]));
+        for (k = 0; k <= n; k++) {
+            rs_qd_struct *x = j < 2 ? c[k].re : c[k].im;
+            fmpq_poly_get_coeff_fmpq((j & 1) ? x->y : x->x, e[j], k);
+        }
+    }
+    /* x + sqrt(d) y = 0 only for x = y = 0: the degree over Q(sqrt d)(i) is deg */
+    if (deg < 0) *code = -1;                            /* p vanishes: undefined */
+    else if (deg < n) *code = RS_STATUS_SINGULAR;       /* the step is not determined */
+    else {
+        sc = rs_qdc_stable_checked(NULL, c, n, d);
+        /* -1: a root on or too near the circle, marginal and unstable not told apart */
+        *code = sc == 1 ? RS_STATUS_STABLE : sc == 0 ? RS_STATUS_UNSTABLE : 4;
+    }
+    rs_qdc_vec_clear(c, n + 1);
+    return sc == -2 ? RS_ERR_INCONSISTENT : RS_OK;
+}
+
+char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d)
+{
+    char *s0 = fmpq_poly_get_str_pretty(a0, "lambda"), *s1 = fmpq_poly_get_str_pretty(a1, "lambda");
+    size_t len = strlen(s0) + strlen(s1) + 40;
+    char *out = malloc(len);
+    if (fmpq_poly_is_zero(a1)) snprintf(out, len, "%s", s0);
+    else if (fmpq_poly_is_zero(a0)) snprintf(out, len, "sqrt(%ld)*(%s)", (long) d, s1);
+    else snprintf(out, len, "%s + sqrt(%ld)*(%s)", s0, (long) d, s1);
+    flint_free(s0);
+    flint_free(s1);
+    return out;
+}
+
+void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked)
+{
+    char over[60], m[80];
+    slong d = run->m->qd->d;
+    snprintf(over, sizeof over, "Q(sqrt %ld)(i)", (long) d);
+    snprintf(m, sizeof m, "rk %s", run->m->qd->tableau);
+    json_object_set_new(o, "over", json_string(over));
+    json_object_set_new(o, "rk", json_string(m));
+    json_object_set_new(json_object_get(o, "verdicts"), "undecided", json_integer(undecided));
+    json_object_set_new(o, "methods", json_pack("[ss]", "schur-cohn over Q(sqrt d)(i), exact signs",
+                                                "certified roots (Arb, sqrt d a ball)"));
+    json_object_set_new(o, "cross_check", json_pack("{sIss}", "points", (json_int_t) checked, "method",
+                        "every point by both: Schur-Cohn over Q(sqrt d)(i) stable iff every certified root is "
+                        "inside, not stable iff a root is certified outside or not separated from the circle "
+                        "(exit 3 on disagreement)"));
+    if (undecided > 0)
+        json_object_set_new(o, "note", json_string("undecided: not strictly stable (Schur-Cohn) with a root on or "
+                            "too near the unit circle; marginal and unstable are not told apart over Q(sqrt d)"));
+}
