@@ -820,6 +820,7 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
 {
     json_t *tab = pl->tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
     int radius = strcmp(jstr(tab, "of"), "radius") == 0;
+    int undecided = json_integer_value(json_object_get(json_object_get(tab, "verdicts"), "undecided")) > 0;
     int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
     char xl[256], yl[256];
     /* the legend (the boundary) above the panel, the colour box right of
@@ -852,14 +853,18 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
         fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
               "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
     else
-        fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
-              "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
-              "1.5 '#d73027', 2.5 '#d73027')\n", g);
+        /* undecided points (code 4: a root on or too near the circle, marginal and unstable not told
+         * apart) take the marginal band, not the clipped top colour of unstable */
+        fprintf(g, "set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, '%s' 1, 'unstable' 2)\n"
+                "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
+                "1.5 '#d73027', 2.5 '#d73027')\n", undecided ? "marginal or undecided" : "marginal");
     fputs("plot ", g);
     put_table(g, pl->dir, 't', i);
     fprintf(g, " using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),
             col_index(tab, json_string_value(json_array_get(params, 1))));
     if (radius) fprintf(g, "$%d > 2 ? 2 : $%d", col_index(tab, "radius"), col_index(tab, "radius"));
+    else if (undecided) fprintf(g, "$%d < 0 ? NaN : $%d == 4 ? 1 : $%d", col_index(tab, "code"), col_index(tab, "code"),
+                                col_index(tab, "code"));
     else fprintf(g, "$%d < 0 ? NaN : $%d", col_index(tab, "code"), col_index(tab, "code"));
     fprintf(g, ") with %s notitle", image ? "image" : "points pt 5 ps 1 palette");
     if (jstr(tab, "boundary_table"))

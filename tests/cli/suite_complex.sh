@@ -618,6 +618,56 @@ for pt in "1 stable" "-5 stable" "-1 unstable" "0 unstable"; do
     else fail "sdirk2 complex k=$1: '$v' $(head -1 "$T/err")"; fi
 done
 
+# ---- map re(z), im(z) over Q(sqrt 2)(i) and Q(sqrt 3)(i) (issue 15 §2, an_qd_map.c) ----
+# cases/complex/sdirk2-zplane.case and the same map of SDIRK3 (sdirk3-astability.case).
+# Independently: R(z) from each Butcher tableau (the two stages solved in mpmath at 50
+# digits, no recstab): every grid verdict against |R(z)| < 1 (stable), > 1 (unstable),
+# = 1 (undecided: z = 0 only); the plotted locus rows (--plot-script) against |R| = 1.
+SZ=cases/complex/sdirk2-zplane.case
+S3=cases/complex/sdirk3-astability.case
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json "$SZ" >"$T/sz.json" 2>"$T/err"; rc=$?
+    "$RS" "$SZ" --plot "$T/sz.svg" --plot-script "$T/sz.gp" >/dev/null 2>>"$T/err" || rc=9
+    "$RS" --json --analyse "map re(q) -6 10 9, im(q) -8 8 9" "$S3" >"$T/s3.json" 2>>"$T/err" || rc=8
+    res=$(python3 - "$T/sz.json" "$T/s3.json" "$T/sz.gp" <<'PY'
+import json, sys, mpmath as mp
+from fractions import Fraction
+mp.mp.dps = 50
+def R(z, g, a21, b1, b2):   # one step of the 2-stage SDIRK on y' = z y from y = 1
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + a21 * k1) / (1 - g * z)
+    return 1 + b1 * k1 + b2 * k2
+g2 = 1 - mp.sqrt(2) / 2                 # SDIRK2: A = [g, 0; 1-g, g], b = (1-g, g)
+g3 = (3 + mp.sqrt(3)) / 6               # SDIRK3: A = [g, 0; 1-2g, g], b = (1/2, 1/2)
+tabs = [(sys.argv[1], (g2, 1 - g2, 1 - g2, g2), "Q(sqrt 2)(i)", "rk sdirk2"),
+        (sys.argv[2], (g3, 1 - 2 * g3, mp.mpf(1) / 2, mp.mpf(1) / 2), "Q(sqrt 3)(i)", "rk sdirk3")]
+bad = []
+for path, t, over, rk in tabs:
+    r = json.load(open(path))["cases"][0]["results"][-1]
+    if r.get("over") != over or r.get("rk") != rk: bad.append("over/rk " + path)
+    if r["cross_check"]["points"] != r["computed"]: bad.append("cross-checked points")
+    n = {"stable": 0, "unstable": 0, "undecided": 0}
+    for row in r["rows"]:
+        x, y = (Fraction(c) for c in row[5:7])
+        z = mp.mpc(mp.mpf(x.numerator) / x.denominator, mp.mpf(y.numerator) / y.denominator)
+        a = abs(R(z, *t))
+        want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
+        if row[7] != want: bad.append("%s z=%s: %s, |R| = %s" % (rk, z, row[7], mp.nstr(a, 8)))
+        n[want] += 1
+    if n["undecided"] != 1 or n["stable"] < 10 or n["unstable"] < 10: bad.append("counts %r" % n)
+    if r["verdicts"]["undecided"] != 1: bad.append("verdicts " + rk)
+# the locus datablock $l0 of the SDIRK2 plot: points z with |R(z)| = 1 (double precision)
+gp = open(sys.argv[3]).read().split("$l0 << EOD\n")[1].split("EOD")[0].splitlines()[1:]
+far = [l for l in gp if abs(abs(R(mp.mpc(*map(float, l.split(",")[:2])), *tabs[0][1])) - 1) > 1e-6]
+if len(gp) < 500 or far: bad.append("locus: %d rows, off |R| = 1: %s" % (len(gp), far[:2]))
+if "set size ratio -1" not in open(sys.argv[3]).read(): bad.append("axes not equal")
+print("yes" if not bad else "no " + "; ".join(bad[:5]))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map re(z), im(z) over Q(sqrt 2)(i), Q(sqrt 3)(i): SDIRK2, SDIRK3 grids match |R(z)| from the tableaux (mpmath), the locus |R| = 1, equal axes"
+    else fail "sdirk z-plane maps: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk z-plane maps: no python3 mpmath"; fi
+
 # never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
 # (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
 sed 's/^param q k/param q k\nassume -3 <= k <= -1/' "$SQ" >"$T/sqn.case"
