@@ -181,6 +181,12 @@ void rs_render_sweep(rs_render_t *r, const json_t *o)
     rs_render_line(r, "computed", "%s", buf);
     rs_render_line(r, "csv", "%s", rs_render_jstr(o, "csv"));
     rs_render_line(r, "note", "%s", rs_render_jstr(o, "table_note"));
+    /* a map over Q(sqrt d)(i) (an_qd_map.c) names its field and what undecided means */
+    if (rs_render_jstr(o, "over") != NULL && strstr(rs_render_jstr(o, "over"), "sqrt") != NULL) {
+        rs_render_line(r, "over", "%s", rs_render_jstr(o, "over"));
+        rs_render_line(r, "method", "%s", rs_render_jstr(o, "rk"));
+        rs_render_line(r, "undecided", "%s", rs_render_jstr(o, "note"));
+    }
     if (tab != NULL) {
         /* the table, columns aligned; a cell is never cut (a cut decimal
          * is a different number: an outward-rounded bound cut short is no
