@@ -192,5 +192,7 @@ char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d
 /* the map's "over", "rk", "methods", "cross_check" (checked points),
  * verdicts' "undecided" and its note */
 void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked);
+/* bilinear at real set values over Q(sqrt d): q(z) = q0 + sqrt(d) q1 */
+int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req);
 
 #endif

@@ -10,6 +10,15 @@
 #include "analysis/an_qd.h"
 #include "recstab/charpoly.h"
 #include "analysis/sweep_impl.h"
+#include "recstab/bilinear.h"
+
+/* a JSON string of a flint-allocated text (freed) */
+static json_t *json_string_free_flint(char *t)
+{
+    json_t *j = json_string(t);
+    flint_free(t);
+    return j;
+}
 
 int rs_an_qd_zplane_coeffs(fmpq_poly_struct **CR, fmpq_poly_struct **CS, slong *K, slong *n, const rs_variant_t *v,
                            slong param)
@@ -98,4 +107,53 @@ void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong check
     if (undecided > 0)
         json_object_set_new(o, "note", json_string("undecided: not strictly stable (Schur-Cohn) with a root on or "
                             "too near the unit circle; marginal and unstable are not told apart over Q(sqrt d)"));
+}
+
+/* bilinear over Q(sqrt d): q(z) = (1 - z)^n p((1 + z)/(1 - z)) with
+ * sqrt(d) a variable (p is linear in it, so q is), the real set values
+ * substituted; JSON as over Q plus "over", "q0", "q1" (q = q0 + sqrt(d) q1)
+ * and the coefficients as "c0 + sqrt(d)*(c1)" */
+int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req)
+{
+    rs_variant_t *v;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t qz, q0, q1, a0, a1;
+    json_t *o, *co;
+    slong d, lv, k;
+    int r;
+    (void) req;
+    r = rs_run_default_variant(run, &v);
+    if (r != RS_OK) return r;
+    s = v->s;
+    lv = s->lambda_var;
+    fmpz_mpoly_init(qz, s->zctx); fmpz_mpoly_init(q0, s->zctx); fmpz_mpoly_init(q1, s->zctx);
+    fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+    rs_bilinear_fmpz_mpoly(qz, v->cp->p, lv, s->zctx);
+    rs_scheme_reduce_sqrt(qz, s);
+    rs_charpoly_coeff(q0, qz, 0, s->sqrt_var, s->zctx);
+    rs_charpoly_coeff(q1, qz, 1, s->sqrt_var, s->zctx);
+    d = fmpz_mpoly_degree_si(qz, lv, s->zctx);
+    co = json_array();
+    for (k = 0; k <= d; k++) {
+        rs_charpoly_coeff(a0, q0, k, lv, s->zctx);
+        rs_charpoly_coeff(a1, q1, k, lv, s->zctx);
+        json_array_append_new(co, json_string_free_flint(rs_an_qd_mpoly_str(a0, a1, s, 0)));
+    }
+    o = json_object();
+    json_object_set_new(o, "analysis", json_string("bilinear"));
+    json_object_set_new(o, "var", json_string("z"));
+    json_object_set_new(o, "degree", json_integer(d));
+    json_object_set_new(o, "coeffs", co);
+    json_object_set_new(o, "poly", rs_json_collected(qz, lv, s, "z"));
+    json_object_set_new(o, "degree_drop", json_integer(v->cp->degree - d));
+    json_object_set_new(o, "zero_mult", json_integer(rs_scheme_min_degree(qz, lv, s->zctx)));
+    json_object_set_new(o, "p_at_1", rs_json_p_at(v, 1));
+    json_object_set_new(o, "p_at_minus_1", rs_json_p_at(v, -1));
+    json_object_set_new(o, "over", json_string_free_flint(rs_an_qd_over_str(s->sqrt_d)));
+    json_object_set_new(o, "q0", rs_json_collected(q0, lv, s, "z"));
+    json_object_set_new(o, "q1", rs_json_collected(q1, lv, s, "z"));
+    rs_run_emit_exact(run, v, o);
+    fmpz_mpoly_clear(qz, s->zctx); fmpz_mpoly_clear(q0, s->zctx); fmpz_mpoly_clear(q1, s->zctx);
+    fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+    return RS_OK;
 }
