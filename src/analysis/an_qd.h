@@ -6,6 +6,7 @@
 #include "analysis/registry.h"
 #include "algebra/qsqrt.h"
 #include "analysis/an_region.h"
+#include "analysis/sweep_impl.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
  * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
@@ -194,5 +195,13 @@ char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d
 void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked);
 /* bilinear at real set values over Q(sqrt d): q(z) = q0 + sqrt(d) q1 */
 int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req);
+/* sweep NAME ... of stability over Q(sqrt d): the engine's model at vals
+ * (read, not copied) of parameter var, every other set (errors at q);
+ * free it with rs_an_qd_sweep_model_free (also after an error) */
+int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
+                         slong var, const fmpq *vals);
+void rs_an_qd_sweep_model_free(rs_sweep_model_t *m);
+/* the sweep's "over", "rk" and "method" */
+void rs_an_qd_sweep_json(json_t *o, rs_run_t *run, const json_t *verdicts);
 
 #endif

@@ -667,6 +667,35 @@ PY
     if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map re(z), im(z) over Q(sqrt 2)(i), Q(sqrt 3)(i): SDIRK2, SDIRK3 grids match |R(z)| from the tableaux (mpmath), the locus |R| = 1, equal axes"
     else fail "sdirk z-plane maps: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk z-plane maps: no python3 mpmath"; fi
+# sweep q ... of stability over Q(sqrt 2) (an_qd_map.c): every point against |R(q)| from the
+# tableau in mpmath (stable < 1, unstable > 1, undecided = 1: q = 0 only; hand values in
+# cases/complex/sdirk2-region.case: unstable on (0, 6 + 4 sqrt 2), stable beyond); of radius refused
+if python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json --analyse "sweep q from -2 to 16 steps 72 of stability" cases/complex/sdirk2-region.case >"$T/sw.json" 2>"$T/err"; rc=$?
+    "$RS" --analyse "sweep q from -2 to 16 steps 72" cases/complex/sdirk2-region.case >/dev/null 2>&1; rr=$?
+    res=$(python3 - "$T/sw.json" <<'PY'
+import json, sys, mpmath as mp
+from fractions import Fraction
+mp.mp.dps = 50
+g = 1 - mp.sqrt(2) / 2
+def R(z):   # SDIRK2: A = [g, 0; 1-g, g], b = (1-g, g), one step from y = 1
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - g) * k1) / (1 - g * z)
+    return 1 + (1 - g) * k1 + g * k2
+r = json.load(open(sys.argv[1]))["cases"][0]["results"][-1]
+bad, n = [], 0
+for row in r["rows"]:
+    x = Fraction(row[2]); a = abs(R(mp.mpf(x.numerator) / x.denominator))
+    want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
+    if row[3] != want: bad.append("q=%s: %s" % (x, row[3]))
+    n += 1
+if n != 73 or r.get("over") != "Q(sqrt 2)": bad.append("rows/over")
+print("yes" if not bad else "no " + "; ".join(bad[:5]))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$rr" = 2 ] && [ "$res" = yes ]; then ok "sdirk2 sweep q of stability over Q(sqrt 2): 73 points match |R(q)| from the tableau (mpmath); of radius refused"
+    else fail "sdirk2 sweep: rc=$rc rr=$rr $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 sweep: no mpmath"; fi
 
 # never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
 # (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
