@@ -92,8 +92,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     if (strcmp(n, "claim") == 0 && qd_nfree(run) <= 1) return RS_OK;
     /* the z-plane of one parameter, each point over Q(sqrt d)(i) (an_qd_map.c) */
     if ((strcmp(n, "bilinear") == 0 || strcmp(n, "sweep") == 0) && run->c->ncsets == 0) return RS_OK;   /* an_qd_map.c */
-    if (strcmp(n, "map") == 0 && rs_an_complex_map_is(rs_req_skip_word(req->q->text)) && run->c->ncsets == 0)
-        return RS_OK;
+    /* the z-plane of one parameter, or two real parameters: each point over Q(sqrt d) (an_qd_map.c) */
+    if (strcmp(n, "map") == 0 && run->c->ncsets == 0) return RS_OK;
     {
         /* the message names the model's field and tableau */
         char msg[600];
@@ -106,7 +106,7 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      (long) run->m->qd->d, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
-                     "routh, region, claim, bilinear, sweep (of stability) or map re(NAME), im(NAME) without complex set values: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
+                     "routh, region, claim, bilinear, sweep (of stability or radius) or map without complex set values: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
                      "those are decided over Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d,
                      (long) run->m->qd->d);
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);

@@ -195,12 +195,19 @@ char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d
 void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked);
 /* bilinear at real set values over Q(sqrt d): q(z) = q0 + sqrt(d) q1 */
 int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req);
-/* sweep NAME ... of stability over Q(sqrt d): the engine's model at vals
- * (read, not copied) of parameter var, every other set (errors at q);
- * free it with rs_an_qd_sweep_model_free (also after an error) */
-int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
-                         slong var, const fmpq *vals);
+/* sweep NAME ... and map N1 ..., N2 ... of real parameters over Q(sqrt d)
+ * (of stability or radius): the engine's model at the axis values vals[k]
+ * (read, not copied) of R's axes, every other parameter set (errors at q);
+ * each point by rs_an_qd_zplane_verdict, `of radius` also the certified
+ * radius of p (sqrt d a ball), checked against the verdict; free it with
+ * rs_an_qd_sweep_model_free (also after an error) */
+int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                         const rs_variant_t *v, const fmpq *const *vals);
 void rs_an_qd_sweep_model_free(rs_sweep_model_t *m);
+/* map N1 ..., N2 ... of two real parameters over Q(sqrt d) (every other
+ * parameter set): the engine's map with rs_an_qd_sweep_model, the boundary
+ * from the norms of jury's conditions (every factor drawn) */
+int rs_an_qd_map(rs_run_t *run, const rs_an_req_t *req);
 /* the sweep's "over", "rk" and "method" */
 void rs_an_qd_sweep_json(json_t *o, rs_run_t *run, const json_t *verdicts);
 

@@ -4,13 +4,19 @@
  * P0 + sqrt(d) P1 split here and each point decided over Q(sqrt d)(i) as
  * `stability` decides it there (rs_qdc_stable_checked: Schur-Cohn with
  * exact signs in Q(sqrt d) and the certified Arb roots, which must agree). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <flint/fmpz_mpoly.h>
+#include <flint/fmpq_vec.h>
+#include <acb_poly.h>
+#include "numeric/grid.h"
 #include "analysis/an_qd.h"
 #include "recstab/charpoly.h"
 #include "analysis/sweep_impl.h"
 #include "recstab/bilinear.h"
+#include "recstab/ladder.h"
+#include "recstab/radius.h"
 
 /* a JSON string of a flint-allocated text (freed) */
 static json_t *json_string_free_flint(char *t)
@@ -70,7 +76,7 @@ int rs_an_qd_zplane_verdict(int *code, const fmpq_poly_t re0, const fmpq_poly_t 
     else {
         sc = rs_qdc_stable_checked(NULL, c, n, d);
         /* -1: a root on or too near the circle, marginal and unstable not told apart */
-        *code = sc == 1 ? RS_STATUS_STABLE : sc == 0 ? RS_STATUS_UNSTABLE : 4;
+        *code = sc == 1 ? RS_STATUS_STABLE : sc == 0 ? RS_STATUS_UNSTABLE : RS_SWEEP_UNDECIDED;
     }
     rs_qdc_vec_clear(c, n + 1);
     return sc == -2 ? RS_ERR_INCONSISTENT : RS_OK;
@@ -158,68 +164,141 @@ int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req)
     return RS_OK;
 }
 
-/* ---- sweep NAME ... of stability over Q(sqrt d) ---------------------------------- */
+/* ---- sweep and map of real parameters over Q(sqrt d) ------------------------------ */
 
 typedef struct {
-    fmpq_poly_struct *CR, *CS;
-    slong K, n, d;
-    const fmpq *vals;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t p0, p1;      /* p = p0 + sqrt(d) p1, every parameter but the axes set */
+    slong n, d, naxes, var[2], K1, max_prec;
+    int of;
+    const fmpq *vals[2];
 } qd_sweep_t;
 
-/* the verdict at vals[idx]: p = sum_k (CR[k] + sqrt(d) CS[k]) x^k, real */
+/* the certified radius of p = re0 + sqrt(d) re1 (sqrt(d) a ball) into row;
+ * it must agree with the exact verdict: stable needs rho < 1 possible,
+ * unstable rho > 1 possible (RS_ERR_INCONSISTENT otherwise) */
+static int qd_sweep_radius(rs_sweep_row_t *row, const fmpq_poly_t re0, const fmpq_poly_t re1, const qd_sweep_t *S,
+                           rs_error_t err)
+{
+    rs_qdc_struct *c = rs_qdc_vec_init(S->n + 1);
+    acb_poly_t p;
+    rs_radius_t rr;
+    slong k, prec = 128;
+    int r;
+    for (k = 0; k <= S->n; k++) {
+        fmpq_poly_get_coeff_fmpq(c[k].re->x, re0, k);
+        fmpq_poly_get_coeff_fmpq(c[k].re->y, re1, k);
+    }
+    acb_poly_init(p);
+    rs_radius_init(rr);
+    acb_poly_fit_length(p, S->n + 1);
+    rs_qdc_vec_get_acb(p->coeffs, c, S->n + 1, S->d, prec);
+    _acb_poly_set_length(p, S->n + 1);
+    _acb_poly_normalise(p);
+    r = rs_radius_acb_poly(rr, p, 15, S->max_prec, err);
+    if (r == RS_OK) {
+        row->d.rho_lower = rs_ladder_lower_d(rr->lower);
+        row->d.rho_upper = rs_ladder_upper_d(rr->upper);
+        row->d.isolated = rr->isolated;
+        /* the doubles are rounded outward: a contradiction here is one of the exact bounds */
+        if ((row->d.verdict == RS_STATUS_STABLE && row->d.rho_lower >= 1)
+            || (row->d.verdict == RS_STATUS_UNSTABLE && row->d.rho_upper <= 1))
+            r = rs_error_set(err, RS_ERR_INCONSISTENT, "over Q(sqrt %ld): the exact verdict is %s, the certified "
+                             "radius [%g, %g]", (long) S->d, rs_sweep_verdict_name(row->d.verdict),
+                             row->d.rho_lower, row->d.rho_upper);
+    } else {
+        /* the exact verdict stands; the radius is only what was certified (a root cluster: partial) */
+        row->d.rho_lower = rr->partial ? rs_ladder_lower_d(rr->lower) : 0;
+        row->d.rho_upper = rr->partial ? rs_ladder_upper_d(rr->upper) : INFINITY;
+        r = RS_OK;
+    }
+    rs_radius_clear(rr);
+    acb_poly_clear(p);
+    rs_qdc_vec_clear(c, S->n + 1);
+    return r;
+}
+
+/* the verdict at point idx (index j*K1 + i of a map): p0, p1 evaluated
+ * exactly, the verdict by rs_an_qd_zplane_verdict's two routes, `of
+ * radius` the certified radius beside it */
 static void qd_sweep_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t err)
 {
     const qd_sweep_t *S = model;
+    fmpq *x = _fmpq_vec_init(S->s->nvars);
+    fmpq **pt = flint_malloc((size_t) S->s->nvars * sizeof(fmpq *));
     fmpq_poly_t re0, re1, zero;
     slong k;
     int r, code = -1;
-    fmpq_poly_init(re0); fmpq_poly_init(re1); fmpq_poly_init(zero);
-    for (k = S->K; k >= 0; k--) {   /* Horner in the swept value */
-        fmpq_poly_scalar_mul_fmpq(re0, re0, S->vals + idx);
-        fmpq_poly_add(re0, re0, S->CR + k);
-        fmpq_poly_scalar_mul_fmpq(re1, re1, S->vals + idx);
-        fmpq_poly_add(re1, re1, S->CS + k);
+    memset(row, 0, sizeof *row);
+    row->inside = row->on = row->outside = -1;   /* no counts: the verdict's two routes only */
+    row->d.rho_lower = 0;
+    row->d.rho_upper = INFINITY;
+    row->d.level = RS_LEVEL_EXACT;
+    for (k = 0; k < S->s->nvars; k++) pt[k] = x + k;
+    if (S->naxes == 1) fmpq_set(x + S->var[0], S->vals[0] + idx);
+    else {
+        fmpq_set(x + S->var[0], S->vals[0] + idx % S->K1);
+        fmpq_set(x + S->var[1], S->vals[1] + idx / S->K1);
     }
+    fmpq_poly_init(re0); fmpq_poly_init(re1); fmpq_poly_init(zero);
+    rs_run_cx_eval(re0, S->p0, pt, S->s);
+    rs_run_cx_eval(re1, S->p1, pt, S->s);
     r = rs_an_qd_zplane_verdict(&code, re0, zero, re1, zero, S->n, S->d);
     if (r != RS_OK) rs_error_set(err, r, "Schur-Cohn over Q(sqrt %ld)(i) and the certified roots disagree",
                                  (long) S->d);
     row->d.status = r;
     row->d.verdict = r == RS_OK ? code : -1;
-    row->d.level = RS_LEVEL_EXACT;
-    row->inside = -1;   /* no counts: the verdict's two routes only */
+    if (r == RS_OK && S->of == RS_SWEEP_OF_RADIUS && code >= 0 && code != RS_STATUS_SINGULAR) {
+        r = qd_sweep_radius(row, re0, re1, S, err);
+        row->d.status = r;
+        if (r != RS_OK) row->d.verdict = -1;
+    }
     fmpq_poly_clear(re0); fmpq_poly_clear(re1); fmpq_poly_clear(zero);
+    _fmpq_vec_clear(x, S->s->nvars);
+    flint_free(pt);
 }
 
-int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_variant_t *v,
-                         slong var, const fmpq *vals)
+int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                         const rs_variant_t *v, const fmpq *const *vals)
 {
     qd_sweep_t *S = calloc(1, sizeof *S);
+    const rs_scheme_struct *s = v->s;
+    slong k, nfree;
     m->model = S;
     m->point = qd_sweep_point;
     m->serial = 0;
-    S->vals = vals;
-    S->d = v->s->sqrt_d;
-    rs_an_qd_zplane_coeffs(&S->CR, &S->CS, &S->K, &S->n, v, var);
-    if (rs_run_count_free(v->cp->p, v->s, var) > 0)
-        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep over Q(sqrt d) needs the other parameters set "
-                            "to numbers%s", "");
+    S->s = s;
+    S->d = s->sqrt_d;
+    S->of = R->of;
+    S->naxes = R->naxes;
+    S->K1 = R->axis[0].count;
+    S->max_prec = run->opt->max_prec;
+    fmpz_mpoly_init(S->p0, s->zctx);
+    fmpz_mpoly_init(S->p1, s->zctx);
+    rs_charpoly_coeff(S->p0, v->cp->p, 0, s->sqrt_var, s->zctx);
+    rs_charpoly_coeff(S->p1, v->cp->p, 1, s->sqrt_var, s->zctx);
+    S->n = fmpz_mpoly_degree_si(v->cp->p, s->lambda_var, s->zctx);
+    for (k = 0; k < R->naxes; k++) {
+        S->var[k] = R->axis[k].var;
+        S->vals[k] = vals[k];
+    }
+    nfree = rs_run_count_free(v->cp->p, s, S->var[0]);
+    if (R->naxes == 2 && fmpz_mpoly_degree_si(v->cp->p, S->var[1], s->zctx) > 0) nfree--;
+    if (nfree > 0)
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s over Q(sqrt d) needs the other parameters set "
+                            "to numbers", R->naxes == 1 ? "sweep" : "map");
     if (S->n < 1)
-        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "sweep: the characteristic polynomial must depend on "
-                            "lambda%s", "");
+        return rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s: the characteristic polynomial must depend on "
+                            "lambda", R->naxes == 1 ? "sweep" : "map");
     return RS_OK;
 }
 
 void rs_an_qd_sweep_model_free(rs_sweep_model_t *m)
 {
     qd_sweep_t *S = m->model;
-    slong k;
     if (S == NULL) return;
-    for (k = 0; k <= FLINT_MAX(S->K, 0); k++) {
-        fmpq_poly_clear(S->CR + k);
-        fmpq_poly_clear(S->CS + k);
-    }
-    flint_free(S->CR);
-    flint_free(S->CS);
+    fmpz_mpoly_clear(S->p0, S->s->zctx);
+    fmpz_mpoly_clear(S->p1, S->s->zctx);
     free(S);
     m->model = NULL;
 }
@@ -234,5 +313,112 @@ void rs_an_qd_sweep_json(json_t *o, rs_run_t *run, const json_t *verdicts)
         "p over Q(sqrt d) at each point: Schur-Cohn over Q(sqrt d)(i) with exact signs and the certified roots "
         "(Arb, sqrt d a ball), which must agree at every point (exit 3 otherwise); undecided: a root on or too "
         "near the circle, marginal and unstable not told apart over Q(sqrt d)"));
+    if (strcmp(json_string_value(json_object_get(o, "of")) ? json_string_value(json_object_get(o, "of")) : "", "radius")
+        == 0)
+        json_object_set_new(o, "radius_method", json_string(
+            "the spectral radius of p = p0 + sqrt(d) p1 from its certified roots (Arb, sqrt d a ball), printed "
+            "rounded outward; it must agree with the exact verdict (stable: lower end < 1, unstable: upper end "
+            "> 1; exit 3 otherwise)"));
     (void) verdicts;
+}
+
+/* ---- map N1 ..., N2 ... of two real parameters over Q(sqrt d) --------------------- */
+
+typedef struct {
+    rs_run_t *run;
+    const rs_an_req_t *req;
+    rs_variant_t *v;
+    const rs_sweep_request_t *R;
+    fmpq *const *xs;
+} qd_deco_t;
+
+/* the map's "over", "rk", "method", and where p depends on both axes the
+ * boundary: the norms c0^2 - d c1^2 of jury's conditions c0 + sqrt(d) c1
+ * over Q(sqrt d)[N1, N2] and of the leading coefficient (the norm vanishes
+ * where the condition or its conjugate does: a superset of the boundary) */
+static void qd_map_decorate(json_t *o, void *arg)
+{
+    qd_deco_t *D = arg;
+    const rs_scheme_struct *s = D->v->s;
+    const rs_sweep_axis_t *X = D->R->axis;
+    rs_error_struct saved = *D->run->err;
+    fmpz_mpoly_struct *c0 = NULL, *c1 = NULL, *g;
+    fmpz_mpoly_t a, a0, a1;
+    char **org;
+    int *ne = NULL;
+    slong n = 0, k, ng;
+    rs_an_qd_sweep_json(o, D->run, NULL);
+    if (fmpz_mpoly_degree_si(D->v->cp->p, X[0].var, s->zctx) <= 0
+        || fmpz_mpoly_degree_si(D->v->cp->p, X[1].var, s->zctx) <= 0)
+        return;
+    if (rs_an_qd_jury_conds(&c0, &c1, &ne, &n, D->run, D->req, D->v, 0) != RS_OK) {
+        json_object_set_new(o, "boundary_note", json_string(D->run->err->msg));
+        *D->run->err = saved;
+        return;
+    }
+    g = flint_malloc((size_t) (n + 1) * sizeof(fmpz_mpoly_struct));
+    org = flint_malloc((size_t) (n + 1) * sizeof(char *));
+    fmpz_mpoly_init(a, s->zctx); fmpz_mpoly_init(a0, s->zctx); fmpz_mpoly_init(a1, s->zctx);
+    rs_charpoly_coeff(a, D->v->cp->p, fmpz_mpoly_degree_si(D->v->cp->p, s->lambda_var, s->zctx), s->lambda_var,
+                      s->zctx);
+    rs_charpoly_coeff(a0, a, 0, s->sqrt_var, s->zctx);
+    rs_charpoly_coeff(a1, a, 1, s->sqrt_var, s->zctx);
+    fmpz_mpoly_init(g, s->zctx);
+    rs_an_qd_mpoly_norm(g, a0, a1, s);
+    org[0] = strdup("norm of the leading coefficient a_n");
+    for (k = 0, ng = 1; k < n; k++, ng++) {
+        char buf[96];
+        fmpz_mpoly_init(g + ng, s->zctx);
+        rs_an_qd_mpoly_norm(g + ng, c0 + k, c1 + k, s);
+        snprintf(buf, sizeof buf, "norm of jury's condition %ld, Schur-Cohn over Q(sqrt %ld)", (long) k + 1,
+                 (long) s->sqrt_d);
+        org[ng] = strdup(buf);
+    }
+    rs_an_map_boundary_factors(o, D->run, D->v, D->R, D->xs, g, org, ng,
+        "zero sets of the irreducible factors of the norms c0^2 - d c1^2 of jury's conditions c0 + sqrt(d) c1 > 0 "
+        "over Q(sqrt d)[N1, N2] and of the leading coefficient: exact signs at the grid points, a crossing "
+        "between two neighbours of a row (column) placed by linear interpolation; a norm also vanishes where "
+        "the conjugate condition does, and every factor is drawn, so curves separating nothing are included");
+    for (k = 0; k < ng; k++) {
+        fmpz_mpoly_clear(g + k, s->zctx);
+        free(org[k]);
+    }
+    for (k = 0; k < n; k++) {
+        fmpz_mpoly_clear(c0 + k, s->zctx);
+        fmpz_mpoly_clear(c1 + k, s->zctx);
+    }
+    flint_free(c0); flint_free(c1); flint_free(ne); flint_free(g); flint_free(org);
+    fmpz_mpoly_clear(a, s->zctx); fmpz_mpoly_clear(a0, s->zctx); fmpz_mpoly_clear(a1, s->zctx);
+}
+
+int rs_an_qd_map(rs_run_t *run, const rs_an_req_t *req)
+{
+    const rs_sweep_request_t *R = (const rs_sweep_request_t *) req->u.sweep;
+    const rs_sweep_axis_t *X = R->axis;
+    rs_variant_t *v;
+    rs_sweep_model_t m;
+    fmpq *xs[2];
+    qd_deco_t D;
+    double t0 = rs_sweep_now();
+    int r = R->of != RS_SWEEP_OF_MODES ? rs_sweep_estimate_map(run, req->q, (double) X[0].count * (double) X[1].count)
+            : rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "over Q(sqrt d) a map is `of stability` or `of "
+                           "radius`%s", "");
+    if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
+    if (r != RS_OK) return r;
+    xs[0] = rs_grid_axis(X[0].from, X[0].to, X[0].count);
+    xs[1] = rs_grid_axis(X[1].from, X[1].to, X[1].count);
+    m.model = NULL;
+    r = rs_an_qd_sweep_model(&m, run, req->q, R, v, (const fmpq *const *) xs);
+    if (r == RS_OK) {
+        D.run = run;
+        D.req = req;
+        D.v = v;
+        D.R = R;
+        D.xs = xs;
+        r = rs_sweep_map_finish(run, req->q, R, &m, (const fmpq *const *) xs, t0, qd_map_decorate, &D);
+    }
+    rs_an_qd_sweep_model_free(&m);
+    _fmpq_vec_clear(xs[0], X[0].count);
+    _fmpq_vec_clear(xs[1], X[1].count);
+    return r;
 }

@@ -218,8 +218,8 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     return r;
 }
 
-/* a sweep of a model over Q(sqrt d) (rk sdirk2, sdirk3): of stability, each
- * point by an_qd_map.c's verdict */
+/* a sweep of a model over Q(sqrt d) (rk sdirk2, sdirk3): of stability or
+ * radius, each point by an_qd_map.c's verdict (and certified radius) */
 static int qd_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     slong K = R->axis[0].count, npoints = K + 1, i;
@@ -229,14 +229,14 @@ static int qd_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     rs_sweep_model_t m;
     fmpq *vals;
     double t0 = rs_sweep_now();
-    int r = R->of == RS_SWEEP_OF_STABILITY ? rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep")
-            : rs_req_error(run, q, q->text, RS_ERR_INPUT, "over Q(sqrt d) a sweep is `of stability` (exact per "
-                           "point); the radius and modes run at set values%s", "");
+    int r = R->of != RS_SWEEP_OF_MODES ? rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep")
+            : rs_req_error(run, q, q->text, RS_ERR_INPUT, "over Q(sqrt d) a sweep is `of stability` or `of radius` "
+                           "(exact per point, the radius certified); modes run at set values (analyse modes)%s", "");
     if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;
     vals = _fmpq_vec_init(npoints);
     for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
-    r = rs_an_qd_sweep_model(&m, run, q, v, R->axis[0].var, vals);
+    r = rs_an_qd_sweep_model(&m, run, q, R, v, (const fmpq *const *) &vals);
     if (r == RS_OK) {
         r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, 0);
         if (r == RS_OK) {
