@@ -104,11 +104,16 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
                      "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
                      (long) run->m->qd->d, (long) run->m->qd->d);
+        else if (strcmp(n, "map") == 0 || strcmp(n, "sweep") == 0 || strcmp(n, "bilinear") == 0)
+            snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) (rk %s) runs without complex "
+                     "set values only (it would need Q(sqrt %ld)(i) with the complex value substituted); at "
+                     "complex set values stability, radius, modes, simulate, jury, hurwitz, routh, region NAME and "
+                     "claim run", n, (long) run->m->qd->d, run->m->qd->tableau, (long) run->m->qd->d);
         else
-            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
-                     "routh, region, claim, bilinear, sweep (of stability or radius) or map without complex set values: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
-                     "those are decided over Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d,
-                     (long) run->m->qd->d);
+            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, "
+                     "hurwitz, routh, region, claim, bilinear, sweep (of stability or radius) or map: %s is not "
+                     "available for rk %s (its coefficients are in Q(sqrt %ld); limit and expect are not done over "
+                     "Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d, (long) run->m->qd->d);
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
 }

@@ -667,13 +667,16 @@ PY
     if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map re(z), im(z) over Q(sqrt 2)(i), Q(sqrt 3)(i): SDIRK2, SDIRK3 grids match |R(z)| from the tableaux (mpmath), the locus |R| = 1, equal axes"
     else fail "sdirk z-plane maps: rc=$rc $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk z-plane maps: no python3 mpmath"; fi
-# sweep q ... of stability over Q(sqrt 2) (an_qd_map.c): every point against |R(q)| from the
-# tableau in mpmath (stable < 1, unstable > 1, undecided = 1: q = 0 only; hand values in
-# cases/complex/sdirk2-region.case: unstable on (0, 6 + 4 sqrt 2), stable beyond); of radius refused
+# sweep q ... of stability and of radius over Q(sqrt 2) (an_qd_map.c): every point against
+# |R(q)| from the tableau in mpmath (stable < 1, unstable > 1, undecided = 1: q = 0 only; hand
+# values in cases/complex/sdirk2-region.case: unstable on (0, 6 + 4 sqrt 2), stable beyond);
+# the certified [radius_lower, radius_upper] must contain |R(q)| (the one nonzero root of p);
+# of modes refused (exit 2)
 if python3 -c 'import mpmath' 2>/dev/null; then
     "$RS" --json --analyse "sweep q from -2 to 16 steps 72 of stability" cases/complex/sdirk2-region.case >"$T/sw.json" 2>"$T/err"; rc=$?
-    "$RS" --analyse "sweep q from -2 to 16 steps 72" cases/complex/sdirk2-region.case >/dev/null 2>&1; rr=$?
-    res=$(python3 - "$T/sw.json" <<'PY'
+    "$RS" --json --analyse "sweep q from -2 to 16 steps 72" cases/complex/sdirk2-region.case >"$T/swr.json" 2>>"$T/err" || rc=7
+    "$RS" --analyse "sweep q from -2 to 16 steps 72 of modes h=1 reference=1" cases/complex/sdirk2-region.case >/dev/null 2>&1; rr=$?
+    res=$(python3 - "$T/sw.json" "$T/swr.json" <<'PY'
 import json, sys, mpmath as mp
 from fractions import Fraction
 mp.mp.dps = 50
@@ -682,20 +685,46 @@ def R(z):   # SDIRK2: A = [g, 0; 1-g, g], b = (1-g, g), one step from y = 1
     k1 = z / (1 - g * z)
     k2 = z * (1 + (1 - g) * k1) / (1 - g * z)
     return 1 + (1 - g) * k1 + g * k2
-r = json.load(open(sys.argv[1]))["cases"][0]["results"][-1]
-bad, n = [], 0
-for row in r["rows"]:
-    x = Fraction(row[2]); a = abs(R(mp.mpf(x.numerator) / x.denominator))
-    want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
-    if row[3] != want: bad.append("q=%s: %s" % (x, row[3]))
-    n += 1
-if n != 73 or r.get("over") != "Q(sqrt 2)": bad.append("rows/over")
+bad = []
+for path in sys.argv[1:]:
+    r = json.load(open(path))["cases"][0]["results"][-1]
+    col = {c: k for k, c in enumerate(r["columns"])}
+    n = 0
+    for row in r["rows"]:
+        x = Fraction(row[col["q_exact"]]); a = abs(R(mp.mpf(x.numerator) / x.denominator))
+        want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
+        if row[col["verdict"]] != want: bad.append("q=%s: %s" % (x, row[col["verdict"]]))
+        if r["of"] == "radius" and not (row[col["radius_lower"]] <= float(a) * (1 + 1e-15)
+                                        and float(a) * (1 - 1e-15) <= row[col["radius_upper"]]):
+            bad.append("q=%s: radius [%s, %s], |R| = %s" % (x, row[col["radius_lower"]], row[col["radius_upper"]], a))
+        n += 1
+    if n != 73 or r.get("over") != "Q(sqrt 2)": bad.append("rows/over")
 print("yes" if not bad else "no " + "; ".join(bad[:5]))
 PY
 )
-    if [ "$rc" = 0 ] && [ "$rr" = 2 ] && [ "$res" = yes ]; then ok "sdirk2 sweep q of stability over Q(sqrt 2): 73 points match |R(q)| from the tableau (mpmath); of radius refused"
+    if [ "$rc" = 0 ] && [ "$rr" = 2 ] && [ "$res" = yes ]; then ok "sdirk2 sweep q of stability and of radius over Q(sqrt 2): 73 points match |R(q)| from the tableau (mpmath), radii contain it; of modes refused"
     else fail "sdirk2 sweep: rc=$rc rr=$rr $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 sweep: no mpmath"; fi
+
+# map a, c of two real parameters over Q(sqrt 2) (an_qd_map.c): cases/complex/sdirk2-coupled-map.case,
+# of radius (the default) and of stability, every point against rho(M) of the step matrix from the
+# stage equations (tests/cli/sdirk2_map2.py, mpmath), the boundary crossing a = 1 at the roots of
+# 17 c^4 - 92 c^2 + 124 (by hand in the case); Markdown and LaTeX print the map's summary
+if python3 -c 'import mpmath' 2>/dev/null; then
+    SM=cases/complex/sdirk2-coupled-map.case
+    "$RS" --json "$SM" >"$T/qm.json" 2>"$T/err"; rc=$?
+    "$RS" --json --analyse "map a 0 4 9, c -2 2 21 of stability" "$SM" >"$T/qms.json" 2>>"$T/err" || rc=7
+    r1=$(python3 tests/cli/sdirk2_map2.py "$T/qm.json" 2>&1); r2=$(python3 tests/cli/sdirk2_map2.py "$T/qms.json" 2>&1)
+    md=$("$RS" --markdown "$SM" 2>/dev/null); tex=$("$RS" --latex "$SM" 2>/dev/null)
+    if [ "$rc" = 0 ] && [ "$r1" = yes ] && [ "$r2" = yes ] \
+       && printf '%s' "$md" | grep -q '^### Map of the radius over (\$a\$, \$c\$)' \
+       && printf '%s' "$md" | grep -q '^Verdicts: stable 160, marginal 0, unstable 26, undecided 3\.' \
+       && printf '%s' "$md" | grep -q 'norm of jury' \
+       && printf '%s' "$tex" | grep -q 'subsection\*{Map of the radius over' \
+       && printf '%s' "$tex" | grep -q 'Decided by: exact 189 (every point on the exact side)'; then
+        ok "map a, c over Q(sqrt 2): every point and certified radius match rho of the step matrix (mpmath); boundary at a = 1; Markdown/LaTeX summary"
+    else fail "sdirk2 map a, c: rc=$rc $r1 / $r2 $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 map a, c: no mpmath"; fi
 
 # never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
 # (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
@@ -916,10 +945,11 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse "map" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*map is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: map refused with its reason (exit 2)"
-else fail "sdirk2 map refusal: rc=$rc $(head -1 "$T/err")"; fi
+# limit is not done over Q(sqrt d) (map, sweep and bilinear are, at real set values)
+"$RS" --analyse "limit q -> inf" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*limit is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: limit refused with its reason (exit 2)"
+else fail "sdirk2 limit refusal: rc=$rc $(head -1 "$T/err")"; fi
 # modes and simulate over Q(sqrt 2) at z = -1: p = D lambda - N has the one
 # root R(-1) = (20 - 2 sqrt 2)/49 (by hand, sdirk2-point.case) and the
 # charpoly's two roots at 0; sigma = ln R(-1), omega 0, damping ratio 1; the
