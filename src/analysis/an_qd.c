@@ -94,6 +94,7 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     if ((strcmp(n, "bilinear") == 0 || strcmp(n, "sweep") == 0) && run->c->ncsets == 0) return RS_OK;   /* an_qd_map.c */
     /* the z-plane of one parameter, or two real parameters: each point over Q(sqrt d) (an_qd_map.c) */
     if (strcmp(n, "map") == 0 && run->c->ncsets == 0) return RS_OK;
+    if (strcmp(n, "limit") == 0 && run->c->ncsets == 0) return RS_OK;   /* an_limit.c's qd_limit */
     {
         /* the message names the model's field and tableau */
         char msg[600];
@@ -104,15 +105,16 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
                      "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
                      (long) run->m->qd->d, (long) run->m->qd->d);
-        else if (strcmp(n, "map") == 0 || strcmp(n, "sweep") == 0 || strcmp(n, "bilinear") == 0)
+        else if (strcmp(n, "map") == 0 || strcmp(n, "sweep") == 0 || strcmp(n, "bilinear") == 0
+                 || strcmp(n, "limit") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) (rk %s) runs without complex "
                      "set values only (it would need Q(sqrt %ld)(i) with the complex value substituted); at "
                      "complex set values stability, radius, modes, simulate, jury, hurwitz, routh, region NAME and "
                      "claim run", n, (long) run->m->qd->d, run->m->qd->tableau, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, "
-                     "hurwitz, routh, region, claim, bilinear, sweep (of stability or radius) or map: %s is not "
-                     "available for rk %s (its coefficients are in Q(sqrt %ld); limit and expect are not done over "
+                     "hurwitz, routh, region, claim, bilinear, limit, sweep (of stability or radius) or map: %s is "
+                     "not available for rk %s (its coefficients are in Q(sqrt %ld); expect is not done over "
                      "Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d, (long) run->m->qd->d);
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }

@@ -9,8 +9,8 @@
 #include "analysis/sweep_impl.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
- * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
- * hurwitz (the last two with real set values only) */
+ * the analysis is not one of those an_qd.c lists (limit, map, sweep and bilinear with real
+ * set values only; expect never) */
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req);
 /* the case is Dahlquist's test equation: one subsystem, one state y' = F,
  * nothing else (R = N/D is read from p = D lambda - N) */

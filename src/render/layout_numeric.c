@@ -183,6 +183,15 @@ static void param_math(rs_render_t *r, const char *name)
     } else rs_render_math(r, name);
 }
 
+/* pre, the text s escaped, post (the same words in both derivations); nothing when s is NULL */
+static void say_esc(rs_render_t *r, const char *pre, const char *s, const char *post)
+{
+    if (s == NULL) return;
+    rs_render_say(r, pre, pre);
+    rs_render_esc(r, s);
+    rs_render_say(r, post, post);
+}
+
 /* the derivations' summary of a sweep or map: the grid, the counts, which
  * side decided, the field and methods, the boundary and the files */
 static void sweep_prose(rs_render_t *r, const json_t *o)
@@ -236,42 +245,22 @@ static void sweep_prose(rs_render_t *r, const json_t *o)
                    ? "every point by a certified radius at the level named, the numeric side"
                    : "exact: the exact side; the others by a certified radius at the level named, the numeric side");
     if (over != NULL) {
-        rs_render_say(r, "Over ", "Over ");
-        rs_render_esc(r, over);
-        if (rs_render_jstr(o, "rk") != NULL) {
-            rs_render_say(r, " (", " (");
-            rs_render_esc(r, rs_render_jstr(o, "rk"));
-            rs_render_say(r, ")", ")");
-        }
+        say_esc(r, "Over ", over, "");
+        say_esc(r, " (", rs_render_jstr(o, "rk"), ")");
         rs_render_say(r, ": ", ": ");
         if (json_is_array(json_object_get(o, "methods")))
-            for (k = 0; k < json_array_size(json_object_get(o, "methods")); k++) {
-                rs_render_say(r, k ? " and " : "", k ? " and " : "");
-                rs_render_esc(r, json_string_value(json_array_get(json_object_get(o, "methods"), k)));
-            }
-        else if (rs_render_jstr(o, "method") != NULL) rs_render_esc(r, rs_render_jstr(o, "method"));
+            for (k = 0; k < json_array_size(json_object_get(o, "methods")); k++)
+                say_esc(r, k ? " and " : "", json_string_value(json_array_get(json_object_get(o, "methods"), k)), "");
+        else say_esc(r, "", rs_render_jstr(o, "method"), "");
         rs_render_say(r, ".", ".");
-        if (rs_render_jstr(json_object_get(o, "cross_check"), "method") != NULL) {
-            rs_render_say(r, " Cross-check: ", " Cross-check: ");
-            rs_render_esc(r, rs_render_jstr(json_object_get(o, "cross_check"), "method"));
-            rs_render_say(r, ".", ".");
-        }
-        if (rs_render_jstr(o, "radius_method") != NULL) {
-            rs_render_say(r, " Radius: ", " Radius: ");
-            rs_render_esc(r, rs_render_jstr(o, "radius_method"));
-            rs_render_say(r, ".", ".");
-        }
-        if (rs_render_jstr(o, "note") != NULL) {
-            rs_render_say(r, " Note: ", " Note: ");
-            rs_render_esc(r, rs_render_jstr(o, "note"));
-            rs_render_say(r, ".", ".");
-        }
+        say_esc(r, " Cross-check: ", rs_render_jstr(json_object_get(o, "cross_check"), "method"), ".");
+        say_esc(r, " Radius: ", rs_render_jstr(o, "radius_method"), ".");
+        say_esc(r, " Note: ", rs_render_jstr(o, "note"), ".");
         rs_render_say(r, "\n\n", "\n\n");
     }
     if (rs_render_jstr(o, "boundary_locus") != NULL) {
         const json_t *lp = json_object_get(o, "locus_points");
-        rs_render_say(r, "Boundary locus (overlaid on the plot): ", "Boundary locus (overlaid on the plot): ");
-        rs_render_esc(r, rs_render_jstr(o, "boundary_locus"));
+        say_esc(r, "Boundary locus (overlaid on the plot): ", rs_render_jstr(o, "boundary_locus"), "");
         if (lp != NULL)
             rs_render_sayf(r, "; %lld points drawn, %lld dropped", "; %lld points drawn, %lld dropped",
                            rs_render_jint(lp, "drawn"), rs_render_jint(lp, "dropped"));
@@ -285,16 +274,11 @@ static void sweep_prose(rs_render_t *r, const json_t *o)
             const json_t *c = json_array_get(conds, k);
             rs_render_item_begin(r);
             if (json_is_string(json_object_get(c, "poly"))) rs_render_math(r, rs_render_jstr(c, "poly"));
-            rs_render_say(r, " (", " (");
-            rs_render_esc(r, rs_render_jstr(c, "origin") ? rs_render_jstr(c, "origin") : "");
-            rs_render_say(r, ")", ")");
+            say_esc(r, " (", rs_render_jstr(c, "origin"), ")");
             rs_render_item_end(r);
         }
         rs_render_list_end(r);
-        if (rs_render_jstr(b, "method") != NULL) {
-            rs_render_esc(r, rs_render_jstr(b, "method"));
-            rs_render_say(r, ".\n\n", ".\n\n");
-        }
+        say_esc(r, "", rs_render_jstr(b, "method"), ".\n\n");
     }
     if (rs_render_jstr(o, "csv") != NULL) {
         rs_render_say(r, "Table written to ", "Table written to ");

@@ -706,6 +706,39 @@ PY
     else fail "sdirk2 sweep: rc=$rc rr=$rr $res $(head -1 "$T/err")"; fi
 else ok "skipped sdirk2 sweep: no mpmath"; fi
 
+# limit q -> 0|inf over Q(sqrt d) (an_limit.c's qd_limit).  By hand: SDIRK3 (g = (3 + sqrt 3)/6,
+# A = [g, 0; 1-2g, g], b = (1/2, 1/2)) has R(z) = (1 + (1-2g) z + (1/2 - 2g + g^2) z^2)/(1 - g z)^2,
+# R(inf) = (1/2 - 2g + g^2)/g^2 = 1 - sqrt 3 (a root of lambda^2 - 2 lambda - 2, the other root
+# 1 + sqrt 3 is the conjugate's and must not be listed), R(0) = 1; SDIRK2 is L-stable: R(inf) = 0.
+# Independently the value against R(10^30) from the tableau in mpmath; the two stage roots at 0 stay.
+if python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json --analyse "limit q -> inf" cases/complex/sdirk3-astability.case >"$T/l3.json" 2>"$T/err"; rc=$?
+    "$RS" --json --analyse "limit q -> 0" cases/complex/sdirk3-astability.case >"$T/l0.json" 2>>"$T/err" || rc=7
+    "$RS" --json --analyse "limit q -> inf" cases/complex/sdirk2-region.case >"$T/l2.json" 2>>"$T/err" || rc=8
+    res=$(python3 - "$T/l3.json" "$T/l0.json" "$T/l2.json" <<'PY'
+import json, sys, mpmath as mp
+mp.mp.dps = 50
+g = (3 + mp.sqrt(3)) / 6
+def R(z):   # SDIRK3: one step from y = 1, the two stages solved
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - 2 * g) * k1) / (1 - g * z)
+    return 1 + (k1 + k2) / 2
+res = [json.load(open(p))["cases"][0]["results"][-1] for p in sys.argv[1:]]
+bad = []
+r3 = sorted((x for x in res[0]["roots"]), key=lambda x: x["abs"])
+if [x["multiplicity"] for x in r3] != [2, 1] or r3[1].get("minpoly") != "lambda^2 - 2*lambda - 2" \
+   or abs(mp.mpf(r3[1]["value"]) - R(mp.mpf(10) ** 30)) > 1e-18 or abs(mp.mpf(r3[1]["value"]) - (1 - mp.sqrt(3))) > 1e-18:
+    bad.append("sdirk3 inf %s" % r3)
+r0 = {str(x["value"]): x["multiplicity"] for x in res[1]["roots"]}
+if r0 != {"0": 2, "1": 1} or res[1].get("over") != "Q(sqrt 3)": bad.append("sdirk3 0 %s" % r0)
+if not res[2]["all_roots_to_zero"] or res[2].get("over") != "Q(sqrt 2)": bad.append("sdirk2 inf %s" % res[2]["roots"])
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "limit over Q(sqrt d): SDIRK3 R(inf) = 1 - sqrt 3 (not its conjugate), R(0) = 1; SDIRK2 L-stable"
+    else fail "limit over Q(sqrt d): rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped limit over Q(sqrt d): no mpmath"; fi
+
 # map a, c of two real parameters over Q(sqrt 2) (an_qd_map.c): cases/complex/sdirk2-coupled-map.case,
 # of radius (the default) and of stability, every point against rho(M) of the step matrix from the
 # stage equations (tests/cli/sdirk2_map2.py, mpmath), the boundary crossing a = 1 at the roots of
@@ -945,11 +978,11 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-# limit is not done over Q(sqrt d) (map, sweep and bilinear are, at real set values)
-"$RS" --analyse "limit q -> inf" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*limit is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: limit refused with its reason (exit 2)"
-else fail "sdirk2 limit refusal: rc=$rc $(head -1 "$T/err")"; fi
+# expect is not done over Q(sqrt d)
+"$RS" --analyse "expect charpoly lambda - 1" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*expect is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: expect refused with its reason (exit 2)"
+else fail "sdirk2 expect refusal: rc=$rc $(head -1 "$T/err")"; fi
 # modes and simulate over Q(sqrt 2) at z = -1: p = D lambda - N has the one
 # root R(-1) = (20 - 2 sqrt 2)/49 (by hand, sdirk2-point.case) and the
 # charpoly's two roots at 0; sigma = ln R(-1), omega 0, damping ratio 1; the
