@@ -2,6 +2,7 @@
  * drop, the multiplicity of z = 0, p(1) and p(-1). */
 #include "analysis/registry.h"
 #include "recstab/bilinear.h"
+#include "analysis/an_qd.h"
 
 /* ---- bilinear ------------------------------------------------------------- */
 
@@ -43,5 +44,7 @@ int rs_an_bilinear(rs_run_t *run, const rs_an_req_t *req)
 {
     /* at complex set values: over Q(i) (an_complex.c) */
     if (rs_an_complex_mode(run)) return rs_an_complex_bilinear(run, req);
+    /* rk sdirk2, sdirk3: over Q(sqrt d) (an_qd_map.c) */
+    if (run->m->qd != NULL) return rs_an_qd_bilinear(run, req);
     return bilinear_real(run, req);
 }

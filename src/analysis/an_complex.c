@@ -31,6 +31,7 @@
 #include "stability/schur_complex.h"
 #include "recstab/radius.h"
 #include "recstab/bilinear.h"
+#include "analysis/an_qd.h"
 
 int rs_an_complex_mode(const rs_run_t *run) { return run->c->ncsets > 0; }
 
@@ -972,8 +973,8 @@ static void zplane_poly(fmpz_mpoly_t re, fmpz_mpoly_t im, const fmpq_poly_struct
  * decomposition; a point on an arc that separates nothing (both sides
  * stable, or both not stable) is dropped; the counts into nd[0] (drawn),
  * nd[1] (dropped). */
-static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, slong K, slong nphi,
-                         const rs_region_arcs_t *A, slong *nd)
+static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI, const fmpq_poly_struct *CS,
+                         slong d, slong K, slong nphi, const rs_region_arcs_t *A, slong *nd)
 {
     size_t cap = 4096, len = 0;
     char *out = malloc(cap);
@@ -997,6 +998,17 @@ static char *locus_table(const fmpq_poly_struct *CR, const fmpq_poly_struct *CI,
             acb_poly_init(cp);
             if (CI != NULL) acb_poly_set2_fmpq_poly(cp, CR + k, CI + k, prec);
             else acb_poly_set_fmpq_poly(cp, CR + k, prec);
+            if (CS != NULL) {
+                /* + sqrt(d) CS[k] (over Q(sqrt d)) */
+                acb_poly_t sp;
+                acb_poly_init(sp);
+                acb_poly_set_fmpq_poly(sp, CS + k, prec);
+                arb_sqrt_ui(acb_realref(x), (ulong) d, prec);
+                arb_zero(acb_imagref(x));
+                acb_poly_scalar_mul(sp, sp, x, prec);
+                acb_poly_add(cp, cp, sp, prec);
+                acb_poly_clear(sp);
+            }
             acb_poly_evaluate(c, cp, lam, prec);
             acb_poly_set_coeff_acb(pz, k, c);
             acb_poly_clear(cp);
@@ -1111,7 +1123,8 @@ static void zplane_coeffs_clear(fmpq_poly_struct *CR, fmpq_poly_struct *CI, slon
  * may give N unstable (a circle root and its conjugate both roots of p). */
 typedef struct {
     const fmpq_poly_struct *CR, *CI;
-    slong K, n, K1, stride;
+    const fmpq_poly_struct *CS;    /* over Q(sqrt d): the sqrt(d) parts (an_qd_map.c), else NULL */
+    slong K, n, K1, stride, d;
     const fmpq *x, *y;
     const char *name;
 } zmap_t;
@@ -1123,12 +1136,26 @@ static void zmap_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t e
     fmpq_poly_t re, im;
     rs_status_t st = RS_STATUS_UNSTABLE;
     int r;
+    int code = -1;
     fmpq_poly_init(re); fmpq_poly_init(im);
     eval_coeffs(re, im, Z->CR, Z->CI, Z->K, Z->x + i, Z->y + j);
-    r = rs_routh_complex_checked_status(&st, re, im, Z->n, err);
-    /* a singular point has no certified side (p conj(p) has lower degree) */
-    row->inside = 0;
-    if (r == RS_OK && idx % Z->stride == 0 && st != RS_STATUS_SINGULAR) {
+    if (Z->CS != NULL) {
+        /* over Q(sqrt d)(i): p = re + i im + sqrt(d) (re1 + i im1), both routes at every point */
+        fmpq_poly_t re1, im1;
+        fmpq_poly_init(re1); fmpq_poly_init(im1);
+        eval_coeffs(re1, im1, Z->CS, NULL, Z->K, Z->x + i, Z->y + j);
+        r = rs_an_qd_zplane_verdict(&code, re, im, re1, im1, Z->n, Z->d);
+        if (r != RS_OK) rs_error_set(err, r, "Schur-Cohn over Q(sqrt %ld)(i) and the certified roots disagree",
+                                     (long) Z->d);
+        fmpq_poly_clear(re1); fmpq_poly_clear(im1);
+        row->inside = 1;
+    } else {
+        r = rs_routh_complex_checked_status(&st, re, im, Z->n, err);
+        code = (int) st;
+        /* a singular point has no certified side (p conj(p) has lower degree) */
+        row->inside = 0;
+    }
+    if (Z->CS == NULL && r == RS_OK && idx % Z->stride == 0 && st != RS_STATUS_SINGULAR) {
         r = rs_cx_norm_check(st, re, im, err);
         row->inside = 1;   /* here: cross-checked */
     }
@@ -1139,7 +1166,7 @@ static void zmap_point(rs_sweep_row_t *row, slong idx, void *model, rs_error_t e
         free(zs);
     }
     row->d.status = r;
-    row->d.verdict = r == RS_OK ? (int) st : -1;
+    row->d.verdict = r == RS_OK ? code : -1;
     row->d.level = RS_LEVEL_EXACT;
     fmpq_poly_clear(re); fmpq_poly_clear(im);
 }
@@ -1160,7 +1187,7 @@ static void zmap_put(FILE *f, const rs_sweep_row_t *rows, slong lo, slong hi, vo
         const fmpq *x = Z->x + idx % Z->K1, *y = Z->y + idx / Z->K1;
         char *xs = fmpq_get_str(NULL, 10, x), *ys = fmpq_get_str(NULL, 10, y);
         fprintf(f, "%ld,%ld,%ld,%.17g,%.17g,%s,%s,%s,%d,exact\n", (long) idx, (long) (idx % Z->K1),
-                (long) (idx / Z->K1), fmpq_get_d(x), fmpq_get_d(y), xs, ys, rs_status_name((rs_status_t) w->d.verdict),
+                (long) (idx / Z->K1), fmpq_get_d(x), fmpq_get_d(y), xs, ys, rs_sweep_verdict_name(w->d.verdict),
                 w->d.verdict);
         flint_free(xs);
         flint_free(ys);
@@ -1195,7 +1222,7 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     const cmap_req_t *m = req->u.sweep;
     const char *name = run->c->params[m->param].name;
     rs_variant_t *v;
-    fmpq_poly_struct *CR = NULL, *CI = NULL;
+    fmpq_poly_struct *CR = NULL, *CI = NULL, *CS = NULL;
     fmpq *xs[2] = {NULL, NULL};
     slong K = 0, n = 0, k, npoints = m->n[0] * m->n[1], cap = run->opt->sweep.json_rows;
     char pre[16], pim[16], what[64], desc[200], header[160];
@@ -1207,7 +1234,8 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     double t0 = rs_sweep_now();
     int r = rs_run_variant_one_free(&v, run, q, req->rest, m->param, "map");
     if (r != RS_OK) return r;
-    if (!zplane_coeffs(&CR, &CI, &K, &n, v, m->param)) {
+    if (v->s->sqrt_d > 0) rs_an_qd_zplane_coeffs(&CR, &CS, &K, &n, v, m->param);   /* over Q(sqrt d) */
+    else if (!zplane_coeffs(&CR, &CI, &K, &n, v, m->param)) {
         char msg[300];
         snprintf(msg, sizeof msg, "map re(%s), im(%s): the char line depends on a parameter other than %s", name,
                  name, name);
@@ -1219,7 +1247,7 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     else
         r = rs_sweep_estimate_map(run, q, (double) npoints);
     if (r != RS_OK) {
-        zplane_coeffs_clear(CR, CI, K);
+        zplane_coeffs_clear(CR, CI != NULL ? CI : CS, K);
         return r;
     }
     for (k = 0; k < 2; k++) {
@@ -1234,6 +1262,8 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     snprintf(header, sizeof header, "index,i,j,%s,%s,%s_exact,%s_exact,verdict,code,decided_by\n", pre, pim, pre, pim);
     Z.CR = CR;
     Z.CI = CI;
+    Z.CS = CS;
+    Z.d = v->s->sqrt_d;
     Z.K = K;
     Z.n = n;
     Z.K1 = m->n[0];
@@ -1255,8 +1285,10 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
         rs_error_struct saved = *run->err;
         char *loc;
         /* only the locus arcs that separate stable from not stable are drawn */
-        if (zarcs_init(&Za, run, CR, CI, K, n, name) != RS_OK) *run->err = saved;
-        loc = locus_table(CR, CI, K, 720, Za.A, nd);
+        /* (over Q(sqrt d) there is no decomposition of the plane: every locus point is drawn) */
+        if (CS != NULL) Za.A = NULL;
+        else if (zarcs_init(&Za, run, CR, CI, K, n, name) != RS_OK) *run->err = saved;
+        loc = locus_table(CR, CI, CS, Z.d, K, 720, Za.A, nd);
         json_t *ranges = json_array(), *real = json_pack("[ii]", 3, 4);
         o = json_object();
         json_object_set_new(o, "analysis", json_string("map"));
@@ -1280,15 +1312,21 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
                             (json_int_t) T.verdicts[1], "unstable", (json_int_t) T.verdicts[2], "singular",
                             (json_int_t) T.verdicts[4]));
         json_object_set_new(o, "decided_by", json_pack("{sI}", "exact", (json_int_t) nrow));
+        if (CS != NULL) rs_an_qd_zplane_json(o, run, T.verdicts[5], put.checked);
+        else {
         json_object_set_new(o, "methods", json_pack("[ss]", "schur-cohn over Q(i)", "bilharz (bilinear)"));
         json_object_set_new(o, "cross_check", json_pack("{sIss}", "points", (json_int_t) put.checked, "method",
                             "the certified ladder (Arb roots, exact where they cannot decide) on p conj(p) at every "
                             "point of a sample of about 256: stable iff the exact verdict is, unstable where it is"));
+        }
         json_object_set_new(o, "seconds", json_real(rs_sweep_now() - t0));
         json_object_set_new(o, "csv", json_null());
         if (K == 1) {
             char *p0, *p1, *buf;
-            if (CI != NULL) {
+            if (CS != NULL) {
+                p0 = rs_an_qd_fmpq_poly_str(CR + 0, CS + 0, Z.d);
+                p1 = rs_an_qd_fmpq_poly_str(CR + 1, CS + 1, Z.d);
+            } else if (CI != NULL) {
                 p0 = rs_cx_poly_str(CR + 0, CI + 0, "lambda");
                 p1 = rs_cx_poly_str(CR + 1, CI + 1, "lambda");
             } else {
@@ -1299,7 +1337,7 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
             sprintf(buf, "%s = -(%s)/(%s), lambda = exp(i*phi), 0 <= phi < 2*pi", name, p0, p1);
             json_object_set_new(o, "boundary_locus", json_string(buf));
             free(buf);
-            if (CI != NULL) { free(p0); free(p1); }
+            if (CI != NULL || CS != NULL) { free(p0); free(p1); }
             else { flint_free(p0); flint_free(p1); }
         } else {
             char buf[200];
@@ -1309,13 +1347,16 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
         json_object_set_new(o, "locus_note", json_string("locus_table: the exact parametrisation evaluated in "
                             "floating point at 721 angles (for the plot); the verdicts are exact"));
         json_object_set_new(o, "locus_points", json_pack("{s:I,s:I,s:s}", "drawn", (json_int_t) nd[0], "dropped",
-            (json_int_t) nd[1], "method", Za.A != NULL
+            (json_int_t) nd[1], "method", CS != NULL
+            ? "every sampled locus point is drawn: over Q(sqrt d) the z-plane is not decomposed, so arcs "
+              "separating nothing are included"
+            : Za.A != NULL
             ? "a sampled locus point is drawn iff its arc in the decomposition of the z-plane by the Schur-Cohn "
               "conditions over Q(i)[re, im] (stable iff all > 0) has cells of different exact verdicts on its two "
               "sides (each decided at a rational sample by Schur-Cohn over Q(i) and Bilharz)"
             : "every sampled locus point is drawn: the decomposition of the z-plane did not complete, so arcs "
               "separating nothing are included"));
-        zarcs_clear(&Za);
+        if (CS == NULL) zarcs_clear(&Za);
         json_object_set_new(o, "locus_table", json_string(loc));
         free(loc);
         json_object_set_new(o, "substituted", json_deep_copy(v->assigned));
@@ -1346,7 +1387,7 @@ int rs_an_complex_map(rs_run_t *run, const rs_an_req_t *req)
     }
     rs_sweep_table_clear(&T);
     for (k = 0; k < 2; k++) _fmpq_vec_clear(xs[k], m->n[k]);
-    zplane_coeffs_clear(CR, CI, K);
+    zplane_coeffs_clear(CR, CI != NULL ? CI : CS, K);
     return r;
 }
 

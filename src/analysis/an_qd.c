@@ -90,6 +90,11 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
     /* one real parameter's cells over Q(sqrt d)(i) (an_qd_complex.c's rs_an_qd_cx_fiber) */
     if (strcmp(n, "region") == 0 && !req->u.region.forall && !req->u.region.twod) return RS_OK;
     if (strcmp(n, "claim") == 0 && qd_nfree(run) <= 1) return RS_OK;
+    /* the z-plane of one parameter, each point over Q(sqrt d)(i) (an_qd_map.c) */
+    if ((strcmp(n, "bilinear") == 0 || strcmp(n, "sweep") == 0) && run->c->ncsets == 0) return RS_OK;   /* an_qd_map.c */
+    /* the z-plane of one parameter, or two real parameters: each point over Q(sqrt d) (an_qd_map.c) */
+    if (strcmp(n, "map") == 0 && run->c->ncsets == 0) return RS_OK;
+    if (strcmp(n, "limit") == 0 && run->c->ncsets == 0) return RS_OK;   /* an_limit.c's qd_limit */
     {
         /* the message names the model's field and tableau */
         char msg[600];
@@ -100,11 +105,17 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
                      "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
                      (long) run->m->qd->d, (long) run->m->qd->d);
+        else if (strcmp(n, "map") == 0 || strcmp(n, "sweep") == 0 || strcmp(n, "bilinear") == 0
+                 || strcmp(n, "limit") == 0)
+            snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) (rk %s) runs without complex "
+                     "set values only (it would need Q(sqrt %ld)(i) with the complex value substituted); at "
+                     "complex set values stability, radius, modes, simulate, jury, hurwitz, routh, region NAME and "
+                     "claim run", n, (long) run->m->qd->d, run->m->qd->tableau, (long) run->m->qd->d);
         else
-            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
-                     "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "
-                     "those are decided over Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d,
-                     (long) run->m->qd->d);
+            snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, "
+                     "hurwitz, routh, region, claim, bilinear, limit, sweep (of stability or radius) or map: %s is "
+                     "not available for rk %s (its coefficients are in Q(sqrt %ld); expect is not done over "
+                     "Q(sqrt %ld))", n, run->m->qd->tableau, (long) run->m->qd->d, (long) run->m->qd->d);
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
 }

@@ -6,10 +6,11 @@
 #include "analysis/registry.h"
 #include "algebra/qsqrt.h"
 #include "analysis/an_region.h"
+#include "analysis/sweep_impl.h"
 
 /* RS_OK, or an input error at the request's line when the model has qd and
- * the analysis is not one of charpoly, stability, astability, radius, modes, simulate, jury,
- * hurwitz (the last two with real set values only) */
+ * the analysis is not one of those an_qd.c lists (limit, map, sweep and bilinear with real
+ * set values only; expect never) */
 int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req);
 /* the case is Dahlquist's test equation: one subsystem, one state y' = F,
  * nothing else (R = N/D is read from p = D lambda - N) */
@@ -173,5 +174,41 @@ int rs_an_qd_point(acb_ptr *z, slong *n, int *decided, rs_status_t *st, rs_rootc
  * "p0", "p1", "poly", "exact_check" (certified moduli against the Schur-Cohn
  * counts; a disagreement marks the run inconsistent) and "substituted" */
 int rs_an_qd_modes_roots(rs_radius_t rr, json_t *o, rs_run_t *run, const rs_request_t *q, slong digits);
+
+/* an_qd_map.c: map re(NAME), im(NAME) over Q(sqrt d) (an_complex.c's map).
+ * p = sum_k (CR[k] + sqrt(d) CS[k]) NAME^k with CR[k], CS[k] in Q[lambda],
+ * K its degree in NAME, *n in lambda (every other parameter set: v one free);
+ * clear as an_complex.c's coefficients */
+int rs_an_qd_zplane_coeffs(fmpq_poly_struct **CR, fmpq_poly_struct **CS, slong *K, slong *n, const rs_variant_t *v,
+                           slong param);
+/* the verdict code at a point of p = re0 + sqrt(d) re1 + i (im0 + sqrt(d)
+ * im1) of degree n: stable, unstable, singular (the degree drops), -1 (p
+ * vanishes) or RS_SWEEP_UNDECIDED (a root on or too near the circle); by
+ * Schur-Cohn over Q(sqrt d)(i) and the certified roots, RS_ERR_INCONSISTENT
+ * when they disagree */
+int rs_an_qd_zplane_verdict(int *code, const fmpq_poly_t re0, const fmpq_poly_t im0, const fmpq_poly_t re1,
+                            const fmpq_poly_t im1, slong n, slong d);
+/* "A0 + sqrt(d)*(A1)" of polynomials in lambda (malloc'd) */
+char *rs_an_qd_fmpq_poly_str(const fmpq_poly_t a0, const fmpq_poly_t a1, slong d);
+/* the map's "over", "rk", "methods", "cross_check" (checked points),
+ * verdicts' "undecided" and its note */
+void rs_an_qd_zplane_json(json_t *o, rs_run_t *run, slong undecided, slong checked);
+/* bilinear at real set values over Q(sqrt d): q(z) = q0 + sqrt(d) q1 */
+int rs_an_qd_bilinear(rs_run_t *run, const rs_an_req_t *req);
+/* sweep NAME ... and map N1 ..., N2 ... of real parameters over Q(sqrt d)
+ * (of stability or radius): the engine's model at the axis values vals[k]
+ * (read, not copied) of R's axes, every other parameter set (errors at q);
+ * each point by rs_an_qd_zplane_verdict, `of radius` also the certified
+ * radius of p (sqrt d a ball), checked against the verdict; free it with
+ * rs_an_qd_sweep_model_free (also after an error) */
+int rs_an_qd_sweep_model(rs_sweep_model_t *m, rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R,
+                         const rs_variant_t *v, const fmpq *const *vals);
+void rs_an_qd_sweep_model_free(rs_sweep_model_t *m);
+/* map N1 ..., N2 ... of two real parameters over Q(sqrt d) (every other
+ * parameter set): the engine's map with rs_an_qd_sweep_model, the boundary
+ * from the norms of jury's conditions (every factor drawn) */
+int rs_an_qd_map(rs_run_t *run, const rs_an_req_t *req);
+/* the sweep's "over", "rk" and "method" */
+void rs_an_qd_sweep_json(json_t *o, rs_run_t *run, const json_t *verdicts);
 
 #endif

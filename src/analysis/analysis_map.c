@@ -522,3 +522,14 @@ int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t
     _fmpq_vec_clear(xs[1], X[1].count);
     return r;
 }
+
+void rs_an_map_boundary_factors(json_t *o, rs_run_t *run, const rs_variant_t *v, const rs_sweep_request_t *R,
+                                fmpq *const *xs, const fmpz_mpoly_struct *g, char *const *origin, slong ng,
+                                const char *method)
+{
+    bcond_t *bc = NULL;
+    slong nb = 0, k;
+    for (k = 0; k < ng && rs_budget_check(NULL, "the map's boundary") == RS_OK; k++)
+        cx_bcond_add(&bc, &nb, g + k, origin[k], v->s->zctx);
+    map_boundary_rows(o, json_object(), run, v, R, xs[0], xs[1], bc, nb, NULL, method);
+}

@@ -18,6 +18,7 @@
 #include "numeric/grid.h"
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
+#include "analysis/an_qd.h"
 
 /* index,NAME,NAME_exact, then the columns of `of` (nref references for modes) */
 static json_t *sweep_columns(const char *name, int of, slong nref)
@@ -217,6 +218,40 @@ static int cx_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_req
     return r;
 }
 
+/* a sweep of a model over Q(sqrt d) (rk sdirk2, sdirk3): of stability or
+ * radius, each point by an_qd_map.c's verdict (and certified radius) */
+static int qd_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
+{
+    slong K = R->axis[0].count, npoints = K + 1, i;
+    rs_variant_t *v = NULL;
+    rs_sweep_table_t T;
+    json_t *cols = NULL;
+    rs_sweep_model_t m;
+    fmpq *vals;
+    double t0 = rs_sweep_now();
+    int r = R->of != RS_SWEEP_OF_MODES ? rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep")
+            : rs_req_error(run, q, q->text, RS_ERR_INPUT, "over Q(sqrt d) a sweep is `of stability` or `of radius` "
+                           "(exact per point, the radius certified); modes run at set values (analyse modes)%s", "");
+    if (r == RS_OK) r = rs_sweep_variant(&v, run, R);
+    if (r != RS_OK) return r;
+    vals = _fmpq_vec_init(npoints);
+    for (i = 0; i < npoints; i++) rs_grid_value(vals + i, R->axis[0].from, R->axis[0].to, i, K, R->logsp);
+    r = rs_an_qd_sweep_model(&m, run, q, R, v, (const fmpq *const *) &vals);
+    if (r == RS_OK) {
+        r = sweep_table(&T, &cols, run, q, R, &m, vals, npoints, 0);
+        if (r == RS_OK) {
+            json_t *o = sweep_json(run, q, R, cols, &T, rs_sweep_now() - t0);
+            rs_an_qd_sweep_json(o, run, NULL);
+            json_array_append_new(run->results, o);
+        }
+        rs_sweep_table_clear(&T);
+        json_decref(cols);
+    }
+    rs_an_qd_sweep_model_free(&m);
+    _fmpq_vec_clear(vals, npoints);
+    return r;
+}
+
 int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *R)
 {
     slong K = R->axis[0].count, npoints = K + 1, i;
@@ -230,6 +265,7 @@ int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request
     int cosim = run->m->kind == RS_MODEL_COSIM;
     int r;
     if (!cosim && run->c->ncsets > 0) return cx_sweep_run(run, q, R);
+    if (!cosim && run->m->qd != NULL) return qd_sweep_run(run, q, R);
     r = rs_sweep_estimate(run, q, (double) K + 1.0, "the sweep");
     if (r == RS_OK && !cosim) r = rs_sweep_variant(&v, run, R);
     if (r != RS_OK) return r;

@@ -99,6 +99,7 @@ static int run_sweep(rs_run_t *run, const rs_an_req_t *req)
 }
 static int run_map(rs_run_t *run, const rs_an_req_t *req)
 {
+    if (run->m->qd != NULL) return rs_an_qd_map(run, req);   /* two real parameters over Q(sqrt d) */
     return rs_an_map_run(run, req->q, (const rs_sweep_request_t *) req->u.sweep);
 }
 static int run_eq_map(rs_run_t *run, const rs_an_req_t *req)

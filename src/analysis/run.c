@@ -1383,7 +1383,8 @@ slong rs_run_count_free(const fmpz_mpoly_t p, const rs_scheme_t s, slong except)
 {
     slong v, n = 0;
     for (v = 0; v < s->nvars; v++)
-        if (v != s->lambda_var && v != except && fmpz_mpoly_degree_si(p, v, s->zctx) > 0) n++;
+        if (v != s->lambda_var && v != except && !(s->sqrt_d > 0 && v == s->sqrt_var)   /* sqrt(d): a number */
+            && fmpz_mpoly_degree_si(p, v, s->zctx) > 0) n++;
     return n;
 }
 

@@ -68,6 +68,15 @@ void rs_sweep_request_clear(rs_sweep_request_t *r);
 int rs_sweep_request_parse(rs_sweep_request_t *r, rs_run_t *run, const rs_request_t *q, const char *rest);
 int rs_map_request_parse(rs_sweep_request_t *r, rs_run_t *run, const rs_request_t *q, const char *rest);
 
+/* A map's boundary overlay ("boundary", "boundary_table", "boundary_rows")
+ * from the zero sets of the distinct irreducible factors of g[0..ng) (in
+ * v's zctx, only R's axes free; origin[k] names g[k]): exact signs at the
+ * grid points xs[0] x xs[1], crossings interpolated, as the map of p does;
+ * every factor is drawn (no decomposition of the plane) */
+void rs_an_map_boundary_factors(json_t *o, rs_run_t *run, const rs_variant_t *v, const rs_sweep_request_t *R,
+                                fmpq *const *xs, const fmpz_mpoly_struct *g, char *const *origin, slong ng,
+                                const char *method);
+
 /* Run a parsed request: appends one JSON element to run->results. */
 int rs_an_sweep_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *r);
 int rs_an_map_run(rs_run_t *run, const rs_request_t *q, const rs_sweep_request_t *r);

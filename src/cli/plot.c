@@ -820,6 +820,8 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
 {
     json_t *tab = pl->tabs[i].el, *params = json_object_get(tab, "params"), *grid = json_object_get(tab, "grid");
     int radius = strcmp(jstr(tab, "of"), "radius") == 0;
+    int undecided = json_integer_value(json_object_get(json_object_get(tab, "verdicts"), "undecided")) > 0;
+    int singular = json_integer_value(json_object_get(json_object_get(tab, "verdicts"), "singular")) > 0;
     int image = json_integer_value(json_array_get(grid, 0)) > 1 && json_integer_value(json_array_get(grid, 1)) > 1;
     char xl[256], yl[256];
     /* the legend (the boundary) above the panel, the colour box right of
@@ -851,10 +853,20 @@ static void plot_map_panel(FILE *g, const plot_t *pl, size_t i)
     if (radius)
         fputs("set cbrange [0:2]\nset cblabel 'spectral radius (capped at 2)'\n"
               "set palette defined (0 '#1a9850', 0.999 '#d9ef8b', 1 '#fee08b', 2 '#d73027')\n", g);
-    else
-        fputs("set cbrange [-0.5:2.5]\nset cbtics ('stable' 0, 'marginal' 1, 'unstable' 2)\n"
-              "set palette defined (-0.5 '#1a9850', 0.5 '#1a9850', 0.5 '#fee08b', 1.5 '#fee08b', "
-              "1.5 '#d73027', 2.5 '#d73027')\n", g);
+    else {
+        /* one band per verdict code present: 0 stable, 1 marginal, 2 unstable, 3 singular (the step is not
+         * determined), 4 undecided (a root on or too near the circle, marginal and unstable not told apart
+         * over Q(sqrt d)); beyond 2 only when present, so the usual key keeps three entries */
+        static const char *const name[5] = {"stable", "marginal", "unstable", "singular", "undecided"};
+        static const char *const colour[5] = {"#1a9850", "#fee08b", "#d73027", "#7b3294", "#bababa"};
+        int top = undecided ? 4 : singular ? 3 : 2, k;
+        fprintf(g, "set cbrange [-0.5:%d.5]\nset cbtics (", top);
+        for (k = 0; k <= top; k++) fprintf(g, "%s'%s' %d", k ? ", " : "", name[k], k);
+        fputs(")\nset palette defined (", g);
+        for (k = 0; k <= top; k++)
+            fprintf(g, "%s%g '%s', %g '%s'", k ? ", " : "", k - 0.5, colour[k], k + 0.5, colour[k]);
+        fputs(")\n", g);
+    }
     fputs("plot ", g);
     put_table(g, pl->dir, 't', i);
     fprintf(g, " using %d:%d:(", col_index(tab, json_string_value(json_array_get(params, 0))),

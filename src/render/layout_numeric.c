@@ -156,6 +156,143 @@ void rs_render_simulate(rs_render_t *r, const json_t *o)
     rs_render_assigned(r, o);
 }
 
+/* "KEY N, KEY N" of an object of counts into buf (nonzero counts only when skip0) */
+static void counts_str(char *buf, size_t size, const json_t *c, int skip0)
+{
+    const char *key;
+    json_t *val;
+    size_t off = 0;
+    buf[0] = '\0';
+    json_object_foreach((json_t *) c, key, val) {
+        if (skip0 && json_integer_value(val) == 0) continue;
+        off += (size_t) snprintf(buf + off, off < size ? size - off : 0, "%s%s %lld", off ? ", " : "", key,
+                                 (long long) json_integer_value(val));
+    }
+}
+
+/* a parameter name as inline math: re(z) as \mathrm{Re}\,z */
+static void param_math(rs_render_t *r, const char *name)
+{
+    size_t n = strlen(name);
+    if (n > 4 && name[n - 1] == ')' && (strncmp(name, "re(", 3) == 0 || strncmp(name, "im(", 3) == 0)) {
+        char inner[80];
+        snprintf(inner, sizeof inner, "%.*s", (int) (n - 4), name + 3);
+        rs_render_sayf(r, "$\\mathrm{%s}\\,", "$\\mathrm{%s}\\,", name[0] == 'r' ? "Re" : "Im");
+        rs_render_poly(r, inner);
+        rs_render_say(r, "$", "$");
+    } else rs_render_math(r, name);
+}
+
+/* pre, the text s escaped, post (the same words in both derivations); nothing when s is NULL */
+static void say_esc(rs_render_t *r, const char *pre, const char *s, const char *post)
+{
+    if (s == NULL) return;
+    rs_render_say(r, pre, pre);
+    rs_render_esc(r, s);
+    rs_render_say(r, post, post);
+}
+
+/* the derivations' summary of a sweep or map: the grid, the counts, which
+ * side decided, the field and methods, the boundary and the files */
+static void sweep_prose(rs_render_t *r, const json_t *o)
+{
+    const json_t *params = json_object_get(o, "params"), *ranges = json_object_get(o, "ranges");
+    const json_t *b = json_object_get(o, "boundary"), *conds = json_object_get(b, "conditions");
+    const json_t *d = json_object_get(o, "decided_by");
+    int map = json_is_array(params);
+    const char *of = rs_render_jstr(o, "of"), *over = rs_render_jstr(o, "over");
+    char buf[512];
+    size_t k;
+    long long exact = json_integer_value(json_object_get(d, "exact")), all = rs_render_jint(o, "computed");
+    rs_render_heading_begin(r);
+    if (map) {
+        rs_render_sayf(r, "Map of the %s over (", "Map of the %s over (", of ? of : "stability");
+        param_math(r, json_string_value(json_array_get(params, 0)));
+        rs_render_say(r, ", ", ", ");
+        param_math(r, json_string_value(json_array_get(params, 1)));
+        rs_render_say(r, ")", ")");
+    } else {
+        rs_render_sayf(r, "Sweep of the %s along ", "Sweep of the %s along ", of ? of : "stability");
+        param_math(r, rs_render_jstr(o, "param"));
+    }
+    rs_render_heading_end(r);
+    rs_render_say(r, "Request ", "Request ");
+    rs_render_code(r, rs_render_jstr(o, "text"));
+    if (map) {
+        for (k = 0; k < 2; k++) {
+            const json_t *rg = json_array_get(ranges, k);
+            rs_render_say(r, k ? "; " : ": ", k ? "; " : ": ");
+            param_math(r, json_string_value(json_array_get(params, k)));
+            rs_render_sayf(r, " from %s to %s (%lld values)", " from $%s$ to $%s$ (%lld values)",
+                           json_string_value(json_array_get(rg, 0)), json_string_value(json_array_get(rg, 1)),
+                           (long long) json_integer_value(json_array_get(rg, 2)));
+        }
+        rs_render_sayf(r, ", %lld grid points", ", %lld grid points", rs_render_jint(o, "points"));
+        if (rs_render_jstr(o, "complex_plane") != NULL)
+            rs_render_sayf(r, " of the complex plane of $%s$ (equal axes in the plot)",
+                           " of the complex plane of $%s$ (equal axes in the plot)", rs_render_jstr(o, "complex_plane"));
+    } else {
+        rs_render_sayf(r, ": from %s to %s in %lld %s steps, %lld points", ": from $%s$ to $%s$ in %lld %s steps, "
+                       "%lld points", rs_render_jstr(o, "from"), rs_render_jstr(o, "to"), rs_render_jint(o, "steps"),
+                       rs_render_jstr(o, "spacing") ? rs_render_jstr(o, "spacing") : "linear", rs_render_jint(o, "points"));
+    }
+    rs_render_sayf(r, " (%lld computed).\n\n", " (%lld computed).\n\n", all);
+    counts_str(buf, sizeof buf, json_object_get(o, "verdicts"), 0);
+    rs_render_sayf(r, "Verdicts: %s.\n\n", "Verdicts: %s.\n\n", buf);
+    counts_str(buf, sizeof buf, d, 1);
+    rs_render_sayf(r, "Decided by: %s (%s).\n\n", "Decided by: %s (%s).\n\n", buf,
+                   exact == all ? "every point on the exact side" : exact == 0
+                   ? "every point by a certified radius at the level named, the numeric side"
+                   : "exact: the exact side; the others by a certified radius at the level named, the numeric side");
+    if (over != NULL) {
+        say_esc(r, "Over ", over, "");
+        say_esc(r, " (", rs_render_jstr(o, "rk"), ")");
+        rs_render_say(r, ": ", ": ");
+        if (json_is_array(json_object_get(o, "methods")))
+            for (k = 0; k < json_array_size(json_object_get(o, "methods")); k++)
+                say_esc(r, k ? " and " : "", json_string_value(json_array_get(json_object_get(o, "methods"), k)), "");
+        else say_esc(r, "", rs_render_jstr(o, "method"), "");
+        rs_render_say(r, ".", ".");
+        say_esc(r, " Cross-check: ", rs_render_jstr(json_object_get(o, "cross_check"), "method"), ".");
+        say_esc(r, " Radius: ", rs_render_jstr(o, "radius_method"), ".");
+        say_esc(r, " Note: ", rs_render_jstr(o, "note"), ".");
+        rs_render_say(r, "\n\n", "\n\n");
+    }
+    if (rs_render_jstr(o, "boundary_locus") != NULL) {
+        const json_t *lp = json_object_get(o, "locus_points");
+        say_esc(r, "Boundary locus (overlaid on the plot): ", rs_render_jstr(o, "boundary_locus"), "");
+        if (lp != NULL)
+            rs_render_sayf(r, "; %lld points drawn, %lld dropped", "; %lld points drawn, %lld dropped",
+                           rs_render_jint(lp, "drawn"), rs_render_jint(lp, "dropped"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+    }
+    if (json_array_size(conds) > 0) {
+        rs_render_sayf(r, "Boundary overlay (%lld points on the grid) from the zero sets of:\n\n",
+                       "Boundary overlay (%lld points on the grid) from the zero sets of:\n\n", rs_render_jint(b, "points"));
+        rs_render_list_begin(r);
+        for (k = 0; k < json_array_size(conds); k++) {
+            const json_t *c = json_array_get(conds, k);
+            rs_render_item_begin(r);
+            if (json_is_string(json_object_get(c, "poly"))) rs_render_math(r, rs_render_jstr(c, "poly"));
+            say_esc(r, " (", rs_render_jstr(c, "origin"), ")");
+            rs_render_item_end(r);
+        }
+        rs_render_list_end(r);
+        say_esc(r, "", rs_render_jstr(b, "method"), ".\n\n");
+    }
+    if (rs_render_jstr(o, "csv") != NULL) {
+        rs_render_say(r, "Table written to ", "Table written to ");
+        rs_render_code(r, rs_render_jstr(o, "csv"));
+        rs_render_say(r, ".\n\n", ".\n\n");
+    } else {
+        rs_render_say(r, "Every row: ", "Every row: ");
+        rs_render_code(r, "--csv FILE");
+        rs_render_say(r, " or ", " or ");
+        rs_render_code(r, "--json");
+        rs_render_say(r, ".\n\n", ".\n\n");
+    }
+}
+
 void rs_render_sweep(rs_render_t *r, const json_t *o)
 {
     const char *tab = rs_render_jstr(o, "table");
@@ -164,6 +301,7 @@ void rs_render_sweep(rs_render_t *r, const json_t *o)
     json_t *val;
     char buf[512];
     size_t off = 0;
+    sweep_prose(r, o);
     rs_render_line(r, "request", "%s", rs_render_jstr(o, "text"));
     buf[0] = '\0';
     json_object_foreach((json_t *) v, key, val)
@@ -181,6 +319,12 @@ void rs_render_sweep(rs_render_t *r, const json_t *o)
     rs_render_line(r, "computed", "%s", buf);
     rs_render_line(r, "csv", "%s", rs_render_jstr(o, "csv"));
     rs_render_line(r, "note", "%s", rs_render_jstr(o, "table_note"));
+    /* a map over Q(sqrt d)(i) (an_qd_map.c) names its field and what undecided means */
+    if (rs_render_jstr(o, "over") != NULL && strstr(rs_render_jstr(o, "over"), "sqrt") != NULL) {
+        rs_render_line(r, "over", "%s", rs_render_jstr(o, "over"));
+        rs_render_line(r, "method", "%s", rs_render_jstr(o, "rk"));
+        rs_render_line(r, "undecided", "%s", rs_render_jstr(o, "note"));
+    }
     if (tab != NULL) {
         /* the table, columns aligned; a cell is never cut (a cut decimal
          * is a different number: an outward-rounded bound cut short is no

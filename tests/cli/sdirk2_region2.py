@@ -95,4 +95,5 @@ def main():
         print("FAIL region a, c boundary: %s complete=%s" % (bnd, res["formula_complete"]))
 
 
-main()
+if __name__ == "__main__":   # sdirk2_map2.py imports rho
+    main()

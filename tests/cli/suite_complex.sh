@@ -618,6 +618,147 @@ for pt in "1 stable" "-5 stable" "-1 unstable" "0 unstable"; do
     else fail "sdirk2 complex k=$1: '$v' $(head -1 "$T/err")"; fi
 done
 
+# ---- map re(z), im(z) over Q(sqrt 2)(i) and Q(sqrt 3)(i) (issue 15 §2, an_qd_map.c) ----
+# cases/complex/sdirk2-zplane.case and the same map of SDIRK3 (sdirk3-astability.case).
+# Independently: R(z) from each Butcher tableau (the two stages solved in mpmath at 50
+# digits, no recstab): every grid verdict against |R(z)| < 1 (stable), > 1 (unstable),
+# = 1 (undecided: z = 0 only); the plotted locus rows (--plot-script) against |R| = 1.
+SZ=cases/complex/sdirk2-zplane.case
+S3=cases/complex/sdirk3-astability.case
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json "$SZ" >"$T/sz.json" 2>"$T/err"; rc=$?
+    "$RS" "$SZ" --plot "$T/sz.svg" --plot-script "$T/sz.gp" >/dev/null 2>>"$T/err" || rc=9
+    "$RS" --json --analyse "map re(q) -6 10 9, im(q) -8 8 9" "$S3" >"$T/s3.json" 2>>"$T/err" || rc=8
+    res=$(python3 - "$T/sz.json" "$T/s3.json" "$T/sz.gp" <<'PY'
+import json, sys, mpmath as mp
+from fractions import Fraction
+mp.mp.dps = 50
+def R(z, g, a21, b1, b2):   # one step of the 2-stage SDIRK on y' = z y from y = 1
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + a21 * k1) / (1 - g * z)
+    return 1 + b1 * k1 + b2 * k2
+g2 = 1 - mp.sqrt(2) / 2                 # SDIRK2: A = [g, 0; 1-g, g], b = (1-g, g)
+g3 = (3 + mp.sqrt(3)) / 6               # SDIRK3: A = [g, 0; 1-2g, g], b = (1/2, 1/2)
+tabs = [(sys.argv[1], (g2, 1 - g2, 1 - g2, g2), "Q(sqrt 2)(i)", "rk sdirk2"),
+        (sys.argv[2], (g3, 1 - 2 * g3, mp.mpf(1) / 2, mp.mpf(1) / 2), "Q(sqrt 3)(i)", "rk sdirk3")]
+bad = []
+for path, t, over, rk in tabs:
+    r = json.load(open(path))["cases"][0]["results"][-1]
+    if r.get("over") != over or r.get("rk") != rk: bad.append("over/rk " + path)
+    if r["cross_check"]["points"] != r["computed"]: bad.append("cross-checked points")
+    n = {"stable": 0, "unstable": 0, "undecided": 0}
+    for row in r["rows"]:
+        x, y = (Fraction(c) for c in row[5:7])
+        z = mp.mpc(mp.mpf(x.numerator) / x.denominator, mp.mpf(y.numerator) / y.denominator)
+        a = abs(R(z, *t))
+        want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
+        if row[7] != want: bad.append("%s z=%s: %s, |R| = %s" % (rk, z, row[7], mp.nstr(a, 8)))
+        n[want] += 1
+    if n["undecided"] != 1 or n["stable"] < 10 or n["unstable"] < 10: bad.append("counts %r" % n)
+    if r["verdicts"]["undecided"] != 1: bad.append("verdicts " + rk)
+# the locus datablock $l0 of the SDIRK2 plot: points z with |R(z)| = 1 (double precision)
+gp = open(sys.argv[3]).read().split("$l0 << EOD\n")[1].split("EOD")[0].splitlines()[1:]
+far = [l for l in gp if abs(abs(R(mp.mpc(*map(float, l.split(",")[:2])), *tabs[0][1])) - 1) > 1e-6]
+if len(gp) < 500 or far: bad.append("locus: %d rows, off |R| = 1: %s" % (len(gp), far[:2]))
+if "set size ratio -1" not in open(sys.argv[3]).read(): bad.append("axes not equal")
+print("yes" if not bad else "no " + "; ".join(bad[:5]))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "map re(z), im(z) over Q(sqrt 2)(i), Q(sqrt 3)(i): SDIRK2, SDIRK3 grids match |R(z)| from the tableaux (mpmath), the locus |R| = 1, equal axes"
+    else fail "sdirk z-plane maps: rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk z-plane maps: no python3 mpmath"; fi
+# sweep q ... of stability and of radius over Q(sqrt 2) (an_qd_map.c): every point against
+# |R(q)| from the tableau in mpmath (stable < 1, unstable > 1, undecided = 1: q = 0 only; hand
+# values in cases/complex/sdirk2-region.case: unstable on (0, 6 + 4 sqrt 2), stable beyond);
+# the certified [radius_lower, radius_upper] must contain |R(q)| (the one nonzero root of p);
+# of modes refused (exit 2)
+if python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json --analyse "sweep q from -2 to 16 steps 72 of stability" cases/complex/sdirk2-region.case >"$T/sw.json" 2>"$T/err"; rc=$?
+    "$RS" --json --analyse "sweep q from -2 to 16 steps 72" cases/complex/sdirk2-region.case >"$T/swr.json" 2>>"$T/err" || rc=7
+    "$RS" --analyse "sweep q from -2 to 16 steps 72 of modes h=1 reference=1" cases/complex/sdirk2-region.case >/dev/null 2>&1; rr=$?
+    res=$(python3 - "$T/sw.json" "$T/swr.json" <<'PY'
+import json, sys, mpmath as mp
+from fractions import Fraction
+mp.mp.dps = 50
+g = 1 - mp.sqrt(2) / 2
+def R(z):   # SDIRK2: A = [g, 0; 1-g, g], b = (1-g, g), one step from y = 1
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - g) * k1) / (1 - g * z)
+    return 1 + (1 - g) * k1 + g * k2
+bad = []
+for path in sys.argv[1:]:
+    r = json.load(open(path))["cases"][0]["results"][-1]
+    col = {c: k for k, c in enumerate(r["columns"])}
+    n = 0
+    for row in r["rows"]:
+        x = Fraction(row[col["q_exact"]]); a = abs(R(mp.mpf(x.numerator) / x.denominator))
+        want = "undecided" if abs(a - 1) < mp.mpf(10) ** -40 else "stable" if a < 1 else "unstable"
+        if row[col["verdict"]] != want: bad.append("q=%s: %s" % (x, row[col["verdict"]]))
+        if r["of"] == "radius" and not (row[col["radius_lower"]] <= float(a) * (1 + 1e-15)
+                                        and float(a) * (1 - 1e-15) <= row[col["radius_upper"]]):
+            bad.append("q=%s: radius [%s, %s], |R| = %s" % (x, row[col["radius_lower"]], row[col["radius_upper"]], a))
+        n += 1
+    if n != 73 or r.get("over") != "Q(sqrt 2)": bad.append("rows/over")
+print("yes" if not bad else "no " + "; ".join(bad[:5]))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$rr" = 2 ] && [ "$res" = yes ]; then ok "sdirk2 sweep q of stability and of radius over Q(sqrt 2): 73 points match |R(q)| from the tableau (mpmath), radii contain it; of modes refused"
+    else fail "sdirk2 sweep: rc=$rc rr=$rr $res $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 sweep: no mpmath"; fi
+
+# limit q -> 0|inf over Q(sqrt d) (an_limit.c's qd_limit).  By hand: SDIRK3 (g = (3 + sqrt 3)/6,
+# A = [g, 0; 1-2g, g], b = (1/2, 1/2)) has R(z) = (1 + (1-2g) z + (1/2 - 2g + g^2) z^2)/(1 - g z)^2,
+# R(inf) = (1/2 - 2g + g^2)/g^2 = 1 - sqrt 3 (a root of lambda^2 - 2 lambda - 2, the other root
+# 1 + sqrt 3 is the conjugate's and must not be listed), R(0) = 1; SDIRK2 is L-stable: R(inf) = 0.
+# Independently the value against R(10^30) from the tableau in mpmath; the two stage roots at 0 stay.
+if python3 -c 'import mpmath' 2>/dev/null; then
+    "$RS" --json --analyse "limit q -> inf" cases/complex/sdirk3-astability.case >"$T/l3.json" 2>"$T/err"; rc=$?
+    "$RS" --json --analyse "limit q -> 0" cases/complex/sdirk3-astability.case >"$T/l0.json" 2>>"$T/err" || rc=7
+    "$RS" --json --analyse "limit q -> inf" cases/complex/sdirk2-region.case >"$T/l2.json" 2>>"$T/err" || rc=8
+    res=$(python3 - "$T/l3.json" "$T/l0.json" "$T/l2.json" <<'PY'
+import json, sys, mpmath as mp
+mp.mp.dps = 50
+g = (3 + mp.sqrt(3)) / 6
+def R(z):   # SDIRK3: one step from y = 1, the two stages solved
+    k1 = z / (1 - g * z)
+    k2 = z * (1 + (1 - 2 * g) * k1) / (1 - g * z)
+    return 1 + (k1 + k2) / 2
+res = [json.load(open(p))["cases"][0]["results"][-1] for p in sys.argv[1:]]
+bad = []
+r3 = sorted((x for x in res[0]["roots"]), key=lambda x: x["abs"])
+if [x["multiplicity"] for x in r3] != [2, 1] or r3[1].get("minpoly") != "lambda^2 - 2*lambda - 2" \
+   or abs(mp.mpf(r3[1]["value"]) - R(mp.mpf(10) ** 30)) > 1e-18 or abs(mp.mpf(r3[1]["value"]) - (1 - mp.sqrt(3))) > 1e-18:
+    bad.append("sdirk3 inf %s" % r3)
+r0 = {str(x["value"]): x["multiplicity"] for x in res[1]["roots"]}
+if r0 != {"0": 2, "1": 1} or res[1].get("over") != "Q(sqrt 3)": bad.append("sdirk3 0 %s" % r0)
+if not res[2]["all_roots_to_zero"] or res[2].get("over") != "Q(sqrt 2)": bad.append("sdirk2 inf %s" % res[2]["roots"])
+print("yes" if not bad else "no " + "; ".join(bad))
+PY
+)
+    if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "limit over Q(sqrt d): SDIRK3 R(inf) = 1 - sqrt 3 (not its conjugate), R(0) = 1; SDIRK2 L-stable"
+    else fail "limit over Q(sqrt d): rc=$rc $res $(head -1 "$T/err")"; fi
+else ok "skipped limit over Q(sqrt d): no mpmath"; fi
+
+# map a, c of two real parameters over Q(sqrt 2) (an_qd_map.c): cases/complex/sdirk2-coupled-map.case,
+# of radius (the default) and of stability, every point against rho(M) of the step matrix from the
+# stage equations (tests/cli/sdirk2_map2.py, mpmath), the boundary crossing a = 1 at the roots of
+# 17 c^4 - 92 c^2 + 124 (by hand in the case); Markdown and LaTeX print the map's summary
+if python3 -c 'import mpmath' 2>/dev/null; then
+    SM=cases/complex/sdirk2-coupled-map.case
+    "$RS" --json "$SM" >"$T/qm.json" 2>"$T/err"; rc=$?
+    "$RS" --json --analyse "map a 0 4 9, c -2 2 21 of stability" "$SM" >"$T/qms.json" 2>>"$T/err" || rc=7
+    r1=$(python3 tests/cli/sdirk2_map2.py "$T/qm.json" 2>&1); r2=$(python3 tests/cli/sdirk2_map2.py "$T/qms.json" 2>&1)
+    md=$("$RS" --markdown "$SM" 2>/dev/null); tex=$("$RS" --latex "$SM" 2>/dev/null)
+    if [ "$rc" = 0 ] && [ "$r1" = yes ] && [ "$r2" = yes ] \
+       && printf '%s' "$md" | grep -q '^### Map of the radius over (\$a\$, \$c\$)' \
+       && printf '%s' "$md" | grep -q '^Verdicts: stable 160, marginal 0, unstable 26, undecided 3\.' \
+       && printf '%s' "$md" | grep -q 'norm of jury' \
+       && printf '%s' "$tex" | grep -q 'subsection\*{Map of the radius over' \
+       && printf '%s' "$tex" | grep -q 'Decided by: exact 189 (every point on the exact side)'; then
+        ok "map a, c over Q(sqrt 2): every point and certified radius match rho of the step matrix (mpmath); boundary at a = 1; Markdown/LaTeX summary"
+    else fail "sdirk2 map a, c: rc=$rc $r1 / $r2 $(head -1 "$T/err")"; fi
+else ok "skipped sdirk2 map a, c: no mpmath"; fi
+
 # never over Q(sqrt 2)(i) (an_qd_never.c): with -3 <= k <= -1 z = k q stays where |R| > 1
 # (k* = -3.7678... < -3 < k < 0, by hand in the case); -4 <= k <= -1 reaches k < k*
 sed 's/^param q k/param q k\nassume -3 <= k <= -1/' "$SQ" >"$T/sqn.case"
@@ -837,10 +978,11 @@ check_status "sdirk2 z=-1+2i" stable "$SP" --set 'q=-1+2*i'
 r2=$("$RS" --json "$SP" --set 'q=3' | tr -d ' \n' | sed -n 's/.*"abs_R_squared":"\([^"]*\)".*/\1/p')
 if [ "$r2" = "11608+8208*sqrt(2)" ]; then ok "sdirk2 |R(3)|^2 = 11608 + 8208 sqrt 2 (by hand)"
 else fail "sdirk2 |R(3)|^2: got '$r2'"; fi
-"$RS" --analyse "map" "$SD" >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*map is not available for rk sdirk2" "$T/err"; then
-    ok "sdirk2: map refused with its reason (exit 2)"
-else fail "sdirk2 map refusal: rc=$rc $(head -1 "$T/err")"; fi
+# expect is not done over Q(sqrt d)
+"$RS" --analyse "expect charpoly lambda - 1" "$SD" >/dev/null 2>"$T/err"; rc=$?
+if [ "$rc" = 2 ] && grep -q "^recstab: --analyse: .*expect is not available for rk sdirk2" "$T/err"; then
+    ok "sdirk2: expect refused with its reason (exit 2)"
+else fail "sdirk2 expect refusal: rc=$rc $(head -1 "$T/err")"; fi
 # modes and simulate over Q(sqrt 2) at z = -1: p = D lambda - N has the one
 # root R(-1) = (20 - 2 sqrt 2)/49 (by hand, sdirk2-point.case) and the
 # charpoly's two roots at 0; sigma = ln R(-1), omega 0, damping ratio 1; the
@@ -1309,12 +1451,19 @@ if grep -qF 'eq y_k1[n+1] = (-a*(y[n] + (1)*((1 - 1/2*sqrt(2))*y_k1[n+1])) + c*x
    && grep -qF 'eq 2*(y[n+1] - y[n]) = (1)*(sqrt(2)*y_k1[n+1] + (2 - sqrt(2))*y_k2[n+1])' "$T/eq.txt"; then
     ok "sdirk2 --emit equations: stages with gamma = 1 - sqrt(2)/2 written exactly"
 else fail "sdirk2 emit: $(cat "$T/eq.txt" "$T/err")"; fi
-# routh runs over Q(sqrt d) now (sdirk2-coupled-routh.case); bilinear is still refused, naming what runs
-"$RS" --analyse stability "$SC" --set c=2 --analyse bilinear >/dev/null 2>"$T/err"; rc=$?
-if [ "$rc" = 2 ] && grep -q "bilinear is not available for rk sdirk2 .*jury, hurwitz, routh" "$T/err" \
-   || { [ "$rc" = 2 ] && grep -q "hurwitz, routh, region or claim: bilinear is not available for rk sdirk2" "$T/err"; }; then
-    ok "sdirk2 coupled: bilinear refused (exit 2), naming what runs"
-else fail "sdirk2 coupled bilinear refusal: rc=$rc $(head -1 "$T/err")"; fi
+# bilinear over Q(sqrt 2) (an_qd_map.c).  By hand at q = -1: p = D lambda - N, D = (1 + g)^2 =
+# 9/2 - 2 sqrt 2, N = 1 - (sqrt 2 - 1) = 2 - sqrt 2, so q(z) = (1 - z) p((1 + z)/(1 - z)) =
+# (D - N) + (D + N) z = (5/2 - sqrt 2) + (13/2 - 3 sqrt 2) z; recstab prints it in integer form
+# (a constant factor), so the ratio of its coefficients is compared.  At a complex set value it
+# is refused (tests/bad/rk-sdirk2-bilinear.case).
+v=$("$RS" --json --analyse bilinear "$SP" 2>"$T/err" | python3 -c '
+import json, sys
+r = json.load(sys.stdin)["cases"][0]["results"][-1]
+c0, c1 = (eval(t.replace("sqrt(2)", "2 ** 0.5")) for t in r["coeffs"])
+want = (13 / 2 - 3 * 2 ** 0.5) / (5 / 2 - 2 ** 0.5)
+print("yes" if abs(c1 / c0 - want) < 1e-12 and r["over"] == "Q(sqrt 2)" and r["degree"] == 1 else "no %r" % r)' 2>&1)
+if [ "$v" = yes ]; then ok "sdirk2 bilinear at q = -1 over Q(sqrt 2): q(z) proportional to (5/2 - sqrt 2) + (13/2 - 3 sqrt 2) z (by hand)"
+else fail "sdirk2 bilinear: $v $(head -1 "$T/err")"; fi
 "$RS" --set a=1 --set c=2 --analyse routh "$SC" >/dev/null 2>"$T/err"; rc=$?
 if [ "$rc" = 0 ]; then ok "sdirk2 coupled: routh at set values runs over Q(sqrt 2)"
 else fail "sdirk2 coupled routh at set values: rc=$rc $(head -1 "$T/err")"; fi

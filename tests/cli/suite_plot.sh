@@ -40,3 +40,15 @@ grep -q 'size ratio' "$T/b.gp" && fail "equal axes on a map of a, b" || ok "map 
 [ "$rc" = 2 ] && ok "--plot-size 10x10: exit 2" || fail "--plot-size 10x10: $rc"
 "$RS" --plot-script "$T/d.gp" --analyse "map a -1 1 3, b -1 1 3" "$T/ab.case" >/dev/null 2>&1; rc=$?
 [ "$rc" = 2 ] && [ ! -e "$T/d.gp" ] && ok "--plot-script without --plot: exit 2" || fail "--plot-script alone: $rc"
+# singular points their own colour and key (they took unstable's clipped colour): backward
+# Euler lambda (1 - u) = 1, u = h w, by hand |lambda| = 1/|1 - u|: marginal at u = 0, 2,
+# unstable on (0, 2) but u = 1, where the step is singular ((h, w) = (1, 1), (2, 1/2));
+# the grid h = 0 .. 2 (5), w = 0, 1/2, 1: marginal 8, unstable 5, singular 2
+printf 'param h w\nchar (1 - h*w)*lambda - 1\nanalyse map h 0 2 5, w 0 1 3 of stability\n' >"$T/be.case"
+v=$("$RS" --json "$T/be.case" 2>/dev/null | python3 -c 'import json,sys; print(json.load(sys.stdin)["cases"][0]["results"][0]["verdicts"])' 2>/dev/null)
+"$RS" --plot "$T/be.svg" --plot-script "$T/be.gp" "$T/be.case" >/dev/null 2>&1; rc=$?
+if [ "$rc" = 0 ] && [ "$v" = "{'stable': 0, 'marginal': 8, 'unstable': 5, 'singular': 2}" ] \
+   && grep -q "^set cbtics ('stable' 0, 'marginal' 1, 'unstable' 2, 'singular' 3)$" "$T/be.gp" \
+   && grep -q "^set cbrange \[-0.5:3.5\]$" "$T/be.gp" && grep -q "2.5 '#7b3294', 3.5 '#7b3294')$" "$T/be.gp"; then
+    ok "map with singular points: their own colour and key"
+else fail "singular colour: rc=$rc $v $(grep cbtics "$T/be.gp")"; fi
