@@ -45,6 +45,17 @@ int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t
 /* 1 when every condition of q holds at pt (every variable of s), else 0 */
 int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt);
 void rs_an_qd_conds_clear(rs_an_qd_conds_t *q);
+/* q's conditions (and alt's, when not NULL: they must say the same) against
+ * the exact verdict (rs_an_qd_parts_stable of part[], degree n) at
+ * admissible rational points of the free parameters of a and b (sqrt(d)'s
+ * variable skipped): o's "sample_check" (against the exact verdict over
+ * field) and, with alt, "cross_check" {alt_method, points, agree}; exit 3
+ * when the verdict's two routes or the two lists ("%s conditions disagree"
+ * with pair) disagree */
+int rs_an_qd_conds_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t a, const fmpz_mpoly_t b,
+                                const fmpz_mpoly_struct *const *part, slong n, const rs_an_qd_conds_t *q,
+                                const rs_an_qd_conds_t *alt, const char *field, const char *pair,
+                                const char *alt_method, json_t *o, const rs_request_t *rq);
 /* an_qd_never.c: 1 (the reason into buf) when q's conditions provably never
  * all hold under the assume lines (each split into the sign cases of c0,
  * c1 and the norm c0^2 - d c1^2, every choice refuted by rs_run_conds_never) */

@@ -28,8 +28,6 @@
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
 
-#define QDC_SAMPLE_POINTS 12
-
 static const char *const kind_name[3] = {"jury", "hurwitz", "routh"};
 
 /* "Q(sqrt d)(i)" (flint_free it) */
@@ -111,27 +109,21 @@ int rs_an_qd_parts_verdict(const fmpz_mpoly_struct *const *part, slong n, fmpq *
     return sc;
 }
 
-/* rs_an_qd_parts_stable of re + i im (sqrt(d) a variable in both) */
-static int qdc_point_stable(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong n, fmpq *const *pt,
-                            const rs_scheme_struct *s)
+/* the parts re = q[0] + sqrt(d) q[1], im = q[2] + sqrt(d) q[3] (q[k]
+ * without sqrt(d); initialised by the caller) as part[] */
+static void qdc_parts(fmpz_mpoly_struct *q, const fmpz_mpoly_struct **part, const fmpz_mpoly_t re,
+                      const fmpz_mpoly_t im, const rs_scheme_struct *s)
 {
-    fmpz_mpoly_struct q[4];
-    const fmpz_mpoly_struct *part[4];
-    int j, sc;
-    for (j = 0; j < 4; j++) {
-        fmpz_mpoly_init(q + j, s->zctx);
-        rs_charpoly_coeff(q + j, j < 2 ? re : im, j & 1, s->sqrt_var, s->zctx);
-        part[j] = q + j;
+    int k;
+    for (k = 0; k < 4; k++) {
+        rs_charpoly_coeff(q + k, k < 2 ? re : im, k & 1, s->sqrt_var, s->zctx);
+        part[k] = q + k;
     }
-    sc = rs_an_qd_parts_stable(part, n, pt, s);
-    for (j = 0; j < 4; j++) fmpz_mpoly_clear(q + j, s->zctx);
-    return sc;
 }
 
 /* the two lists: Schur-Cohn's deltas (m = 0) and Bilharz's conditions (m = 1) */
 typedef struct {
-    rs_an_qd_conds_t q[2];
-    int never[2];
+    rs_an_qd_conds_t q[2];   /* q[m].never: a condition is never true */
     json_t *raw[2], *conds[2], *parts[2], *dropped[2], *always[2];
 } qdc_lists_t;
 
@@ -140,7 +132,6 @@ static void qdc_lists_init(qdc_lists_t *L, const rs_scheme_struct *s)
     int m;
     for (m = 0; m < 2; m++) {
         L->q[m].n = 0; L->q[m].c0 = L->q[m].c1 = NULL; L->q[m].ne = NULL; L->q[m].s = s; L->q[m].never = 0;
-        L->never[m] = 0;
         L->raw[m] = json_array(); L->conds[m] = json_array(); L->parts[m] = json_array();
         L->dropped[m] = json_array(); L->always[m] = json_array();
     }
@@ -165,59 +156,12 @@ static void qdc_add(qdc_lists_t *L, int m, fmpz_mpoly_t f, const char *origin, c
     json_array_append_new(L->raw[m], json_pack("{s:s,s:o}", "origin", origin, "poly", rs_json_zpoly(f, s)));
     if (fmpz_mpoly_is_zero(f, s->zctx)) {
         rs_json_append_unique(L->conds[m], "0 > 0");
-        L->never[m] = 1;
+        L->q[m].never = 1;
         return;
     }
     a = rs_an_qd_conds_add(&L->q[m], L->conds[m], L->parts[m], L->dropped[m], f, origin, sign);
     if (a == 1) json_array_append_new(L->always[m], json_string(origin));
-    if (a == -1) L->never[m] = 1;
-}
-
-/* what list m says at pt: 1 stable */
-static int qdc_says(const qdc_lists_t *L, int m, fmpq *const *pt)
-{
-    return !L->never[m] && rs_an_qd_conds_hold(&L->q[m], pt);
-}
-
-/* both lists against each other and the exact point verdict at admissible
- * rational points of the free parameters (sqrt(d)'s variable skipped) */
-static int qdc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
-                            slong n, const qdc_lists_t *L, int m, json_t *o, const rs_request_t *rq)
-{
-    rs_sample_pts_t P;
-    slong nok = 0;
-    json_t *chk = json_object(), *bad = NULL;
-    int r = RS_OK;
-    rs_sample_pts_init(&P, run, v, re, im, v->s->sqrt_var);
-    while (nok < (P.nfree > 0 ? QDC_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
-        int says, st = qdc_point_stable(re, im, n, P.pp, v->s);
-        if (st == -1) continue;
-        if (st == -2) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): Schur-Cohn and the "
-                             "certified roots disagree at a sample point", rq->text);
-            break;
-        }
-        says = qdc_says(L, m, P.pp);
-        if (qdc_says(L, 1 - m, P.pp) != says) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): the Schur-Cohn and the "
-                             "Bilharz conditions disagree at a sample point", rq->text);
-            break;
-        }
-        nok++;
-        if (st != says) {
-            bad = rs_sample_pts_json(&P);
-            rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
-        }
-    }
-    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d)(i) (Schur-Cohn with exact "
-                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
-                            "assumptions");
-    json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", m == 0 ? "Bilharz (complex "
-                        "Routh-Hurwitz on the bilinear image) over Q(sqrt d)(i): its conditions at the same sample "
-                        "points" : "Schur-Cohn over Q(sqrt d)(i): its conditions delta_k > 0 at the same sample "
-                        "points", "points", (json_int_t) nok, "agree", r == RS_OK));
-    rs_sample_pts_clear(&P);
-    return r;
+    if (a == -1) L->q[m].never = 1;
 }
 
 static const char qdc_note_jury[] =
@@ -278,17 +222,20 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     rs_variant_t *v;
     const rs_scheme_struct *s;
     fmpz_mpoly_t re, im;
+    fmpz_mpoly_struct q[4];
+    const fmpz_mpoly_struct *part[4];
     rs_schur_cx_conds_t sc;
     rs_routh_cx_conds_t bc;
     qdc_lists_t L;
     json_t *o;
-    slong n = 0;
+    slong n = 0, k;
     int r, m = kind == 0 ? 0 : 1, *sign;
     char *why = NULL, *over;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_init(q + k, s->zctx);
     rs_schur_cx_conds_init(&sc);
     rs_routh_cx_conds_init(&bc, s->zctx);
     qdc_lists_init(&L, s);
@@ -323,16 +270,21 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     json_object_set_new(o, "note", json_string(m == 0 ? qdc_note_jury : qdc_note_bilharz));
     /* never under the assumptions (an_qd_never.c): both lists say so, the
      * sample check then expects no stable point */
-    if (!L.never[m] && L.q[m].n > 0 && rs_an_qd_conds_never(&why, run, &L.q[m])) {
+    if (!L.q[m].never && L.q[m].n > 0 && rs_an_qd_conds_never(&why, run, &L.q[m])) {
         rs_str_catf(&why, "; never asymptotically stable");
         rs_json_set_never_conditions(o, why);
-        L.never[m] = L.q[m].never = 1;
+        L.q[m].never = 1;
     }
     flint_free(why);
     why = NULL;
-    json_object_set_new(o, "verdict", json_string(L.never[m] ? "never stable" : L.q[m].n == 0
+    json_object_set_new(o, "verdict", json_string(L.q[m].never ? "never stable" : L.q[m].n == 0
                                                   ? "stable under the assumptions" : "stable iff the conditions hold"));
-    r = qdc_sample_check(run, v, re, im, n, &L, m, o, req->q);
+    qdc_parts(q, part, re, im, s);
+    r = rs_an_qd_conds_sample_check(run, v, re, im, part, n, &L.q[m], &L.q[1 - m], "Q(sqrt d)(i)",
+                                    "the Schur-Cohn and the Bilharz", m == 0 ? "Bilharz (complex Routh-Hurwitz on "
+                                    "the bilinear image) over Q(sqrt d)(i): its conditions at the same sample points"
+                                    : "Schur-Cohn over Q(sqrt d)(i): its conditions delta_k > 0 at the same sample "
+                                    "points", o, req->q);
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
 done:
@@ -340,6 +292,7 @@ done:
     qdc_lists_clear(&L);
     rs_schur_cx_conds_clear(&sc, s->zctx);
     rs_routh_cx_conds_clear(&bc, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_clear(q + k, s->zctx);
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     return r;
 }
@@ -402,11 +355,7 @@ int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, 
         fmpz_mpoly_mul(x, x, x, s->zctx);
         fmpz_mpoly_add(lead, lead, x, s->zctx);
         rs_scheme_reduce_sqrt(lead, s);
-        for (k = 0; k < 4; k++) {
-            rs_charpoly_coeff(q + k, k < 2 ? re : im, k & 1, s->sqrt_var, s->zctx);
-            part[k] = q + k;
-        }
-        for (k = 0; k < 2; k++) L.q[k].never |= L.never[k];
+        qdc_parts(q, part, re, im, s);
         r = rs_an_qd_cx_cells(oo, run, req->q, tv, &L.q[0], &L.q[1], part, n, lead, dom, kind, verdict, counter);
         if (r == RS_OK && kind < 0) {
             char *over = qdc_over_str(s->sqrt_d);
