@@ -89,6 +89,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         return RS_OK;
     /* one real parameter's cells over Q(sqrt d)(i) (an_qd_complex.c's rs_an_qd_cx_fiber) */
     if (strcmp(n, "region") == 0 && !req->u.region.forall && !req->u.region.twod) return RS_OK;
+    /* two real parameters' plane over Q(sqrt d)(i) (an_qd_cx2.c) */
+    if (strcmp(n, "region") == 0 && !req->u.region.forall) return RS_OK;
     if (strcmp(n, "claim") == 0 && qd_nfree(run) <= 1) return RS_OK;
     {
         /* the message names the model's field and tableau */
@@ -98,8 +100,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      "with two free parameters or for all (its cells would need Q(sqrt %ld)(i) in two parameters; "
                      "stability, radius, modes, simulate, jury, hurwitz and routh do, the last three with the "
                      "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
-                     "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
-                     (long) run->m->qd->d, (long) run->m->qd->d);
+                     "region N1, N2 with two, region also when only its own parameters have complex values)", n,
+                     (long) run->m->qd->d, (long) run->m->qd->d, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, hurwitz, "
                      "routh, region or claim: %s is not available for rk %s (its coefficients are in Q(sqrt %ld); only "

@@ -305,70 +305,116 @@ int rs_an_qd_cx_other(const rs_run_t *run, slong tv)
     return 0;
 }
 
-int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
-                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
-{
-    const char *keep[1];
-    rs_assign_t *as = NULL;
-    slong nas = 0, n = 0, k;
+/* the model at the case's real set values and extra[] with tv[0..ntv)
+ * kept free: p = re + i im, both lists, parts and |a_n|^2 */
+typedef struct {
     rs_variant_t *v;
     const rs_scheme_struct *s;
-    fmpz_mpoly_t re, im, lead, x;
+    slong n;
+    fmpz_mpoly_t re, im, lead;
     fmpz_mpoly_struct q[4];
     const fmpz_mpoly_struct *part[4];
     rs_schur_cx_conds_t sc;
     rs_routh_cx_conds_t bc;
     qdc_lists_t L;
-    int r, *sign, vd = 0;
+    int *sign;
+} qdc_fix_t;
+
+static int qdc_fix_init(qdc_fix_t *F, rs_run_t *run, const rs_an_req_t *req, const slong *tv, slong ntv,
+                        const rs_assign_t *extra, slong nextra)
+{
+    const char *keep[2];
+    rs_assign_t *as = NULL;
+    slong nas = 0, k;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t x;
+    int r;
+    F->s = NULL;
+    for (k = 0; k < ntv; k++) keep[k] = run->c->params[tv[k]].name;
+    rs_run_assignments(run, &as, &nas, keep, ntv, extra, nextra);
+    r = rs_run_variant(&F->v, run, as, nas);
+    rs_assign_free(as, nas);
+    if (r != RS_OK) return r;
+    s = F->s = F->v->s;
+    F->n = 0;
+    fmpz_mpoly_init(F->re, s->zctx); fmpz_mpoly_init(F->im, s->zctx);
+    fmpz_mpoly_init(F->lead, s->zctx); fmpz_mpoly_init(x, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_init(F->q + k, s->zctx);
+    rs_schur_cx_conds_init(&F->sc);
+    rs_routh_cx_conds_init(&F->bc, s->zctx);
+    qdc_lists_init(&F->L, s);
+    F->sign = rs_run_signs(run, s);
+    r = qdc_build(F->re, F->im, &F->n, &F->sc, &F->bc, &F->L, F->sign, run, req, F->v);
+    for (k = 0; r == RS_OK && k < s->lambda_var; k++)
+        if (k != tv[0] && (ntv < 2 || k != tv[1]) && k != s->sqrt_var
+            && (fmpz_mpoly_degree_si(F->re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(F->im, k, s->zctx) > 0)) {
+            if (ntv == 1)
+                r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every real parameter but %s "
+                                 "set: region and claim over Q(sqrt d)(i) are decided on the exact cells of one "
+                                 "parameter (jury, hurwitz and routh give the conditions with more parameters free)",
+                                 keep[0]);
+            else
+                r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "'%s' is symbolic: region N1, N2 over Q(sqrt "
+                                 "d)(i) decides two parameters; set the others (jury, hurwitz and routh give the "
+                                 "conditions with more parameters free)", s->vars[k]);
+        }
+    if (r == RS_OK) {
+        /* |a_n|^2 = lr^2 + li^2: zero exactly where the step is singular */
+        rs_charpoly_coeff(x, F->re, F->n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(F->lead, x, x, s->zctx);
+        rs_charpoly_coeff(x, F->im, F->n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(x, x, x, s->zctx);
+        fmpz_mpoly_add(F->lead, F->lead, x, s->zctx);
+        rs_scheme_reduce_sqrt(F->lead, s);
+        qdc_parts(F->q, F->part, F->re, F->im, s);
+    }
+    fmpz_mpoly_clear(x, s->zctx);
+    return r;
+}
+
+static void qdc_fix_clear(qdc_fix_t *F)
+{
+    const rs_scheme_struct *s = F->s;
+    slong k;
+    if (s == NULL) return;
+    flint_free(F->sign);
+    qdc_lists_clear(&F->L);
+    rs_schur_cx_conds_clear(&F->sc, s->zctx);
+    rs_routh_cx_conds_clear(&F->bc, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_clear(F->q + k, s->zctx);
+    fmpz_mpoly_clear(F->re, s->zctx); fmpz_mpoly_clear(F->im, s->zctx);
+    fmpz_mpoly_clear(F->lead, s->zctx);
+}
+
+int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
+{
+    qdc_fix_t F;
+    int r, vd = 0;
     json_t *ce = NULL;
     if (verdict == NULL) verdict = &vd;
     if (counter == NULL) counter = &ce;
     *verdict = 0;
     *counter = NULL;
     /* the case's real set values and extra[] (region's `at`), tv kept free */
-    keep[0] = run->c->params[tv].name;
-    rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
-    r = rs_run_variant(&v, run, as, nas);
-    rs_assign_free(as, nas);
-    if (r != RS_OK) return r;
-    s = v->s;
-    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    fmpz_mpoly_init(lead, s->zctx); fmpz_mpoly_init(x, s->zctx);
-    for (k = 0; k < 4; k++) fmpz_mpoly_init(q + k, s->zctx);
-    rs_schur_cx_conds_init(&sc);
-    rs_routh_cx_conds_init(&bc, s->zctx);
-    qdc_lists_init(&L, s);
-    sign = rs_run_signs(run, s);
-    r = qdc_build(re, im, &n, &sc, &bc, &L, sign, run, req, v);
-    for (k = 0; r == RS_OK && k < s->lambda_var; k++)
-        if (k != tv && k != s->sqrt_var && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0
-                                            || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
-            r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every real parameter but %s set: "
-                             "region and claim over Q(sqrt d)(i) are decided on the exact cells of one parameter "
-                             "(jury, hurwitz and routh give the conditions with more parameters free)", keep[0]);
+    r = qdc_fix_init(&F, run, req, &tv, 1, extra, nextra);
     if (r == RS_OK) {
+        const rs_scheme_struct *s = F.s;
         json_t *oo = kind < 0 ? json_object() : o;
-        /* |a_n|^2 = lr^2 + li^2: zero exactly where the step is singular */
-        rs_charpoly_coeff(x, re, n, s->lambda_var, s->zctx);
-        fmpz_mpoly_mul(lead, x, x, s->zctx);
-        rs_charpoly_coeff(x, im, n, s->lambda_var, s->zctx);
-        fmpz_mpoly_mul(x, x, x, s->zctx);
-        fmpz_mpoly_add(lead, lead, x, s->zctx);
-        rs_scheme_reduce_sqrt(lead, s);
-        qdc_parts(q, part, re, im, s);
-        r = rs_an_qd_cx_cells(oo, run, req->q, tv, &L.q[0], &L.q[1], part, n, lead, dom, kind, verdict, counter);
+        r = rs_an_qd_cx_cells(oo, run, req->q, tv, &F.L.q[0], &F.L.q[1], F.part, F.n, F.lead, dom, kind, verdict,
+                              counter);
         if (r == RS_OK && kind < 0) {
             char *over = qdc_over_str(s->sqrt_d);
             json_object_set_new(oo, "analysis", json_string("region"));
-            json_object_set_new(oo, "param", json_string(keep[0]));
+            json_object_set_new(oo, "param", json_string(run->c->params[tv].name));
             json_object_set_new(oo, "over", json_string(over));
             flint_free(over);
             json_object_set_new(oo, "at", rs_run_cx_at(run));
-            json_object_set_new(oo, "p_re", qdc_poly_json(re, s, "lambda"));
-            json_object_set_new(oo, "p_im", qdc_poly_json(im, s, "lambda"));
-            json_object_set_new(oo, "conditions", json_incref(L.conds[0]));
-            json_object_set_new(oo, "conditions_bilharz", json_incref(L.conds[1]));
-            json_object_set_new(oo, "dropped", json_incref(L.dropped[0]));
+            json_object_set_new(oo, "p_re", qdc_poly_json(F.re, s, "lambda"));
+            json_object_set_new(oo, "p_im", qdc_poly_json(F.im, s, "lambda"));
+            json_object_set_new(oo, "conditions", json_incref(F.L.conds[0]));
+            json_object_set_new(oo, "conditions_bilharz", json_incref(F.L.conds[1]));
+            json_object_set_new(oo, "dropped", json_incref(F.L.dropped[0]));
             json_object_set_new(oo, "method", json_string(
                 "cells cut at the real roots of the norms c0^2 - d c1^2 of the Schur-Cohn conditions over "
                 "Q(sqrt d)(i) (jury's, delta_k = |a_k|^2 - |a_0|^2 > 0), of the Bilharz conditions (hurwitz's) and "
@@ -377,18 +423,38 @@ int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, 
                 "certified outside; not stable: marginal and unstable not told apart); each irrational cut t0 by "
                 "both lists' exact signs in Q(t0, sqrt d) (no delta_k zero there: no root on the circle, so not "
                 "stable is unstable); all must agree, else exit 3"));
-            rs_run_emit_exact(run, v, oo);
+            rs_run_emit_exact(run, F.v, oo);
         } else if (kind < 0) {
             json_decref(oo);
         }
     }
     json_decref(ce);
-    flint_free(sign);
-    qdc_lists_clear(&L);
-    rs_schur_cx_conds_clear(&sc, s->zctx);
-    rs_routh_cx_conds_clear(&bc, s->zctx);
-    for (k = 0; k < 4; k++) fmpz_mpoly_clear(q + k, s->zctx);
-    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
-    fmpz_mpoly_clear(lead, s->zctx); fmpz_mpoly_clear(x, s->zctx);
+    qdc_fix_clear(&F);
+    return r;
+}
+
+int rs_an_qd_cx_region2(rs_run_t *run, const rs_an_req_t *req)
+{
+    qdc_fix_t F;
+    slong tv[2];
+    int r;
+    tv[0] = req->u.region.param;
+    tv[1] = req->u.region.param2;
+    r = qdc_fix_init(&F, run, req, tv, 2, req->u.region.at, req->u.region.nat);
+    if (r == RS_OK) {
+        json_t *ex = json_object();
+        char *over = qdc_over_str(F.s->sqrt_d);
+        json_object_set_new(ex, "over", json_string(over));
+        flint_free(over);
+        json_object_set_new(ex, "at", rs_run_cx_at(run));
+        json_object_set_new(ex, "p_re", qdc_poly_json(F.re, F.s, "lambda"));
+        json_object_set_new(ex, "p_im", qdc_poly_json(F.im, F.s, "lambda"));
+        json_object_set_new(ex, "conditions", json_incref(F.L.conds[0]));
+        json_object_set_new(ex, "conditions_bilharz", json_incref(F.L.conds[1]));
+        json_object_set_new(ex, "dropped", json_incref(F.L.dropped[0]));
+        r = rs_an_qd_cx_plane(run, req, F.v, tv, &F.L.q[0], &F.L.q[1], F.part, F.n, F.lead, ex);
+        json_decref(ex);
+    }
+    qdc_fix_clear(&F);
     return r;
 }
