@@ -761,6 +761,33 @@ int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
+/* stability with a free parameter: as over Q (stability_real), refused at
+ * its line naming the symbolic parameters and what decides them over
+ * Q(sqrt d)[params] (Q(sqrt d)(i) at complex set values) */
+static int qd_stability_unset(rs_run_t *run, const rs_request_t *q, const qd_cp_t *P)
+{
+    const rs_scheme_struct *s = run->sym;
+    fmpq_t re, im;
+    char *fp = NULL, *msg = NULL;
+    slong k;
+    int r = RS_OK;
+    fmpq_init(re); fmpq_init(im);
+    for (k = 0; k < s->lambda_var; k++)
+        if (!param_value(re, im, run->c, k)
+            && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
+            rs_str_catf(&fp, "%s%s", fp == NULL ? "" : ", ", run->c->params[k].name);
+    if (fp != NULL) {
+        rs_str_catf(&msg, "stability needs every parameter set to a number; still symbolic: %s (use set, --set, or "
+                    "jury, hurwitz, routh for the conditions over Q(sqrt %ld)%s[params], region/claim for symbolic "
+                    "parameters)", fp, (long) s->sqrt_d, run->c->ncsets > 0 ? "(i)" : "");
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    flint_free(fp);
+    flint_free(msg);
+    fmpq_clear(re); fmpq_clear(im);
+    return r;
+}
+
 int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -772,6 +799,7 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
     {
         qd_cp_t P;
         int one = qd_onestep(run, q, &P, &r);
+        if (r == RS_OK) r = qd_stability_unset(run, q, &P);
         if (r == RS_OK && !one) r = qd_generic_stability(run, req, &P);
         qd_cp_clear(&P, run->sym);
         if (r != RS_OK || !one) return r;
