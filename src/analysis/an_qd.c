@@ -89,6 +89,8 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
         return RS_OK;
     /* one real parameter's cells over Q(sqrt d)(i) (an_qd_complex.c's rs_an_qd_cx_fiber) */
     if (strcmp(n, "region") == 0 && !req->u.region.forall && !req->u.region.twod) return RS_OK;
+    /* two real parameters' plane over Q(sqrt d)(i) (an_qd_cx2.c) */
+    if (strcmp(n, "region") == 0 && !req->u.region.forall) return RS_OK;
     if (strcmp(n, "claim") == 0 && qd_nfree(run) <= 1) return RS_OK;
     /* the z-plane of one parameter, each point over Q(sqrt d)(i) (an_qd_map.c) */
     if ((strcmp(n, "bilinear") == 0 || strcmp(n, "sweep") == 0) && run->c->ncsets == 0) return RS_OK;   /* an_qd_map.c */
@@ -103,14 +105,14 @@ int rs_an_qd_check(rs_run_t *run, const rs_an_req_t *req)
                      "with two free parameters or for all (its cells would need Q(sqrt %ld)(i) in two parameters; "
                      "stability, radius, modes, simulate, jury, hurwitz and routh do, the last three with the "
                      "conditions over Q(sqrt %ld)(i)[params]; region NAME and claim do with one free real parameter, "
-                     "region also when only its own parameters have complex values)", n, (long) run->m->qd->d,
-                     (long) run->m->qd->d, (long) run->m->qd->d);
+                     "region N1, N2 with two, region also when only its own parameters have complex values)", n,
+                     (long) run->m->qd->d, (long) run->m->qd->d, (long) run->m->qd->d);
         else if (strcmp(n, "map") == 0 || strcmp(n, "sweep") == 0 || strcmp(n, "bilinear") == 0
                  || strcmp(n, "limit") == 0)
             snprintf(msg, sizeof msg, "expected real set values: %s over Q(sqrt %ld) (rk %s) runs without complex "
                      "set values only (it would need Q(sqrt %ld)(i) with the complex value substituted); at "
-                     "complex set values stability, radius, modes, simulate, jury, hurwitz, routh, region NAME and "
-                     "claim run", n, (long) run->m->qd->d, run->m->qd->tableau, (long) run->m->qd->d);
+                     "complex set values stability, radius, modes, simulate, jury, hurwitz, routh, region NAME, "
+                     "region N1, N2 and claim run", n, (long) run->m->qd->d, run->m->qd->tableau, (long) run->m->qd->d);
         else
             snprintf(msg, sizeof msg, "expected charpoly, stability, radius, astability, modes, simulate, jury, "
                      "hurwitz, routh, region, claim, bilinear, limit, sweep (of stability or radius) or map: %s is "
@@ -770,6 +772,33 @@ int rs_an_qd_charpoly(rs_run_t *run, const rs_an_req_t *req)
     return r;
 }
 
+/* stability with a free parameter: as over Q (stability_real), refused at
+ * its line naming the symbolic parameters and what decides them over
+ * Q(sqrt d)[params] (Q(sqrt d)(i) at complex set values) */
+static int qd_stability_unset(rs_run_t *run, const rs_request_t *q, const qd_cp_t *P)
+{
+    const rs_scheme_struct *s = run->sym;
+    fmpq_t re, im;
+    char *fp = NULL, *msg = NULL;
+    slong k;
+    int r = RS_OK;
+    fmpq_init(re); fmpq_init(im);
+    for (k = 0; k < s->lambda_var; k++)
+        if (!param_value(re, im, run->c, k)
+            && (fmpz_mpoly_degree_si(P->p0, k, s->zctx) > 0 || fmpz_mpoly_degree_si(P->p1, k, s->zctx) > 0))
+            rs_str_catf(&fp, "%s%s", fp == NULL ? "" : ", ", run->c->params[k].name);
+    if (fp != NULL) {
+        rs_str_catf(&msg, "stability needs every parameter set to a number; still symbolic: %s (use set, --set, or "
+                    "jury, hurwitz, routh for the conditions over Q(sqrt %ld)%s[params], region/claim for symbolic "
+                    "parameters)", fp, (long) s->sqrt_d, run->c->ncsets > 0 ? "(i)" : "");
+        r = rs_req_error(run, q, q->text, RS_ERR_INPUT, "%s", msg);
+    }
+    flint_free(fp);
+    flint_free(msg);
+    fmpq_clear(re); fmpq_clear(im);
+    return r;
+}
+
 int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
 {
     const rs_request_t *q = req->q;
@@ -781,6 +810,7 @@ int rs_an_qd_stability(rs_run_t *run, const rs_an_req_t *req)
     {
         qd_cp_t P;
         int one = qd_onestep(run, q, &P, &r);
+        if (r == RS_OK) r = qd_stability_unset(run, q, &P);
         if (r == RS_OK && !one) r = qd_generic_stability(run, req, &P);
         qd_cp_clear(&P, run->sym);
         if (r != RS_OK || !one) return r;

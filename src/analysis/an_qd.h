@@ -46,6 +46,17 @@ int rs_an_qd_conds_add(rs_an_qd_conds_t *q, json_t *conds, json_t *parts, json_t
 /* 1 when every condition of q holds at pt (every variable of s), else 0 */
 int rs_an_qd_conds_hold(const rs_an_qd_conds_t *q, fmpq *const *pt);
 void rs_an_qd_conds_clear(rs_an_qd_conds_t *q);
+/* q's conditions (and alt's, when not NULL: they must say the same) against
+ * the exact verdict (rs_an_qd_parts_stable of part[], degree n) at
+ * admissible rational points of the free parameters of a and b (sqrt(d)'s
+ * variable skipped): o's "sample_check" (against the exact verdict over
+ * field) and, with alt, "cross_check" {alt_method, points, agree}; exit 3
+ * when the verdict's two routes or the two lists ("%s conditions disagree"
+ * with pair) disagree */
+int rs_an_qd_conds_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t a, const fmpz_mpoly_t b,
+                                const fmpz_mpoly_struct *const *part, slong n, const rs_an_qd_conds_t *q,
+                                const rs_an_qd_conds_t *alt, const char *field, const char *pair,
+                                const char *alt_method, json_t *o, const rs_request_t *rq);
 /* an_qd_never.c: 1 (the reason into buf) when q's conditions provably never
  * all hold under the assume lines (each split into the sign cases of c0,
  * c1 and the norm c0^2 - d c1^2, every choice refuted by rs_run_conds_never) */
@@ -82,6 +93,22 @@ int rs_an_qd_cx_other(const rs_run_t *run, slong tv);
 /* an_qd_region2.c: region N1, N2 over Q(sqrt d) (the rational CAD on the
  * norms of the critical polynomials, each cell decided over Q(sqrt d)) */
 int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req);
+/* sqrt(d) as the positive root of x^2 - d; g = g0 + sqrt(d) g1 (g split at
+ * sqrt(d)'s variable, or g0 = g and g1 = h1 when h1 != NULL): its norm
+ * g0^2 - d g1^2 appended to crit (flint_realloc'd), with parts g0 and g1
+ * too; 0 when the norm vanishes identically */
+void rs_an_qd_sqrt_alg(rs_alg_t *sq, slong d);
+int rs_an_qd_push_norm(fmpz_mpoly_struct **crit, slong *ncrit, const fmpz_mpoly_t g, const fmpz_mpoly_struct *h1,
+                       int parts, const rs_scheme_struct *s);
+/* region N1, N2 at complex set values of other parameters (an_qd_complex.c:
+ * the model; an_qd_cx2.c: the plane of tv[0], tv[1] cut by the norms of
+ * both lists' conditions and of |a_n|^2 = lead, each cell decided by both
+ * lists and, at rational samples, rs_an_qd_parts_verdict; ex's keys added
+ * to the result) */
+int rs_an_qd_cx_region2(rs_run_t *run, const rs_an_req_t *req);
+int rs_an_qd_cx_plane(rs_run_t *run, const rs_an_req_t *req, const rs_variant_t *v, const slong *tv,
+                      const rs_an_qd_conds_t *q, const rs_an_qd_conds_t *alt, const fmpz_mpoly_struct *const *part,
+                      slong n, const fmpz_mpoly_t lead, json_t *ex);
 /* the fraction-free Routh array over Q(sqrt d)[params], its conditions
  * cross-checked against hurwitz's and the point verdict at sample points */
 int rs_an_qd_routh(rs_run_t *run, const rs_an_req_t *req);

@@ -28,8 +28,6 @@
 #include "stability/routh_complex.h"
 #include "stability/schur_complex.h"
 
-#define QDC_SAMPLE_POINTS 12
-
 static const char *const kind_name[3] = {"jury", "hurwitz", "routh"};
 
 /* "Q(sqrt d)(i)" (flint_free it) */
@@ -111,27 +109,21 @@ int rs_an_qd_parts_verdict(const fmpz_mpoly_struct *const *part, slong n, fmpq *
     return sc;
 }
 
-/* rs_an_qd_parts_stable of re + i im (sqrt(d) a variable in both) */
-static int qdc_point_stable(const fmpz_mpoly_t re, const fmpz_mpoly_t im, slong n, fmpq *const *pt,
-                            const rs_scheme_struct *s)
+/* the parts re = q[0] + sqrt(d) q[1], im = q[2] + sqrt(d) q[3] (q[k]
+ * without sqrt(d); initialised by the caller) as part[] */
+static void qdc_parts(fmpz_mpoly_struct *q, const fmpz_mpoly_struct **part, const fmpz_mpoly_t re,
+                      const fmpz_mpoly_t im, const rs_scheme_struct *s)
 {
-    fmpz_mpoly_struct q[4];
-    const fmpz_mpoly_struct *part[4];
-    int j, sc;
-    for (j = 0; j < 4; j++) {
-        fmpz_mpoly_init(q + j, s->zctx);
-        rs_charpoly_coeff(q + j, j < 2 ? re : im, j & 1, s->sqrt_var, s->zctx);
-        part[j] = q + j;
+    int k;
+    for (k = 0; k < 4; k++) {
+        rs_charpoly_coeff(q + k, k < 2 ? re : im, k & 1, s->sqrt_var, s->zctx);
+        part[k] = q + k;
     }
-    sc = rs_an_qd_parts_stable(part, n, pt, s);
-    for (j = 0; j < 4; j++) fmpz_mpoly_clear(q + j, s->zctx);
-    return sc;
 }
 
 /* the two lists: Schur-Cohn's deltas (m = 0) and Bilharz's conditions (m = 1) */
 typedef struct {
-    rs_an_qd_conds_t q[2];
-    int never[2];
+    rs_an_qd_conds_t q[2];   /* q[m].never: a condition is never true */
     json_t *raw[2], *conds[2], *parts[2], *dropped[2], *always[2];
 } qdc_lists_t;
 
@@ -140,7 +132,6 @@ static void qdc_lists_init(qdc_lists_t *L, const rs_scheme_struct *s)
     int m;
     for (m = 0; m < 2; m++) {
         L->q[m].n = 0; L->q[m].c0 = L->q[m].c1 = NULL; L->q[m].ne = NULL; L->q[m].s = s; L->q[m].never = 0;
-        L->never[m] = 0;
         L->raw[m] = json_array(); L->conds[m] = json_array(); L->parts[m] = json_array();
         L->dropped[m] = json_array(); L->always[m] = json_array();
     }
@@ -165,59 +156,12 @@ static void qdc_add(qdc_lists_t *L, int m, fmpz_mpoly_t f, const char *origin, c
     json_array_append_new(L->raw[m], json_pack("{s:s,s:o}", "origin", origin, "poly", rs_json_zpoly(f, s)));
     if (fmpz_mpoly_is_zero(f, s->zctx)) {
         rs_json_append_unique(L->conds[m], "0 > 0");
-        L->never[m] = 1;
+        L->q[m].never = 1;
         return;
     }
     a = rs_an_qd_conds_add(&L->q[m], L->conds[m], L->parts[m], L->dropped[m], f, origin, sign);
     if (a == 1) json_array_append_new(L->always[m], json_string(origin));
-    if (a == -1) L->never[m] = 1;
-}
-
-/* what list m says at pt: 1 stable */
-static int qdc_says(const qdc_lists_t *L, int m, fmpq *const *pt)
-{
-    return !L->never[m] && rs_an_qd_conds_hold(&L->q[m], pt);
-}
-
-/* both lists against each other and the exact point verdict at admissible
- * rational points of the free parameters (sqrt(d)'s variable skipped) */
-static int qdc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t re, const fmpz_mpoly_t im,
-                            slong n, const qdc_lists_t *L, int m, json_t *o, const rs_request_t *rq)
-{
-    rs_sample_pts_t P;
-    slong nok = 0;
-    json_t *chk = json_object(), *bad = NULL;
-    int r = RS_OK;
-    rs_sample_pts_init(&P, run, v, re, im, v->s->sqrt_var);
-    while (nok < (P.nfree > 0 ? QDC_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
-        int says, st = qdc_point_stable(re, im, n, P.pp, v->s);
-        if (st == -1) continue;
-        if (st == -2) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): Schur-Cohn and the "
-                             "certified roots disagree at a sample point", rq->text);
-            break;
-        }
-        says = qdc_says(L, m, P.pp);
-        if (qdc_says(L, 1 - m, P.pp) != says) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d)(i): the Schur-Cohn and the "
-                             "Bilharz conditions disagree at a sample point", rq->text);
-            break;
-        }
-        nok++;
-        if (st != says) {
-            bad = rs_sample_pts_json(&P);
-            rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
-        }
-    }
-    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d)(i) (Schur-Cohn with exact "
-                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
-                            "assumptions");
-    json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", m == 0 ? "Bilharz (complex "
-                        "Routh-Hurwitz on the bilinear image) over Q(sqrt d)(i): its conditions at the same sample "
-                        "points" : "Schur-Cohn over Q(sqrt d)(i): its conditions delta_k > 0 at the same sample "
-                        "points", "points", (json_int_t) nok, "agree", r == RS_OK));
-    rs_sample_pts_clear(&P);
-    return r;
+    if (a == -1) L->q[m].never = 1;
 }
 
 static const char qdc_note_jury[] =
@@ -278,17 +222,20 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     rs_variant_t *v;
     const rs_scheme_struct *s;
     fmpz_mpoly_t re, im;
+    fmpz_mpoly_struct q[4];
+    const fmpz_mpoly_struct *part[4];
     rs_schur_cx_conds_t sc;
     rs_routh_cx_conds_t bc;
     qdc_lists_t L;
     json_t *o;
-    slong n = 0;
+    slong n = 0, k;
     int r, m = kind == 0 ? 0 : 1, *sign;
     char *why = NULL, *over;
     r = rs_run_default_variant(run, &v);
     if (r != RS_OK) return r;
     s = v->s;
     fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_init(q + k, s->zctx);
     rs_schur_cx_conds_init(&sc);
     rs_routh_cx_conds_init(&bc, s->zctx);
     qdc_lists_init(&L, s);
@@ -323,16 +270,21 @@ int rs_an_qd_cx_conds(rs_run_t *run, const rs_an_req_t *req, int kind)
     json_object_set_new(o, "note", json_string(m == 0 ? qdc_note_jury : qdc_note_bilharz));
     /* never under the assumptions (an_qd_never.c): both lists say so, the
      * sample check then expects no stable point */
-    if (!L.never[m] && L.q[m].n > 0 && rs_an_qd_conds_never(&why, run, &L.q[m])) {
+    if (!L.q[m].never && L.q[m].n > 0 && rs_an_qd_conds_never(&why, run, &L.q[m])) {
         rs_str_catf(&why, "; never asymptotically stable");
         rs_json_set_never_conditions(o, why);
-        L.never[m] = L.q[m].never = 1;
+        L.q[m].never = 1;
     }
     flint_free(why);
     why = NULL;
-    json_object_set_new(o, "verdict", json_string(L.never[m] ? "never stable" : L.q[m].n == 0
+    json_object_set_new(o, "verdict", json_string(L.q[m].never ? "never stable" : L.q[m].n == 0
                                                   ? "stable under the assumptions" : "stable iff the conditions hold"));
-    r = qdc_sample_check(run, v, re, im, n, &L, m, o, req->q);
+    qdc_parts(q, part, re, im, s);
+    r = rs_an_qd_conds_sample_check(run, v, re, im, part, n, &L.q[m], &L.q[1 - m], "Q(sqrt d)(i)",
+                                    "the Schur-Cohn and the Bilharz", m == 0 ? "Bilharz (complex Routh-Hurwitz on "
+                                    "the bilinear image) over Q(sqrt d)(i): its conditions at the same sample points"
+                                    : "Schur-Cohn over Q(sqrt d)(i): its conditions delta_k > 0 at the same sample "
+                                    "points", o, req->q);
     if (r == RS_OK) rs_run_emit_exact(run, v, o);
     else json_decref(o);
 done:
@@ -340,6 +292,7 @@ done:
     qdc_lists_clear(&L);
     rs_schur_cx_conds_clear(&sc, s->zctx);
     rs_routh_cx_conds_clear(&bc, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_clear(q + k, s->zctx);
     fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
     return r;
 }
@@ -352,74 +305,116 @@ int rs_an_qd_cx_other(const rs_run_t *run, slong tv)
     return 0;
 }
 
-int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
-                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
-{
-    const char *keep[1];
-    rs_assign_t *as = NULL;
-    slong nas = 0, n = 0, k;
+/* the model at the case's real set values and extra[] with tv[0..ntv)
+ * kept free: p = re + i im, both lists, parts and |a_n|^2 */
+typedef struct {
     rs_variant_t *v;
     const rs_scheme_struct *s;
-    fmpz_mpoly_t re, im, lead, x;
+    slong n;
+    fmpz_mpoly_t re, im, lead;
     fmpz_mpoly_struct q[4];
     const fmpz_mpoly_struct *part[4];
     rs_schur_cx_conds_t sc;
     rs_routh_cx_conds_t bc;
     qdc_lists_t L;
-    int r, *sign, vd = 0;
+    int *sign;
+} qdc_fix_t;
+
+static int qdc_fix_init(qdc_fix_t *F, rs_run_t *run, const rs_an_req_t *req, const slong *tv, slong ntv,
+                        const rs_assign_t *extra, slong nextra)
+{
+    const char *keep[2];
+    rs_assign_t *as = NULL;
+    slong nas = 0, k;
+    const rs_scheme_struct *s;
+    fmpz_mpoly_t x;
+    int r;
+    F->s = NULL;
+    for (k = 0; k < ntv; k++) keep[k] = run->c->params[tv[k]].name;
+    rs_run_assignments(run, &as, &nas, keep, ntv, extra, nextra);
+    r = rs_run_variant(&F->v, run, as, nas);
+    rs_assign_free(as, nas);
+    if (r != RS_OK) return r;
+    s = F->s = F->v->s;
+    F->n = 0;
+    fmpz_mpoly_init(F->re, s->zctx); fmpz_mpoly_init(F->im, s->zctx);
+    fmpz_mpoly_init(F->lead, s->zctx); fmpz_mpoly_init(x, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_init(F->q + k, s->zctx);
+    rs_schur_cx_conds_init(&F->sc);
+    rs_routh_cx_conds_init(&F->bc, s->zctx);
+    qdc_lists_init(&F->L, s);
+    F->sign = rs_run_signs(run, s);
+    r = qdc_build(F->re, F->im, &F->n, &F->sc, &F->bc, &F->L, F->sign, run, req, F->v);
+    for (k = 0; r == RS_OK && k < s->lambda_var; k++)
+        if (k != tv[0] && (ntv < 2 || k != tv[1]) && k != s->sqrt_var
+            && (fmpz_mpoly_degree_si(F->re, k, s->zctx) > 0 || fmpz_mpoly_degree_si(F->im, k, s->zctx) > 0)) {
+            if (ntv == 1)
+                r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every real parameter but %s "
+                                 "set: region and claim over Q(sqrt d)(i) are decided on the exact cells of one "
+                                 "parameter (jury, hurwitz and routh give the conditions with more parameters free)",
+                                 keep[0]);
+            else
+                r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "'%s' is symbolic: region N1, N2 over Q(sqrt "
+                                 "d)(i) decides two parameters; set the others (jury, hurwitz and routh give the "
+                                 "conditions with more parameters free)", s->vars[k]);
+        }
+    if (r == RS_OK) {
+        /* |a_n|^2 = lr^2 + li^2: zero exactly where the step is singular */
+        rs_charpoly_coeff(x, F->re, F->n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(F->lead, x, x, s->zctx);
+        rs_charpoly_coeff(x, F->im, F->n, s->lambda_var, s->zctx);
+        fmpz_mpoly_mul(x, x, x, s->zctx);
+        fmpz_mpoly_add(F->lead, F->lead, x, s->zctx);
+        rs_scheme_reduce_sqrt(F->lead, s);
+        qdc_parts(F->q, F->part, F->re, F->im, s);
+    }
+    fmpz_mpoly_clear(x, s->zctx);
+    return r;
+}
+
+static void qdc_fix_clear(qdc_fix_t *F)
+{
+    const rs_scheme_struct *s = F->s;
+    slong k;
+    if (s == NULL) return;
+    flint_free(F->sign);
+    qdc_lists_clear(&F->L);
+    rs_schur_cx_conds_clear(&F->sc, s->zctx);
+    rs_routh_cx_conds_clear(&F->bc, s->zctx);
+    for (k = 0; k < 4; k++) fmpz_mpoly_clear(F->q + k, s->zctx);
+    fmpz_mpoly_clear(F->re, s->zctx); fmpz_mpoly_clear(F->im, s->zctx);
+    fmpz_mpoly_clear(F->lead, s->zctx);
+}
+
+int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, const rs_an_req_t *req, int kind,
+                      slong tv, const rs_bound_t *dom, const rs_assign_t *extra, slong nextra)
+{
+    qdc_fix_t F;
+    int r, vd = 0;
     json_t *ce = NULL;
     if (verdict == NULL) verdict = &vd;
     if (counter == NULL) counter = &ce;
     *verdict = 0;
     *counter = NULL;
     /* the case's real set values and extra[] (region's `at`), tv kept free */
-    keep[0] = run->c->params[tv].name;
-    rs_run_assignments(run, &as, &nas, keep, 1, extra, nextra);
-    r = rs_run_variant(&v, run, as, nas);
-    rs_assign_free(as, nas);
-    if (r != RS_OK) return r;
-    s = v->s;
-    fmpz_mpoly_init(re, s->zctx); fmpz_mpoly_init(im, s->zctx);
-    fmpz_mpoly_init(lead, s->zctx); fmpz_mpoly_init(x, s->zctx);
-    for (k = 0; k < 4; k++) fmpz_mpoly_init(q + k, s->zctx);
-    rs_schur_cx_conds_init(&sc);
-    rs_routh_cx_conds_init(&bc, s->zctx);
-    qdc_lists_init(&L, s);
-    sign = rs_run_signs(run, s);
-    r = qdc_build(re, im, &n, &sc, &bc, &L, sign, run, req, v);
-    for (k = 0; r == RS_OK && k < s->lambda_var; k++)
-        if (k != tv && k != s->sqrt_var && (fmpz_mpoly_degree_si(re, k, s->zctx) > 0
-                                            || fmpz_mpoly_degree_si(im, k, s->zctx) > 0))
-            r = rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "expected every real parameter but %s set: "
-                             "region and claim over Q(sqrt d)(i) are decided on the exact cells of one parameter "
-                             "(jury, hurwitz and routh give the conditions with more parameters free)", keep[0]);
+    r = qdc_fix_init(&F, run, req, &tv, 1, extra, nextra);
     if (r == RS_OK) {
+        const rs_scheme_struct *s = F.s;
         json_t *oo = kind < 0 ? json_object() : o;
-        /* |a_n|^2 = lr^2 + li^2: zero exactly where the step is singular */
-        rs_charpoly_coeff(x, re, n, s->lambda_var, s->zctx);
-        fmpz_mpoly_mul(lead, x, x, s->zctx);
-        rs_charpoly_coeff(x, im, n, s->lambda_var, s->zctx);
-        fmpz_mpoly_mul(x, x, x, s->zctx);
-        fmpz_mpoly_add(lead, lead, x, s->zctx);
-        rs_scheme_reduce_sqrt(lead, s);
-        for (k = 0; k < 4; k++) {
-            rs_charpoly_coeff(q + k, k < 2 ? re : im, k & 1, s->sqrt_var, s->zctx);
-            part[k] = q + k;
-        }
-        for (k = 0; k < 2; k++) L.q[k].never |= L.never[k];
-        r = rs_an_qd_cx_cells(oo, run, req->q, tv, &L.q[0], &L.q[1], part, n, lead, dom, kind, verdict, counter);
+        r = rs_an_qd_cx_cells(oo, run, req->q, tv, &F.L.q[0], &F.L.q[1], F.part, F.n, F.lead, dom, kind, verdict,
+                              counter);
         if (r == RS_OK && kind < 0) {
             char *over = qdc_over_str(s->sqrt_d);
             json_object_set_new(oo, "analysis", json_string("region"));
-            json_object_set_new(oo, "param", json_string(keep[0]));
+            json_object_set_new(oo, "param", json_string(run->c->params[tv].name));
             json_object_set_new(oo, "over", json_string(over));
             flint_free(over);
             json_object_set_new(oo, "at", rs_run_cx_at(run));
-            json_object_set_new(oo, "p_re", qdc_poly_json(re, s, "lambda"));
-            json_object_set_new(oo, "p_im", qdc_poly_json(im, s, "lambda"));
-            json_object_set_new(oo, "conditions", json_incref(L.conds[0]));
-            json_object_set_new(oo, "conditions_bilharz", json_incref(L.conds[1]));
-            json_object_set_new(oo, "dropped", json_incref(L.dropped[0]));
+            json_object_set_new(oo, "p_re", qdc_poly_json(F.re, s, "lambda"));
+            json_object_set_new(oo, "p_im", qdc_poly_json(F.im, s, "lambda"));
+            json_object_set_new(oo, "conditions", json_incref(F.L.conds[0]));
+            json_object_set_new(oo, "conditions_bilharz", json_incref(F.L.conds[1]));
+            json_object_set_new(oo, "dropped", json_incref(F.L.dropped[0]));
             json_object_set_new(oo, "method", json_string(
                 "cells cut at the real roots of the norms c0^2 - d c1^2 of the Schur-Cohn conditions over "
                 "Q(sqrt d)(i) (jury's, delta_k = |a_k|^2 - |a_0|^2 > 0), of the Bilharz conditions (hurwitz's) and "
@@ -428,18 +423,38 @@ int rs_an_qd_cx_fiber(int *verdict, json_t **counter, json_t *o, rs_run_t *run, 
                 "certified outside; not stable: marginal and unstable not told apart); each irrational cut t0 by "
                 "both lists' exact signs in Q(t0, sqrt d) (no delta_k zero there: no root on the circle, so not "
                 "stable is unstable); all must agree, else exit 3"));
-            rs_run_emit_exact(run, v, oo);
+            rs_run_emit_exact(run, F.v, oo);
         } else if (kind < 0) {
             json_decref(oo);
         }
     }
     json_decref(ce);
-    flint_free(sign);
-    qdc_lists_clear(&L);
-    rs_schur_cx_conds_clear(&sc, s->zctx);
-    rs_routh_cx_conds_clear(&bc, s->zctx);
-    for (k = 0; k < 4; k++) fmpz_mpoly_clear(q + k, s->zctx);
-    fmpz_mpoly_clear(re, s->zctx); fmpz_mpoly_clear(im, s->zctx);
-    fmpz_mpoly_clear(lead, s->zctx); fmpz_mpoly_clear(x, s->zctx);
+    qdc_fix_clear(&F);
+    return r;
+}
+
+int rs_an_qd_cx_region2(rs_run_t *run, const rs_an_req_t *req)
+{
+    qdc_fix_t F;
+    slong tv[2];
+    int r;
+    tv[0] = req->u.region.param;
+    tv[1] = req->u.region.param2;
+    r = qdc_fix_init(&F, run, req, tv, 2, req->u.region.at, req->u.region.nat);
+    if (r == RS_OK) {
+        json_t *ex = json_object();
+        char *over = qdc_over_str(F.s->sqrt_d);
+        json_object_set_new(ex, "over", json_string(over));
+        flint_free(over);
+        json_object_set_new(ex, "at", rs_run_cx_at(run));
+        json_object_set_new(ex, "p_re", qdc_poly_json(F.re, F.s, "lambda"));
+        json_object_set_new(ex, "p_im", qdc_poly_json(F.im, F.s, "lambda"));
+        json_object_set_new(ex, "conditions", json_incref(F.L.conds[0]));
+        json_object_set_new(ex, "conditions_bilharz", json_incref(F.L.conds[1]));
+        json_object_set_new(ex, "dropped", json_incref(F.L.dropped[0]));
+        r = rs_an_qd_cx_plane(run, req, F.v, tv, &F.L.q[0], &F.L.q[1], F.part, F.n, F.lead, ex);
+        json_decref(ex);
+    }
+    qdc_fix_clear(&F);
     return r;
 }

@@ -198,45 +198,44 @@ static int qd_point_stable(const fmpz_mpoly_t p0, const fmpz_mpoly_t p1, slong n
 
 #define QD_SAMPLE_POINTS 12
 
-/* the conditions against qd_point_stable at admissible rational points of
- * the free parameters (rs_sample_pts_t; "sample_check"; a disagreement: exit 3) */
-static int qc_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t p0, const fmpz_mpoly_t p1,
-                           slong n, const qc_t *q, const qc_t *alt, json_t *o, const rs_request_t *rq)
+int rs_an_qd_conds_sample_check(rs_run_t *run, const rs_variant_t *v, const fmpz_mpoly_t a, const fmpz_mpoly_t b,
+                                const fmpz_mpoly_struct *const *part, slong n, const qc_t *q, const qc_t *alt,
+                                const char *field, const char *pair, const char *alt_method, json_t *o,
+                                const rs_request_t *rq)
 {
     rs_sample_pts_t P;
-    slong nok = 0, nalt = 0;
+    slong nok = 0;
     json_t *chk = json_object(), *bad = NULL;
     int r = RS_OK;
-    rs_sample_pts_init(&P, run, v, p0, p1, v->s->sqrt_var);
+    char *against = NULL;
+    rs_sample_pts_init(&P, run, v, a, b, v->s->sqrt_var);
     while (nok < (P.nfree > 0 ? QD_SAMPLE_POINTS : 1) && r == RS_OK && bad == NULL && rs_sample_pts_next(&P)) {
-        int says, st = qd_point_stable(p0, p1, n, P.pp, v->s);
+        int says, st = rs_an_qd_parts_stable(part, n, P.pp, v->s);
         if (st == -1) continue;
-        if (st == -2) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): Schur-Cohn and the certified "
-                             "roots disagree at a sample point", rq->text);
+        says = st == -2 ? 0 : qc_hold(q, P.pp);
+        /* a second method's conditions must say the same */
+        if (st == -2 || (alt != NULL && qc_hold(alt, P.pp) != says)) {
+            char *msg = NULL;
+            if (st == -2) rs_str_catf(&msg, "%s over %s: Schur-Cohn and the certified roots disagree at a sample "
+                                      "point", rq->text, field);
+            else rs_str_catf(&msg, "%s over %s: %s conditions disagree at a sample point", rq->text, field, pair);
+            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s", msg);
+            flint_free(msg);
             break;
         }
-        says = qc_hold(q, P.pp);
-        /* a second method's conditions (routh: Hurwitz's) must say the same */
-        if (alt != NULL && qc_hold(alt, P.pp) != says) {
-            r = rs_req_error(run, rq, rq->text, RS_ERR_INCONSISTENT, "%s over Q(sqrt d): the Routh and the Hurwitz "
-                             "conditions disagree at a sample point", rq->text);
-            break;
-        }
-        if (alt != NULL) nalt++;
         nok++;
         if (st != says) {
             bad = rs_sample_pts_json(&P);
             rs_run_sample_disagree(chk, bad, says, st ? "stable" : "not stable");
         }
     }
-    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, "exact verdict over Q(sqrt d) (Schur-Cohn with exact "
-                            "signs and the certified Arb roots, which must agree) at rational points satisfying the "
-                            "assumptions");
+    rs_str_catf(&against, "exact verdict over %s (Schur-Cohn with exact signs and the certified Arb roots, which "
+                "must agree) at rational points satisfying the assumptions", field);
+    rs_run_sample_check_set(run, o, chk, nok, bad == NULL, against);
+    flint_free(against);
     if (alt != NULL)
-        json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", "hurwitz over Q(sqrt d): its "
-                            "conditions b_n^k D_k > 0 at the same sample points", "points", (json_int_t) nalt,
-                            "agree", r == RS_OK));
+        json_object_set_new(o, "cross_check", json_pack("{s:s,s:I,s:b}", "method", alt_method, "points",
+                            (json_int_t) nok, "agree", r == RS_OK));
     rs_sample_pts_clear(&P);
     return r;
 }
@@ -324,7 +323,12 @@ static int qd_sym_finish(qd_sym_t *S, rs_run_t *run, const rs_an_req_t *req, jso
     json_object_set_new(o, "always_true", always);
     json_object_set_new(o, "verdict", json_string(never ? "never stable" : S->q.n == 0 ? "stable under the assumptions"
                                                   : "stable iff the conditions hold"));
-    r = qc_sample_check(run, S->v, S->p0, S->p1, S->n, &S->q, alt, o, req->q);
+    {
+        const fmpz_mpoly_struct *part[4] = {S->p0, S->p1, NULL, NULL};
+        r = rs_an_qd_conds_sample_check(run, S->v, S->p0, S->p1, part, S->n, &S->q, alt, "Q(sqrt d)",
+                                        "the Routh and the Hurwitz", "hurwitz over Q(sqrt d): its conditions "
+                                        "b_n^k D_k > 0 at the same sample points", o, req->q);
+    }
     if (r == RS_OK) rs_run_emit_exact(run, S->v, o);
     else json_decref(o);
     return r;

@@ -86,7 +86,7 @@ static int qr_status_in(rs_status_t *st, qr_t *Q, const fmpq_poly_t Ah, const fm
 }
 
 /* sqrt(d) as the positive root of x^2 - d */
-static void qr_sqrt(rs_alg_t *sq, slong d)
+void rs_an_qd_sqrt_alg(rs_alg_t *sq, slong d)
 {
     fmpz_poly_zero(sq->minpoly);
     fmpz_poly_set_coeff_si(sq->minpoly, 2, 1);
@@ -106,7 +106,7 @@ static int qr_field(rs_status_t *st, const fmpq_poly_t A, const fmpq_poly_t B, r
     int dec = 0;
     rs_alg_init(&sq); rs_alg_init(&h);
     fmpq_poly_init(G); fmpq_poly_init(Sq); fmpq_poly_init(Ah); fmpq_poly_init(Bh); fmpq_poly_init(m);
-    qr_sqrt(&sq, Q->d);
+    rs_an_qd_sqrt_alg(&sq, Q->d);
     if (rs_alg_primitive(&h, G, Sq, g, &sq)) {
         /* g = G(h): A(g), B(g) as polynomials in h */
         fmpq_poly_set_fmpz_poly(m, h.minpoly);
@@ -149,7 +149,7 @@ static int qr_point(rs_status_t *st, const fmpq *vals, void *arg)
     int dec, sc = 1, ok = 1;
     rs_alg_init(&sq);
     fmpq_poly_init(A); fmpq_poly_init(B); fmpq_poly_init(S);
-    qr_sqrt(&sq, Q->d);
+    rs_an_qd_sqrt_alg(&sq, Q->d);
     fmpq_poly_set_fmpq(A, vals + 0);
     fmpq_poly_set_fmpq(B, vals + 1);
     fmpq_poly_set_coeff_si(S, 1, 1);
@@ -202,8 +202,8 @@ static int qr_point(rs_status_t *st, const fmpq *vals, void *arg)
 /* g = g0 + sqrt(d) g1 (reduced by sqrt(d)^2 = d; or g0 + sqrt(d) h1 when
  * h1 != NULL): its norm g0^2 - d g1^2 appended to crit, and with parts g0
  * and g1 too; 0 when g vanishes identically */
-static int qr_push_norm(fmpz_mpoly_struct **crit, slong *ncrit, const fmpz_mpoly_t g, const fmpz_mpoly_struct *h1,
-                        int parts, const rs_scheme_struct *s)
+int rs_an_qd_push_norm(fmpz_mpoly_struct **crit, slong *ncrit, const fmpz_mpoly_t g, const fmpz_mpoly_struct *h1,
+                       int parts, const rs_scheme_struct *s)
 {
     fmpz_mpoly_t g0, g1, t;
     int nz;
@@ -249,19 +249,19 @@ static int qr_critical(fmpz_mpoly_struct **crit, slong *ncrit, const char **why,
     fmpz_init(x);
     *why = NULL;
     rs_charpoly_coeff(g, p, n, lv, ctx);
-    qr_push_norm(crit, ncrit, g, NULL, 0, s);
+    rs_an_qd_push_norm(crit, ncrit, g, NULL, 0, s);
     for (j = 1; j >= -1; j -= 2) {
         fmpz_set_si(x, j);
         fmpz_mpoly_evaluate_one_fmpz(g, p, lv, x, ctx);
         rs_scheme_reduce_sqrt(g, s);
-        if (!qr_push_norm(crit, ncrit, g, NULL, 0, s)) *why = j == 1 ? "lambda = 1 as a root for every value"
+        if (!rs_an_qd_push_norm(crit, ncrit, g, NULL, 0, s)) *why = j == 1 ? "lambda = 1 as a root for every value"
                                                                      : "lambda = -1 as a root for every value";
     }
     if (*why == NULL && n >= 2 && fmpz_mpoly_discriminant(g, p, lv, ctx)) {
         rs_scheme_reduce_sqrt(g, s);
-        if (!qr_push_norm(crit, ncrit, g, NULL, 0, s)) *why = "a repeated root for every value";
+        if (!rs_an_qd_push_norm(crit, ncrit, g, NULL, 0, s)) *why = "a repeated root for every value";
     }
-    for (j = 0; j < nc; j++) qr_push_norm(crit, ncrit, c0 + j, c1 + j, 1, s);
+    for (j = 0; j < nc; j++) rs_an_qd_push_norm(crit, ncrit, c0 + j, c1 + j, 1, s);
     fmpz_mpoly_clear(g, ctx);
     fmpz_clear(x);
     return *why != NULL ? RS_ERR_INPUT : RS_OK;
@@ -306,6 +306,11 @@ int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req)
     int *hne = NULL, r;
     slong nh = 0;
     memset(&Q, 0, sizeof Q);
+    for (i = 0; i < run->c->ncsets; i++) {
+        slong k = rs_case_param_index(run->c, run->c->csets[i].name);
+        if (k != req->u.region.param && k != req->u.region.param2)
+            return rs_an_qd_cx_region2(run, req);   /* over Q(sqrt d)(i) (an_qd_cx2.c) */
+    }
     r = rs_region2_variant(&v, run, req);
     if (r != RS_OK) return r;
     s = v->s;
@@ -352,6 +357,7 @@ int rs_an_qd_region2(rs_run_t *run, const rs_an_req_t *req)
         hook.arg = &Q;
         hook.method = qr_method;
         hook.check_method = qr_check;
+        hook.complex_p = 0;
         r = rs_an_region_cad_qd(run, v, Q.av, Q.bv, &hook);
         if (r == RS_ERR_INPUT && run->err->msg[0] == '\0')   /* the plane's only input error */
             r = rs_req_error(run, req->q, req->rest, RS_ERR_INPUT, "%s", "the assumptions are contradictory");

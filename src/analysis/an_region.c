@@ -1174,6 +1174,8 @@ static int parse_forall(rs_an_req_t *req, rs_run_t *run, const char *t)
     for (k = 0; k < np; k++) {
         slong i;
         int in = k == tv || param_is_set(run, k);
+        for (i = 0; i < run->c->ncsets && !in; i++)   /* a complex set value: refused later, by name */
+            in = strcmp(run->c->csets[i].name, run->c->params[k].name) == 0;
         for (i = 0; i < req->u.region.nq && !in; i++) in = req->u.region.qv[i] == k;
         if (!in)
             return rs_req_error(run, q, req->rest, RS_ERR_INPUT,

@@ -177,6 +177,7 @@ typedef struct {
     int (*field)(rs_status_t *st, const fmpq_poly_t A, const fmpq_poly_t B, rs_alg_t *g, void *arg);
     void *arg;
     const char *method, *check_method;
+    int complex_p;   /* v's p is not the model's (complex set values, an_qd_cx2.c): no balls on it */
 } rs_region_qd_t;
 int rs_an_region_cad_qd(rs_run_t *run, const rs_variant_t *v, slong av, slong bv, const rs_region_qd_t *qd);
 /* f (in variables av, bv only) at (A(g), B(g)) in Q(g) = Q[x]/(m) */

@@ -258,13 +258,18 @@ static int cx_rational(rs_status_t *st, cad_t *c, fmpq *vals)
  * verdict leaves open (RS_ERR_UNDECIDED: a repeated root on the circle,
  * marginal or unstable by the matrix only) keeps its cell undecided with
  * the reason, as the irrational columns do, and the run goes on */
+/* over Q(sqrt d)(i) (an_qd_cx2.c): why a cell stays undecided */
+#define CAD_QDC_WHY "a root on (or, at a rational sample, too near) the unit circle with degree >= 2 over " \
+    "Q(sqrt d)(i): a Schur-Cohn condition is zero, marginal and unstable are not told apart"
+
 static int cad_sample_status(cell_t *e, cad_t *c, fmpq *vals)
 {
     int r = c->cx != NULL ? cx_rational(&e->st, c, vals) : cad_point_status(&e->st, c, vals);
     e->decided = r == RS_OK;
     if (r == RS_ERR_UNDECIDED && c->qd != NULL) {
-        e->why = "a repeated root on the unit circle at the rational sample: marginal and unstable are not told "
-                 "apart over Q(sqrt d) (Schur-Cohn and the roots see only that no root is outside)";
+        e->why = c->qd->complex_p ? CAD_QDC_WHY
+                 : "a repeated root on the unit circle at the rational sample: marginal and unstable are not told "
+                   "apart over Q(sqrt d) (Schur-Cohn and the roots see only that no root is outside)";
         rs_error_init(c->run->err);
         r = RS_OK;
     }
@@ -1366,7 +1371,8 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                          && rs_alg_primitive(&g, A, B, al, cand + i);
                 e->decided = qt && c->qd->field(&e->st, A, B, &g, c->qd->arg);
                 if (!e->decided) {
-                    e->decided = c->cx == NULL && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
+                    e->decided = c->cx == NULL && (c->qd == NULL || !c->qd->complex_p)
+                                 && cad_status_balls(&e->st, c, c->v->cp->p, al, cand + i, 2048);
                     e->balls = e->decided;
                 }
                 if (!e->decided && c->cx == NULL && c->qd == NULL
@@ -1377,7 +1383,9 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                 }
                 if (!e->decided)
                     e->why = c->cx != NULL ? "a section whose tower is above the cap (complex plane)"
-                                           : "a section with a root on the circle, tower above 64";
+                             : c->qd != NULL && c->qd->complex_p ? "a section whose tower over Q(sqrt d)(i) is "
+                               "above 64 (no ball route for p over Q(sqrt d)(i))"
+                             : "a section with a root on the circle, tower above 64";
                 r = rs_budget_check(c->run->err, "region N1, N2 (irrational columns)");
             } else if (!e->outside && c->cx != NULL) {
                 cx_pt_t pt = {NULL, NULL, NULL, NULL, A, B, m, &g};
@@ -1386,6 +1394,7 @@ static int cad_column_alg(cad_t *c, rs_alg_t *al, slong col)
                 e->decided = 1;
             } else if (!e->outside && c->qd != NULL) {
                 e->decided = c->qd->field(&e->st, A, B, &g, c->qd->arg);
+                if (!e->decided && c->qd->complex_p) e->why = CAD_QDC_WHY;
             } else if (!e->outside) {
                 e->decided = cad_status_field(&e->st, c, c->v->cp->p, A, B, m, &g);
             }

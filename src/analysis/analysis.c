@@ -208,7 +208,8 @@ static int check_complex_request(rs_run_t *run, const rs_an_req_t *req)
         free(val);
         return rs_req_error(run, req->q, req->q->text, RS_ERR_INPUT, "%s", msg);
     }
-    if (strcmp(nm, "region") == 0 && (req->u.region.forall || req->u.region.twod)) {
+    /* region N1, N2 of a model over Q(sqrt d): over Q(sqrt d)(i) (an_qd_cx2.c) */
+    if (strcmp(nm, "region") == 0 && (req->u.region.forall || (req->u.region.twod && run->m->qd == NULL))) {
         val = rs_complex_str(x->re, x->im);
         snprintf(msg, sizeof msg, "'region %s' does not run at a complex set value (%s = %s): over Q(i) recstab "
                  "runs region NAME of one real parameter, the others set", req->u.region.forall ? "NAME for all"

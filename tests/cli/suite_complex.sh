@@ -886,14 +886,16 @@ PY
 if [ "$rc" = 0 ] && [ "$res" = yes ]; then ok "sdirk2 + forward Euler region a, b: stable iff a < 0 and b < 0, (0, 0) undecided (repeated circle root), run finished"
 else fail "sdirk2 region2 undecided: rc=$rc $res $(head -1 "$T/err")"; fi
 
-# region a, c over Q(sqrt 2) at a complex value of a third parameter: not built, refused at
-# its line (exit 2) naming what runs (jury there gives the conditions over Q(sqrt 2)(i)[a, c])
-printf 'param a c q\nassume a > 0\nsubsystem S state y\n  y'"'"' = -a*y + c*x\nsubsystem T state x\n  x'"'"' = -c*y - q*x\nintegrate S rk sdirk2 1\nintegrate T euler-backward 1\ncouple jacobi\nset q = 1 + i/2\nanalyse region a, c\nanalyse jury\n' >"$T/r3.case"
+# region a, c over Q(sqrt 2) at a complex value of a third parameter runs over Q(sqrt 2)(i)
+# (h-sqrt12: cases/complex/sdirk2-complex-region2.case is its test; this coupled one has
+# 41689 cells, minutes); with a fourth parameter e still free it is refused at its line
+# (exit 2) naming e and what runs (jury there gives the conditions over Q(sqrt 2)(i)[a, c, e])
+printf 'param a c q e\nassume a > 0\nsubsystem S state y\n  y'"'"' = -a*y + c*x\nsubsystem T state x\n  x'"'"' = -c*y - q*x - e*x\nintegrate S rk sdirk2 1\nintegrate T euler-backward 1\ncouple jacobi\nset q = 1 + i/2\nanalyse region a, c\nanalyse jury\n' >"$T/r3.case"
 "$RS" "$T/r3.case" >/dev/null 2>"$T/err"; rc=$?
 v=$("$RS" --json --analyse jury "$T/r3.case" 2>/dev/null | python3 -c 'import json,sys; r=json.load(sys.stdin)["cases"][0]["results"][0]; print(r["over"], r["sample_check"]["agree"], r["cross_check"]["agree"])' 2>/dev/null)
-if [ "$rc" = 2 ] && grep -q "r3.case:11:9: expected real set values: region over Q(sqrt 2) .*its cells would need Q(sqrt 2)(i)" "$T/err" \
+if [ "$rc" = 2 ] && grep -q "r3.case:11:16: 'e' is symbolic: region N1, N2 over Q(sqrt d)(i) decides two parameters" "$T/err" \
    && [ "$v" = "Q(sqrt 2)(i) True True" ]; then
-    ok "sdirk2 region a, c at complex q refused (exit 2, file:line:col); jury there runs over Q(sqrt 2)(i)[a, c]"
+    ok "sdirk2 region a, c at complex q with e free refused (exit 2, file:line:col); jury there runs over Q(sqrt 2)(i)[a, c, e]"
 else fail "sdirk2 region2 complex third: rc=$rc '$v' $(head -1 "$T/err")"; fi
 
 # ---- routh over Q(sqrt 2)[a, c]: the conditions against a 400-step run of the definition ----
@@ -1500,6 +1502,16 @@ else ok "skipped sdirk2 region a, c comparison: no python3 with mpmath"; fi
 tr -d ' \n' <"$T/r2.json" | grep -q '"over":"Q(sqrt2)".*"samples_cross_checked":{[^}]*"disagree":0' \
     && ok "sdirk2 region a, c: JSON says over Q(sqrt 2) and no sample disagreed" \
     || fail "sdirk2 region a, c: over / samples_cross_checked missing"
+# region a, b at the complex set value q = i (h-sqrt12): z = a + i b, the
+# plane over Q(sqrt 2)(i), checked by tests/cli/sdirk2_cx_region2.py against
+# |R(z)| from the Butcher tableau (mpmath) and the case's hand values
+CR2=cases/complex/sdirk2-complex-region2.case
+"$RS" --json "$CR2" >"$T/cr2.json" 2>"$T/err"; rc=$?
+if [ "$rc" = 0 ]; then ok "sdirk2 region a, b at q = i over Q(sqrt 2)(i) runs (exit 0)"
+else fail "sdirk2 region a, b at q = i: rc=$rc $(head -1 "$T/err")"; fi
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import mpmath' 2>/dev/null; then
+    python3 tests/cli/sdirk2_cx_region2.py "$T/cr2.json" 2>&1 | sed 's/^Traceback/FAIL sdirk2_cx_region2.py: Traceback/'
+else ok "skipped sdirk2 region a, b at q = i comparison: no python3 with mpmath"; fi
 # a region's own parameter with a complex set value (h-sqrt8): the value is
 # not used (the region keeps the parameter symbolic), so region c runs at
 # c = 1/2 + i/4 and gives the real line's answer at a = 1: marginal at
