@@ -21,6 +21,7 @@
  * The lists disagreeing anywhere is exit 3. */
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpq_vec.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz_mpoly.h>
 #include "analysis/registry.h"
