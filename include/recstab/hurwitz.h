@@ -96,6 +96,18 @@ typedef struct {
     double expand_estimate;        /* the cost model's seconds for the
                                       expansion steps taken (Routh rows and
                                       compositions; rs_hurwitz_set_expand_seconds) */
+    /* issue 17: on the substitution route (route 1), the minors not
+       expanded, exactly over the small ring (x_v, G_1..G_s) by evaluation and
+       interpolation (rs_hurwitz_set_small_terms):
+       D_k = small[k-1](x_v, G) / small_L^k with x_v, G_r = small_img[0..s]
+       (polynomials in ctx); small[k-1] is zero for the expanded minors.
+       NULL small_ctx: none.  Their signs decide the not-expanded conditions
+       at points (rs_hurwitz_minor_sign_at). */
+    fmpz_mpoly_ctx_struct *small_ctx;
+    fmpz_mpoly_struct *small;      /* n entries in small_ctx */
+    fmpz_mpoly_struct *small_img;  /* small_nvars entries in ctx */
+    slong small_nvars;
+    fmpz_t small_L;
 } rs_hurwitz_struct;
 typedef rs_hurwitz_struct rs_hurwitz_t[1];
 
@@ -140,6 +152,12 @@ int rs_hurwitz_set_subst(int on);
  * fmpz_mpoly_compose_fmpz_mpoly (cross-checks; the same polynomials).
  * Returns the previous value.  Documented global like rs_hurwitz_set_subst. */
 int rs_hurwitz_set_compose(int cached);
+/* Largest candidate support (monomials) of a minor left unexpanded on the
+ * substitution route for which it is still formed exactly over the small
+ * ring by evaluation and interpolation (h->small); 0 = never.  Default
+ * 300000 (the 8-mass chain's D_15 has 251 330 candidates, about 100 s).
+ * Returns the previous value. */
+slong rs_hurwitz_set_small_terms(slong terms);
 
 /* A condition of more than this many terms (default 200 000), or whose full
  * factorisation's estimate does not fit the row share (2 s when none is set) or what is left of

@@ -52,6 +52,59 @@ static void hurwitz_singular(json_t *o)
     json_object_set_new(o, "verdict", json_string("never stable"));
 }
 
+/* issue 17: the not-expanded minors over the small ring (h->small):
+ * {"variables", "definitions": [{"name", "poly"}], "denominator",
+ *  "note", "minors": [{"minor", "terms", "poly"}]} */
+static json_t *
+hurwitz_small_ring(const rs_hurwitz_struct *h, const rs_scheme_t s)
+{
+    json_t *o = json_object(), *vars = json_array(), *defs = json_array(), *mins = json_array();
+    char **names = flint_malloc(h->small_nvars * sizeof(char *));
+    slong i, v;
+    char *str;
+
+    for (i = 0; i < h->small_nvars; i++) {
+        names[i] = flint_malloc(32);
+        snprintf(names[i], 32, "G%ld", (long) i);
+        if (i == 0 && fmpz_mpoly_length(h->small_img + 0, s->zctx) == 1
+            && fmpz_mpoly_total_degree_si(h->small_img + 0, s->zctx) == 1
+            && fmpz_is_one(h->small_img[0].coeffs + 0))
+            for (v = 0; v < s->nvars; v++)
+                if (fmpz_mpoly_degree_si(h->small_img + 0, v, s->zctx) == 1)
+                    snprintf(names[0], 32, "%s", s->vars[v]);
+        json_array_append_new(vars, json_string(names[i]));
+        if (strcmp(names[i], "G0") == 0 || i > 0) {
+            str = rs_scheme_zpoly_str(h->small_img + i, s);
+            json_array_append_new(defs, json_pack("{s:s,s:s}", "name", names[i], "poly", str));
+            flint_free(str);
+        }
+    }
+    str = fmpz_get_str(NULL, 10, h->small_L);
+    json_object_set_new(o, "variables", vars);
+    json_object_set_new(o, "definitions", defs);
+    json_object_set_new(o, "denominator", json_string(str));
+    flint_free(str);
+    json_object_set_new(o, "note", json_string(
+        "each not-expanded minor exactly as D_k = P_k / denominator^k, P_k a polynomial in the variables above "
+        "with the definitions substituted (the substitution route's ring; formed by evaluation modulo primes at "
+        "the weights' candidate monomials and interpolation, with a proven coefficient bound); the conditions "
+        "D_k > 0 are decided at sample points by P_k, and Hurwitz's full criterion checks them there"));
+    for (i = 0; i < h->n; i++) {
+        if (fmpz_mpoly_is_zero(h->small + i, h->small_ctx))
+            continue;
+        str = fmpz_mpoly_get_str_pretty(h->small + i, (const char **) names, h->small_ctx);
+        json_array_append_new(mins, json_pack("{s:I,s:I,s:s}", "minor", (json_int_t) (i + 1), "terms",
+                                              (json_int_t) fmpz_mpoly_length(h->small + i, h->small_ctx),
+                                              "poly", str));
+        flint_free(str);
+    }
+    json_object_set_new(o, "minors", mins);
+    for (i = 0; i < h->small_nvars; i++)
+        flint_free(names[i]);
+    flint_free(names);
+    return o;
+}
+
 /* det A = c lambda^k: once the roots at 0 are divided out p (and q) is a
  * constant c, so there is no Hurwitz minor: every root is 0 where c != 0,
  * and where c = 0 there is no polynomial (hurwitz.c refuses degree 0; jury
@@ -163,6 +216,8 @@ int rs_an_hurwitz(rs_run_t *run, const rs_an_req_t *req)
         for (i = h->expanded; i < h->n; i++) json_array_append_new(ne, json_integer(i + 1));
         json_object_set_new(o, "not_expanded", ne);
         json_object_set_new(o, "not_expanded_note", json_string(rs_hurwitz_not_expanded_note));
+        if (h->small_ctx != NULL)
+            json_object_set_new(o, "small_ring", hurwitz_small_ring(h, s));
     }
     for (i = 0; i < hb->nbranch; i++)
         rs_json_hurwitz_limit_note(o, hb->branch + i);

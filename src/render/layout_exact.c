@@ -530,6 +530,35 @@ static void qdc_over_at(rs_render_t *r, const json_t *o, int over)
     rs_render_say(r, ".\n\n", ".\n\n");
 }
 
+/* the not-expanded minors over the small ring (issue 17): their sizes and
+ * the definitions here, the polynomials in --json (small_ring) */
+static void small_ring(rs_render_t *r, const json_t *sr)
+{
+    const json_t *d, *m;
+    size_t i;
+    char buf[160];
+    if (sr == NULL) return;
+    json_array_foreach(json_object_get(sr, "definitions"), i, d) {
+        snprintf(buf, sizeof buf, "%s =", js(d, "name"));
+        rs_render_line(r, i == 0 ? "small ring" : "", "%s", buf);
+        rs_render_line(r, "", "%s", js(d, "poly"));
+    }
+    rs_render_line(r, "", "%s", js(sr, "note"));
+    json_array_foreach(json_object_get(sr, "minors"), i, m) {
+        snprintf(buf, sizeof buf, "D_%lld = P_%lld / %s^%lld, P_%lld exact with %lld terms (--json small_ring)",
+                 (long long) json_integer_value(json_object_get(m, "minor")),
+                 (long long) json_integer_value(json_object_get(m, "minor")), js(sr, "denominator"),
+                 (long long) json_integer_value(json_object_get(m, "minor")),
+                 (long long) json_integer_value(json_object_get(m, "minor")),
+                 (long long) json_integer_value(json_object_get(m, "terms")));
+        rs_render_line(r, "", "%s", buf);
+    }
+    rs_render_say(r, "Small ring: the not-expanded minors were formed exactly as polynomials in the "
+                  "substitution route's variables; the JSON output holds them.\n\n",
+                  "Small ring: the not-expanded minors were formed exactly as polynomials in the "
+                  "substitution route's variables; the JSON output holds them.\n\n");
+}
+
 /* hurwitz and jury's bilinear route: why some minors are "not expanded"
  * (and which budget limit, if one, left minors or factorisations out) */
 static void not_expanded(rs_render_t *r, const json_t *o)
@@ -547,6 +576,7 @@ static void not_expanded(rs_render_t *r, const json_t *o)
     rs_render_say(r, "Not expanded: ", "Not expanded: ");
     rs_render_esc(r, js(o, "not_expanded_note"));
     rs_render_say(r, ".\n\n", ".\n\n");
+    small_ring(r, json_object_get(o, "small_ring"));
 }
 
 /* which coefficient or minor each listed condition comes from (the JSON's

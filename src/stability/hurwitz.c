@@ -46,6 +46,7 @@
 #include "recstab/budget.h"
 #include "recstab/hurwitz.h"
 #include "recstab/positivity.h"
+#include "stability/hurwitz_interp.h"
 #include "stability/hurwitz_subst.h"
 #include "util/polyfmt.h"
 
@@ -123,6 +124,18 @@ _step_fits(rs_hurwitz_struct *hn, const char *what, double est)
     return 1;
 }
 
+/* the not-expanded minors over the small ring up to this many candidate
+ * terms (rs_hurwitz_set_small_terms) */
+static slong small_terms = 300000;
+
+slong
+rs_hurwitz_set_small_terms(slong terms)
+{
+    slong old = small_terms;
+    small_terms = terms;
+    return old;
+}
+
 /* the substitution route: 0 never, 1 by its cost estimate, 2 whenever it
  * applies (rs_hurwitz_set_subst) */
 static int subst_on = 1;
@@ -192,6 +205,29 @@ rs_hurwitz_init(rs_hurwitz_t h)
     h->limit_note[0] = '\0';
     h->stop_note[0] = '\0';
     h->expand_estimate = 0.0;
+    h->small_ctx = NULL;
+    h->small = NULL;
+    h->small_img = NULL;
+    h->small_nvars = 0;
+    fmpz_init(h->small_L);   /* an fmpz_t needs no clear while small */
+}
+
+static void
+_small_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx)
+{
+    slong i;
+    if (h->small_ctx == NULL)
+        return;
+    for (i = 0; i < h->n; i++)
+        fmpz_mpoly_clear(h->small + i, h->small_ctx);
+    for (i = 0; i < h->small_nvars; i++)
+        fmpz_mpoly_clear(h->small_img + i, ctx);
+    flint_free(h->small);
+    flint_free(h->small_img);
+    fmpz_mpoly_ctx_clear(h->small_ctx);
+    flint_free(h->small_ctx);
+    fmpz_zero(h->small_L);
+    h->small_ctx = NULL;
 }
 
 static void
@@ -224,6 +260,8 @@ rs_hurwitz_clear(rs_hurwitz_t h, const fmpz_mpoly_ctx_t ctx)
     for (i = 0; i < h->ncond; i++)
         _cond_clear(h->cond + i, ctx);
     flint_free(h->cond);
+    _small_clear(h, ctx);
+    fmpz_clear(h->small_L);
     rs_hurwitz_init(h);
 }
 
@@ -768,6 +806,50 @@ _compose_upto(_compose_state *cs, slong k, rs_error_t err)
     return cs->r;
 }
 
+/* The minors after D_expanded that the composition left out, exactly over
+ * the small ring (hurwitz_interp.c) into hn->small; nothing when the
+ * interpolation does not apply (no weights, a support over small_terms). */
+static int
+_small_minors(rs_hurwitz_struct *hn, slong expanded, rs_hurwitz_subst_t hs,
+              slong n, const fmpz_mpoly_ctx_t ctx, rs_error_t err)
+{
+    fmpz_mpoly_struct *Dg;
+    slong i, nv = fmpz_mpoly_ctx_nvars(hs->gctx);
+    int st;
+
+    Dg = flint_malloc((n - 1) * sizeof(fmpz_mpoly_struct));
+    for (i = 0; i < n - 1; i++)
+        fmpz_mpoly_init(Dg + i, hs->gctx);
+    st = rs_hurwitz_interp_minors(Dg, n - 1, hs->A, n, small_terms, err,
+                                  hs->gctx);
+    if (st == RS_HURWITZ_INTERP_OK) {
+        hn->small_ctx = flint_malloc(sizeof(fmpz_mpoly_ctx_struct));
+        fmpz_mpoly_ctx_init(hn->small_ctx, nv, hs->gctx->minfo->ord);
+        hn->small = flint_malloc(n * sizeof(fmpz_mpoly_struct));
+        for (i = 0; i < n; i++) {
+            fmpz_mpoly_init(hn->small + i, hn->small_ctx);
+            if (i >= expanded && i < n - 1)
+                fmpz_mpoly_swap(hn->small + i, Dg + i, hn->small_ctx);
+        }
+        hn->small_nvars = nv;
+        hn->small_img = flint_malloc(nv * sizeof(fmpz_mpoly_struct));
+        for (i = 0; i < nv; i++) {
+            fmpz_mpoly_init(hn->small_img + i, ctx);
+            fmpz_mpoly_set(hn->small_img + i, hs->img + i, ctx);
+        }
+        fmpz_set(hn->small_L, hs->L);
+    }
+    for (i = 0; i < n - 1; i++)
+        fmpz_mpoly_clear(Dg + i, hs->gctx);
+    flint_free(Dg);
+    if (st == RS_HURWITZ_INTERP_BUDGET)
+        return RS_ERR_LIMIT;
+    if (st == RS_HURWITZ_INTERP_CHECK)
+        return rs_error_set(err, RS_ERR_INCONSISTENT, "hurwitz: the interpolated "
+                            "minors over the small ring failed their check");
+    return RS_OK;
+}
+
 /* All leading principal minors D_1..D_n into D[0..n-1] (*expanded of them;
  * the later ones zero and not expanded), over the smaller coefficient ring
  * of hurwitz_subst.c when its cost estimate is lower, otherwise directly.
@@ -820,6 +902,8 @@ _hurwitz_minors(fmpz_mpoly_struct *D, slong *expanded, int *route,
         fmpz_mpoly_mul(D + n - 1, a + 0, D + n - 2, ctx);
         *expanded = n;
     }
+    if (r == RS_OK && *expanded < n - 1 && small_terms > 0)
+        r = _small_minors(hn, *expanded, hs, n, ctx, err);
     for (i = 0; i < n; i++)
         fmpz_mpoly_clear(Dg + i, hs->gctx);
     flint_free(Dg);
@@ -1554,6 +1638,23 @@ rs_hurwitz_minor_sign_at(const rs_hurwitz_t h, slong k, fmpq *const *vals,
 
     if (k < 1 || k > h->n)
         return 0;
+    /* the stated condition: the small ring's minor (L^k > 0), when formed */
+    if (h->small_ctx != NULL && !fmpz_mpoly_is_zero(h->small + k - 1, h->small_ctx)) {
+        fmpq *g = _fmpq_vec_init(h->small_nvars);
+        fmpq **gp = flint_malloc(h->small_nvars * sizeof(fmpq *));
+        fmpq_t x;
+        fmpq_init(x);
+        for (i = 0; i < h->small_nvars; i++) {
+            rs_hurwitz_eval(g + i, h->small_img + i, vals, ctx);
+            gp[i] = g + i;
+        }
+        rs_hurwitz_eval(x, h->small + k - 1, gp, h->small_ctx);
+        s = fmpq_sgn(x);
+        fmpq_clear(x);
+        flint_free(gp);
+        _fmpq_vec_clear(g, h->small_nvars);
+        return s;
+    }
     a = _fmpq_vec_init(h->n + 1);
     for (i = 0; i <= h->n; i++)
         rs_hurwitz_eval(a + i, h->coeffs + i, vals, ctx);

@@ -1959,6 +1959,73 @@ test_sign_filter(void **state)
     tctx_clear(&t);
 }
 
+/* issue 17: minors left unexpanded on the substitution route are formed
+ * over the small ring by interpolation (h->small); composed back with the
+ * definitions and divided by L^k they must equal the minors the full
+ * expansion forms by the fraction-free recursion (an independent route). */
+static void
+test_small_ring(void **state)
+{
+    const char *vars[] = {"c", "k1", "k2", "k3", "k4", "k5", "z"};
+    slong N;
+    (void) state;
+
+    for (N = 3; N <= 5; N++) {
+        const char *v[8];
+        tctx_struct t;
+        fmpz_mpoly_t q, P;
+        rs_hurwitz_t full, part;
+        rs_error_t err;
+        slong nv = N + 2, i, k, formed = 0;
+        double old;
+        int olds;
+        fmpz_mpoly_struct **gens;
+        fmpz_t Lk;
+
+        for (i = 0; i + 1 < nv; i++)
+            v[i] = vars[i];
+        v[nv - 1] = "z";
+        tctx_init(&t, v, nv);
+        fmpz_mpoly_init(q, t.ctx);
+        fmpz_mpoly_init(P, t.ctx);
+        fmpz_init(Lk);
+        rs_hurwitz_init(full);
+        rs_hurwitz_init(part);
+        rs_error_init(err);
+        chain_q(q, N, &t);
+        assert_int_equal(rs_hurwitz_compute(full, q, nv - 1, NULL, t.ctx, err), RS_OK);
+        olds = rs_hurwitz_set_subst(2);
+        old = rs_hurwitz_set_row_seconds(0.0);
+        assert_int_equal(rs_hurwitz_compute_partial(part, q, nv - 1, NULL, t.ctx, err), RS_OK);
+        rs_hurwitz_set_row_seconds(old);
+        rs_hurwitz_set_subst(olds);
+        assert_int_equal(part->route, 1);
+        assert_true(part->expanded < 2 * N - 1);
+        assert_non_null(part->small_ctx);
+        gens = flint_malloc(part->small_nvars * sizeof(fmpz_mpoly_struct *));
+        for (i = 0; i < part->small_nvars; i++)
+            gens[i] = part->small_img + i;
+        for (k = part->expanded + 1; k <= 2 * N - 1; k++) {
+            assert_false(fmpz_mpoly_is_zero(part->small + k - 1, part->small_ctx));
+            assert_int_equal(fmpz_mpoly_compose_fmpz_mpoly(P, part->small + k - 1, gens,
+                                                           part->small_ctx, t.ctx), 1);
+            fmpz_pow_ui(Lk, part->small_L, k);
+            assert_true(fmpz_mpoly_scalar_divides_fmpz(P, P, Lk, t.ctx));
+            assert_true(fmpz_mpoly_equal(P, full->minors + k - 1, t.ctx));
+            formed++;
+        }
+        assert_true(formed >= 1);
+        flint_free(gens);
+        rs_hurwitz_clear(full, t.ctx);
+        rs_hurwitz_clear(part, t.ctx);
+        fmpz_mpoly_clear(q, t.ctx);
+        fmpz_mpoly_clear(P, t.ctx);
+        fmpz_clear(Lk);
+        rs_error_clear(err);
+        tctx_clear(&t);
+    }
+}
+
 int
 main(void)
 {
@@ -1985,6 +2052,7 @@ main(void)
         cmocka_unit_test(test_chain_routes),
         cmocka_unit_test(test_subst_rational),
         cmocka_unit_test(test_subst_compose),
+        cmocka_unit_test(test_small_ring),
         cmocka_unit_test(test_chain_unfactored),
         cmocka_unit_test(test_sign_filter),
     };
