@@ -34,7 +34,6 @@
  * distinct m_u); (5) guards the code, not the mathematics. */
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <flint/flint.h>
 #include <flint/fmpq_mat.h>
 #include <flint/fmpz_mat.h>
@@ -495,13 +494,7 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
                                      S[m].e[u * ng + k], p, mod.ninv), mod);
                 mu[u] = x;
             }
-            {
-                clock_t c0 = clock();
-                _tvander_solve(cu, mu, val[m], S[m].T, mod);
-                if (getenv("RS_INTERP_DEBUG") != NULL)
-                    flint_printf("interp: D_%wd, %wd terms, solve %.3f s\n", m,
-                                 S[m].T, (double) (clock() - c0) / CLOCKS_PER_SEC);
-            }
+            _tvander_solve(cu, mu, val[m], S[m].T, mod);
             for (u = 0; u < S[m].T; u++) {
                 fmpz_set(tmp, coef[m] + u);
                 fmpz_CRT_ui(coef[m] + u, tmp, modulus, cu[u], p, 1);
@@ -519,9 +512,6 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
             status = RS_HURWITZ_INTERP_BUDGET;
             break;
         }
-        if (getenv("RS_INTERP_DEBUG") != NULL)
-            flint_printf("interp: prime %wu, modulus %wd bits, D_%wd bound %wd bits\n",
-                         p, fmpz_bits(modulus), mmax, fmpz_bits(bound + mmax) / 2);
         if (alldone)
             break;
     } while (1);
