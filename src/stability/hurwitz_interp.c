@@ -326,6 +326,113 @@ _tvander_solve(mp_limb_t *c, const mp_limb_t *mu, const mp_limb_t *v,
     flint_free(wt);
 }
 
+/* mu[u] = g^(support's u-th exponent) */
+static void
+_mono_values(mp_limb_t *mu, const supp_t *S, const mp_limb_t *g, nmod_t mod)
+{
+    slong u, k, ng = S->ng;
+    for (u = 0; u < S->T; u++) {
+        mp_limb_t x = 1;
+        for (k = 0; k < ng; k++)
+            if (S->e[u * ng + k])
+                x = nmod_mul(x, n_powmod2_ui_preinv(g[k], S->e[u * ng + k],
+                                                    mod.n, mod.ninv), mod);
+        mu[u] = x;
+    }
+}
+
+/* the residues mod p of every minor m with res[m] != NULL, from T_m values
+ * at g^t for random g; 0, or 1 when the budget ran out, 2 when no points
+ * with distinct monomial values were found */
+static int
+_one_prime(mp_limb_t **res, mp_limb_t p, ulong seed,
+           const fmpz_mpoly_struct *A, slong n, slong mmax, const supp_t *S,
+           slong ng, slong Tmax, const fmpz_mpoly_ctx_t ctx)
+{
+    mp_limb_t *a, *g, *gp, *mins, *mu, **val;
+    slong m, k, u, t;
+    int tries, status = 0;
+    flint_rand_t st;
+    terms_mod_t TM;
+    nmod_mat_t H;
+    nmod_t mod;
+
+    nmod_init(&mod, p);
+    flint_randinit(st);
+    flint_randseed(st, 12345 + 7919 * seed, 777 + seed);
+    a = flint_malloc((n + 1) * sizeof(mp_limb_t));
+    g = flint_malloc(ng * sizeof(mp_limb_t));
+    gp = flint_malloc(ng * sizeof(mp_limb_t));
+    mins = flint_malloc(n * sizeof(mp_limb_t));
+    mu = flint_malloc(Tmax * sizeof(mp_limb_t));
+    val = flint_calloc(mmax + 1, sizeof(mp_limb_t *));
+    for (m = 1; m <= mmax; m++)
+        if (res[m] != NULL)
+            val[m] = flint_malloc(S[m].T * sizeof(mp_limb_t));
+
+    /* points g with distinct monomial values on every support */
+    for (tries = 0; tries < 8; tries++) {
+        int distinct = 1;
+        for (k = 0; k < ng; k++)
+            g[k] = 2 + n_randint(st, p - 3);
+        for (m = 1; m <= mmax && distinct; m++) {
+            if (res[m] == NULL)
+                continue;
+            _mono_values(mu, S + m, g, mod);
+            qsort(mu, S[m].T, sizeof(mp_limb_t), _cmp_limb);
+            for (u = 1; u < S[m].T; u++)
+                if (mu[u] == mu[u - 1])
+                    distinct = 0;
+        }
+        if (distinct)
+            break;
+    }
+    if (tries == 8)
+        status = 2;
+
+    if (status == 0) {
+        nmod_mat_init(H, mmax, mmax, p);
+        _terms_mod_init(&TM, A, n, mod, ctx);
+        for (k = 0; k < ng; k++)
+            gp[k] = 1;
+        for (t = 0; t < Tmax; t++) {
+            if ((t & 1023) == 1023 && rs_budget_exceeded()) {
+                status = 1;
+                break;
+            }
+            _coeffs_mod(a, &TM, n, gp, mod);
+            _minors_mod(mins, a, n, mmax, H, mod);
+            for (m = 1; m <= mmax; m++)
+                if (val[m] != NULL && t < S[m].T)
+                    val[m][t] = mins[m - 1];
+            for (k = 0; k < ng; k++)
+                gp[k] = nmod_mul(gp[k], g[k], mod);
+        }
+        nmod_mat_clear(H);
+        _terms_mod_clear(&TM);
+    }
+    for (m = 1; m <= mmax && status == 0; m++) {
+        if (res[m] == NULL)
+            continue;
+        if (rs_budget_exceeded()) {
+            status = 1;
+            break;
+        }
+        _mono_values(mu, S + m, g, mod);
+        _tvander_solve(res[m], mu, val[m], S[m].T, mod);
+    }
+    for (m = 1; m <= mmax; m++)
+        flint_free(val[m]);
+    flint_free(val);
+    flint_free(a);
+    flint_free(g);
+    flint_free(gp);
+    flint_free(mins);
+    flint_free(mu);
+    flint_randclear(st);
+    return status;
+}
+
 int
 rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
                          const fmpz_mpoly_struct *A, slong n,
@@ -333,17 +440,15 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
                          const fmpz_mpoly_ctx_t ctx)
 {
     slong nv = fmpz_mpoly_ctx_nvars(ctx), ng = nv - 1, *w, alpha = 0, beta = 0;
-    slong m, i, j, k, u, t, Tmax = 0, dG = 0, *ex, *Wm;
+    slong m, i, j, k, u, Tmax = 0, dG = 0, *ex, *Wm;
     supp_t *S = NULL;
     fmpz *bound = NULL, **coef = NULL;
     fmpz_t modulus, tmp;
-    mp_limb_t p = UWORD(1) << (FLINT_BITS - 2), *a, *g, *gp, *vals, **val;
-    mp_limb_t *mu, *cu, *mins;
-    int *done, status = RS_HURWITZ_INTERP_NA, alldone;
+    mp_limb_t p = UWORD(1) << (FLINT_BITS - 2), *primes, ***res, *mins;
+    slong *need, np = 0;
+    int *pst, status = RS_HURWITZ_INTERP_NA;
     flint_rand_t st;
-    terms_mod_t TM;
     nmod_mat_t H;
-    nmod_t mod;
 
     if (mmax < 1 || mmax > n || ng < 1)
         return RS_HURWITZ_INTERP_NA;
@@ -408,113 +513,58 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
         goto cleanup_na;
     }
 
-    coef = flint_malloc((mmax + 1) * sizeof(fmpz *));
-    val = flint_malloc((mmax + 1) * sizeof(mp_limb_t *));
-    done = flint_calloc(mmax + 1, sizeof(int));
+    /* primes above 2^62, as many as the largest bound of each minor asks:
+     * modulus^2 > bound + m */
+    need = flint_calloc(mmax + 1, sizeof(slong));
     for (m = 1; m <= mmax; m++) {
-        coef[m] = _fmpz_vec_init(S[m].T);
-        val[m] = flint_malloc(S[m].T * sizeof(mp_limb_t));
+        need[m] = (fmpz_bits(bound + m) / 2 + 1) / (FLINT_BITS - 2) + 1;
+        np = FLINT_MAX(np, need[m]);
     }
-    a = flint_malloc((n + 1) * sizeof(mp_limb_t));
-    g = flint_malloc(ng * sizeof(mp_limb_t));
-    gp = flint_malloc(ng * sizeof(mp_limb_t));
-    mins = flint_malloc(n * sizeof(mp_limb_t));
-    mu = flint_malloc(Tmax * sizeof(mp_limb_t));
-    cu = flint_malloc(Tmax * sizeof(mp_limb_t));
-    vals = flint_malloc(Tmax * sizeof(mp_limb_t));
+    primes = flint_malloc((np + 1) * sizeof(mp_limb_t));
+    for (i = 0; i <= np; i++)
+        primes[i] = p = n_nextprime(p, 1);
+    res = flint_malloc(np * sizeof(mp_limb_t **));
+    pst = flint_calloc(np, sizeof(int));
+    for (i = 0; i < np; i++) {
+        res[i] = flint_calloc(mmax + 1, sizeof(mp_limb_t *));
+        for (m = 1; m <= mmax; m++)
+            if (i < need[m])
+                res[i][m] = flint_malloc(S[m].T * sizeof(mp_limb_t));
+    }
+    /* the primes are independent: one per thread (the bench's 2 cores) */
+#pragma omp parallel for schedule(dynamic, 1)
+    for (i = 0; i < np; i++)
+        pst[i] = _one_prime(res[i], primes[i], (ulong) i, A, n, mmax, S, ng,
+                            Tmax, ctx);
+    status = RS_HURWITZ_INTERP_OK;
+    for (i = 0; i < np; i++)
+        if (pst[i] == 1)
+            status = RS_HURWITZ_INTERP_BUDGET;
+        else if (pst[i] == 2 && status == RS_HURWITZ_INTERP_OK)
+            status = RS_HURWITZ_INTERP_NA;
+    if (status == RS_HURWITZ_INTERP_BUDGET)
+        rs_budget_check(err, "the Hurwitz minors by interpolation");
+
+    /* CRT, symmetric residues */
+    coef = flint_malloc((mmax + 1) * sizeof(fmpz *));
     fmpz_init(modulus);
     fmpz_init(tmp);
-    fmpz_one(modulus);
-    flint_randinit(st);
-    status = RS_HURWITZ_INTERP_OK;
-
-    do {
-        int tries;
-        p = n_nextprime(p, 1);
-        nmod_init(&mod, p);
-        nmod_mat_init(H, mmax, mmax, p);
-        /* points g with distinct monomial values on every support */
-        for (tries = 0; tries < 8; tries++) {
-            int distinct = 1;
-            for (k = 0; k < ng; k++)
-                g[k] = 2 + n_randint(st, p - 3);
-            for (m = 1; m <= mmax && distinct; m++) {
-                if (done[m])
-                    continue;
-                for (u = 0; u < S[m].T; u++) {
-                    mp_limb_t x = 1;
-                    for (k = 0; k < ng; k++)
-                        if (S[m].e[u * ng + k])
-                            x = nmod_mul(x, n_powmod2_ui_preinv(g[k],
-                                         S[m].e[u * ng + k], p, mod.ninv), mod);
-                    mu[u] = x;
-                }
-                qsort(mu, S[m].T, sizeof(mp_limb_t), _cmp_limb);
-                for (u = 1; u < S[m].T; u++)
-                    if (mu[u] == mu[u - 1])
-                        distinct = 0;
-            }
-            if (distinct)
-                break;
-        }
-        if (tries == 8) {
-            nmod_mat_clear(H);
-            continue;
-        }
-        /* the values at g^t */
-        _terms_mod_init(&TM, A, n, mod, ctx);
-        for (k = 0; k < ng; k++)
-            gp[k] = 1;
-        for (t = 0; t < Tmax; t++) {
-            if ((t & 1023) == 1023 && rs_budget_exceeded()) {
-                status = RS_HURWITZ_INTERP_BUDGET;
-                break;
-            }
-            _coeffs_mod(a, &TM, n, gp, mod);
-            _minors_mod(mins, a, n, mmax, H, mod);
-            for (m = 1; m <= mmax; m++)
-                if (!done[m] && t < S[m].T)
-                    val[m][t] = mins[m - 1];
-            for (k = 0; k < ng; k++)
-                gp[k] = nmod_mul(gp[k], g[k], mod);
-        }
-        nmod_mat_clear(H);
-        _terms_mod_clear(&TM);
+    for (m = 1; m <= mmax; m++) {
+        coef[m] = _fmpz_vec_init(S[m].T);
         if (status != RS_HURWITZ_INTERP_OK)
-            break;
-        alldone = 1;
-        for (m = 1; m <= mmax; m++) {
-            if (done[m])
-                continue;
-            for (u = 0; u < S[m].T; u++) {
-                mp_limb_t x = 1;
-                for (k = 0; k < ng; k++)
-                    if (S[m].e[u * ng + k])
-                        x = nmod_mul(x, n_powmod2_ui_preinv(g[k],
-                                     S[m].e[u * ng + k], p, mod.ninv), mod);
-                mu[u] = x;
-            }
-            _tvander_solve(cu, mu, val[m], S[m].T, mod);
+            continue;
+        fmpz_one(modulus);
+        for (i = 0; i < need[m]; i++) {
             for (u = 0; u < S[m].T; u++) {
                 fmpz_set(tmp, coef[m] + u);
-                fmpz_CRT_ui(coef[m] + u, tmp, modulus, cu[u], p, 1);
+                fmpz_CRT_ui(coef[m] + u, tmp, modulus, res[i][m][u], primes[i], 1);
             }
+            fmpz_mul_ui(modulus, modulus, primes[i]);
         }
-        fmpz_mul_ui(modulus, modulus, p);
-        fmpz_mul(tmp, modulus, modulus);
-        for (m = 1; m <= mmax; m++) {
-            if (!done[m] && fmpz_cmp(tmp, bound + m) > 0)
-                done[m] = 1;
-            alldone &= done[m];
-        }
-        if (rs_budget_check(err, "the Hurwitz minors by interpolation")
-            != RS_OK) {
-            status = RS_HURWITZ_INTERP_BUDGET;
-            break;
-        }
-        if (alldone)
-            break;
-    } while (1);
+    }
+    mins = flint_malloc(n * sizeof(mp_limb_t));
+    flint_randinit(st);
+    p = primes[np];
 
     if (status == RS_HURWITZ_INTERP_OK) {
         ulong *uex = flint_malloc(nv * sizeof(ulong));
@@ -537,7 +587,7 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
         flint_free(uex);
         /* (5): one more prime, one random point with a random x_0 */
         {
-            mp_limb_t q = n_nextprime(p, 1), *pt = flint_malloc(nv * sizeof(mp_limb_t));
+            mp_limb_t q = p, *pt = flint_malloc(nv * sizeof(mp_limb_t));
             mp_limb_t *av = flint_malloc((n + 1) * sizeof(mp_limb_t));
             nmod_t mq;
             nmod_init(&mq, q);
@@ -559,20 +609,19 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
     fmpz_clear(modulus);
     fmpz_clear(tmp);
     flint_randclear(st);
-    for (m = 1; m <= mmax; m++) {
+    for (m = 1; m <= mmax; m++)
         _fmpz_vec_clear(coef[m], S[m].T);
-        flint_free(val[m]);
+    for (i = 0; i < np; i++) {
+        for (m = 1; m <= mmax; m++)
+            flint_free(res[i][m]);
+        flint_free(res[i]);
     }
+    flint_free(res);
+    flint_free(pst);
+    flint_free(primes);
+    flint_free(need);
     flint_free(coef);
-    flint_free(val);
-    flint_free(done);
-    flint_free(a);
-    flint_free(g);
-    flint_free(gp);
     flint_free(mins);
-    flint_free(mu);
-    flint_free(cu);
-    flint_free(vals);
     goto cleanup;
 
 cleanup_na:
