@@ -545,12 +545,13 @@ static void small_ring(rs_render_t *r, const json_t *sr)
     }
     rs_render_line(r, "", "%s", js(sr, "note"));
     json_array_foreach(json_object_get(sr, "minors"), i, m) {
-        snprintf(buf, sizeof buf, "D_%lld = P_%lld / %s^%lld, P_%lld exact with %lld terms (--json small_ring)",
-                 (long long) json_integer_value(json_object_get(m, "minor")),
-                 (long long) json_integer_value(json_object_get(m, "minor")), js(sr, "denominator"),
-                 (long long) json_integer_value(json_object_get(m, "minor")),
-                 (long long) json_integer_value(json_object_get(m, "minor")),
-                 (long long) json_integer_value(json_object_get(m, "terms")));
+        long long k = (long long) json_integer_value(json_object_get(m, "minor"));
+        long long terms = (long long) json_integer_value(json_object_get(m, "terms"));
+        if (strcmp(js(sr, "denominator"), "1") == 0)
+            snprintf(buf, sizeof buf, "D_%lld = P_%lld, exact with %lld terms (--json small_ring)", k, k, terms);
+        else
+            snprintf(buf, sizeof buf, "D_%lld = P_%lld / %s^%lld, P_%lld exact with %lld terms (--json small_ring)",
+                     k, k, js(sr, "denominator"), k, k, terms);
         rs_render_line(r, "", "%s", buf);
     }
     rs_render_say(r, "Small ring: the not-expanded minors were formed exactly as polynomials in the "
