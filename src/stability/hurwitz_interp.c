@@ -523,14 +523,14 @@ rs_hurwitz_interp_minors(fmpz_mpoly_struct *D, slong mmax,
      * of the budget, not attempted (the minors stay decided by determinants
      * at points, as without this route) */
     {
-        double ent = 0, solve = 0, primes = 0, sec, bytes;
+        double ent = 0, solve = 0, npr = 0, sec, bytes;
         for (m = 1; m <= mmax; m++) {
             ent += (double) S[m].T * ng;
             solve += (double) S[m].T * 2.6e-5 * log((double) S[m].T + 2.0) / 10.565;
-            primes = FLINT_MAX(primes, (double) ((fmpz_bits(bound + m) / 2 + 1) / (FLINT_BITS - 2) + 1));
+            npr = FLINT_MAX(npr, (double) ((fmpz_bits(bound + m) / 2 + 1) / (FLINT_BITS - 2) + 1));
         }
-        sec = primes * ((double) Tmax * (1e-9 * mmax * mmax * mmax + 5e-8 * (n + 1)) + solve);
-        bytes = 8.0 * ent + 8.0 * primes * (ent / FLINT_MAX(ng, 1)) * 2.0 + 64.0 * Tmax;
+        sec = npr * ((double) Tmax * (1e-9 * mmax * mmax * mmax + 5e-8 * (n + 1)) + solve);
+        bytes = 8.0 * ent + 8.0 * npr * (ent / FLINT_MAX(ng, 1)) * 2.0 + 64.0 * Tmax;
         if (ent > 4e7 || sec > 300.0
             || rs_budget_estimate(NULL, "the Hurwitz minors by interpolation", sec, bytes) != RS_OK)
             goto cleanup_na;
