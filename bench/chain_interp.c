@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 #include "stability/hurwitz_interp.h"

@@ -36,8 +36,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <flint/flint.h>
+#include <flint/fmpz.h>
+#include <flint/fmpz_vec.h>
+#include <flint/fmpz_mpoly.h>
 #include <flint/fmpq_mat.h>
 #include <flint/fmpz_mat.h>
+#include <flint/nmod.h>
 #include <flint/nmod_mat.h>
 #include <flint/nmod_poly.h>
 #include <flint/nmod_vec.h>

@@ -9,6 +9,7 @@
  * degree factor is exercised). */
 #include "testutil.h"
 #include <stdlib.h>
+#include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>
 #include "stability/hurwitz_interp.h"
 
