@@ -52,6 +52,32 @@ static void hurwitz_singular(json_t *o)
     json_object_set_new(o, "verdict", json_string("never stable"));
 }
 
+/* a name prefix for the small ring's G_r that no parameter can be read as
+ * (a parameter called G1 would make "G1 = ..." ambiguous): the first of
+ * G, H, Q, W, G_, GG, ... no variable spells as prefix + digits */
+static void
+hurwitz_small_prefix(char *pre, size_t len, const rs_scheme_t s)
+{
+    static const char *const cand[] = {"G", "H", "Q", "W", "G_", "GG", "Gr_"};
+    size_t c, k;
+    slong v;
+    for (c = 0; ; c++) {
+        int clash = 0;
+        if (c < sizeof(cand) / sizeof(cand[0]))
+            snprintf(pre, len, "%s", cand[c]);
+        else
+            snprintf(pre, len, "G%zu_", c);
+        for (v = 0; v < s->nvars && !clash; v++) {
+            const char *n = s->vars[v];
+            k = strlen(pre);
+            if (strncmp(n, pre, k) == 0 && n[k] != '\0' && strspn(n + k, "0123456789") == strlen(n + k))
+                clash = 1;
+        }
+        if (!clash)
+            return;
+    }
+}
+
 /* issue 17: the not-expanded minors over the small ring (h->small):
  * {"variables", "definitions": [{"name", "poly"}], "denominator",
  *  "note", "minors": [{"minor", "terms", "poly"}]} */
@@ -61,19 +87,26 @@ hurwitz_small_ring(const rs_hurwitz_struct *h, const rs_scheme_t s)
     json_t *o = json_object(), *vars = json_array(), *defs = json_array(), *mins = json_array();
     char **names = flint_malloc(h->small_nvars * sizeof(char *));
     slong i, v;
-    char *str;
+    char *str, pre[32];
+    int named0 = 0;
 
+    hurwitz_small_prefix(pre, sizeof(pre), s);
     for (i = 0; i < h->small_nvars; i++) {
-        names[i] = flint_malloc(32);
-        snprintf(names[i], 32, "G%ld", (long) i);
+        names[i] = flint_malloc(64);
+        snprintf(names[i], 64, "%s%ld", pre, (long) i);
         if (i == 0 && fmpz_mpoly_length(h->small_img + 0, s->zctx) == 1
             && fmpz_mpoly_total_degree_si(h->small_img + 0, s->zctx) == 1
             && fmpz_is_one(h->small_img[0].coeffs + 0))
             for (v = 0; v < s->nvars; v++)
                 if (fmpz_mpoly_degree_si(h->small_img + 0, v, s->zctx) == 1)
-                    snprintf(names[0], 32, "%s", s->vars[v]);
+                {
+                    flint_free(names[0]);
+                    names[0] = flint_malloc(strlen(s->vars[v]) + 1);
+                    strcpy(names[0], s->vars[v]);
+                    named0 = 1;
+                }
         json_array_append_new(vars, json_string(names[i]));
-        if (strcmp(names[i], "G0") == 0 || i > 0) {
+        if (i > 0 || !named0) {
             str = rs_scheme_zpoly_str(h->small_img + i, s);
             json_array_append_new(defs, json_pack("{s:s,s:s}", "name", names[i], "poly", str));
             flint_free(str);

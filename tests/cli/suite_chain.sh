@@ -64,3 +64,27 @@ if [ "$rc" = 0 ] && grep -q '"route": "bilinear"' "$T/j4.json" \
    && grep -q '"agree": true' "$T/j4.json"; then
     ok "jury, 4-mass chain: bilinear route, sample check agrees"
 else fail "jury, 4-mass chain: exit $rc, $(grep -o '"route[^,]*' "$T/j4.json" | head -2 | tr '\n' ' ')"; fi
+
+# the small ring's generated names never read as a parameter: a 5-mass chain
+# with k1, k2 renamed G1, H2 and a tiny expansion budget (so the minors go to
+# the small ring); its definitions must not use G<digits> or H<digits>
+sh bench/make_chain_case.sh 5 "$T/c5.case"
+sed -e 's/\bk1\b/G1/g' -e 's/\bk2\b/H2/g' "$T/c5.case" >"$T/chain5g.case"
+"$RS" --json --expand-seconds 0.01 "$T/chain5g.case" >"$T/g.json" 2>&1; rc=$?
+names=$(python3 -c "
+import json,sys
+d=json.load(open(sys.argv[1]))
+def f(o):
+    if isinstance(o,dict):
+        if 'small_ring' in o: return o['small_ring']
+        o=list(o.values())
+    if isinstance(o,list):
+        for v in o:
+            r=f(v)
+            if r: return r
+r=f(d); print(' '.join(x['name'] for x in r['definitions']) if r else '')" "$T/g.json" 2>/dev/null)
+case " $names " in
+    *" G1 "*|*" H2 "*|"  ") fail "small ring names collide or missing: exit $rc, '$names'" ;;
+    *) if [ "$rc" = 0 ]; then ok "small ring names avoid the parameters G1, H2: $names"
+       else fail "small ring names: exit $rc"; fi ;;
+esac
