@@ -555,9 +555,18 @@ static void small_ring(rs_render_t *r, const json_t *sr)
         rs_render_line(r, "", "%s", buf);
     }
     rs_render_say(r, "Small ring: the not-expanded minors were formed exactly as polynomials in the "
-                  "substitution route's variables; the JSON output holds them.\n\n",
+                  "substitution route's variables; the JSON output holds them",
                   "Small ring: the not-expanded minors were formed exactly as polynomials in the "
-                  "substitution route's variables; the JSON output holds them.\n\n");
+                  "substitution route's variables; the JSON output holds them");
+    /* the variables' definitions, so the prose report alone says what they are */
+    json_array_foreach(json_object_get(sr, "definitions"), i, d) {
+        rs_render_say(r, i == 0 ? ", with $" : ", $", i == 0 ? ", with $" : ", $");
+        rs_render_poly(r, js(d, "name"));
+        rs_render_say(r, " = ", " = ");
+        rs_render_poly(r, js(d, "poly"));
+        rs_render_say(r, "$", "$");
+    }
+    rs_render_say(r, ".\n\n", ".\n\n");
 }
 
 /* hurwitz and jury's bilinear route: why some minors are "not expanded"
