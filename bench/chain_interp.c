@@ -5,7 +5,7 @@
  *
  * q(z) = sum_j E_j (4 z^2 + 2 c z)^{N-j} (derivation: bench/chain_minor_size.c).
  *
- * Build: cc -O2 -Iinclude -Isrc -I/usr/include/flint bench/chain_interp.c \
+ * Build: cc -O2 -Iinclude -Isrc -Itests -I/usr/include/flint bench/chain_interp.c \
  *            build/librecstab.a -o build/chain_interp -fopenmp -lflint-arb \
  *            -lflint -lgsl -lgslcblas -ljansson -lmpfr -lgmp -lm
  * Run:   build/chain_interp N [bareiss]
@@ -19,6 +19,7 @@
 #include <flint/fmpz_mpoly.h>
 #include "recstab/error.h"
 #include "stability/hurwitz_interp.h"
+#include "chain_ring.h"
 
 static double
 cpu(void)
@@ -26,40 +27,10 @@ cpu(void)
     return (double) clock() / CLOCKS_PER_SEC;
 }
 
-static void
-chain_coeffs(fmpz_mpoly_struct *a, slong N, const fmpz_mpoly_ctx_t ctx)
-{
-    slong j, l, v, n = 2 * N;
-    fmpz_t b;
-    ulong *ex = flint_calloc(N + 1, sizeof(ulong));
-    fmpz_init(b);
-    for (j = 0; j <= n; j++)
-        fmpz_mpoly_zero(a + j, ctx);
-    for (j = 0; j <= N; j++) {
-        slong e = N - j;
-        for (l = 0; l <= e; l++) {
-            fmpz_bin_uiui(b, e, l);
-            fmpz_mul_2exp(b, b, 2 * l + (e - l));
-            for (v = 0; v <= N; v++)
-                ex[v] = 0;
-            ex[0] = e - l;
-            if (j > 0)
-                ex[j] = 1;
-            fmpz_mpoly_push_term_fmpz_ui(a + e + l, b, ex, ctx);
-        }
-    }
-    for (j = 0; j <= n; j++) {
-        fmpz_mpoly_sort_terms(a + j, ctx);
-        fmpz_mpoly_combine_like_terms(a + j, ctx);
-    }
-    fmpz_clear(b);
-    flint_free(ex);
-}
-
 int
 main(int argc, char **argv)
 {
-    slong N = argc > 1 ? atol(argv[1]) : 6, n, m, i, j, k;
+    slong N = argc > 1 ? atol(argv[1]) : 6, n, m, i, k;
     int bareiss = argc > 2 && strcmp(argv[2], "bareiss") == 0, r;
     fmpz_mpoly_ctx_t ctx;
     fmpz_mpoly_struct *a, *D;
@@ -76,7 +47,7 @@ main(int argc, char **argv)
         fmpz_mpoly_init(a + i, ctx);
     for (i = 0; i < n; i++)
         fmpz_mpoly_init(D + i, ctx);
-    chain_coeffs(a, N, ctx);
+    chain_ring_coeffs(a, N, ctx);
     rs_error_init(err);
 
     t0 = cpu();
@@ -91,45 +62,22 @@ main(int argc, char **argv)
 
     if (bareiss) {
         slong s = n - 1;
-        fmpz_mpoly_struct *M = flint_malloc(s * s * sizeof(fmpz_mpoly_struct));
-        fmpz_mpoly_t t, u, prev;
+        fmpz_mpoly_struct *R = flint_malloc(s * sizeof(fmpz_mpoly_struct));
         int same = 1;
-        fmpz_mpoly_init(t, ctx);
-        fmpz_mpoly_init(u, ctx);
-        fmpz_mpoly_init(prev, ctx);
-        fmpz_mpoly_one(prev, ctx);
-        for (i = 0; i < s; i++)
-            for (j = 0; j < s; j++) {
-                slong idx = n - (2 * (j + 1) - (i + 1));
-                fmpz_mpoly_init(M + i * s + j, ctx);
-                if (idx >= 0 && idx <= n)
-                    fmpz_mpoly_set(M + i * s + j, a + idx, ctx);
-            }
+        for (k = 0; k < s; k++)
+            fmpz_mpoly_init(R + k, ctx);
         t0 = cpu();
-        for (k = 0; k < s; k++) {
-            if (!fmpz_mpoly_equal(M + k * s + k, D + k, ctx))
-                same = 0;
-            if (k + 1 == s)
-                break;
-            for (i = k + 1; i < s; i++)
-                for (j = k + 1; j < s; j++) {
-                    fmpz_mpoly_mul(t, M + k * s + k, M + i * s + j, ctx);
-                    fmpz_mpoly_mul(u, M + i * s + k, M + k * s + j, ctx);
-                    fmpz_mpoly_sub(t, t, u, ctx);
-                    if (!fmpz_mpoly_divides(M + i * s + j, t, prev, ctx))
-                        same = 0;
-                }
-            fmpz_mpoly_set(prev, M + k * s + k, ctx);
-        }
+        if (chain_ring_bareiss(R, a, n, s, ctx) != 0)
+            same = 0;
         tb = cpu() - t0;
+        for (k = 0; k < s; k++) {
+            if (!fmpz_mpoly_equal(R + k, D + k, ctx))
+                same = 0;
+            fmpz_mpoly_clear(R + k, ctx);
+        }
+        flint_free(R);
         printf("Bareiss over Z[c, E]: %.2f CPU s; minors %s\n", tb,
                same ? "identical" : "DIFFER");
-        for (i = 0; i < s * s; i++)
-            fmpz_mpoly_clear(M + i, ctx);
-        flint_free(M);
-        fmpz_mpoly_clear(t, ctx);
-        fmpz_mpoly_clear(u, ctx);
-        fmpz_mpoly_clear(prev, ctx);
         if (!same)
             return 1;
     }

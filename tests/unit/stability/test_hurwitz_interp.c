@@ -1,8 +1,8 @@
 /* test_hurwitz_interp.c -- cmocka tests for hurwitz_interp.c (issue 17).
  *
  * Expected values: every leading minor of the Hurwitz matrix computed here
- * independently by fraction-free Gaussian elimination (Bareiss) over
- * Z[x, G], compared term by term with the interpolated minors.  Inputs: the
+ * independently by fraction-free Gaussian elimination (Bareiss, tests/
+ * chain_ring.h) over Z[x, G], compared term by term with the interpolated minors.  Inputs: the
  * N-mass chain q = sum_j E_j (4 z^2 + 2 c z)^{N-j} (bench/chain_minor_size.c
  * derives it) for N = 2..5, and random weighted-homogeneous polynomials
  * whose coefficients are of degree 2 and 3 in G (so the support bound's
@@ -12,48 +12,7 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>
 #include "stability/hurwitz_interp.h"
-
-/* D[0..mmax-1] by Bareiss on the leading blocks (H_ij = a_{n-2j+i},
- * 1-based); every pivot must be non-zero (true of the inputs here) */
-static void
-bareiss_minors(fmpz_mpoly_struct *D, const fmpz_mpoly_struct *a, slong n,
-               slong mmax, const fmpz_mpoly_ctx_t ctx)
-{
-    slong m, i, j, k;
-    for (m = 1; m <= mmax; m++) {
-        fmpz_mpoly_struct *M = flint_malloc(m * m * sizeof(fmpz_mpoly_struct));
-        fmpz_mpoly_t t, u, prev;
-        fmpz_mpoly_init(t, ctx);
-        fmpz_mpoly_init(u, ctx);
-        fmpz_mpoly_init(prev, ctx);
-        fmpz_mpoly_one(prev, ctx);
-        for (i = 0; i < m; i++)
-            for (j = 0; j < m; j++) {
-                slong idx = n - (2 * (j + 1) - (i + 1));
-                fmpz_mpoly_init(M + i * m + j, ctx);
-                if (idx >= 0 && idx <= n)
-                    fmpz_mpoly_set(M + i * m + j, a + idx, ctx);
-            }
-        for (k = 0; k + 1 < m; k++) {
-            assert_false(fmpz_mpoly_is_zero(M + k * m + k, ctx));
-            for (i = k + 1; i < m; i++)
-                for (j = k + 1; j < m; j++) {
-                    fmpz_mpoly_mul(t, M + k * m + k, M + i * m + j, ctx);
-                    fmpz_mpoly_mul(u, M + i * m + k, M + k * m + j, ctx);
-                    fmpz_mpoly_sub(t, t, u, ctx);
-                    assert_true(fmpz_mpoly_divides(M + i * m + j, t, prev, ctx));
-                }
-            fmpz_mpoly_set(prev, M + k * m + k, ctx);
-        }
-        fmpz_mpoly_set(D + m - 1, M + (m - 1) * m + m - 1, ctx);
-        for (i = 0; i < m * m; i++)
-            fmpz_mpoly_clear(M + i, ctx);
-        flint_free(M);
-        fmpz_mpoly_clear(t, ctx);
-        fmpz_mpoly_clear(u, ctx);
-        fmpz_mpoly_clear(prev, ctx);
-    }
-}
+#include "chain_ring.h"
 
 static void
 compare(const fmpz_mpoly_struct *a, slong n, const fmpz_mpoly_ctx_t ctx)
@@ -69,7 +28,7 @@ compare(const fmpz_mpoly_struct *a, slong n, const fmpz_mpoly_ctx_t ctx)
     }
     assert_int_equal(rs_hurwitz_interp_minors(D, n, a, n, 1000000, err, ctx),
                      RS_HURWITZ_INTERP_OK);
-    bareiss_minors(R, a, n, n, ctx);
+    assert_int_equal(chain_ring_bareiss(R, a, n, n, ctx), 0);
     for (m = 0; m < n; m++) {
         assert_true(fmpz_mpoly_equal(D + m, R + m, ctx));
         fmpz_mpoly_clear(D + m, ctx);
@@ -78,39 +37,6 @@ compare(const fmpz_mpoly_struct *a, slong n, const fmpz_mpoly_ctx_t ctx)
     flint_free(D);
     flint_free(R);
     rs_error_clear(err);
-}
-
-/* a_0..a_{2N} of the chain over (c, E_1..E_N) */
-static void
-chain_coeffs(fmpz_mpoly_struct *a, slong N, const fmpz_mpoly_ctx_t ctx)
-{
-    /* (4 z^2 + 2 c z)^e = sum_l binom(e, l) 4^l 2^{e-l} c^{e-l} z^{e+l} */
-    slong j, l, n = 2 * N;
-    fmpz_t b;
-    ulong *ex = flint_calloc(N + 1, sizeof(ulong));
-    fmpz_init(b);
-    for (j = 0; j <= n; j++)
-        fmpz_mpoly_zero(a + j, ctx);
-    for (j = 0; j <= N; j++) {
-        slong e = N - j;
-        for (l = 0; l <= e; l++) {
-            slong v;
-            fmpz_bin_uiui(b, e, l);
-            fmpz_mul_2exp(b, b, 2 * l + (e - l));
-            for (v = 0; v <= N; v++)
-                ex[v] = 0;
-            ex[0] = e - l;
-            if (j > 0)
-                ex[j] = 1;
-            fmpz_mpoly_push_term_fmpz_ui(a + e + l, b, ex, ctx);
-        }
-    }
-    for (j = 0; j <= n; j++) {
-        fmpz_mpoly_sort_terms(a + j, ctx);
-        fmpz_mpoly_combine_like_terms(a + j, ctx);
-    }
-    fmpz_clear(b);
-    flint_free(ex);
 }
 
 static void
@@ -124,7 +50,7 @@ test_chain(void **state)
         fmpz_mpoly_ctx_init(ctx, N + 1, ORD_LEX);
         for (i = 0; i <= 2 * N; i++)
             fmpz_mpoly_init(a + i, ctx);
-        chain_coeffs(a, N, ctx);
+        chain_ring_coeffs(a, N, ctx);
         compare(a, 2 * N, ctx);
         for (i = 0; i <= 2 * N; i++)
             fmpz_mpoly_clear(a + i, ctx);
